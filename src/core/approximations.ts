@@ -77,7 +77,8 @@ export function redonnetModel(tool: ToolInput): Approximation<RedonnetModel> {
   const rb = tool.toolRadiusMm - tool.cornerRadiusMm;
   if (rb === 0) return { ok: true, effectiveRadiusMm: tool.cornerRadiusMm };
   const sin = Math.sin(tool.leadAngleDeg * DEG);
-  if (sin === 0) return notApplicable('Redonnet et al.: at rho = 0 the effective radius Rb/sin(rho) + Rcr is infinite.');
+  if (sin === 0)
+    return notApplicable('Redonnet et al.: at rho = 0 the effective radius Rb/sin(rho) + Rcr is infinite.');
   return { ok: true, effectiveRadiusMm: rb / sin + tool.cornerRadiusMm };
 }
 
@@ -136,7 +137,7 @@ export function bediHalfInterval(input: ForwardInput): Approximation<HalfInterva
   // 1 - (1 - u)^2 = u (2 - u) with u = h / (Rlong sin rho): no cancellation for small h.
   const u = h / shortRadiusMm;
   const half = longRadiusMm * Math.sqrt(u * (2 - u));
-  return { ok: true, ...model, halfIntervalMm: half, intervalMm: 2 * half };
+  return { ...model, halfIntervalMm: half, intervalMm: 2 * half };
 }
 
 /** True-circular inverse (Eq. 12): `h = Reff - sqrt(Reff^2 - (L/2)^2)`, not applicable for L/2 > Reff. */

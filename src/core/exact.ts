@@ -11,7 +11,7 @@ import {
   profileShape,
   ringAngleRad,
 } from './profile';
-import { cutSection, ringTangent, sectionCentre, torusFrame, type TorusFrame } from './torus';
+import { cutSection, ringTangent, sectionCentre, type TorusFrame, torusFrame } from './torus';
 import type { ForwardInput, InverseInput } from './validate';
 import { addScaled, type Vec3 } from './vec';
 
@@ -146,7 +146,7 @@ function meetingIntervals(f: TorusFrame, h: number): Array<[number, number]> {
   for (let i = 1; i <= steps; i++) {
     const g = (Math.PI * i) / steps;
     const cur = gap(g);
-    if ((prevGap <= 0) !== (cur <= 0)) {
+    if (prevGap <= 0 !== cur <= 0) {
       let lo = prev;
       let hi = g;
       for (let j = 0; j < 60; j++) {

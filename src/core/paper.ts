@@ -9,9 +9,19 @@ export interface PaperCondition {
   readonly rho: number;
   readonly h: number;
   /** Printed L/2 (mm, 3 decimals), Tables 2-3. */
-  readonly printedHalf: { readonly threeD: number; readonly sekine: number; readonly redonnet: number; readonly bedi: number };
+  readonly printedHalf: {
+    readonly threeD: number;
+    readonly sekine: number;
+    readonly redonnet: number;
+    readonly bedi: number;
+  };
   /** Printed scallop height (mm, 3 decimals) at the printed 3D L/2, Tables 4-5. */
-  readonly printedHeight: { readonly threeD: number; readonly sekine: number; readonly redonnet: number; readonly bedi: number };
+  readonly printedHeight: {
+    readonly threeD: number;
+    readonly sekine: number;
+    readonly redonnet: number;
+    readonly bedi: number;
+  };
   /** Exact L/2 from the notes (checked there by sampling and Open CASCADE), 12 decimals. */
   readonly notesExactHalf: number;
 }
@@ -37,6 +47,7 @@ const c = (
 });
 
 export const PAPER_CONDITIONS: readonly PaperCondition[] = [
+  // biome-ignore lint/suspicious/noApproximativeNumericConstant: 1.442 is a printed table value, not log2(e).
   c(2, 3, 1, 5, 0.05, [1.442, 1.086, 1.547, 1.437], [0.05, 0.088, 0.043, 0.05], 1.443592412967),
   c(2, 3, 1, 5, 0.1, [1.879, 1.534, 2.186, 1.864], [0.1, 0.15, 0.074, 0.103], 1.892088335855),
   c(2, 3, 1, 10, 0.05, [1.083, 0.785, 1.118, 1.081], [0.05, 0.096, 0.047, 0.05], 1.08448834717),

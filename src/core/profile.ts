@@ -65,7 +65,8 @@ export function profileHalfWidthMm(s: ProfileShape, theta: number): number {
   const cos = Math.cos(theta);
   const d = Math.sqrt(s.a * s.a * sin * sin + s.b * s.b * cos * cos);
   const ellipse = d > 0 ? (s.a * s.a * sin) / d : s.b === 0 ? s.a : 0;
-  return ellipse + s.rcr * sin;
+  // Y <= a + Rcr = R holds exactly; clamp the last-bit round-off at theta = pi/2.
+  return Math.min(ellipse + s.rcr * sin, s.a + s.rcr);
 }
 
 /** `K(theta) = Rcr + a^2 b^2 / D^3` in mm: the common factor of H' and Y'. */

@@ -12,7 +12,7 @@
  *     around the best one until neighbouring Y differ by less than the tolerance.
  * Lengths mm, angles radians.
  */
-import { cutSection, ringTangent, sectionCentre, torusFrame, type TorusFrame } from './torus';
+import { cutSection, ringTangent, sectionCentre, type TorusFrame, torusFrame } from './torus';
 import type { ForwardInput } from './validate';
 import { add, cross, scale, type Vec3 } from './vec';
 
@@ -172,7 +172,13 @@ export function traceProcedure(input: ForwardInput, gridSize = 9, toleranceMm = 
   const reached = firstReach(rcr, gammaEnter);
   const found = reached !== null;
   const gammaScp = reached ?? Math.PI;
-  steps.push({ phase: 'single-contact', ringAngleRad: gammaScp, dsMm: ds(gammaScp), pHp: touchingPoint(f, gammaScp), found });
+  steps.push({
+    phase: 'single-contact',
+    ringAngleRad: gammaScp,
+    dsMm: ds(gammaScp),
+    pHp: touchingPoint(f, gammaScp),
+    found,
+  });
 
   // Steps 15-25: grid search over [0, gamma_scp] for the farthest crossing, refined around the best.
   const n = Math.max(5, gridSize | 1);
@@ -197,7 +203,14 @@ export function traceProcedure(input: ForwardInput, gridSize = 9, toleranceMm = 
       }
       if ((ys[i] as number) > (ys[bestIndex] as number)) bestIndex = i;
     }
-    steps.push({ phase: 'search', rangeRad: [rangeLo, rangeHi], ringAnglesRad: angles, crossingYMm: ys, bestIndex, pHp: bestP });
+    steps.push({
+      phase: 'search',
+      rangeRad: [rangeLo, rangeHi],
+      ringAnglesRad: angles,
+      crossingYMm: ys,
+      bestIndex,
+      pHp: bestP,
+    });
     const left = ys[Math.max(0, bestIndex - 1)] as number;
     const right = ys[Math.min(n - 1, bestIndex + 1)] as number;
     const spread = Math.max(bestY - left, bestY - right);

@@ -17,6 +17,7 @@ export type InputErrorCode =
   | 'not-positive'
   | 'negative'
   | 'too-large'
+  | 'too-small'
   | 'out-of-range'
   | 'corner-exceeds-radius'
   | 'beyond-corner'
@@ -36,7 +37,7 @@ export type Validation<T> =
 
 /** A validated tool: lengths in mm, lead angle in degrees. */
 export interface ToolInput {
-  /** Tool radius `R` in mm, 0 < R <= {@link MAX_TOOL_RADIUS_MM}. */
+  /** Tool radius `R` in mm, {@link MIN_TOOL_RADIUS_MM} <= R <= {@link MAX_TOOL_RADIUS_MM}. */
   readonly toolRadiusMm: number;
   /** Corner (tip) radius `Rcr` in mm, 0 <= Rcr <= R. */
   readonly cornerRadiusMm: number;
@@ -74,6 +75,15 @@ export interface RawInverseInput extends RawToolInput {
  * every intermediate product far from overflow.
  */
 export const MAX_TOOL_RADIUS_MM = 1000;
+
+/** Smallest tool radius accepted, in mm (the smallest micro end mills are 0.005 mm across). */
+export const MIN_TOOL_RADIUS_MM = 0.001;
+
+/**
+ * Smallest scallop height and half interval accepted, in mm: one nanometre, far below any
+ * measurable scallop, so every result stays a normal floating-point number.
+ */
+export const MIN_LENGTH_MM = 1e-9;
 
 const DEG = Math.PI / 180;
 
@@ -116,7 +126,11 @@ function parseError(field: FieldName, parsed: Extract<Parsed, { ok: false }>): I
     case 'missing':
       return { field, code: 'missing', message: `${label} is missing: enter a number.` };
     case 'not-finite':
-      return { field, code: 'not-finite', message: `${label} must be a finite number (got "${shorten(parsed.shown)}").` };
+      return {
+        field,
+        code: 'not-finite',
+        message: `${label} must be a finite number (got "${shorten(parsed.shown)}").`,
+      };
     default:
       return { field, code: 'not-a-number', message: `${label} must be a number (got "${shorten(parsed.shown)}").` };
   }
@@ -147,6 +161,8 @@ function checkTool(c: Collected): void {
   };
   if (R !== undefined) {
     if (R <= 0) reject('R', 'not-positive', `Tool radius R must be greater than 0 mm (got ${R}).`);
+    else if (R < MIN_TOOL_RADIUS_MM)
+      reject('R', 'too-small', `Tool radius R must be at least ${MIN_TOOL_RADIUS_MM} mm (got ${R}).`);
     else if (R > MAX_TOOL_RADIUS_MM)
       reject('R', 'too-large', `Tool radius R must be at most ${MAX_TOOL_RADIUS_MM} mm (got ${R}).`);
   }
@@ -186,8 +202,8 @@ function toolOf(values: Collected['values']): ToolInput {
 /**
  * Validates the inputs of the forward problem (scallop height `h` to path interval).
  *
- * Rules: `R > 0` (at most {@link MAX_TOOL_RADIUS_MM}), `0 <= Rcr <= R`, `0 <= rho < 90`
- * degrees, `h > 0` and `h < (R - Rcr) sin(rho) + Rcr`. Accepts numbers and numeric
+ * Rules: `R > 0` (from {@link MIN_TOOL_RADIUS_MM} to {@link MAX_TOOL_RADIUS_MM}), `0 <= Rcr <= R`,
+ * `0 <= rho < 90` degrees, `h > 0` (at least {@link MIN_LENGTH_MM}) and `h < (R - Rcr) sin(rho) + Rcr`. Accepts numbers and numeric
  * strings; NaN, Infinity, empty and non-numeric values are rejected.
  */
 export function validateForward(raw: RawForwardInput): Validation<ForwardInput> {
@@ -196,7 +212,17 @@ export function validateForward(raw: RawForwardInput): Validation<ForwardInput> 
   const { R, Rcr, rho, h } = c.values;
   if (h !== undefined) {
     if (h <= 0) {
-      c.errors.push({ field: 'h', code: 'not-positive', message: `Scallop height h must be greater than 0 mm (got ${h}).` });
+      c.errors.push({
+        field: 'h',
+        code: 'not-positive',
+        message: `Scallop height h must be greater than 0 mm (got ${h}).`,
+      });
+    } else if (h < MIN_LENGTH_MM) {
+      c.errors.push({
+        field: 'h',
+        code: 'too-small',
+        message: `Scallop height h must be at least ${MIN_LENGTH_MM} mm (got ${h}).`,
+      });
     } else if (R !== undefined && Rcr !== undefined && rho !== undefined) {
       const limitMm = cornerProfileHeightMm(R, Rcr, rho);
       if (h >= limitMm) {
@@ -230,6 +256,12 @@ export function validateInverse(raw: RawInverseInput): Validation<InverseInput> 
         field: 'halfInterval',
         code: 'not-positive',
         message: `Half path interval L/2 must be greater than 0 mm (got ${halfInterval}).`,
+      });
+    } else if (halfInterval < MIN_LENGTH_MM) {
+      c.errors.push({
+        field: 'halfInterval',
+        code: 'too-small',
+        message: `Half path interval L/2 must be at least ${MIN_LENGTH_MM} mm (got ${halfInterval}).`,
       });
     } else if (R !== undefined && halfInterval >= R) {
       c.errors.push({

@@ -114,7 +114,12 @@ describe('exact inverse', () => {
   it('returns the h it was solved for (paper conditions)', () => {
     for (const c of PAPER_CONDITIONS) {
       const half = exactHalfIntervalMm(input(c.R, c.Rcr, c.rho, c.h));
-      const h = exactScallopHeightMm({ toolRadiusMm: c.R, cornerRadiusMm: c.Rcr, leadAngleDeg: c.rho, halfIntervalMm: half });
+      const h = exactScallopHeightMm({
+        toolRadiusMm: c.R,
+        cornerRadiusMm: c.Rcr,
+        leadAngleDeg: c.rho,
+        halfIntervalMm: half,
+      });
       expect(Math.abs(h - c.h)).toBeLessThan(TOL);
     }
   });
@@ -199,7 +204,9 @@ describe('viewer geometry', () => {
       const y0 = p[i] as number;
       const y1 = p[i + 2] as number;
       if (y0 <= sol.halfIntervalMm && sol.halfIntervalMm <= y1) {
-        const z = (p[i + 1] as number) + (((p[i + 3] as number) - (p[i + 1] as number)) * (sol.halfIntervalMm - y0)) / (y1 - y0);
+        const z =
+          (p[i + 1] as number) +
+          (((p[i + 3] as number) - (p[i + 1] as number)) * (sol.halfIntervalMm - y0)) / (y1 - y0);
         expect(Math.abs(z - 0.05)).toBeLessThan(2e-3);
       }
     }
