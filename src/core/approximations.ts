@@ -88,7 +88,9 @@ export function redonnetModel(tool: ToolInput): Approximation<RedonnetModel> {
  */
 export function bediModel(tool: ToolInput): Approximation<BediModel> {
   const sin = Math.sin(tool.leadAngleDeg * DEG);
-  if (sin === 0) return notApplicable(`Bedi et al.: ${RHO_ZERO_ELLIPSE}.`);
+  if (sin === 0) {
+    return notApplicable('Bedi et al.: at rho = 0 its ellipse (semi-axes Rlong, Rlong sin(rho)) is flat and Eq. 11 divides by 0.');
+  }
   const longRadiusMm = tool.toolRadiusMm - tool.cornerRadiusMm + tool.cornerRadiusMm * sin;
   return { ok: true, longRadiusMm, shortRadiusMm: longRadiusMm * sin };
 }
@@ -109,7 +111,16 @@ export function sekineHalfInterval(input: ForwardInput): Approximation<HalfInter
   const model = sekineModel(input);
   if (!model.ok) return model;
   const r = circleHalfInterval('Sekine et al.', model.effectiveRadiusMm, input.scallopHeightMm);
-  return r.ok ? { ...model, ...r } : r;
+  if (!r.ok) return r;
+  return {
+    ok: true,
+    toolCentreHeightMm: model.toolCentreHeightMm,
+    shortRadiusMm: model.shortRadiusMm,
+    longRadiusMm: model.longRadiusMm,
+    effectiveRadiusMm: model.effectiveRadiusMm,
+    halfIntervalMm: r.halfIntervalMm,
+    intervalMm: r.intervalMm,
+  };
 }
 
 /** Redonnet et al.'s `L/2` (Eqs. 9, 8), mm. */
@@ -117,7 +128,8 @@ export function redonnetHalfInterval(input: ForwardInput): Approximation<HalfInt
   const model = redonnetModel(input);
   if (!model.ok) return model;
   const r = circleHalfInterval('Redonnet et al.', model.effectiveRadiusMm, input.scallopHeightMm);
-  return r.ok ? { ...model, ...r } : r;
+  if (!r.ok) return r;
+  return { ok: true, effectiveRadiusMm: model.effectiveRadiusMm, halfIntervalMm: r.halfIntervalMm, intervalMm: r.intervalMm };
 }
 
 /**
@@ -137,7 +149,7 @@ export function bediHalfInterval(input: ForwardInput): Approximation<HalfInterva
   // 1 - (1 - u)^2 = u (2 - u) with u = h / (Rlong sin rho): no cancellation for small h.
   const u = h / shortRadiusMm;
   const half = longRadiusMm * Math.sqrt(u * (2 - u));
-  return { ...model, halfIntervalMm: half, intervalMm: 2 * half };
+  return { ok: true, longRadiusMm, shortRadiusMm, halfIntervalMm: half, intervalMm: 2 * half };
 }
 
 /** True-circular inverse (Eq. 12): `h = Reff - sqrt(Reff^2 - (L/2)^2)`, not applicable for L/2 > Reff. */

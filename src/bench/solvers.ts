@@ -1,0 +1,81 @@
+/**
+ * Benchmark of the solver core: median time per call over repeated rounds.
+ *
+ *   npm run bench                 readable table
+ *   npm run bench -- --json       the same, and a last line holding one JSON object
+ *   npm run bench -- --rounds 5   fewer rounds (quick smoke run)
+ */
+import {
+  bediHalfInterval,
+  exactHalfIntervalMm,
+  type ForwardInput,
+  redonnetHalfInterval,
+  sekineHalfInterval,
+  solveExact,
+  traceProcedure,
+} from '../core/index';
+
+/** Deterministic inputs spread over the valid domain (mulberry32, seed 1). */
+function inputs(count: number): ForwardInput[] {
+  let a = 1;
+  const rand = () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+  const out: ForwardInput[] = [];
+  for (let i = 0; i < count; i++) {
+    const R = 0.5 + 12 * rand();
+    const Rcr = R * rand();
+    const rho = 89 * rand();
+    const limit = (R - Rcr) * Math.sin((rho * Math.PI) / 180) + Rcr;
+    out.push({ toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, scallopHeightMm: limit * (0.001 + 0.5 * rand()) });
+  }
+  return out;
+}
+
+let sink = 0;
+
+/** Median over `rounds` of the mean ns per call within one round of `perRound` calls. */
+function measure(fn: (input: ForwardInput) => number, cases: ForwardInput[], perRound: number, rounds: number): number {
+  const samples: number[] = [];
+  for (let w = 0; w < Math.min(perRound, 2000); w++) sink += fn(cases[w % cases.length] as ForwardInput);
+  for (let r = 0; r < rounds; r++) {
+    const t0 = process.hrtime.bigint();
+    for (let i = 0; i < perRound; i++) sink += fn(cases[i % cases.length] as ForwardInput);
+    samples.push(Number(process.hrtime.bigint() - t0) / perRound);
+  }
+  samples.sort((x, y) => x - y);
+  const mid = samples.length >> 1;
+  return samples.length % 2 ? (samples[mid] as number) : ((samples[mid - 1] as number) + (samples[mid] as number)) / 2;
+}
+
+const args = process.argv.slice(2);
+const json = args.includes('--json');
+const roundsArg = args.indexOf('--rounds');
+const rounds = roundsArg >= 0 ? Math.max(1, Number(args[roundsArg + 1]) || 1) : 21;
+const cases = inputs(1024);
+const half = (r: { ok: true; halfIntervalMm: number } | { ok: false }) => (r.ok ? r.halfIntervalMm : 0);
+
+const rows: Array<[string, string, number]> = [
+  ['exact L/2', 'exactNsPerCall', measure(exactHalfIntervalMm, cases, 200_000, rounds)],
+  ['exact with geometry (96 samples)', 'exactWithGeometryNsPerCall', measure((c) => solveExact(c).halfIntervalMm, cases, 2_000, rounds)],
+  ['Sekine et al.', 'sekineNsPerCall', measure((c) => half(sekineHalfInterval(c)), cases, 500_000, rounds)],
+  ['Redonnet et al.', 'redonnetNsPerCall', measure((c) => half(redonnetHalfInterval(c)), cases, 500_000, rounds)],
+  ['Bedi et al.', 'bediNsPerCall', measure((c) => half(bediHalfInterval(c)), cases, 500_000, rounds)],
+  ['trace of the 3D procedure', 'traceNsPerCall', measure((c) => traceProcedure(c).halfIntervalMm, cases, 500, rounds)],
+];
+
+console.log(`Solver benchmark: median of ${rounds} rounds, ${cases.length} inputs spread over the valid domain`);
+console.log(`Node ${process.version}, ${process.platform}/${process.arch}`);
+console.log('');
+console.log(`${'solver'.padEnd(36)}${'ns per call'.padStart(14)}`);
+for (const [label, , ns] of rows) console.log(`${label.padEnd(36)}${ns.toFixed(1).padStart(14)}`);
+console.log(`(checksum ${sink.toExponential(3)})`);
+if (json) {
+  const out: Record<string, number> = { rounds };
+  for (const [, key, ns] of rows) out[key] = Number(ns.toFixed(1));
+  console.log(JSON.stringify(out));
+}
