@@ -31,7 +31,12 @@ function inputs(count: number): ForwardInput[] {
     const Rcr = R * rand();
     const rho = 89 * rand();
     const limit = (R - Rcr) * Math.sin((rho * Math.PI) / 180) + Rcr;
-    out.push({ toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, scallopHeightMm: limit * (0.001 + 0.5 * rand()) });
+    out.push({
+      toolRadiusMm: R,
+      cornerRadiusMm: Rcr,
+      leadAngleDeg: rho,
+      scallopHeightMm: limit * (0.001 + 0.5 * rand()),
+    });
   }
   return out;
 }
@@ -61,7 +66,11 @@ const half = (r: { ok: true; halfIntervalMm: number } | { ok: false }) => (r.ok 
 
 const rows: Array<[string, string, number]> = [
   ['exact L/2', 'exactNsPerCall', measure(exactHalfIntervalMm, cases, 200_000, rounds)],
-  ['exact with geometry (96 samples)', 'exactWithGeometryNsPerCall', measure((c) => solveExact(c).halfIntervalMm, cases, 2_000, rounds)],
+  [
+    'exact with geometry (96 samples)',
+    'exactWithGeometryNsPerCall',
+    measure((c) => solveExact(c).halfIntervalMm, cases, 2_000, rounds),
+  ],
   ['Sekine et al.', 'sekineNsPerCall', measure((c) => half(sekineHalfInterval(c)), cases, 500_000, rounds)],
   ['Redonnet et al.', 'redonnetNsPerCall', measure((c) => half(redonnetHalfInterval(c)), cases, 500_000, rounds)],
   ['Bedi et al.', 'bediNsPerCall', measure((c) => half(bediHalfInterval(c)), cases, 500_000, rounds)],

@@ -72,7 +72,11 @@ function parseArgs(args: readonly string[]): Parsed {
   return { values, flags };
 }
 
-const NAMES = { sekine: 'Sekine et al. (Eqs. 4-8)', redonnet: 'Redonnet et al. (Eqs. 9, 8)', bedi: 'Bedi et al. (Eqs. 10-11)' };
+const NAMES = {
+  sekine: 'Sekine et al. (Eqs. 4-8)',
+  redonnet: 'Redonnet et al. (Eqs. 9, 8)',
+  bedi: 'Bedi et al. (Eqs. 10-11)',
+};
 const PROCEDURES = ['sekine', 'redonnet', 'bedi'] as const;
 
 function fixed(value: number, digits: number): string {
@@ -143,7 +147,12 @@ type JsonValue = number | string | boolean | null | JsonValue[] | { [key: string
 function halfJson(r: Approximation<HalfInterval>, exact: number): JsonValue {
   if (!r.ok) return { notApplicable: r.notApplicable };
   const dev = r.halfIntervalMm - exact;
-  return { halfInterval: r.halfIntervalMm, interval: r.intervalMm, deviation: dev, deviationPercent: (100 * dev) / exact };
+  return {
+    halfInterval: r.halfIntervalMm,
+    interval: r.intervalMm,
+    deviation: dev,
+    deviationPercent: (100 * dev) / exact,
+  };
 }
 
 function heightJson(r: Approximation<ScallopHeight>, exact: number): JsonValue {
@@ -157,7 +166,12 @@ export function forwardJson(c: ForwardComparison): JsonValue {
   const exact = c.exact.halfIntervalMm;
   return {
     unit: 'mm',
-    input: { R: c.input.toolRadiusMm, Rcr: c.input.cornerRadiusMm, rho: c.input.leadAngleDeg, h: c.input.scallopHeightMm },
+    input: {
+      R: c.input.toolRadiusMm,
+      Rcr: c.input.cornerRadiusMm,
+      rho: c.input.leadAngleDeg,
+      h: c.input.scallopHeightMm,
+    },
     exact: { halfInterval: exact, interval: 2 * exact },
     sekine: halfJson(c.sekine, exact),
     redonnet: halfJson(c.redonnet, exact),
@@ -256,7 +270,9 @@ async function batch(io: Io): Promise<number> {
       const v = validateForward({ R, Rcr, rho, h });
       if (v.ok) {
         const c = compareForward(v.value);
-        buffer.push(`${echo},${csvNumber(c.exact)},${csvNumber(c.sekine)},${csvNumber(c.redonnet)},${csvNumber(c.bedi)},\n`);
+        buffer.push(
+          `${echo},${csvNumber(c.exact)},${csvNumber(c.sekine)},${csvNumber(c.redonnet)},${csvNumber(c.bedi)},\n`,
+        );
       } else {
         buffer.push(`${echo},,,,,${csvCell(v.errors.map((e) => e.message).join(' '))}\n`);
       }

@@ -89,7 +89,9 @@ export function redonnetModel(tool: ToolInput): Approximation<RedonnetModel> {
 export function bediModel(tool: ToolInput): Approximation<BediModel> {
   const sin = Math.sin(tool.leadAngleDeg * DEG);
   if (sin === 0) {
-    return notApplicable('Bedi et al.: at rho = 0 its ellipse (semi-axes Rlong, Rlong sin(rho)) is flat and Eq. 11 divides by 0.');
+    return notApplicable(
+      'Bedi et al.: at rho = 0 its ellipse (semi-axes Rlong, Rlong sin(rho)) is flat and Eq. 11 divides by 0.',
+    );
   }
   const longRadiusMm = tool.toolRadiusMm - tool.cornerRadiusMm + tool.cornerRadiusMm * sin;
   return { ok: true, longRadiusMm, shortRadiusMm: longRadiusMm * sin };
@@ -129,7 +131,12 @@ export function redonnetHalfInterval(input: ForwardInput): Approximation<HalfInt
   if (!model.ok) return model;
   const r = circleHalfInterval('Redonnet et al.', model.effectiveRadiusMm, input.scallopHeightMm);
   if (!r.ok) return r;
-  return { ok: true, effectiveRadiusMm: model.effectiveRadiusMm, halfIntervalMm: r.halfIntervalMm, intervalMm: r.intervalMm };
+  return {
+    ok: true,
+    effectiveRadiusMm: model.effectiveRadiusMm,
+    halfIntervalMm: r.halfIntervalMm,
+    intervalMm: r.intervalMm,
+  };
 }
 
 /**

@@ -6,12 +6,21 @@ const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 
 describe('npm run bench', () => {
   it('prints a table and, with --json, a last line holding the documented keys', () => {
-    const r = spawnSync('npx', ['tsx', 'src/bench/solvers.ts', '--json', '--rounds', '1'], { cwd: ROOT, encoding: 'utf8' });
+    const r = spawnSync('npx', ['tsx', 'src/bench/solvers.ts', '--json', '--rounds', '1'], {
+      cwd: ROOT,
+      encoding: 'utf8',
+    });
     expect(r.status).toBe(0);
     const lines = r.stdout.trim().split('\n');
     expect(r.stdout).toMatch(/exact L\/2\s+\d+\.\d/);
     const last = JSON.parse(lines[lines.length - 1] as string);
-    for (const key of ['exactNsPerCall', 'exactWithGeometryNsPerCall', 'sekineNsPerCall', 'redonnetNsPerCall', 'bediNsPerCall']) {
+    for (const key of [
+      'exactNsPerCall',
+      'exactWithGeometryNsPerCall',
+      'sekineNsPerCall',
+      'redonnetNsPerCall',
+      'bediNsPerCall',
+    ]) {
       expect(last[key]).toBeGreaterThan(0);
     }
   });

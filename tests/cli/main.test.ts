@@ -41,7 +41,12 @@ describe('command line (as a process)', () => {
     const r = await run(['--R', `${c.R}`, '--Rcr', `${c.Rcr}`, '--rho', `${c.rho}`, '--h', `${c.h}`, '--json']);
     expect(r.code).toBe(0);
     const out = JSON.parse(r.stdout);
-    const exact = exactHalfIntervalMm({ toolRadiusMm: c.R, cornerRadiusMm: c.Rcr, leadAngleDeg: c.rho, scallopHeightMm: c.h });
+    const exact = exactHalfIntervalMm({
+      toolRadiusMm: c.R,
+      cornerRadiusMm: c.Rcr,
+      leadAngleDeg: c.rho,
+      scallopHeightMm: c.h,
+    });
     expect(out.exact.halfInterval).toBe(exact);
     expect(out.exact.interval).toBe(2 * exact);
     for (const name of ['sekine', 'redonnet', 'bedi'] as const) {
@@ -59,7 +64,18 @@ describe('command line (as a process)', () => {
   });
 
   it('--inverse --half-interval prints the scallop height of each procedure', async () => {
-    const r = await run(['--inverse', '--R', '3', '--Rcr', '1', '--rho', '5', '--half-interval', '1.443592412967', '--json']);
+    const r = await run([
+      '--inverse',
+      '--R',
+      '3',
+      '--Rcr',
+      '1',
+      '--rho',
+      '5',
+      '--half-interval',
+      '1.443592412967',
+      '--json',
+    ]);
     expect(r.code).toBe(0);
     const out = JSON.parse(r.stdout);
     expect(Math.abs(out.exact.scallopHeight - 0.05)).toBeLessThan(1e-9);
