@@ -3,12 +3,15 @@
  */
 import {
   type Approximation,
+  type BediModel,
   bediHalfInterval,
   bediScallopHeight,
   type HalfInterval,
+  type RedonnetModel,
   redonnetHalfInterval,
   redonnetScallopHeight,
   type ScallopHeight,
+  type SekineModel,
   sekineHalfInterval,
   sekineScallopHeight,
 } from './approximations';
@@ -32,9 +35,9 @@ export * from './validate';
 export interface ForwardComparison {
   readonly input: ForwardInput;
   readonly exact: { readonly ok: true } & HalfInterval;
-  readonly sekine: Approximation<HalfInterval>;
-  readonly redonnet: Approximation<HalfInterval>;
-  readonly bedi: Approximation<HalfInterval>;
+  readonly sekine: Approximation<HalfInterval & SekineModel>;
+  readonly redonnet: Approximation<HalfInterval & RedonnetModel>;
+  readonly bedi: Approximation<HalfInterval & BediModel>;
 }
 
 /** Scallop height of all four procedures at one path interval (mm). */

@@ -1,0 +1,431 @@
+/**
+ * The calculator page: fields and sliders, URL state, results, and the 3D scene.
+ * Validation runs here for immediate messages; all solving runs in the worker.
+ */
+import { cornerProfileHeightMm, type FieldName, validateForward, validateInverse } from '../core/validate';
+import { type CameraPreset, ToolScene } from '../render/scene';
+import { SolverClient } from '../worker/client';
+import type { ProcedureKey, SolveReply } from '../worker/protocol';
+import {
+  type CalculatorState,
+  convertState,
+  FIELD_KEYS,
+  type FieldKey,
+  formatField,
+  MM_PER_INCH,
+  PRESETS,
+  parseField,
+  parseUrl,
+  toMm,
+  toSearch,
+  type Unit,
+} from './state';
+
+interface FieldSpec {
+  readonly key: FieldKey;
+  readonly label: string;
+  readonly unit: 'length' | 'deg';
+  readonly hint: string;
+}
+
+const SPECS: readonly FieldSpec[] = [
+  { key: 'R', label: 'Tool radius R', unit: 'length', hint: 'half the tool diameter' },
+  { key: 'Rcr', label: 'Corner radius Rcr', unit: 'length', hint: '0 = flat end, R = ball end' },
+  { key: 'rho', label: 'Lead angle rho', unit: 'deg', hint: 'tool inclination along the feed' },
+  { key: 'h', label: 'Scallop height h', unit: 'length', hint: 'cusp height left between passes' },
+  { key: 'L', label: 'Step-over L', unit: 'length', hint: 'distance between adjacent passes' },
+];
+
+const NAMES: Record<ProcedureKey, string> = {
+  exact: 'Exact (3D geometry)',
+  sekine: 'Sekine et al. (Eqs. 4-8)',
+  redonnet: 'Redonnet et al. (Eqs. 9, 8)',
+  bedi: 'Bedi et al. (Eqs. 10-11)',
+};
+
+const DASH = '\u2014';
+
+function el<K extends keyof HTMLElementTagNameMap>(
+  tag: K,
+  props: Record<string, string> = {},
+  text = '',
+): HTMLElementTagNameMap[K] {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(props)) e.setAttribute(k, v);
+  if (text) e.textContent = text;
+  return e;
+}
+
+function must<T extends Element>(root: ParentNode, selector: string): T {
+  const found = root.querySelector<T>(selector);
+  if (!found) throw new Error(`missing element ${selector}`);
+  return found;
+}
+
+interface FieldView {
+  readonly spec: FieldSpec;
+  readonly row: HTMLElement;
+  readonly slider: HTMLInputElement;
+  readonly input: HTMLInputElement;
+  readonly unitLabel: HTMLElement;
+  readonly error: HTMLElement;
+}
+
+export class CalculatorApp {
+  private state: CalculatorState;
+  private readonly fields = new Map<FieldKey, FieldView>();
+  private readonly scene: ToolScene;
+  private readonly client: SolverClient;
+  private readonly embed: boolean;
+  private noticeTimer: ReturnType<typeof setTimeout> | null = null;
+  private lastReply: SolveReply | null = null;
+  /** Time of the input event whose result is awaited (for the latency benchmark). */
+  private pendingInputAt: number | null = null;
+  readonly latencies: number[] = [];
+
+  constructor(private readonly root: HTMLElement) {
+    const parsed = parseUrl(window.location.search);
+    this.state = parsed.state;
+    this.embed = parsed.embed;
+    document.documentElement.classList.toggle('embed', this.embed);
+    this.buildFields();
+    this.buildPresets();
+    this.scene = new ToolScene(must(root, '.scene'));
+    this.scene.onFrame = () => this.frameRendered();
+    this.client = new SolverClient({
+      onReply: (reply) => this.showReply(reply),
+      onRestart: (reason) => this.notify(`The solver was restarted: ${reason}. Your last request was repeated.`, 5000),
+    });
+    this.wireSwitches();
+    if (parsed.notices.length > 0) this.notify(`Some link values were replaced: ${parsed.notices.join(' ')}`, 0);
+    this.syncAll();
+    this.update();
+    this.exposeTestHooks();
+  }
+
+  private buildFields(): void {
+    const container = must<HTMLElement>(this.root, '.fields');
+    for (const spec of SPECS) {
+      const id = `field-${spec.key}`;
+      const row = el('div', { class: 'field', 'data-field': spec.key });
+      const label = el('label', { for: id }, spec.label);
+      const slider = el('input', {
+        type: 'range',
+        'data-testid': `slider-${spec.key}`,
+        'aria-label': `${spec.label} slider`,
+        'aria-describedby': `${id}-error`,
+      });
+      const input = el('input', {
+        id,
+        type: 'text',
+        inputmode: 'decimal',
+        autocomplete: 'off',
+        spellcheck: 'false',
+        'data-testid': `input-${spec.key}`,
+        'aria-describedby': `${id}-hint ${id}-error`,
+      });
+      const unitLabel = el('span', { class: 'unit' });
+      const hint = el('span', { class: 'hint', id: `${id}-hint` }, spec.hint);
+      const error = el('div', { class: 'error', id: `${id}-error`, role: 'alert', 'data-testid': `error-${spec.key}` });
+      const line = el('div', { class: 'field-line' });
+      line.append(slider, input, unitLabel);
+      row.append(label, line, hint, error);
+      container.append(row);
+      this.fields.set(spec.key, { spec, row, slider, input, unitLabel, error });
+      input.addEventListener('input', () => this.onField(spec.key, input.value, 'input'));
+      slider.addEventListener('input', () => this.onField(spec.key, slider.value, 'slider'));
+    }
+  }
+
+  private buildPresets(): void {
+    const select = must<HTMLSelectElement>(this.root, '[data-testid="preset"]');
+    PRESETS.forEach((p, i) => {
+      select.append(el('option', { value: String(i) }, p.label));
+    });
+    select.addEventListener('change', () => {
+      const preset = PRESETS[Number(select.value)];
+      if (!preset) return;
+      const k = this.state.unit === 'in' ? 1 / MM_PER_INCH : 1;
+      this.state = {
+        ...this.state,
+        fields: { ...this.state.fields, R: formatField(preset.R * k), Rcr: formatField(preset.Rcr * k) },
+      };
+      this.pendingInputAt = performance.now();
+      this.syncAll();
+      this.update();
+    });
+  }
+
+  private wireSwitches(): void {
+    for (const radio of this.root.querySelectorAll<HTMLInputElement>('input[name="mode"]')) {
+      radio.checked = radio.value === this.state.mode;
+      radio.addEventListener('change', () => {
+        if (!radio.checked) return;
+        this.state = { ...this.state, mode: radio.value === 'inverse' ? 'inverse' : 'forward' };
+        this.syncAll();
+        this.update();
+      });
+    }
+    for (const radio of this.root.querySelectorAll<HTMLInputElement>('input[name="unit"]')) {
+      radio.checked = radio.value === this.state.unit;
+      radio.addEventListener('change', () => {
+        if (!radio.checked) return;
+        this.state = convertState(this.state, radio.value === 'in' ? 'in' : 'mm');
+        this.syncAll();
+        this.update();
+      });
+    }
+    for (const button of this.root.querySelectorAll<HTMLButtonElement>('[data-camera]')) {
+      button.addEventListener('click', () => this.scene.setCamera(button.dataset.camera as CameraPreset));
+    }
+    for (const button of this.root.querySelectorAll<HTMLButtonElement>('[data-copy]')) {
+      button.addEventListener('click', () => {
+        const target = this.root.querySelector(`[data-testid="${button.dataset.copy}"]`);
+        const text = target?.textContent ?? '';
+        if (text && text !== DASH) void navigator.clipboard?.writeText(text).catch(() => undefined);
+      });
+    }
+  }
+
+  private onField(key: FieldKey, text: string, from: 'input' | 'slider'): void {
+    this.pendingInputAt = performance.now();
+    this.state = { ...this.state, fields: { ...this.state.fields, [key]: text } };
+    const view = this.fields.get(key);
+    if (view && from === 'slider') view.input.value = text;
+    this.update();
+  }
+
+  /** Unit of lengths as shown. */
+  private unitText(): string {
+    return this.state.unit === 'mm' ? 'mm' : 'in';
+  }
+
+  /** Writes every field, slider range and label from the state. */
+  private syncAll(): void {
+    const forward = this.state.mode === 'forward';
+    for (const view of this.fields.values()) {
+      const { key } = view.spec;
+      view.row.hidden = forward ? key === 'L' : key === 'h';
+      view.unitLabel.textContent = view.spec.unit === 'deg' ? 'deg' : this.unitText();
+      if (view.input.value !== this.state.fields[key]) view.input.value = this.state.fields[key];
+    }
+    for (const radio of this.root.querySelectorAll<HTMLInputElement>('input[name="unit"]'))
+      radio.checked = radio.value === this.state.unit;
+    for (const radio of this.root.querySelectorAll<HTMLInputElement>('input[name="mode"]'))
+      radio.checked = radio.value === this.state.mode;
+    this.syncSliders();
+  }
+
+  /** Slider ranges follow the other values (Rcr up to R, h up to the corner height). */
+  private syncSliders(): void {
+    const u = this.state.unit === 'in' ? MM_PER_INCH : 1;
+    const num = (key: FieldKey) => parseField(this.state.fields[key]);
+    const R = num('R');
+    const Rcr = num('Rcr');
+    const rho = num('rho');
+    const rMm = R !== null && R > 0 ? toMm('R', R, this.state.unit) : 3;
+    const rcrMm = Rcr !== null && Rcr >= 0 ? Math.min(toMm('Rcr', Rcr, this.state.unit), rMm) : rMm / 3;
+    const rhoDeg = rho !== null && rho >= 0 && rho < 90 ? rho : 5;
+    const limitMm = cornerProfileHeightMm(rMm, rcrMm, rhoDeg);
+    const ranges: Record<FieldKey, [number, number, number]> = {
+      R: [0.1 / u, 25 / u, 0.01 / u],
+      Rcr: [0, rMm / u, 0.01 / u],
+      rho: [0, 89.9, 0.1],
+      h: [0.001 / u, Math.max(0.002, Math.min(limitMm * 0.999, 2)) / u, 0.001 / u],
+      L: [0.01 / u, (2 * rMm * 0.999) / u, 0.001 / u],
+    };
+    for (const key of FIELD_KEYS) {
+      const view = this.fields.get(key);
+      if (!view) continue;
+      const [min, max, step] = ranges[key];
+      view.slider.min = formatField(min);
+      view.slider.max = formatField(max);
+      view.slider.step = String(Number(step.toPrecision(3)));
+      const v = num(key);
+      if (v !== null && view.slider !== document.activeElement) view.slider.value = String(v);
+    }
+  }
+
+  private update(): void {
+    this.syncSliders();
+    window.history.replaceState(
+      null,
+      '',
+      toSearch(this.state, this.embed ? { embed: '1' } : {}) + window.location.hash,
+    );
+    const fullLink = this.root.querySelector<HTMLAnchorElement>('[data-testid="open-full"]');
+    if (fullLink) fullLink.href = toSearch(this.state);
+    const { unit, mode, fields } = this.state;
+    const mm = (key: FieldKey): number | string => {
+      const v = parseField(fields[key]);
+      return v === null ? fields[key] : toMm(key, v, unit);
+    };
+    const validation =
+      mode === 'forward'
+        ? validateForward({ R: mm('R'), Rcr: mm('Rcr'), rho: mm('rho'), h: mm('h') })
+        : validateInverse({ R: mm('R'), Rcr: mm('Rcr'), rho: mm('rho'), halfInterval: halfOf(mm('L')) });
+    const errors = new Map<FieldKey, string>();
+    if (!validation.ok) {
+      for (const e of validation.errors) errors.set(fieldOf(e.field), this.localise(e.message, e.field));
+    }
+    for (const view of this.fields.values()) {
+      const message = errors.get(view.spec.key) ?? '';
+      if (view.error.textContent !== message) view.error.textContent = message;
+      view.row.classList.toggle('invalid', message !== '');
+      view.input.setAttribute('aria-invalid', String(message !== ''));
+    }
+    if (!validation.ok) {
+      this.showInvalid();
+      return;
+    }
+    const value = mode === 'forward' ? (mm('h') as number) : (mm('L') as number);
+    this.client.request({ mode, R: mm('R') as number, Rcr: mm('Rcr') as number, rho: mm('rho') as number, value });
+  }
+
+  /** Messages name lengths in mm; in inch mode they also say the field in the user's unit. */
+  private localise(message: string, field: FieldName): string {
+    if (this.state.unit === 'mm')
+      return field === 'halfInterval' ? message.replace('Half path interval L/2', 'Step-over L / 2') : message;
+    const toInch = (n: string) => formatField(Number(n) / MM_PER_INCH);
+    let converted = message.replace(/(-?\d+(?:\.\d+)?(?:e-?\d+)?) mm/g, (_m, n: string) => `${toInch(n)} in`);
+    if (field !== 'rho')
+      converted = converted.replace(/\(got (-?\d+(?:\.\d+)?(?:e[+-]?\d+)?)\)/, (_m, n: string) => `(got ${toInch(n)})`);
+    return field === 'halfInterval' ? converted.replace('Half path interval L/2', 'Step-over L / 2') : converted;
+  }
+
+  private showInvalid(): void {
+    for (const id of ['result-exact-interval', 'result-exact-half']) this.setText(id, DASH);
+    this.setText('result-percent-diameter', '');
+    for (const row of this.root.querySelectorAll('.procedures tbody output')) row.textContent = DASH;
+    this.scene.setStale(true);
+  }
+
+  private setText(testId: string, text: string): void {
+    const e = this.root.querySelector(`[data-testid="${testId}"]`);
+    if (e && e.textContent !== text) e.textContent = text;
+  }
+
+  /** Length in the current unit, 4 decimals in mm, 5 in inch. */
+  private len(mm: number): string {
+    return this.state.unit === 'mm' ? mm.toFixed(4) : (mm / MM_PER_INCH).toFixed(5);
+  }
+
+  private signedLen(mm: number): string {
+    const t = this.len(mm);
+    return mm >= 0 && !t.startsWith('-') ? `+${t}` : t;
+  }
+
+  private showReply(reply: SolveReply): void {
+    this.lastReply = reply;
+    if (!reply.ok) {
+      this.showInvalid();
+      return;
+    }
+    const unit = this.unitText();
+    const forward = reply.mode === 'forward';
+    const L = 2 * reply.halfIntervalMm;
+    must(this.root, '[data-role="headline-label"]').textContent = forward ? 'Step-over L' : 'Scallop height h';
+    this.setText('result-exact-interval', `${forward ? this.len(L) : this.len(reply.scallopHeightMm)} ${unit}`);
+    this.setText('result-exact-half', this.len(reply.halfIntervalMm));
+    const R = toMm('R', parseField(this.state.fields.R) ?? 1, this.state.unit);
+    this.setText('result-percent-diameter', `L = ${((100 * L) / (2 * R)).toFixed(1)} % of the tool diameter`);
+
+    const table = must<HTMLTableElement>(this.root, '.procedures');
+    const head = forward
+      ? ['Procedure', `L/2 [${unit}]`, `Deviation [${unit}]`, 'Deviation [%]', `Scallop it leaves [${unit}]`]
+      : ['Procedure', `h [${unit}]`, `Deviation [${unit}]`, 'Deviation [%]'];
+    const thead = must<HTMLElement>(table, 'thead');
+    const headHtml = `<tr>${head.map((h) => `<th scope="col">${h}</th>`).join('')}</tr>`;
+    if (thead.innerHTML !== headHtml) thead.innerHTML = headHtml;
+    const tbody = must<HTMLElement>(table, 'tbody');
+    tbody.replaceChildren();
+    const notes: string[] = [];
+    for (const row of reply.rows) {
+      const tr = el('tr', { 'data-procedure': row.key });
+      tr.append(el('th', { scope: 'row' }, NAMES[row.key]));
+      // The headline already carries result-exact-half: the table's exact row gets its own ids.
+      const prefix = row.key === 'exact' ? 'table-exact' : `result-${row.key}`;
+      const value = el(
+        'output',
+        { 'data-testid': `${prefix}-${forward ? 'half' : 'h'}` },
+        row.valueMm === null ? 'n/a' : this.len(row.valueMm),
+      );
+      const cell = el('td');
+      cell.append(value);
+      tr.append(cell);
+      tr.append(el('td', {}, row.deviationMm === null ? DASH : this.signedLen(row.deviationMm)));
+      tr.append(
+        el(
+          'td',
+          {},
+          row.deviationPercent === null
+            ? DASH
+            : `${row.deviationPercent >= 0 ? '+' : ''}${row.deviationPercent.toFixed(2)}`,
+        ),
+      );
+      if (forward) {
+        const real = el(
+          'output',
+          { 'data-testid': `${prefix}-real-h` },
+          row.realScallopMm === null ? DASH : this.len(row.realScallopMm),
+        );
+        const td = el('td');
+        td.append(real);
+        tr.append(td);
+      }
+      if (row.note) {
+        tr.title = row.note;
+        notes.push(`${NAMES[row.key]}: ${row.note.replace(/^[^:]+: /, '')}`);
+      }
+      tbody.append(tr);
+    }
+    this.setText('table-notes', notes.join(' '));
+
+    if (reply.geometry) {
+      this.scene.update(reply.geometry, `L/2 = ${this.len(reply.geometry.halfIntervalMm)} ${unit}`);
+      this.scene.setStale(false);
+    } else {
+      this.scene.setStale(true);
+      this.setText(
+        'table-notes',
+        `${notes.join(' ')} No scallop: at rho = 0 the flat bottom covers L/2 <= R - Rcr.`.trim(),
+      );
+    }
+  }
+
+  private frameRendered(): void {
+    if (this.pendingInputAt !== null && this.lastReply?.ok) {
+      this.latencies.push(performance.now() - this.pendingInputAt);
+      this.pendingInputAt = null;
+    }
+  }
+
+  private notify(message: string, ms: number): void {
+    const box = must<HTMLElement>(this.root, '[data-testid="notice"]');
+    box.textContent = message;
+    box.hidden = false;
+    if (this.noticeTimer !== null) clearTimeout(this.noticeTimer);
+    if (ms > 0) this.noticeTimer = setTimeout(() => (box.hidden = true), ms);
+  }
+
+  private exposeTestHooks(): void {
+    const hooks = {
+      frames: () => this.scene.frames,
+      workerStarts: () => this.client.started,
+      crashWorker: () => this.client.crash(),
+      latencies: () => [...this.latencies],
+      lastReplyOk: () => this.lastReply?.ok ?? null,
+    };
+    (window as unknown as { __pathInterval: typeof hooks }).__pathInterval = hooks;
+  }
+}
+
+function halfOf(value: number | string): number | string {
+  return typeof value === 'number' ? value / 2 : value;
+}
+
+function fieldOf(field: FieldName): FieldKey {
+  return field === 'halfInterval' ? 'L' : field;
+}
+
+export type { Unit };
