@@ -1,0 +1,248 @@
+/**
+ * The calculator in real headless Chromium (Debian's), against the built site served from
+ * a sub-path. Screenshots go to test-results/ as artifacts of the run.
+ */
+import { spawnSync } from 'node:child_process';
+import { mkdirSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import type { Browser, Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { compareForward, compareInverse } from '../../src/core/index';
+import { launchChromium } from '../support/browser';
+import { type StaticSite, serveStatic } from '../support/staticServer';
+
+const ROOT = fileURLToPath(new URL('../..', import.meta.url));
+const SHOTS = `${ROOT}test-results/screenshots`;
+let browser: Browser;
+let site: StaticSite;
+
+beforeAll(async () => {
+  mkdirSync(SHOTS, { recursive: true });
+  site = await serveStatic(`${ROOT}dist`, 'docs/tools/path-interval');
+  browser = await launchChromium();
+});
+
+afterAll(async () => {
+  await browser?.close();
+  await site?.close();
+});
+
+interface Opened {
+  page: Page;
+  errors: string[];
+}
+
+async function open(query = '', viewport = { width: 1400, height: 900 }): Promise<Opened> {
+  const page = await browser.newPage({ viewport });
+  const errors: string[] = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
+  await page.goto(`${site.url}${query}`);
+  await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
+  return { page, errors };
+}
+
+const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
+const frames = (page: Page) =>
+  page.evaluate(() => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames());
+
+/** Fraction of canvas pixels that differ from the background colour. */
+function paintedFraction(page: Page): Promise<number> {
+  return page.evaluate(() => {
+    const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="scene-canvas"]');
+    if (!canvas) return 0;
+    const copy = document.createElement('canvas');
+    copy.width = canvas.width;
+    copy.height = canvas.height;
+    const ctx = copy.getContext('2d');
+    if (!ctx) return 0;
+    ctx.drawImage(canvas, 0, 0);
+    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
+    let painted = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (
+        Math.abs((data[i] as number) - 0xf7) +
+          Math.abs((data[i + 1] as number) - 0xf8) +
+          Math.abs((data[i + 2] as number) - 0xfa) >
+        24
+      )
+        painted++;
+    }
+    return painted / (data.length / 4);
+  });
+}
+
+describe('calculator page in headless Chromium', () => {
+  it('loads from a sub-path, solves in a module worker, and shows the command line numbers', async () => {
+    const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const cli = spawnSync(
+      process.execPath,
+      [`${ROOT}src/cli/bin.mjs`, '--R', '3', '--Rcr', '1', '--rho', '5', '--h', '0.05', '--json'],
+      {
+        encoding: 'utf8',
+      },
+    );
+    const out = JSON.parse(cli.stdout);
+    expect(await text(page, 'result-exact-half')).toBe(out.exact.halfInterval.toFixed(4));
+    expect(await text(page, 'result-sekine-half')).toBe(out.sekine.halfInterval.toFixed(4));
+    expect(await text(page, 'result-redonnet-half')).toBe(out.redonnet.halfInterval.toFixed(4));
+    expect(await text(page, 'result-bedi-half')).toBe(out.bedi.halfInterval.toFixed(4));
+    expect(await text(page, 'result-exact-interval')).toBe(`${out.exact.interval.toFixed(4)} mm`);
+    const workers = page.workers().map((w) => w.url());
+    expect(workers.some((u) => u.startsWith(site.url) && /solver\.worker/.test(u))).toBe(true);
+    expect(errors).toEqual([]);
+    await page.screenshot({ path: `${SHOTS}/calculator.png` });
+    await page.close();
+  });
+
+  it('draws the scene (the canvas is not blank) and renders only when something changed', async () => {
+    const { page } = await open();
+    await page.waitForFunction(
+      () => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames() > 0,
+    );
+    expect(await paintedFraction(page)).toBeGreaterThan(0.05);
+    const before = await frames(page);
+    await page.waitForTimeout(500);
+    expect(await frames(page)).toBe(before); // no busy render loop
+    await page.getByRole('button', { name: 'Along the feed' }).click();
+    await page.waitForFunction(
+      (n) => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames() > n,
+      before,
+    );
+    await page.screenshot({ path: `${SHOTS}/along-the-feed.png` });
+    await page.close();
+  });
+
+  it('moving a slider by keyboard updates the numbers, the URL and the scene', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const before = await text(page, 'result-exact-half');
+    const framesBefore = await frames(page);
+    await page.getByTestId('slider-rho').focus();
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(() => page.getByTestId('input-rho').inputValue()).toBe('5.2');
+    const expected = compareForward({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5.2, scallopHeightMm: 0.05 });
+    await expect.poll(() => text(page, 'result-exact-half')).toBe(expected.exact.halfIntervalMm.toFixed(4));
+    expect(await text(page, 'result-exact-half')).not.toBe(before);
+    expect(new URL(page.url()).searchParams.get('rho')).toBe('5.2');
+    await expect.poll(() => frames(page)).toBeGreaterThan(framesBefore);
+    await page.close();
+  });
+
+  it('invalid input shows an alert naming the constraint, dashes instead of NaN, and keeps the other values', async () => {
+    const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await page.getByTestId('input-Rcr').fill('4');
+    const alert = page.locator('[data-field="Rcr"] [role="alert"]');
+    await expect.poll(() => alert.textContent()).toMatch(/must not exceed the tool radius R = 3 mm/);
+    expect(await text(page, 'result-exact-half')).toBe('\u2014');
+    expect(await page.locator('body').textContent()).not.toMatch(/NaN/);
+    expect(await page.getByTestId('input-R').inputValue()).toBe('3');
+    expect(await page.getByTestId('input-h').inputValue()).toBe('0.05');
+    expect(await page.getByTestId('scene').getAttribute('class')).toMatch(/stale/);
+    await page.screenshot({ path: `${SHOTS}/invalid-rcr.png` });
+    await page.getByTestId('input-Rcr').fill('1');
+    await page.getByTestId('input-h').fill('5');
+    await expect
+      .poll(() => page.locator('[data-field="h"] [role="alert"]').textContent())
+      .toMatch(/wall, not a scallop/);
+    await page.getByTestId('input-Rcr').fill('abc');
+    await expect
+      .poll(() => page.locator('[data-field="Rcr"] [role="alert"]').textContent())
+      .toMatch(/must be a number/);
+    // Fixing the fields brings the results back.
+    await page.getByTestId('input-Rcr').fill('1');
+    await page.getByTestId('input-h').fill('0.05');
+    await expect.poll(() => text(page, 'result-exact-half')).toBe('1.4436');
+    expect(await page.getByTestId('scene').getAttribute('class')).not.toMatch(/stale/);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
+  it('the URL holds the state: round trip, unit switch, and bad values fall back with a notice', async () => {
+    const { page } = await open('?R=6&Rcr=2&rho=10&h=0.1&unit=mm');
+    expect(await text(page, 'result-exact-half')).toBe('2.1690');
+    const historyAtLoad = await page.evaluate(() => window.history.length);
+    await page.locator('input[name="unit"][value="in"]').check();
+    await expect.poll(() => new URL(page.url()).searchParams.get('unit')).toBe('in');
+    const url = page.url();
+    expect(new URL(url).searchParams.get('R')).toBe('0.23622');
+    // 2.16898 mm = 0.08539 in, shown with 5 decimals.
+    await expect.poll(() => text(page, 'result-exact-half')).toMatch(/^0\.0853\d$/);
+    const inches = await text(page, 'result-exact-half');
+    expect(Math.abs(Number(inches) * 25.4 - 2.16898)).toBeLessThan(2e-4);
+    const historyLength = await page.evaluate(() => window.history.length);
+    const again = await browser.newPage();
+    await again.goto(url);
+    await again.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
+    expect(await text(again, 'result-exact-half')).toBe(inches);
+    expect(await again.getByTestId('input-R').inputValue()).toBe('0.23622');
+    expect(historyLength).toBe(historyAtLoad); // replaceState: no history entries added
+    await again.goto(`${site.url}?R=abc&Rcr=1&rho=5`);
+    await again.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
+    const notice = again.getByTestId('notice');
+    expect(await notice.isVisible()).toBe(true);
+    expect(await notice.textContent()).toMatch(/R="abc".*not a number.*h is missing/);
+    expect(await again.getByTestId('input-R').inputValue()).toBe('3');
+    await again.close();
+    await page.close();
+  });
+
+  it('embed mode fits 480x360 without horizontal scrolling and links to the full calculator', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=20&h=0.3&unit=mm&embed=1', { width: 480, height: 360 });
+    const size = await page.evaluate(() => [
+      document.documentElement.scrollWidth,
+      document.documentElement.clientWidth,
+    ]);
+    expect(size[0]).toBeLessThanOrEqual(size[1] as number);
+    expect(await page.locator('.chrome').isVisible()).toBe(false);
+    const link = page.getByTestId('open-full');
+    expect(await link.isVisible()).toBe(true);
+    const href = new URL((await link.getAttribute('href')) ?? '', page.url());
+    expect(href.searchParams.get('embed')).toBeNull();
+    expect(href.searchParams.get('rho')).toBe('20');
+    await page.screenshot({ path: `${SHOTS}/embed-480x360.png` });
+    await page.close();
+  });
+
+  it('solve for scallop height: the inverse mode takes L and shows each procedure h', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await page.locator('input[name="mode"][value="inverse"]').check();
+    await page.getByTestId('input-L').fill('3');
+    const expected = compareInverse({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, halfIntervalMm: 1.5 });
+    await expect.poll(() => text(page, 'table-exact-h')).toBe(expected.exact.scallopHeightMm.toFixed(4));
+    expect(expected.bedi.ok).toBe(true);
+    if (expected.bedi.ok) expect(await text(page, 'result-bedi-h')).toBe(expected.bedi.scallopHeightMm.toFixed(4));
+    const url = new URL(page.url());
+    expect(url.searchParams.get('mode')).toBe('inverse');
+    expect(url.searchParams.get('L')).toBe('3');
+    await page.close();
+  });
+
+  it('a worker that dies is restarted, the request repeated, and the page says so', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await page.evaluate(() =>
+      (window as unknown as { __pathInterval: { crashWorker(): void } }).__pathInterval.crashWorker(),
+    );
+    await page.waitForTimeout(200);
+    await page.getByTestId('input-h').fill('0.1');
+    await expect.poll(() => text(page, 'result-exact-half'), { timeout: 10_000 }).toBe('1.8921');
+    expect(await page.getByTestId('notice').textContent()).toMatch(/solver was restarted/);
+    const starts = await page.evaluate(() =>
+      (window as unknown as { __pathInterval: { workerStarts(): number } }).__pathInterval.workerStarts(),
+    );
+    expect(starts).toBe(2);
+    await page.close();
+  });
+
+  it('a burst of slider moves ends on the latest value (stale replies dropped)', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await page.getByTestId('slider-h').focus();
+    for (let i = 0; i < 30; i++) await page.keyboard.press('ArrowRight');
+    await expect.poll(() => page.getByTestId('input-h').inputValue()).toBe('0.08');
+    const expected = compareForward({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, scallopHeightMm: 0.08 });
+    await expect.poll(() => text(page, 'result-exact-half')).toBe(expected.exact.halfIntervalMm.toFixed(4));
+    await page.close();
+  });
+});

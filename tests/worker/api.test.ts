@@ -1,0 +1,57 @@
+import { describe, expect, it } from 'vitest';
+import { compareForward, exactScallopHeightMm } from '../../src/core/index';
+import { solve, transferables } from '../../src/worker/api';
+
+describe('worker solver API (plain data in, plain data out)', () => {
+  it('forward: rows match the solver core, each with the scallop its own L really leaves', () => {
+    const reply = solve({ id: 7, mode: 'forward', R: 3, Rcr: 1, rho: 5, value: 0.05 });
+    if (!reply.ok) throw new Error('expected a solution');
+    expect(reply.id).toBe(7);
+    const c = compareForward({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, scallopHeightMm: 0.05 });
+    expect(reply.halfIntervalMm).toBe(c.exact.halfIntervalMm);
+    const sekine = reply.rows.find((r) => r.key === 'sekine');
+    if (!c.sekine.ok || !sekine?.valueMm) throw new Error('sekine applicable here');
+    expect(sekine.valueMm).toBe(c.sekine.halfIntervalMm);
+    expect(sekine.realScallopMm).toBe(
+      exactScallopHeightMm({
+        toolRadiusMm: 3,
+        cornerRadiusMm: 1,
+        leadAngleDeg: 5,
+        halfIntervalMm: c.sekine.halfIntervalMm,
+      }),
+    );
+    expect(sekine.modelRadiusMm).toBe(c.sekine.effectiveRadiusMm);
+    expect(reply.geometry?.toolPositions.length).toBeGreaterThan(0);
+    // Every large array is listed for transfer, none twice.
+    const buffers = transferables(reply);
+    expect(new Set(buffers).size).toBe(buffers.length);
+    expect(buffers.length).toBe(2 + (reply.geometry?.intersectionLoops.length ?? 0));
+  });
+
+  it('forward: invalid input is a typed error reply, not an exception', () => {
+    const reply = solve({ id: 1, mode: 'forward', R: 3, Rcr: 4, rho: 5, value: 0.05 });
+    expect(reply.ok).toBe(false);
+    if (!reply.ok) expect(reply.errors[0]?.field).toBe('Rcr');
+    expect(solve({ id: 2, mode: 'forward', R: Number.NaN, Rcr: 1, rho: 5, value: 0.05 }).ok).toBe(false);
+  });
+
+  it('an approximation whose L/2 reaches R leaves a wall, said in the note', () => {
+    // Redonnet's circle at a steep-ish h on a small-corner tool overshoots R.
+    const reply = solve({ id: 3, mode: 'forward', R: 3, Rcr: 0.2, rho: 2, value: 0.25 });
+    if (!reply.ok) throw new Error('expected a solution');
+    const red = reply.rows.find((r) => r.key === 'redonnet');
+    expect(red?.valueMm).toBeGreaterThan(3);
+    expect(red?.realScallopMm).toBeNull();
+    expect(red?.note).toMatch(/wall/);
+  });
+
+  it('inverse: L is the full step-over; h = 0 on the flat bottom (rho = 0) has no geometry', () => {
+    const reply = solve({ id: 4, mode: 'inverse', R: 3, Rcr: 1, rho: 5, value: 2 * 1.443592412967 });
+    if (!reply.ok) throw new Error('expected a solution');
+    expect(Math.abs(reply.scallopHeightMm - 0.05)).toBeLessThan(1e-9);
+    const flat = solve({ id: 5, mode: 'inverse', R: 3, Rcr: 1, rho: 0, value: 3 });
+    if (!flat.ok) throw new Error('expected a solution');
+    expect(flat.scallopHeightMm).toBe(0);
+    expect(flat.geometry).toBeNull();
+  });
+});
