@@ -9,5 +9,7 @@ export default defineConfig({
     testTimeout: 30_000,
     hookTimeout: 60_000,
     globalSetup: ['tests/e2e/globalSetup.ts'],
+    // Browser tests and benchmarks share one machine of 2 cores: run files one at a time.
+    fileParallelism: false,
   },
 });

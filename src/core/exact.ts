@@ -138,7 +138,7 @@ export function profilePolyline(s: ProfileShape, samplesPerHalf: number): Float6
 function meetingIntervals(f: TorusFrame, h: number): Array<[number, number]> {
   const k = f.cornerRadiusMm;
   const gap = (g: number) => Math.abs(cutSection(f, g, h).inPlaneDistanceMm) - k;
-  const steps = 720;
+  const steps = 180;
   const out: Array<[number, number]> = [];
   let start: number | null = gap(0) <= 0 ? 0 : null;
   let prev = 0;
@@ -149,7 +149,7 @@ function meetingIntervals(f: TorusFrame, h: number): Array<[number, number]> {
     if (prevGap <= 0 !== cur <= 0) {
       let lo = prev;
       let hi = g;
-      for (let j = 0; j < 60; j++) {
+      for (let j = 0; j < 52; j++) {
         const mid = 0.5 * (lo + hi);
         if (gap(mid) <= 0 === prevGap <= 0) lo = mid;
         else hi = mid;

@@ -243,7 +243,9 @@ export class ToolScene {
       this.sizeMm = R;
       if (first) this.setCamera('iso');
     }
-    this.requestRender();
+    // New results are drawn at once rather than on the next animation frame: the browser
+    // presents the frame at its next vsync either way, and this saves up to one frame of latency.
+    this.renderNow();
   }
 
   /** Marks the view as showing the last valid state (or not). */
@@ -264,16 +266,21 @@ export class ToolScene {
     this.requestRender();
   }
 
+  /** Renders on the next animation frame (several requests in one frame render once). */
   requestRender(): void {
     if (this.frameRequested) return;
     this.frameRequested = true;
     requestAnimationFrame(() => {
-      this.frameRequested = false;
-      this.renderer.render(this.scene, this.camera);
-      this.labels.render(this.scene, this.camera);
-      this.frames++;
-      this.onFrame?.();
+      if (this.frameRequested) this.renderNow();
     });
+  }
+
+  private renderNow(): void {
+    this.frameRequested = false;
+    this.renderer.render(this.scene, this.camera);
+    this.labels.render(this.scene, this.camera);
+    this.frames++;
+    this.onFrame?.();
   }
 
   private rebuildAxes(R: number): void {

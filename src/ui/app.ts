@@ -82,6 +82,10 @@ export class CalculatorApp {
   /** Time of the input event whose result is awaited (for the latency benchmark). */
   private pendingInputAt: number | null = null;
   readonly latencies: number[] = [];
+  /** Input event to reply from the worker (ms), for the benchmark's breakdown. */
+  readonly replyLatencies: number[] = [];
+  /** performance.now() when the first result was shown (cold-load benchmark). */
+  private firstResultMs: number | null = null;
 
   constructor(private readonly root: HTMLElement) {
     const parsed = parseUrl(window.location.search);
@@ -317,6 +321,8 @@ export class CalculatorApp {
 
   private showReply(reply: SolveReply): void {
     this.lastReply = reply;
+    if (this.firstResultMs === null && reply.ok) this.firstResultMs = performance.now();
+    if (this.pendingInputAt !== null) this.replyLatencies.push(performance.now() - this.pendingInputAt);
     if (!reply.ok) {
       this.showInvalid();
       return;
@@ -414,7 +420,9 @@ export class CalculatorApp {
       workerStarts: () => this.client.started,
       crashWorker: () => this.client.crash(),
       latencies: () => [...this.latencies],
+      replyLatencies: () => [...this.replyLatencies],
       lastReplyOk: () => this.lastReply?.ok ?? null,
+      firstResultMs: () => this.firstResultMs,
     };
     (window as unknown as { __pathInterval: typeof hooks }).__pathInterval = hooks;
   }

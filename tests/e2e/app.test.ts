@@ -7,9 +7,9 @@ import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import type { Browser, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { launchChromium } from '../../src/bench/browser';
+import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
 import { compareForward, compareInverse } from '../../src/core/index';
-import { launchChromium } from '../support/browser';
-import { type StaticSite, serveStatic } from '../support/staticServer';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const SHOTS = `${ROOT}test-results/screenshots`;

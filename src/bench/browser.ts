@@ -6,7 +6,7 @@ export function chromiumPath(): string {
   const found = [process.env.CHROMIUM_PATH, '/usr/bin/chromium', '/usr/bin/chromium-browser'].find(
     (p): p is string => typeof p === 'string' && existsSync(p),
   );
-  if (!found) throw new Error('No Chromium found: run `node tests/support/ensure-chromium.mjs` (npm test does).');
+  if (!found) throw new Error('No Chromium found: run `node tests/support/ensure-chromium.mjs` (npm test does it).');
   return found;
 }
 
