@@ -11,7 +11,7 @@ import {
 } from '../core/index';
 import { toolMesh } from '../core/toolMesh';
 import { validateForward, validateInverse } from '../core/validate';
-import type { ProcedureRow, SceneGeometry, SolveReply, SolveRequest } from './protocol';
+import type { ProcedureKey, ProcedureRow, SceneGeometry, SolveReply, SolveRequest } from './protocol';
 
 const DEG = Math.PI / 180;
 const PROCEDURES = ['sekine', 'redonnet', 'bedi'] as const;
@@ -51,6 +51,20 @@ function realScallop(
   };
 }
 
+/** A results row: every field not given is null. */
+function row(key: ProcedureKey, values: Partial<Omit<ProcedureRow, 'key'>>): ProcedureRow {
+  return {
+    key,
+    valueMm: null,
+    deviationMm: null,
+    deviationPercent: null,
+    realScallopMm: null,
+    note: null,
+    modelRadiusMm: null,
+    ...values,
+  };
+}
+
 /** The effective radius (Sekine, Redonnet) or ellipse long radius (Bedi) a procedure assumes, mm. */
 function modelRadius(c: ForwardComparison, key: (typeof PROCEDURES)[number]): number | null {
   if (key === 'bedi') return c.bedi.ok ? c.bedi.longRadiusMm : null;
@@ -67,41 +81,24 @@ export function solve(req: SolveRequest): SolveReply {
     if (!v.ok) return { id: req.id, ok: false, errors: v.errors };
     const c = compareForward(v.value);
     const exact = c.exact.halfIntervalMm;
-    const rows: ProcedureRow[] = [
-      {
-        key: 'exact',
-        valueMm: exact,
-        deviationMm: null,
-        deviationPercent: null,
-        realScallopMm: req.value,
-        note: null,
-        modelRadiusMm: null,
-      },
-    ];
+    const rows: ProcedureRow[] = [row('exact', { valueMm: exact, realScallopMm: req.value })];
     for (const key of PROCEDURES) {
       const r = c[key];
       if (!r.ok) {
-        rows.push({
-          key,
-          valueMm: null,
-          deviationMm: null,
-          deviationPercent: null,
-          realScallopMm: null,
-          note: r.notApplicable,
-          modelRadiusMm: null,
-        });
+        rows.push(row(key, { note: r.notApplicable }));
         continue;
       }
       const real = realScallop(R, Rcr, rho, r.halfIntervalMm);
-      rows.push({
-        key,
-        valueMm: r.halfIntervalMm,
-        deviationMm: r.halfIntervalMm - exact,
-        deviationPercent: (100 * (r.halfIntervalMm - exact)) / exact,
-        realScallopMm: real.mm,
-        note: real.note,
-        modelRadiusMm: modelRadius(c, key),
-      });
+      rows.push(
+        row(key, {
+          valueMm: r.halfIntervalMm,
+          deviationMm: r.halfIntervalMm - exact,
+          deviationPercent: (100 * (r.halfIntervalMm - exact)) / exact,
+          realScallopMm: real.mm,
+          note: real.note,
+          modelRadiusMm: modelRadius(c, key),
+        }),
+      );
     }
     return {
       id: req.id,
@@ -119,41 +116,22 @@ export function solve(req: SolveRequest): SolveReply {
   if (!v.ok) return { id: req.id, ok: false, errors: v.errors };
   const c = compareInverse(v.value);
   const exactH = c.exact.scallopHeightMm;
-  const rows: ProcedureRow[] = [
-    {
-      key: 'exact',
-      valueMm: exactH,
-      deviationMm: null,
-      deviationPercent: null,
-      realScallopMm: exactH,
-      note: null,
-      modelRadiusMm: null,
-    },
-  ];
+  const rows: ProcedureRow[] = [row('exact', { valueMm: exactH, realScallopMm: exactH })];
   for (const key of PROCEDURES) {
     const r = c[key];
     if (!r.ok) {
-      rows.push({
-        key,
-        valueMm: null,
-        deviationMm: null,
-        deviationPercent: null,
-        realScallopMm: null,
-        note: r.notApplicable,
-        modelRadiusMm: null,
-      });
+      rows.push(row(key, { note: r.notApplicable }));
       continue;
     }
     const dev = r.scallopHeightMm - exactH;
-    rows.push({
-      key,
-      valueMm: r.scallopHeightMm,
-      deviationMm: dev,
-      deviationPercent: exactH > 0 ? (100 * dev) / exactH : null,
-      realScallopMm: exactH,
-      note: null,
-      modelRadiusMm: null,
-    });
+    rows.push(
+      row(key, {
+        valueMm: r.scallopHeightMm,
+        deviationMm: dev,
+        deviationPercent: exactH > 0 ? (100 * dev) / exactH : null,
+        realScallopMm: exactH,
+      }),
+    );
   }
   return {
     id: req.id,
