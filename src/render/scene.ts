@@ -122,11 +122,11 @@ export class ToolScene {
     this.tool = new Mesh(
       this.toolGeometry,
       new MeshStandardMaterial({
-        color: 0x8fa3b8,
+        color: 0xb8c7d9,
         metalness: 0.3,
         roughness: 0.45,
         transparent: true,
-        opacity: 0.3,
+        opacity: 0.22,
         side: DoubleSide,
         depthWrite: false,
       }),
@@ -228,7 +228,7 @@ export class ToolScene {
     const [x, y, z] = g.pHp;
     const tick = 0.08 * R;
     setLine(this.dimension, [x, 0, z + tick, x, 0, z, x, y, z, x, y, z + tick, x, y, z, x, 0, z], 6);
-    this.dimLabel.position.set(x, y / 2, z + tick);
+    this.dimLabel.position.set(x, y / 2, z + 3 * tick);
     this.dimLabel.element.textContent = dimensionText;
 
     const dotR = 0.035 * R;

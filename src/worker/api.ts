@@ -18,7 +18,7 @@ const PROCEDURES = ['sekine', 'redonnet', 'bedi'] as const;
 
 function sceneGeometry(R: number, Rcr: number, rho: number, h: number): SceneGeometry {
   const sol = solveExact({ toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, scallopHeightMm: h }, 96);
-  const mesh = toolMesh(R, Rcr, rho * DEG, 0.7 * R);
+  const mesh = toolMesh(R, Rcr, rho * DEG, 0.4 * R);
   return {
     toolRadiusMm: R,
     scallopHeightMm: h,
