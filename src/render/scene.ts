@@ -21,6 +21,8 @@ import {
   MeshStandardMaterial,
   PerspectiveCamera,
   PlaneGeometry,
+  Points,
+  PointsMaterial,
   Scene,
   SphereGeometry,
   Vector3,
@@ -29,7 +31,7 @@ import {
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import { toolMeshIndices } from '../core/toolMesh';
-import type { SceneGeometry } from '../worker/protocol';
+import type { SceneGeometry, TraceFrame } from '../worker/protocol';
 
 export type CameraPreset = 'iso' | 'feed' | 'top';
 
@@ -55,6 +57,25 @@ function setLine(line: Line, points: ArrayLike<number>, count: number): void {
   for (let i = 0; i < n * 3; i++) arr[i] = points[i] as number;
   attr.needsUpdate = true;
   line.geometry.setDrawRange(0, n);
+}
+
+/** Points of a circle (flat xyz) around `centre` in the plane with unit normal `normal`. */
+function circlePoints(centre: readonly number[], normal: readonly number[], radius: number): Float32Array {
+  const n = new Vector3(normal[0], normal[1], normal[2]);
+  const u = new Vector3(0, 0, 1).cross(n);
+  if (u.lengthSq() < 1e-12) u.set(1, 0, 0);
+  u.normalize();
+  const v = new Vector3().crossVectors(n, u).normalize();
+  const pts = new Float32Array(SECTION_POINTS * 3);
+  for (let i = 0; i < SECTION_POINTS; i++) {
+    const a = (2 * Math.PI * i) / SECTION_POINTS;
+    const c = Math.cos(a) * radius;
+    const s = Math.sin(a) * radius;
+    pts[3 * i] = (centre[0] as number) + c * u.x + s * v.x;
+    pts[3 * i + 1] = (centre[1] as number) + c * u.y + s * v.y;
+    pts[3 * i + 2] = (centre[2] as number) + c * u.z + s * v.z;
+  }
+  return pts;
 }
 
 function label(text: string, className: string): CSS2DObject {
@@ -85,7 +106,20 @@ export class ToolScene {
   private readonly pHpLabel = label('P_hp', 'label-php');
   private readonly dimLabel = label('L/2', 'label-dim');
   private readonly axes = new Group();
+  private readonly traceSection = lineOf(SECTION_POINTS, 0x7c3aed, true);
+  private readonly candidates = new Points(
+    (() => {
+      const g = new BufferGeometry();
+      g.setAttribute('position', new BufferAttribute(new Float32Array(64 * 3), 3));
+      g.setDrawRange(0, 0);
+      return g;
+    })(),
+    new PointsMaterial({ color: 0x7c3aed, size: 6, sizeAttenuation: false, depthTest: false }),
+  );
+  private readonly traceMarker: Mesh;
+  private readonly traceLabel = label('', 'label-trace');
   private frameRequested = false;
+  private sectionRadius = 1;
   private sizeMm = 0;
   /** Frames rendered so far (read by tests and the benchmark). */
   frames = 0;
@@ -163,6 +197,13 @@ export class ToolScene {
       this.axes,
     );
     this.dimension.add(this.dimLabel);
+    this.traceMarker = new Mesh(dot, new MeshBasicMaterial({ color: 0x7c3aed, depthTest: false }));
+    this.traceMarker.renderOrder = 12;
+    this.traceMarker.add(this.traceLabel);
+    this.candidates.frustumCulled = false;
+    this.candidates.renderOrder = 12;
+    this.scene.add(this.traceSection, this.candidates, this.traceMarker);
+    this.showTraceFrame(null);
 
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
@@ -189,20 +230,8 @@ export class ToolScene {
     this.hPlane.position.set(0, g.halfIntervalMm, g.scallopHeightMm);
 
     // Section circle through P_hp: radius Rcr in the plane normal to the ring tangent.
-    const n = new Vector3(...g.sectionNormal);
-    const u = new Vector3(0, 0, 1).cross(n);
-    if (u.lengthSq() < 1e-12) u.set(1, 0, 0);
-    u.normalize();
-    const v = new Vector3().crossVectors(n, u).normalize();
-    const pts = new Float32Array(SECTION_POINTS * 3);
-    for (let i = 0; i < SECTION_POINTS; i++) {
-      const a = (2 * Math.PI * i) / SECTION_POINTS;
-      const c = Math.cos(a) * g.sectionRadiusMm;
-      const s = Math.sin(a) * g.sectionRadiusMm;
-      pts[3 * i] = g.sectionCentre[0] + c * u.x + s * v.x;
-      pts[3 * i + 1] = g.sectionCentre[1] + c * u.y + s * v.y;
-      pts[3 * i + 2] = g.sectionCentre[2] + c * u.z + s * v.z;
-    }
+    this.sectionRadius = g.sectionRadiusMm;
+    const pts = circlePoints(g.sectionCentre, g.sectionNormal, g.sectionRadiusMm);
     setLine(this.section, pts, SECTION_POINTS);
 
     this.loops.forEach((line, i) => {
@@ -246,6 +275,39 @@ export class ToolScene {
     // New results are drawn at once rather than on the next animation frame: the browser
     // presents the frame at its next vsync either way, and this saves up to one frame of latency.
     this.renderNow();
+  }
+
+  /** Shows one frame of the paper's procedure (section, candidates, point), or hides the replay. */
+  showTraceFrame(frame: TraceFrame | null): void {
+    const on = frame !== null;
+    this.traceSection.visible = on;
+    this.candidates.visible = on;
+    this.traceMarker.visible = on && frame.point !== null;
+    this.traceLabel.visible = this.traceMarker.visible;
+    this.traceLabel.element.style.display = this.traceMarker.visible ? '' : 'none';
+    if (frame) {
+      setLine(
+        this.traceSection,
+        circlePoints(frame.sectionCentre, frame.sectionNormal, this.sectionRadius),
+        SECTION_POINTS,
+      );
+      const attr = this.candidates.geometry.getAttribute('position') as BufferAttribute;
+      const n = Math.min(frame.candidates.length / 3, attr.count);
+      (attr.array as Float32Array).set(frame.candidates.slice(0, 3 * n));
+      attr.needsUpdate = true;
+      this.candidates.geometry.setDrawRange(0, n);
+      if (frame.point) {
+        this.traceMarker.position.set(...frame.point);
+        this.traceMarker.scale.setScalar(0.03 * (this.sizeMm || 1));
+        this.traceLabel.element.textContent =
+          frame.phase === 'converged'
+            ? 'P_hp (converged)'
+            : frame.phase === 'search'
+              ? 'best P_hp[i]'
+              : 'single contact';
+      }
+    }
+    this.requestRender();
   }
 
   /** Marks the view as showing the last valid state (or not). */

@@ -20,6 +20,10 @@ import {
   toSearch,
   type Unit,
 } from './state';
+import type { TeachingPanel, ViewId } from './views/panel';
+
+/** The teaching views' ids (kept here so the views' code can load lazily). */
+const VIEW_IDS: readonly ViewId[] = ['profile', 'chart', 'tables', 'stepper', 'formulas'];
 
 interface FieldSpec {
   readonly key: FieldKey;
@@ -74,9 +78,19 @@ interface FieldView {
 export class CalculatorApp {
   private state: CalculatorState;
   private readonly fields = new Map<FieldKey, FieldView>();
+  private readonly viewParam: ViewId | null;
+  private readonly initialView: ViewId;
+  private teachingRequested = false;
+  private teachingTimer: ReturnType<typeof setTimeout> | null = null;
+  private teachingAfterFrame = false;
   private readonly scene: ToolScene;
   private readonly client: SolverClient;
+  private readonly viewsClient: SolverClient;
+  private viewsTimer: ReturnType<typeof setTimeout> | null = null;
   private readonly embed: boolean;
+  /** Loaded after the first result: the views' code (charts, typesetting) is not needed to start. */
+  private teaching: TeachingPanel | null = null;
+  private teachingContext: Parameters<TeachingPanel['update']>[0] | null = null;
   private noticeTimer: ReturnType<typeof setTimeout> | null = null;
   private lastReply: SolveReply | null = null;
   /** Time of the input event whose result is awaited (for the latency benchmark). */
@@ -100,8 +114,20 @@ export class CalculatorApp {
       onReply: (reply) => this.showReply(reply),
       onRestart: (reason) => this.notify(`The solver was restarted: ${reason}. Your last request was repeated.`, 5000),
     });
+    this.viewsClient = new SolverClient({
+      onReply: (reply) => this.showViews(reply),
+      onRestart: (reason) => this.notify(`The teaching views' solver was restarted: ${reason}.`, 5000),
+    });
+    const requested = VIEW_IDS.find((v) => v === parsed.view);
+    const notices = [...parsed.notices];
+    if (parsed.view !== null && !requested) notices.push(`view="${parsed.view}" is not one of ${VIEW_IDS.join(', ')}.`);
+    this.viewParam = requested ?? null;
+    this.initialView = requested ?? 'profile';
+    document.documentElement.classList.toggle('single-view', this.embed && requested !== undefined);
+    document.documentElement.dataset.view = requested ?? '';
+    this.wireHighlight();
     this.wireSwitches();
-    if (parsed.notices.length > 0) this.notify(`Some link values were replaced: ${parsed.notices.join(' ')}`, 0);
+    if (notices.length > 0) this.notify(`Some link values were replaced: ${notices.join(' ')}`, 0);
     this.syncAll();
     this.update();
     this.exposeTestHooks();
@@ -252,11 +278,10 @@ export class CalculatorApp {
 
   private update(): void {
     this.syncSliders();
-    window.history.replaceState(
-      null,
-      '',
-      toSearch(this.state, this.embed ? { embed: '1' } : {}) + window.location.hash,
-    );
+    const extra: Record<string, string> = {};
+    if (this.embed) extra.embed = '1';
+    if (this.viewParam) extra.view = this.viewParam;
+    window.history.replaceState(null, '', toSearch(this.state, extra) + window.location.hash);
     const fullLink = this.root.querySelector<HTMLAnchorElement>('[data-testid="open-full"]');
     if (fullLink) fullLink.href = toSearch(this.state);
     const { unit, mode, fields } = this.state;
@@ -283,7 +308,15 @@ export class CalculatorApp {
       return;
     }
     const value = mode === 'forward' ? (mm('h') as number) : (mm('L') as number);
-    this.client.request({ mode, R: mm('R') as number, Rcr: mm('Rcr') as number, rho: mm('rho') as number, value });
+    const request = { mode, R: mm('R') as number, Rcr: mm('Rcr') as number, rho: mm('rho') as number, value };
+    this.client.request(request);
+    // The teaching views' data comes from a second worker, a moment later while a slider moves,
+    // so it never delays the results and the 3D frame.
+    if (this.viewsTimer !== null) clearTimeout(this.viewsTimer);
+    this.viewsTimer = setTimeout(() => {
+      this.viewsTimer = null;
+      this.viewsClient.request({ ...request, withViews: true });
+    }, 150);
   }
 
   /** Messages name lengths in mm; in inch mode they also say the field in the user's unit. */
@@ -399,10 +432,89 @@ export class CalculatorApp {
     }
   }
 
+  private showViews(reply: SolveReply): void {
+    if (!reply.ok || !reply.teaching) return;
+    const num = (key: FieldKey) => toMm(key, parseField(this.state.fields[key]) ?? 0, this.state.unit);
+    this.teachingContext = { reply, unit: this.state.unit, R: num('R'), Rcr: num('Rcr'), rho: num('rho') };
+    this.scheduleTeaching();
+  }
+
+  /**
+   * The teaching views update after the results and the 3D frame are out, so they never
+   * delay them; their code loads only after the first result.
+   */
+  private scheduleTeaching(): void {
+    if (!this.teachingRequested) {
+      this.teachingRequested = true;
+      void import('./views/panel').then(({ TeachingPanel }) => {
+        this.teaching = new TeachingPanel(
+          must(this.root, '[data-testid="teaching"]'),
+          this.scene,
+          (c) => this.loadCondition(c),
+          this.initialView,
+        );
+        if (this.teachingContext) this.teaching.update(this.teachingContext);
+      });
+      return;
+    }
+    // While a result is awaited, the views wait for its frame (see frameRendered).
+    if (this.pendingInputAt !== null) {
+      this.teachingAfterFrame = true;
+      return;
+    }
+    if (this.teachingTimer !== null) return;
+    this.teachingTimer = setTimeout(() => {
+      this.teachingTimer = null;
+      if (this.teaching && this.teachingContext) this.teaching.update(this.teachingContext);
+    }, 0);
+  }
+
+  /** Loads one of the paper's conditions (mm, degrees) into the calculator. */
+  private loadCondition(c: { R: number; Rcr: number; rho: number; h: number }): void {
+    const k = this.state.unit === 'in' ? 1 / MM_PER_INCH : 1;
+    this.state = {
+      ...this.state,
+      mode: 'forward',
+      fields: {
+        ...this.state.fields,
+        R: formatField(c.R * k),
+        Rcr: formatField(c.Rcr * k),
+        rho: formatField(c.rho),
+        h: formatField(c.h * k),
+      },
+    };
+    this.syncAll();
+    this.update();
+  }
+
+  /** Hovering or focusing a procedure anywhere highlights it in the table, the profile and the charts. */
+  private wireHighlight(): void {
+    let current: ProcedureKey | null = null;
+    const set = (key: ProcedureKey | null) => {
+      if (key === current) return;
+      current = key;
+      this.teaching?.highlight(key);
+      for (const tr of this.root.querySelectorAll<HTMLElement>('.procedures tr[data-procedure]')) {
+        tr.classList.toggle('emph', key !== null && tr.dataset.procedure === key);
+      }
+    };
+    const keyOf = (target: EventTarget | null): ProcedureKey | null => {
+      const el = target instanceof Element ? target.closest<HTMLElement>('[data-procedure]') : null;
+      const key = el?.dataset.procedure;
+      return key === 'exact' || key === 'sekine' || key === 'redonnet' || key === 'bedi' ? key : null;
+    };
+    this.root.addEventListener('mouseover', (e) => set(keyOf(e.target)));
+    this.root.addEventListener('focusin', (e) => set(keyOf(e.target)));
+  }
+
   private frameRendered(): void {
     if (this.pendingInputAt !== null && this.lastReply?.ok) {
       this.latencies.push(performance.now() - this.pendingInputAt);
       this.pendingInputAt = null;
+    }
+    if (this.teachingAfterFrame && this.pendingInputAt === null) {
+      this.teachingAfterFrame = false;
+      this.scheduleTeaching();
     }
   }
 
@@ -423,6 +535,7 @@ export class CalculatorApp {
       replyLatencies: () => [...this.replyLatencies],
       lastReplyOk: () => this.lastReply?.ok ?? null,
       firstResultMs: () => this.firstResultMs,
+      activeView: () => this.teaching?.activeView ?? null,
     };
     (window as unknown as { __pathInterval: typeof hooks }).__pathInterval = hooks;
   }

@@ -2,18 +2,34 @@
  * The solver API that runs inside the Web Worker. Pure functions of plain data, so it is
  * tested in Node directly and exposed unchanged through Comlink in solver.worker.ts.
  */
+import { bediModel, redonnetModel, sekineModel } from '../core/approximations';
 import {
   compareForward,
   compareInverse,
+  exactHalfIntervalMm,
   exactScallopHeightMm,
   type ForwardComparison,
+  type ForwardInput,
+  farthestCrossing,
   solveExact,
+  traceProcedure,
 } from '../core/index';
+import { type PaperTableRow, paperTables, profileCurves, rhoSweep } from '../core/teaching';
 import { toolMesh } from '../core/toolMesh';
+import { ringTangent, sectionCentre, torusFrame } from '../core/torus';
 import { validateForward, validateInverse } from '../core/validate';
-import type { ProcedureKey, ProcedureRow, SceneGeometry, SolveReply, SolveRequest } from './protocol';
+import type {
+  ProcedureKey,
+  ProcedureRow,
+  SceneGeometry,
+  SolveReply,
+  SolveRequest,
+  TeachingData,
+  TraceFrame,
+} from './protocol';
 
 const DEG = Math.PI / 180;
+
 const PROCEDURES = ['sekine', 'redonnet', 'bedi'] as const;
 
 function sceneGeometry(R: number, Rcr: number, rho: number, h: number): SceneGeometry {
@@ -34,6 +50,111 @@ function sceneGeometry(R: number, Rcr: number, rho: number, h: number): SceneGeo
     intersectionLoops: sol.intersectionLoops,
     profile: sol.profile,
     toolPositions: mesh.positions,
+  };
+}
+
+function deg(rad: number): string {
+  return `${((rad * 180) / Math.PI).toFixed(2)} deg`;
+}
+
+/** The trace of the paper's procedure as frames for the 3D step-through. */
+export function traceFrames(input: ForwardInput): TraceFrame[] {
+  const frame = torusFrame(input.toolRadiusMm, input.cornerRadiusMm, input.leadAngleDeg * DEG);
+  const rcr = input.cornerRadiusMm;
+  const trace = traceProcedure(input);
+  const section = (g: number) => ({ sectionCentre: sectionCentre(frame, g), sectionNormal: ringTangent(frame, g) });
+  const frames: TraceFrame[] = [];
+  let approach = 0;
+  for (const step of trace.steps) {
+    if (step.phase === 'approach') {
+      approach++;
+      const first = approach === 1;
+      frames.push({
+        phase: 'approach',
+        caption: first
+          ? `Step 2 (Eq. 1): start at the section at ring angle gamma = ${deg(step.ringAngleRad)}, where the ring is h/2 above its lowest point; d_s = ${step.dsMm.toFixed(4)} mm against Rcr = ${rcr} mm.`
+          : `Steps 6-11: move along the ring towards d_s = Rcr. Section at gamma = ${deg(step.ringAngleRad)}: d_s = ${step.dsMm.toFixed(4)} mm (Rcr - d_s = ${(rcr - step.dsMm).toExponential(2)} mm).`,
+        ringAngleRad: step.ringAngleRad,
+        dsMm: step.dsMm,
+        ...section(step.ringAngleRad),
+        candidates: [],
+        point: null,
+        bestY: null,
+      });
+    } else if (step.phase === 'single-contact') {
+      frames.push({
+        phase: 'single-contact',
+        caption: step.found
+          ? `Steps 12-14: the section at gamma_scp = ${deg(step.ringAngleRad)} touches the h pseudo plane at a single point (d_s = Rcr). It bounds the search range.`
+          : 'Every section meets the h pseudo plane (no single contact): the search runs over the whole half ring.',
+        ringAngleRad: step.ringAngleRad,
+        dsMm: step.dsMm,
+        ...section(step.ringAngleRad),
+        candidates: [],
+        point: step.found ? step.pHp : null,
+        bestY: null,
+      });
+    } else {
+      const best = step.ringAnglesRad[step.bestIndex] ?? 0;
+      const candidates: number[] = [];
+      step.ringAnglesRad.forEach((g, i) => {
+        const y = step.crossingYMm[i];
+        if (y === undefined || !Number.isFinite(y)) return;
+        const p = farthestCrossing(frame, g, input.scallopHeightMm);
+        if (p) candidates.push(p[0], p[1], p[2]);
+      });
+      frames.push({
+        phase: 'search',
+        caption: `Steps 16-25: ${step.ringAnglesRad.length} sections from gamma = ${deg(step.rangeRad[0])} to ${deg(step.rangeRad[1])}; their farthest crossings P_hp[i] with the plane. Best: gamma = ${deg(best)}, Y = ${step.pHp[1].toFixed(6)} mm; the range narrows to its neighbours.`,
+        ringAngleRad: best,
+        dsMm: null,
+        ...section(best),
+        candidates,
+        point: step.pHp,
+        bestY: step.pHp[1],
+      });
+    }
+  }
+  frames.push({
+    phase: 'converged',
+    caption: `Step 26: converged. L/2 = ${trace.halfIntervalMm.toFixed(6)} mm at gamma* = ${deg(trace.ringAngleRad)}; the exact solver gives ${exactHalfIntervalMm(input).toFixed(6)} mm.`,
+    ringAngleRad: trace.ringAngleRad,
+    dsMm: null,
+    ...section(trace.ringAngleRad),
+    candidates: [],
+    point: trace.pHp,
+    bestY: trace.halfIntervalMm,
+  });
+  return frames;
+}
+
+/** Fixed conditions: computed once per worker. */
+const PAPER_TABLES: readonly PaperTableRow[] = paperTables();
+
+function teachingData(input: ForwardInput): TeachingData {
+  const sol = solveExact(input, 8);
+  const sek = sekineModel(input);
+  const red = redonnetModel(input);
+  const bedi = bediModel(input);
+  return {
+    curves: profileCurves(input),
+    sweep: rhoSweep(input.toolRadiusMm, input.cornerRadiusMm, input.scallopHeightMm, 0.5, 89, 120, input.leadAngleDeg),
+    frames: traceFrames(input),
+    tables: PAPER_TABLES,
+    models: {
+      sekine: sek.ok
+        ? {
+            toolCentreHeightMm: sek.toolCentreHeightMm,
+            shortRadiusMm: sek.shortRadiusMm,
+            longRadiusMm: sek.longRadiusMm,
+            effectiveRadiusMm: sek.effectiveRadiusMm,
+          }
+        : null,
+      redonnet: red.ok ? { effectiveRadiusMm: red.effectiveRadiusMm } : null,
+      bedi: bedi.ok ? { longRadiusMm: bedi.longRadiusMm, shortRadiusMm: bedi.shortRadiusMm } : null,
+      exactNormalAngleRad: sol.normalAngleRad,
+      exactRingAngleRad: sol.ringAngleRad,
+    },
   };
 }
 
@@ -108,6 +229,7 @@ export function solve(req: SolveRequest): SolveReply {
       scallopHeightMm: req.value,
       rows,
       geometry: sceneGeometry(R, Rcr, rho, req.value),
+      teaching: req.withViews ? teachingData(v.value) : null,
       solveMs: performance.now() - t0,
     };
   }
@@ -141,6 +263,10 @@ export function solve(req: SolveRequest): SolveReply {
     scallopHeightMm: exactH,
     rows,
     geometry: exactH >= 1e-9 ? sceneGeometry(R, Rcr, rho, exactH) : null,
+    teaching:
+      req.withViews && exactH >= 1e-9
+        ? teachingData({ toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, scallopHeightMm: exactH })
+        : null,
     solveMs: performance.now() - t0,
   };
 }
@@ -149,7 +275,13 @@ export function solve(req: SolveRequest): SolveReply {
 export function transferables(reply: SolveReply): ArrayBuffer[] {
   if (!reply.ok || reply.geometry === null) return [];
   const g = reply.geometry;
-  return [g.profile.buffer, g.toolPositions.buffer, ...g.intersectionLoops.map((l) => l.buffer)] as ArrayBuffer[];
+  const out = [g.profile.buffer, g.toolPositions.buffer, ...g.intersectionLoops.map((l) => l.buffer)] as ArrayBuffer[];
+  if (reply.teaching) {
+    const c = reply.teaching.curves;
+    for (const curve of [c.exact, c.ringEllipse, c.sekine, c.redonnet, c.bedi])
+      if (curve) out.push(curve.buffer as ArrayBuffer);
+  }
+  return out;
 }
 
 /** The worker's API object; its type is what the page sees through Comlink. */

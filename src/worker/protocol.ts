@@ -2,6 +2,7 @@
  * Plain data crossing the worker boundary (structured-clone safe; typed arrays are
  * transferred). Lengths in mm, angles in degrees.
  */
+import type { PaperTableRow } from '../core/teaching';
 import type { FieldName, InputError } from '../core/validate';
 import type { Vec3 } from '../core/vec';
 
@@ -16,6 +17,57 @@ export interface SolveRequest {
   readonly rho: number;
   /** Forward: scallop height h (mm). Inverse: path interval L (mm). */
   readonly value: number;
+  /** Also compute the teaching views' data. */
+  readonly withViews?: boolean;
+}
+
+/** One frame of the step-through of the paper's 3D procedure (Figure 1). */
+export interface TraceFrame {
+  readonly phase: 'approach' | 'single-contact' | 'search' | 'converged';
+  readonly caption: string;
+  readonly ringAngleRad: number;
+  /** In-plane distance of the section centre from the h pseudo plane (mm), null in search frames. */
+  readonly dsMm: number | null;
+  readonly sectionCentre: Vec3;
+  readonly sectionNormal: Vec3;
+  /** Candidate points P_hp[i] of a search pass (flat xyz, mm); empty otherwise. */
+  readonly candidates: number[];
+  /** The point this frame shows (touching point, best candidate, converged P_hp), or null. */
+  readonly point: Vec3 | null;
+  readonly bestY: number | null;
+}
+
+export interface TeachingData {
+  readonly curves: {
+    readonly exact: Float64Array;
+    readonly ringEllipse: Float64Array;
+    readonly sekine: Float64Array | null;
+    readonly redonnet: Float64Array | null;
+    readonly bedi: Float64Array | null;
+  };
+  readonly sweep: {
+    readonly rhoDeg: number[];
+    readonly exact: Array<number | null>;
+    readonly sekine: Array<number | null>;
+    readonly redonnet: Array<number | null>;
+    readonly bedi: Array<number | null>;
+  };
+  readonly frames: readonly TraceFrame[];
+  /** Tables 2-5 recomputed beside the printed values. */
+  readonly tables: readonly PaperTableRow[];
+  /** Model quantities for the formulas (mm), null where not applicable. */
+  readonly models: {
+    readonly sekine: {
+      toolCentreHeightMm: number;
+      shortRadiusMm: number;
+      longRadiusMm: number;
+      effectiveRadiusMm: number;
+    } | null;
+    readonly redonnet: { effectiveRadiusMm: number } | null;
+    readonly bedi: { longRadiusMm: number; shortRadiusMm: number } | null;
+    readonly exactNormalAngleRad: number;
+    readonly exactRingAngleRad: number;
+  };
 }
 
 export type ProcedureKey = 'exact' | 'sekine' | 'redonnet' | 'bedi';
@@ -64,6 +116,8 @@ export type SolveReply =
       readonly rows: readonly ProcedureRow[];
       /** Null when there is no scallop to draw (flat bottom at rho = 0 in inverse mode). */
       readonly geometry: SceneGeometry | null;
+      /** Present when requested and there is a scallop. */
+      readonly teaching: TeachingData | null;
       readonly solveMs: number;
     }
   | { readonly id: number; readonly ok: false; readonly errors: readonly InputError[] };

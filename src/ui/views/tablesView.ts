@@ -1,0 +1,113 @@
+/**
+ * The paper's Tables 2-5 regenerated beside the printed values. A computed value that does
+ * not round to the printed digits is highlighted; clicking a condition loads it.
+ */
+import type { PaperTableRow } from '../../core/teaching';
+import type { ProcedureKey } from '../../worker/protocol';
+import { html, LABELS, type TeachingView, type ViewContext } from './common';
+
+type Key = 'threeD' | 'sekine' | 'redonnet' | 'bedi';
+const KEYS: ReadonlyArray<[Key, ProcedureKey]> = [
+  ['threeD', 'exact'],
+  ['sekine', 'sekine'],
+  ['redonnet', 'redonnet'],
+  ['bedi', 'bedi'],
+];
+
+export class TablesView implements TeachingView {
+  readonly id = 'tables';
+  readonly title = "The paper's tables";
+  readonly element = html('div', { class: 'view-tables', 'data-testid': 'paper-tables' });
+  private rows: readonly PaperTableRow[] = [];
+  private readonly note: HTMLElement;
+
+  constructor(onLoad: (c: { R: number; Rcr: number; rho: number; h: number }) => void) {
+    const note = html(
+      'p',
+      { class: 'view-note' },
+      'Each cell: printed / recomputed (mm). Highlighted: the recomputed value does not round to the printed digits. ' +
+        "The printed 3D column is 0.0005-0.013 mm low: Figure 1's search range can stop before the true maximum " +
+        "(shared/notes/geometry.md); the exact values here agree with brute-force sampling and with the paper's own procedure run to convergence. " +
+        'Tables 4-5 evaluate Eqs. 12-13 at the printed 3D L/2, as the paper did. Click a condition to load it.',
+    );
+    this.note = note;
+    this.element.append(note);
+    this.element.addEventListener('click', (e) => {
+      const tr = (e.target as HTMLElement).closest('tr[data-condition]');
+      const row = tr ? this.rows[Number(tr.getAttribute('data-condition'))] : undefined;
+      if (row) onLoad({ R: row.R, Rcr: row.Rcr, rho: row.rho, h: row.h });
+    });
+  }
+
+  private table(caption: string, what: 'half' | 'height'): HTMLTableElement {
+    const table = html('table', { class: 'paper-table', 'data-testid': `paper-table-${what}` });
+    table.append(html('caption', {}, caption));
+    const head = html('tr');
+    for (const t of [
+      'Table',
+      'R',
+      'Rcr',
+      'rho',
+      what === 'half' ? 'h' : 'L/2 (3D)',
+      ...KEYS.map(([, p]) => LABELS[p]),
+    ]) {
+      head.append(html('th', { scope: 'col' }, t));
+    }
+    const thead = html('thead');
+    thead.append(head);
+    const tbody = html('tbody');
+    this.rows.forEach((r, i) => {
+      const tr = html('tr', {
+        'data-condition': String(i),
+        tabindex: '0',
+        title: 'Load this condition into the calculator',
+      });
+      tr.addEventListener('keydown', (e) => {
+        if (e.key === 'Enter') tr.click();
+      });
+      tr.append(
+        html('td', {}, String(what === 'half' ? r.table : r.table + 2)),
+        html('td', {}, String(r.R)),
+        html('td', {}, String(r.Rcr)),
+        html('td', {}, String(r.rho)),
+        html('td', {}, String(what === 'half' ? r.h : r.printedHalf.threeD)),
+      );
+      for (const [key, proc] of KEYS) {
+        const printed = what === 'half' ? r.printedHalf[key] : r.printedHeight[key];
+        const computed = what === 'half' ? r.computedHalf[key] : r.computedHeight[key];
+        const off = Math.abs(computed - printed) > 0.0005 + 1e-12;
+        const td = html('td', {
+          class: off ? 'deviates' : '',
+          'data-procedure': proc,
+          'data-testid': `paper-${what}-${i}-${proc}`,
+        });
+        td.append(
+          html('span', { class: 'printed' }, printed.toFixed(3)),
+          document.createTextNode(' / '),
+          html('span', { class: 'computed' }, computed.toFixed(4)),
+        );
+        tr.append(td);
+      }
+      tbody.append(tr);
+    });
+    table.append(thead, tbody);
+    return table;
+  }
+
+  /** The tables are recomputed in the worker; they are fixed conditions, so they are built once. */
+  update(ctx: ViewContext): void {
+    const rows = ctx.reply.teaching?.tables;
+    if (!rows || this.rows.length > 0) return;
+    this.rows = rows;
+    this.note.after(
+      this.table('Tables 2-3: L/2 [mm] for h', 'half'),
+      this.table('Tables 4-5: h [mm] at the printed 3D L/2', 'height'),
+    );
+  }
+
+  highlight(key: ProcedureKey | null): void {
+    for (const td of this.element.querySelectorAll<HTMLElement>('td[data-procedure]')) {
+      td.classList.toggle('emph', key !== null && td.dataset.procedure === key);
+    }
+  }
+}

@@ -1,0 +1,192 @@
+/**
+ * The teaching views in real headless Chromium against the built site: each renders real
+ * content, follows a slider change, and shows the solver's numbers. Screenshots are kept.
+ */
+import { mkdirSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import type { Browser, Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { launchChromium } from '../../src/bench/browser';
+import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
+import { sekineModel } from '../../src/core/approximations';
+import { compareForward, exactHalfIntervalMm, traceProcedure } from '../../src/core/index';
+import { PAPER_CONDITIONS } from '../../src/core/paper';
+
+const ROOT = fileURLToPath(new URL('../..', import.meta.url));
+const SHOTS = `${ROOT}test-results/screenshots`;
+let browser: Browser;
+let site: StaticSite;
+
+beforeAll(async () => {
+  mkdirSync(SHOTS, { recursive: true });
+  site = await serveStatic(`${ROOT}dist`, 'docs/views');
+  browser = await launchChromium();
+});
+
+afterAll(async () => {
+  await browser?.close();
+  await site?.close();
+});
+
+async function open(
+  query: string,
+  viewport = { width: 1400, height: 1000 },
+): Promise<{ page: Page; errors: string[] }> {
+  const page = await browser.newPage({ viewport });
+  const errors: string[] = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(`${site.url}${query}`);
+  // Attached, not visible: a single embedded view hides the results.
+  await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+  return { page, errors };
+}
+
+const tool = (rho: number, h: number) => ({
+  toolRadiusMm: 3,
+  cornerRadiusMm: 1,
+  leadAngleDeg: rho,
+  scallopHeightMm: h,
+});
+
+describe('teaching views in headless Chromium', () => {
+  it('profile: two passes with the scallop shaded, the approximations overlaid, dimensions, zoom and reset', async () => {
+    const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
+    const view = page.getByTestId('profile-view');
+    await view.locator('polygon.scallop').waitFor();
+    for (const key of ['exact', 'sekine', 'redonnet', 'bedi'])
+      expect(await view.locator(`polyline.curve-${key}`).count()).toBe(4);
+    const half = exactHalfIntervalMm(tool(5, 0.05)).toFixed(4);
+    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half}`);
+    expect(await page.getByTestId('profile-scale').textContent()).toMatch(/vertical scale exaggerated x5/);
+    const home = await view.locator('svg').getAttribute('viewBox');
+    await page.getByTestId('profile-cusp').click();
+    const zoomed = await view.locator('svg').getAttribute('viewBox');
+    expect(zoomed).not.toBe(home);
+    await page.screenshot({ path: `${SHOTS}/view-profile-cusp.png` });
+    await page.getByTestId('profile-reset').click();
+    expect(await view.locator('svg').getAttribute('viewBox')).toBe(home);
+    // Follows a slider change.
+    const scallopBefore = await view.locator('polygon.scallop').getAttribute('points');
+    await page.getByTestId('slider-h').focus();
+    await page.keyboard.press('ArrowRight');
+    const half2 = exactHalfIntervalMm(tool(5, 0.051)).toFixed(4);
+    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half2}`);
+    expect(await view.locator('polygon.scallop').getAttribute('points')).not.toBe(scallopBefore);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
+  it('chart: L/2 against rho and the signed errors, with the values at the current rho from the solver', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=chart');
+    const chart = page.getByTestId('comparison-chart');
+    await chart.locator('canvas').first().waitFor();
+    expect(await chart.locator('canvas').count()).toBe(2);
+    const c = compareForward(tool(5, 0.05));
+    const summary = page.getByTestId('chart-summary');
+    await expect
+      .poll(() => summary.textContent())
+      .toMatch(new RegExp(`Exact \\(3D\\) ${c.exact.halfIntervalMm.toFixed(4)}`));
+    if (c.sekine.ok)
+      expect(await summary.textContent()).toContain(`Sekine et al. ${c.sekine.halfIntervalMm.toFixed(4)}`);
+    await page.getByTestId('slider-rho').focus();
+    await page.keyboard.press('ArrowRight');
+    const c2 = compareForward(tool(5.1, 0.05));
+    await expect
+      .poll(() => summary.textContent())
+      .toMatch(new RegExp(`rho = 5\\.1 deg.*Exact \\(3D\\) ${c2.exact.halfIntervalMm.toFixed(4)}`));
+    expect(await chart.locator('.u-title').first().textContent()).toMatch(/current rho = 5\.1/);
+    await page.screenshot({ path: `${SHOTS}/view-chart.png` });
+    await page.close();
+  });
+
+  it('tables: printed and recomputed values of Tables 2-5, the 3D deviations highlighted, a click loads a condition', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=tables');
+    const tables = page.getByTestId('paper-tables');
+    await tables.locator('table').first().waitFor();
+    const c = PAPER_CONDITIONS[1];
+    if (!c) throw new Error('missing condition');
+    const cell = page.getByTestId('paper-half-1-exact');
+    expect(await cell.locator('.printed').textContent()).toBe(c.printedHalf.threeD.toFixed(3));
+    expect(await cell.locator('.computed').textContent()).toBe(exactHalfIntervalMm(tool(5, 0.1)).toFixed(4));
+    expect(await cell.getAttribute('class')).toMatch(/deviates/);
+    expect(await page.getByTestId('paper-half-1-bedi').getAttribute('class')).not.toMatch(/deviates/);
+    expect(await page.getByTestId('paper-height-1-sekine').locator('.printed').textContent()).toBe(
+      c.printedHeight.sekine.toFixed(3),
+    );
+    await page.screenshot({ path: `${SHOTS}/view-tables.png` });
+    await tables.locator('tr[data-condition="6"]').first().click();
+    await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('6');
+    expect(await page.getByTestId('input-rho').inputValue()).toBe('10');
+    expect(await page.getByTestId('input-h').inputValue()).toBe('0.05');
+    await expect.poll(() => page.getByTestId('result-exact-half').textContent()).toBe('1.5580');
+    await page.close();
+  });
+
+  it('stepper: steps through the trace in the scene and reaches the converged P_hp', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.1&unit=mm&view=stepper');
+    const caption = page.getByTestId('stepper-caption');
+    await expect.poll(() => caption.textContent()).toMatch(/Step 2 \(Eq\. 1\)/);
+    const frames = () =>
+      page.evaluate(() => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames());
+    const before = await frames();
+    await page.getByTestId('stepper-forward').click();
+    await expect.poll(() => page.getByTestId('stepper-counter').textContent()).toMatch(/^step 2 of \d+/);
+    await expect.poll(frames).toBeGreaterThan(before);
+    await page.getByTestId('stepper-back').click();
+    await expect.poll(() => page.getByTestId('stepper-counter').textContent()).toMatch(/^step 1 of/);
+    await page.getByTestId('stepper-last').click();
+    const trace = traceProcedure(tool(5, 0.1));
+    await expect.poll(() => caption.textContent()).toContain(`converged. L/2 = ${trace.halfIntervalMm.toFixed(6)} mm`);
+    expect(await caption.textContent()).toContain(
+      `exact solver gives ${exactHalfIntervalMm(tool(5, 0.1)).toFixed(6)} mm`,
+    );
+    await page.screenshot({ path: `${SHOTS}/view-stepper-converged.png` });
+    // Play runs through the steps by itself.
+    await page.getByTestId('stepper-first').click();
+    await page.getByTestId('stepper-play').click();
+    await expect
+      .poll(() => page.getByTestId('stepper-counter').textContent(), { timeout: 5000 })
+      .toMatch(/^step [3-9]/);
+    await page.getByTestId('stepper-play').click();
+    await page.close();
+  });
+
+  it('formulas: typeset equations with the current numbers substituted', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=formulas');
+    const formulas = page.getByTestId('formulas');
+    await formulas.locator('math').first().waitFor();
+    expect(await formulas.locator('math').count()).toBeGreaterThan(8);
+    const reff = sekineModel(tool(5, 0.05));
+    if (!reff.ok) throw new Error('applicable');
+    expect(await formulas.locator('section[data-procedure="sekine"]').textContent()).toContain(
+      String(Number(reff.effectiveRadiusMm.toPrecision(5))),
+    );
+    expect(await formulas.textContent()).toMatch(/osculating circle/i);
+    await page.screenshot({ path: `${SHOTS}/view-formulas.png`, fullPage: true });
+    await page.close();
+  });
+
+  it('hovering a procedure highlights it in the profile and the results table', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
+    await page.getByTestId('profile-view').locator('polyline.curve-bedi').first().waitFor();
+    await page.locator('.procedures tr[data-procedure="bedi"]').hover();
+    await expect.poll(() => page.locator('polyline.curve-sekine').first().getAttribute('class')).toMatch(/dimmed/);
+    expect(await page.locator('polyline.curve-bedi').first().getAttribute('class')).not.toMatch(/dimmed/);
+    expect(await page.locator('.procedures tr[data-procedure="bedi"]').getAttribute('class')).toMatch(/emph/);
+    await page.close();
+  });
+
+  it('?view=profile&embed=1 shows just that view, without horizontal scrolling at 480x360', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&embed=1&view=profile', { width: 480, height: 360 });
+    await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
+    expect(await page.getByTestId('profile-view').isVisible()).toBe(true);
+    expect(await page.getByTestId('input-R').isVisible()).toBe(false);
+    const [scroll, client] = await page.evaluate(() => [
+      document.documentElement.scrollWidth,
+      document.documentElement.clientWidth,
+    ]);
+    expect(scroll).toBeLessThanOrEqual(client as number);
+    await page.screenshot({ path: `${SHOTS}/embed-profile.png` });
+    await page.close();
+  });
+});
