@@ -55,3 +55,19 @@ describe('worker solver API (plain data in, plain data out)', () => {
     expect(flat.geometry).toBeNull();
   });
 });
+
+describe('trace frames for the step-through', () => {
+  it('start at Eq. 1, pass the single contact, and end on the exact L/2', async () => {
+    const { traceFrames } = await import('../../src/worker/api');
+    const { exactHalfIntervalMm } = await import('../../src/core/exact');
+    const input = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, scallopHeightMm: 0.1 };
+    const frames = traceFrames(input);
+    expect(frames[0]?.phase).toBe('approach');
+    expect(frames.some((f) => f.phase === 'single-contact')).toBe(true);
+    expect(frames.some((f) => f.phase === 'search' && f.candidates.length >= 15)).toBe(true);
+    const last = frames[frames.length - 1];
+    expect(last?.phase).toBe('converged');
+    expect(Math.abs((last?.bestY ?? 0) - exactHalfIntervalMm(input))).toBeLessThan(1e-9);
+    expect(JSON.stringify(frames)).not.toMatch(/null,"sectionCentre":\[null|NaN|Infinity/);
+  });
+});
