@@ -2,6 +2,14 @@
  * Printed values of the paper's Tables 2-5 (Sekine & Kameya 2022) and the exact column
  * of shared/notes/geometry.md. Conditions are the same in every table.
  */
+/** One value per procedure as the paper's tables list them (3D computation first), mm. */
+export interface ProcedureValues {
+  readonly threeD: number;
+  readonly sekine: number;
+  readonly redonnet: number;
+  readonly bedi: number;
+}
+
 export interface PaperCondition {
   readonly table: 2 | 3;
   readonly R: number;
@@ -9,19 +17,9 @@ export interface PaperCondition {
   readonly rho: number;
   readonly h: number;
   /** Printed L/2 (mm, 3 decimals), Tables 2-3. */
-  readonly printedHalf: {
-    readonly threeD: number;
-    readonly sekine: number;
-    readonly redonnet: number;
-    readonly bedi: number;
-  };
+  readonly printedHalf: ProcedureValues;
   /** Printed scallop height (mm, 3 decimals) at the printed 3D L/2, Tables 4-5. */
-  readonly printedHeight: {
-    readonly threeD: number;
-    readonly sekine: number;
-    readonly redonnet: number;
-    readonly bedi: number;
-  };
+  readonly printedHeight: ProcedureValues;
   /** Exact L/2 from the notes (checked there by sampling and Open CASCADE), 12 decimals. */
   readonly notesExactHalf: number;
 }

@@ -14,7 +14,7 @@ import {
   sekineScallopHeight,
 } from './approximations';
 import { exactHalfIntervalMm, exactScallopHeightMm } from './exact';
-import { PAPER_CONDITIONS } from './paper';
+import { PAPER_CONDITIONS, type PaperCondition, type ProcedureValues } from './paper';
 import { profileHalfWidthMm, profileHeightMm, profileShape } from './profile';
 import type { ForwardInput, InverseInput, ToolInput } from './validate';
 
@@ -146,40 +146,13 @@ export function rhoSweep(
 }
 
 /** One recomputed row of Tables 2-5 beside the printed values. */
-export interface PaperTableRow {
-  readonly table: 2 | 3;
-  readonly R: number;
-  readonly Rcr: number;
-  readonly rho: number;
-  readonly h: number;
-  readonly printedHalf: {
-    readonly threeD: number;
-    readonly sekine: number;
-    readonly redonnet: number;
-    readonly bedi: number;
-  };
-  readonly computedHalf: {
-    readonly threeD: number;
-    readonly sekine: number;
-    readonly redonnet: number;
-    readonly bedi: number;
-  };
-  readonly printedHeight: {
-    readonly threeD: number;
-    readonly sekine: number;
-    readonly redonnet: number;
-    readonly bedi: number;
-  };
+export interface PaperTableRow extends Omit<PaperCondition, 'notesExactHalf'> {
+  readonly computedHalf: ProcedureValues;
   /** Eqs. 12-13 and the exact inverse, evaluated at the printed 3D L/2 as the paper did. */
-  readonly computedHeight: {
-    readonly threeD: number;
-    readonly sekine: number;
-    readonly redonnet: number;
-    readonly bedi: number;
-  };
+  readonly computedHeight: ProcedureValues;
 }
 
-function heightsAt(input: InverseInput): { threeD: number; sekine: number; redonnet: number; bedi: number } {
+function heightsAt(input: InverseInput): ProcedureValues {
   const value = (r: { ok: true; scallopHeightMm: number } | { ok: false }) => (r.ok ? r.scallopHeightMm : 0);
   return {
     threeD: exactScallopHeightMm(input),

@@ -6,6 +6,7 @@ import { cornerProfileHeightMm, type FieldName, validateForward, validateInverse
 import { type CameraPreset, ToolScene } from '../render/scene';
 import { SolverClient } from '../worker/client';
 import type { ProcedureKey, SolveReply } from '../worker/protocol';
+import { html } from './dom';
 import {
   type CalculatorState,
   convertState,
@@ -48,17 +49,6 @@ const NAMES: Record<ProcedureKey, string> = {
 };
 
 const DASH = '\u2014';
-
-function el<K extends keyof HTMLElementTagNameMap>(
-  tag: K,
-  props: Record<string, string> = {},
-  text = '',
-): HTMLElementTagNameMap[K] {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(props)) e.setAttribute(k, v);
-  if (text) e.textContent = text;
-  return e;
-}
 
 function must<T extends Element>(root: ParentNode, selector: string): T {
   const found = root.querySelector<T>(selector);
@@ -137,15 +127,15 @@ export class CalculatorApp {
     const container = must<HTMLElement>(this.root, '.fields');
     for (const spec of SPECS) {
       const id = `field-${spec.key}`;
-      const row = el('div', { class: 'field', 'data-field': spec.key });
-      const label = el('label', { for: id }, spec.label);
-      const slider = el('input', {
+      const row = html('div', { class: 'field', 'data-field': spec.key });
+      const label = html('label', { for: id }, spec.label);
+      const slider = html('input', {
         type: 'range',
         'data-testid': `slider-${spec.key}`,
         'aria-label': `${spec.label} slider`,
         'aria-describedby': `${id}-error`,
       });
-      const input = el('input', {
+      const input = html('input', {
         id,
         type: 'text',
         inputmode: 'decimal',
@@ -154,10 +144,15 @@ export class CalculatorApp {
         'data-testid': `input-${spec.key}`,
         'aria-describedby': `${id}-hint ${id}-error`,
       });
-      const unitLabel = el('span', { class: 'unit' });
-      const hint = el('span', { class: 'hint', id: `${id}-hint` }, spec.hint);
-      const error = el('div', { class: 'error', id: `${id}-error`, role: 'alert', 'data-testid': `error-${spec.key}` });
-      const line = el('div', { class: 'field-line' });
+      const unitLabel = html('span', { class: 'unit' });
+      const hint = html('span', { class: 'hint', id: `${id}-hint` }, spec.hint);
+      const error = html('div', {
+        class: 'error',
+        id: `${id}-error`,
+        role: 'alert',
+        'data-testid': `error-${spec.key}`,
+      });
+      const line = html('div', { class: 'field-line' });
       line.append(slider, input, unitLabel);
       row.append(label, line, hint, error);
       container.append(row);
@@ -170,7 +165,7 @@ export class CalculatorApp {
   private buildPresets(): void {
     const select = must<HTMLSelectElement>(this.root, '[data-testid="preset"]');
     PRESETS.forEach((p, i) => {
-      select.append(el('option', { value: String(i) }, p.label));
+      select.append(html('option', { value: String(i) }, p.label));
     });
     select.addEventListener('change', () => {
       const preset = PRESETS[Number(select.value)];
@@ -380,21 +375,21 @@ export class CalculatorApp {
     tbody.replaceChildren();
     const notes: string[] = [];
     for (const row of reply.rows) {
-      const tr = el('tr', { 'data-procedure': row.key });
-      tr.append(el('th', { scope: 'row' }, NAMES[row.key]));
+      const tr = html('tr', { 'data-procedure': row.key });
+      tr.append(html('th', { scope: 'row' }, NAMES[row.key]));
       // The headline already carries result-exact-half: the table's exact row gets its own ids.
       const prefix = row.key === 'exact' ? 'table-exact' : `result-${row.key}`;
-      const value = el(
+      const value = html(
         'output',
         { 'data-testid': `${prefix}-${forward ? 'half' : 'h'}` },
         row.valueMm === null ? 'n/a' : this.len(row.valueMm),
       );
-      const cell = el('td');
+      const cell = html('td');
       cell.append(value);
       tr.append(cell);
-      tr.append(el('td', {}, row.deviationMm === null ? DASH : this.signedLen(row.deviationMm)));
+      tr.append(html('td', {}, row.deviationMm === null ? DASH : this.signedLen(row.deviationMm)));
       tr.append(
-        el(
+        html(
           'td',
           {},
           row.deviationPercent === null
@@ -403,12 +398,12 @@ export class CalculatorApp {
         ),
       );
       if (forward) {
-        const real = el(
+        const real = html(
           'output',
           { 'data-testid': `${prefix}-real-h` },
           row.realScallopMm === null ? DASH : this.len(row.realScallopMm),
         );
-        const td = el('td');
+        const td = html('td');
         td.append(real);
         tr.append(td);
       }

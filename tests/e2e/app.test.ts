@@ -3,46 +3,13 @@
  * a sub-path. Screenshots go to test-results/ as artifacts of the run.
  */
 import { spawnSync } from 'node:child_process';
-import { mkdirSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
-import type { Browser, Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchChromium } from '../../src/bench/browser';
-import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
 import { compareForward, compareInverse } from '../../src/core/index';
+import { ROOT, SHOTS, useSite } from './harness';
 
-const ROOT = fileURLToPath(new URL('../..', import.meta.url));
-const SHOTS = `${ROOT}test-results/screenshots`;
-let browser: Browser;
-let site: StaticSite;
-
-beforeAll(async () => {
-  mkdirSync(SHOTS, { recursive: true });
-  site = await serveStatic(`${ROOT}dist`, 'docs/tools/path-interval');
-  browser = await launchChromium();
-});
-
-afterAll(async () => {
-  await browser?.close();
-  await site?.close();
-});
-
-interface Opened {
-  page: Page;
-  errors: string[];
-}
-
-async function open(query = '', viewport = { width: 1400, height: 900 }): Promise<Opened> {
-  const page = await browser.newPage({ viewport });
-  const errors: string[] = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  page.on('console', (m) => {
-    if (m.type() === 'error') errors.push(m.text());
-  });
-  await page.goto(`${site.url}${query}`);
-  await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
-  return { page, errors };
-}
+const site = useSite('docs/tools/path-interval');
+const open = site.open;
 
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
 const frames = (page: Page) =>
@@ -91,14 +58,14 @@ describe('calculator page in headless Chromium', () => {
     expect(await text(page, 'result-bedi-half')).toBe(out.bedi.halfInterval.toFixed(4));
     expect(await text(page, 'result-exact-interval')).toBe(`${out.exact.interval.toFixed(4)} mm`);
     const workers = page.workers().map((w) => w.url());
-    expect(workers.some((u) => u.startsWith(site.url) && /solver\.worker/.test(u))).toBe(true);
+    expect(workers.some((u) => u.startsWith(site.url()) && /solver\.worker/.test(u))).toBe(true);
     expect(errors).toEqual([]);
     await page.screenshot({ path: `${SHOTS}/calculator.png` });
     await page.close();
   });
 
   it('draws the scene (the canvas is not blank) and renders only when something changed', async () => {
-    const { page } = await open();
+    const { page } = await open('');
     await page.waitForFunction(
       () => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames() > 0,
     );
@@ -173,13 +140,13 @@ describe('calculator page in headless Chromium', () => {
     const inches = await text(page, 'result-exact-half');
     expect(Math.abs(Number(inches) * 25.4 - 2.16898)).toBeLessThan(2e-4);
     const historyLength = await page.evaluate(() => window.history.length);
-    const again = await browser.newPage();
+    const again = await site.browser().newPage();
     await again.goto(url);
     await again.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
     expect(await text(again, 'result-exact-half')).toBe(inches);
     expect(await again.getByTestId('input-R').inputValue()).toBe('0.23622');
     expect(historyLength).toBe(historyAtLoad); // replaceState: no history entries added
-    await again.goto(`${site.url}?R=abc&Rcr=1&rho=5`);
+    await again.goto(`${site.url()}?R=abc&Rcr=1&rho=5`);
     await again.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
     const notice = again.getByTestId('notice');
     expect(await notice.isVisible()).toBe(true);

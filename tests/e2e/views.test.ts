@@ -2,44 +2,13 @@
  * The teaching views in real headless Chromium against the built site: each renders real
  * content, follows a slider change, and shows the solver's numbers. Screenshots are kept.
  */
-import { mkdirSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
-import type { Browser, Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchChromium } from '../../src/bench/browser';
-import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
+import { describe, expect, it } from 'vitest';
 import { sekineModel } from '../../src/core/approximations';
 import { compareForward, exactHalfIntervalMm, traceProcedure } from '../../src/core/index';
 import { PAPER_CONDITIONS } from '../../src/core/paper';
+import { SHOTS, useSite } from './harness';
 
-const ROOT = fileURLToPath(new URL('../..', import.meta.url));
-const SHOTS = `${ROOT}test-results/screenshots`;
-let browser: Browser;
-let site: StaticSite;
-
-beforeAll(async () => {
-  mkdirSync(SHOTS, { recursive: true });
-  site = await serveStatic(`${ROOT}dist`, 'docs/views');
-  browser = await launchChromium();
-});
-
-afterAll(async () => {
-  await browser?.close();
-  await site?.close();
-});
-
-async function open(
-  query: string,
-  viewport = { width: 1400, height: 1000 },
-): Promise<{ page: Page; errors: string[] }> {
-  const page = await browser.newPage({ viewport });
-  const errors: string[] = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  await page.goto(`${site.url}${query}`);
-  // Attached, not visible: a single embedded view hides the results.
-  await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
-  return { page, errors };
-}
+const { open } = useSite('docs/views');
 
 const tool = (rho: number, h: number) => ({
   toolRadiusMm: 3,

@@ -42,16 +42,7 @@ export const LABELS: Record<ProcedureKey, string> = {
 
 export const PROCEDURE_KEYS: readonly ProcedureKey[] = ['exact', 'sekine', 'redonnet', 'bedi'];
 
-export function html<K extends keyof HTMLElementTagNameMap>(
-  tag: K,
-  props: Record<string, string> = {},
-  text = '',
-): HTMLElementTagNameMap[K] {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(props)) e.setAttribute(k, v);
-  if (text) e.textContent = text;
-  return e;
-}
+export { html } from '../dom';
 
 const SVG_NS = 'http://www.w3.org/2000/svg';
 

@@ -118,13 +118,15 @@ export class ProfileView implements TeachingView {
     const span = { from: -0.2 * R, to: L + 0.2 * R };
     this.layer.append(svg('line', { x1: span.from, y1: Z(0), x2: span.to, y2: Z(0), class: 'ground' }));
     this.layer.append(svg('line', { x1: span.from, y1: Z(h), x2: span.to, y2: Z(h), class: 'hplane' }));
-    // Ring ellipse, faint, for both passes.
-    for (const [c, m] of [
+    // Each curve is drawn for both passes (centres 0 and L), both sides of each.
+    const placements: ReadonlyArray<readonly [number, boolean]> = [
       [0, false],
       [0, true],
       [L, false],
       [L, true],
-    ] as const) {
+    ];
+    // Ring ellipse, faint, for both passes.
+    for (const [c, m] of placements) {
       this.layer.append(
         svg('polyline', { points: path(t.curves.ringEllipse, c, m, Number.POSITIVE_INFINITY), class: 'ring' }),
       );
@@ -132,12 +134,7 @@ export class ProfileView implements TeachingView {
     const draw = (key: ProcedureKey, pts: Float64Array | null) => {
       if (!pts) return;
       const els: SVGElement[] = [];
-      for (const [c, m] of [
-        [0, false],
-        [0, true],
-        [L, false],
-        [L, true],
-      ] as const) {
+      for (const [c, m] of placements) {
         const line = svg('polyline', {
           points: path(pts, c, m, top),
           class: `curve curve-${key}`,
