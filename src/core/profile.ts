@@ -89,7 +89,11 @@ export function ringAngleRad(s: ProfileShape, theta: number): number {
 
 const MAX_ITERATIONS = 200;
 
-/** Safeguarded Newton on an increasing function `f - target` inside a bracket [lo, hi]. */
+/**
+ * Safeguarded Newton on an increasing function `f - target` inside a bracket [lo, hi]: a
+ * Newton step that leaves the bracket is replaced by a secant step between the bracket ends
+ * (once both are known), else by bisection; the bracket always shrinks.
+ */
 function solveIncreasing(
   value: (theta: number) => number,
   slope: (theta: number) => number,
@@ -100,16 +104,31 @@ function solveIncreasing(
 ): number {
   let lo = loStart;
   let hi = hiStart;
+  let fLo = Number.NaN;
+  let fHi = Number.NaN;
   let theta = Math.min(Math.max(start, lo), hi);
   for (let i = 0; i < MAX_ITERATIONS; i++) {
     const f = value(theta) - target;
     if (f === 0) return theta;
-    if (f > 0) hi = theta;
-    else lo = theta;
+    if (f > 0) {
+      hi = theta;
+      fHi = f;
+    } else {
+      lo = theta;
+      fLo = f;
+    }
     const df = slope(theta);
     let next = df > 0 ? theta - f / df : Number.NaN;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (Math.abs(next - theta) <= 2e-16 * next || hi - lo <= 2e-16 * hi) return next;
+    // A Newton step below 1e-14 (relative) means the next one would be near 1e-28: done. This
+    // comes before the bracket test, which a converged step can fail by rounding alone.
+    if (Math.abs(next - theta) <= 1e-14 * theta) return Math.min(Math.max(next, lo), hi);
+    if (!(next > lo && next < hi)) {
+      next = fLo < 0 && fHi > 0 ? lo - (fLo * (hi - lo)) / (fHi - fLo) : 0.5 * (lo + hi);
+      // A secant step that hugs one end makes little progress: bisect instead.
+      const width = hi - lo;
+      if (!(next > lo + 0.05 * width && next < hi - 0.05 * width)) next = 0.5 * (lo + hi);
+    }
+    if (hi - lo <= 2e-16 * hi) return next;
     theta = next;
   }
   return theta;
