@@ -2,7 +2,14 @@
  * The calculator page: fields and sliders, URL state, results, and the 3D scene.
  * Validation runs here for immediate messages; all solving runs in the worker.
  */
-import { cornerProfileHeightMm, type FieldName, validateForward, validateInverse } from '../core/validate';
+import {
+  cornerProfileHeightMm,
+  type FieldName,
+  type InputError,
+  MIN_LENGTH_MM,
+  validateForward,
+  validateInverse,
+} from '../core/validate';
 import { type CameraPreset, ToolScene } from '../render/scene';
 import { SolverClient } from '../worker/client';
 import type { ProcedureKey, SolveReply } from '../worker/protocol';
@@ -290,7 +297,7 @@ export class CalculatorApp {
         : validateInverse({ R: mm('R'), Rcr: mm('Rcr'), rho: mm('rho'), halfInterval: halfOf(mm('L')) });
     const errors = new Map<FieldKey, string>();
     if (!validation.ok) {
-      for (const e of validation.errors) errors.set(fieldOf(e.field), this.localise(e.message, e.field));
+      for (const e of validation.errors) errors.set(fieldOf(e.field), this.localise(e));
     }
     for (const view of this.fields.values()) {
       const message = errors.get(view.spec.key) ?? '';
@@ -307,6 +314,8 @@ export class CalculatorApp {
     this.client.request(request);
     // The teaching views' data comes from a second worker, a moment later while a slider moves,
     // so it never delays the results and the 3D frame.
+    // An embedded calculator without a teaching view shows none: skip their data.
+    if (this.embed && this.viewParam === null) return;
     if (this.viewsTimer !== null) clearTimeout(this.viewsTimer);
     this.viewsTimer = setTimeout(() => {
       this.viewsTimer = null;
@@ -315,14 +324,30 @@ export class CalculatorApp {
   }
 
   /** Messages name lengths in mm; in inch mode they also say the field in the user's unit. */
-  private localise(message: string, field: FieldName): string {
-    if (this.state.unit === 'mm')
-      return field === 'halfInterval' ? message.replace('Half path interval L/2', 'Step-over L / 2') : message;
+  /**
+   * Messages name lengths in mm; in inch mode they are converted. The page asks for the
+   * step-over L where the solver checks L/2, so those messages are said in terms of L.
+   */
+  private localise(e: InputError): string {
+    const unit = this.unitText();
+    const show = (mmValue: number) => `${formatField(mmValue / (this.state.unit === 'in' ? MM_PER_INCH : 1))} ${unit}`;
+    if (e.field === 'halfInterval') {
+      const typed = this.state.fields.L.trim();
+      const R = parseField(this.state.fields.R);
+      if (e.code === 'beyond-radius' && R !== null) {
+        return `Step-over L must be below the tool diameter 2R = ${show(2 * toMm('R', R, this.state.unit))} (got ${typed}); at or beyond it adjacent passes leave a wall.`;
+      }
+      if (e.code === 'not-positive') return `Step-over L must be greater than 0 ${unit} (got ${typed}).`;
+      if (e.code === 'too-small') return `Step-over L must be at least ${show(2 * MIN_LENGTH_MM)} (got ${typed}).`;
+      return e.message.replace('Half path interval L/2', 'Step-over L');
+    }
+    if (this.state.unit === 'mm') return e.message;
     const toInch = (n: string) => formatField(Number(n) / MM_PER_INCH);
-    let converted = message.replace(/(-?\d+(?:\.\d+)?(?:e-?\d+)?) mm/g, (_m, n: string) => `${toInch(n)} in`);
-    if (field !== 'rho')
+    let converted = e.message.replace(/(-?\d+(?:\.\d+)?(?:e-?\d+)?) mm/g, (_m, n: string) => `${toInch(n)} in`);
+    if (e.field !== 'rho') {
       converted = converted.replace(/\(got (-?\d+(?:\.\d+)?(?:e[+-]?\d+)?)\)/, (_m, n: string) => `(got ${toInch(n)})`);
-    return field === 'halfInterval' ? converted.replace('Half path interval L/2', 'Step-over L / 2') : converted;
+    }
+    return converted;
   }
 
   private showInvalid(): void {
@@ -342,8 +367,14 @@ export class CalculatorApp {
     return this.state.unit === 'mm' ? mm.toFixed(4) : (mm / MM_PER_INCH).toFixed(5);
   }
 
-  private signedLen(mm: number): string {
-    const t = this.len(mm);
+  /** Scallop height in the current unit: one decimal more than lengths (5 in mm, 6 in inch). */
+  private height(mm: number): string {
+    return this.state.unit === 'mm' ? mm.toFixed(5) : (mm / MM_PER_INCH).toFixed(6);
+  }
+
+  /** Signed deviation: a length (forward) or a height (inverse). */
+  private signed(mm: number, isLength: boolean): string {
+    const t = isLength ? this.len(mm) : this.height(mm);
     return mm >= 0 && !t.startsWith('-') ? `+${t}` : t;
   }
 
@@ -359,7 +390,7 @@ export class CalculatorApp {
     const forward = reply.mode === 'forward';
     const L = 2 * reply.halfIntervalMm;
     must(this.root, '[data-role="headline-label"]').textContent = forward ? 'Step-over L' : 'Scallop height h';
-    this.setText('result-exact-interval', `${forward ? this.len(L) : this.len(reply.scallopHeightMm)} ${unit}`);
+    this.setText('result-exact-interval', `${forward ? this.len(L) : this.height(reply.scallopHeightMm)} ${unit}`);
     this.setText('result-exact-half', this.len(reply.halfIntervalMm));
     const R = toMm('R', parseField(this.state.fields.R) ?? 1, this.state.unit);
     this.setText('result-percent-diameter', `L = ${((100 * L) / (2 * R)).toFixed(1)} % of the tool diameter`);
@@ -382,12 +413,12 @@ export class CalculatorApp {
       const value = html(
         'output',
         { 'data-testid': `${prefix}-${forward ? 'half' : 'h'}` },
-        row.valueMm === null ? 'n/a' : this.len(row.valueMm),
+        row.valueMm === null ? 'n/a' : forward ? this.len(row.valueMm) : this.height(row.valueMm),
       );
       const cell = html('td');
       cell.append(value);
       tr.append(cell);
-      tr.append(html('td', {}, row.deviationMm === null ? DASH : this.signedLen(row.deviationMm)));
+      tr.append(html('td', {}, row.deviationMm === null ? DASH : this.signed(row.deviationMm, forward)));
       tr.append(
         html(
           'td',
@@ -401,7 +432,7 @@ export class CalculatorApp {
         const real = html(
           'output',
           { 'data-testid': `${prefix}-real-h` },
-          row.realScallopMm === null ? DASH : this.len(row.realScallopMm),
+          row.realScallopMm === null ? DASH : this.height(row.realScallopMm),
         );
         const td = html('td');
         td.append(real);

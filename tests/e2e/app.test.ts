@@ -178,12 +178,17 @@ describe('calculator page in headless Chromium', () => {
     await page.locator('input[name="mode"][value="inverse"]').check();
     await page.getByTestId('input-L').fill('3');
     const expected = compareInverse({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, halfIntervalMm: 1.5 });
-    await expect.poll(() => text(page, 'table-exact-h')).toBe(expected.exact.scallopHeightMm.toFixed(4));
+    await expect.poll(() => text(page, 'table-exact-h')).toBe(expected.exact.scallopHeightMm.toFixed(5));
     expect(expected.bedi.ok).toBe(true);
-    if (expected.bedi.ok) expect(await text(page, 'result-bedi-h')).toBe(expected.bedi.scallopHeightMm.toFixed(4));
+    if (expected.bedi.ok) expect(await text(page, 'result-bedi-h')).toBe(expected.bedi.scallopHeightMm.toFixed(5));
     const url = new URL(page.url());
     expect(url.searchParams.get('mode')).toBe('inverse');
     expect(url.searchParams.get('L')).toBe('3');
+    // A step-over wider than the tool is named in terms of L, the field the user typed.
+    await page.getByTestId('input-L').fill('7');
+    await expect
+      .poll(() => page.locator('[data-field="L"] [role="alert"]').textContent())
+      .toMatch(/Step-over L must be below the tool diameter 2R = 6 mm \(got 7\)/);
     await page.close();
   });
 
