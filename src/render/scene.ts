@@ -320,8 +320,11 @@ export class ToolScene {
     const target = new Vector3(0, 0.45 * R, 0.25 * R);
     const d = 3.2 * R;
     if (preset === 'iso') this.camera.position.set(target.x + d * 0.75, target.y - d * 0.85, target.z + d * 0.6);
-    else if (preset === 'feed') this.camera.position.set(target.x - d * 1.3, target.y, target.z + 1e-3);
-    else this.camera.position.set(target.x, target.y, target.z + d * 1.3);
+    else if (preset === 'feed') {
+      // Looking back against the feed, so that Y runs to the right as in the profile view.
+      target.z = 0.45 * R;
+      this.camera.position.set(target.x + d * 1.3, target.y, target.z + 1e-3);
+    } else this.camera.position.set(target.x, target.y, target.z + d * 1.3);
     this.camera.up.set(preset === 'top' ? 1 : 0, 0, preset === 'top' ? 0 : 1);
     this.controls.target.copy(target);
     this.controls.update();
