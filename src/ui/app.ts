@@ -76,6 +76,9 @@ export class CalculatorApp {
   private state: CalculatorState;
   private readonly fields = new Map<FieldKey, FieldView>();
   private readonly viewParam: ViewId | null;
+  /** Procedure highlighted across the views (hover, focus or selection) and the one selected. */
+  private highlighted: ProcedureKey | null = null;
+  private selected: ProcedureKey | null = null;
   private readonly initialView: ViewId;
   private teachingRequested = false;
   private teachingTimer: ReturnType<typeof setTimeout> | null = null;
@@ -406,7 +409,11 @@ export class CalculatorApp {
     tbody.replaceChildren();
     const notes: string[] = [];
     for (const row of reply.rows) {
-      const tr = html('tr', { 'data-procedure': row.key });
+      const tr = html('tr', {
+        'data-procedure': row.key,
+        tabindex: '0',
+        title: 'Click to select this procedure in every view',
+      });
       tr.append(html('th', { scope: 'row' }, NAMES[row.key]));
       // The headline already carries result-exact-half: the table's exact row gets its own ids.
       const prefix = row.key === 'exact' ? 'table-exact' : `result-${row.key}`;
@@ -445,6 +452,7 @@ export class CalculatorApp {
       tbody.append(tr);
     }
     this.setText('table-notes', notes.join(' '));
+    this.markRows();
 
     if (reply.geometry) {
       this.scene.update(reply.geometry, `L/2 = ${this.len(reply.geometry.halfIntervalMm)} ${unit}`);
@@ -480,6 +488,7 @@ export class CalculatorApp {
           this.initialView,
         );
         if (this.teachingContext) this.teaching.update(this.teachingContext);
+        this.teaching.highlight(this.highlighted);
       });
       return;
     }
@@ -515,22 +524,41 @@ export class CalculatorApp {
 
   /** Hovering or focusing a procedure anywhere highlights it in the table, the profile and the charts. */
   private wireHighlight(): void {
-    let current: ProcedureKey | null = null;
-    const set = (key: ProcedureKey | null) => {
-      if (key === current) return;
-      current = key;
-      this.teaching?.highlight(key);
-      for (const tr of this.root.querySelectorAll<HTMLElement>('.procedures tr[data-procedure]')) {
-        tr.classList.toggle('emph', key !== null && tr.dataset.procedure === key);
-      }
-    };
     const keyOf = (target: EventTarget | null): ProcedureKey | null => {
       const el = target instanceof Element ? target.closest<HTMLElement>('[data-procedure]') : null;
       const key = el?.dataset.procedure;
       return key === 'exact' || key === 'sekine' || key === 'redonnet' || key === 'bedi' ? key : null;
     };
-    this.root.addEventListener('mouseover', (e) => set(keyOf(e.target)));
-    this.root.addEventListener('focusin', (e) => set(keyOf(e.target)));
+    // Hover or focus shows a procedure for a moment; a click (or Enter) on a results row selects it.
+    this.root.addEventListener('mouseover', (e) => this.setHighlight(keyOf(e.target) ?? this.selected));
+    this.root.addEventListener('focusin', (e) => this.setHighlight(keyOf(e.target) ?? this.selected));
+    const select = (target: EventTarget | null) => {
+      const row = target instanceof Element ? target.closest('.procedures tr[data-procedure]') : null;
+      if (!row) return;
+      const key = keyOf(row);
+      this.selected = key === this.selected ? null : key;
+      this.setHighlight(this.selected ?? key);
+      this.markRows();
+    };
+    this.root.addEventListener('click', (e) => select(e.target));
+    this.root.addEventListener('keydown', (e) => {
+      if (e.key === 'Enter') select(e.target);
+    });
+  }
+
+  private setHighlight(key: ProcedureKey | null): void {
+    if (key === this.highlighted) return;
+    this.highlighted = key;
+    this.teaching?.highlight(key);
+    this.markRows();
+  }
+
+  /** Marks the highlighted and the selected row of the results table. */
+  private markRows(): void {
+    for (const tr of this.root.querySelectorAll<HTMLElement>('.procedures tr[data-procedure]')) {
+      tr.classList.toggle('emph', this.highlighted !== null && tr.dataset.procedure === this.highlighted);
+      tr.classList.toggle('selected', tr.dataset.procedure === this.selected);
+    }
   }
 
   private frameRendered(): void {

@@ -135,13 +135,19 @@ describe('teaching views in headless Chromium', () => {
     await page.close();
   });
 
-  it('hovering a procedure highlights it in the profile and the results table', async () => {
+  it('hovering or selecting a procedure highlights it in the profile and the results table', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
     await page.getByTestId('profile-view').locator('polyline.curve-bedi').first().waitFor();
     await page.locator('.procedures tr[data-procedure="bedi"]').hover();
     await expect.poll(() => page.locator('polyline.curve-sekine').first().getAttribute('class')).toMatch(/dimmed/);
     expect(await page.locator('polyline.curve-bedi').first().getAttribute('class')).not.toMatch(/dimmed/);
     expect(await page.locator('.procedures tr[data-procedure="bedi"]').getAttribute('class')).toMatch(/emph/);
+    // Selecting (click) keeps the highlight when the pointer leaves.
+    await page.locator('.procedures tr[data-procedure="redonnet"]').click();
+    await page.getByTestId('input-R').hover();
+    await expect.poll(() => page.locator('polyline.curve-bedi').first().getAttribute('class')).toMatch(/dimmed/);
+    expect(await page.locator('polyline.curve-redonnet').first().getAttribute('class')).not.toMatch(/dimmed/);
+    expect(await page.locator('.procedures tr[data-procedure="redonnet"]').getAttribute('class')).toMatch(/selected/);
     await page.close();
   });
 
