@@ -96,8 +96,6 @@ export class CalculatorApp {
   /** Time of the input event whose result is awaited (for the latency benchmark). */
   private pendingInputAt: number | null = null;
   readonly latencies: number[] = [];
-  /** Input event to reply from the worker (ms), for the benchmark's breakdown. */
-  readonly replyLatencies: number[] = [];
   /** performance.now() when the first result was shown (cold-load benchmark). */
   private firstResultMs: number | null = null;
 
@@ -384,7 +382,6 @@ export class CalculatorApp {
   private showReply(reply: SolveReply): void {
     this.lastReply = reply;
     if (this.firstResultMs === null && reply.ok) this.firstResultMs = performance.now();
-    if (this.pendingInputAt !== null) this.replyLatencies.push(performance.now() - this.pendingInputAt);
     if (!reply.ok) {
       this.showInvalid();
       return;
@@ -586,7 +583,6 @@ export class CalculatorApp {
       workerStarts: () => this.client.started,
       crashWorker: () => this.client.crash(),
       latencies: () => [...this.latencies],
-      replyLatencies: () => [...this.replyLatencies],
       lastReplyOk: () => this.lastReply?.ok ?? null,
       firstResultMs: () => this.firstResultMs,
       activeView: () => this.teaching?.activeView ?? null,
