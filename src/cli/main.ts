@@ -13,6 +13,7 @@ import {
   type InputError,
   type InverseComparison,
   type ScallopHeight,
+  type ToolInput,
   validateForward,
   validateInverse,
 } from '../core/index';
@@ -161,17 +162,16 @@ function heightJson(r: Approximation<ScallopHeight>, exact: number): JsonValue {
   return { scallopHeight: r.scallopHeightMm, deviation: dev, deviationPercent: exact > 0 ? (100 * dev) / exact : null };
 }
 
+function toolJson(t: ToolInput): { R: number; Rcr: number; rho: number } {
+  return { R: t.toolRadiusMm, Rcr: t.cornerRadiusMm, rho: t.leadAngleDeg };
+}
+
 /** The forward comparison as the documented JSON object (lengths mm, angle degrees). */
 export function forwardJson(c: ForwardComparison): JsonValue {
   const exact = c.exact.halfIntervalMm;
   return {
     unit: 'mm',
-    input: {
-      R: c.input.toolRadiusMm,
-      Rcr: c.input.cornerRadiusMm,
-      rho: c.input.leadAngleDeg,
-      h: c.input.scallopHeightMm,
-    },
+    input: { ...toolJson(c.input), h: c.input.scallopHeightMm },
     exact: { halfInterval: exact, interval: 2 * exact },
     sekine: halfJson(c.sekine, exact),
     redonnet: halfJson(c.redonnet, exact),
@@ -183,12 +183,7 @@ function inverseJson(c: InverseComparison): JsonValue {
   const exact = c.exact.scallopHeightMm;
   return {
     unit: 'mm',
-    input: {
-      R: c.input.toolRadiusMm,
-      Rcr: c.input.cornerRadiusMm,
-      rho: c.input.leadAngleDeg,
-      halfInterval: c.input.halfIntervalMm,
-    },
+    input: { ...toolJson(c.input), halfInterval: c.input.halfIntervalMm },
     exact: { scallopHeight: exact },
     sekine: heightJson(c.sekine, exact),
     redonnet: heightJson(c.redonnet, exact),
