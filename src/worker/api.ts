@@ -14,6 +14,7 @@ import {
   solveExact,
   traceProcedure,
 } from '../core/index';
+import { normalAngleAtHeight, profileShape, ringAngleRad } from '../core/profile';
 import { type PaperTableRow, paperTables, profileCurves, rhoSweep } from '../core/teaching';
 import { toolMesh } from '../core/toolMesh';
 import { ringTangent, sectionCentre, torusFrame } from '../core/torus';
@@ -132,7 +133,9 @@ export function traceFrames(input: ForwardInput): TraceFrame[] {
 const PAPER_TABLES: readonly PaperTableRow[] = paperTables();
 
 function teachingData(input: ForwardInput): TeachingData {
-  const sol = solveExact(input, 8);
+  // Only the two angles are needed: solve for them, not for the whole viewer geometry.
+  const shape = profileShape(input.toolRadiusMm, input.cornerRadiusMm, input.leadAngleDeg * DEG);
+  const theta = normalAngleAtHeight(shape, input.scallopHeightMm);
   const sek = sekineModel(input);
   const red = redonnetModel(input);
   const bedi = bediModel(input);
@@ -152,8 +155,8 @@ function teachingData(input: ForwardInput): TeachingData {
         : null,
       redonnet: red.ok ? { effectiveRadiusMm: red.effectiveRadiusMm } : null,
       bedi: bedi.ok ? { longRadiusMm: bedi.longRadiusMm, shortRadiusMm: bedi.shortRadiusMm } : null,
-      exactNormalAngleRad: sol.normalAngleRad,
-      exactRingAngleRad: sol.ringAngleRad,
+      exactNormalAngleRad: theta,
+      exactRingAngleRad: ringAngleRad(shape, theta),
     },
   };
 }
