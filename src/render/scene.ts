@@ -280,6 +280,7 @@ export class ToolScene {
   /** Shows one frame of the paper's procedure (section, candidates, point), or hides the replay. */
   showTraceFrame(frame: TraceFrame | null): void {
     const on = frame !== null;
+    if (!on && !this.traceSection.visible) return; // already hidden: nothing changed, no frame
     this.traceSection.visible = on;
     this.candidates.visible = on;
     this.traceMarker.visible = on && frame.point !== null;

@@ -70,9 +70,18 @@ describe('calculator page in headless Chromium', () => {
       () => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames() > 0,
     );
     expect(await paintedFraction(page)).toBeGreaterThan(0.05);
+    // Let the lazy teaching views load and draw their first data: nothing in the scene changes then.
+    await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
     const before = await frames(page);
-    await page.waitForTimeout(500);
+    await page.waitForTimeout(1000);
     expect(await frames(page)).toBe(before); // no busy render loop
+    // Switching between teaching views that do not touch the 3D scene draws no frame either.
+    await page.getByRole('tab', { name: 'L/2 against rho' }).click();
+    await page.getByTestId('comparison-chart').locator('canvas').first().waitFor();
+    await page.getByRole('tab', { name: 'Formulas' }).click();
+    await page.getByTestId('formulas').locator('math').first().waitFor();
+    await page.waitForTimeout(300);
+    expect(await frames(page)).toBe(before);
     await page.getByRole('button', { name: 'Along the feed' }).click();
     await page.waitForFunction(
       (n) => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames() > n,
@@ -121,7 +130,7 @@ describe('calculator page in headless Chromium', () => {
     // Fixing the fields brings the results back.
     await page.getByTestId('input-Rcr').fill('1');
     await page.getByTestId('input-h').fill('0.05');
-    await expect.poll(() => text(page, 'result-exact-half')).toBe('1.4436');
+    await expect.poll(() => text(page, 'result-exact-half')).toBe('1.4436'); // notes' exact column: 1.443592
     expect(await page.getByTestId('scene').getAttribute('class')).not.toMatch(/stale/);
     expect(errors).toEqual([]);
     await page.close();
@@ -129,7 +138,7 @@ describe('calculator page in headless Chromium', () => {
 
   it('the URL holds the state: round trip, unit switch, and bad values fall back with a notice', async () => {
     const { page } = await open('?R=6&Rcr=2&rho=10&h=0.1&unit=mm');
-    expect(await text(page, 'result-exact-half')).toBe('2.1690');
+    expect(await text(page, 'result-exact-half')).toBe('2.1690'); // notes' exact column: 2.168977
     const historyAtLoad = await page.evaluate(() => window.history.length);
     await page.locator('input[name="unit"][value="in"]').check();
     await expect.poll(() => new URL(page.url()).searchParams.get('unit')).toBe('in');
@@ -199,7 +208,7 @@ describe('calculator page in headless Chromium', () => {
     );
     await page.waitForTimeout(200);
     await page.getByTestId('input-h').fill('0.1');
-    await expect.poll(() => text(page, 'result-exact-half'), { timeout: 10_000 }).toBe('1.8921');
+    await expect.poll(() => text(page, 'result-exact-half'), { timeout: 10_000 }).toBe('1.8921'); // notes: 1.892088
     expect(await page.getByTestId('notice').textContent()).toMatch(/solver was restarted/);
     const starts = await page.evaluate(() =>
       (window as unknown as { __pathInterval: { workerStarts(): number } }).__pathInterval.workerStarts(),
