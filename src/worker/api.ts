@@ -2,7 +2,14 @@
  * The solver API that runs inside the Web Worker. Pure functions of plain data, so it is
  * tested in Node directly and exposed unchanged through Comlink in solver.worker.ts.
  */
-import { bediModel, redonnetModel, sekineModel } from '../core/approximations';
+import {
+  bediHalfInterval,
+  bediModel,
+  redonnetHalfInterval,
+  redonnetModel,
+  sekineHalfInterval,
+  sekineModel,
+} from '../core/approximations';
 import {
   compareForward,
   compareInverse,
@@ -139,6 +146,8 @@ function teachingData(input: ForwardInput): TeachingData {
   const sek = sekineModel(input);
   const red = redonnetModel(input);
   const bedi = bediModel(input);
+  // The approximations' L/2 at this h, in either mode (in inverse mode the rows hold heights).
+  const halfOf = (r: { ok: true; halfIntervalMm: number } | { ok: false }) => (r.ok ? r.halfIntervalMm : null);
   return {
     curves: profileCurves(input),
     sweep: rhoSweep(input.toolRadiusMm, input.cornerRadiusMm, input.scallopHeightMm, 0.5, 89, 120, input.leadAngleDeg),
@@ -151,10 +160,19 @@ function teachingData(input: ForwardInput): TeachingData {
             shortRadiusMm: sek.shortRadiusMm,
             longRadiusMm: sek.longRadiusMm,
             effectiveRadiusMm: sek.effectiveRadiusMm,
+            halfIntervalMm: halfOf(sekineHalfInterval(input)),
           }
         : null,
-      redonnet: red.ok ? { effectiveRadiusMm: red.effectiveRadiusMm } : null,
-      bedi: bedi.ok ? { longRadiusMm: bedi.longRadiusMm, shortRadiusMm: bedi.shortRadiusMm } : null,
+      redonnet: red.ok
+        ? { effectiveRadiusMm: red.effectiveRadiusMm, halfIntervalMm: halfOf(redonnetHalfInterval(input)) }
+        : null,
+      bedi: bedi.ok
+        ? {
+            longRadiusMm: bedi.longRadiusMm,
+            shortRadiusMm: bedi.shortRadiusMm,
+            halfIntervalMm: halfOf(bediHalfInterval(input)),
+          }
+        : null,
       exactNormalAngleRad: theta,
       exactRingAngleRad: ringAngleRad(shape, theta),
     },

@@ -55,16 +55,20 @@ export interface TeachingData {
   readonly frames: readonly TraceFrame[];
   /** Tables 2-5 recomputed beside the printed values. */
   readonly tables: readonly PaperTableRow[];
-  /** Model quantities for the formulas (mm), null where not applicable. */
+  /**
+   * Model quantities for the formulas (mm), null where the model does not apply. Each
+   * `halfIntervalMm` is that procedure's L/2 at this state's h (null: no answer at this h).
+   */
   readonly models: {
     readonly sekine: {
       toolCentreHeightMm: number;
       shortRadiusMm: number;
       longRadiusMm: number;
       effectiveRadiusMm: number;
+      halfIntervalMm: number | null;
     } | null;
-    readonly redonnet: { effectiveRadiusMm: number } | null;
-    readonly bedi: { longRadiusMm: number; shortRadiusMm: number } | null;
+    readonly redonnet: { effectiveRadiusMm: number; halfIntervalMm: number | null } | null;
+    readonly bedi: { longRadiusMm: number; shortRadiusMm: number; halfIntervalMm: number | null } | null;
     readonly exactNormalAngleRad: number;
     readonly exactRingAngleRad: number;
   };

@@ -4,7 +4,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { sekineModel } from '../../src/core/approximations';
-import { compareForward, exactHalfIntervalMm, traceProcedure } from '../../src/core/index';
+import { compareForward, exactHalfIntervalMm, exactScallopHeightMm, traceProcedure } from '../../src/core/index';
 import { PAPER_CONDITIONS } from '../../src/core/paper';
 import { SHOTS, useSite } from './harness';
 
@@ -131,7 +131,25 @@ describe('teaching views in headless Chromium', () => {
       String(Number(reff.effectiveRadiusMm.toPrecision(5))),
     );
     expect(await formulas.textContent()).toMatch(/osculating circle/i);
+    expect(await formulas.textContent()).not.toMatch(/NaN|\{\{|\\/);
     await page.screenshot({ path: `${SHOTS}/view-formulas.png`, fullPage: true });
+    await page.close();
+  });
+
+  it('formulas in inverse mode give each procedure its L/2 at the solved h, not the height', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&L=3&mode=inverse&unit=mm&view=formulas');
+    const sekine = page.getByTestId('formulas').locator('section[data-procedure="sekine"]');
+    await sekine.locator('math').first().waitFor();
+    const h = exactScallopHeightMm({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, halfIntervalMm: 1.5 });
+    const c = compareForward(tool(5, h));
+    if (!c.sekine.ok) throw new Error('applicable');
+    const last = sekine.locator('math').last();
+    await expect
+      .poll(() => last.textContent())
+      .toMatch(new RegExp(`=${String(Number(c.sekine.halfIntervalMm.toPrecision(5)))}$`));
+    expect(
+      await page.getByTestId('formulas').locator('section[data-procedure="exact"] math').last().textContent(),
+    ).toMatch(/=1\.5$/);
     await page.close();
   });
 

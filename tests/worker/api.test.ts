@@ -54,6 +54,24 @@ describe('worker solver API (plain data in, plain data out)', () => {
     expect(flat.scallopHeightMm).toBe(0);
     expect(flat.geometry).toBeNull();
   });
+
+  it('teaching models give each approximation its L/2 at the state h, in inverse mode too (rows hold heights there)', () => {
+    // Regression: the formulas view once read the inverse rows (heights) as L/2.
+    const inverse = solve({ id: 6, mode: 'inverse', R: 3, Rcr: 1, rho: 5, value: 3, withViews: true });
+    if (!inverse.ok || !inverse.teaching) throw new Error('expected teaching data');
+    const c = compareForward({
+      toolRadiusMm: 3,
+      cornerRadiusMm: 1,
+      leadAngleDeg: 5,
+      scallopHeightMm: inverse.scallopHeightMm,
+    });
+    const m = inverse.teaching.models;
+    if (!c.sekine.ok || !c.redonnet.ok || !c.bedi.ok) throw new Error('all three apply here');
+    expect(m.sekine?.halfIntervalMm).toBe(c.sekine.halfIntervalMm);
+    expect(m.redonnet?.halfIntervalMm).toBe(c.redonnet.halfIntervalMm);
+    expect(m.bedi?.halfIntervalMm).toBe(c.bedi.halfIntervalMm);
+    expect(Math.abs(inverse.halfIntervalMm - 1.5)).toBeLessThan(1e-12);
+  });
 });
 
 describe('trace frames for the step-through', () => {
