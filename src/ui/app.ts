@@ -580,6 +580,7 @@ export class CalculatorApp {
   private exposeTestHooks(): void {
     const hooks = {
       frames: () => this.scene.frames,
+      softwareRendering: () => this.scene.softwareRendering,
       workerStarts: () => this.client.started,
       crashWorker: () => this.client.crash(),
       latencies: () => [...this.latencies],
