@@ -186,11 +186,17 @@ function pushBranch(out: number[], f: TorusFrame, h: number, g0: number, g1: num
 
 /**
  * The curve where the torus meets the plane z = h, as closed polylines (flat xyz arrays, mm).
- * For a flat end (Rcr = 0) the "torus" is the ring itself and the curve reduces to its
- * crossing points, so no loop is returned.
+ * For a flat end (Rcr = 0) the "torus" is the ring itself, which crosses the plane at two
+ * points; the plane then cuts the flat bottom along the chord between them, returned as a
+ * two-point loop. Ring height: z(gamma) = Rb sin(rho) (1 - cos gamma) + Rcr (Eq. 1 with Eq. 7).
  */
 export function intersectionLoops(f: TorusFrame, h: number, n: number): Float64Array[] {
-  if (f.cornerRadiusMm === 0) return [];
+  if (f.cornerRadiusMm === 0) {
+    const rise = f.ringRadiusMm * f.sinRho;
+    if (rise <= 0 || h > 2 * rise) return [];
+    const gamma = Math.acos(Math.max(-1, Math.min(1, 1 - h / rise)));
+    return [Float64Array.from([...sectionCentre(f, gamma), ...sectionCentre(f, -gamma)])];
+  }
   const intervals = meetingIntervals(f, h);
   const loops: Float64Array[] = [];
   const full = intervals.length === 1 && intervals[0]?.[0] === 0 && intervals[0][1] === Math.PI;

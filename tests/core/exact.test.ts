@@ -187,6 +187,21 @@ describe('viewer geometry', () => {
     expect(maxY).toBeGreaterThan(sol.halfIntervalMm - 1e-3);
   });
 
+  it('flat end (Rcr = 0): the plane cuts the flat bottom along a chord whose ends are at z = h and Y = +-L/2', () => {
+    const flatEnd = solveExact(input(3, 0, 5, 0.05), 32);
+    expect(flatEnd.intersectionLoops.length).toBe(1);
+    const chord = flatEnd.intersectionLoops[0] as Float64Array;
+    expect(chord.length).toBe(6);
+    // Closed form for the flat end (see the limits above): L/2 = Rb sqrt(1 - (1 - h/(Rb sin rho))^2).
+    const q = 1 - 0.05 / (3 * Math.sin((5 * Math.PI) / 180));
+    const half = 3 * Math.sqrt(1 - q * q);
+    expect(chord[2]).toBeCloseTo(0.05, 12);
+    expect(chord[5]).toBeCloseTo(0.05, 12);
+    expect(chord[1]).toBeCloseTo(half, 12);
+    expect(chord[4]).toBeCloseTo(-half, 12);
+    expect(chord[0]).toBeCloseTo(chord[3] as number, 12);
+  });
+
   it('rho = 0 gives two concentric loops (outer and inner crossing of the corner)', () => {
     const flat = solveExact(input(3, 1, 0, 0.05), 32);
     expect(flat.intersectionLoops.length).toBe(2);
