@@ -6,6 +6,7 @@ import { describe, expect, it } from 'vitest';
 import { sekineModel } from '../../src/core/approximations';
 import { compareForward, exactHalfIntervalMm, exactScallopHeightMm, traceProcedure } from '../../src/core/index';
 import { PAPER_CONDITIONS } from '../../src/core/paper';
+import { autoExaggeration } from '../../src/ui/views/scale';
 import { SHOTS, useSite } from './harness';
 
 const { open } = useSite('docs/views');
@@ -41,6 +42,16 @@ describe('teaching views in headless Chromium', () => {
     const half2 = exactHalfIntervalMm(tool(5, 0.051)).toFixed(4);
     await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half2}`);
     expect(await view.locator('polygon.scallop').getAttribute('points')).not.toBe(scallopBefore);
+    // A tiny scallop: "auto" exaggerates more, and says so; a fixed choice overrides it.
+    await page.getByTestId('input-h').fill('0.005');
+    const smallHalf = exactHalfIntervalMm(tool(5, 0.005));
+    const k = autoExaggeration(2 * smallHalf + 0.4 * 3, 4 * 0.005);
+    expect(k).toBeGreaterThan(5);
+    await expect
+      .poll(() => page.getByTestId('profile-scale').textContent())
+      .toBe(`vertical scale exaggerated x${k} (auto)`);
+    await page.getByTestId('profile-exaggeration').selectOption('1');
+    await expect.poll(() => page.getByTestId('profile-scale').textContent()).toBe('true scale');
     expect(errors).toEqual([]);
     await page.close();
   });

@@ -6,6 +6,7 @@
  */
 import type { ProcedureKey } from '../../worker/protocol';
 import { COLOURS, formatLength, html, LABELS, svg, type TeachingView, type ViewContext } from './common';
+import { autoExaggeration } from './scale';
 
 type Box = { x: number; y: number; w: number; h: number };
 
@@ -30,9 +31,10 @@ export class ProfileView implements TeachingView {
   private readonly curves = new Map<ProcedureKey, SVGElement[]>();
 
   constructor() {
+    this.exaggeration.append(html('option', { value: 'auto' }, 'vertical: auto'));
     for (const k of [1, 5, 20, 100])
       this.exaggeration.append(html('option', { value: String(k) }, k === 1 ? 'true scale' : `vertical x${k}`));
-    this.exaggeration.value = '5';
+    this.exaggeration.value = 'auto';
     this.exaggeration.addEventListener('change', () => this.ctx && this.update(this.ctx));
     const tools = html('div', { class: 'view-tools' });
     const zoomIn = html('button', { type: 'button', 'aria-label': 'Zoom in' }, '+');
@@ -72,10 +74,10 @@ export class ProfileView implements TeachingView {
     this.ctx = ctx;
     const t = ctx.reply.teaching;
     if (!t) return;
-    const k = Number(this.exaggeration.value) || 1;
     const L = 2 * ctx.reply.halfIntervalMm;
     const h = ctx.reply.scallopHeightMm;
     const R = ctx.R;
+    const k = this.verticalScale(ctx);
     const Y = (y: number) => y;
     const Z = (z: number) => -z * k;
     this.layer.replaceChildren();
@@ -171,7 +173,19 @@ export class ProfileView implements TeachingView {
     const bottom = Z(0) + 5 * d;
     this.home = { x: span.from, y: Z(top) - d, w: span.to - span.from, h: bottom - Z(top) + d };
     this.setBox(this.home);
-    this.scaleNote.textContent = k === 1 ? 'true scale' : `vertical scale exaggerated x${k}`;
+    const auto = this.exaggeration.value === 'auto' ? ' (auto)' : '';
+    this.scaleNote.textContent = k === 1 ? `true scale${auto}` : `vertical scale exaggerated x${k}${auto}`;
+  }
+
+  /**
+   * The chosen exaggeration, or with "auto" the largest 1-2-5 step at which the drawn band
+   * (up to min(R, 4h)) stays within about a third of the view's width.
+   */
+  private verticalScale(ctx: ViewContext): number {
+    const chosen = Number(this.exaggeration.value);
+    if (chosen > 0) return chosen;
+    const width = 2 * ctx.reply.halfIntervalMm + 0.4 * ctx.R;
+    return autoExaggeration(width, Math.min(ctx.R, 4 * ctx.reply.scallopHeightMm));
   }
 
   highlight(key: ProcedureKey | null): void {
@@ -181,7 +195,7 @@ export class ProfileView implements TeachingView {
   private zoomToCusp(): void {
     if (!this.ctx) return;
     const half = this.ctx.reply.halfIntervalMm;
-    const k = Number(this.exaggeration.value) || 1;
+    const k = this.verticalScale(this.ctx);
     const h = this.ctx.reply.scallopHeightMm;
     const w = Math.max(0.05 * half, 0.002);
     this.setBox({
