@@ -103,8 +103,10 @@ export interface RhoSweep {
 }
 
 /**
- * Sweeps rho from `fromDeg` to `toDeg` (plus `includeDeg`, if given) at fixed R, Rcr and h. Where h is at or above the
- * corner height at some rho (small rho, large h) every procedure is null there.
+ * Sweeps rho from `fromDeg` to `toDeg` (plus `includeDeg`, if given) at fixed R, Rcr and h. The
+ * samples are spaced geometrically (0 < fromDeg < toDeg), dense at small rho where L/2 and the
+ * approximations' errors change fastest. Where h is at or above the corner height at some rho
+ * (small rho, large h) every procedure is null there.
  */
 export function rhoSweep(
   R: number,
@@ -117,7 +119,8 @@ export function rhoSweep(
 ): RhoSweep {
   const out: RhoSweep = { rhoDeg: [], exact: [], sekine: [], redonnet: [], bedi: [] };
   const angles: number[] = [];
-  for (let i = 0; i <= steps; i++) angles.push(fromDeg + ((toDeg - fromDeg) * i) / steps);
+  const ratio = toDeg / fromDeg;
+  for (let i = 0; i <= steps; i++) angles.push(i === steps ? toDeg : fromDeg * ratio ** (i / steps));
   // The current angle is one of the samples, so the chart's values there are the solver's.
   if (includeDeg !== null && includeDeg >= fromDeg && includeDeg <= toDeg && !angles.includes(includeDeg)) {
     angles.push(includeDeg);

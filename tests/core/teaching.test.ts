@@ -48,6 +48,14 @@ describe('teaching data', () => {
 
   it('the rho sweep includes the current angle and matches the exact solver there; no value where h is beyond the corner', () => {
     const s = rhoSweep(3, 1, 0.05, 0.5, 89, 40, 7.3);
+    // Geometric spacing: the ends exact, a constant ratio between neighbours (7.3 aside).
+    const plain = rhoSweep(3, 1, 0.05, 0.5, 89, 40).rhoDeg;
+    expect(plain).toHaveLength(41);
+    expect(plain[0]).toBe(0.5);
+    expect(plain[40]).toBe(89);
+    for (let j = 1; j < plain.length; j++)
+      expect((plain[j] as number) / (plain[j - 1] as number)).toBeCloseTo((89 / 0.5) ** (1 / 40), 12);
+    expect(s.rhoDeg).toHaveLength(42);
     const i = s.rhoDeg.indexOf(7.3);
     expect(i).toBeGreaterThan(0);
     expect(s.exact[i]).toBe(exactHalfIntervalMm({ ...tool, leadAngleDeg: 7.3, scallopHeightMm: 0.05 }));

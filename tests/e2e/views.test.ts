@@ -75,6 +75,25 @@ describe('teaching views in headless Chromium', () => {
       .poll(() => summary.textContent())
       .toMatch(new RegExp(`rho = 5\\.1 deg.*Exact \\(3D\\) ${c2.exact.halfIntervalMm.toFixed(4)}`));
     expect(await chart.locator('.u-title').first().textContent()).toMatch(/current rho = 5\.1/);
+    // The dashed current-rho marker: on the default log axis 5.1 deg sits near the middle of
+    // 0.5-89 deg (log ratio 0.45); on a linear axis near the left edge (0.05).
+    const markerAt = () =>
+      page.evaluate(() => {
+        const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="chart-half"] canvas');
+        const g = canvas?.getContext('2d');
+        if (!canvas || !g) return -1;
+        const data = g.getImageData(0, 0, canvas.width, canvas.height).data;
+        const counts = new Array<number>(canvas.width).fill(0);
+        for (let i = 0; i < data.length; i += 4) {
+          const red = Math.abs((data[i] as number) - 0xe1) + Math.abs((data[i + 1] as number) - 0x1d);
+          const column = (i / 4) % canvas.width;
+          if (red + Math.abs((data[i + 2] as number) - 0x48) < 60) counts[column] = (counts[column] ?? 0) + 1;
+        }
+        return counts.indexOf(Math.max(...counts)) / canvas.width;
+      });
+    await expect.poll(markerAt).toBeGreaterThan(0.35);
+    await page.getByTestId('chart-rho-axis').selectOption('linear');
+    await expect.poll(markerAt).toBeLessThan(0.2);
     await page.screenshot({ path: `${SHOTS}/view-chart.png` });
     await page.close();
   });

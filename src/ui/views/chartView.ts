@@ -16,6 +16,7 @@ export class ChartView implements TeachingView {
   private readonly mainBox = html('div', { class: 'chart-box', 'data-testid': 'chart-half' });
   private readonly errorBox = html('div', { class: 'chart-box', 'data-testid': 'chart-error' });
   private readonly errorUnit = html('select', { 'aria-label': 'Error unit', 'data-testid': 'chart-error-unit' });
+  private readonly rhoAxis = html('select', { 'aria-label': 'Lead angle axis', 'data-testid': 'chart-rho-axis' });
   /** The charted values at the current rho, as text (charts are pictures to a screen reader). */
   private readonly summary = html('p', { class: 'view-note', 'data-testid': 'chart-summary', 'aria-live': 'polite' });
   private main: uPlot | null = null;
@@ -32,8 +33,14 @@ export class ChartView implements TeachingView {
       html('option', { value: 'mm' }, 'error in length'),
     );
     this.errorUnit.addEventListener('change', () => this.ctx && this.rebuild(this.ctx));
+    // A log axis spreads the small lead angles, where the procedures part ways.
+    this.rhoAxis.append(
+      html('option', { value: 'log' }, 'rho axis: log'),
+      html('option', { value: 'linear' }, 'rho axis: linear'),
+    );
+    this.rhoAxis.addEventListener('change', () => this.ctx && this.rebuild(this.ctx));
     const tools = html('div', { class: 'view-tools' });
-    tools.append(this.errorUnit);
+    tools.append(this.errorUnit, this.rhoAxis);
     this.element.append(this.summary, this.mainBox, tools, this.errorBox);
   }
 
@@ -74,6 +81,7 @@ export class ChartView implements TeachingView {
     const scale = (v: number | null) => (v === null ? null : v * k);
     const mainData: uPlot.AlignedData = [sweep.rhoDeg, ...PROCEDURE_KEYS.map((key) => sweep[key].map(scale))];
     const pct = this.errorUnit.value === 'pct';
+    const log = this.rhoAxis.value === 'log';
     const errorData: uPlot.AlignedData = [
       sweep.rhoDeg,
       ...APPROX.map((key) =>
@@ -99,7 +107,8 @@ export class ChartView implements TeachingView {
       height: 220,
       focus: { alpha: 0.25 },
       cursor: { focus: { prox: 16 } },
-      scales: { x: { time: false } },
+      // The charted range exactly (a log scale would otherwise snap out to whole decades).
+      scales: { x: { time: false, distr: log ? 3 : 1, range: (_u, min, max) => [min, max] } },
       axes: [{ label: 'lead angle rho [deg]' }, { label: yLabel }],
       plugins: [this.marker()],
     });
@@ -112,7 +121,7 @@ export class ChartView implements TeachingView {
             return `${LABELS[key]} ${v === null || v === undefined ? 'n/a' : (v * k).toFixed(ctx.unit === 'mm' ? 4 : 5)}`;
           }).join(', ')}.`;
     const title = `L/2 against rho (R, Rcr, h fixed; dashed: current rho = ${ctx.rho})`;
-    const key = `${unit}|${pct}|${this.width()}`;
+    const key = `${unit}|${pct}|${log}|${this.width()}`;
     if (this.main && this.error && key === this.shape) {
       // Same axes: new data only (cheaper than building the charts again).
       this.main.setData(mainData);
