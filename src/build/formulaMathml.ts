@@ -5,7 +5,7 @@
  */
 import temml from 'temml';
 import type { Plugin } from 'vite';
-import { FORMULA_TEMPLATES, SLOT_PATTERN, slotClass } from '../ui/views/formulaTemplates';
+import { FORMULA_TEMPLATES, SLOT_PATTERN, slotClass } from '../ui/views/formulaTemplates.ts';
 
 export const FORMULA_MODULE_ID = 'virtual:formula-mathml';
 const RESOLVED_ID = `\0${FORMULA_MODULE_ID}`;
