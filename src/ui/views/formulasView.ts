@@ -4,7 +4,7 @@
  */
 import mathml from 'virtual:formula-mathml';
 import type { ProcedureKey } from '../../worker/protocol';
-import { COLOURS, html, LABELS, type TeachingView, type ViewContext } from './common';
+import { COLOURS, html, LABELS, PROCEDURE_KEYS, type TeachingView, type ViewContext } from './common';
 import { formulaSlotValues, slotClass } from './formulaTemplates';
 
 const TEXTS: Readonly<Record<ProcedureKey, string>> = {
@@ -16,8 +16,6 @@ const TEXTS: Readonly<Record<ProcedureKey, string>> = {
     'Osculating circle at the lowest point (Eqs. 9, 8): exact as h tends to 0, then it overestimates L/2 because the real profile curves up faster than its lowest-point circle.',
   bedi: 'Elliptic projection (Eqs. 10-11): one ellipse with semi-axes Rlong and Rlong sin rho stands for the offset ellipse. Close for these tools, but an offset ellipse is not an ellipse, so a small error remains; it breaks down at rho = 0.',
 };
-
-const ORDER: readonly ProcedureKey[] = ['exact', 'sekine', 'redonnet', 'bedi'];
 
 export class FormulasView implements TeachingView {
   readonly id = 'formulas';
@@ -36,7 +34,7 @@ export class FormulasView implements TeachingView {
       models: t.models,
     });
     this.element.replaceChildren();
-    for (const key of ORDER) {
+    for (const key of PROCEDURE_KEYS) {
       const slots = values[key];
       if (!slots) continue;
       const box = html('section', { class: 'formula', 'data-procedure': key });
@@ -49,7 +47,7 @@ export class FormulasView implements TeachingView {
       box.append(title, html('p', {}, TEXTS[key]), maths);
       this.element.append(box);
     }
-    const missing = ORDER.filter((k) => !values[k]);
+    const missing = PROCEDURE_KEYS.filter((k) => !values[k]);
     if (missing.length > 0) {
       this.element.append(
         html(
