@@ -7,16 +7,21 @@
  */
 import {
   bediHalfInterval,
-  exactHalfIntervalMm,
+  exactIntervalMm,
   type ForwardInput,
+  forwardInput,
+  passGeometry,
   redonnetHalfInterval,
+  scallopHeightLimits,
   sekineHalfInterval,
-  solveExact,
   traceProcedure,
 } from '../core/index';
 
-/** Deterministic inputs spread over the valid domain (mulberry32, seed 1). */
-function inputs(count: number): ForwardInput[] {
+/**
+ * Deterministic inputs spread over the valid domain (mulberry32, seed 1); with `tilt`, tilts
+ * from -60 to 60 degrees and both pass patterns.
+ */
+function inputs(count: number, tilt: boolean): ForwardInput[] {
   let a = 1;
   const rand = () => {
     a = (a + 0x6d2b79f5) >>> 0;
@@ -30,13 +35,14 @@ function inputs(count: number): ForwardInput[] {
     const R = 0.5 + 12 * rand();
     const Rcr = R * rand();
     const rho = 89 * rand();
-    const limit = (R - Rcr) * Math.sin((rho * Math.PI) / 180) + Rcr;
-    out.push({
+    const tool = {
       toolRadiusMm: R,
       cornerRadiusMm: Rcr,
       leadAngleDeg: rho,
-      scallopHeightMm: limit * (0.001 + 0.5 * rand()),
-    });
+      tiltAngleDeg: tilt ? 120 * rand() - 60 : 0,
+    };
+    const limit = scallopHeightLimits(tool).limitMm;
+    out.push(forwardInput(tool, tilt && rand() < 0.5 ? 'zigzag' : 'one-way', limit * (0.001 + 0.5 * rand())));
   }
   return out;
 }
@@ -61,20 +67,22 @@ const args = process.argv.slice(2);
 const json = args.includes('--json');
 const roundsArg = args.indexOf('--rounds');
 const rounds = roundsArg >= 0 ? Math.max(1, Number(args[roundsArg + 1]) || 1) : 21;
-const cases = inputs(1024);
+const cases = inputs(1024, false);
+const tilted = inputs(1024, true);
 const half = (r: { ok: true; halfIntervalMm: number } | { ok: false }) => (r.ok ? r.halfIntervalMm : 0);
 
 const rows: Array<[string, string, number]> = [
-  ['exact L/2', 'exactNsPerCall', measure(exactHalfIntervalMm, cases, 200_000, rounds)],
+  ['exact L (no tilt)', 'exactNsPerCall', measure(exactIntervalMm, cases, 200_000, rounds)],
+  ['exact L (tilt, both flanks)', 'exactTiltNsPerCall', measure(exactIntervalMm, tilted, 200_000, rounds)],
   [
     'exact with geometry (96 samples)',
     'exactWithGeometryNsPerCall',
-    measure((c) => solveExact(c).halfIntervalMm, cases, 2_000, rounds),
+    measure((c) => passGeometry(c, c.scallopHeightMm, c.scallopHeightMm).right.pHp[1], cases, 2_000, rounds),
   ],
   ['Sekine et al.', 'sekineNsPerCall', measure((c) => half(sekineHalfInterval(c)), cases, 500_000, rounds)],
   ['Redonnet et al.', 'redonnetNsPerCall', measure((c) => half(redonnetHalfInterval(c)), cases, 500_000, rounds)],
   ['Bedi et al.', 'bediNsPerCall', measure((c) => half(bediHalfInterval(c)), cases, 500_000, rounds)],
-  ['trace of the 3D procedure', 'traceNsPerCall', measure((c) => traceProcedure(c).halfIntervalMm, cases, 500, rounds)],
+  ['trace of the 3D procedure', 'traceNsPerCall', measure((c) => traceProcedure(c).right.widthMm, cases, 500, rounds)],
 ];
 
 console.log(`Solver benchmark: median of ${rounds} rounds, ${cases.length} inputs spread over the valid domain`);

@@ -5,14 +5,14 @@
 import { createInterface } from 'node:readline';
 import type { Readable, Writable } from 'node:stream';
 import {
-  type Approximation,
   compareForward,
   compareInverse,
+  describeInputError,
   type ForwardComparison,
-  type HalfInterval,
+  type ForwardEstimate,
   type InputError,
   type InverseComparison,
-  type ScallopHeight,
+  type InverseEstimate,
   type ToolInput,
   validateForward,
   validateInverse,
@@ -104,7 +104,7 @@ function forwardTable(c: ForwardComparison): string {
   ];
   const notes: string[] = [];
   for (const p of PROCEDURES) {
-    const r = c[p];
+    const r = c.approximations[p];
     if (r.ok) {
       const dev = r.halfIntervalMm - exact;
       lines.push(
@@ -120,9 +120,9 @@ function forwardTable(c: ForwardComparison): string {
 
 function inverseTable(c: InverseComparison): string {
   const { input } = c;
-  const exact = c.exact.scallopHeightMm;
+  const exact = c.exact.cuspHeightMm;
   const lines = [
-    `Filleted end mill R = ${input.toolRadiusMm} mm, Rcr = ${input.cornerRadiusMm} mm, rho = ${input.leadAngleDeg} deg, L/2 = ${input.halfIntervalMm} mm (L = ${2 * input.halfIntervalMm} mm)`,
+    `Filleted end mill R = ${input.toolRadiusMm} mm, Rcr = ${input.cornerRadiusMm} mm, rho = ${input.leadAngleDeg} deg, L/2 = ${input.intervalMm / 2} mm (L = ${input.intervalMm} mm)`,
     '',
     `${pad('procedure', 30, true)}${pad('h [mm]', 12)}${pad('dev [mm]', 12)}${pad('dev [%]', 10)}`,
     `${pad('exact (3D geometry)', 30, true)}${pad(fixed(exact, 6), 12)}${pad('-', 12)}${pad('-', 10)}`,
@@ -130,7 +130,7 @@ function inverseTable(c: InverseComparison): string {
   const eqs = { sekine: 'Sekine et al. (Eq. 12)', redonnet: 'Redonnet et al. (Eq. 12)', bedi: 'Bedi et al. (Eq. 13)' };
   const notes: string[] = [];
   for (const p of PROCEDURES) {
-    const r = c[p];
+    const r = c.approximations[p];
     if (r.ok) {
       const dev = r.scallopHeightMm - exact;
       const pct = exact > 0 ? pad(signed((100 * dev) / exact, 2), 10) : pad('-', 10);
@@ -145,7 +145,7 @@ function inverseTable(c: InverseComparison): string {
 
 type JsonValue = number | string | boolean | null | JsonValue[] | { [key: string]: JsonValue };
 
-function halfJson(r: Approximation<HalfInterval>, exact: number): JsonValue {
+function halfJson(r: ForwardEstimate<unknown>, exact: number): JsonValue {
   if (!r.ok) return { notApplicable: r.notApplicable };
   const dev = r.halfIntervalMm - exact;
   return {
@@ -156,7 +156,7 @@ function halfJson(r: Approximation<HalfInterval>, exact: number): JsonValue {
   };
 }
 
-function heightJson(r: Approximation<ScallopHeight>, exact: number): JsonValue {
+function heightJson(r: InverseEstimate, exact: number): JsonValue {
   if (!r.ok) return { notApplicable: r.notApplicable };
   const dev = r.scallopHeightMm - exact;
   return { scallopHeight: r.scallopHeightMm, deviation: dev, deviationPercent: exact > 0 ? (100 * dev) / exact : null };
@@ -173,26 +173,26 @@ export function forwardJson(c: ForwardComparison): JsonValue {
     unit: 'mm',
     input: { ...toolJson(c.input), h: c.input.scallopHeightMm },
     exact: { halfInterval: exact, interval: 2 * exact },
-    sekine: halfJson(c.sekine, exact),
-    redonnet: halfJson(c.redonnet, exact),
-    bedi: halfJson(c.bedi, exact),
+    sekine: halfJson(c.approximations.sekine, exact),
+    redonnet: halfJson(c.approximations.redonnet, exact),
+    bedi: halfJson(c.approximations.bedi, exact),
   };
 }
 
 function inverseJson(c: InverseComparison): JsonValue {
-  const exact = c.exact.scallopHeightMm;
+  const exact = c.exact.cuspHeightMm;
   return {
     unit: 'mm',
-    input: { ...toolJson(c.input), halfInterval: c.input.halfIntervalMm },
+    input: { ...toolJson(c.input), halfInterval: c.input.intervalMm / 2 },
     exact: { scallopHeight: exact },
-    sekine: heightJson(c.sekine, exact),
-    redonnet: heightJson(c.redonnet, exact),
-    bedi: heightJson(c.bedi, exact),
+    sekine: heightJson(c.approximations.sekine, exact),
+    redonnet: heightJson(c.approximations.redonnet, exact),
+    bedi: heightJson(c.approximations.bedi, exact),
   };
 }
 
-function reportErrors(io: Io, errors: readonly InputError[], json: boolean): number {
-  for (const e of errors) io.stderr.write(`error: ${e.message}\n`);
+function reportErrors(io: Io, errors: readonly InputError[], json: boolean, intervalAsHalf = false): number {
+  for (const e of errors) io.stderr.write(`error: ${describeInputError(e, 'mm', { intervalAsHalf })}\n`);
   if (json) io.stdout.write(`${JSON.stringify({ errors })}\n`);
   return 2;
 }
@@ -224,8 +224,8 @@ function csvCell(text: string): string {
   return /[",\n\r]/.test(text) ? `"${text.replaceAll('"', '""')}"` : text;
 }
 
-function csvNumber(r: Approximation<HalfInterval>): string {
-  return r.ok ? r.halfIntervalMm.toFixed(9) : '';
+function csvNumber(r: { readonly ok: boolean; readonly halfIntervalMm?: number }): string {
+  return r.ok && r.halfIntervalMm !== undefined ? r.halfIntervalMm.toFixed(9) : '';
 }
 
 const BATCH_COLUMNS = ['R', 'Rcr', 'rho', 'h'] as const;
@@ -266,7 +266,7 @@ async function batch(io: Io): Promise<number> {
       if (v.ok) {
         const c = compareForward(v.value);
         buffer.push(
-          `${echo},${csvNumber(c.exact)},${csvNumber(c.sekine)},${csvNumber(c.redonnet)},${csvNumber(c.bedi)},\n`,
+          `${echo},${c.exact.halfIntervalMm.toFixed(9)},${csvNumber(c.approximations.sekine)},${csvNumber(c.approximations.redonnet)},${csvNumber(c.approximations.bedi)},\n`,
         );
       } else {
         buffer.push(`${echo},,,,,${csvCell(v.errors.map((e) => e.message).join(' '))}\n`);
@@ -307,8 +307,11 @@ export async function main(args: readonly string[], io: Io): Promise<number> {
       io.stderr.write('error: --inverse computes h: give --half-interval instead of --h\n');
       return 2;
     }
-    const v = validateInverse({ R: values.R, Rcr: values.Rcr, rho: values.rho, halfInterval: values['half-interval'] });
-    if (!v.ok) return reportErrors(io, v.errors, json);
+    const half = values['half-interval'];
+    const interval =
+      half !== undefined && /^\s*[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\s*$/.test(half) ? 2 * Number(half) : half;
+    const v = validateInverse({ R: values.R, Rcr: values.Rcr, rho: values.rho, interval });
+    if (!v.ok) return reportErrors(io, v.errors, json, true);
     const c = compareInverse(v.value);
     io.stdout.write(json ? `${JSON.stringify(inverseJson(c))}\n` : `${inverseTable(c)}\n`);
     return 0;

@@ -1,17 +1,28 @@
 /**
- * The three published 2-D approximations compared in the paper (Sekine & Kameya 2022,
- * section 2), and their inverses (Eqs. 12-13). Lengths in mm; public angles in degrees.
+ * The approximations: the three published 2-D procedures compared in the paper (Sekine &
+ * Kameya 2022, section 2) with their inverses (Eqs. 12-13), and two more circles: the
+ * osculating circle of the exact profile at the contact (Redonnet's idea for any posture) and
+ * the ball of the corner radius. Lengths in mm; public angles in degrees.
  *
- * Each returns either a result or `notApplicable` with the reason where its own model
- * has no meaningful answer; never NaN.
+ * The paper's procedures are lead-only models: with tilt they are applied as a user would,
+ * with the lead angle alone (tilt ignored). Every model here is symmetric, so its step-over is
+ * twice its L/2 for either pass pattern. Each returns a result or `notApplicable` with the
+ * reason where its own model has no meaningful answer (never NaN, never Infinity).
  */
+import { contactCurvatureRadiusMm, shapeOfTool } from './posture';
+import { RAD_PER_DEG } from './units';
 import type { ForwardInput, InverseInput, ToolInput } from './validate';
 
-const DEG = Math.PI / 180;
+const DEG = RAD_PER_DEG;
 
 export type Approximation<T> = ({ readonly ok: true } & T) | { readonly ok: false; readonly notApplicable: string };
 
-export type ProcedureName = 'sekine' | 'redonnet' | 'bedi';
+/** An effective radius must be a finite number: a subnormal lead angle can overflow it. */
+function overflow(who: string): { ok: false; notApplicable: string } {
+  return notApplicable(
+    `${who}: its effective radius overflows (rho is too close to 0 for its 1/sin(rho)); the model has no answer here.`,
+  );
+}
 
 /** Sekine et al.'s ellipse (Eqs. 5-7) and effective radius (Eq. 4), mm. */
 export interface SekineModel {
@@ -64,7 +75,9 @@ export function sekineModel(tool: ToolInput): Approximation<SekineModel> {
   const shortRadiusMm = Math.abs(rb * Math.sin(rho)) + 2 * tool.cornerRadiusMm * half * half;
   if (!(shortRadiusMm > 0)) return notApplicable(`Sekine et al.: the ellipse's short radius is 0.`);
   const longRadiusMm = shortRadiusMm / sin;
-  const effectiveRadiusMm = (longRadiusMm * longRadiusMm + shortRadiusMm * shortRadiusMm) / (2 * shortRadiusMm);
+  // (Rlong^2 + Rshort^2) / (2 Rshort), written so that a huge Rlong does not overflow its square.
+  const effectiveRadiusMm = 0.5 * longRadiusMm * (longRadiusMm / shortRadiusMm) + 0.5 * shortRadiusMm;
+  if (!Number.isFinite(effectiveRadiusMm) || !Number.isFinite(longRadiusMm)) return overflow('Sekine et al.');
   return { ok: true, toolCentreHeightMm, shortRadiusMm, longRadiusMm, effectiveRadiusMm };
 }
 
@@ -79,7 +92,9 @@ export function redonnetModel(tool: ToolInput): Approximation<RedonnetModel> {
   const sin = Math.sin(tool.leadAngleDeg * DEG);
   if (sin === 0)
     return notApplicable('Redonnet et al.: at rho = 0 the effective radius Rb/sin(rho) + Rcr is infinite.');
-  return { ok: true, effectiveRadiusMm: rb / sin + tool.cornerRadiusMm };
+  const effectiveRadiusMm = rb / sin + tool.cornerRadiusMm;
+  if (!Number.isFinite(effectiveRadiusMm)) return overflow('Redonnet et al.');
+  return { ok: true, effectiveRadiusMm };
 }
 
 /**
@@ -104,7 +119,8 @@ function circleHalfInterval(who: string, reffMm: number, h: number): Approximati
       `${who}: h = ${h} mm is above the widest point of its circle (Reff = ${Number(reffMm.toPrecision(6))} mm).`,
     );
   }
-  const half = Math.sqrt(h * (2 * reffMm - h));
+  // sqrt(h) sqrt(2 Reff - h): no overflow of the product for a huge Reff.
+  const half = Math.sqrt(h) * Math.sqrt(2 * reffMm - h);
   return { ok: true, halfIntervalMm: half, intervalMm: 2 * half };
 }
 
@@ -169,18 +185,18 @@ function circleScallop(who: string, reffMm: number, halfMm: number): Approximati
   return { ok: true, scallopHeightMm: (halfMm * halfMm) / (reffMm + Math.sqrt(reffMm * reffMm - halfMm * halfMm)) };
 }
 
-/** Scallop height (mm) Sekine et al.'s circle predicts at a given L/2 (Eq. 12). */
+/** Scallop height (mm) Sekine et al.'s circle predicts at a given step-over L (Eq. 12 at L/2). */
 export function sekineScallopHeight(input: InverseInput): Approximation<ScallopHeight> {
   const model = sekineModel(input);
   if (!model.ok) return model;
-  return circleScallop('Sekine et al.', model.effectiveRadiusMm, input.halfIntervalMm);
+  return circleScallop('Sekine et al.', model.effectiveRadiusMm, input.intervalMm / 2);
 }
 
-/** Scallop height (mm) Redonnet et al.'s circle predicts at a given L/2 (Eq. 12). */
+/** Scallop height (mm) Redonnet et al.'s circle predicts at a given step-over L (Eq. 12 at L/2). */
 export function redonnetScallopHeight(input: InverseInput): Approximation<ScallopHeight> {
   const model = redonnetModel(input);
   if (!model.ok) return model;
-  return circleScallop('Redonnet et al.', model.effectiveRadiusMm, input.halfIntervalMm);
+  return circleScallop('Redonnet et al.', model.effectiveRadiusMm, input.intervalMm / 2);
 }
 
 /**
@@ -191,7 +207,7 @@ export function bediScallopHeight(input: InverseInput): Approximation<ScallopHei
   const model = bediModel(input);
   if (!model.ok) return model;
   const { longRadiusMm, shortRadiusMm } = model;
-  const half = input.halfIntervalMm;
+  const half = input.intervalMm / 2;
   if (half > longRadiusMm) {
     return notApplicable(
       `Bedi et al.: L/2 = ${half} mm is wider than its ellipse (Rlong = ${Number(longRadiusMm.toPrecision(6))} mm).`,
@@ -199,4 +215,73 @@ export function bediScallopHeight(input: InverseInput): Approximation<ScallopHei
   }
   const q = half / longRadiusMm;
   return { ok: true, scallopHeightMm: (shortRadiusMm * q * q) / (1 + Math.sqrt(1 - q * q)) };
+}
+
+/** The osculating circle of the exact profile at the contact point (mm). */
+export interface OsculatingModel {
+  readonly effectiveRadiusMm: number;
+}
+
+/**
+ * Redonnet's idea for any posture: the circle that osculates the exact profile at its contact
+ * point, `Reff = Rcr + a^2 b^2 / D0^3` with `a = Rb`, `b = Rb cos(beta) sin(rho)` and
+ * `D0 = sqrt(a^2 sin^2 phi + b^2 cos^2 phi)` (posture.ts). Without tilt it is Eq. 9. Not
+ * applicable when the tool's flat bottom lies on the plane (rho = 0, no tilt: infinite radius).
+ */
+export function osculatingModel(tool: ToolInput): Approximation<OsculatingModel> {
+  const r = contactCurvatureRadiusMm(shapeOfTool(tool));
+  if (r === null) {
+    return notApplicable(
+      'Osculating circle: the flat bottom lies on the plane (rho = 0 without tilt), so the radius of curvature at the contact is infinite.',
+    );
+  }
+  if (!Number.isFinite(r)) return overflow('Osculating circle');
+  if (!(r > 0)) {
+    return notApplicable('Osculating circle: the contact is a sharp edge (Rcr = 0), a circle of radius 0.');
+  }
+  return { ok: true, effectiveRadiusMm: r };
+}
+
+/** `L/2 = sqrt(2 Reff h - h^2)` with the osculating radius at the contact, mm. */
+export function osculatingHalfInterval(input: ForwardInput): Approximation<HalfInterval & OsculatingModel> {
+  const model = osculatingModel(input);
+  if (!model.ok) return model;
+  const r = circleHalfInterval('Osculating circle', model.effectiveRadiusMm, input.scallopHeightMm);
+  return r.ok ? { ...r, effectiveRadiusMm: model.effectiveRadiusMm } : r;
+}
+
+/** Scallop height (mm) the osculating circle predicts at a step-over L: `Reff - sqrt(Reff^2 - (L/2)^2)`. */
+export function osculatingScallopHeight(input: InverseInput): Approximation<ScallopHeight> {
+  const model = osculatingModel(input);
+  if (!model.ok) return model;
+  return circleScallop('Osculating circle', model.effectiveRadiusMm, input.intervalMm / 2);
+}
+
+/** The ball of the corner radius (mm). */
+export interface CornerBallModel {
+  readonly effectiveRadiusMm: number;
+}
+
+/**
+ * The bull-nose tool taken as a ball end of radius `Rcr` (what some online calculators do):
+ * `L/2 = sqrt(2 Rcr h - h^2)`. Exact only for a ball end (Rcr = R). Not applicable for a flat end.
+ */
+export function cornerBallModel(tool: ToolInput): Approximation<CornerBallModel> {
+  if (!(tool.cornerRadiusMm > 0)) return notApplicable('Corner ball: a flat end (Rcr = 0) has no corner ball.');
+  return { ok: true, effectiveRadiusMm: tool.cornerRadiusMm };
+}
+
+/** `L/2 = sqrt(2 Rcr h - h^2)`, mm; not applicable for h > Rcr. */
+export function cornerBallHalfInterval(input: ForwardInput): Approximation<HalfInterval & CornerBallModel> {
+  const model = cornerBallModel(input);
+  if (!model.ok) return model;
+  const r = circleHalfInterval('Corner ball', model.effectiveRadiusMm, input.scallopHeightMm);
+  return r.ok ? { ...r, effectiveRadiusMm: model.effectiveRadiusMm } : r;
+}
+
+/** Scallop height (mm) the corner ball predicts at a step-over L: `Rcr - sqrt(Rcr^2 - (L/2)^2)`. */
+export function cornerBallScallopHeight(input: InverseInput): Approximation<ScallopHeight> {
+  const model = cornerBallModel(input);
+  if (!model.ok) return model;
+  return circleScallop('Corner ball', model.effectiveRadiusMm, input.intervalMm / 2);
 }

@@ -1,227 +1,214 @@
 /**
- * Exact path interval of an inclined filleted end mill (the paper's "3D geometrical
- * computation", solved in closed form up to one bracketed 1-D root; see profile.ts).
+ * The exact step-over of a filleted end mill in any posture on a plane, and its inverse, for
+ * one-way and zigzag passes (shared/notes/posture-and-surfaces.md). The flanks come from
+ * posture.ts; this module combines them into step-overs and cusp heights. Lengths mm.
+ *
+ * One-way: every pass has the same profile; the cusp between passes k and k+1 joins the right
+ * flank of k and the left flank of k+1, so `L = wR(h) + wL(h)`. Zigzag (posture relative to
+ * the feed): every other pass is mirrored, cusps alternate between two right flanks (where
+ * `wR = L/2`) and two left flanks (`wL = L/2`); for no cusp above h, `L = 2 min(wR, wL)` and
+ * the other cusp is lower. Without tilt both give `L = 2 (L/2)` of the paper.
  */
 import {
-  normalAngleAtHalfWidth,
-  normalAngleAtHeight,
-  type ProfileShape,
-  profileHalfWidthMm,
-  profileHeightMm,
-  profileShape,
-  ringAngleRad,
-} from './profile';
-import { cutSection, ringTangent, sectionCentre, type TorusFrame, torusFrame } from './torus';
-import type { ForwardInput, InverseInput } from './validate';
-import { addScaled, type Vec3 } from './vec';
+  contactOffsetMm,
+  type FlankPoint,
+  flankAtHeight,
+  flankAtWidth,
+  flankLimits,
+  flankWidthMm,
+  type PostureShape,
+  shapeOfTool,
+} from './posture';
+import type { ForwardInput, InverseInput, PassPattern } from './validate';
 
-const DEG = Math.PI / 180;
+/** The exact answer of the forward problem (scallop height to step-over), mm. */
+export interface ExactForward {
+  /** Step-over L between adjacent cutter-contact paths. */
+  readonly intervalMm: number;
+  /** L / 2. */
+  readonly halfIntervalMm: number;
+  /** Widths of the right and left flank at the scallop height, from the contact (wR, wL). */
+  readonly halfWidthRightMm: number;
+  readonly halfWidthLeftMm: number;
+  /** Contact offset y0: Y of the contact point minus Y of the tool centre point O. */
+  readonly contactOffsetMm: number;
+  /** Height of the highest cusp the passes leave: h (0 when no scallop forms at all). */
+  readonly cuspHeightMm: number;
+  /** Zigzag: the height of the other, lower cusp; null for one-way passes. */
+  readonly otherCuspHeightMm: number | null;
+  /**
+   * True when the tool leaves no scallop at any step-over up to `intervalMm`: a flat end with
+   * neither lead nor tilt (its bottom face lies on the plane and has no corner to curve up).
+   */
+  readonly noScallop: boolean;
+  /** The flank points at the cusps (for geometry and teaching). */
+  readonly right: FlankPoint;
+  readonly left: FlankPoint;
+}
 
-function shapeOf(input: { toolRadiusMm: number; cornerRadiusMm: number; leadAngleDeg: number }): ProfileShape {
-  return profileShape(input.toolRadiusMm, input.cornerRadiusMm, input.leadAngleDeg * DEG);
+/** The exact answer of the inverse problem (step-over to scallop height), mm. */
+export interface ExactInverse {
+  readonly intervalMm: number;
+  /** Height of the highest cusp the passes leave (the scallop height); 0 on a flat bottom. */
+  readonly cuspHeightMm: number;
+  /** Zigzag: the height of the other, lower cusp; null for one-way passes. */
+  readonly otherCuspHeightMm: number | null;
+  /** Heights of the cusps formed by right flanks and by left flanks (equal for one-way). */
+  readonly rightCuspHeightMm: number;
+  readonly leftCuspHeightMm: number;
+  /** Widths of the right and left flank at their cusps, from the contact. */
+  readonly halfWidthRightMm: number;
+  readonly halfWidthLeftMm: number;
+  readonly contactOffsetMm: number;
+  readonly right: FlankPoint;
+  readonly left: FlankPoint;
+}
+
+/** Step-over (mm) of a pattern from the two flank widths at the scallop height. */
+export function intervalFromWidths(pattern: PassPattern, rightMm: number, leftMm: number): number {
+  return pattern === 'one-way' ? rightMm + leftMm : 2 * Math.min(rightMm, leftMm);
 }
 
 /**
- * Exact half path interval `L/2` in mm for a validated input (see validateForward).
- * Error below 1e-9 mm over the whole valid domain. Allocation-free hot path.
+ * Exact step-over L (mm) for a validated forward input: the fast path (no geometry, no
+ * allocation beyond the shape). Error below 1e-9 mm over the valid domain.
+ */
+export function exactIntervalMm(input: ForwardInput): number {
+  const s = shapeOfTool(input);
+  if (s.flatOnPlane && s.rcr === 0) return 2 * s.a;
+  const h = input.scallopHeightMm;
+  const right = flankWidthMm(s, 'right', h);
+  if (input.tiltAngleDeg === 0) return 2 * right;
+  return intervalFromWidths(input.pattern, right, flankWidthMm(s, 'left', h));
+}
+
+/**
+ * Exact half path interval `L/2` in mm (the paper's quantity; L / 2 for either pattern).
+ * @param input validated by validateForward.
  */
 export function exactHalfIntervalMm(input: ForwardInput): number {
-  const s = shapeOf(input);
-  return profileHalfWidthMm(s, normalAngleAtHeight(s, input.scallopHeightMm));
+  return exactIntervalMm(input) / 2;
 }
 
-/**
- * Exact scallop height in mm left by passes `2 * halfIntervalMm` apart (the inverse of
- * {@link exactHalfIntervalMm}); 0 when the point lies on the flat bottom (rho = 0, L/2 <= Rb).
- * @param input validated by validateInverse (0 < L/2 < R).
- */
-export function exactScallopHeightMm(input: InverseInput): number {
-  const s = shapeOf(input);
-  const theta = normalAngleAtHalfWidth(s, input.halfIntervalMm);
-  return theta === 0 ? 0 : profileHeightMm(s, theta);
-}
-
-/** A circle in 3D: centre (mm), unit normal of its plane, radius (mm). */
-export interface Circle3 {
-  readonly centre: Vec3;
-  readonly normal: Vec3;
-  readonly radiusMm: number;
-}
-
-/** Exact solution with the geometry a viewer needs, in the torus frame of torus.ts (mm). */
-export interface ExactSolution {
-  readonly halfIntervalMm: number;
-  readonly intervalMm: number;
-  /** Normal angle of the profile at the cusp point (radians): the profile slope there is tan(theta). */
-  readonly normalAngleRad: number;
-  /** Ring angle gamma* (radians) of the torus section through P_hp. */
-  readonly ringAngleRad: number;
-  /** Tool centre O (centre of the ring of corner centres), mm. */
-  readonly toolCentre: Vec3;
-  /** Unit tool axis ZT. */
-  readonly toolAxis: Vec3;
-  /** Contact point of the tool with the designed plane (z = 0), mm. */
-  readonly pBase: Vec3;
-  /** Point of the h pseudo plane farthest from the tool centre line: (x, L/2, h), mm. */
-  readonly pHp: Vec3;
-  /** The torus section (radius Rcr) through P_hp. */
-  readonly sectionCircle: Circle3;
-  /**
-   * Torus / h pseudo plane intersection: closed polylines, each a flat array x0,y0,z0,x1,...
-   * (mm). One loop around the contact, two (outer and inner) when every section meets the
-   * plane, as for rho = 0.
-   */
-  readonly intersectionLoops: Float64Array[];
-  /** Cross-feed profile of the tool, flat array y0,z0,y1,z1,... (mm, z above the designed plane), y from -R to R. */
-  readonly profile: Float64Array;
-}
-
-/**
- * Solves the forward problem exactly and returns the viewer geometry.
- * @param input validated by validateForward.
- * @param samples polyline resolution (points per half profile and per loop branch), 8..4096.
- */
-export function solveExact(input: ForwardInput, samples = 96): ExactSolution {
-  const s = shapeOf(input);
+/** Exact forward solution: step-over, flank widths, contact offset and cusp heights (mm). */
+export function exactForward(input: ForwardInput): ExactForward {
+  const s = shapeOfTool(input);
   const h = input.scallopHeightMm;
-  const theta = normalAngleAtHeight(s, h);
-  const halfIntervalMm = profileHalfWidthMm(s, theta);
-  const gamma = ringAngleRad(s, theta);
-  const frame = torusFrame(input.toolRadiusMm, input.cornerRadiusMm, input.leadAngleDeg * DEG);
-  const centre = sectionCentre(frame, gamma);
-  const pHp: Vec3 = addScaled(centre, [0, Math.sin(theta), -Math.cos(theta)], input.cornerRadiusMm);
-  const n = Math.max(8, Math.min(4096, Math.round(samples)));
+  const y0 = contactOffsetMm(s);
+  if (s.flatOnPlane && s.rcr === 0) {
+    // A flat end lying flat: no scallop at any step-over up to the diameter.
+    const edge: FlankPoint = { widthMm: s.a, heightMm: 0, ringOffsetRad: Math.PI / 2, normalAngleRad: 0 };
+    return {
+      intervalMm: 2 * s.a,
+      halfIntervalMm: s.a,
+      halfWidthRightMm: s.a,
+      halfWidthLeftMm: s.a,
+      contactOffsetMm: y0,
+      cuspHeightMm: 0,
+      otherCuspHeightMm: input.pattern === 'zigzag' ? 0 : null,
+      noScallop: true,
+      right: edge,
+      left: edge,
+    };
+  }
+  const right = flankAtHeight(s, 'right', h);
+  const left = flankAtHeight(s, 'left', h);
+  const L = intervalFromWidths(input.pattern, right.widthMm, left.widthMm);
+  let other: number | null = null;
+  if (input.pattern === 'zigzag') {
+    // The wider flank meets its mirror at L/2, lower than h (equal without tilt).
+    const wider = right.widthMm > left.widthMm ? 'right' : 'left';
+    other = right.widthMm === left.widthMm ? h : Math.min(h, flankAtWidth(s, wider, L / 2).heightMm);
+  }
   return {
-    halfIntervalMm,
-    intervalMm: 2 * halfIntervalMm,
-    normalAngleRad: theta,
-    ringAngleRad: gamma,
-    toolCentre: frame.centre,
-    toolAxis: frame.zt,
-    pBase: [frame.ringRadiusMm * frame.cosRho, 0, 0],
-    pHp: [pHp[0], halfIntervalMm, h],
-    sectionCircle: { centre, normal: ringTangent(frame, gamma), radiusMm: input.cornerRadiusMm },
-    intersectionLoops: intersectionLoops(frame, h, n),
-    profile: profilePolyline(s, n),
+    intervalMm: L,
+    halfIntervalMm: L / 2,
+    halfWidthRightMm: right.widthMm,
+    halfWidthLeftMm: left.widthMm,
+    contactOffsetMm: y0,
+    cuspHeightMm: h,
+    otherCuspHeightMm: other,
+    noScallop: false,
+    right,
+    left,
   };
 }
 
 /**
- * The tool's cross-feed profile as a flat (y, z) array from y = -R to y = R, z measured
- * from the lowest point. Samples are denser near the bottom, where scallops form.
+ * Height z (mm) of the one-way cusp for a step-over L: the root of `wR(z) + wL(z) = L`, found by a
+ * bracketed Newton step in `u = sqrt(z)` (both widths grow like sqrt(z) near the contact, so
+ * the function is nearly linear in u), with `dw/dz = cot(theta)` on each flank.
  */
-export function profilePolyline(s: ProfileShape, samplesPerHalf: number): Float64Array {
-  const n = Math.max(2, Math.round(samplesPerHalf));
-  const half: number[] = [];
-  // theta = 0 is the end of the flat bottom (y = a when b = 0, else the lowest point y = 0).
-  for (let k = 0; k <= n; k++) {
-    const u = k / n;
-    const theta = (Math.PI / 2) * u * u;
-    half.push(profileHalfWidthMm(s, theta), profileHeightMm(s, theta));
-  }
-  const m = half.length / 2;
-  const out = new Float64Array(4 * m - (s.b === 0 && s.a > 0 ? 0 : 2));
-  let w = 0;
-  for (let k = m - 1; k >= 0; k--) {
-    out[w++] = -(half[2 * k] as number);
-    out[w++] = half[2 * k + 1] as number;
-  }
-  // Without a flat bottom the lowest point would be written twice: skip its mirror.
-  for (let k = s.b === 0 && s.a > 0 ? 0 : 1; k < m; k++) {
-    out[w++] = half[2 * k] as number;
-    out[w++] = half[2 * k + 1] as number;
-  }
-  return out;
-}
-
-/** Ring angles in [0, pi] where the sections meet the plane, as intervals. */
-function meetingIntervals(f: TorusFrame, h: number): Array<[number, number]> {
-  const k = f.cornerRadiusMm;
-  const gap = (g: number) => Math.abs(cutSection(f, g, h).inPlaneDistanceMm) - k;
-  const steps = 180;
-  const out: Array<[number, number]> = [];
-  let start: number | null = gap(0) <= 0 ? 0 : null;
-  let prev = 0;
-  let prevGap = gap(0);
-  for (let i = 1; i <= steps; i++) {
-    const g = (Math.PI * i) / steps;
-    const cur = gap(g);
-    if (prevGap <= 0 !== cur <= 0) {
-      let lo = prev;
-      let hi = g;
-      for (let j = 0; j < 52; j++) {
-        const mid = 0.5 * (lo + hi);
-        if (gap(mid) <= 0 === prevGap <= 0) lo = mid;
-        else hi = mid;
-      }
-      const edge = prevGap <= 0 ? lo : hi;
-      if (prevGap <= 0 && start !== null) {
-        out.push([start, edge]);
-        start = null;
-      } else start = edge;
+function oneWayCuspHeightMm(s: PostureShape, L: number, limitMm: number): number {
+  let lo = 0;
+  let hi = Math.sqrt(limitMm);
+  let u = 0.5 * hi;
+  for (let i = 0; i < 200; i++) {
+    const z = u * u;
+    const r = flankAtHeight(s, 'right', z);
+    const l = flankAtHeight(s, 'left', z);
+    const f = r.widthMm + l.widthMm - L;
+    if (f === 0) return z;
+    if (f > 0) hi = u;
+    else lo = u;
+    // d/du (wR + wL) = 2u (cot thetaR + cot thetaL)
+    const slope = 2 * u * (1 / Math.tan(r.normalAngleRad) + 1 / Math.tan(l.normalAngleRad));
+    let next = slope > 0 && Number.isFinite(slope) ? u - f / slope : Number.NaN;
+    if (Math.abs(next - u) <= 1e-15 * u) {
+      u = Math.min(Math.max(next, lo), hi);
+      break;
     }
-    prev = g;
-    prevGap = cur;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    u = next;
+    if (hi - lo <= 4e-16 * hi) break;
   }
-  if (start !== null) out.push([start, Math.PI]);
-  return out;
+  return u * u;
 }
 
-function pushBranch(out: number[], f: TorusFrame, h: number, g0: number, g1: number, n: number, side: 0 | 1): void {
-  for (let i = 0; i <= n; i++) {
-    // Cosine spacing: crossings move fastest near the single-contact ends.
-    const u = side === 0 ? i / n : 1 - i / n;
-    const g = g0 + (g1 - g0) * 0.5 * (1 - Math.cos(Math.PI * u));
-    const cut = cutSection(f, g, h);
-    if (cut.psi === null) continue;
-    const psi = cut.psi[side];
-    const c = sectionCentre(f, g);
-    const cg = Math.cos(g);
-    const sg = Math.sin(g);
-    const cp = Math.cos(psi) * f.cornerRadiusMm;
-    const sp = Math.sin(psi) * f.cornerRadiusMm;
-    out.push(c[0] + cp * cg * f.xt[0] + sp * f.zt[0], c[1] + cp * sg, c[2] + cp * cg * f.xt[2] + sp * f.zt[2]);
+/** Exact inverse: the cusp heights (mm) that passes L apart leave. @param input validated by validateInverse. */
+export function exactInverse(input: InverseInput): ExactInverse {
+  const s = shapeOfTool(input);
+  const L = input.intervalMm;
+  const y0 = contactOffsetMm(s);
+  if (input.pattern === 'zigzag' || input.tiltAngleDeg === 0) {
+    // Each cusp is where a flank is L/2 from its contact (one-way without tilt is symmetric).
+    const right = flankAtWidth(s, 'right', L / 2);
+    const left = input.tiltAngleDeg === 0 ? right : flankAtWidth(s, 'left', L / 2);
+    const top = Math.max(right.heightMm, left.heightMm);
+    return {
+      intervalMm: L,
+      cuspHeightMm: top,
+      otherCuspHeightMm: input.pattern === 'zigzag' ? Math.min(right.heightMm, left.heightMm) : null,
+      rightCuspHeightMm: right.heightMm,
+      leftCuspHeightMm: left.heightMm,
+      halfWidthRightMm: L / 2,
+      halfWidthLeftMm: L / 2,
+      contactOffsetMm: y0,
+      right,
+      left,
+    };
   }
+  const z = oneWayCuspHeightMm(s, L, flankLimits(s).limitMm);
+  const right = flankAtHeight(s, 'right', z);
+  const left = flankAtHeight(s, 'left', z);
+  return {
+    intervalMm: L,
+    cuspHeightMm: z,
+    otherCuspHeightMm: null,
+    rightCuspHeightMm: z,
+    leftCuspHeightMm: z,
+    halfWidthRightMm: right.widthMm,
+    halfWidthLeftMm: left.widthMm,
+    contactOffsetMm: y0,
+    right,
+    left,
+  };
 }
 
 /**
- * The curve where the torus meets the plane z = h, as closed polylines (flat xyz arrays, mm).
- * For a flat end (Rcr = 0) the "torus" is the ring itself, which crosses the plane at two
- * points; the plane then cuts the flat bottom along the chord between them, returned as a
- * two-point loop. Ring height: z(gamma) = Rb sin(rho) (1 - cos gamma) + Rcr (Eq. 1 with Eq. 7).
+ * Exact scallop height (mm) left by passes `intervalMm` apart: the highest cusp. 0 when the
+ * point lies on a flat bottom lying on the plane (rho = 0 without tilt, L/2 <= R - Rcr).
  */
-export function intersectionLoops(f: TorusFrame, h: number, n: number): Float64Array[] {
-  if (f.cornerRadiusMm === 0) {
-    const rise = f.ringRadiusMm * f.sinRho;
-    if (rise <= 0 || h > 2 * rise) return [];
-    const gamma = Math.acos(Math.max(-1, Math.min(1, 1 - h / rise)));
-    return [Float64Array.from([...sectionCentre(f, gamma), ...sectionCentre(f, -gamma)])];
-  }
-  const intervals = meetingIntervals(f, h);
-  const loops: Float64Array[] = [];
-  const full = intervals.length === 1 && intervals[0]?.[0] === 0 && intervals[0][1] === Math.PI;
-  if (full) {
-    // Every section meets the plane: two closed curves, one per crossing.
-    const first: number[] = [];
-    const second: number[] = [];
-    pushBranch(first, f, h, -Math.PI, Math.PI, 2 * n, 0);
-    pushBranch(second, f, h, -Math.PI, Math.PI, 2 * n, 1);
-    return [Float64Array.from(first), Float64Array.from(second)];
-  }
-  for (const [g0, g1] of intervals) {
-    // Mirror across Y = 0: an interval touching 0 or pi joins its mirror image.
-    const lo = g0 === 0 ? -g1 : g0;
-    const hi = g1 === Math.PI ? 2 * Math.PI - g0 : g1;
-    const pts: number[] = [];
-    pushBranch(pts, f, h, lo, hi, n, 0);
-    pushBranch(pts, f, h, lo, hi, n, 1);
-    loops.push(Float64Array.from(pts));
-    if (g0 !== 0 && g1 !== Math.PI) {
-      const mirror: number[] = [];
-      pushBranch(mirror, f, h, -g1, -g0, n, 0);
-      pushBranch(mirror, f, h, -g1, -g0, n, 1);
-      loops.push(Float64Array.from(mirror));
-    }
-  }
-  return loops;
+export function exactScallopHeightMm(input: InverseInput): number {
+  return exactInverse(input).cuspHeightMm;
 }

@@ -6,6 +6,8 @@ import {
   bediHalfInterval,
   bediModel,
   bediScallopHeight,
+  cornerBallModel,
+  osculatingModel,
   redonnetHalfInterval,
   redonnetModel,
   redonnetScallopHeight,
@@ -13,18 +15,20 @@ import {
   sekineModel,
   sekineScallopHeight,
 } from './approximations';
-import { exactHalfIntervalMm, exactScallopHeightMm } from './exact';
+import { exactIntervalMm, exactScallopHeightMm } from './exact';
+import { profilePolyline } from './geometry';
 import { PAPER_CONDITIONS, type PaperCondition, type ProcedureValues } from './paper';
-import { profileHalfWidthMm, profileHeightMm, profileShape } from './profile';
-import type { ForwardInput, InverseInput, ToolInput } from './validate';
+import { shapeOfTool } from './posture';
+import type { ForwardInput, InverseInput, PassPattern, ToolInput } from './validate';
+import { forwardInput, inverseInput, scallopHeightLimits } from './validate';
 
-const DEG = Math.PI / 180;
-
-/** Cross-feed curves as flat (y, z) arrays, z above the lowest point, y from 0 outwards (mm). */
+/** Cross-feed curves as flat (y, z) arrays, z above the contact, y from the contact (mm). */
 export interface ProfileCurves {
-  /** Exact tool profile (offset ellipse), y from 0 to R. */
+  /** Exact tool profile, right flank only: y from 0 outwards (the whole profile without tilt, mirrored). */
   readonly exact: Float64Array;
-  /** The ring ellipse it is offset from (semi-axes Rb, Rb sin rho), centred Rcr + Rb sin rho above the lowest point. */
+  /** Exact tool profile, both flanks: y from the left flank's widest point to the right one's. */
+  readonly profile: Float64Array;
+  /** The ring ellipse it is offset from (semi-axes Rb, Rb cos(beta) sin(rho), turned by the tilt), closed. */
   readonly ringEllipse: Float64Array;
   /** Circle of Sekine's Reff, or null where not applicable. */
   readonly sekine: Float64Array | null;
@@ -32,6 +36,10 @@ export interface ProfileCurves {
   readonly redonnet: Float64Array | null;
   /** Bedi's ellipse (semi-axes Rlong, Rlong sin rho), or null. */
   readonly bedi: Float64Array | null;
+  /** The osculating circle at the contact, or null. */
+  readonly osculating: Float64Array | null;
+  /** The ball of the corner radius, or null. */
+  readonly cornerBall: Float64Array | null;
 }
 
 /** Lower arc of a circle of radius r touching z = 0 at y = 0, for y in [0, min(r, yMax)]. */
@@ -61,35 +69,43 @@ function ellipseArc(a: number, b: number, yMax: number, n: number): Float64Array
 
 /**
  * Profiles for the cross-feed view.
- * @param tool validated tool; @param samples points per curve (>= 16).
+ * @param tool validated tool and posture; @param samples points per curve (>= 16).
  */
 export function profileCurves(tool: ToolInput, samples = 400): ProfileCurves {
   const n = Math.max(16, Math.round(samples));
   const R = tool.toolRadiusMm;
-  const s = profileShape(R, tool.cornerRadiusMm, tool.leadAngleDeg * DEG);
-  const exact = new Float64Array(2 * (n + 1));
-  for (let i = 0; i <= n; i++) {
-    // Denser near the bottom: theta = (pi/2) u^2.
-    const u = i / n;
-    const theta = (Math.PI / 2) * u * u;
-    exact[2 * i] = i === 0 && s.b > 0 ? 0 : profileHalfWidthMm(s, theta);
-    exact[2 * i + 1] = profileHeightMm(s, theta);
+  const s = shapeOfTool(tool);
+  const profile = profilePolyline(s, n);
+  // The right flank: the points at y >= 0 (the contact itself first).
+  const right: number[] = [0, 0];
+  for (let i = 0; i < profile.length; i += 2) {
+    const y = profile[i] as number;
+    if (y > 0) right.push(y, profile[i + 1] as number);
   }
+  // Ring ellipse: the ring points relative to the contact (their centre is D0 + Rcr above it).
   const ring = new Float64Array(2 * (n + 1));
   for (let i = 0; i <= n; i++) {
-    const g = ((Math.PI / 2) * i) / n;
-    ring[2 * i] = s.a * Math.sin(g);
-    ring[2 * i + 1] = s.rcr + s.b * (1 - Math.cos(g));
+    const t = (2 * Math.PI * i) / n;
+    // e(t) - e(t0) in the global frame, lifted by Rcr (the contact lies Rcr below e(t0)).
+    const ey = s.a * Math.sin(t) - s.a * s.sinT0;
+    const ez = -s.b * Math.cos(t) + s.b * s.cosT0;
+    ring[2 * i] = ey * s.cosPhi + ez * s.sinPhi;
+    ring[2 * i + 1] = -ey * s.sinPhi + ez * s.cosPhi + s.rcr;
   }
   const sek = sekineModel(tool);
   const red = redonnetModel(tool);
   const bedi = bediModel(tool);
+  const osc = osculatingModel(tool);
+  const ball = cornerBallModel(tool);
   return {
-    exact,
+    exact: Float64Array.from(right),
+    profile,
     ringEllipse: ring,
     sekine: sek.ok ? circleArc(sek.effectiveRadiusMm, 2 * R, n) : null,
     redonnet: red.ok ? circleArc(red.effectiveRadiusMm, 2 * R, n) : null,
     bedi: bedi.ok && bedi.shortRadiusMm > 0 ? ellipseArc(bedi.longRadiusMm, bedi.shortRadiusMm, 2 * R, n) : null,
+    osculating: osc.ok ? circleArc(osc.effectiveRadiusMm, 2 * R, n) : null,
+    cornerBall: ball.ok ? circleArc(ball.effectiveRadiusMm, 2 * R, n) : null,
   };
 }
 
@@ -116,6 +132,8 @@ export function rhoSweep(
   toDeg = 89,
   steps = 120,
   includeDeg: number | null = null,
+  tiltDeg = 0,
+  pattern: PassPattern = 'one-way',
 ): RhoSweep {
   const out: RhoSweep = { rhoDeg: [], exact: [], sekine: [], redonnet: [], bedi: [] };
   const angles: number[] = [];
@@ -128,16 +146,16 @@ export function rhoSweep(
   }
   for (const rho of angles) {
     out.rhoDeg.push(rho);
-    const limit = (R - Rcr) * Math.sin(rho * DEG) + Rcr;
-    if (!(h < limit)) {
+    const tool: ToolInput = { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, tiltAngleDeg: tiltDeg };
+    if (!(h < scallopHeightLimits(tool).limitMm)) {
       out.exact.push(null);
       out.sekine.push(null);
       out.redonnet.push(null);
       out.bedi.push(null);
       continue;
     }
-    const input: ForwardInput = { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, scallopHeightMm: h };
-    out.exact.push(exactHalfIntervalMm(input));
+    const input = forwardInput(tool, pattern, h);
+    out.exact.push(exactIntervalMm(input) / 2);
     const sek = sekineHalfInterval(input);
     const red = redonnetHalfInterval(input);
     const bed = bediHalfInterval(input);
@@ -168,7 +186,14 @@ function heightsAt(input: InverseInput): ProcedureValues {
 /** Tables 2-5 recomputed (the conditions are all valid, so every value exists). */
 export function paperTables(): PaperTableRow[] {
   return PAPER_CONDITIONS.map((c) => {
-    const input: ForwardInput = { toolRadiusMm: c.R, cornerRadiusMm: c.Rcr, leadAngleDeg: c.rho, scallopHeightMm: c.h };
+    const input: ForwardInput = {
+      toolRadiusMm: c.R,
+      cornerRadiusMm: c.Rcr,
+      leadAngleDeg: c.rho,
+      tiltAngleDeg: 0,
+      pattern: 'one-way',
+      scallopHeightMm: c.h,
+    };
     const value = (r: { ok: true; halfIntervalMm: number } | { ok: false }) => (r.ok ? r.halfIntervalMm : 0);
     return {
       table: c.table,
@@ -178,13 +203,13 @@ export function paperTables(): PaperTableRow[] {
       h: c.h,
       printedHalf: c.printedHalf,
       computedHalf: {
-        threeD: exactHalfIntervalMm(input),
+        threeD: exactIntervalMm(input) / 2,
         sekine: value(sekineHalfInterval(input)),
         redonnet: value(redonnetHalfInterval(input)),
         bedi: value(bediHalfInterval(input)),
       },
       printedHeight: c.printedHeight,
-      computedHeight: heightsAt({ ...input, halfIntervalMm: c.printedHalf.threeD }),
+      computedHeight: heightsAt(inverseInput(input, 'one-way', 2 * c.printedHalf.threeD)),
     };
   });
 }

@@ -1,10 +1,11 @@
 /**
- * Surface of the inclined filleted end mill as a triangle mesh of fixed topology: flat
- * bottom disk (radius Rb), torus corner (lower outer quarter, radius Rcr) and shank
- * cylinder (radius R), revolved about the tool axis. Frame and placement as in torus.ts
- * (designed plane z = 0, tool centre on the Z axis). Pure: plain typed arrays, mm.
+ * Surface of the filleted end mill in its posture as a triangle mesh of fixed topology: flat
+ * bottom disk (radius Rb), torus corner (lower outer quarter, radius Rcr) and shank cylinder
+ * (radius R), revolved about the tool axis. Frame and placement as in placement.ts (contact at
+ * the origin, designed plane z = 0). Pure: plain typed arrays, mm.
  */
-import { torusFrame } from './torus';
+import { placeTool } from './placement';
+import type { ToolInput } from './validate';
 
 /** Points along the revolved profile: bottom centre, corner arc, shank top. */
 const CORNER_STEPS = 16;
@@ -18,19 +19,16 @@ export interface ToolMesh {
 }
 
 /**
- * @param toolRadiusMm R > 0; @param cornerRadiusMm 0 <= Rcr <= R; @param leadAngleRad 0 <= rho < pi/2;
- * @param shankLengthMm length of the drawn shank above the corner's top, mm (> 0);
- * @param radialSegments segments around the axis (>= 8).
+ * @param tool validated tool and posture; @param shankLengthMm length of the drawn shank above
+ * the corner's top, mm (> 0); @param radialSegments segments around the axis (>= 8).
  */
-export function toolMesh(
-  toolRadiusMm: number,
-  cornerRadiusMm: number,
-  leadAngleRad: number,
-  shankLengthMm: number,
-  radialSegments = 64,
-): ToolMesh {
-  const f = torusFrame(toolRadiusMm, cornerRadiusMm, leadAngleRad);
-  const rb = f.ringRadiusMm;
+export function toolMesh(tool: ToolInput, shankLengthMm: number, radialSegments = 64): ToolMesh {
+  const p = placeTool(tool);
+  const toolRadiusMm = tool.toolRadiusMm;
+  const cornerRadiusMm = tool.cornerRadiusMm;
+  const rb = p.ringRadiusMm;
+  const [ox, oy, oz] = p.centre;
+  const [ax, ay, az] = p.axis;
   const profile: Array<[number, number]> = [[0, -cornerRadiusMm]];
   for (let k = 0; k <= CORNER_STEPS; k++) {
     const phi = -Math.PI / 2 + (Math.PI / 2) * (k / CORNER_STEPS);
@@ -45,9 +43,9 @@ export function toolMesh(
       const alpha = (2 * Math.PI * j) / segs;
       const c = r * Math.cos(alpha);
       const s = r * Math.sin(alpha);
-      positions[w++] = f.centre[0] + c * f.xt[0] + axial * f.zt[0];
-      positions[w++] = f.centre[1] + s;
-      positions[w++] = f.centre[2] + c * f.xt[2] + axial * f.zt[2];
+      positions[w++] = ox + c * p.v2[0] + s * p.v1[0] + axial * ax;
+      positions[w++] = oy + c * p.v2[1] + s * p.v1[1] + axial * ay;
+      positions[w++] = oz + c * p.v2[2] + s * p.v1[2] + axial * az;
     }
   }
   return { positions, indices: toolMeshIndices(segs) };

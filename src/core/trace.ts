@@ -1,224 +1,313 @@
 /**
- * The paper's "3D geometrical computation" (Figure 1, Eqs. 1-3) as a recorded trace.
+ * The paper's "3D geometrical computation" (Figure 1, Eqs. 1-3) as a recorded trace, extended to
+ * any posture: on each flank (right, +Y, and left, -Y) it searches the torus sections for the
+ * crossing with the h pseudo plane that lies farthest out.
  *
- * It works only with torus sections and the h pseudo plane, never with the projected
- * profile of profile.ts, so its result is an independent check of the exact solver:
- *  1. start at the ring angle of Eq. 1, `Rb sin(rho) (1 - cos gamma) = h/2`;
- *  2. move along the ring until the section touches the plane at a single point
- *     (`d_s = Rcr`, Eqs. 2-3, with the in-plane distance of the notes);
- *  3. search the ring angles up to that single-contact section (from 0, or for h > 2 Rcr
- *     from the section whose top touches the plane) for the section
- *     whose crossing with the plane lies farthest in Y, refining a grid of n sections
- *     around the best one until neighbouring Y differ by less than the tolerance.
- * Lengths mm, angles radians.
+ * It works only with torus sections (placement.ts) and the plane, never with the profile's
+ * normal condition of posture.ts, so its result checks the exact solver:
+ *  1. Eq. 1: start at the section whose ring point is h/2 above the ring's lowest point. The ring
+ *     height above its lowest point is `D0 (1 - cos delta)` (Eq. 1 is the case beta = 0, where
+ *     `D0 = Rb sin rho`), written `2 D0 sin^2(delta/2)` so that tiny h keeps its digits;
+ *  2. Eqs. 2-3: move along the ring until the section touches the plane at a single point
+ *     (`d_s = Rcr`): the section circle's lowest point, `Rcr (1 - m)` below its centre with
+ *     `m = sqrt(1 - T_z^2)` (T the ring tangent), reaches the plane;
+ *  3. steps 15-25: search the sections between the contact (or, for h > 2 Rcr, the first one that
+ *     reaches the plane) and the single-contact one for the farthest crossing, refining a grid of
+ *     n sections around the best until the range is exhausted.
+ * Lengths mm (relative to the contact), angles radians.
  */
-import { cutSection, ringTangent, sectionCentre, type TorusFrame, torusFrame } from './torus';
+import { type Placement, placeTool } from './placement';
+import type { Flank } from './posture';
 import type { ForwardInput } from './validate';
-import { add, cross, scale, type Vec3 } from './vec';
+import type { Vec3 } from './vec';
 
-const DEG = Math.PI / 180;
-
-/** One step of the procedure, in the paper's terms. */
+/** One step of the procedure on one flank, in the paper's terms. */
 export type TraceStep =
   | {
       /** Steps 2-11: a section visited on the way to the single-contact section. */
       readonly phase: 'approach';
+      readonly flank: Flank;
       readonly ringAngleRad: number;
-      /** In-plane distance from the section centre to the h pseudo plane, mm. */
+      /** In-plane distance from the section centre to the h pseudo plane, mm (Eq. 3). */
       readonly dsMm: number;
     }
   | {
       /** Steps 12-14: the single-contact section and its touching point on the plane. */
       readonly phase: 'single-contact';
+      readonly flank: Flank;
       readonly ringAngleRad: number;
       readonly dsMm: number;
       readonly pHp: Vec3;
-      /** False when every section meets the plane (no single contact before gamma = pi). */
+      /** False when every section on this side meets the plane (no single contact). */
       readonly found: boolean;
     }
   | {
       /** Steps 16-25: one pass over the search grid; `best` is the farthest crossing. */
       readonly phase: 'search';
+      readonly flank: Flank;
       readonly rangeRad: readonly [number, number];
       readonly ringAnglesRad: readonly number[];
-      /** Y of each section's farthest crossing with the plane (NaN-free: -Infinity where none). */
-      readonly crossingYMm: readonly number[];
+      /** Distance out from the contact of each section's farthest crossing (null where none), mm. */
+      readonly crossingOutMm: ReadonlyArray<number | null>;
+      /** The crossing points (flat xyz, mm); sections that miss the plane are left out. */
+      readonly candidates: readonly number[];
       readonly bestIndex: number;
       readonly pHp: Vec3;
     };
 
-export interface Trace {
-  readonly steps: readonly TraceStep[];
-  /** Step 26: L/2 in mm. */
-  readonly halfIntervalMm: number;
-  /** The converged P_hp (mm) and its section's ring angle gamma (radians). */
+/** The procedure's answer on one flank. */
+export interface FlankTrace {
+  readonly flank: Flank;
+  /** How far out from the contact the farthest crossing lies (the flank's width at h), mm. */
+  readonly widthMm: number;
   readonly pHp: Vec3;
   readonly ringAngleRad: number;
 }
 
-/** Farthest crossing (largest Y) of the section at gamma with the plane z = h, or null. */
-export function farthestCrossing(f: TorusFrame, gamma: number, h: number): Vec3 | null {
-  const cut = cutSection(f, gamma, h);
-  const c = sectionCentre(f, gamma);
-  if (f.cornerRadiusMm === 0) {
-    // A flat end's section is a single ring point: it meets the plane only at its own height.
-    return Math.abs(c[2] - h) <= 1e-12 * Math.max(1, h) ? c : null;
-  }
-  if (cut.psi === null) return null;
-  const sg = Math.sin(gamma);
-  const cg = Math.cos(gamma);
-  let best: Vec3 | null = null;
-  for (const psi of cut.psi) {
-    const cp = Math.cos(psi) * f.cornerRadiusMm;
-    const sp = Math.sin(psi) * f.cornerRadiusMm;
-    const p: Vec3 = [c[0] + cp * cg * f.xt[0] + sp * f.zt[0], c[1] + cp * sg, h];
-    if (best === null || p[1] > best[1]) best = p;
-  }
-  return best;
+export interface Trace {
+  readonly steps: readonly TraceStep[];
+  readonly right: FlankTrace;
+  readonly left: FlankTrace;
+  /** The placement the trace worked in (contact at the origin). */
+  readonly placement: Placement;
 }
 
-/** Steps 12-13: the point where the single-contact section touches the plane. */
-function touchingPoint(f: TorusFrame, gamma: number): Vec3 {
-  const t = ringTangent(f, gamma);
-  const nh: Vec3 = [0, 0, 1];
-  const m = cross(t, nh);
-  const u = cross(t, m);
-  const len = Math.hypot(u[0], u[1], u[2]);
-  // u = t x (t x n_h) points down the section plane, towards the h pseudo plane.
-  return add(sectionCentre(f, gamma), len > 0 ? scale(u, f.cornerRadiusMm / len) : [0, 0, -f.cornerRadiusMm]);
+/** A section relative to the contact: its ring point and the cut with the plane h above the contact. */
+interface Cut {
+  /** Vertical gap from the section circle's lowest point up to the plane (>= 0: it reaches), mm. */
+  readonly gapMm: number;
+  /** In-plane distance from the section centre down to the plane (Eq. 3), mm. */
+  readonly dsMm: number;
+  /** The crossing farthest towards the flank, or null. */
+  readonly point: Vec3 | null;
+  /** Its distance out from the contact (signed towards the flank), mm. */
+  readonly outMm: number | null;
+}
+
+function cutAt(p: Placement, side: 1 | -1, delta: number, h: number): Cut {
+  const s = p.shape;
+  const rb = p.ringRadiusMm;
+  const rcr = p.cornerRadiusMm;
+  const t = p.contactRingAngleRad + side * delta;
+  const st = Math.sin(t);
+  const ct = Math.cos(t);
+  const r: Vec3 = [st * p.v1[0] + ct * p.v2[0], st * p.v1[1] + ct * p.v2[1], st * p.v1[2] + ct * p.v2[2]];
+  const tz = ct * p.v1[2] - st * p.v2[2];
+  // Ring point relative to the contact's ring point: the chord Rb (r(t) - r(t0)), with its height
+  // from Eq. 1, D0 (1 - cos delta) = 2 D0 sin^2(delta/2).
+  const half = Math.sin(delta / 2);
+  const rise = 2 * s.d0 * half * half;
+  const tm = p.contactRingAngleRad + (side * delta) / 2;
+  const chordY = 2 * side * half * (Math.cos(tm) * p.v1[1] - Math.sin(tm) * p.v2[1]);
+  const chordX = 2 * side * half * (Math.cos(tm) * p.v1[0] - Math.sin(tm) * p.v2[0]);
+  // Centre of the section relative to the contact point, which lies Rcr below the contact's ring point.
+  const cx = rb * chordX;
+  const cy = rb * chordY;
+  const cz = rcr + rise;
+  // Inside the section plane the circle's height is cz + Rcr (r_z cos psi + a_z sin psi).
+  const A = r[2];
+  const B = p.axis[2];
+  const m = Math.sqrt(A * A + B * B);
+  const dsMm = (cz - h) / m;
+  // Lowest point of the circle: Rcr m below the centre; Rcr - Rcr m = Rcr T_z^2 / (1 + m).
+  const gapMm = h - rise - (rcr * tz * tz) / (1 + m);
+  if (rcr === 0) return { gapMm, dsMm, point: gapMm === 0 ? [cx, cy, h] : null, outMm: gapMm === 0 ? side * cy : null };
+  if (gapMm < 0 || !(gapMm <= 2 * rcr * m)) return { gapMm, dsMm, point: null, outMm: null };
+  // Crossing angles around the lowest point psi_low: 1 - cos(spread) = gap / (Rcr m).
+  const phase = Math.atan2(B, A) + Math.PI;
+  const spread = 2 * Math.asin(Math.min(1, Math.sqrt(gapMm / (2 * rcr * m))));
+  let best: Vec3 | null = null;
+  let bestOut = Number.NEGATIVE_INFINITY;
+  for (const psi of [phase - spread, phase + spread]) {
+    const c = rcr * Math.cos(psi);
+    const sn = rcr * Math.sin(psi);
+    const y = cy + c * r[1] + sn * p.axis[1];
+    const out = side * y;
+    if (out > bestOut) {
+      bestOut = out;
+      best = [cx + c * r[0] + sn * p.axis[0], y, h];
+    }
+  }
+  return { gapMm, dsMm, point: best, outMm: bestOut };
+}
+
+/** Ring-angle offset where the ring is `z` above its lowest point (Eq. 1 generalised), capped at pi. */
+function offsetAtRise(p: Placement, z: number): number {
+  const d0 = p.shape.d0;
+  if (!(d0 > 0)) return 0;
+  return 2 * Math.asin(Math.min(1, Math.sqrt(Math.max(0, z) / (2 * d0))));
 }
 
 /**
- * Runs the procedure of Figure 1 and records every step.
- * @param input validated by validateForward.
- * @param gridSize sections per search pass (odd, >= 5); @param toleranceMm stop when the
- * best crossing and its neighbours differ in Y by less than this (default 1e-13 mm).
+ * Runs the procedure on both flanks.
+ * @param input validated forward input; @param gridSize sections per search pass (odd, >= 5).
  */
-export function traceProcedure(input: ForwardInput, gridSize = 9, toleranceMm = 1e-13): Trace {
-  const f = torusFrame(input.toolRadiusMm, input.cornerRadiusMm, input.leadAngleDeg * DEG);
+export function traceProcedure(input: ForwardInput, gridSize = 9): Trace {
+  const p = placeTool(input);
   const h = input.scallopHeightMm;
-  const rcr = f.cornerRadiusMm;
-  const b = f.ringRadiusMm * f.sinRho;
   const steps: TraceStep[] = [];
-  const ds = (g: number) => cutSection(f, g, h).inPlaneDistanceMm;
+  const right = traceFlank(p, 1, h, gridSize, steps);
+  const left = traceFlank(p, -1, h, gridSize, steps);
+  return { steps, right, left, placement: p };
+}
 
-  if (rcr === 0) {
-    // Flat end: the ring itself cuts; it reaches height h at cos(gamma) = 1 - h/b (Eq. 1 with h).
-    const gamma = Math.acos(Math.max(-1, 1 - h / b));
-    const p = sectionCentre(f, gamma);
-    steps.push({ phase: 'single-contact', ringAngleRad: gamma, dsMm: 0, pHp: p, found: true });
-    return { steps, halfIntervalMm: p[1], pHp: [p[0], p[1], h], ringAngleRad: gamma };
+function traceFlank(p: Placement, side: 1 | -1, h: number, gridSize: number, steps: TraceStep[]): FlankTrace {
+  const flank: Flank = side === 1 ? 'right' : 'left';
+  const rcr = p.cornerRadiusMm;
+  const s = p.shape;
+  // The side's sections run from the contact to the opposite point of the ring (delta in [0, pi]).
+  if (s.flatOnPlane || p.ringRadiusMm === 0) {
+    // A flat bottom lying on the plane, or a ball: the farthest section is known (the edge of the
+    // face, or any meridian of the ball); the procedure reduces to one section.
+    const delta = s.flatOnPlane ? Math.PI / 2 : 0;
+    const cut = p.ringRadiusMm === 0 ? ballCut(p, side, h) : cutAt(p, side, delta, h);
+    const pHp = cut.point ?? [0, 0, h];
+    steps.push({
+      phase: 'single-contact',
+      flank,
+      ringAngleRad: p.contactRingAngleRad + side * delta,
+      dsMm: cut.dsMm,
+      pHp,
+      found: false,
+    });
+    return { flank, widthMm: cut.outMm ?? 0, pHp, ringAngleRad: p.contactRingAngleRad + side * delta };
   }
-
-  // Step 2 (Eq. 1): the starting ring angle.
-  const cosStart = b > 0 ? 1 - h / (2 * b) : -1;
-  const gammaStart = Math.acos(Math.max(-1, Math.min(1, cosStart)));
-  steps.push({ phase: 'approach', ringAngleRad: gammaStart, dsMm: ds(gammaStart) });
-
-  /**
-   * Steps 6-11 ("update gamma according to Rcr - d_s"): the first ring angle in [from, pi]
-   * where d_s reaches `target`, by stepping from the start to bracket it and then regula
-   * falsi (Illinois) until |target - d_s| < eps. d_s rises with gamma on [0, pi/2].
-   */
-  const firstReach = (target: number, from: number): number | null => {
-    if (ds(from) >= target) return from;
-    if (ds(Math.PI) < target) return null;
-    let lo = from;
-    let hi = Math.PI;
-    if (gammaStart > from && ds(gammaStart) >= target) hi = gammaStart;
-    else {
-      let g = Math.max(from, gammaStart);
-      lo = g;
-      const step = Math.max(1e-3, (Math.PI - g) / 16);
-      while (g < Math.PI) {
-        g = Math.min(Math.PI, g + step);
-        const d = ds(g);
-        steps.push({ phase: 'approach', ringAngleRad: g, dsMm: d });
-        if (d >= target) {
-          hi = g;
-          break;
-        }
-        lo = g;
-      }
+  const ringAngle = (d: number) => p.contactRingAngleRad + side * d;
+  if (rcr === 0) {
+    // A flat end: the sections are the ring's points; the one at height h is the crossing (Eq. 1).
+    const d = offsetAtRise(p, h);
+    const cut = cutAt(p, side, d, h);
+    const half = Math.sin(d / 2);
+    const tm = p.contactRingAngleRad + (side * d) / 2;
+    const y = 2 * side * half * (Math.cos(tm) * p.v1[1] - Math.sin(tm) * p.v2[1]) * p.ringRadiusMm;
+    const x = 2 * side * half * (Math.cos(tm) * p.v1[0] - Math.sin(tm) * p.v2[0]) * p.ringRadiusMm;
+    const pHp: Vec3 = [x, y, h];
+    steps.push({ phase: 'single-contact', flank, ringAngleRad: ringAngle(d), dsMm: cut.dsMm, pHp, found: true });
+    return { flank, widthMm: side * y, pHp, ringAngleRad: ringAngle(d) };
+  }
+  // Step 2 (Eq. 1): the section whose ring point is h/2 above the lowest.
+  const start = offsetAtRise(p, h / 2);
+  steps.push({ phase: 'approach', flank, ringAngleRad: ringAngle(start), dsMm: cutAt(p, side, start, h).dsMm });
+  // For h > 2 Rcr the first sections lie wholly below the plane: the sections that meet it start
+  // where a section's top first reaches it.
+  const enter = h > 2 * rcr ? findEnter(p, side, h) : 0;
+  // Steps 6-11: move along the ring to the first section that no longer reaches the plane (its
+  // lowest point rises above it): a coarse walk finds the first sign change of the gap, then the
+  // section is bracketed down to the last bits (d_s = Rcr there).
+  const gapAt = (d: number) => cutAt(p, side, d, h).gapMm;
+  let lo = Math.max(enter, start);
+  if (gapAt(lo) < 0) lo = enter;
+  let hi: number | null = null;
+  const walk = 64;
+  for (let i = 1; i <= walk; i++) {
+    const d = lo + ((Math.PI - lo) * i) / walk;
+    if (gapAt(d) < 0) {
+      hi = d;
+      break;
     }
-    let fLo = ds(lo) - target;
-    let fHi = ds(hi) - target;
-    let side = 0;
-    let gamma = hi;
-    for (let i = 0; i < 100; i++) {
-      gamma = (lo * fHi - hi * fLo) / (fHi - fLo);
-      if (!(gamma > lo && gamma < hi)) gamma = 0.5 * (lo + hi);
-      const fg = ds(gamma) - target;
-      steps.push({ phase: 'approach', ringAngleRad: gamma, dsMm: fg + target });
-      if (Math.abs(fg) < 1e-14 * rcr || hi - lo < 1e-15) break;
-      if (fg < 0) {
-        lo = gamma;
-        fLo = fg;
-        if (side === -1) fHi /= 2;
-        side = -1;
-      } else {
-        hi = gamma;
-        fHi = fg;
-        if (side === 1) fLo /= 2;
-        side = 1;
-      }
+    lo = d;
+  }
+  const found = hi !== null;
+  let recorded = 0;
+  if (hi !== null) {
+    let high = hi;
+    for (let i = 0; i < 200 && high - lo > 1e-16 * high; i++) {
+      const d = 0.5 * (lo + high);
+      if (recorded++ < 12)
+        steps.push({ phase: 'approach', flank, ringAngleRad: ringAngle(d), dsMm: cutAt(p, side, d, h).dsMm });
+      if (gapAt(d) >= 0) lo = d;
+      else high = d;
     }
-    return gamma;
-  };
-
-  // For h > 2 Rcr the first sections lie wholly below the plane: the range of sections that
-  // meet it starts where the section's top touches it (d_s = -Rcr).
-  const gammaEnter = firstReach(-rcr, 0) ?? 0;
-  const reached = firstReach(rcr, gammaEnter);
-  const found = reached !== null;
-  const gammaScp = reached ?? Math.PI;
+  }
+  const scp = found ? lo : Math.PI;
+  const scpCut = cutAt(p, side, scp, h);
   steps.push({
     phase: 'single-contact',
-    ringAngleRad: gammaScp,
-    dsMm: ds(gammaScp),
-    pHp: touchingPoint(f, gammaScp),
+    flank,
+    ringAngleRad: ringAngle(scp),
+    dsMm: scpCut.dsMm,
+    pHp: scpCut.point ?? [0, 0, h],
     found,
   });
-
-  // Steps 15-25: grid search over [0, gamma_scp] for the farthest crossing, refined around the best.
+  // Steps 15-25: refine a grid around the farthest crossing.
   const n = Math.max(5, gridSize | 1);
-  let rangeLo = gammaEnter;
-  let rangeHi = gammaScp;
-  let bestY = Number.NEGATIVE_INFINITY;
-  let bestP: Vec3 = [0, 0, h];
-  let bestGamma = 0;
-  for (let pass = 0; pass < 200; pass++) {
+  lo = enter;
+  let top = scp;
+  let bestOut = Number.NEGATIVE_INFINITY;
+  let bestPoint: Vec3 = [0, 0, h];
+  let bestDelta = lo;
+  for (let pass = 0; pass < 400; pass++) {
     const angles: number[] = [];
-    const ys: number[] = [];
+    const outs: Array<number | null> = [];
+    const candidates: number[] = [];
     let bestIndex = 0;
+    let passBest = Number.NEGATIVE_INFINITY;
     for (let i = 0; i < n; i++) {
-      const g = rangeLo + ((rangeHi - rangeLo) * i) / (n - 1);
-      const p = farthestCrossing(f, g, h);
-      angles.push(g);
-      ys.push(p === null ? Number.NEGATIVE_INFINITY : p[1]);
-      if (p !== null && p[1] > bestY) {
-        bestY = p[1];
-        bestP = p;
-        bestGamma = g;
+      const d = lo + ((top - lo) * i) / (n - 1);
+      const cut = cutAt(p, side, d, h);
+      angles.push(ringAngle(d));
+      outs.push(cut.outMm);
+      if (cut.point !== null && cut.outMm !== null) {
+        candidates.push(cut.point[0], cut.point[1], cut.point[2]);
+        if (cut.outMm > passBest) {
+          passBest = cut.outMm;
+          bestIndex = i;
+        }
+        if (cut.outMm > bestOut) {
+          bestOut = cut.outMm;
+          bestPoint = cut.point;
+          bestDelta = d;
+        }
       }
-      if ((ys[i] as number) > (ys[bestIndex] as number)) bestIndex = i;
     }
-    steps.push({
-      phase: 'search',
-      rangeRad: [rangeLo, rangeHi],
-      ringAnglesRad: angles,
-      crossingYMm: ys,
-      bestIndex,
-      pHp: bestP,
-    });
-    const left = ys[Math.max(0, bestIndex - 1)] as number;
-    const right = ys[Math.min(n - 1, bestIndex + 1)] as number;
-    const spread = Math.max(bestY - left, bestY - right);
+    if (pass < 60) {
+      steps.push({
+        phase: 'search',
+        flank,
+        rangeRad: [ringAngle(lo), ringAngle(top)],
+        ringAnglesRad: angles,
+        crossingOutMm: outs,
+        candidates,
+        bestIndex,
+        pHp: bestPoint,
+      });
+    }
     // Step 23: the new range is the neighbours of the best section.
-    const width = rangeHi - rangeLo;
-    rangeLo = angles[Math.max(0, bestIndex - 1)] as number;
-    rangeHi = angles[Math.min(n - 1, bestIndex + 1)] as number;
-    if ((spread < toleranceMm && width < 1e-3) || width < 1e-15) break;
+    const width = top - lo;
+    const step = width / (n - 1);
+    const centre = lo + step * bestIndex;
+    const newLo = Math.max(lo, centre - step);
+    const newTop = Math.min(top, centre + step);
+    if (!(newTop - newLo < width) || width <= 1e-16 * Math.max(1e-300, top)) break;
+    lo = newLo;
+    top = newTop;
   }
-  return { steps, halfIntervalMm: bestY, pHp: bestP, ringAngleRad: bestGamma };
+  return { flank, widthMm: Math.max(0, bestOut), pHp: bestPoint, ringAngleRad: ringAngle(bestDelta) };
+}
+
+/** First section (smallest delta) whose circle reaches up to the plane: gap = 2 Rcr m. */
+function findEnter(p: Placement, side: 1 | -1, h: number): number {
+  // Wholly below the plane: no crossing although the lowest point is below it (gap > 2 Rcr m).
+  const over = (d: number) => {
+    const c = cutAt(p, side, d, h);
+    return c.point === null && c.gapMm > 0;
+  };
+  if (!over(0)) return 0;
+  let lo = 0;
+  let hi = Math.PI;
+  for (let i = 0; i < 200; i++) {
+    const mid = 0.5 * (lo + hi);
+    if (over(mid)) lo = mid;
+    else hi = mid;
+    if (hi - lo <= 1e-16 * hi) break;
+  }
+  return hi;
+}
+
+/** A ball end: the section through the farthest crossing is the meridian across the feed. */
+function ballCut(p: Placement, side: 1 | -1, h: number): Cut {
+  const rcr = p.cornerRadiusMm;
+  const q = Math.min(h, 2 * rcr);
+  const out = Math.sqrt(q * (2 * rcr - q));
+  return { gapMm: h, dsMm: rcr - h, point: [0, side * out, h], outMm: out };
 }

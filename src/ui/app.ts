@@ -3,10 +3,10 @@
  * Validation runs here for immediate messages; all solving runs in the worker.
  */
 import {
-  cornerProfileHeightMm,
+  describeInputError,
   type FieldName,
   type InputError,
-  MIN_LENGTH_MM,
+  scallopHeightLimits,
   validateForward,
   validateInverse,
 } from '../core/validate';
@@ -259,7 +259,12 @@ export class CalculatorApp {
     const rMm = R !== null && R > 0 ? toMm('R', R, this.state.unit) : 3;
     const rcrMm = Rcr !== null && Rcr >= 0 ? Math.min(toMm('Rcr', Rcr, this.state.unit), rMm) : rMm / 3;
     const rhoDeg = rho !== null && rho >= 0 && rho < 90 ? rho : 5;
-    const limitMm = cornerProfileHeightMm(rMm, rcrMm, rhoDeg);
+    const limitMm = scallopHeightLimits({
+      toolRadiusMm: rMm,
+      cornerRadiusMm: rcrMm,
+      leadAngleDeg: rhoDeg,
+      tiltAngleDeg: 0,
+    }).limitMm;
     const ranges: Record<FieldKey, [number, number, number]> = {
       R: [0.1 / u, 25 / u, 0.01 / u],
       Rcr: [0, rMm / u, 0.01 / u],
@@ -295,10 +300,13 @@ export class CalculatorApp {
     const validation =
       mode === 'forward'
         ? validateForward({ R: mm('R'), Rcr: mm('Rcr'), rho: mm('rho'), h: mm('h') })
-        : validateInverse({ R: mm('R'), Rcr: mm('Rcr'), rho: mm('rho'), halfInterval: halfOf(mm('L')) });
+        : validateInverse({ R: mm('R'), Rcr: mm('Rcr'), rho: mm('rho'), interval: mm('L') });
     const errors = new Map<FieldKey, string>();
     if (!validation.ok) {
-      for (const e of validation.errors) errors.set(fieldOf(e.field), this.localise(e));
+      for (const e of validation.errors) {
+        const key = fieldOf(e.field);
+        if (key !== null) errors.set(key, this.localise(e));
+      }
     }
     for (const view of this.fields.values()) {
       const message = errors.get(view.spec.key) ?? '';
@@ -324,31 +332,11 @@ export class CalculatorApp {
     }, 150);
   }
 
-  /** Messages name lengths in mm; in inch mode they also say the field in the user's unit. */
-  /**
-   * Messages name lengths in mm; in inch mode they are converted. The page asks for the
-   * step-over L where the solver checks L/2, so those messages are said in terms of L.
-   */
+  /** The message of an input error in the current unit, quoting what the user typed. */
   private localise(e: InputError): string {
-    const unit = this.unitText();
-    const show = (mmValue: number) => `${formatField(mmValue / (this.state.unit === 'in' ? MM_PER_INCH : 1))} ${unit}`;
-    if (e.field === 'halfInterval') {
-      const typed = this.state.fields.L.trim();
-      const R = parseField(this.state.fields.R);
-      if (e.code === 'beyond-radius' && R !== null) {
-        return `Step-over L must be below the tool diameter 2R = ${show(2 * toMm('R', R, this.state.unit))} (got ${typed}); at or beyond it adjacent passes leave a wall.`;
-      }
-      if (e.code === 'not-positive') return `Step-over L must be greater than 0 ${unit} (got ${typed}).`;
-      if (e.code === 'too-small') return `Step-over L must be at least ${show(2 * MIN_LENGTH_MM)} (got ${typed}).`;
-      return e.message.replace('Half path interval L/2', 'Step-over L');
-    }
-    if (this.state.unit === 'mm') return e.message;
-    const toInch = (n: string) => formatField(Number(n) / MM_PER_INCH);
-    let converted = e.message.replace(/(-?\d+(?:\.\d+)?(?:e-?\d+)?) mm/g, (_m, n: string) => `${toInch(n)} in`);
-    if (e.field !== 'rho') {
-      converted = converted.replace(/\(got (-?\d+(?:\.\d+)?(?:e[+-]?\d+)?)\)/, (_m, n: string) => `(got ${toInch(n)})`);
-    }
-    return converted;
+    const key = fieldOf(e.field);
+    const typed = key === null ? undefined : this.state.fields[key].trim();
+    return describeInputError(e, this.state.unit, typed === undefined ? {} : { typed });
   }
 
   private showInvalid(): void {
@@ -592,12 +580,9 @@ export class CalculatorApp {
   }
 }
 
-function halfOf(value: number | string): number | string {
-  return typeof value === 'number' ? value / 2 : value;
-}
-
-function fieldOf(field: FieldName): FieldKey {
-  return field === 'halfInterval' ? 'L' : field;
+function fieldOf(field: FieldName): FieldKey | null {
+  if (field === 'interval') return 'L';
+  return field === 'tilt' || field === 'pattern' ? null : field;
 }
 
 export type { Unit };

@@ -10,22 +10,13 @@ import {
   sekineHalfInterval,
   sekineModel,
 } from '../core/approximations';
-import {
-  compareForward,
-  compareInverse,
-  exactHalfIntervalMm,
-  exactScallopHeightMm,
-  type ForwardComparison,
-  type ForwardInput,
-  farthestCrossing,
-  solveExact,
-  traceProcedure,
-} from '../core/index';
-import { normalAngleAtHeight, profileShape, ringAngleRad } from '../core/profile';
+import { passGeometry } from '../core/geometry';
+import { compareForward, compareInverse, exactIntervalMm, type ForwardInput, traceProcedure } from '../core/index';
+import { placeTool, ringTangent, sectionCentre } from '../core/placement';
+import { flankAtHeight, shapeOfTool } from '../core/posture';
 import { type PaperTableRow, paperTables, profileCurves, rhoSweep } from '../core/teaching';
 import { toolMesh } from '../core/toolMesh';
-import { ringTangent, sectionCentre, torusFrame } from '../core/torus';
-import { validateForward, validateInverse } from '../core/validate';
+import { forwardInput, validateForward, validateInverse } from '../core/validate';
 import type {
   ProcedureKey,
   ProcedureRow,
@@ -36,27 +27,30 @@ import type {
   TraceFrame,
 } from './protocol';
 
-const DEG = Math.PI / 180;
-
 const PROCEDURES = ['sekine', 'redonnet', 'bedi'] as const;
 
+function toolOf(R: number, Rcr: number, rho: number) {
+  return { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, tiltAngleDeg: 0 };
+}
+
 function sceneGeometry(R: number, Rcr: number, rho: number, h: number): SceneGeometry {
-  const sol = solveExact({ toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, scallopHeightMm: h }, 96);
-  const mesh = toolMesh(R, Rcr, rho * DEG, 0.4 * R);
+  const tool = toolOf(R, Rcr, rho);
+  const g = passGeometry(tool, h, h, 96);
+  const mesh = toolMesh(tool, 0.4 * R);
   return {
     toolRadiusMm: R,
     scallopHeightMm: h,
-    halfIntervalMm: sol.halfIntervalMm,
-    ringAngleRad: sol.ringAngleRad,
-    toolCentre: sol.toolCentre,
-    toolAxis: sol.toolAxis,
-    pBase: sol.pBase,
-    pHp: sol.pHp,
-    sectionCentre: sol.sectionCircle.centre,
-    sectionNormal: sol.sectionCircle.normal,
-    sectionRadiusMm: sol.sectionCircle.radiusMm,
-    intersectionLoops: sol.intersectionLoops,
-    profile: sol.profile,
+    halfIntervalMm: exactIntervalMm(forwardInput(tool, 'one-way', h)) / 2,
+    ringAngleRad: g.right.ringAngleRad,
+    toolCentre: g.toolCentre,
+    toolAxis: g.toolAxis,
+    pBase: [0, 0, 0],
+    pHp: g.right.pHp,
+    sectionCentre: g.right.sectionCentre,
+    sectionNormal: g.right.sectionNormal,
+    sectionRadiusMm: g.right.sectionRadiusMm,
+    intersectionLoops: g.loopsRight,
+    profile: g.profile,
     toolPositions: mesh.positions,
   };
 }
@@ -65,15 +59,16 @@ function deg(rad: number): string {
   return `${((rad * 180) / Math.PI).toFixed(2)} deg`;
 }
 
-/** The trace of the paper's procedure as frames for the 3D step-through. */
+/** The trace of the paper's procedure as frames for the 3D step-through (right flank; interim). */
 export function traceFrames(input: ForwardInput): TraceFrame[] {
-  const frame = torusFrame(input.toolRadiusMm, input.cornerRadiusMm, input.leadAngleDeg * DEG);
   const rcr = input.cornerRadiusMm;
   const trace = traceProcedure(input);
-  const section = (g: number) => ({ sectionCentre: sectionCentre(frame, g), sectionNormal: ringTangent(frame, g) });
+  const p = trace.placement;
+  const section = (g: number) => ({ sectionCentre: sectionCentre(p, g), sectionNormal: ringTangent(p, g) });
   const frames: TraceFrame[] = [];
   let approach = 0;
   for (const step of trace.steps) {
+    if (step.flank !== 'right') continue;
     if (step.phase === 'approach') {
       approach++;
       const first = approach === 1;
@@ -104,20 +99,13 @@ export function traceFrames(input: ForwardInput): TraceFrame[] {
       });
     } else {
       const best = step.ringAnglesRad[step.bestIndex] ?? 0;
-      const candidates: number[] = [];
-      step.ringAnglesRad.forEach((g, i) => {
-        const y = step.crossingYMm[i];
-        if (y === undefined || !Number.isFinite(y)) return;
-        const p = farthestCrossing(frame, g, input.scallopHeightMm);
-        if (p) candidates.push(p[0], p[1], p[2]);
-      });
       frames.push({
         phase: 'search',
         caption: `Steps 16-25: ${step.ringAnglesRad.length} sections from gamma = ${deg(step.rangeRad[0])} to ${deg(step.rangeRad[1])}; their farthest crossings P_hp[i] with the plane. Best: gamma = ${deg(best)}, Y = ${step.pHp[1].toFixed(6)} mm; the range narrows to its neighbours.`,
         ringAngleRad: best,
         dsMm: null,
         ...section(best),
-        candidates,
+        candidates: [...step.candidates],
         point: step.pHp,
         bestY: step.pHp[1],
       });
@@ -125,13 +113,13 @@ export function traceFrames(input: ForwardInput): TraceFrame[] {
   }
   frames.push({
     phase: 'converged',
-    caption: `Step 26: converged. L/2 = ${trace.halfIntervalMm.toFixed(6)} mm at gamma* = ${deg(trace.ringAngleRad)}; the exact solver gives ${exactHalfIntervalMm(input).toFixed(6)} mm.`,
-    ringAngleRad: trace.ringAngleRad,
+    caption: `Step 26: converged. L/2 = ${trace.right.widthMm.toFixed(6)} mm at gamma* = ${deg(trace.right.ringAngleRad)}; the exact solver gives ${(exactIntervalMm(input) / 2).toFixed(6)} mm.`,
+    ringAngleRad: trace.right.ringAngleRad,
     dsMm: null,
-    ...section(trace.ringAngleRad),
+    ...section(trace.right.ringAngleRad),
     candidates: [],
-    point: trace.pHp,
-    bestY: trace.halfIntervalMm,
+    point: trace.right.pHp,
+    bestY: trace.right.widthMm,
   });
   return frames;
 }
@@ -141,8 +129,9 @@ const PAPER_TABLES: readonly PaperTableRow[] = paperTables();
 
 function teachingData(input: ForwardInput): TeachingData {
   // Only the two angles are needed: solve for them, not for the whole viewer geometry.
-  const shape = profileShape(input.toolRadiusMm, input.cornerRadiusMm, input.leadAngleDeg * DEG);
-  const theta = normalAngleAtHeight(shape, input.scallopHeightMm);
+  const flank = flankAtHeight(shapeOfTool(input), 'right', input.scallopHeightMm);
+  const theta = flank.normalAngleRad;
+  const gamma = placeTool(input).contactRingAngleRad + flank.ringOffsetRad;
   const sek = sekineModel(input);
   const red = redonnetModel(input);
   const bedi = bediModel(input);
@@ -150,7 +139,17 @@ function teachingData(input: ForwardInput): TeachingData {
   const halfOf = (r: { ok: true; halfIntervalMm: number } | { ok: false }) => (r.ok ? r.halfIntervalMm : null);
   return {
     curves: profileCurves(input),
-    sweep: rhoSweep(input.toolRadiusMm, input.cornerRadiusMm, input.scallopHeightMm, 0.5, 89, 120, input.leadAngleDeg),
+    sweep: rhoSweep(
+      input.toolRadiusMm,
+      input.cornerRadiusMm,
+      input.scallopHeightMm,
+      0.5,
+      89,
+      120,
+      input.leadAngleDeg,
+      input.tiltAngleDeg,
+      input.pattern,
+    ),
     frames: traceFrames(input),
     tables: PAPER_TABLES,
     models: {
@@ -174,22 +173,8 @@ function teachingData(input: ForwardInput): TeachingData {
           }
         : null,
       exactNormalAngleRad: theta,
-      exactRingAngleRad: ringAngleRad(shape, theta),
+      exactRingAngleRad: gamma,
     },
-  };
-}
-
-/** Scallop (mm) that passes 2 * halfIntervalMm apart really leave, or a reason when none. */
-function realScallop(
-  R: number,
-  Rcr: number,
-  rho: number,
-  halfIntervalMm: number,
-): { mm: number | null; note: string | null } {
-  if (halfIntervalMm >= R) return { mm: null, note: `its L/2 reaches the tool radius R: passes leave a wall` };
-  return {
-    mm: exactScallopHeightMm({ toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, halfIntervalMm }),
-    note: null,
   };
 }
 
@@ -208,9 +193,12 @@ function row(key: ProcedureKey, values: Partial<Omit<ProcedureRow, 'key'>>): Pro
 }
 
 /** The effective radius (Sekine, Redonnet) or ellipse long radius (Bedi) a procedure assumes, mm. */
-function modelRadius(c: ForwardComparison, key: (typeof PROCEDURES)[number]): number | null {
-  if (key === 'bedi') return c.bedi.ok ? c.bedi.longRadiusMm : null;
-  const r = c[key];
+function modelRadius(c: ReturnType<typeof compareForward>, key: (typeof PROCEDURES)[number]): number | null {
+  if (key === 'bedi') {
+    const b = c.approximations.bedi;
+    return b.ok ? b.longRadiusMm : null;
+  }
+  const r = c.approximations[key];
   return r.ok ? r.effectiveRadiusMm : null;
 }
 
@@ -223,25 +211,25 @@ export function solve(req: SolveRequest): SolveReply {
     if (!v.ok) return { id: req.id, ok: false, errors: v.errors };
     const c = compareForward(v.value);
     const exact = c.exact.halfIntervalMm;
-    const rows: ProcedureRow[] = [row('exact', { valueMm: exact, realScallopMm: req.value })];
+    const rows: ProcedureRow[] = [row('exact', { valueMm: exact, realScallopMm: c.exact.cuspHeightMm })];
     for (const key of PROCEDURES) {
-      const r = c[key];
+      const r = c.approximations[key];
       if (!r.ok) {
         rows.push(row(key, { note: r.notApplicable }));
         continue;
       }
-      const real = realScallop(R, Rcr, rho, r.halfIntervalMm);
       rows.push(
         row(key, {
           valueMm: r.halfIntervalMm,
           deviationMm: r.halfIntervalMm - exact,
-          deviationPercent: (100 * (r.halfIntervalMm - exact)) / exact,
-          realScallopMm: real.mm,
-          note: real.note,
+          deviationPercent: r.deviationPercent,
+          realScallopMm: r.realScallopMm,
+          note: r.warning,
           modelRadiusMm: modelRadius(c, key),
         }),
       );
     }
+    const h = c.exact.cuspHeightMm;
     return {
       id: req.id,
       ok: true,
@@ -249,29 +237,27 @@ export function solve(req: SolveRequest): SolveReply {
       halfIntervalMm: exact,
       scallopHeightMm: req.value,
       rows,
-      geometry: sceneGeometry(R, Rcr, rho, req.value),
-      teaching: req.withViews ? teachingData(v.value) : null,
+      geometry: h >= 1e-9 ? sceneGeometry(R, Rcr, rho, req.value) : null,
+      teaching: req.withViews && h >= 1e-9 ? teachingData(v.value) : null,
       solveMs: performance.now() - t0,
     };
   }
-  const half = req.value / 2;
-  const v = validateInverse({ R, Rcr, rho, halfInterval: half });
+  const v = validateInverse({ R, Rcr, rho, interval: req.value });
   if (!v.ok) return { id: req.id, ok: false, errors: v.errors };
   const c = compareInverse(v.value);
-  const exactH = c.exact.scallopHeightMm;
+  const exactH = c.exact.cuspHeightMm;
   const rows: ProcedureRow[] = [row('exact', { valueMm: exactH, realScallopMm: exactH })];
   for (const key of PROCEDURES) {
-    const r = c[key];
+    const r = c.approximations[key];
     if (!r.ok) {
       rows.push(row(key, { note: r.notApplicable }));
       continue;
     }
-    const dev = r.scallopHeightMm - exactH;
     rows.push(
       row(key, {
         valueMm: r.scallopHeightMm,
-        deviationMm: dev,
-        deviationPercent: exactH > 0 ? (100 * dev) / exactH : null,
+        deviationMm: r.deviationMm,
+        deviationPercent: r.deviationPercent,
         realScallopMm: exactH,
       }),
     );
@@ -280,14 +266,12 @@ export function solve(req: SolveRequest): SolveReply {
     id: req.id,
     ok: true,
     mode: 'inverse',
-    halfIntervalMm: half,
+    halfIntervalMm: req.value / 2,
     scallopHeightMm: exactH,
     rows,
     geometry: exactH >= 1e-9 ? sceneGeometry(R, Rcr, rho, exactH) : null,
     teaching:
-      req.withViews && exactH >= 1e-9
-        ? teachingData({ toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, scallopHeightMm: exactH })
-        : null,
+      req.withViews && exactH >= 1e-9 ? teachingData(forwardInput(toolOf(R, Rcr, rho), 'one-way', exactH)) : null,
     solveMs: performance.now() - t0,
   };
 }

@@ -12,10 +12,11 @@ describe('npm run bench', () => {
     });
     expect(r.status).toBe(0);
     const lines = r.stdout.trim().split('\n');
-    expect(r.stdout).toMatch(/exact L\/2\s+\d+\.\d/);
+    expect(r.stdout).toMatch(/exact L \(no tilt\)\s+\d+\.\d/);
     const last = JSON.parse(lines[lines.length - 1] as string);
     for (const key of [
       'exactNsPerCall',
+      'exactTiltNsPerCall',
       'exactWithGeometryNsPerCall',
       'sekineNsPerCall',
       'redonnetNsPerCall',

@@ -2,7 +2,7 @@ import { spawn } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { exactHalfIntervalMm } from '../../src/core/exact';
-import { compareForward } from '../../src/core/index';
+import { compareForward, forwardInput } from '../../src/core/index';
 import { PAPER_CONDITIONS } from '../../src/core/paper';
 
 const BIN = fileURLToPath(new URL('../../src/cli/bin.mjs', import.meta.url));
@@ -41,12 +41,9 @@ describe('command line (as a process)', () => {
     const r = await run(['--R', `${c.R}`, '--Rcr', `${c.Rcr}`, '--rho', `${c.rho}`, '--h', `${c.h}`, '--json']);
     expect(r.code).toBe(0);
     const out = JSON.parse(r.stdout);
-    const exact = exactHalfIntervalMm({
-      toolRadiusMm: c.R,
-      cornerRadiusMm: c.Rcr,
-      leadAngleDeg: c.rho,
-      scallopHeightMm: c.h,
-    });
+    const exact = exactHalfIntervalMm(
+      forwardInput({ toolRadiusMm: c.R, cornerRadiusMm: c.Rcr, leadAngleDeg: c.rho, tiltAngleDeg: 0 }, 'one-way', c.h),
+    );
     expect(out.exact.halfInterval).toBe(exact);
     expect(out.exact.interval).toBe(2 * exact);
     for (const name of ['sekine', 'redonnet', 'bedi'] as const) {
@@ -104,9 +101,15 @@ describe('command line (as a process)', () => {
     expect(r.code).toBe(0);
     const lines = r.stdout.trim().split('\n');
     expect(lines[0]).toBe('R,Rcr,rho,h,exact,sekine,redonnet,bedi,error');
-    const c = compareForward({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, scallopHeightMm: 0.05 });
-    const nine = (r: { ok: boolean; halfIntervalMm?: number }) => (r.halfIntervalMm ?? Number.NaN).toFixed(9);
-    expect(lines[1]).toBe(`3,1,5,0.05,${nine(c.exact)},${nine(c.sekine)},${nine(c.redonnet)},${nine(c.bedi)},`);
+    const c = compareForward(
+      forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 0.05),
+    );
+    const a = c.approximations;
+    const nine = (r: { ok: true; halfIntervalMm: number } | { ok: false }) =>
+      (r.ok ? r.halfIntervalMm : Number.NaN).toFixed(9);
+    expect(lines[1]).toBe(
+      `3,1,5,0.05,${c.exact.halfIntervalMm.toFixed(9)},${nine(a.sekine)},${nine(a.redonnet)},${nine(a.bedi)},`,
+    );
     expect(lines[2]).toMatch(/^3,4,5,0\.05,,,,,"?Corner radius Rcr must not exceed/);
     expect(lines[3]).toBe(`3,1,0,0.05,${(2 + Math.sqrt(0.1 - 0.0025)).toFixed(9)},,,,`);
     expect(lines[4]).toMatch(/expected 4 values/);

@@ -10,7 +10,13 @@ import {
 } from '../../src/core/approximations';
 import { PAPER_CONDITIONS } from '../../src/core/paper';
 
-const tool = (R: number, Rcr: number, rho: number) => ({ toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho });
+const tool = (R: number, Rcr: number, rho: number) => ({
+  toolRadiusMm: R,
+  cornerRadiusMm: Rcr,
+  leadAngleDeg: rho,
+  tiltAngleDeg: 0,
+  pattern: 'one-way' as const,
+});
 
 /** A value printed with 3 decimals is reproduced when it rounds to the printed digits. */
 function expectPrinted(value: number, printed: number): void {
@@ -45,7 +51,7 @@ describe('Tables 4-5: the approximations reproduce every printed h at the printe
   for (const c of PAPER_CONDITIONS) {
     it(`Table ${c.table + 2}: R=${c.R} Rcr=${c.Rcr} rho=${c.rho} L/2=${c.printedHalf.threeD}`, () => {
       const [lo, hi] = printedLimits(c.printedHalf.threeD);
-      const at = (halfIntervalMm: number) => ({ ...tool(c.R, c.Rcr, c.rho), halfIntervalMm });
+      const at = (halfIntervalMm: number) => ({ ...tool(c.R, c.Rcr, c.rho), intervalMm: 2 * halfIntervalMm });
       for (const [name, inverse] of [
         ['sekine', sekineScallopHeight],
         ['redonnet', redonnetScallopHeight],
@@ -79,7 +85,7 @@ describe('approximation models', () => {
       [bediHalfInterval, bediScallopHeight],
     ] as const) {
       const l = half(fwd(input));
-      expect(height(inv({ ...tool(6, 2, 7), halfIntervalMm: l }))).toBeCloseTo(0.03, 13);
+      expect(height(inv({ ...tool(6, 2, 7), intervalMm: 2 * l }))).toBeCloseTo(0.03, 13);
     }
   });
 
@@ -104,10 +110,10 @@ describe('approximation models', () => {
   });
 
   it('the inverses are not applicable when L/2 is wider than their circle or ellipse', () => {
-    const input = { ...tool(3, 2.9, 3), halfIntervalMm: 2 };
+    const input = { ...tool(3, 2.9, 3), intervalMm: 4 };
     const sek = sekineScallopHeight(input);
     expect(!sek.ok && sek.notApplicable).toMatch(/wider than its circle/);
-    const bedi = bediScallopHeight({ ...tool(3, 1, 5), halfIntervalMm: 2.5 });
+    const bedi = bediScallopHeight({ ...tool(3, 1, 5), intervalMm: 5 });
     expect(!bedi.ok && bedi.notApplicable).toMatch(/wider than its ellipse/);
   });
 });

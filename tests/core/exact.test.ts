@@ -1,13 +1,25 @@
 import { describe, expect, it } from 'vitest';
-import { exactHalfIntervalMm, exactScallopHeightMm, solveExact } from '../../src/core/exact';
+import { exactForward, exactHalfIntervalMm, exactScallopHeightMm } from '../../src/core/exact';
+import { passGeometry } from '../../src/core/geometry';
 import { PAPER_CONDITIONS } from '../../src/core/paper';
+import { placeTool } from '../../src/core/placement';
 import { bruteForceHalfIntervalMm, seededRandom } from '../support/bruteForce';
 
-const input = (R: number, Rcr: number, rho: number, h: number) => ({
+const tool = (R: number, Rcr: number, rho: number) => ({
   toolRadiusMm: R,
   cornerRadiusMm: Rcr,
   leadAngleDeg: rho,
+  tiltAngleDeg: 0,
+});
+const input = (R: number, Rcr: number, rho: number, h: number) => ({
+  ...tool(R, Rcr, rho),
+  pattern: 'one-way' as const,
   scallopHeightMm: h,
+});
+const atHalf = (R: number, Rcr: number, rho: number, half: number) => ({
+  ...tool(R, Rcr, rho),
+  pattern: 'one-way' as const,
+  intervalMm: 2 * half,
 });
 const DEG = Math.PI / 180;
 const TOL = 1e-9;
@@ -114,20 +126,14 @@ describe('exact inverse', () => {
   it('returns the h it was solved for (paper conditions)', () => {
     for (const c of PAPER_CONDITIONS) {
       const half = exactHalfIntervalMm(input(c.R, c.Rcr, c.rho, c.h));
-      const h = exactScallopHeightMm({
-        toolRadiusMm: c.R,
-        cornerRadiusMm: c.Rcr,
-        leadAngleDeg: c.rho,
-        halfIntervalMm: half,
-      });
+      const h = exactScallopHeightMm(atHalf(c.R, c.Rcr, c.rho, half));
       expect(Math.abs(h - c.h)).toBeLessThan(TOL);
     }
   });
 
   it('is 0 on the flat bottom at rho = 0 and follows the corner circle beyond it', () => {
-    const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 0 };
-    expect(exactScallopHeightMm({ ...tool, halfIntervalMm: 1.5 })).toBe(0);
-    expect(exactScallopHeightMm({ ...tool, halfIntervalMm: 2.6 })).toBeCloseTo(1 - Math.sqrt(1 - 0.36), 12);
+    expect(exactScallopHeightMm(atHalf(3, 1, 0, 1.5))).toBe(0);
+    expect(exactScallopHeightMm(atHalf(3, 1, 0, 2.6))).toBeCloseTo(1 - Math.sqrt(1 - 0.36), 12);
   });
 
   it("gives the paper's printed 3D heights (Tables 4-5) within what the printed L/2 allows", () => {
@@ -135,76 +141,80 @@ describe('exact inverse', () => {
     // h by at most (exact L/2 - printed L/2) times the profile slope tan(theta) at the exact
     // L/2 (the slope only grows with L/2), plus the rounding of the printed h.
     for (const c of PAPER_CONDITIONS) {
-      const sol = solveExact(input(c.R, c.Rcr, c.rho, c.h), 8);
-      const h = exactScallopHeightMm({
-        toolRadiusMm: c.R,
-        cornerRadiusMm: c.Rcr,
-        leadAngleDeg: c.rho,
-        halfIntervalMm: c.printedHalf.threeD,
-      });
-      const allowed = (sol.halfIntervalMm - c.printedHalf.threeD) * Math.tan(sol.normalAngleRad) + 0.0005;
+      const sol = exactForward(input(c.R, c.Rcr, c.rho, c.h));
+      const h = exactScallopHeightMm(atHalf(c.R, c.Rcr, c.rho, c.printedHalf.threeD));
+      const allowed = (sol.halfIntervalMm - c.printedHalf.threeD) * Math.tan(sol.right.normalAngleRad) + 0.0005;
       expect(c.printedHeight.threeD - h).toBeGreaterThanOrEqual(-0.0005);
       expect(c.printedHeight.threeD - h).toBeLessThanOrEqual(allowed);
     }
   });
 });
 
+/** Signed distance (mm) from a point to the surface of the tool's torus in its placement. */
+function torusDistanceMm(t: ReturnType<typeof tool>, q: readonly number[]): number {
+  const p = placeTool(t);
+  const dx = (q[0] as number) - p.centre[0];
+  const dy = (q[1] as number) - p.centre[1];
+  const dz = (q[2] as number) - p.centre[2];
+  const w = dx * p.axis[0] + dy * p.axis[1] + dz * p.axis[2];
+  const radial = Math.hypot(dx - w * p.axis[0], dy - w * p.axis[1], dz - w * p.axis[2]);
+  return Math.hypot(radial - p.ringRadiusMm, w) - p.cornerRadiusMm;
+}
+
 describe('viewer geometry', () => {
-  const sol = solveExact(input(3, 1, 5, 0.05), 64);
+  const t = tool(3, 1, 5);
+  const half = exactHalfIntervalMm(input(3, 1, 5, 0.05));
+  const sol = passGeometry(t, 0.05, 0.05, 64);
   const rho = 5 * DEG;
 
   it('P_hp lies on the h pseudo plane at Y = L/2, on the torus and on the section circle', () => {
-    expect(sol.pHp[1]).toBe(sol.halfIntervalMm);
-    expect(sol.pHp[2]).toBe(0.05);
-    const { centre, normal, radiusMm } = sol.sectionCircle;
-    const d = [sol.pHp[0] - centre[0], sol.pHp[1] - centre[1], sol.pHp[2] - centre[2]] as const;
+    expect(Math.abs(sol.right.pHp[1] - half)).toBeLessThan(1e-12);
+    expect(sol.right.pHp[2]).toBeCloseTo(0.05, 14);
+    expect(Math.abs(torusDistanceMm(t, sol.right.pHp))).toBeLessThan(1e-12);
+    const { sectionCentre: centre, sectionNormal: normal, sectionRadiusMm: radiusMm } = sol.right;
+    const d = [sol.right.pHp[0] - centre[0], sol.right.pHp[1] - centre[1], sol.right.pHp[2] - centre[2]] as const;
     expect(Math.hypot(...d)).toBeCloseTo(radiusMm, 12);
     expect(d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2]).toBeCloseTo(0, 12);
   });
 
-  it('the tool centre is at Z_tc = Rb sin(rho) + Rcr (Eq. 7) and P_base on the designed plane', () => {
+  it('the tool centre is at Z_tc = Rb sin(rho) + Rcr (Eq. 7) above the contact, which is at the origin', () => {
     expect(sol.toolCentre[2]).toBeCloseTo(2 * Math.sin(rho) + 1, 14);
-    expect(sol.pBase[2]).toBe(0);
+    expect(sol.toolCentre[1]).toBe(0);
     expect(sol.toolAxis[0]).toBeCloseTo(Math.sin(rho), 15);
+    expect(Math.abs(torusDistanceMm(t, [0, 0, 0]))).toBeLessThan(1e-14);
   });
 
-  it('every intersection-loop point is on the torus and on the plane, and P_hp is its farthest Y', () => {
-    expect(sol.intersectionLoops.length).toBe(1);
-    const loop = sol.intersectionLoops[0] as Float64Array;
+  it('every intersection-loop point is on the torus and on the plane, and the loop reaches P_hp exactly', () => {
+    expect(sol.loopsRight.length).toBe(1);
+    const loop = sol.loopsRight[0] as Float64Array;
     let maxY = Number.NEGATIVE_INFINITY;
-    const [, , oz] = sol.toolCentre;
     for (let i = 0; i < loop.length; i += 3) {
-      const x = loop[i] as number;
-      const y = loop[i + 1] as number;
-      const z = loop[i + 2] as number;
-      expect(z).toBeCloseTo(0.05, 12);
-      const w = x * Math.sin(rho) + (z - oz) * Math.cos(rho);
-      const radial = Math.hypot(x - w * Math.sin(rho), y, z - oz - w * Math.cos(rho));
-      expect((radial - 2) ** 2 + w * w).toBeCloseTo(1, 10);
-      maxY = Math.max(maxY, y);
+      const q = [loop[i] as number, loop[i + 1] as number, loop[i + 2] as number];
+      expect(q[2]).toBeCloseTo(0.05, 12);
+      expect(Math.abs(torusDistanceMm(t, q))).toBeLessThan(1e-12);
+      maxY = Math.max(maxY, q[1] as number);
     }
-    expect(maxY).toBeLessThanOrEqual(sol.halfIntervalMm + 1e-12);
-    expect(maxY).toBeGreaterThan(sol.halfIntervalMm - 1e-3);
+    expect(Math.abs(maxY - half)).toBeLessThan(1e-12);
   });
 
   it('flat end (Rcr = 0): the plane cuts the flat bottom along a chord whose ends are at z = h and Y = +-L/2', () => {
-    const flatEnd = solveExact(input(3, 0, 5, 0.05), 32);
-    expect(flatEnd.intersectionLoops.length).toBe(1);
-    const chord = flatEnd.intersectionLoops[0] as Float64Array;
+    const flatEnd = passGeometry(tool(3, 0, 5), 0.05, 0.05, 32);
+    expect(flatEnd.loopsRight.length).toBe(1);
+    const chord = flatEnd.loopsRight[0] as Float64Array;
     expect(chord.length).toBe(6);
     // Closed form for the flat end (see the limits above): L/2 = Rb sqrt(1 - (1 - h/(Rb sin rho))^2).
     const q = 1 - 0.05 / (3 * Math.sin((5 * Math.PI) / 180));
-    const half = 3 * Math.sqrt(1 - q * q);
+    const halfFlat = 3 * Math.sqrt(1 - q * q);
     expect(chord[2]).toBeCloseTo(0.05, 12);
     expect(chord[5]).toBeCloseTo(0.05, 12);
-    expect(chord[1]).toBeCloseTo(half, 12);
-    expect(chord[4]).toBeCloseTo(-half, 12);
+    expect(Math.max(chord[1] as number, chord[4] as number)).toBeCloseTo(halfFlat, 12);
+    expect(Math.min(chord[1] as number, chord[4] as number)).toBeCloseTo(-halfFlat, 12);
     expect(chord[0]).toBeCloseTo(chord[3] as number, 12);
   });
 
   it('rho = 0 gives two concentric loops (outer and inner crossing of the corner)', () => {
-    const flat = solveExact(input(3, 1, 0, 0.05), 32);
-    expect(flat.intersectionLoops.length).toBe(2);
+    const flat = passGeometry(tool(3, 1, 0), 0.05, 0.05, 32);
+    expect(flat.loopsRight.length).toBe(2);
   });
 
   it('the profile runs from -R to R, is symmetric, starts at height 0 and passes through (L/2, h)', () => {
@@ -218,17 +228,15 @@ describe('viewer geometry', () => {
     for (let i = 0; i + 2 < p.length; i += 2) {
       const y0 = p[i] as number;
       const y1 = p[i + 2] as number;
-      if (y0 <= sol.halfIntervalMm && sol.halfIntervalMm <= y1) {
-        const z =
-          (p[i + 1] as number) +
-          (((p[i + 3] as number) - (p[i + 1] as number)) * (sol.halfIntervalMm - y0)) / (y1 - y0);
+      if (y0 <= half && half <= y1) {
+        const z = (p[i + 1] as number) + (((p[i + 3] as number) - (p[i + 1] as number)) * (half - y0)) / (y1 - y0);
         expect(Math.abs(z - 0.05)).toBeLessThan(2e-3);
       }
     }
   });
 
   it('a flat-bottom profile (rho = 0) keeps the flat segment from -Rb to Rb', () => {
-    const p = solveExact(input(3, 1, 0, 0.05), 16).profile;
+    const p = passGeometry(tool(3, 1, 0), 0.05, 0.05, 16).profile;
     const flat: number[] = [];
     for (let i = 0; i < p.length; i += 2) if (p[i + 1] === 0) flat.push(p[i] as number);
     expect(flat).toEqual([-2, 2]);

@@ -1,47 +1,53 @@
 import { describe, expect, it } from 'vitest';
 import { bediHalfInterval, redonnetHalfInterval, sekineHalfInterval } from '../../src/core/approximations';
-import { exactHalfIntervalMm } from '../../src/core/exact';
+import { exactForward, exactIntervalMm } from '../../src/core/exact';
 import { PAPER_CONDITIONS } from '../../src/core/paper';
 import { paperTables, profileCurves, rhoSweep } from '../../src/core/teaching';
+import { forwardInput } from '../../src/core/validate';
 
-const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5 };
+const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
+
+/** Linear interpolation of a (y, z) polyline at y, or NaN outside it. */
+function zAt(pts: Float64Array, y: number): number {
+  for (let i = 0; i + 2 < pts.length; i += 2) {
+    const y0 = pts[i] as number;
+    const y1 = pts[i + 2] as number;
+    if (Math.min(y0, y1) <= y && y <= Math.max(y0, y1) && y1 !== y0)
+      return (pts[i + 1] as number) + (((pts[i + 3] as number) - (pts[i + 1] as number)) * (y - y0)) / (y1 - y0);
+  }
+  return Number.NaN;
+}
 
 describe('teaching data', () => {
   it('the exact profile curve passes through (L/2, h) and ends at (R, Rb sin rho + Rcr)', () => {
     const c = profileCurves(tool, 2000);
-    const half = exactHalfIntervalMm({ ...tool, scallopHeightMm: 0.05 });
+    const half = exactIntervalMm(forwardInput(tool, 'one-way', 0.05)) / 2;
     const e = c.exact;
     expect(e[e.length - 2]).toBeCloseTo(3, 12);
     expect(e[e.length - 1]).toBeCloseTo(2 * Math.sin((5 * Math.PI) / 180) + 1, 12);
-    for (let i = 0; i + 2 < e.length; i += 2) {
-      const y0 = e[i] as number;
-      const y1 = e[i + 2] as number;
-      if (y0 <= half && half <= y1) {
-        const z = (e[i + 1] as number) + (((e[i + 3] as number) - (e[i + 1] as number)) * (half - y0)) / (y1 - y0);
-        expect(Math.abs(z - 0.05)).toBeLessThan(1e-4);
-      }
-    }
+    expect(Math.abs(zAt(e, half) - 0.05)).toBeLessThan(1e-4);
+  });
+
+  it('with tilt the full profile passes through both flanks at (wR, h) and (-wL, h), and starts at the contact', () => {
+    const tilted = { ...tool, tiltAngleDeg: 12 };
+    const c = profileCurves(tilted, 4000);
+    const f = exactForward(forwardInput(tilted, 'one-way', 0.05));
+    expect(f.halfWidthRightMm).not.toBeCloseTo(f.halfWidthLeftMm, 3);
+    expect(Math.abs(zAt(c.profile, f.halfWidthRightMm) - 0.05)).toBeLessThan(1e-4);
+    expect(Math.abs(zAt(c.profile, -f.halfWidthLeftMm) - 0.05)).toBeLessThan(1e-4);
+    expect(Math.abs(zAt(c.profile, 0))).toBeLessThan(1e-9);
   });
 
   it("the approximations' curves reach height h at their own L/2 (Eqs. 8 and 11)", () => {
     const c = profileCurves(tool, 4000);
-    const input = { ...tool, scallopHeightMm: 0.05 };
-    const at = (pts: Float64Array, y: number) => {
-      for (let i = 0; i + 2 < pts.length; i += 2) {
-        const y0 = pts[i] as number;
-        const y1 = pts[i + 2] as number;
-        if (y0 <= y && y <= y1)
-          return (pts[i + 1] as number) + (((pts[i + 3] as number) - (pts[i + 1] as number)) * (y - y0)) / (y1 - y0);
-      }
-      return Number.NaN;
-    };
+    const input = forwardInput(tool, 'one-way', 0.05);
     for (const [curve, r] of [
       [c.sekine, sekineHalfInterval(input)],
       [c.redonnet, redonnetHalfInterval(input)],
       [c.bedi, bediHalfInterval(input)],
     ] as const) {
       if (!curve || !r.ok) throw new Error('applicable at rho = 5');
-      expect(Math.abs(at(curve, r.halfIntervalMm) - 0.05)).toBeLessThan(1e-5);
+      expect(Math.abs(zAt(curve, r.halfIntervalMm) - 0.05)).toBeLessThan(1e-5);
     }
     expect(profileCurves({ ...tool, leadAngleDeg: 0 }).sekine).toBeNull();
   });
@@ -58,19 +64,39 @@ describe('teaching data', () => {
     expect(s.rhoDeg).toHaveLength(42);
     const i = s.rhoDeg.indexOf(7.3);
     expect(i).toBeGreaterThan(0);
-    expect(s.exact[i]).toBe(exactHalfIntervalMm({ ...tool, leadAngleDeg: 7.3, scallopHeightMm: 0.05 }));
+    expect(s.exact[i]).toBe(exactIntervalMm(forwardInput({ ...tool, leadAngleDeg: 7.3 }, 'one-way', 0.05)) / 2);
     // h = 1.05 is beyond the corner height Rcr + Rb sin(rho) for small rho.
     const high = rhoSweep(3, 1, 1.05, 0.5, 89, 40);
     expect(high.exact[0]).toBeNull();
     expect(high.exact[high.exact.length - 1]).not.toBeNull();
   });
+});
 
-  it('the recomputed tables carry the printed values and the solver values side by side', () => {
-    const rows = paperTables();
+describe("the paper's tables recomputed (every row, every procedure)", () => {
+  const rows = paperTables();
+  // A value printed with 3 decimals is reproduced when it rounds to the printed digits.
+  const printed = (v: number, p: number) => Math.abs(v - p) <= 0.0005 + 1e-12;
+
+  it('has one row per printed condition, carrying the printed values unchanged', () => {
     expect(rows).toHaveLength(PAPER_CONDITIONS.length);
-    const first = rows[0];
-    // biome-ignore lint/suspicious/noApproximativeNumericConstant: 1.442 is the paper's printed value.
-    expect(first?.printedHalf.threeD).toBe(1.442);
-    expect(first?.computedHalf.threeD).toBe(exactHalfIntervalMm({ ...tool, scallopHeightMm: 0.05 }));
+    rows.forEach((r, k) => {
+      expect(r.printedHalf).toEqual(PAPER_CONDITIONS[k]?.printedHalf);
+      expect(r.printedHeight).toEqual(PAPER_CONDITIONS[k]?.printedHeight);
+    });
   });
+
+  for (const [k, c] of PAPER_CONDITIONS.entries()) {
+    it(`Table ${c.table}, R=${c.R} Rcr=${c.Rcr} rho=${c.rho} h=${c.h}: each approximation's L/2 rounds to the printed one, the 3D one is the exact value`, () => {
+      const r = rows[k];
+      if (!r) throw new Error('missing row');
+      expect(printed(r.computedHalf.sekine, c.printedHalf.sekine)).toBe(true);
+      expect(printed(r.computedHalf.redonnet, c.printedHalf.redonnet)).toBe(true);
+      expect(printed(r.computedHalf.bedi, c.printedHalf.bedi)).toBe(true);
+      // The 3D column is the exact solver's (notes' exact column, 12 decimals), not the printed one.
+      expect(Math.abs(r.computedHalf.threeD - c.notesExactHalf)).toBeLessThan(1e-9);
+      // Tables 4-5: the heights at the printed L/2 are within one unit of the last printed digit.
+      for (const key of ['sekine', 'redonnet', 'bedi'] as const)
+        expect(Math.abs(r.computedHeight[key] - c.printedHeight[key]), key).toBeLessThan(0.001);
+    });
+  }
 });

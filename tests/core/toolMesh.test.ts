@@ -9,7 +9,8 @@ describe('tool surface mesh', () => {
       [3, 3, 10],
       [4, 0, 20],
     ] as const) {
-      const { positions, indices } = toolMesh(R, Rcr, (rhoDeg * Math.PI) / 180, R, 64);
+      const tool = { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rhoDeg, tiltAngleDeg: 0 };
+      const { positions, indices } = toolMesh(tool, R, 64);
       let minZ = Number.POSITIVE_INFINITY;
       for (let i = 2; i < positions.length; i += 3) minZ = Math.min(minZ, positions[i] as number);
       expect(minZ).toBeGreaterThan(-1e-5);

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { exactHalfIntervalMm, solveExact } from '../../src/core/exact';
+import { exactHalfIntervalMm } from '../../src/core/exact';
+import { passGeometry } from '../../src/core/geometry';
 import { PAPER_CONDITIONS } from '../../src/core/paper';
 import { traceProcedure } from '../../src/core/trace';
 import { seededRandom } from '../support/bruteForce';
@@ -9,6 +10,8 @@ const input = (R: number, Rcr: number, rho: number, h: number) => ({
   toolRadiusMm: R,
   cornerRadiusMm: Rcr,
   leadAngleDeg: rho,
+  tiltAngleDeg: 0,
+  pattern: 'one-way' as const,
   scallopHeightMm: h,
 });
 
@@ -16,7 +19,7 @@ describe("the paper's 3D procedure (Figure 1) as a trace", () => {
   for (const c of PAPER_CONDITIONS) {
     it(`converges to the exact L/2 within 1e-9 mm: R=${c.R} Rcr=${c.Rcr} rho=${c.rho} h=${c.h}`, () => {
       const t = traceProcedure(input(c.R, c.Rcr, c.rho, c.h));
-      expect(Math.abs(t.halfIntervalMm - exactHalfIntervalMm(input(c.R, c.Rcr, c.rho, c.h)))).toBeLessThan(1e-9);
+      expect(Math.abs(t.right.widthMm - exactHalfIntervalMm(input(c.R, c.Rcr, c.rho, c.h)))).toBeLessThan(1e-9);
     });
   }
 
@@ -31,12 +34,14 @@ describe("the paper's 3D procedure (Figure 1) as a trace", () => {
       // Its touching point P_hp lies on the h pseudo plane.
       expect(scp.pHp[2]).toBeCloseTo(0.1, 12);
     }
-    const searches = t.steps.filter((s) => s.phase === 'search');
+    const searches = t.steps.filter((s) => s.phase === 'search' && s.flank === 'right');
     expect(searches.length).toBeGreaterThan(3);
     const widths = searches.map((s) => (s.phase === 'search' ? s.rangeRad[1] - s.rangeRad[0] : 0));
     for (let i = 1; i < widths.length; i++) expect(widths[i]).toBeLessThan(widths[i - 1] as number);
     // The converged section is the exact solver's section gamma*.
-    expect(Math.abs(t.ringAngleRad - solveExact(input(3, 1, 5, 0.1), 8).ringAngleRad)).toBeLessThan(1e-5);
+    expect(
+      Math.abs(t.right.ringAngleRad - passGeometry(input(3, 1, 5, 0.1), 0.1, 0.1, 8).right.ringAngleRad),
+    ).toBeLessThan(1e-5);
   });
 
   it('Eq. 1 gives the starting ring angle: Rb sin(rho)(1 - cos gamma) = h/2', () => {
@@ -51,12 +56,12 @@ describe("the paper's 3D procedure (Figure 1) as a trace", () => {
     const t = traceProcedure(input(3, 1, 0, 0.05));
     const scp = t.steps.find((s) => s.phase === 'single-contact');
     expect(scp?.phase === 'single-contact' && scp.found).toBe(false);
-    expect(Math.abs(t.halfIntervalMm - (2 + Math.sqrt(0.1 - 0.0025)))).toBeLessThan(1e-9);
+    expect(Math.abs(t.right.widthMm - (2 + Math.sqrt(0.1 - 0.0025)))).toBeLessThan(1e-9);
   });
 
   it('flat end (Rcr = 0): the ring itself reaches the plane', () => {
     const t = traceProcedure(input(4, 0, 20, 0.3));
-    expect(Math.abs(t.halfIntervalMm - exactHalfIntervalMm(input(4, 0, 20, 0.3)))).toBeLessThan(1e-9);
+    expect(Math.abs(t.right.widthMm - exactHalfIntervalMm(input(4, 0, 20, 0.3)))).toBeLessThan(1e-9);
   });
 
   for (const seed of [7, 42, 1234]) {
@@ -69,7 +74,7 @@ describe("the paper's 3D procedure (Figure 1) as a trace", () => {
         const limit = (R - Rcr) * Math.sin(rho * DEG) + Rcr;
         const h = limit * (1e-4 + 0.999 * rand());
         const c = input(R, Rcr, rho, h);
-        expect(Math.abs(traceProcedure(c).halfIntervalMm - exactHalfIntervalMm(c)), JSON.stringify(c)).toBeLessThan(
+        expect(Math.abs(traceProcedure(c).right.widthMm - exactHalfIntervalMm(c)), JSON.stringify(c)).toBeLessThan(
           1e-9,
         );
       }

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { cornerProfileHeightMm, validateForward, validateInverse } from '../../src/core/validate';
+import { solveForwardRaw } from '../../src/core/compare';
+import { scallopHeightLimits, validateForward, validateInverse } from '../../src/core/validate';
 
 const good = { R: 3, Rcr: 1, rho: 5, h: 0.05 };
 
@@ -13,7 +14,14 @@ describe('validateForward', () => {
     const v = validateForward({ R: '3', Rcr: ' 1 ', rho: '5e0', h: '.05' });
     expect(v).toEqual({
       ok: true,
-      value: { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, scallopHeightMm: 0.05 },
+      value: {
+        toolRadiusMm: 3,
+        cornerRadiusMm: 1,
+        leadAngleDeg: 5,
+        tiltAngleDeg: 0,
+        pattern: 'one-way',
+        scallopHeightMm: 0.05,
+      },
     });
   });
 
@@ -28,7 +36,7 @@ describe('validateForward', () => {
     [{ ...good, rho: 90 }, 'rho', 'out-of-range', /below 90 degrees/],
     [{ ...good, rho: -1 }, 'rho', 'out-of-range', /at least 0/],
     [{ ...good, h: 0 }, 'h', 'not-positive', /greater than 0/],
-    [{ ...good, h: 1.2 }, 'h', 'beyond-corner', /full height .* = 1\.17431 mm .*wall, not a scallop/],
+    [{ ...good, h: 1.2 }, 'h', 'flank-wall', /full height .* = 1\.17431 mm .*wall, not a scallop/],
     [{ ...good, R: Number.NaN }, 'R', 'not-a-number', /must be a number/],
     [{ ...good, h: Number.POSITIVE_INFINITY }, 'h', 'not-finite', /finite/],
     [{ ...good, rho: '' }, 'rho', 'missing', /missing/],
@@ -49,9 +57,16 @@ describe('validateForward', () => {
     expect(errors.map((e) => e.field).sort()).toEqual(['R', 'h', 'rho']);
   });
 
-  it('a flat end at rho = 0 has no scallop: every h is beyond the corner (height 0)', () => {
-    expect(cornerProfileHeightMm(3, 0, 0)).toBe(0);
-    expect(errorsOf(validateForward({ R: 3, Rcr: 0, rho: 0, h: 0.01 }))[0]?.code).toBe('beyond-corner');
+  it('a flat end without lead or tilt leaves no scallop: any h is valid and answered by L = 2R', () => {
+    expect(scallopHeightLimits({ toolRadiusMm: 3, cornerRadiusMm: 0, leadAngleDeg: 0, tiltAngleDeg: 0 }).limitMm).toBe(
+      0,
+    );
+    const v = validateForward({ R: 3, Rcr: 0, rho: 0, h: 0.01 });
+    expect(v.ok).toBe(true);
+    const fwd = solveForwardRaw({ R: 3, Rcr: 0, rho: 0, h: 0.01 });
+    expect(fwd.ok && fwd.value.exact.noScallop && fwd.value.exact.intervalMm).toBe(6);
+    // With tilt the same flat end cuts a step with its edge: no h is possible, and the message says why.
+    expect(errorsOf(validateForward({ R: 3, Rcr: 0, rho: 0, tilt: 5, h: 0.01 }))[0]?.code).toBe('shank-cuts');
   });
 
   it('accepts the edges of the domain: Rcr = 0, Rcr = R, rho = 0', () => {
@@ -62,13 +77,13 @@ describe('validateForward', () => {
 });
 
 describe('validateInverse', () => {
-  it('accepts 0 < L/2 < R', () => {
-    expect(validateInverse({ R: 3, Rcr: 1, rho: 5, halfInterval: 1.5 }).ok).toBe(true);
+  it('accepts 0 < L < 2R', () => {
+    expect(validateInverse({ R: 3, Rcr: 1, rho: 5, interval: 3 }).ok).toBe(true);
   });
-  it('rejects L/2 >= R and L/2 <= 0, naming the constraint', () => {
-    expect(errorsOf(validateInverse({ R: 3, Rcr: 1, rho: 5, halfInterval: 3 }))[0]?.message).toMatch(
-      /below the tool radius R = 3 mm/,
+  it('rejects L >= 2R and L <= 0, naming the constraint', () => {
+    expect(errorsOf(validateInverse({ R: 3, Rcr: 1, rho: 5, interval: 6 }))[0]?.message).toMatch(
+      /Step-over L must be below the tool diameter 2R = 6 mm \(got 6\); .*leave a wall/,
     );
-    expect(errorsOf(validateInverse({ R: 3, Rcr: 1, rho: 5, halfInterval: 0 }))[0]?.code).toBe('not-positive');
+    expect(errorsOf(validateInverse({ R: 3, Rcr: 1, rho: 5, interval: 0 }))[0]?.code).toBe('not-positive');
   });
 });

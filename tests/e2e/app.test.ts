@@ -5,7 +5,7 @@
 import { spawnSync } from 'node:child_process';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { compareForward, compareInverse } from '../../src/core/index';
+import { compareForward, compareInverse, forwardInput, inverseInput } from '../../src/core/index';
 import { ROOT, SHOTS, useSite } from './harness';
 
 const site = useSite('docs/tools/path-interval');
@@ -111,7 +111,9 @@ describe('calculator page in headless Chromium', () => {
     await page.keyboard.press('ArrowRight');
     await page.keyboard.press('ArrowRight');
     await expect.poll(() => page.getByTestId('input-rho').inputValue()).toBe('5.2');
-    const expected = compareForward({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5.2, scallopHeightMm: 0.05 });
+    const expected = compareForward(
+      forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5.2, tiltAngleDeg: 0 }, 'one-way', 0.05),
+    );
     await expect.poll(() => text(page, 'result-exact-half')).toBe(expected.exact.halfIntervalMm.toFixed(4));
     expect(await text(page, 'result-exact-half')).not.toBe(before);
     expect(new URL(page.url()).searchParams.get('rho')).toBe('5.2');
@@ -198,10 +200,13 @@ describe('calculator page in headless Chromium', () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     await page.locator('input[name="mode"][value="inverse"]').check();
     await page.getByTestId('input-L').fill('3');
-    const expected = compareInverse({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, halfIntervalMm: 1.5 });
-    await expect.poll(() => text(page, 'table-exact-h')).toBe(expected.exact.scallopHeightMm.toFixed(5));
-    expect(expected.bedi.ok).toBe(true);
-    if (expected.bedi.ok) expect(await text(page, 'result-bedi-h')).toBe(expected.bedi.scallopHeightMm.toFixed(5));
+    const expected = compareInverse(
+      inverseInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 3),
+    );
+    await expect.poll(() => text(page, 'table-exact-h')).toBe(expected.exact.cuspHeightMm.toFixed(5));
+    const bedi = expected.approximations.bedi;
+    expect(bedi.ok).toBe(true);
+    if (bedi.ok) expect(await text(page, 'result-bedi-h')).toBe(bedi.scallopHeightMm.toFixed(5));
     const url = new URL(page.url());
     expect(url.searchParams.get('mode')).toBe('inverse');
     expect(url.searchParams.get('L')).toBe('3');
@@ -234,7 +239,9 @@ describe('calculator page in headless Chromium', () => {
     await page.getByTestId('slider-h').focus();
     for (let i = 0; i < 30; i++) await page.keyboard.press('ArrowRight');
     await expect.poll(() => page.getByTestId('input-h').inputValue()).toBe('0.08');
-    const expected = compareForward({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, scallopHeightMm: 0.08 });
+    const expected = compareForward(
+      forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 0.08),
+    );
     await expect.poll(() => text(page, 'result-exact-half')).toBe(expected.exact.halfIntervalMm.toFixed(4));
     await page.close();
   });

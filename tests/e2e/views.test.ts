@@ -15,6 +15,8 @@ const tool = (rho: number, h: number) => ({
   toolRadiusMm: 3,
   cornerRadiusMm: 1,
   leadAngleDeg: rho,
+  tiltAngleDeg: 0,
+  pattern: 'one-way' as const,
   scallopHeightMm: h,
 });
 
@@ -66,8 +68,10 @@ describe('teaching views in headless Chromium', () => {
     await expect
       .poll(() => summary.textContent())
       .toMatch(new RegExp(`Exact \\(3D\\) ${c.exact.halfIntervalMm.toFixed(4)}`));
-    if (c.sekine.ok)
-      expect(await summary.textContent()).toContain(`Sekine et al. ${c.sekine.halfIntervalMm.toFixed(4)}`);
+    if (c.approximations.sekine.ok)
+      expect(await summary.textContent()).toContain(
+        `Sekine et al. ${c.approximations.sekine.halfIntervalMm.toFixed(4)}`,
+      );
     await page.getByTestId('slider-rho').focus();
     await page.keyboard.press('ArrowRight');
     const c2 = compareForward(tool(5.1, 0.05));
@@ -135,7 +139,7 @@ describe('teaching views in headless Chromium', () => {
     await expect.poll(() => page.getByTestId('stepper-counter').textContent()).toMatch(/^step 1 of/);
     await page.getByTestId('stepper-last').click();
     const trace = traceProcedure(tool(5, 0.1));
-    await expect.poll(() => caption.textContent()).toContain(`converged. L/2 = ${trace.halfIntervalMm.toFixed(6)} mm`);
+    await expect.poll(() => caption.textContent()).toContain(`converged. L/2 = ${trace.right.widthMm.toFixed(6)} mm`);
     expect(await caption.textContent()).toContain(
       `exact solver gives ${exactHalfIntervalMm(tool(5, 0.1)).toFixed(6)} mm`,
     );
@@ -170,13 +174,13 @@ describe('teaching views in headless Chromium', () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&L=3&mode=inverse&unit=mm&view=formulas');
     const sekine = page.getByTestId('formulas').locator('section[data-procedure="sekine"]');
     await sekine.locator('math').first().waitFor();
-    const h = exactScallopHeightMm({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, halfIntervalMm: 1.5 });
+    const h = exactScallopHeightMm({ ...tool(5, 0), intervalMm: 3 });
     const c = compareForward(tool(5, h));
-    if (!c.sekine.ok) throw new Error('applicable');
+    if (!c.approximations.sekine.ok) throw new Error('applicable');
     const last = sekine.locator('math').last();
     await expect
       .poll(() => last.textContent())
-      .toMatch(new RegExp(`=${String(Number(c.sekine.halfIntervalMm.toPrecision(5)))}$`));
+      .toMatch(new RegExp(`=${String(Number(c.approximations.sekine.halfIntervalMm.toPrecision(5)))}$`));
     expect(
       await page.getByTestId('formulas').locator('section[data-procedure="exact"] math').last().textContent(),
     ).toMatch(/=1\.5$/);

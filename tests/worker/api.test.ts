@@ -1,26 +1,22 @@
 import { describe, expect, it } from 'vitest';
-import { compareForward, exactScallopHeightMm } from '../../src/core/index';
+import { compareForward, exactScallopHeightMm, forwardInput, inverseInput } from '../../src/core/index';
 import { solve, transferables } from '../../src/worker/api';
+
+const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 
 describe('worker solver API (plain data in, plain data out)', () => {
   it('forward: rows match the solver core, each with the scallop its own L really leaves', () => {
     const reply = solve({ id: 7, mode: 'forward', R: 3, Rcr: 1, rho: 5, value: 0.05 });
     if (!reply.ok) throw new Error('expected a solution');
     expect(reply.id).toBe(7);
-    const c = compareForward({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, scallopHeightMm: 0.05 });
+    const c = compareForward(forwardInput(TOOL, 'one-way', 0.05));
     expect(reply.halfIntervalMm).toBe(c.exact.halfIntervalMm);
     const sekine = reply.rows.find((r) => r.key === 'sekine');
-    if (!c.sekine.ok || !sekine?.valueMm) throw new Error('sekine applicable here');
-    expect(sekine.valueMm).toBe(c.sekine.halfIntervalMm);
-    expect(sekine.realScallopMm).toBe(
-      exactScallopHeightMm({
-        toolRadiusMm: 3,
-        cornerRadiusMm: 1,
-        leadAngleDeg: 5,
-        halfIntervalMm: c.sekine.halfIntervalMm,
-      }),
-    );
-    expect(sekine.modelRadiusMm).toBe(c.sekine.effectiveRadiusMm);
+    const sek = c.approximations.sekine;
+    if (!sek.ok || !sekine?.valueMm) throw new Error('sekine applicable here');
+    expect(sekine.valueMm).toBe(sek.halfIntervalMm);
+    expect(sekine.realScallopMm).toBe(exactScallopHeightMm(inverseInput(TOOL, 'one-way', 2 * sek.halfIntervalMm)));
+    expect(sekine.modelRadiusMm).toBe(sek.effectiveRadiusMm);
     expect(reply.geometry?.toolPositions.length).toBeGreaterThan(0);
     // Every large array is listed for transfer, none twice.
     const buffers = transferables(reply);
@@ -59,12 +55,7 @@ describe('worker solver API (plain data in, plain data out)', () => {
     // Regression: the formulas view once read the inverse rows (heights) as L/2.
     const inverse = solve({ id: 6, mode: 'inverse', R: 3, Rcr: 1, rho: 5, value: 3, withViews: true });
     if (!inverse.ok || !inverse.teaching) throw new Error('expected teaching data');
-    const c = compareForward({
-      toolRadiusMm: 3,
-      cornerRadiusMm: 1,
-      leadAngleDeg: 5,
-      scallopHeightMm: inverse.scallopHeightMm,
-    });
+    const c = compareForward(forwardInput(TOOL, 'one-way', inverse.scallopHeightMm)).approximations;
     const m = inverse.teaching.models;
     if (!c.sekine.ok || !c.redonnet.ok || !c.bedi.ok) throw new Error('all three apply here');
     expect(m.sekine?.halfIntervalMm).toBe(c.sekine.halfIntervalMm);
@@ -78,7 +69,7 @@ describe('trace frames for the step-through', () => {
   it('start at Eq. 1, pass the single contact, and end on the exact L/2', async () => {
     const { traceFrames } = await import('../../src/worker/api');
     const { exactHalfIntervalMm } = await import('../../src/core/exact');
-    const input = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, scallopHeightMm: 0.1 };
+    const input = forwardInput(TOOL, 'one-way', 0.1);
     const frames = traceFrames(input);
     expect(frames[0]?.phase).toBe('approach');
     expect(frames.some((f) => f.phase === 'single-contact')).toBe(true);

@@ -1,0 +1,108 @@
+/**
+ * The one registry of procedures: key, labels, equations, colour and what each assumes.
+ * Every view, table, chart and the command line read their names and colours from here.
+ */
+
+/** Every procedure the calculator reports, exact first. */
+export const PROCEDURE_KEYS = ['exact', 'sekine', 'redonnet', 'bedi', 'osculating', 'cornerBall'] as const;
+
+export type ProcedureKey = (typeof PROCEDURE_KEYS)[number];
+
+/** The approximations (every procedure but the exact one). */
+export type ApproximationKey = Exclude<ProcedureKey, 'exact'>;
+
+export const APPROXIMATION_KEYS: readonly ApproximationKey[] = PROCEDURE_KEYS.filter(
+  (k): k is ApproximationKey => k !== 'exact',
+);
+
+/** The paper's three published procedures: lead-only models. */
+export const PAPER_PROCEDURE_KEYS = ['sekine', 'redonnet', 'bedi'] as const;
+
+export type PaperProcedureKey = (typeof PAPER_PROCEDURE_KEYS)[number];
+
+export interface ProcedureInfo {
+  readonly key: ProcedureKey;
+  /** Full label with its equations, as in the results table and the command line. */
+  readonly label: string;
+  /** Short label for legends and charts. */
+  readonly shortLabel: string;
+  /** Equations of the forward problem (scallop height to path interval). */
+  readonly forwardEquations: string;
+  /** Equations of the inverse problem (path interval to scallop height). */
+  readonly inverseEquations: string;
+  /** Colour in every view (hex), chosen for contrast on light and dark backgrounds. */
+  readonly colour: string;
+  /** One sentence: the model and where it holds. */
+  readonly assumes: string;
+  /** True for a model built on the lead angle alone (tilt ignored). */
+  readonly leadOnly: boolean;
+}
+
+export const PROCEDURES: Readonly<Record<ProcedureKey, ProcedureInfo>> = {
+  exact: {
+    key: 'exact',
+    label: 'Exact (3D geometry)',
+    shortLabel: 'Exact (3D)',
+    forwardEquations: 'projection of the tool along the feed',
+    inverseEquations: 'projection of the tool along the feed',
+    colour: '#111827',
+    assumes:
+      'True 3D: the tool moves along X, so the surface it leaves is its projection along X, the ring ellipse offset by Rcr (rotated by the tilt). Valid for every posture, ball and flat ends included.',
+    leadOnly: false,
+  },
+  sekine: {
+    key: 'sekine',
+    label: 'Sekine et al. (Eqs. 4-8)',
+    shortLabel: 'Sekine et al.',
+    forwardEquations: 'Eqs. 4-8',
+    inverseEquations: 'Eq. 12',
+    colour: '#b45309',
+    assumes:
+      "True-circular approximation: an ellipse from the tool centre height replaced by one circle of radius Reff. It ignores where the real profile's curvature changes, so it is far off at small lead.",
+    leadOnly: true,
+  },
+  redonnet: {
+    key: 'redonnet',
+    label: 'Redonnet et al. (Eqs. 9, 8)',
+    shortLabel: 'Redonnet et al.',
+    forwardEquations: 'Eqs. 9, 8',
+    inverseEquations: 'Eq. 12',
+    colour: '#7c3aed',
+    assumes:
+      'Osculating circle at the lowest point without tilt: exact as h tends to 0, then it overestimates L because the real profile curves up faster.',
+    leadOnly: true,
+  },
+  bedi: {
+    key: 'bedi',
+    label: 'Bedi et al. (Eqs. 10-11)',
+    shortLabel: 'Bedi et al.',
+    forwardEquations: 'Eqs. 10-11',
+    inverseEquations: 'Eq. 13',
+    colour: '#0e7490',
+    assumes:
+      'Elliptic projection: one ellipse with semi-axes Rlong and Rlong sin(rho) stands for the offset ellipse. Close without tilt, but an offset ellipse is not an ellipse; it breaks down at rho = 0.',
+    leadOnly: true,
+  },
+  osculating: {
+    key: 'osculating',
+    label: 'Osculating circle at the contact',
+    shortLabel: 'Osculating circle',
+    forwardEquations: 'Reff = Rcr + a^2 b^2 / D0^3',
+    inverseEquations: 'h = Reff - sqrt(Reff^2 - (L/2)^2)',
+    colour: '#15803d',
+    assumes:
+      "Redonnet's idea for any posture: the circle that osculates the exact profile at the contact point. Exact as h tends to 0; symmetric, so it misses the asymmetry that tilt brings.",
+    leadOnly: false,
+  },
+  cornerBall: {
+    key: 'cornerBall',
+    label: 'Ball of the corner radius',
+    shortLabel: 'Corner ball',
+    forwardEquations: 'L/2 = sqrt(2 Rcr h - h^2)',
+    inverseEquations: 'h = Rcr - sqrt(Rcr^2 - (L/2)^2)',
+    colour: '#be185d',
+    assumes:
+      'Treats the bull-nose tool as a ball end of radius Rcr, as some online calculators do: exact only for a ball end, and far too small a step-over when the lead or tilt brings the flat bottom into play.',
+    leadOnly: false,
+  },
+};
