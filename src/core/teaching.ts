@@ -15,12 +15,14 @@ import {
   sekineModel,
   sekineScallopHeight,
 } from './approximations';
+import { compareForward } from './compare';
 import { exactIntervalMm, exactScallopHeightMm } from './exact';
 import { profilePolyline } from './geometry';
 import { PAPER_CONDITIONS, type PaperCondition, type ProcedureValues } from './paper';
 import { shapeOfTool } from './posture';
+import { PROCEDURE_KEYS, type ProcedureKey } from './procedures';
 import type { ForwardInput, InverseInput, PassPattern, ToolInput } from './validate';
-import { forwardInput, inverseInput, scallopHeightLimits } from './validate';
+import { forwardInput, inverseInput, leavesNoScallop, scallopHeightLimits } from './validate';
 
 /** Cross-feed curves as flat (y, z) arrays, z above the contact, y from the contact (mm). */
 export interface ProfileCurves {
@@ -212,4 +214,68 @@ export function paperTables(): PaperTableRow[] {
       computedHeight: heightsAt(inverseInput(input, 'one-way', 2 * c.printedHalf.threeD)),
     };
   });
+}
+
+/** Step-over L of every procedure along one posture angle (mm; null where a procedure has none). */
+export interface StepOverSweep {
+  /** Which angle varies: the lead rho or the tilt beta (degrees). */
+  readonly axis: 'lead' | 'tilt';
+  readonly angleDeg: number[];
+  readonly values: { readonly [K in ProcedureKey]: Array<number | null> };
+}
+
+/**
+ * Sweeps the lead (geometrically from `fromDeg` to `toDeg`, dense at small angles) or the tilt
+ * (linearly from `fromDeg` to `toDeg`) at a fixed tool, the other angle, pattern and h, always
+ * including `includeDeg` when given. Every procedure's step-over L; null where h is at or above
+ * the posture's limit, or where a procedure has no answer.
+ * @param tool validated tool (the swept angle's value in it is ignored).
+ */
+export function stepOverSweep(
+  tool: ToolInput,
+  pattern: PassPattern,
+  h: number,
+  axis: 'lead' | 'tilt',
+  fromDeg: number,
+  toDeg: number,
+  steps = 120,
+  includeDeg: number | null = null,
+): StepOverSweep {
+  const angles: number[] = [];
+  for (let i = 0; i <= steps; i++) {
+    const u = i / steps;
+    angles.push(
+      i === steps
+        ? toDeg
+        : axis === 'lead' && fromDeg > 0
+          ? fromDeg * (toDeg / fromDeg) ** u
+          : fromDeg + (toDeg - fromDeg) * u,
+    );
+  }
+  if (includeDeg !== null && includeDeg >= fromDeg && includeDeg <= toDeg && !angles.includes(includeDeg)) {
+    angles.push(includeDeg);
+    angles.sort((a, b) => a - b);
+  }
+  const values = Object.fromEntries(PROCEDURE_KEYS.map((k) => [k, [] as Array<number | null>])) as {
+    [K in ProcedureKey]: Array<number | null>;
+  };
+  for (const angle of angles) {
+    const t: ToolInput = {
+      toolRadiusMm: tool.toolRadiusMm,
+      cornerRadiusMm: tool.cornerRadiusMm,
+      leadAngleDeg: axis === 'lead' ? angle : tool.leadAngleDeg,
+      tiltAngleDeg: axis === 'tilt' ? angle : tool.tiltAngleDeg,
+    };
+    const ok = h < scallopHeightLimits(t).limitMm || leavesNoScallop(t);
+    const c = ok ? compareForward(forwardInput(t, pattern, h)) : null;
+    for (const key of PROCEDURE_KEYS) {
+      if (c === null) values[key].push(null);
+      else if (key === 'exact') values[key].push(c.exact.intervalMm);
+      else {
+        const r = c.approximations[key];
+        values[key].push(r.ok ? r.intervalMm : null);
+      }
+    }
+  }
+  return { axis, angleDeg: angles, values };
 }

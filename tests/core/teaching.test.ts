@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { bediHalfInterval, redonnetHalfInterval, sekineHalfInterval } from '../../src/core/approximations';
 import { exactForward, exactIntervalMm } from '../../src/core/exact';
 import { PAPER_CONDITIONS } from '../../src/core/paper';
-import { paperTables, profileCurves, rhoSweep } from '../../src/core/teaching';
+import { paperTables, profileCurves, rhoSweep, stepOverSweep } from '../../src/core/teaching';
 import { forwardInput } from '../../src/core/validate';
 
 const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
@@ -99,4 +99,32 @@ describe("the paper's tables recomputed (every row, every procedure)", () => {
         expect(Math.abs(r.computedHeight[key] - c.printedHeight[key]), key).toBeLessThan(0.001);
     });
   }
+});
+
+describe('step-over sweeps along lead and tilt', () => {
+  it('tilt sweep: symmetric in the tilt for one-way passes, the exact value at the current tilt, null past the limit', () => {
+    const s = stepOverSweep(tool, 'one-way', 0.05, 'tilt', -60, 60, 24, 7);
+    const i = s.angleDeg.indexOf(7);
+    expect(s.values.exact[i]).toBe(exactIntervalMm(forwardInput({ ...tool, tiltAngleDeg: 7 }, 'one-way', 0.05)));
+    const at = (deg: number) => s.values.exact[s.angleDeg.indexOf(deg)] as number;
+    expect(Math.abs(at(-30) - at(30))).toBeLessThan(1e-12);
+    // Tilt shrinks the one-way step-over of this tool (issue figures: 2.887 at 0, 1.879 at 5 degrees).
+    expect(at(0)).toBeGreaterThan(at(30));
+    // The paper's lead-only models do not see the tilt: constant along the sweep.
+    const sek = s.values.sekine.filter((v): v is number => v !== null);
+    expect(Math.max(...sek) - Math.min(...sek)).toBeLessThan(1e-12);
+    // h = 1.5 is above every posture's limit of this tool at a 5 degree lead: nothing there.
+    expect(stepOverSweep(tool, 'one-way', 1.5, 'tilt', -60, 60, 8).values.exact.every((v) => v === null)).toBe(true);
+  });
+
+  it('lead sweep: geometric spacing and the exact step-over at each sample', () => {
+    const s = stepOverSweep(tool, 'zigzag', 0.05, 'lead', 0.5, 89, 10);
+    expect(s.angleDeg[0]).toBe(0.5);
+    expect(s.angleDeg[10]).toBe(89);
+    expect((s.angleDeg[1] as number) / (s.angleDeg[0] as number)).toBeCloseTo((89 / 0.5) ** 0.1, 12);
+    const k = 4;
+    expect(s.values.exact[k]).toBe(
+      exactIntervalMm(forwardInput({ ...tool, leadAngleDeg: s.angleDeg[k] as number }, 'zigzag', 0.05)),
+    );
+  });
 });
