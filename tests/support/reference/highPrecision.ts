@@ -75,12 +75,14 @@ import Decimal from 'decimal.js';
 /** Default number of working significant digits. */
 export const DEFAULT_WORKING_DIGITS = 64;
 
-interface Point {
+/** A point of the profile (mm): Y and Z relative to O, or width and height relative to the contact. */
+export interface Point {
   readonly y: Decimal;
   readonly z: Decimal;
 }
 
-type Side = 'right' | 'left';
+/** A flank: right is +Y. */
+export type Side = 'right' | 'left';
 
 /**
  * The exact profile in high precision: every quantity as a `Decimal` of the constructor
