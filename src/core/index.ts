@@ -8,6 +8,8 @@ export * from './geometry';
 export * from './placement';
 export * from './posture';
 export * from './procedures';
+export * from './roughness';
+export * from './simulation';
 export * from './trace';
 export * from './units';
 export * from './validate';

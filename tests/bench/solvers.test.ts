@@ -21,6 +21,10 @@ describe('npm run bench', () => {
       'sekineNsPerCall',
       'redonnetNsPerCall',
       'bediNsPerCall',
+      'roughnessNsPerCall',
+      'targetRaNsPerCall',
+      'simulationMsMedian',
+      'simulationCellsPerSecond',
     ]) {
       expect(last[key]).toBeGreaterThan(0);
     }
