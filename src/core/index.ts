@@ -3,6 +3,7 @@
  */
 export * from './approximations';
 export * from './compare';
+export * from './cylinder';
 export * from './exact';
 export * from './geometry';
 export * from './placement';

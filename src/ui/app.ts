@@ -582,7 +582,7 @@ export class CalculatorApp {
 
 function fieldOf(field: FieldName): FieldKey | null {
   if (field === 'interval') return 'L';
-  return field === 'tilt' || field === 'pattern' ? null : field;
+  return field === 'tilt' || field === 'pattern' || field === 'surfaceRadius' || field === 'surfaceAxis' ? null : field;
 }
 
 export type { Unit };

@@ -20,6 +20,7 @@ describe('validateForward', () => {
         leadAngleDeg: 5,
         tiltAngleDeg: 0,
         pattern: 'one-way',
+        surface: { kind: 'plane' },
         scallopHeightMm: 0.05,
       },
     });

@@ -1,0 +1,567 @@
+/**
+ * Exact step-over on cylinders (shared/notes/posture-and-surfaces.md, "Curved surfaces"): convex
+ * (Rs > 0, axis Rs below the contact) or concave (Rs < 0, axis |Rs| above), with the axis along the
+ * feed or across it, any posture, one-way or zigzag. Scallop heights are measured radially. Lengths
+ * mm, angles radians. Frame: the contact of the pass at the origin, X feed, Z the surface normal.
+ *
+ * Axis along the feed. A pass translates along X, so it leaves the plane profile of posture.ts; the
+ * next pass is that profile turned about the axis by phi = L / |Rs|. In polar coordinates about the
+ * axis (angle measured from the contact), a flank at radius r = |Rs| + s h (s = +1 convex, -1
+ * concave) lies at a polar angle A(h); the cusp of a right and a left flank sits where
+ * A_R + A_L = phi (one-way) and the zigzag cusps where A = phi / 2. The flank point at that radius is
+ * the section whose profile point (Y, H) satisfies
+ *
+ *   G(delta) = Y^2 + (H - h)(H + h + 2 Rs) = 0            (|(Y, H) - C| = r, without cancellation)
+ *
+ * and the angle is taken, as on the plane, as a maximum over sections: the ring point's polar angle
+ * plus the half-angle its ball subtends at radius r (law of cosines in half-angle form), which is
+ * second-order insensitive to the root's error.
+ *
+ * Axis across the feed. A pass turns the tool about the axis (along Y); revolving a ball of radius
+ * Rcr centred at e gives, in the meridian plane (Y, rho = distance from the axis), the circle of
+ * radius Rcr around (e_y, rho(e)). So the revolved profile is the offset by Rcr of the bottom disk's
+ * image: its lower boundary B(y) = min of rho over the disk's chord at y (convex; closed form: the
+ * foot of the axis on the chord, or a chord end) or upper boundary U(y) = max (concave: a chord end).
+ * A flank's width at radius r is the maximum over y of y + sqrt(Rcr^2 - (B(y) - r)^2), found by a scan
+ * and golden-section search to the last bits. The next pass is that profile translated by L.
+ *
+ * The shank (the cylinder of radius R above the corner) is checked exactly for axis = feed (radially,
+ * where its silhouette leaves the profile); for axis = cross the plane's shank heights are used.
+ *
+ * Gouging (concave). The tool end must stay inside the cylinder except at the contact: every ring
+ * point e (relative to the contact, seen along the feed for axis = feed, along the axis for
+ * axis = cross) needs |Rs| >= (E^2 + E_z^2 - Rcr^2) / (2 (E_z - Rcr)), E its horizontal offset. The
+ * smallest admissible radius is the maximum of that over the ring.
+ */
+import { type Placement, placeTool } from './placement';
+import { type Flank, type FlankLimits, flankLimits, flankSign, type PostureShape } from './posture';
+import type { ToolInput } from './validate';
+
+/** Which way the cylinder's axis runs: along the feed (passes along it) or across (passes around it). */
+export type SurfaceAxis = 'feed' | 'cross';
+
+/** A cylinder: signed radius (convex > 0, concave < 0) and axis orientation. */
+export interface CylinderSurface {
+  readonly kind: 'cylinder';
+  readonly radiusMm: number;
+  readonly axis: SurfaceAxis;
+}
+
+/** The design surface: a plane, or a cylinder. */
+export type Surface = { readonly kind: 'plane' } | CylinderSurface;
+
+export const PLANE: Surface = { kind: 'plane' };
+
+// ---------------------------------------------------------------------------------------------
+// Axis along the feed
+
+interface FeedPoint {
+  /** Polar angle from the contact, about the axis, radians (>= 0 towards the flank). */
+  readonly angleRad: number;
+  /** Radial scallop height: |distance from axis - |Rs||, mm. */
+  readonly heightMm: number;
+}
+
+/** The profile point of section delta on the flank `sign`: width Y and height H above the contact. */
+function profilePoint(s: PostureShape, sign: number, delta: number): { y: number; h: number; ey: number; ez: number } {
+  const sinT0 = sign * s.sinT0;
+  const sinPhi = sign * s.sinPhi;
+  const sinH = Math.sin(delta / 2);
+  const cosH = Math.cos(delta / 2);
+  const sinD = 2 * sinH * cosH;
+  const cosD = (cosH - sinH) * (cosH + sinH);
+  const sinT = sinT0 * cosD + s.cosT0 * sinD;
+  const cosT = s.cosT0 * cosD - sinT0 * sinD;
+  const sinM = sinT0 * cosH + s.cosT0 * sinH;
+  const cosM = s.cosT0 * cosH - sinT0 * sinH;
+  const dz = 2 * s.d0 * sinH * sinH;
+  const dy = 2 * sinH * (s.a * s.cosPhi * cosM + s.b * sinPhi * sinM);
+  const nSin = s.d0 * sinD;
+  const nCos = s.a * s.cosPhi * cosT + s.b * sinPhi * sinT;
+  const n = Math.sqrt(nSin * nSin + nCos * nCos);
+  // Profile normal (sin theta, cos theta); where a corner collapses (b = 0, n = 0) take the ring point.
+  const st = n > 0 ? nSin / n : 0;
+  const ct = n > 0 ? nCos / n : 1;
+  const corner = (s.rcr * (st * st)) / (1 + ct);
+  return { y: dy + s.rcr * st, h: dz + corner, ey: dy, ez: dz + s.rcr };
+}
+
+/**
+ * Polar angle of a flank point at radial height h on a cylinder with the axis along the feed, and
+ * the flank's radial limits. Bracketed root of G(delta) on [0, top], bisection-safe.
+ */
+function feedAngleAtHeight(s: PostureShape, flank: Flank, rs: number, h: number, deltaTop: number): number {
+  const sign = flankSign(flank);
+  const G = (d: number) => {
+    const p = profilePoint(s, sign, d);
+    return p.y * p.y + (p.h - h) * (p.h + h + 2 * rs);
+  };
+  let lo = 0;
+  let hi = deltaTop;
+  let gLo = G(lo);
+  // G(0) = -h (h + 2 Rs) < 0 for convex; > 0 for concave (it falls from there).
+  const falling = gLo > 0;
+  let gHi = G(hi);
+  for (let i = 0; i < 200 && hi - lo > 1e-16 * Math.max(hi, 1e-300); i++) {
+    // Illinois regula falsi, with bisection when it stalls.
+    let m = lo - (gLo * (hi - lo)) / (gHi - gLo);
+    if (!(m > lo && m < hi) || i % 4 === 3) m = 0.5 * (lo + hi);
+    const gm = G(m);
+    if (gm === 0) {
+      lo = m;
+      hi = m;
+      break;
+    }
+    // Before the root G has the sign it has at the contact (negative convex, positive concave).
+    const beforeRoot = falling ? gm > 0 : gm < 0;
+    if (beforeRoot) {
+      lo = m;
+      gLo = gm;
+      gHi /= 2;
+    } else {
+      hi = m;
+      gHi = gm;
+      gLo /= 2;
+    }
+  }
+  const delta = 0.5 * (lo + hi);
+  return feedAngleOfSection(s, sign, delta, rs, h);
+}
+
+/**
+ * The polar angle reached by the ball of section delta at radius r = |Rs| + s h: the ring point's
+ * angle plus the half-angle its ball subtends (0 when it does not reach r).
+ */
+function feedAngleOfSection(s: PostureShape, sign: number, delta: number, rs: number, h: number): number {
+  const p = profilePoint(s, sign, delta);
+  const side = rs > 0 ? 1 : -1;
+  // Ring point relative to the axis C = (0, -Rs): (ey, ez + Rs); polar angle from C's direction to the contact.
+  const qz = p.ez + rs;
+  const alpha = Math.atan2(p.ey, side * qz);
+  const de = Math.sqrt(p.ey * p.ey + qz * qz);
+  const r = Math.abs(rs + h);
+  // d_e^2 - r^2 = ey^2 + (ez - h)(ez + h + 2 Rs), without cancellation.
+  const diff = (p.ey * p.ey + (p.ez - h) * (p.ez + h + 2 * rs)) / (de + r);
+  const rcr = s.rcr;
+  if (!(rcr > 0) || !(Math.abs(diff) < rcr)) return alpha;
+  const half = Math.sqrt(((rcr - diff) * (rcr + diff)) / (4 * de * r));
+  return alpha + 2 * Math.asin(Math.min(1, half));
+}
+
+/** Height (radial) of the flank point at polar angle beta (the inverse), by the same root approach. */
+function feedHeightAtAngle(s: PostureShape, flank: Flank, rs: number, beta: number, deltaTop: number): number {
+  const sign = flankSign(flank);
+  const side = rs > 0 ? 1 : -1;
+  const cb = Math.cos(beta);
+  const sb = Math.sin(beta);
+  // J = Y cos(beta) - (|Rs| + s H) sin(beta): the profile point's angle against beta.
+  const J = (d: number) => {
+    const p = profilePoint(s, sign, d);
+    return p.y * cb - (Math.abs(rs) + side * p.h) * sb;
+  };
+  let lo = 0;
+  let hi = deltaTop;
+  let jLo = J(lo);
+  let jHi = J(hi);
+  for (let i = 0; i < 200 && hi - lo > 1e-16 * Math.max(hi, 1e-300); i++) {
+    let m = lo - (jLo * (hi - lo)) / (jHi - jLo);
+    if (!(m > lo && m < hi) || i % 4 === 3) m = 0.5 * (lo + hi);
+    const jm = J(m);
+    if (jm === 0) {
+      lo = m;
+      hi = m;
+      break;
+    }
+    if (jm > 0) {
+      hi = m;
+      jHi = jm;
+      jLo /= 2;
+    } else {
+      lo = m;
+      jLo = jm;
+      jHi /= 2;
+    }
+  }
+  // The radius along the ray at beta through the section's ball: the entry (convex) or exit
+  // (concave) distance, second-order insensitive to the section's error.
+  const p = profilePoint(s, sign, 0.5 * (lo + hi));
+  const qy = p.ey;
+  const qz = p.ez + rs;
+  // Ray direction from C: (sin beta, side cos beta).
+  const te = qy * sb + side * qz * cb;
+  const perp = qy * side * cb - qz * sb;
+  const rcr = s.rcr;
+  const reach = Math.sqrt(Math.max(0, rcr * rcr - perp * perp));
+  const r = side > 0 ? te - reach : te + reach;
+  return side * (r - Math.abs(rs));
+}
+
+/** Ring-angle offset where the plane flank's normal turns horizontal (its widest point). */
+function planeTop(s: PostureShape, sign: number): number {
+  if (s.flatOnPlane) return Math.PI / 2;
+  if (s.a === 0) return 0;
+  return Math.atan2(s.a * s.b, (s.a * s.a - s.b * s.b) * sign * s.sinPhi * s.cosPhi);
+}
+
+/** Where a flank's radial height stops growing on a concave cylinder: its normal passes through the axis. */
+function concaveTop(s: PostureShape, sign: number, rs: number, top: number): number {
+  // F = radial distance to the axis along the flank: it falls from the contact while the normal
+  // points away from the axis. Golden-section search for its minimum on [0, top].
+  const dist2 = (d: number) => {
+    const p = profilePoint(s, sign, d);
+    return p.y * p.y + (p.h + rs) * (p.h + rs);
+  };
+  let a = 0;
+  let b = top;
+  const g = (Math.sqrt(5) - 1) / 2;
+  let c = b - g * (b - a);
+  let e = a + g * (b - a);
+  let fc = dist2(c);
+  let fe = dist2(e);
+  for (let i = 0; i < 200 && b - a > 1e-15 * Math.max(b, 1e-300); i++) {
+    if (fc < fe) {
+      b = e;
+      e = c;
+      fe = fc;
+      c = b - g * (b - a);
+      fc = dist2(c);
+    } else {
+      a = c;
+      c = e;
+      fc = fe;
+      e = a + g * (b - a);
+      fe = dist2(e);
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+/** Radial height of section delta's profile point, signed towards the material (mm). */
+function radialHeight(s: PostureShape, sign: number, delta: number, rs: number): number {
+  const p = profilePoint(s, sign, delta);
+  const d = Math.sqrt(p.y * p.y + (p.h + rs) * (p.h + rs));
+  // d - |Rs| for convex, |Rs| - d for concave, from d^2 - Rs^2 = Y^2 + H (H + 2 Rs).
+  const num = p.y * p.y + p.h * (p.h + 2 * rs);
+  return rs > 0 ? num / (d + rs) : -num / (d - rs);
+}
+
+/** Radial limits of one flank on a cylinder with the axis along the feed (mm): wall and shank. */
+function feedFlankLimit(
+  s: PostureShape,
+  sign: number,
+  rs: number,
+): { topMm: number; shankMm: number | null; deltaTop: number } {
+  if (s.a === 0) {
+    // A ball end: the ring is one point and the flank is its circle (radius R), by normal angle
+    // theta: (R sin theta, R (1 - cos theta)); its top at theta = pi/2, the shank at pi/2 - |phi|.
+    const at = (theta: number) => {
+      const y = s.rcr * Math.sin(theta);
+      const half = Math.sin(theta / 2);
+      const h = 2 * s.rcr * half * half;
+      const d = Math.sqrt(y * y + (h + rs) * (h + rs));
+      const num = y * y + h * (h + 2 * rs);
+      return rs > 0 ? num / (d + rs) : -num / (d - rs);
+    };
+    const shankMm = sign * s.sinPhi > 0 ? at(Math.PI / 2 - Math.abs(s.phi)) : null;
+    return { topMm: at(Math.PI / 2), shankMm, deltaTop: 0 };
+  }
+  let top = planeTop(s, sign);
+  if (rs < 0) top = Math.min(top, concaveTop(s, sign, rs, top));
+  const topMm = radialHeight(s, sign, top, rs);
+  // The shank: it leaves the profile at the end of the ellipse's long axis (t = pi/2), on the side
+  // the tool leans to (posture.ts); radially, its height is that point's.
+  let shankMm: number | null = null;
+  if (sign * s.sinPhi > 0 && s.a > 0) {
+    const tShank = Math.PI / 2 - Math.atan2(sign * s.sinT0, s.cosT0);
+    if (tShank >= 0 && tShank < top) shankMm = radialHeight(s, sign, tShank, rs);
+  }
+  return { topMm, shankMm, deltaTop: top };
+}
+
+function limitsOf(
+  topRightMm: number,
+  topLeftMm: number,
+  shankRightMm: number | null,
+  shankLeftMm: number | null,
+): FlankLimits {
+  const candidates: Array<[number, FlankLimits['limitBy']]> = [];
+  if (shankRightMm !== null) candidates.push([shankRightMm, 'shank-right']);
+  if (shankLeftMm !== null) candidates.push([shankLeftMm, 'shank-left']);
+  candidates.push([topRightMm, 'right-flank'], [topLeftMm, 'left-flank']);
+  let best = candidates[0] as [number, FlankLimits['limitBy']];
+  for (const c of candidates) if (c[0] < best[0]) best = c;
+  return { topRightMm, topLeftMm, shankRightMm, shankLeftMm, limitMm: best[0], limitBy: best[1] };
+}
+
+// ---------------------------------------------------------------------------------------------
+// Axis across the feed
+
+/** The bottom disk's chords in meridian coordinates: distance from the axis along a chord at y. */
+interface Chords {
+  readonly yLo: number;
+  readonly yHi: number;
+  /** Lowest (convex) or highest (concave) distance from the axis on the chord at y. */
+  rho(y: number): number;
+}
+
+function crossChords(p: Placement, rs: number): Chords {
+  const rb = p.ringRadiusMm;
+  const { centre, v1, v2 } = p;
+  const gy1 = v1[1];
+  const gy2 = v2[1];
+  const G = Math.sqrt(gy1 * gy1 + gy2 * gy2);
+  const axisZ = -rs;
+  const concave = rs < 0;
+  // A disk point: centre + u v1 + w v2 (u^2 + w^2 <= Rb^2); its distance from the axis (along Y,
+  // through (x = 0, z = -Rs)): sqrt(x^2 + (z - axisZ)^2).
+  const dist = (u: number, w: number) => {
+    const x = centre[0] + u * v1[0] + w * v2[0];
+    const z = centre[2] + u * v1[2] + w * v2[2] - axisZ;
+    return Math.sqrt(x * x + z * z);
+  };
+  if (!(rb > 0) || !(G > 0)) {
+    // A ball end (one point), or a disk seen edge-on along Y (all at one y): a single chord.
+    const y = centre[1];
+    const ends = rb > 0 ? [dist(rb, 0), dist(-rb, 0), dist(0, rb), dist(0, -rb)] : [dist(0, 0)];
+    return { yLo: y, yHi: y, rho: () => (concave ? Math.max(...ends) : Math.min(...ends)) };
+  }
+  return {
+    yLo: centre[1] - rb * G,
+    yHi: centre[1] + rb * G,
+    rho(y) {
+      const c = Math.min(rb * G, Math.max(-rb * G, y - centre[1]));
+      // Chord: (u, w) = c g / G^2 + tau g_perp / G, |tau| <= sqrt(Rb^2 - c^2 / G^2).
+      const u0 = (c * gy1) / (G * G);
+      const w0 = (c * gy2) / (G * G);
+      const du = -gy2 / G;
+      const dw = gy1 / G;
+      const tMax = Math.sqrt(Math.max(0, rb * rb - (c * c) / (G * G)));
+      const a = dist(u0 + tMax * du, w0 + tMax * dw);
+      const b = dist(u0 - tMax * du, w0 - tMax * dw);
+      if (concave) return Math.max(a, b);
+      // Convex: the distance along a straight chord is convex; its minimum is at the foot of the
+      // axis on the chord's line (clipped to the chord).
+      const x0 = centre[0] + u0 * v1[0] + w0 * v2[0];
+      const z0 = centre[2] + u0 * v1[2] + w0 * v2[2] - axisZ;
+      const dx = du * v1[0] + dw * v2[0];
+      const dz = du * v1[2] + dw * v2[2];
+      const den = dx * dx + dz * dz;
+      const tau = den > 0 ? Math.min(tMax, Math.max(-tMax, -(x0 * dx + z0 * dz) / den)) : 0;
+      return Math.min(a, b, dist(u0 + tau * du, w0 + tau * dw));
+    },
+  };
+}
+
+/**
+ * Width of a flank of the revolved profile at radial height h (axis across the feed): the largest
+ * distance out from the contact (along Y) at which some chord's circle reaches radius |Rs| + s h.
+ */
+function crossWidthAtHeight(ch: Chords, sign: number, rcr: number, rs: number, h: number, contactY: number): number {
+  const side = rs > 0 ? 1 : -1;
+  const r = Math.abs(rs) + side * h;
+  // Reach of the chord at y: its circle (radius Rcr around (y, rho)) at radius r.
+  const reach = (y: number) => {
+    const gap = side * (ch.rho(y) - r);
+    if (gap <= 0) return rcr;
+    return gap < rcr ? Math.sqrt((rcr - gap) * (rcr + gap)) : Number.NEGATIVE_INFINITY;
+  };
+  const f = (y: number) => sign * (y - contactY) + reach(y);
+  const lo = ch.yLo;
+  const hi = ch.yHi;
+  if (!(hi > lo)) return f(lo);
+  // Scan for the best sample, then golden-section search around it.
+  const n = 64;
+  let best = 0;
+  let fBest = Number.NEGATIVE_INFINITY;
+  for (let i = 0; i <= n; i++) {
+    const v = f(lo + ((hi - lo) * i) / n);
+    if (v > fBest) {
+      fBest = v;
+      best = i;
+    }
+  }
+  let a = lo + ((hi - lo) * Math.max(0, best - 1)) / n;
+  let b = lo + ((hi - lo) * Math.min(n, best + 1)) / n;
+  const g = (Math.sqrt(5) - 1) / 2;
+  let c = b - g * (b - a);
+  let e = a + g * (b - a);
+  let fc = f(c);
+  let fe = f(e);
+  for (let i = 0; i < 200 && b - a > 1e-16 * Math.max(Math.abs(a), Math.abs(b), 1e-300); i++) {
+    if (fc > fe) {
+      b = e;
+      e = c;
+      fe = fc;
+      c = b - g * (b - a);
+      fc = f(c);
+    } else {
+      a = c;
+      c = e;
+      fc = fe;
+      e = a + g * (b - a);
+      fe = f(e);
+    }
+  }
+  return Math.max(fBest, fc, fe, f(a), f(b));
+}
+
+/** Radial height of the revolved profile at a distance w out from the contact (the inverse). */
+function crossHeightAtWidth(ch: Chords, sign: number, rcr: number, rs: number, w: number, contactY: number): number {
+  const side = rs > 0 ? 1 : -1;
+  const Y = contactY + sign * w;
+  // The profile's radius at Y: min (convex) / max (concave) over chords within Rcr of Y of
+  // rho(y) -/+ sqrt(Rcr^2 - (Y - y)^2). Scan then golden search.
+  const lo = Math.max(ch.yLo, Y - rcr);
+  const hi = Math.min(ch.yHi, Y + rcr);
+  const f = (y: number) => {
+    const d = Y - y;
+    const v = Math.sqrt(Math.max(0, (rcr - d) * (rcr + d)));
+    return -side * (ch.rho(y) - side * v);
+  };
+  if (!(hi >= lo)) return Number.POSITIVE_INFINITY;
+  const n = 64;
+  let best = 0;
+  let fBest = Number.NEGATIVE_INFINITY;
+  for (let i = 0; i <= n; i++) {
+    const v = f(lo + ((hi - lo) * i) / n);
+    if (v > fBest) {
+      fBest = v;
+      best = i;
+    }
+  }
+  let a = lo + ((hi - lo) * Math.max(0, best - 1)) / n;
+  let b = lo + ((hi - lo) * Math.min(n, best + 1)) / n;
+  const g = (Math.sqrt(5) - 1) / 2;
+  let c = b - g * (b - a);
+  let e = a + g * (b - a);
+  let fc = f(c);
+  let fe = f(e);
+  for (let i = 0; i < 200 && b - a > 1e-16 * Math.max(Math.abs(a), Math.abs(b), 1e-300); i++) {
+    if (fc > fe) {
+      b = e;
+      e = c;
+      fe = fc;
+      c = b - g * (b - a);
+      fc = f(c);
+    } else {
+      a = c;
+      c = e;
+      fc = fe;
+      e = a + g * (b - a);
+      fe = f(e);
+    }
+  }
+  const radius = -side * Math.max(fBest, fc, fe);
+  return side * (radius - Math.abs(rs));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Public API
+
+/** A cylinder prepared for one tool and posture. */
+export interface CylinderSolver {
+  readonly surface: CylinderSurface;
+  /**
+   * Radial height limits: each flank's wall, and the shank where it cuts (exact for axis = feed;
+   * for axis = cross the plane's shank heights stand in, see the module comment), mm.
+   */
+  readonly limits: FlankLimits;
+  /**
+   * How far a flank reaches at radial height h: the polar angle about the axis (axis = feed,
+   * radians) or the distance along the axis from the contact (axis = cross, mm).
+   */
+  reach(flank: Flank, heightMm: number): number;
+  /** The inverse: radial height of a flank at that reach. */
+  heightAt(flank: Flank, reach: number): number;
+  /** Step-over (arc length on the surface for axis = feed, along the axis for cross) from reaches. */
+  intervalFromReach(reachMm: number): number;
+  /** The reach a step-over corresponds to. */
+  reachFromInterval(intervalMm: number): number;
+}
+
+/** Prepares the cylinder solver for a tool and posture. @param surface |Rs| > 0. */
+export function cylinderSolver(tool: ToolInput, surface: CylinderSurface): CylinderSolver {
+  const p = placeTool(tool);
+  const s = p.shape;
+  const rs = surface.radiusMm;
+  if (surface.axis === 'feed') {
+    const right = feedFlankLimit(s, 1, rs);
+    const left = feedFlankLimit(s, -1, rs);
+    return {
+      surface,
+      limits: limitsOf(right.topMm, left.topMm, right.shankMm, left.shankMm),
+      reach: (flank, h) => feedAngleAtHeight(s, flank, rs, h, flank === 'right' ? right.deltaTop : left.deltaTop),
+      heightAt: (flank, beta) =>
+        feedHeightAtAngle(s, flank, rs, beta, flank === 'right' ? right.deltaTop : left.deltaTop),
+      intervalFromReach: (angle) => Math.abs(rs) * angle,
+      reachFromInterval: (L) => L / Math.abs(rs),
+    };
+  }
+  const ch = crossChords(p, rs);
+  const side = rs > 0 ? 1 : -1;
+  const contactY = 0;
+  // The widest point of each flank: the chord at the end of the disk's Y range (one ring point).
+  const topAt = (y: number) => side * (ch.rho(y) - Math.abs(rs));
+  // The shank across the axis: the plane's heights stand in (the revolved shank is not modelled).
+  const plane = flankLimits(s);
+  return {
+    surface,
+    limits: limitsOf(topAt(ch.yHi), topAt(ch.yLo), plane.shankRightMm, plane.shankLeftMm),
+    reach: (flank, h) => crossWidthAtHeight(ch, flankSign(flank), p.cornerRadiusMm, rs, h, contactY),
+    heightAt: (flank, w) => crossHeightAtWidth(ch, flankSign(flank), p.cornerRadiusMm, rs, w, contactY),
+    intervalFromReach: (w) => w,
+    reachFromInterval: (L) => L,
+  };
+}
+
+/**
+ * The smallest concave radius |Rs| (mm) the tool end fits in without gouging: the maximum over the
+ * ring of `(E^2 + E_z^2 - Rcr^2) / (2 (E_z - Rcr))`, written `E^2 / (2 rise) + (rise + 2 Rcr) / 2`
+ * with `rise = E_z - Rcr` the ring point's height above the contact's ring point (Eq. 1
+ * generalised, `2 D0 sin^2(delta/2)`) and E its horizontal offset (the chord: seen along the feed
+ * for axis = feed, along the axis for axis = cross), so that the contact's neighbourhood keeps its
+ * digits: there the value tends to the curvature radius of the view. Infinity when the tool gouges
+ * every concave cylinder (a ring point other than the contact at the contact's height: a flat
+ * bottom without lead across the axis). Sampled over the ring, then refined by golden-section search.
+ */
+export function minConcaveRadiusMm(tool: ToolInput, axis: SurfaceAxis): number {
+  const p = placeTool(tool);
+  const s = p.shape;
+  const rb = p.ringRadiusMm;
+  const rcr = p.cornerRadiusMm;
+  if (!(rb > 0)) return rcr; // a ball end fits any trough of at least its radius
+  const t0 = p.contactRingAngleRad;
+  const k = axis === 'feed' ? 1 : 0;
+  const ratio = (delta: number): number => {
+    const half = Math.sin(delta / 2);
+    const rise = 2 * s.d0 * half * half;
+    const m = t0 + delta / 2;
+    // Chord of the ring from the contact's ring point: 2 sin(delta/2) (cos m v1 - sin m v2), times Rb.
+    const e = 2 * half * rb * (Math.cos(m) * p.v1[k] - Math.sin(m) * p.v2[k]);
+    if (!(rise > 0)) return e === 0 ? 0 : Number.POSITIVE_INFINITY;
+    return (e * e) / (2 * rise) + (rise + 2 * rcr) / 2;
+  };
+  if (!(s.d0 > 0)) return Number.POSITIVE_INFINITY;
+  const n = 720;
+  let best = 1;
+  let value = 0;
+  for (let i = 1; i < n; i++) {
+    const v = ratio((2 * Math.PI * i) / n);
+    if (v > value) {
+      value = v;
+      best = i;
+    }
+  }
+  if (!Number.isFinite(value)) return value;
+  let a = (2 * Math.PI * (best - 1)) / n;
+  let b = (2 * Math.PI * (best + 1)) / n;
+  const g = (Math.sqrt(5) - 1) / 2;
+  for (let i = 0; i < 100; i++) {
+    const c = b - g * (b - a);
+    const e = a + g * (b - a);
+    if (ratio(c) > ratio(e)) b = e;
+    else a = c;
+  }
+  // Near the contact the ratio tends to the local curvature radius: include that limit.
+  return Math.max(value, ratio(0.5 * (a + b)), ratio(1e-7), ratio(2 * Math.PI - 1e-7));
+}
