@@ -92,9 +92,11 @@ describe('the trace in the placement of the tool', () => {
       const t = traceProcedure({ ...input(R, Rcr, rho, h), tiltAngleDeg: tilt });
       const p = t.placement;
       for (const f of [t.right, t.left]) {
-        const d = [f.pHp[0] - p.centre[0], f.pHp[1] - p.centre[1], f.pHp[2] - p.centre[2]];
-        const w = d[0] * p.axis[0] + d[1] * p.axis[1] + d[2] * p.axis[2];
-        const radial = Math.hypot(d[0] - w * p.axis[0], d[1] - w * p.axis[1], d[2] - w * p.axis[2]);
+        const dx = f.pHp[0] - p.centre[0];
+        const dy = f.pHp[1] - p.centre[1];
+        const dz = f.pHp[2] - p.centre[2];
+        const w = dx * p.axis[0] + dy * p.axis[1] + dz * p.axis[2];
+        const radial = Math.hypot(dx - w * p.axis[0], dy - w * p.axis[1], dz - w * p.axis[2]);
         expect(Math.abs(Math.hypot(radial - p.ringRadiusMm, w) - Rcr)).toBeLessThan(1e-12);
       }
     }
