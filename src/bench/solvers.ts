@@ -19,6 +19,7 @@ import {
   sekineHalfInterval,
   simulatePasses,
   traceProcedure,
+  validateForward,
 } from '../core/index';
 
 /**
@@ -88,6 +89,41 @@ const rows: Array<[string, string, number]> = [
   ['Bedi et al.', 'bediNsPerCall', measure((c) => half(bediHalfInterval(c)), cases, 500_000, rounds)],
   ['trace of the 3D procedure', 'traceNsPerCall', measure((c) => traceProcedure(c).right.widthMm, cases, 500, rounds)],
 ];
+
+// Cylinders: convex and concave (|Rs| 10 to 100 R), the axis along or across the feed.
+function onCylinders(source: ForwardInput[], axis: 'feed' | 'cross'): ForwardInput[] {
+  const out: ForwardInput[] = [];
+  source.forEach((c, i) => {
+    const rs = (i % 2 === 0 ? 1 : -1) * c.toolRadiusMm * (10 + (i % 90));
+    const surface = { kind: 'cylinder' as const, radiusMm: rs, axis };
+    const v = validateForward({
+      R: c.toolRadiusMm,
+      Rcr: c.cornerRadiusMm,
+      rho: c.leadAngleDeg,
+      tilt: c.tiltAngleDeg,
+      pattern: c.pattern,
+      h: c.scallopHeightMm,
+      surfaceRadius: surface.radiusMm,
+      surfaceAxis: axis,
+    });
+    if (v.ok) out.push(v.value);
+  });
+  return out;
+}
+const feedCases = onCylinders(tilted, 'feed');
+const crossCases = onCylinders(tilted, 'cross');
+rows.push(
+  [
+    'exact L on a cylinder, axis along the feed',
+    'exactCylinderFeedNsPerCall',
+    measure(exactIntervalMm, feedCases, 20_000, rounds),
+  ],
+  [
+    'exact L on a cylinder, axis across the feed',
+    'exactCylinderCrossNsPerCall',
+    measure(exactIntervalMm, crossCases, 5_000, rounds),
+  ],
+);
 
 // Exact roughness and the Ra solve: fewer calls (each integrates both flanks).
 const fewer = cases.slice(0, 64);

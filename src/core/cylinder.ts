@@ -87,44 +87,62 @@ function profilePoint(s: PostureShape, sign: number, delta: number): { y: number
 }
 
 /**
- * Polar angle of a flank point at radial height h on a cylinder with the axis along the feed, and
- * the flank's radial limits. Bracketed root of G(delta) on [0, top], bisection-safe.
+ * Polar angle of a flank point at radial height h on a cylinder with the axis along the feed: a
+ * bracketed Newton on G(delta) = Y^2 + (H - h)(H + h + 2 Rs), with G' = 2 K (Y cos theta +
+ * (H + Rs) sin theta), K = N + Rcr a b / N^2 (N the norm of the ellipse normal), started from the
+ * plane's osculating estimate; then the angle as a maximum over sections (feedAngleOfSection).
+ * @param top an offset past the root, where G has changed sign.
  */
-function feedAngleAtHeight(s: PostureShape, flank: Flank, rs: number, h: number, deltaTop: number): number {
+function feedAngleAtHeight(s: PostureShape, flank: Flank, rs: number, h: number, top: number): number {
   const sign = flankSign(flank);
-  const G = (d: number) => {
-    const p = profilePoint(s, sign, d);
-    return p.y * p.y + (p.h - h) * (p.h + h + 2 * rs);
-  };
+  const sinT0 = sign * s.sinT0;
+  const sinPhi = sign * s.sinPhi;
+  const rcr = s.rcr;
+  const ab = s.a * s.b;
+  // G(0) = -h (h + 2 Rs): negative on a convex cylinder, positive on a concave one (it falls).
+  const falling = rs < 0;
   let lo = 0;
-  let hi = deltaTop;
-  let gLo = G(lo);
-  // G(0) = -h (h + 2 Rs) < 0 for convex; > 0 for concave (it falls from there).
-  const falling = gLo > 0;
-  let gHi = G(hi);
-  for (let i = 0; i < 200 && hi - lo > 1e-16 * Math.max(hi, 1e-300); i++) {
-    // Illinois regula falsi, with bisection when it stalls.
-    let m = lo - (gLo * (hi - lo)) / (gHi - gLo);
-    if (!(m > lo && m < hi) || i % 4 === 3) m = 0.5 * (lo + hi);
-    const gm = G(m);
-    if (gm === 0) {
-      lo = m;
-      hi = m;
-      break;
-    }
-    // Before the root G has the sign it has at the contact (negative convex, positive concave).
-    const beforeRoot = falling ? gm > 0 : gm < 0;
-    if (beforeRoot) {
-      lo = m;
-      gLo = gm;
-      gHi /= 2;
-    } else {
-      hi = m;
-      gHi = gm;
-      gLo /= 2;
+  let hi = top;
+  let delta = 0;
+  if (hi > 0) {
+    const reff = rcr + (s.d0 > 0 ? (ab * ab) / (s.d0 * s.d0 * s.d0) : 0);
+    delta = s.d0 > 0 ? (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0) : 0.5 * hi;
+    if (!(delta > lo && delta < hi)) delta = 0.5 * (lo + hi);
+    for (let i = 0; i < 100; i++) {
+      const sinH = Math.sin(delta / 2);
+      const cosH = Math.cos(delta / 2);
+      const sinD = 2 * sinH * cosH;
+      const cosD = (cosH - sinH) * (cosH + sinH);
+      const sinT = sinT0 * cosD + s.cosT0 * sinD;
+      const cosT = s.cosT0 * cosD - sinT0 * sinD;
+      const sinM = sinT0 * cosH + s.cosT0 * sinH;
+      const cosM = s.cosT0 * cosH - sinT0 * sinH;
+      const dz = 2 * s.d0 * sinH * sinH;
+      const dy = 2 * sinH * (s.a * s.cosPhi * cosM + s.b * sinPhi * sinM);
+      const nSin = s.d0 * sinD;
+      const nCos = s.a * s.cosPhi * cosT + s.b * sinPhi * sinT;
+      const n = Math.sqrt(nSin * nSin + nCos * nCos);
+      const st = n > 0 ? nSin / n : 0;
+      const ct = n > 0 ? nCos / n : 1;
+      const Y = dy + rcr * st;
+      const H = dz + (rcr * st * st) / (1 + ct);
+      const g = Y * Y + (H - h) * (H + h + 2 * rs);
+      if (g === 0) break;
+      const before = falling ? g > 0 : g < 0;
+      if (before) lo = delta;
+      else hi = delta;
+      const k = n > 0 ? n + (rcr * ab) / (n * n) : Number.POSITIVE_INFINITY;
+      const slope = 2 * k * (Y * ct + (H + rs) * st);
+      let next = Number.isFinite(slope) && slope !== 0 ? delta - g / slope : Number.NaN;
+      if (Math.abs(next - delta) <= 1e-12 * delta) {
+        delta = Math.min(Math.max(next, lo), hi);
+        break;
+      }
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      delta = next;
+      if (hi - lo <= 4e-16 * hi) break;
     }
   }
-  const delta = 0.5 * (lo + hi);
   return feedAngleOfSection(s, sign, delta, rs, h);
 }
 
@@ -353,6 +371,83 @@ function crossChords(p: Placement, rs: number): Chords {
 }
 
 /**
+ * The maximum of f on [lo, hi]: a scan of `samples` points brackets the best one, then Brent's
+ * method (parabolic steps, golden-section ones where they do not help, so kinks are safe) to
+ * `tol` in the argument. Returns the largest value seen.
+ */
+function maximise(f: (x: number) => number, lo: number, hi: number, samples: number, tol: number): number {
+  let best = 0;
+  let fBest = Number.NEGATIVE_INFINITY;
+  for (let i = 0; i <= samples; i++) {
+    const v = f(lo + ((hi - lo) * i) / samples);
+    if (v > fBest) {
+      fBest = v;
+      best = i;
+    }
+  }
+  let a = lo + ((hi - lo) * Math.max(0, best - 1)) / samples;
+  let b = lo + ((hi - lo) * Math.min(samples, best + 1)) / samples;
+  const golden = 0.381966011250105;
+  let x = lo + ((hi - lo) * best) / samples;
+  let w = x;
+  let v = x;
+  let fx = fBest;
+  let fw = fx;
+  let fv = fx;
+  let d = 0;
+  let e = 0;
+  for (let i = 0; i < 200; i++) {
+    const m = 0.5 * (a + b);
+    if (Math.abs(x - m) <= 2 * tol - 0.5 * (b - a)) break;
+    let u: number;
+    let parabolic = false;
+    if (Math.abs(e) > tol) {
+      // Parabola through x, w, v (maximising: the same algebra on -f).
+      const r = (x - w) * (fv - fx);
+      let q = (x - v) * (fw - fx);
+      let pp = (x - v) * q - (x - w) * r;
+      q = 2 * (q - r);
+      if (q > 0) pp = -pp;
+      q = Math.abs(q);
+      if (Math.abs(pp) < Math.abs(0.5 * q * e) && pp > q * (a - x) && pp < q * (b - x)) {
+        e = d;
+        d = pp / q;
+        parabolic = true;
+      }
+    }
+    if (!parabolic) {
+      e = x < m ? b - x : a - x;
+      d = golden * e;
+    }
+    u = Math.abs(d) >= tol ? x + d : x + (d > 0 ? tol : -tol);
+    const fu = f(u);
+    if (fu >= fx) {
+      if (u < x) b = x;
+      else a = x;
+      v = w;
+      fv = fw;
+      w = x;
+      fw = fx;
+      x = u;
+      fx = fu;
+    } else {
+      if (u < x) a = u;
+      else b = u;
+      if (fu >= fw || w === x) {
+        v = w;
+        fv = fw;
+        w = u;
+        fw = fu;
+      } else if (fu >= fv || v === x || v === w) {
+        v = u;
+        fv = fu;
+      }
+    }
+  }
+  return Math.max(fBest, fx);
+}
+
+/**
  * Width of a flank of the revolved profile at radial height h (axis across the feed): the largest
  * distance out from the contact (along Y) at which some chord's circle reaches radius |Rs| + s h.
  */
@@ -366,43 +461,10 @@ function crossWidthAtHeight(ch: Chords, sign: number, rcr: number, rs: number, h
     return gap < rcr ? Math.sqrt((rcr - gap) * (rcr + gap)) : Number.NEGATIVE_INFINITY;
   };
   const f = (y: number) => sign * (y - contactY) + reach(y);
-  const lo = ch.yLo;
-  const hi = ch.yHi;
-  if (!(hi > lo)) return f(lo);
-  // Scan for the best sample, then golden-section search around it.
-  const n = 64;
-  let best = 0;
-  let fBest = Number.NEGATIVE_INFINITY;
-  for (let i = 0; i <= n; i++) {
-    const v = f(lo + ((hi - lo) * i) / n);
-    if (v > fBest) {
-      fBest = v;
-      best = i;
-    }
-  }
-  let a = lo + ((hi - lo) * Math.max(0, best - 1)) / n;
-  let b = lo + ((hi - lo) * Math.min(n, best + 1)) / n;
-  const g = (Math.sqrt(5) - 1) / 2;
-  let c = b - g * (b - a);
-  let e = a + g * (b - a);
-  let fc = f(c);
-  let fe = f(e);
-  for (let i = 0; i < 200 && b - a > 1e-16 * Math.max(Math.abs(a), Math.abs(b), 1e-300); i++) {
-    if (fc > fe) {
-      b = e;
-      e = c;
-      fe = fc;
-      c = b - g * (b - a);
-      fc = f(c);
-    } else {
-      a = c;
-      c = e;
-      fc = fe;
-      e = a + g * (b - a);
-      fe = f(e);
-    }
-  }
-  return Math.max(fBest, fc, fe, f(a), f(b));
+  if (!(ch.yHi > ch.yLo)) return f(ch.yLo);
+  // The maximum is flat, so 1e-13 of the disk's span in y leaves its value exact to the last bits
+  // (a kink, where the nearest point of a chord moves to its end, is handled by Brent's golden steps).
+  return maximise(f, ch.yLo, ch.yHi, 16, 1e-13 * (ch.yHi - ch.yLo));
 }
 
 /** Radial height of the revolved profile at a distance w out from the contact (the inverse). */
@@ -419,39 +481,8 @@ function crossHeightAtWidth(ch: Chords, sign: number, rcr: number, rs: number, w
     return -side * (ch.rho(y) - side * v);
   };
   if (!(hi >= lo)) return Number.POSITIVE_INFINITY;
-  const n = 64;
-  let best = 0;
-  let fBest = Number.NEGATIVE_INFINITY;
-  for (let i = 0; i <= n; i++) {
-    const v = f(lo + ((hi - lo) * i) / n);
-    if (v > fBest) {
-      fBest = v;
-      best = i;
-    }
-  }
-  let a = lo + ((hi - lo) * Math.max(0, best - 1)) / n;
-  let b = lo + ((hi - lo) * Math.min(n, best + 1)) / n;
-  const g = (Math.sqrt(5) - 1) / 2;
-  let c = b - g * (b - a);
-  let e = a + g * (b - a);
-  let fc = f(c);
-  let fe = f(e);
-  for (let i = 0; i < 200 && b - a > 1e-16 * Math.max(Math.abs(a), Math.abs(b), 1e-300); i++) {
-    if (fc > fe) {
-      b = e;
-      e = c;
-      fe = fc;
-      c = b - g * (b - a);
-      fc = f(c);
-    } else {
-      a = c;
-      c = e;
-      fc = fe;
-      e = a + g * (b - a);
-      fe = f(e);
-    }
-  }
-  const radius = -side * Math.max(fBest, fc, fe);
+  const top = hi > lo ? maximise(f, lo, hi, 16, 1e-13 * Math.max(hi - lo, rcr)) : f(lo);
+  const radius = -side * top;
   return side * (radius - Math.abs(rs));
 }
 
@@ -465,7 +496,7 @@ export interface CylinderSolver {
    * Radial height limits: each flank's wall, and the shank where it cuts (exact for axis = feed;
    * for axis = cross the plane's shank heights stand in, see the module comment), mm.
    */
-  readonly limits: FlankLimits;
+  limits(): FlankLimits;
   /**
    * How far a flank reaches at radial height h: the polar angle about the axis (axis = feed,
    * radians) or the distance along the axis from the contact (axis = cross, mm).
@@ -479,39 +510,120 @@ export interface CylinderSolver {
   reachFromInterval(intervalMm: number): number;
 }
 
+/** Axis along the feed: flank angles about the axis (classes: no closures built per call). */
+class FeedSolver implements CylinderSolver {
+  private cached: FlankLimits | null = null;
+  private readonly tops: [number | null, number | null] = [null, null];
+  private readonly s: PostureShape;
+  private readonly rs: number;
+
+  constructor(
+    readonly surface: CylinderSurface,
+    p: Placement,
+  ) {
+    this.s = p.shape;
+    this.rs = surface.radiusMm;
+  }
+
+  limits(): FlankLimits {
+    if (this.cached === null) {
+      const right = feedFlankLimit(this.s, 1, this.rs);
+      const left = feedFlankLimit(this.s, -1, this.rs);
+      this.cached = limitsOf(right.topMm, left.topMm, right.shankMm, left.shankMm);
+    }
+    return this.cached;
+  }
+
+  /** The concave radial top of a flank (a search), kept once found. */
+  private concaveTop(sign: number, plane: number): number {
+    const index = sign > 0 ? 0 : 1;
+    const known = this.tops[index];
+    if (known !== null) return known;
+    const top = concaveTop(this.s, sign, this.rs, plane);
+    this.tops[index] = top;
+    return top;
+  }
+
+  /**
+   * An offset past the root for height h: the plane flank's widest point, where G has changed sign
+   * on a convex cylinder and on a concave one that is not tight; else the concave radial top.
+   */
+  private bracket(sign: number, h: number): number {
+    const s = this.s;
+    if (s.a === 0) return 0;
+    const plane = planeTop(s, sign);
+    if (this.rs > 0) return plane;
+    const at = profilePoint(s, sign, plane);
+    if (at.y * at.y + (at.h - h) * (at.h + h + 2 * this.rs) < 0) return plane;
+    return this.concaveTop(sign, plane);
+  }
+
+  reach(flank: Flank, h: number): number {
+    return feedAngleAtHeight(this.s, flank, this.rs, h, this.bracket(flankSign(flank), h));
+  }
+
+  heightAt(flank: Flank, beta: number): number {
+    const sign = flankSign(flank);
+    const s = this.s;
+    const plane = s.a === 0 ? 0 : planeTop(s, sign);
+    const top = this.rs < 0 && s.a > 0 ? this.concaveTop(sign, plane) : plane;
+    return feedHeightAtAngle(s, flank, this.rs, beta, top);
+  }
+
+  intervalFromReach(angle: number): number {
+    return Math.abs(this.rs) * angle;
+  }
+
+  reachFromInterval(L: number): number {
+    return L / Math.abs(this.rs);
+  }
+}
+
+/** Axis across the feed: widths along the axis of the revolved profile. */
+class CrossSolver implements CylinderSolver {
+  private cached: FlankLimits | null = null;
+  private readonly ch: Chords;
+
+  constructor(
+    readonly surface: CylinderSurface,
+    private readonly p: Placement,
+  ) {
+    this.ch = crossChords(p, surface.radiusMm);
+  }
+
+  limits(): FlankLimits {
+    if (this.cached === null) {
+      // The widest point of each flank: the chord at the end of the disk's Y range (one ring
+      // point). The shank across the axis: the plane's heights stand in (not modelled revolved).
+      const side = this.surface.radiusMm > 0 ? 1 : -1;
+      const top = (y: number) => side * (this.ch.rho(y) - Math.abs(this.surface.radiusMm));
+      const plane = flankLimits(this.p.shape);
+      this.cached = limitsOf(top(this.ch.yHi), top(this.ch.yLo), plane.shankRightMm, plane.shankLeftMm);
+    }
+    return this.cached;
+  }
+
+  reach(flank: Flank, h: number): number {
+    return crossWidthAtHeight(this.ch, flankSign(flank), this.p.cornerRadiusMm, this.surface.radiusMm, h, 0);
+  }
+
+  heightAt(flank: Flank, w: number): number {
+    return crossHeightAtWidth(this.ch, flankSign(flank), this.p.cornerRadiusMm, this.surface.radiusMm, w, 0);
+  }
+
+  intervalFromReach(w: number): number {
+    return w;
+  }
+
+  reachFromInterval(L: number): number {
+    return L;
+  }
+}
+
 /** Prepares the cylinder solver for a tool and posture. @param surface |Rs| > 0. */
 export function cylinderSolver(tool: ToolInput, surface: CylinderSurface): CylinderSolver {
   const p = placeTool(tool);
-  const s = p.shape;
-  const rs = surface.radiusMm;
-  if (surface.axis === 'feed') {
-    const right = feedFlankLimit(s, 1, rs);
-    const left = feedFlankLimit(s, -1, rs);
-    return {
-      surface,
-      limits: limitsOf(right.topMm, left.topMm, right.shankMm, left.shankMm),
-      reach: (flank, h) => feedAngleAtHeight(s, flank, rs, h, flank === 'right' ? right.deltaTop : left.deltaTop),
-      heightAt: (flank, beta) =>
-        feedHeightAtAngle(s, flank, rs, beta, flank === 'right' ? right.deltaTop : left.deltaTop),
-      intervalFromReach: (angle) => Math.abs(rs) * angle,
-      reachFromInterval: (L) => L / Math.abs(rs),
-    };
-  }
-  const ch = crossChords(p, rs);
-  const side = rs > 0 ? 1 : -1;
-  const contactY = 0;
-  // The widest point of each flank: the chord at the end of the disk's Y range (one ring point).
-  const topAt = (y: number) => side * (ch.rho(y) - Math.abs(rs));
-  // The shank across the axis: the plane's heights stand in (the revolved shank is not modelled).
-  const plane = flankLimits(s);
-  return {
-    surface,
-    limits: limitsOf(topAt(ch.yHi), topAt(ch.yLo), plane.shankRightMm, plane.shankLeftMm),
-    reach: (flank, h) => crossWidthAtHeight(ch, flankSign(flank), p.cornerRadiusMm, rs, h, contactY),
-    heightAt: (flank, w) => crossHeightAtWidth(ch, flankSign(flank), p.cornerRadiusMm, rs, w, contactY),
-    intervalFromReach: (w) => w,
-    reachFromInterval: (L) => L,
-  };
+  return surface.axis === 'feed' ? new FeedSolver(surface, p) : new CrossSolver(surface, p);
 }
 
 /**

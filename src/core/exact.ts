@@ -80,7 +80,14 @@ export function intervalFromWidths(pattern: PassPattern, rightMm: number, leftMm
  * allocation beyond the shape). Error below 1e-9 mm over the valid domain.
  */
 export function exactIntervalMm(input: ForwardInput): number {
-  if (input.surface.kind === 'cylinder') return cylinderForward(input, input.surface).intervalMm;
+  if (input.surface.kind === 'cylinder') {
+    // The reaches alone (no display geometry); without tilt the flanks are mirror images.
+    const c = cylinderSolver(input, input.surface);
+    const h = input.scallopHeightMm;
+    const right = c.reach('right', h);
+    const left = input.tiltAngleDeg === 0 ? right : c.reach('left', h);
+    return c.intervalFromReach(input.pattern === 'one-way' ? right + left : 2 * Math.min(right, left));
+  }
   const s = shapeOfTool(input);
   if (s.flatOnPlane && s.rcr === 0) return 2 * s.a;
   const h = input.scallopHeightMm;
@@ -286,7 +293,7 @@ function cylinderInverse(input: InverseInput, surface: CylinderSurface): ExactIn
     };
   }
   // One-way with tilt (or across the axis): the cusp height z where the two reaches add up to L.
-  const limit = c.limits.limitMm;
+  const limit = c.limits().limitMm;
   const f = (u: number) => c.intervalFromReach(c.reach('right', u * u) + c.reach('left', u * u)) - L;
   let lo = 0;
   let hi = Math.sqrt(limit);

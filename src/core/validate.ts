@@ -377,7 +377,7 @@ export function leavesNoScallop(tool: ToolInput): boolean {
  * plane; measured radially on a cylinder); mm. On a plane without tilt it is `(R - Rcr) sin(rho) + Rcr`.
  */
 export function scallopHeightLimits(tool: ToolInput, surface: Surface = PLANE): FlankLimits {
-  if (surface.kind === 'cylinder') return cylinderSolver(tool, surface).limits;
+  if (surface.kind === 'cylinder') return cylinderSolver(tool, surface).limits();
   return flankLimits(shapeOfTool(tool));
 }
 
@@ -388,7 +388,7 @@ export function scallopHeightLimits(tool: ToolInput, surface: Surface = PLANE): 
 export function maxIntervalMm(tool: ToolInput, pattern: PassPattern, surface: Surface = PLANE): number {
   if (surface.kind === 'cylinder') {
     const c = cylinderSolver(tool, surface);
-    const h = c.limits.limitMm;
+    const h = c.limits().limitMm;
     const right = c.reach('right', h);
     const left = c.reach('left', h);
     return c.intervalFromReach(pattern === 'one-way' ? right + left : 2 * Math.min(right, left));

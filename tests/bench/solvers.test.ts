@@ -21,6 +21,8 @@ describe('npm run bench', () => {
       'sekineNsPerCall',
       'redonnetNsPerCall',
       'bediNsPerCall',
+      'exactCylinderFeedNsPerCall',
+      'exactCylinderCrossNsPerCall',
       'roughnessNsPerCall',
       'targetRaNsPerCall',
       'simulationMsMedian',
