@@ -8,11 +8,11 @@
 import {
   bediHalfInterval,
   exactIntervalMm,
+  exactRoughness,
   type ForwardInput,
   forwardInput,
   maxRaMm,
   passGeometry,
-  planeRoughness,
   redonnetHalfInterval,
   scallopHeightForRaMm,
   scallopHeightLimits,
@@ -128,7 +128,7 @@ rows.push(
 // Exact roughness and the Ra solve: fewer calls (each integrates both flanks).
 const fewer = cases.slice(0, 64);
 rows.push(
-  ['exact roughness (Rz, Ra, Rq)', 'roughnessNsPerCall', measure((c) => planeRoughness(c).raMm, fewer, 200, rounds)],
+  ['exact roughness (Rz, Ra, Rq)', 'roughnessNsPerCall', measure((c) => exactRoughness(c).raMm, fewer, 200, rounds)],
   [
     'step-over for a target Ra',
     'targetRaNsPerCall',

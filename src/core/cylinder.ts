@@ -55,13 +55,6 @@ export const PLANE: Surface = { kind: 'plane' };
 // ---------------------------------------------------------------------------------------------
 // Axis along the feed
 
-interface FeedPoint {
-  /** Polar angle from the contact, about the axis, radians (>= 0 towards the flank). */
-  readonly angleRad: number;
-  /** Radial scallop height: |distance from axis - |Rs||, mm. */
-  readonly heightMm: number;
-}
-
 /** The profile point of section delta on the flank `sign`: width Y and height H above the contact. */
 function profilePoint(s: PostureShape, sign: number, delta: number): { y: number; h: number; ey: number; ez: number } {
   const sinT0 = sign * s.sinT0;
@@ -314,12 +307,19 @@ function limitsOf(
 // ---------------------------------------------------------------------------------------------
 // Axis across the feed
 
-/** The bottom disk's chords in meridian coordinates: distance from the axis along a chord at y. */
+/**
+ * The bottom disk's chords in meridian coordinates: on the chord at y, the point nearest the axis
+ * (convex) or farthest from it (concave), and its radial height above the design surface.
+ */
 interface Chords {
   readonly yLo: number;
   readonly yHi: number;
-  /** Lowest (convex) or highest (concave) distance from the axis on the chord at y. */
-  rho(y: number): number;
+  /**
+   * Signed radial height (mm) of the chord's chosen point: `rho - Rs` convex, `|Rs| - rho` concave,
+   * computed as `(x^2 + z (z + 2 Rs)) / (rho + |Rs|)` without cancellation (x, z relative to the
+   * contact), so that scallops of a nanometre on a cylinder of a kilometre keep their digits.
+   */
+  height(y: number): number;
 }
 
 function crossChords(p: Placement, rs: number): Chords {
@@ -328,25 +328,44 @@ function crossChords(p: Placement, rs: number): Chords {
   const gy1 = v1[1];
   const gy2 = v2[1];
   const G = Math.sqrt(gy1 * gy1 + gy2 * gy2);
-  const axisZ = -rs;
   const concave = rs < 0;
-  // A disk point: centre + u v1 + w v2 (u^2 + w^2 <= Rb^2); its distance from the axis (along Y,
-  // through (x = 0, z = -Rs)): sqrt(x^2 + (z - axisZ)^2).
-  const dist = (u: number, w: number) => {
-    const x = centre[0] + u * v1[0] + w * v2[0];
-    const z = centre[2] + u * v1[2] + w * v2[2] - axisZ;
-    return Math.sqrt(x * x + z * z);
+  const side = concave ? -1 : 1;
+  const abs = Math.abs(rs);
+  // A disk point: centre + u v1 + w v2 (u^2 + w^2 <= Rb^2), relative to the contact; the axis runs
+  // along Y through (x = 0, z = -Rs). Its squared distance from the axis, and its radial height.
+  const rho2 = (x: number, z: number) => x * x + (z + rs) * (z + rs);
+  const heightOf = (x: number, z: number) => (side * (x * x + z * (z + 2 * rs))) / (Math.sqrt(rho2(x, z)) + abs);
+  const at = (u: number, w: number, out: number[]) => {
+    out[0] = centre[0] + u * v1[0] + w * v2[0];
+    out[1] = centre[2] + u * v1[2] + w * v2[2];
   };
+  const pa = [0, 0];
+  const pb = [0, 0];
+  const pf = [0, 0];
   if (!(rb > 0) || !(G > 0)) {
     // A ball end (one point), or a disk seen edge-on along Y (all at one y): a single chord.
     const y = centre[1];
-    const ends = rb > 0 ? [dist(rb, 0), dist(-rb, 0), dist(0, rb), dist(0, -rb)] : [dist(0, 0)];
-    return { yLo: y, yHi: y, rho: () => (concave ? Math.max(...ends) : Math.min(...ends)) };
+    const pts: Array<[number, number]> =
+      rb > 0
+        ? [
+            [rb, 0],
+            [-rb, 0],
+            [0, rb],
+            [0, -rb],
+          ]
+        : [[0, 0]];
+    const heights = pts.map(([u, w]) => {
+      at(u, w, pa);
+      return { r2: rho2(pa[0] as number, pa[1] as number), h: heightOf(pa[0] as number, pa[1] as number) };
+    });
+    heights.sort((m, n) => m.r2 - n.r2);
+    const chosen = (concave ? heights[heights.length - 1] : heights[0]) as { h: number };
+    return { yLo: y, yHi: y, height: () => chosen.h };
   }
   return {
     yLo: centre[1] - rb * G,
     yHi: centre[1] + rb * G,
-    rho(y) {
+    height(y) {
       const c = Math.min(rb * G, Math.max(-rb * G, y - centre[1]));
       // Chord: (u, w) = c g / G^2 + tau g_perp / G, |tau| <= sqrt(Rb^2 - c^2 / G^2).
       const u0 = (c * gy1) / (G * G);
@@ -354,18 +373,25 @@ function crossChords(p: Placement, rs: number): Chords {
       const du = -gy2 / G;
       const dw = gy1 / G;
       const tMax = Math.sqrt(Math.max(0, rb * rb - (c * c) / (G * G)));
-      const a = dist(u0 + tMax * du, w0 + tMax * dw);
-      const b = dist(u0 - tMax * du, w0 - tMax * dw);
-      if (concave) return Math.max(a, b);
+      at(u0 + tMax * du, w0 + tMax * dw, pa);
+      at(u0 - tMax * du, w0 - tMax * dw, pb);
+      const ra = rho2(pa[0] as number, pa[1] as number);
+      const rbb = rho2(pb[0] as number, pb[1] as number);
+      if (concave)
+        return ra >= rbb ? heightOf(pa[0] as number, pa[1] as number) : heightOf(pb[0] as number, pb[1] as number);
       // Convex: the distance along a straight chord is convex; its minimum is at the foot of the
       // axis on the chord's line (clipped to the chord).
-      const x0 = centre[0] + u0 * v1[0] + w0 * v2[0];
-      const z0 = centre[2] + u0 * v1[2] + w0 * v2[2] - axisZ;
+      at(u0, w0, pf);
+      const x0 = pf[0] as number;
+      const z0 = (pf[1] as number) + rs;
       const dx = du * v1[0] + dw * v2[0];
       const dz = du * v1[2] + dw * v2[2];
       const den = dx * dx + dz * dz;
       const tau = den > 0 ? Math.min(tMax, Math.max(-tMax, -(x0 * dx + z0 * dz) / den)) : 0;
-      return Math.min(a, b, dist(u0 + tau * du, w0 + tau * dw));
+      at(u0 + tau * du, w0 + tau * dw, pf);
+      const rf = rho2(pf[0] as number, pf[1] as number);
+      const q = rf <= ra && rf <= rbb ? pf : ra <= rbb ? pa : pb;
+      return heightOf(q[0] as number, q[1] as number);
     },
   };
 }
@@ -375,7 +401,14 @@ function crossChords(p: Placement, rs: number): Chords {
  * method (parabolic steps, golden-section ones where they do not help, so kinks are safe) to
  * `tol` in the argument. Returns the largest value seen.
  */
-function maximise(f: (x: number) => number, lo: number, hi: number, samples: number, tol: number): number {
+function maximise(
+  f: (x: number) => number,
+  lo: number,
+  hi: number,
+  samples: number,
+  tol: number,
+  must?: number,
+): number {
   let best = 0;
   let fBest = Number.NEGATIVE_INFINITY;
   for (let i = 0; i <= samples; i++) {
@@ -387,8 +420,20 @@ function maximise(f: (x: number) => number, lo: number, hi: number, samples: num
   }
   let a = lo + ((hi - lo) * Math.max(0, best - 1)) / samples;
   let b = lo + ((hi - lo) * Math.min(samples, best + 1)) / samples;
-  const golden = 0.381966011250105;
   let x = lo + ((hi - lo) * best) / samples;
+  // A point known to count (the contact's chord, feasible at any height): when it beats the scan,
+  // search around it, between its neighbouring samples.
+  if (must !== undefined && must >= lo && must <= hi) {
+    const fm = f(must);
+    if (fm > fBest) {
+      fBest = fm;
+      x = must;
+      const k = Math.floor(((must - lo) / (hi - lo)) * samples);
+      a = lo + ((hi - lo) * Math.max(0, k)) / samples;
+      b = lo + ((hi - lo) * Math.min(samples, k + 1)) / samples;
+    }
+  }
+  const golden = 0.381966011250105;
   let w = x;
   let v = x;
   let fx = fBest;
@@ -451,39 +496,35 @@ function maximise(f: (x: number) => number, lo: number, hi: number, samples: num
  * Width of a flank of the revolved profile at radial height h (axis across the feed): the largest
  * distance out from the contact (along Y) at which some chord's circle reaches radius |Rs| + s h.
  */
-function crossWidthAtHeight(ch: Chords, sign: number, rcr: number, rs: number, h: number, contactY: number): number {
-  const side = rs > 0 ? 1 : -1;
-  const r = Math.abs(rs) + side * h;
-  // Reach of the chord at y: its circle (radius Rcr around (y, rho)) at radius r.
+function crossWidthAtHeight(ch: Chords, sign: number, rcr: number, h: number, contactY: number): number {
+  // Reach of the chord at y: its circle (radius Rcr around its point, radial height d) at height h.
   const reach = (y: number) => {
-    const gap = side * (ch.rho(y) - r);
+    const gap = ch.height(y) - h;
     if (gap <= 0) return rcr;
-    return gap < rcr ? Math.sqrt((rcr - gap) * (rcr + gap)) : Number.NEGATIVE_INFINITY;
+    return gap <= rcr ? Math.sqrt((rcr - gap) * (rcr + gap)) : Number.NEGATIVE_INFINITY;
   };
   const f = (y: number) => sign * (y - contactY) + reach(y);
   if (!(ch.yHi > ch.yLo)) return f(ch.yLo);
   // The maximum is flat, so 1e-13 of the disk's span in y leaves its value exact to the last bits
   // (a kink, where the nearest point of a chord moves to its end, is handled by Brent's golden steps).
-  return maximise(f, ch.yLo, ch.yHi, 16, 1e-13 * (ch.yHi - ch.yLo));
+  return maximise(f, ch.yLo, ch.yHi, 16, 1e-13 * (ch.yHi - ch.yLo), contactY);
 }
 
 /** Radial height of the revolved profile at a distance w out from the contact (the inverse). */
-function crossHeightAtWidth(ch: Chords, sign: number, rcr: number, rs: number, w: number, contactY: number): number {
-  const side = rs > 0 ? 1 : -1;
+function crossHeightAtWidth(ch: Chords, sign: number, rcr: number, w: number, contactY: number): number {
   const Y = contactY + sign * w;
-  // The profile's radius at Y: min (convex) / max (concave) over chords within Rcr of Y of
-  // rho(y) -/+ sqrt(Rcr^2 - (Y - y)^2). Scan then golden search.
+  // The profile's radial height at Y: the lowest, over chords within Rcr of Y, of the chord point's
+  // height less the circle's vertical reach, d(y) - sqrt(Rcr^2 - (Y - y)^2). Scan then Brent.
   const lo = Math.max(ch.yLo, Y - rcr);
   const hi = Math.min(ch.yHi, Y + rcr);
   const f = (y: number) => {
     const d = Y - y;
     const v = Math.sqrt(Math.max(0, (rcr - d) * (rcr + d)));
-    return -side * (ch.rho(y) - side * v);
+    return v - ch.height(y);
   };
   if (!(hi >= lo)) return Number.POSITIVE_INFINITY;
   const top = hi > lo ? maximise(f, lo, hi, 16, 1e-13 * Math.max(hi - lo, rcr)) : f(lo);
-  const radius = -side * top;
-  return side * (radius - Math.abs(rs));
+  return -top;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -595,8 +636,7 @@ class CrossSolver implements CylinderSolver {
     if (this.cached === null) {
       // The widest point of each flank: the chord at the end of the disk's Y range (one ring
       // point). The shank across the axis: the plane's heights stand in (not modelled revolved).
-      const side = this.surface.radiusMm > 0 ? 1 : -1;
-      const top = (y: number) => side * (this.ch.rho(y) - Math.abs(this.surface.radiusMm));
+      const top = (y: number) => this.ch.height(y);
       const plane = flankLimits(this.p.shape);
       this.cached = limitsOf(top(this.ch.yHi), top(this.ch.yLo), plane.shankRightMm, plane.shankLeftMm);
     }
@@ -604,11 +644,11 @@ class CrossSolver implements CylinderSolver {
   }
 
   reach(flank: Flank, h: number): number {
-    return crossWidthAtHeight(this.ch, flankSign(flank), this.p.cornerRadiusMm, this.surface.radiusMm, h, 0);
+    return crossWidthAtHeight(this.ch, flankSign(flank), this.p.cornerRadiusMm, h, 0);
   }
 
   heightAt(flank: Flank, w: number): number {
-    return crossHeightAtWidth(this.ch, flankSign(flank), this.p.cornerRadiusMm, this.surface.radiusMm, w, 0);
+    return crossHeightAtWidth(this.ch, flankSign(flank), this.p.cornerRadiusMm, w, 0);
   }
 
   intervalFromReach(w: number): number {

@@ -18,7 +18,10 @@
  * integrals of w are taken in `u = sqrt(z)`, where `w(u^2)` is smooth (w grows like sqrt(z) at the
  * contact), by adaptive Gauss-Kronrod (7-15) to a relative 1e-13. A flat bottom lying on the plane
  * (w(0) = Rb) needs nothing special: its flat part is the rectangle `w(0) H` inside `H W - A1`.
+ * On a cylinder the same holds with heights measured radially and widths along the design surface
+ * (arc length about the axis, or distance along it): the mean line is then a coaxial cylinder.
  */
+import { type CylinderSolver, cylinderSolver, PLANE, type Surface } from './cylinder';
 import { type ExactForward, type ExactInverse, exactForward } from './exact';
 import { type Flank, flankWidthMm, type PostureShape, shapeOfTool } from './posture';
 import { type ForwardInput, forwardInput, type PassPattern, scallopHeightLimits, type ToolInput } from './validate';
@@ -118,12 +121,29 @@ export function widthIntegrals(w: (z: number) => number, zMax: number): [number,
   return [a1, a2];
 }
 
+/** A flank's width (mm, along the surface from the contact) at a height (mm, normal to the surface). */
+export type WidthAt = (flank: Flank) => (heightMm: number) => number;
+
+/** Widths of the plane profile (posture.ts). */
+export function planeWidths(shape: PostureShape): WidthAt {
+  return (flank) => (z) => flankWidthMm(shape, flank, z);
+}
+
 /**
- * Roughness of a period made of flank segments (see the module comment). `shape` gives each
- * flank's width at a height.
+ * Widths on a cylinder: the flank's reach at radial height z as a length along the design surface
+ * (arc length for the axis along the feed, distance along the axis across it), as the step-over is.
  */
-export function roughnessOfSegments(shape: PostureShape, segments: readonly FlankSegment[]): Roughness {
-  const widthAt = (flank: Flank) => (z: number) => flankWidthMm(shape, flank, z);
+export function cylinderWidths(solver: CylinderSolver): WidthAt {
+  return (flank) => (z) => solver.intervalFromReach(solver.reach(flank, z));
+}
+
+/**
+ * Roughness of a period made of flank segments (see the module comment). `widths` gives each
+ * flank's width at a height (planeWidths, or cylinderWidths: heights measured radially, lengths
+ * along the surface).
+ */
+export function roughnessOfSegments(widths: WidthAt | PostureShape, segments: readonly FlankSegment[]): Roughness {
+  const widthAt: WidthAt = typeof widths === 'function' ? widths : planeWidths(widths);
   let length = 0;
   let area = 0;
   const data = segments.map((seg) => {
@@ -150,13 +170,19 @@ export function roughnessOfSegments(shape: PostureShape, segments: readonly Flan
   return { rzMm: peak, raMm: Math.max(0, abs / length), rqMm: Math.sqrt(Math.max(0, sq / length)), meanMm: m };
 }
 
+/** The width function of a tool on its surface. */
+function widthsOf(tool: ToolInput, surface: Surface): WidthAt {
+  return surface.kind === 'cylinder' ? cylinderWidths(cylinderSolver(tool, surface)) : planeWidths(shapeOfTool(tool));
+}
+
 /**
- * Exact roughness (mm) of the surface that passes of a forward solution leave on a plane. For
- * zigzag the other cusp's flank pair is included (two step-overs per period).
+ * Exact roughness (mm) of the surface that passes of a forward solution leave, on a plane or a
+ * cylinder (measured radially, over arc length). For zigzag the other cusp's flank pair is
+ * included (two step-overs per period).
  */
-export function planeRoughness(input: ForwardInput, e: ExactForward = exactForward(input)): Roughness {
+export function exactRoughness(input: ForwardInput, e: ExactForward = exactForward(input)): Roughness {
   if (e.noScallop) return { rzMm: 0, raMm: 0, rqMm: 0, meanMm: 0 };
-  const shape = shapeOfTool(input);
+  const shape = widthsOf(input, input.surface);
   if (input.pattern === 'zigzag') {
     // The narrow flank's cusp is h; the wider flank meets its mirror lower, at L/2.
     const rightNarrow = e.halfWidthRightMm <= e.halfWidthLeftMm;
@@ -173,9 +199,14 @@ export function planeRoughness(input: ForwardInput, e: ExactForward = exactForwa
 }
 
 /** Exact roughness (mm) of the surface passes `e.intervalMm` apart leave (inverse solution). */
-export function planeRoughnessAtInterval(tool: ToolInput, pattern: PassPattern, e: ExactInverse): Roughness {
+export function exactRoughnessAtInterval(
+  tool: ToolInput,
+  pattern: PassPattern,
+  e: ExactInverse,
+  surface: Surface = PLANE,
+): Roughness {
   if (e.cuspHeightMm === 0) return { rzMm: 0, raMm: 0, rqMm: 0, meanMm: 0 };
-  const shape = shapeOfTool(tool);
+  const shape = widthsOf(tool, surface);
   if (pattern === 'zigzag') {
     return roughnessOfSegments(shape, [
       { flank: 'right', widthMm: e.intervalMm / 2, heightMm: e.rightCuspHeightMm },
@@ -193,11 +224,11 @@ export function raRuleOfThumbMm(scallopHeightMm: number): number {
   return scallopHeightMm / 4;
 }
 
-/** The largest Ra (mm) a tool, posture and pattern can reach while leaving a scallop (h at its limit). */
-export function maxRaMm(tool: ToolInput, pattern: PassPattern): number {
-  const limit = scallopHeightLimits(tool).limitMm;
+/** The largest Ra (mm) a tool, posture and pattern can reach on a surface while leaving a scallop. */
+export function maxRaMm(tool: ToolInput, pattern: PassPattern, surface: Surface = PLANE): number {
+  const limit = scallopHeightLimits(tool, surface).limitMm;
   if (!(limit > 0)) return 0;
-  return planeRoughness(forwardInput(tool, pattern, limit * (1 - 1e-12))).raMm;
+  return exactRoughness(forwardInput(tool, pattern, limit * (1 - 1e-12), surface)).raMm;
 }
 
 /**
@@ -206,9 +237,14 @@ export function maxRaMm(tool: ToolInput, pattern: PassPattern): number {
  * from the rule of thumb h = 4 Ra, converges in a handful of steps. Requires
  * 0 < target < maxRaMm(tool, pattern).
  */
-export function scallopHeightForRaMm(tool: ToolInput, pattern: PassPattern, targetRaMm: number): number {
-  const limit = scallopHeightLimits(tool).limitMm * (1 - 1e-12);
-  const ra = (h: number) => planeRoughness(forwardInput(tool, pattern, h)).raMm - targetRaMm;
+export function scallopHeightForRaMm(
+  tool: ToolInput,
+  pattern: PassPattern,
+  targetRaMm: number,
+  surface: Surface = PLANE,
+): number {
+  const limit = scallopHeightLimits(tool, surface).limitMm * (1 - 1e-12);
+  const ra = (h: number) => exactRoughness(forwardInput(tool, pattern, h, surface)).raMm - targetRaMm;
   let lo = Math.log(Math.min(limit, 1e-12 * limit + targetRaMm * 1e-3));
   let hi = Math.log(limit);
   let fLo = ra(Math.exp(lo));

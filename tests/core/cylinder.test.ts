@@ -37,6 +37,20 @@ describe('exact step-over on cylinders', () => {
     }
   });
 
+  it('tiny h on a nearly flat cylinder gives the plane flanks (checked against the 40-digit reference there)', () => {
+    for (const t of [tool(3, 1, 5, 8), tool(10, 0.01, 30, -20), tool(1, 0, 45, 0)]) {
+      for (const h of [1e-9, 1e-6]) {
+        const plane = exactForward(forwardInput(t, 'one-way', h));
+        for (const axis of ['feed', 'cross'] as const) {
+          const c = exactForward(forwardInput(t, 'one-way', h, cyl(1e6, axis)));
+          // The curvature changes the widths by about w Reff / Rs: far below 1e-9 relative here.
+          expect(Math.abs(c.halfWidthRightMm / plane.halfWidthRightMm - 1), `${axis} h ${h}`).toBeLessThan(1e-5);
+          expect(Math.abs(c.halfWidthLeftMm / plane.halfWidthLeftMm - 1), `${axis} h ${h}`).toBeLessThan(1e-5);
+        }
+      }
+    }
+  });
+
   it('a ball end with the axis along the feed: two circles (closed form), convex and concave', () => {
     for (const [R, rs, h, rho, tilt] of [
       [3, 20, 0.05, 10, 20],

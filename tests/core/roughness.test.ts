@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
+import { cylinderSolver } from '../../src/core/cylinder';
 import { exactForward } from '../../src/core/exact';
 import { flankAtWidth, shapeOfTool } from '../../src/core/posture';
-import { maxRaMm, planeRoughness, raRuleOfThumbMm, scallopHeightForRaMm } from '../../src/core/roughness';
+import { exactRoughness, maxRaMm, raRuleOfThumbMm, scallopHeightForRaMm } from '../../src/core/roughness';
 import {
   type ForwardInput,
   forwardInput,
@@ -157,7 +158,7 @@ describe('exact roughness of the passes on a plane', () => {
       const ym = Math.sqrt(mean * (2 * R - mean));
       const ra = (gl((y) => mean - z(y), 0, ym) + gl((y) => z(y) - mean, ym, W)) / W;
       const rq = Math.sqrt(gl((y) => (z(y) - mean) ** 2, 0, W) / W);
-      const r = planeRoughness(forwardInput(tool(R, R, rho, tilt), 'one-way', h));
+      const r = exactRoughness(forwardInput(tool(R, R, rho, tilt), 'one-way', h));
       expect(Math.abs(r.meanMm - mean), `mean R=${R} h=${h}`).toBeLessThan(1e-12 * R + 1e-18);
       expect(Math.abs(r.raMm - ra), `Ra R=${R} h=${h}`).toBeLessThan(1e-12 * R + 1e-18);
       expect(Math.abs(r.rqMm - rq), `Rq R=${R} h=${h}`).toBeLessThan(1e-12 * R + 1e-18);
@@ -166,7 +167,7 @@ describe('exact roughness of the passes on a plane', () => {
   });
 
   it('tends to the parabolic scallop as h -> 0: Ra/h = 4/(9 sqrt 3), Rq/h = 2/(3 sqrt 5), mean = h/3', () => {
-    const r = planeRoughness(forwardInput(tool(3, 1, 5, 0), 'one-way', 1e-8));
+    const r = exactRoughness(forwardInput(tool(3, 1, 5, 0), 'one-way', 1e-8));
     expect(r.raMm / 1e-8).toBeCloseTo(4 / (9 * Math.sqrt(3)), 6);
     expect(r.rqMm / 1e-8).toBeCloseTo(2 / (3 * Math.sqrt(5)), 6);
     expect(r.meanMm / 1e-8).toBeCloseTo(1 / 3, 6);
@@ -185,7 +186,7 @@ describe('exact roughness of the passes on a plane', () => {
         if (!(limit > 1e-6)) continue;
         const pattern: PassPattern = rand() < 0.5 ? 'one-way' : 'zigzag';
         const input = forwardInput(t, pattern, limit * (0.001 + 0.8 * rand()));
-        const r = planeRoughness(input);
+        const r = exactRoughness(input);
         const d = directRoughness(input);
         const label = JSON.stringify(input);
         expect(Math.abs(r.meanMm - d.mean), `mean ${label}`).toBeLessThan(1e-9);
@@ -200,11 +201,11 @@ describe('exact roughness of the passes on a plane', () => {
 
   it('a flat bottom lying on the plane (rho = 0): its flat part lowers the mean, and a flat end leaves no roughness', () => {
     const input = forwardInput(tool(3, 1, 0, 0), 'one-way', 0.05);
-    const r = planeRoughness(input);
+    const r = exactRoughness(input);
     const d = directRoughness(input);
     expect(Math.abs(r.raMm - d.ra)).toBeLessThan(1e-9);
     expect(r.meanMm).toBeLessThan(0.05 / 3);
-    expect(planeRoughness(forwardInput(tool(3, 0, 0, 0), 'one-way', 0.05))).toEqual({
+    expect(exactRoughness(forwardInput(tool(3, 0, 0, 0), 'one-way', 0.05))).toEqual({
       rzMm: 0,
       raMm: 0,
       rqMm: 0,
@@ -224,7 +225,7 @@ describe('exact roughness of the passes on a plane', () => {
       const arc = Rcr * Math.sin(b);
       const face = arc + 2 * (R - Rcr) * Math.cos(b);
       const input = forwardInput(tool(R, Rcr, 0, beta), 'one-way', h);
-      const r = planeRoughness(input);
+      const r = exactRoughness(input);
       const d = directRoughness(input, { right: [], left: [arc, face] });
       expect(Math.abs(r.raMm - d.ra), `Ra ${JSON.stringify(input)}`).toBeLessThan(1e-9);
       expect(Math.abs(r.rqMm - d.rq), `Rq ${JSON.stringify(input)}`).toBeLessThan(1e-9);
@@ -234,8 +235,8 @@ describe('exact roughness of the passes on a plane', () => {
 
   it('zigzag with tilt: Rz is the higher cusp, and the lower cusp lowers Ra against one-way at the same h', () => {
     const t = tool(3, 1, 5, 5);
-    const zig = planeRoughness(forwardInput(t, 'zigzag', 0.05));
-    const one = planeRoughness(forwardInput(t, 'one-way', 0.05));
+    const zig = exactRoughness(forwardInput(t, 'zigzag', 0.05));
+    const one = exactRoughness(forwardInput(t, 'one-way', 0.05));
     expect(zig.rzMm).toBe(0.05);
     expect(zig.raMm).toBeLessThan(one.raMm);
   });
@@ -251,9 +252,64 @@ describe('exact roughness of the passes on a plane', () => {
       for (const frac of [1e-6, 0.01, 0.3, 0.9]) {
         const target = frac * max;
         const h = scallopHeightForRaMm(t, pattern, target);
-        const ra = planeRoughness(forwardInput(t, pattern, h)).raMm;
+        const ra = exactRoughness(forwardInput(t, pattern, h)).raMm;
         expect(Math.abs(ra - target), `${JSON.stringify(t)} ${pattern} ${frac}`).toBeLessThan(1e-12 * max + 1e-15);
       }
     }
+  });
+});
+
+describe('exact roughness on cylinders (measured radially, over arc length on the surface)', () => {
+  it('agrees with a direct integral of the radial height over arc length (both axes, both sides)', () => {
+    for (const [rs, axis, pattern] of [
+      [20, 'feed', 'one-way'],
+      [-60, 'feed', 'zigzag'],
+      [15, 'cross', 'one-way'],
+      [-80, 'cross', 'zigzag'],
+    ] as const) {
+      const surface = { kind: 'cylinder' as const, radiusMm: rs, axis };
+      const t = tool(3, 1, 5, 8);
+      const input = forwardInput(t, pattern, 0.05, surface);
+      const e = exactForward(input);
+      const c = cylinderSolver(t, surface);
+      // The radial height at arc length s from the contact, on each flank (the cylinder's inverse).
+      const z = (flank: 'right' | 'left') => (sMm: number) => c.heightAt(flank, c.reachFromInterval(sMm));
+      const segs =
+        pattern === 'one-way'
+          ? [
+              { f: z('right'), W: e.halfWidthRightMm },
+              { f: z('left'), W: e.halfWidthLeftMm },
+            ]
+          : [
+              { f: z('right'), W: e.halfIntervalMm },
+              { f: z('left'), W: e.halfIntervalMm },
+            ];
+      const gl = (f: (y: number) => number, a: number, b: number) => {
+        let sum = 0;
+        const panels = 128;
+        for (let p = 0; p < panels; p++) {
+          const pa = a + ((b - a) * p) / panels;
+          const pb = a + ((b - a) * (p + 1)) / panels;
+          for (let i = 0; i < 16; i++)
+            sum +=
+              (GL16_W[i] as number) * f(0.5 * (pa + pb) + 0.5 * (pb - pa) * (GL16_X[i] as number)) * 0.5 * (pb - pa);
+        }
+        return sum;
+      };
+      const length = segs.reduce((a, g) => a + g.W, 0);
+      const mean = segs.reduce((a, g) => a + gl(g.f, 0, g.W), 0) / length;
+      const rq = Math.sqrt(segs.reduce((a, g) => a + gl((y) => (g.f(y) - mean) ** 2, 0, g.W), 0) / length);
+      const r = exactRoughness(input);
+      expect(Math.abs(r.meanMm - mean), `mean ${rs} ${axis} ${pattern}`).toBeLessThan(1e-9);
+      expect(Math.abs(r.rqMm - rq), `Rq ${rs} ${axis} ${pattern}`).toBeLessThan(1e-9);
+    }
+  });
+
+  it('solving for a target Ra on a cylinder gives back that Ra', () => {
+    const surface = { kind: 'cylinder' as const, radiusMm: -40, axis: 'feed' as const };
+    const t = tool(3, 1, 5, 0);
+    const target = 0.3 * maxRaMm(t, 'one-way', surface);
+    const h = scallopHeightForRaMm(t, 'one-way', target, surface);
+    expect(Math.abs(exactRoughness(forwardInput(t, 'one-way', h, surface)).raMm - target)).toBeLessThan(1e-12);
   });
 });

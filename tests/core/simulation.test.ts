@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { exactForward } from '../../src/core/exact';
-import { planeRoughness } from '../../src/core/roughness';
+import { exactRoughness } from '../../src/core/roughness';
 import { simulatePasses, startSimulation } from '../../src/core/simulation';
 import { forwardInput, type PassPattern, scallopHeightLimits, type ToolInput } from '../../src/core/validate';
 import { seededRandom } from '../support/bruteForce';
@@ -12,7 +12,7 @@ import { seededRandom } from '../support/bruteForce';
 function compare(tool: ToolInput, pattern: PassPattern, h: number, cells = 512) {
   const input = forwardInput(tool, pattern, h);
   const e = exactForward(input);
-  const r = planeRoughness(input, e);
+  const r = exactRoughness(input, e);
   const sim = simulatePasses({ tool, pattern, intervalMm: e.intervalMm }, { cellsAcross: cells, cellsAlong: 8 });
   // Exact cusps in the order the passes meet: one-way all h; zigzag alternating (right-right first).
   const hR = e.halfWidthRightMm <= e.halfWidthLeftMm ? h : (e.otherCuspHeightMm ?? h);
