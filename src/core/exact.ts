@@ -276,9 +276,10 @@ function cylinderInverse(input: InverseInput, surface: CylinderSurface): ExactIn
       flank,
       Math.max(0, Math.min(z, flank === 'right' ? flankLimits(s).topRightMm : flankLimits(s).topLeftMm)),
     );
-  if (input.pattern === 'zigzag' || (input.tiltAngleDeg === 0 && surface.axis === 'feed')) {
+  if (input.pattern === 'zigzag' || input.tiltAngleDeg === 0) {
+    // Without tilt the flanks are mirror images (on both axes): each cusp is at half the reach.
     const hR = Math.max(0, c.heightAt('right', reach / 2));
-    const hL = input.tiltAngleDeg === 0 && surface.axis === 'feed' ? hR : Math.max(0, c.heightAt('left', reach / 2));
+    const hL = input.tiltAngleDeg === 0 ? hR : Math.max(0, c.heightAt('left', reach / 2));
     return {
       intervalMm: L,
       cuspHeightMm: Math.max(hR, hL),
@@ -297,9 +298,12 @@ function cylinderInverse(input: InverseInput, surface: CylinderSurface): ExactIn
   const f = (u: number) => c.intervalFromReach(c.reach('right', u * u) + c.reach('left', u * u)) - L;
   let lo = 0;
   let hi = Math.sqrt(limit);
-  let fLo = -L;
+  let fLo = f(0);
   let fHi = f(hi);
+  // The flat faces already cover L (a flat bottom lying on the cylinder): no scallop.
+  if (fLo >= 0) fHi = fLo;
   let side = 0;
+  if (fLo >= 0) hi = 0;
   for (let i = 0; i < 200 && hi - lo > 1e-16 * hi; i++) {
     let u = hi - (fHi * (hi - lo)) / (fHi - fLo);
     if (!(u > lo && u < hi)) u = 0.5 * (lo + hi);

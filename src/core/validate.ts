@@ -30,7 +30,8 @@ export type InputErrorCode =
   | 'flank-wall'
   | 'shank-cuts'
   | 'beyond-diameter'
-  | 'beyond-interval';
+  | 'beyond-interval'
+  | 'wall-only';
 
 /** One rejected field, as data; `message` is its description in mm (describeInputError). */
 export interface InputError {
@@ -201,6 +202,8 @@ export function describeInputError(e: InputError, unit: LengthUnit, options: Des
       return `${label} must be below ${limit} ${got}: above it the shank (the tool's cylindrical side, leaning to the ${e.side ?? 'right'} with the tilt) would cut the surface.`;
     case 'beyond-diameter':
       return `${label} must be below the tool ${half ? 'radius R' : 'diameter 2R'} = ${limit} ${got}; at or beyond it adjacent passes leave a wall.`;
+    case 'wall-only':
+      return `${label} cannot be answered ${got}: in this posture the tool cuts a step at any step-over (a flank or the shank rises straight from the contact, as a tilted flat end does), so no scallop forms. Add a corner radius, or lead, or less tilt.`;
     case 'beyond-interval':
       return `${label} must be below ${limit} ${got}, the widest step-over these flanks allow; at or beyond it adjacent passes leave a wall, not a scallop.`;
   }
@@ -428,7 +431,8 @@ export function validateForward(raw: RawForwardInput): Validation<ForwardInput> 
     else if (h < MIN_LENGTH_MM) reject(c, 'h', 'too-small', MIN_LENGTH_MM);
     else if (tool !== null && surface !== null && !(surface.kind === 'plane' && leavesNoScallop(tool))) {
       const limits = scallopHeightLimits(tool, surface);
-      if (h >= limits.limitMm) {
+      if (!(limits.limitMm >= MIN_LENGTH_MM)) c.errors.push(error('h', 'wall-only', c.shown.h ?? ''));
+      else if (h >= limits.limitMm) {
         const by = limits.limitBy;
         const shank = by === 'shank-right' || by === 'shank-left';
         const side = by === 'right-flank' || by === 'shank-right' ? 'right' : 'left';
@@ -469,9 +473,12 @@ export function validateInverse(raw: RawInverseInput): Validation<InverseInput> 
     if (L <= 0) reject(c, 'interval', 'not-positive');
     else if (L < 2 * MIN_LENGTH_MM) reject(c, 'interval', 'too-small', 2 * MIN_LENGTH_MM);
     else if (tool !== null && pattern !== null && surface !== null) {
-      const max = maxIntervalMm(tool, pattern, surface);
+      const leavesScallop = surface.kind === 'plane' && leavesNoScallop(tool);
+      const limit = scallopHeightLimits(tool, surface).limitMm;
+      const max = leavesScallop || limit >= MIN_LENGTH_MM ? maxIntervalMm(tool, pattern, surface) : Number.NaN;
       const onPlaneNoTilt = tool.tiltAngleDeg === 0 && surface.kind === 'plane';
-      if (!(L < max)) reject(c, 'interval', onPlaneNoTilt ? 'beyond-diameter' : 'beyond-interval', max);
+      if (!(max > 0) || !Number.isFinite(max)) reject(c, 'interval', 'wall-only');
+      else if (!(L < max)) reject(c, 'interval', onPlaneNoTilt ? 'beyond-diameter' : 'beyond-interval', max);
     }
   }
   if (c.errors.length > 0 || tool === null || pattern === null || surface === null || L === undefined) {
