@@ -109,11 +109,22 @@ export interface ForwardComparison {
   readonly curvature: CurvatureComparison | null;
 }
 
+/** What ignoring or correcting for the curvature gives on a cylinder (inverse: heights at the step-over), mm. */
+export interface InverseCurvatureComparison {
+  readonly surface: CylinderSurface;
+  /** The plane's exact scallop height at the same step-over. */
+  readonly plane: InverseEstimate;
+  /** The usual correction (see CurvatureComparison): `h = rho - sqrt(rho^2 - (L/2)^2)`. */
+  readonly corrected: { readonly [K in CorrectedKey]: InverseEstimate };
+}
+
 /** Scallop height of every procedure at one step-over (mm). */
 export interface InverseComparison {
   readonly input: InverseInput;
   readonly exact: ExactInverse;
   readonly approximations: Readonly<Record<ApproximationKey, InverseEstimate>>;
+  /** On a cylinder: the plane's answer and the usual curvature correction; null on a plane. */
+  readonly curvature: InverseCurvatureComparison | null;
 }
 
 function estimate<M>(
@@ -231,6 +242,52 @@ function heightEstimate(r: Approximation<ScallopHeight>, exactMm: number): Inver
   };
 }
 
+/** The curvature rows of the inverse (see InverseCurvatureComparison). */
+function inverseCurvatureRows(
+  input: InverseInput,
+  surface: CylinderSurface,
+  exactMm: number,
+): InverseCurvatureComparison {
+  const L = input.intervalMm;
+  const planeInput = inverseInput(input, input.pattern, L);
+  const planeMax = maxIntervalMm(input, input.pattern);
+  const plane: InverseEstimate =
+    L < planeMax
+      ? heightEstimate({ ok: true, scallopHeightMm: exactInverse(planeInput).cuspHeightMm }, exactMm)
+      : { ok: false, notApplicable: 'Plane: the step-over is at or beyond the widest one the tool allows on a plane.' };
+  const across = surface.axis === 'feed' ? surface.radiusMm : Number.POSITIVE_INFINITY;
+  const radii: Record<CorrectedKey, Approximation<{ effectiveRadiusMm: number }>> = {
+    sekine: sekineModel(input),
+    redonnet: redonnetModel(input),
+    osculating: osculatingModel(input),
+    cornerBall: cornerBallModel(input),
+  };
+  const corrected = {} as { -readonly [K in CorrectedKey]: InverseEstimate };
+  const half = L / 2;
+  for (const key of CORRECTED_KEYS) {
+    const m = radii[key];
+    const who = `${PROCEDURES[key].shortLabel}, corrected for the curvature`;
+    if (!m.ok) {
+      corrected[key] = { ok: false, notApplicable: m.notApplicable };
+      continue;
+    }
+    const reff = m.effectiveRadiusMm;
+    const rho = Number.isFinite(across) ? (reff * across) / (reff + across) : reff;
+    if (!(rho > 0) || !Number.isFinite(rho) || half > rho) {
+      corrected[key] = {
+        ok: false,
+        notApplicable: `${who}: L/2 is not inside its combined circle (${formatSignificant(rho, { digits: 5, trimZeros: true })} mm).`,
+      };
+      continue;
+    }
+    corrected[key] = heightEstimate(
+      { ok: true, scallopHeightMm: (half * half) / (rho + Math.sqrt((rho - half) * (rho + half))) },
+      exactMm,
+    );
+  }
+  return { surface, plane, corrected };
+}
+
 /** Every procedure's scallop height at a validated step-over. */
 export function compareInverse(input: InverseInput): InverseComparison {
   const exact = exactInverse(input);
@@ -238,6 +295,7 @@ export function compareInverse(input: InverseInput): InverseComparison {
   return {
     input,
     exact,
+    curvature: input.surface.kind === 'cylinder' ? inverseCurvatureRows(input, input.surface, h) : null,
     approximations: {
       sekine: heightEstimate(sekineScallopHeight(input), h),
       redonnet: heightEstimate(redonnetScallopHeight(input), h),
