@@ -322,10 +322,7 @@ function refinedCusp(field: Field, lo: number, hi: number): { y: number; z: numb
     if (m.y >= y0 + c.from * dy - 1e-12 && m.y <= y0 + c.to * dy + 1e-12 && m.z >= best.z) best = m;
   }
   const second = (j: number) => Math.abs(z(j + 1) - 2 * z(j) + z(j - 1)) / (dy * dy);
-  const curvature = Math.max(
-    second(jm - 2 < 1 ? 1 : jm - 2),
-    second(jm + 2 > field.rows - 2 ? field.rows - 2 : jm + 2),
-  );
+  const curvature = Math.max(second(Math.max(1, jm - 2)), second(Math.min(field.rows - 2, jm + 2)));
   return { ...best, curvature };
 }
 

@@ -21,7 +21,7 @@ import { profilePolyline } from './geometry';
 import { PAPER_CONDITIONS, type PaperCondition, type ProcedureValues } from './paper';
 import { shapeOfTool } from './posture';
 import { PROCEDURE_KEYS, type ProcedureKey } from './procedures';
-import type { ForwardInput, InverseInput, PassPattern, ToolInput } from './validate';
+import type { InverseInput, PassPattern, ToolInput } from './validate';
 import { forwardInput, inverseInput, leavesNoScallop, scallopHeightLimits } from './validate';
 
 /** Cross-feed curves as flat (y, z) arrays, z above the contact, y from the contact (mm). */

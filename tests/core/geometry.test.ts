@@ -29,7 +29,7 @@ function drawCase(rand: () => number, k: number): { tool: ToolInput; h: number }
   const tilt = [0, 40 * rand() - 20, 80 * rand() - 40][(k >> 1) % 3] as number;
   const tool = { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, tiltAngleDeg: tilt };
   const limit = scallopHeightLimits(tool).limitMm;
-  return { tool, h: limit * [1e-6, 0.01, 0.3, 0.97][k % 4]! };
+  return { tool, h: limit * ([1e-6, 0.01, 0.3, 0.97][k % 4] as number) };
 }
 
 describe('the geometry a viewer draws', () => {

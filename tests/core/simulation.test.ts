@@ -39,11 +39,11 @@ describe('simulation of the passes against the exact solution', () => {
         const h = limit * (0.005 + 0.3 * rand());
         const { r, sim, exactCusps } = compare(tool, pattern, h);
         const label = JSON.stringify({ tool, pattern, h });
-        sim.cuspHeightsMm.forEach((c, i) =>
+        sim.cuspHeightsMm.forEach((c, i) => {
           expect(Math.abs(c - (exactCusps[i] as number)), `cusp ${i} ${label}`).toBeLessThanOrEqual(
             sim.resolutionBoundMm,
-          ),
-        );
+          );
+        });
         expect(Math.abs(sim.roughness.raMm - r.raMm), `Ra ${label}`).toBeLessThanOrEqual(sim.roughnessBoundMm);
         expect(Math.abs(sim.roughness.rqMm - r.rqMm), `Rq ${label}`).toBeLessThanOrEqual(sim.roughnessBoundMm);
         expect(Math.abs(sim.roughness.rzMm - r.rzMm), `Rz ${label}`).toBeLessThanOrEqual(sim.roughnessBoundMm);
