@@ -28,6 +28,7 @@ import {
   type ForwardInput,
   forwardInput,
   inputError,
+  leavesNoScallop,
   MIN_LENGTH_MM,
   type PassInput,
   type PassPattern,
@@ -297,7 +298,8 @@ export interface TargetRaInput extends PassInput {
 /**
  * Validates a target roughness: the tool rules of validateForward, and `Ra` from
  * {@link MIN_LENGTH_MM} up to maxRaMm (the Ra at the largest scallop height; error code
- * `beyond-roughness` with that limit, or with 0 when the tool leaves no scallop at all).
+ * `beyond-roughness` with that limit, or with 0 for a flat end lying on a plane, which leaves no
+ * scallop; `wall-only` when the tool cuts a step in this posture).
  */
 export function validateTargetRa(raw: RawTargetRaInput): Validation<TargetRaInput> {
   const v = validatePassAnd(raw, 'Ra');
@@ -307,8 +309,15 @@ export function validateTargetRa(raw: RawTargetRaInput): Validation<TargetRaInpu
     if (ra <= 0) errors.push(inputError('Ra', 'not-positive', v.shown));
     else if (ra < MIN_LENGTH_MM) errors.push(inputError('Ra', 'too-small', v.shown, MIN_LENGTH_MM));
     else if (v.pass !== null) {
-      const max = maxRaMm(v.pass, v.pass.pattern, v.pass.surface);
-      if (!(ra <= max)) errors.push(inputError('Ra', 'beyond-roughness', v.shown, max));
+      const p = v.pass;
+      const flatLying = p.surface.kind === 'plane' && leavesNoScallop(p);
+      if (!flatLying && !(scallopHeightLimits(p, p.surface).limitMm >= MIN_LENGTH_MM)) {
+        // As validateForward: in this posture the tool cuts a step, no scallop forms.
+        errors.push(inputError('Ra', 'wall-only', v.shown));
+      } else {
+        const max = flatLying ? 0 : maxRaMm(p, p.pattern, p.surface);
+        if (!(ra <= max)) errors.push(inputError('Ra', 'beyond-roughness', v.shown, max));
+      }
     }
   }
   if (errors.length > 0 || v.pass === null || ra === undefined) return { ok: false, errors };

@@ -1,5 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { batchRow, csvNumber, type Layout, outputHeader, parseHeader, RESULT_COLUMNS } from '../../src/cli/batch';
+import {
+  batchRow,
+  csvNumber,
+  HEADER_RULE,
+  type Layout,
+  outputHeader,
+  parseHeader,
+  RESULT_COLUMNS,
+} from '../../src/cli/batch';
 import { parseCsv } from '../../src/cli/csv';
 import {
   APPROXIMATION_KEYS,
@@ -37,7 +45,10 @@ describe('batch header', () => {
   });
 
   it.each([
-    ['R,Rcr,rho', /missing h/],
+    ['R,Rcr,rho', /missing h \(or Ra\)/],
+    ['R,Rcr,rho,h,Ra', /give h or Ra, not both/],
+    ['R,Rcr,Ra,surfaceradius', /missing rho; unknown column "surfaceradius"/],
+    ['R,Rcr,rho,Ra,surfaceAxis,surfaceAxis', /column surfaceAxis appears twice/],
     ['R,Rcr,rho,h,tlit', /unknown column "tlit"/],
     ['R,Rcr,rho,h,id', /unknown column "id"/],
     ['R,Rcr,rho,h,R', /column R appears twice/],
@@ -49,7 +60,8 @@ describe('batch header', () => {
     const h = parseHeader(record);
     expect(h.ok).toBe(false);
     if (!h.ok) {
-      expect(h.error).toMatch(/^the CSV header must be R,Rcr,rho,h in any order, optionally with tilt and pattern/);
+      expect(h.error.startsWith(`${HEADER_RULE} `) || h.error.startsWith(`${HEADER_RULE};`)).toBe(true);
+      expect(h.error).toMatch(/^the CSV header must be R,Rcr,rho,h \(or Ra in place of h\) in any order/);
       expect(h.error).toMatch(message);
     }
   });

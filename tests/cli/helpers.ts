@@ -1,6 +1,8 @@
 /** Helpers of the command-line tests: run the CLI as a process, seeded random numbers. */
 import { spawn } from 'node:child_process';
+import { PassThrough, Readable } from 'node:stream';
 import { fileURLToPath } from 'node:url';
+import { main } from '../../src/cli/main';
 
 export const BIN = fileURLToPath(new URL('../../src/cli/bin.mjs', import.meta.url));
 
@@ -27,6 +29,25 @@ export function run(args: readonly string[], stdin = ''): Promise<RunResult> {
     child.stdin.on('error', () => {}); // the CLI may stop reading early (a usage error)
     child.stdin.end(stdin);
   });
+}
+
+/**
+ * Runs the command line's main() in this process (for many cases: no process start-up each), with
+ * the same streams a process has: stdin from `stdin`, stdout and stderr gathered.
+ */
+export async function runMain(args: readonly string[], stdin = ''): Promise<RunResult> {
+  const stdout = new PassThrough();
+  const stderr = new PassThrough();
+  let out = '';
+  let err = '';
+  stdout.setEncoding('utf8').on('data', (d: string) => {
+    out += d;
+  });
+  stderr.setEncoding('utf8').on('data', (d: string) => {
+    err += d;
+  });
+  const code = await main(args, { stdin: Readable.from([stdin]), stdout, stderr });
+  return { code, stdout: out, stderr: err };
 }
 
 /** A seeded generator of uniform numbers in [0, 1) (mulberry32): the same seed, the same cases. */

@@ -91,3 +91,12 @@ describe('simulation size guard', () => {
     expect(() => simulatePasses({ tool, pattern: 'one-way', intervalMm: L })).toThrow(SimulationTooLargeError);
   });
 });
+
+describe('validateTargetRa: tools that leave no scallop', () => {
+  it('a tilted flat end cuts a step (wall-only, as for h); a flat end lying on a plane leaves Ra = 0', () => {
+    const step = validateTargetRa({ R: '3', Rcr: '0', rho: '0', tilt: '10', Ra: '0.01' });
+    const flat = validateTargetRa({ R: '3', Rcr: '0', rho: '0', Ra: '0.01' });
+    expect(step.ok || step.errors.map((e) => [e.field, e.code])).toEqual([['Ra', 'wall-only']]);
+    expect(flat.ok || flat.errors.map((e) => [e.field, e.code, e.limit])).toEqual([['Ra', 'beyond-roughness', 0]]);
+  });
+});
