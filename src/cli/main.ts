@@ -4,16 +4,16 @@
  */
 import type { Readable, Writable } from 'node:stream';
 import {
+  type AnyFieldName,
+  type AnyInputError,
   compareForward,
   compareInverse,
   type DescribeOptions,
   describeInputError,
   exactRoughness,
   exactRoughnessAtInterval,
-  type FieldName,
   type ForwardInput,
   forwardInput,
-  type InputError,
   type PassInput,
   SimulationTooLargeError,
   scallopHeightForRaMm,
@@ -76,7 +76,7 @@ Exit codes: 0 success (a batch with bad rows included), 1 a read or write error,
 2 invalid input or usage.`;
 
 /** The option that gives a field, as the user types it, for messages. */
-export function optionOf(field: FieldName, half: boolean): string {
+export function optionOf(field: AnyFieldName, half: boolean): string {
   switch (field) {
     case 'interval':
       return half ? '--half-interval' : '--interval';
@@ -94,7 +94,7 @@ export function optionOf(field: FieldName, half: boolean): string {
 function reportErrors(
   io: Io,
   out: Output,
-  errors: readonly InputError[],
+  errors: readonly AnyInputError[],
   json: boolean,
   half: { readonly typed: string } | null,
 ): number {

@@ -25,6 +25,7 @@ import { type CylinderSolver, cylinderSolver, PLANE, type Surface } from './cyli
 import { type ExactForward, type ExactInverse, exactForward } from './exact';
 import { type Flank, flankWidthMm, type PostureShape, shapeOfTool } from './posture';
 import {
+  type AnyInputError,
   type ForwardInput,
   forwardInput,
   inputError,
@@ -301,7 +302,7 @@ export interface TargetRaInput extends PassInput {
  * `beyond-roughness` with that limit, or with 0 for a flat end lying on a plane, which leaves no
  * scallop; `wall-only` when the tool cuts a step in this posture).
  */
-export function validateTargetRa(raw: RawTargetRaInput): Validation<TargetRaInput> {
+export function validateTargetRa(raw: RawTargetRaInput): Validation<TargetRaInput, AnyInputError> {
   const v = validatePassAnd(raw, 'Ra');
   const errors = [...v.errors];
   const ra = v.value;

@@ -11,17 +11,10 @@ import { type FlankLimits, flankAtHeight, flankLimits, type PostureShape, shapeO
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from './units';
 
 /** Names of the user-facing inputs. */
-export type FieldName =
-  | 'R'
-  | 'Rcr'
-  | 'rho'
-  | 'tilt'
-  | 'pattern'
-  | 'surfaceRadius'
-  | 'surfaceAxis'
-  | 'h'
-  | 'interval'
-  | 'Ra';
+export type FieldName = 'R' | 'Rcr' | 'rho' | 'tilt' | 'pattern' | 'surfaceRadius' | 'surfaceAxis' | 'h' | 'interval';
+
+/** Every field an error can name: the fields above and a target roughness `Ra` (validateTargetRa). */
+export type AnyFieldName = FieldName | 'Ra';
 
 /** Why a field was rejected. */
 export type InputErrorCode =
@@ -45,8 +38,8 @@ export type InputErrorCode =
   | 'wall-only';
 
 /** One rejected field, as data; `message` is its description in mm (describeInputError). */
-export interface InputError {
-  readonly field: FieldName;
+export interface InputErrorOf<F extends AnyFieldName> {
+  readonly field: F;
   readonly code: InputErrorCode;
   /** The value as given, as text (what the user typed, or the number). */
   readonly got: string;
@@ -58,10 +51,16 @@ export interface InputError {
   readonly message: string;
 }
 
+/** An error of the forward and inverse problems. */
+export type InputError = InputErrorOf<FieldName>;
+
+/** An error of the target-roughness problem (its own field `Ra` included). */
+export type AnyInputError = InputErrorOf<AnyFieldName>;
+
 /** Either the accepted value or the list of errors (at most one per field). */
-export type Validation<T> =
+export type Validation<T, E extends AnyInputError = InputError> =
   | { readonly ok: true; readonly value: T }
-  | { readonly ok: false; readonly errors: readonly InputError[] };
+  | { readonly ok: false; readonly errors: readonly E[] };
 
 /** How adjacent passes run: every pass the same way, or alternating (posture relative to the feed). */
 export type PassPattern = 'one-way' | 'zigzag';
@@ -136,7 +135,7 @@ export const MIN_TOOL_RADIUS_MM = 0.001;
 export const MIN_LENGTH_MM = 1e-9;
 
 /** Labels of the fields as messages name them. */
-export const FIELD_LABELS: Readonly<Record<FieldName, string>> = {
+export const FIELD_LABELS: Readonly<Record<AnyFieldName, string>> = {
   R: 'Tool radius R',
   Rcr: 'Corner radius Rcr',
   rho: 'Lead angle rho',
@@ -158,7 +157,7 @@ export interface DescribeOptions {
 }
 
 /** True for fields measured as lengths (converted to the user's unit in messages). */
-function isLength(field: FieldName): boolean {
+function isLength(field: AnyFieldName): boolean {
   return (
     field === 'R' ||
     field === 'Rcr' ||
@@ -173,7 +172,7 @@ function isLength(field: FieldName): boolean {
  * The message of an input error in `unit` (lengths converted; angles stay in degrees). The one
  * place where error data becomes words.
  */
-export function describeInputError(e: InputError, unit: LengthUnit, options: DescribeOptions = {}): string {
+export function describeInputError(e: AnyInputError, unit: LengthUnit, options: DescribeOptions = {}): string {
   const half = e.field === 'interval' && options.intervalAsHalf === true;
   const label = half ? 'Half path interval L/2' : FIELD_LABELS[e.field];
   const u = unitSymbol(unit);
@@ -233,13 +232,13 @@ export function describeInputError(e: InputError, unit: LengthUnit, options: Des
 }
 
 /** An input error as data, with its message in mm. */
-export function inputError(
-  field: FieldName,
+export function inputError<F extends AnyFieldName>(
+  field: F,
   code: InputErrorCode,
   got: string,
   limit: number | null = null,
   side: 'right' | 'left' | null = null,
-): InputError {
+): InputErrorOf<F> {
   const data = { field, code, got, limit, side, message: '' };
   return { ...data, message: describeInputError(data, 'mm') };
 }
@@ -393,7 +392,7 @@ function toolOf(values: Collected['values']): ToolInput | null {
 /** The common part of a validation: tool, pattern and surface (gouging included), and one number field, parsed. */
 export interface PassValidation {
   /** The errors so far, at most one per field; the field is only parsed, not checked against its range. */
-  readonly errors: readonly InputError[];
+  readonly errors: readonly AnyInputError[];
   /** The tool, pattern and surface when they are valid (whatever the field). */
   readonly pass: PassInput | null;
   /** The field's number, when it parsed. */
@@ -407,25 +406,28 @@ export interface PassValidation {
 /**
  * Validates the tool, pattern and surface as validateForward does, and parses `field` (a further
  * problem's own quantity, such as a target roughness `Ra`); the caller checks its range and
- * words its errors with {@link inputError}.
+ * words its errors with {@link inputError}. Errors come in validateForward's order.
  */
 export function validatePassAnd(
-  raw: RawToolInput & Readonly<Partial<Record<FieldName, unknown>>>,
-  field: FieldName,
+  raw: RawToolInput & Readonly<Partial<Record<AnyFieldName, unknown>>>,
+  field: AnyFieldName,
 ): PassValidation {
-  const c = collect(raw, ['R', 'Rcr', 'rho', 'tilt', field]);
+  const c = collect(raw, ['R', 'Rcr', 'rho', 'tilt']);
   checkTool(c);
-  const pattern = checkPattern(raw.pattern, c.errors);
-  const surface = checkSurface(raw, c.errors);
+  const parsed = parseNumber(raw[field]);
+  const own: AnyInputError[] = parsed.ok ? [] : [inputError(field, parsed.code, parsed.shown)];
+  const rest: InputError[] = [];
+  const pattern = checkPattern(raw.pattern, rest);
+  const surface = checkSurface(raw, rest);
   const tool = toolOf(c.values);
   const gouge = tool !== null && surface !== null ? gouging(tool, surface, String(raw.surfaceRadius ?? '')) : null;
-  if (gouge) c.errors.push(gouge);
-  const valid = c.errors.every((e) => e.field === field) && tool !== null && pattern !== null && surface !== null;
+  if (gouge) rest.push(gouge);
+  const valid = c.errors.length === 0 && rest.length === 0;
   return {
-    errors: c.errors,
-    pass: valid ? { ...tool, pattern, surface } : null,
-    value: c.values[field],
-    shown: c.shown[field] ?? '',
+    errors: [...c.errors, ...own, ...rest],
+    pass: valid && tool !== null && pattern !== null && surface !== null ? { ...tool, pattern, surface } : null,
+    value: parsed.ok ? parsed.value : undefined,
+    shown: parsed.shown,
     gouges: gouge !== null,
   };
 }
