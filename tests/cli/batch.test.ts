@@ -159,4 +159,59 @@ describe('batch rows', () => {
     expect(checked).toBeGreaterThan(0.75 * N);
     expect(warned).toBeGreaterThan(50);
   });
+
+  const cylinderSeed = 5150;
+  const M = 400;
+  it(`cylinder rows: the warnings are the core's for that surface (seed ${cylinderSeed}, ${M} random cases)`, () => {
+    const layout = layoutOf('R,Rcr,rho,h,tilt,pattern,surfaceRadius,surfaceAxis');
+    const rand = random(cylinderSeed);
+    let warned = 0;
+    let checked = 0;
+    for (let k = 0; k < M; k++) {
+      const R = 0.5 + 10 * rand();
+      const t = {
+        toolRadiusMm: R,
+        cornerRadiusMm: R * rand(),
+        leadAngleDeg: 30 * rand(),
+        tiltAngleDeg: 10 * (rand() - 0.5),
+      };
+      const pattern = pick(rand, PASS_PATTERNS);
+      const surface = {
+        kind: 'cylinder' as const,
+        radiusMm: (rand() < 0.5 ? -1 : 1) * R * (1.5 + 20 * rand()),
+        axis: pick(rand, ['feed', 'cross'] as const),
+      };
+      let limit = 0;
+      try {
+        limit = scallopHeightLimits(t, surface).limitMm;
+      } catch {
+        continue;
+      }
+      const h = limit * pick(rand, [0.5, 0.9, 0.99, rand()]);
+      const fields = [R, t.cornerRadiusMm, t.leadAngleDeg, h, t.tiltAngleDeg, pattern, surface.radiusMm, surface.axis];
+      const v = validateForward({
+        R,
+        Rcr: t.cornerRadiusMm,
+        rho: t.leadAngleDeg,
+        tilt: t.tiltAngleDeg,
+        pattern,
+        h,
+        surfaceRadius: surface.radiusMm,
+        surfaceAxis: surface.axis,
+      });
+      if (!v.ok) continue;
+      checked++;
+      const c = compareForward(v.value);
+      const note = row(layout, fields.join(','))[8 + 11] as string;
+      const warnings = APPROXIMATION_KEYS.flatMap((key) => {
+        const a = c.approximations[key];
+        return a.ok && a.warning !== null ? [a.warning] : [];
+      });
+      warned += warnings.length;
+      for (const w of warnings) expect(note).toContain(w);
+      expect(note.split('leave a wall.').length - 1).toBe(warnings.length);
+    }
+    expect(checked).toBeGreaterThan(0.5 * M);
+    expect(warned).toBeGreaterThan(20);
+  });
 });

@@ -71,6 +71,9 @@ describe('validateTargetRa', () => {
     const g = validateTargetRa({ ...base, surfaceRadius: '-2', Ra: '5' });
     expect(g.ok).toBe(false);
     if (!g.ok) expect(g.errors.map((e) => [e.field, e.code])).toEqual([['surfaceRadius', 'gouging']]);
+    // As for h: on a gouged cylinder the Ra's own range is moot.
+    const negative = validateTargetRa({ ...base, surfaceRadius: '-2', Ra: '-1' });
+    expect(negative.ok || negative.errors.map((e) => e.code)).toEqual(['gouging']);
     const t = validateTargetRa({ R: '3', Rcr: '4', rho: '5', Ra: '-1', surfaceAxis: 'x', surfaceRadius: '5' });
     expect(t.ok).toBe(false);
     if (!t.ok) {
