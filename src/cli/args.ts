@@ -4,10 +4,22 @@
  */
 
 /** Options that take a value, and the field of the core each one feeds. */
-export const VALUE_OPTIONS = ['R', 'Rcr', 'rho', 'tilt', 'pattern', 'h', 'interval', 'half-interval'] as const;
+export const VALUE_OPTIONS = [
+  'R',
+  'Rcr',
+  'rho',
+  'tilt',
+  'pattern',
+  'surface-radius',
+  'surface-axis',
+  'h',
+  'ra',
+  'interval',
+  'half-interval',
+] as const;
 export type ValueOption = (typeof VALUE_OPTIONS)[number];
 
-const FLAG_OPTIONS = ['json', 'inverse', 'batch', 'help'] as const;
+const FLAG_OPTIONS = ['json', 'inverse', 'simulate', 'batch', 'help'] as const;
 type FlagOption = (typeof FLAG_OPTIONS)[number];
 
 /** What the command line was asked to do. */
@@ -15,13 +27,17 @@ export type Request =
   | { readonly kind: 'help' }
   | { readonly kind: 'batch' }
   | {
-      readonly kind: 'forward';
+      /** `forward`: the step-over for a scallop height (--h); `ra`: for a target roughness (--ra). */
+      readonly kind: 'forward' | 'ra';
       readonly json: boolean;
+      /** True with --simulate: the passes are also simulated (plane only). */
+      readonly simulate: boolean;
       readonly values: Readonly<Partial<Record<ValueOption, string>>>;
     }
   | {
       readonly kind: 'inverse';
       readonly json: boolean;
+      readonly simulate: boolean;
       readonly values: Readonly<Partial<Record<ValueOption, string>>>;
       /** True when the step-over was given as its half (`--half-interval`). */
       readonly half: boolean;
@@ -101,6 +117,7 @@ export function parseArgs(args: readonly string[]): Request {
     return { kind: 'batch' };
   }
   const json = flags.has('json');
+  const simulate = flags.has('simulate');
   const hasInterval = values.interval !== undefined;
   const hasHalf = values['half-interval'] !== undefined;
   if (hasInterval && hasHalf) return usage('give the step-over once: --interval (L) or --half-interval (L/2)');
@@ -112,6 +129,26 @@ export function parseArgs(args: readonly string[]): Request {
   if (flags.has('inverse') && values.h !== undefined) {
     return usage('--inverse computes h: give --interval <mm> or --half-interval <mm> instead of --h');
   }
-  if (flags.has('inverse') || hasInterval || hasHalf) return { kind: 'inverse', json, values, half: hasHalf };
-  return { kind: 'forward', json, values };
+  const hasRa = values.ra !== undefined;
+  if (hasRa && values.h !== undefined) {
+    return usage('--h and --ra do not go together: give the scallop height --h or the target roughness --ra');
+  }
+  if (hasRa && (flags.has('inverse') || hasInterval || hasHalf)) {
+    const other = flags.has('inverse') ? 'inverse' : hasHalf ? 'half-interval' : 'interval';
+    return usage(
+      `--ra and --${other} do not go together: --ra finds the step-over for a roughness; the inverse gives the roughness of a step-over`,
+    );
+  }
+  const radius = values['surface-radius']?.trim();
+  const onPlane = radius === undefined || radius === '' || radius === 'plane';
+  if (values['surface-axis'] !== undefined && radius === undefined) {
+    return usage('--surface-axis needs --surface-radius <mm>: a plane has no axis');
+  }
+  if (simulate && !onPlane) {
+    return usage(
+      '--simulate works on a plane only: the simulation of the passes does not model a cylinder (leave out --surface-radius or --simulate)',
+    );
+  }
+  if (flags.has('inverse') || hasInterval || hasHalf) return { kind: 'inverse', json, simulate, values, half: hasHalf };
+  return { kind: hasRa ? 'ra' : 'forward', json, simulate, values };
 }

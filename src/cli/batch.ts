@@ -1,10 +1,13 @@
 /**
  * `--batch`: CSV cases on stdin to a CSV table on stdout, streamed record by record.
  *
- * Input: a header naming R, Rcr, rho and h, optionally tilt and pattern, in any order (no other
- * column); one case per record. Blank lines are not records: they are skipped. Output: one row per
- * record, in order: the input columns echoed (R,Rcr,rho,h then tilt, pattern when given), the
- * results ({@link RESULT_COLUMNS}) and `error` last. Numbers are written in full precision (the
+ * Input: a header naming R, Rcr, rho and either h (scallop height) or Ra (target roughness),
+ * optionally tilt, pattern, surfaceRadius and surfaceAxis, in any order (no other column); one
+ * case per record. Blank lines are not records: they are skipped. An empty field of an optional
+ * column takes its default (tilt 0, one-way, a plane, axis along the feed). Output: one row per
+ * record, in order: the input columns echoed (R,Rcr,rho,h or Ra, then the optional ones given, in
+ * the order above), with Ra the scallop height `h` that leaves it, the results
+ * ({@link RESULT_COLUMNS}) and `error` last. Numbers are written in full precision (the
  * shortest text that reads back to the same double); a value that does not exist is an empty
  * field. A bad record gets its message in `error` and the run goes on.
  */
@@ -19,22 +22,29 @@ import {
   cornerBallHalfInterval,
   exactForward,
   type ForwardInput,
+  forwardInput,
   type HalfInterval,
   maxIntervalMm,
   osculatingHalfInterval,
   PROCEDURES,
   redonnetHalfInterval,
+  scallopHeightForRaMm,
   sekineHalfInterval,
   validateForward,
+  validateTargetRa,
 } from '../core/index';
 import { CsvReader, type CsvRecord, csvText } from './csv';
 import { describeSystemError, FLUSH_CHARS, type Output } from './output';
 
-/** Input columns: required first, in the order they are echoed. */
-export const REQUIRED_COLUMNS = ['R', 'Rcr', 'rho', 'h'] as const;
-export const OPTIONAL_COLUMNS = ['tilt', 'pattern'] as const;
-type InputColumn = (typeof REQUIRED_COLUMNS)[number] | (typeof OPTIONAL_COLUMNS)[number];
-const INPUT_COLUMNS: readonly InputColumn[] = [...REQUIRED_COLUMNS, ...OPTIONAL_COLUMNS];
+/** Input columns: required first, then the target (one of the two), then the optional ones, in the order they are echoed. */
+export const REQUIRED_COLUMNS = ['R', 'Rcr', 'rho'] as const;
+export const TARGET_COLUMNS = ['h', 'Ra'] as const;
+export const OPTIONAL_COLUMNS = ['tilt', 'pattern', 'surfaceRadius', 'surfaceAxis'] as const;
+type InputColumn =
+  | (typeof REQUIRED_COLUMNS)[number]
+  | (typeof TARGET_COLUMNS)[number]
+  | (typeof OPTIONAL_COLUMNS)[number];
+const INPUT_COLUMNS: readonly InputColumn[] = [...REQUIRED_COLUMNS, ...TARGET_COLUMNS, ...OPTIONAL_COLUMNS];
 
 /**
  * Result columns after the echoed input: L/2 of the exact solution and of the paper's three
@@ -66,11 +76,17 @@ export interface Layout {
   /** Echoed columns (canonical order) and their index in a record. */
   readonly echoed: readonly { readonly name: InputColumn; readonly index: number }[];
   readonly index: Readonly<Partial<Record<InputColumn, number>>>;
+  /** The target column: a scallop height, or a roughness Ra (then `h` is a result column). */
+  readonly target: (typeof TARGET_COLUMNS)[number];
 }
+
+/** What the header must be, as the messages say it. */
+export const HEADER_RULE =
+  'the CSV header must be R,Rcr,rho,h (or Ra in place of h) in any order, optionally with tilt, pattern, surfaceRadius and surfaceAxis';
 
 /** Reads the header record: the layout, or the reason it is not one. */
 export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | { ok: false; error: string } {
-  const rule = 'the CSV header must be R,Rcr,rho,h in any order, optionally with tilt and pattern';
+  const rule = HEADER_RULE;
   if (record.error !== null) return { ok: false, error: `${rule}; line ${record.line}: ${record.error}` };
   const names = record.fields.map((f) => f.trim());
   const index: Partial<Record<InputColumn, number>> = {};
@@ -84,19 +100,27 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
     if (index[column] !== undefined) problems.push(`column ${name} appears twice`);
     else index[column] = i;
   });
-  const missing = REQUIRED_COLUMNS.filter((c) => index[c] === undefined);
+  const missing: string[] = REQUIRED_COLUMNS.filter((c) => index[c] === undefined);
+  if (index.h === undefined && index.Ra === undefined) missing.push('h (or Ra)');
+  if (index.h !== undefined && index.Ra !== undefined) problems.push('give h or Ra, not both');
   if (missing.length > 0) problems.unshift(`missing ${missing.join(', ')}`);
   if (problems.length > 0) return { ok: false, error: `${rule} (${problems.join('; ')})` };
   const echoed = INPUT_COLUMNS.flatMap((name) => {
     const i = index[name];
     return i === undefined ? [] : [{ name, index: i }];
   });
-  return { ok: true, layout: { width: names.length, names, echoed, index } };
+  const target = index.Ra === undefined ? 'h' : 'Ra';
+  return { ok: true, layout: { width: names.length, names, echoed, index, target } };
+}
+
+/** The result columns of a layout: with a target Ra, the scallop height `h` that leaves it comes first. */
+export function resultColumns(layout: Layout): readonly string[] {
+  return layout.target === 'Ra' ? ['h', ...RESULT_COLUMNS] : RESULT_COLUMNS;
 }
 
 /** The output header line for a layout. */
 export function outputHeader(layout: Layout): string {
-  return `${[...layout.echoed.map((c) => c.name), ...RESULT_COLUMNS].join(',')}\n`;
+  return `${[...layout.echoed.map((c) => c.name), ...resultColumns(layout)].join(',')}\n`;
 }
 
 /** A number in full precision: the shortest text that reads back to the same double; never `-0`. */
@@ -104,9 +128,10 @@ export function csvNumber(value: number): string {
   return value === 0 ? '0' : String(value);
 }
 
-/** Number of result columns before `note` and `error`. */
-const NUMBER_COLUMNS = RESULT_COLUMNS.length - 2;
-const EMPTY_NUMBERS = ','.repeat(NUMBER_COLUMNS);
+/** Empty fields for the result columns before `error` (numbers and `note`), each after a comma. */
+function emptyResults(layout: Layout): string {
+  return ','.repeat(resultColumns(layout).length - 1);
+}
 
 function halfText(r: Approximation<HalfInterval>): string {
   return r.ok ? csvNumber(r.halfIntervalMm) : '';
@@ -128,7 +153,7 @@ const NO_SCALLOP_NOTE =
  */
 export function resultFields(input: ForwardInput): string {
   const exact = exactForward(input);
-  const maxMm = maxIntervalMm(input, input.pattern);
+  const maxMm = maxIntervalMm(input, input.pattern, input.surface);
   const sekine = sekineHalfInterval(input);
   const redonnet = redonnetHalfInterval(input);
   const bedi = bediHalfInterval(input);
@@ -168,8 +193,8 @@ function trimSpaces(text: string): string {
   return text.replace(/^[ \t]+|[ \t]+$/g, '');
 }
 
-function errorRow(echo: string, message: string): string {
-  return `${echo},${EMPTY_NUMBERS},${csvText(message)}\n`;
+function errorRow(echo: string, layout: Layout, message: string): string {
+  return `${echo}${emptyResults(layout)},${csvText(message)}\n`;
 }
 
 /** A field of an optional column: undefined (the default) when the column is absent or the field empty. */
@@ -187,30 +212,40 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
     const c = layout.echoed[j] as { readonly index: number };
     echo += `${j === 0 ? '' : ','}${csvText(trimSpaces(fields[c.index] ?? ''))}`;
   }
-  if (record.error !== null) return errorRow(echo, `line ${record.line}: ${record.error}`);
+  if (record.error !== null) return errorRow(echo, layout, `line ${record.line}: ${record.error}`);
   if (fields.length !== layout.width) {
     return errorRow(
       echo,
+      layout,
       `line ${record.line}: expected ${layout.width} values (${layout.names.join(',')}), got ${fields.length}`,
     );
   }
   for (const c of layout.echoed) {
     const text = fields[c.index] as string;
     if (text.includes('\n') || text.includes('\r')) {
-      return errorRow(echo, `line ${record.line}: the ${c.name} field holds a line break`);
+      return errorRow(echo, layout, `line ${record.line}: the ${c.name} field holds a line break`);
     }
   }
   const { index } = layout;
-  // An empty optional field takes its default (tilt 0, one-way), as a missing column does.
-  const v = validateForward({
+  // An empty optional field takes its default (tilt 0, one-way, plane, feed), as a missing column does.
+  const pass = {
     R: fields[index.R as number],
     Rcr: fields[index.Rcr as number],
     rho: fields[index.rho as number],
     tilt: optionalField(fields, index.tilt),
     pattern: optionalField(fields, index.pattern),
-    h: fields[index.h as number],
-  });
-  if (!v.ok) return errorRow(echo, v.errors.map((e) => e.message).join(' '));
+    surfaceRadius: optionalField(fields, index.surfaceRadius),
+    surfaceAxis: optionalField(fields, index.surfaceAxis),
+  };
+  if (layout.target === 'Ra') {
+    const v = validateTargetRa({ ...pass, Ra: fields[index.Ra as number] });
+    if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
+    const p = v.value;
+    const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);
+    return `${echo},${csvNumber(h)},${resultFields(forwardInput(p, p.pattern, h, p.surface))},\n`;
+  }
+  const v = validateForward({ ...pass, h: fields[index.h as number] });
+  if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
   return `${echo},${resultFields(v.value)},\n`;
 }
 
@@ -261,7 +296,9 @@ export async function runBatch(io: BatchIo, out: Output): Promise<number> {
     return 2;
   }
   if (layout === null) {
-    io.stderr.write('error: no CSV on stdin: expected a header line R,Rcr,rho,h (optionally tilt, pattern)\n');
+    io.stderr.write(
+      'error: no CSV on stdin: expected a header line R,Rcr,rho,h (or Ra; optionally tilt, pattern, surfaceRadius, surfaceAxis)\n',
+    );
     return 2;
   }
   await out.flush();

@@ -4,20 +4,29 @@
  */
 import type { Readable, Writable } from 'node:stream';
 import {
+  type AnyFieldName,
+  type AnyInputError,
   compareForward,
   compareInverse,
   type DescribeOptions,
   describeInputError,
-  type FieldName,
-  type InputError,
+  exactRoughness,
+  exactRoughnessAtInterval,
+  type ForwardInput,
+  forwardInput,
+  type PassInput,
+  SimulationTooLargeError,
+  scallopHeightForRaMm,
+  simulatePasses,
   validateForward,
   validateInverse,
+  validateTargetRa,
 } from '../core/index';
 import { parseArgs, type Request, type ValueOption } from './args';
 import { runBatch } from './batch';
 import { isNumberText } from './csv';
 import { describeSystemError, isClosedPipe, Output } from './output';
-import { forwardJson, forwardTable, inverseJson, inverseTable } from './report';
+import { type Extras, forwardJson, forwardTable, inverseJson, inverseTable, type SimulationRun } from './report';
 
 export interface Io {
   readonly stdin: Readable;
@@ -25,28 +34,38 @@ export interface Io {
   readonly stderr: Writable;
 }
 
-export const USAGE = `Usage: path-interval --R <mm> --Rcr <mm> --rho <deg> [--tilt <deg>] [--pattern one-way|zigzag] --h <mm> [--json]
-       path-interval --R <mm> --Rcr <mm> --rho <deg> [--tilt <deg>] [--pattern ...] --interval <mm> [--json]
-       path-interval --R <mm> --Rcr <mm> --rho <deg> [--tilt <deg>] [--pattern ...] --half-interval <mm> [--json]
+export const USAGE = `Usage: path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --h <mm> [--json] [--simulate]
+       path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --ra <mm> [--json] [--simulate]
+       path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --interval <mm> [--json] [--simulate]
+       path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --half-interval <mm> [--json] [--simulate]
        path-interval --batch < cases.csv > table.csv
 
 Step-over (path interval L, between adjacent cutter-contact paths) of a filleted (bull-nose)
-end mill for a scallop height h, exact for any tool posture, beside the approximations of
-Sekine et al., Redonnet et al. and Bedi et al. (Sekine & Kameya 2022; lead-only models), the
-osculating circle at the contact and the ball of the corner radius.
+end mill for a scallop height h or a roughness Ra, exact for any tool posture on a plane or a
+cylinder, beside the approximations of Sekine et al., Redonnet et al. and Bedi et al. (Sekine &
+Kameya 2022; lead-only models), the osculating circle at the contact and the ball of the corner
+radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
 
   --R <mm>              tool radius (0.001 to 1000)
   --Rcr <mm>            corner radius (0 <= Rcr <= R; Rcr = R is a ball end)
   --rho <deg>           lead angle, along the feed (0 <= rho < 90)
   --tilt <deg>          tilt angle, across the feed; + leans the shank to +Y (-90 < tilt < 90; default 0)
   --pattern <p>         one-way (default) or zigzag (posture mirrored on every other pass)
+  --surface-radius <mm> a cylinder: signed radius, > 0 convex, < 0 concave (0.001 <= |Rs| <= 1e6);
+                        omitted: a plane. Scallop heights are measured radially, L along the surface
+  --surface-axis <a>    feed (default: passes run along the cylinder) or cross (passes go around it)
   --h <mm>              scallop height (from 1e-9 up to the flank and shank limits)
+  --ra <mm>             instead of --h: the step-over that leaves this roughness Ra (up to the
+                        largest Ra the tool leaves, named in the error)
   --interval <mm>       inverse: the scallop height left at step-over L
   --half-interval <mm>  inverse, the step-over given as L/2
   --inverse             optional with --interval or --half-interval (kept for old scripts)
+  --simulate            also simulate the passes (the tool solid over a 512 x 512 height field;
+                        a plane only) and show its cusp height and roughness beside the exact ones
   --json                print one JSON object instead of a table
-  --batch               read CSV on stdin (header R,Rcr,rho,h; optional tilt, pattern; any
-                        order), write CSV: the input columns, then
+  --batch               read CSV on stdin (header R,Rcr,rho and h or Ra; optional tilt, pattern,
+                        surfaceRadius, surfaceAxis; any order; an empty field takes the default),
+                        write CSV: the input columns, h (with Ra), then
                         exact,sekine,redonnet,bedi (L/2 of each), interval,halfWidthRight,
                         halfWidthLeft,contactOffset,otherCuspHeight (exact), osculating,
                         cornerBall (L/2), note, error; full precision; blank lines skipped
@@ -56,16 +75,26 @@ Table: 7 significant digits. JSON and CSV: every digit of the double.
 Exit codes: 0 success (a batch with bad rows included), 1 a read or write error,
 2 invalid input or usage.`;
 
-/** The option that gives a field, for messages. */
-function optionOf(field: FieldName, half: boolean): string {
-  if (field === 'interval') return half ? '--half-interval' : '--interval';
-  return `--${field}`;
+/** The option that gives a field, as the user types it, for messages. */
+export function optionOf(field: AnyFieldName, half: boolean): string {
+  switch (field) {
+    case 'interval':
+      return half ? '--half-interval' : '--interval';
+    case 'surfaceRadius':
+      return '--surface-radius';
+    case 'surfaceAxis':
+      return '--surface-axis';
+    case 'Ra':
+      return '--ra';
+    default:
+      return `--${field}`;
+  }
 }
 
 function reportErrors(
   io: Io,
   out: Output,
-  errors: readonly InputError[],
+  errors: readonly AnyInputError[],
   json: boolean,
   half: { readonly typed: string } | null,
 ): number {
@@ -73,8 +102,9 @@ function reportErrors(
     const asHalf = half !== null && e.field === 'interval';
     const options: DescribeOptions = asHalf ? { intervalAsHalf: true, typed: half.typed.trim() } : {};
     const message = describeInputError(e, 'mm', options);
-    io.stderr.write(`error: ${optionOf(e.field, asHalf)}: ${message}\n`);
-    return { ...e, message };
+    const option = optionOf(e.field, asHalf);
+    io.stderr.write(`error: ${option}: ${message}\n`);
+    return { ...e, option, message };
   });
   if (json) out.write(`${JSON.stringify({ errors: worded })}\n`);
   return 2;
@@ -82,22 +112,68 @@ function reportErrors(
 
 type Values = Readonly<Partial<Record<ValueOption, string>>>;
 
-function forward(values: Values, json: boolean, io: Io, out: Output): number {
-  const v = validateForward({
+/** What the options ask besides the answer: the output form and a simulation. */
+interface Wanted {
+  readonly json: boolean;
+  readonly simulate: boolean;
+}
+
+/** The raw tool, posture, pattern and surface of the options. */
+function passValues(values: Values) {
+  return {
     R: values.R,
     Rcr: values.Rcr,
     rho: values.rho,
     tilt: values.tilt,
     pattern: values.pattern,
-    h: values.h,
-  });
-  if (!v.ok) return reportErrors(io, out, v.errors, json, null);
-  const c = compareForward(v.value);
-  out.write(json ? `${JSON.stringify(forwardJson(c))}\n` : `${forwardTable(c)}\n`);
+    surfaceRadius: values['surface-radius'],
+    surfaceAxis: values['surface-axis'],
+  };
+}
+
+/**
+ * Simulates the passes at a step-over (plane only: args.ts refuses --simulate on a cylinder). A
+ * case too large to simulate is answered without it, saying why.
+ */
+function simulate(pass: PassInput, intervalMm: number): SimulationRun {
+  const t0 = performance.now();
+  try {
+    const result = simulatePasses({ tool: pass, pattern: pass.pattern, intervalMm });
+    return { ok: true, result, ms: performance.now() - t0 };
+  } catch (e) {
+    if (e instanceof SimulationTooLargeError) return { ok: false, notApplicable: e.message };
+    throw e;
+  }
+}
+
+/** The forward answer for a valid input, with its roughness (and the simulation when asked). */
+function writeForward(input: ForwardInput, wanted: Wanted, out: Output, targetRaMm?: number): number {
+  const c = compareForward(input);
+  const extras: Extras = {
+    roughness: exactRoughness(input, c.exact),
+    ...(targetRaMm === undefined ? {} : { targetRaMm }),
+    ...(wanted.simulate ? { simulation: simulate(input, c.exact.intervalMm) } : {}),
+  };
+  out.write(wanted.json ? `${JSON.stringify(forwardJson(c, extras))}\n` : `${forwardTable(c, extras)}\n`);
   return 0;
 }
 
-function inverse(values: Values, json: boolean, half: boolean, io: Io, out: Output): number {
+function forward(values: Values, wanted: Wanted, io: Io, out: Output): number {
+  const v = validateForward({ ...passValues(values), h: values.h });
+  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, null);
+  return writeForward(v.value, wanted, out);
+}
+
+/** --ra: the scallop height that leaves the target Ra, then the forward answer for it. */
+function targetRa(values: Values, wanted: Wanted, io: Io, out: Output): number {
+  const v = validateTargetRa({ ...passValues(values), Ra: values.ra });
+  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, null);
+  const p = v.value;
+  const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);
+  return writeForward(forwardInput(p, p.pattern, h, p.surface), wanted, out, p.targetRaMm);
+}
+
+function inverse(values: Values, wanted: Wanted, half: boolean, io: Io, out: Output): number {
   let interval: unknown = values.interval;
   const typedHalf = values['half-interval'];
   if (half && typedHalf !== undefined) {
@@ -108,17 +184,15 @@ function inverse(values: Values, json: boolean, half: boolean, io: Io, out: Outp
     if (!isNumberText(text)) interval = typedHalf;
     else interval = Number.isFinite(doubled) ? doubled : Math.sign(doubled) * Number.MAX_VALUE;
   }
-  const v = validateInverse({
-    R: values.R,
-    Rcr: values.Rcr,
-    rho: values.rho,
-    tilt: values.tilt,
-    pattern: values.pattern,
-    interval,
-  });
-  if (!v.ok) return reportErrors(io, out, v.errors, json, half ? { typed: typedHalf ?? '' } : null);
-  const c = compareInverse(v.value);
-  out.write(json ? `${JSON.stringify(inverseJson(c))}\n` : `${inverseTable(c)}\n`);
+  const v = validateInverse({ ...passValues(values), interval });
+  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, half ? { typed: typedHalf ?? '' } : null);
+  const input = v.value;
+  const c = compareInverse(input);
+  const extras: Extras = {
+    roughness: exactRoughnessAtInterval(input, input.pattern, c.exact, input.surface),
+    ...(wanted.simulate ? { simulation: simulate(input, input.intervalMm) } : {}),
+  };
+  out.write(wanted.json ? `${JSON.stringify(inverseJson(c, extras))}\n` : `${inverseTable(c, extras)}\n`);
   return 0;
 }
 
@@ -133,9 +207,11 @@ async function run(request: Request, io: Io, out: Output): Promise<number> {
     case 'batch':
       return runBatch(io, out);
     case 'forward':
-      return forward(request.values, request.json, io, out);
+      return forward(request.values, request, io, out);
+    case 'ra':
+      return targetRa(request.values, request, io, out);
     case 'inverse':
-      return inverse(request.values, request.json, request.half, io, out);
+      return inverse(request.values, request, request.half, io, out);
   }
 }
 

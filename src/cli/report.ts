@@ -5,6 +5,8 @@
 import {
   APPROXIMATION_KEYS,
   type ApproximationKey,
+  CORRECTED_KEYS,
+  type CorrectedKey,
   type ExactForward,
   type ForwardComparison,
   type ForwardEstimate,
@@ -12,6 +14,10 @@ import {
   type InverseEstimate,
   type PassInput,
   PROCEDURES,
+  type Roughness,
+  raRuleOfThumbMm,
+  type SimulationResult,
+  type Surface,
 } from '../core/index';
 import { type Column, deviation, echo, length, NONE, percent, renderTable } from './table';
 
@@ -37,11 +43,112 @@ function toolKind(input: PassInput): string {
   return 'Filleted end mill';
 }
 
+/** The design surface in words: `plane`, or the cylinder with its signed radius and axis. */
+export function surfaceText(surface: Surface): string {
+  if (surface.kind === 'plane') return 'on a plane';
+  const kind = surface.radiusMm > 0 ? 'convex' : 'concave';
+  const axis =
+    surface.axis === 'feed'
+      ? 'axis along the feed (passes run along it)'
+      : 'axis across the feed (passes go around it)';
+  return `on a ${kind} cylinder Rs = ${echo(surface.radiusMm)} mm, ${axis}`;
+}
+
 function caseLine(input: PassInput): string {
   return (
     `${toolKind(input)} R = ${echo(input.toolRadiusMm)} mm, Rcr = ${echo(input.cornerRadiusMm)} mm; ` +
-    `lead rho = ${echo(input.leadAngleDeg)} deg, tilt beta = ${echo(input.tiltAngleDeg)} deg; ${input.pattern} passes`
+    `lead rho = ${echo(input.leadAngleDeg)} deg, tilt beta = ${echo(input.tiltAngleDeg)} deg; ${input.pattern} passes ` +
+    surfaceText(input.surface)
   );
+}
+
+/** A simulation of the passes and its wall-clock time, or why it was not run. */
+export type SimulationRun =
+  | { readonly ok: true; readonly result: SimulationResult; readonly ms: number }
+  | { readonly ok: false; readonly notApplicable: string };
+
+/** What a case's report adds to the comparison: roughness, the target Ra it was solved for, a simulation. */
+export interface Extras {
+  /** Exact roughness of the surface the passes leave (at the exact step-over, or the given one). */
+  readonly roughness?: Roughness;
+  /** The target Ra (mm) the scallop height was solved for (--ra). */
+  readonly targetRaMm?: number;
+  readonly simulation?: SimulationRun;
+}
+
+/** The rule of thumb Ra ~ h/4 beside the exact Ra: its value and its error (null % when Ra = 0). */
+export function ruleOfThumb(
+  scallopHeightMm: number,
+  exactRaMm: number,
+): { raMm: number; deviationMm: number; deviationPercent: number | null } {
+  const raMm = raRuleOfThumbMm(scallopHeightMm);
+  const deviationMm = raMm - exactRaMm;
+  return { raMm, deviationMm, deviationPercent: exactRaMm > 0 ? (100 * deviationMm) / exactRaMm : null };
+}
+
+/** Lines of the roughness block (exact Rz, Ra, Rq and the rule of thumb). */
+function roughnessLines(r: Roughness, scallopHeightMm: number): string[] {
+  const thumb = ruleOfThumb(scallopHeightMm, r.raMm);
+  const off =
+    thumb.deviationPercent === null
+      ? `${deviation(thumb.deviationMm)} mm off`
+      : `${deviation(thumb.deviationMm)} mm (${percent(thumb.deviationPercent)} %) off the exact Ra`;
+  const facts: string[][] = [
+    ['Rz', length(r.rzMm), 'mm', 'highest peak minus deepest valley'],
+    ['Ra', length(r.raMm), 'mm', 'mean absolute deviation from the mean line'],
+    ['Rq', length(r.rqMm), 'mm', 'root mean square deviation from the mean line'],
+    ['h/4', length(thumb.raMm), 'mm', `rule of thumb Ra ~ h/4: ${off}`],
+  ];
+  return [
+    'Roughness across the feed (exact, ISO 4287 over one period of the passes):',
+    ...indent(renderTable(KEY_VALUE, facts, false)),
+  ];
+}
+
+/** Lines of the simulation block: the simulated values beside the exact ones, with the stated bounds. */
+function simulationLines(sim: SimulationRun, exactCuspMm: number, exact: Roughness | undefined): string[] {
+  if (!sim.ok) return [`Simulation of the passes: ${sim.notApplicable}.`];
+  const s = sim.result;
+  const vs = (simulated: number, exactMm: number | undefined) =>
+    exactMm === undefined ? '' : `; exact minus simulated ${deviation(exactMm - simulated)} mm`;
+  const facts: string[][] = [
+    [
+      'h',
+      length(s.cuspHeightMm),
+      'mm',
+      `highest cusp, within ${length(s.resolutionBoundMm)} mm${vs(s.cuspHeightMm, exactCuspMm)}`,
+    ],
+    [
+      'Rz',
+      length(s.roughness.rzMm),
+      'mm',
+      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.rzMm, exact?.rzMm)}`,
+    ],
+    [
+      'Ra',
+      length(s.roughness.raMm),
+      'mm',
+      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.raMm, exact?.raMm)}`,
+    ],
+    [
+      'Rq',
+      length(s.roughness.rqMm),
+      'mm',
+      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.rqMm, exact?.rqMm)}`,
+    ],
+  ];
+  return [
+    `Simulation of the passes (the tool solid on a ${s.cellsAcross} x ${s.cellsAlong} height field, ` +
+      `${s.placements} placements, ${Math.round(sim.ms)} ms; independent of the exact solver):`,
+    ...indent(renderTable(KEY_VALUE, facts, false)),
+  ];
+}
+
+/** Label of a curvature row: the plane's answer, or a procedure's circle corrected for the curvature. */
+function curvatureLabel(key: CorrectedKey | 'plane'): string {
+  return key === 'plane'
+    ? 'Plane, exact (curvature ignored)'
+    : `${PROCEDURES[key].shortLabel}, corrected (1/rho = 1/Reff + 1/Rs)`;
 }
 
 /** Notes under a table, numbered; returns the marker of the note just added. */
@@ -64,11 +171,36 @@ function indent(lines: readonly string[]): string[] {
   return lines.map((l) => `  ${l}`);
 }
 
-/** The forward answer (scallop height to step-over) as a table. */
-export function forwardTable(c: ForwardComparison): string {
+/** A row of the forward table: a step-over beside the exact one (or n/a with its reason as a note). */
+function forwardRow(label: string, r: ForwardEstimate<unknown>, warningBy: string, notes: Notes): string[] {
+  if (!r.ok) return [label, 'n/a', 'n/a', NONE, NONE, NONE, notes.add(r.notApplicable)];
+  const marker = r.warning === null ? '' : notes.add(`${warningBy}: ${r.warning}`);
+  return [
+    label,
+    length(r.intervalMm),
+    length(r.halfIntervalMm),
+    deviation(r.deviationMm),
+    percent(r.deviationPercent),
+    r.realScallopMm === null ? 'wall' : length(r.realScallopMm),
+    marker,
+  ];
+}
+
+/** A row of the inverse table: a scallop height beside the exact one (or n/a with its reason as a note). */
+function inverseRow(label: string, r: InverseEstimate, notes: Notes): string[] {
+  if (!r.ok) return [label, 'n/a', NONE, NONE, notes.add(r.notApplicable)];
+  return [label, length(r.scallopHeightMm), deviation(r.deviationMm), percent(r.deviationPercent)];
+}
+
+/** The forward answer (scallop height to step-over) as a table, with the extras that were computed. */
+export function forwardTable(c: ForwardComparison, extras: Extras = {}): string {
   const { input, exact } = c;
   const zigzag = input.pattern === 'zigzag';
-  const out = [caseLine(input), `Scallop height h = ${echo(input.scallopHeightMm)} mm`, ''];
+  const target =
+    extras.targetRaMm === undefined
+      ? `Scallop height h = ${echo(input.scallopHeightMm)} mm`
+      : `Target roughness Ra = ${echo(extras.targetRaMm)} mm: scallop height h = ${length(input.scallopHeightMm)} mm`;
+  const out = [caseLine(input), target, ''];
   const facts: string[][] = [
     ['L', length(exact.intervalMm), 'mm', 'step-over: between adjacent cutter-contact (CC) paths'],
     ['L/2', length(exact.halfIntervalMm), 'mm', 'half step-over'],
@@ -114,31 +246,33 @@ export function forwardTable(c: ForwardComparison): string {
     ],
   ];
   for (const key of APPROXIMATION_KEYS) {
-    const r: ForwardEstimate<unknown> = c.approximations[key];
     const label = forwardLabel(key, input.tiltAngleDeg);
-    if (!r.ok) {
-      rows.push([label, 'n/a', 'n/a', NONE, NONE, NONE, notes.add(r.notApplicable)]);
-      continue;
-    }
-    const marker = r.warning === null ? '' : notes.add(`${PROCEDURES[key].shortLabel}: ${r.warning}`);
-    rows.push([
-      label,
-      length(r.intervalMm),
-      length(r.halfIntervalMm),
-      deviation(r.deviationMm),
-      percent(r.deviationPercent),
-      r.realScallopMm === null ? 'wall' : length(r.realScallopMm),
-      marker,
-    ]);
+    rows.push(forwardRow(label, c.approximations[key], PROCEDURES[key].shortLabel, notes));
   }
   out.push(...renderTable(columns, rows));
+  if (c.curvature !== null) {
+    const k = c.curvature;
+    const curved: string[][] = [forwardRow(curvatureLabel('plane'), k.plane, 'Plane', notes)];
+    for (const key of CORRECTED_KEYS) {
+      curved.push(forwardRow(curvatureLabel(key), k.corrected[key], PROCEDURES[key].shortLabel, notes));
+    }
+    out.push('', 'On the cylinder: the plane answer and the usual curvature corrections, beside the exact one:');
+    out.push(...renderTable(columns, curved));
+  }
   out.push('', 'dev L: step-over minus the exact one; real h: the scallop that step-over really leaves (exact).');
+  if (c.curvature !== null) {
+    out.push('Above the cylinder rows: the approximations as on a plane (they ignore the curvature).');
+  }
+  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exact.cuspHeightMm));
+  if (extras.simulation !== undefined) {
+    out.push('', ...simulationLines(extras.simulation, exact.cuspHeightMm, extras.roughness));
+  }
   if (notes.lines.length > 0) out.push('', ...notes.lines);
   return out.join('\n');
 }
 
-/** The inverse answer (step-over to scallop height) as a table. */
-export function inverseTable(c: InverseComparison): string {
+/** The inverse answer (step-over to scallop height) as a table, with the extras that were computed. */
+export function inverseTable(c: InverseComparison, extras: Extras = {}): string {
   const { input, exact } = c;
   const zigzag = input.pattern === 'zigzag';
   const out = [
@@ -179,13 +313,24 @@ export function inverseTable(c: InverseComparison): string {
   ];
   const rows: string[][] = [[PROCEDURES.exact.label, length(exact.cuspHeightMm), NONE, NONE]];
   for (const key of APPROXIMATION_KEYS) {
-    const r: InverseEstimate = c.approximations[key];
-    const label = inverseLabel(key, input.tiltAngleDeg);
-    if (!r.ok) rows.push([label, 'n/a', NONE, NONE, notes.add(r.notApplicable)]);
-    else rows.push([label, length(r.scallopHeightMm), deviation(r.deviationMm), percent(r.deviationPercent)]);
+    rows.push(inverseRow(inverseLabel(key, input.tiltAngleDeg), c.approximations[key], notes));
   }
   out.push(...renderTable(columns, rows));
+  if (c.curvature !== null) {
+    const k = c.curvature;
+    const curved: string[][] = [inverseRow(curvatureLabel('plane'), k.plane, notes)];
+    for (const key of CORRECTED_KEYS) curved.push(inverseRow(curvatureLabel(key), k.corrected[key], notes));
+    out.push('', 'On the cylinder: the plane answer and the usual curvature corrections, beside the exact one:');
+    out.push(...renderTable(columns, curved));
+  }
   out.push('', 'dev: scallop height minus the exact one.');
+  if (c.curvature !== null) {
+    out.push('Above the cylinder rows: the approximations as on a plane (they ignore the curvature).');
+  }
+  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exact.cuspHeightMm));
+  if (extras.simulation !== undefined) {
+    out.push('', ...simulationLines(extras.simulation, exact.cuspHeightMm, extras.roughness));
+  }
   if (notes.lines.length > 0) out.push('', ...notes.lines);
   return out.join('\n');
 }
@@ -195,13 +340,52 @@ export type JsonValue = number | string | boolean | JsonValue[] | { [key: string
 type JsonObject = { [key: string]: JsonValue };
 
 function toolJson(input: PassInput): JsonObject {
-  return {
+  const out: JsonObject = {
     R: input.toolRadiusMm,
     Rcr: input.cornerRadiusMm,
     rho: input.leadAngleDeg,
     tilt: input.tiltAngleDeg,
     pattern: input.pattern,
   };
+  // A plane has neither: they are left out.
+  if (input.surface.kind === 'cylinder') {
+    out.surfaceRadius = input.surface.radiusMm;
+    out.surfaceAxis = input.surface.axis;
+  }
+  return out;
+}
+
+/** The extras as JSON fields: roughness, the rule of thumb beside it, the simulation. */
+function extrasJson(extras: Extras, scallopHeightMm: number): JsonObject {
+  const out: JsonObject = {};
+  const r = extras.roughness;
+  if (r !== undefined) {
+    out.roughness = { Rz: r.rzMm, Ra: r.raMm, Rq: r.rqMm };
+    const thumb = ruleOfThumb(scallopHeightMm, r.raMm);
+    const rule: JsonObject = { Ra: thumb.raMm, deviation: thumb.deviationMm };
+    if (thumb.deviationPercent !== null) rule.deviationPercent = thumb.deviationPercent;
+    out.raRuleOfThumb = rule;
+  }
+  const sim = extras.simulation;
+  if (sim !== undefined && !sim.ok) out.simulation = { notApplicable: sim.notApplicable };
+  else if (sim !== undefined) {
+    const s = sim.result;
+    out.simulation = {
+      cuspHeight: s.cuspHeightMm,
+      Rz: s.roughness.rzMm,
+      Ra: s.roughness.raMm,
+      Rq: s.roughness.rqMm,
+      cells: s.cells,
+      placements: s.placements,
+      ms: sim.ms,
+      cuspHeightBound: s.resolutionBoundMm,
+      roughnessBound: s.roughnessBoundMm,
+      cellsAcross: s.cellsAcross,
+      cellsAlong: s.cellsAlong,
+      cellSize: s.cellMm,
+    };
+  }
+  return out;
 }
 
 /** Model quantities of the approximations (mm), by their JSON names. */
@@ -210,6 +394,7 @@ const MODEL_FIELDS = [
   ['shortRadiusMm', 'shortRadius'],
   ['longRadiusMm', 'longRadius'],
   ['effectiveRadiusMm', 'effectiveRadius'],
+  ['combinedRadiusMm', 'combinedRadius'],
 ] as const;
 
 function forwardEstimateJson(r: ForwardEstimate<unknown>, exact: ExactForward): JsonObject {
@@ -233,7 +418,7 @@ function forwardEstimateJson(r: ForwardEstimate<unknown>, exact: ExactForward): 
 }
 
 /** The forward comparison as the documented JSON object (lengths mm, angles degrees). */
-export function forwardJson(c: ForwardComparison): JsonObject {
+export function forwardJson(c: ForwardComparison, extras: Extras = {}): JsonObject {
   const { exact } = c;
   const exactOut: JsonObject = {
     halfInterval: exact.halfIntervalMm,
@@ -245,14 +430,22 @@ export function forwardJson(c: ForwardComparison): JsonObject {
   };
   if (exact.otherCuspHeightMm !== null) exactOut.otherCuspHeight = exact.otherCuspHeightMm;
   exactOut.noScallop = exact.noScallop;
+  const target: JsonObject =
+    extras.targetRaMm === undefined ? { h: c.input.scallopHeightMm } : { Ra: extras.targetRaMm };
   const out: JsonObject = {
     unit: 'mm',
-    input: { ...toolJson(c.input), h: c.input.scallopHeightMm },
+    input: { ...toolJson(c.input), ...target },
     maxInterval: c.maxIntervalMm,
     exact: exactOut,
   };
   for (const key of APPROXIMATION_KEYS) out[key] = forwardEstimateJson(c.approximations[key], exact);
-  return out;
+  if (c.curvature !== null) {
+    const k = c.curvature;
+    const rows: JsonObject = { plane: forwardEstimateJson(k.plane, exact) };
+    for (const key of CORRECTED_KEYS) rows[key] = forwardEstimateJson(k.corrected[key], exact);
+    out.curvature = rows;
+  }
+  return { ...out, ...extrasJson(extras, exact.cuspHeightMm) };
 }
 
 function inverseEstimateJson(r: InverseEstimate): JsonObject {
@@ -263,7 +456,7 @@ function inverseEstimateJson(r: InverseEstimate): JsonObject {
 }
 
 /** The inverse comparison as the documented JSON object (lengths mm, angles degrees). */
-export function inverseJson(c: InverseComparison): JsonObject {
+export function inverseJson(c: InverseComparison, extras: Extras = {}): JsonObject {
   const { exact } = c;
   const exactOut: JsonObject = {
     scallopHeight: exact.cuspHeightMm,
@@ -282,5 +475,11 @@ export function inverseJson(c: InverseComparison): JsonObject {
     exact: exactOut,
   };
   for (const key of APPROXIMATION_KEYS) out[key] = inverseEstimateJson(c.approximations[key]);
-  return out;
+  if (c.curvature !== null) {
+    const k = c.curvature;
+    const rows: JsonObject = { plane: inverseEstimateJson(k.plane) };
+    for (const key of CORRECTED_KEYS) rows[key] = inverseEstimateJson(k.corrected[key]);
+    out.curvature = rows;
+  }
+  return { ...out, ...extrasJson(extras, exact.cuspHeightMm) };
 }

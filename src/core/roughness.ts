@@ -24,7 +24,21 @@
 import { type CylinderSolver, cylinderSolver, PLANE, type Surface } from './cylinder';
 import { type ExactForward, type ExactInverse, exactForward } from './exact';
 import { type Flank, flankWidthMm, type PostureShape, shapeOfTool } from './posture';
-import { type ForwardInput, forwardInput, type PassPattern, scallopHeightLimits, type ToolInput } from './validate';
+import {
+  type AnyInputError,
+  type ForwardInput,
+  forwardInput,
+  inputError,
+  leavesNoScallop,
+  MIN_LENGTH_MM,
+  type PassInput,
+  type PassPattern,
+  type RawToolInput,
+  scallopHeightLimits,
+  type ToolInput,
+  type Validation,
+  validatePassAnd,
+} from './validate';
 
 /** Roughness across the feed, mm. */
 export interface Roughness {
@@ -269,4 +283,56 @@ export function scallopHeightForRaMm(
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
   }
   return Math.exp(0.5 * (lo + hi));
+}
+
+/** Raw values of the target-roughness problem (mm and degrees): the tool, pattern, surface and a target Ra. */
+export interface RawTargetRaInput extends RawToolInput {
+  readonly Ra: unknown;
+}
+
+/** A validated target roughness: the pass and the Ra (mm) its passes must leave. */
+export interface TargetRaInput extends PassInput {
+  /** Target Ra in mm: at least {@link MIN_LENGTH_MM}, at most maxRaMm of the pass. */
+  readonly targetRaMm: number;
+}
+
+/**
+ * Validates a target roughness: the tool rules of validateForward, and `Ra` from
+ * {@link MIN_LENGTH_MM} up to maxRaMm (the Ra at the largest scallop height; error code
+ * `beyond-roughness` with that limit, or with 0 for a flat end lying on a plane, which leaves no
+ * scallop; `wall-only` when the tool cuts a step in this posture).
+ */
+export function validateTargetRa(raw: RawTargetRaInput): Validation<TargetRaInput, AnyInputError> {
+  const v = validatePassAnd(raw, 'Ra');
+  const errors = [...v.errors];
+  const ra = v.value;
+  if (ra !== undefined && !v.gouges) {
+    if (ra <= 0) errors.push(inputError('Ra', 'not-positive', v.shown));
+    else if (ra < MIN_LENGTH_MM) errors.push(inputError('Ra', 'too-small', v.shown, MIN_LENGTH_MM));
+    else if (v.pass !== null) {
+      const p = v.pass;
+      const flatLying = p.surface.kind === 'plane' && leavesNoScallop(p);
+      if (!flatLying && !(scallopHeightLimits(p, p.surface).limitMm >= MIN_LENGTH_MM)) {
+        // As validateForward: in this posture the tool cuts a step, no scallop forms.
+        errors.push(inputError('Ra', 'wall-only', v.shown));
+      } else {
+        const max = flatLying ? 0 : maxRaMm(p, p.pattern, p.surface);
+        if (!(ra <= max)) errors.push(inputError('Ra', 'beyond-roughness', v.shown, max));
+      }
+    }
+  }
+  if (errors.length > 0 || v.pass === null || ra === undefined) return { ok: false, errors };
+  const p = v.pass;
+  return {
+    ok: true,
+    value: {
+      toolRadiusMm: p.toolRadiusMm,
+      cornerRadiusMm: p.cornerRadiusMm,
+      leadAngleDeg: p.leadAngleDeg,
+      tiltAngleDeg: p.tiltAngleDeg,
+      pattern: p.pattern,
+      surface: p.surface,
+      targetRaMm: ra,
+    },
+  };
 }

@@ -77,6 +77,23 @@ export interface SimulationResult {
   readonly samples: number;
 }
 
+/**
+ * Most triangles of the tool surface one simulation meshes. A large tool leaving a tiny scallop can
+ * need far more at the field's resolution (beyond the memory a JavaScript array can hold); the
+ * simulation then stops with {@link SimulationTooLargeError} instead of exhausting the memory.
+ */
+export const MAX_SIMULATION_TRIANGLES = 4_000_000;
+
+/** The simulation of a case would need more than {@link MAX_SIMULATION_TRIANGLES} triangles. */
+export class SimulationTooLargeError extends RangeError {
+  constructor() {
+    super(
+      `the simulation would need more than ${MAX_SIMULATION_TRIANGLES} triangles of the tool surface at this resolution (a tool far larger than the step-over it leaves): not run`,
+    );
+    this.name = 'SimulationTooLargeError';
+  }
+}
+
 /** Triangles of the tool surface projected on (y, z): 6 numbers each, relative to the pass's contact. */
 type Triangles = Float64Array;
 
@@ -241,6 +258,7 @@ function meshSurface(
         tris.push(y00, z00, y10, z10, y11, z11, y00, z00, y11, z11, y01, z01);
       }
     }
+    if (tris.length > 6 * MAX_SIMULATION_TRIANGLES) throw new SimulationTooLargeError();
   }
   return Float64Array.from(tris);
 }
@@ -402,6 +420,8 @@ export interface SimulationRun {
  * Prepares a simulation (see the module comment). Steps: a coarse run to bound the height that
  * matters, then the fine sampling, then the sweep of each pass, then the measurement.
  * @param input a valid tool and posture, pattern and step-over (0 < L, below the wall).
+ * A step throws {@link SimulationTooLargeError} when the tool surface needs more triangles than
+ * {@link MAX_SIMULATION_TRIANGLES}.
  */
 export function startSimulation(input: SimulationInput, options: SimulationOptions = {}): SimulationRun {
   const across = Math.max(16, Math.round(options.cellsAcross ?? 512));

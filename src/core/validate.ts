@@ -13,6 +13,9 @@ import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol 
 /** Names of the user-facing inputs. */
 export type FieldName = 'R' | 'Rcr' | 'rho' | 'tilt' | 'pattern' | 'surfaceRadius' | 'surfaceAxis' | 'h' | 'interval';
 
+/** Every field an error can name: the fields above and a target roughness `Ra` (validateTargetRa). */
+export type AnyFieldName = FieldName | 'Ra';
+
 /** Why a field was rejected. */
 export type InputErrorCode =
   | 'missing'
@@ -31,11 +34,12 @@ export type InputErrorCode =
   | 'shank-cuts'
   | 'beyond-diameter'
   | 'beyond-interval'
+  | 'beyond-roughness'
   | 'wall-only';
 
 /** One rejected field, as data; `message` is its description in mm (describeInputError). */
-export interface InputError {
-  readonly field: FieldName;
+export interface InputErrorOf<F extends AnyFieldName> {
+  readonly field: F;
   readonly code: InputErrorCode;
   /** The value as given, as text (what the user typed, or the number). */
   readonly got: string;
@@ -47,10 +51,16 @@ export interface InputError {
   readonly message: string;
 }
 
+/** An error of the forward and inverse problems. */
+export type InputError = InputErrorOf<FieldName>;
+
+/** An error of the target-roughness problem (its own field `Ra` included). */
+export type AnyInputError = InputErrorOf<AnyFieldName>;
+
 /** Either the accepted value or the list of errors (at most one per field). */
-export type Validation<T> =
+export type Validation<T, E extends AnyInputError = InputError> =
   | { readonly ok: true; readonly value: T }
-  | { readonly ok: false; readonly errors: readonly InputError[] };
+  | { readonly ok: false; readonly errors: readonly E[] };
 
 /** How adjacent passes run: every pass the same way, or alternating (posture relative to the feed). */
 export type PassPattern = 'one-way' | 'zigzag';
@@ -125,7 +135,7 @@ export const MIN_TOOL_RADIUS_MM = 0.001;
 export const MIN_LENGTH_MM = 1e-9;
 
 /** Labels of the fields as messages name them. */
-export const FIELD_LABELS: Readonly<Record<FieldName, string>> = {
+export const FIELD_LABELS: Readonly<Record<AnyFieldName, string>> = {
   R: 'Tool radius R',
   Rcr: 'Corner radius Rcr',
   rho: 'Lead angle rho',
@@ -135,6 +145,7 @@ export const FIELD_LABELS: Readonly<Record<FieldName, string>> = {
   surfaceAxis: 'Cylinder axis',
   h: 'Scallop height h',
   interval: 'Step-over L',
+  Ra: 'Roughness Ra',
 };
 
 /** Options of {@link describeInputError}. */
@@ -146,15 +157,22 @@ export interface DescribeOptions {
 }
 
 /** True for fields measured as lengths (converted to the user's unit in messages). */
-function isLength(field: FieldName): boolean {
-  return field === 'R' || field === 'Rcr' || field === 'h' || field === 'interval' || field === 'surfaceRadius';
+function isLength(field: AnyFieldName): boolean {
+  return (
+    field === 'R' ||
+    field === 'Rcr' ||
+    field === 'h' ||
+    field === 'interval' ||
+    field === 'surfaceRadius' ||
+    field === 'Ra'
+  );
 }
 
 /**
  * The message of an input error in `unit` (lengths converted; angles stay in degrees). The one
  * place where error data becomes words.
  */
-export function describeInputError(e: InputError, unit: LengthUnit, options: DescribeOptions = {}): string {
+export function describeInputError(e: AnyInputError, unit: LengthUnit, options: DescribeOptions = {}): string {
   const half = e.field === 'interval' && options.intervalAsHalf === true;
   const label = half ? 'Half path interval L/2' : FIELD_LABELS[e.field];
   const u = unitSymbol(unit);
@@ -204,18 +222,23 @@ export function describeInputError(e: InputError, unit: LengthUnit, options: Des
       return `${label} must be below the tool ${half ? 'radius R' : 'diameter 2R'} = ${limit} ${got}; at or beyond it adjacent passes leave a wall.`;
     case 'wall-only':
       return `${label} cannot be answered ${got}: in this posture the tool cuts a step at any step-over (a flank or the shank rises straight from the contact, as a tilted flat end does), so no scallop forms. Add a corner radius, or lead, or less tilt.`;
+    case 'beyond-roughness':
+      return e.limit === null || !(e.limit > 0)
+        ? `${label} cannot be reached ${got}: this tool in this posture leaves no scallop (a flat bottom lying on the surface), so Ra is 0 at any step-over up to its diameter.`
+        : `${label} must be at most ${limit} ${got}, the largest this tool, posture and pattern leave on this surface (at the largest scallop height before adjacent passes leave a wall).`;
     case 'beyond-interval':
       return `${label} must be below ${limit} ${got}, the widest step-over these flanks allow; at or beyond it adjacent passes leave a wall, not a scallop.`;
   }
 }
 
-function error(
-  field: FieldName,
+/** An input error as data, with its message in mm. */
+export function inputError<F extends AnyFieldName>(
+  field: F,
   code: InputErrorCode,
   got: string,
   limit: number | null = null,
   side: 'right' | 'left' | null = null,
-): InputError {
+): InputErrorOf<F> {
   const data = { field, code, got, limit, side, message: '' };
   return { ...data, message: describeInputError(data, 'mm') };
 }
@@ -254,13 +277,13 @@ function collect(raw: Readonly<Partial<Record<FieldName, unknown>>>, fields: rea
     const parsed = parseNumber(given);
     out.shown[field] = parsed.shown;
     if (parsed.ok) out.values[field] = parsed.value;
-    else out.errors.push(error(field, parsed.code, parsed.shown));
+    else out.errors.push(inputError(field, parsed.code, parsed.shown));
   }
   return out;
 }
 
 function reject(c: Collected, field: FieldName, code: InputErrorCode, limit: number | null = null): void {
-  c.errors.push(error(field, code, c.shown[field] ?? '', limit));
+  c.errors.push(inputError(field, code, c.shown[field] ?? '', limit));
   delete c.values[field];
 }
 
@@ -283,7 +306,7 @@ function checkPattern(raw: unknown, errors: InputError[]): PassPattern | null {
   if (raw === undefined) return 'one-way';
   const text = typeof raw === 'string' ? raw.trim() : String(raw);
   if (text === 'one-way' || text === 'zigzag') return text;
-  errors.push(error('pattern', 'not-a-pattern', text));
+  errors.push(inputError('pattern', 'not-a-pattern', text));
   return null;
 }
 
@@ -337,16 +360,16 @@ function checkSurface(raw: RawToolInput, errors: InputError[]): Surface | null {
   if (blank) return PLANE;
   const parsed = parseNumber(given);
   if (!parsed.ok) {
-    errors.push(error('surfaceRadius', parsed.code, parsed.shown));
+    errors.push(inputError('surfaceRadius', parsed.code, parsed.shown));
     return null;
   }
   const rs = parsed.value;
   if (!(Math.abs(rs) >= MIN_SURFACE_RADIUS_MM && Math.abs(rs) <= MAX_SURFACE_RADIUS_MM)) {
-    errors.push(error('surfaceRadius', 'out-of-range', parsed.shown));
+    errors.push(inputError('surfaceRadius', 'out-of-range', parsed.shown));
     return null;
   }
   if (axisText !== 'feed' && axisText !== 'cross') {
-    errors.push(error('surfaceAxis', 'not-an-axis', axisText));
+    errors.push(inputError('surfaceAxis', 'not-an-axis', axisText));
     return null;
   }
   return { kind: 'cylinder', radiusMm: rs, axis: axisText as SurfaceAxis };
@@ -357,13 +380,56 @@ function gouging(tool: ToolInput, surface: Surface, shown: string): InputError |
   if (surface.kind !== 'cylinder' || surface.radiusMm > 0) return null;
   const min = minConcaveRadiusMm(tool, surface.axis);
   if (Math.abs(surface.radiusMm) >= min) return null;
-  return error('surfaceRadius', 'gouging', shown, Number.isFinite(min) ? -min : null);
+  return inputError('surfaceRadius', 'gouging', shown, Number.isFinite(min) ? -min : null);
 }
 
 function toolOf(values: Collected['values']): ToolInput | null {
   const { R, Rcr, rho, tilt } = values;
   if (R === undefined || Rcr === undefined || rho === undefined || tilt === undefined) return null;
   return { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, tiltAngleDeg: tilt };
+}
+
+/** The common part of a validation: tool, pattern and surface (gouging included), and one number field, parsed. */
+export interface PassValidation {
+  /** The errors so far, at most one per field; the field is only parsed, not checked against its range. */
+  readonly errors: readonly AnyInputError[];
+  /** The tool, pattern and surface when they are valid (whatever the field). */
+  readonly pass: PassInput | null;
+  /** The field's number, when it parsed. */
+  readonly value: number | undefined;
+  /** The field as given, for messages. */
+  readonly shown: string;
+  /** True when the surface is a concave cylinder too tight for the tool (gouging): the field is moot. */
+  readonly gouges: boolean;
+}
+
+/**
+ * Validates the tool, pattern and surface as validateForward does, and parses `field` (a further
+ * problem's own quantity, such as a target roughness `Ra`); the caller checks its range and
+ * words its errors with {@link inputError}. Errors come in validateForward's order.
+ */
+export function validatePassAnd(
+  raw: RawToolInput & Readonly<Partial<Record<AnyFieldName, unknown>>>,
+  field: AnyFieldName,
+): PassValidation {
+  const c = collect(raw, ['R', 'Rcr', 'rho', 'tilt']);
+  checkTool(c);
+  const parsed = parseNumber(raw[field]);
+  const own: AnyInputError[] = parsed.ok ? [] : [inputError(field, parsed.code, parsed.shown)];
+  const rest: InputError[] = [];
+  const pattern = checkPattern(raw.pattern, rest);
+  const surface = checkSurface(raw, rest);
+  const tool = toolOf(c.values);
+  const gouge = tool !== null && surface !== null ? gouging(tool, surface, String(raw.surfaceRadius ?? '')) : null;
+  if (gouge) rest.push(gouge);
+  const valid = c.errors.length === 0 && rest.length === 0;
+  return {
+    errors: [...c.errors, ...own, ...rest],
+    pass: valid && tool !== null && pattern !== null && surface !== null ? { ...tool, pattern, surface } : null,
+    value: parsed.ok ? parsed.value : undefined,
+    shown: parsed.shown,
+    gouges: gouge !== null,
+  };
 }
 
 /**
@@ -431,13 +497,13 @@ export function validateForward(raw: RawForwardInput): Validation<ForwardInput> 
     else if (h < MIN_LENGTH_MM) reject(c, 'h', 'too-small', MIN_LENGTH_MM);
     else if (tool !== null && surface !== null && !(surface.kind === 'plane' && leavesNoScallop(tool))) {
       const limits = scallopHeightLimits(tool, surface);
-      if (!(limits.limitMm >= MIN_LENGTH_MM)) c.errors.push(error('h', 'wall-only', c.shown.h ?? ''));
+      if (!(limits.limitMm >= MIN_LENGTH_MM)) c.errors.push(inputError('h', 'wall-only', c.shown.h ?? ''));
       else if (h >= limits.limitMm) {
         const by = limits.limitBy;
         const shank = by === 'shank-right' || by === 'shank-left';
         const side = by === 'right-flank' || by === 'shank-right' ? 'right' : 'left';
         c.errors.push(
-          error(
+          inputError(
             'h',
             shank ? 'shank-cuts' : 'flank-wall',
             c.shown.h ?? '',

@@ -14,9 +14,10 @@ describe('command-line arguments', () => {
     ).toEqual({
       kind: 'forward',
       json: false,
+      simulate: false,
       values: { R: '3', Rcr: '1', rho: '-5', tilt: ' 2 ', pattern: 'zigzag', h: '0.05' },
     });
-    expect(parseArgs(['--R=', '--json'])).toEqual({ kind: 'forward', json: true, values: { R: '' } });
+    expect(parseArgs(['--R=', '--json'])).toEqual({ kind: 'forward', json: true, simulate: false, values: { R: '' } });
   });
 
   it('the inverse: --interval or --half-interval (with or without --inverse)', () => {
@@ -60,5 +61,42 @@ describe('command-line arguments', () => {
     expect(usage(['--R'])).toBe('--R needs a value');
     expect(usage(['--R', '--Rcr', '1'])).toBe('--R needs a value');
     expect(usage(['--json=yes'])).toBe('--json takes no value');
+  });
+
+  it('issues 11 and 12: --ra, --simulate, --surface-radius (a leading minus is a value), --surface-axis', () => {
+    expect(parseArgs(['--R', '3', '--ra', '0.01', '--surface-radius', '-50', '--surface-axis=cross'])).toEqual({
+      kind: 'ra',
+      json: false,
+      simulate: false,
+      values: { R: '3', ra: '0.01', 'surface-radius': '-50', 'surface-axis': 'cross' },
+    });
+    expect(parseArgs(['--interval', '2', '--simulate', '--json'])).toMatchObject({ kind: 'inverse', simulate: true });
+    // A plane given by name may be simulated.
+    expect(parseArgs(['--h', '1', '--simulate', '--surface-radius', ' plane '])).toMatchObject({ kind: 'forward' });
+    expect(parseArgs(['--h', '1', '--surface-radius', '5'])).toMatchObject({ kind: 'forward', simulate: false });
+  });
+
+  it('issues 11 and 12: contradictory combinations name both options', () => {
+    expect(usage(['--h', '1', '--ra', '2'])).toBe(
+      '--h and --ra do not go together: give the scallop height --h or the target roughness --ra',
+    );
+    expect(usage(['--ra', '1', '--interval', '2'])).toMatch(/^--ra and --interval do not go together/);
+    expect(usage(['--ra', '1', '--half-interval', '2'])).toMatch(/^--ra and --half-interval do not go together/);
+    expect(usage(['--inverse', '--ra', '1'])).toMatch(/^--ra and --inverse do not go together/);
+    expect(usage(['--h', '1', '--surface-axis', 'cross'])).toBe(
+      '--surface-axis needs --surface-radius <mm>: a plane has no axis',
+    );
+    expect(usage(['--h', '1', '--surface-radius', '-50', '--simulate'])).toMatch(/^--simulate works on a plane only/);
+    expect(usage(['--interval', '1', '--surface-radius', '5', '--simulate'])).toMatch(
+      /^--simulate works on a plane only/,
+    );
+    expect(usage(['--ra', '1', '--ra', '2'])).toBe('--ra is given more than once');
+    expect(usage(['--simulate=1'])).toBe('--simulate takes no value');
+    for (const option of ['--ra', '--surface-radius', '--surface-axis', '--simulate']) {
+      const args = option === '--simulate' ? [option] : [option, '1'];
+      expect(usage(['--batch', ...args])).toBe(
+        `${option} does not go with --batch: every case comes from the CSV on stdin`,
+      );
+    }
   });
 });

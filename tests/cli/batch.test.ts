@@ -1,5 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { batchRow, csvNumber, type Layout, outputHeader, parseHeader, RESULT_COLUMNS } from '../../src/cli/batch';
+import {
+  batchRow,
+  csvNumber,
+  HEADER_RULE,
+  type Layout,
+  outputHeader,
+  parseHeader,
+  RESULT_COLUMNS,
+} from '../../src/cli/batch';
 import { parseCsv } from '../../src/cli/csv';
 import {
   APPROXIMATION_KEYS,
@@ -37,7 +45,10 @@ describe('batch header', () => {
   });
 
   it.each([
-    ['R,Rcr,rho', /missing h/],
+    ['R,Rcr,rho', /missing h \(or Ra\)/],
+    ['R,Rcr,rho,h,Ra', /give h or Ra, not both/],
+    ['R,Rcr,Ra,surfaceradius', /missing rho; unknown column "surfaceradius"/],
+    ['R,Rcr,rho,Ra,surfaceAxis,surfaceAxis', /column surfaceAxis appears twice/],
     ['R,Rcr,rho,h,tlit', /unknown column "tlit"/],
     ['R,Rcr,rho,h,id', /unknown column "id"/],
     ['R,Rcr,rho,h,R', /column R appears twice/],
@@ -49,7 +60,8 @@ describe('batch header', () => {
     const h = parseHeader(record);
     expect(h.ok).toBe(false);
     if (!h.ok) {
-      expect(h.error).toMatch(/^the CSV header must be R,Rcr,rho,h in any order, optionally with tilt and pattern/);
+      expect(h.error.startsWith(`${HEADER_RULE} `) || h.error.startsWith(`${HEADER_RULE};`)).toBe(true);
+      expect(h.error).toMatch(/^the CSV header must be R,Rcr,rho,h \(or Ra in place of h\) in any order/);
       expect(h.error).toMatch(message);
     }
   });
@@ -146,5 +158,60 @@ describe('batch rows', () => {
     }
     expect(checked).toBeGreaterThan(0.75 * N);
     expect(warned).toBeGreaterThan(50);
+  });
+
+  const cylinderSeed = 5150;
+  const M = 400;
+  it(`cylinder rows: the warnings are the core's for that surface (seed ${cylinderSeed}, ${M} random cases)`, () => {
+    const layout = layoutOf('R,Rcr,rho,h,tilt,pattern,surfaceRadius,surfaceAxis');
+    const rand = random(cylinderSeed);
+    let warned = 0;
+    let checked = 0;
+    for (let k = 0; k < M; k++) {
+      const R = 0.5 + 10 * rand();
+      const t = {
+        toolRadiusMm: R,
+        cornerRadiusMm: R * rand(),
+        leadAngleDeg: 30 * rand(),
+        tiltAngleDeg: 10 * (rand() - 0.5),
+      };
+      const pattern = pick(rand, PASS_PATTERNS);
+      const surface = {
+        kind: 'cylinder' as const,
+        radiusMm: (rand() < 0.5 ? -1 : 1) * R * (1.5 + 20 * rand()),
+        axis: pick(rand, ['feed', 'cross'] as const),
+      };
+      let limit = 0;
+      try {
+        limit = scallopHeightLimits(t, surface).limitMm;
+      } catch {
+        continue;
+      }
+      const h = limit * pick(rand, [0.5, 0.9, 0.99, rand()]);
+      const fields = [R, t.cornerRadiusMm, t.leadAngleDeg, h, t.tiltAngleDeg, pattern, surface.radiusMm, surface.axis];
+      const v = validateForward({
+        R,
+        Rcr: t.cornerRadiusMm,
+        rho: t.leadAngleDeg,
+        tilt: t.tiltAngleDeg,
+        pattern,
+        h,
+        surfaceRadius: surface.radiusMm,
+        surfaceAxis: surface.axis,
+      });
+      if (!v.ok) continue;
+      checked++;
+      const c = compareForward(v.value);
+      const note = row(layout, fields.join(','))[8 + 11] as string;
+      const warnings = APPROXIMATION_KEYS.flatMap((key) => {
+        const a = c.approximations[key];
+        return a.ok && a.warning !== null ? [a.warning] : [];
+      });
+      warned += warnings.length;
+      for (const w of warnings) expect(note).toContain(w);
+      expect(note.split('leave a wall.').length - 1).toBe(warnings.length);
+    }
+    expect(checked).toBeGreaterThan(0.5 * M);
+    expect(warned).toBeGreaterThan(20);
   });
 });

@@ -1,6 +1,9 @@
 /** Helpers of the command-line tests: run the CLI as a process, seeded random numbers. */
 import { spawn } from 'node:child_process';
+import { PassThrough, Readable } from 'node:stream';
 import { fileURLToPath } from 'node:url';
+import { expect } from 'vitest';
+import { main } from '../../src/cli/main';
 
 export const BIN = fileURLToPath(new URL('../../src/cli/bin.mjs', import.meta.url));
 
@@ -27,6 +30,25 @@ export function run(args: readonly string[], stdin = ''): Promise<RunResult> {
     child.stdin.on('error', () => {}); // the CLI may stop reading early (a usage error)
     child.stdin.end(stdin);
   });
+}
+
+/**
+ * Runs the command line's main() in this process (for many cases: no process start-up each), with
+ * the same streams a process has: stdin from `stdin`, stdout and stderr gathered.
+ */
+export async function runMain(args: readonly string[], stdin = ''): Promise<RunResult> {
+  const stdout = new PassThrough();
+  const stderr = new PassThrough();
+  let out = '';
+  let err = '';
+  stdout.setEncoding('utf8').on('data', (d: string) => {
+    out += d;
+  });
+  stderr.setEncoding('utf8').on('data', (d: string) => {
+    err += d;
+  });
+  const code = await main(args, { stdin: Readable.from([stdin]), stdout, stderr });
+  return { code, stdout: out, stderr: err };
 }
 
 /** A seeded generator of uniform numbers in [0, 1) (mulberry32): the same seed, the same cases. */
@@ -78,4 +100,23 @@ export function randomTool(rand: () => number): { R: number; Rcr: number; rho: n
 export function randomHeight(rand: () => number, limit: number): number {
   const h = pick(rand, [1e-9, limit * rand(), limit * logUniform(rand, 1e-12, 1), limit * (1 - 1e-9)]);
   return Math.max(1e-9, h);
+}
+
+/** A number as the batch writes it: full precision, never NaN or Infinity. */
+const CSV_NUMBER = /^-?(\d+\.?\d*|\.\d+)(e[-+]\d+)?$/;
+
+/**
+ * Checks the result fields of a batch row: each empty or a finite number in full precision; a row
+ * with an `error` has none. Returns how many numbers it holds.
+ */
+export function checkResultFields(values: readonly string[], error: string, label: string): number {
+  let numbers = 0;
+  for (const v of values) {
+    if (v === '') continue;
+    numbers++;
+    expect(v, label).toMatch(CSV_NUMBER);
+    expect(Number.isFinite(Number(v)), label).toBe(true);
+  }
+  if (error !== '') expect(numbers, `${label}: an error row has no values`).toBe(0);
+  return numbers;
 }
