@@ -20,8 +20,9 @@
  *
  * Resolution bound (stated with every result). The tool solid is convex, so a triangle with its
  * corners on the surface lies inside the solid: a row's value is at or above the true envelope E
- * and at most the chord error `e = l^2 / (8 Rcr)` above it (l the longest triangle edge; 0 for the
- * flat bottom). A cusp is located between rows by intersecting the lines through the two rows on
+ * and at most the chord error above it (chordErrorMm: `l^2 / (8 Rcr)` across the corner, capped at
+ * `2 Rcr` for a corner smaller than a triangle, plus `l^2 / (8 (Rb + Rcr))` around the axis, for
+ * the rim of a flat end too; l the longest triangle edge; the flat bottom itself is exact). A cusp is located between rows by intersecting the lines through the two rows on
  * each side: its error adds at most the measured curvature of the trace times `dy^2`. Roughness is
  * integrated on the piecewise-linear trace through the rows and the refined cusps; its values are
  * within twice the height bound. Lengths mm.
@@ -263,6 +264,20 @@ function meshSurface(
   return Float64Array.from(tris);
 }
 
+/**
+ * How far a triangle of edges up to `l` with its corners on the tool surface can lie inside it:
+ * the sagitta across the corner (radius Rcr; at most 2 Rcr when the corner is smaller than the
+ * triangle) plus the sagitta around the axis (radius at least Rb + Rcr, the rim for a flat end).
+ * Without the second term and the cap, a flat or nearly flat end got an infinite margin and the
+ * whole bottom disk was meshed (tens of millions of triangles).
+ */
+function chordErrorMm(p: Placement, l: number): number {
+  const rcr = p.cornerRadiusMm;
+  const across = rcr > 0 ? Math.min((l * l) / (8 * rcr), 2 * rcr) : 0;
+  const ring = p.ringRadiusMm + rcr;
+  return across + (ring > 0 ? (l * l) / (8 * ring) : 0);
+}
+
 /** Y offsets of the passes' contact paths and whether each pass is mirrored. */
 function passLayout(input: SimulationInput, passes: number): Array<{ y: number; mirrored: boolean }> {
   const out: Array<{ y: number; mirrored: boolean }> = [];
@@ -478,7 +493,7 @@ export function startSimulation(input: SimulationInput, options: SimulationOptio
           for (const pass of layout) sweep(tris, pass, coarse);
           const m = measure(coarse, input, passes);
           const top = Math.max(0, ...m.cusps.map((c) => c.z).filter(Number.isFinite));
-          return top + m.slope * cdy + (cdy * cdy) / (32 * Math.max(p.cornerRadiusMm, 1e-300));
+          return top + m.slope * cdy + chordErrorMm(p, cdy / 2);
         };
         const strip = coarseCap(meshSurface(p, cdy / 2, Number.POSITIVE_INFINITY, inRange, 2 * cdy));
         // A quarter more covers what the coarse rows cannot resolve; should a row in the measured
@@ -527,7 +542,7 @@ export function startSimulation(input: SimulationInput, options: SimulationOptio
       }
       // Longest triangle edge: about sqrt(2) grid steps; chord error l^2 / (8 Rcr) (flat bottom: 0).
       const l = Math.SQRT2 * edge * 1.5;
-      const chord = p.cornerRadiusMm > 0 ? (l * l) / (8 * p.cornerRadiusMm) : 0;
+      const chord = chordErrorMm(p, l);
       const curvature = Math.max(0, ...m.cusps.map((c) => c.curvature));
       const bound = chord + curvature * dy * dy;
       const cuspHeights = m.cusps.map((c) => c.z);

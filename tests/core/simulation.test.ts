@@ -77,6 +77,28 @@ describe('simulation of the passes against the exact solution', () => {
     }
   });
 
+  it('flat and nearly flat ends with lead and tilt (a tiny scallop under a large flat bottom): both patterns within the bound', () => {
+    // Cases that once meshed the whole bottom disk (an infinite margin for Rcr = 0) and ran out of memory.
+    for (const [tool, h] of [
+      [{ toolRadiusMm: 5.7, cornerRadiusMm: 0, leadAngleDeg: 51, tiltAngleDeg: -19 }, 0.0033],
+      [{ toolRadiusMm: 1.14, cornerRadiusMm: 0, leadAngleDeg: 7.5, tiltAngleDeg: -12 }, 0.00045],
+      [{ toolRadiusMm: 3, cornerRadiusMm: 1e-6, leadAngleDeg: 20, tiltAngleDeg: 5 }, 0.001],
+    ] as const) {
+      for (const pattern of ['one-way', 'zigzag'] as const) {
+        const { sim, exactCusps } = compare(tool, pattern, h);
+        const label = JSON.stringify({ tool, pattern, h });
+        expect(sim.cuspHeightsMm.length, label).toBeGreaterThanOrEqual(3);
+        // The bound is meaningful: well below the scallop itself.
+        expect(sim.resolutionBoundMm, label).toBeLessThan(h / 100);
+        sim.cuspHeightsMm.forEach((c, i) => {
+          expect(Math.abs(c - (exactCusps[i] as number)), `cusp ${i} ${label}`).toBeLessThanOrEqual(
+            sim.resolutionBoundMm,
+          );
+        });
+      }
+    }
+  });
+
   it('runs in steps with a growing progress, and reports its size', () => {
     const run = startSimulation({
       tool: { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 },
