@@ -1,14 +1,17 @@
 /** Module Web Worker entry: exposes the solver API through Comlink, transferring large arrays. */
 import * as Comlink from 'comlink';
-import { solverApi, transferables } from './api';
-import type { SolveReply, SolveRequest } from './protocol';
+import { solve, teach, transferables } from './api';
+import type { SolveReply, SolveRequest, TeachReply } from './protocol';
 
 const workerApi = {
   solve(request: SolveRequest): SolveReply {
-    const reply = solverApi.solve(request);
+    const reply = solve(request);
     return Comlink.transfer(reply, transferables(reply));
   },
-  crash: solverApi.crash,
+  teach(request: SolveRequest): TeachReply {
+    const reply = teach(request);
+    return Comlink.transfer(reply, transferables(reply));
+  },
 };
 
 /** The type the page sees: derived from this module, not written twice. */

@@ -3,7 +3,7 @@
  * a sub-path. Screenshots go to test-results/ as artifacts of the run.
  */
 import { spawnSync } from 'node:child_process';
-import type { Page } from 'playwright-core';
+import type { Page, Worker } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { compareForward, compareInverse, forwardInput, inverseInput } from '../../src/core/index';
 import { ROOT, SHOTS, useSite } from './harness';
@@ -88,7 +88,7 @@ describe('calculator page in headless Chromium', () => {
     await page.waitForTimeout(1000);
     expect(await frames(page)).toBe(before); // no busy render loop
     // Switching between teaching views that do not touch the 3D scene draws no frame either.
-    await page.getByRole('tab', { name: 'L/2 against rho' }).click();
+    await page.getByRole('tab', { name: 'L against lead and tilt' }).click();
     await page.getByTestId('comparison-chart').locator('canvas').first().waitFor();
     await page.getByRole('tab', { name: 'Formulas' }).click();
     await page.getByTestId('formulas').locator('math').first().waitFor();
@@ -220,9 +220,9 @@ describe('calculator page in headless Chromium', () => {
 
   it('a worker that dies is restarted, the request repeated, and the page says so', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    await page.evaluate(() =>
-      (window as unknown as { __pathInterval: { crashWorker(): void } }).__pathInterval.crashWorker(),
-    );
+    // The test kills the solver's worker itself (the page has no hook for it): close() from inside.
+    const solver = await solverWorker(page);
+    void solver.evaluate(() => (globalThis as unknown as { close(): void }).close()).catch(() => undefined);
     await page.waitForTimeout(200);
     await page.getByTestId('input-h').fill('0.1');
     await expect.poll(() => text(page, 'result-exact-half'), { timeout: 10_000 }).toBe('1.8921'); // notes: 1.892088
@@ -236,13 +236,48 @@ describe('calculator page in headless Chromium', () => {
 
   it('a burst of slider moves ends on the latest value (stale replies dropped)', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    await page.getByTestId('slider-h').focus();
-    for (let i = 0; i < 30; i++) await page.keyboard.press('ArrowRight');
-    await expect.poll(() => page.getByTestId('input-h').inputValue()).toBe('0.08');
     const expected = compareForward(
       forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 0.08),
     );
-    await expect.poll(() => text(page, 'result-exact-half')).toBe(expected.exact.halfIntervalMm.toFixed(4));
+    const final = expected.exact.halfIntervalMm.toFixed(4);
+    // Every number the page writes into L/2 from now on, in order.
+    await page.evaluate(() => {
+      const out = document.querySelector('[data-testid="result-exact-half"]') as HTMLElement;
+      const seen: string[] = [];
+      (window as unknown as { __seen: string[] }).__seen = seen;
+      new MutationObserver(() => seen.push(out.textContent ?? '')).observe(out, {
+        childList: true,
+        characterData: true,
+        subtree: true,
+      });
+    });
+    // The solver is busy while the slider moves, so the replies lag behind the inputs: a page
+    // that showed stale replies would show older values after the last move.
+    const solver = await solverWorker(page);
+    void solver.evaluate(() => {
+      const end = Date.now() + 800;
+      while (Date.now() < end);
+    });
+    await page.getByTestId('slider-h').focus();
+    for (let i = 0; i < 30; i++) await page.keyboard.press('ArrowRight');
+    await expect.poll(() => page.getByTestId('input-h').inputValue()).toBe('0.08');
+    const afterLastMove = await page.evaluate(() => (window as unknown as { __seen: string[] }).__seen.length);
+    await expect.poll(() => text(page, 'result-exact-half'), { timeout: 5000 }).toBe(final);
+    await page.waitForTimeout(300);
+    const seen = await page.evaluate(() => (window as unknown as { __seen: string[] }).__seen);
+    expect(seen.slice(afterLastMove).filter((t) => /\d/.test(t))).toEqual([final]);
     await page.close();
   });
 });
+
+/** The worker that runs `solve` (named path-interval-solver by the page). */
+async function solverWorker(page: Page): Promise<Worker> {
+  await expect
+    .poll(async () => {
+      for (const w of page.workers()) if ((await w.evaluate(() => self.name)) === 'path-interval-solver') return true;
+      return false;
+    })
+    .toBe(true);
+  for (const w of page.workers()) if ((await w.evaluate(() => self.name)) === 'path-interval-solver') return w;
+  throw new Error('no solver worker');
+}

@@ -1,13 +1,34 @@
-/** Shared set-up of the browser tests: the built site on a loopback sub-path and one Chromium. */
+/** Shared set-up of the browser tests: a built site on a loopback sub-path and one Chromium. */
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import type { Browser, Page } from 'playwright-core';
 import { afterAll, beforeAll } from 'vitest';
 import { launchChromium } from '../../src/bench/browser';
 import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
+import { E2E_OUT_DIR } from './globalSetup';
 
 export const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 export const SHOTS = `${ROOT}test-results/screenshots`;
+
+/** The strict policy the page must run under with no violation (the README gives it to hosts). */
+export const STRICT_CSP = "script-src 'self'; worker-src 'self'; style-src 'self'";
+
+export interface SiteOptions {
+  /** `e2e` (default): the instrumented build with the test probe; `production`: dist/ as shipped. */
+  readonly build?: 'e2e' | 'production';
+  /** Headers sent with every response. */
+  readonly headers?: Readonly<Record<string, string>>;
+}
+
+/**
+ * The directory of a build. `E2E_SITE_DIR` replaces both (to run these tests against another
+ * build, for instance the code before a change, and see which of them fail there).
+ */
+export function siteDir(build: 'e2e' | 'production'): string {
+  const override = process.env.E2E_SITE_DIR;
+  if (override) return override;
+  return build === 'production' ? `${ROOT}dist` : `${ROOT}${E2E_OUT_DIR}`;
+}
 
 export interface Harness {
   readonly browser: () => Browser;
@@ -17,12 +38,12 @@ export interface Harness {
 }
 
 /** Registers beforeAll/afterAll hooks for a test file. */
-export function useSite(subPath: string): Harness {
+export function useSite(subPath: string, options: SiteOptions = {}): Harness {
   let browser: Browser | null = null;
   let site: StaticSite | null = null;
   beforeAll(async () => {
     mkdirSync(SHOTS, { recursive: true });
-    site = await serveStatic(`${ROOT}dist`, subPath);
+    site = await serveStatic(siteDir(options.build ?? 'e2e'), subPath, options.headers);
     browser = await launchChromium();
   });
   afterAll(async () => {
