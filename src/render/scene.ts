@@ -130,11 +130,24 @@ function circlePoints(centre: Vec3, normal: Vec3, radius: number): Float32Array 
   return pts;
 }
 
+/**
+ * A label anchored at a 3D point. three.js positions the outer element (its inline transform is
+ * set through the CSSOM); the inner one carries the class, so a stylesheet can offset it.
+ */
 function label(text: string, className: string): CSS2DObject {
-  const div = document.createElement('div');
-  div.className = `scene-label ${className}`;
-  div.textContent = text;
-  return new CSS2DObject(div);
+  const anchor = document.createElement('div');
+  anchor.className = 'scene-label-anchor';
+  const inner = document.createElement('span');
+  inner.className = `scene-label ${className}`;
+  inner.textContent = text;
+  anchor.append(inner);
+  return new CSS2DObject(anchor);
+}
+
+/** Sets a label's text (the inner element's). */
+function setLabel(object: CSS2DObject, text: string): void {
+  const inner = object.element.firstElementChild;
+  if (inner && inner.textContent !== text) inner.textContent = text;
 }
 
 /** One cusp's drawing: its section circle, its P_hp and the torus / plane curves at its height. */
@@ -407,12 +420,12 @@ export class ToolScene {
     const tick = 0.08 * R;
     setLine(this.dimension, [x, 0, tick, x, 0, 0, x, L, 0, x, L, tick, x, L, 0, x, 0, 0], 6);
     this.dimLabel.position.set(x, L / 2, 2 * tick);
-    this.dimLabel.element.textContent = labels.interval;
+    setLabel(this.dimLabel, labels.interval);
     // y0: from the foot of O's drop to the contact, across the feed.
     this.offsetDimension.visible = labels.contactOffset !== null;
     setLine(this.offsetDimension, [ox, oy, oz, ox, oy, 0, ox, oy, 0, ox, 0, 0], 4);
     this.offsetLabel.position.set(ox, oy / 2, -tick);
-    this.offsetLabel.element.textContent = labels.contactOffset ?? '';
+    setLabel(this.offsetLabel, labels.contactOffset ?? '');
 
     this.axes.scale.setScalar(1.6 * R);
     if (Math.abs(R - this.fittedRadiusMm) > 1e-12 * R) this.fit(R);
@@ -460,12 +473,14 @@ export class ToolScene {
       if (frame.point) {
         this.traceMarker.position.set(...frame.point);
         this.traceMarker.scale.setScalar(0.03 * (this.fittedRadiusMm || 1));
-        this.traceLabel.element.textContent =
+        setLabel(
+          this.traceLabel,
           frame.phase === 'converged'
             ? 'P_hp (converged)'
             : frame.phase === 'search'
               ? 'best P_hp[i]'
-              : 'single contact';
+              : 'single contact',
+        );
       }
     }
     this.requestRender();

@@ -7,6 +7,7 @@
  * 3D scene (render/scene.ts).
  */
 import type { ProcedureKey } from '../core/procedures';
+import { unitSymbol } from '../core/units';
 import type { PassPattern } from '../core/validate';
 import { type CameraPreset, ToolScene } from '../render/scene';
 import type { RestartInfo } from '../worker/client';
@@ -139,20 +140,21 @@ export class CalculatorApp {
     };
   }
 
-  /** The one way the state changes: draw the fields, write the URL, ask the workers. */
+  /** The one way the state changes: ask the solver first, then draw the fields, write the URL. */
   private change(state: CalculatorState): void {
     this.state = state;
     const built = buildRequest(state);
-    this.fields.render(state, built.ok ? new Map<FieldKey, string>() : fieldMessages(state, built.errors));
-    this.url.write(state);
     const request = built.ok ? built.request : null;
     this.fresh.want(request);
+    // The request goes out before any drawing, so the worker solves while the page draws.
     if (request !== null && !sameRequest(request, this.asked) && this.fresh.shown.kind !== 'current') {
       this.asked = request;
       this.client.request(request);
     }
+    this.fields.render(state, built.ok ? new Map<FieldKey, string>() : fieldMessages(state, built.errors));
     this.teaching?.want(request, state.unit);
     this.draw();
+    this.url.write(state);
   }
 
   /** Draws the results and the scene from what answers the inputs on screen. */
@@ -173,7 +175,7 @@ export class CalculatorApp {
       const y0 = reply.exact.contactOffsetMm;
       this.scene.update(reply.scene, {
         interval: `L = ${formatLenUnit(reply.exact.intervalMm, unit)}`,
-        contactOffset: y0 === 0 ? null : `y0 = ${formatSignedLen(y0, unit)}`,
+        contactOffset: y0 === 0 ? null : `y0 = ${formatSignedLen(y0, unit)} ${unitSymbol(unit)}`,
       });
     }
     this.observer.resultShown?.();
