@@ -8,13 +8,18 @@
 import {
   bediHalfInterval,
   exactIntervalMm,
+  exactRoughness,
   type ForwardInput,
   forwardInput,
+  maxRaMm,
   passGeometry,
   redonnetHalfInterval,
+  scallopHeightForRaMm,
   scallopHeightLimits,
   sekineHalfInterval,
+  simulatePasses,
   traceProcedure,
+  validateForward,
 } from '../core/index';
 
 /**
@@ -85,14 +90,80 @@ const rows: Array<[string, string, number]> = [
   ['trace of the 3D procedure', 'traceNsPerCall', measure((c) => traceProcedure(c).right.widthMm, cases, 500, rounds)],
 ];
 
+// Cylinders: convex and concave (|Rs| 10 to 100 R), the axis along or across the feed.
+function onCylinders(source: ForwardInput[], axis: 'feed' | 'cross'): ForwardInput[] {
+  const out: ForwardInput[] = [];
+  source.forEach((c, i) => {
+    const rs = (i % 2 === 0 ? 1 : -1) * c.toolRadiusMm * (10 + (i % 90));
+    const surface = { kind: 'cylinder' as const, radiusMm: rs, axis };
+    const v = validateForward({
+      R: c.toolRadiusMm,
+      Rcr: c.cornerRadiusMm,
+      rho: c.leadAngleDeg,
+      tilt: c.tiltAngleDeg,
+      pattern: c.pattern,
+      h: c.scallopHeightMm,
+      surfaceRadius: surface.radiusMm,
+      surfaceAxis: axis,
+    });
+    if (v.ok) out.push(v.value);
+  });
+  return out;
+}
+const feedCases = onCylinders(tilted, 'feed');
+const crossCases = onCylinders(tilted, 'cross');
+rows.push(
+  [
+    'exact L on a cylinder, axis along the feed',
+    'exactCylinderFeedNsPerCall',
+    measure(exactIntervalMm, feedCases, 20_000, rounds),
+  ],
+  [
+    'exact L on a cylinder, axis across the feed',
+    'exactCylinderCrossNsPerCall',
+    measure(exactIntervalMm, crossCases, 5_000, rounds),
+  ],
+);
+
+// Exact roughness and the Ra solve: fewer calls (each integrates both flanks).
+const fewer = cases.slice(0, 64);
+rows.push(
+  ['exact roughness (Rz, Ra, Rq)', 'roughnessNsPerCall', measure((c) => exactRoughness(c).raMm, fewer, 200, rounds)],
+  [
+    'step-over for a target Ra',
+    'targetRaNsPerCall',
+    measure((c) => scallopHeightForRaMm(c, c.pattern, 0.3 * maxRaMm(c, c.pattern)), fewer, 20, rounds),
+  ],
+);
+
+// The page's default simulation: 512 x 512 cells, 5 one-way passes, the paper's Tool 1 at h = 0.05 mm.
+const simTool = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
+const simInterval = exactIntervalMm(forwardInput(simTool, 'one-way', 0.05));
+const simMs: number[] = [];
+let simCells = 0;
+for (let r = 0; r < Math.max(5, rounds); r++) {
+  const t0 = process.hrtime.bigint();
+  const sim = simulatePasses({ tool: simTool, pattern: 'one-way', intervalMm: simInterval });
+  simMs.push(Number(process.hrtime.bigint() - t0) / 1e6);
+  simCells = sim.cells;
+  sink += sim.cuspHeightMm;
+}
+simMs.sort((x, y) => x - y);
+const simulationMsMedian = simMs[simMs.length >> 1] as number;
+
 console.log(`Solver benchmark: median of ${rounds} rounds, ${cases.length} inputs spread over the valid domain`);
 console.log(`Node ${process.version}, ${process.platform}/${process.arch}`);
 console.log('');
 console.log(`${'solver'.padEnd(36)}${'ns per call'.padStart(14)}`);
 for (const [label, , ns] of rows) console.log(`${label.padEnd(36)}${ns.toFixed(1).padStart(14)}`);
+console.log(
+  `${'simulation 512 x 512, 5 passes (ms)'.padEnd(36)}${simulationMsMedian.toFixed(1).padStart(14)}   ${((simCells / simulationMsMedian) * 1000).toExponential(2)} cells/s`,
+);
 console.log(`(checksum ${sink.toExponential(3)})`);
 if (json) {
   const out: Record<string, number> = { rounds };
   for (const [, key, ns] of rows) out[key] = Number(ns.toFixed(1));
+  out.simulationMsMedian = Number(simulationMsMedian.toFixed(1));
+  out.simulationCellsPerSecond = Math.round((simCells / simulationMsMedian) * 1000);
   console.log(JSON.stringify(out));
 }

@@ -10,7 +10,13 @@
  * reason where its own model has no meaningful answer (never NaN, never Infinity).
  */
 import { contactCurvatureRadiusMm, shapeOfTool } from './posture';
-import { RAD_PER_DEG } from './units';
+import { formatSignificant, RAD_PER_DEG } from './units';
+
+/** A length for a message: 6 significant digits, trailing zeros dropped, with its unit. */
+function mm(lengthMm: number): string {
+  return `${formatSignificant(lengthMm, { digits: 6, trimZeros: true })} mm`;
+}
+
 import type { ForwardInput, InverseInput, ToolInput } from './validate';
 
 const DEG = RAD_PER_DEG;
@@ -115,9 +121,7 @@ export function bediModel(tool: ToolInput): Approximation<BediModel> {
 /** `L/2 = sqrt(2 Reff h - h^2)` (Eq. 8); not applicable when h exceeds the circle's widest point (h > Reff). */
 function circleHalfInterval(who: string, reffMm: number, h: number): Approximation<HalfInterval> {
   if (h > reffMm) {
-    return notApplicable(
-      `${who}: h = ${h} mm is above the widest point of its circle (Reff = ${Number(reffMm.toPrecision(6))} mm).`,
-    );
+    return notApplicable(`${who}: h = ${mm(h)} is above the widest point of its circle (Reff = ${mm(reffMm)}).`);
   }
   // sqrt(h) sqrt(2 Reff - h): no overflow of the product for a huge Reff.
   const half = Math.sqrt(h) * Math.sqrt(2 * reffMm - h);
@@ -166,7 +170,7 @@ export function bediHalfInterval(input: ForwardInput): Approximation<HalfInterva
   const { longRadiusMm, shortRadiusMm } = model;
   if (h > shortRadiusMm) {
     return notApplicable(
-      `Bedi et al.: h = ${h} mm is above the widest point of its ellipse (Rlong sin(rho) = ${Number(shortRadiusMm.toPrecision(6))} mm).`,
+      `Bedi et al.: h = ${mm(h)} is above the widest point of its ellipse (Rlong sin(rho) = ${mm(shortRadiusMm)}).`,
     );
   }
   // 1 - (1 - u)^2 = u (2 - u) with u = h / (Rlong sin rho): no cancellation for small h.
@@ -178,9 +182,7 @@ export function bediHalfInterval(input: ForwardInput): Approximation<HalfInterva
 /** True-circular inverse (Eq. 12): `h = Reff - sqrt(Reff^2 - (L/2)^2)`, not applicable for L/2 > Reff. */
 function circleScallop(who: string, reffMm: number, halfMm: number): Approximation<ScallopHeight> {
   if (halfMm > reffMm) {
-    return notApplicable(
-      `${who}: L/2 = ${halfMm} mm is wider than its circle (Reff = ${Number(reffMm.toPrecision(6))} mm).`,
-    );
+    return notApplicable(`${who}: L/2 = ${mm(halfMm)} is wider than its circle (Reff = ${mm(reffMm)}).`);
   }
   return { ok: true, scallopHeightMm: (halfMm * halfMm) / (reffMm + Math.sqrt(reffMm * reffMm - halfMm * halfMm)) };
 }
@@ -209,9 +211,7 @@ export function bediScallopHeight(input: InverseInput): Approximation<ScallopHei
   const { longRadiusMm, shortRadiusMm } = model;
   const half = input.intervalMm / 2;
   if (half > longRadiusMm) {
-    return notApplicable(
-      `Bedi et al.: L/2 = ${half} mm is wider than its ellipse (Rlong = ${Number(longRadiusMm.toPrecision(6))} mm).`,
-    );
+    return notApplicable(`Bedi et al.: L/2 = ${mm(half)} is wider than its ellipse (Rlong = ${mm(longRadiusMm)}).`);
   }
   const q = half / longRadiusMm;
   return { ok: true, scallopHeightMm: (shortRadiusMm * q * q) / (1 + Math.sqrt(1 - q * q)) };
@@ -232,7 +232,7 @@ export function osculatingModel(tool: ToolInput): Approximation<OsculatingModel>
   const r = contactCurvatureRadiusMm(shapeOfTool(tool));
   if (r === null) {
     return notApplicable(
-      'Osculating circle: the flat bottom lies on the plane (rho = 0 without tilt), so the radius of curvature at the contact is infinite.',
+      'Osculating circle: the flat bottom lies on the plane (rho = 0 without tilt, or lead and tilt too small to count), so the radius of curvature at the contact is infinite.',
     );
   }
   if (!Number.isFinite(r)) return overflow('Osculating circle');

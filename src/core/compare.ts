@@ -11,24 +11,30 @@ import {
   bediScallopHeight,
   type CornerBallModel,
   cornerBallHalfInterval,
+  cornerBallModel,
   cornerBallScallopHeight,
   type HalfInterval,
   type OsculatingModel,
   osculatingHalfInterval,
+  osculatingModel,
   osculatingScallopHeight,
   type RedonnetModel,
   redonnetHalfInterval,
+  redonnetModel,
   redonnetScallopHeight,
   type ScallopHeight,
   type SekineModel,
   sekineHalfInterval,
+  sekineModel,
   sekineScallopHeight,
 } from './approximations';
+import type { CylinderSurface } from './cylinder';
 import { type ExactForward, type ExactInverse, exactForward, exactInverse } from './exact';
-import type { ApproximationKey } from './procedures';
+import { type ApproximationKey, PROCEDURES } from './procedures';
 import { formatSignificant } from './units';
 import {
   type ForwardInput,
+  forwardInput,
   type InverseInput,
   inverseInput,
   maxIntervalMm,
@@ -74,13 +80,42 @@ export interface ForwardModels {
   readonly cornerBall: CornerBallModel;
 }
 
+/** The procedures with an effective radius, which the usual curvature correction applies to. */
+export const CORRECTED_KEYS = ['sekine', 'redonnet', 'osculating', 'cornerBall'] as const;
+export type CorrectedKey = (typeof CORRECTED_KEYS)[number];
+
+/** What ignoring or correcting for the curvature gives on a cylinder (forward), mm. */
+export interface CurvatureComparison {
+  readonly surface: CylinderSurface;
+  /** The plane's exact step-over at the same h: the answer that ignores the curvature. */
+  readonly plane: ForwardEstimate<{ readonly planeIntervalMm: number }>;
+  /**
+   * The usual correction: each effective radius Reff combined with the surface's radius across the
+   * feed, `1 / rho = 1 / Reff + 1 / Rs` (Rs signed; across the axis the surface is straight across
+   * the feed, so rho = Reff), and the circle's `L = 2 sqrt(2 rho h - h^2)`.
+   */
+  readonly corrected: { readonly [K in CorrectedKey]: ForwardEstimate<{ readonly combinedRadiusMm: number }> };
+}
+
 /** Step-over of every procedure for one case (mm). */
 export interface ForwardComparison {
   readonly input: ForwardInput;
   /** The widest step-over that still leaves a scallop (2R without tilt). */
   readonly maxIntervalMm: number;
   readonly exact: ExactForward;
+  /** The paper's procedures and the circles, as on a plane (on a cylinder they ignore its curvature). */
   readonly approximations: { readonly [K in ApproximationKey]: ForwardEstimate<ForwardModels[K]> };
+  /** On a cylinder: the plane's answer and the usual curvature correction; null on a plane. */
+  readonly curvature: CurvatureComparison | null;
+}
+
+/** What ignoring or correcting for the curvature gives on a cylinder (inverse: heights at the step-over), mm. */
+export interface InverseCurvatureComparison {
+  readonly surface: CylinderSurface;
+  /** The plane's exact scallop height at the same step-over. */
+  readonly plane: InverseEstimate;
+  /** The usual correction (see CurvatureComparison): `h = rho - sqrt(rho^2 - (L/2)^2)`. */
+  readonly corrected: { readonly [K in CorrectedKey]: InverseEstimate };
 }
 
 /** Scallop height of every procedure at one step-over (mm). */
@@ -88,6 +123,8 @@ export interface InverseComparison {
   readonly input: InverseInput;
   readonly exact: ExactInverse;
   readonly approximations: Readonly<Record<ApproximationKey, InverseEstimate>>;
+  /** On a cylinder: the plane's answer and the usual curvature correction; null on a plane. */
+  readonly curvature: InverseCurvatureComparison | null;
 }
 
 function estimate<M>(
@@ -101,7 +138,7 @@ function estimate<M>(
   const L = 2 * r.halfIntervalMm;
   const deviationMm = L - exact.intervalMm;
   const beyond = !(L < maxMm);
-  const realScallopMm = beyond ? null : exactInverse(inverseInput(input, input.pattern, L)).cuspHeightMm;
+  const realScallopMm = beyond ? null : exactInverse(inverseInput(input, input.pattern, L, input.surface)).cuspHeightMm;
   const warning = beyond
     ? `its step-over L = ${formatSignificant(L, { digits: 6, trimZeros: true })} mm is not below the widest step-over that leaves a scallop (${formatSignificant(maxMm, { digits: 6, trimZeros: true })} mm${input.tiltAngleDeg === 0 ? ', the tool diameter' : ''}): passes this far apart leave a wall.`
     : null;
@@ -116,14 +153,74 @@ function estimate<M>(
   };
 }
 
+/** The plane's answer and the corrected circles on a cylinder (see CurvatureComparison). */
+function curvatureRows(
+  input: ForwardInput,
+  surface: CylinderSurface,
+  exact: ExactForward,
+  maxMm: number,
+): CurvatureComparison {
+  const planeL = exactForward(forwardInput(input, input.pattern, input.scallopHeightMm)).intervalMm;
+  const plane = estimate<{ planeIntervalMm: number }>(
+    { ok: true, halfIntervalMm: planeL / 2, intervalMm: planeL, planeIntervalMm: planeL },
+    input,
+    exact,
+    maxMm,
+  );
+  // The surface's radius across the feed: the cylinder's with the axis along the feed; a straight
+  // generator (infinite) across it.
+  const across = surface.axis === 'feed' ? surface.radiusMm : Number.POSITIVE_INFINITY;
+  const radii: Record<CorrectedKey, Approximation<{ effectiveRadiusMm: number }>> = {
+    sekine: sekineModel(input),
+    redonnet: redonnetModel(input),
+    osculating: osculatingModel(input),
+    cornerBall: cornerBallModel(input),
+  };
+  const h = input.scallopHeightMm;
+  const corrected = {} as { -readonly [K in CorrectedKey]: ForwardEstimate<{ readonly combinedRadiusMm: number }> };
+  for (const key of CORRECTED_KEYS) {
+    const m = radii[key];
+    const who = `${PROCEDURES[key].shortLabel}, corrected for the curvature`;
+    if (!m.ok) {
+      corrected[key] = { ok: false, notApplicable: m.notApplicable };
+      continue;
+    }
+    const reff = m.effectiveRadiusMm;
+    const combined = Number.isFinite(across) ? (reff * across) / (reff + across) : reff;
+    if (!(combined > 0) || !Number.isFinite(combined)) {
+      corrected[key] = {
+        ok: false,
+        notApplicable: `${who}: its effective radius (${formatSignificant(reff, { digits: 5, trimZeros: true })} mm) is not smaller than the concave surface's, so the combined radius is not positive.`,
+      };
+      continue;
+    }
+    if (h > combined) {
+      corrected[key] = {
+        ok: false,
+        notApplicable: `${who}: h is above the widest point of the combined circle (${formatSignificant(combined, { digits: 5, trimZeros: true })} mm).`,
+      };
+      continue;
+    }
+    const half = Math.sqrt(h) * Math.sqrt(2 * combined - h);
+    corrected[key] = estimate<{ combinedRadiusMm: number }>(
+      { ok: true, halfIntervalMm: half, intervalMm: 2 * half, combinedRadiusMm: combined },
+      input,
+      exact,
+      maxMm,
+    );
+  }
+  return { surface, plane, corrected };
+}
+
 /** Every procedure's step-over for a validated input. */
 export function compareForward(input: ForwardInput): ForwardComparison {
   const exact = exactForward(input);
-  const maxMm = maxIntervalMm(input, input.pattern);
+  const maxMm = maxIntervalMm(input, input.pattern, input.surface);
   return {
     input,
     maxIntervalMm: maxMm,
     exact,
+    curvature: input.surface.kind === 'cylinder' ? curvatureRows(input, input.surface, exact, maxMm) : null,
     approximations: {
       sekine: estimate(sekineHalfInterval(input), input, exact, maxMm),
       redonnet: estimate(redonnetHalfInterval(input), input, exact, maxMm),
@@ -145,6 +242,52 @@ function heightEstimate(r: Approximation<ScallopHeight>, exactMm: number): Inver
   };
 }
 
+/** The curvature rows of the inverse (see InverseCurvatureComparison). */
+function inverseCurvatureRows(
+  input: InverseInput,
+  surface: CylinderSurface,
+  exactMm: number,
+): InverseCurvatureComparison {
+  const L = input.intervalMm;
+  const planeInput = inverseInput(input, input.pattern, L);
+  const planeMax = maxIntervalMm(input, input.pattern);
+  const plane: InverseEstimate =
+    L < planeMax
+      ? heightEstimate({ ok: true, scallopHeightMm: exactInverse(planeInput).cuspHeightMm }, exactMm)
+      : { ok: false, notApplicable: 'Plane: the step-over is at or beyond the widest one the tool allows on a plane.' };
+  const across = surface.axis === 'feed' ? surface.radiusMm : Number.POSITIVE_INFINITY;
+  const radii: Record<CorrectedKey, Approximation<{ effectiveRadiusMm: number }>> = {
+    sekine: sekineModel(input),
+    redonnet: redonnetModel(input),
+    osculating: osculatingModel(input),
+    cornerBall: cornerBallModel(input),
+  };
+  const corrected = {} as { -readonly [K in CorrectedKey]: InverseEstimate };
+  const half = L / 2;
+  for (const key of CORRECTED_KEYS) {
+    const m = radii[key];
+    const who = `${PROCEDURES[key].shortLabel}, corrected for the curvature`;
+    if (!m.ok) {
+      corrected[key] = { ok: false, notApplicable: m.notApplicable };
+      continue;
+    }
+    const reff = m.effectiveRadiusMm;
+    const rho = Number.isFinite(across) ? (reff * across) / (reff + across) : reff;
+    if (!(rho > 0) || !Number.isFinite(rho) || half > rho) {
+      corrected[key] = {
+        ok: false,
+        notApplicable: `${who}: L/2 is not inside its combined circle (${formatSignificant(rho, { digits: 5, trimZeros: true })} mm).`,
+      };
+      continue;
+    }
+    corrected[key] = heightEstimate(
+      { ok: true, scallopHeightMm: (half * half) / (rho + Math.sqrt((rho - half) * (rho + half))) },
+      exactMm,
+    );
+  }
+  return { surface, plane, corrected };
+}
+
 /** Every procedure's scallop height at a validated step-over. */
 export function compareInverse(input: InverseInput): InverseComparison {
   const exact = exactInverse(input);
@@ -152,6 +295,7 @@ export function compareInverse(input: InverseInput): InverseComparison {
   return {
     input,
     exact,
+    curvature: input.surface.kind === 'cylinder' ? inverseCurvatureRows(input, input.surface, h) : null,
     approximations: {
       sekine: heightEstimate(sekineScallopHeight(input), h),
       redonnet: heightEstimate(redonnetScallopHeight(input), h),

@@ -9,6 +9,8 @@
  * `wR = L/2`) and two left flanks (`wL = L/2`); for no cusp above h, `L = 2 min(wR, wL)` and
  * the other cusp is lower. Without tilt both give `L = 2 (L/2)` of the paper.
  */
+
+import { type CylinderSurface, cylinderSolver } from './cylinder';
 import {
   contactOffsetMm,
   type FlankPoint,
@@ -41,7 +43,11 @@ export interface ExactForward {
    * neither lead nor tilt (its bottom face lies on the plane and has no corner to curve up).
    */
   readonly noScallop: boolean;
-  /** The flank points at the cusps (for geometry and teaching). */
+  /**
+   * The flank points of the plane profile at the cusps (geometry and teaching). On a cylinder they
+   * are the plane profile's points at the same height, for drawing only: the cylinder's flanks are
+   * measured radially.
+   */
   readonly right: FlankPoint;
   readonly left: FlankPoint;
 }
@@ -74,6 +80,14 @@ export function intervalFromWidths(pattern: PassPattern, rightMm: number, leftMm
  * allocation beyond the shape). Error below 1e-9 mm over the valid domain.
  */
 export function exactIntervalMm(input: ForwardInput): number {
+  if (input.surface.kind === 'cylinder') {
+    // The reaches alone (no display geometry); without tilt the flanks are mirror images.
+    const c = cylinderSolver(input, input.surface);
+    const h = input.scallopHeightMm;
+    const right = c.reach('right', h);
+    const left = input.tiltAngleDeg === 0 ? right : c.reach('left', h);
+    return c.intervalFromReach(input.pattern === 'one-way' ? right + left : 2 * Math.min(right, left));
+  }
   const s = shapeOfTool(input);
   if (s.flatOnPlane && s.rcr === 0) return 2 * s.a;
   const h = input.scallopHeightMm;
@@ -92,6 +106,7 @@ export function exactHalfIntervalMm(input: ForwardInput): number {
 
 /** Exact forward solution: step-over, flank widths, contact offset and cusp heights (mm). */
 export function exactForward(input: ForwardInput): ExactForward {
+  if (input.surface.kind === 'cylinder') return cylinderForward(input, input.surface);
   const s = shapeOfTool(input);
   const h = input.scallopHeightMm;
   const y0 = contactOffsetMm(s);
@@ -167,6 +182,7 @@ function oneWayCuspHeightMm(s: PostureShape, L: number, limitMm: number): number
 
 /** Exact inverse: the cusp heights (mm) that passes L apart leave. @param input validated by validateInverse. */
 export function exactInverse(input: InverseInput): ExactInverse {
+  if (input.surface.kind === 'cylinder') return cylinderInverse(input, input.surface);
   const s = shapeOfTool(input);
   const L = input.intervalMm;
   const y0 = contactOffsetMm(s);
@@ -211,4 +227,115 @@ export function exactInverse(input: InverseInput): ExactInverse {
  */
 export function exactScallopHeightMm(input: InverseInput): number {
   return exactInverse(input).cuspHeightMm;
+}
+
+/**
+ * On a cylinder (cylinder.ts): the step-over from the flanks' reach at the radial height h, one-way
+ * `L = |Rs| (A_R + A_L)` (axis = feed, A the polar angles) or `w_R + w_L` (axis = cross, widths
+ * along the axis); zigzag twice the smaller reach. "Widths" are reported as the reach converted to
+ * length along the surface.
+ */
+function cylinderForward(input: ForwardInput, surface: CylinderSurface): ExactForward {
+  const c = cylinderSolver(input, surface);
+  const s = shapeOfTool(input);
+  const h = input.scallopHeightMm;
+  const reachR = c.reach('right', h);
+  const reachL = c.reach('left', h);
+  const wR = c.intervalFromReach(reachR);
+  const wL = c.intervalFromReach(reachL);
+  const L = intervalFromWidths(input.pattern, wR, wL);
+  let other: number | null = null;
+  if (input.pattern === 'zigzag') {
+    const wider = reachR > reachL ? 'right' : 'left';
+    const half = c.reachFromInterval(L / 2);
+    other = reachR === reachL ? h : Math.min(h, c.heightAt(wider, half));
+  }
+  return {
+    intervalMm: L,
+    halfIntervalMm: L / 2,
+    halfWidthRightMm: wR,
+    halfWidthLeftMm: wL,
+    contactOffsetMm: contactOffsetMm(s),
+    cuspHeightMm: h,
+    otherCuspHeightMm: other,
+    noScallop: false,
+    right: flankAtHeight(s, 'right', Math.min(h, flankLimits(s).topRightMm)),
+    left: flankAtHeight(s, 'left', Math.min(h, flankLimits(s).topLeftMm)),
+  };
+}
+
+/** The inverse on a cylinder: cusp heights at a step-over (one-way by a bracketed secant in sqrt(h)). */
+function cylinderInverse(input: InverseInput, surface: CylinderSurface): ExactInverse {
+  const c = cylinderSolver(input, surface);
+  const s = shapeOfTool(input);
+  const L = input.intervalMm;
+  const reach = c.reachFromInterval(L);
+  const plane = (flank: 'right' | 'left', z: number) =>
+    flankAtHeight(
+      s,
+      flank,
+      Math.max(0, Math.min(z, flank === 'right' ? flankLimits(s).topRightMm : flankLimits(s).topLeftMm)),
+    );
+  if (input.pattern === 'zigzag' || input.tiltAngleDeg === 0) {
+    // Without tilt the flanks are mirror images (on both axes): each cusp is at half the reach.
+    const hR = Math.max(0, c.heightAt('right', reach / 2));
+    const hL = input.tiltAngleDeg === 0 ? hR : Math.max(0, c.heightAt('left', reach / 2));
+    return {
+      intervalMm: L,
+      cuspHeightMm: Math.max(hR, hL),
+      otherCuspHeightMm: input.pattern === 'zigzag' ? Math.min(hR, hL) : null,
+      rightCuspHeightMm: hR,
+      leftCuspHeightMm: hL,
+      halfWidthRightMm: L / 2,
+      halfWidthLeftMm: L / 2,
+      contactOffsetMm: contactOffsetMm(s),
+      right: plane('right', hR),
+      left: plane('left', hL),
+    };
+  }
+  // One-way with tilt (or across the axis): the cusp height z where the two reaches add up to L.
+  const limit = c.limits().limitMm;
+  const f = (u: number) => c.intervalFromReach(c.reach('right', u * u) + c.reach('left', u * u)) - L;
+  let lo = 0;
+  let hi = Math.sqrt(limit);
+  let fLo = f(0);
+  let fHi = f(hi);
+  // The flat faces already cover L (a flat bottom lying on the cylinder): no scallop.
+  if (fLo >= 0) fHi = fLo;
+  let side = 0;
+  if (fLo >= 0) hi = 0;
+  for (let i = 0; i < 200 && hi - lo > 1e-16 * hi; i++) {
+    let u = hi - (fHi * (hi - lo)) / (fHi - fLo);
+    if (!(u > lo && u < hi)) u = 0.5 * (lo + hi);
+    const fu = f(u);
+    if (fu === 0) {
+      lo = u;
+      hi = u;
+      break;
+    }
+    if (fu < 0) {
+      lo = u;
+      fLo = fu;
+      if (side === -1) fHi /= 2;
+      side = -1;
+    } else {
+      hi = u;
+      fHi = fu;
+      if (side === 1) fLo /= 2;
+      side = 1;
+    }
+  }
+  const z = (0.5 * (lo + hi)) ** 2;
+  return {
+    intervalMm: L,
+    cuspHeightMm: z,
+    otherCuspHeightMm: null,
+    rightCuspHeightMm: z,
+    leftCuspHeightMm: z,
+    halfWidthRightMm: c.intervalFromReach(c.reach('right', z)),
+    halfWidthLeftMm: c.intervalFromReach(c.reach('left', z)),
+    contactOffsetMm: contactOffsetMm(s),
+    right: plane('right', z),
+    left: plane('left', z),
+  };
 }

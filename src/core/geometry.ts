@@ -161,14 +161,20 @@ function pushBranch(
   for (const t of ts) {
     const cut = cutSection(p, t, h);
     if (cut.psi === null) continue;
-    const q = sectionPoint(p, t, cut.psi[side]);
+    const psi = cut.psi[side];
+    // Where the corner is wider than the ring (Rcr > Rb, a near-ball) a section crosses the axis:
+    // a crossing beyond it lies inside the tool (nearer the opposite ring point), not on its surface.
+    if (p.ringRadiusMm + p.cornerRadiusMm * Math.cos(psi) < 0) continue;
+    const q = sectionPoint(p, t, psi);
     out.push(q[0], q[1], q[2]);
   }
 }
 
 /**
  * The curve where the torus meets the plane z = h, as closed polylines (flat xyz arrays, mm),
- * with the cusp sections' crossings included exactly (so the curve reaches both P_hp). For a flat
+ * with the cusp sections' crossings included exactly (so the curve reaches both P_hp). Crossings
+ * that lie beyond the axis (a corner wider than the ring) are inside the tool and left out, so a
+ * near-ball's loop may jump across them. For a flat
  * end (Rcr = 0) the ring crosses the plane at two points and the plane cuts the flat bottom
  * along the chord between them: a two-point loop.
  * @param cuspRingAngles ring angles of the sections through P_hp (included in the sampling).

@@ -3,11 +3,14 @@
  */
 export * from './approximations';
 export * from './compare';
+export * from './cylinder';
 export * from './exact';
 export * from './geometry';
 export * from './placement';
 export * from './posture';
 export * from './procedures';
+export * from './roughness';
+export * from './simulation';
 export * from './trace';
 export * from './units';
 export * from './validate';

@@ -45,12 +45,15 @@ export function placeTool(tool: ToolInput): Placement {
   const v2: Vec3 = [k, -ax * sinPhi, -ax * cosPhi];
   const rb = shape.a;
   const rcr = shape.rcr;
-  // O = contact + Rcr Z - Rb (sin t0 v1 + cos t0 v2); `0 -` keeps a zero offset +0, never -0.
-  const centre: Vec3 = [
-    0 - rb * (shape.sinT0 * v1[0] + shape.cosT0 * v2[0]),
-    0 - rb * (shape.sinT0 * v1[1] + shape.cosT0 * v2[1]),
-    rcr - rb * (shape.sinT0 * v1[2] + shape.cosT0 * v2[2]),
-  ];
+  // O = contact + Rcr Z - Rb (sin t0 v1 + cos t0 v2); `0 -` keeps a zero offset +0, never -0. A
+  // flat bottom lying flat touches with its whole face: the contact is the face's centre, under O.
+  const centre: Vec3 = shape.flatOnPlane
+    ? [0, 0, rcr]
+    : [
+        0 - rb * (shape.sinT0 * v1[0] + shape.cosT0 * v2[0]),
+        0 - rb * (shape.sinT0 * v1[1] + shape.cosT0 * v2[1]),
+        rcr - rb * (shape.sinT0 * v1[2] + shape.cosT0 * v2[2]),
+      ];
   return {
     shape,
     ringRadiusMm: rb,

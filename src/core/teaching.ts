@@ -21,7 +21,7 @@ import { profilePolyline } from './geometry';
 import { PAPER_CONDITIONS, type PaperCondition, type ProcedureValues } from './paper';
 import { shapeOfTool } from './posture';
 import { PROCEDURE_KEYS, type ProcedureKey } from './procedures';
-import type { ForwardInput, InverseInput, PassPattern, ToolInput } from './validate';
+import type { InverseInput, PassPattern, ToolInput } from './validate';
 import { forwardInput, inverseInput, leavesNoScallop, scallopHeightLimits } from './validate';
 
 /** Cross-feed curves as flat (y, z) arrays, z above the contact, y from the contact (mm). */
@@ -188,14 +188,11 @@ function heightsAt(input: InverseInput): ProcedureValues {
 /** Tables 2-5 recomputed (the conditions are all valid, so every value exists). */
 export function paperTables(): PaperTableRow[] {
   return PAPER_CONDITIONS.map((c) => {
-    const input: ForwardInput = {
-      toolRadiusMm: c.R,
-      cornerRadiusMm: c.Rcr,
-      leadAngleDeg: c.rho,
-      tiltAngleDeg: 0,
-      pattern: 'one-way',
-      scallopHeightMm: c.h,
-    };
+    const input = forwardInput(
+      { toolRadiusMm: c.R, cornerRadiusMm: c.Rcr, leadAngleDeg: c.rho, tiltAngleDeg: 0 },
+      'one-way',
+      c.h,
+    );
     const value = (r: { ok: true; halfIntervalMm: number } | { ok: false }) => (r.ok ? r.halfIntervalMm : 0);
     return {
       table: c.table,

@@ -100,9 +100,11 @@ function cutAt(p: Placement, side: 1 | -1, delta: number, h: number): Cut {
   const tm = p.contactRingAngleRad + (side * delta) / 2;
   const chordY = 2 * side * half * (Math.cos(tm) * p.v1[1] - Math.sin(tm) * p.v2[1]);
   const chordX = 2 * side * half * (Math.cos(tm) * p.v1[0] - Math.sin(tm) * p.v2[0]);
-  // Centre of the section relative to the contact point, which lies Rcr below the contact's ring point.
-  const cx = rb * chordX;
-  const cy = rb * chordY;
+  // Centre of the section relative to the contact point, which lies Rcr below the contact's ring
+  // point; a flat bottom lying flat touches with its whole face, under O (placement.ts).
+  const flat = p.shape.flatOnPlane;
+  const cx = rb * chordX + (flat ? rb * (p.shape.sinT0 * p.v1[0] + p.shape.cosT0 * p.v2[0]) : 0);
+  const cy = rb * chordY + (flat ? rb * (p.shape.sinT0 * p.v1[1] + p.shape.cosT0 * p.v2[1]) : 0);
   const cz = rcr + rise;
   // Inside the section plane the circle's height is cz + Rcr (r_z cos psi + a_z sin psi).
   const A = r[2];

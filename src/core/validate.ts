@@ -6,11 +6,12 @@
  * the bound it broke, what was given). Messages are written from that data in one place
  * (describeInputError), in the user's unit.
  */
+import { cylinderSolver, minConcaveRadiusMm, PLANE, type Surface, type SurfaceAxis } from './cylinder';
 import { type FlankLimits, flankAtHeight, flankLimits, type PostureShape, shapeOfTool } from './posture';
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from './units';
 
 /** Names of the user-facing inputs. */
-export type FieldName = 'R' | 'Rcr' | 'rho' | 'tilt' | 'pattern' | 'h' | 'interval';
+export type FieldName = 'R' | 'Rcr' | 'rho' | 'tilt' | 'pattern' | 'surfaceRadius' | 'surfaceAxis' | 'h' | 'interval';
 
 /** Why a field was rejected. */
 export type InputErrorCode =
@@ -23,11 +24,14 @@ export type InputErrorCode =
   | 'too-small'
   | 'out-of-range'
   | 'not-a-pattern'
+  | 'not-an-axis'
+  | 'gouging'
   | 'corner-exceeds-radius'
   | 'flank-wall'
   | 'shank-cuts'
   | 'beyond-diameter'
-  | 'beyond-interval';
+  | 'beyond-interval'
+  | 'wall-only';
 
 /** One rejected field, as data; `message` is its description in mm (describeInputError). */
 export interface InputError {
@@ -65,9 +69,10 @@ export interface ToolInput {
   readonly tiltAngleDeg: number;
 }
 
-/** Tool, posture and pass pattern. */
+/** Tool, posture, pass pattern and the design surface (a plane or a cylinder). */
 export interface PassInput extends ToolInput {
   readonly pattern: PassPattern;
+  readonly surface: Surface;
 }
 
 /** Input of the forward problem: scallop height to path interval. */
@@ -91,6 +96,10 @@ export interface RawToolInput {
   readonly tilt?: unknown;
   /** Missing (undefined) means one-way. */
   readonly pattern?: unknown;
+  /** Signed cylinder radius in mm (convex > 0, concave < 0); missing, empty or 'plane' means a plane. */
+  readonly surfaceRadius?: unknown;
+  /** 'feed' (default) or 'cross'; only with a surface radius. */
+  readonly surfaceAxis?: unknown;
 }
 export interface RawForwardInput extends RawToolInput {
   readonly h: unknown;
@@ -98,6 +107,10 @@ export interface RawForwardInput extends RawToolInput {
 export interface RawInverseInput extends RawToolInput {
   readonly interval: unknown;
 }
+
+/** Smallest and largest |Rs| of a cylinder, mm; beyond the largest a plane answers to 1e-9 mm (and the arithmetic keeps its digits). */
+export const MIN_SURFACE_RADIUS_MM = 0.001;
+export const MAX_SURFACE_RADIUS_MM = 1e6;
 
 /** Largest tool radius accepted, in mm: keeps every intermediate product far from overflow. */
 export const MAX_TOOL_RADIUS_MM = 1000;
@@ -118,6 +131,8 @@ export const FIELD_LABELS: Readonly<Record<FieldName, string>> = {
   rho: 'Lead angle rho',
   tilt: 'Tilt angle beta',
   pattern: 'Pass pattern',
+  surfaceRadius: 'Surface radius Rs',
+  surfaceAxis: 'Cylinder axis',
   h: 'Scallop height h',
   interval: 'Step-over L',
 };
@@ -132,7 +147,7 @@ export interface DescribeOptions {
 
 /** True for fields measured as lengths (converted to the user's unit in messages). */
 function isLength(field: FieldName): boolean {
-  return field === 'R' || field === 'Rcr' || field === 'h' || field === 'interval';
+  return field === 'R' || field === 'Rcr' || field === 'h' || field === 'interval' || field === 'surfaceRadius';
 }
 
 /**
@@ -164,11 +179,19 @@ export function describeInputError(e: InputError, unit: LengthUnit, options: Des
     case 'too-large':
       return `${label} must be at most ${limit} ${got}.`;
     case 'out-of-range':
+      if (e.field === 'surfaceRadius')
+        return `${label} must be a radius from ${length(MIN_SURFACE_RADIUS_MM)} to ${length(MAX_SURFACE_RADIUS_MM)}, negative for a concave cylinder ${got}.`;
       return e.field === 'rho'
         ? `${label} must be at least 0 and below 90 degrees ${got}.`
         : `${label} must be above -90 and below 90 degrees ${got}.`;
     case 'not-a-pattern':
       return `${label} must be one-way or zigzag ${got.replace('(got ', '(got "').replace(/\)$/, '")')}.`;
+    case 'not-an-axis':
+      return `${label} must be feed or cross ${got.replace('(got ', '(got "').replace(/\)$/, '")')}.`;
+    case 'gouging':
+      return e.limit === null || !Number.isFinite(e.limit)
+        ? `This tool gouges a concave cylinder of any radius with this axis and posture ${got}: a flat bottom without lead reaches below the surface on both sides of the contact. Add lead or tilt, or use a ball end.`
+        : `${label}: a concave cylinder must have a radius of at least ${length(Math.abs(e.limit))} for this tool and posture (Rs at most ${length(e.limit)}) ${got}; a tighter one is gouged (the tool reaches below the surface away from the contact).`;
     case 'corner-exceeds-radius':
       return `${label} must not exceed the tool radius R = ${limit} ${got}; Rcr = R is a ball end mill.`;
     case 'flank-wall':
@@ -179,6 +202,8 @@ export function describeInputError(e: InputError, unit: LengthUnit, options: Des
       return `${label} must be below ${limit} ${got}: above it the shank (the tool's cylindrical side, leaning to the ${e.side ?? 'right'} with the tilt) would cut the surface.`;
     case 'beyond-diameter':
       return `${label} must be below the tool ${half ? 'radius R' : 'diameter 2R'} = ${limit} ${got}; at or beyond it adjacent passes leave a wall.`;
+    case 'wall-only':
+      return `${label} cannot be answered ${got}: in this posture the tool cuts a step at any step-over (a flank or the shank rises straight from the contact, as a tilted flat end does), so no scallop forms. Add a corner radius, or lead, or less tilt.`;
     case 'beyond-interval':
       return `${label} must be below ${limit} ${got}, the widest step-over these flanks allow; at or beyond it adjacent passes leave a wall, not a scallop.`;
   }
@@ -266,27 +291,73 @@ function checkPattern(raw: unknown, errors: InputError[]): PassPattern | null {
  * A forward input built property by property: objects made by spreading (`{ ...tool, h }`) get a
  * slow shape in V8 (measured: 7-9 times slower to read in the solvers).
  */
-export function forwardInput(tool: ToolInput, pattern: PassPattern, scallopHeightMm: number): ForwardInput {
+export function forwardInput(
+  tool: ToolInput,
+  pattern: PassPattern,
+  scallopHeightMm: number,
+  surface: Surface = PLANE,
+): ForwardInput {
   return {
     toolRadiusMm: tool.toolRadiusMm,
     cornerRadiusMm: tool.cornerRadiusMm,
     leadAngleDeg: tool.leadAngleDeg,
     tiltAngleDeg: tool.tiltAngleDeg,
     pattern,
+    surface,
     scallopHeightMm,
   };
 }
 
 /** An inverse input built property by property (see forwardInput). */
-export function inverseInput(tool: ToolInput, pattern: PassPattern, intervalMm: number): InverseInput {
+export function inverseInput(
+  tool: ToolInput,
+  pattern: PassPattern,
+  intervalMm: number,
+  surface: Surface = PLANE,
+): InverseInput {
   return {
     toolRadiusMm: tool.toolRadiusMm,
     cornerRadiusMm: tool.cornerRadiusMm,
     leadAngleDeg: tool.leadAngleDeg,
     tiltAngleDeg: tool.tiltAngleDeg,
     pattern,
+    surface,
     intervalMm,
   };
+}
+
+/** The surface: a plane when no radius is given; else a cylinder with a valid radius and axis. */
+function checkSurface(raw: RawToolInput, errors: InputError[]): Surface | null {
+  const given = raw.surfaceRadius;
+  const blank =
+    given === undefined ||
+    given === null ||
+    (typeof given === 'string' && (given.trim() === '' || given.trim() === 'plane'));
+  const axisText = raw.surfaceAxis === undefined || raw.surfaceAxis === null ? 'feed' : String(raw.surfaceAxis).trim();
+  if (blank) return PLANE;
+  const parsed = parseNumber(given);
+  if (!parsed.ok) {
+    errors.push(error('surfaceRadius', parsed.code, parsed.shown));
+    return null;
+  }
+  const rs = parsed.value;
+  if (!(Math.abs(rs) >= MIN_SURFACE_RADIUS_MM && Math.abs(rs) <= MAX_SURFACE_RADIUS_MM)) {
+    errors.push(error('surfaceRadius', 'out-of-range', parsed.shown));
+    return null;
+  }
+  if (axisText !== 'feed' && axisText !== 'cross') {
+    errors.push(error('surfaceAxis', 'not-an-axis', axisText));
+    return null;
+  }
+  return { kind: 'cylinder', radiusMm: rs, axis: axisText as SurfaceAxis };
+}
+
+/** A concave cylinder too tight for the tool and posture: the gouging error, else null. */
+function gouging(tool: ToolInput, surface: Surface, shown: string): InputError | null {
+  if (surface.kind !== 'cylinder' || surface.radiusMm > 0) return null;
+  const min = minConcaveRadiusMm(tool, surface.axis);
+  if (Math.abs(surface.radiusMm) >= min) return null;
+  return error('surfaceRadius', 'gouging', shown, Number.isFinite(min) ? -min : null);
 }
 
 function toolOf(values: Collected['values']): ToolInput | null {
@@ -305,18 +376,26 @@ export function leavesNoScallop(tool: ToolInput): boolean {
 }
 
 /**
- * The scallop heights a tool in a posture can leave: below `limitMm` (flankLimits); mm.
- * Without tilt it is `(R - Rcr) sin(rho) + Rcr`.
+ * The scallop heights a tool in a posture can leave on a surface: below `limitMm` (flankLimits on a
+ * plane; measured radially on a cylinder); mm. On a plane without tilt it is `(R - Rcr) sin(rho) + Rcr`.
  */
-export function scallopHeightLimits(tool: ToolInput): FlankLimits {
+export function scallopHeightLimits(tool: ToolInput, surface: Surface = PLANE): FlankLimits {
+  if (surface.kind === 'cylinder') return cylinderSolver(tool, surface).limits();
   return flankLimits(shapeOfTool(tool));
 }
 
 /**
- * The widest step-over (mm) that still leaves a scallop, for a tool, posture and pattern:
- * the flanks' widths at the height limit; 2R without tilt.
+ * The widest step-over (mm) that still leaves a scallop, for a tool, posture, pattern and surface:
+ * the flanks' reach at the height limit; 2R on a plane without tilt.
  */
-export function maxIntervalMm(tool: ToolInput, pattern: PassPattern): number {
+export function maxIntervalMm(tool: ToolInput, pattern: PassPattern, surface: Surface = PLANE): number {
+  if (surface.kind === 'cylinder') {
+    const c = cylinderSolver(tool, surface);
+    const h = c.limits().limitMm;
+    const right = c.reach('right', h);
+    const left = c.reach('left', h);
+    return c.intervalFromReach(pattern === 'one-way' ? right + left : 2 * Math.min(right, left));
+  }
   const s = shapeOfTool(tool);
   const limit = flankLimits(s).limitMm;
   return intervalAtHeight(s, pattern, limit);
@@ -342,14 +421,18 @@ export function validateForward(raw: RawForwardInput): Validation<ForwardInput> 
   const c = collect(raw, ['R', 'Rcr', 'rho', 'tilt', 'h']);
   checkTool(c);
   const pattern = checkPattern(raw.pattern, c.errors);
+  const surface = checkSurface(raw, c.errors);
   const h = c.values.h;
   const tool = toolOf(c.values);
-  if (h !== undefined) {
+  const gouge = tool !== null && surface !== null ? gouging(tool, surface, String(raw.surfaceRadius ?? '')) : null;
+  if (gouge) c.errors.push(gouge);
+  if (h !== undefined && gouge === null) {
     if (h <= 0) reject(c, 'h', 'not-positive');
     else if (h < MIN_LENGTH_MM) reject(c, 'h', 'too-small', MIN_LENGTH_MM);
-    else if (tool !== null && !leavesNoScallop(tool)) {
-      const limits = scallopHeightLimits(tool);
-      if (h >= limits.limitMm) {
+    else if (tool !== null && surface !== null && !(surface.kind === 'plane' && leavesNoScallop(tool))) {
+      const limits = scallopHeightLimits(tool, surface);
+      if (!(limits.limitMm >= MIN_LENGTH_MM)) c.errors.push(error('h', 'wall-only', c.shown.h ?? ''));
+      else if (h >= limits.limitMm) {
         const by = limits.limitBy;
         const shank = by === 'shank-right' || by === 'shank-left';
         const side = by === 'right-flank' || by === 'shank-right' ? 'right' : 'left';
@@ -359,16 +442,16 @@ export function validateForward(raw: RawForwardInput): Validation<ForwardInput> 
             shank ? 'shank-cuts' : 'flank-wall',
             c.shown.h ?? '',
             limits.limitMm,
-            tool.tiltAngleDeg === 0 && !shank ? null : side,
+            tool.tiltAngleDeg === 0 && surface.kind === 'plane' && !shank ? null : side,
           ),
         );
       }
     }
   }
-  if (c.errors.length > 0 || tool === null || pattern === null || h === undefined) {
+  if (c.errors.length > 0 || tool === null || pattern === null || surface === null || h === undefined) {
     return { ok: false, errors: c.errors };
   }
-  return { ok: true, value: forwardInput(tool, pattern, h) };
+  return { ok: true, value: forwardInput(tool, pattern, h, surface) };
 }
 
 /**
@@ -381,18 +464,25 @@ export function validateInverse(raw: RawInverseInput): Validation<InverseInput> 
   const c = collect(raw, ['R', 'Rcr', 'rho', 'tilt', 'interval']);
   checkTool(c);
   const pattern = checkPattern(raw.pattern, c.errors);
+  const surface = checkSurface(raw, c.errors);
   const L = c.values.interval;
   const tool = toolOf(c.values);
-  if (L !== undefined) {
+  const gouge = tool !== null && surface !== null ? gouging(tool, surface, String(raw.surfaceRadius ?? '')) : null;
+  if (gouge) c.errors.push(gouge);
+  if (L !== undefined && gouge === null) {
     if (L <= 0) reject(c, 'interval', 'not-positive');
     else if (L < 2 * MIN_LENGTH_MM) reject(c, 'interval', 'too-small', 2 * MIN_LENGTH_MM);
-    else if (tool !== null && pattern !== null) {
-      const max = maxIntervalMm(tool, pattern);
-      if (!(L < max)) reject(c, 'interval', tool.tiltAngleDeg === 0 ? 'beyond-diameter' : 'beyond-interval', max);
+    else if (tool !== null && pattern !== null && surface !== null) {
+      const leavesScallop = surface.kind === 'plane' && leavesNoScallop(tool);
+      const limit = scallopHeightLimits(tool, surface).limitMm;
+      const max = leavesScallop || limit >= MIN_LENGTH_MM ? maxIntervalMm(tool, pattern, surface) : Number.NaN;
+      const onPlaneNoTilt = tool.tiltAngleDeg === 0 && surface.kind === 'plane';
+      if (!(max > 0) || !Number.isFinite(max)) reject(c, 'interval', 'wall-only');
+      else if (!(L < max)) reject(c, 'interval', onPlaneNoTilt ? 'beyond-diameter' : 'beyond-interval', max);
     }
   }
-  if (c.errors.length > 0 || tool === null || pattern === null || L === undefined) {
+  if (c.errors.length > 0 || tool === null || pattern === null || surface === null || L === undefined) {
     return { ok: false, errors: c.errors };
   }
-  return { ok: true, value: inverseInput(tool, pattern, L) };
+  return { ok: true, value: inverseInput(tool, pattern, L, surface) };
 }

@@ -29,10 +29,13 @@ export function buildRequest(state: CalculatorState): BuiltRequest {
   return v.ok ? { ok: true, request: { mode: 'inverse', input: v.value } } : v;
 }
 
-/** The page field that shows an error of the core's field (pattern errors cannot happen here). */
+/**
+ * The page field that shows an error of the core's field. Pattern errors cannot happen here, and
+ * the page asks for no surface (a plane), so the surface's fields have no input on the page.
+ */
 export function fieldOfError(field: FieldName): FieldKey | null {
   if (field === 'interval') return 'L';
-  return field === 'pattern' ? null : field;
+  return field === 'pattern' || field === 'surfaceRadius' || field === 'surfaceAxis' ? null : field;
 }
 
 /** Each field's message, in the user's unit, quoting the text as typed. */

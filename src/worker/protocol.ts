@@ -5,6 +5,8 @@
  * A request is a validated core input; every reply echoes the request it answers, so the page
  * can show a reply only when it answers the inputs on screen (sameRequest).
  */
+
+import type { Surface } from '../core/cylinder';
 import type { ApproximationKey, ProcedureKey } from '../core/procedures';
 import type { PaperTableRow } from '../core/teaching';
 import type { ForwardInput, InputError, InverseInput, PassPattern } from '../core/validate';
@@ -27,12 +29,19 @@ export function sameRequest(a: SolveRequest | null, b: SolveRequest | null): boo
     x.cornerRadiusMm !== y.cornerRadiusMm ||
     x.leadAngleDeg !== y.leadAngleDeg ||
     x.tiltAngleDeg !== y.tiltAngleDeg ||
-    x.pattern !== y.pattern
+    x.pattern !== y.pattern ||
+    !sameSurface(x.surface, y.surface)
   )
     return false;
   return a.mode === 'forward'
     ? a.input.scallopHeightMm === (b.input as ForwardInput).scallopHeightMm
     : a.input.intervalMm === (b.input as InverseInput).intervalMm;
+}
+
+/** True when both are the plane, or cylinders of the same radius and axis. */
+function sameSurface(a: Surface, b: Surface): boolean {
+  if (a.kind === 'plane' || b.kind === 'plane') return a.kind === b.kind;
+  return a.radiusMm === b.radiusMm && a.axis === b.axis;
 }
 
 /** Where one cusp stands: across the feed from this pass's contact, and its height above it (mm). */

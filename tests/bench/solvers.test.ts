@@ -21,6 +21,12 @@ describe('npm run bench', () => {
       'sekineNsPerCall',
       'redonnetNsPerCall',
       'bediNsPerCall',
+      'exactCylinderFeedNsPerCall',
+      'exactCylinderCrossNsPerCall',
+      'roughnessNsPerCall',
+      'targetRaNsPerCall',
+      'simulationMsMedian',
+      'simulationCellsPerSecond',
     ]) {
       expect(last[key]).toBeGreaterThan(0);
     }

@@ -16,6 +16,7 @@ const tool = (R: number, Rcr: number, rho: number) => ({
   leadAngleDeg: rho,
   tiltAngleDeg: 0,
   pattern: 'one-way' as const,
+  surface: { kind: 'plane' as const },
 });
 
 /** A value printed with 3 decimals is reproduced when it rounds to the printed digits. */

@@ -14,11 +14,13 @@ const tool = (R: number, Rcr: number, rho: number) => ({
 const input = (R: number, Rcr: number, rho: number, h: number) => ({
   ...tool(R, Rcr, rho),
   pattern: 'one-way' as const,
+  surface: { kind: 'plane' as const },
   scallopHeightMm: h,
 });
 const atHalf = (R: number, Rcr: number, rho: number, half: number) => ({
   ...tool(R, Rcr, rho),
   pattern: 'one-way' as const,
+  surface: { kind: 'plane' as const },
   intervalMm: 2 * half,
 });
 const DEG = Math.PI / 180;

@@ -12,6 +12,7 @@ const input = (R: number, Rcr: number, rho: number, h: number) => ({
   leadAngleDeg: rho,
   tiltAngleDeg: 0,
   pattern: 'one-way' as const,
+  surface: { kind: 'plane' as const },
   scallopHeightMm: h,
 });
 
@@ -80,4 +81,24 @@ describe("the paper's 3D procedure (Figure 1) as a trace", () => {
       }
     });
   }
+});
+
+describe('the trace in the placement of the tool', () => {
+  it('its P_hp lie on the torus of the placed tool, also for a flat bottom lying on the plane', () => {
+    for (const [R, Rcr, rho, tilt, h] of [
+      [3, 1, 0, 0, 0.05],
+      [3, 1, 5, 10, 0.05],
+    ] as const) {
+      const t = traceProcedure({ ...input(R, Rcr, rho, h), tiltAngleDeg: tilt });
+      const p = t.placement;
+      for (const f of [t.right, t.left]) {
+        const dx = f.pHp[0] - p.centre[0];
+        const dy = f.pHp[1] - p.centre[1];
+        const dz = f.pHp[2] - p.centre[2];
+        const w = dx * p.axis[0] + dy * p.axis[1] + dz * p.axis[2];
+        const radial = Math.hypot(dx - w * p.axis[0], dy - w * p.axis[1], dz - w * p.axis[2]);
+        expect(Math.abs(Math.hypot(radial - p.ringRadiusMm, w) - Rcr)).toBeLessThan(1e-12);
+      }
+    }
+  });
 });

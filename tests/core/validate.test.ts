@@ -20,6 +20,7 @@ describe('validateForward', () => {
         leadAngleDeg: 5,
         tiltAngleDeg: 0,
         pattern: 'one-way',
+        surface: { kind: 'plane' },
         scallopHeightMm: 0.05,
       },
     });
@@ -66,7 +67,10 @@ describe('validateForward', () => {
     const fwd = solveForwardRaw({ R: 3, Rcr: 0, rho: 0, h: 0.01 });
     expect(fwd.ok && fwd.value.exact.noScallop && fwd.value.exact.intervalMm).toBe(6);
     // With tilt the same flat end cuts a step with its edge: no h is possible, and the message says why.
-    expect(errorsOf(validateForward({ R: 3, Rcr: 0, rho: 0, tilt: 5, h: 0.01 }))[0]?.code).toBe('shank-cuts');
+    const tilted = errorsOf(validateForward({ R: 3, Rcr: 0, rho: 0, tilt: 5, h: 0.01 }))[0];
+    expect(tilted?.code).toBe('wall-only');
+    expect(tilted?.message).toMatch(/cuts a step at any step-over/);
+    expect(errorsOf(validateInverse({ R: 3, Rcr: 0, rho: 0, tilt: 5, interval: 1 }))[0]?.code).toBe('wall-only');
   });
 
   it('accepts the edges of the domain: Rcr = 0, Rcr = R, rho = 0', () => {

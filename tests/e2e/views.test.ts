@@ -17,6 +17,7 @@ const tool = (rho: number, h: number) => ({
   leadAngleDeg: rho,
   tiltAngleDeg: 0,
   pattern: 'one-way' as const,
+  surface: { kind: 'plane' as const },
   scallopHeightMm: h,
 });
 

@@ -18,6 +18,7 @@ describe('requests from the fields', () => {
           leadAngleDeg: 5,
           tiltAngleDeg: -7.5,
           pattern: 'zigzag',
+          surface: { kind: 'plane' },
           scallopHeightMm: 0.05,
         },
       },

@@ -9,6 +9,7 @@ import {
   forwardInput,
   type InverseInput,
   inverseInput,
+  type Surface,
   type ToolInput,
 } from '../../src/core/index';
 import { solve, teach, traceFrames, transferables } from '../../src/worker/api';
@@ -164,6 +165,13 @@ describe('worker solver API (plain data in, plain data out)', () => {
     expect(sameRequest(a, fwd(forwardInput(tool({ tiltAngleDeg: 1e-9 }), 'one-way', 0.05)))).toBe(false);
     expect(sameRequest(a, fwd(forwardInput(TOOL, 'one-way', 0.05 + 1e-15)))).toBe(false);
     expect(sameRequest(a, inv(inverseInput(TOOL, 'one-way', 0.05)))).toBe(false);
+    const on = (surface: Surface) => fwd(forwardInput(TOOL, 'one-way', 0.05, surface));
+    const convex: Surface = { kind: 'cylinder', radiusMm: 50, axis: 'feed' };
+    expect(sameRequest(on(convex), on({ ...convex }))).toBe(true);
+    expect(sameRequest(a, on(convex))).toBe(false);
+    expect(sameRequest(on(convex), a)).toBe(false);
+    expect(sameRequest(on(convex), on({ ...convex, radiusMm: -50 }))).toBe(false);
+    expect(sameRequest(on(convex), on({ ...convex, axis: 'cross' }))).toBe(false);
     expect(sameRequest(a, null)).toBe(false);
     expect(sameRequest(null, null)).toBe(false);
   });

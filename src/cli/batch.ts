@@ -1,0 +1,269 @@
+/**
+ * `--batch`: CSV cases on stdin to a CSV table on stdout, streamed record by record.
+ *
+ * Input: a header naming R, Rcr, rho and h, optionally tilt and pattern, in any order (no other
+ * column); one case per record. Blank lines are not records: they are skipped. Output: one row per
+ * record, in order: the input columns echoed (R,Rcr,rho,h then tilt, pattern when given), the
+ * results ({@link RESULT_COLUMNS}) and `error` last. Numbers are written in full precision (the
+ * shortest text that reads back to the same double); a value that does not exist is an empty
+ * field. A bad record gets its message in `error` and the run goes on.
+ */
+
+import type { Readable } from 'node:stream';
+import { StringDecoder } from 'node:string_decoder';
+import {
+  APPROXIMATION_KEYS,
+  type Approximation,
+  bediHalfInterval,
+  compareForward,
+  cornerBallHalfInterval,
+  exactForward,
+  type ForwardInput,
+  type HalfInterval,
+  maxIntervalMm,
+  osculatingHalfInterval,
+  PROCEDURES,
+  redonnetHalfInterval,
+  sekineHalfInterval,
+  validateForward,
+} from '../core/index';
+import { CsvReader, type CsvRecord, csvText } from './csv';
+import { describeSystemError, FLUSH_CHARS, type Output } from './output';
+
+/** Input columns: required first, in the order they are echoed. */
+export const REQUIRED_COLUMNS = ['R', 'Rcr', 'rho', 'h'] as const;
+export const OPTIONAL_COLUMNS = ['tilt', 'pattern'] as const;
+type InputColumn = (typeof REQUIRED_COLUMNS)[number] | (typeof OPTIONAL_COLUMNS)[number];
+const INPUT_COLUMNS: readonly InputColumn[] = [...REQUIRED_COLUMNS, ...OPTIONAL_COLUMNS];
+
+/**
+ * Result columns after the echoed input: L/2 of the exact solution and of the paper's three
+ * procedures (as before tilt existed), the exact step-over and its geometry, L/2 of the two
+ * other approximations, the notes (warnings) and the error.
+ */
+export const RESULT_COLUMNS = [
+  'exact',
+  'sekine',
+  'redonnet',
+  'bedi',
+  'interval',
+  'halfWidthRight',
+  'halfWidthLeft',
+  'contactOffset',
+  'otherCuspHeight',
+  'osculating',
+  'cornerBall',
+  'note',
+  'error',
+] as const;
+
+/** Where each input column is in the records, and which are echoed. */
+export interface Layout {
+  /** Number of fields of a record. */
+  readonly width: number;
+  /** Header names as given (for messages). */
+  readonly names: readonly string[];
+  /** Echoed columns (canonical order) and their index in a record. */
+  readonly echoed: readonly { readonly name: InputColumn; readonly index: number }[];
+  readonly index: Readonly<Partial<Record<InputColumn, number>>>;
+}
+
+/** Reads the header record: the layout, or the reason it is not one. */
+export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | { ok: false; error: string } {
+  const rule = 'the CSV header must be R,Rcr,rho,h in any order, optionally with tilt and pattern';
+  if (record.error !== null) return { ok: false, error: `${rule}; line ${record.line}: ${record.error}` };
+  const names = record.fields.map((f) => f.trim());
+  const index: Partial<Record<InputColumn, number>> = {};
+  const problems: string[] = [];
+  names.forEach((name, i) => {
+    if (!(INPUT_COLUMNS as readonly string[]).includes(name)) {
+      problems.push(`unknown column ${JSON.stringify(name)}`);
+      return;
+    }
+    const column = name as InputColumn;
+    if (index[column] !== undefined) problems.push(`column ${name} appears twice`);
+    else index[column] = i;
+  });
+  const missing = REQUIRED_COLUMNS.filter((c) => index[c] === undefined);
+  if (missing.length > 0) problems.unshift(`missing ${missing.join(', ')}`);
+  if (problems.length > 0) return { ok: false, error: `${rule} (${problems.join('; ')})` };
+  const echoed = INPUT_COLUMNS.flatMap((name) => {
+    const i = index[name];
+    return i === undefined ? [] : [{ name, index: i }];
+  });
+  return { ok: true, layout: { width: names.length, names, echoed, index } };
+}
+
+/** The output header line for a layout. */
+export function outputHeader(layout: Layout): string {
+  return `${[...layout.echoed.map((c) => c.name), ...RESULT_COLUMNS].join(',')}\n`;
+}
+
+/** A number in full precision: the shortest text that reads back to the same double; never `-0`. */
+export function csvNumber(value: number): string {
+  return value === 0 ? '0' : String(value);
+}
+
+/** Number of result columns before `note` and `error`. */
+const NUMBER_COLUMNS = RESULT_COLUMNS.length - 2;
+const EMPTY_NUMBERS = ','.repeat(NUMBER_COLUMNS);
+
+function halfText(r: Approximation<HalfInterval>): string {
+  return r.ok ? csvNumber(r.halfIntervalMm) : '';
+}
+
+/** compareForward's warning condition: a step-over at or beyond the widest that leaves a scallop. */
+function beyondWall(r: Approximation<HalfInterval>, maxMm: number): boolean {
+  return r.ok && !(2 * r.halfIntervalMm < maxMm);
+}
+
+const NO_SCALLOP_NOTE =
+  'exact: a flat end without lead or tilt leaves no scallop at any step-over up to its diameter (L = 2R).';
+
+/**
+ * The results of a valid case: the result fields up to `note`, joined (no `error`). Calls the
+ * core's functions one by one, not compareForward, which also solves the scallop each
+ * approximation really leaves (not written here) and is about 5 times slower; compareForward only
+ * words the warnings, on the rare rows that have one.
+ */
+export function resultFields(input: ForwardInput): string {
+  const exact = exactForward(input);
+  const maxMm = maxIntervalMm(input, input.pattern);
+  const sekine = sekineHalfInterval(input);
+  const redonnet = redonnetHalfInterval(input);
+  const bedi = bediHalfInterval(input);
+  const osculating = osculatingHalfInterval(input);
+  const cornerBall = cornerBallHalfInterval(input);
+  let note = exact.noScallop ? NO_SCALLOP_NOTE : '';
+  if (
+    beyondWall(sekine, maxMm) ||
+    beyondWall(redonnet, maxMm) ||
+    beyondWall(bedi, maxMm) ||
+    beyondWall(osculating, maxMm) ||
+    beyondWall(cornerBall, maxMm)
+  ) {
+    note = warningNotes(input, note);
+  }
+  return (
+    `${csvNumber(exact.halfIntervalMm)},${halfText(sekine)},${halfText(redonnet)},${halfText(bedi)},` +
+    `${csvNumber(exact.intervalMm)},${csvNumber(exact.halfWidthRightMm)},${csvNumber(exact.halfWidthLeftMm)},` +
+    `${csvNumber(exact.contactOffsetMm)},${exact.otherCuspHeightMm === null ? '' : csvNumber(exact.otherCuspHeightMm)},` +
+    `${halfText(osculating)},${halfText(cornerBall)},${csvText(note)}`
+  );
+}
+
+/** The warnings of every approximation, as compareForward words them, after `note`. */
+function warningNotes(input: ForwardInput, note: string): string {
+  const notes = note === '' ? [] : [note];
+  const c = compareForward(input);
+  for (const key of APPROXIMATION_KEYS) {
+    const r = c.approximations[key];
+    if (r.ok && r.warning !== null) notes.push(`${PROCEDURES[key].shortLabel}: ${r.warning}`);
+  }
+  return notes.join(' ');
+}
+
+/** Spaces and tabs around a field are dropped in the echo; a line break is kept (and quoted). */
+function trimSpaces(text: string): string {
+  return text.replace(/^[ \t]+|[ \t]+$/g, '');
+}
+
+function errorRow(echo: string, message: string): string {
+  return `${echo},${EMPTY_NUMBERS},${csvText(message)}\n`;
+}
+
+/** A field of an optional column: undefined (the default) when the column is absent or the field empty. */
+function optionalField(fields: readonly string[], index: number | undefined): string | undefined {
+  if (index === undefined) return undefined;
+  const text = fields[index] as string;
+  return text.trim() === '' ? undefined : text;
+}
+
+/** The output row of one record (with its line break). */
+export function batchRow(record: CsvRecord, layout: Layout): string {
+  const fields = record.fields;
+  let echo = '';
+  for (let j = 0; j < layout.echoed.length; j++) {
+    const c = layout.echoed[j] as { readonly index: number };
+    echo += `${j === 0 ? '' : ','}${csvText(trimSpaces(fields[c.index] ?? ''))}`;
+  }
+  if (record.error !== null) return errorRow(echo, `line ${record.line}: ${record.error}`);
+  if (fields.length !== layout.width) {
+    return errorRow(
+      echo,
+      `line ${record.line}: expected ${layout.width} values (${layout.names.join(',')}), got ${fields.length}`,
+    );
+  }
+  for (const c of layout.echoed) {
+    const text = fields[c.index] as string;
+    if (text.includes('\n') || text.includes('\r')) {
+      return errorRow(echo, `line ${record.line}: the ${c.name} field holds a line break`);
+    }
+  }
+  const { index } = layout;
+  // An empty optional field takes its default (tilt 0, one-way), as a missing column does.
+  const v = validateForward({
+    R: fields[index.R as number],
+    Rcr: fields[index.Rcr as number],
+    rho: fields[index.rho as number],
+    tilt: optionalField(fields, index.tilt),
+    pattern: optionalField(fields, index.pattern),
+    h: fields[index.h as number],
+  });
+  if (!v.ok) return errorRow(echo, v.errors.map((e) => e.message).join(' '));
+  return `${echo},${resultFields(v.value)},\n`;
+}
+
+/** Stderr and stdout of a batch run. */
+export interface BatchIo {
+  readonly stdin: Readable;
+  readonly stderr: { write(text: string): unknown };
+}
+
+/**
+ * Streams the batch from stdin to `out`; resolves to the exit code: 0 (rows written, bad rows
+ * included), 1 (stdin unreadable), 2 (no header or a wrong one). Stops reading when `out` fails.
+ */
+export async function runBatch(io: BatchIo, out: Output): Promise<number> {
+  const reader = new CsvReader();
+  const decoder = new StringDecoder('utf8');
+  let layout: Layout | null = null;
+  let headerError: string | null = null;
+  const take = (records: readonly CsvRecord[]): void => {
+    for (const record of records) {
+      if (record.blank || headerError !== null) continue;
+      if (layout === null) {
+        const header = parseHeader(record);
+        if (header.ok) {
+          layout = header.layout;
+          out.write(outputHeader(layout));
+        } else headerError = header.error;
+        continue;
+      }
+      out.write(batchRow(record, layout));
+    }
+  };
+  try {
+    for await (const chunk of io.stdin) {
+      take(reader.push(typeof chunk === 'string' ? chunk : decoder.write(chunk as Buffer)));
+      if (headerError !== null) break;
+      if (out.pending >= FLUSH_CHARS) await out.flush();
+      if (out.error !== null) break;
+    }
+    if (headerError === null && out.error === null) take([...reader.push(decoder.end()), ...reader.end()]);
+  } catch (e) {
+    await out.flush();
+    io.stderr.write(`error: cannot read standard input: ${describeSystemError(e)}\n`);
+    return 1;
+  }
+  if (headerError !== null) {
+    io.stderr.write(`error: ${headerError}\n`);
+    return 2;
+  }
+  if (layout === null) {
+    io.stderr.write('error: no CSV on stdin: expected a header line R,Rcr,rho,h (optionally tilt, pattern)\n');
+    return 2;
+  }
+  await out.flush();
+  return 0;
+}

@@ -1,0 +1,751 @@
+/**
+ * Exact step-over on cylinders (shared/notes/posture-and-surfaces.md, "Curved surfaces"): convex
+ * (Rs > 0, axis Rs below the contact) or concave (Rs < 0, axis |Rs| above), with the axis along the
+ * feed or across it, any posture, one-way or zigzag. Scallop heights are measured radially. Lengths
+ * mm, angles radians. Frame: the contact of the pass at the origin, X feed, Z the surface normal.
+ *
+ * Axis along the feed. A pass translates along X, so it leaves the plane profile of posture.ts; the
+ * next pass is that profile turned about the axis by phi = L / |Rs|. In polar coordinates about the
+ * axis (angle measured from the contact), a flank at radius r = |Rs| + s h (s = +1 convex, -1
+ * concave) lies at a polar angle A(h); the cusp of a right and a left flank sits where
+ * A_R + A_L = phi (one-way) and the zigzag cusps where A = phi / 2. The flank point at that radius is
+ * the section whose profile point (Y, H) satisfies
+ *
+ *   G(delta) = Y^2 + (H - h)(H + h + 2 Rs) = 0            (|(Y, H) - C| = r, without cancellation)
+ *
+ * and the angle is taken, as on the plane, as a maximum over sections: the ring point's polar angle
+ * plus the half-angle its ball subtends at radius r (law of cosines in half-angle form), which is
+ * second-order insensitive to the root's error.
+ *
+ * Axis across the feed. A pass turns the tool about the axis (along Y); revolving a ball of radius
+ * Rcr centred at e gives, in the meridian plane (Y, rho = distance from the axis), the circle of
+ * radius Rcr around (e_y, rho(e)). So the revolved profile is the offset by Rcr of the bottom disk's
+ * image: its lower boundary B(y) = min of rho over the disk's chord at y (convex; closed form: the
+ * foot of the axis on the chord, or a chord end) or upper boundary U(y) = max (concave: a chord end).
+ * A flank's width at radius r is the maximum over y of y + sqrt(Rcr^2 - (B(y) - r)^2), found by a scan
+ * and golden-section search to the last bits. The next pass is that profile translated by L.
+ *
+ * The shank (the cylinder of radius R above the corner) is checked exactly for axis = feed (radially,
+ * where its silhouette leaves the profile); for axis = cross the plane's shank heights are used.
+ *
+ * Gouging (concave). The tool end must stay inside the cylinder except at the contact: every ring
+ * point e (relative to the contact, seen along the feed for axis = feed, along the axis for
+ * axis = cross) needs |Rs| >= (E^2 + E_z^2 - Rcr^2) / (2 (E_z - Rcr)), E its horizontal offset. The
+ * smallest admissible radius is the maximum of that over the ring.
+ */
+import { type Placement, placeTool } from './placement';
+import { type Flank, type FlankLimits, flankLimits, flankSign, type PostureShape } from './posture';
+import type { ToolInput } from './validate';
+
+/** Which way the cylinder's axis runs: along the feed (passes along it) or across (passes around it). */
+export type SurfaceAxis = 'feed' | 'cross';
+
+/** A cylinder: signed radius (convex > 0, concave < 0) and axis orientation. */
+export interface CylinderSurface {
+  readonly kind: 'cylinder';
+  readonly radiusMm: number;
+  readonly axis: SurfaceAxis;
+}
+
+/** The design surface: a plane, or a cylinder. */
+export type Surface = { readonly kind: 'plane' } | CylinderSurface;
+
+export const PLANE: Surface = { kind: 'plane' };
+
+// ---------------------------------------------------------------------------------------------
+// Axis along the feed
+
+/** The profile point of section delta on the flank `sign`: width Y and height H above the contact. */
+function profilePoint(s: PostureShape, sign: number, delta: number): { y: number; h: number; ey: number; ez: number } {
+  const sinT0 = sign * s.sinT0;
+  const sinPhi = sign * s.sinPhi;
+  const sinH = Math.sin(delta / 2);
+  const cosH = Math.cos(delta / 2);
+  const sinD = 2 * sinH * cosH;
+  const cosD = (cosH - sinH) * (cosH + sinH);
+  const sinT = sinT0 * cosD + s.cosT0 * sinD;
+  const cosT = s.cosT0 * cosD - sinT0 * sinD;
+  const sinM = sinT0 * cosH + s.cosT0 * sinH;
+  const cosM = s.cosT0 * cosH - sinT0 * sinH;
+  const dz = 2 * s.d0 * sinH * sinH;
+  const dy = 2 * sinH * (s.a * s.cosPhi * cosM + s.b * sinPhi * sinM);
+  const nSin = s.d0 * sinD;
+  const nCos = s.a * s.cosPhi * cosT + s.b * sinPhi * sinT;
+  const n = Math.sqrt(nSin * nSin + nCos * nCos);
+  // Profile normal (sin theta, cos theta); where a corner collapses (b = 0, n = 0) take the ring point.
+  const st = n > 0 ? nSin / n : 0;
+  const ct = n > 0 ? nCos / n : 1;
+  const corner = (s.rcr * (st * st)) / (1 + ct);
+  return { y: dy + s.rcr * st, h: dz + corner, ey: dy, ez: dz + s.rcr };
+}
+
+/**
+ * Polar angle of a flank point at radial height h on a cylinder with the axis along the feed: a
+ * bracketed Newton on G(delta) = Y^2 + (H - h)(H + h + 2 Rs), with G' = 2 K (Y cos theta +
+ * (H + Rs) sin theta), K = N + Rcr a b / N^2 (N the norm of the ellipse normal), started from the
+ * plane's osculating estimate; then the angle as a maximum over sections (feedAngleOfSection).
+ * @param top an offset past the root, where G has changed sign.
+ */
+function feedAngleAtHeight(s: PostureShape, flank: Flank, rs: number, h: number, top: number): number {
+  const sign = flankSign(flank);
+  const sinT0 = sign * s.sinT0;
+  const sinPhi = sign * s.sinPhi;
+  const rcr = s.rcr;
+  const ab = s.a * s.b;
+  // G(0) = -h (h + 2 Rs): negative on a convex cylinder, positive on a concave one (it falls).
+  const falling = rs < 0;
+  let lo = 0;
+  let hi = top;
+  let delta = 0;
+  if (hi > 0) {
+    const reff = rcr + (s.d0 > 0 ? (ab * ab) / (s.d0 * s.d0 * s.d0) : 0);
+    delta = s.d0 > 0 ? (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0) : 0.5 * hi;
+    if (!(delta > lo && delta < hi)) delta = 0.5 * (lo + hi);
+    for (let i = 0; i < 100; i++) {
+      const sinH = Math.sin(delta / 2);
+      const cosH = Math.cos(delta / 2);
+      const sinD = 2 * sinH * cosH;
+      const cosD = (cosH - sinH) * (cosH + sinH);
+      const sinT = sinT0 * cosD + s.cosT0 * sinD;
+      const cosT = s.cosT0 * cosD - sinT0 * sinD;
+      const sinM = sinT0 * cosH + s.cosT0 * sinH;
+      const cosM = s.cosT0 * cosH - sinT0 * sinH;
+      const dz = 2 * s.d0 * sinH * sinH;
+      const dy = 2 * sinH * (s.a * s.cosPhi * cosM + s.b * sinPhi * sinM);
+      const nSin = s.d0 * sinD;
+      const nCos = s.a * s.cosPhi * cosT + s.b * sinPhi * sinT;
+      const n = Math.sqrt(nSin * nSin + nCos * nCos);
+      const st = n > 0 ? nSin / n : 0;
+      const ct = n > 0 ? nCos / n : 1;
+      const Y = dy + rcr * st;
+      const H = dz + (rcr * st * st) / (1 + ct);
+      const g = Y * Y + (H - h) * (H + h + 2 * rs);
+      if (g === 0) break;
+      const before = falling ? g > 0 : g < 0;
+      if (before) lo = delta;
+      else hi = delta;
+      const k = n > 0 ? n + (rcr * ab) / (n * n) : Number.POSITIVE_INFINITY;
+      const slope = 2 * k * (Y * ct + (H + rs) * st);
+      let next = Number.isFinite(slope) && slope !== 0 ? delta - g / slope : Number.NaN;
+      if (Math.abs(next - delta) <= 1e-12 * delta) {
+        delta = Math.min(Math.max(next, lo), hi);
+        break;
+      }
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      delta = next;
+      if (hi - lo <= 4e-16 * hi) break;
+    }
+  }
+  return feedAngleOfSection(s, sign, delta, rs, h);
+}
+
+/**
+ * The polar angle reached by the ball of section delta at radius r = |Rs| + s h: the ring point's
+ * angle plus the half-angle its ball subtends (0 when it does not reach r).
+ */
+function feedAngleOfSection(s: PostureShape, sign: number, delta: number, rs: number, h: number): number {
+  const p = profilePoint(s, sign, delta);
+  const side = rs > 0 ? 1 : -1;
+  // Ring point relative to the axis C = (0, -Rs): (ey, ez + Rs); polar angle from C's direction to the contact.
+  const qz = p.ez + rs;
+  const alpha = Math.atan2(p.ey, side * qz);
+  const de = Math.sqrt(p.ey * p.ey + qz * qz);
+  const r = Math.abs(rs + h);
+  // d_e^2 - r^2 = ey^2 + (ez - h)(ez + h + 2 Rs), without cancellation.
+  const diff = (p.ey * p.ey + (p.ez - h) * (p.ez + h + 2 * rs)) / (de + r);
+  const rcr = s.rcr;
+  if (!(rcr > 0) || !(Math.abs(diff) < rcr)) return alpha;
+  const half = Math.sqrt(((rcr - diff) * (rcr + diff)) / (4 * de * r));
+  return alpha + 2 * Math.asin(Math.min(1, half));
+}
+
+/** Height (radial) of the flank point at polar angle beta (the inverse), by the same root approach. */
+function feedHeightAtAngle(s: PostureShape, flank: Flank, rs: number, beta: number, deltaTop: number): number {
+  const sign = flankSign(flank);
+  const side = rs > 0 ? 1 : -1;
+  const cb = Math.cos(beta);
+  const sb = Math.sin(beta);
+  // J = Y cos(beta) - (|Rs| + s H) sin(beta): the profile point's angle against beta.
+  const J = (d: number) => {
+    const p = profilePoint(s, sign, d);
+    return p.y * cb - (Math.abs(rs) + side * p.h) * sb;
+  };
+  let lo = 0;
+  let hi = deltaTop;
+  let jLo = J(lo);
+  let jHi = J(hi);
+  for (let i = 0; i < 200 && hi - lo > 1e-16 * Math.max(hi, 1e-300); i++) {
+    let m = lo - (jLo * (hi - lo)) / (jHi - jLo);
+    if (!(m > lo && m < hi) || i % 4 === 3) m = 0.5 * (lo + hi);
+    const jm = J(m);
+    if (jm === 0) {
+      lo = m;
+      hi = m;
+      break;
+    }
+    if (jm > 0) {
+      hi = m;
+      jHi = jm;
+      jLo /= 2;
+    } else {
+      lo = m;
+      jLo = jm;
+      jHi /= 2;
+    }
+  }
+  // The radius along the ray at beta through the section's ball: the entry (convex) or exit
+  // (concave) distance, second-order insensitive to the section's error.
+  const p = profilePoint(s, sign, 0.5 * (lo + hi));
+  const qy = p.ey;
+  const qz = p.ez + rs;
+  // Ray direction from C: (sin beta, side cos beta).
+  const te = qy * sb + side * qz * cb;
+  const perp = qy * side * cb - qz * sb;
+  const rcr = s.rcr;
+  const reach = Math.sqrt(Math.max(0, rcr * rcr - perp * perp));
+  const r = side > 0 ? te - reach : te + reach;
+  return side * (r - Math.abs(rs));
+}
+
+/** Ring-angle offset where the plane flank's normal turns horizontal (its widest point). */
+function planeTop(s: PostureShape, sign: number): number {
+  if (s.flatOnPlane) return Math.PI / 2;
+  if (s.a === 0) return 0;
+  return Math.atan2(s.a * s.b, (s.a * s.a - s.b * s.b) * sign * s.sinPhi * s.cosPhi);
+}
+
+/** Where a flank's radial height stops growing on a concave cylinder: its normal passes through the axis. */
+function concaveTop(s: PostureShape, sign: number, rs: number, top: number): number {
+  // F = radial distance to the axis along the flank: it falls from the contact while the normal
+  // points away from the axis. Golden-section search for its minimum on [0, top].
+  const dist2 = (d: number) => {
+    const p = profilePoint(s, sign, d);
+    return p.y * p.y + (p.h + rs) * (p.h + rs);
+  };
+  let a = 0;
+  let b = top;
+  const g = (Math.sqrt(5) - 1) / 2;
+  let c = b - g * (b - a);
+  let e = a + g * (b - a);
+  let fc = dist2(c);
+  let fe = dist2(e);
+  for (let i = 0; i < 200 && b - a > 1e-15 * Math.max(b, 1e-300); i++) {
+    if (fc < fe) {
+      b = e;
+      e = c;
+      fe = fc;
+      c = b - g * (b - a);
+      fc = dist2(c);
+    } else {
+      a = c;
+      c = e;
+      fc = fe;
+      e = a + g * (b - a);
+      fe = dist2(e);
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+/** Radial height of section delta's profile point, signed towards the material (mm). */
+function radialHeight(s: PostureShape, sign: number, delta: number, rs: number): number {
+  const p = profilePoint(s, sign, delta);
+  const d = Math.sqrt(p.y * p.y + (p.h + rs) * (p.h + rs));
+  // d - |Rs| for convex, |Rs| - d for concave, from d^2 - Rs^2 = Y^2 + H (H + 2 Rs).
+  const num = p.y * p.y + p.h * (p.h + 2 * rs);
+  return rs > 0 ? num / (d + rs) : -num / (d - rs);
+}
+
+/** Radial limits of one flank on a cylinder with the axis along the feed (mm): wall and shank. */
+function feedFlankLimit(
+  s: PostureShape,
+  sign: number,
+  rs: number,
+): { topMm: number; shankMm: number | null; deltaTop: number } {
+  if (s.a === 0) {
+    // A ball end: the ring is one point and the flank is its circle (radius R), by normal angle
+    // theta: (R sin theta, R (1 - cos theta)); its top at theta = pi/2, the shank at pi/2 - |phi|.
+    const at = (theta: number) => {
+      const y = s.rcr * Math.sin(theta);
+      const half = Math.sin(theta / 2);
+      const h = 2 * s.rcr * half * half;
+      const d = Math.sqrt(y * y + (h + rs) * (h + rs));
+      const num = y * y + h * (h + 2 * rs);
+      return rs > 0 ? num / (d + rs) : -num / (d - rs);
+    };
+    const shankMm = sign * s.sinPhi > 0 ? at(Math.PI / 2 - Math.abs(s.phi)) : null;
+    return { topMm: at(Math.PI / 2), shankMm, deltaTop: 0 };
+  }
+  let top = planeTop(s, sign);
+  if (rs < 0) top = Math.min(top, concaveTop(s, sign, rs, top));
+  const topMm = radialHeight(s, sign, top, rs);
+  // The shank: it leaves the profile at the end of the ellipse's long axis (t = pi/2), on the side
+  // the tool leans to (posture.ts); radially, its height is that point's.
+  let shankMm: number | null = null;
+  if (sign * s.sinPhi > 0 && s.a > 0) {
+    const tShank = Math.PI / 2 - Math.atan2(sign * s.sinT0, s.cosT0);
+    if (tShank >= 0 && tShank < top) shankMm = radialHeight(s, sign, tShank, rs);
+  }
+  return { topMm, shankMm, deltaTop: top };
+}
+
+function limitsOf(
+  topRightMm: number,
+  topLeftMm: number,
+  shankRightMm: number | null,
+  shankLeftMm: number | null,
+): FlankLimits {
+  const candidates: Array<[number, FlankLimits['limitBy']]> = [];
+  if (shankRightMm !== null) candidates.push([shankRightMm, 'shank-right']);
+  if (shankLeftMm !== null) candidates.push([shankLeftMm, 'shank-left']);
+  candidates.push([topRightMm, 'right-flank'], [topLeftMm, 'left-flank']);
+  let best = candidates[0] as [number, FlankLimits['limitBy']];
+  for (const c of candidates) if (c[0] < best[0]) best = c;
+  return { topRightMm, topLeftMm, shankRightMm, shankLeftMm, limitMm: best[0], limitBy: best[1] };
+}
+
+// ---------------------------------------------------------------------------------------------
+// Axis across the feed
+
+/**
+ * The bottom disk's chords in meridian coordinates: on the chord at y, the point nearest the axis
+ * (convex) or farthest from it (concave), and its radial height above the design surface.
+ */
+interface Chords {
+  readonly yLo: number;
+  readonly yHi: number;
+  /**
+   * Signed radial height (mm) of the chord's chosen point: `rho - Rs` convex, `|Rs| - rho` concave,
+   * computed as `(x^2 + z (z + 2 Rs)) / (rho + |Rs|)` without cancellation (x, z relative to the
+   * contact), so that scallops of a nanometre on a cylinder of a kilometre keep their digits.
+   */
+  height(y: number): number;
+}
+
+function crossChords(p: Placement, rs: number): Chords {
+  const rb = p.ringRadiusMm;
+  const { centre, v1, v2 } = p;
+  const gy1 = v1[1];
+  const gy2 = v2[1];
+  const G = Math.sqrt(gy1 * gy1 + gy2 * gy2);
+  const concave = rs < 0;
+  const side = concave ? -1 : 1;
+  const abs = Math.abs(rs);
+  // A disk point: centre + u v1 + w v2 (u^2 + w^2 <= Rb^2), relative to the contact; the axis runs
+  // along Y through (x = 0, z = -Rs). Its squared distance from the axis, and its radial height.
+  const rho2 = (x: number, z: number) => x * x + (z + rs) * (z + rs);
+  const heightOf = (x: number, z: number) => (side * (x * x + z * (z + 2 * rs))) / (Math.sqrt(rho2(x, z)) + abs);
+  const at = (u: number, w: number, out: number[]) => {
+    out[0] = centre[0] + u * v1[0] + w * v2[0];
+    out[1] = centre[2] + u * v1[2] + w * v2[2];
+  };
+  const pa = [0, 0];
+  const pb = [0, 0];
+  const pf = [0, 0];
+  if (!(rb > 0) || !(G > 0)) {
+    // A ball end (one point), or a disk seen edge-on along Y (all at one y): a single chord.
+    const y = centre[1];
+    const pts: Array<[number, number]> =
+      rb > 0
+        ? [
+            [rb, 0],
+            [-rb, 0],
+            [0, rb],
+            [0, -rb],
+          ]
+        : [[0, 0]];
+    const heights = pts.map(([u, w]) => {
+      at(u, w, pa);
+      return { r2: rho2(pa[0] as number, pa[1] as number), h: heightOf(pa[0] as number, pa[1] as number) };
+    });
+    heights.sort((m, n) => m.r2 - n.r2);
+    const chosen = (concave ? heights[heights.length - 1] : heights[0]) as { h: number };
+    return { yLo: y, yHi: y, height: () => chosen.h };
+  }
+  return {
+    yLo: centre[1] - rb * G,
+    yHi: centre[1] + rb * G,
+    height(y) {
+      const c = Math.min(rb * G, Math.max(-rb * G, y - centre[1]));
+      // Chord: (u, w) = c g / G^2 + tau g_perp / G, |tau| <= sqrt(Rb^2 - c^2 / G^2).
+      const u0 = (c * gy1) / (G * G);
+      const w0 = (c * gy2) / (G * G);
+      const du = -gy2 / G;
+      const dw = gy1 / G;
+      const tMax = Math.sqrt(Math.max(0, rb * rb - (c * c) / (G * G)));
+      at(u0 + tMax * du, w0 + tMax * dw, pa);
+      at(u0 - tMax * du, w0 - tMax * dw, pb);
+      const ra = rho2(pa[0] as number, pa[1] as number);
+      const rbb = rho2(pb[0] as number, pb[1] as number);
+      if (concave)
+        return ra >= rbb ? heightOf(pa[0] as number, pa[1] as number) : heightOf(pb[0] as number, pb[1] as number);
+      // Convex: the distance along a straight chord is convex; its minimum is at the foot of the
+      // axis on the chord's line (clipped to the chord).
+      at(u0, w0, pf);
+      const x0 = pf[0] as number;
+      const z0 = (pf[1] as number) + rs;
+      const dx = du * v1[0] + dw * v2[0];
+      const dz = du * v1[2] + dw * v2[2];
+      const den = dx * dx + dz * dz;
+      const tau = den > 0 ? Math.min(tMax, Math.max(-tMax, -(x0 * dx + z0 * dz) / den)) : 0;
+      at(u0 + tau * du, w0 + tau * dw, pf);
+      const rf = rho2(pf[0] as number, pf[1] as number);
+      const q = rf <= ra && rf <= rbb ? pf : ra <= rbb ? pa : pb;
+      return heightOf(q[0] as number, q[1] as number);
+    },
+  };
+}
+
+/**
+ * The maximum of f on [lo, hi]: a scan of `samples` points brackets the best one, then Brent's
+ * method (parabolic steps, golden-section ones where they do not help, so kinks are safe) to
+ * `tol` in the argument. Returns the largest value seen.
+ */
+function maximise(
+  f: (x: number) => number,
+  lo: number,
+  hi: number,
+  samples: number,
+  tol: number,
+  must?: number,
+): number {
+  let best = 0;
+  let fBest = Number.NEGATIVE_INFINITY;
+  for (let i = 0; i <= samples; i++) {
+    const v = f(lo + ((hi - lo) * i) / samples);
+    if (v > fBest) {
+      fBest = v;
+      best = i;
+    }
+  }
+  let a = lo + ((hi - lo) * Math.max(0, best - 1)) / samples;
+  let b = lo + ((hi - lo) * Math.min(samples, best + 1)) / samples;
+  let x = lo + ((hi - lo) * best) / samples;
+  // A point known to count (the contact's chord, feasible at any height): when it beats the scan,
+  // search around it, between its neighbouring samples.
+  if (must !== undefined && must >= lo && must <= hi) {
+    const fm = f(must);
+    if (fm > fBest) {
+      fBest = fm;
+      x = must;
+      const k = Math.floor(((must - lo) / (hi - lo)) * samples);
+      a = lo + ((hi - lo) * Math.max(0, k)) / samples;
+      b = lo + ((hi - lo) * Math.min(samples, k + 1)) / samples;
+    }
+  }
+  const golden = 0.381966011250105;
+  let w = x;
+  let v = x;
+  let fx = fBest;
+  let fw = fx;
+  let fv = fx;
+  let d = 0;
+  let e = 0;
+  for (let i = 0; i < 200; i++) {
+    const m = 0.5 * (a + b);
+    if (Math.abs(x - m) <= 2 * tol - 0.5 * (b - a)) break;
+    let u: number;
+    let parabolic = false;
+    if (Math.abs(e) > tol) {
+      // Parabola through x, w, v (maximising: the same algebra on -f).
+      const r = (x - w) * (fv - fx);
+      let q = (x - v) * (fw - fx);
+      let pp = (x - v) * q - (x - w) * r;
+      q = 2 * (q - r);
+      if (q > 0) pp = -pp;
+      q = Math.abs(q);
+      if (Math.abs(pp) < Math.abs(0.5 * q * e) && pp > q * (a - x) && pp < q * (b - x)) {
+        e = d;
+        d = pp / q;
+        parabolic = true;
+      }
+    }
+    if (!parabolic) {
+      e = x < m ? b - x : a - x;
+      d = golden * e;
+    }
+    u = Math.abs(d) >= tol ? x + d : x + (d > 0 ? tol : -tol);
+    const fu = f(u);
+    if (fu >= fx) {
+      if (u < x) b = x;
+      else a = x;
+      v = w;
+      fv = fw;
+      w = x;
+      fw = fx;
+      x = u;
+      fx = fu;
+    } else {
+      if (u < x) a = u;
+      else b = u;
+      if (fu >= fw || w === x) {
+        v = w;
+        fv = fw;
+        w = u;
+        fw = fu;
+      } else if (fu >= fv || v === x || v === w) {
+        v = u;
+        fv = fu;
+      }
+    }
+  }
+  return Math.max(fBest, fx);
+}
+
+/**
+ * Width of a flank of the revolved profile at radial height h (axis across the feed): the largest
+ * distance out from the contact (along Y) at which some chord's circle reaches radius |Rs| + s h.
+ */
+function crossWidthAtHeight(ch: Chords, sign: number, rcr: number, h: number, contactY: number): number {
+  // Reach of the chord at y: its circle (radius Rcr around its point, radial height d) at height h.
+  const reach = (y: number) => {
+    const gap = ch.height(y) - h;
+    if (gap <= 0) return rcr;
+    return gap <= rcr ? Math.sqrt((rcr - gap) * (rcr + gap)) : Number.NEGATIVE_INFINITY;
+  };
+  const f = (y: number) => sign * (y - contactY) + reach(y);
+  if (!(ch.yHi > ch.yLo)) return f(ch.yLo);
+  // The maximum is flat, so 1e-13 of the disk's span in y leaves its value exact to the last bits
+  // (a kink, where the nearest point of a chord moves to its end, is handled by Brent's golden steps).
+  return maximise(f, ch.yLo, ch.yHi, 16, 1e-13 * (ch.yHi - ch.yLo), contactY);
+}
+
+/** Radial height of the revolved profile at a distance w out from the contact (the inverse). */
+function crossHeightAtWidth(ch: Chords, sign: number, rcr: number, w: number, contactY: number): number {
+  const Y = contactY + sign * w;
+  // The profile's radial height at Y: the lowest, over chords within Rcr of Y, of the chord point's
+  // height less the circle's vertical reach, d(y) - sqrt(Rcr^2 - (Y - y)^2). Scan then Brent.
+  const lo = Math.max(ch.yLo, Y - rcr);
+  const hi = Math.min(ch.yHi, Y + rcr);
+  const f = (y: number) => {
+    const d = Y - y;
+    const v = Math.sqrt(Math.max(0, (rcr - d) * (rcr + d)));
+    return v - ch.height(y);
+  };
+  if (!(hi >= lo)) return Number.POSITIVE_INFINITY;
+  const top = hi > lo ? maximise(f, lo, hi, 16, 1e-13 * Math.max(hi - lo, rcr)) : f(lo);
+  return -top;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Public API
+
+/** A cylinder prepared for one tool and posture. */
+export interface CylinderSolver {
+  readonly surface: CylinderSurface;
+  /**
+   * Radial height limits: each flank's wall, and the shank where it cuts (exact for axis = feed;
+   * for axis = cross the plane's shank heights stand in, see the module comment), mm.
+   */
+  limits(): FlankLimits;
+  /**
+   * How far a flank reaches at radial height h: the polar angle about the axis (axis = feed,
+   * radians) or the distance along the axis from the contact (axis = cross, mm).
+   */
+  reach(flank: Flank, heightMm: number): number;
+  /** The inverse: radial height of a flank at that reach. */
+  heightAt(flank: Flank, reach: number): number;
+  /** Step-over (arc length on the surface for axis = feed, along the axis for cross) from reaches. */
+  intervalFromReach(reachMm: number): number;
+  /** The reach a step-over corresponds to. */
+  reachFromInterval(intervalMm: number): number;
+}
+
+/** Axis along the feed: flank angles about the axis (classes: no closures built per call). */
+class FeedSolver implements CylinderSolver {
+  private cached: FlankLimits | null = null;
+  private readonly tops: [number | null, number | null] = [null, null];
+  private readonly s: PostureShape;
+  private readonly rs: number;
+
+  constructor(
+    readonly surface: CylinderSurface,
+    p: Placement,
+  ) {
+    this.s = p.shape;
+    this.rs = surface.radiusMm;
+  }
+
+  limits(): FlankLimits {
+    if (this.cached === null) {
+      const right = feedFlankLimit(this.s, 1, this.rs);
+      const left = feedFlankLimit(this.s, -1, this.rs);
+      this.cached = limitsOf(right.topMm, left.topMm, right.shankMm, left.shankMm);
+    }
+    return this.cached;
+  }
+
+  /** The concave radial top of a flank (a search), kept once found. */
+  private concaveTop(sign: number, plane: number): number {
+    const index = sign > 0 ? 0 : 1;
+    const known = this.tops[index];
+    if (known !== null) return known;
+    const top = concaveTop(this.s, sign, this.rs, plane);
+    this.tops[index] = top;
+    return top;
+  }
+
+  /**
+   * An offset past the root for height h: the plane flank's widest point, where G has changed sign
+   * on a convex cylinder and on a concave one that is not tight; else the concave radial top.
+   */
+  private bracket(sign: number, h: number): number {
+    const s = this.s;
+    if (s.a === 0) return 0;
+    const plane = planeTop(s, sign);
+    if (this.rs > 0) return plane;
+    const at = profilePoint(s, sign, plane);
+    if (at.y * at.y + (at.h - h) * (at.h + h + 2 * this.rs) < 0) return plane;
+    return this.concaveTop(sign, plane);
+  }
+
+  reach(flank: Flank, h: number): number {
+    return feedAngleAtHeight(this.s, flank, this.rs, h, this.bracket(flankSign(flank), h));
+  }
+
+  heightAt(flank: Flank, beta: number): number {
+    const sign = flankSign(flank);
+    const s = this.s;
+    const plane = s.a === 0 ? 0 : planeTop(s, sign);
+    const top = this.rs < 0 && s.a > 0 ? this.concaveTop(sign, plane) : plane;
+    return feedHeightAtAngle(s, flank, this.rs, beta, top);
+  }
+
+  intervalFromReach(angle: number): number {
+    return Math.abs(this.rs) * angle;
+  }
+
+  reachFromInterval(L: number): number {
+    return L / Math.abs(this.rs);
+  }
+}
+
+/** Axis across the feed: widths along the axis of the revolved profile. */
+class CrossSolver implements CylinderSolver {
+  private cached: FlankLimits | null = null;
+  private readonly ch: Chords;
+
+  constructor(
+    readonly surface: CylinderSurface,
+    private readonly p: Placement,
+  ) {
+    this.ch = crossChords(p, surface.radiusMm);
+  }
+
+  limits(): FlankLimits {
+    if (this.cached === null) {
+      // The widest point of each flank: the chord at the end of the disk's Y range (one ring
+      // point). The shank across the axis: the plane's heights stand in (not modelled revolved).
+      const top = (y: number) => this.ch.height(y);
+      const plane = flankLimits(this.p.shape);
+      this.cached = limitsOf(top(this.ch.yHi), top(this.ch.yLo), plane.shankRightMm, plane.shankLeftMm);
+    }
+    return this.cached;
+  }
+
+  reach(flank: Flank, h: number): number {
+    return crossWidthAtHeight(this.ch, flankSign(flank), this.p.cornerRadiusMm, h, 0);
+  }
+
+  heightAt(flank: Flank, w: number): number {
+    return crossHeightAtWidth(this.ch, flankSign(flank), this.p.cornerRadiusMm, w, 0);
+  }
+
+  intervalFromReach(w: number): number {
+    return w;
+  }
+
+  reachFromInterval(L: number): number {
+    return L;
+  }
+}
+
+/** Prepares the cylinder solver for a tool and posture. @param surface |Rs| > 0. */
+export function cylinderSolver(tool: ToolInput, surface: CylinderSurface): CylinderSolver {
+  const p = placeTool(tool);
+  return surface.axis === 'feed' ? new FeedSolver(surface, p) : new CrossSolver(surface, p);
+}
+
+/**
+ * The smallest concave radius |Rs| (mm) the tool end fits in without gouging: the maximum over the
+ * ring of `(E^2 + E_z^2 - Rcr^2) / (2 (E_z - Rcr))`, written `E^2 / (2 rise) + (rise + 2 Rcr) / 2`
+ * with `rise = E_z - Rcr` the ring point's height above the contact's ring point (Eq. 1
+ * generalised, `2 D0 sin^2(delta/2)`) and E its horizontal offset (the chord: seen along the feed
+ * for axis = feed, along the axis for axis = cross), so that the contact's neighbourhood keeps its
+ * digits: there the value tends to the curvature radius of the view. Infinity when the tool gouges
+ * every concave cylinder (a ring point other than the contact at the contact's height: a flat
+ * bottom without lead across the axis). Sampled over the ring, then refined by golden-section search.
+ */
+export function minConcaveRadiusMm(tool: ToolInput, axis: SurfaceAxis): number {
+  const p = placeTool(tool);
+  const s = p.shape;
+  const rb = p.ringRadiusMm;
+  const rcr = p.cornerRadiusMm;
+  if (!(rb > 0)) return rcr; // a ball end fits any trough of at least its radius
+  const t0 = p.contactRingAngleRad;
+  const k = axis === 'feed' ? 1 : 0;
+  const ratio = (delta: number): number => {
+    const half = Math.sin(delta / 2);
+    const rise = 2 * s.d0 * half * half;
+    const m = t0 + delta / 2;
+    // Chord of the ring from the contact's ring point: 2 sin(delta/2) (cos m v1 - sin m v2), times Rb.
+    const e = 2 * half * rb * (Math.cos(m) * p.v1[k] - Math.sin(m) * p.v2[k]);
+    if (!(rise > 0)) return e === 0 ? 0 : Number.POSITIVE_INFINITY;
+    return (e * e) / (2 * rise) + (rise + 2 * rcr) / 2;
+  };
+  if (!(s.d0 > 0)) return Number.POSITIVE_INFINITY;
+  const n = 720;
+  let best = 1;
+  let value = 0;
+  for (let i = 1; i < n; i++) {
+    const v = ratio((2 * Math.PI * i) / n);
+    if (v > value) {
+      value = v;
+      best = i;
+    }
+  }
+  if (!Number.isFinite(value)) return value;
+  let a = (2 * Math.PI * (best - 1)) / n;
+  let b = (2 * Math.PI * (best + 1)) / n;
+  const g = (Math.sqrt(5) - 1) / 2;
+  for (let i = 0; i < 100; i++) {
+    const c = b - g * (b - a);
+    const e = a + g * (b - a);
+    if (ratio(c) > ratio(e)) b = e;
+    else a = c;
+  }
+  // Near the contact the ratio tends to the local curvature radius: include that limit.
+  return Math.max(value, ratio(0.5 * (a + b)), ratio(1e-7), ratio(2 * Math.PI - 1e-7));
+}
+
+/**
+ * The profile one pass leaves on a cylinder, in the coordinates a cross-section view draws (mm):
+ * along the feed, the plane profile of geometry.ts (y, z from the contact), which a view turns about
+ * the axis at (0, -Rs) for the next pass; across the feed, the revolved profile in the meridian
+ * plane, (position along the axis from the contact, radial height above the surface), from one
+ * flank's widest point to the other's.
+ * @param samplesPerHalf points per flank (>= 8).
+ */
+export function revolvedProfile(tool: ToolInput, surface: CylinderSurface, samplesPerHalf = 96): Float64Array {
+  const n = Math.max(8, Math.round(samplesPerHalf));
+  const c = cylinderSolver(tool, surface);
+  const lim = c.limits();
+  const out: number[] = [];
+  const flankPoints = (flank: Flank) => {
+    const wTop = c.reach(flank, flank === 'right' ? lim.topRightMm : lim.topLeftMm);
+    const pts: Array<[number, number]> = [];
+    for (let i = 0; i <= n; i++) {
+      // Denser near the contact, where scallops form.
+      const u = i / n;
+      const w = wTop * u * u;
+      pts.push([w, Math.max(0, c.heightAt(flank, w))]);
+    }
+    return pts;
+  };
+  const left = flankPoints('left');
+  const right = flankPoints('right');
+  for (let i = left.length - 1; i >= 1; i--)
+    out.push(-(left[i] as [number, number])[0], (left[i] as [number, number])[1]);
+  for (const [w, h] of right) out.push(w, h);
+  return Float64Array.from(out);
+}

@@ -1,0 +1,81 @@
+/** Helpers of the command-line tests: run the CLI as a process, seeded random numbers. */
+import { spawn } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+
+export const BIN = fileURLToPath(new URL('../../src/cli/bin.mjs', import.meta.url));
+
+export interface RunResult {
+  readonly code: number | null;
+  readonly stdout: string;
+  readonly stderr: string;
+}
+
+/** Runs the command line as a separate process, as a user would, with `stdin` as its input. */
+export function run(args: readonly string[], stdin = ''): Promise<RunResult> {
+  return new Promise((resolve, reject) => {
+    const child = spawn(process.execPath, [BIN, ...args], { stdio: ['pipe', 'pipe', 'pipe'] });
+    let stdout = '';
+    let stderr = '';
+    child.stdout.setEncoding('utf8').on('data', (d: string) => {
+      stdout += d;
+    });
+    child.stderr.setEncoding('utf8').on('data', (d: string) => {
+      stderr += d;
+    });
+    child.on('error', reject);
+    child.on('close', (code) => resolve({ code, stdout, stderr }));
+    child.stdin.on('error', () => {}); // the CLI may stop reading early (a usage error)
+    child.stdin.end(stdin);
+  });
+}
+
+/** A seeded generator of uniform numbers in [0, 1) (mulberry32): the same seed, the same cases. */
+export function random(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+/** One item of a list, at random. */
+export function pick<T>(rand: () => number, items: readonly T[]): T {
+  return items[Math.floor(rand() * items.length)] as T;
+}
+
+/** A number log-uniform between lo and hi (both > 0). */
+export function logUniform(rand: () => number, lo: number, hi: number): number {
+  return lo * (hi / lo) ** rand();
+}
+
+/** Raw values of one case as the user types them (text). */
+export interface RawCase {
+  readonly R: string;
+  readonly Rcr: string;
+  readonly rho: string;
+  readonly tilt: string;
+  readonly pattern: string;
+  readonly h: string;
+}
+
+/**
+ * A tool and posture inside the valid domain, over its strata: R from 0.001 to 1000 mm; ball,
+ * flat, tiny and ordinary corners; rho 0, subnormal, tiny, ordinary and near 90; tilt 0, tiny,
+ * ordinary, near +-90.
+ */
+export function randomTool(rand: () => number): { R: number; Rcr: number; rho: number; tilt: number } {
+  const R = logUniform(rand, 0.001, 1000);
+  const Rcr = pick(rand, [0, R, R * rand(), R * logUniform(rand, 1e-15, 1e-3), R * (1 - 1e-9)]);
+  const rho = pick(rand, [0, 1e-320, 5e-324, logUniform(rand, 1e-12, 1), 90 * rand(), 90 - logUniform(rand, 1e-9, 1)]);
+  const tilt = pick(rand, [0, 0, (rand() - 0.5) * 180 * 0.999, (rand() < 0.5 ? -1 : 1) * logUniform(rand, 1e-12, 1)]);
+  return { R, Rcr: Math.min(Rcr, R), rho: Math.min(rho, 89.999999), tilt };
+}
+
+/** A scallop height below `limit` over its strata (1e-9 mm up to just below the limit). */
+export function randomHeight(rand: () => number, limit: number): number {
+  const h = pick(rand, [1e-9, limit * rand(), limit * logUniform(rand, 1e-12, 1), limit * (1 - 1e-9)]);
+  return Math.max(1e-9, h);
+}
