@@ -11,7 +11,17 @@ import { type FlankLimits, flankAtHeight, flankLimits, type PostureShape, shapeO
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from './units';
 
 /** Names of the user-facing inputs. */
-export type FieldName = 'R' | 'Rcr' | 'rho' | 'tilt' | 'pattern' | 'surfaceRadius' | 'surfaceAxis' | 'h' | 'interval';
+export type FieldName =
+  | 'R'
+  | 'Rcr'
+  | 'rho'
+  | 'tilt'
+  | 'pattern'
+  | 'surfaceRadius'
+  | 'surfaceAxis'
+  | 'h'
+  | 'interval'
+  | 'ra';
 
 /** Why a field was rejected. */
 export type InputErrorCode =
@@ -31,6 +41,7 @@ export type InputErrorCode =
   | 'shank-cuts'
   | 'beyond-diameter'
   | 'beyond-interval'
+  | 'beyond-max-ra'
   | 'wall-only';
 
 /** One rejected field, as data; `message` is its description in mm (describeInputError). */
@@ -135,6 +146,7 @@ export const FIELD_LABELS: Readonly<Record<FieldName, string>> = {
   surfaceAxis: 'Cylinder axis',
   h: 'Scallop height h',
   interval: 'Step-over L',
+  ra: 'Roughness Ra',
 };
 
 /** Options of {@link describeInputError}. */
@@ -147,7 +159,14 @@ export interface DescribeOptions {
 
 /** True for fields measured as lengths (converted to the user's unit in messages). */
 function isLength(field: FieldName): boolean {
-  return field === 'R' || field === 'Rcr' || field === 'h' || field === 'interval' || field === 'surfaceRadius';
+  return (
+    field === 'R' ||
+    field === 'Rcr' ||
+    field === 'h' ||
+    field === 'interval' ||
+    field === 'surfaceRadius' ||
+    field === 'ra'
+  );
 }
 
 /**
@@ -206,6 +225,10 @@ export function describeInputError(e: InputError, unit: LengthUnit, options: Des
       return `${label} cannot be answered ${got}: in this posture the tool cuts a step at any step-over (a flank or the shank rises straight from the contact, as a tilted flat end does), so no scallop forms. Add a corner radius, or lead, or less tilt.`;
     case 'beyond-interval':
       return `${label} must be below ${limit} ${got}, the widest step-over these flanks allow; at or beyond it adjacent passes leave a wall, not a scallop.`;
+    case 'beyond-max-ra':
+      return e.limit === 0
+        ? `${label} cannot be reached ${got}: this tool lying flat leaves no scallop, so Ra = 0 at any step-over up to its diameter.`
+        : `${label} must be below ${limit} ${got}, the largest Ra this tool leaves in this posture; passes far enough apart to leave more leave a wall, not a scallop.`;
   }
 }
 

@@ -21,12 +21,15 @@ import { Highlighter } from './highlight';
 import { linkNotice, Notice, restartMessage } from './messages';
 import { buildRequest, fieldMessages } from './request';
 import { ResultsPanel } from './results';
+import { RoughnessPanel } from './roughness';
+import { SimulationLoader } from './simulation';
 import {
   type CalculatorState,
   convertState,
   type FieldKey,
   parseField,
   parseUrl,
+  type Target,
   type Unit,
   withField,
   withValues,
@@ -36,7 +39,7 @@ import { UrlState } from './urlState';
 import type { ViewId } from './views/panel';
 
 /** The teaching views' ids (kept here so the views' code can load lazily). */
-const VIEW_IDS: readonly ViewId[] = ['profile', 'chart', 'tables', 'stepper', 'formulas'];
+const VIEW_IDS: readonly ViewId[] = ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'];
 
 /** Observes the page from outside (the e2e build's probe); the page itself needs none. */
 export interface AppObserver {
@@ -60,6 +63,8 @@ export class CalculatorApp {
   private readonly results: ResultsPanel;
   private readonly scene: ToolScene;
   private readonly teaching: TeachingLoader | null;
+  private readonly roughness: RoughnessPanel;
+  private readonly simulation: SimulationLoader;
   private readonly fresh = new Freshness<SolveReply>();
   private readonly client = solveClient({
     onReply: (reply) => {
@@ -90,6 +95,8 @@ export class CalculatorApp {
     this.url = new UrlState(extra, root.querySelector<HTMLAnchorElement>('[data-testid="open-full"]'));
     this.notice = new Notice(must(root, '[data-testid="notice"]'));
     this.results = new ResultsPanel(root);
+    this.roughness = new RoughnessPanel(root);
+    this.simulation = new SimulationLoader((info) => this.restarted('simulation', info));
     this.scene = new ToolScene(must(root, '.scene'));
     this.scene.onFrame = () => this.observer.frame?.(this.fresh.shown.kind === 'current');
     this.fields = new FieldsPanel(root, {
@@ -97,6 +104,7 @@ export class CalculatorApp {
       onMode: (mode: SolveMode) => this.change({ ...this.state, mode }),
       onUnit: (unit: Unit) => this.change(convertState(this.state, unit)),
       onPattern: (pattern: PassPattern) => this.change({ ...this.state, pattern }),
+      onTarget: (target: Target) => this.change({ ...this.state, target }),
       onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
     });
     // An embedded calculator without a teaching view shows none: no views, no views' worker.
@@ -110,6 +118,7 @@ export class CalculatorApp {
             onLoadCondition: (c) =>
               this.change(withValues({ ...this.state, mode: 'forward', pattern: 'one-way' }, { ...c, tilt: 0 })),
             onRestart: (info) => this.restarted('views', info),
+            surface: this.simulation,
           });
     const highlighter = new Highlighter(root, (key: ProcedureKey | null) => this.teaching?.highlight(key));
     this.highlighter = highlighter;
@@ -153,6 +162,7 @@ export class CalculatorApp {
     }
     this.fields.render(state, built.ok ? new Map<FieldKey, string>() : fieldMessages(state, built.errors));
     this.teaching?.want(request, state.unit);
+    this.simulation.want(request, state.unit);
     this.draw();
     this.url.write(state);
   }
@@ -162,6 +172,7 @@ export class CalculatorApp {
     const shown = this.fresh.shown;
     const tilt = parseField(this.state.fields.tilt);
     this.results.render(shown, this.state.unit, this.state.mode, tilt);
+    this.roughness.render(shown, this.state.unit);
     this.highlighter.markRows();
     if (shown.kind !== 'current' || !shown.reply.ok) {
       this.scene.setStale(true);
@@ -181,7 +192,7 @@ export class CalculatorApp {
     this.observer.resultShown?.();
   }
 
-  private restarted(who: 'results' | 'views', info: RestartInfo): void {
+  private restarted(who: 'results' | 'views' | 'simulation', info: RestartInfo): void {
     if (who === 'results') {
       if (info.gaveUp) {
         this.fresh.fail();
@@ -189,6 +200,6 @@ export class CalculatorApp {
       }
       this.draw();
     }
-    this.notice.show(restartMessage(who, info), info.gaveUp ? 0 : 5000);
+    this.notice.show(restartMessage(who === 'results' ? who : 'views', info), info.gaveUp ? 0 : 5000);
   }
 }

@@ -18,6 +18,7 @@ import {
   isLengthField,
   PRESETS,
   parseField,
+  type Target,
   type Unit,
 } from './state';
 
@@ -27,6 +28,7 @@ export interface FieldEvents {
   readonly onMode: (mode: SolveMode) => void;
   readonly onUnit: (unit: Unit) => void;
   readonly onPattern: (pattern: PassPattern) => void;
+  readonly onTarget: (target: Target) => void;
   /** A preset was chosen: R and Rcr in mm. */
   readonly onPreset: (preset: { readonly R: number; readonly Rcr: number }) => void;
 }
@@ -38,6 +40,7 @@ const HINTS: Readonly<Record<FieldKey, string>> = {
   tilt: 'tool inclination across the feed; + leans the shank to +Y',
   h: 'height of the highest cusp left between passes',
   L: 'distance between adjacent cutter-contact paths',
+  ra: 'target roughness across the feed; the scallop height follows',
 };
 
 const CORE_FIELD: Readonly<Record<FieldKey, FieldName>> = {
@@ -47,6 +50,7 @@ const CORE_FIELD: Readonly<Record<FieldKey, FieldName>> = {
   tilt: 'tilt',
   h: 'h',
   L: 'interval',
+  ra: 'ra',
 };
 
 interface FieldView {
@@ -75,6 +79,7 @@ export class FieldsPanel {
     this.wireSwitch('mode', (v) => events.onMode(v === 'inverse' ? 'inverse' : 'forward'));
     this.wireSwitch('unit', (v) => events.onUnit(v === 'in' ? 'in' : 'mm'));
     this.wireSwitch('pattern', (v) => events.onPattern(v === 'zigzag' ? 'zigzag' : 'one-way'));
+    this.wireSwitch('target', (v) => events.onTarget(v === 'ra' ? 'ra' : 'h'));
     const select = must<HTMLSelectElement>(root, '[data-testid="preset"]');
     PRESETS.forEach((p, i) => {
       select.append(html('option', { value: String(i) }, p.label));
@@ -130,7 +135,8 @@ export class FieldsPanel {
     const ranges = sliderRanges(state);
     const forward = state.mode === 'forward';
     for (const [key, view] of this.fields) {
-      view.row.hidden = forward ? key === 'L' : key === 'h';
+      const given = forward ? state.target : 'L';
+      view.row.hidden = (key === 'h' || key === 'ra' || key === 'L') && key !== given;
       view.unitLabel.textContent = isLengthField(key) ? unitSymbol(state.unit) : 'deg';
       if (view.input.value !== state.fields[key]) view.input.value = state.fields[key];
       const r = ranges[key];
@@ -144,7 +150,14 @@ export class FieldsPanel {
       view.row.classList.toggle('invalid', message !== '');
       view.input.setAttribute('aria-invalid', String(message !== ''));
     }
-    const checked: Readonly<Record<string, string>> = { mode: state.mode, unit: state.unit, pattern: state.pattern };
+    const checked: Readonly<Record<string, string>> = {
+      mode: state.mode,
+      unit: state.unit,
+      pattern: state.pattern,
+      target: state.target,
+    };
+    const targetSwitch = this.root.querySelector<HTMLElement>('[data-testid="target-switch"]');
+    if (targetSwitch) targetSwitch.hidden = !forward;
     for (const [name, value] of Object.entries(checked))
       for (const radio of this.root.querySelectorAll<HTMLInputElement>(`input[name="${name}"]`))
         radio.checked = radio.value === value;

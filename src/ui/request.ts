@@ -3,6 +3,8 @@
  * user's unit, becomes one validated request in mm, or the input errors. Units are converted here
  * and nowhere else on the way in. Pure (no DOM).
  */
+
+import { validateRaTarget } from '../core/raTarget';
 import {
   describeInputError,
   type FieldName,
@@ -21,6 +23,10 @@ export type BuiltRequest =
 export function buildRequest(state: CalculatorState): BuiltRequest {
   const mm = (key: FieldKey) => fieldInMm(state, key);
   const tool = { R: mm('R'), Rcr: mm('Rcr'), rho: mm('rho'), tilt: mm('tilt'), pattern: state.pattern };
+  if (state.mode === 'forward' && state.target === 'ra') {
+    const v = validateRaTarget({ ...tool, ra: mm('ra') });
+    return v.ok ? { ok: true, request: { mode: 'ra', input: v.value } } : v;
+  }
   if (state.mode === 'forward') {
     const v = validateForward({ ...tool, h: mm('h') });
     return v.ok ? { ok: true, request: { mode: 'forward', input: v.value } } : v;

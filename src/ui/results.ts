@@ -74,7 +74,7 @@ export class ResultsPanel {
     const reply = shown.kind === 'current' ? shown.reply : shown.kind === 'invalid' ? null : shown.last;
     const ok = reply?.ok ? reply : null;
     // A stale reply keeps its own mode (marked stale); nothing at all follows the inputs' mode.
-    const drawMode = ok ? ok.request.mode : mode;
+    const drawMode: SolveMode = ok ? (ok.request.mode === 'inverse' ? 'inverse' : 'forward') : mode;
     const stale = shown.kind !== 'current';
     this.section.classList.toggle('stale', stale && ok !== null);
     this.section.setAttribute('aria-busy', String(shown.kind === 'pending'));

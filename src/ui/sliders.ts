@@ -4,6 +4,9 @@
  * millimetre step. The ranges follow the other values (Rcr up to R, h below the posture's limit,
  * L below the widest step-over). Pure (no DOM).
  */
+
+import { PLANE } from '../core/cylinder';
+import { maxRaCachedMm } from '../core/raTarget';
 import { fromMm, toMm } from '../core/units';
 import { maxIntervalMm, scallopHeightLimits, type ToolInput } from '../core/validate';
 import { type CalculatorState, type FieldKey, formatField, parseField } from './state';
@@ -16,8 +19,8 @@ export interface SliderRange {
 
 /** Steps per unit: round numbers of the unit itself. */
 const STEPS: Readonly<Record<'mm' | 'in', Readonly<Record<FieldKey, number>>>> = {
-  mm: { R: 0.01, Rcr: 0.01, rho: 0.1, tilt: 0.1, h: 0.001, L: 0.001 },
-  in: { R: 0.001, Rcr: 0.001, rho: 0.1, tilt: 0.1, h: 0.0001, L: 0.0001 },
+  mm: { R: 0.01, Rcr: 0.01, rho: 0.1, tilt: 0.1, h: 0.001, L: 0.001, ra: 0.0001 },
+  in: { R: 0.001, Rcr: 0.001, rho: 0.1, tilt: 0.1, h: 0.0001, L: 0.0001, ra: 0.00001 },
 };
 
 /** A tool for the ranges: the typed values where they make sense, defaults elsewhere. */
@@ -57,6 +60,18 @@ export function sliderRanges(state: CalculatorState): Readonly<Record<FieldKey, 
     tilt: [-89.9, 89.9],
     h: [step.h, snap(len(Math.min(0.999 * hLimit, 2)), step.h, step.h)],
     L: [step.L * 10, snap(len(0.999 * lMax), step.L, step.L * 10)],
+    // Only drawn (and its maximum worked out) while Ra is the target.
+    ra:
+      state.mode === 'forward' && state.target === 'ra'
+        ? [
+            step.ra,
+            snap(
+              len(Math.min(0.999 * maxRaCachedMm({ ...tool, pattern: state.pattern, surface: PLANE }), 0.5)),
+              step.ra,
+              step.ra,
+            ),
+          ]
+        : [step.ra, 10 * step.ra],
   };
   const out = {} as Record<FieldKey, SliderRange>;
   for (const key of Object.keys(ranges) as FieldKey[]) {

@@ -7,12 +7,16 @@ import type { PassPattern } from '../core/validate';
 import type { SolveMode } from '../worker/protocol';
 
 export type Unit = LengthUnit;
-export type FieldKey = 'R' | 'Rcr' | 'rho' | 'tilt' | 'h' | 'L';
+export type FieldKey = 'R' | 'Rcr' | 'rho' | 'tilt' | 'h' | 'L' | 'ra';
+/** What the forward problem is given: a scallop height h, or a roughness Ra (h then follows). */
+export type Target = 'h' | 'ra';
 
 export interface CalculatorState {
   readonly unit: Unit;
   readonly mode: SolveMode;
   readonly pattern: PassPattern;
+  /** Forward mode's given value: h or Ra. */
+  readonly target: Target;
   /** Text of each field in the current unit (angles in degrees). */
   readonly fields: Readonly<Record<FieldKey, string>>;
 }
@@ -25,9 +29,10 @@ export const DEFAULT_FIELDS_MM: Readonly<Record<FieldKey, string>> = {
   tilt: '0',
   h: '0.05',
   L: '2.9',
+  ra: '0.0125',
 };
 
-export const FIELD_KEYS: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'tilt', 'h', 'L'];
+export const FIELD_KEYS: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'tilt', 'h', 'ra', 'L'];
 
 /** True for the fields that hold a length (converted with the unit); angles are degrees. */
 export function isLengthField(key: FieldKey): boolean {
@@ -76,7 +81,7 @@ export function convertState(state: CalculatorState, to: Unit): CalculatorState 
 }
 
 export function defaultState(unit: Unit = 'mm', mode: SolveMode = 'forward'): CalculatorState {
-  const mm: CalculatorState = { unit: 'mm', mode, pattern: 'one-way', fields: DEFAULT_FIELDS_MM };
+  const mm: CalculatorState = { unit: 'mm', mode, pattern: 'one-way', target: 'h', fields: DEFAULT_FIELDS_MM };
   return unit === 'mm' ? mm : convertState(mm, unit);
 }
 
@@ -108,7 +113,7 @@ export interface ParsedUrl {
 
 /**
  * Reads the state from a query string (`?R=3&Rcr=1&rho=5&h=0.05&unit=mm`, plus `tilt=`,
- * `pattern=zigzag`, `mode=inverse&L=`, `embed=1`). A present but invalid value, and a missing one
+ * `pattern=zigzag`, `mode=inverse&L=`, `target=ra&ra=`, `embed=1`). A present but invalid value, and a missing one
  * when others are given, falls back to its default with a notice (tilt and pattern have defaults
  * and are never missing). Cross-field rules are left to the calculator's own validation, which
  * shows them next to the fields.
@@ -130,9 +135,14 @@ export function parseUrl(search: string): ParsedUrl {
   if (patternText === 'zigzag') pattern = 'zigzag';
   else if (patternText !== null && patternText !== 'one-way')
     notices.push(`pattern="${patternText.slice(0, 20)}" is not one-way or zigzag; using one-way.`);
+  const targetText = params.get('target');
+  let target: Target = 'h';
+  if (targetText === 'ra') target = 'ra';
+  else if (targetText !== null && targetText !== 'h')
+    notices.push(`target="${targetText.slice(0, 20)}" is not h or ra; using h.`);
   const defaults = defaultState(unit, mode).fields;
   const fields = { ...defaults };
-  const needed: FieldKey[] = ['R', 'Rcr', 'rho', mode === 'forward' ? 'h' : 'L'];
+  const needed: FieldKey[] = ['R', 'Rcr', 'rho', mode === 'forward' ? target : 'L'];
   const anyGiven = FIELD_KEYS.some((k) => params.has(k));
   for (const key of FIELD_KEYS) {
     const text = params.get(key);
@@ -147,7 +157,7 @@ export function parseUrl(search: string): ParsedUrl {
     else fields[key] = text.trim();
   }
   const embed = params.get('embed') === '1' || params.get('embed') === 'true';
-  return { state: { unit, mode, pattern, fields }, notices, embed, view: params.get('view') };
+  return { state: { unit, mode, pattern, target, fields }, notices, embed, view: params.get('view') };
 }
 
 /**
@@ -161,7 +171,10 @@ export function toSearch(state: CalculatorState, extra: Readonly<Record<string, 
   params.set('rho', state.fields.rho);
   if (state.fields.tilt.trim() !== '0') params.set('tilt', state.fields.tilt);
   if (state.pattern !== 'one-way') params.set('pattern', state.pattern);
-  if (state.mode === 'forward') params.set('h', state.fields.h);
+  if (state.mode === 'forward' && state.target === 'ra') {
+    params.set('target', 'ra');
+    params.set('ra', state.fields.ra);
+  } else if (state.mode === 'forward') params.set('h', state.fields.h);
   else {
     params.set('mode', 'inverse');
     params.set('L', state.fields.L);

@@ -12,6 +12,7 @@ import { Freshness } from './freshness';
 import type { Unit } from './state';
 import type { TeachingPanel, ViewId } from './views/panel';
 import type { TraceDisplay } from './views/stepperView';
+import type { SurfaceSource } from './views/surfaceView';
 
 /** The wait after the last input before the views' data is asked (a slider being dragged). */
 const SETTLE_MS = 150;
@@ -22,6 +23,8 @@ export interface TeachingOptions {
   readonly initialView: ViewId;
   readonly onLoadCondition: (c: { R: number; Rcr: number; rho: number; h: number }) => void;
   readonly onRestart: (info: RestartInfo) => void;
+  /** The Machined surface view's simulation. */
+  readonly surface: SurfaceSource;
 }
 
 export class TeachingLoader {
@@ -122,7 +125,7 @@ export class TeachingLoader {
     this.loading = true;
     void import('./views/panel').then(({ TeachingPanel }) => {
       const o = this.options;
-      this.panel = new TeachingPanel(o.root, o.display, o.onLoadCondition, o.initialView);
+      this.panel = new TeachingPanel(o.root, o.display, o.onLoadCondition, o.initialView, o.surface);
       this.panel.highlight(this.highlighted);
       this.draw();
     });

@@ -20,11 +20,14 @@ import {
   sekineModel,
 } from '../core/approximations';
 import { compareForward, compareInverse, type ForwardEstimate, type InverseEstimate } from '../core/compare';
+import type { Surface } from '../core/cylinder';
 import { exactForward } from '../core/exact';
 import { cuspSection, intersectionLoops } from '../core/geometry';
 import { placeTool, ringTangent, sectionCentre } from '../core/placement';
 import { contactOffsetMm, type Flank, flankAtHeight, shapeOfTool } from '../core/posture';
 import { APPROXIMATION_KEYS, type ApproximationKey } from '../core/procedures';
+import { forwardOfRaTarget, roughnessSummary, validateRaTarget } from '../core/raTarget';
+import { exactRoughness, exactRoughnessAtInterval, type Roughness } from '../core/roughness';
 import { type PaperTableRow, paperTables, profileCurves, stepOverSweep } from '../core/teaching';
 import { toolMesh } from '../core/toolMesh';
 import { traceProcedure } from '../core/trace';
@@ -58,7 +61,7 @@ import {
 } from './protocol';
 
 /** The request's input validated again (the worker trusts no caller), or its errors. */
-function revalidate(request: SolveRequest): readonly InputError[] | null {
+export function revalidate(request: SolveRequest): readonly InputError[] | null {
   const i = request.input;
   const tool = {
     R: i.toolRadiusMm,
@@ -67,11 +70,19 @@ function revalidate(request: SolveRequest): readonly InputError[] | null {
     tilt: i.tiltAngleDeg,
     pattern: i.pattern,
   };
+  const surface = surfaceFields(i.surface);
   const v =
     request.mode === 'forward'
-      ? validateForward({ ...tool, h: request.input.scallopHeightMm })
-      : validateInverse({ ...tool, interval: request.input.intervalMm });
+      ? validateForward({ ...tool, ...surface, h: request.input.scallopHeightMm })
+      : request.mode === 'ra'
+        ? validateRaTarget({ ...tool, ...surface, ra: request.input.targetRaMm })
+        : validateInverse({ ...tool, ...surface, interval: request.input.intervalMm });
   return v.ok ? null : v.errors;
+}
+
+/** A surface as the validators' raw fields (a plane gives none). */
+function surfaceFields(s: Surface): { surfaceRadius?: number; surfaceAxis?: string } {
+  return s.kind === 'plane' ? {} : { surfaceRadius: s.radiusMm, surfaceAxis: s.axis };
 }
 
 function exactOfForward(input: ForwardInput, c: ReturnType<typeof compareForward>): ExactSummary {
@@ -250,16 +261,19 @@ export function solve(request: SolveRequest): SolveReply {
   if (errors !== null) return { ok: false, request, errors };
   let exact: ExactSummary;
   let rows: ProcedureRow[];
-  if (request.mode === 'forward') {
-    const input = request.input;
+  let roughness: Roughness;
+  if (request.mode !== 'inverse') {
+    const input = request.mode === 'ra' ? forwardOfRaTarget(request.input) : request.input;
     const c = compareForward(input);
     exact = exactOfForward(input, c);
+    roughness = exactRoughness(input, c.exact);
     rows = [exactRow(exact.halfIntervalMm, exact.cuspHeightMm)];
     for (const key of APPROXIMATION_KEYS) rows.push(forwardRow(key, input, c.approximations[key], c.maxIntervalMm));
   } else {
     const input = request.input;
     const c = compareInverse(input);
     exact = exactOfInverse(input, c);
+    roughness = exactRoughnessAtInterval(input, input.pattern, c.exact, input.surface);
     rows = [exactRow(exact.cuspHeightMm, null)];
     for (const key of APPROXIMATION_KEYS) rows.push(inverseRow(key, input, c.approximations[key]));
   }
@@ -269,6 +283,7 @@ export function solve(request: SolveRequest): SolveReply {
     exact,
     rows,
     scene: sceneGeometry(request.input, exact),
+    roughness: roughnessSummary(roughness, exact.cuspHeightMm),
     solveMs: performance.now() - t0,
   };
 }
@@ -440,8 +455,8 @@ export function teach(request: SolveRequest): TeachReply {
   if (errors !== null) return { ok: false, request, errors, reason: null };
   let forward: ForwardInput;
   let exact: ExactSummary;
-  if (request.mode === 'forward') {
-    forward = request.input;
+  if (request.mode !== 'inverse') {
+    forward = request.mode === 'ra' ? forwardOfRaTarget(request.input) : request.input;
     exact = exactOfForward(forward, compareForward(forward));
   } else {
     const input = request.input;

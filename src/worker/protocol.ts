@@ -8,16 +8,22 @@
 
 import type { Surface } from '../core/cylinder';
 import type { ApproximationKey, ProcedureKey } from '../core/procedures';
+import type { RaTargetInput, RoughnessSummary } from '../core/raTarget';
 import type { PaperTableRow } from '../core/teaching';
 import type { ForwardInput, InputError, InverseInput, PassPattern } from '../core/validate';
 import type { Vec3 } from '../core/vec';
 
-/** One question: a scallop height to a step-over, or a step-over to the cusp heights. */
+/**
+ * One question: a scallop height to a step-over, a step-over to the cusp heights, or a target
+ * roughness Ra to a step-over (through the h that leaves it).
+ */
 export type SolveRequest =
   | { readonly mode: 'forward'; readonly input: ForwardInput }
-  | { readonly mode: 'inverse'; readonly input: InverseInput };
+  | { readonly mode: 'inverse'; readonly input: InverseInput }
+  | { readonly mode: 'ra'; readonly input: RaTargetInput };
 
-export type SolveMode = SolveRequest['mode'];
+/** The page's two directions (a target Ra is a forward question). */
+export type SolveMode = 'forward' | 'inverse';
 
 /** True when both requests ask the same question (every input equal); null equals nothing. */
 export function sameRequest(a: SolveRequest | null, b: SolveRequest | null): boolean {
@@ -33,6 +39,7 @@ export function sameRequest(a: SolveRequest | null, b: SolveRequest | null): boo
     !sameSurface(x.surface, y.surface)
   )
     return false;
+  if (a.mode === 'ra') return a.input.targetRaMm === (b.input as RaTargetInput).targetRaMm;
   return a.mode === 'forward'
     ? a.input.scallopHeightMm === (b.input as ForwardInput).scallopHeightMm
     : a.input.intervalMm === (b.input as InverseInput).intervalMm;
@@ -150,6 +157,8 @@ export type SolveReply =
       readonly exact: ExactSummary;
       readonly rows: readonly ProcedureRow[];
       readonly scene: SceneGeometry;
+      /** Rz, Ra, Rq of the surface left at the exact step-over, and the rule of thumb Ra ~ h/4. */
+      readonly roughness: RoughnessSummary;
       readonly solveMs: number;
     }
   | { readonly ok: false; readonly request: SolveRequest; readonly errors: readonly InputError[] };
@@ -258,4 +267,4 @@ export type TeachReply =
       readonly reason: string | null;
     };
 
-export type { ApproximationKey, InputError, ProcedureKey };
+export type { ApproximationKey, InputError, ProcedureKey, RaTargetInput, RoughnessSummary };

@@ -12,7 +12,7 @@ export interface ViewContext {
   readonly unit: Unit;
 }
 
-export type ViewId = 'profile' | 'chart' | 'tables' | 'stepper' | 'formulas';
+export type ViewId = 'profile' | 'chart' | 'tables' | 'stepper' | 'formulas' | 'surface';
 
 export interface TeachingView {
   readonly id: ViewId;

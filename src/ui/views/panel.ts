@@ -8,6 +8,7 @@ import { html, type TeachingView, type ViewContext, type ViewId } from './common
 import { FormulasView } from './formulasView';
 import { ProfileView } from './profileView';
 import { StepperView, type TraceDisplay } from './stepperView';
+import { type SurfaceSource, SurfaceView } from './surfaceView';
 import { TablesView } from './tablesView';
 
 export type { ViewId };
@@ -27,6 +28,7 @@ export class TeachingPanel {
     display: TraceDisplay,
     onLoadCondition: (c: { R: number; Rcr: number; rho: number; h: number }) => void,
     initial: ViewId,
+    surface: SurfaceSource,
   ) {
     this.views = [
       new ProfileView(),
@@ -34,6 +36,7 @@ export class TeachingPanel {
       new TablesView(onLoadCondition),
       new StepperView(display),
       new FormulasView(),
+      new SurfaceView(surface),
     ];
     this.ids = this.views.map((v) => v.id);
     this.active = initial;
