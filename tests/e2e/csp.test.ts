@@ -1,6 +1,6 @@
 /**
  * The production site under a strict Content-Security-Policy, sent as a documentation host would
- * send it: the page and each of its five views must work with zero violations (no inline style
+ * send it: the page and each of its six views must work with zero violations (no inline style
  * attribute, no inline script, workers from the same origin).
  */
 import type { Page } from 'playwright-core';
@@ -49,7 +49,7 @@ describe('strict Content-Security-Policy', () => {
     await page.close();
   });
 
-  for (const view of ['profile', 'chart', 'tables', 'stepper', 'formulas'] as const) {
+  for (const view of ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'] as const) {
     it(`the ${view} view, full page and embedded, logs zero violations`, async () => {
       for (const embed of ['', '&embed=1']) {
         const { page, violations } = await openRecorded(`?R=3&Rcr=1&rho=5&tilt=3&h=0.05&unit=mm&view=${view}${embed}`);
@@ -60,6 +60,7 @@ describe('strict Content-Security-Policy', () => {
           tables: panel.locator('table').first(),
           stepper: page.getByTestId('stepper-caption').filter({ hasText: /\d/ }),
           formulas: panel.locator('math').first(),
+          surface: page.getByTestId('surface-comparison').filter({ hasText: /Simulated cusp/ }),
         };
         await ready[view].waitFor();
         if (view === 'stepper') {

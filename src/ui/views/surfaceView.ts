@@ -9,7 +9,8 @@
  */
 import type { ProcedureKey } from '../../core/procedures';
 import { formatSignificant, unitSymbol } from '../../core/units';
-import { HEIGHT_RAMP, SurfaceScene } from '../../render/surfaceMesh';
+import { HEIGHT_RAMP } from '../../render/surfaceGrid';
+import { SurfaceScene } from '../../render/surfaceMesh';
 import type { SimulateReply } from '../../worker/simulate';
 import { formatLen } from '../format';
 import type { Shown } from '../freshness';
@@ -128,7 +129,9 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     const span = Number.isFinite(hi - lo) ? hi - lo : 0;
     const k = autoExaggeration(size, span, 0.12);
     this.exaggerationNote.textContent =
-      k === 1 ? 'Heights at true scale.' : `Heights exaggerated x${k} (vertical exaggeration).`;
+      k === 1
+        ? 'Heights at true scale; colour: height above the lowest point (um).'
+        : `Heights exaggerated x${k} (vertical exaggeration); colour: height above the lowest point (um).`;
     if (this.scene && !this.element.closest('[hidden]')) this.scene.update(s, k);
     this.drawLegend(span);
     this.drawTrace(reply, unit);
@@ -142,7 +145,7 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
       gradient.append(svg('stop', { offset: i / (HEIGHT_RAMP.length - 1), 'stop-color': c }));
     });
     defs.append(gradient);
-    const bar = svg('rect', { x: 10, y: 2, width: 280, height: 12, fill: 'url(#surface-ramp)' });
+    const bar = svg('rect', { x: 10, y: 2, width: 340, height: 12, fill: 'url(#surface-ramp)' });
     const label = (x: number, anchor: string, text: string) => {
       const t = svg('text', { x, y: 30, 'text-anchor': anchor });
       t.textContent = text;
@@ -152,8 +155,8 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
       defs,
       bar,
       label(10, 'start', um(0)),
-      label(150, 'middle', `height above the lowest point, ${um(spanMm / 2)}`),
-      label(290, 'end', um(spanMm)),
+      label(180, 'middle', um(spanMm / 2)),
+      label(350, 'end', um(spanMm)),
     );
   }
 
@@ -192,14 +195,14 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     const e = reply.exact.roughness;
     const line = (z: number, cls: string) =>
       svg('line', { x1: PAD.left, x2: PAD.left + w, y1: Z(z).toFixed(1), y2: Z(z).toFixed(1), class: cls });
-    const text = (z: number, cls: string, label: string) => {
-      const el = svg('text', { x: PAD.left + w + 6, y: (Z(z) + 4).toFixed(1), class: cls });
+    const text = (z: number, cls: string, label: string, dy = 4) => {
+      const el = svg('text', { x: PAD.left + w + 6, y: (Z(z) + dy).toFixed(1), class: cls });
       el.textContent = label;
       return el;
     };
     const m = r.meanMm;
     const caption = svg('text', { x: PAD.left, y: TRACE_H - 4, class: 'trace-caption' });
-    caption.textContent = `Trace across ${s.passes} passes, heights exaggerated; simulated values marked, exact Rz ${fine(e.rzMm)}, Ra ${fine(e.raMm)}, Rq ${fine(e.rqMm)}`;
+    caption.textContent = `Simulated trace, ${s.passes} passes. Exact: Rz ${fine(e.rzMm)}, Ra ${fine(e.raMm)}, Rq ${fine(e.rqMm)}`;
     this.trace.replaceChildren(
       line(zHi, 'rz'),
       line(zLo, 'rz'),
@@ -209,9 +212,9 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
       line(Math.max(0, m - r.raMm), 'ra'),
       line(m, 'mean'),
       svg('polyline', { points: points.join(' '), class: 'trace-line' }),
-      text(zHi, 'rz', `Rz ${fine(r.rzMm)}`),
-      text(m + r.rqMm, 'rq', `Rq ${fine(r.rqMm)}`),
-      text(m + r.raMm, 'ra', `Ra ${fine(r.raMm)}`),
+      text(zHi, 'rz', `Rz ${fine(r.rzMm)}`, 10),
+      text(m + r.rqMm, 'rq', `Rq ${fine(r.rqMm)}`, -3),
+      text(m + r.raMm, 'ra', `Ra ${fine(r.raMm)}`, 11),
       text(m, 'mean', 'mean line'),
       caption,
     );
