@@ -3,6 +3,8 @@
  * from the simulation's height field, heights exaggerated from the lowest point, and colours by
  * height along one ramp (the view's legend draws the same ramp).
  */
+import type { SimulationResult } from '../core/simulation';
+
 /** The colour ramp, low to high (dark blue, teal, green, yellow), as 0-1 RGB stops. */
 export const HEIGHT_RAMP: readonly (readonly [number, number, number])[] = [
   [0.12, 0.16, 0.42],
@@ -23,14 +25,10 @@ export function rampColour(t: number): [number, number, number] {
 }
 
 /** A height field as the simulation gives it (mm). */
-export interface HeightField {
-  readonly cellsAcross: number;
-  readonly cellsAlong: number;
-  readonly acrossFromMm: number;
-  readonly acrossToMm: number;
-  readonly alongLengthMm: number;
-  readonly heightsMm: Float32Array;
-}
+export type HeightField = Pick<
+  SimulationResult,
+  'cellsAcross' | 'cellsAlong' | 'acrossFromMm' | 'acrossToMm' | 'alongLengthMm' | 'heightsMm'
+>;
 
 export interface SurfaceGrid {
   /** xyz per vertex (x along the feed, y across, z the exaggerated height), mm. */
