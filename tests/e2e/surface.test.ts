@@ -123,10 +123,27 @@ describe('Machined surface view in headless Chromium', () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=surface');
     const line = page.getByTestId('surface-comparison');
     await line.filter({ hasText: /Simulated cusp/ }).waitFor({ timeout: 20_000 });
+    // Every status the view shows from now on (a simulation of 512 x 512 cells takes longer than a frame).
+    await page.evaluate(() => {
+      const seen: string[] = [];
+      (window as unknown as { __statuses: string[] }).__statuses = seen;
+      const status = document.querySelector('[data-testid="surface-status"]');
+      if (status)
+        new MutationObserver(() => seen.push(status.textContent ?? '')).observe(status, {
+          childList: true,
+          characterData: true,
+          subtree: true,
+        });
+    });
     for (const h of ['0.01', '0.02', '0.03', '0.04', '0.035', '0.045']) await page.getByTestId('input-h').fill(h);
     await expect.poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 }).toMatch(/exact 0\.045000 mm/);
     let n = comparisonNumbers((await line.textContent()) ?? '');
     expect(Math.abs(n.sim - n.exact)).toBeLessThanOrEqual(n.bound + 1e-6);
+    const statuses = await page.evaluate(() => (window as unknown as { __statuses: string[] }).__statuses);
+    expect(
+      statuses.some((t) => /^Simulating the passes: \d+ %\.\.\.$/.test(t)),
+      statuses.join(' | '),
+    ).toBe(true);
     await page.waitForTimeout(500); // no late reply to an earlier input replaces it
     expect(await line.textContent()).toMatch(/exact 0\.045000 mm/);
     // Invalid: no number of the earlier inputs stays on screen.
