@@ -3,10 +3,10 @@
  * a sub-path. Screenshots go to test-results/ as artifacts of the run.
  */
 import { spawnSync } from 'node:child_process';
-import type { Page, Worker } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { compareForward, compareInverse, forwardInput, inverseInput } from '../../src/core/index';
-import { ROOT, SHOTS, useSite } from './harness';
+import { namedWorker, paintedFraction, ROOT, SHOTS, useSite } from './harness';
 
 const site = useSite('docs/tools/path-interval');
 const open = site.open;
@@ -14,37 +14,6 @@ const open = site.open;
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
 const frames = (page: Page) =>
   page.evaluate(() => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames());
-
-/**
- * Fraction of the scene's on-screen pixels that differ from the background colour, read from
- * a screenshot (what the user sees; the WebGL buffer itself is not preserved between frames).
- */
-async function paintedFraction(page: Page): Promise<number> {
-  const png = (await page.getByTestId('scene-canvas').screenshot()).toString('base64');
-  return page.evaluate(async (b64) => {
-    const image = new Image();
-    image.src = `data:image/png;base64,${b64}`;
-    await image.decode();
-    const copy = document.createElement('canvas');
-    copy.width = image.width;
-    copy.height = image.height;
-    const ctx = copy.getContext('2d');
-    if (!ctx) return 0;
-    ctx.drawImage(image, 0, 0);
-    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
-    let painted = 0;
-    for (let i = 0; i < data.length; i += 4) {
-      if (
-        Math.abs((data[i] as number) - 0xf7) +
-          Math.abs((data[i + 1] as number) - 0xf8) +
-          Math.abs((data[i + 2] as number) - 0xfa) >
-        24
-      )
-        painted++;
-    }
-    return painted / (data.length / 4);
-  }, png);
-}
 
 describe('calculator page in headless Chromium', () => {
   it('loads from a sub-path, solves in a module worker, and shows the command line numbers', async () => {
@@ -221,7 +190,7 @@ describe('calculator page in headless Chromium', () => {
   it('a worker that dies is restarted, the request repeated, and the page says so', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     // The test kills the solver's worker itself (the page has no hook for it): close() from inside.
-    const solver = await solverWorker(page);
+    const solver = await namedWorker(page, 'path-interval-solver');
     void solver.evaluate(() => (globalThis as unknown as { close(): void }).close()).catch(() => undefined);
     await page.waitForTimeout(200);
     await page.getByTestId('input-h').fill('0.1');
@@ -236,24 +205,26 @@ describe('calculator page in headless Chromium', () => {
 
   it('a burst of slider moves ends on the latest value (stale replies dropped)', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    const expected = compareForward(
-      forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 0.08),
-    );
-    const final = expected.exact.halfIntervalMm.toFixed(4);
-    // Every number the page writes into L/2 from now on, in order.
+    const halfAt = (h: number) =>
+      compareForward(
+        forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', h),
+      ).exact.halfIntervalMm.toFixed(4);
+    const final = halfAt(0.08);
+    // Every number the page writes into L/2 from now on, in order, with the field's value and
+    // whether the results were marked stale at that moment.
     await page.evaluate(() => {
       const out = document.querySelector('[data-testid="result-exact-half"]') as HTMLElement;
-      const seen: string[] = [];
-      (window as unknown as { __seen: string[] }).__seen = seen;
-      new MutationObserver(() => seen.push(out.textContent ?? '')).observe(out, {
-        childList: true,
-        characterData: true,
-        subtree: true,
-      });
+      const field = document.querySelector('[data-testid="input-h"]') as HTMLInputElement;
+      const section = document.querySelector('section.results') as HTMLElement;
+      const seen: { text: string; h: string; stale: boolean }[] = [];
+      (window as unknown as { __seen: typeof seen }).__seen = seen;
+      new MutationObserver(() =>
+        seen.push({ text: out.textContent ?? '', h: field.value, stale: section.classList.contains('stale') }),
+      ).observe(out, { childList: true, characterData: true, subtree: true });
     });
     // The solver is busy while the slider moves, so the replies lag behind the inputs: a page
     // that showed stale replies would show older values after the last move.
-    const solver = await solverWorker(page);
+    const solver = await namedWorker(page, 'path-interval-solver');
     void solver.evaluate(() => {
       const end = Date.now() + 800;
       while (Date.now() < end);
@@ -261,23 +232,23 @@ describe('calculator page in headless Chromium', () => {
     await page.getByTestId('slider-h').focus();
     for (let i = 0; i < 30; i++) await page.keyboard.press('ArrowRight');
     await expect.poll(() => page.getByTestId('input-h').inputValue()).toBe('0.08');
-    const afterLastMove = await page.evaluate(() => (window as unknown as { __seen: string[] }).__seen.length);
     await expect.poll(() => text(page, 'result-exact-half'), { timeout: 5000 }).toBe(final);
     await page.waitForTimeout(300);
-    const seen = await page.evaluate(() => (window as unknown as { __seen: string[] }).__seen);
-    expect(seen.slice(afterLastMove).filter((t) => /\d/.test(t))).toEqual([final]);
+    type Seen = { text: string; h: string; stale: boolean };
+    const seen = await page.evaluate(() => (window as unknown as { __seen: Seen[] }).__seen);
+    // From the moment the field holds the last value, the only number written is its answer.
+    const afterLastMove = seen.findIndex((s) => s.h === '0.08');
+    expect(afterLastMove).toBeGreaterThanOrEqual(0);
+    expect(
+      seen
+        .slice(afterLastMove)
+        .filter((s) => /\d/.test(s.text))
+        .map((s) => s.text),
+    ).toEqual([final]);
+    // Throughout the burst, a number not marked stale is the answer to the value in the field.
+    const current = seen.filter((s) => !s.stale && /\d/.test(s.text));
+    expect(current.length).toBeGreaterThan(0);
+    for (const s of current) expect(s.text, `h = ${s.h}`).toBe(halfAt(Number(s.h)));
     await page.close();
   });
 });
-
-/** The worker that runs `solve` (named path-interval-solver by the page). */
-async function solverWorker(page: Page): Promise<Worker> {
-  await expect
-    .poll(async () => {
-      for (const w of page.workers()) if ((await w.evaluate(() => self.name)) === 'path-interval-solver') return true;
-      return false;
-    })
-    .toBe(true);
-  for (const w of page.workers()) if ((await w.evaluate(() => self.name)) === 'path-interval-solver') return w;
-  throw new Error('no solver worker');
-}

@@ -1,8 +1,8 @@
 /** Shared set-up of the browser tests: a built site on a loopback sub-path and one Chromium. */
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import type { Browser, Page } from 'playwright-core';
-import { afterAll, beforeAll } from 'vitest';
+import type { Browser, Page, Worker } from 'playwright-core';
+import { afterAll, beforeAll, expect } from 'vitest';
 import { launchChromium } from '../../src/bench/browser';
 import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
 import { E2E_OUT_DIR } from './globalSetup';
@@ -69,4 +69,47 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
       return { page, errors };
     },
   };
+}
+
+/**
+ * Fraction of the scene's on-screen pixels that differ from the background colour, read from
+ * a screenshot (what the user sees; the WebGL buffer itself is not preserved between frames).
+ */
+export async function paintedFraction(page: Page): Promise<number> {
+  const png = (await page.getByTestId('scene-canvas').screenshot()).toString('base64');
+  return page.evaluate(async (b64) => {
+    const image = new Image();
+    image.src = `data:image/png;base64,${b64}`;
+    await image.decode();
+    const copy = document.createElement('canvas');
+    copy.width = image.width;
+    copy.height = image.height;
+    const ctx = copy.getContext('2d');
+    if (!ctx) return 0;
+    ctx.drawImage(image, 0, 0);
+    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
+    let painted = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (
+        Math.abs((data[i] as number) - 0xf7) +
+          Math.abs((data[i + 1] as number) - 0xf8) +
+          Math.abs((data[i + 2] as number) - 0xfa) >
+        24
+      )
+        painted++;
+    }
+    return painted / (data.length / 4);
+  }, png);
+}
+
+/** The page's worker of this name (path-interval-solver runs `solve`, path-interval-views `teach`). */
+export async function namedWorker(page: Page, name: string): Promise<Worker> {
+  const find = async (): Promise<Worker | null> => {
+    for (const w of page.workers()) if ((await w.evaluate(() => self.name)) === name) return w;
+    return null;
+  };
+  await expect.poll(async () => (await find()) !== null).toBe(true);
+  const found = await find();
+  if (found === null) throw new Error(`no worker ${name}`);
+  return found;
 }

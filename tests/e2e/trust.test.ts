@@ -7,7 +7,7 @@
 import { readdirSync, readFileSync } from 'node:fs';
 import type { Page, Worker } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { SHOTS, siteDir, useSite } from './harness';
+import { namedWorker, paintedFraction, SHOTS, siteDir, useSite } from './harness';
 
 const site = useSite('docs/trust');
 const open = site.open;
@@ -27,17 +27,6 @@ async function resultNumbers(page: Page): Promise<string[]> {
   );
 }
 
-async function worker(page: Page, name: string): Promise<Worker> {
-  await expect
-    .poll(async () => {
-      for (const w of page.workers()) if ((await w.evaluate(() => self.name)) === name) return true;
-      return false;
-    })
-    .toBe(true);
-  for (const w of page.workers()) if ((await w.evaluate(() => self.name)) === name) return w;
-  throw new Error(`no worker ${name}`);
-}
-
 /** Keeps a worker busy for `ms` (not awaited: the worker answers nothing meanwhile). */
 function block(w: Worker, ms: number): void {
   void w
@@ -46,32 +35,6 @@ function block(w: Worker, ms: number): void {
       while (Date.now() < end);
     }, ms)
     .catch(() => undefined);
-}
-
-/** Fraction of the scene's on-screen pixels that differ from the background colour. */
-async function paintedFraction(page: Page): Promise<number> {
-  const png = (await page.getByTestId('scene-canvas').screenshot()).toString('base64');
-  return page.evaluate(async (b64) => {
-    const image = new Image();
-    image.src = `data:image/png;base64,${b64}`;
-    await image.decode();
-    const copy = document.createElement('canvas');
-    copy.width = image.width;
-    copy.height = image.height;
-    const ctx = copy.getContext('2d');
-    if (!ctx) return 0;
-    ctx.drawImage(image, 0, 0);
-    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
-    let painted = 0;
-    for (let i = 0; i < data.length; i += 4) {
-      const d =
-        Math.abs((data[i] as number) - 0xf7) +
-        Math.abs((data[i + 1] as number) - 0xf8) +
-        Math.abs((data[i + 2] as number) - 0xfa);
-      if (d > 24) painted++;
-    }
-    return painted / (data.length / 4);
-  }, png);
 }
 
 /** For 2 s, every 100 ms: no number anywhere in the results. */
@@ -100,7 +63,7 @@ describe('numbers answer the inputs on screen', () => {
 
   it('with a busy solver, the late reply to a valid input does not overwrite the dashes of the invalid one', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    block(await worker(page, 'path-interval-solver'), 1000);
+    block(await namedWorker(page, 'path-interval-solver'), 1000);
     await page.getByTestId('input-h').fill('0.06');
     await page.waitForTimeout(50);
     await page.getByTestId('input-h').fill('x');
@@ -144,7 +107,7 @@ describe('numbers answer the inputs on screen', () => {
     await page.goto(`${site.url()}?R=3&Rcr=1&rho=5&h=0.05&unit=mm`);
     await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
     await expect.poll(() => fetches).toBe(2);
-    block(await worker(page, 'path-interval-solver'), 60_000);
+    block(await namedWorker(page, 'path-interval-solver'), 60_000);
     await page.getByTestId('input-h').fill('0.1');
     await expect
       .poll(() => page.getByTestId('notice').textContent(), { timeout: 20_000, interval: 500 })
@@ -274,7 +237,20 @@ describe('units and digits in every view', () => {
       .poll(() => page.getByTestId('profile-view').locator('text.dim-text').allTextContents())
       .toContain('L/2 = 0.00004471');
     await page.close();
-  });
+    // The other views: the same significant digits, and no length rounded to 0.0000.
+    const ZERO = /(?<![\d.])0\.0000(?!\d)/;
+    const expected = { chart: 'Exact (3D) 0.00008942', stepper: 'L/2 = 0.00004471 mm', formulas: 'L/2=0.00004471' };
+    for (const view of ['chart', 'stepper', 'formulas'] as const) {
+      const p = (await open(`?R=0.001&Rcr=0.001&rho=0&h=0.000001&unit=mm&view=${view}`)).page;
+      if (view === 'stepper') {
+        await p.getByTestId('stepper-caption').filter({ hasText: /flank/ }).waitFor();
+        await p.getByTestId('stepper-last').click();
+      }
+      await expect.poll(() => p.locator(`#panel-${view}`).textContent()).toContain(expected[view]);
+      expect((await p.locator(`#panel-${view}`).textContent()) ?? '', view).not.toMatch(ZERO);
+      await p.close();
+    }
+  }, 60_000);
 });
 
 describe('the shipped site', () => {

@@ -1,5 +1,6 @@
 /** Numbers as the page shows them: at least four significant digits, the user's unit, never -0 or NaN. */
 import { describe, expect, it } from 'vitest';
+import { formatPercent } from '../../src/core/units';
 import { formatLen, formatLenUnit, formatSignedLen } from '../../src/ui/format';
 
 describe('page number formatting', () => {
@@ -29,5 +30,11 @@ describe('page number formatting', () => {
     expect(formatLen(Number.NaN, 'mm')).toBe('\u2014');
     expect(formatLen(null, 'mm')).toBe('\u2014');
     expect(formatLenUnit(Number.POSITIVE_INFINITY, 'in')).toBe('\u2014');
+    // Percentages have fixed decimals: a tiny negative deviation rounds to zero, unsigned.
+    expect(formatPercent(-0.001)).toBe('0.00');
+    expect(formatPercent(-0)).toBe('0.00');
+    expect(formatPercent(-0.006)).toBe('-0.01');
+    expect(formatPercent(7.1449)).toBe('+7.14');
+    expect(formatPercent(Number.NaN)).toBe('\u2014');
   });
 });

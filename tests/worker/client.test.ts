@@ -165,13 +165,14 @@ describe('worker client with a stand-in worker', () => {
   });
 
   it('a worker that throws, or stays silent past the watchdog, is restarted and the request repeated', async () => {
-    const { c, replies, restarts } = client('solve', 40);
+    // A watchdog long enough that a loaded machine answers the last call before it fires again.
+    const { c, replies, restarts } = client('solve', 300);
     workers.throwNext = 1;
     c.request({ n: 7 });
     await workers.settle();
     expect(restarts[0]?.reason).toMatch(/threw/);
     // The repeated call hangs: the watchdog restarts once more and repeats it again.
-    await new Promise((r) => setTimeout(r, 80));
+    await expect.poll(() => restarts.length, { timeout: 2000, interval: 5 }).toBe(2);
     expect(restarts[1]?.reason).toMatch(/stopped answering/);
     const last = workers.calls[workers.calls.length - 1];
     expect(last?.request.n).toBe(7);
