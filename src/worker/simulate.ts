@@ -9,34 +9,34 @@
 import { compareForward, compareInverse } from '../core/compare';
 import { forwardOfRaTarget } from '../core/raTarget';
 import { exactRoughness, exactRoughnessAtInterval, type Roughness } from '../core/roughness';
-import { startSimulation } from '../core/simulation';
+import { type SimulationResult, startSimulation } from '../core/simulation';
 import { revalidate } from './api';
 import type { InputError, SolveRequest } from './protocol';
 
 /** Cells of the page's simulation across and along the feed (the issue's default, 512 x 512). */
 export const PAGE_SIMULATION_CELLS = 512;
 
-/** What the simulation measured, beside the exact values it checks (mm). */
-export interface SimulationSummary {
-  readonly cellsAcross: number;
-  readonly cellsAlong: number;
-  readonly passes: number;
-  /** Y of the first and last row centres, and the X length of the field. */
-  readonly acrossFromMm: number;
-  readonly acrossToMm: number;
-  readonly alongLengthMm: number;
-  /** Heights above the design plane, row-major: `cellsAlong` rows of `cellsAcross` (transferred). */
-  readonly heightsMm: Float32Array;
-  /** The profilometer trace across the passes: (y, z) pairs (transferred). */
-  readonly trace: Float64Array;
-  readonly cuspHeightsMm: readonly number[];
-  readonly cuspHeightMm: number;
-  readonly roughness: { readonly rzMm: number; readonly raMm: number; readonly rqMm: number; readonly meanMm: number };
-  readonly resolutionBoundMm: number;
-  readonly roughnessBoundMm: number;
-  readonly cells: number;
-  readonly placements: number;
-}
+/**
+ * What the simulation measured (mm; core/simulation.ts), beside the exact values it checks:
+ * `heightsMm` and `trace` are transferred.
+ */
+export type SimulationSummary = Pick<
+  SimulationResult,
+  | 'cellsAcross'
+  | 'cellsAlong'
+  | 'acrossFromMm'
+  | 'acrossToMm'
+  | 'alongLengthMm'
+  | 'heightsMm'
+  | 'trace'
+  | 'cuspHeightsMm'
+  | 'cuspHeightMm'
+  | 'roughness'
+  | 'resolutionBoundMm'
+  | 'roughnessBoundMm'
+  | 'cells'
+  | 'placements'
+> & { readonly passes: number };
 
 export type SimulateReply =
   | {
