@@ -10,6 +10,12 @@ import type { SolveRequest } from './protocol';
 import type { SimulateReply } from './simulate';
 import type { WorkerApi } from './solver.worker';
 
+/**
+ * A simulation takes about 0.15 s alone on 2 cores and several times that on a loaded machine;
+ * the solver's 3 s watchdog would restart a healthy one there, so this job waits longer.
+ */
+export const SIMULATION_WATCHDOG_MS = 15_000;
+
 export function createSimulationWorker(): Worker {
   return new Worker(new URL('./solver.worker.ts', import.meta.url), {
     type: 'module',
@@ -40,6 +46,7 @@ export class SimulateClient {
       },
       onReply: events.onReply,
       onRestart: events.onRestart,
+      watchdogMs: SIMULATION_WATCHDOG_MS,
     });
   }
 
