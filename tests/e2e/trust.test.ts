@@ -118,6 +118,27 @@ describe('numbers answer the inputs on screen', () => {
     await page.screenshot({ path: `${SHOTS}/trust-gave-up.png` });
     await page.close();
   }, 40_000);
+
+  it("a views' worker that dies is restarted and the views' request repeated: the views come back current with no input", async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
+    const view = page.getByTestId('profile-view');
+    await view.locator('polygon.scallop').waitFor();
+    await expect.poll(() => page.getByTestId('teaching').getAttribute('class')).not.toMatch(/stale/);
+    // The test kills the views' worker itself (the page has no hook for it), then changes h once.
+    const views = await namedWorker(page, 'path-interval-views');
+    void views.evaluate(() => (globalThis as unknown as { close(): void }).close()).catch(() => undefined);
+    await page.waitForTimeout(200);
+    await page.getByTestId('input-h').fill('0.1');
+    // No further input: the restarted worker answers the repeated request and the views follow.
+    await expect
+      .poll(() => page.getByTestId('notice').textContent(), { timeout: 10_000 })
+      .toMatch(/teaching views' solver was restarted/);
+    await expect
+      .poll(() => page.getByTestId('teaching').getAttribute('class'), { timeout: 10_000 })
+      .not.toMatch(/stale/);
+    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain('L/2 = 1.8921');
+    await page.close();
+  });
 });
 
 describe('the 3D scene keeps its contract', () => {

@@ -174,7 +174,10 @@ describe('worker client with a stand-in worker', () => {
     // The repeated call hangs: the watchdog restarts once more and repeats it again.
     await expect.poll(() => restarts.length, { timeout: 2000, interval: 5 }).toBe(2);
     expect(restarts[1]?.reason).toMatch(/stopped answering/);
+    // The third call (on the third worker) arrives through its message channel.
+    await expect.poll(() => workers.calls.length, { timeout: 2000, interval: 5 }).toBe(3);
     const last = workers.calls[workers.calls.length - 1];
+    expect(last?.worker).toBe(2);
     expect(last?.request.n).toBe(7);
     last?.answer();
     await workers.settle();
