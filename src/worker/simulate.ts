@@ -163,6 +163,25 @@ export async function simulate(request: SolveRequest, options: SimulateOptions =
   };
 }
 
+/**
+ * The worker's simulations, latest wins: starting one, or `cancel`, stops the one running at its
+ * next step (it replies cancelled).
+ */
+export class SimulationRunner {
+  private generation = 0;
+
+  constructor(private readonly options: Pick<SimulateOptions, 'cells' | 'pause' | 'frameMs'> = {}) {}
+
+  run(request: SolveRequest, onProgress?: (fraction: number) => void): Promise<SimulateReply> {
+    const mine = ++this.generation;
+    return simulate(request, { ...this.options, onProgress, shouldStop: () => this.generation !== mine });
+  }
+
+  cancel(): void {
+    this.generation++;
+  }
+}
+
 /** The buffers a simulate reply transfers instead of copying. */
 export function simulationTransferables(reply: SimulateReply): ArrayBuffer[] {
   if (!reply.ok) return [];

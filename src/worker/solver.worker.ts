@@ -2,10 +2,10 @@
 import * as Comlink from 'comlink';
 import { solve, teach, transferables } from './api';
 import type { SolveReply, SolveRequest, TeachReply } from './protocol';
-import { type SimulateReply, simulate, simulationTransferables } from './simulate';
+import { type SimulateReply, SimulationRunner, simulationTransferables } from './simulate';
 
-/** The simulation running now; a newer `simulate` or `cancelSimulation` stops it between steps. */
-let simulation = 0;
+/** A newer `simulate` or `cancelSimulation` stops the running simulation between steps. */
+const simulations = new SimulationRunner();
 
 const workerApi = {
   solve(request: SolveRequest): SolveReply {
@@ -17,12 +17,11 @@ const workerApi = {
     return Comlink.transfer(reply, transferables(reply));
   },
   async simulate(request: SolveRequest, onProgress?: (fraction: number) => void): Promise<SimulateReply> {
-    const mine = ++simulation;
-    const reply = await simulate(request, { shouldStop: () => simulation !== mine, onProgress });
+    const reply = await simulations.run(request, onProgress);
     return Comlink.transfer(reply, simulationTransferables(reply));
   },
   cancelSimulation(): void {
-    simulation++;
+    simulations.cancel();
   },
 };
 

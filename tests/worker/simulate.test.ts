@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { exactForward, exactRoughness, forwardInput, inverseInput, type ToolInput } from '../../src/core/index';
 import { forwardOfRaTarget, validateRaTarget } from '../../src/core/raTarget';
 import type { SolveRequest } from '../../src/worker/protocol';
-import { type SimulateReply, simulate, simulationTransferables } from '../../src/worker/simulate';
+import { type SimulateReply, SimulationRunner, simulate, simulationTransferables } from '../../src/worker/simulate';
 
 const TOOL: ToolInput = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 const fwd = (h: number, tool: ToolInput = TOOL, pattern: 'one-way' | 'zigzag' = 'one-way'): SolveRequest => ({
@@ -90,6 +90,20 @@ describe('worker simulate job', () => {
     expect(reply.reason).toBeNull();
     expect(simulationTransferables(reply)).toEqual([]);
     expect(steps).toBe(3);
+  });
+
+  it('the runner: a newer simulation or a cancel stops the running one (latest wins)', async () => {
+    const runner = new SimulationRunner({ cells: 128, pause: () => new Promise((r) => setTimeout(r, 0)) });
+    const first = runner.run(fwd(0.05));
+    const second = runner.run(fwd(0.04));
+    const [a, b] = await Promise.all([first, second]);
+    expect(a.ok === false && a.cancelled).toBe(true);
+    expect(ok(b).exact.cuspHeightMm).toBe(0.04);
+    const third = runner.run(fwd(0.03));
+    runner.cancel();
+    const c = await third;
+    expect(c.ok === false && c.cancelled).toBe(true);
+    expect(ok(await runner.run(fwd(0.03))).exact.cuspHeightMm).toBe(0.03);
   });
 
   it('pauses between steps (a cancel message gets through) and reports progress once past a frame', async () => {
