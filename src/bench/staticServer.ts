@@ -20,7 +20,15 @@ export interface StaticSite {
   close(): Promise<void>;
 }
 
-export function serveStatic(root: string, subPath: string): Promise<StaticSite> {
+/**
+ * Serves `root` under `subPath` on loopback. `headers` are sent with every page and asset (for
+ * example a Content-Security-Policy, as a documentation host would send it).
+ */
+export function serveStatic(
+  root: string,
+  subPath: string,
+  headers: Readonly<Record<string, string>> = {},
+): Promise<StaticSite> {
   const prefix = `/${subPath.replace(/^\/|\/$/g, '')}/`;
   const server: Server = createServer((req, res) => {
     const path = decodeURIComponent((req.url ?? '/').split('?')[0] ?? '/');
@@ -35,7 +43,7 @@ export function serveStatic(root: string, subPath: string): Promise<StaticSite> 
       res.writeHead(404).end('not found');
       return;
     }
-    res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
+    res.writeHead(200, { ...headers, 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
     createReadStream(file).pipe(res);
   });
   return new Promise((resolve) => {

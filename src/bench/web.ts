@@ -4,6 +4,10 @@
  *  - cold load to first result (median, target <= 1 s),
  *  - JavaScript shipped, gzip (target <= 200 kB): to the first result, and in all.
  *
+ * The sizes are those of the production build (dist/). The timings run on the instrumented build
+ * (`vite build --mode e2e`): the same page plus the probe (src/ui/probe.ts) that reports when an
+ * input's answer reached a frame; the production build carries no such hook.
+ *
  *   npm run bench:web              readable table
  *   npm run bench:web -- --json    and a last line holding one JSON object
  */
@@ -28,6 +32,8 @@ const json = process.argv.includes('--json');
 const quick = process.argv.includes('--quick');
 const root = fileURLToPath(new URL('../..', import.meta.url));
 await build({ root, logLevel: 'warn' });
+const instrumented = 'test-results/site-bench';
+await build({ root, logLevel: 'warn', mode: 'e2e', build: { outDir: instrumented, emptyOutDir: true } });
 
 // Initial JS: the page's entry script (from index.html) and the solver worker. The teaching
 // views' chunk (charts, maths typesetting) loads after the first result.
@@ -44,7 +50,7 @@ for (const name of readdirSync(assets).filter((n) => n.endsWith('.js'))) {
   if (indexHtml.includes(name) || name.startsWith('solver.worker')) initialGzipBytes += gz;
 }
 
-const site = await serveStatic(`${root}dist`, 'bench/path-interval');
+const site = await serveStatic(`${root}${instrumented}`, 'bench/path-interval');
 const browser = await launchChromium();
 try {
   const coldLoads: number[] = [];

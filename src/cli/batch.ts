@@ -238,7 +238,7 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
     surfaceAxis: optionalField(fields, index.surfaceAxis),
   };
   if (layout.target === 'Ra') {
-    const v = validateTargetRa({ ...pass, Ra: fields[index.Ra as number] });
+    const v = validateTargetRa({ ...pass, ra: fields[index.Ra as number] });
     if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
     const p = v.value;
     const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);

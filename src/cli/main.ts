@@ -84,8 +84,6 @@ export function optionOf(field: AnyFieldName, half: boolean): string {
       return '--surface-radius';
     case 'surfaceAxis':
       return '--surface-axis';
-    case 'Ra':
-      return '--ra';
     default:
       return `--${field}`;
   }
@@ -166,7 +164,7 @@ function forward(values: Values, wanted: Wanted, io: Io, out: Output): number {
 
 /** --ra: the scallop height that leaves the target Ra, then the forward answer for it. */
 function targetRa(values: Values, wanted: Wanted, io: Io, out: Output): number {
-  const v = validateTargetRa({ ...passValues(values), Ra: values.ra });
+  const v = validateTargetRa({ ...passValues(values), ra: values.ra });
   if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, null);
   const p = v.value;
   const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);

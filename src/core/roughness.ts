@@ -287,37 +287,42 @@ export function scallopHeightForRaMm(
 
 /** Raw values of the target-roughness problem (mm and degrees): the tool, pattern, surface and a target Ra. */
 export interface RawTargetRaInput extends RawToolInput {
-  readonly Ra: unknown;
+  readonly ra: unknown;
 }
 
 /** A validated target roughness: the pass and the Ra (mm) its passes must leave. */
 export interface TargetRaInput extends PassInput {
-  /** Target Ra in mm: at least {@link MIN_LENGTH_MM}, at most maxRaMm of the pass. */
+  /** Target Ra in mm: at least {@link MIN_LENGTH_MM}, below maxRaMm of the pass. */
   readonly targetRaMm: number;
 }
 
 /**
  * Validates a target roughness: the tool rules of validateForward, and `Ra` from
- * {@link MIN_LENGTH_MM} up to maxRaMm (the Ra at the largest scallop height; error code
- * `beyond-roughness` with that limit, or with 0 for a flat end lying on a plane, which leaves no
- * scallop; `wall-only` when the tool cuts a step in this posture).
+ * {@link MIN_LENGTH_MM} to below maxRaMm (the supremum, reached only at the scallop height where
+ * adjacent passes start to leave a wall; error code `beyond-max-ra` with that limit, or with 0
+ * for a flat end lying on a plane, which leaves no scallop; `wall-only` when the tool cuts a step
+ * in this posture). The one validation of a target Ra, for the command line and the page.
+ * @param maxRa the largest Ra of a valid pass (maxRaMm; the page passes a cached one).
  */
-export function validateTargetRa(raw: RawTargetRaInput): Validation<TargetRaInput, AnyInputError> {
-  const v = validatePassAnd(raw, 'Ra');
+export function validateTargetRa(
+  raw: RawTargetRaInput,
+  maxRa: (pass: PassInput) => number = (p) => maxRaMm(p, p.pattern, p.surface),
+): Validation<TargetRaInput, AnyInputError> {
+  const v = validatePassAnd(raw, 'ra');
   const errors = [...v.errors];
   const ra = v.value;
   if (ra !== undefined && !v.gouges) {
-    if (ra <= 0) errors.push(inputError('Ra', 'not-positive', v.shown));
-    else if (ra < MIN_LENGTH_MM) errors.push(inputError('Ra', 'too-small', v.shown, MIN_LENGTH_MM));
+    if (ra <= 0) errors.push(inputError('ra', 'not-positive', v.shown));
+    else if (ra < MIN_LENGTH_MM) errors.push(inputError('ra', 'too-small', v.shown, MIN_LENGTH_MM));
     else if (v.pass !== null) {
       const p = v.pass;
       const flatLying = p.surface.kind === 'plane' && leavesNoScallop(p);
       if (!flatLying && !(scallopHeightLimits(p, p.surface).limitMm >= MIN_LENGTH_MM)) {
         // As validateForward: in this posture the tool cuts a step, no scallop forms.
-        errors.push(inputError('Ra', 'wall-only', v.shown));
+        errors.push(inputError('ra', 'wall-only', v.shown));
       } else {
-        const max = flatLying ? 0 : maxRaMm(p, p.pattern, p.surface);
-        if (!(ra <= max)) errors.push(inputError('Ra', 'beyond-roughness', v.shown, max));
+        const max = flatLying ? 0 : maxRa(p);
+        if (!(ra < max)) errors.push(inputError('ra', 'beyond-max-ra', v.shown, max));
       }
     }
   }

@@ -11,10 +11,20 @@ import { type FlankLimits, flankAtHeight, flankLimits, type PostureShape, shapeO
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from './units';
 
 /** Names of the user-facing inputs. */
-export type FieldName = 'R' | 'Rcr' | 'rho' | 'tilt' | 'pattern' | 'surfaceRadius' | 'surfaceAxis' | 'h' | 'interval';
+export type FieldName =
+  | 'R'
+  | 'Rcr'
+  | 'rho'
+  | 'tilt'
+  | 'pattern'
+  | 'surfaceRadius'
+  | 'surfaceAxis'
+  | 'h'
+  | 'interval'
+  | 'ra';
 
-/** Every field an error can name: the fields above and a target roughness `Ra` (validateTargetRa). */
-export type AnyFieldName = FieldName | 'Ra';
+/** Every field an error can name (the target roughness `ra` included; kept as an alias). */
+export type AnyFieldName = FieldName;
 
 /** Why a field was rejected. */
 export type InputErrorCode =
@@ -34,7 +44,7 @@ export type InputErrorCode =
   | 'shank-cuts'
   | 'beyond-diameter'
   | 'beyond-interval'
-  | 'beyond-roughness'
+  | 'beyond-max-ra'
   | 'wall-only';
 
 /** One rejected field, as data; `message` is its description in mm (describeInputError). */
@@ -145,7 +155,7 @@ export const FIELD_LABELS: Readonly<Record<AnyFieldName, string>> = {
   surfaceAxis: 'Cylinder axis',
   h: 'Scallop height h',
   interval: 'Step-over L',
-  Ra: 'Roughness Ra',
+  ra: 'Roughness Ra',
 };
 
 /** Options of {@link describeInputError}. */
@@ -164,7 +174,7 @@ function isLength(field: AnyFieldName): boolean {
     field === 'h' ||
     field === 'interval' ||
     field === 'surfaceRadius' ||
-    field === 'Ra'
+    field === 'ra'
   );
 }
 
@@ -222,10 +232,10 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
       return `${label} must be below the tool ${half ? 'radius R' : 'diameter 2R'} = ${limit} ${got}; at or beyond it adjacent passes leave a wall.`;
     case 'wall-only':
       return `${label} cannot be answered ${got}: in this posture the tool cuts a step at any step-over (a flank or the shank rises straight from the contact, as a tilted flat end does), so no scallop forms. Add a corner radius, or lead, or less tilt.`;
-    case 'beyond-roughness':
+    case 'beyond-max-ra':
       return e.limit === null || !(e.limit > 0)
-        ? `${label} cannot be reached ${got}: this tool in this posture leaves no scallop (a flat bottom lying on the surface), so Ra is 0 at any step-over up to its diameter.`
-        : `${label} must be at most ${limit} ${got}, the largest this tool, posture and pattern leave on this surface (at the largest scallop height before adjacent passes leave a wall).`;
+        ? `${label} cannot be reached ${got}: this tool in this posture leaves no scallop (a flat bottom lying on the surface), so Ra = 0 at any step-over up to its diameter.`
+        : `${label} must be below ${limit} ${got}, the largest Ra this tool, posture and pattern leave on this surface; passes far enough apart to leave more leave a wall, not a scallop.`;
     case 'beyond-interval':
       return `${label} must be below ${limit} ${got}, the widest step-over these flanks allow; at or beyond it adjacent passes leave a wall, not a scallop.`;
   }

@@ -1,8 +1,18 @@
 /**
- * three.js scene of the inclined tool, its section circle and the h pseudo plane.
- * Objects are built once and updated in place; a frame is rendered only when something
- * changed (camera move, new geometry, resize), never in a busy loop.
- * Frame: the paper's (X feed, Y cross-feed, Z up), lengths in mm.
+ * three.js scene of the tool in its posture, its neighbouring passes, the cusp sections and the
+ * h pseudo plane. Frame: the contact of this pass at the origin, X feed, Y cross-feed, Z up (mm).
+ *
+ * Its contract:
+ *  - objects are built once and updated in place; nothing is rebuilt per update, so nothing
+ *    leaks (the axes are scaled, CSS2D labels are created once and only shown or hidden);
+ *  - a frame is rendered only when something changed (camera move, new geometry, resize,
+ *    a restored WebGL context), never in a busy loop;
+ *  - the camera is fitted on the first geometry and refitted, keeping the viewing direction,
+ *    whenever the tool radius changes;
+ *  - after `webglcontextlost` it waits; on `webglcontextrestored` (three.js rebuilds its GL
+ *    state) it draws again without any input;
+ *  - `dispose()` disconnects the resize observer and the canvas listeners and frees every
+ *    GPU resource and DOM node it made.
  */
 import {
   AmbientLight,
@@ -16,9 +26,11 @@ import {
   Line,
   LineBasicMaterial,
   LineLoop,
+  type Material,
   Mesh,
   MeshBasicMaterial,
   MeshStandardMaterial,
+  type Object3D,
   PerspectiveCamera,
   PlaneGeometry,
   Points,
@@ -31,13 +43,43 @@ import {
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import { toolMeshIndices } from '../core/toolMesh';
-import type { SceneGeometry, TraceFrame } from '../worker/protocol';
+import type { Vec3 } from '../core/vec';
+import {
+  type CuspGeometry,
+  LOOP_MAX_POINTS,
+  type SceneGeometry,
+  TOOL_RADIAL_SEGMENTS,
+  type TraceFrame,
+} from '../worker/protocol';
 
 export type CameraPreset = 'iso' | 'feed' | 'top';
 
+/** Texts of the scene's labels, in the user's unit (the scene knows no units). */
+export interface SceneLabels {
+  /** The step-over dimension, e.g. `L = 2.8872 mm`. */
+  readonly interval: string;
+  /** The contact offset dimension, e.g. `y0 = 0.1234 mm`, or null to hide it (no offset). */
+  readonly contactOffset: string | null;
+}
+
 const SECTION_POINTS = 96;
-const LOOP_CAPACITY = 1024;
-const RADIAL_SEGMENTS = 64;
+const CANDIDATE_CAPACITY = 64;
+const BACKGROUND = 0xf7f8fa;
+const COLOURS = {
+  section: 0xff7a00,
+  loop: 0xd6336c,
+  axis: 0x444444,
+  dimension: 0x111111,
+  contact: 0x1b7f3b,
+  centre: 0x374151,
+  pHp: 0xd6336c,
+  trace: 0x7c3aed,
+  path: 0x1b7f3b,
+  tool: 0xb8c7d9,
+  ghost: 0x6c7a89,
+  plane: 0xc9ced6,
+  hPlane: 0x2f80ed,
+} as const;
 
 /** The WebGL renderer's name says it rasterises in software (checked on a throwaway context). */
 function isSoftwareWebGL(): boolean {
@@ -70,7 +112,7 @@ function setLine(line: Line, points: ArrayLike<number>, count: number): void {
 }
 
 /** Points of a circle (flat xyz) around `centre` in the plane with unit normal `normal`. */
-function circlePoints(centre: readonly number[], normal: readonly number[], radius: number): Float32Array {
+function circlePoints(centre: Vec3, normal: Vec3, radius: number): Float32Array {
   const n = new Vector3(normal[0], normal[1], normal[2]);
   const u = new Vector3(0, 0, 1).cross(n);
   if (u.lengthSq() < 1e-12) u.set(1, 0, 0);
@@ -81,18 +123,60 @@ function circlePoints(centre: readonly number[], normal: readonly number[], radi
     const a = (2 * Math.PI * i) / SECTION_POINTS;
     const c = Math.cos(a) * radius;
     const s = Math.sin(a) * radius;
-    pts[3 * i] = (centre[0] as number) + c * u.x + s * v.x;
-    pts[3 * i + 1] = (centre[1] as number) + c * u.y + s * v.y;
-    pts[3 * i + 2] = (centre[2] as number) + c * u.z + s * v.z;
+    pts[3 * i] = centre[0] + c * u.x + s * v.x;
+    pts[3 * i + 1] = centre[1] + c * u.y + s * v.y;
+    pts[3 * i + 2] = centre[2] + c * u.z + s * v.z;
   }
   return pts;
 }
 
+/**
+ * A label anchored at a 3D point. three.js positions the outer element (its inline transform is
+ * set through the CSSOM); the inner one carries the class, so a stylesheet can offset it.
+ */
 function label(text: string, className: string): CSS2DObject {
-  const div = document.createElement('div');
-  div.className = `scene-label ${className}`;
-  div.textContent = text;
-  return new CSS2DObject(div);
+  const anchor = document.createElement('div');
+  anchor.className = 'scene-label-anchor';
+  const inner = document.createElement('span');
+  inner.className = `scene-label ${className}`;
+  inner.textContent = text;
+  anchor.append(inner);
+  return new CSS2DObject(anchor);
+}
+
+/** Sets a label's text (the inner element's). */
+function setLabel(object: CSS2DObject, text: string): void {
+  const inner = object.element.firstElementChild;
+  if (inner && inner.textContent !== text) inner.textContent = text;
+}
+
+/** One cusp's drawing: its section circle, its P_hp and the torus / plane curves at its height. */
+class CuspMarks {
+  readonly section = lineOf(SECTION_POINTS, COLOURS.section, true);
+  readonly loops = [lineOf(LOOP_MAX_POINTS, COLOURS.loop, true), lineOf(LOOP_MAX_POINTS, COLOURS.loop, true)];
+  readonly point: Mesh;
+
+  constructor(dot: SphereGeometry, text: string, className: string) {
+    this.point = new Mesh(dot, new MeshBasicMaterial({ color: COLOURS.pHp, depthTest: false }));
+    this.point.renderOrder = 11;
+    this.point.add(label(text, className));
+  }
+
+  objects(): Object3D[] {
+    return [this.section, ...this.loops, this.point];
+  }
+
+  show(c: CuspGeometry | null, dotRadius: number): void {
+    this.section.visible = this.point.visible = c !== null;
+    this.loops.forEach((line, i) => {
+      const loop = c?.loops[i];
+      setLine(line, loop ?? [], loop ? loop.length / 3 : 0);
+    });
+    if (c === null) return;
+    setLine(this.section, circlePoints(c.sectionCentre, c.sectionNormal, c.sectionRadiusMm), SECTION_POINTS);
+    this.point.scale.setScalar(dotRadius);
+    this.point.position.set(...c.pHp);
+  }
 }
 
 export class ToolScene {
@@ -103,35 +187,41 @@ export class ToolScene {
   private readonly controls: OrbitControls;
   private readonly toolGeometry = new BufferGeometry();
   private readonly tool: Mesh;
-  private readonly ghost: Mesh;
+  /** The neighbouring passes, at -L and +L (mirrored for zigzag). */
+  private readonly neighbours: Mesh[];
   private readonly designedPlane: Mesh;
   private readonly hPlane: Mesh;
-  private readonly section = lineOf(SECTION_POINTS, 0xff7a00, true);
-  private readonly loops = [lineOf(LOOP_CAPACITY, 0xd6336c, true), lineOf(LOOP_CAPACITY, 0xd6336c, true)];
-  private readonly toolAxis = lineOf(2, 0x444444);
-  private readonly dimension = lineOf(6, 0x111111);
-  private readonly pBase: Mesh;
-  private readonly pHp: Mesh;
-  private readonly pBaseLabel = label('P_base', 'label-pbase');
-  private readonly pHpLabel = label('P_hp', 'label-php');
-  private readonly dimLabel = label('L/2', 'label-dim');
+  private readonly right: CuspMarks;
+  private readonly left: CuspMarks;
+  private readonly toolAxis = lineOf(2, COLOURS.axis);
+  /** Cutter-contact paths of the three passes (lines along X on the plane). */
+  private readonly paths = [lineOf(2, COLOURS.path), lineOf(2, COLOURS.path), lineOf(2, COLOURS.path)];
+  private readonly dimension = lineOf(6, COLOURS.dimension);
+  private readonly offsetDimension = lineOf(4, COLOURS.dimension);
+  private readonly contact: Mesh;
+  private readonly centre: Mesh;
+  private readonly axisFoot: Mesh;
+  private readonly dimLabel = label('L', 'label-dim');
+  private readonly offsetLabel = label('y0', 'label-offset');
   private readonly axes = new Group();
-  private readonly traceSection = lineOf(SECTION_POINTS, 0x7c3aed, true);
-  private readonly candidates = new Points(
-    (() => {
-      const g = new BufferGeometry();
-      g.setAttribute('position', new BufferAttribute(new Float32Array(64 * 3), 3));
-      g.setDrawRange(0, 0);
-      return g;
-    })(),
-    new PointsMaterial({ color: 0x7c3aed, size: 6, sizeAttenuation: false, depthTest: false }),
-  );
+  private readonly traceSection = lineOf(SECTION_POINTS, COLOURS.trace, true);
+  private readonly candidates: Points;
   private readonly traceMarker: Mesh;
   private readonly traceLabel = label('', 'label-trace');
+  private readonly resizeObserver: ResizeObserver;
+  private readonly onContextLost = () => {
+    this.contextLost = true;
+  };
+  private readonly onContextRestored = () => {
+    this.contextLost = false;
+    this.requestRender();
+  };
+  private contextLost = false;
   private frameRequested = false;
-  private sectionRadius = 1;
-  private sizeMm = 0;
-  /** Frames rendered so far (read by tests and the benchmark). */
+  private cornerRadiusMm = 1;
+  /** Tool radius the camera was fitted to (0: not yet). */
+  private fittedRadiusMm = 0;
+  /** Frames rendered so far. */
   frames = 0;
   /** Called after each rendered frame. */
   onFrame: (() => void) | null = null;
@@ -145,20 +235,23 @@ export class ToolScene {
     this.softwareRendering = isSoftwareWebGL();
     this.renderer = new WebGLRenderer({ antialias: !this.softwareRendering });
     this.renderer.setPixelRatio(this.softwareRendering ? 1 : Math.min(2, window.devicePixelRatio || 1));
-    this.renderer.setClearColor(new Color(0xf7f8fa));
-    this.renderer.domElement.setAttribute('data-testid', 'scene-canvas');
-    this.renderer.domElement.setAttribute(
+    this.renderer.setClearColor(new Color(BACKGROUND));
+    const canvas = this.renderer.domElement;
+    canvas.setAttribute('data-testid', 'scene-canvas');
+    canvas.setAttribute(
       'aria-label',
-      '3D view of the inclined tool, its section circle and the h pseudo plane',
+      '3D view of the tool in its posture, its neighbouring passes and the cusp sections',
     );
-    this.renderer.domElement.setAttribute('role', 'img');
-    container.appendChild(this.renderer.domElement);
+    canvas.setAttribute('role', 'img');
+    canvas.addEventListener('webglcontextlost', this.onContextLost);
+    canvas.addEventListener('webglcontextrestored', this.onContextRestored);
+    container.appendChild(canvas);
     this.labels = new CSS2DRenderer();
     this.labels.domElement.className = 'scene-labels';
     container.appendChild(this.labels.domElement);
 
     this.camera.up.set(0, 0, 1);
-    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls = new OrbitControls(this.camera, canvas);
     this.controls.enableDamping = false;
     this.controls.addEventListener('change', () => this.requestRender());
 
@@ -168,11 +261,11 @@ export class ToolScene {
     this.scene.add(sun);
 
     this.toolGeometry.setAttribute('position', new BufferAttribute(new Float32Array(0), 3));
-    this.toolGeometry.setIndex(new BufferAttribute(toolMeshIndices(RADIAL_SEGMENTS), 1));
+    this.toolGeometry.setIndex(new BufferAttribute(toolMeshIndices(TOOL_RADIAL_SEGMENTS), 1));
     this.tool = new Mesh(
       this.toolGeometry,
       new MeshStandardMaterial({
-        color: 0xb8c7d9,
+        color: COLOURS.tool,
         metalness: 0.3,
         roughness: 0.45,
         transparent: true,
@@ -181,52 +274,98 @@ export class ToolScene {
         depthWrite: false,
       }),
     );
-    this.ghost = new Mesh(
-      this.toolGeometry,
-      new MeshBasicMaterial({ color: 0x6c7a89, wireframe: true, transparent: true, opacity: 0.12 }),
-    );
+    const ghost = new MeshBasicMaterial({ color: COLOURS.ghost, wireframe: true, transparent: true, opacity: 0.12 });
+    this.neighbours = [new Mesh(this.toolGeometry, ghost), new Mesh(this.toolGeometry, ghost)];
+    const planeGeometry = new PlaneGeometry(1, 1);
     this.designedPlane = new Mesh(
-      new PlaneGeometry(1, 1),
-      new MeshBasicMaterial({ color: 0xc9ced6, side: DoubleSide, transparent: true, opacity: 0.55, depthWrite: false }),
+      planeGeometry,
+      new MeshBasicMaterial({
+        color: COLOURS.plane,
+        side: DoubleSide,
+        transparent: true,
+        opacity: 0.55,
+        depthWrite: false,
+      }),
     );
     this.hPlane = new Mesh(
-      new PlaneGeometry(1, 1),
-      new MeshBasicMaterial({ color: 0x2f80ed, side: DoubleSide, transparent: true, opacity: 0.18, depthWrite: false }),
+      planeGeometry,
+      new MeshBasicMaterial({
+        color: COLOURS.hPlane,
+        side: DoubleSide,
+        transparent: true,
+        opacity: 0.18,
+        depthWrite: false,
+      }),
     );
     const dot = new SphereGeometry(1, 16, 12);
-    this.pBase = new Mesh(dot, new MeshBasicMaterial({ color: 0x1b7f3b, depthTest: false }));
-    this.pHp = new Mesh(dot, new MeshBasicMaterial({ color: 0xd6336c, depthTest: false }));
-    this.pBase.renderOrder = this.pHp.renderOrder = 11;
-    this.pBase.add(this.pBaseLabel);
-    this.pHp.add(this.pHpLabel);
+    const marker = (color: number, text: string | null, className: string) => {
+      const m = new Mesh(dot, new MeshBasicMaterial({ color, depthTest: false }));
+      m.renderOrder = 11;
+      if (text !== null) m.add(label(text, className));
+      return m;
+    };
+    this.contact = marker(COLOURS.contact, 'CC (P_base)', 'label-pbase');
+    this.centre = marker(COLOURS.centre, 'O', 'label-centre');
+    this.axisFoot = marker(COLOURS.axis, null, '');
+    this.right = new CuspMarks(dot, 'P_hp R', 'label-php');
+    this.left = new CuspMarks(dot, 'P_hp L', 'label-php label-php-left');
+    this.dimension.add(this.dimLabel);
+    this.offsetDimension.add(this.offsetLabel);
+    this.buildAxes();
     this.scene.add(
       this.designedPlane,
       this.hPlane,
       this.tool,
-      this.ghost,
-      this.section,
-      ...this.loops,
+      ...this.neighbours,
+      ...this.right.objects(),
+      ...this.left.objects(),
+      ...this.paths,
       this.toolAxis,
       this.dimension,
-      this.pBase,
-      this.pHp,
+      this.offsetDimension,
+      this.contact,
+      this.centre,
+      this.axisFoot,
       this.axes,
     );
-    this.dimension.add(this.dimLabel);
-    this.traceMarker = new Mesh(dot, new MeshBasicMaterial({ color: 0x7c3aed, depthTest: false }));
+    this.traceMarker = marker(COLOURS.trace, null, '');
     this.traceMarker.renderOrder = 12;
     this.traceMarker.add(this.traceLabel);
+    const candidateGeometry = new BufferGeometry();
+    candidateGeometry.setAttribute('position', new BufferAttribute(new Float32Array(CANDIDATE_CAPACITY * 3), 3));
+    candidateGeometry.setDrawRange(0, 0);
+    this.candidates = new Points(
+      candidateGeometry,
+      new PointsMaterial({ color: COLOURS.trace, size: 6, sizeAttenuation: false, depthTest: false }),
+    );
     this.candidates.frustumCulled = false;
     this.candidates.renderOrder = 12;
     this.scene.add(this.traceSection, this.candidates, this.traceMarker);
-    this.showTraceFrame(null);
+    this.traceSection.visible = this.candidates.visible = this.traceMarker.visible = false;
 
-    new ResizeObserver(() => this.resize()).observe(container);
+    this.resizeObserver = new ResizeObserver(() => this.resize());
+    this.resizeObserver.observe(container);
     this.resize();
   }
 
+  /** Unit arrows, built once; the group is scaled with the tool. */
+  private buildAxes(): void {
+    const specs: Array<[Vector3, number, string]> = [
+      [new Vector3(1, 0, 0), 0xd62828, 'X (feed)'],
+      [new Vector3(0, 1, 0), 0x2a9d8f, 'Y'],
+      [new Vector3(0, 0, 1), 0x1d4ed8, 'Z'],
+    ];
+    for (const [dir, color, text] of specs) {
+      const arrow = new ArrowHelper(dir, new Vector3(0, 0, 0), 1, color, 0.12, 0.06);
+      const tag = label(text, 'label-axis');
+      tag.position.set(0, 1.08, 0); // ArrowHelper's local +Y is its direction
+      arrow.add(tag);
+      this.axes.add(arrow);
+    }
+  }
+
   /** Shows a solved state. Everything is updated in place. */
-  update(g: SceneGeometry, dimensionText: string): void {
+  update(g: SceneGeometry, labels: SceneLabels): void {
     const attr = this.toolGeometry.getAttribute('position') as BufferAttribute;
     if (attr.array.length !== g.toolPositions.length) {
       this.toolGeometry.setAttribute('position', new BufferAttribute(new Float32Array(g.toolPositions), 3));
@@ -236,61 +375,81 @@ export class ToolScene {
     }
     this.toolGeometry.computeVertexNormals();
     this.toolGeometry.computeBoundingSphere();
-    this.ghost.position.set(0, 2 * g.halfIntervalMm, 0);
-
-    const R = g.toolRadiusMm;
-    const size = 2.4 * R + 2 * g.halfIntervalMm;
-    this.designedPlane.scale.set(size, size, 1);
-    this.designedPlane.position.set(0, g.halfIntervalMm, 0);
-    this.hPlane.scale.set(size, size, 1);
-    this.hPlane.position.set(0, g.halfIntervalMm, g.scallopHeightMm);
-
-    // Section circle through P_hp: radius Rcr in the plane normal to the ring tangent.
-    this.sectionRadius = g.sectionRadiusMm;
-    const pts = circlePoints(g.sectionCentre, g.sectionNormal, g.sectionRadiusMm);
-    setLine(this.section, pts, SECTION_POINTS);
-
-    this.loops.forEach((line, i) => {
-      const loop = g.intersectionLoops[i];
-      setLine(line, loop ?? [], loop ? loop.length / 3 : 0);
+    const L = g.intervalMm;
+    const mirror = g.pattern === 'zigzag' ? -1 : 1;
+    this.neighbours.forEach((m, i) => {
+      m.position.set(0, i === 0 ? -L : L, 0);
+      m.scale.set(1, mirror, 1);
     });
 
-    const axisLen = 2.2 * R;
-    setLine(
-      this.toolAxis,
-      [
-        g.toolCentre[0] - 0.3 * R * g.toolAxis[0],
-        0,
-        g.toolCentre[2] - 0.3 * R * g.toolAxis[2],
-        g.toolCentre[0] + axisLen * g.toolAxis[0],
-        0,
-        g.toolCentre[2] + axisLen * g.toolAxis[2],
-      ],
-      2,
-    );
-
-    // Dimension line for L/2 from the tool centre line (Y = 0) to P_hp, with end ticks.
-    const [x, y, z] = g.pHp;
-    const tick = 0.08 * R;
-    setLine(this.dimension, [x, 0, z + tick, x, 0, z, x, y, z, x, y, z + tick, x, y, z, x, 0, z], 6);
-    this.dimLabel.position.set(x, y / 2, z + 3 * tick);
-    this.dimLabel.element.textContent = dimensionText;
+    const R = g.toolRadiusMm;
+    this.cornerRadiusMm = g.cornerRadiusMm;
+    const sizeX = 2.8 * R;
+    const sizeY = 2 * L + 2.4 * R;
+    this.designedPlane.scale.set(sizeX, sizeY, 1);
+    this.designedPlane.position.set(0, 0, 0);
+    this.hPlane.scale.set(sizeX, sizeY, 1);
+    this.hPlane.position.set(0, 0, g.scallopHeightMm);
 
     const dotR = 0.035 * R;
-    this.pBase.scale.setScalar(dotR);
-    this.pBase.position.set(...g.pBase);
-    this.pHp.scale.setScalar(dotR);
-    this.pHp.position.set(...g.pHp);
+    this.right.show(g.right, dotR);
+    this.left.show(g.left, dotR);
 
-    if (Math.abs(R - this.sizeMm) > 1e-9) {
-      this.rebuildAxes(R);
-      const first = this.sizeMm === 0;
-      this.sizeMm = R;
-      if (first) this.setCamera('iso');
-    }
+    // Tool axis from where it meets the plane (its foot) up the shank; the contact lies off it.
+    const [ox, oy, oz] = g.toolCentre;
+    const [ax, ay, az] = g.toolAxis;
+    const down = oz / az;
+    const foot: Vec3 = [ox - down * ax, oy - down * ay, 0];
+    const up = 2.2 * R;
+    setLine(this.toolAxis, [...foot, ox + up * ax, oy + up * ay, oz + up * az], 2);
+    this.axisFoot.scale.setScalar(0.6 * dotR);
+    this.axisFoot.position.set(...foot);
+    this.centre.scale.setScalar(0.8 * dotR);
+    this.centre.position.set(ox, oy, oz);
+    this.contact.scale.setScalar(dotR);
+    this.contact.position.set(0, 0, 0);
+
+    // The cutter-contact paths of the three passes, and the step-over L between two of them.
+    const xFrom = -1.3 * R;
+    const xTo = 1.3 * R;
+    this.paths.forEach((line, i) => {
+      const y = (i - 1) * L;
+      setLine(line, [xFrom, y, 0, xTo, y, 0], 2);
+    });
+    const x = xFrom;
+    const tick = 0.08 * R;
+    setLine(this.dimension, [x, 0, tick, x, 0, 0, x, L, 0, x, L, tick, x, L, 0, x, 0, 0], 6);
+    this.dimLabel.position.set(x, L / 2, 2 * tick);
+    setLabel(this.dimLabel, labels.interval);
+    // y0: from the foot of O's drop to the contact, across the feed.
+    this.offsetDimension.visible = labels.contactOffset !== null;
+    setLine(this.offsetDimension, [ox, oy, oz, ox, oy, 0, ox, oy, 0, ox, 0, 0], 4);
+    this.offsetLabel.position.set(ox, oy / 2, -tick);
+    setLabel(this.offsetLabel, labels.contactOffset ?? '');
+
+    this.axes.scale.setScalar(1.6 * R);
+    if (Math.abs(R - this.fittedRadiusMm) > 1e-12 * R) this.fit(R);
     // New results are drawn at once rather than on the next animation frame: the browser
     // presents the frame at its next vsync either way, and this saves up to one frame of latency.
     this.renderNow();
+  }
+
+  /**
+   * Fits the camera to a tool of radius R: the first time from the isometric preset, afterwards
+   * scaling target and distance with R so the viewing direction stays as the user left it.
+   */
+  private fit(R: number): void {
+    const before = this.fittedRadiusMm;
+    this.fittedRadiusMm = R;
+    if (before === 0) {
+      this.setCamera('iso');
+      return;
+    }
+    const k = R / before;
+    const offset = this.camera.position.clone().sub(this.controls.target).multiplyScalar(k);
+    this.controls.target.multiplyScalar(k);
+    this.camera.position.copy(this.controls.target).add(offset);
+    this.controls.update();
   }
 
   /** Shows one frame of the paper's procedure (section, candidates, point), or hides the replay. */
@@ -300,12 +459,10 @@ export class ToolScene {
     this.traceSection.visible = on;
     this.candidates.visible = on;
     this.traceMarker.visible = on && frame.point !== null;
-    this.traceLabel.visible = this.traceMarker.visible;
-    this.traceLabel.element.style.display = this.traceMarker.visible ? '' : 'none';
     if (frame) {
       setLine(
         this.traceSection,
-        circlePoints(frame.sectionCentre, frame.sectionNormal, this.sectionRadius),
+        circlePoints(frame.sectionCentre, frame.sectionNormal, this.cornerRadiusMm),
         SECTION_POINTS,
       );
       const attr = this.candidates.geometry.getAttribute('position') as BufferAttribute;
@@ -315,27 +472,29 @@ export class ToolScene {
       this.candidates.geometry.setDrawRange(0, n);
       if (frame.point) {
         this.traceMarker.position.set(...frame.point);
-        this.traceMarker.scale.setScalar(0.03 * (this.sizeMm || 1));
-        this.traceLabel.element.textContent =
+        this.traceMarker.scale.setScalar(0.03 * (this.fittedRadiusMm || 1));
+        setLabel(
+          this.traceLabel,
           frame.phase === 'converged'
             ? 'P_hp (converged)'
             : frame.phase === 'search'
               ? 'best P_hp[i]'
-              : 'single contact';
+              : 'single contact',
+        );
       }
     }
     this.requestRender();
   }
 
-  /** Marks the view as showing the last valid state (or not). */
+  /** Marks the view as not answering the inputs on screen (or answering them again). */
   setStale(stale: boolean): void {
     this.container.classList.toggle('stale', stale);
   }
 
   setCamera(preset: CameraPreset): void {
-    const R = this.sizeMm || 3;
-    const target = new Vector3(0, 0.45 * R, 0.25 * R);
-    const d = 3.2 * R;
+    const R = this.fittedRadiusMm || 3;
+    const target = new Vector3(0, 0, 0.3 * R);
+    const d = 4.2 * R;
     if (preset === 'iso') this.camera.position.set(target.x + d * 0.75, target.y - d * 0.85, target.z + d * 0.6);
     else if (preset === 'feed') {
       // Looking back against the feed, so that Y runs to the right as in the profile view.
@@ -359,30 +518,11 @@ export class ToolScene {
 
   private renderNow(): void {
     this.frameRequested = false;
+    if (this.contextLost) return; // drawn again on webglcontextrestored
     this.renderer.render(this.scene, this.camera);
     this.labels.render(this.scene, this.camera);
     this.frames++;
     this.onFrame?.();
-  }
-
-  private rebuildAxes(R: number): void {
-    for (const child of [...this.axes.children]) {
-      this.axes.remove(child);
-      (child as ArrowHelper).dispose();
-    }
-    const len = 1.6 * R;
-    const specs: Array<[Vector3, number, string]> = [
-      [new Vector3(1, 0, 0), 0xd62828, 'X (feed)'],
-      [new Vector3(0, 1, 0), 0x2a9d8f, 'Y'],
-      [new Vector3(0, 0, 1), 0x1d4ed8, 'Z'],
-    ];
-    for (const [dir, color, text] of specs) {
-      const arrow = new ArrowHelper(dir, new Vector3(0, 0, 0), len, color, 0.12 * len, 0.06 * len);
-      const tag = label(text, 'label-axis');
-      tag.position.set(0, len * 1.08, 0); // ArrowHelper's local +Y is its direction
-      arrow.add(tag);
-      this.axes.add(arrow);
-    }
   }
 
   private resize(): void {
@@ -393,5 +533,30 @@ export class ToolScene {
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
     this.requestRender();
+  }
+
+  /** Frees everything the scene made: observers, listeners, GPU resources and DOM nodes. */
+  dispose(): void {
+    this.resizeObserver.disconnect();
+    this.frameRequested = false;
+    const canvas = this.renderer.domElement;
+    canvas.removeEventListener('webglcontextlost', this.onContextLost);
+    canvas.removeEventListener('webglcontextrestored', this.onContextRestored);
+    this.controls.dispose();
+    const geometries = new Set<BufferGeometry>();
+    const materials = new Set<Material>();
+    this.scene.traverse((o) => {
+      const drawable = o as Partial<Mesh>;
+      if (drawable.geometry) geometries.add(drawable.geometry);
+      const m = drawable.material;
+      if (Array.isArray(m)) for (const x of m) materials.add(x);
+      else if (m) materials.add(m);
+    });
+    for (const g of geometries) g.dispose();
+    for (const m of materials) m.dispose();
+    this.renderer.dispose();
+    canvas.remove();
+    this.labels.domElement.remove();
+    this.onFrame = null;
   }
 }

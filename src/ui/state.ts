@@ -2,36 +2,46 @@
  * Calculator state as the user typed it, its URL form, and unit conversion. Pure (no DOM):
  * tested in Node. Field values are kept as text so an invalid entry is never lost.
  */
+import { formatInputNumber, fromMm, type LengthUnit, toMm } from '../core/units';
+import type { PassPattern } from '../core/validate';
 import type { SolveMode } from '../worker/protocol';
 
-export type Unit = 'mm' | 'in';
-export type FieldKey = 'R' | 'Rcr' | 'rho' | 'h' | 'L';
+export type Unit = LengthUnit;
+export type FieldKey = 'R' | 'Rcr' | 'rho' | 'tilt' | 'h' | 'L' | 'ra';
+/** What the forward problem is given: a scallop height h, or a roughness Ra (h then follows). */
+export type Target = 'h' | 'ra';
 
 export interface CalculatorState {
   readonly unit: Unit;
   readonly mode: SolveMode;
-  /** Text of each field in the current unit (rho in degrees). */
+  readonly pattern: PassPattern;
+  /** Forward mode's given value: h or Ra. */
+  readonly target: Target;
+  /** Text of each field in the current unit (angles in degrees). */
   readonly fields: Readonly<Record<FieldKey, string>>;
 }
 
-export const MM_PER_INCH = 25.4;
-
-/** Defaults in mm: the paper's Tool 1, condition 1 (L is its exact step-over, rounded). */
+/** Defaults in mm: the paper's Tool 1, condition 1 (L is its exact step-over, rounded), no tilt. */
 export const DEFAULT_FIELDS_MM: Readonly<Record<FieldKey, string>> = {
   R: '3',
   Rcr: '1',
   rho: '5',
+  tilt: '0',
   h: '0.05',
   L: '2.9',
+  ra: '0.0125',
 };
 
-export const LENGTH_FIELDS: readonly FieldKey[] = ['R', 'Rcr', 'h', 'L'];
-export const FIELD_KEYS: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'h', 'L'];
+export const FIELD_KEYS: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'tilt', 'h', 'ra', 'L'];
 
-/** Formats a number for a field: at most 6 significant digits, no exponent for usual sizes. */
+/** True for the fields that hold a length (converted with the unit); angles are degrees. */
+export function isLengthField(key: FieldKey): boolean {
+  return key !== 'rho' && key !== 'tilt';
+}
+
+/** Formats a number for a field: up to 6 significant digits, no float noise, no exponent for usual sizes. */
 export function formatField(value: number): string {
-  if (!Number.isFinite(value)) return '';
-  return String(Number(value.toPrecision(6)));
+  return Number.isFinite(value) ? formatInputNumber(value) : '';
 }
 
 const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
@@ -44,12 +54,24 @@ export function parseField(text: string): number | null {
   return Number.isFinite(v) ? v : null;
 }
 
+/** A field's value in mm (lengths) or degrees (angles), or its text when it is not a number. */
+export function fieldInMm(state: CalculatorState, key: FieldKey): number | string {
+  const v = parseField(state.fields[key]);
+  if (v === null) return state.fields[key];
+  return isLengthField(key) ? toMm(v, state.unit) : v;
+}
+
+/** A value in mm or degrees as the text of a field in `unit`. */
+export function fieldText(key: FieldKey, valueMm: number, unit: Unit): string {
+  return formatField(isLengthField(key) ? fromMm(valueMm, unit) : valueMm);
+}
+
 /** Converts one field's text between units (angles unchanged, invalid text kept as is). */
 export function convertField(key: FieldKey, text: string, from: Unit, to: Unit): string {
-  if (from === to || key === 'rho') return text;
+  if (from === to || !isLengthField(key)) return text;
   const v = parseField(text);
   if (v === null) return text;
-  return formatField(from === 'mm' ? v / MM_PER_INCH : v * MM_PER_INCH);
+  return formatField(fromMm(toMm(v, from), to));
 }
 
 export function convertState(state: CalculatorState, to: Unit): CalculatorState {
@@ -59,13 +81,26 @@ export function convertState(state: CalculatorState, to: Unit): CalculatorState 
 }
 
 export function defaultState(unit: Unit = 'mm', mode: SolveMode = 'forward'): CalculatorState {
-  const mm: CalculatorState = { unit: 'mm', mode, fields: DEFAULT_FIELDS_MM };
+  const mm: CalculatorState = { unit: 'mm', mode, pattern: 'one-way', target: 'h', fields: DEFAULT_FIELDS_MM };
   return unit === 'mm' ? mm : convertState(mm, unit);
 }
 
-/** Converts a field's value to mm (or degrees for rho). */
-export function toMm(key: FieldKey, value: number, unit: Unit): number {
-  return unit === 'in' && key !== 'rho' ? value * MM_PER_INCH : value;
+/** A state with one field's text replaced. */
+export function withField(state: CalculatorState, key: FieldKey, text: string): CalculatorState {
+  return { ...state, fields: { ...state.fields, [key]: text } };
+}
+
+/** A state with fields set from values in mm and degrees (presets, the paper's conditions). */
+export function withValues(
+  state: CalculatorState,
+  values: Partial<Readonly<Record<FieldKey, number>>>,
+): CalculatorState {
+  const fields = { ...state.fields };
+  for (const key of FIELD_KEYS) {
+    const v = values[key];
+    if (v !== undefined) fields[key] = fieldText(key, v, state.unit);
+  }
+  return { ...state, fields };
 }
 
 export interface ParsedUrl {
@@ -77,10 +112,11 @@ export interface ParsedUrl {
 }
 
 /**
- * Reads the state from a query string (`?R=3&Rcr=1&rho=5&h=0.05&unit=mm`, plus `mode=inverse&L=`,
- * `embed=1`). A present but invalid value, and a missing one when others are given, falls back
- * to its default with a notice. Cross-field rules are left to the calculator's own validation,
- * which shows them next to the fields.
+ * Reads the state from a query string (`?R=3&Rcr=1&rho=5&h=0.05&unit=mm`, plus `tilt=`,
+ * `pattern=zigzag`, `mode=inverse&L=`, `target=ra&ra=`, `embed=1`). A present but invalid value, and a missing one
+ * when others are given, falls back to its default with a notice (tilt and pattern have defaults
+ * and are never missing). Cross-field rules are left to the calculator's own validation, which
+ * shows them next to the fields.
  */
 export function parseUrl(search: string): ParsedUrl {
   const params = new URLSearchParams(search);
@@ -94,9 +130,19 @@ export function parseUrl(search: string): ParsedUrl {
   if (modeText === 'inverse') mode = 'inverse';
   else if (modeText !== null && modeText !== 'forward')
     notices.push(`mode="${modeText}" is not forward or inverse; using forward.`);
+  const patternText = params.get('pattern');
+  let pattern: PassPattern = 'one-way';
+  if (patternText === 'zigzag') pattern = 'zigzag';
+  else if (patternText !== null && patternText !== 'one-way')
+    notices.push(`pattern="${patternText.slice(0, 20)}" is not one-way or zigzag; using one-way.`);
+  const targetText = params.get('target');
+  let target: Target = 'h';
+  if (targetText === 'ra') target = 'ra';
+  else if (targetText !== null && targetText !== 'h')
+    notices.push(`target="${targetText.slice(0, 20)}" is not h or ra; using h.`);
   const defaults = defaultState(unit, mode).fields;
   const fields = { ...defaults };
-  const needed: FieldKey[] = ['R', 'Rcr', 'rho', mode === 'forward' ? 'h' : 'L'];
+  const needed: FieldKey[] = ['R', 'Rcr', 'rho', mode === 'forward' ? target : 'L'];
   const anyGiven = FIELD_KEYS.some((k) => params.has(k));
   for (const key of FIELD_KEYS) {
     const text = params.get(key);
@@ -111,16 +157,24 @@ export function parseUrl(search: string): ParsedUrl {
     else fields[key] = text.trim();
   }
   const embed = params.get('embed') === '1' || params.get('embed') === 'true';
-  return { state: { unit, mode, fields }, notices, embed, view: params.get('view') };
+  return { state: { unit, mode, pattern, target, fields }, notices, embed, view: params.get('view') };
 }
 
-/** The query string that records a state (values as typed, in the current unit). */
+/**
+ * The query string that records a state (values as typed, in the current unit). The defaults of
+ * the posture, no tilt and one-way passes, are left out, so the paper's links stay as they were.
+ */
 export function toSearch(state: CalculatorState, extra: Readonly<Record<string, string>> = {}): string {
   const params = new URLSearchParams();
   params.set('R', state.fields.R);
   params.set('Rcr', state.fields.Rcr);
   params.set('rho', state.fields.rho);
-  if (state.mode === 'forward') params.set('h', state.fields.h);
+  if (state.fields.tilt.trim() !== '0') params.set('tilt', state.fields.tilt);
+  if (state.pattern !== 'one-way') params.set('pattern', state.pattern);
+  if (state.mode === 'forward' && state.target === 'ra') {
+    params.set('target', 'ra');
+    params.set('ra', state.fields.ra);
+  } else if (state.mode === 'forward') params.set('h', state.fields.h);
   else {
     params.set('mode', 'inverse');
     params.set('L', state.fields.L);

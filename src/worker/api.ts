@@ -1,301 +1,516 @@
 /**
- * The solver API that runs inside the Web Worker. Pure functions of plain data, so it is
- * tested in Node directly and exposed unchanged through Comlink in solver.worker.ts.
+ * The solver API that runs inside the Web Worker: one function per job, plain data in and out,
+ * so it is tested in Node directly and exposed unchanged through Comlink in solver.worker.ts.
+ *  - `solve`: the exact answer, every procedure beside it, and the 3D scene's geometry;
+ *  - `teach`: the teaching views' data (profiles, sweeps, the traced procedure, formulas' models).
+ * Every reply echoes its request. Inputs are validated again here: a bad request gets a typed
+ * error reply, never an exception.
  */
 import {
+  type Approximation,
   bediHalfInterval,
   bediModel,
+  cornerBallHalfInterval,
+  cornerBallModel,
+  osculatingHalfInterval,
+  osculatingModel,
   redonnetHalfInterval,
   redonnetModel,
   sekineHalfInterval,
   sekineModel,
 } from '../core/approximations';
-import { passGeometry } from '../core/geometry';
-import { compareForward, compareInverse, exactIntervalMm, type ForwardInput, traceProcedure } from '../core/index';
+import { compareForward, compareInverse, type ForwardEstimate, type InverseEstimate } from '../core/compare';
+import type { Surface } from '../core/cylinder';
+import { exactForward } from '../core/exact';
+import { cuspSection, intersectionLoops } from '../core/geometry';
 import { placeTool, ringTangent, sectionCentre } from '../core/placement';
-import { flankAtHeight, shapeOfTool } from '../core/posture';
-import { type PaperTableRow, paperTables, profileCurves, rhoSweep } from '../core/teaching';
+import { contactOffsetMm, type Flank, flankAtHeight, shapeOfTool } from '../core/posture';
+import { APPROXIMATION_KEYS, type ApproximationKey } from '../core/procedures';
+import { forwardOfRaTarget, roughnessSummary, validateRaTarget } from '../core/raTarget';
+import { exactRoughness, exactRoughnessAtInterval, type Roughness } from '../core/roughness';
+import { type PaperTableRow, paperTables, profileCurves, stepOverSweep } from '../core/teaching';
 import { toolMesh } from '../core/toolMesh';
-import { forwardInput, validateForward, validateInverse } from '../core/validate';
-import type {
-  ProcedureKey,
-  ProcedureRow,
-  SceneGeometry,
-  SolveReply,
-  SolveRequest,
-  TeachingData,
-  TraceFrame,
+import { traceProcedure } from '../core/trace';
+import {
+  type ForwardInput,
+  forwardInput,
+  type InputError,
+  type InverseInput,
+  MIN_LENGTH_MM,
+  maxIntervalMm,
+  type ToolInput,
+  validateForward,
+  validateInverse,
+} from '../core/validate';
+import {
+  type Cusp,
+  type CuspGeometry,
+  type ExactSummary,
+  LOOP_SAMPLES,
+  type Loops,
+  type ProcedureNote,
+  type ProcedureRow,
+  type SceneGeometry,
+  type SolveReply,
+  type SolveRequest,
+  type Sweep,
+  type TeachData,
+  type TeachReply,
+  TOOL_RADIAL_SEGMENTS,
+  type TraceFrame,
 } from './protocol';
 
-const PROCEDURES = ['sekine', 'redonnet', 'bedi'] as const;
-
-function toolOf(R: number, Rcr: number, rho: number) {
-  return { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, tiltAngleDeg: 0 };
+/** The request's input validated again (the worker trusts no caller), or its errors. */
+export function revalidate(request: SolveRequest): readonly InputError[] | null {
+  const i = request.input;
+  const tool = {
+    R: i.toolRadiusMm,
+    Rcr: i.cornerRadiusMm,
+    rho: i.leadAngleDeg,
+    tilt: i.tiltAngleDeg,
+    pattern: i.pattern,
+  };
+  const surface = surfaceFields(i.surface);
+  const v =
+    request.mode === 'forward'
+      ? validateForward({ ...tool, ...surface, h: request.input.scallopHeightMm })
+      : request.mode === 'ra'
+        ? validateRaTarget({ ...tool, ...surface, ra: request.input.targetRaMm })
+        : validateInverse({ ...tool, ...surface, interval: request.input.intervalMm });
+  return v.ok ? null : v.errors;
 }
 
-function sceneGeometry(R: number, Rcr: number, rho: number, h: number): SceneGeometry {
-  const tool = toolOf(R, Rcr, rho);
-  const g = passGeometry(tool, h, h, 96);
-  const mesh = toolMesh(tool, 0.4 * R);
+/** A surface as the validators' raw fields (a plane gives none). */
+function surfaceFields(s: Surface): { surfaceRadius?: number; surfaceAxis?: string } {
+  return s.kind === 'plane' ? {} : { surfaceRadius: s.radiusMm, surfaceAxis: s.axis };
+}
+
+function exactOfForward(input: ForwardInput, c: ReturnType<typeof compareForward>): ExactSummary {
+  const e = c.exact;
+  const h = e.cuspHeightMm;
+  const L = e.intervalMm;
+  let right: Cusp;
+  let left: Cusp;
+  if (input.pattern === 'one-way') {
+    right = { yMm: e.halfWidthRightMm, heightMm: h };
+    left = { yMm: -e.halfWidthLeftMm, heightMm: h };
+  } else {
+    // Zigzag: the narrower flank meets its mirror at h, the wider one lower (both at L/2).
+    const other = e.otherCuspHeightMm ?? h;
+    const rightNarrower = e.halfWidthRightMm <= e.halfWidthLeftMm;
+    right = { yMm: L / 2, heightMm: rightNarrower ? h : other };
+    left = { yMm: -L / 2, heightMm: rightNarrower && e.halfWidthRightMm !== e.halfWidthLeftMm ? other : h };
+  }
   return {
-    toolRadiusMm: R,
-    scallopHeightMm: h,
-    halfIntervalMm: exactIntervalMm(forwardInput(tool, 'one-way', h)) / 2,
-    ringAngleRad: g.right.ringAngleRad,
-    toolCentre: g.toolCentre,
-    toolAxis: g.toolAxis,
-    pBase: [0, 0, 0],
-    pHp: g.right.pHp,
-    sectionCentre: g.right.sectionCentre,
-    sectionNormal: g.right.sectionNormal,
-    sectionRadiusMm: g.right.sectionRadiusMm,
-    intersectionLoops: g.loopsRight,
-    profile: g.profile,
-    toolPositions: mesh.positions,
+    pattern: input.pattern,
+    intervalMm: L,
+    halfIntervalMm: e.halfIntervalMm,
+    widthRightMm: e.halfWidthRightMm,
+    widthLeftMm: e.halfWidthLeftMm,
+    contactOffsetMm: e.contactOffsetMm,
+    cuspHeightMm: h,
+    otherCuspHeightMm: e.otherCuspHeightMm,
+    right,
+    left,
+    noScallop: e.noScallop,
+    maxIntervalMm: c.maxIntervalMm,
   };
 }
 
-function deg(rad: number): string {
-  return `${((rad * 180) / Math.PI).toFixed(2)} deg`;
+function exactOfInverse(input: InverseInput, c: ReturnType<typeof compareInverse>): ExactSummary {
+  const e = c.exact;
+  const L = e.intervalMm;
+  const zigzag = input.pattern === 'zigzag';
+  return {
+    pattern: input.pattern,
+    intervalMm: L,
+    halfIntervalMm: L / 2,
+    widthRightMm: e.halfWidthRightMm,
+    widthLeftMm: e.halfWidthLeftMm,
+    contactOffsetMm: e.contactOffsetMm,
+    cuspHeightMm: e.cuspHeightMm,
+    otherCuspHeightMm: e.otherCuspHeightMm,
+    right: { yMm: zigzag ? L / 2 : e.halfWidthRightMm, heightMm: e.rightCuspHeightMm },
+    left: { yMm: zigzag ? -L / 2 : -e.halfWidthLeftMm, heightMm: e.leftCuspHeightMm },
+    noScallop: false,
+    maxIntervalMm: maxIntervalMm(input, input.pattern),
+  };
 }
 
-/** The trace of the paper's procedure as frames for the 3D step-through (right flank; interim). */
-export function traceFrames(input: ForwardInput): TraceFrame[] {
-  const rcr = input.cornerRadiusMm;
-  const trace = traceProcedure(input);
-  const p = trace.placement;
-  const section = (g: number) => ({ sectionCentre: sectionCentre(p, g), sectionNormal: ringTangent(p, g) });
-  const frames: TraceFrame[] = [];
-  let approach = 0;
-  for (const step of trace.steps) {
-    if (step.flank !== 'right') continue;
-    if (step.phase === 'approach') {
-      approach++;
-      const first = approach === 1;
-      frames.push({
-        phase: 'approach',
-        caption: first
-          ? `Step 2 (Eq. 1): start at the section at ring angle gamma = ${deg(step.ringAngleRad)}, where the ring is h/2 above its lowest point; d_s = ${step.dsMm.toFixed(4)} mm against Rcr = ${rcr} mm.`
-          : `Steps 6-11: move along the ring towards d_s = Rcr. Section at gamma = ${deg(step.ringAngleRad)}: d_s = ${step.dsMm.toFixed(4)} mm (Rcr - d_s = ${(rcr - step.dsMm).toExponential(2)} mm).`,
-        ringAngleRad: step.ringAngleRad,
-        dsMm: step.dsMm,
-        ...section(step.ringAngleRad),
-        candidates: [],
-        point: null,
-        bestY: null,
-      });
-    } else if (step.phase === 'single-contact') {
-      frames.push({
-        phase: 'single-contact',
-        caption: step.found
-          ? `Steps 12-14: the section at gamma_scp = ${deg(step.ringAngleRad)} touches the h pseudo plane at a single point (d_s = Rcr). It bounds the search range.`
-          : 'Every section meets the h pseudo plane (no single contact): the search runs over the whole half ring.',
-        ringAngleRad: step.ringAngleRad,
-        dsMm: step.dsMm,
-        ...section(step.ringAngleRad),
-        candidates: [],
-        point: step.found ? step.pHp : null,
-        bestY: null,
-      });
-    } else {
-      const best = step.ringAnglesRad[step.bestIndex] ?? 0;
-      frames.push({
-        phase: 'search',
-        caption: `Steps 16-25: ${step.ringAnglesRad.length} sections from gamma = ${deg(step.rangeRad[0])} to ${deg(step.rangeRad[1])}; their farthest crossings P_hp[i] with the plane. Best: gamma = ${deg(best)}, Y = ${step.pHp[1].toFixed(6)} mm; the range narrows to its neighbours.`,
-        ringAngleRad: best,
-        dsMm: null,
-        ...section(best),
-        candidates: [...step.candidates],
-        point: step.pHp,
-        bestY: step.pHp[1],
-      });
+/** Each approximation's model: its radius (circles) or ellipse, or why it has none. */
+function modelOf(key: ApproximationKey, tool: ToolInput): Approximation<{ circle: number } | { ellipse: number[] }> {
+  switch (key) {
+    case 'bedi': {
+      const m = bediModel(tool);
+      return m.ok ? { ok: true, ellipse: [m.longRadiusMm, m.shortRadiusMm] } : m;
+    }
+    case 'sekine':
+    case 'redonnet':
+    case 'osculating':
+    case 'cornerBall': {
+      const models = {
+        sekine: sekineModel,
+        redonnet: redonnetModel,
+        osculating: osculatingModel,
+        cornerBall: cornerBallModel,
+      };
+      const m = models[key](tool);
+      return m.ok ? { ok: true, circle: m.effectiveRadiusMm } : m;
     }
   }
-  frames.push({
-    phase: 'converged',
-    caption: `Step 26: converged. L/2 = ${trace.right.widthMm.toFixed(6)} mm at gamma* = ${deg(trace.right.ringAngleRad)}; the exact solver gives ${(exactIntervalMm(input) / 2).toFixed(6)} mm.`,
-    ringAngleRad: trace.right.ringAngleRad,
-    dsMm: null,
-    ...section(trace.right.ringAngleRad),
-    candidates: [],
-    point: trace.right.pHp,
-    bestY: trace.right.widthMm,
-  });
-  return frames;
 }
 
-/** Fixed conditions: computed once per worker. */
-const PAPER_TABLES: readonly PaperTableRow[] = paperTables();
-
-function teachingData(input: ForwardInput): TeachingData {
-  // Only the two angles are needed: solve for them, not for the whole viewer geometry.
-  const flank = flankAtHeight(shapeOfTool(input), 'right', input.scallopHeightMm);
-  const theta = flank.normalAngleRad;
-  const gamma = placeTool(input).contactRingAngleRad + flank.ringOffsetRad;
-  const sek = sekineModel(input);
-  const red = redonnetModel(input);
-  const bedi = bediModel(input);
-  // The approximations' L/2 at this h, in either mode (in inverse mode the rows hold heights).
-  const halfOf = (r: { ok: true; halfIntervalMm: number } | { ok: false }) => (r.ok ? r.halfIntervalMm : null);
-  return {
-    curves: profileCurves(input),
-    sweep: rhoSweep(
-      input.toolRadiusMm,
-      input.cornerRadiusMm,
-      input.scallopHeightMm,
-      0.5,
-      89,
-      120,
-      input.leadAngleDeg,
-      input.tiltAngleDeg,
-      input.pattern,
-    ),
-    frames: traceFrames(input),
-    tables: PAPER_TABLES,
-    models: {
-      sekine: sek.ok
-        ? {
-            toolCentreHeightMm: sek.toolCentreHeightMm,
-            shortRadiusMm: sek.shortRadiusMm,
-            longRadiusMm: sek.longRadiusMm,
-            effectiveRadiusMm: sek.effectiveRadiusMm,
-            halfIntervalMm: halfOf(sekineHalfInterval(input)),
-          }
-        : null,
-      redonnet: red.ok
-        ? { effectiveRadiusMm: red.effectiveRadiusMm, halfIntervalMm: halfOf(redonnetHalfInterval(input)) }
-        : null,
-      bedi: bedi.ok
-        ? {
-            longRadiusMm: bedi.longRadiusMm,
-            shortRadiusMm: bedi.shortRadiusMm,
-            halfIntervalMm: halfOf(bediHalfInterval(input)),
-          }
-        : null,
-      exactNormalAngleRad: theta,
-      exactRingAngleRad: gamma,
-    },
-  };
+/**
+ * Why an approximation has no value at h (forward) or at L/2 (inverse): the model's own reason, or
+ * the quantity beyond the model's widest point.
+ */
+function noValueNote(key: ApproximationKey, tool: ToolInput, quantity: 'h' | 'half', valueMm: number): ProcedureNote {
+  const m = modelOf(key, tool);
+  if (!m.ok) return { kind: 'reason', text: m.notApplicable };
+  if ('circle' in m) return { kind: 'beyond-model', shape: 'circle', quantity, valueMm, limitMm: m.circle };
+  const [long, short] = m.ellipse as [number, number];
+  return { kind: 'beyond-model', shape: 'ellipse', quantity, valueMm, limitMm: quantity === 'h' ? short : long };
 }
 
-/** A results row: every field not given is null. */
-function row(key: ProcedureKey, values: Partial<Omit<ProcedureRow, 'key'>>): ProcedureRow {
+function forwardRow(
+  key: ApproximationKey,
+  input: ForwardInput,
+  r: ForwardEstimate<unknown>,
+  maxMm: number,
+): ProcedureRow {
+  if (!r.ok) {
+    const note = noValueNote(key, input, 'h', input.scallopHeightMm);
+    return { key, valueMm: null, deviationMm: null, deviationPercent: null, realScallopMm: null, note };
+  }
   return {
     key,
-    valueMm: null,
-    deviationMm: null,
-    deviationPercent: null,
-    realScallopMm: null,
-    note: null,
-    modelRadiusMm: null,
-    ...values,
+    valueMm: r.halfIntervalMm,
+    // The table shows L/2: its deviation is half the step-over's.
+    deviationMm: r.deviationMm / 2,
+    deviationPercent: r.deviationPercent,
+    realScallopMm: r.realScallopMm,
+    note: r.warning === null ? null : { kind: 'wall', intervalMm: r.intervalMm, maxIntervalMm: maxMm },
   };
 }
 
-/** The effective radius (Sekine, Redonnet) or ellipse long radius (Bedi) a procedure assumes, mm. */
-function modelRadius(c: ReturnType<typeof compareForward>, key: (typeof PROCEDURES)[number]): number | null {
-  if (key === 'bedi') {
-    const b = c.approximations.bedi;
-    return b.ok ? b.longRadiusMm : null;
-  }
-  const r = c.approximations[key];
-  return r.ok ? r.effectiveRadiusMm : null;
-}
-
-/** Solves one request; never throws for any numeric input. */
-export function solve(req: SolveRequest): SolveReply {
-  const t0 = performance.now();
-  const { R, Rcr, rho } = req;
-  if (req.mode === 'forward') {
-    const v = validateForward({ R, Rcr, rho, h: req.value });
-    if (!v.ok) return { id: req.id, ok: false, errors: v.errors };
-    const c = compareForward(v.value);
-    const exact = c.exact.halfIntervalMm;
-    const rows: ProcedureRow[] = [row('exact', { valueMm: exact, realScallopMm: c.exact.cuspHeightMm })];
-    for (const key of PROCEDURES) {
-      const r = c.approximations[key];
-      if (!r.ok) {
-        rows.push(row(key, { note: r.notApplicable }));
-        continue;
-      }
-      rows.push(
-        row(key, {
-          valueMm: r.halfIntervalMm,
-          deviationMm: r.halfIntervalMm - exact,
-          deviationPercent: r.deviationPercent,
-          realScallopMm: r.realScallopMm,
-          note: r.warning,
-          modelRadiusMm: modelRadius(c, key),
-        }),
-      );
-    }
-    const h = c.exact.cuspHeightMm;
-    return {
-      id: req.id,
-      ok: true,
-      mode: 'forward',
-      halfIntervalMm: exact,
-      scallopHeightMm: req.value,
-      rows,
-      geometry: h >= 1e-9 ? sceneGeometry(R, Rcr, rho, req.value) : null,
-      teaching: req.withViews && h >= 1e-9 ? teachingData(v.value) : null,
-      solveMs: performance.now() - t0,
-    };
-  }
-  const v = validateInverse({ R, Rcr, rho, interval: req.value });
-  if (!v.ok) return { id: req.id, ok: false, errors: v.errors };
-  const c = compareInverse(v.value);
-  const exactH = c.exact.cuspHeightMm;
-  const rows: ProcedureRow[] = [row('exact', { valueMm: exactH, realScallopMm: exactH })];
-  for (const key of PROCEDURES) {
-    const r = c.approximations[key];
-    if (!r.ok) {
-      rows.push(row(key, { note: r.notApplicable }));
-      continue;
-    }
-    rows.push(
-      row(key, {
-        valueMm: r.scallopHeightMm,
-        deviationMm: r.deviationMm,
-        deviationPercent: r.deviationPercent,
-        realScallopMm: exactH,
-      }),
-    );
+function inverseRow(key: ApproximationKey, input: InverseInput, r: InverseEstimate): ProcedureRow {
+  if (!r.ok) {
+    const note = noValueNote(key, input, 'half', input.intervalMm / 2);
+    return { key, valueMm: null, deviationMm: null, deviationPercent: null, realScallopMm: null, note };
   }
   return {
-    id: req.id,
+    key,
+    valueMm: r.scallopHeightMm,
+    deviationMm: r.deviationMm,
+    deviationPercent: r.deviationPercent,
+    realScallopMm: null,
+    note: null,
+  };
+}
+
+/** At most the two closed curves a torus leaves on a plane. */
+function asLoops(curves: Float64Array[]): Loops {
+  const [a, b] = curves;
+  return a === undefined ? [] : b === undefined ? [a] : [a, b];
+}
+
+/** The scene's geometry: the tool in its posture, the cusp sections and curves (mm). */
+export function sceneGeometry(input: ToolInput, exact: ExactSummary): SceneGeometry {
+  const p = placeTool(input);
+  const same = exact.right.heightMm === exact.left.heightMm;
+  const sections = (['right', 'left'] as const).map((flank) => {
+    const h = exact[flank].heightMm;
+    return h < MIN_LENGTH_MM ? null : { flank, h, s: cuspSection(p, flank, flankAtHeight(p.shape, flank, h)) };
+  });
+  const [rs, ls] = sections;
+  const cusp = (x: typeof rs, ringAngles: number[]): CuspGeometry | null =>
+    x
+      ? {
+          flank: x.flank,
+          heightMm: x.h,
+          pHp: x.s.pHp,
+          sectionCentre: x.s.sectionCentre,
+          sectionNormal: x.s.sectionNormal,
+          sectionRadiusMm: x.s.sectionRadiusMm,
+          loops: ringAngles.length === 0 ? [] : asLoops(intersectionLoops(p, x.h, ringAngles, LOOP_SAMPLES)),
+        }
+      : null;
+  // Equal heights: one set of curves through both cusps, carried by the right cusp.
+  const both = [rs?.s.ringAngleRad, ls?.s.ringAngleRad].filter((t): t is number => t !== undefined);
+  const right = cusp(rs ?? null, same ? both : rs ? [rs.s.ringAngleRad] : []);
+  const left = cusp(ls ?? null, same && rs ? [] : ls ? [ls.s.ringAngleRad] : []);
+  const mesh = toolMesh(input, 0.6 * input.toolRadiusMm, TOOL_RADIAL_SEGMENTS);
+  return {
+    toolRadiusMm: input.toolRadiusMm,
+    cornerRadiusMm: input.cornerRadiusMm,
+    pattern: exact.pattern,
+    intervalMm: exact.intervalMm,
+    scallopHeightMm: exact.cuspHeightMm,
+    toolCentre: p.centre,
+    toolAxis: p.axis,
+    toolPositions: mesh.positions,
+    right,
+    left,
+  };
+}
+
+/** Solves one request: exact, every procedure, the scene. Never throws for any numeric input. */
+export function solve(request: SolveRequest): SolveReply {
+  const t0 = performance.now();
+  const errors = revalidate(request);
+  if (errors !== null) return { ok: false, request, errors };
+  let exact: ExactSummary;
+  let rows: ProcedureRow[];
+  let roughness: Roughness;
+  if (request.mode !== 'inverse') {
+    const input = request.mode === 'ra' ? forwardOfRaTarget(request.input) : request.input;
+    const c = compareForward(input);
+    exact = exactOfForward(input, c);
+    roughness = exactRoughness(input, c.exact);
+    rows = [exactRow(exact.halfIntervalMm, exact.cuspHeightMm)];
+    for (const key of APPROXIMATION_KEYS) rows.push(forwardRow(key, input, c.approximations[key], c.maxIntervalMm));
+  } else {
+    const input = request.input;
+    const c = compareInverse(input);
+    exact = exactOfInverse(input, c);
+    roughness = exactRoughnessAtInterval(input, input.pattern, c.exact, input.surface);
+    rows = [exactRow(exact.cuspHeightMm, null)];
+    for (const key of APPROXIMATION_KEYS) rows.push(inverseRow(key, input, c.approximations[key]));
+  }
+  return {
     ok: true,
-    mode: 'inverse',
-    halfIntervalMm: req.value / 2,
-    scallopHeightMm: exactH,
+    request,
+    exact,
     rows,
-    geometry: exactH >= 1e-9 ? sceneGeometry(R, Rcr, rho, exactH) : null,
-    teaching:
-      req.withViews && exactH >= 1e-9 ? teachingData(forwardInput(toolOf(R, Rcr, rho), 'one-way', exactH)) : null,
+    scene: sceneGeometry(request.input, exact),
+    roughness: roughnessSummary(roughness, exact.cuspHeightMm),
     solveMs: performance.now() - t0,
   };
 }
 
-/** Buffers of a reply that can be transferred instead of copied. */
-export function transferables(reply: SolveReply): ArrayBuffer[] {
-  if (!reply.ok || reply.geometry === null) return [];
-  const g = reply.geometry;
-  const out = [g.profile.buffer, g.toolPositions.buffer, ...g.intersectionLoops.map((l) => l.buffer)] as ArrayBuffer[];
-  if (reply.teaching) {
-    const c = reply.teaching.curves;
-    for (const curve of [c.exact, c.ringEllipse, c.sekine, c.redonnet, c.bedi])
-      if (curve) out.push(curve.buffer as ArrayBuffer);
+function exactRow(valueMm: number, realScallopMm: number | null): ProcedureRow {
+  return { key: 'exact', valueMm, deviationMm: null, deviationPercent: null, realScallopMm, note: null };
+}
+
+/** The trace of the paper's procedure on both flanks as frames for the 3D step-through. */
+export function traceFrames(input: ForwardInput): Pick<TeachData, 'frames' | 'traceResult'> {
+  const trace = traceProcedure(input);
+  const p = trace.placement;
+  const section = (t: number) => ({ sectionCentre: sectionCentre(p, t), sectionNormal: ringTangent(p, t) });
+  const frames: TraceFrame[] = [];
+  const base = {
+    dsMm: null,
+    found: false,
+    rangeRad: null,
+    sectionCount: 0,
+    candidates: [],
+    point: null,
+    outMm: null,
+    approachIndex: 0,
+  } as const;
+  const approaches = { right: 0, left: 0 };
+  const converge = (flank: Flank) => {
+    const f = trace[flank];
+    frames.push({
+      ...base,
+      phase: 'converged',
+      flank,
+      ringAngleRad: f.ringAngleRad,
+      ...section(f.ringAngleRad),
+      point: f.pHp,
+      outMm: f.widthMm,
+    });
+  };
+  let previous: Flank | null = null;
+  for (const step of trace.steps) {
+    if (previous !== null && step.flank !== previous) converge(previous);
+    previous = step.flank;
+    if (step.phase === 'approach') {
+      frames.push({
+        ...base,
+        phase: 'approach',
+        flank: step.flank,
+        approachIndex: approaches[step.flank]++,
+        ringAngleRad: step.ringAngleRad,
+        dsMm: step.dsMm,
+        ...section(step.ringAngleRad),
+      });
+    } else if (step.phase === 'single-contact') {
+      frames.push({
+        ...base,
+        phase: 'single-contact',
+        flank: step.flank,
+        ringAngleRad: step.ringAngleRad,
+        dsMm: step.dsMm,
+        ...section(step.ringAngleRad),
+        found: step.found,
+        point: step.found ? step.pHp : null,
+      });
+    } else {
+      const best = step.ringAnglesRad[step.bestIndex] ?? step.rangeRad[0];
+      frames.push({
+        ...base,
+        phase: 'search',
+        flank: step.flank,
+        ringAngleRad: best,
+        ...section(best),
+        rangeRad: step.rangeRad,
+        sectionCount: step.ringAnglesRad.length,
+        candidates: [...step.candidates],
+        point: step.pHp,
+        outMm: step.crossingOutMm[step.bestIndex] ?? null,
+      });
+    }
   }
-  return out;
+  if (previous !== null) converge(previous);
+  // The closing frame: both flanks' points.
+  frames.push({
+    ...base,
+    phase: 'converged',
+    flank: null,
+    ringAngleRad: trace.right.ringAngleRad,
+    ...section(trace.right.ringAngleRad),
+    candidates: [...trace.right.pHp, ...trace.left.pHp],
+    point: trace.right.pHp,
+    outMm: trace.right.widthMm,
+  });
+  const exact = exactForward(input);
+  return {
+    frames,
+    traceResult: {
+      widthRightMm: trace.right.widthMm,
+      widthLeftMm: trace.left.widthMm,
+      exactWidthRightMm: exact.halfWidthRightMm,
+      exactWidthLeftMm: exact.halfWidthLeftMm,
+    },
+  };
+}
+
+/** Fixed conditions: computed once per worker. */
+let tables: readonly PaperTableRow[] | null = null;
+
+function sweep(input: ForwardInput, axis: 'lead' | 'tilt'): Sweep {
+  const h = input.scallopHeightMm;
+  if (axis === 'lead') {
+    const s = stepOverSweep(input, input.pattern, h, 'lead', 0.5, 89, 120, input.leadAngleDeg);
+    return { angleDeg: s.angleDeg, values: s.values };
+  }
+  const beta = input.tiltAngleDeg;
+  const s = stepOverSweep(input, input.pattern, h, 'tilt', Math.min(-60, beta), Math.max(60, beta), 120, beta);
+  return { angleDeg: s.angleDeg, values: s.values };
+}
+
+const half = (r: { ok: true; halfIntervalMm: number } | { ok: false }) => (r.ok ? r.halfIntervalMm : null);
+
+function models(input: ForwardInput): TeachData['models'] {
+  const s = shapeOfTool(input);
+  const h = input.scallopHeightMm;
+  const sek = sekineModel(input);
+  const red = redonnetModel(input);
+  const bedi = bediModel(input);
+  const osc = osculatingModel(input);
+  const ball = cornerBallModel(input);
+  return {
+    shape: {
+      a: s.a,
+      b: s.b,
+      phiRad: s.phi,
+      d0: s.d0,
+      t0Rad: Math.atan2(s.sinT0, s.cosT0),
+      contactOffsetMm: contactOffsetMm(s),
+    },
+    rightOffsetRad: flankAtHeight(s, 'right', h).ringOffsetRad,
+    leftOffsetRad: flankAtHeight(s, 'left', h).ringOffsetRad,
+    sekine: sek.ok
+      ? {
+          toolCentreHeightMm: sek.toolCentreHeightMm,
+          shortRadiusMm: sek.shortRadiusMm,
+          longRadiusMm: sek.longRadiusMm,
+          effectiveRadiusMm: sek.effectiveRadiusMm,
+          halfIntervalMm: half(sekineHalfInterval(input)),
+        }
+      : null,
+    redonnet: red.ok
+      ? { effectiveRadiusMm: red.effectiveRadiusMm, halfIntervalMm: half(redonnetHalfInterval(input)) }
+      : null,
+    bedi: bedi.ok
+      ? {
+          longRadiusMm: bedi.longRadiusMm,
+          shortRadiusMm: bedi.shortRadiusMm,
+          halfIntervalMm: half(bediHalfInterval(input)),
+        }
+      : null,
+    osculating: osc.ok
+      ? { effectiveRadiusMm: osc.effectiveRadiusMm, halfIntervalMm: half(osculatingHalfInterval(input)) }
+      : null,
+    cornerBall: ball.ok
+      ? { effectiveRadiusMm: ball.effectiveRadiusMm, halfIntervalMm: half(cornerBallHalfInterval(input)) }
+      : null,
+  };
+}
+
+/** The teaching views' data for one request (in inverse mode: the forward state at the solved h). */
+export function teach(request: SolveRequest): TeachReply {
+  const errors = revalidate(request);
+  if (errors !== null) return { ok: false, request, errors, reason: null };
+  let forward: ForwardInput;
+  let exact: ExactSummary;
+  if (request.mode !== 'inverse') {
+    forward = request.mode === 'ra' ? forwardOfRaTarget(request.input) : request.input;
+    exact = exactOfForward(forward, compareForward(forward));
+  } else {
+    const input = request.input;
+    exact = exactOfInverse(input, compareInverse(input));
+    if (exact.cuspHeightMm < MIN_LENGTH_MM) {
+      return {
+        ok: false,
+        request,
+        errors: [],
+        reason:
+          'No scallop: the flat bottom lying on the plane covers this step-over, so there is no profile to compare.',
+      };
+    }
+    forward = forwardInput(input, input.pattern, exact.cuspHeightMm);
+  }
+  const c = profileCurves(forward);
+  const approximations = {
+    sekine: c.sekine,
+    redonnet: c.redonnet,
+    bedi: c.bedi,
+    osculating: c.osculating,
+    cornerBall: c.cornerBall,
+  };
+  tables ??= paperTables();
+  return {
+    ok: true,
+    request,
+    forward,
+    exact,
+    curves: { profile: c.profile, ringEllipse: c.ringEllipse, approximations },
+    sweeps: { lead: sweep(forward, 'lead'), tilt: sweep(forward, 'tilt') },
+    ...traceFrames(forward),
+    models: models(forward),
+    tables,
+  };
+}
+
+/** Buffers of a reply that can be transferred instead of copied (each listed once). */
+export function transferables(reply: SolveReply | TeachReply): ArrayBuffer[] {
+  if (!reply.ok) return [];
+  const out = new Set<ArrayBuffer>();
+  if ('scene' in reply) {
+    const g = reply.scene;
+    out.add(g.toolPositions.buffer as ArrayBuffer);
+    for (const cusp of [g.right, g.left]) for (const l of cusp?.loops ?? []) out.add(l.buffer as ArrayBuffer);
+  } else {
+    const c = reply.curves;
+    for (const curve of [c.profile, c.ringEllipse, ...Object.values(c.approximations)])
+      if (curve) out.add(curve.buffer as ArrayBuffer);
+  }
+  return [...out];
 }
 
 /** The worker's API object; its type is what the page sees through Comlink. */
-export const solverApi = {
-  solve,
-  /** Test hook: makes the worker die, as a crash would. */
-  crash(): void {
-    (globalThis as unknown as { close: () => void }).close();
-  },
-};
+export const solverApi = { solve, teach };
 
 export type SolverApi = typeof solverApi;

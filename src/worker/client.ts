@@ -1,55 +1,68 @@
 /**
- * Page-side client of the solver worker: the latest request wins, stale replies are
- * dropped, and a worker that throws, dies or stops answering is restarted and the last
- * request repeated.
+ * Page-side client of one job of a solver worker (solve, teach; later simulate): the latest request
+ * wins, a reply to an older request is dropped, and a worker that throws, dies or stops answering
+ * is restarted and the last request sent again, the same job with the same input. After
+ * MAX_CONSECUTIVE_RESTARTS in a row it gives up (and says so) until the next request.
+ *
+ * Replies carry their request, so the page checks them again against the inputs on screen; this
+ * client only keeps the worker from doing work nobody waits for.
  */
 import * as Comlink from 'comlink';
-import type { SolveReply, SolveRequest } from './protocol';
 import type { WorkerApi } from './solver.worker';
 
-export interface SolverClientEvents {
-  /** Called with each reply that is still the latest. */
-  readonly onReply: (reply: SolveReply) => void;
-  /** Called when the worker had to be restarted (with the reason). */
-  readonly onRestart: (reason: string) => void;
+/** What the client needs of a worker: a message endpoint that can be terminated. */
+export interface WorkerLike extends Comlink.Endpoint {
+  terminate(): void;
+}
+
+export interface RestartInfo {
+  /** Why the worker was restarted. */
+  readonly reason: string;
+  /** True when it failed MAX_CONSECUTIVE_RESTARTS times in a row and the request was not sent again. */
+  readonly gaveUp: boolean;
+}
+
+export interface JobClientOptions<Req, Rep> {
+  /** Starts a worker (a stand-in in tests). */
+  readonly createWorker: () => WorkerLike;
+  /** Calls the job on the worker. */
+  readonly call: (api: Comlink.Remote<WorkerApi>, request: Req) => Promise<Rep>;
+  /** Called with each reply to the latest request. */
+  readonly onReply: (reply: Rep, request: Req) => void;
+  /** Called when the worker had to be restarted. */
+  readonly onRestart: (info: RestartInfo) => void;
+  /** No answer within this time means the worker is dead or stuck (ms). */
+  readonly watchdogMs?: number;
 }
 
 /** No answer within this time means the worker is dead or stuck. */
-const WATCHDOG_MS = 3000;
+export const WATCHDOG_MS = 3000;
 /** A request that kills every new worker is not repeated forever. */
-const MAX_CONSECUTIVE_RESTARTS = 3;
+export const MAX_CONSECUTIVE_RESTARTS = 3;
 
-export class SolverClient {
-  private worker: Worker | null = null;
+export class JobClient<Req, Rep> {
+  private worker: WorkerLike | null = null;
   private remote: Comlink.Remote<WorkerApi> | null = null;
-  private nextId = 1;
-  private inFlight: SolveRequest | null = null;
-  private queued: Omit<SolveRequest, 'id'> | null = null;
-  private latest: SolveRequest | null = null;
+  private inFlight: { readonly request: Req } | null = null;
+  private queued: { readonly request: Req } | null = null;
+  private latest: { readonly request: Req } | null = null;
   private watchdog: ReturnType<typeof setTimeout> | null = null;
   private consecutiveRestarts = 0;
   /** Number of workers started so far (1 after the first request). */
   started = 0;
 
-  constructor(
-    private readonly events: SolverClientEvents,
-    private readonly createWorker: () => Worker = () =>
-      new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module', name: 'path-interval-solver' }),
-  ) {}
+  constructor(private readonly options: JobClientOptions<Req, Rep>) {}
 
-  /** Asks for a solution; only the latest request's reply is delivered. */
-  request(req: Omit<SolveRequest, 'id'>): void {
+  /** Asks for an answer; only the latest request's reply is delivered. */
+  request(request: Req): void {
+    const entry = { request };
+    this.latest = entry;
     if (this.inFlight !== null) {
       // One in flight: keep only the newest waiting request.
-      this.queued = req;
+      this.queued = entry;
       return;
     }
-    this.send(req);
-  }
-
-  /** Test hook: kills the worker as a crash would. */
-  crash(): void {
-    void this.remote?.crash().catch(() => undefined);
+    this.send(entry);
   }
 
   dispose(): void {
@@ -57,34 +70,36 @@ export class SolverClient {
     this.worker?.terminate();
     this.worker = null;
     this.remote = null;
+    this.inFlight = this.queued = this.latest = null;
   }
 
   private ensureWorker(): Comlink.Remote<WorkerApi> {
     if (this.remote !== null) return this.remote;
-    const worker = this.createWorker();
-    worker.addEventListener('error', (e) => this.restart(`the solver failed (${e.message || 'worker error'})`));
+    const worker = this.options.createWorker();
+    worker.addEventListener('error', (e: unknown) => {
+      const message = (e as { message?: string }).message;
+      if (this.worker === worker) this.restart(`the solver failed (${message || 'worker error'})`);
+    });
     this.worker = worker;
     this.remote = Comlink.wrap<WorkerApi>(worker);
     this.started++;
     return this.remote;
   }
 
-  private send(req: Omit<SolveRequest, 'id'>): void {
-    const full: SolveRequest = { ...req, id: this.nextId++ };
-    this.inFlight = full;
-    this.latest = full;
+  private send(entry: { readonly request: Req }): void {
+    this.inFlight = entry;
     const remote = this.ensureWorker();
     this.startWatchdog();
-    remote.solve(full).then(
-      (reply) => this.settle(full, reply),
+    this.options.call(remote, entry.request).then(
+      (reply) => this.settle(entry, reply),
       (error: unknown) => {
-        if (this.inFlight?.id === full.id) this.restart(`the solver threw (${String(error)})`);
+        if (this.inFlight === entry) this.restart(`the solver threw (${String(error)})`);
       },
     );
   }
 
-  private settle(req: SolveRequest, reply: SolveReply): void {
-    if (this.inFlight?.id !== req.id) return; // a restart already replaced this request
+  private settle(entry: { readonly request: Req }, reply: Rep): void {
+    if (this.inFlight !== entry) return; // a restart already replaced this request
     this.stopWatchdog();
     this.consecutiveRestarts = 0;
     this.inFlight = null;
@@ -95,7 +110,7 @@ export class SolverClient {
       this.send(next);
       return;
     }
-    if (reply.id === this.latest?.id) this.events.onReply(reply);
+    if (entry === this.latest) this.options.onReply(reply, entry.request);
   }
 
   private restart(reason: string): void {
@@ -104,22 +119,21 @@ export class SolverClient {
     this.worker = null;
     this.remote = null;
     this.inFlight = null;
-    const repeat = this.queued ?? this.latest;
     this.queued = null;
-    this.events.onRestart(
-      this.consecutiveRestarts >= MAX_CONSECUTIVE_RESTARTS
-        ? `${reason}; gave up after ${MAX_CONSECUTIVE_RESTARTS} restarts`
-        : reason,
-    );
     this.consecutiveRestarts++;
-    if (repeat !== null && this.consecutiveRestarts <= MAX_CONSECUTIVE_RESTARTS) {
-      this.send({ mode: repeat.mode, R: repeat.R, Rcr: repeat.Rcr, rho: repeat.rho, value: repeat.value });
-    }
+    const gaveUp = this.consecutiveRestarts > MAX_CONSECUTIVE_RESTARTS;
+    this.options.onRestart({ reason, gaveUp });
+    // The same job with the same input: the latest request, whatever was in flight.
+    if (!gaveUp && this.latest !== null) this.send(this.latest);
+    else this.consecutiveRestarts = 0; // the next request starts afresh
   }
 
   private startWatchdog(): void {
     this.stopWatchdog();
-    this.watchdog = setTimeout(() => this.restart('the solver stopped answering'), WATCHDOG_MS);
+    this.watchdog = setTimeout(
+      () => this.restart('the solver stopped answering'),
+      this.options.watchdogMs ?? WATCHDOG_MS,
+    );
   }
 
   private stopWatchdog(): void {

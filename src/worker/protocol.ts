@@ -1,129 +1,270 @@
 /**
  * Plain data crossing the worker boundary (structured-clone safe; typed arrays are
- * transferred). Lengths in mm, angles in degrees.
+ * transferred). Lengths in mm, angles in degrees unless a name says radians.
+ *
+ * A request is a validated core input; every reply echoes the request it answers, so the page
+ * can show a reply only when it answers the inputs on screen (sameRequest).
  */
+
+import type { Surface } from '../core/cylinder';
+import type { ApproximationKey, ProcedureKey } from '../core/procedures';
+import type { RaTargetInput, RoughnessSummary } from '../core/raTarget';
 import type { PaperTableRow } from '../core/teaching';
-import type { FieldName, InputError } from '../core/validate';
+import type { ForwardInput, InputError, InverseInput, PassPattern } from '../core/validate';
 import type { Vec3 } from '../core/vec';
 
+/**
+ * One question: a scallop height to a step-over, a step-over to the cusp heights, or a target
+ * roughness Ra to a step-over (through the h that leaves it).
+ */
+export type SolveRequest =
+  | { readonly mode: 'forward'; readonly input: ForwardInput }
+  | { readonly mode: 'inverse'; readonly input: InverseInput }
+  | { readonly mode: 'ra'; readonly input: RaTargetInput };
+
+/** The page's two directions (a target Ra is a forward question). */
 export type SolveMode = 'forward' | 'inverse';
 
-export interface SolveRequest {
-  /** Increasing per client; replies echo it so stale ones can be dropped. */
-  readonly id: number;
-  readonly mode: SolveMode;
-  readonly R: number;
-  readonly Rcr: number;
-  readonly rho: number;
-  /** Forward: scallop height h (mm). Inverse: path interval L (mm). */
-  readonly value: number;
-  /** Also compute the teaching views' data. */
-  readonly withViews?: boolean;
+/** True when both requests ask the same question (every input equal); null equals nothing. */
+export function sameRequest(a: SolveRequest | null, b: SolveRequest | null): boolean {
+  if (a === null || b === null || a.mode !== b.mode) return false;
+  const x = a.input;
+  const y = b.input;
+  if (
+    x.toolRadiusMm !== y.toolRadiusMm ||
+    x.cornerRadiusMm !== y.cornerRadiusMm ||
+    x.leadAngleDeg !== y.leadAngleDeg ||
+    x.tiltAngleDeg !== y.tiltAngleDeg ||
+    x.pattern !== y.pattern ||
+    !sameSurface(x.surface, y.surface)
+  )
+    return false;
+  if (a.mode === 'ra') return a.input.targetRaMm === (b.input as RaTargetInput).targetRaMm;
+  return a.mode === 'forward'
+    ? a.input.scallopHeightMm === (b.input as ForwardInput).scallopHeightMm
+    : a.input.intervalMm === (b.input as InverseInput).intervalMm;
 }
 
-/** One frame of the step-through of the paper's 3D procedure (Figure 1). */
-export interface TraceFrame {
-  readonly phase: 'approach' | 'single-contact' | 'search' | 'converged';
-  readonly caption: string;
-  readonly ringAngleRad: number;
-  /** In-plane distance of the section centre from the h pseudo plane (mm), null in search frames. */
-  readonly dsMm: number | null;
-  readonly sectionCentre: Vec3;
-  readonly sectionNormal: Vec3;
-  /** Candidate points P_hp[i] of a search pass (flat xyz, mm); empty otherwise. */
-  readonly candidates: number[];
-  /** The point this frame shows (touching point, best candidate, converged P_hp), or null. */
-  readonly point: Vec3 | null;
-  readonly bestY: number | null;
+/** True when both are the plane, or cylinders of the same radius and axis. */
+function sameSurface(a: Surface, b: Surface): boolean {
+  if (a.kind === 'plane' || b.kind === 'plane') return a.kind === b.kind;
+  return a.radiusMm === b.radiusMm && a.axis === b.axis;
 }
 
-export interface TeachingData {
-  readonly curves: {
-    readonly exact: Float64Array;
-    readonly ringEllipse: Float64Array;
-    readonly sekine: Float64Array | null;
-    readonly redonnet: Float64Array | null;
-    readonly bedi: Float64Array | null;
-  };
-  readonly sweep: {
-    readonly rhoDeg: number[];
-    readonly exact: Array<number | null>;
-    readonly sekine: Array<number | null>;
-    readonly redonnet: Array<number | null>;
-    readonly bedi: Array<number | null>;
-  };
-  readonly frames: readonly TraceFrame[];
-  /** Tables 2-5 recomputed beside the printed values. */
-  readonly tables: readonly PaperTableRow[];
-  /**
-   * Model quantities for the formulas (mm), null where the model does not apply. Each
-   * `halfIntervalMm` is that procedure's L/2 at this state's h (null: no answer at this h).
-   */
-  readonly models: {
-    readonly sekine: {
-      toolCentreHeightMm: number;
-      shortRadiusMm: number;
-      longRadiusMm: number;
-      effectiveRadiusMm: number;
-      halfIntervalMm: number | null;
-    } | null;
-    readonly redonnet: { effectiveRadiusMm: number; halfIntervalMm: number | null } | null;
-    readonly bedi: { longRadiusMm: number; shortRadiusMm: number; halfIntervalMm: number | null } | null;
-    readonly exactNormalAngleRad: number;
-    readonly exactRingAngleRad: number;
-  };
+/** Where one cusp stands: across the feed from this pass's contact, and its height above it (mm). */
+export interface Cusp {
+  readonly yMm: number;
+  readonly heightMm: number;
 }
 
-export type ProcedureKey = 'exact' | 'sekine' | 'redonnet' | 'bedi';
+/** The exact answer of a request (mm). */
+export interface ExactSummary {
+  readonly pattern: PassPattern;
+  /** Step-over L between adjacent cutter-contact paths, and L/2. */
+  readonly intervalMm: number;
+  readonly halfIntervalMm: number;
+  /** Flank widths wR, wL from the contact: at the scallop height (forward) or at the cusps (inverse). */
+  readonly widthRightMm: number;
+  readonly widthLeftMm: number;
+  /** Contact offset y0: Y of the contact minus Y of the tool centre point O. */
+  readonly contactOffsetMm: number;
+  /** The highest cusp (the scallop height) and, for zigzag, the other one. */
+  readonly cuspHeightMm: number;
+  readonly otherCuspHeightMm: number | null;
+  /** The cusp on the right (+Y) and on the left of this pass. */
+  readonly right: Cusp;
+  readonly left: Cusp;
+  /** No scallop at any step-over up to 2R (a flat end lying flat). */
+  readonly noScallop: boolean;
+  /** The widest step-over that still leaves a scallop. */
+  readonly maxIntervalMm: number;
+}
+
+/**
+ * Why a procedure has no value or no real scallop, as data so that the page words it in the
+ * user's unit: a reason with no numbers in it, a scallop beyond the model's own widest point, or
+ * a step-over so wide that the passes leave a wall.
+ */
+export type ProcedureNote =
+  | { readonly kind: 'reason'; readonly text: string }
+  | {
+      readonly kind: 'beyond-model';
+      /** The model's shape and the quantity that exceeds it (h or L/2), mm. */
+      readonly shape: 'circle' | 'ellipse';
+      readonly quantity: 'h' | 'half';
+      readonly valueMm: number;
+      /** Reff of a circle; Rlong sin(rho) (for h) or Rlong (for L/2) of Bedi's ellipse. */
+      readonly limitMm: number;
+    }
+  | { readonly kind: 'wall'; readonly intervalMm: number; readonly maxIntervalMm: number };
 
 /** One row of the results table. */
 export interface ProcedureRow {
   readonly key: ProcedureKey;
   /** Forward: L/2 of this procedure. Inverse: the scallop height it predicts. */
   readonly valueMm: number | null;
-  /** Signed deviation from exact, mm and %, or null for exact / not applicable. */
+  /** Signed deviation from exact (of L/2 forward, of h inverse), mm and %; null for exact or no value. */
   readonly deviationMm: number | null;
   readonly deviationPercent: number | null;
   /** Forward only: the scallop the procedure's own L really leaves (exact inverse); null if none. */
   readonly realScallopMm: number | null;
-  /** Why there is no value (not applicable), or why there is no real scallop. */
-  readonly note: string | null;
-  /** Effective radius or ellipse long radius the procedure assumes, mm. */
-  readonly modelRadiusMm: number | null;
+  readonly note: ProcedureNote | null;
 }
 
-export interface SceneGeometry {
-  readonly toolRadiusMm: number;
-  readonly scallopHeightMm: number;
-  readonly halfIntervalMm: number;
-  readonly ringAngleRad: number;
-  readonly toolCentre: Vec3;
-  readonly toolAxis: Vec3;
-  readonly pBase: Vec3;
+/** Segments around the tool axis of the tool mesh the worker sends (the scene builds the same indices). */
+export const TOOL_RADIAL_SEGMENTS = 64;
+/** Samples per branch of the torus / plane curves. */
+export const LOOP_SAMPLES = 96;
+/** Most points of one torus / plane curve (intersectionLoops: at most 2 samples + 1 per branch, plus the cusps). */
+export const LOOP_MAX_POINTS = 4 * LOOP_SAMPLES + 16;
+
+/** Closed curves where the torus meets a plane: none, one or two (flat xyz, mm). */
+export type Loops = readonly [] | readonly [Float64Array] | readonly [Float64Array, Float64Array];
+
+/** The section through one cusp point P_hp and the curve at the cusp height. */
+export interface CuspGeometry {
+  readonly flank: 'right' | 'left';
+  readonly heightMm: number;
   readonly pHp: Vec3;
   readonly sectionCentre: Vec3;
   readonly sectionNormal: Vec3;
   readonly sectionRadiusMm: number;
-  readonly intersectionLoops: Float64Array[];
-  readonly profile: Float64Array;
-  readonly toolPositions: Float32Array;
+  readonly loops: Loops;
 }
 
+/** What the 3D scene draws for one solved state (mm; contact of this pass at the origin, X feed, Z up). */
+export interface SceneGeometry {
+  readonly toolRadiusMm: number;
+  readonly cornerRadiusMm: number;
+  readonly pattern: PassPattern;
+  readonly intervalMm: number;
+  /** Height of the highest cusp (the h pseudo plane). */
+  readonly scallopHeightMm: number;
+  readonly toolCentre: Vec3;
+  readonly toolAxis: Vec3;
+  /** Tool surface, TOOL_RADIAL_SEGMENTS around the axis (indices: core toolMeshIndices). */
+  readonly toolPositions: Float32Array;
+  /** The cusp on each side; null where it has no height (a flat bottom covers it). */
+  readonly right: CuspGeometry | null;
+  readonly left: CuspGeometry | null;
+}
+
+/** The answer to `solve`. */
 export type SolveReply =
   | {
-      readonly id: number;
       readonly ok: true;
-      readonly mode: SolveMode;
-      /** Exact L/2 and h (mm) of the solved state. */
-      readonly halfIntervalMm: number;
-      readonly scallopHeightMm: number;
+      readonly request: SolveRequest;
+      readonly exact: ExactSummary;
       readonly rows: readonly ProcedureRow[];
-      /** Null when there is no scallop to draw (flat bottom at rho = 0 in inverse mode). */
-      readonly geometry: SceneGeometry | null;
-      /** Present when requested and there is a scallop. */
-      readonly teaching: TeachingData | null;
+      readonly scene: SceneGeometry;
+      /** Rz, Ra, Rq of the surface left at the exact step-over, and the rule of thumb Ra ~ h/4. */
+      readonly roughness: RoughnessSummary;
       readonly solveMs: number;
     }
-  | { readonly id: number; readonly ok: false; readonly errors: readonly InputError[] };
+  | { readonly ok: false; readonly request: SolveRequest; readonly errors: readonly InputError[] };
 
-export type { FieldName, InputError };
+/** One frame of the step-through of the paper's 3D procedure (Figure 1), on one flank or both. */
+export interface TraceFrame {
+  readonly phase: 'approach' | 'single-contact' | 'search' | 'converged';
+  /** The flank this step works on; null for the closing frame (both flanks). */
+  readonly flank: 'right' | 'left' | null;
+  /** Index of this step among the approach steps of its flank (0: Eq. 1's starting section). */
+  readonly approachIndex: number;
+  readonly ringAngleRad: number;
+  /** In-plane distance of the section centre from the h pseudo plane (mm), null in search frames. */
+  readonly dsMm: number | null;
+  readonly sectionCentre: Vec3;
+  readonly sectionNormal: Vec3;
+  /** Single contact: false when every section meets the plane. */
+  readonly found: boolean;
+  /** Search: the ring-angle range and the sections tried in it. */
+  readonly rangeRad: readonly [number, number] | null;
+  readonly sectionCount: number;
+  /** Candidate points P_hp[i] of a search pass (flat xyz, mm); empty otherwise. */
+  readonly candidates: readonly number[];
+  /** The point this frame shows (touching point, best candidate, converged P_hp), or null. */
+  readonly point: Vec3 | null;
+  /** Search: how far out the best crossing lies; converged: the flank's width (mm). */
+  readonly outMm: number | null;
+}
+
+/** The procedure's result beside the exact solver, for the closing caption (mm). */
+export interface TraceResult {
+  readonly widthRightMm: number;
+  readonly widthLeftMm: number;
+  readonly exactWidthRightMm: number;
+  readonly exactWidthLeftMm: number;
+}
+
+/** Model quantities for the formulas (mm, radians), null where a model does not apply. */
+export interface FormulaModels {
+  readonly shape: {
+    readonly a: number;
+    readonly b: number;
+    readonly phiRad: number;
+    readonly d0: number;
+    readonly t0Rad: number;
+    readonly contactOffsetMm: number;
+  };
+  /** Ring-angle offsets of the sections carrying each flank's cusp point. */
+  readonly rightOffsetRad: number;
+  readonly leftOffsetRad: number;
+  readonly sekine: {
+    readonly toolCentreHeightMm: number;
+    readonly shortRadiusMm: number;
+    readonly longRadiusMm: number;
+    readonly effectiveRadiusMm: number;
+    readonly halfIntervalMm: number | null;
+  } | null;
+  readonly redonnet: { readonly effectiveRadiusMm: number; readonly halfIntervalMm: number | null } | null;
+  readonly bedi: {
+    readonly longRadiusMm: number;
+    readonly shortRadiusMm: number;
+    readonly halfIntervalMm: number | null;
+  } | null;
+  readonly osculating: { readonly effectiveRadiusMm: number; readonly halfIntervalMm: number | null } | null;
+  readonly cornerBall: { readonly effectiveRadiusMm: number; readonly halfIntervalMm: number | null } | null;
+}
+
+/** Step-over L of every procedure along one posture angle (mm; null where none). */
+export interface Sweep {
+  readonly angleDeg: readonly number[];
+  readonly values: { readonly [K in ProcedureKey]: ReadonlyArray<number | null> };
+}
+
+/** Cross-feed curves (flat y, z from the contact, mm). */
+export interface ProfileCurveSet {
+  /** The exact profile, both flanks (left widest point to right widest point). */
+  readonly profile: Float64Array;
+  /** The ring ellipse it is offset from, closed. */
+  readonly ringEllipse: Float64Array;
+  /** Each approximation's right half (symmetric models), null where it does not apply. */
+  readonly approximations: { readonly [K in ApproximationKey]: Float64Array | null };
+}
+
+/** Everything the teaching views draw, for the forward state the request comes to. */
+export interface TeachData {
+  /** The forward input the views show: the request's own, or in inverse mode the solved h. */
+  readonly forward: ForwardInput;
+  readonly exact: ExactSummary;
+  readonly curves: ProfileCurveSet;
+  readonly sweeps: { readonly lead: Sweep; readonly tilt: Sweep };
+  readonly frames: readonly TraceFrame[];
+  readonly traceResult: TraceResult;
+  readonly models: FormulaModels;
+  /** Tables 2-5 recomputed beside the printed values. */
+  readonly tables: readonly PaperTableRow[];
+}
+
+/** The answer to `teach`. */
+export type TeachReply =
+  | ({ readonly ok: true; readonly request: SolveRequest } & TeachData)
+  | {
+      readonly ok: false;
+      readonly request: SolveRequest;
+      readonly errors: readonly InputError[];
+      /** A valid request with nothing to teach (no scallop), said in words; null for input errors. */
+      readonly reason: string | null;
+    };
+
+export type { ApproximationKey, InputError, ProcedureKey, RaTargetInput, RoughnessSummary };

@@ -224,8 +224,8 @@ describe('--ra: the step-over for a target roughness', () => {
         pattern,
         ...(surface.kind === 'cylinder' ? { surfaceRadius: String(surface.radiusMm), surfaceAxis: surface.axis } : {}),
       };
-      const probe = validateTargetRa({ ...raw, Ra: '1e-9' });
-      if (!probe.ok && probe.errors.some((e) => e.field !== 'Ra')) continue; // gouged
+      const probe = validateTargetRa({ ...raw, ra: '1e-9' });
+      if (!probe.ok && probe.errors.some((e) => e.field !== 'ra')) continue; // gouged
       const max = maxRaMm(t, pattern, surface);
       if (!(max > 1e-8)) continue;
       const target = max * pick(rand, [logUniform(rand, 1e-6, 1), rand(), 1 - 1e-9]);
@@ -255,7 +255,7 @@ describe('--ra: the step-over for a target roughness', () => {
     ]);
     refused(
       beyond,
-      'error: --ra: Roughness Ra must be at most 0.151513 mm (got 1), the largest this tool, posture and pattern leave on this surface (at the largest scallop height before adjacent passes leave a wall).\n',
+      'error: --ra: Roughness Ra must be below 0.151513 mm (got 1), the largest Ra this tool, posture and pattern leave on this surface; passes far enough apart to leave more leave a wall, not a scallop.\n',
     );
     expect(zero.stderr).toBe('error: --ra: Roughness Ra must be greater than 0 mm (got 0).\n');
     expect(flat.stderr).toMatch(
@@ -263,7 +263,7 @@ describe('--ra: the step-over for a target roughness', () => {
     );
     expect(json.code).toBe(2);
     expect(JSON.parse(json.stdout).errors).toEqual([
-      expect.objectContaining({ field: 'Ra', option: '--ra', code: 'beyond-roughness', limit: max, got: '1' }),
+      expect.objectContaining({ field: 'ra', option: '--ra', code: 'beyond-max-ra', limit: max, got: '1' }),
     ]);
   });
 });
@@ -438,7 +438,7 @@ describe('--batch with Ra, surfaceRadius and surfaceAxis columns', () => {
     expect(out[5]?.slice(8, 21).every((v) => v === '')).toBe(true);
     expect(out[5]?.[21]).toMatch(/^Surface radius Rs: a concave cylinder must have a radius of at least 23\.9474 mm/);
     expect(out[6]?.[21]).toBe('Cylinder axis must be feed or cross (got "sideways").');
-    expect(out[7]?.[21]).toMatch(/^Roughness Ra must be at most 0\.151513 mm \(got 1\)/);
+    expect(out[7]?.[21]).toMatch(/^Roughness Ra must be below 0\.151513 mm \(got 1\)/);
 
     expect(hRun.code).toBe(0);
     const hOut = parseCsv(hRun.stdout).map((x) => x.fields);

@@ -6,7 +6,7 @@ import { spawnSync } from 'node:child_process';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { compareForward, compareInverse, forwardInput, inverseInput } from '../../src/core/index';
-import { ROOT, SHOTS, useSite } from './harness';
+import { namedWorker, paintedFraction, ROOT, SHOTS, useSite } from './harness';
 
 const site = useSite('docs/tools/path-interval');
 const open = site.open;
@@ -14,37 +14,6 @@ const open = site.open;
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
 const frames = (page: Page) =>
   page.evaluate(() => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames());
-
-/**
- * Fraction of the scene's on-screen pixels that differ from the background colour, read from
- * a screenshot (what the user sees; the WebGL buffer itself is not preserved between frames).
- */
-async function paintedFraction(page: Page): Promise<number> {
-  const png = (await page.getByTestId('scene-canvas').screenshot()).toString('base64');
-  return page.evaluate(async (b64) => {
-    const image = new Image();
-    image.src = `data:image/png;base64,${b64}`;
-    await image.decode();
-    const copy = document.createElement('canvas');
-    copy.width = image.width;
-    copy.height = image.height;
-    const ctx = copy.getContext('2d');
-    if (!ctx) return 0;
-    ctx.drawImage(image, 0, 0);
-    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
-    let painted = 0;
-    for (let i = 0; i < data.length; i += 4) {
-      if (
-        Math.abs((data[i] as number) - 0xf7) +
-          Math.abs((data[i + 1] as number) - 0xf8) +
-          Math.abs((data[i + 2] as number) - 0xfa) >
-        24
-      )
-        painted++;
-    }
-    return painted / (data.length / 4);
-  }, png);
-}
 
 describe('calculator page in headless Chromium', () => {
   it('loads from a sub-path, solves in a module worker, and shows the command line numbers', async () => {
@@ -88,7 +57,7 @@ describe('calculator page in headless Chromium', () => {
     await page.waitForTimeout(1000);
     expect(await frames(page)).toBe(before); // no busy render loop
     // Switching between teaching views that do not touch the 3D scene draws no frame either.
-    await page.getByRole('tab', { name: 'L/2 against rho' }).click();
+    await page.getByRole('tab', { name: 'L against lead and tilt' }).click();
     await page.getByTestId('comparison-chart').locator('canvas').first().waitFor();
     await page.getByRole('tab', { name: 'Formulas' }).click();
     await page.getByTestId('formulas').locator('math').first().waitFor();
@@ -220,9 +189,9 @@ describe('calculator page in headless Chromium', () => {
 
   it('a worker that dies is restarted, the request repeated, and the page says so', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    await page.evaluate(() =>
-      (window as unknown as { __pathInterval: { crashWorker(): void } }).__pathInterval.crashWorker(),
-    );
+    // The test kills the solver's worker itself (the page has no hook for it): close() from inside.
+    const solver = await namedWorker(page, 'path-interval-solver');
+    void solver.evaluate(() => (globalThis as unknown as { close(): void }).close()).catch(() => undefined);
     await page.waitForTimeout(200);
     await page.getByTestId('input-h').fill('0.1');
     await expect.poll(() => text(page, 'result-exact-half'), { timeout: 10_000 }).toBe('1.8921'); // notes: 1.892088
@@ -236,13 +205,50 @@ describe('calculator page in headless Chromium', () => {
 
   it('a burst of slider moves ends on the latest value (stale replies dropped)', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const halfAt = (h: number) =>
+      compareForward(
+        forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', h),
+      ).exact.halfIntervalMm.toFixed(4);
+    const final = halfAt(0.08);
+    // Every number the page writes into L/2 from now on, in order, with the field's value and
+    // whether the results were marked stale at that moment.
+    await page.evaluate(() => {
+      const out = document.querySelector('[data-testid="result-exact-half"]') as HTMLElement;
+      const field = document.querySelector('[data-testid="input-h"]') as HTMLInputElement;
+      const section = document.querySelector('section.results') as HTMLElement;
+      const seen: { text: string; h: string; stale: boolean }[] = [];
+      (window as unknown as { __seen: typeof seen }).__seen = seen;
+      new MutationObserver(() =>
+        seen.push({ text: out.textContent ?? '', h: field.value, stale: section.classList.contains('stale') }),
+      ).observe(out, { childList: true, characterData: true, subtree: true });
+    });
+    // The solver is busy while the slider moves, so the replies lag behind the inputs: a page
+    // that showed stale replies would show older values after the last move.
+    const solver = await namedWorker(page, 'path-interval-solver');
+    void solver.evaluate(() => {
+      const end = Date.now() + 800;
+      while (Date.now() < end);
+    });
     await page.getByTestId('slider-h').focus();
     for (let i = 0; i < 30; i++) await page.keyboard.press('ArrowRight');
     await expect.poll(() => page.getByTestId('input-h').inputValue()).toBe('0.08');
-    const expected = compareForward(
-      forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 0.08),
-    );
-    await expect.poll(() => text(page, 'result-exact-half')).toBe(expected.exact.halfIntervalMm.toFixed(4));
+    await expect.poll(() => text(page, 'result-exact-half'), { timeout: 5000 }).toBe(final);
+    await page.waitForTimeout(300);
+    type Seen = { text: string; h: string; stale: boolean };
+    const seen = await page.evaluate(() => (window as unknown as { __seen: Seen[] }).__seen);
+    // From the moment the field holds the last value, the only number written is its answer.
+    const afterLastMove = seen.findIndex((s) => s.h === '0.08');
+    expect(afterLastMove).toBeGreaterThanOrEqual(0);
+    expect(
+      seen
+        .slice(afterLastMove)
+        .filter((s) => /\d/.test(s.text))
+        .map((s) => s.text),
+    ).toEqual([final]);
+    // Throughout the burst, a number not marked stale is the answer to the value in the field.
+    const current = seen.filter((s) => !s.stale && /\d/.test(s.text));
+    expect(current.length).toBeGreaterThan(0);
+    for (const s of current) expect(s.text, `h = ${s.h}`).toBe(halfAt(Number(s.h)));
     await page.close();
   });
 });

@@ -1,13 +1,34 @@
-/** Shared set-up of the browser tests: the built site on a loopback sub-path and one Chromium. */
+/** Shared set-up of the browser tests: a built site on a loopback sub-path and one Chromium. */
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import type { Browser, Page } from 'playwright-core';
-import { afterAll, beforeAll } from 'vitest';
+import type { Browser, Page, Worker } from 'playwright-core';
+import { afterAll, beforeAll, expect } from 'vitest';
 import { launchChromium } from '../../src/bench/browser';
 import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
+import { E2E_OUT_DIR } from './globalSetup';
 
 export const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 export const SHOTS = `${ROOT}test-results/screenshots`;
+
+/** The strict policy the page must run under with no violation (the README gives it to hosts). */
+export const STRICT_CSP = "script-src 'self'; worker-src 'self'; style-src 'self'";
+
+export interface SiteOptions {
+  /** `e2e` (default): the instrumented build with the test probe; `production`: dist/ as shipped. */
+  readonly build?: 'e2e' | 'production';
+  /** Headers sent with every response. */
+  readonly headers?: Readonly<Record<string, string>>;
+}
+
+/**
+ * The directory of a build. `E2E_SITE_DIR` replaces both (to run these tests against another
+ * build, for instance the code before a change, and see which of them fail there).
+ */
+export function siteDir(build: 'e2e' | 'production'): string {
+  const override = process.env.E2E_SITE_DIR;
+  if (override) return override;
+  return build === 'production' ? `${ROOT}dist` : `${ROOT}${E2E_OUT_DIR}`;
+}
 
 export interface Harness {
   readonly browser: () => Browser;
@@ -17,12 +38,12 @@ export interface Harness {
 }
 
 /** Registers beforeAll/afterAll hooks for a test file. */
-export function useSite(subPath: string): Harness {
+export function useSite(subPath: string, options: SiteOptions = {}): Harness {
   let browser: Browser | null = null;
   let site: StaticSite | null = null;
   beforeAll(async () => {
     mkdirSync(SHOTS, { recursive: true });
-    site = await serveStatic(`${ROOT}dist`, subPath);
+    site = await serveStatic(siteDir(options.build ?? 'e2e'), subPath, options.headers);
     browser = await launchChromium();
   });
   afterAll(async () => {
@@ -48,4 +69,47 @@ export function useSite(subPath: string): Harness {
       return { page, errors };
     },
   };
+}
+
+/**
+ * Fraction of the scene's on-screen pixels that differ from the background colour, read from
+ * a screenshot (what the user sees; the WebGL buffer itself is not preserved between frames).
+ */
+export async function paintedFraction(page: Page): Promise<number> {
+  const png = (await page.getByTestId('scene-canvas').screenshot()).toString('base64');
+  return page.evaluate(async (b64) => {
+    const image = new Image();
+    image.src = `data:image/png;base64,${b64}`;
+    await image.decode();
+    const copy = document.createElement('canvas');
+    copy.width = image.width;
+    copy.height = image.height;
+    const ctx = copy.getContext('2d');
+    if (!ctx) return 0;
+    ctx.drawImage(image, 0, 0);
+    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
+    let painted = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (
+        Math.abs((data[i] as number) - 0xf7) +
+          Math.abs((data[i + 1] as number) - 0xf8) +
+          Math.abs((data[i + 2] as number) - 0xfa) >
+        24
+      )
+        painted++;
+    }
+    return painted / (data.length / 4);
+  }, png);
+}
+
+/** The page's worker of this name (path-interval-solver runs `solve`, path-interval-views `teach`). */
+export async function namedWorker(page: Page, name: string): Promise<Worker> {
+  const find = async (): Promise<Worker | null> => {
+    for (const w of page.workers()) if ((await w.evaluate(() => self.name)) === name) return w;
+    return null;
+  };
+  await expect.poll(async () => (await find()) !== null).toBe(true);
+  const found = await find();
+  if (found === null) throw new Error(`no worker ${name}`);
+  return found;
 }

@@ -22,12 +22,14 @@ const tool = (rho: number, h: number) => ({
 });
 
 describe('teaching views in headless Chromium', () => {
-  it('profile: two passes with the scallop shaded, the approximations overlaid, dimensions, zoom and reset', async () => {
+  it('profile: three passes with the scallops shaded, the approximations overlaid, dimensions, zoom and reset', async () => {
     const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
     const view = page.getByTestId('profile-view');
     await view.locator('polygon.scallop').waitFor();
-    for (const key of ['exact', 'sekine', 'redonnet', 'bedi'])
-      expect(await view.locator(`polyline.curve-${key}`).count()).toBe(4);
+    // The exact profile once per pass; each approximation on both sides of each pass.
+    expect(await view.locator('polyline.curve-exact').count()).toBe(3);
+    for (const key of ['sekine', 'redonnet', 'bedi', 'osculating', 'cornerBall'])
+      expect(await view.locator(`polyline.curve-${key}`).count()).toBe(6);
     const half = exactHalfIntervalMm(tool(5, 0.05)).toFixed(4);
     await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half}`);
     expect(await page.getByTestId('profile-scale').textContent()).toMatch(/vertical scale exaggerated x5/);
@@ -59,32 +61,30 @@ describe('teaching views in headless Chromium', () => {
     await page.close();
   });
 
-  it('chart: L/2 against rho and the signed errors, with the values at the current rho from the solver', async () => {
+  it('chart: L against rho, the signed errors and L against tilt, with the values at the current posture from the solver', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=chart');
     const chart = page.getByTestId('comparison-chart');
     await chart.locator('canvas').first().waitFor();
-    expect(await chart.locator('canvas').count()).toBe(2);
+    expect(await chart.locator('canvas').count()).toBe(3);
     const c = compareForward(tool(5, 0.05));
     const summary = page.getByTestId('chart-summary');
     await expect
       .poll(() => summary.textContent())
-      .toMatch(new RegExp(`Exact \\(3D\\) ${c.exact.halfIntervalMm.toFixed(4)}`));
+      .toMatch(new RegExp(`Exact \\(3D\\) ${c.exact.intervalMm.toFixed(4)}`));
     if (c.approximations.sekine.ok)
-      expect(await summary.textContent()).toContain(
-        `Sekine et al. ${c.approximations.sekine.halfIntervalMm.toFixed(4)}`,
-      );
+      expect(await summary.textContent()).toContain(`Sekine et al. ${c.approximations.sekine.intervalMm.toFixed(4)}`);
     await page.getByTestId('slider-rho').focus();
     await page.keyboard.press('ArrowRight');
     const c2 = compareForward(tool(5.1, 0.05));
     await expect
       .poll(() => summary.textContent())
-      .toMatch(new RegExp(`rho = 5\\.1 deg.*Exact \\(3D\\) ${c2.exact.halfIntervalMm.toFixed(4)}`));
+      .toMatch(new RegExp(`rho = 5\\.1 deg.*Exact \\(3D\\) ${c2.exact.intervalMm.toFixed(4)}`));
     expect(await chart.locator('.u-title').first().textContent()).toMatch(/current rho = 5\.1/);
     // The dashed current-rho marker: on the default log axis 5.1 deg sits near the middle of
     // 0.5-89 deg (log ratio 0.45); on a linear axis near the left edge (0.05).
     const markerAt = () =>
       page.evaluate(() => {
-        const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="chart-half"] canvas');
+        const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="chart-lead"] canvas');
         const g = canvas?.getContext('2d');
         if (!canvas || !g) return -1;
         const data = g.getImageData(0, 0, canvas.width, canvas.height).data;

@@ -35,3 +35,33 @@ describe('URL state and units', () => {
     expect(Number(convertState(inch, 'mm').fields.R)).toBeCloseTo(3, 4);
   });
 });
+
+describe('URL state of the posture', () => {
+  it('tilt and pattern round-trip; their defaults (0, one-way) stay out of the URL', () => {
+    const p = parseUrl('?R=3&Rcr=1&rho=5&tilt=-12.5&pattern=zigzag&h=0.05&unit=mm');
+    expect(p.notices).toEqual([]);
+    expect(p.state.fields.tilt).toBe('-12.5');
+    expect(p.state.pattern).toBe('zigzag');
+    expect(toSearch(p.state)).toBe('?R=3&Rcr=1&rho=5&tilt=-12.5&pattern=zigzag&h=0.05&unit=mm');
+    expect(parseUrl(toSearch(p.state)).state).toEqual(p.state);
+    const plain = parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    expect(plain.state.fields.tilt).toBe('0');
+    expect(plain.state.pattern).toBe('one-way');
+    expect(toSearch(plain.state)).toBe('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+  });
+
+  it('a bad tilt or pattern falls back with a notice; tilt is never "missing"', () => {
+    const p = parseUrl('?R=3&Rcr=1&rho=5&tilt=x&pattern=spiral&h=0.05');
+    expect(p.state.fields.tilt).toBe('0');
+    expect(p.state.pattern).toBe('one-way');
+    expect(p.notices.join(' ')).toMatch(/tilt="x".*not a number/);
+    expect(p.notices.join(' ')).toMatch(/pattern="spiral" is not one-way or zigzag/);
+    expect(parseUrl('?R=3&Rcr=1&rho=5&h=0.05').notices).toEqual([]);
+  });
+
+  it('angles are not converted by a unit switch', () => {
+    const inch = convertState(parseUrl('?R=3&Rcr=1&rho=5&tilt=7&h=0.05').state, 'in');
+    expect(inch.fields.tilt).toBe('7');
+    expect(inch.fields.h).toBe('0.0019685');
+  });
+});

@@ -1,21 +1,21 @@
 /** Shared pieces of the teaching views. */
-import type { ProcedureKey, SolveReply } from '../../worker/protocol';
+import type { ProcedureKey } from '../../core/procedures';
+import type { TeachReply } from '../../worker/protocol';
 import type { Unit } from '../state';
 
-export type OkReply = Extract<SolveReply, { ok: true }>;
+export type TeachOk = Extract<TeachReply, { ok: true }>;
 
-/** What every view receives on each update. */
+/** What every view receives on each update: the teaching data of a reply, and the unit to show. */
 export interface ViewContext {
-  readonly reply: OkReply;
+  /** The data answers the inputs on screen (checked by the page before any view sees it). */
+  readonly data: TeachOk;
   readonly unit: Unit;
-  /** Inputs in mm and degrees. */
-  readonly R: number;
-  readonly Rcr: number;
-  readonly rho: number;
 }
 
+export type ViewId = 'profile' | 'chart' | 'tables' | 'stepper' | 'formulas' | 'surface';
+
 export interface TeachingView {
-  readonly id: 'profile' | 'chart' | 'tables' | 'stepper' | 'formulas';
+  readonly id: ViewId;
   readonly title: string;
   readonly element: HTMLElement;
   update(ctx: ViewContext): void;
@@ -24,23 +24,6 @@ export interface TeachingView {
   /** Called when the view is shown or hidden (charts size themselves when shown). */
   setVisible?(visible: boolean): void;
 }
-
-/** One colour per procedure, the same in every view and legend. */
-export const COLOURS: Record<ProcedureKey, string> = {
-  exact: '#111827',
-  sekine: '#d97706',
-  redonnet: '#7c3aed',
-  bedi: '#0891b2',
-};
-
-export const LABELS: Record<ProcedureKey, string> = {
-  exact: 'Exact (3D)',
-  sekine: 'Sekine et al.',
-  redonnet: 'Redonnet et al.',
-  bedi: 'Bedi et al.',
-};
-
-export const PROCEDURE_KEYS: readonly ProcedureKey[] = ['exact', 'sekine', 'redonnet', 'bedi'];
 
 export { html } from '../dom';
 
@@ -55,7 +38,7 @@ export function svg<K extends keyof SVGElementTagNameMap>(
   return e;
 }
 
-/** Length in the user's unit: 4 decimals in mm, 5 in inch. */
-export function formatLength(mm: number, unit: Unit): string {
-  return unit === 'mm' ? mm.toFixed(4) : (mm / 25.4).toFixed(5);
+/** Is the tilt zero, so the profile is symmetric and the paper's L/2 is each flank's width? */
+export function untilted(ctx: ViewContext): boolean {
+  return ctx.data.forward.tiltAngleDeg === 0;
 }

@@ -1,21 +1,14 @@
 /**
- * Each procedure's equations with the current numbers substituted, and what each assumes.
- * The MathML is typeset at build time (virtual:formula-mathml); the page fills the slots.
+ * Each procedure's equations with the current numbers substituted (lengths in the user's unit),
+ * and what each assumes. The MathML is typeset at build time (virtual:formula-mathml); the page
+ * fills the slots.
  */
 import mathml from 'virtual:formula-mathml';
-import type { ProcedureKey } from '../../worker/protocol';
-import { COLOURS, html, LABELS, PROCEDURE_KEYS, type TeachingView, type ViewContext } from './common';
-import { formulaSlotValues, slotClass } from './formulaTemplates';
-
-const TEXTS: Readonly<Record<ProcedureKey, string>> = {
-  exact:
-    'True 3D: the tool moves along X, so the surface it leaves is its projection along X: the ring ellipse (semi-axes Rb and Rb sin rho) offset by Rcr. L/2 is where that exact profile stands h above its lowest point; one 1-D root in the normal angle theta. Valid for every rho, including 0, and for ball and flat ends.',
-  sekine:
-    "True-circular approximation (Eqs. 4-8): an ellipse from the tool centre height, replaced by one circle of radius Reff. It ignores where the real profile's curvature changes, so it is far off for small rho.",
-  redonnet:
-    'Osculating circle at the lowest point (Eqs. 9, 8): exact as h tends to 0, then it overestimates L/2 because the real profile curves up faster than its lowest-point circle.',
-  bedi: 'Elliptic projection (Eqs. 10-11): one ellipse with semi-axes Rlong and Rlong sin rho stands for the offset ellipse. Close for these tools, but an offset ellipse is not an ellipse, so a small error remains; it breaks down at rho = 0.',
-};
+import { PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures';
+import { unitSymbol } from '../../core/units';
+import { html, type TeachingView, untilted, type ViewContext } from './common';
+import { formulaSlotValues } from './formulaSlots';
+import { FORMULA_TEMPLATES, slotClass } from './formulaTemplates';
 
 export class FormulasView implements TeachingView {
   readonly id = 'formulas';
@@ -23,28 +16,41 @@ export class FormulasView implements TeachingView {
   readonly element = html('div', { class: 'view-formulas', 'data-testid': 'formulas' });
 
   update(ctx: ViewContext): void {
-    const t = ctx.reply.teaching;
-    if (!t) return;
+    const { forward, exact, models } = ctx.data;
     const values = formulaSlotValues({
-      R: ctx.R,
-      Rcr: ctx.Rcr,
-      rho: ctx.rho,
-      h: ctx.reply.scallopHeightMm,
-      exactHalfMm: ctx.reply.halfIntervalMm,
-      models: t.models,
+      R: forward.toolRadiusMm,
+      Rcr: forward.cornerRadiusMm,
+      rho: forward.leadAngleDeg,
+      tilt: forward.tiltAngleDeg,
+      h: forward.scallopHeightMm,
+      widthRightMm: exact.widthRightMm,
+      widthLeftMm: exact.widthLeftMm,
+      intervalMm: exact.intervalMm,
+      models,
+      unit: ctx.unit,
     });
     this.element.replaceChildren();
+    const tilted = !untilted(ctx);
     for (const key of PROCEDURE_KEYS) {
       const slots = values[key];
       if (!slots) continue;
+      const info = PROCEDURES[key];
       const box = html('section', { class: 'formula', 'data-procedure': key });
-      const title = html('h3', { style: `color:${COLOURS[key]}` }, LABELS[key]);
       const maths = html('div', { class: 'maths' });
-      maths.innerHTML = mathml[key].join('');
+      maths.innerHTML = mathml[key]
+        .filter((_, i) => {
+          const only = FORMULA_TEMPLATES[key][i]?.pattern;
+          return only === undefined || only === forward.pattern;
+        })
+        .join('');
       for (const [name, text] of Object.entries(slots)) {
         for (const el of maths.querySelectorAll(`.${slotClass(name)}`)) el.textContent = text;
       }
-      box.append(title, html('p', {}, TEXTS[key]), maths);
+      const about =
+        tilted && info.leadOnly
+          ? `${info.assumes} Lead-only model: applied with the lead angle alone, the tilt ignored.`
+          : info.assumes;
+      box.append(html('h3', {}, info.label), html('p', {}, about), maths);
       this.element.append(box);
     }
     const missing = PROCEDURE_KEYS.filter((k) => !values[k]);
@@ -53,12 +59,16 @@ export class FormulasView implements TeachingView {
         html(
           'p',
           { class: 'view-note' },
-          `${missing.map((k) => LABELS[k]).join(', ')}: not applicable here (rho = 0).`,
+          `${missing.map((k) => PROCEDURES[k].shortLabel).join(', ')}: not applicable here (see the notes under the results table).`,
         ),
       );
     }
     this.element.append(
-      html('p', { class: 'view-note' }, 'Lengths in mm, angles in degrees; each L/2 is at the h of the current state.'),
+      html(
+        'p',
+        { class: 'view-note' },
+        `Lengths in ${unitSymbol(ctx.unit)}, angles in degrees; each L/2 is at the h of the current state.`,
+      ),
     );
   }
 

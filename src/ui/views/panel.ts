@@ -1,20 +1,24 @@
 /**
  * The teaching views in one tabbed panel. Views are built on first use; `?view=` opens one.
+ * The panel is told when its data no longer answers the inputs on screen, and then says so.
  */
-import type { ProcedureKey } from '../../worker/protocol';
+import type { ProcedureKey } from '../../core/procedures';
 import { ChartView } from './chartView';
-import { html, type TeachingView, type ViewContext } from './common';
+import { html, type TeachingView, type ViewContext, type ViewId } from './common';
 import { FormulasView } from './formulasView';
 import { ProfileView } from './profileView';
 import { StepperView, type TraceDisplay } from './stepperView';
+import { type SurfaceSource, SurfaceView } from './surfaceView';
 import { TablesView } from './tablesView';
 
-export type ViewId = TeachingView['id'];
-export const VIEW_IDS: readonly ViewId[] = ['profile', 'chart', 'tables', 'stepper', 'formulas'];
+export type { ViewId };
 
 export class TeachingPanel {
   private readonly views: TeachingView[];
   private readonly tabs = new Map<ViewId, HTMLButtonElement>();
+  private readonly ids: ViewId[];
+  private readonly staleNote = html('p', { class: 'views-stale', 'data-testid': 'views-stale', role: 'status' });
+  private readonly message = html('p', { class: 'view-note views-message', 'data-testid': 'views-message' });
   private active: ViewId;
   private ctx: ViewContext | null = null;
   private highlighted: ProcedureKey | null = null;
@@ -24,6 +28,7 @@ export class TeachingPanel {
     display: TraceDisplay,
     onLoadCondition: (c: { R: number; Rcr: number; rho: number; h: number }) => void,
     initial: ViewId,
+    surface: SurfaceSource,
   ) {
     this.views = [
       new ProfileView(),
@@ -31,7 +36,9 @@ export class TeachingPanel {
       new TablesView(onLoadCondition),
       new StepperView(display),
       new FormulasView(),
+      new SurfaceView(surface),
     ];
+    this.ids = this.views.map((v) => v.id);
     this.active = initial;
     const list = html('div', { role: 'tablist', 'aria-label': 'Teaching views', class: 'tabs' });
     const panels = html('div', { class: 'tab-panels' });
@@ -60,18 +67,17 @@ export class TeachingPanel {
       panel.append(view.element);
       panels.append(panel);
     }
-    root.append(list, panels);
+    this.staleNote.hidden = true;
+    this.message.hidden = true;
+    root.append(list, this.staleNote, this.message, panels);
     this.show(initial);
   }
 
   private arrowKeys(e: KeyboardEvent, id: ViewId): void {
-    const i = VIEW_IDS.indexOf(id);
+    const i = this.ids.indexOf(id);
+    const n = this.ids.length;
     const next =
-      e.key === 'ArrowRight'
-        ? VIEW_IDS[(i + 1) % VIEW_IDS.length]
-        : e.key === 'ArrowLeft'
-          ? VIEW_IDS[(i + VIEW_IDS.length - 1) % VIEW_IDS.length]
-          : null;
+      e.key === 'ArrowRight' ? this.ids[(i + 1) % n] : e.key === 'ArrowLeft' ? this.ids[(i + n - 1) % n] : null;
     if (next) {
       this.show(next);
       this.tabs.get(next)?.focus();
@@ -97,13 +103,32 @@ export class TeachingPanel {
     this.root.dataset.activeView = id;
   }
 
-  /** New results: only the visible view redraws now; the others when shown. */
+  /** Data that answers the inputs on screen: only the visible view redraws now; the others when shown. */
   update(ctx: ViewContext): void {
     this.ctx = ctx;
+    this.message.hidden = true;
+    this.root.classList.remove('no-data');
     for (const view of this.views) {
       if (view.id === this.active || view.id === 'tables') view.update(ctx);
     }
     this.highlight(this.highlighted);
+  }
+
+  /**
+   * Marks every view as out of date (`text` says why) or current again (null). While marked, the
+   * views keep their last picture, greyed, under the note; their numbers are not the inputs'.
+   */
+  setStale(text: string | null): void {
+    this.root.classList.toggle('stale', text !== null);
+    this.staleNote.hidden = text === null;
+    if (this.staleNote.textContent !== (text ?? '')) this.staleNote.textContent = text ?? '';
+  }
+
+  /** A valid state with nothing to draw (no scallop): said in words instead of the views. */
+  showMessage(text: string): void {
+    this.message.textContent = text;
+    this.message.hidden = false;
+    this.root.classList.add('no-data');
   }
 
   highlight(key: ProcedureKey | null): void {

@@ -1,14 +1,33 @@
 /**
- * Cross-feed profile (2D, SVG): two adjacent passes L apart with the scallop shaded, the
- * ring ellipse the profile is offset from, and the profiles each approximation assumes.
- * Zoom with the wheel or the buttons, pan by dragging; the vertical scale can be
- * exaggerated, and then says so.
+ * Cross-feed profile (2D, SVG): three passes L apart (mirrored on alternate passes for zigzag)
+ * with the scallops shaded, both cusps, the flanks' widths to each cusp, the ring ellipse the
+ * profile is offset from, and the profiles each approximation assumes. Zoom with the wheel or
+ * the buttons, pan by dragging; the vertical scale can be exaggerated, and then says so.
  */
-import type { ProcedureKey } from '../../worker/protocol';
-import { COLOURS, formatLength, html, LABELS, svg, type TeachingView, type ViewContext } from './common';
+import { PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures';
+import { formatLen } from '../format';
+import { html, svg, type TeachingView, untilted, type ViewContext } from './common';
 import { autoExaggeration } from './scale';
 
 type Box = { x: number; y: number; w: number; h: number };
+
+/** z of a profile (flat y, z, y increasing) at y, or +infinity outside it (linear between samples). */
+function profileHeight(pts: Float64Array, y: number): number {
+  const n = pts.length / 2;
+  if (n < 2 || y < (pts[0] as number) || y > (pts[2 * (n - 1)] as number)) return Number.POSITIVE_INFINITY;
+  let lo = 0;
+  let hi = n - 1;
+  while (hi - lo > 1) {
+    const mid = (lo + hi) >> 1;
+    if ((pts[2 * mid] as number) <= y) lo = mid;
+    else hi = mid;
+  }
+  const y0 = pts[2 * lo] as number;
+  const y1 = pts[2 * hi] as number;
+  const z0 = pts[2 * lo + 1] as number;
+  const z1 = pts[2 * hi + 1] as number;
+  return y1 > y0 ? z0 + ((z1 - z0) * (y - y0)) / (y1 - y0) : Math.min(z0, z1);
+}
 
 export class ProfileView implements TeachingView {
   readonly id = 'profile';
@@ -17,7 +36,7 @@ export class ProfileView implements TeachingView {
   private readonly plot = svg('svg', {
     class: 'profile-svg',
     role: 'img',
-    'aria-label': 'Cross-feed profile of two adjacent passes',
+    'aria-label': 'Cross-feed profile of three adjacent passes',
   });
   private readonly layer = svg('g');
   private readonly scaleNote = html('span', { class: 'scale-note', 'data-testid': 'profile-scale' });
@@ -53,154 +72,168 @@ export class ProfileView implements TeachingView {
 
   private legend(): HTMLElement {
     const legend = html('p', { class: 'view-legend' });
-    for (const key of ['exact', 'sekine', 'redonnet', 'bedi'] as const) {
+    for (const key of PROCEDURE_KEYS) {
       const item = html('span', { class: 'legend-item', 'data-procedure': key });
-      item.append(
-        html('span', { class: 'swatch', style: `background:${COLOURS[key]}` }),
-        document.createTextNode(LABELS[key]),
-      );
+      item.append(html('span', { class: 'swatch' }), document.createTextNode(PROCEDURES[key].shortLabel));
       legend.append(item);
     }
     const ring = html('span', { class: 'legend-item' });
-    ring.append(
-      html('span', { class: 'swatch swatch-faint' }),
-      document.createTextNode('ring ellipse (Rb, Rb sin rho)'),
-    );
+    ring.append(html('span', { class: 'swatch swatch-faint' }), document.createTextNode('ring ellipse (a = Rb, b)'));
     legend.append(ring);
     return legend;
   }
 
   update(ctx: ViewContext): void {
     this.ctx = ctx;
-    const t = ctx.reply.teaching;
-    if (!t) return;
-    const L = 2 * ctx.reply.halfIntervalMm;
-    const h = ctx.reply.scallopHeightMm;
-    const R = ctx.R;
+    const { data } = ctx;
+    const ex = data.exact;
+    const L = ex.intervalMm;
+    const h = ex.cuspHeightMm;
+    const R = data.forward.toolRadiusMm;
     const k = this.verticalScale(ctx);
-    const Y = (y: number) => y;
     const Z = (z: number) => -z * k;
+    const mirrored = ex.pattern === 'zigzag';
+    // Passes: contact at -L, 0, L; for zigzag the neighbours are mirror images.
+    const passes: ReadonlyArray<readonly [number, 1 | -1]> = [
+      [-L, mirrored ? -1 : 1],
+      [0, 1],
+      [L, mirrored ? -1 : 1],
+    ];
     this.layer.replaceChildren();
     this.curves.clear();
-    const path = (pts: Float64Array, centre: number, mirror: boolean, maxZ: number) => {
-      const parts: string[] = [];
-      for (let i = 0; i < pts.length; i += 2) {
-        const z = pts[i + 1] as number;
-        if (z > maxZ) break;
-        parts.push(`${Y(centre + (mirror ? -1 : 1) * (pts[i] as number))},${Z(z)}`);
-      }
-      return parts.join(' ');
-    };
     const top = Math.min(R, 4 * h);
-    // Scallop: material left between the passes, under the lower envelope of both profiles.
-    const env: string[] = [];
-    const exact = t.curves.exact;
-    const heightAt = (y: number) => {
-      const a = Math.abs(y);
-      for (let i = 2; i < exact.length; i += 2) {
-        const y1 = exact[i] as number;
-        if (y1 >= a) {
-          const y0 = exact[i - 2] as number;
-          const z0 = exact[i - 1] as number;
-          const z1 = exact[i + 1] as number;
-          return y1 > y0 ? z0 + ((z1 - z0) * (a - y0)) / (y1 - y0) : z1;
-        }
-      }
-      return Number.POSITIVE_INFINITY;
-    };
-    const n = 400;
-    env.push(`${Y(0)},${Z(0)}`);
+    const profile = data.curves.profile;
+    const passHeight = (y: number, [c, m]: readonly [number, 1 | -1]) => profileHeight(profile, m * (y - c));
+    // Scallops: material left between the passes, under the lower envelope of the three profiles.
+    const n = 600;
+    const env: string[] = [`${-L},${Z(0)}`];
     for (let i = 0; i <= n; i++) {
-      const y = (L * i) / n;
-      env.push(`${Y(y)},${Z(Math.min(heightAt(y), heightAt(y - L)))}`);
+      const y = -L + (2 * L * i) / n;
+      env.push(`${y},${Z(Math.min(...passes.map((p) => passHeight(y, p))))}`);
     }
-    env.push(`${Y(L)},${Z(0)}`);
+    env.push(`${L},${Z(0)}`);
     this.layer.append(svg('polygon', { points: env.join(' '), class: 'scallop', 'data-testid': 'profile-scallop' }));
-    // Designed plane and h pseudo plane.
-    const span = { from: -0.2 * R, to: L + 0.2 * R };
+    // The three passes, and the tool centre O (-y0 from the contact) when it lies beyond them.
+    const y0 = ex.contactOffsetMm;
+    const span = { from: Math.min(-L - 0.2 * R, -y0 - 0.1 * R), to: Math.max(L + 0.2 * R, -y0 + 0.1 * R) };
     this.layer.append(svg('line', { x1: span.from, y1: Z(0), x2: span.to, y2: Z(0), class: 'ground' }));
     this.layer.append(svg('line', { x1: span.from, y1: Z(h), x2: span.to, y2: Z(h), class: 'hplane' }));
-    // Each curve is drawn for both passes (centres 0 and L), both sides of each.
-    const placements: ReadonlyArray<readonly [number, boolean]> = [
-      [0, false],
-      [0, true],
-      [L, false],
-      [L, true],
-    ];
-    // Ring ellipse, faint, for both passes.
-    for (const [c, m] of placements) {
-      this.layer.append(
-        svg('polyline', { points: path(t.curves.ringEllipse, c, m, Number.POSITIVE_INFINITY), class: 'ring' }),
-      );
-    }
-    const draw = (key: ProcedureKey, pts: Float64Array | null) => {
-      if (!pts) return;
-      const els: SVGElement[] = [];
-      for (const [c, m] of placements) {
-        const line = svg('polyline', {
-          points: path(pts, c, m, top),
-          class: `curve curve-${key}`,
-          stroke: COLOURS[key],
-          'data-procedure': key,
-        });
-        els.push(line);
-        this.layer.append(line);
-      }
-      this.curves.set(key, els);
+    // The ring ellipse of the middle pass, faint.
+    const ring: string[] = [];
+    const ringPts = data.curves.ringEllipse;
+    for (let i = 0; i < ringPts.length; i += 2) ring.push(`${ringPts[i]},${Z(ringPts[i + 1] as number)}`);
+    this.layer.append(svg('polyline', { points: ring.join(' '), class: 'ring' }));
+    const polyline = (key: ProcedureKey, points: string) => {
+      const line = svg('polyline', { points, class: `curve curve-${key}`, 'data-procedure': key });
+      this.layer.append(line);
+      const list = this.curves.get(key) ?? [];
+      list.push(line);
+      this.curves.set(key, list);
     };
-    draw('sekine', t.curves.sekine);
-    draw('redonnet', t.curves.redonnet);
-    draw('bedi', t.curves.bedi);
-    draw('exact', t.curves.exact);
-    // Dimensions: h at the cusp, L/2 and L under the plane.
-    const d = 0.06 * R;
-    const half = L / 2;
-    const dims: Array<[number, number, number, number, string]> = [
-      [half, Z(0), half, Z(h), `h = ${formatLength(h, ctx.unit)}`],
-      [0, Z(0) + 2 * d, half, Z(0) + 2 * d, `L/2 = ${formatLength(half, ctx.unit)}`],
-      [0, Z(0) + 4 * d, L, Z(0) + 4 * d, `L = ${formatLength(L, ctx.unit)}`],
-    ];
-    for (const [x1, y1, x2, y2, label] of dims) {
-      this.layer.append(svg('line', { x1, y1, x2, y2, class: 'dim' }));
-      const text = svg('text', {
-        x: (x1 + x2) / 2 + (x1 === x2 ? d / 2 : 0),
-        y: (y1 + y2) / 2 - (x1 === x2 ? 0 : d / 3),
-        class: 'dim-text',
-      });
-      text.textContent = label;
-      this.layer.append(text);
+    // The approximations: symmetric, their right halves drawn on both sides of each pass.
+    for (const key of PROCEDURE_KEYS) {
+      if (key === 'exact') continue;
+      const pts = data.curves.approximations[key];
+      if (!pts) continue;
+      for (const [c] of passes) {
+        for (const side of [1, -1]) {
+          const parts: string[] = [];
+          for (let i = 0; i < pts.length; i += 2) {
+            const z = pts[i + 1] as number;
+            if (z > top) break;
+            parts.push(`${c + side * (pts[i] as number)},${Z(z)}`);
+          }
+          polyline(key, parts.join(' '));
+        }
+      }
     }
+    // The exact profile of each pass, whole (both flanks).
+    for (const [c, m] of passes) {
+      const parts: string[] = [];
+      for (let i = 0; i < profile.length; i += 2) {
+        const z = profile[i + 1] as number;
+        if (z <= top) parts.push(`${c + m * (profile[i] as number)},${Z(z)}`);
+      }
+      polyline('exact', parts.join(' '));
+    }
+    const d = 0.03 * (span.to - span.from);
+    this.drawDimensions(ctx, k, top, d);
     const bottom = Z(0) + 5 * d;
     this.home = { x: span.from, y: Z(top) - d, w: span.to - span.from, h: bottom - Z(top) + d };
     this.setBox(this.home);
     const auto = this.exaggeration.value === 'auto' ? ' (auto)' : '';
     this.scaleNote.textContent = k === 1 ? `true scale${auto}` : `vertical scale exaggerated x${k}${auto}`;
+    this.highlight(this.highlighted);
+  }
+
+  /** Cusp heights, the flanks' widths to their cusps, L, and the tool centre O. */
+  private drawDimensions(ctx: ViewContext, k: number, top: number, d: number): void {
+    const { data, unit } = ctx;
+    const ex = data.exact;
+    const L = ex.intervalMm;
+    const Z = (z: number) => -z * k;
+    const f = (mm: number) => formatLen(mm, unit);
+    const fh = (mm: number) => formatLen(mm, unit, 'height');
+    const dims: Array<[number, number, number, number, string]> = [];
+    const { right, left } = ex;
+    const name = (c: { heightMm: number }) => (c.heightMm >= Math.max(right.heightMm, left.heightMm) ? 'h' : "h'");
+    dims.push([right.yMm, Z(0), right.yMm, Z(right.heightMm), `${name(right)} = ${fh(right.heightMm)}`]);
+    if (!untilted(ctx)) dims.push([left.yMm, Z(0), left.yMm, Z(left.heightMm), `${name(left)} = ${fh(left.heightMm)}`]);
+    if (untilted(ctx) || ex.pattern === 'zigzag')
+      dims.push([0, Z(0) + 2 * d, L / 2, Z(0) + 2 * d, `L/2 = ${f(L / 2)}`]);
+    else {
+      dims.push([0, Z(0) + 2 * d, right.yMm, Z(0) + 2 * d, `wR = ${f(right.yMm)}`]);
+      dims.push([left.yMm, Z(0) + 2 * d, 0, Z(0) + 2 * d, `wL = ${f(-left.yMm)}`]);
+    }
+    dims.push([0, Z(0) + 4 * d, L, Z(0) + 4 * d, `L = ${f(L)}`]);
+    for (const [x1, y1, x2, y2, text] of dims) {
+      this.layer.append(svg('line', { x1, y1, x2, y2, class: 'dim' }));
+      const t = svg('text', {
+        x: (x1 + x2) / 2 + (x1 === x2 ? d / 2 : 0),
+        y: (y1 + y2) / 2 - (x1 === x2 ? 0 : d / 3),
+        class: 'dim-text',
+      });
+      t.textContent = text;
+      this.layer.append(t);
+    }
+    // The tool centre point O lies -y0 across the feed from the contact.
+    const y0 = ex.contactOffsetMm;
+    if (y0 !== 0) {
+      const x = -y0;
+      this.layer.append(svg('line', { x1: x, y1: Z(0), x2: x, y2: Z(top), class: 'centre-line' }));
+      const t = svg('text', { x: x + d / 3, y: Z(top) + d, class: 'dim-text centre-text' });
+      t.textContent = `O (y0 = ${f(y0)})`;
+      this.layer.append(t);
+    }
   }
 
   /**
    * The chosen exaggeration, or with "auto" the largest 1-2-5 step at which the drawn band
-   * (up to min(R, 4h)) stays within about a third of the view's width.
+   * (up to min(R, 4h)) stays within about a third of one step-over's width.
    */
   private verticalScale(ctx: ViewContext): number {
     const chosen = Number(this.exaggeration.value);
     if (chosen > 0) return chosen;
-    const width = 2 * ctx.reply.halfIntervalMm + 0.4 * ctx.R;
-    return autoExaggeration(width, Math.min(ctx.R, 4 * ctx.reply.scallopHeightMm));
+    const R = ctx.data.forward.toolRadiusMm;
+    const width = ctx.data.exact.intervalMm + 0.4 * R;
+    return autoExaggeration(width, Math.min(R, 4 * ctx.data.exact.cuspHeightMm));
   }
 
+  private highlighted: ProcedureKey | null = null;
+
   highlight(key: ProcedureKey | null): void {
+    this.highlighted = key;
     for (const [k, els] of this.curves) for (const e of els) e.classList.toggle('dimmed', key !== null && k !== key);
   }
 
   private zoomToCusp(): void {
     if (!this.ctx) return;
-    const half = this.ctx.reply.halfIntervalMm;
+    const cusp = this.ctx.data.exact.right;
     const k = this.verticalScale(this.ctx);
-    const h = this.ctx.reply.scallopHeightMm;
-    const w = Math.max(0.05 * half, 0.002);
+    const w = Math.max(0.05 * Math.abs(cusp.yMm), 0.002);
     this.setBox({
-      x: half - w,
-      y: -h * k - (w * this.home.h) / this.home.w,
+      x: cusp.yMm - w,
+      y: -cusp.heightMm * k - (w * this.home.h) / this.home.w,
       w: 2 * w,
       h: (2 * w * this.home.h) / this.home.w,
     });

@@ -2,9 +2,10 @@
  * The paper's Tables 2-5 regenerated beside the printed values. A computed value that does
  * not round to the printed digits is highlighted; clicking a condition loads it.
  */
+import { PROCEDURES, type ProcedureKey } from '../../core/procedures';
 import type { PaperTableRow } from '../../core/teaching';
-import type { ProcedureKey } from '../../worker/protocol';
-import { html, LABELS, type TeachingView, type ViewContext } from './common';
+import { formatLen } from '../format';
+import { html, type TeachingView, type ViewContext } from './common';
 
 type Key = 'threeD' | 'sekine' | 'redonnet' | 'bedi';
 const KEYS: ReadonlyArray<[Key, ProcedureKey]> = [
@@ -19,19 +20,25 @@ export class TablesView implements TeachingView {
   readonly title = "The paper's tables";
   readonly element = html('div', { class: 'view-tables', 'data-testid': 'paper-tables' });
   private rows: readonly PaperTableRow[] = [];
-  private readonly note: HTMLElement;
+  private readonly why: HTMLElement;
 
   constructor(onLoad: (c: { R: number; Rcr: number; rho: number; h: number }) => void) {
     const note = html(
       'p',
       { class: 'view-note' },
-      'Each cell: printed / recomputed (mm). Highlighted: the recomputed value does not round to the printed digits. ' +
-        "The printed 3D column is 0.0005-0.013 mm low: Figure 1's search range can stop before the true maximum " +
-        "(shared/notes/geometry.md); the exact values here agree with brute-force sampling and with the paper's own procedure run to convergence. " +
+      'Each cell: printed / recomputed, in mm as the paper prints them (in either unit). Highlighted: the recomputed value does not round to the printed digits. ' +
         'Tables 4-5 evaluate Eqs. 12-13 at the printed 3D L/2, as the paper did. Click a condition to load it.',
     );
-    this.note = note;
-    this.element.append(note);
+    const why = html(
+      'p',
+      { class: 'view-note', 'data-testid': 'paper-tables-why' },
+      "Why the printed 3D column is 0.0005-0.013 mm low: the paper's Figure 1 leaves two things open, whether eta of Eq. 2 is normalised and how far the search of steps 15-16 runs, " +
+        'and its search range can stop just before the true maximum. One plausible reading (Eq. 2 as printed, the range from the single-contact section to the angle of its P_hp) ' +
+        'returns the printed 1.879 mm for R = 3, Rcr = 1, rho = 5, h = 0.10, where the true maximum is 1.892 mm. ' +
+        "The exact values here agree with brute-force sampling of the torus surface and with the paper's own procedure run to convergence (the step-by-step view), so they are not tuned to the printed column.",
+    );
+    this.why = why;
+    this.element.append(note, why);
     this.element.addEventListener('click', (e) => {
       const tr = (e.target as HTMLElement).closest('tr[data-condition]');
       const row = tr ? this.rows[Number(tr.getAttribute('data-condition'))] : undefined;
@@ -49,7 +56,7 @@ export class TablesView implements TeachingView {
       'Rcr',
       'rho',
       what === 'half' ? 'h' : 'L/2 (3D)',
-      ...KEYS.map(([, p]) => LABELS[p]),
+      ...KEYS.map(([, p]) => PROCEDURES[p].shortLabel),
     ]) {
       head.append(html('th', { scope: 'col' }, t));
     }
@@ -84,7 +91,7 @@ export class TablesView implements TeachingView {
         td.append(
           html('span', { class: 'printed' }, printed.toFixed(3)),
           document.createTextNode(' / '),
-          html('span', { class: 'computed' }, computed.toFixed(4)),
+          html('span', { class: 'computed' }, formatLen(computed, 'mm')),
         );
         tr.append(td);
       }
@@ -96,10 +103,10 @@ export class TablesView implements TeachingView {
 
   /** The tables are recomputed in the worker; they are fixed conditions, so they are built once. */
   update(ctx: ViewContext): void {
-    const rows = ctx.reply.teaching?.tables;
-    if (!rows || this.rows.length > 0) return;
+    const rows = ctx.data.tables;
+    if (this.rows.length > 0) return;
     this.rows = rows;
-    this.note.after(
+    this.why.after(
       this.table('Tables 2-3: L/2 [mm] for h', 'half'),
       this.table('Tables 4-5: h [mm] at the printed 3D L/2', 'height'),
     );

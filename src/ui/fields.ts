@@ -1,0 +1,165 @@
+/**
+ * The input side of the page: a slider paired with a number field for each value, the switches
+ * (mode, unit, pass pattern) and the tool presets. It reports what the user did and draws the
+ * state it is given (values, ranges in the user's unit, messages); it holds no state itself.
+ */
+
+import { unitSymbol } from '../core/units';
+import type { PassPattern } from '../core/validate';
+import { FIELD_LABELS, type FieldName } from '../core/validate';
+import type { SolveMode } from '../worker/protocol';
+import { html } from './dom';
+import { sliderRanges } from './sliders';
+import {
+  type CalculatorState,
+  FIELD_KEYS,
+  type FieldKey,
+  formatField,
+  isLengthField,
+  PRESETS,
+  parseField,
+  type Target,
+  type Unit,
+} from './state';
+
+export interface FieldEvents {
+  /** A field's text changed (typed, or a slider moved: then already formatted). */
+  readonly onField: (key: FieldKey, text: string) => void;
+  readonly onMode: (mode: SolveMode) => void;
+  readonly onUnit: (unit: Unit) => void;
+  readonly onPattern: (pattern: PassPattern) => void;
+  readonly onTarget: (target: Target) => void;
+  /** A preset was chosen: R and Rcr in mm. */
+  readonly onPreset: (preset: { readonly R: number; readonly Rcr: number }) => void;
+}
+
+const HINTS: Readonly<Record<FieldKey, string>> = {
+  R: 'half the tool diameter',
+  Rcr: '0 = flat end, R = ball end',
+  rho: 'tool inclination along the feed',
+  tilt: 'tool inclination across the feed; + leans the shank to +Y',
+  h: 'height of the highest cusp left between passes',
+  L: 'distance between adjacent cutter-contact paths',
+  ra: 'target roughness across the feed; the scallop height follows',
+};
+
+const CORE_FIELD: Readonly<Record<FieldKey, FieldName>> = {
+  R: 'R',
+  Rcr: 'Rcr',
+  rho: 'rho',
+  tilt: 'tilt',
+  h: 'h',
+  L: 'interval',
+  ra: 'ra',
+};
+
+interface FieldView {
+  readonly row: HTMLElement;
+  readonly slider: HTMLInputElement;
+  readonly input: HTMLInputElement;
+  readonly unitLabel: HTMLElement;
+  readonly error: HTMLElement;
+}
+
+function must<T extends Element>(root: ParentNode, selector: string): T {
+  const found = root.querySelector<T>(selector);
+  if (!found) throw new Error(`missing element ${selector}`);
+  return found;
+}
+
+export class FieldsPanel {
+  private readonly fields = new Map<FieldKey, FieldView>();
+
+  constructor(
+    private readonly root: HTMLElement,
+    events: FieldEvents,
+  ) {
+    const container = must<HTMLElement>(root, '.fields');
+    for (const key of FIELD_KEYS) this.fields.set(key, this.buildField(container, key, events));
+    this.wireSwitch('mode', (v) => events.onMode(v === 'inverse' ? 'inverse' : 'forward'));
+    this.wireSwitch('unit', (v) => events.onUnit(v === 'in' ? 'in' : 'mm'));
+    this.wireSwitch('pattern', (v) => events.onPattern(v === 'zigzag' ? 'zigzag' : 'one-way'));
+    this.wireSwitch('target', (v) => events.onTarget(v === 'ra' ? 'ra' : 'h'));
+    const select = must<HTMLSelectElement>(root, '[data-testid="preset"]');
+    PRESETS.forEach((p, i) => {
+      select.append(html('option', { value: String(i) }, p.label));
+    });
+    select.addEventListener('change', () => {
+      const preset = PRESETS[Number(select.value)];
+      if (preset) events.onPreset(preset);
+    });
+  }
+
+  private buildField(container: HTMLElement, key: FieldKey, events: FieldEvents): FieldView {
+    const id = `field-${key}`;
+    const label = FIELD_LABELS[CORE_FIELD[key]];
+    const row = html('div', { class: 'field', 'data-field': key });
+    const slider = html('input', {
+      type: 'range',
+      'data-testid': `slider-${key}`,
+      'aria-label': `${label} slider`,
+      'aria-describedby': `${id}-error`,
+    });
+    const input = html('input', {
+      id,
+      type: 'text',
+      inputmode: 'decimal',
+      autocomplete: 'off',
+      spellcheck: 'false',
+      'data-testid': `input-${key}`,
+      'aria-describedby': `${id}-hint ${id}-error`,
+    });
+    const unitLabel = html('span', { class: 'unit' });
+    const hint = html('span', { class: 'hint', id: `${id}-hint` }, HINTS[key]);
+    const error = html('div', { class: 'error', id: `${id}-error`, role: 'alert', 'data-testid': `error-${key}` });
+    const line = html('div', { class: 'field-line' });
+    line.append(slider, input, unitLabel);
+    row.append(html('label', { for: id }, label), line, hint, error);
+    container.append(row);
+    input.addEventListener('input', () => events.onField(key, input.value));
+    // A slider's value in the user's unit, without float noise.
+    slider.addEventListener('input', () => events.onField(key, formatField(Number(slider.value))));
+    return { row, slider, input, unitLabel, error };
+  }
+
+  private wireSwitch(name: string, on: (value: string) => void): void {
+    for (const radio of this.root.querySelectorAll<HTMLInputElement>(`input[name="${name}"]`)) {
+      radio.addEventListener('change', () => {
+        if (radio.checked) on(radio.value);
+      });
+    }
+  }
+
+  /** Draws a state: values, visibility by mode, unit labels, slider ranges and the messages. */
+  render(state: CalculatorState, messages: ReadonlyMap<FieldKey, string>): void {
+    const ranges = sliderRanges(state);
+    const forward = state.mode === 'forward';
+    for (const [key, view] of this.fields) {
+      const given = forward ? state.target : 'L';
+      view.row.hidden = (key === 'h' || key === 'ra' || key === 'L') && key !== given;
+      view.unitLabel.textContent = isLengthField(key) ? unitSymbol(state.unit) : 'deg';
+      if (view.input.value !== state.fields[key]) view.input.value = state.fields[key];
+      const r = ranges[key];
+      view.slider.min = r.min;
+      view.slider.max = r.max;
+      view.slider.step = r.step;
+      const v = parseField(state.fields[key]);
+      if (v !== null && view.slider !== document.activeElement) view.slider.value = String(v);
+      const message = messages.get(key) ?? '';
+      if (view.error.textContent !== message) view.error.textContent = message;
+      view.row.classList.toggle('invalid', message !== '');
+      view.input.setAttribute('aria-invalid', String(message !== ''));
+    }
+    const checked: Readonly<Record<string, string>> = {
+      mode: state.mode,
+      unit: state.unit,
+      pattern: state.pattern,
+      target: state.target,
+    };
+    const targetSwitch = this.root.querySelector<HTMLElement>('[data-testid="target-switch"]');
+    if (targetSwitch) targetSwitch.hidden = !forward;
+    for (const [name, value] of Object.entries(checked))
+      for (const radio of this.root.querySelectorAll<HTMLInputElement>(`input[name="${name}"]`))
+        radio.checked = radio.value === value;
+  }
+}

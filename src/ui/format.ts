@@ -1,0 +1,54 @@
+/**
+ * Numbers as the page shows them, on top of the core's units module: lengths in the user's unit
+ * to a fixed resolution (0.1 um in mm, 10 uin in inch; heights one digit finer, the stepper's
+ * convergence two finer) and never fewer than four significant digits, so a micro tool reads
+ * 4.472e-5 rather than 0.0000. Never NaN, never -0: a missing value is a dash.
+ */
+import { formatSignificant, fromMm, type LengthUnit, NO_VALUE, unitSymbol } from '../core/units';
+
+export type Resolution = 'length' | 'height' | 'fine';
+
+const DECIMALS: Readonly<Record<Resolution, Readonly<Record<LengthUnit, number>>>> = {
+  length: { mm: 4, in: 5 },
+  height: { mm: 5, in: 6 },
+  fine: { mm: 6, in: 7 },
+};
+
+/** Significant digits that give `decimals` decimals for `value`, at least four. */
+function digitsFor(value: number, decimals: number): number {
+  const magnitude = Math.abs(value);
+  if (magnitude === 0) return decimals + 1;
+  return Math.max(4, decimals + Math.floor(Math.log10(magnitude)) + 1);
+}
+
+/** A length given in mm, in `unit` (no symbol); a dash for null or a non-finite value. */
+export function formatLen(mm: number | null, unit: LengthUnit, resolution: Resolution = 'length'): string {
+  if (mm === null || !Number.isFinite(mm)) return NO_VALUE;
+  const v = fromMm(mm, unit);
+  return formatSignificant(v, { digits: digitsFor(v, DECIMALS[resolution][unit]) });
+}
+
+/** A signed length difference (`+` before positive values). */
+export function formatSignedLen(mm: number | null, unit: LengthUnit, resolution: Resolution = 'length'): string {
+  if (mm === null || !Number.isFinite(mm)) return NO_VALUE;
+  const v = fromMm(mm, unit);
+  return formatSignificant(v, { digits: digitsFor(v, DECIMALS[resolution][unit]), signed: true });
+}
+
+/** A length with its unit symbol (a dash alone when there is no value). */
+export function formatLenUnit(mm: number | null, unit: LengthUnit, resolution: Resolution = 'length'): string {
+  const text = formatLen(mm, unit, resolution);
+  return text === NO_VALUE ? text : `${text} ${unitSymbol(unit)}`;
+}
+
+/** An angle in degrees for captions: up to 6 significant digits, no trailing zeros. */
+export function formatDeg(deg: number): string {
+  return formatSignificant(deg, { digits: 6, trimZeros: true, exponentBelow: 1e-4 });
+}
+
+/** An angle given in radians, in degrees with two decimals (captions of the step-through). */
+export function formatRadAsDeg(rad: number): string {
+  return `${formatSignificant((rad * 180) / Math.PI, { digits: Math.max(3, digitsFor((rad * 180) / Math.PI, 2)) })} deg`;
+}
+
+export { NO_VALUE };

@@ -1,0 +1,182 @@
+/**
+ * The results: the headline (step-over L, or the scallop height when solving for it), the flank
+ * widths, the contact offset and the cusp heights, and the table of every procedure with its
+ * notes. It draws exactly what `Shown` says: a reply to the inputs on screen; the last one marked
+ * stale while a newer one is awaited or the solver gave up; or dashes for invalid inputs.
+ */
+import { APPROXIMATION_KEYS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../core/procedures';
+import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/units';
+import type { ProcedureNote, ProcedureRow, SolveMode, SolveReply } from '../worker/protocol';
+import { html } from './dom';
+import { formatLen, formatLenUnit, formatSignedLen } from './format';
+import type { Shown } from './freshness';
+
+type OkReply = Extract<SolveReply, { ok: true }>;
+
+function must<T extends Element>(root: ParentNode, selector: string): T {
+  const found = root.querySelector<T>(selector);
+  if (!found) throw new Error(`missing element ${selector}`);
+  return found;
+}
+
+/** A procedure's note in words, lengths in the user's unit. */
+export function noteText(key: ProcedureKey, note: ProcedureNote, unit: LengthUnit): string {
+  const label = PROCEDURES[key].shortLabel;
+  const u = unitSymbol(unit);
+  switch (note.kind) {
+    case 'reason':
+      return note.text;
+    case 'beyond-model': {
+      const what = note.quantity === 'h' ? 'h' : 'L/2';
+      const limit =
+        note.shape === 'circle' ? 'Reff' : note.quantity === 'h' ? 'its height Rlong sin(rho)' : 'its half-width Rlong';
+      const where = note.quantity === 'h' ? 'above the widest point of' : 'wider than';
+      return `${label}: ${what} = ${formatLen(note.valueMm, unit, 'height')} ${u} is ${where} its ${note.shape} (${limit} = ${formatLen(note.limitMm, unit)} ${u}).`;
+    }
+    case 'wall':
+      return `${label}: its step-over L = ${formatLen(note.intervalMm, unit)} ${u} is not below the widest step-over that leaves a scallop (${formatLen(note.maxIntervalMm, unit)} ${u}): passes this far apart leave a wall.`;
+  }
+}
+
+export class ResultsPanel {
+  private readonly section: HTMLElement;
+  private readonly headlineLabel: HTMLElement;
+  private readonly headline: HTMLOutputElement;
+  private readonly thead: HTMLElement;
+  private readonly tbody: HTMLElement;
+  private readonly notes: HTMLElement;
+  private readonly cuspRow: HTMLElement;
+  private readonly status: HTMLElement;
+  /** What the table shows now (so an unchanged reply is not drawn again). */
+  private drawn: { reply: OkReply | null; unit: LengthUnit; mode: SolveMode; leadOnly: boolean } | null = null;
+
+  constructor(private readonly root: HTMLElement) {
+    this.section = must(root, '.results');
+    this.headlineLabel = must(root, '[data-role="headline-label"]');
+    this.headline = must(root, '[data-role="headline"]');
+    this.thead = must(root, '.procedures thead');
+    this.tbody = must(root, '.procedures tbody');
+    this.notes = must(root, '[data-testid="table-notes"]');
+    this.cuspRow = must(root, '[data-role="cusps"]');
+    this.status = must(root, '[data-testid="results-status"]');
+  }
+
+  private set(testId: string, text: string): void {
+    const e = this.root.querySelector(`[data-testid="${testId}"]`);
+    if (e && e.textContent !== text) e.textContent = text;
+  }
+
+  /**
+   * Draws what is shown. `mode` and `tiltDeg` are the inputs on screen (they label the headline
+   * and the table while no reply answers them).
+   */
+  render(shown: Shown<SolveReply>, unit: LengthUnit, mode: SolveMode, tiltDeg: number | null): void {
+    const reply = shown.kind === 'current' ? shown.reply : shown.kind === 'invalid' ? null : shown.last;
+    const ok = reply?.ok ? reply : null;
+    // A stale reply keeps its own mode (marked stale); nothing at all follows the inputs' mode.
+    const drawMode: SolveMode = ok ? (ok.request.mode === 'inverse' ? 'inverse' : 'forward') : mode;
+    const stale = shown.kind !== 'current';
+    this.section.classList.toggle('stale', stale && ok !== null);
+    this.section.setAttribute('aria-busy', String(shown.kind === 'pending'));
+    this.status.textContent =
+      shown.kind === 'pending' && ok
+        ? 'Updating: these numbers are for the previous inputs.'
+        : shown.kind === 'failed'
+          ? ok
+            ? 'Out of date: the solver gave up; these numbers are for earlier inputs.'
+            : 'No answer: the solver gave up.'
+          : '';
+    this.status.hidden = this.status.textContent === '';
+    const forward = drawMode === 'forward';
+    this.headlineLabel.textContent = forward ? 'Step-over L' : 'Scallop height h';
+    this.headline.dataset.testid = forward ? 'result-exact-interval' : 'result-exact-height';
+    const e = ok?.exact ?? null;
+    const value = (mm: number | null | undefined, resolution: 'length' | 'height' = 'length') =>
+      e === null ? NO_VALUE : formatLenUnit(mm ?? null, unit, resolution);
+    this.headline.textContent = forward ? value(e?.intervalMm) : value(e?.cuspHeightMm, 'height');
+    this.set('result-exact-half', e === null ? NO_VALUE : formatLen(e.halfIntervalMm, unit));
+    this.set('result-width-right', value(e?.widthRightMm));
+    this.set('result-width-left', value(e?.widthLeftMm));
+    this.set(
+      'result-contact-offset',
+      e === null ? NO_VALUE : `${formatSignedLen(e.contactOffsetMm, unit)} ${unitSymbol(unit)}`,
+    );
+    this.set(
+      'result-centre-offset',
+      e === null ? NO_VALUE : `${formatSignedLen(-e.contactOffsetMm, unit)} ${unitSymbol(unit)}`,
+    );
+    const zigzag = (ok?.request.input.pattern ?? null) === 'zigzag';
+    this.cuspRow.hidden = !zigzag;
+    this.set('result-cusp-height', zigzag ? value(e?.cuspHeightMm, 'height') : NO_VALUE);
+    this.set('result-other-cusp-height', zigzag ? value(e?.otherCuspHeightMm, 'height') : NO_VALUE);
+    const R = ok?.request.input.toolRadiusMm;
+    this.set(
+      'result-percent-diameter',
+      e === null || R === undefined
+        ? ''
+        : `L = ${formatPercent((100 * e.intervalMm) / (2 * R), 1).replace(/^\+/, '')} % of the tool diameter`,
+    );
+    const leadOnly = (ok ? ok.request.input.tiltAngleDeg : (tiltDeg ?? 0)) !== 0;
+    this.table(ok, unit, drawMode, leadOnly);
+  }
+
+  private table(reply: OkReply | null, unit: LengthUnit, mode: SolveMode, leadOnly: boolean): void {
+    const d = this.drawn;
+    if (d && d.reply === reply && d.unit === unit && d.mode === mode && d.leadOnly === leadOnly) return;
+    this.drawn = { reply, unit, mode, leadOnly };
+    const u = unitSymbol(unit);
+    const forward = mode === 'forward';
+    const head = forward
+      ? ['Procedure', `L/2 [${u}]`, `Deviation [${u}]`, 'Deviation [%]', `Scallop it leaves [${u}]`]
+      : ['Procedure', `h [${u}]`, `Deviation [${u}]`, 'Deviation [%]'];
+    const headRow = html('tr');
+    for (const h of head) headRow.append(html('th', { scope: 'col' }, h));
+    this.thead.replaceChildren(headRow);
+    const rows = new Map<ProcedureKey, ProcedureRow>();
+    for (const r of reply?.rows ?? []) rows.set(r.key, r);
+    const notes: string[] = [];
+    this.tbody.replaceChildren();
+    for (const key of PROCEDURE_KEYS) {
+      const row = rows.get(key) ?? null;
+      const info = PROCEDURES[key];
+      const tr = html('tr', {
+        'data-procedure': key,
+        tabindex: '0',
+        title: 'Click to select this procedure in every view',
+      });
+      tr.append(html('th', { scope: 'row' }, leadOnly && info.leadOnly ? `${info.label}, lead only` : info.label));
+      // The headline carries result-exact-half: the table's exact row gets its own ids.
+      const prefix = key === 'exact' ? 'table-exact' : `result-${key}`;
+      const resolution = forward ? 'length' : 'height';
+      const cell = (testId: string | null, text: string) => {
+        const td = html('td');
+        td.append(testId === null ? document.createTextNode(text) : html('output', { 'data-testid': testId }, text));
+        tr.append(td);
+      };
+      const none = reply === null ? NO_VALUE : 'n/a';
+      cell(
+        `${prefix}-${forward ? 'half' : 'h'}`,
+        row?.valueMm == null ? none : formatLen(row.valueMm, unit, resolution),
+      );
+      cell(null, row?.deviationMm == null ? NO_VALUE : formatSignedLen(row.deviationMm, unit, resolution));
+      cell(null, row?.deviationPercent == null ? NO_VALUE : formatPercent(row.deviationPercent));
+      if (forward) cell(`${prefix}-real-h`, formatLen(row?.realScallopMm ?? null, unit, 'height'));
+      if (row?.note) {
+        const text = noteText(key, row.note, unit);
+        tr.title = text;
+        notes.push(text);
+      }
+      this.tbody.append(tr);
+    }
+    const lead = leadOnly
+      ? `With tilt, ${APPROXIMATION_KEYS.filter((k) => PROCEDURES[k].leadOnly)
+          .map((k) => PROCEDURES[k].shortLabel)
+          .join(', ')} are lead-only models: applied with the lead angle alone, the tilt ignored.`
+      : '';
+    const noScallop = reply?.exact.noScallop
+      ? 'No scallop: a flat end lying flat leaves none at any step-over up to its diameter, so L = 2R.'
+      : '';
+    const text = [noScallop, ...notes, reply ? lead : ''].filter((t) => t !== '').join(' ');
+    if (this.notes.textContent !== text) this.notes.textContent = text;
+  }
+}

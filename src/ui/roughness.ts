@@ -1,0 +1,65 @@
+/**
+ * The roughness results: Rz, Ra, Rq of the surface left at the exact step-over (from the solve
+ * reply), the scallop height they come from when the target is Ra, and the rule of thumb
+ * Ra ~ h/4 with its error. Drawn from the same Shown as the other results (dashes when invalid
+ * or while no reply answers the inputs on screen; never a number for other inputs).
+ */
+import { formatPercent, type LengthUnit, NO_VALUE } from '../core/units';
+import type { SolveReply } from '../worker/protocol';
+import { html } from './dom';
+import { formatLenUnit } from './format';
+import type { Shown } from './freshness';
+
+export class RoughnessPanel {
+  private readonly outputs = new Map<string, HTMLOutputElement>();
+  private readonly heightRow: HTMLElement;
+  private readonly rule: HTMLElement;
+
+  /** Builds the block after the results' details list. */
+  constructor(root: HTMLElement) {
+    const list = html('dl', { class: 'details roughness', 'data-testid': 'roughness' });
+    const row = (label: string, testId: string) => {
+      const out = html('output', { 'data-testid': testId }, NO_VALUE);
+      this.outputs.set(testId, out);
+      const div = html('div');
+      const dd = html('dd');
+      dd.append(out);
+      div.append(html('dt', {}, label), dd);
+      list.append(div);
+      return div;
+    };
+    row('Rz', 'result-rz');
+    row('Ra', 'result-ra');
+    row('Rq', 'result-rq');
+    this.heightRow = row('h for this Ra', 'result-ra-height');
+    this.heightRow.hidden = true;
+    this.rule = html('p', { class: 'pct', 'data-testid': 'result-ra-rule' });
+    const details = root.querySelector('.results .details');
+    if (details) details.after(list, this.rule);
+    else root.append(list, this.rule);
+  }
+
+  private set(testId: string, text: string): void {
+    const e = this.outputs.get(testId);
+    if (e && e.textContent !== text) e.textContent = text;
+  }
+
+  render(shown: Shown<SolveReply>, unit: LengthUnit): void {
+    // Only a reply to the inputs on screen: a stale one would show numbers for other inputs.
+    const reply = shown.kind === 'current' && shown.reply.ok ? shown.reply : null;
+    const r = reply?.roughness ?? null;
+    const len = (mm: number | undefined) =>
+      r === null || mm === undefined ? NO_VALUE : formatLenUnit(mm, unit, 'fine');
+    this.set('result-rz', len(r?.rzMm));
+    this.set('result-ra', len(r?.raMm));
+    this.set('result-rq', len(r?.rqMm));
+    const fromRa = reply?.request.mode === 'ra';
+    this.heightRow.hidden = !fromRa;
+    this.set('result-ra-height', fromRa ? len(r?.scallopHeightMm) : NO_VALUE);
+    const text =
+      r === null || r.ruleErrorPercent === null
+        ? ''
+        : `Rule of thumb Ra ~ h/4 = ${formatLenUnit(r.ruleOfThumbRaMm, unit, 'fine')}: ${formatPercent(r.ruleErrorPercent)} % against the exact Ra.`;
+    if (this.rule.textContent !== text) this.rule.textContent = text;
+  }
+}

@@ -1,0 +1,82 @@
+/**
+ * The sliders' ranges and steps, in the user's unit: steps are round numbers of that unit (0.01 mm
+ * or 0.001 in for the tool), so arrow keys move a value by a clean amount instead of a converted
+ * millimetre step. The ranges follow the other values (Rcr up to R, h below the posture's limit,
+ * L below the widest step-over). Pure (no DOM).
+ */
+
+import { PLANE } from '../core/cylinder';
+import { maxRaCachedMm } from '../core/raTarget';
+import { fromMm, toMm } from '../core/units';
+import { maxIntervalMm, scallopHeightLimits, type ToolInput } from '../core/validate';
+import { type CalculatorState, type FieldKey, formatField, parseField } from './state';
+
+export interface SliderRange {
+  readonly min: string;
+  readonly max: string;
+  readonly step: string;
+}
+
+/** Steps per unit: round numbers of the unit itself. */
+const STEPS: Readonly<Record<'mm' | 'in', Readonly<Record<FieldKey, number>>>> = {
+  mm: { R: 0.01, Rcr: 0.01, rho: 0.1, tilt: 0.1, h: 0.001, L: 0.001, ra: 0.0001 },
+  in: { R: 0.001, Rcr: 0.001, rho: 0.1, tilt: 0.1, h: 0.0001, L: 0.0001, ra: 0.00001 },
+};
+
+/** A tool for the ranges: the typed values where they make sense, defaults elsewhere. */
+function rangeTool(state: CalculatorState): ToolInput {
+  const num = (key: FieldKey) => parseField(state.fields[key]);
+  const R = num('R');
+  const Rcr = num('Rcr');
+  const rho = num('rho');
+  const tilt = num('tilt');
+  const rMm = R !== null && R > 0 ? Math.min(1000, Math.max(0.001, toMm(R, state.unit))) : 3;
+  const rcrMm = Rcr !== null && Rcr >= 0 ? Math.min(toMm(Rcr, state.unit), rMm) : rMm / 3;
+  return {
+    toolRadiusMm: rMm,
+    cornerRadiusMm: rcrMm,
+    leadAngleDeg: rho !== null && rho >= 0 && rho < 90 ? rho : 5,
+    tiltAngleDeg: tilt !== null && tilt > -90 && tilt < 90 ? tilt : 0,
+  };
+}
+
+/** Rounds down to a whole number of steps (never below one step above the minimum). */
+function snap(value: number, step: number, min: number): number {
+  return Math.max(min + step, Math.floor(value / step + 1e-9) * step);
+}
+
+/** Every slider's range and step for a state, as the strings a range input takes. */
+export function sliderRanges(state: CalculatorState): Readonly<Record<FieldKey, SliderRange>> {
+  const u = state.unit;
+  const step = STEPS[u];
+  const tool = rangeTool(state);
+  const len = (mm: number) => fromMm(mm, u);
+  const hLimit = scallopHeightLimits(tool).limitMm;
+  const lMax = maxIntervalMm(tool, state.pattern);
+  const ranges: Record<FieldKey, [number, number]> = {
+    R: [step.R * 10, snap(len(25), step.R, 0)],
+    Rcr: [0, snap(len(tool.toolRadiusMm), step.Rcr, 0)],
+    rho: [0, 89.9],
+    tilt: [-89.9, 89.9],
+    h: [step.h, snap(len(Math.min(0.999 * hLimit, 2)), step.h, step.h)],
+    L: [step.L * 10, snap(len(0.999 * lMax), step.L, step.L * 10)],
+    // Only drawn (and its maximum worked out) while Ra is the target.
+    ra:
+      state.mode === 'forward' && state.target === 'ra'
+        ? [
+            step.ra,
+            snap(
+              len(Math.min(0.999 * maxRaCachedMm({ ...tool, pattern: state.pattern, surface: PLANE }), 0.5)),
+              step.ra,
+              step.ra,
+            ),
+          ]
+        : [step.ra, 10 * step.ra],
+  };
+  const out = {} as Record<FieldKey, SliderRange>;
+  for (const key of Object.keys(ranges) as FieldKey[]) {
+    const [min, max] = ranges[key];
+    out[key] = { min: formatField(min), max: formatField(max), step: formatField(step[key]) };
+  }
+  return out;
+}

@@ -1,0 +1,133 @@
+/**
+ * Loading the teaching views: their code (charts, typesetting) loads after the first result, and
+ * their data comes from the `teach` job on its own worker a moment after the inputs settle, so
+ * they never delay the results or the 3D frame. The views are drawn only from a reply to the
+ * inputs on screen; otherwise the panel is marked out of date.
+ */
+import type { ProcedureKey } from '../core/procedures';
+import type { RestartInfo } from '../worker/client';
+import { type SolveRequest, sameRequest, type TeachReply } from '../worker/protocol';
+import { teachClient } from '../worker/workers';
+import { Freshness } from './freshness';
+import type { Unit } from './state';
+import type { TeachingPanel, ViewId } from './views/panel';
+import type { TraceDisplay } from './views/stepperView';
+import type { SurfaceSource } from './views/surfaceView';
+
+/** The wait after the last input before the views' data is asked (a slider being dragged). */
+const SETTLE_MS = 150;
+
+export interface TeachingOptions {
+  readonly root: HTMLElement;
+  readonly display: TraceDisplay;
+  readonly initialView: ViewId;
+  readonly onLoadCondition: (c: { R: number; Rcr: number; rho: number; h: number }) => void;
+  readonly onRestart: (info: RestartInfo) => void;
+  /** The Machined surface view's simulation. */
+  readonly surface: SurfaceSource;
+}
+
+export class TeachingLoader {
+  private readonly fresh = new Freshness<TeachReply>();
+  private readonly client = teachClient({
+    onReply: (reply) => {
+      if (this.fresh.receive(reply)) this.schedule();
+    },
+    onRestart: (info) => {
+      if (info.gaveUp) this.fresh.fail();
+      this.options.onRestart(info);
+      this.schedule();
+    },
+  });
+  private panel: TeachingPanel | null = null;
+  private loading = false;
+  private timer: ReturnType<typeof setTimeout> | null = null;
+  private drawTimer: ReturnType<typeof setTimeout> | null = null;
+  private unit: Unit = 'mm';
+  private highlighted: ProcedureKey | null = null;
+  /** The reply and unit the views show now. */
+  private drawn: { reply: TeachReply; unit: Unit } | null = null;
+
+  constructor(private readonly options: TeachingOptions) {}
+
+  /** The inputs changed: the request they ask (null when invalid), and the unit to show. */
+  want(request: SolveRequest | null, unit: Unit): void {
+    const before = this.fresh.request;
+    this.unit = unit;
+    this.fresh.want(request);
+    if (!sameRequest(request, before)) {
+      if (this.timer !== null) clearTimeout(this.timer);
+      this.timer = null;
+    }
+    if (request !== null && !sameRequest(request, before) && this.fresh.shown.kind !== 'current') {
+      this.timer = setTimeout(() => {
+        this.timer = null;
+        this.client.request(request);
+      }, SETTLE_MS);
+    }
+    this.schedule();
+  }
+
+  highlight(key: ProcedureKey | null): void {
+    this.highlighted = key;
+    this.panel?.highlight(key);
+  }
+
+  get activeView(): ViewId | null {
+    return this.panel?.activeView ?? null;
+  }
+
+  get workerStarts(): number {
+    return this.client.started;
+  }
+
+  /** Draws after the current task, so a reply's message never waits on the views' drawing. */
+  private schedule(): void {
+    this.markStale();
+    if (this.drawTimer !== null) return;
+    this.drawTimer = setTimeout(() => {
+      this.drawTimer = null;
+      this.draw();
+    }, 0);
+  }
+
+  private markStale(): void {
+    const shown = this.fresh.shown;
+    const text =
+      shown.kind === 'current'
+        ? null
+        : shown.kind === 'invalid'
+          ? 'Out of date: the inputs are invalid, so these views still show the last valid inputs.'
+          : shown.kind === 'failed'
+            ? "Out of date: the teaching views' solver gave up; change any input to try again."
+            : 'Updating: these views still show the previous inputs.';
+    this.panel?.setStale(text);
+  }
+
+  private draw(): void {
+    const shown = this.fresh.shown;
+    if (shown.kind !== 'current') return;
+    if (this.panel === null) {
+      this.load();
+      return;
+    }
+    const reply = shown.reply;
+    if (this.drawn?.reply === reply && this.drawn.unit === this.unit) return;
+    this.drawn = { reply, unit: this.unit };
+    if (reply.ok) this.panel.update({ data: reply, unit: this.unit });
+    else if (reply.reason !== null) this.panel.showMessage(reply.reason);
+    this.markStale();
+  }
+
+  /** Loads the views' code once, then draws. */
+  private load(): void {
+    if (this.loading) return;
+    this.loading = true;
+    void import('./views/panel').then(({ TeachingPanel }) => {
+      const o = this.options;
+      this.panel = new TeachingPanel(o.root, o.display, o.onLoadCondition, o.initialView, o.surface);
+      this.panel.highlight(this.highlighted);
+      this.draw();
+    });
+  }
+}

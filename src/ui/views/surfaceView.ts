@@ -1,0 +1,222 @@
+/**
+ * Machined surface: the passes simulated on a height field (worker job `simulate`), shown in 3D
+ * coloured by height with a legend in um and the vertical exaggeration stated, a profilometer
+ * trace across the passes with Rz, Ra, Rq marked, and one line comparing the simulated cusp with
+ * the exact one and the simulation's stated resolution bound. It draws only a reply to the inputs
+ * on screen; otherwise its numbers are hidden and it says why (updating, invalid, gave up).
+ * No inline style: classes and SVG presentation attributes only (the page runs under
+ * `style-src 'self'`).
+ */
+import type { ProcedureKey } from '../../core/procedures';
+import { formatSignificant, unitSymbol } from '../../core/units';
+import { HEIGHT_RAMP } from '../../render/surfaceGrid';
+import { SurfaceScene } from '../../render/surfaceMesh';
+import type { SimulateReply } from '../../worker/simulate';
+import { formatLen } from '../format';
+import type { Shown } from '../freshness';
+import type { SurfaceDisplay } from '../simulation';
+import type { Unit } from '../state';
+import { html, svg, type TeachingView } from './common';
+import { autoExaggeration } from './scale';
+import './surface.css';
+
+type SimulateOk = Extract<SimulateReply, { ok: true }>;
+
+/** What opens and closes the simulation (the page's SimulationLoader). */
+export interface SurfaceSource {
+  setOpen(open: boolean): void;
+  attach(display: SurfaceDisplay): void;
+}
+
+const TRACE_W = 600;
+const TRACE_H = 190;
+const PAD = { left: 8, right: 150, top: 14, bottom: 18 };
+
+/** Micrometres for the legend (3 significant digits, no exponent for usual sizes). */
+function um(mm: number): string {
+  return `${formatSignificant(mm * 1000, { digits: 3, trimZeros: true })} um`;
+}
+
+/** The comparison line: simulated against exact cusp, and the stated bound (user's unit). */
+export function comparisonText(reply: SimulateOk, unit: Unit): string {
+  const u = unitSymbol(unit);
+  const s = reply.simulation;
+  const fine = (mm: number) => `${formatLen(mm, unit, 'fine')} ${u}`;
+  const diff = Math.abs(s.cuspHeightMm - reply.exact.cuspHeightMm);
+  const within = diff <= s.resolutionBoundMm;
+  return `Simulated cusp ${fine(s.cuspHeightMm)} against exact ${fine(reply.exact.cuspHeightMm)}: they differ by ${fine(diff)}, ${within ? 'within' : 'beyond'} the stated resolution bound ${fine(s.resolutionBoundMm)} (${s.cellsAcross} x ${s.cellsAlong} cells, ${s.passes} passes).`;
+}
+
+export class SurfaceView implements TeachingView, SurfaceDisplay {
+  readonly id = 'surface' as const;
+  readonly title = 'Machined surface';
+  readonly element = html('div', { class: 'surface-view', 'data-testid': 'surface-view' });
+  private readonly status = html('p', { class: 'view-note', 'data-testid': 'surface-status', role: 'status' });
+  private readonly sceneBox = html('div', { class: 'surface-3d' });
+  private readonly exaggerationNote = html('p', { class: 'view-note', 'data-testid': 'surface-exaggeration' });
+  private readonly legend = svg('svg', {
+    class: 'surface-legend',
+    'data-testid': 'surface-legend',
+    viewBox: '0 0 300 34',
+  });
+  private readonly trace = svg('svg', {
+    class: 'surface-trace',
+    'data-testid': 'surface-trace',
+    viewBox: `0 0 ${TRACE_W} ${TRACE_H}`,
+    role: 'img',
+    'aria-label': 'Profilometer trace across the passes with Rz, Ra and Rq marked',
+  });
+  private readonly comparison = html('p', { class: 'view-note', 'data-testid': 'surface-comparison' });
+  private scene: SurfaceScene | null = null;
+  private drawn: { reply: SimulateOk; unit: Unit } | null = null;
+
+  constructor(private readonly source: SurfaceSource) {
+    this.element.append(this.status, this.sceneBox, this.exaggerationNote, this.legend, this.trace, this.comparison);
+    source.attach(this);
+  }
+
+  /** The teaching data is not used: the view follows the simulation's own replies. */
+  update(): void {}
+
+  highlight(_key: ProcedureKey | null): void {}
+
+  setVisible(visible: boolean): void {
+    if (visible && this.scene === null) this.scene = new SurfaceScene(this.sceneBox);
+    this.source.setOpen(visible);
+    if (visible && this.drawn) this.drawReply(this.drawn.reply, this.drawn.unit, true);
+  }
+
+  /** Frames the 3D view drew (tests). */
+  get frames(): number {
+    return this.scene?.frames ?? 0;
+  }
+
+  show(shown: Shown<SimulateReply>, unit: Unit, progress: number | null): void {
+    const current = shown.kind === 'current' ? shown.reply : null;
+    this.element.classList.toggle('stale', current === null || !current.ok);
+    this.element.setAttribute('aria-busy', String(shown.kind === 'pending'));
+    let text = '';
+    if (shown.kind === 'invalid') text = 'Out of date: the inputs are invalid, so there is nothing to simulate.';
+    else if (shown.kind === 'failed') text = 'No simulation: its solver gave up; change any input to try again.';
+    else if (shown.kind === 'pending')
+      text = `Simulating the passes${progress === null ? '' : `: ${Math.round(100 * progress)} %`}...`;
+    else if (current && !current.ok)
+      text =
+        current.reason ??
+        (current.errors.length > 0 ? current.errors.map((e) => e.message).join(' ') : 'No simulation.');
+    if (this.status.textContent !== text) this.status.textContent = text;
+    this.status.hidden = text === '';
+    if (current?.ok) {
+      this.comparison.textContent = comparisonText(current, unit);
+      this.drawReply(current, unit, false);
+    } else {
+      // Never a number that does not answer the inputs on screen.
+      this.comparison.textContent = '';
+    }
+  }
+
+  private drawReply(reply: SimulateOk, unit: Unit, force: boolean): void {
+    if (!force && this.drawn?.reply === reply && this.drawn.unit === unit) return;
+    this.drawn = { reply, unit };
+    const s = reply.simulation;
+    const size = Math.max(s.alongLengthMm, s.acrossToMm - s.acrossFromMm);
+    let lo = Number.POSITIVE_INFINITY;
+    let hi = Number.NEGATIVE_INFINITY;
+    for (const z of s.heightsMm) {
+      lo = Math.min(lo, z);
+      hi = Math.max(hi, z);
+    }
+    const span = Number.isFinite(hi - lo) ? hi - lo : 0;
+    const k = autoExaggeration(size, span, 0.12);
+    this.exaggerationNote.textContent =
+      k === 1
+        ? 'Heights at true scale; colour: height above the lowest point (um).'
+        : `Heights exaggerated x${k} (vertical exaggeration); colour: height above the lowest point (um).`;
+    if (this.scene && !this.element.closest('[hidden]')) this.scene.update(s, k);
+    this.drawLegend(span);
+    this.drawTrace(reply, unit);
+  }
+
+  private drawLegend(spanMm: number): void {
+    const defs = svg('defs');
+    const gradient = svg('linearGradient', { id: 'surface-ramp', x1: 0, x2: 1, y1: 0, y2: 0 });
+    HEIGHT_RAMP.forEach(([r, g, b], i) => {
+      const c = `rgb(${Math.round(255 * r)},${Math.round(255 * g)},${Math.round(255 * b)})`;
+      gradient.append(svg('stop', { offset: i / (HEIGHT_RAMP.length - 1), 'stop-color': c }));
+    });
+    defs.append(gradient);
+    const bar = svg('rect', { x: 10, y: 2, width: 340, height: 12, fill: 'url(#surface-ramp)' });
+    const label = (x: number, anchor: string, text: string) => {
+      const t = svg('text', { x, y: 30, 'text-anchor': anchor });
+      t.textContent = text;
+      return t;
+    };
+    this.legend.replaceChildren(
+      defs,
+      bar,
+      label(10, 'start', um(0)),
+      label(180, 'middle', um(spanMm / 2)),
+      label(350, 'end', um(spanMm)),
+    );
+  }
+
+  private drawTrace(reply: SimulateOk, unit: Unit): void {
+    const s = reply.simulation;
+    const t = s.trace;
+    const n = t.length / 2;
+    const L = reply.exact.intervalMm;
+    const yMin = t[0] ?? 0;
+    const yMax = t[2 * (n - 1)] ?? 1;
+    // Heights over the measured span (first to last contact) for Rz's peak and valley lines.
+    let zLo = Number.POSITIVE_INFINITY;
+    let zHi = Number.NEGATIVE_INFINITY;
+    let zAllHi = 0;
+    for (let j = 0; j < n; j++) {
+      const y = t[2 * j] as number;
+      const z = t[2 * j + 1] as number;
+      zAllHi = Math.max(zAllHi, z);
+      if (y >= 0 && y <= (s.passes - 1) * L) {
+        zLo = Math.min(zLo, z);
+        zHi = Math.max(zHi, z);
+      }
+    }
+    if (!Number.isFinite(zLo)) zLo = zHi = 0;
+    const top = Math.max(zAllHi, zHi, 1e-12);
+    const w = TRACE_W - PAD.left - PAD.right;
+    const h = TRACE_H - PAD.top - PAD.bottom;
+    const X = (y: number) => PAD.left + ((y - yMin) / (yMax - yMin || 1)) * w;
+    const Z = (z: number) => PAD.top + h - (Math.min(z, top) / top) * h;
+    const points: string[] = [];
+    for (let j = 0; j < n; j++)
+      points.push(`${X(t[2 * j] as number).toFixed(1)},${Z(t[2 * j + 1] as number).toFixed(1)}`);
+    const u = unitSymbol(unit);
+    const fine = (mm: number) => `${formatLen(mm, unit, 'fine')} ${u}`;
+    const r = s.roughness;
+    const e = reply.exact.roughness;
+    const line = (z: number, cls: string) =>
+      svg('line', { x1: PAD.left, x2: PAD.left + w, y1: Z(z).toFixed(1), y2: Z(z).toFixed(1), class: cls });
+    const text = (z: number, cls: string, label: string, dy = 4) => {
+      const el = svg('text', { x: PAD.left + w + 6, y: (Z(z) + dy).toFixed(1), class: cls });
+      el.textContent = label;
+      return el;
+    };
+    const m = r.meanMm;
+    const caption = svg('text', { x: PAD.left, y: TRACE_H - 4, class: 'trace-caption' });
+    caption.textContent = `Simulated trace, ${s.passes} passes. Exact: Rz ${fine(e.rzMm)}, Ra ${fine(e.raMm)}, Rq ${fine(e.rqMm)}`;
+    this.trace.replaceChildren(
+      line(zHi, 'rz'),
+      line(zLo, 'rz'),
+      line(m + r.rqMm, 'rq'),
+      line(Math.max(0, m - r.rqMm), 'rq'),
+      line(m + r.raMm, 'ra'),
+      line(Math.max(0, m - r.raMm), 'ra'),
+      line(m, 'mean'),
+      svg('polyline', { points: points.join(' '), class: 'trace-line' }),
+      text(zHi, 'rz', `Rz ${fine(r.rzMm)}`, 10),
+      text(m + r.rqMm, 'rq', `Rq ${fine(r.rqMm)}`, -3),
+      text(m + r.raMm, 'ra', `Ra ${fine(r.raMm)}`, 11),
+      text(m, 'mean', 'mean line'),
+      caption,
+    );
+  }
+}

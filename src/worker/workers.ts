@@ -1,0 +1,32 @@
+/**
+ * The page's two solver workers, one per kind of job, so that the teaching views' heavier data
+ * never delays the results: both run the same module (solver.worker.ts). The names tell them
+ * apart in the browser's tools (and to tests, through WorkerGlobalScope.name).
+ */
+import { JobClient, type RestartInfo } from './client';
+import type { SolveReply, SolveRequest, TeachReply } from './protocol';
+
+/** The worker for `solve`: results and the 3D scene. */
+export function createSolverWorker(): Worker {
+  return new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module', name: 'path-interval-solver' });
+}
+
+/** The worker for `teach`: the teaching views' data. */
+export function createViewsWorker(): Worker {
+  return new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module', name: 'path-interval-views' });
+}
+
+export interface JobEvents<Rep> {
+  readonly onReply: (reply: Rep) => void;
+  readonly onRestart: (info: RestartInfo) => void;
+}
+
+/** The `solve` job on its own worker. */
+export function solveClient(events: JobEvents<SolveReply>): JobClient<SolveRequest, SolveReply> {
+  return new JobClient({ createWorker: createSolverWorker, call: (api, r) => api.solve(r), ...events });
+}
+
+/** The `teach` job on its own worker. */
+export function teachClient(events: JobEvents<TeachReply>): JobClient<SolveRequest, TeachReply> {
+  return new JobClient({ createWorker: createViewsWorker, call: (api, r) => api.teach(r), ...events });
+}

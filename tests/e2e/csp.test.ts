@@ -1,0 +1,78 @@
+/**
+ * The production site under a strict Content-Security-Policy, sent as a documentation host would
+ * send it: the page and each of its six views must work with zero violations (no inline style
+ * attribute, no inline script, workers from the same origin).
+ */
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { STRICT_CSP, useSite } from './harness';
+
+const site = useSite('docs/csp', { build: 'production', headers: { 'Content-Security-Policy': STRICT_CSP } });
+
+/** Opens a page that records every CSP violation (the recorder is injected by the test, not shipped). */
+async function openRecorded(query: string): Promise<{ page: Page; violations: () => Promise<string[]> }> {
+  const page = await site.browser().newPage({ viewport: { width: 1400, height: 900 } });
+  const console: string[] = [];
+  page.on('console', (m) => {
+    if (/Content Security Policy|Refused to/i.test(m.text())) console.push(m.text());
+  });
+  await page.addInitScript(() => {
+    const seen: string[] = [];
+    (window as unknown as { __violations: string[] }).__violations = seen;
+    document.addEventListener('securitypolicyviolation', (e) =>
+      seen.push(`${e.violatedDirective}: ${e.blockedURI} ${e.sample}`.trim()),
+    );
+  });
+  await page.goto(`${site.url()}${query}`);
+  await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+  const violations = async () => [
+    ...(await page.evaluate(() => (window as unknown as { __violations: string[] }).__violations)),
+    ...console,
+  ];
+  return { page, violations };
+}
+
+describe('strict Content-Security-Policy', () => {
+  it(`the page works under "${STRICT_CSP}" with zero violations`, async () => {
+    const { page, violations } = await openRecorded('?R=3&Rcr=1&rho=5&tilt=5&pattern=zigzag&h=0.05&unit=mm');
+    expect(page.workers().length).toBeGreaterThan(0);
+    await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
+    await page.locator('.procedures tr[data-procedure="bedi"]').hover();
+    await page.locator('input[name="unit"][value="in"]').check();
+    await page.getByTestId('result-exact-interval').filter({ hasText: / in$/ }).waitFor();
+    await page.getByTestId('input-Rcr').fill('9'); // invalid: messages, dashes, stale marks
+    await page
+      .getByTestId('error-Rcr')
+      .filter({ hasText: /must not exceed/ })
+      .waitFor();
+    expect(await violations()).toEqual([]);
+    await page.close();
+  });
+
+  for (const view of ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'] as const) {
+    it(`the ${view} view, full page and embedded, logs zero violations`, async () => {
+      for (const embed of ['', '&embed=1']) {
+        const { page, violations } = await openRecorded(`?R=3&Rcr=1&rho=5&tilt=3&h=0.05&unit=mm&view=${view}${embed}`);
+        const panel = page.locator(`#panel-${view}`);
+        const ready = {
+          profile: panel.locator('polygon.scallop'),
+          chart: panel.locator('canvas').first(),
+          tables: panel.locator('table').first(),
+          stepper: page.getByTestId('stepper-caption').filter({ hasText: /\d/ }),
+          formulas: panel.locator('math').first(),
+          surface: page.getByTestId('surface-comparison').filter({ hasText: /Simulated cusp/ }),
+        };
+        await ready[view].waitFor();
+        if (view === 'stepper') {
+          await page.getByTestId('stepper-forward').click();
+          await page.getByTestId('stepper-last').click();
+        }
+        if (view === 'profile') await page.getByTestId('profile-cusp').click();
+        if (view === 'chart') await page.getByTestId('chart-error-unit').selectOption('mm');
+        await page.waitForTimeout(200);
+        expect(await violations(), `${view}${embed}`).toEqual([]);
+        await page.close();
+      }
+    });
+  }
+});

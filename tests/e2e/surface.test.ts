@@ -1,0 +1,191 @@
+/**
+ * Target Ra and the Machined surface view in headless Chromium against the built site, driven as
+ * a user: the results' roughness, an Ra beyond the maximum, the simulation against the exact
+ * cusp, a burst of inputs ending on the latest, embedding. Screenshots are kept.
+ */
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { exactForward, forwardInput } from '../../src/core/index';
+import { forwardOfRaTarget, validateRaTarget } from '../../src/core/raTarget';
+import { exactRoughness, maxRaMm } from '../../src/core/roughness';
+import { formatInputNumber, fromMm, toMm } from '../../src/core/units';
+import { SHOTS, useSite } from './harness';
+
+const { open } = useSite('docs/surface');
+
+const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
+const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent()) ?? '';
+
+/** The simulation worker, by its name (none until the view is opened). */
+async function simulationWorkers(page: Page): Promise<number> {
+  let n = 0;
+  for (const w of page.workers()) if ((await w.evaluate(() => self.name)) === 'path-interval-simulation') n++;
+  return n;
+}
+
+/** The numbers of the comparison line: simulated cusp, exact cusp, difference, bound (mm). */
+function comparisonNumbers(line: string): { sim: number; exact: number; diff: number; bound: number } {
+  const m = line.match(
+    /Simulated cusp ([\d.]+) mm against exact ([\d.]+) mm: they differ by ([\d.]+) mm, within the stated resolution bound ([\d.]+) mm/,
+  );
+  if (!m) throw new Error(`unexpected comparison line: ${line}`);
+  return { sim: Number(m[1]), exact: Number(m[2]), diff: Number(m[3]), bound: Number(m[4]) };
+}
+
+describe('target Ra and roughness in headless Chromium', () => {
+  it('switching the target to Ra and typing one: result-ra reads the typed Ra, L is the core answer', async () => {
+    const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    // The target h: Rz, Ra, Rq of the surface at the exact step-over, and the rule of thumb.
+    await expect.poll(() => text(page, 'result-ra')).toBe('0.012417 mm');
+    expect(await text(page, 'result-rz')).toBe('0.050000 mm');
+    const ra = exactRoughness(forwardInput(TOOL, 'one-way', 0.05)).raMm;
+    expect(await text(page, 'result-ra-rule')).toBe(
+      `Rule of thumb Ra ~ h/4 = 0.012500 mm: +${((100 * (0.0125 - ra)) / ra).toFixed(2)} % against the exact Ra.`,
+    );
+    expect(await page.getByTestId('input-ra').isVisible()).toBe(false);
+    await page.locator('input[name="target"][value="ra"]').check();
+    expect(await page.getByTestId('input-h').isVisible()).toBe(false);
+    await page.getByTestId('input-ra').fill('0.01');
+    const v = validateRaTarget({ R: 3, Rcr: 1, rho: 5, ra: 0.01 });
+    if (!v.ok) throw new Error('valid');
+    const f = forwardOfRaTarget(v.value);
+    const L = exactForward(f).intervalMm;
+    await expect.poll(() => text(page, 'result-exact-interval')).toBe(`${L.toFixed(4)} mm`);
+    expect(await text(page, 'result-ra')).toBe('0.010000 mm');
+    expect(await text(page, 'result-ra-height')).toBe(`${f.scallopHeightMm.toFixed(6)} mm`);
+    expect(page.url()).toMatch(/target=ra&ra=0\.01&/);
+    // The slider moves the Ra by one step and the result follows.
+    await page.getByTestId('slider-ra').focus();
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(() => text(page, 'result-ra')).toBe('0.010100 mm');
+    expect(errors).toEqual([]);
+    await page.screenshot({ path: `${SHOTS}/target-ra.png` });
+    await page.close();
+  });
+
+  it('an Ra above the maximum shows the message naming the limit (in the unit on screen) and dashes', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&target=ra&ra=0.01&unit=mm');
+    await expect.poll(() => text(page, 'result-ra')).toBe('0.010000 mm');
+    await page.getByTestId('input-ra').fill('0.5');
+    const max = maxRaMm(TOOL, 'one-way');
+    await expect
+      .poll(() => text(page, 'error-ra'))
+      .toContain(`Roughness Ra must be below ${formatInputNumber(max)} mm (got 0.5)`);
+    for (const id of ['result-ra', 'result-rz', 'result-rq', 'result-exact-interval'])
+      expect(await text(page, id), id).toBe('\u2014');
+    expect(await text(page, 'result-ra-rule')).toBe('');
+    await page.screenshot({ path: `${SHOTS}/target-ra-beyond-max.png` });
+    await page.locator('input[name="unit"][value="in"]').check();
+    // The fields as converted on screen (R = 0.11811 in, Rcr = 0.0393701 in): the limit answers them.
+    const inch = (mm: number) => toMm(Number(formatInputNumber(fromMm(mm, 'in'))), 'in');
+    const maxInch = maxRaMm({ ...TOOL, toolRadiusMm: inch(3), cornerRadiusMm: inch(1) }, 'one-way');
+    await expect
+      .poll(() => text(page, 'error-ra'))
+      .toContain(`must be below ${formatInputNumber(fromMm(maxInch, 'in'))} in (got 0.019685)`);
+    await page.close();
+  });
+});
+
+describe('Machined surface view in headless Chromium', () => {
+  it('simulates only when opened; the simulated cusp is within the stated bound of exact; 3D, legend, trace', async () => {
+    const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
+    await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
+    await page.waitForTimeout(300);
+    expect(await simulationWorkers(page)).toBe(0);
+    await page.locator('[role="tab"][data-view="surface"]').click();
+    const line = page.getByTestId('surface-comparison');
+    await line.filter({ hasText: /Simulated cusp/ }).waitFor({ timeout: 20_000 });
+    expect(await simulationWorkers(page)).toBe(1);
+    const n = comparisonNumbers((await line.textContent()) ?? '');
+    const exact = exactForward(forwardInput(TOOL, 'one-way', 0.05)).cuspHeightMm;
+    expect(n.exact).toBe(Number(exact.toFixed(6)));
+    expect(Math.abs(n.sim - n.exact)).toBeLessThanOrEqual(n.bound + 1e-6);
+    expect(n.bound).toBeGreaterThan(0);
+    expect(await line.textContent()).toMatch(/512 x 512 cells, 5 passes/);
+    const view = page.getByTestId('surface-view');
+    expect(await view.getByTestId('surface-exaggeration').textContent()).toMatch(/exaggerated x\d+/);
+    expect(await view.getByTestId('surface-legend').textContent()).toMatch(/0 um.*um/);
+    const trace = view.getByTestId('surface-trace');
+    expect(await trace.locator('polyline.trace-line').count()).toBe(1);
+    const labels = (await trace.locator('text').allTextContents()).join(' | ');
+    expect(labels).toMatch(/Rz 0\.04\d+ mm/);
+    expect(labels).toMatch(/Ra 0\.012\d+ mm/);
+    expect(labels).toMatch(/Rq 0\.014\d+ mm/);
+    // The 3D view drew the mesh: its canvas is not blank.
+    const canvas = view.getByTestId('surface-canvas');
+    await expect.poll(async () => (await canvas.screenshot()).length).toBeGreaterThan(3000);
+    expect(errors).toEqual([]);
+    await page.screenshot({ path: `${SHOTS}/view-surface.png`, fullPage: true });
+    await page.close();
+  });
+
+  it('a burst of inputs ends on the latest; invalid input hides the numbers; zigzag and target Ra', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=surface');
+    const line = page.getByTestId('surface-comparison');
+    await line.filter({ hasText: /Simulated cusp/ }).waitFor({ timeout: 20_000 });
+    // Every status the view shows from now on (a simulation of 512 x 512 cells takes longer than a frame).
+    await page.evaluate(() => {
+      const seen: string[] = [];
+      (window as unknown as { __statuses: string[] }).__statuses = seen;
+      const status = document.querySelector('[data-testid="surface-status"]');
+      if (status)
+        new MutationObserver(() => seen.push(status.textContent ?? '')).observe(status, {
+          childList: true,
+          characterData: true,
+          subtree: true,
+        });
+    });
+    for (const h of ['0.01', '0.02', '0.03', '0.04', '0.035', '0.045']) await page.getByTestId('input-h').fill(h);
+    await expect.poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 }).toMatch(/exact 0\.045000 mm/);
+    let n = comparisonNumbers((await line.textContent()) ?? '');
+    expect(Math.abs(n.sim - n.exact)).toBeLessThanOrEqual(n.bound + 1e-6);
+    const statuses = await page.evaluate(() => (window as unknown as { __statuses: string[] }).__statuses);
+    expect(
+      statuses.some((t) => /^Simulating the passes: \d+ %\.\.\.$/.test(t)),
+      statuses.join(' | '),
+    ).toBe(true);
+    await page.waitForTimeout(500); // no late reply to an earlier input replaces it
+    expect(await line.textContent()).toMatch(/exact 0\.045000 mm/);
+    // Invalid: no number of the earlier inputs stays on screen.
+    await page.getByTestId('input-h').fill('-1');
+    await expect.poll(() => line.textContent()).toBe('');
+    expect(await text(page, 'surface-status')).toMatch(/invalid/);
+    // Zigzag with tilt: 4 passes, both cusps; and a target Ra.
+    await page.getByTestId('input-h').fill('0.05');
+    await page.getByTestId('input-tilt').fill('4');
+    await page.locator('input[name="pattern"][value="zigzag"]').check();
+    const zz = exactForward(forwardInput({ ...TOOL, tiltAngleDeg: 4 }, 'zigzag', 0.05)).cuspHeightMm;
+    await expect
+      .poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 })
+      .toMatch(new RegExp(`exact ${zz.toFixed(6)} mm.*4 passes`));
+    n = comparisonNumbers((await line.textContent()) ?? '');
+    expect(Math.abs(n.sim - n.exact)).toBeLessThanOrEqual(n.bound + 1e-6);
+    await page.screenshot({ path: `${SHOTS}/view-surface-zigzag.png`, fullPage: true });
+    await page.locator('input[name="target"][value="ra"]').check();
+    await page.getByTestId('input-ra').fill('0.008');
+    await expect.poll(() => text(page, 'result-ra')).toBe('0.008000 mm');
+    await expect
+      .poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 })
+      .toMatch(/Simulated cusp .* 4 passes/);
+    const trace = (await page.getByTestId('surface-trace').locator('text').allTextContents()).join(' ');
+    expect(trace).toMatch(/Ra 0\.00[78]\d+ mm/);
+    await page.close();
+  });
+
+  it('?view=surface&embed=1 shows just that view, without horizontal scrolling at 480 px wide', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=surface&embed=1', { width: 480, height: 360 });
+    await page
+      .getByTestId('surface-comparison')
+      .filter({ hasText: /Simulated cusp/ })
+      .waitFor({ timeout: 20_000 });
+    expect(await page.getByTestId('surface-view').isVisible()).toBe(true);
+    expect(await page.getByTestId('input-R').isVisible()).toBe(false);
+    const [scroll, client] = await page.evaluate(() => [
+      document.documentElement.scrollWidth,
+      document.documentElement.clientWidth,
+    ]);
+    expect(scroll).toBeLessThanOrEqual(client as number);
+    await page.screenshot({ path: `${SHOTS}/embed-surface.png` });
+    await page.close();
+  });
+});

@@ -1,0 +1,299 @@
+/**
+ * The page shows only numbers that answer the inputs on screen (issue 8), in headless Chromium:
+ * invalid input leaves no number anywhere, a late reply never overwrites the dashes, the solver
+ * giving up leaves a stale mark, the scene keeps its DOM and survives a lost WebGL context, inch
+ * mode and micro tools read right in every view.
+ */
+import { readdirSync, readFileSync } from 'node:fs';
+import type { Page, Worker } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { namedWorker, paintedFraction, SHOTS, siteDir, useSite } from './harness';
+
+const site = useSite('docs/trust');
+const open = site.open;
+
+const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
+const DASH = '\u2014';
+
+type Probe = { __pathInterval: { frames(): number } };
+const frames = (page: Page) => page.evaluate(() => (window as unknown as Probe).__pathInterval.frames());
+
+/** Every number shown in the results: headline, details and every table cell. */
+async function resultNumbers(page: Page): Promise<string[]> {
+  return page.evaluate(() =>
+    [...document.querySelectorAll('.results output, .results .procedures td')]
+      .map((e) => e.textContent ?? '')
+      .filter((t) => /\d/.test(t)),
+  );
+}
+
+/** Keeps a worker busy for `ms` (not awaited: the worker answers nothing meanwhile). */
+function block(w: Worker, ms: number): void {
+  void w
+    .evaluate((t) => {
+      const end = Date.now() + t;
+      while (Date.now() < end);
+    }, ms)
+    .catch(() => undefined);
+}
+
+/** For 2 s, every 100 ms: no number anywhere in the results. */
+async function neverANumber(page: Page): Promise<void> {
+  for (let i = 0; i < 20; i++) {
+    expect(await resultNumbers(page)).toEqual([]);
+    await page.waitForTimeout(100);
+  }
+}
+
+describe('numbers answer the inputs on screen', () => {
+  it('valid then invalid input in one task never shows a number afterwards (poll 2 s)', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await page.evaluate(() => {
+      const h = document.querySelector<HTMLInputElement>('[data-testid="input-h"]') as HTMLInputElement;
+      h.value = '0.06';
+      h.dispatchEvent(new Event('input', { bubbles: true }));
+      h.value = 'abc';
+      h.dispatchEvent(new Event('input', { bubbles: true }));
+    });
+    expect(await text(page, 'result-exact-interval')).toBe(DASH);
+    await neverANumber(page);
+    expect(await page.getByTestId('error-h').textContent()).toMatch(/must be a number \(got "abc"\)/);
+    await page.close();
+  });
+
+  it('with a busy solver, the late reply to a valid input does not overwrite the dashes of the invalid one', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    block(await namedWorker(page, 'path-interval-solver'), 1000);
+    await page.getByTestId('input-h').fill('0.06');
+    await page.waitForTimeout(50);
+    await page.getByTestId('input-h').fill('x');
+    await neverANumber(page);
+    // A burst of events ending on an invalid value: the same.
+    await page.evaluate(() => {
+      const h = document.querySelector<HTMLInputElement>('[data-testid="input-h"]') as HTMLInputElement;
+      for (let i = 0; i < 1000; i++) {
+        h.value = i === 999 ? 'x' : String(0.01 + i / 20000);
+        h.dispatchEvent(new Event('input', { bubbles: true }));
+      }
+    });
+    await neverANumber(page);
+    await page.close();
+  });
+
+  it('an invalid field leaves no number in any result cell, and marks the scene and the views stale', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
+    await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
+    await expect.poll(() => page.getByTestId('teaching').getAttribute('class')).not.toMatch(/stale/);
+    await page.getByTestId('input-Rcr').fill('4');
+    await expect.poll(() => resultNumbers(page)).toEqual([]);
+    expect(await page.locator('.procedures tbody tr').count()).toBe(6);
+    expect(await page.getByTestId('scene').getAttribute('class')).toMatch(/stale/);
+    expect(await page.getByTestId('teaching').getAttribute('class')).toMatch(/stale/);
+    expect(await page.getByTestId('views-stale').textContent()).toMatch(/Out of date: the inputs are invalid/);
+    expect(await page.getByTestId('table-notes').textContent()).toBe('');
+    await page.screenshot({ path: `${SHOTS}/trust-invalid.png` });
+    await page.close();
+  });
+
+  it('after the solver gives up (3 restarts) the last result stays marked stale and the page says so', async () => {
+    const page = await site.browser().newPage({ viewport: { width: 1400, height: 900 } });
+    // The site as built for the first two workers (results, views); every later worker never answers.
+    let fetches = 0;
+    await page.route('**/solver.worker-*.js', (route) =>
+      ++fetches <= 2
+        ? route.continue()
+        : route.fulfill({ contentType: 'text/javascript', body: 'self.onmessage = () => {};' }),
+    );
+    await page.goto(`${site.url()}?R=3&Rcr=1&rho=5&h=0.05&unit=mm`);
+    await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
+    await expect.poll(() => fetches).toBe(2);
+    block(await namedWorker(page, 'path-interval-solver'), 60_000);
+    await page.getByTestId('input-h').fill('0.1');
+    await expect
+      .poll(() => page.getByTestId('notice').textContent(), { timeout: 20_000, interval: 500 })
+      .toMatch(/stopped after 3 restarts/);
+    expect(await page.locator('section.results').getAttribute('class')).toMatch(/stale/);
+    expect(await page.getByTestId('results-status').textContent()).toMatch(/Out of date: the solver gave up/);
+    expect(await page.getByTestId('scene').getAttribute('class')).toMatch(/stale/);
+    await page.screenshot({ path: `${SHOTS}/trust-gave-up.png` });
+    await page.close();
+  }, 40_000);
+
+  it("a views' worker that dies is restarted and the views' request repeated: the views come back current with no input", async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
+    const view = page.getByTestId('profile-view');
+    await view.locator('polygon.scallop').waitFor();
+    await expect.poll(() => page.getByTestId('teaching').getAttribute('class')).not.toMatch(/stale/);
+    // The test kills the views' worker itself (the page has no hook for it), then changes h once.
+    const views = await namedWorker(page, 'path-interval-views');
+    void views.evaluate(() => (globalThis as unknown as { close(): void }).close()).catch(() => undefined);
+    await page.waitForTimeout(200);
+    await page.getByTestId('input-h').fill('0.1');
+    // No further input: the restarted worker answers the repeated request and the views follow.
+    await expect
+      .poll(() => page.getByTestId('notice').textContent(), { timeout: 10_000 })
+      .toMatch(/teaching views' solver was restarted/);
+    await expect
+      .poll(() => page.getByTestId('teaching').getAttribute('class'), { timeout: 10_000 })
+      .not.toMatch(/stale/);
+    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain('L/2 = 1.8921');
+    await page.close();
+  });
+});
+
+describe('the 3D scene keeps its contract', () => {
+  it('20 changes of R leave the DOM the same size (no leaked labels)', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
+    const settle = async (R: string) => {
+      await page.getByTestId('input-R').fill(R);
+      await expect.poll(() => new URL(page.url()).searchParams.get('R')).toBe(R);
+      await expect.poll(() => page.getByTestId('teaching').getAttribute('class')).not.toMatch(/stale/);
+      await expect.poll(() => page.locator('section.results').getAttribute('class')).not.toMatch(/stale/);
+    };
+    await settle('3.05');
+    const count = () => page.evaluate(() => document.getElementsByTagName('*').length);
+    const before = await count();
+    for (let i = 1; i <= 20; i++) await settle((3 + 0.1 * i).toFixed(2));
+    expect(await count()).toBe(before);
+    expect(await page.locator('.scene-label.label-axis').count()).toBe(3);
+    await page.close();
+  });
+
+  it('draws again after a WebGL context loss and restore, with no input', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await expect.poll(() => frames(page)).toBeGreaterThan(0);
+    await page.waitForTimeout(500);
+    const before = await frames(page);
+    await page.evaluate(async () => {
+      const canvas = document.querySelector('[data-testid="scene-canvas"]') as HTMLCanvasElement;
+      const lose = canvas.getContext('webgl2')?.getExtension('WEBGL_lose_context');
+      lose?.loseContext();
+      await new Promise((r) => setTimeout(r, 300));
+      lose?.restoreContext();
+    });
+    await expect.poll(() => frames(page)).toBeGreaterThan(before);
+    await expect.poll(() => paintedFraction(page)).toBeGreaterThan(0.05);
+    await page.close();
+  });
+
+  it('refits the camera when R changes: a bigger tool is not drawn bigger on screen', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await page.waitForTimeout(300);
+    const small = await paintedFraction(page);
+    await page.getByTestId('input-R').fill('12');
+    await page.getByTestId('input-Rcr').fill('4');
+    await expect.poll(() => new URL(page.url()).searchParams.get('Rcr')).toBe('4');
+    await page.waitForTimeout(300);
+    const big = await paintedFraction(page);
+    // Same shape, 4x the size: refitted, it covers about the same part of the view.
+    expect(Math.abs(big - small)).toBeLessThan(0.25 * small);
+    await page.close();
+  });
+});
+
+describe('units and digits in every view', () => {
+  const views = ['profile', 'chart', 'stepper', 'formulas'] as const;
+  /** Float noise: a run of 9s or of 0s followed by a digit, e.g. 0.7619999999999999 or 0.30000000000000004. */
+  const NOISE = /\d\.\d*(9{6,}|0{6,}[1-9])/;
+
+  it('inch mode shows inches with no float noise in the results and in every view', async () => {
+    const q = '?R=0.25&Rcr=0.03&rho=5&h=0.002&unit=in';
+    const { page } = await open(q);
+    const results = (await page.locator('section.results').textContent()) ?? '';
+    expect(results).toMatch(/ in\b/);
+    expect(results).not.toMatch(/\bmm\b/);
+    expect(results).not.toMatch(NOISE);
+    expect(await text(page, 'result-exact-interval')).toMatch(/^0\.\d{5,} in$/);
+    for (const view of views) {
+      const p = (await open(`${q}&view=${view}`)).page;
+      const panel = p.locator(`#panel-${view}`);
+      const ready = {
+        profile: p.getByTestId('profile-view').locator('polygon.scallop'),
+        chart: p.getByTestId('chart-summary').filter({ hasText: /\d/ }),
+        stepper: p.getByTestId('stepper-caption').filter({ hasText: /\d/ }),
+        formulas: p.getByTestId('formulas').locator('math').first(),
+      };
+      await ready[view].waitFor();
+      if (view === 'stepper') await p.getByTestId('stepper-last').click();
+      const content = (await panel.textContent()) ?? '';
+      expect(content, view).not.toMatch(NOISE);
+      expect(content, view).not.toMatch(/\d\s*mm\b/);
+      if (view === 'profile') expect(content).toMatch(/L = 0\.\d+/);
+      if (view === 'chart') expect(content).toMatch(/L \[in\]/);
+      if (view === 'stepper') {
+        expect(content).toMatch(/\d in/);
+        await p.getByTestId('stepper-first').click();
+        expect(await p.getByTestId('stepper-caption').textContent()).toMatch(/Rcr = 0\.03000 in\./);
+      }
+      if (view === 'formulas') expect(content).toMatch(/Lengths in in, angles in degrees/);
+      await p.close();
+    }
+    // The paper's tables stay in the paper's mm, and say so.
+    const t = (await open(`${q}&view=tables`)).page;
+    await t.getByTestId('paper-tables').locator('table').first().waitFor();
+    expect(await t.getByTestId('paper-tables').textContent()).toMatch(
+      /in mm as the paper prints them \(in either unit\)/,
+    );
+    await t.close();
+    await page.close();
+  });
+
+  it('slider arrow keys step in the user unit: R = 0.25 in becomes 0.251 in', async () => {
+    const { page } = await open('?R=0.25&Rcr=0.03&rho=5&h=0.002&unit=in');
+    await page.getByTestId('slider-R').focus();
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('0.251');
+    await page.close();
+  });
+
+  it('a micro tool shows significant digits, in the results and the views, never 0.0000', async () => {
+    const { page } = await open('?R=0.001&Rcr=0.001&rho=0&h=0.000001&unit=mm&view=profile');
+    // L/2 = sqrt(2 Rcr h - h^2) = 4.4710e-5 mm.
+    expect(await text(page, 'result-exact-half')).toBe('0.00004471');
+    expect(await text(page, 'result-exact-interval')).toBe('0.00008942 mm');
+    expect(await text(page, 'table-exact-half')).toBe('0.00004471');
+    expect(await text(page, 'table-exact-real-h')).toBe('0.000001000');
+    await expect
+      .poll(() => page.getByTestId('profile-view').locator('text.dim-text').allTextContents())
+      .toContain('L/2 = 0.00004471');
+    await page.close();
+    // The other views: the same significant digits, and no length rounded to 0.0000.
+    const ZERO = /(?<![\d.])0\.0000(?!\d)/;
+    const expected = { chart: 'Exact (3D) 0.00008942', stepper: 'L/2 = 0.00004471 mm', formulas: 'L/2=0.00004471' };
+    for (const view of ['chart', 'stepper', 'formulas'] as const) {
+      const p = (await open(`?R=0.001&Rcr=0.001&rho=0&h=0.000001&unit=mm&view=${view}`)).page;
+      if (view === 'stepper') {
+        await p.getByTestId('stepper-caption').filter({ hasText: /flank/ }).waitFor();
+        await p.getByTestId('stepper-last').click();
+      }
+      await expect.poll(() => p.locator(`#panel-${view}`).textContent()).toContain(expected[view]);
+      expect((await p.locator(`#panel-${view}`).textContent()) ?? '', view).not.toMatch(ZERO);
+      await p.close();
+    }
+  }, 60_000);
+});
+
+describe('the shipped site', () => {
+  it('the production JavaScript contains no test hooks', () => {
+    const assets = `${siteDir('production')}/assets`;
+    const js = readdirSync(assets).filter((n) => n.endsWith('.js'));
+    expect(js.length).toBeGreaterThan(1);
+    for (const name of js) {
+      const code = readFileSync(`${assets}/${name}`, 'utf8');
+      for (const hook of ['__pathInterval', 'crashWorker', 'crash(', 'latencies', 'firstResultMs'])
+        expect(code.includes(hook), `${name} contains ${hook}`).toBe(false);
+    }
+  });
+
+  it('the tables view explains in the page why the printed 3D column is low, citing no repository file', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=tables');
+    const why = page.getByTestId('paper-tables-why');
+    await why.waitFor();
+    const t = (await why.textContent()) ?? '';
+    expect(t).toMatch(/search range can stop just before the true maximum/);
+    expect(t).toMatch(/1\.879 mm .* 1\.892 mm/);
+    expect(await page.getByTestId('paper-tables').textContent()).not.toMatch(/shared\/|notes\/|\.md\b/);
+    await page.close();
+  });
+});

@@ -1,0 +1,40 @@
+/** Numbers as the page shows them: at least four significant digits, the user's unit, never -0 or NaN. */
+import { describe, expect, it } from 'vitest';
+import { formatPercent } from '../../src/core/units';
+import { formatLen, formatLenUnit, formatSignedLen } from '../../src/ui/format';
+
+describe('page number formatting', () => {
+  it('keeps the fixed resolution for usual sizes (0.1 um in mm, 10 uin in inch)', () => {
+    expect(formatLen(1.443592412967, 'mm')).toBe('1.4436');
+    expect(formatLen(2.168976694, 'in')).toBe('0.08539');
+    expect(formatLen(0.0525412, 'mm', 'height')).toBe('0.05254');
+    expect(formatLen(1.892088335855, 'mm', 'fine')).toBe('1.892088');
+    expect(formatLenUnit(2.887184825934, 'mm')).toBe('2.8872 mm');
+  });
+
+  it('shows at least four significant digits for tiny values: the micro tool reads, never 0.0000', () => {
+    // R = Rcr = 0.001 mm, h = 1e-6 mm: L/2 = sqrt(2 Rcr h - h^2) = 4.4710e-5 mm.
+    const half = Math.sqrt(2 * 0.001 * 1e-6 - 1e-12);
+    expect(formatLen(half, 'mm')).toBe('0.00004471');
+    expect(formatLen(1e-6, 'mm', 'height')).toBe('0.000001000');
+    expect(formatLen(3e-9, 'mm')).toBe('3.000e-9');
+    expect(formatLen(half, 'in')).toMatch(/^0\.000001760$|^1\.760e-6$/);
+  });
+
+  it('never prints -0, NaN or Infinity; signed values carry their sign', () => {
+    expect(formatSignedLen(-0, 'mm')).toBe('0.0000');
+    expect(formatSignedLen(-1e-12, 'mm')).toBe('-1.000e-12');
+    expect(formatSignedLen(-0, 'in')).toBe('0.00000');
+    expect(formatSignedLen(0.103095, 'mm')).toBe('+0.1031');
+    expect(formatSignedLen(-0.357855, 'mm')).toBe('-0.3579');
+    expect(formatLen(Number.NaN, 'mm')).toBe('\u2014');
+    expect(formatLen(null, 'mm')).toBe('\u2014');
+    expect(formatLenUnit(Number.POSITIVE_INFINITY, 'in')).toBe('\u2014');
+    // Percentages have fixed decimals: a tiny negative deviation rounds to zero, unsigned.
+    expect(formatPercent(-0.001)).toBe('0.00');
+    expect(formatPercent(-0)).toBe('0.00');
+    expect(formatPercent(-0.006)).toBe('-0.01');
+    expect(formatPercent(7.1449)).toBe('+7.14');
+    expect(formatPercent(Number.NaN)).toBe('\u2014');
+  });
+});

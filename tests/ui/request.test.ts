@@ -1,0 +1,68 @@
+/** The edge: what was typed, in the user's unit, becomes one validated request in mm. */
+import { describe, expect, it } from 'vitest';
+import { buildRequest, fieldMessages } from '../../src/ui/request';
+import { type CalculatorState, convertState, defaultState, parseUrl, withField } from '../../src/ui/state';
+
+const state = (search: string): CalculatorState => parseUrl(search).state;
+
+describe('requests from the fields', () => {
+  it('forward and inverse requests carry validated core inputs in mm, with tilt and pattern', () => {
+    const f = buildRequest(state('?R=3&Rcr=1&rho=5&tilt=-7.5&pattern=zigzag&h=0.05&unit=mm'));
+    expect(f).toEqual({
+      ok: true,
+      request: {
+        mode: 'forward',
+        input: {
+          toolRadiusMm: 3,
+          cornerRadiusMm: 1,
+          leadAngleDeg: 5,
+          tiltAngleDeg: -7.5,
+          pattern: 'zigzag',
+          surface: { kind: 'plane' },
+          scallopHeightMm: 0.05,
+        },
+      },
+    });
+    const i = buildRequest(state('?R=3&Rcr=1&rho=5&mode=inverse&L=2.5&unit=mm'));
+    expect(i.ok && i.request.mode === 'inverse' && i.request.input.intervalMm).toBe(2.5);
+  });
+
+  it('inch fields are converted once, here: lengths times 25.4, angles untouched', () => {
+    const r = buildRequest(state('?R=0.25&Rcr=0.04&rho=5&tilt=3&h=0.002&unit=in'));
+    if (!r.ok || r.request.mode !== 'forward') throw new Error('valid');
+    expect(r.request.input.toolRadiusMm).toBe(0.25 * 25.4);
+    expect(r.request.input.cornerRadiusMm).toBe(0.04 * 25.4);
+    expect(r.request.input.scallopHeightMm).toBe(0.002 * 25.4);
+    expect(r.request.input.leadAngleDeg).toBe(5);
+    expect(r.request.input.tiltAngleDeg).toBe(3);
+  });
+
+  it('errors are worded in the user unit, quote the text as typed, and carry no float noise', () => {
+    const s = state('?R=0.11811&Rcr=0.2&rho=5&h=0.002&unit=in');
+    const r = buildRequest(s);
+    if (r.ok) throw new Error('Rcr > R');
+    const m = fieldMessages(s, r.errors);
+    expect(m.get('Rcr')).toBe(
+      'Corner radius Rcr must not exceed the tool radius R = 0.11811 in (got 0.2); Rcr = R is a ball end mill.',
+    );
+    const t = withField(defaultState(), 'tilt', 'abc');
+    const rt = buildRequest(t);
+    if (rt.ok) throw new Error('tilt abc');
+    expect(fieldMessages(t, rt.errors).get('tilt')).toMatch(/Tilt angle beta must be a number \(got "abc"\)/);
+    const wide = state('?R=3&Rcr=1&rho=5&mode=inverse&L=7&unit=mm');
+    const rw = buildRequest(wide);
+    if (rw.ok) throw new Error('L too wide');
+    expect(fieldMessages(wide, rw.errors).get('L')).toMatch(
+      /Step-over L must be below the tool diameter 2R = 6 mm \(got 7\)/,
+    );
+  });
+
+  it('a unit switch keeps the question (to 6 significant digits) and the field texts free of float noise', () => {
+    const inch = convertState(defaultState(), 'in');
+    expect(inch.fields.Rcr).toBe('0.0393701');
+    const a = buildRequest(defaultState());
+    const b = buildRequest(inch);
+    if (!a.ok || !b.ok || a.request.mode !== 'forward' || b.request.mode !== 'forward') throw new Error('valid');
+    expect(Math.abs(b.request.input.toolRadiusMm - a.request.input.toolRadiusMm)).toBeLessThan(1e-4);
+  });
+});
