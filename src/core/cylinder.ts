@@ -34,7 +34,16 @@
  * smallest admissible radius is the maximum of that over the ring.
  */
 import { type Placement, placeTool } from './placement';
-import { type Flank, type FlankLimits, flankLimits, flankSign, type PostureShape } from './posture';
+import {
+  evalSection,
+  type Flank,
+  type FlankLimits,
+  flankLimits,
+  flankSign,
+  newSection,
+  type PostureShape,
+  type Section,
+} from './posture';
 import type { ToolInput } from './validate';
 
 /** Which way the cylinder's axis runs: along the feed (passes along it) or across (passes around it). */
@@ -55,28 +64,42 @@ export const PLANE: Surface = { kind: 'plane' };
 // ---------------------------------------------------------------------------------------------
 // Axis along the feed
 
-/** The profile point of section delta on the flank `sign`: width Y and height H above the contact. */
-function profilePoint(s: PostureShape, sign: number, delta: number): { y: number; h: number; ey: number; ez: number } {
-  const sinT0 = sign * s.sinT0;
-  const sinPhi = sign * s.sinPhi;
-  const sinH = Math.sin(delta / 2);
-  const cosH = Math.cos(delta / 2);
-  const sinD = 2 * sinH * cosH;
-  const cosD = (cosH - sinH) * (cosH + sinH);
-  const sinT = sinT0 * cosD + s.cosT0 * sinD;
-  const cosT = s.cosT0 * cosD - sinT0 * sinD;
-  const sinM = sinT0 * cosH + s.cosT0 * sinH;
-  const cosM = s.cosT0 * cosH - sinT0 * sinH;
-  const dz = 2 * s.d0 * sinH * sinH;
-  const dy = 2 * sinH * (s.a * s.cosPhi * cosM + s.b * sinPhi * sinM);
-  const nSin = s.d0 * sinD;
-  const nCos = s.a * s.cosPhi * cosT + s.b * sinPhi * sinT;
-  const n = Math.sqrt(nSin * nSin + nCos * nCos);
+/** A point of the cross-feed profile, relative to the contact (mm), and its section's normal. */
+interface ProfilePoint {
+  /** Width Y and height H of the profile point. */
+  y: number;
+  h: number;
+  /** The section's ring point (its ball's centre): ey, ez. */
+  ey: number;
+  ez: number;
+  /** Norm of the profile's (unnormalised) normal, and the normal (sin theta, cos theta). */
+  n: number;
+  st: number;
+  ct: number;
+}
+
+const section: Section = newSection();
+const point: ProfilePoint = { y: 0, h: 0, ey: 0, ez: 0, n: 0, st: 0, ct: 1 };
+
+/**
+ * The profile point of section delta on the flank `sign` (posture.ts's evalSection, then the ball
+ * of radius Rcr along the profile normal). Fills and returns a shared scratch object: read it
+ * before the next call.
+ */
+function profilePoint(s: PostureShape, sign: number, delta: number): ProfilePoint {
+  evalSection(s, sign, delta, section);
+  const n = Math.sqrt(section.nSin * section.nSin + section.nCos * section.nCos);
   // Profile normal (sin theta, cos theta); where a corner collapses (b = 0, n = 0) take the ring point.
-  const st = n > 0 ? nSin / n : 0;
-  const ct = n > 0 ? nCos / n : 1;
-  const corner = (s.rcr * (st * st)) / (1 + ct);
-  return { y: dy + s.rcr * st, h: dz + corner, ey: dy, ez: dz + s.rcr };
+  const st = n > 0 ? section.nSin / n : 0;
+  const ct = n > 0 ? section.nCos / n : 1;
+  point.y = section.dy + s.rcr * st;
+  point.h = section.dz + (s.rcr * (st * st)) / (1 + ct);
+  point.ey = section.dy;
+  point.ez = section.dz + s.rcr;
+  point.n = n;
+  point.st = st;
+  point.ct = ct;
+  return point;
 }
 
 /**
@@ -88,8 +111,6 @@ function profilePoint(s: PostureShape, sign: number, delta: number): { y: number
  */
 function feedAngleAtHeight(s: PostureShape, flank: Flank, rs: number, h: number, top: number): number {
   const sign = flankSign(flank);
-  const sinT0 = sign * s.sinT0;
-  const sinPhi = sign * s.sinPhi;
   const rcr = s.rcr;
   const ab = s.a * s.b;
   // G(0) = -h (h + 2 Rs): negative on a convex cylinder, positive on a concave one (it falls).
@@ -102,23 +123,7 @@ function feedAngleAtHeight(s: PostureShape, flank: Flank, rs: number, h: number,
     delta = s.d0 > 0 ? (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0) : 0.5 * hi;
     if (!(delta > lo && delta < hi)) delta = 0.5 * (lo + hi);
     for (let i = 0; i < 100; i++) {
-      const sinH = Math.sin(delta / 2);
-      const cosH = Math.cos(delta / 2);
-      const sinD = 2 * sinH * cosH;
-      const cosD = (cosH - sinH) * (cosH + sinH);
-      const sinT = sinT0 * cosD + s.cosT0 * sinD;
-      const cosT = s.cosT0 * cosD - sinT0 * sinD;
-      const sinM = sinT0 * cosH + s.cosT0 * sinH;
-      const cosM = s.cosT0 * cosH - sinT0 * sinH;
-      const dz = 2 * s.d0 * sinH * sinH;
-      const dy = 2 * sinH * (s.a * s.cosPhi * cosM + s.b * sinPhi * sinM);
-      const nSin = s.d0 * sinD;
-      const nCos = s.a * s.cosPhi * cosT + s.b * sinPhi * sinT;
-      const n = Math.sqrt(nSin * nSin + nCos * nCos);
-      const st = n > 0 ? nSin / n : 0;
-      const ct = n > 0 ? nCos / n : 1;
-      const Y = dy + rcr * st;
-      const H = dz + (rcr * st * st) / (1 + ct);
+      const { y: Y, h: H, n, st, ct } = profilePoint(s, sign, delta);
       const g = Y * Y + (H - h) * (H + h + 2 * rs);
       if (g === 0) break;
       const before = falling ? g > 0 : g < 0;

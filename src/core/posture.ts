@@ -211,7 +211,7 @@ export interface FlankPoint {
 }
 
 /** Scratch state of one section, filled in place (no allocation in the solver loop). */
-interface Section {
+export interface Section {
   sinD: number;
   cosD: number;
   sinT: number;
@@ -230,7 +230,7 @@ interface Section {
  * Fills `out` for the section `delta` past the contact on the flank `sign` (+1 right, -1 left:
  * the left flank is the right flank of the mirror image, phi -> -phi, t0 -> -t0).
  */
-function evalSection(s: PostureShape, sign: number, delta: number, out: Section): void {
+export function evalSection(s: PostureShape, sign: number, delta: number, out: Section): void {
   const sinT0 = sign * s.sinT0;
   const sinPhi = sign * s.sinPhi;
   const sinH = Math.sin(delta / 2);
@@ -260,7 +260,12 @@ function reachMm(rcr: number, q: number): number {
   return Math.sqrt(q * (2 * rcr - q));
 }
 
-const scratch: Section = { sinD: 0, cosD: 1, sinT: 0, cosT: 1, dz: 0, dy: 0, nSin: 0, nCos: 0, dNCos: 0 };
+/** A section's scratch state, ready to be filled by {@link evalSection}. */
+export function newSection(): Section {
+  return { sinD: 0, cosD: 1, sinT: 0, cosT: 1, dz: 0, dy: 0, nSin: 0, nCos: 0, dNCos: 0 };
+}
+
+const scratch: Section = newSection();
 
 /** Half-angle form of the corner's normal angle at vertical offset q: `acos(1 - q/Rcr)`. */
 function cornerAngleRad(rcr: number, q: number): number {
