@@ -9,7 +9,7 @@
 import type { ProcedureKey } from '../core/procedures';
 import { unitSymbol } from '../core/units';
 import type { PassPattern } from '../core/validate';
-import { type CameraPreset, ToolScene } from '../render/scene';
+import type { CameraPreset, ToolScene } from '../render/scene';
 import type { RestartInfo } from '../worker/client';
 import { type SolveMode, type SolveReply, type SolveRequest, sameRequest } from '../worker/protocol';
 import { solveClient } from '../worker/workers';
@@ -22,6 +22,7 @@ import { linkNotice, Notice, restartMessage } from './messages';
 import { buildRequest, fieldMessages } from './request';
 import { ResultsPanel } from './results';
 import { RoughnessPanel } from './roughness';
+import { SceneSlot } from './sceneSlot';
 import { SimulationLoader } from './simulation';
 import {
   type CalculatorState,
@@ -61,7 +62,8 @@ export class CalculatorApp {
   private readonly url: UrlState;
   private readonly notice: Notice;
   private readonly results: ResultsPanel;
-  private readonly scene: ToolScene;
+  /** The 3D scene, built after the first result (its code and WebGL context load then). */
+  private readonly scene: SceneSlot<ToolScene>;
   private readonly teaching: TeachingLoader | null;
   private readonly roughness: RoughnessPanel;
   private readonly simulation: SimulationLoader;
@@ -97,7 +99,8 @@ export class CalculatorApp {
     this.results = new ResultsPanel(root);
     this.roughness = new RoughnessPanel(root);
     this.simulation = new SimulationLoader((info) => this.restarted('simulation', info));
-    this.scene = new ToolScene(must(root, '.scene'));
+    const sceneRoot = must<HTMLElement>(root, '.scene');
+    this.scene = new SceneSlot(() => import('../render/scene').then(({ ToolScene }) => new ToolScene(sceneRoot)));
     this.scene.onFrame = () => this.observer.frame?.(this.fresh.shown.kind === 'current');
     this.fields = new FieldsPanel(root, {
       onField: (key, text) => this.change(withField(this.state, key, text)),
@@ -113,7 +116,7 @@ export class CalculatorApp {
         ? null
         : new TeachingLoader({
             root: must(root, '[data-testid="teaching"]'),
-            display: this.scene,
+            display: { showTraceFrame: (frame) => this.scene.run('trace', (s) => s.showTraceFrame(frame)) },
             initialView: requested ?? 'profile',
             onLoadCondition: (c) =>
               this.change(withValues({ ...this.state, mode: 'forward', pattern: 'one-way' }, { ...c, tilt: 0 })),
@@ -123,7 +126,9 @@ export class CalculatorApp {
     const highlighter = new Highlighter(root, (key: ProcedureKey | null) => this.teaching?.highlight(key));
     this.highlighter = highlighter;
     for (const button of root.querySelectorAll<HTMLButtonElement>('[data-camera]'))
-      button.addEventListener('click', () => this.scene.setCamera(button.dataset.camera as CameraPreset));
+      button.addEventListener('click', () =>
+        this.scene.run('camera', (s) => s.setCamera(button.dataset.camera as CameraPreset)),
+      );
     for (const button of root.querySelectorAll<HTMLButtonElement>('button.copy')) {
       button.addEventListener('click', () => {
         const text = button.parentElement?.querySelector('output')?.textContent ?? '';
@@ -174,20 +179,23 @@ export class CalculatorApp {
     this.results.render(shown, this.state.unit, this.state.mode, tilt);
     this.roughness.render(shown, this.state.unit);
     this.highlighter.markRows();
+    // The first answer (or the first error) is on screen: now the scene may take its time to load.
+    if (shown.kind !== 'pending') this.scene.load();
     if (shown.kind !== 'current' || !shown.reply.ok) {
-      this.scene.setStale(true);
+      this.scene.run('stale', (s) => s.setStale(true));
       return;
     }
     const reply = shown.reply;
     const unit = this.state.unit;
-    this.scene.setStale(false);
+    this.scene.run('stale', (s) => s.setStale(false));
     if (this.sceneDrawn?.reply !== reply || this.sceneDrawn.unit !== unit) {
       this.sceneDrawn = { reply, unit };
       const y0 = reply.exact.contactOffsetMm;
-      this.scene.update(reply.scene, {
+      const labels = {
         interval: `L = ${formatLenUnit(reply.exact.intervalMm, unit)}`,
         contactOffset: y0 === 0 ? null : `y0 = ${formatSignedLen(y0, unit)} ${unitSymbol(unit)}`,
-      });
+      };
+      this.scene.run('update', (s) => s.update(reply.scene, labels));
     }
     this.observer.resultShown?.();
   }
