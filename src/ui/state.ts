@@ -182,7 +182,7 @@ export function parseUrl(search: string): ParsedUrl {
   for (const key of FIELD_KEYS) {
     const text = params.get(key);
     if (text === null) {
-      if (anyGiven && needed.includes(key))
+      if (anyGiven && needed.includes(key) && !(key === 'R' && params.has('D')))
         notices.push(`${key} is missing from the link; using the default ${defaults[key]}.`);
       continue;
     }
