@@ -15,7 +15,6 @@ import { forwardInput, scallopHeightLimits } from '../../src/core/validate';
 import { ROOT, SHOTS, useSite } from './harness';
 
 const site = useSite('docs/quick-lookup');
-const DASH = '\u2014';
 
 const VIEWPORTS = [
   { name: 'phone', width: 390, height: 844, touch: true },
@@ -39,7 +38,7 @@ async function open(vp: Viewport, query: string): Promise<{ page: Page; context:
 }
 
 /** Taps on the phone, clicks on the desktop. */
-async function press(vp: Viewport, page: Page, target: ReturnType<Page['getByTestId']>): Promise<void> {
+async function press(vp: Viewport, target: ReturnType<Page['getByTestId']>): Promise<void> {
   await target.scrollIntoViewIfNeeded();
   if (vp.touch) await target.tap();
   else await target.click();
@@ -76,7 +75,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     expect(await page.getByTestId('preset').locator('option:checked').textContent()).toBe(
       'D6, corner R1 (paper Tool 1)',
     );
-    await press(vp, page, page.getByTestId('size-switch').getByText('diameter D'));
+    await press(vp, page.getByTestId('size-switch').getByText('diameter D'));
     expect(await page.getByTestId('input-R').inputValue()).toBe('6');
     expect(await page.locator('label[for="field-R"]').textContent()).toBe('Tool diameter D');
     await expect.poll(() => new URL(page.url()).searchParams.get('D')).toBe('6');
@@ -155,18 +154,18 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     const headlineCopy = page.locator('.big button.copy');
     await expect.poll(() => headlineCopy.isEnabled()).toBe(true);
-    await press(vp, page, page.getByRole('button', { name: 'Copy the headline value' }));
+    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
     await expect.poll(() => headlineCopy.textContent()).toBe('Copied');
     expect(await text(page, 'copy-status')).toBe('Copied 2.8872 (mm).');
     expect(await page.evaluate(() => navigator.clipboard.readText())).toBe('2.8872');
     await page.screenshot({ path: `${SHOTS}/quick-lookup-copied-${vp.name}.png` });
     await expect.poll(() => headlineCopy.textContent(), { timeout: 3000 }).toBe('Copy');
-    await press(vp, page, page.getByRole('button', { name: 'Copy L/2' }));
+    await press(vp, page.getByRole('button', { name: 'Copy L/2' }));
     await expect.poll(() => page.evaluate(() => navigator.clipboard.readText())).toBe('1.4436');
     // Same format for a small value shown in um: copied in mm.
     await typeInto(page, 'input-h', '0.000001');
     await expect.poll(() => text(page, 'result-exact-interval')).toMatch(/ \u00b5m$/);
-    await press(vp, page, page.getByRole('button', { name: 'Copy the headline value' }));
+    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
     const shown = await text(page, 'result-exact-interval');
     const copied = await page.evaluate(() => navigator.clipboard.readText());
     expect(Number(copied) * 1000).toBeCloseTo(Number.parseFloat(shown), 3);
@@ -182,7 +181,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     const button = page.getByTestId('download-table');
     await expect.poll(() => button.isEnabled()).toBe(true);
     const downloaded = page.waitForEvent('download');
-    await press(vp, page, button);
+    await press(vp, button);
     const download = await downloaded;
     expect(download.suggestedFilename()).toBe('step-over-table_R3_Rcr1_zigzag.csv');
     const csv = readFileSync(await download.path(), 'utf8');
