@@ -110,6 +110,9 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     expect(await resultNumbers(page)).toEqual([]);
     expect(await text(page, 'results-status')).toMatch(/^Typing/);
     expect(await page.getByTestId('scene').getAttribute('class')).toMatch(/typing/);
+    expect(await page.locator('.typing-badge').isVisible()).toBe(true);
+    expect(await page.locator('.stale-badge:not(.typing-badge)').isVisible()).toBe(false);
+    expect(await page.locator('.scene-labels').isVisible()).toBe(false);
     await page.keyboard.type(',', { delay: 30 });
     expect(await text(page, 'error-h')).toBe('');
     expect(await resultNumbers(page)).toEqual([]);
@@ -125,6 +128,8 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     await expect.poll(() => text(page, 'error-h')).toMatch(/Scallop height h must be a number \(got "-"\)/);
     expect(await resultNumbers(page)).toEqual([]);
     expect(await text(page, 'results-status')).toBe('');
+    expect(await page.locator('.typing-badge').isVisible()).toBe(false);
+    expect(await page.locator('.stale-badge:not(.typing-badge)').isVisible()).toBe(true);
     // Enter commits at once (well before the pause).
     await typeInto(page, 'input-h', '0');
     await page.keyboard.press('Enter');
