@@ -40,7 +40,7 @@ describe('target Ra and roughness in headless Chromium', () => {
     expect(await text(page, 'result-rz')).toBe('50.000 \u00b5m');
     const ra = exactRoughness(forwardInput(TOOL, 'one-way', 0.05)).raMm;
     expect(await text(page, 'result-ra-rule')).toBe(
-      `Rule of thumb Ra ~ h/4 = 0.012500 mm: +${((100 * (0.0125 - ra)) / ra).toFixed(2)} % against the exact Ra.`,
+      `Rule of thumb Ra ~ h/4 = 12.500 \u00b5m: +${((100 * (0.0125 - ra)) / ra).toFixed(2)} % against the exact Ra.`,
     );
     expect(await page.getByTestId('input-ra').isVisible()).toBe(false);
     await page.locator('input[name="target"][value="ra"]').check();
