@@ -1,5 +1,6 @@
 /** Page entry: styles and the calculator (with the test probe only in the `e2e` build mode). */
 import './ui/style.css';
+import './ui/quickLookup.css';
 import { CalculatorApp } from './ui/app';
 import { startWithProbe } from './ui/probe';
 

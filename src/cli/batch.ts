@@ -14,27 +14,13 @@
 
 import type { Readable } from 'node:stream';
 import { StringDecoder } from 'node:string_decoder';
-import {
-  APPROXIMATION_KEYS,
-  type Approximation,
-  bediHalfInterval,
-  compareForward,
-  cornerBallHalfInterval,
-  exactForward,
-  type ForwardInput,
-  forwardInput,
-  type HalfInterval,
-  maxIntervalMm,
-  osculatingHalfInterval,
-  PROCEDURES,
-  redonnetHalfInterval,
-  scallopHeightForRaMm,
-  sekineHalfInterval,
-  validateForward,
-  validateTargetRa,
-} from '../core/index';
+import { csvNumber, RESULT_COLUMNS, resultFields } from '../core/csvWrite';
+import { forwardInput, scallopHeightForRaMm, validateForward, validateTargetRa } from '../core/index';
 import { CsvReader, type CsvRecord, csvText } from './csv';
 import { describeSystemError, FLUSH_CHARS, type Output } from './output';
+
+/** The result columns and their writers live in the shared CSV writer (core/csvWrite.ts). */
+export { csvNumber, RESULT_COLUMNS, resultFields };
 
 /** Input columns: required first, then the target (one of the two), then the optional ones, in the order they are echoed. */
 export const REQUIRED_COLUMNS = ['R', 'Rcr', 'rho'] as const;
@@ -45,27 +31,6 @@ type InputColumn =
   | (typeof TARGET_COLUMNS)[number]
   | (typeof OPTIONAL_COLUMNS)[number];
 const INPUT_COLUMNS: readonly InputColumn[] = [...REQUIRED_COLUMNS, ...TARGET_COLUMNS, ...OPTIONAL_COLUMNS];
-
-/**
- * Result columns after the echoed input: L/2 of the exact solution and of the paper's three
- * procedures (as before tilt existed), the exact step-over and its geometry, L/2 of the two
- * other approximations, the notes (warnings) and the error.
- */
-export const RESULT_COLUMNS = [
-  'exact',
-  'sekine',
-  'redonnet',
-  'bedi',
-  'interval',
-  'halfWidthRight',
-  'halfWidthLeft',
-  'contactOffset',
-  'otherCuspHeight',
-  'osculating',
-  'cornerBall',
-  'note',
-  'error',
-] as const;
 
 /** Where each input column is in the records, and which are echoed. */
 export interface Layout {
@@ -123,69 +88,9 @@ export function outputHeader(layout: Layout): string {
   return `${[...layout.echoed.map((c) => c.name), ...resultColumns(layout)].join(',')}\n`;
 }
 
-/** A number in full precision: the shortest text that reads back to the same double; never `-0`. */
-export function csvNumber(value: number): string {
-  return value === 0 ? '0' : String(value);
-}
-
 /** Empty fields for the result columns before `error` (numbers and `note`), each after a comma. */
 function emptyResults(layout: Layout): string {
   return ','.repeat(resultColumns(layout).length - 1);
-}
-
-function halfText(r: Approximation<HalfInterval>): string {
-  return r.ok ? csvNumber(r.halfIntervalMm) : '';
-}
-
-/** compareForward's warning condition: a step-over at or beyond the widest that leaves a scallop. */
-function beyondWall(r: Approximation<HalfInterval>, maxMm: number): boolean {
-  return r.ok && !(2 * r.halfIntervalMm < maxMm);
-}
-
-const NO_SCALLOP_NOTE =
-  'exact: a flat end without lead or tilt leaves no scallop at any step-over up to its diameter (L = 2R).';
-
-/**
- * The results of a valid case: the result fields up to `note`, joined (no `error`). Calls the
- * core's functions one by one, not compareForward, which also solves the scallop each
- * approximation really leaves (not written here) and is about 5 times slower; compareForward only
- * words the warnings, on the rare rows that have one.
- */
-export function resultFields(input: ForwardInput): string {
-  const exact = exactForward(input);
-  const maxMm = maxIntervalMm(input, input.pattern, input.surface);
-  const sekine = sekineHalfInterval(input);
-  const redonnet = redonnetHalfInterval(input);
-  const bedi = bediHalfInterval(input);
-  const osculating = osculatingHalfInterval(input);
-  const cornerBall = cornerBallHalfInterval(input);
-  let note = exact.noScallop ? NO_SCALLOP_NOTE : '';
-  if (
-    beyondWall(sekine, maxMm) ||
-    beyondWall(redonnet, maxMm) ||
-    beyondWall(bedi, maxMm) ||
-    beyondWall(osculating, maxMm) ||
-    beyondWall(cornerBall, maxMm)
-  ) {
-    note = warningNotes(input, note);
-  }
-  return (
-    `${csvNumber(exact.halfIntervalMm)},${halfText(sekine)},${halfText(redonnet)},${halfText(bedi)},` +
-    `${csvNumber(exact.intervalMm)},${csvNumber(exact.halfWidthRightMm)},${csvNumber(exact.halfWidthLeftMm)},` +
-    `${csvNumber(exact.contactOffsetMm)},${exact.otherCuspHeightMm === null ? '' : csvNumber(exact.otherCuspHeightMm)},` +
-    `${halfText(osculating)},${halfText(cornerBall)},${csvText(note)}`
-  );
-}
-
-/** The warnings of every approximation, as compareForward words them, after `note`. */
-function warningNotes(input: ForwardInput, note: string): string {
-  const notes = note === '' ? [] : [note];
-  const c = compareForward(input);
-  for (const key of APPROXIMATION_KEYS) {
-    const r = c.approximations[key];
-    if (r.ok && r.warning !== null) notes.push(`${PROCEDURES[key].shortLabel}: ${r.warning}`);
-  }
-  return notes.join(' ');
 }
 
 /** Spaces and tabs around a field are dropped in the echo; a line break is kept (and quoted). */

@@ -223,25 +223,4 @@ export function parseCsv(text: string, maxRecordChars: number = MAX_RECORD_CHARS
   return [...reader.push(text), ...reader.end()];
 }
 
-/** A plain decimal number as the validation accepts it (sign, digits, point, exponent). */
-const NUMBER_TEXT = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
-
-/** True for text that reads as a number. */
-export function isNumberText(text: string): boolean {
-  return NUMBER_TEXT.test(text);
-}
-
-/** One output field, quoted when it holds a comma, a quote or a line break (RFC 4180). */
-export function csvField(text: string): string {
-  return /[",\r\n]/.test(text) ? `"${text.replaceAll('"', '""')}"` : text;
-}
-
-/**
- * Text written back to a CSV that a spreadsheet may open: text that is not a number and begins
- * with `=`, `+`, `-`, `@` (or a tab or carriage return) gets a leading `'`, so that it is shown
- * as text and never evaluated as a formula; then it is quoted where needed.
- */
-export function csvText(text: string): string {
-  const guarded = /^[=+\-@\t\r]/.test(text) && !isNumberText(text) ? `'${text}` : text;
-  return csvField(guarded);
-}
+export { csvField, csvText, isNumberText } from '../core/csvWrite';

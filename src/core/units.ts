@@ -111,3 +111,26 @@ export function formatAngleDeg(angleDeg: number): string {
 export function formatInputNumber(value: number): string {
   return formatSignificant(value, { digits: 6, trimZeros: true, exponentBelow: 1e-5 });
 }
+
+/** How a length reads best: in the user's unit, or in its small sub-unit (um for mm, thou for inch). */
+export interface ReadableLengthUnit {
+  /** The symbol printed after the number: `mm`, `µm`, `in` or `thou`. */
+  readonly symbol: string;
+  /** Multiplies a value in the user's unit into this unit (1, or 1000 for the sub-unit). */
+  readonly perUserUnit: number;
+}
+
+/**
+ * Below this magnitude, in the user's unit, a length reads better in the sub-unit: 0.1 mm
+ * (shown as 100 µm and less) and 0.01 in (10 thou and less, 1 thou = 0.001 in), so a scallop of
+ * 0.05 mm reads `50.00 µm` and one of 0.0002 in `0.2000 thou`, while a step-over of 2.9 mm stays in mm.
+ */
+export const SUB_UNIT_BELOW: Readonly<Record<LengthUnit, number>> = { mm: 0.1, in: 0.01 };
+
+/** The unit a length given in mm reads best in, for a user working in `unit` (zero stays in `unit`). */
+export function readableLengthUnit(lengthMm: number, unit: LengthUnit): ReadableLengthUnit {
+  const magnitude = Math.abs(fromMm(lengthMm, unit));
+  if (magnitude > 0 && magnitude < SUB_UNIT_BELOW[unit])
+    return { symbol: unit === 'mm' ? '\u00b5m' : 'thou', perUserUnit: 1000 };
+  return { symbol: unitSymbol(unit), perUserUnit: 1 };
+}

@@ -164,6 +164,11 @@ export interface DescribeOptions {
   readonly typed?: string;
   /** Name the step-over as its half, `L/2` (a command line given --half-interval). */
   readonly intervalAsHalf?: boolean;
+  /**
+   * The tool size was given as the diameter `D = 2R` (the page's size switch): the tool radius
+   * is named `D` with its limits doubled, and limits set by R are written `D/2`.
+   */
+  readonly toolSizeAsDiameter?: boolean;
 }
 
 /** True for fields measured as lengths (converted to the user's unit in messages). */
@@ -184,9 +189,14 @@ function isLength(field: AnyFieldName): boolean {
  */
 export function describeInputError(e: AnyInputError, unit: LengthUnit, options: DescribeOptions = {}): string {
   const half = e.field === 'interval' && options.intervalAsHalf === true;
-  const label = half ? 'Half path interval L/2' : FIELD_LABELS[e.field];
+  const diameter = options.toolSizeAsDiameter === true;
+  const label = half
+    ? 'Half path interval L/2'
+    : diameter && e.field === 'R'
+      ? 'Tool diameter D'
+      : FIELD_LABELS[e.field];
   const u = unitSymbol(unit);
-  const scale = half ? 0.5 : 1;
+  const scale = half ? 0.5 : diameter && e.field === 'R' ? 2 : 1;
   const length = (mm: number) => `${formatInputNumber(fromMm(mm * scale, unit))} ${u}`;
   const limit = e.limit === null ? '' : isLength(e.field) ? length(e.limit) : `${formatAngleDeg(e.limit)} degrees`;
   const shown = options.typed ?? e.got;
@@ -221,7 +231,9 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
         ? `This tool gouges a concave cylinder of any radius with this axis and posture ${got}: a flat bottom without lead reaches below the surface on both sides of the contact. Add lead or tilt, or use a ball end.`
         : `${label}: a concave cylinder must have a radius of at least ${length(Math.abs(e.limit))} for this tool and posture (Rs at most ${length(e.limit)}) ${got}; a tighter one is gouged (the tool reaches below the surface away from the contact).`;
     case 'corner-exceeds-radius':
-      return `${label} must not exceed the tool radius R = ${limit} ${got}; Rcr = R is a ball end mill.`;
+      return diameter
+        ? `${label} must be at most D/2 = ${limit} ${got}; Rcr = D/2 is a ball end mill.`
+        : `${label} must not exceed the tool radius R = ${limit} ${got}; Rcr = R is a ball end mill.`;
     case 'flank-wall':
       return e.side === null
         ? `${label} must be below the profile's full height (R - Rcr) sin(rho) + Rcr = ${limit} ${got}; at or above it the tool flank leaves a wall, not a scallop.`
@@ -229,7 +241,7 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
     case 'shank-cuts':
       return `${label} must be below ${limit} ${got}: above it the shank (the tool's cylindrical side, leaning to the ${e.side ?? 'right'} with the tilt) would cut the surface.`;
     case 'beyond-diameter':
-      return `${label} must be below the tool ${half ? 'radius R' : 'diameter 2R'} = ${limit} ${got}; at or beyond it adjacent passes leave a wall.`;
+      return `${label} must be below the tool ${half ? 'radius R' : diameter ? 'diameter D' : 'diameter 2R'} = ${limit} ${got}; at or beyond it adjacent passes leave a wall.`;
     case 'wall-only':
       return `${label} cannot be answered ${got}: in this posture the tool cuts a step at any step-over (a flank or the shank rises straight from the contact, as a tilted flat end does), so no scallop forms. Add a corner radius, or lead, or less tilt.`;
     case 'beyond-max-ra':

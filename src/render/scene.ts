@@ -253,6 +253,9 @@ export class ToolScene {
     this.camera.up.set(0, 0, 1);
     this.controls = new OrbitControls(this.camera, canvas);
     this.controls.enableDamping = false;
+    // A vertical swipe over the scene scrolls the page (OrbitControls sets 'none'); a horizontal
+    // drag turns the view and two fingers zoom: the deliberate gestures.
+    canvas.style.touchAction = 'pan-y';
     this.controls.addEventListener('change', () => this.requestRender());
 
     this.scene.add(new AmbientLight(0xffffff, 1.2));

@@ -7,17 +7,18 @@
  * 3D scene (render/scene.ts).
  */
 import type { ProcedureKey } from '../core/procedures';
-import { unitSymbol } from '../core/units';
 import type { PassPattern } from '../core/validate';
 import type { CameraPreset, ToolScene } from '../render/scene';
 import type { RestartInfo } from '../worker/client';
 import { type SolveMode, type SolveReply, type SolveRequest, sameRequest } from '../worker/protocol';
 import { solveClient } from '../worker/workers';
 import { applyProcedureColours } from './colours';
+import { wireCopyButtons } from './copy';
 import { FieldsPanel } from './fields';
-import { formatLenUnit, formatSignedLen } from './format';
+import { formatLenUnit, formatSignedLenUnit } from './format';
 import { Freshness } from './freshness';
 import { Highlighter } from './highlight';
+import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
 import { buildRequest, fieldMessages } from './request';
 import { ResultsPanel } from './results';
@@ -31,11 +32,14 @@ import {
   parseField,
   parseUrl,
   type Target,
+  type ToolSize,
   type Unit,
   withField,
+  withSize,
   withValues,
 } from './state';
 import { TeachingLoader } from './teaching';
+import { TypingGate } from './typing';
 import { UrlState } from './urlState';
 import type { ViewId } from './views/panel';
 
@@ -64,6 +68,8 @@ export class CalculatorApp {
   private readonly results: ResultsPanel;
   /** The 3D scene, built after the first result (its code and WebGL context load then). */
   private readonly scene: SceneSlot<ToolScene>;
+  private readonly sceneBox: HTMLElement;
+  private readonly lookup: LookupDownload;
   private readonly teaching: TeachingLoader | null;
   private readonly roughness: RoughnessPanel;
   private readonly simulation: SimulationLoader;
@@ -74,6 +80,10 @@ export class CalculatorApp {
     },
     onRestart: (info) => this.restarted('results', info),
   });
+  /** Holds a half-typed text back until a pause or a commit (typing.ts). */
+  private readonly typing = new TypingGate(() => this.change(this.state));
+  /** The field messages of the last committed state (kept while typing, so none flashes). */
+  private messages: ReadonlyMap<FieldKey, string> = new Map();
   /** The last request sent to the solver (not sent again while it is the same). */
   private asked: SolveRequest | null = null;
   /** The reply and unit the scene shows. */
@@ -99,11 +109,20 @@ export class CalculatorApp {
     this.results = new ResultsPanel(root);
     this.roughness = new RoughnessPanel(root);
     this.simulation = new SimulationLoader((info) => this.restarted('simulation', info));
-    const sceneRoot = must<HTMLElement>(root, '.scene');
-    this.scene = new SceneSlot(() => import('../render/scene').then(({ ToolScene }) => new ToolScene(sceneRoot)));
+    this.lookup = new LookupDownload(
+      must(root, '[data-testid="download-table"]'),
+      must(root, '[data-testid="download-table-status"]'),
+    );
+    const sceneBox = must<HTMLElement>(root, '.scene');
+    this.sceneBox = sceneBox;
+    this.scene = new SceneSlot(() => import('../render/scene').then(({ ToolScene }) => new ToolScene(sceneBox)));
     this.scene.onFrame = () => this.observer.frame?.(this.fresh.shown.kind === 'current');
     this.fields = new FieldsPanel(root, {
-      onField: (key, text) => this.change(withField(this.state, key, text)),
+      onField: (key, text, typing) => this.edit(key, withField(this.state, key, text), typing),
+      onCommit: () => {
+        if (this.typing.release()) this.change(this.state);
+      },
+      onSize: (size: ToolSize) => this.change(withSize(this.state, size)),
       onMode: (mode: SolveMode) => this.change({ ...this.state, mode }),
       onUnit: (unit: Unit) => this.change(convertState(this.state, unit)),
       onPattern: (pattern: PassPattern) => this.change({ ...this.state, pattern }),
@@ -129,12 +148,7 @@ export class CalculatorApp {
       button.addEventListener('click', () =>
         this.scene.run('camera', (s) => s.setCamera(button.dataset.camera as CameraPreset)),
       );
-    for (const button of root.querySelectorAll<HTMLButtonElement>('button.copy')) {
-      button.addEventListener('click', () => {
-        const text = button.parentElement?.querySelector('output')?.textContent ?? '';
-        if (/\d/.test(text)) void navigator.clipboard?.writeText(text).catch(() => undefined);
-      });
-    }
+    wireCopyButtons(root, must(root, '[data-testid="copy-status"]'));
     const notices = [...parsed.notices];
     if (parsed.view !== null && requested === undefined)
       notices.push(`view="${parsed.view}" is not one of ${VIEW_IDS.join(', ')}.`);
@@ -154,8 +168,33 @@ export class CalculatorApp {
     };
   }
 
+  /**
+   * A field edited: a slider's value, or a typed text that makes a valid question, changes the
+   * state at once; a typed text that does not (half-typed, or wrong) is held back until a pause or
+   * a commit, meanwhile every number is a dash marked "typing" and no message changes but the
+   * typed field's own, which is cleared.
+   */
+  private edit(key: FieldKey, state: CalculatorState, typing: boolean): void {
+    if (!typing || buildRequest(state).ok) {
+      this.typing.release();
+      this.change(state);
+      return;
+    }
+    this.typing.hold();
+    this.state = state;
+    this.fresh.want(null);
+    const kept = new Map(this.messages);
+    kept.delete(key);
+    this.fields.render(state, kept);
+    this.teaching?.want(null, state.unit, true);
+    this.simulation.want(null, state.unit);
+    this.lookup.want(null);
+    this.draw();
+  }
+
   /** The one way the state changes: ask the solver first, then draw the fields, write the URL. */
   private change(state: CalculatorState): void {
+    this.typing.release();
     this.state = state;
     const built = buildRequest(state);
     const request = built.ok ? built.request : null;
@@ -165,9 +204,11 @@ export class CalculatorApp {
       this.asked = request;
       this.client.request(request);
     }
-    this.fields.render(state, built.ok ? new Map<FieldKey, string>() : fieldMessages(state, built.errors));
+    this.messages = built.ok ? new Map<FieldKey, string>() : fieldMessages(state, built.errors);
+    this.fields.render(state, this.messages);
     this.teaching?.want(request, state.unit);
     this.simulation.want(request, state.unit);
+    this.lookup.want(request);
     this.draw();
     this.url.write(state);
   }
@@ -176,7 +217,9 @@ export class CalculatorApp {
   private draw(): void {
     const shown = this.fresh.shown;
     const tilt = parseField(this.state.fields.tilt);
-    this.results.render(shown, this.state.unit, this.state.mode, tilt);
+    const typing = this.typing.holding;
+    this.results.render(shown, this.state.unit, this.state.mode, tilt, typing);
+    this.sceneBox.classList.toggle('typing', typing);
     this.roughness.render(shown, this.state.unit);
     this.highlighter.markRows();
     // The first answer (or the first error) is on screen: now the scene may take its time to load.
@@ -193,7 +236,7 @@ export class CalculatorApp {
       const y0 = reply.exact.contactOffsetMm;
       const labels = {
         interval: `L = ${formatLenUnit(reply.exact.intervalMm, unit)}`,
-        contactOffset: y0 === 0 ? null : `y0 = ${formatSignedLen(y0, unit)} ${unitSymbol(unit)}`,
+        contactOffset: y0 === 0 ? null : `y0 = ${formatSignedLenUnit(y0, unit)}`,
       };
       this.scene.run('update', (s) => s.update(reply.scene, labels));
     }

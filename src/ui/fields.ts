@@ -18,13 +18,23 @@ import {
   isLengthField,
   PRESETS,
   parseField,
+  presetOf,
+  sizeIsDiameter,
   type Target,
+  type ToolSize,
   type Unit,
 } from './state';
 
 export interface FieldEvents {
-  /** A field's text changed (typed, or a slider moved: then already formatted). */
-  readonly onField: (key: FieldKey, text: string) => void;
+  /**
+   * A field's text changed: typed (`typing` true: it may be half-typed, see typing.ts), or a slider
+   * moved (then already formatted, and final).
+   */
+  readonly onField: (key: FieldKey, text: string, typing: boolean) => void;
+  /** The user committed what they typed: Enter, or the field lost focus. */
+  readonly onCommit: () => void;
+  /** The tool size switch: radius R or diameter D. */
+  readonly onSize: (size: ToolSize) => void;
   readonly onMode: (mode: SolveMode) => void;
   readonly onUnit: (unit: Unit) => void;
   readonly onPattern: (pattern: PassPattern) => void;
@@ -43,6 +53,10 @@ const HINTS: Readonly<Record<FieldKey, string>> = {
   ra: 'target roughness across the feed; the scallop height follows',
 };
 
+/** The tool size field's label and hint in diameter mode. */
+const DIAMETER_LABEL = 'Tool diameter D';
+const DIAMETER_HINT = 'as catalogues give it; D = 2R';
+
 const CORE_FIELD: Readonly<Record<FieldKey, FieldName>> = {
   R: 'R',
   Rcr: 'Rcr',
@@ -55,6 +69,8 @@ const CORE_FIELD: Readonly<Record<FieldKey, FieldName>> = {
 
 interface FieldView {
   readonly row: HTMLElement;
+  readonly label: HTMLElement;
+  readonly hint: HTMLElement;
   readonly slider: HTMLInputElement;
   readonly input: HTMLInputElement;
   readonly unitLabel: HTMLElement;
@@ -69,6 +85,7 @@ function must<T extends Element>(root: ParentNode, selector: string): T {
 
 export class FieldsPanel {
   private readonly fields = new Map<FieldKey, FieldView>();
+  private readonly preset: HTMLSelectElement;
 
   constructor(
     private readonly root: HTMLElement,
@@ -80,7 +97,9 @@ export class FieldsPanel {
     this.wireSwitch('unit', (v) => events.onUnit(v === 'in' ? 'in' : 'mm'));
     this.wireSwitch('pattern', (v) => events.onPattern(v === 'zigzag' ? 'zigzag' : 'one-way'));
     this.wireSwitch('target', (v) => events.onTarget(v === 'ra' ? 'ra' : 'h'));
+    this.wireSwitch('size', (v) => events.onSize(v === 'D' ? 'D' : 'R'));
     const select = must<HTMLSelectElement>(root, '[data-testid="preset"]');
+    this.preset = select;
     PRESETS.forEach((p, i) => {
       select.append(html('option', { value: String(i) }, p.label));
     });
@@ -111,15 +130,20 @@ export class FieldsPanel {
     });
     const unitLabel = html('span', { class: 'unit' });
     const hint = html('span', { class: 'hint', id: `${id}-hint` }, HINTS[key]);
+    const labelElement = html('label', { for: id }, label);
     const error = html('div', { class: 'error', id: `${id}-error`, role: 'alert', 'data-testid': `error-${key}` });
     const line = html('div', { class: 'field-line' });
     line.append(slider, input, unitLabel);
-    row.append(html('label', { for: id }, label), line, hint, error);
+    row.append(labelElement, line, hint, error);
     container.append(row);
-    input.addEventListener('input', () => events.onField(key, input.value));
+    input.addEventListener('input', () => events.onField(key, input.value, true));
+    input.addEventListener('keydown', (e) => {
+      if (e.key === 'Enter') events.onCommit();
+    });
+    input.addEventListener('blur', () => events.onCommit());
     // A slider's value in the user's unit, without float noise.
-    slider.addEventListener('input', () => events.onField(key, formatField(Number(slider.value))));
-    return { row, slider, input, unitLabel, error };
+    slider.addEventListener('input', () => events.onField(key, formatField(Number(slider.value)), false));
+    return { row, label: labelElement, hint, slider, input, unitLabel, error };
   }
 
   private wireSwitch(name: string, on: (value: string) => void): void {
@@ -138,6 +162,12 @@ export class FieldsPanel {
       const given = forward ? state.target : 'L';
       view.row.hidden = (key === 'h' || key === 'ra' || key === 'L') && key !== given;
       view.unitLabel.textContent = isLengthField(key) ? unitSymbol(state.unit) : 'deg';
+      if (key === 'R') {
+        const diameter = sizeIsDiameter(state);
+        view.label.textContent = diameter ? DIAMETER_LABEL : FIELD_LABELS.R;
+        view.hint.textContent = diameter ? DIAMETER_HINT : HINTS.R;
+        view.slider.setAttribute('aria-label', `${view.label.textContent} slider`);
+      }
       if (view.input.value !== state.fields[key]) view.input.value = state.fields[key];
       const r = ranges[key];
       view.slider.min = r.min;
@@ -155,7 +185,12 @@ export class FieldsPanel {
       unit: state.unit,
       pattern: state.pattern,
       target: state.target,
+      size: state.size ?? 'R',
     };
+    // The preset box names the preset the tool fields hold, or "custom" once edited away from it.
+    const preset = presetOf(state);
+    const chosen = preset === null ? 'custom' : String(PRESETS.indexOf(preset));
+    if (this.preset.value !== chosen) this.preset.value = chosen;
     const targetSwitch = this.root.querySelector<HTMLElement>('[data-testid="target-switch"]');
     if (targetSwitch) targetSwitch.hidden = !forward;
     for (const [name, value] of Object.entries(checked))

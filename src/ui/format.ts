@@ -4,7 +4,7 @@
  * convergence two finer) and never fewer than four significant digits, so a micro tool reads
  * 4.472e-5 rather than 0.0000. Never NaN, never -0: a missing value is a dash.
  */
-import { formatSignificant, fromMm, type LengthUnit, NO_VALUE, unitSymbol } from '../core/units';
+import { formatSignificant, fromMm, type LengthUnit, NO_VALUE, readableLengthUnit } from '../core/units';
 
 export type Resolution = 'length' | 'height' | 'fine';
 
@@ -35,10 +35,27 @@ export function formatSignedLen(mm: number | null, unit: LengthUnit, resolution:
   return formatSignificant(v, { digits: digitsFor(v, DECIMALS[resolution][unit]), signed: true });
 }
 
-/** A length with its unit symbol (a dash alone when there is no value). */
-export function formatLenUnit(mm: number | null, unit: LengthUnit, resolution: Resolution = 'length'): string {
-  const text = formatLen(mm, unit, resolution);
-  return text === NO_VALUE ? text : `${text} ${unitSymbol(unit)}`;
+/**
+ * A length with its unit symbol, in the unit it reads best in (readableLengthUnit: below 0.1 mm in
+ * µm, below 0.01 in in thou) at the same resolution and at least four significant digits; a dash
+ * alone when there is no value. `signed` puts `+` before positive values.
+ */
+export function formatLenUnit(
+  mm: number | null,
+  unit: LengthUnit,
+  resolution: Resolution = 'length',
+  signed = false,
+): string {
+  if (mm === null || !Number.isFinite(mm)) return NO_VALUE;
+  const shown = readableLengthUnit(mm, unit);
+  const v = fromMm(mm, unit) * shown.perUserUnit;
+  const decimals = Math.max(0, DECIMALS[resolution][unit] - Math.round(Math.log10(shown.perUserUnit)));
+  return `${formatSignificant(v, { digits: digitsFor(v, decimals), signed })} ${shown.symbol}`;
+}
+
+/** A signed length with its unit symbol (formatLenUnit with `+` before positive values). */
+export function formatSignedLenUnit(mm: number | null, unit: LengthUnit, resolution: Resolution = 'length'): string {
+  return formatLenUnit(mm, unit, resolution, true);
 }
 
 /** An angle in degrees for captions: up to 6 significant digits, no trailing zeros. */

@@ -13,7 +13,7 @@ import {
   validateInverse,
 } from '../core/validate';
 import type { SolveRequest } from '../worker/protocol';
-import { type CalculatorState, type FieldKey, fieldInMm } from './state';
+import { type CalculatorState, type FieldKey, fieldInMm, sizeIsDiameter } from './state';
 
 export type BuiltRequest =
   | { readonly ok: true; readonly request: SolveRequest }
@@ -50,7 +50,10 @@ export function fieldMessages(state: CalculatorState, errors: readonly InputErro
   for (const e of errors) {
     const key = fieldOfError(e.field);
     if (key === null || out.has(key)) continue;
-    out.set(key, describeInputError(e, state.unit, { typed: state.fields[key].trim() }));
+    out.set(
+      key,
+      describeInputError(e, state.unit, { typed: state.fields[key].trim(), toolSizeAsDiameter: sizeIsDiameter(state) }),
+    );
   }
   return out;
 }

@@ -7,8 +7,9 @@
 import { APPROXIMATION_KEYS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../core/procedures';
 import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/units';
 import type { ProcedureNote, ProcedureRow, SolveMode, SolveReply } from '../worker/protocol';
+import { setCopyValue } from './copy';
 import { html } from './dom';
-import { formatLen, formatLenUnit, formatSignedLen } from './format';
+import { formatLen, formatLenUnit, formatSignedLen, formatSignedLenUnit } from './format';
 import type { Shown } from './freshness';
 
 type OkReply = Extract<SolveReply, { ok: true }>;
@@ -70,7 +71,7 @@ export class ResultsPanel {
    * Draws what is shown. `mode` and `tiltDeg` are the inputs on screen (they label the headline
    * and the table while no reply answers them).
    */
-  render(shown: Shown<SolveReply>, unit: LengthUnit, mode: SolveMode, tiltDeg: number | null): void {
+  render(shown: Shown<SolveReply>, unit: LengthUnit, mode: SolveMode, tiltDeg: number | null, typing = false): void {
     const reply = shown.kind === 'current' ? shown.reply : shown.kind === 'invalid' ? null : shown.last;
     const ok = reply?.ok ? reply : null;
     // A stale reply keeps its own mode (marked stale); nothing at all follows the inputs' mode.
@@ -78,8 +79,9 @@ export class ResultsPanel {
     const stale = shown.kind !== 'current';
     this.section.classList.toggle('stale', stale && ok !== null);
     this.section.setAttribute('aria-busy', String(shown.kind === 'pending'));
-    this.status.textContent =
-      shown.kind === 'pending' && ok
+    this.status.textContent = typing
+      ? 'Typing: the results follow when you pause or press Enter.'
+      : shown.kind === 'pending' && ok
         ? 'Updating: these numbers are for the previous inputs.'
         : shown.kind === 'failed'
           ? ok
@@ -97,14 +99,30 @@ export class ResultsPanel {
     this.set('result-exact-half', e === null ? NO_VALUE : formatLen(e.halfIntervalMm, unit));
     this.set('result-width-right', value(e?.widthRightMm));
     this.set('result-width-left', value(e?.widthLeftMm));
-    this.set(
-      'result-contact-offset',
-      e === null ? NO_VALUE : `${formatSignedLen(e.contactOffsetMm, unit)} ${unitSymbol(unit)}`,
+    this.set('result-contact-offset', e === null ? NO_VALUE : formatSignedLenUnit(e.contactOffsetMm, unit));
+    this.set('result-centre-offset', e === null ? NO_VALUE : formatSignedLenUnit(-e.contactOffsetMm, unit));
+    // Copy only what answers the inputs on screen, in the user's unit (copy.ts).
+    const copyable = shown.kind === 'current' ? e : null;
+    const copy = (testId: string, mm: number | undefined, resolution: 'length' | 'height' = 'length') => {
+      const output = this.root.querySelector(`[data-testid="${testId}"]`);
+      if (output)
+        setCopyValue(output, copyable === null || mm === undefined ? null : formatLen(mm, unit, resolution), unit);
+    };
+    copy(
+      this.headline.dataset.testid ?? '',
+      forward ? copyable?.intervalMm : copyable?.cuspHeightMm,
+      forward ? 'length' : 'height',
     );
+    copy('result-exact-half', copyable?.halfIntervalMm);
+    copy('result-centre-offset', copyable === null ? undefined : -copyable.contactOffsetMm);
+    const flat = shown.kind === 'current' && e?.noScallop === true;
     this.set(
-      'result-centre-offset',
-      e === null ? NO_VALUE : `${formatSignedLen(-e.contactOffsetMm, unit)} ${unitSymbol(unit)}`,
+      'no-scallop',
+      flat
+        ? `No scallop: a flat end without lead or tilt lies flat on the plane and leaves no scallop at any step-over up to its diameter, so L = 2R = ${formatLenUnit(e.intervalMm, unit)} for any h.`
+        : '',
     );
+    must<HTMLElement>(this.root, '[data-testid="no-scallop"]').hidden = !flat;
     const zigzag = (ok?.request.input.pattern ?? null) === 'zigzag';
     this.cuspRow.hidden = !zigzag;
     this.set('result-cusp-height', zigzag ? value(e?.cuspHeightMm, 'height') : NO_VALUE);

@@ -9,7 +9,7 @@ import { PLANE } from '../core/cylinder';
 import { maxRaCachedMm } from '../core/raTarget';
 import { fromMm, toMm } from '../core/units';
 import { maxIntervalMm, scallopHeightLimits, type ToolInput } from '../core/validate';
-import { type CalculatorState, type FieldKey, formatField, parseField } from './state';
+import { type CalculatorState, type FieldKey, formatField, parseField, radiusField, sizeIsDiameter } from './state';
 
 export interface SliderRange {
   readonly min: string;
@@ -26,7 +26,7 @@ const STEPS: Readonly<Record<'mm' | 'in', Readonly<Record<FieldKey, number>>>> =
 /** A tool for the ranges: the typed values where they make sense, defaults elsewhere. */
 function rangeTool(state: CalculatorState): ToolInput {
   const num = (key: FieldKey) => parseField(state.fields[key]);
-  const R = num('R');
+  const R = radiusField(state);
   const Rcr = num('Rcr');
   const rho = num('rho');
   const tilt = num('tilt');
@@ -73,6 +73,8 @@ export function sliderRanges(state: CalculatorState): Readonly<Record<FieldKey, 
           ]
         : [step.ra, 10 * step.ra],
   };
+  // The size field in diameter mode: D runs over twice the radius's range.
+  if (sizeIsDiameter(state)) ranges.R = [2 * ranges.R[0], 2 * ranges.R[1]];
   const out = {} as Record<FieldKey, SliderRange>;
   for (const key of Object.keys(ranges) as FieldKey[]) {
     const [min, max] = ranges[key];

@@ -10,6 +10,8 @@ export type Unit = LengthUnit;
 export type FieldKey = 'R' | 'Rcr' | 'rho' | 'tilt' | 'h' | 'L' | 'ra';
 /** What the forward problem is given: a scallop height h, or a roughness Ra (h then follows). */
 export type Target = 'h' | 'ra';
+/** How the tool size field is given: the radius R, or the diameter D = 2R, as catalogues give it. */
+export type ToolSize = 'R' | 'D';
 
 export interface CalculatorState {
   readonly unit: Unit;
@@ -17,8 +19,15 @@ export interface CalculatorState {
   readonly pattern: PassPattern;
   /** Forward mode's given value: h or Ra. */
   readonly target: Target;
-  /** Text of each field in the current unit (angles in degrees). */
+  /** Text of each field in the current unit (angles in degrees); `R` holds D when `size` is 'D'. */
   readonly fields: Readonly<Record<FieldKey, string>>;
+  /** The tool size field: radius R (default, also when missing) or diameter D. */
+  readonly size?: ToolSize;
+}
+
+/** True when the tool size field holds the diameter D. */
+export function sizeIsDiameter(state: CalculatorState): boolean {
+  return state.size === 'D';
 }
 
 /** Defaults in mm: the paper's Tool 1, condition 1 (L is its exact step-over, rounded), no tilt. */
@@ -46,9 +55,19 @@ export function formatField(value: number): string {
 
 const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
 
-/** Parses a field's text; null when it is not a plain finite number. */
-export function parseField(text: string): number | null {
+/**
+ * A field's text with a decimal comma read as a decimal point (`0,05` is 0.05, as typed where the
+ * comma is the decimal separator). Only a single comma and no point: `1,000.5` stays as it is (and
+ * is not a number).
+ */
+export function withDecimalPoint(text: string): string {
   const t = text.trim();
+  return /^[^,.]*,[^,.]*$/.test(t) ? t.replace(',', '.') : t;
+}
+
+/** Parses a field's text (a decimal comma accepted); null when it is not a plain finite number. */
+export function parseField(text: string): number | null {
+  const t = withDecimalPoint(text);
   if (!NUMBER.test(t)) return null;
   const v = Number(t);
   return Number.isFinite(v) ? v : null;
@@ -58,7 +77,22 @@ export function parseField(text: string): number | null {
 export function fieldInMm(state: CalculatorState, key: FieldKey): number | string {
   const v = parseField(state.fields[key]);
   if (v === null) return state.fields[key];
-  return isLengthField(key) ? toMm(v, state.unit) : v;
+  const size = key === 'R' && sizeIsDiameter(state) ? 0.5 : 1;
+  return isLengthField(key) ? toMm(v * size, state.unit) : v;
+}
+
+/** The tool radius in the user's unit as typed (half the field in diameter mode), or null when not a number. */
+export function radiusField(state: CalculatorState): number | null {
+  const v = parseField(state.fields.R);
+  return v === null ? null : sizeIsDiameter(state) ? v / 2 : v;
+}
+
+/** The state with its tool size field given as `size`: the text doubled or halved (invalid text kept). */
+export function withSize(state: CalculatorState, size: ToolSize): CalculatorState {
+  if ((state.size ?? 'R') === size) return state;
+  const v = parseField(state.fields.R);
+  const R = v === null ? state.fields.R : formatField(size === 'D' ? 2 * v : v / 2);
+  return { ...state, size, fields: { ...state.fields, R } };
 }
 
 /** A value in mm or degrees as the text of a field in `unit`. */
@@ -98,7 +132,7 @@ export function withValues(
   const fields = { ...state.fields };
   for (const key of FIELD_KEYS) {
     const v = values[key];
-    if (v !== undefined) fields[key] = fieldText(key, v, state.unit);
+    if (v !== undefined) fields[key] = fieldText(key, key === 'R' && sizeIsDiameter(state) ? 2 * v : v, state.unit);
   }
   return { ...state, fields };
 }
@@ -142,12 +176,13 @@ export function parseUrl(search: string): ParsedUrl {
     notices.push(`target="${targetText.slice(0, 20)}" is not h or ra; using h.`);
   const defaults = defaultState(unit, mode).fields;
   const fields = { ...defaults };
+  const size = sizeFromUrl(params, notices);
   const needed: FieldKey[] = ['R', 'Rcr', 'rho', mode === 'forward' ? target : 'L'];
-  const anyGiven = FIELD_KEYS.some((k) => params.has(k));
+  const anyGiven = FIELD_KEYS.some((k) => params.has(k)) || params.has('D');
   for (const key of FIELD_KEYS) {
     const text = params.get(key);
     if (text === null) {
-      if (anyGiven && needed.includes(key))
+      if (anyGiven && needed.includes(key) && !(key === 'R' && params.has('D')))
         notices.push(`${key} is missing from the link; using the default ${defaults[key]}.`);
       continue;
     }
@@ -157,7 +192,33 @@ export function parseUrl(search: string): ParsedUrl {
     else fields[key] = text.trim();
   }
   const embed = params.get('embed') === '1' || params.get('embed') === 'true';
-  return { state: { unit, mode, pattern, target, fields }, notices, embed, view: params.get('view') };
+  const state: CalculatorState = { unit, mode, pattern, target, fields };
+  return {
+    state: size === 'D' ? diameterFromUrl(state, params, notices) : state,
+    notices,
+    embed,
+    view: params.get('view'),
+  };
+}
+
+/**
+ * The tool size the link gives: `D=` (the diameter, as catalogues give it) without `R=` switches
+ * the size field to D; with both, R wins and a notice says so (a link names one of them).
+ */
+function sizeFromUrl(params: URLSearchParams, notices: string[]): ToolSize {
+  if (!params.has('D')) return 'R';
+  if (!params.has('R')) return 'D';
+  notices.push(`both R and D are in the link; using R=${(params.get('R') ?? '').slice(0, 20)} (D ignored).`);
+  return 'R';
+}
+
+/** The state of a link that gives the diameter D: the size field holds D (its default 2R when D is not a number). */
+function diameterFromUrl(state: CalculatorState, params: URLSearchParams, notices: string[]): CalculatorState {
+  const given = withSize(state, 'D');
+  const text = params.get('D') ?? '';
+  if (parseField(text) !== null) return { ...given, fields: { ...given.fields, R: text.trim() } };
+  notices.push(`D="${text.slice(0, 20)}" in the link is not a number; using the default ${given.fields.R}.`);
+  return given;
 }
 
 /**
@@ -166,7 +227,7 @@ export function parseUrl(search: string): ParsedUrl {
  */
 export function toSearch(state: CalculatorState, extra: Readonly<Record<string, string>> = {}): string {
   const params = new URLSearchParams();
-  params.set('R', state.fields.R);
+  params.set(sizeIsDiameter(state) ? 'D' : 'R', state.fields.R);
   params.set('Rcr', state.fields.Rcr);
   params.set('rho', state.fields.rho);
   if (state.fields.tilt.trim() !== '0') params.set('tilt', state.fields.tilt);
@@ -184,12 +245,33 @@ export function toSearch(state: CalculatorState, extra: Readonly<Record<string, 
   return `?${params.toString()}`;
 }
 
-/** Presets: the paper's tools and a few common catalogue sizes (mm). */
-export const PRESETS: ReadonlyArray<{ readonly label: string; readonly R: number; readonly Rcr: number }> = [
-  { label: 'Paper Tool 1 (R 3, Rcr 1)', R: 3, Rcr: 1 },
-  { label: 'Paper Tool 2 (R 6, Rcr 2)', R: 6, Rcr: 2 },
-  { label: 'D6 R0.5 (R 3, Rcr 0.5)', R: 3, Rcr: 0.5 },
-  { label: 'D10 R1 (R 5, Rcr 1)', R: 5, Rcr: 1 },
-  { label: 'D16 R3 (R 8, Rcr 3)', R: 8, Rcr: 3 },
-  { label: '1/2 in, 0.060 in corner', R: 6.35, Rcr: 1.524 },
+/** A tool preset: its name as a catalogue gives it (diameter D, corner radius), R and Rcr in mm. */
+export interface Preset {
+  readonly label: string;
+  readonly R: number;
+  readonly Rcr: number;
+}
+
+/** Presets: the paper's tools and a few common catalogue sizes, named by diameter and corner radius (mm). */
+export const PRESETS: readonly Preset[] = [
+  { label: 'D6, corner R1 (paper Tool 1)', R: 3, Rcr: 1 },
+  { label: 'D12, corner R2 (paper Tool 2)', R: 6, Rcr: 2 },
+  { label: 'D6, corner R0.5', R: 3, Rcr: 0.5 },
+  { label: 'D10, corner R1', R: 5, Rcr: 1 },
+  { label: 'D16, corner R3', R: 8, Rcr: 3 },
+  { label: 'D1/2 in, corner R0.060 in', R: 6.35, Rcr: 1.524 },
 ];
+
+/**
+ * The preset the tool fields hold, or null ("custom") once a value was edited away from every
+ * preset. Compared as the fields show them (6 significant digits in the user's unit), so a preset
+ * converted to inches still matches.
+ */
+export function presetOf(state: CalculatorState): Preset | null {
+  const same = (key: 'R' | 'Rcr', mm: number) => {
+    const v = parseField(state.fields[key]);
+    return v !== null && formatField(v) === fieldText(key, mm, state.unit);
+  };
+  const size = sizeIsDiameter(state) ? 2 : 1;
+  return PRESETS.find((p) => same('R', size * p.R) && same('Rcr', p.Rcr)) ?? null;
+}

@@ -44,6 +44,8 @@ export class TeachingLoader {
   private timer: ReturnType<typeof setTimeout> | null = null;
   private drawTimer: ReturnType<typeof setTimeout> | null = null;
   private unit: Unit = 'mm';
+  /** The inputs are being typed (held back, typing.ts): said instead of "invalid". */
+  private typing = false;
   private highlighted: ProcedureKey | null = null;
   /** The reply and unit the views show now. */
   private drawn: { reply: TeachReply; unit: Unit } | null = null;
@@ -51,9 +53,10 @@ export class TeachingLoader {
   constructor(private readonly options: TeachingOptions) {}
 
   /** The inputs changed: the request they ask (null when invalid), and the unit to show. */
-  want(request: SolveRequest | null, unit: Unit): void {
+  want(request: SolveRequest | null, unit: Unit, typing = false): void {
     const before = this.fresh.request;
     this.unit = unit;
+    this.typing = typing;
     this.fresh.want(request);
     if (!sameRequest(request, before)) {
       if (this.timer !== null) clearTimeout(this.timer);
@@ -96,11 +99,13 @@ export class TeachingLoader {
     const text =
       shown.kind === 'current'
         ? null
-        : shown.kind === 'invalid'
-          ? 'Out of date: the inputs are invalid, so these views still show the last valid inputs.'
-          : shown.kind === 'failed'
-            ? "Out of date: the teaching views' solver gave up; change any input to try again."
-            : 'Updating: these views still show the previous inputs.';
+        : shown.kind === 'invalid' && this.typing
+          ? 'Typing: these views follow when you pause or press Enter.'
+          : shown.kind === 'invalid'
+            ? 'Out of date: the inputs are invalid, so these views still show the last valid inputs.'
+            : shown.kind === 'failed'
+              ? "Out of date: the teaching views' solver gave up; change any input to try again."
+              : 'Updating: these views still show the previous inputs.';
     this.panel?.setStale(text);
   }
 

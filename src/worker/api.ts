@@ -59,6 +59,7 @@ import {
   TOOL_RADIAL_SEGMENTS,
   type TraceFrame,
 } from './protocol';
+import { table } from './table';
 
 /** The request's input validated again (the worker trusts no caller), or its errors. */
 export function revalidate(request: SolveRequest): readonly InputError[] | null {
@@ -511,6 +512,6 @@ export function transferables(reply: SolveReply | TeachReply): ArrayBuffer[] {
 }
 
 /** The worker's API object; its type is what the page sees through Comlink. */
-export const solverApi = { solve, teach };
+export const solverApi = { solve, teach, table };
 
 export type SolverApi = typeof solverApi;

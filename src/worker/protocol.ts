@@ -7,6 +7,7 @@
  */
 
 import type { Surface } from '../core/cylinder';
+import type { LookupGrid, LookupTable, LookupTool } from '../core/lookupTable';
 import type { ApproximationKey, ProcedureKey } from '../core/procedures';
 import type { RaTargetInput, RoughnessSummary } from '../core/raTarget';
 import type { PaperTableRow } from '../core/teaching';
@@ -268,3 +269,32 @@ export type TeachReply =
     };
 
 export type { ApproximationKey, InputError, ProcedureKey, RaTargetInput, RoughnessSummary };
+
+/**
+ * The `table` job: the lookup table of one validated tool, pattern and surface (mm) over a grid
+ * of scallop heights, lead angles and tilts (core/lookupTable.ts).
+ */
+export interface TableRequest {
+  readonly tool: LookupTool;
+  readonly grid: LookupGrid;
+}
+
+/** The answer to `table`, echoing its request: the CSV and its counts, or why there is none. */
+export type TableReply =
+  | ({ readonly ok: true; readonly request: TableRequest } & LookupTable)
+  | { readonly ok: false; readonly request: TableRequest; readonly reason: string };
+
+/** True when both ask the same table (the same tool, pattern, surface and grid). */
+export function sameTableRequest(a: TableRequest | null, b: TableRequest | null): boolean {
+  if (a === null || b === null) return false;
+  const same = (x: readonly number[], y: readonly number[]) => x.length === y.length && x.every((v, i) => v === y[i]);
+  return (
+    a.tool.toolRadiusMm === b.tool.toolRadiusMm &&
+    a.tool.cornerRadiusMm === b.tool.cornerRadiusMm &&
+    a.tool.pattern === b.tool.pattern &&
+    sameSurface(a.tool.surface, b.tool.surface) &&
+    same(a.grid.scallopHeightsMm, b.grid.scallopHeightsMm) &&
+    same(a.grid.leadAnglesDeg, b.grid.leadAnglesDeg) &&
+    same(a.grid.tiltAnglesDeg, b.grid.tiltAnglesDeg)
+  );
+}

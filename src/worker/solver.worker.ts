@@ -1,8 +1,9 @@
 /** Module Web Worker entry: exposes the solver API through Comlink, transferring large arrays. */
 import * as Comlink from 'comlink';
 import { solve, teach, transferables } from './api';
-import type { SolveReply, SolveRequest, TeachReply } from './protocol';
+import type { SolveReply, SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
 import { type SimulateReply, SimulationRunner, simulationTransferables } from './simulate';
+import { table } from './table';
 
 /** A newer `simulate` or `cancelSimulation` stops the running simulation between steps. */
 const simulations = new SimulationRunner();
@@ -15,6 +16,10 @@ const workerApi = {
   teach(request: SolveRequest): TeachReply {
     const reply = teach(request);
     return Comlink.transfer(reply, transferables(reply));
+  },
+  /** The lookup table for the page's download (a string: nothing to transfer). */
+  table(request: TableRequest): TableReply {
+    return table(request);
   },
   async simulate(request: SolveRequest, onProgress?: (fraction: number) => void): Promise<SimulateReply> {
     const reply = await simulations.run(request, onProgress);

@@ -4,7 +4,7 @@
  * apart in the browser's tools (and to tests, through WorkerGlobalScope.name).
  */
 import { JobClient, type RestartInfo } from './client';
-import type { SolveReply, SolveRequest, TeachReply } from './protocol';
+import type { SolveReply, SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
 
 /** The worker for `solve`: results and the 3D scene. */
 export function createSolverWorker(): Worker {
@@ -29,4 +29,14 @@ export function solveClient(events: JobEvents<SolveReply>): JobClient<SolveReque
 /** The `teach` job on its own worker. */
 export function teachClient(events: JobEvents<TeachReply>): JobClient<SolveRequest, TeachReply> {
   return new JobClient({ createWorker: createViewsWorker, call: (api, r) => api.teach(r), ...events });
+}
+
+/** The worker for `table`, started on the first download: the lookup table never delays the results. */
+export function createTableWorker(): Worker {
+  return new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module', name: 'path-interval-table' });
+}
+
+/** The `table` job on its own worker. */
+export function tableClient(events: JobEvents<TableReply>): JobClient<TableRequest, TableReply> {
+  return new JobClient({ createWorker: createTableWorker, call: (api, r) => api.table(r), ...events });
 }

@@ -81,8 +81,11 @@ describe('tool posture on the page', () => {
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(mm(e.intervalMm));
     expect(e.intervalMm).toBeCloseTo(2 * Math.min(e.halfWidthRightMm, e.halfWidthLeftMm), 12);
     expect(await page.getByTestId('result-cusp-height').isVisible()).toBe(true);
-    expect(await text(page, 'result-cusp-height')).toBe('0.05000 mm');
-    expect(await text(page, 'result-other-cusp-height')).toBe(`${(e.otherCuspHeightMm ?? 0).toFixed(5)} mm`);
+    // Heights below 0.1 mm read in um (format.ts), at the same 0.01 um resolution.
+    expect(await text(page, 'result-cusp-height')).toBe('50.00 \u00b5m');
+    expect(await text(page, 'result-other-cusp-height')).toBe(
+      `${(1000 * (e.otherCuspHeightMm ?? 0)).toFixed(2)} \u00b5m`,
+    );
     await expect.poll(() => new URL(page.url()).searchParams.get('pattern')).toBe('zigzag');
     // The URL opens the same state.
     const again = await site.browser().newPage();

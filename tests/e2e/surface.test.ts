@@ -36,11 +36,11 @@ describe('target Ra and roughness in headless Chromium', () => {
   it('switching the target to Ra and typing one: result-ra reads the typed Ra, L is the core answer', async () => {
     const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     // The target h: Rz, Ra, Rq of the surface at the exact step-over, and the rule of thumb.
-    await expect.poll(() => text(page, 'result-ra')).toBe('0.012417 mm');
-    expect(await text(page, 'result-rz')).toBe('0.050000 mm');
+    await expect.poll(() => text(page, 'result-ra')).toBe('12.417 \u00b5m');
+    expect(await text(page, 'result-rz')).toBe('50.000 \u00b5m');
     const ra = exactRoughness(forwardInput(TOOL, 'one-way', 0.05)).raMm;
     expect(await text(page, 'result-ra-rule')).toBe(
-      `Rule of thumb Ra ~ h/4 = 0.012500 mm: +${((100 * (0.0125 - ra)) / ra).toFixed(2)} % against the exact Ra.`,
+      `Rule of thumb Ra ~ h/4 = 12.500 \u00b5m: +${((100 * (0.0125 - ra)) / ra).toFixed(2)} % against the exact Ra.`,
     );
     expect(await page.getByTestId('input-ra').isVisible()).toBe(false);
     await page.locator('input[name="target"][value="ra"]').check();
@@ -51,13 +51,13 @@ describe('target Ra and roughness in headless Chromium', () => {
     const f = forwardOfRaTarget(v.value);
     const L = exactForward(f).intervalMm;
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(`${L.toFixed(4)} mm`);
-    expect(await text(page, 'result-ra')).toBe('0.010000 mm');
-    expect(await text(page, 'result-ra-height')).toBe(`${f.scallopHeightMm.toFixed(6)} mm`);
+    expect(await text(page, 'result-ra')).toBe('10.000 \u00b5m');
+    expect(await text(page, 'result-ra-height')).toBe(`${(1000 * f.scallopHeightMm).toFixed(3)} \u00b5m`);
     expect(page.url()).toMatch(/target=ra&ra=0\.01&/);
     // The slider moves the Ra by one step and the result follows.
     await page.getByTestId('slider-ra').focus();
     await page.keyboard.press('ArrowRight');
-    await expect.poll(() => text(page, 'result-ra')).toBe('0.010100 mm');
+    await expect.poll(() => text(page, 'result-ra')).toBe('10.100 \u00b5m');
     expect(errors).toEqual([]);
     await page.screenshot({ path: `${SHOTS}/target-ra.png` });
     await page.close();
@@ -65,7 +65,7 @@ describe('target Ra and roughness in headless Chromium', () => {
 
   it('an Ra above the maximum shows the message naming the limit (in the unit on screen) and dashes', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&target=ra&ra=0.01&unit=mm');
-    await expect.poll(() => text(page, 'result-ra')).toBe('0.010000 mm');
+    await expect.poll(() => text(page, 'result-ra')).toBe('10.000 \u00b5m');
     await page.getByTestId('input-ra').fill('0.5');
     const max = maxRaMm(TOOL, 'one-way');
     await expect
@@ -163,7 +163,7 @@ describe('Machined surface view in headless Chromium', () => {
     await page.screenshot({ path: `${SHOTS}/view-surface-zigzag.png`, fullPage: true });
     await page.locator('input[name="target"][value="ra"]').check();
     await page.getByTestId('input-ra').fill('0.008');
-    await expect.poll(() => text(page, 'result-ra')).toBe('0.008000 mm');
+    await expect.poll(() => text(page, 'result-ra')).toBe('8.000 \u00b5m');
     await expect
       .poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 })
       .toMatch(/Simulated cusp .* 4 passes/);

@@ -85,6 +85,8 @@ describe('numbers answer the inputs on screen', () => {
     await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
     await expect.poll(() => page.getByTestId('teaching').getAttribute('class')).not.toMatch(/stale/);
     await page.getByTestId('input-Rcr').fill('4');
+    // Committed with Enter (a typed error is otherwise held back for a pause, typing.ts).
+    await page.getByTestId('input-Rcr').press('Enter');
     await expect.poll(() => resultNumbers(page)).toEqual([]);
     expect(await page.locator('.procedures tbody tr').count()).toBe(6);
     expect(await page.getByTestId('scene').getAttribute('class')).toMatch(/stale/);
@@ -251,7 +253,8 @@ describe('units and digits in every view', () => {
     const { page } = await open('?R=0.001&Rcr=0.001&rho=0&h=0.000001&unit=mm&view=profile');
     // L/2 = sqrt(2 Rcr h - h^2) = 4.4710e-5 mm.
     expect(await text(page, 'result-exact-half')).toBe('0.00004471');
-    expect(await text(page, 'result-exact-interval')).toBe('0.00008942 mm');
+    // With its unit, a length below 0.1 mm reads in um (format.ts): 0.00008942 mm.
+    expect(await text(page, 'result-exact-interval')).toBe('0.08942 \u00b5m');
     expect(await text(page, 'table-exact-half')).toBe('0.00004471');
     expect(await text(page, 'table-exact-real-h')).toBe('0.000001000');
     await expect

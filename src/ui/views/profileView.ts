@@ -285,5 +285,9 @@ export class ProfileView implements TeachingView {
     this.plot.addEventListener('pointerup', () => {
       drag = null;
     });
+    // A vertical swipe became a page scroll (touch-action: pan-y): the drag ends.
+    this.plot.addEventListener('pointercancel', () => {
+      drag = null;
+    });
   }
 }

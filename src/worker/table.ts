@@ -1,0 +1,49 @@
+/**
+ * The worker's `table` job: the lookup table for the page's download (core/lookupTable.ts). The
+ * worker trusts no caller: the tool is validated again and the grid must be finite numbers in the
+ * domain's ranges, at most MAX_GRID_AXIS per axis; each cell is then validated and solved as the
+ * command line's batch does. The reply echoes the request it answers.
+ */
+import { lookupTable } from '../core/lookupTable';
+import { validateForward } from '../core/validate';
+import type { TableReply, TableRequest } from './protocol';
+
+/** Values per axis of the grid, at most (the page asks about 12 x 12 x 5). */
+export const MAX_GRID_AXIS = 64;
+
+/** Why a grid cannot be tabulated, or null. */
+function badGrid(request: TableRequest): string | null {
+  const g = request.grid;
+  const axes: ReadonlyArray<[string, readonly number[], (v: number) => boolean]> = [
+    ['scallop heights', g.scallopHeightsMm, (v) => v > 0],
+    ['lead angles', g.leadAnglesDeg, (v) => v >= 0 && v < 90],
+    ['tilts', g.tiltAnglesDeg, (v) => v > -90 && v < 90],
+  ];
+  for (const [name, values, inRange] of axes) {
+    if (values.length === 0 || values.length > MAX_GRID_AXIS)
+      return `the grid needs 1 to ${MAX_GRID_AXIS} ${name} (got ${values.length}).`;
+    if (!values.every((v) => Number.isFinite(v) && inRange(v))) return `the grid's ${name} are out of range.`;
+  }
+  return null;
+}
+
+/** The lookup table of a request, or why there is none. */
+export function table(request: TableRequest): TableReply {
+  const t = request.tool;
+  const tool = validateForward({
+    R: t.toolRadiusMm,
+    Rcr: t.cornerRadiusMm,
+    rho: 0,
+    tilt: 0,
+    // Any h the flat-lying tool accepts: only the tool is checked here.
+    h: 1e-6 * t.toolRadiusMm,
+    pattern: t.pattern,
+    surfaceRadius: t.surface.kind === 'cylinder' ? t.surface.radiusMm : undefined,
+    surfaceAxis: t.surface.kind === 'cylinder' ? t.surface.axis : undefined,
+  });
+  const toolErrors = tool.ok ? [] : tool.errors.filter((e) => e.field !== 'h');
+  if (toolErrors.length > 0) return { ok: false, request, reason: toolErrors.map((e) => e.message).join(' ') };
+  const grid = badGrid(request);
+  if (grid !== null) return { ok: false, request, reason: grid };
+  return { ok: true, request, ...lookupTable(t, request.grid) };
+}

@@ -1,0 +1,282 @@
+/**
+ * The CAM programmer's quick lookup (issue 10), driven as a user would at 390 x 844 (a phone:
+ * touch, taps) and 1440 x 900 (a desktop: clicks): tool size as a diameter, typing with the
+ * keyboard (decimal comma, half-typed values held back), the flat end without lead, Copy, the
+ * lookup table download, touch targets and vertical swipes over the scene and the profile.
+ */
+import { spawnSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import type { BrowserContext, Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { parseCsv } from '../../src/cli/csv';
+import { exactForward } from '../../src/core/exact';
+import { LOOKUP_HEADER } from '../../src/core/lookupTable';
+import { forwardInput, scallopHeightLimits } from '../../src/core/validate';
+import { ROOT, SHOTS, useSite } from './harness';
+
+const site = useSite('docs/quick-lookup');
+
+const VIEWPORTS = [
+  { name: 'phone', width: 390, height: 844, touch: true },
+  { name: 'desktop', width: 1440, height: 900, touch: false },
+] as const;
+type Viewport = (typeof VIEWPORTS)[number];
+
+/** Opens the page in its own context (touch on the phone; clipboard allowed) and waits for the first result. */
+async function open(vp: Viewport, query: string): Promise<{ page: Page; context: BrowserContext }> {
+  const context = await site.browser().newContext({
+    viewport: { width: vp.width, height: vp.height },
+    hasTouch: vp.touch,
+    isMobile: vp.touch,
+    acceptDownloads: true,
+  });
+  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
+  const page = await context.newPage();
+  await page.goto(`${site.url()}${query}`);
+  await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+  return { page, context };
+}
+
+/** Taps on the phone, clicks on the desktop. */
+async function press(vp: Viewport, target: ReturnType<Page['getByTestId']>): Promise<void> {
+  await target.scrollIntoViewIfNeeded();
+  if (vp.touch) await target.tap();
+  else await target.click();
+}
+
+/** Clears a field and types into it with the keyboard, key by key. */
+async function typeInto(page: Page, testId: string, text: string): Promise<void> {
+  const input = page.getByTestId(testId);
+  await input.scrollIntoViewIfNeeded();
+  await input.click();
+  await page.keyboard.press('ControlOrMeta+A');
+  await page.keyboard.press('Backspace');
+  await page.keyboard.type(text, { delay: 30 });
+}
+
+const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
+
+/** Every number in the results: headline, details and table cells. */
+const resultNumbers = (page: Page) =>
+  page.evaluate(() =>
+    [...document.querySelectorAll('.results output, .results .procedures td')]
+      .map((e) => e.textContent ?? '')
+      .filter((t) => /\d/.test(t)),
+  );
+
+function cli(args: readonly string[]): { exact: { interval: number; halfInterval: number } } {
+  const r = spawnSync(process.execPath, [`${ROOT}src/cli/bin.mjs`, ...args, '--json'], { encoding: 'utf8' });
+  return JSON.parse(r.stdout);
+}
+
+describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
+  it('a catalogue diameter: the switch makes the field D, D10 answers as R 5, errors name D, presets say custom', async () => {
+    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    expect(await page.getByTestId('preset').locator('option:checked').textContent()).toBe(
+      'D6, corner R1 (paper Tool 1)',
+    );
+    await press(vp, page.getByTestId('size-switch').getByText('diameter D'));
+    expect(await page.getByTestId('input-R').inputValue()).toBe('6');
+    expect(await page.locator('label[for="field-R"]').textContent()).toBe('Tool diameter D');
+    await expect.poll(() => new URL(page.url()).searchParams.get('D')).toBe('6');
+    expect(new URL(page.url()).searchParams.has('R')).toBe(false);
+    await typeInto(page, 'input-R', '10');
+    const want = cli(['--R', '5', '--Rcr', '1', '--rho', '5', '--h', '0.05']);
+    await expect.poll(() => text(page, 'result-exact-interval')).toBe(`${want.exact.interval.toFixed(4)} mm`);
+    expect(await page.getByTestId('preset').locator('option:checked').textContent()).toBe('D10, corner R1');
+    await typeInto(page, 'input-Rcr', '1.2');
+    await expect.poll(() => page.getByTestId('preset').locator('option:checked').textContent()).toBe('custom');
+    await typeInto(page, 'input-Rcr', '6');
+    await expect
+      .poll(() => text(page, 'error-Rcr'))
+      .toBe('Corner radius Rcr must be at most D/2 = 5 mm (got 6); Rcr = D/2 is a ball end mill.');
+    await page.screenshot({ path: `${SHOTS}/quick-lookup-diameter-${vp.name}.png`, fullPage: true });
+    // The link keeps the diameter: a reload opens the same state.
+    await page.reload();
+    await page
+      .getByTestId('error-Rcr')
+      .filter({ hasText: /D\/2 = 5 mm/ })
+      .waitFor();
+    expect(await page.getByTestId('input-R').inputValue()).toBe('10');
+    await context.close();
+  });
+
+  it('typing: a half-typed value shows no error and no old number, a decimal comma works, a pause or Enter commits', async () => {
+    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const before = await text(page, 'result-exact-interval');
+    await typeInto(page, 'input-h', '0');
+    // Held back: no message, every number a dash, the status says why.
+    expect(await text(page, 'error-h')).toBe('');
+    expect(await resultNumbers(page)).toEqual([]);
+    expect(await text(page, 'results-status')).toMatch(/^Typing/);
+    expect(await page.getByTestId('scene').getAttribute('class')).toMatch(/typing/);
+    expect(await page.locator('.typing-badge').isVisible()).toBe(true);
+    expect(await page.locator('.stale-badge:not(.typing-badge)').isVisible()).toBe(false);
+    expect(await page.locator('.scene-labels').isVisible()).toBe(false);
+    await page.keyboard.type(',', { delay: 30 });
+    expect(await text(page, 'error-h')).toBe('');
+    expect(await resultNumbers(page)).toEqual([]);
+    await page.keyboard.type('05', { delay: 30 });
+    // 0,05 is 0.05: the same answer as before, at once (a valid value commits while typing).
+    await expect.poll(() => text(page, 'result-exact-interval')).toBe(before);
+    expect(await page.getByTestId('scene').getAttribute('class')).not.toMatch(/typing/);
+    await expect.poll(() => new URL(page.url()).searchParams.get('h')).toBe('0,05');
+    // A pause on a wrong value: the message comes, still no number.
+    await typeInto(page, 'input-h', '-');
+    expect(await text(page, 'error-h')).toBe('');
+    await page.screenshot({ path: `${SHOTS}/quick-lookup-typing-${vp.name}.png` });
+    await expect.poll(() => text(page, 'error-h')).toMatch(/Scallop height h must be a number \(got "-"\)/);
+    expect(await resultNumbers(page)).toEqual([]);
+    expect(await text(page, 'results-status')).toBe('');
+    expect(await page.locator('.typing-badge').isVisible()).toBe(false);
+    expect(await page.locator('.stale-badge:not(.typing-badge)').isVisible()).toBe(true);
+    // Enter commits at once (well before the pause).
+    await typeInto(page, 'input-h', '0');
+    await page.keyboard.press('Enter');
+    expect(await text(page, 'error-h')).toMatch(/must be greater than 0 mm \(got 0\)/);
+    await context.close();
+  });
+
+  it('a flat end without lead leaves no scallop: the page says so and gives L = 2R, as the command line', async () => {
+    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await typeInto(page, 'input-Rcr', '0');
+    await typeInto(page, 'input-rho', '0');
+    const want = cli(['--R', '3', '--Rcr', '0', '--rho', '0', '--h', '0.05']);
+    expect(want.exact.interval).toBe(6);
+    await expect.poll(() => text(page, 'result-exact-interval')).toBe('6.0000 mm');
+    expect(await text(page, 'error-h')).toBe('');
+    expect(await text(page, 'no-scallop')).toMatch(
+      /^No scallop: a flat end without lead or tilt .* leaves no scallop at any step-over up to its diameter, so L = 2R = 6\.0000 mm for any h\.$/,
+    );
+    await page.screenshot({ path: `${SHOTS}/quick-lookup-flat-end-${vp.name}.png` });
+    // With lead it leaves a scallop again and the statement goes.
+    await typeInto(page, 'input-rho', '5');
+    await expect.poll(() => page.getByTestId('no-scallop').isHidden()).toBe(true);
+    await context.close();
+  });
+
+  it('Copy gives the plain number in the unit on screen, confirms it, and is disabled without a value', async () => {
+    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const headlineCopy = page.locator('.big button.copy');
+    await expect.poll(() => headlineCopy.isEnabled()).toBe(true);
+    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
+    await expect.poll(() => headlineCopy.textContent()).toBe('Copied');
+    expect(await text(page, 'copy-status')).toBe('Copied 2.8872 (mm).');
+    expect(await page.evaluate(() => navigator.clipboard.readText())).toBe('2.8872');
+    await page.screenshot({ path: `${SHOTS}/quick-lookup-copied-${vp.name}.png` });
+    await expect.poll(() => headlineCopy.textContent(), { timeout: 3000 }).toBe('Copy');
+    await press(vp, page.getByRole('button', { name: 'Copy L/2' }));
+    await expect.poll(() => page.evaluate(() => navigator.clipboard.readText())).toBe('1.4436');
+    // Same format for a small value shown in um: copied in mm.
+    await typeInto(page, 'input-h', '0.000001');
+    await expect.poll(() => text(page, 'result-exact-interval')).toMatch(/ \u00b5m$/);
+    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
+    const shown = await text(page, 'result-exact-interval');
+    const copied = await page.evaluate(() => navigator.clipboard.readText());
+    expect(Number(copied) * 1000).toBeCloseTo(Number.parseFloat(shown), 3);
+    // No value (invalid input): every Copy is disabled.
+    await typeInto(page, 'input-h', 'x');
+    await page.keyboard.press('Enter');
+    for (const b of await page.locator('button.copy').all()) expect(await b.isDisabled()).toBe(true);
+    await context.close();
+  });
+
+  it('downloads the lookup table from the worker; its cells are the core exact step-over', async () => {
+    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&pattern=zigzag');
+    const button = page.getByTestId('download-table');
+    await expect.poll(() => button.isEnabled()).toBe(true);
+    const downloaded = page.waitForEvent('download');
+    await press(vp, button);
+    const download = await downloaded;
+    expect(download.suggestedFilename()).toBe('step-over-table_R3_Rcr1_zigzag.csv');
+    const csv = readFileSync(await download.path(), 'utf8');
+    const [head, ...rows] = parseCsv(csv).filter((r) => !r.blank);
+    expect(head?.fields.join(',')).toBe(LOOKUP_HEADER);
+    const col = (name: string) => LOOKUP_HEADER.split(',').indexOf(name);
+    let checked = 0;
+    for (const r of rows) {
+      const [R, Rcr, rho, h, tilt] = r.fields.slice(0, 5).map(Number) as [number, number, number, number, number];
+      const tool = { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, tiltAngleDeg: tilt };
+      if (h >= scallopHeightLimits(tool).limitMm) {
+        expect(r.fields[col('interval')]).toBe('');
+        expect(r.fields[col('error')]).not.toBe('');
+        continue;
+      }
+      // The browser's Math may differ from Node's in the last bit: compare to 1e-13 relative.
+      const e = exactForward(forwardInput(tool, 'zigzag', h));
+      const near = (got: string | undefined, want: number) =>
+        expect(Math.abs(Number(got) - want)).toBeLessThanOrEqual(1e-13 * want);
+      near(r.fields[col('interval')], e.intervalMm);
+      near(r.fields[col('exact')], e.halfIntervalMm);
+      checked++;
+    }
+    expect(checked).toBeGreaterThan(300);
+    await expect
+      .poll(() => text(page, 'download-table-status'))
+      .toMatch(/^Saved step-over-table_R3_Rcr1_zigzag\.csv: \d+ rows/);
+    // The table runs on its own worker.
+    expect(await Promise.all(page.workers().map((w) => w.evaluate(() => self.name)))).toContain('path-interval-table');
+    // Invalid input: nothing to tabulate.
+    await typeInto(page, 'input-Rcr', '9');
+    await page.keyboard.press('Enter');
+    expect(await button.isDisabled()).toBe(true);
+    await context.close();
+  });
+
+  it('touch targets are at least 24 px; a vertical swipe over the scene or the profile scrolls the page', async () => {
+    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
+    const small = await page.evaluate(() => {
+      const out: string[] = [];
+      const targets = document.querySelectorAll<HTMLElement>(
+        '.app button, .app select, .switch label, .field input[type="range"]',
+      );
+      for (const el of targets) {
+        const r = el.getBoundingClientRect();
+        if (r.width === 0 && r.height === 0) continue; // not shown
+        if (r.width < 24 || r.height < 24)
+          out.push(`${el.tagName} ${el.textContent?.trim() || el.getAttribute('aria-label')} ${r.width}x${r.height}`);
+      }
+      const thumb = getComputedStyle(
+        document.querySelector('[data-testid="slider-R"]') as Element,
+        '::-webkit-slider-thumb',
+      );
+      if (!(Number.parseFloat(thumb.width) >= 24 && Number.parseFloat(thumb.height) >= 24))
+        out.push(`slider thumb ${thumb.width}x${thumb.height}`);
+      return out;
+    });
+    expect(small).toEqual([]);
+    if (vp.touch) {
+      await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
+      const cdp = await context.newCDPSession(page);
+      for (const target of ['scene-canvas', 'profile-view'] as const) {
+        const box = page.getByTestId(target);
+        await box.scrollIntoViewIfNeeded();
+        const r = await box.boundingBox();
+        if (r === null) throw new Error(`${target} is not shown`);
+        const y0 = await page.evaluate(() => window.scrollY);
+        // Swipe up (the page scrolls down), or down when the page is already at its end.
+        const atEnd = await page.evaluate(
+          () => window.scrollY + window.innerHeight >= document.body.scrollHeight - 200,
+        );
+        // A finger swipe, as raw touch events: down, ten moves, up.
+        const x = Math.round(r.x + r.width / 2);
+        const y = Math.round(r.y + Math.min(r.height, 300) / 2);
+        const dy = atEnd ? 150 : -150;
+        await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x, y }] });
+        for (let i = 1; i <= 10; i++)
+          await cdp.send('Input.dispatchTouchEvent', {
+            type: 'touchMove',
+            touchPoints: [{ x, y: y + (dy * i) / 10 }],
+          });
+        await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+        const moved = () => page.evaluate((y) => Math.abs(window.scrollY - y), y0);
+        const touchAction = await box.evaluate((e) => getComputedStyle(e).touchAction);
+        await expect
+          .poll(moved, { timeout: 3000, message: `${target} (touch-action ${touchAction})` })
+          .toBeGreaterThan(50);
+      }
+      await page.screenshot({ path: `${SHOTS}/quick-lookup-touch-${vp.name}.png` });
+    }
+    await context.close();
+  });
+});
