@@ -14,6 +14,8 @@ import type { RestartInfo } from '../worker/client';
 import { type SolveMode, type SolveReply, type SolveRequest, sameRequest } from '../worker/protocol';
 import { solveClient } from '../worker/workers';
 import { applyProcedureColours } from './colours';
+import { embedCode, wireCopyEmbed } from './embedCode';
+import { postHeightToParent } from './embedResize';
 import { FieldsPanel } from './fields';
 import { formatLenUnit, formatSignedLen } from './format';
 import { Freshness } from './freshness';
@@ -30,11 +32,13 @@ import {
   parseField,
   parseUrl,
   type Target,
+  toSearch,
   type Unit,
   withField,
   withValues,
 } from './state';
 import { TeachingLoader } from './teaching';
+import { onThemeChange, parseTheme, startTheme } from './theme';
 import { UrlState } from './urlState';
 import type { ViewId } from './views/panel';
 
@@ -92,6 +96,9 @@ export class CalculatorApp {
     const extra: Record<string, string> = {};
     if (embed) extra.embed = '1';
     if (requested) extra.view = requested;
+    const theme = parseTheme(window.location.search);
+    startTheme(theme);
+    if (theme.override) extra.theme = theme.override;
     this.url = new UrlState(extra, root.querySelector<HTMLAnchorElement>('[data-testid="open-full"]'));
     this.notice = new Notice(must(root, '[data-testid="notice"]'));
     this.results = new ResultsPanel(root);
@@ -99,6 +106,15 @@ export class CalculatorApp {
     this.simulation = new SimulationLoader((info) => this.restarted('simulation', info));
     this.scene = new ToolScene(must(root, '.scene'));
     this.scene.onFrame = () => this.observer.frame?.(this.fresh.shown.kind === 'current');
+    this.scene.applyTheme();
+    onThemeChange(() => this.scene.applyTheme());
+    if (embed) postHeightToParent(root);
+    wireCopyEmbed(must(root, '[data-testid="copy-embed"]'), must(root, '[data-testid="copy-embed-status"]'), () =>
+      embedCode(
+        `${window.location.origin}${window.location.pathname}`,
+        toSearch(this.state, { ...extra, view: this.teaching?.activeView ?? requested ?? 'profile' }),
+      ),
+    );
     this.fields = new FieldsPanel(root, {
       onField: (key, text) => this.change(withField(this.state, key, text)),
       onMode: (mode: SolveMode) => this.change({ ...this.state, mode }),
@@ -133,6 +149,7 @@ export class CalculatorApp {
     const notices = [...parsed.notices];
     if (parsed.view !== null && requested === undefined)
       notices.push(`view="${parsed.view}" is not one of ${VIEW_IDS.join(', ')}.`);
+    if (theme.notice !== null) notices.push(theme.notice);
     if (notices.length > 0) this.notice.show(linkNotice(notices), 0);
     this.change(this.state);
   }
