@@ -37,6 +37,9 @@ function pwa(mode: string) {
       // Every address of the page (its state is in the query) opens the cached page offline.
       navigateFallback: 'index.html',
       cleanupOutdatedCaches: true,
+      // A new version takes over at once, and the first visit's page is controlled (offline at once).
+      skipWaiting: true,
+      clientsClaim: true,
       maximumFileSizeToCacheInBytes: 4 * 1024 * 1024,
     },
   });
