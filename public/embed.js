@@ -46,7 +46,7 @@
         const frame = this.frame;
         if (!frame || event.source !== frame.contentWindow || event.origin !== this.origin) return;
         const data = event.data;
-        if (!data || data.type !== 'path-interval:resize') return;
+        if (data?.type !== 'path-interval:resize') return;
         const height = Number(data.height);
         if (!Number.isFinite(height)) return;
         frame.style.height = `${Math.round(Math.min(MAX_HEIGHT, Math.max(MIN_HEIGHT, height)))}px`;

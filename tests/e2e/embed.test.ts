@@ -25,7 +25,9 @@ describe('dark mode', () => {
     await page.goto(`${site.url()}?${STATE}&view=chart`);
     await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
     expect(await page.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
-    expect(await page.evaluate(() => getComputedStyle(document.documentElement).backgroundColor)).toBe('rgb(18, 22, 31)');
+    expect(await page.evaluate(() => getComputedStyle(document.documentElement).backgroundColor)).toBe(
+      'rgb(18, 22, 31)',
+    );
     await expect.poll(() => sceneShows(page, SCENE_BG.dark)).toBeGreaterThan(0.3);
     // The chart's curves take the dark palette: Sekine's amber #fbbf24, not the light #b45309.
     const lead = page.getByTestId('chart-lead');
@@ -46,7 +48,10 @@ describe('dark mode', () => {
     await dark.getByTestId('profile-view').locator('polygon.scallop').waitFor();
     expect(await dark.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
     // The profile's exact curve is drawn in the dark palette's exact colour.
-    const stroke = await dark.locator('.profile-svg .curve-exact').first().evaluate((e) => getComputedStyle(e).stroke);
+    const stroke = await dark
+      .locator('.profile-svg .curve-exact')
+      .first()
+      .evaluate((e) => getComputedStyle(e).stroke);
     expect(stroke).toBe('rgb(243, 244, 246)');
     expect(new URL(dark.url()).searchParams.get('theme')).toBe('dark'); // kept while the state changes
     await dark.screenshot({ path: `${SHOTS}/theme-dark-embed-profile-480.png` });
@@ -90,9 +95,7 @@ describe('auto-height', () => {
     await expect.poll(async () => (await heights()).at(-1) ?? 0, { timeout: 15_000 }).toBeGreaterThan(400);
     const frame = host.frameLocator('#f');
     await frame.getByTestId('teaching').locator('.formula').first().waitFor();
-    const content = await frame
-      .locator('#app')
-      .evaluate((e) => Math.ceil(e.getBoundingClientRect().height));
+    const content = await frame.locator('#app').evaluate((e) => Math.ceil(e.getBoundingClientRect().height));
     await expect.poll(async () => (await heights()).at(-1)).toBe(content);
     // Content that grows (a longer state message) is posted again.
     const before = (await heights()).length;

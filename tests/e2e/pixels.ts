@@ -46,7 +46,9 @@ export function clippedElements(page: Page): Promise<string[]> {
       if (b.width === 0 || b.height === 0 || (b.right <= width + 0.5 && b.left >= -0.5)) continue;
       if (e instanceof SVGElement && e.ownerSVGElement) continue; // drawn inside an SVG's own viewport
       if (inScrollBox(e) || e.closest('.sr-only') || getComputedStyle(e).visibility === 'hidden') continue;
-      out.push(`${e.tagName.toLowerCase()}.${e.getAttribute('class') ?? ''} [${Math.round(b.left)}, ${Math.round(b.right)}]`);
+      out.push(
+        `${e.tagName.toLowerCase()}.${e.getAttribute('class') ?? ''} [${Math.round(b.left)}, ${Math.round(b.right)}]`,
+      );
     }
     return out.slice(0, 8);
   });

@@ -2,7 +2,10 @@
 // Part of `npm test`: makes sure MkDocs (pinned) is available for the example documentation site
 // (tests/docs-site/). Installs it with pip into a local virtual environment under
 // node_modules/.cache/mkdocs-venv when missing (falls back to `pip install --target` when
-// `python3 -m venv` is unavailable). Prints nothing when it is already there.
+// `python3 -m venv` is unavailable; installs Debian's python3 and python3-venv with apt-get when
+// Python itself is missing and we run as root, as on CI). Prints nothing when it is already there.
+//   node tests/support/ensure-mkdocs.mjs                          install if missing
+//   node tests/support/ensure-mkdocs.mjs build <mkdocs.yml> <dir> also build a site into <dir>
 import { execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { dirname, join } from 'node:path';
@@ -33,10 +36,33 @@ function installedVersion(cmd) {
   }
 }
 
+function hasPython() {
+  try {
+    execFileSync('python3', ['--version'], { stdio: 'ignore' });
+    execFileSync('python3', ['-c', 'import venv, ensurepip'], { stdio: 'ignore' });
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+function aptInstallPython() {
+  const isRoot = typeof process.getuid === 'function' && process.getuid() === 0;
+  if (!isRoot) return;
+  const env = { ...process.env, DEBIAN_FRONTEND: 'noninteractive' };
+  console.log("Python 3 with venv not found: installing Debian's python3 and python3-venv for MkDocs...");
+  execFileSync('apt-get', ['update'], { stdio: 'inherit', env });
+  execFileSync('apt-get', ['install', '-y', '--no-install-recommends', 'python3', 'python3-venv', 'python3-pip'], {
+    stdio: 'inherit',
+    env,
+  });
+}
+
 export function ensureMkdocs() {
   const existing = mkdocsCommand();
   if (existing && installedVersion(existing) === MKDOCS_VERSION) return existing;
   const run = (cmd, args) => execFileSync(cmd, args, { stdio: 'inherit' });
+  if (!hasPython()) aptInstallPython();
   console.log(`MkDocs ${MKDOCS_VERSION} not found: installing it with pip for the example documentation site...`);
   let venvOk = true;
   try {
@@ -66,7 +92,14 @@ export function ensureMkdocs() {
 
 if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
   try {
-    ensureMkdocs();
+    const mkdocs = ensureMkdocs();
+    if (process.argv[2] === 'build') {
+      const [config, out] = process.argv.slice(3);
+      execFileSync(mkdocs.python, ['-m', 'mkdocs', 'build', '--quiet', '--strict', '-f', config, '-d', out], {
+        stdio: 'inherit',
+        env: { ...process.env, ...mkdocs.env },
+      });
+    }
   } catch (error) {
     console.error(
       `Could not install MkDocs (${error.message}). Install Python 3 with pip and venv (apt-get install -y python3-venv).`,
