@@ -1,11 +1,55 @@
+import { VitePWA } from 'vite-plugin-pwa';
 import { defineConfig } from 'vitest/config';
 import { formulaMathmlPlugin } from './src/build/formulaMathml.ts';
 
-export default defineConfig({
+/**
+ * The installable web app: a Workbox service worker (vite-plugin-pwa, generateSW) precaches the
+ * whole site, so after the first visit the calculator works offline. `autoUpdate`: a deployed new
+ * version is fetched in the background and takes over on the next load (nothing to click).
+ * Registered by a separate file (registerSW.js), not an inline script, so the strict CSP holds.
+ * The instrumented e2e build leaves it out (tests there intercept worker scripts, which a service
+ * worker would answer first); the offline test runs against the production build.
+ */
+function pwa(mode: string) {
+  return VitePWA({
+    disable: mode === 'e2e',
+    registerType: 'autoUpdate',
+    injectRegister: 'script',
+    includeAssets: ['embed.js', 'icon-192.png', 'icon-512.png', 'icon-maskable-512.png'],
+    manifest: {
+      name: 'Step-over of a filleted end mill',
+      short_name: 'Step-over',
+      description:
+        'Exact path interval (step-over) of an inclined filleted (bull-nose) end mill for a chosen scallop height, beside the published approximations.',
+      start_url: './',
+      scope: './',
+      display: 'standalone',
+      theme_color: '#1d4ed8',
+      background_color: '#ffffff',
+      icons: [
+        { src: 'icon-192.png', sizes: '192x192', type: 'image/png' },
+        { src: 'icon-512.png', sizes: '512x512', type: 'image/png' },
+        { src: 'icon-maskable-512.png', sizes: '512x512', type: 'image/png', purpose: 'maskable' },
+      ],
+    },
+    workbox: {
+      globPatterns: ['**/*.{js,css,html,png,svg,webmanifest}'],
+      // Every address of the page (its state is in the query) opens the cached page offline.
+      navigateFallback: 'index.html',
+      cleanupOutdatedCaches: true,
+      // A new version takes over at once, and the first visit's page is controlled (offline at once).
+      skipWaiting: true,
+      clientsClaim: true,
+      maximumFileSizeToCacheInBytes: 4 * 1024 * 1024,
+    },
+  });
+}
+
+export default defineConfig(({ mode }) => ({
   // Relative base: the built site works from any host and any sub-path.
   base: './',
   // The formulas view's MathML is typeset here, at build time, so no TeX engine is shipped.
-  plugins: [formulaMathmlPlugin()],
+  plugins: [formulaMathmlPlugin(), pwa(mode)],
   // three.js alone is about 600 kB raw (150 kB gzip) in the entry chunk; the benchmark tracks
   // the gzip size against its 200 kB budget, so Rollup's generic 500 kB warning is raised.
   build: { chunkSizeWarningLimit: 700 },
@@ -18,4 +62,4 @@ export default defineConfig({
     // Browser tests and benchmarks share one machine of 2 cores: run files one at a time.
     fileParallelism: false,
   },
-});
+}));

@@ -13,6 +13,7 @@ const TYPES: Record<string, string> = {
   '.svg': 'image/svg+xml',
   '.png': 'image/png',
   '.json': 'application/json',
+  '.webmanifest': 'application/manifest+json',
 };
 
 export interface StaticSite {
@@ -29,15 +30,36 @@ export function serveStatic(
   subPath: string,
   headers: Readonly<Record<string, string>> = {},
 ): Promise<StaticSite> {
-  const prefix = `/${subPath.replace(/^\/|\/$/g, '')}/`;
+  return serveStaticMounts([{ root, subPath }], headers).then((site) => ({
+    url: site.urls[0] as string,
+    close: site.close,
+  }));
+}
+
+export interface StaticMounts {
+  /** The URL of each mount, in the order given. */
+  readonly urls: readonly string[];
+  close(): Promise<void>;
+}
+
+/**
+ * Serves several directories, each under its own sub-path, on one loopback origin (a
+ * documentation site and the calculator it embeds, as one host would serve them).
+ */
+export function serveStaticMounts(
+  mounts: ReadonlyArray<{ readonly root: string; readonly subPath: string }>,
+  headers: Readonly<Record<string, string>> = {},
+): Promise<StaticMounts> {
+  const prefixes = mounts.map((m) => ({ root: m.root, prefix: `/${m.subPath.replace(/^\/|\/$/g, '')}/` }));
   const server: Server = createServer((req, res) => {
     const path = decodeURIComponent((req.url ?? '/').split('?')[0] ?? '/');
-    if (!path.startsWith(prefix)) {
+    const mount = prefixes.find((m) => path.startsWith(m.prefix));
+    if (!mount) {
       res.writeHead(404).end('not found');
       return;
     }
-    const rel = normalize(path.slice(prefix.length) || 'index.html').replace(/^(\.\.[/\\])+/, '');
-    let file = join(root, rel);
+    const rel = normalize(path.slice(mount.prefix.length) || 'index.html').replace(/^(\.\.[/\\])+/, '');
+    let file = join(mount.root, rel);
     if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
     if (!existsSync(file)) {
       res.writeHead(404).end('not found');
@@ -51,7 +73,7 @@ export function serveStatic(
       const address = server.address();
       const port = typeof address === 'object' && address ? address.port : 0;
       resolve({
-        url: `http://127.0.0.1:${port}${prefix}`,
+        urls: prefixes.map((m) => `http://127.0.0.1:${port}${m.prefix}`),
         close: () => new Promise<void>((done) => server.close(() => done())),
       });
     });

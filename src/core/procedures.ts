@@ -30,8 +30,10 @@ export interface ProcedureInfo {
   readonly forwardEquations: string;
   /** Equations of the inverse problem (path interval to scallop height). */
   readonly inverseEquations: string;
-  /** Colour in every view (hex), chosen for contrast on light and dark backgrounds. */
+  /** Colour in every view on the light theme (hex), at least 4.5:1 against white. */
   readonly colour: string;
+  /** Colour on the dark theme (hex), at least 4.5:1 against the dark background #12161f. */
+  readonly colourDark: string;
   /** One sentence: the model and where it holds. */
   readonly assumes: string;
   /** True for a model built on the lead angle alone (tilt ignored). */
@@ -46,6 +48,7 @@ export const PROCEDURES: Readonly<Record<ProcedureKey, ProcedureInfo>> = {
     forwardEquations: 'projection of the tool along the feed',
     inverseEquations: 'projection of the tool along the feed',
     colour: '#111827',
+    colourDark: '#f3f4f6',
     assumes:
       'True 3D: the tool moves along X, so the surface it leaves is its projection along X, the ring ellipse offset by Rcr (rotated by the tilt). Valid for every posture, ball and flat ends included.',
     leadOnly: false,
@@ -57,6 +60,7 @@ export const PROCEDURES: Readonly<Record<ProcedureKey, ProcedureInfo>> = {
     forwardEquations: 'Eqs. 4-8',
     inverseEquations: 'Eq. 12',
     colour: '#b45309',
+    colourDark: '#fbbf24',
     assumes:
       "True-circular approximation: an ellipse from the tool centre height replaced by one circle of radius Reff. It ignores where the real profile's curvature changes, so it is far off at small lead.",
     leadOnly: true,
@@ -68,6 +72,7 @@ export const PROCEDURES: Readonly<Record<ProcedureKey, ProcedureInfo>> = {
     forwardEquations: 'Eqs. 9, 8',
     inverseEquations: 'Eq. 12',
     colour: '#7c3aed',
+    colourDark: '#c4b5fd',
     assumes:
       'Osculating circle at the lowest point without tilt: exact as h tends to 0, then it overestimates L because the real profile curves up faster.',
     leadOnly: true,
@@ -79,6 +84,7 @@ export const PROCEDURES: Readonly<Record<ProcedureKey, ProcedureInfo>> = {
     forwardEquations: 'Eqs. 10-11',
     inverseEquations: 'Eq. 13',
     colour: '#0e7490',
+    colourDark: '#22d3ee',
     assumes:
       'Elliptic projection: one ellipse with semi-axes Rlong and Rlong sin(rho) stands for the offset ellipse. Close without tilt, but an offset ellipse is not an ellipse; it breaks down at rho = 0.',
     leadOnly: true,
@@ -90,6 +96,7 @@ export const PROCEDURES: Readonly<Record<ProcedureKey, ProcedureInfo>> = {
     forwardEquations: 'Reff = Rcr + a^2 b^2 / D0^3',
     inverseEquations: 'h = Reff - sqrt(Reff^2 - (L/2)^2)',
     colour: '#15803d',
+    colourDark: '#4ade80',
     assumes:
       "Redonnet's idea for any posture: the circle that osculates the exact profile at the contact point. Exact as h tends to 0; symmetric, so it misses the asymmetry that tilt brings.",
     leadOnly: false,
@@ -101,6 +108,7 @@ export const PROCEDURES: Readonly<Record<ProcedureKey, ProcedureInfo>> = {
     forwardEquations: 'L/2 = sqrt(2 Rcr h - h^2)',
     inverseEquations: 'h = Rcr - sqrt(Rcr^2 - (L/2)^2)',
     colour: '#be185d',
+    colourDark: '#f9a8d4',
     assumes:
       'Treats the bull-nose tool as a ball end of radius Rcr, as some online calculators do: exact only for a ball end, and far too small a step-over when the lead or tilt brings the flat bottom into play.',
     leadOnly: false,

@@ -81,6 +81,58 @@ const COLOURS = {
   hPlane: 0x2f80ed,
 } as const;
 
+/**
+ * The stylesheet's custom property for each colour of the scene (theme.ts switches them with the
+ * page's light or dark theme); the constants above are the light values and the fallback.
+ */
+const THEMED_COLOURS: ReadonlyMap<number, string> = new Map([
+  [COLOURS.section, '--scene-section'],
+  [COLOURS.loop, '--scene-loop'],
+  [COLOURS.axis, '--scene-axis'],
+  [COLOURS.dimension, '--scene-dimension'],
+  [COLOURS.contact, '--scene-contact'],
+  [COLOURS.centre, '--scene-centre'],
+  [COLOURS.trace, '--scene-trace'],
+  [COLOURS.tool, '--scene-tool'],
+  [COLOURS.ghost, '--scene-ghost'],
+  [COLOURS.plane, '--scene-plane'],
+  [COLOURS.hPlane, '--scene-hplane'],
+  [0xd62828, '--scene-x'],
+  [0x2a9d8f, '--scene-y'],
+  [0x1d4ed8, '--scene-z'],
+]);
+
+/**
+ * Recolours a three.js scene from the stylesheet: the background from `--scene-bg` and each
+ * material whose light colour is in `themed` from its custom property (read on `element`).
+ * The light colour is kept in the material's userData, so it can be applied again and again.
+ */
+export function applySceneTheme(
+  scene: Scene,
+  renderer: WebGLRenderer,
+  element: Element,
+  background: number,
+  themed: ReadonlyMap<number, string> = THEMED_COLOURS,
+): void {
+  const css = getComputedStyle(element);
+  const read = (name: string, fallback: number): Color => {
+    const text = css.getPropertyValue(name).trim();
+    return new Color(text === '' ? fallback : text);
+  };
+  renderer.setClearColor(read('--scene-bg', background));
+  scene.traverse((object) => {
+    const own = (object as Partial<Mesh>).material;
+    for (const material of own === undefined ? [] : Array.isArray(own) ? own : [own]) {
+      const coloured = material as Material & { color?: Color };
+      if (!coloured.color) continue;
+      if (typeof coloured.userData.lightColour !== 'number') coloured.userData.lightColour = coloured.color.getHex();
+      const light = coloured.userData.lightColour as number;
+      const name = themed.get(light);
+      if (name) coloured.color.copy(read(name, light));
+    }
+  });
+}
+
 /** The WebGL renderer's name says it rasterises in software (checked on a throwaway context). */
 function isSoftwareWebGL(): boolean {
   const gl = document.createElement('canvas').getContext('webgl2');
@@ -511,6 +563,12 @@ export class ToolScene {
   }
 
   /** Renders on the next animation frame (several requests in one frame render once). */
+  /** Takes the scene's colours from the stylesheet's current theme (on start and each change) and redraws. */
+  applyTheme(): void {
+    applySceneTheme(this.scene, this.renderer, this.container, BACKGROUND);
+    this.requestRender();
+  }
+
   requestRender(): void {
     if (this.frameRequested) return;
     this.frameRequested = true;

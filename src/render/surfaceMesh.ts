@@ -19,6 +19,8 @@ import {
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { type HeightField, type SurfaceGrid, surfaceGrid } from './surfaceGrid';
 
+const SURFACE_BACKGROUND = 0xf4f6f9;
+
 /** One small WebGL view of the simulated surface. */
 export class SurfaceScene {
   private readonly renderer: WebGLRenderer;
@@ -34,7 +36,7 @@ export class SurfaceScene {
   constructor(private readonly container: HTMLElement) {
     this.renderer = new WebGLRenderer({ antialias: false });
     this.renderer.setPixelRatio(1);
-    this.renderer.setClearColor(new Color(0xf4f6f9));
+    this.renderer.setClearColor(new Color(SURFACE_BACKGROUND));
     const canvas = this.renderer.domElement;
     canvas.setAttribute('data-testid', 'surface-canvas');
     canvas.setAttribute('role', 'img');
@@ -71,6 +73,14 @@ export class SurfaceScene {
     this.controls.update();
     this.requestRender();
     return g;
+  }
+
+  /** Takes the background from the stylesheet's current theme (`--surface-bg`) and redraws. */
+  applyTheme(): void {
+    this.renderer.setClearColor(
+      new Color(getComputedStyle(this.container).getPropertyValue('--surface-bg').trim() || SURFACE_BACKGROUND),
+    );
+    this.requestRender();
   }
 
   requestRender(): void {

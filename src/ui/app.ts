@@ -14,6 +14,8 @@ import { type SolveMode, type SolveReply, type SolveRequest, sameRequest } from 
 import { solveClient } from '../worker/workers';
 import { applyProcedureColours } from './colours';
 import { wireCopyButtons } from './copy';
+import { embedCode, wireCopyEmbed } from './embedCode';
+import { postHeightToParent } from './embedResize';
 import { FieldsPanel } from './fields';
 import { formatLenUnit, formatSignedLenUnit } from './format';
 import { Freshness } from './freshness';
@@ -33,12 +35,14 @@ import {
   parseUrl,
   type Target,
   type ToolSize,
+  toSearch,
   type Unit,
   withField,
   withSize,
   withValues,
 } from './state';
 import { TeachingLoader } from './teaching';
+import { onThemeChange, parseTheme, startTheme } from './theme';
 import { TypingGate } from './typing';
 import { UrlState } from './urlState';
 import type { ViewId } from './views/panel';
@@ -104,6 +108,9 @@ export class CalculatorApp {
     const extra: Record<string, string> = {};
     if (embed) extra.embed = '1';
     if (requested) extra.view = requested;
+    const theme = parseTheme(window.location.search);
+    startTheme(theme);
+    if (theme.override) extra.theme = theme.override;
     this.url = new UrlState(extra, root.querySelector<HTMLAnchorElement>('[data-testid="open-full"]'));
     this.notice = new Notice(must(root, '[data-testid="notice"]'));
     this.results = new ResultsPanel(root);
@@ -117,6 +124,15 @@ export class CalculatorApp {
     this.sceneBox = sceneBox;
     this.scene = new SceneSlot(() => import('../render/scene').then(({ ToolScene }) => new ToolScene(sceneBox)));
     this.scene.onFrame = () => this.observer.frame?.(this.fresh.shown.kind === 'current');
+    this.scene.run('theme', (s) => s.applyTheme());
+    onThemeChange(() => this.scene.run('theme', (s) => s.applyTheme()));
+    if (embed) postHeightToParent(root);
+    wireCopyEmbed(must(root, '[data-testid="copy-embed"]'), must(root, '[data-testid="copy-embed-status"]'), () =>
+      embedCode(
+        `${window.location.origin}${window.location.pathname}`,
+        toSearch(this.state, { ...extra, view: this.teaching?.activeView ?? requested ?? 'profile' }),
+      ),
+    );
     this.fields = new FieldsPanel(root, {
       onField: (key, text, typing) => this.edit(key, withField(this.state, key, text), typing),
       onCommit: () => {
@@ -152,6 +168,7 @@ export class CalculatorApp {
     const notices = [...parsed.notices];
     if (parsed.view !== null && requested === undefined)
       notices.push(`view="${parsed.view}" is not one of ${VIEW_IDS.join(', ')}.`);
+    if (theme.notice !== null) notices.push(theme.notice);
     if (notices.length > 0) this.notice.show(linkNotice(notices), 0);
     this.change(this.state);
   }

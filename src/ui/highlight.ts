@@ -19,6 +19,8 @@ export class Highlighter {
     private readonly root: HTMLElement,
     private readonly onChange: (key: ProcedureKey | null) => void,
   ) {
+    // Its rows are selectable (click, Enter): the results table is a grid with aria-selected rows.
+    root.querySelector('.procedures')?.setAttribute('role', 'grid');
     root.addEventListener('mouseover', (e) => this.set(keyOf(e.target) ?? this.selected));
     root.addEventListener('focusin', (e) => this.set(keyOf(e.target) ?? this.selected));
     root.addEventListener('click', (e) => this.select(e.target));

@@ -6,6 +6,7 @@ import { afterAll, beforeAll, expect } from 'vitest';
 import { launchChromium } from '../../src/bench/browser';
 import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
 import { E2E_OUT_DIR } from './globalSetup';
+import { colourShare } from './pixels';
 
 export const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 export const SHOTS = `${ROOT}test-results/screenshots`;
@@ -76,30 +77,7 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
  * a screenshot (what the user sees; the WebGL buffer itself is not preserved between frames).
  */
 export async function paintedFraction(page: Page): Promise<number> {
-  const png = (await page.getByTestId('scene-canvas').screenshot()).toString('base64');
-  return page.evaluate(async (b64) => {
-    const image = new Image();
-    image.src = `data:image/png;base64,${b64}`;
-    await image.decode();
-    const copy = document.createElement('canvas');
-    copy.width = image.width;
-    copy.height = image.height;
-    const ctx = copy.getContext('2d');
-    if (!ctx) return 0;
-    ctx.drawImage(image, 0, 0);
-    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
-    let painted = 0;
-    for (let i = 0; i < data.length; i += 4) {
-      if (
-        Math.abs((data[i] as number) - 0xf7) +
-          Math.abs((data[i + 1] as number) - 0xf8) +
-          Math.abs((data[i + 2] as number) - 0xfa) >
-        24
-      )
-        painted++;
-    }
-    return painted / (data.length / 4);
-  }, png);
+  return 1 - (await colourShare(page, page.getByTestId('scene-canvas'), '#f7f8fa', 24));
 }
 
 /** The page's worker of this name (path-interval-solver runs `solve`, path-interval-views `teach`). */

@@ -8,10 +8,10 @@ import 'uplot/dist/uPlot.min.css';
 import { APPROXIMATION_KEYS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures';
 import { fromMm, unitSymbol } from '../../core/units';
 import type { Sweep } from '../../worker/protocol';
+import { procedureColour } from '../colours';
 import { formatDeg, formatLen } from '../format';
+import { currentTheme, onThemeChange, themeColour } from '../theme';
 import { html, type TeachingView, type ViewContext } from './common';
-
-const MARKER = '#e11d48';
 
 /** One chart: its box, its plot once built, the keys it shows and the angle it marks. */
 interface Chart {
@@ -67,6 +67,8 @@ export class ChartView implements TeachingView {
     const tools = html('div', { class: 'view-tools' });
     tools.append(this.errorUnit, this.rhoAxis);
     this.element.append(this.summary, this.lead.box, tools, this.error.box, this.tilt.box);
+    // Canvas colours are read when the charts are built: a new theme builds them again.
+    onThemeChange(() => this.ctx && this.rebuild(this.ctx));
   }
 
   private width(): number {
@@ -81,7 +83,7 @@ export class ChartView implements TeachingView {
           const x = u.valToPos(chart.current, 'x', true);
           const ctx = u.ctx;
           ctx.save();
-          ctx.strokeStyle = MARKER;
+          ctx.strokeStyle = themeColour('--chart-marker') || '#e11d48';
           ctx.setLineDash([4, 4]);
           ctx.beginPath();
           ctx.moveTo(x, u.bbox.top);
@@ -137,7 +139,8 @@ export class ChartView implements TeachingView {
       tilt: `L against tilt beta (R, Rcr, rho, h fixed; dashed: current beta = ${formatDeg(beta)})`,
     };
     const leadOnly = beta !== 0;
-    const key = `${unit}|${pct}|${log}|${this.width()}|${leadOnly}`;
+    const theme = currentTheme();
+    const key = `${unit}|${pct}|${log}|${this.width()}|${leadOnly}|${theme}`;
     const charts: Array<[Chart, uPlot.AlignedData, string]> = [
       [this.lead, scaled(lead), titles.lead],
       [this.error, errorData, titles.error],
@@ -157,11 +160,13 @@ export class ChartView implements TeachingView {
       { label: 'angle [deg]' },
       ...keys.map((k) => ({
         label: `${PROCEDURES[k].shortLabel}${leadOnly && PROCEDURES[k].leadOnly ? ' (lead only)' : ''}`,
-        stroke: PROCEDURES[k].colour,
+        stroke: procedureColour(k, theme),
         width: k === 'exact' ? 2.5 : 1.6,
         spanGaps: false,
       })),
     ];
+    const ink = themeColour('--fg') || '#1d2330';
+    const grid = themeColour('--line') || '#d8dde6';
     const options = (chart: Chart, title: string, xLabel: string, yLabel: string, logX: boolean): uPlot.Options => ({
       title,
       width: this.width(),
@@ -170,7 +175,7 @@ export class ChartView implements TeachingView {
       cursor: { focus: { prox: 16 } },
       // The charted range exactly (a log scale would otherwise snap out to whole decades).
       scales: { x: { time: false, distr: logX ? 3 : 1, range: (_u, min, max) => [min, max] } },
-      axes: [{ label: xLabel }, { label: yLabel }],
+      axes: [xLabel, yLabel].map((label) => ({ label, stroke: ink, grid: { stroke: grid }, ticks: { stroke: grid } })),
       plugins: [this.marker(chart)],
       series: series(chart.keys),
     });

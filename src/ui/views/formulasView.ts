@@ -36,7 +36,13 @@ export class FormulasView implements TeachingView {
       if (!slots) continue;
       const info = PROCEDURES[key];
       const box = html('section', { class: 'formula', 'data-procedure': key });
-      const maths = html('div', { class: 'maths' });
+      // Focusable: a wide equation scrolls sideways in a narrow embed, and keys must reach it.
+      const maths = html('div', {
+        class: 'maths',
+        tabindex: '0',
+        role: 'group',
+        'aria-label': `${info.label}: equations`,
+      });
       maths.innerHTML = mathml[key]
         .filter((_, i) => {
           const only = FORMULA_TEMPLATES[key][i]?.pattern;

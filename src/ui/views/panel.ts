@@ -73,12 +73,19 @@ export class TeachingPanel {
     this.show(initial);
   }
 
+  /** Arrow keys move to the next or previous tab (wrapping), Home and End to the first and last. */
   private arrowKeys(e: KeyboardEvent, id: ViewId): void {
     const i = this.ids.indexOf(id);
     const n = this.ids.length;
-    const next =
-      e.key === 'ArrowRight' ? this.ids[(i + 1) % n] : e.key === 'ArrowLeft' ? this.ids[(i + n - 1) % n] : null;
+    const targets: Record<string, ViewId | undefined> = {
+      ArrowRight: this.ids[(i + 1) % n],
+      ArrowLeft: this.ids[(i + n - 1) % n],
+      Home: this.ids[0],
+      End: this.ids[n - 1],
+    };
+    const next = targets[e.key];
     if (next) {
+      e.preventDefault();
       this.show(next);
       this.tabs.get(next)?.focus();
     }

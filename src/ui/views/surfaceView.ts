@@ -16,6 +16,7 @@ import { formatLen } from '../format';
 import type { Shown } from '../freshness';
 import type { SurfaceDisplay } from '../simulation';
 import type { Unit } from '../state';
+import { onThemeChange } from '../theme';
 import { html, svg, type TeachingView } from './common';
 import { autoExaggeration } from './scale';
 import './surface.css';
@@ -81,7 +82,12 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
   highlight(_key: ProcedureKey | null): void {}
 
   setVisible(visible: boolean): void {
-    if (visible && this.scene === null) this.scene = new SurfaceScene(this.sceneBox);
+    if (visible && this.scene === null) {
+      const scene = new SurfaceScene(this.sceneBox);
+      this.scene = scene;
+      scene.applyTheme();
+      onThemeChange(() => scene.applyTheme());
+    }
     this.source.setOpen(visible);
     if (visible && this.drawn) this.drawReply(this.drawn.reply, this.drawn.unit, true);
   }

@@ -47,7 +47,8 @@ export class TablesView implements TeachingView {
   }
 
   private table(caption: string, what: 'half' | 'height'): HTMLTableElement {
-    const table = html('table', { class: 'paper-table', 'data-testid': `paper-table-${what}` });
+    // A grid of selectable rows: the row of the condition on screen is the selected one.
+    const table = html('table', { class: 'paper-table', role: 'grid', 'data-testid': `paper-table-${what}` });
     table.append(html('caption', {}, caption));
     const head = html('tr');
     for (const t of [
@@ -67,6 +68,7 @@ export class TablesView implements TeachingView {
       const tr = html('tr', {
         'data-condition': String(i),
         tabindex: '0',
+        'aria-selected': 'false',
         title: 'Load this condition into the calculator',
       });
       tr.addEventListener('keydown', (e) => {
@@ -103,13 +105,31 @@ export class TablesView implements TeachingView {
 
   /** The tables are recomputed in the worker; they are fixed conditions, so they are built once. */
   update(ctx: ViewContext): void {
-    const rows = ctx.data.tables;
-    if (this.rows.length > 0) return;
-    this.rows = rows;
-    this.why.after(
-      this.table('Tables 2-3: L/2 [mm] for h', 'half'),
-      this.table('Tables 4-5: h [mm] at the printed 3D L/2', 'height'),
-    );
+    if (this.rows.length === 0) {
+      this.rows = ctx.data.tables;
+      this.why.after(
+        this.table('Tables 2-3: L/2 [mm] for h', 'half'),
+        this.table('Tables 4-5: h [mm] at the printed 3D L/2', 'height'),
+      );
+    }
+    this.markSelected(ctx);
+  }
+
+  /** Marks the rows whose condition is the one on screen (the paper's case: plane, no tilt, one-way). */
+  private markSelected(ctx: ViewContext): void {
+    const f = ctx.data.forward;
+    const paperCase = f.tiltAngleDeg === 0 && f.pattern === 'one-way' && f.surface.kind === 'plane';
+    for (const tr of this.element.querySelectorAll<HTMLElement>('tr[data-condition]')) {
+      const r = this.rows[Number(tr.dataset.condition)];
+      const on =
+        paperCase &&
+        r !== undefined &&
+        r.R === f.toolRadiusMm &&
+        r.Rcr === f.cornerRadiusMm &&
+        r.rho === f.leadAngleDeg &&
+        r.h === f.scallopHeightMm;
+      tr.setAttribute('aria-selected', String(on));
+    }
   }
 
   highlight(key: ProcedureKey | null): void {

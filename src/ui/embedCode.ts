@@ -1,0 +1,78 @@
+/**
+ * "Copy embed code": the HTML a documentation page needs to embed the calculator in its current
+ * state and view, as a plain iframe and as the <path-interval-calculator> custom element
+ * (public/embed.js, which sizes the iframe to its content). The button copies it to the clipboard
+ * and says so; where the clipboard is refused it shows the code selected, to copy by hand.
+ */
+import { html } from './dom';
+
+/** The attribute of the custom element for each query parameter (public/embed.js maps them back). */
+const ATTRIBUTE: Readonly<Record<string, string>> = { R: 'r', Rcr: 'rcr', L: 'l' };
+
+function escapeAttribute(text: string): string {
+  return text.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
+}
+
+/**
+ * The embed code for a page at `pageUrl` (the calculator's address, without query) showing the
+ * state of `search` (a query string such as `?R=3&Rcr=1&...`; `embed` is added, `view` kept).
+ */
+export function embedCode(pageUrl: string, search: string): string {
+  const params = new URLSearchParams(search);
+  params.delete('embed');
+  const frameParams = new URLSearchParams(params);
+  frameParams.set('embed', '1');
+  const src = `${pageUrl}?${frameParams.toString()}`;
+  const attributes = [...params].map(([k, v]) => `${ATTRIBUTE[k] ?? k}="${escapeAttribute(v)}"`).join(' ');
+  const script = new URL('embed.js', pageUrl).href;
+  return [
+    '<!-- Path interval calculator: a plain iframe (fixed height) -->',
+    `<iframe src="${escapeAttribute(src)}" width="100%" height="480" style="border:0" title="Path interval calculator"></iframe>`,
+    '',
+    '<!-- Or the custom element, which sizes itself to its content -->',
+    `<script src="${escapeAttribute(script)}" defer></script>`,
+    `<path-interval-calculator ${attributes}></path-interval-calculator>`,
+  ].join('\n');
+}
+
+/**
+ * Wires the "Copy embed code" button: on click it copies `code()` and confirms in `status`
+ * (a live region); if the clipboard is refused, the code is shown in a read-only text box, selected.
+ */
+export function wireCopyEmbed(button: HTMLButtonElement, status: HTMLElement, code: () => string): void {
+  const fallback = html('textarea', {
+    class: 'embed-code',
+    readonly: '',
+    rows: '6',
+    'aria-label': 'Embed code',
+    'data-testid': 'embed-code',
+  });
+  fallback.hidden = true;
+  status.after(fallback);
+  let timer: ReturnType<typeof setTimeout> | null = null;
+  const say = (text: string): void => {
+    status.textContent = text;
+    if (timer !== null) clearTimeout(timer);
+    timer = setTimeout(() => {
+      status.textContent = '';
+    }, 4000);
+  };
+  button.addEventListener('click', () => {
+    const text = code();
+    fallback.value = text;
+    const clipboard = navigator.clipboard;
+    const refused = (): void => {
+      fallback.hidden = false;
+      fallback.select();
+      say('Copying was refused by the browser: the embed code is selected below, copy it with Ctrl+C.');
+    };
+    if (!clipboard) {
+      refused();
+      return;
+    }
+    clipboard.writeText(text).then(() => {
+      fallback.hidden = true;
+      say('Embed code copied: an iframe and the <path-interval-calculator> element.');
+    }, refused);
+  });
+}

@@ -1,0 +1,114 @@
+/**
+ * The example documentation site (tests/docs-site/, MkDocs, installed by the project's own
+ * tests/support/ensure-mkdocs.mjs) is built, served at /docs/ beside the calculator's production
+ * build at /calculator/ on one server, and opened as a reader would: the embeds (the custom
+ * element in light and dark, a plain iframe with the README's listener) render, take the height
+ * of their content, and ignore a resize message from another origin or another window.
+ */
+import { execFileSync } from 'node:child_process';
+import type { Browser, Frame, Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { launchChromium } from '../../src/bench/browser';
+import { type StaticMounts, serveStaticMounts } from '../../src/bench/staticServer';
+import { ROOT, SHOTS, siteDir } from './harness';
+
+const DOCS_OUT = `${ROOT}test-results/docs-site`;
+let browser: Browser | null = null;
+let server: StaticMounts | null = null;
+
+beforeAll(async () => {
+  execFileSync(
+    'node',
+    [`${ROOT}tests/support/ensure-mkdocs.mjs`, 'build', `${ROOT}tests/docs-site/mkdocs.yml`, DOCS_OUT],
+    { stdio: 'inherit' },
+  );
+  server = await serveStaticMounts([
+    { root: DOCS_OUT, subPath: 'docs' },
+    { root: siteDir('production'), subPath: 'calculator' },
+  ]);
+  browser = await launchChromium();
+}, 180_000);
+
+afterAll(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+async function openDocs(): Promise<Page> {
+  if (!browser || !server) throw new Error('not started');
+  const page = await browser.newPage({ viewport: { width: 1100, height: 900 } });
+  await page.goto(`${server.urls[0]}index.html`);
+  return page;
+}
+
+/** The embedded calculator inside the iframe `selector`, once its view has drawn. */
+async function embedded(page: Page, selector: string, drawn: string): Promise<Frame> {
+  const handle = await page.locator(selector).elementHandle();
+  const frame = await handle?.contentFrame();
+  if (!frame) throw new Error(`no frame ${selector}`);
+  await frame.locator(drawn).first().waitFor({ timeout: 20_000 });
+  return frame;
+}
+
+const frameHeight = (page: Page, selector: string) =>
+  page.locator(selector).evaluate((f) => Math.round(f.getBoundingClientRect().height));
+const contentHeight = (frame: Frame) =>
+  frame.locator('#app').evaluate((e) => Math.ceil(e.getBoundingClientRect().height));
+
+describe('example documentation site (MkDocs)', () => {
+  it('embeds render in light and dark and each iframe takes the height of its content', async () => {
+    const page = await openDocs();
+    expect(await page.locator('h1').first().textContent()).toMatch(/Step-over of a bull-nose end mill/);
+    const cases: Array<[string, string, 'light' | 'dark']> = [
+      ['#embed-light iframe', '[data-testid="profile-view"] polygon.scallop', 'light'],
+      ['#embed-dark iframe', '.formula', 'dark'],
+      ['#plain-frame', '[data-testid="paper-table-half"] tr[data-condition]', 'dark'],
+    ];
+    for (const [selector, drawn, theme] of cases) {
+      await page.locator(selector).scrollIntoViewIfNeeded();
+      const frame = await embedded(page, selector, drawn);
+      expect(await frame.evaluate(() => document.documentElement.dataset.theme), selector).toBe(theme);
+      expect(await frame.getByTestId('result-exact-half').textContent()).toMatch(/^1\.44\d+$/);
+      // The iframe follows the posted height: equal to the content, no inner scrollbar.
+      await expect.poll(async () => (await frameHeight(page, selector)) - (await contentHeight(frame))).toBe(0);
+      expect(await frame.evaluate(() => document.documentElement.scrollHeight <= window.innerHeight)).toBe(true);
+    }
+    // The plain iframe started at 360 px and the tables are taller: it grew.
+    expect(await frameHeight(page, '#plain-frame')).toBeGreaterThan(360);
+    await page.screenshot({ path: `${SHOTS}/docs-site.png`, fullPage: true });
+    await page.close();
+  }, 90_000);
+
+  it('a resize message from another origin or another window is ignored', async () => {
+    const page = await openDocs();
+    const selector = '#embed-light iframe';
+    const frame = await embedded(page, selector, '[data-testid="profile-view"] polygon.scallop');
+    await expect.poll(async () => (await frameHeight(page, selector)) - (await contentHeight(frame))).toBe(0);
+    const before = await frameHeight(page, selector);
+    // From the iframe's own window but another origin, then from the right origin but another window.
+    await page.locator(selector).evaluate((f) => {
+      const source = (f as HTMLIFrameElement).contentWindow;
+      const data = { type: 'path-interval:resize', height: 2345 };
+      window.dispatchEvent(new MessageEvent('message', { data, origin: 'http://evil.example', source }));
+      window.dispatchEvent(
+        new MessageEvent('message', { data, origin: new URL(document.baseURI).origin, source: window }),
+      );
+    });
+    await page.waitForTimeout(300);
+    expect(await frameHeight(page, selector)).toBe(before);
+    // The same message from the iframe's window and origin is taken (the check is not blind).
+    await page.locator(selector).evaluate((f) => {
+      const source = (f as HTMLIFrameElement).contentWindow;
+      const data = { type: 'path-interval:resize', height: 2345 };
+      window.dispatchEvent(
+        new MessageEvent('message', {
+          data,
+          origin: new URL(f.getAttribute('src') ?? '', document.baseURI).origin,
+          source,
+        }),
+      );
+    });
+    await expect.poll(() => frameHeight(page, selector)).toBe(2345);
+    await page.close();
+  }, 60_000);
+});

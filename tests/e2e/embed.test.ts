@@ -1,0 +1,236 @@
+/**
+ * The technical writer's embedding, driven as a documentation page would: light and dark (system
+ * and `theme=`), the height posted to the host, the "Copy embed code" button, and every view
+ * fitting its 480 px embed and the full page fitting phones and tablets (no sideways scrolling,
+ * nothing cut off).
+ */
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { SHOTS, useSite } from './harness';
+import { clippedElements, colourShare } from './pixels';
+
+const site = useSite('docs/embed');
+const STATE = 'R=3&Rcr=1&rho=5&h=0.05&unit=mm';
+const VIEWS = ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'] as const;
+/** The scene's background per theme (--scene-bg in src/ui/theme.css). */
+const SCENE_BG = { light: '#f7f8fa', dark: '#12161f' };
+
+async function sceneShows(page: Page, hex: string): Promise<number> {
+  return colourShare(page, page.getByTestId('scene-canvas'), hex, 12);
+}
+
+describe('dark mode', () => {
+  it('follows prefers-color-scheme, live, in the page, the 3D scene and the chart', async () => {
+    const page = await site.browser().newPage({ viewport: { width: 1400, height: 900 }, colorScheme: 'dark' });
+    await page.goto(`${site.url()}?${STATE}&view=chart`);
+    await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
+    expect(await page.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
+    expect(await page.evaluate(() => getComputedStyle(document.documentElement).backgroundColor)).toBe(
+      'rgb(18, 22, 31)',
+    );
+    await expect.poll(() => sceneShows(page, SCENE_BG.dark)).toBeGreaterThan(0.3);
+    // The chart's curves take the dark palette: Sekine's amber #fbbf24, not the light #b45309.
+    const lead = page.getByTestId('chart-lead');
+    await lead.locator('canvas').waitFor();
+    await expect.poll(() => colourShare(page, lead, '#fbbf24', 40)).toBeGreaterThan(0.0005);
+    expect(await colourShare(page, lead, '#b45309', 30)).toBe(0);
+    await page.screenshot({ path: `${SHOTS}/theme-dark-system-1400.png` });
+    await page.emulateMedia({ colorScheme: 'light' });
+    await expect.poll(() => page.evaluate(() => document.documentElement.dataset.theme)).toBe('light');
+    await expect.poll(() => sceneShows(page, SCENE_BG.light)).toBeGreaterThan(0.3);
+    await expect.poll(() => colourShare(page, lead, '#b45309', 40)).toBeGreaterThan(0.0005);
+    await page.close();
+  });
+
+  it('theme=dark|light in the link overrides the system; an invalid value gets a notice', async () => {
+    const dark = await site.browser().newPage({ viewport: { width: 480, height: 700 }, colorScheme: 'light' });
+    await dark.goto(`${site.url()}?${STATE}&view=profile&embed=1&theme=dark`);
+    await dark.getByTestId('profile-view').locator('polygon.scallop').waitFor();
+    expect(await dark.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
+    // The profile's exact curve is drawn in the dark palette's exact colour.
+    const stroke = await dark
+      .locator('.profile-svg .curve-exact')
+      .first()
+      .evaluate((e) => getComputedStyle(e).stroke);
+    expect(stroke).toBe('rgb(243, 244, 246)');
+    expect(new URL(dark.url()).searchParams.get('theme')).toBe('dark'); // kept while the state changes
+    await dark.screenshot({ path: `${SHOTS}/theme-dark-embed-profile-480.png` });
+    await dark.close();
+
+    const light = await site.browser().newPage({ viewport: { width: 1400, height: 900 }, colorScheme: 'dark' });
+    await light.goto(`${site.url()}?${STATE}&theme=light`);
+    await light.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
+    expect(await light.evaluate(() => document.documentElement.dataset.theme)).toBe('light');
+    await expect.poll(() => sceneShows(light, SCENE_BG.light)).toBeGreaterThan(0.3);
+    await light.close();
+
+    const bad = await site.browser().newPage({ viewport: { width: 1400, height: 900 }, colorScheme: 'dark' });
+    await bad.goto(`${site.url()}?${STATE}&theme=purple`);
+    await bad.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
+    expect(await bad.getByTestId('notice').textContent()).toMatch(/theme="purple" is not light or dark/);
+    expect(await bad.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
+    await bad.close();
+  });
+});
+
+describe('auto-height', () => {
+  it('the embedded page posts its content height to the host whenever it changes', async () => {
+    const host = await site.browser().newPage({ viewport: { width: 800, height: 900 } });
+    await host.goto(`${site.url()}embed.js`); // any page of the same site; its content is replaced
+    await host.setContent('<iframe id="f" width="480" height="300"></iframe>');
+    await host.evaluate(() => {
+      const seen: unknown[] = [];
+      (window as unknown as { seen: unknown[] }).seen = seen;
+      window.addEventListener('message', (e) => seen.push(e.data));
+    });
+    await host.locator('#f').evaluate((f, src) => {
+      (f as HTMLIFrameElement).src = src;
+    }, `${site.url()}?${STATE}&view=formulas&embed=1`);
+    const heights = () =>
+      host.evaluate(() =>
+        (window as unknown as { seen: Array<{ type?: string; height?: number }> }).seen
+          .filter((m) => m.type === 'path-interval:resize')
+          .map((m) => m.height as number),
+      );
+    await expect.poll(async () => (await heights()).at(-1) ?? 0, { timeout: 15_000 }).toBeGreaterThan(400);
+    const frame = host.frameLocator('#f');
+    await frame.getByTestId('teaching').locator('.formula').first().waitFor();
+    const content = await frame.locator('#app').evaluate((e) => Math.ceil(e.getBoundingClientRect().height));
+    await expect.poll(async () => (await heights()).at(-1)).toBe(content);
+    // Content that grows (a longer state message) is posted again.
+    const before = (await heights()).length;
+    await frame.locator('#app').evaluate((e) => {
+      const extra = document.createElement('div');
+      extra.className = 'grow-test';
+      extra.textContent = 'x';
+      e.append(extra);
+    });
+    await expect.poll(async () => (await heights()).length).toBeGreaterThan(before);
+    await host.close();
+  });
+
+  it('a page that is not in a frame posts nothing', async () => {
+    const { page } = await site.open(`?${STATE}&embed=1`, { width: 480, height: 400 });
+    const posted = await page.evaluate(
+      () =>
+        new Promise<number>((resolve) => {
+          let n = 0;
+          window.addEventListener('message', () => n++);
+          setTimeout(() => resolve(n), 500);
+        }),
+    );
+    expect(posted).toBe(0);
+    await page.close();
+  });
+});
+
+describe('copy embed code', () => {
+  it('copies the iframe and the custom element for the current state and view, and says so', async () => {
+    const context = await site.browser().newContext({
+      viewport: { width: 1400, height: 900 },
+      permissions: ['clipboard-read', 'clipboard-write'],
+    });
+    const page = await context.newPage();
+    await page.goto(`${site.url()}?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm`);
+    await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
+    await page.getByRole('tab', { name: 'Formulas' }).click();
+    await page.getByTestId('copy-embed').click();
+    await expect.poll(() => page.getByTestId('copy-embed-status').textContent()).toMatch(/Embed code copied/);
+    expect(await page.getByTestId('copy-embed-status').isVisible()).toBe(true);
+    const copied = await page.evaluate(() => navigator.clipboard.readText());
+    const src = /<iframe src="([^"]+)"/.exec(copied)?.[1]?.replace(/&amp;/g, '&') ?? '';
+    const url = new URL(src);
+    expect(url.href.startsWith(site.url())).toBe(true);
+    expect(Object.fromEntries(url.searchParams)).toEqual({
+      R: '3',
+      Rcr: '1',
+      rho: '5',
+      tilt: '5',
+      h: '0.05',
+      unit: 'mm',
+      view: 'formulas',
+      embed: '1',
+    });
+    expect(copied).toContain(`<script src="${site.url()}embed.js" defer></script>`);
+    expect(copied).toMatch(
+      /<path-interval-calculator r="3" rcr="1" rho="5" tilt="5" h="0.05" unit="mm" view="formulas"><\/path-interval-calculator>/,
+    );
+    // The copied iframe opens that view embedded, with the same numbers.
+    const embedded = await context.newPage();
+    await embedded.setViewportSize({ width: 480, height: 600 });
+    await embedded.goto(src);
+    await embedded.getByTestId('teaching').locator('.formula').first().waitFor();
+    expect(await embedded.evaluate(() => document.documentElement.classList.contains('single-view'))).toBe(true);
+    await page.screenshot({ path: `${SHOTS}/copy-embed-confirmed.png` });
+    await context.close();
+  });
+
+  it('where the clipboard is refused, the code is shown selected to copy by hand', async () => {
+    const { page } = await site.open(`?${STATE}`);
+    await page.evaluate(() => {
+      Object.defineProperty(navigator, 'clipboard', { value: { writeText: () => Promise.reject(new Error('no')) } });
+    });
+    await page.getByTestId('copy-embed').click();
+    await expect.poll(() => page.getByTestId('copy-embed-status').textContent()).toMatch(/refused/);
+    const box = page.getByTestId('embed-code');
+    expect(await box.isVisible()).toBe(true);
+    expect(await box.inputValue()).toMatch(/<iframe src="[^"]*view=profile/);
+    await page.close();
+  });
+});
+
+describe('every view fits', () => {
+  it('each view embedded at 480 px: no horizontal scrolling, nothing cut off (light and dark)', async () => {
+    for (const theme of ['light', 'dark'] as const) {
+      const page = await site.browser().newPage({ viewport: { width: 480, height: 700 }, colorScheme: theme });
+      for (const view of VIEWS) {
+        await page.goto(`${site.url()}?${STATE}&view=${view}&embed=1`);
+        await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+        await page.locator(`#panel-${view} > *`).first().waitFor();
+        await page.waitForTimeout(400);
+        const width = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
+        expect(width[0], `${view}`).toBeLessThanOrEqual(width[1] as number);
+        expect(await clippedElements(page), `${view} ${theme}`).toEqual([]);
+        await page.screenshot({ path: `${SHOTS}/embed-${view}-480-${theme}.png`, fullPage: true });
+      }
+      await page.close();
+    }
+    // What was cut off before: the paper tables' Bedi column and the stepper's camera buttons.
+    const page = await site.browser().newPage({ viewport: { width: 480, height: 700 } });
+    await page.goto(`${site.url()}?${STATE}&view=tables&embed=1`);
+    const bedi = page.locator('[data-testid="paper-half-0-bedi"]');
+    await bedi.waitFor();
+    const box = await bedi.boundingBox();
+    expect((box?.x ?? 1e9) + (box?.width ?? 0)).toBeLessThanOrEqual(480);
+    await page.goto(`${site.url()}?${STATE}&view=stepper&embed=1`);
+    const top = page.locator('[data-camera="top"]');
+    await top.waitFor();
+    expect(await top.isVisible()).toBe(true);
+    const topBox = await top.boundingBox();
+    expect((topBox?.x ?? 1e9) + (topBox?.width ?? 0)).toBeLessThanOrEqual(480);
+    await page.close();
+  }, 120_000);
+
+  it('the full page at 360, 390, 414 and 768 px: no horizontal scrolling in any view', async () => {
+    for (const [width, height] of [
+      [360, 780],
+      [390, 844],
+      [414, 896],
+      [768, 1024],
+    ] as const) {
+      const page = await site.browser().newPage({ viewport: { width, height } });
+      for (const view of VIEWS) {
+        await page.goto(`${site.url()}?${STATE}&view=${view}`);
+        await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
+        await page.locator(`#panel-${view} > *`).first().waitFor();
+        await page.waitForTimeout(300);
+        const scroll = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
+        expect(scroll[0], `${view} at ${width}`).toBeLessThanOrEqual(scroll[1] as number);
+        expect(await clippedElements(page), `${view} at ${width}`).toEqual([]);
+        if (view === 'profile' || view === 'tables')
+          await page.screenshot({ path: `${SHOTS}/full-${view}-${width}.png`, fullPage: true });
+      }
+      await page.close();
+    }
+  }, 180_000);
+});
