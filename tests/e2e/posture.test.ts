@@ -173,11 +173,11 @@ describe('tool posture on the page', () => {
   it('the chart of L against tilt at the current lead, beside L against lead', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=chart');
     const chart = page.getByTestId('comparison-chart');
-    await page.getByTestId('chart-tilt').locator('canvas').waitFor();
-    expect(await page.getByTestId('chart-tilt').locator('.u-title').textContent()).toMatch(
-      /L against tilt beta .*current beta = 5\)/,
+    await page.getByTestId('chart-tilt').locator('svg.chart-svg').waitFor();
+    expect(await page.getByTestId('chart-tilt').locator('.chart-title').textContent()).toMatch(
+      /L \[mm\] against tilt beta \[deg\] .*current beta = 5\)/,
     );
-    expect(await page.getByTestId('chart-lead').locator('.u-title').textContent()).toMatch(/current rho = 5\)/);
+    expect(await page.getByTestId('chart-lead').locator('.chart-title').textContent()).toMatch(/current rho = 5\)/);
     await expect
       .poll(() => page.getByTestId('chart-summary').textContent())
       .toMatch(new RegExp(`beta = 5 deg, L \\[mm\\]: Exact \\(3D\\) ${exact(5, 'one-way').intervalMm.toFixed(4)}`));
