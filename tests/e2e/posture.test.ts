@@ -188,19 +188,21 @@ describe('tool posture on the page', () => {
   it('the stepper runs the procedure on both flanks and ends on both widths', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&tilt=8&h=0.05&unit=mm&view=stepper');
     const caption = page.getByTestId('stepper-caption');
-    await expect.poll(() => caption.textContent()).toMatch(/^Right flank \(\+Y\)\. Step 2 \(Eq\. 1\)/);
+    await expect
+      .poll(() => caption.textContent())
+      .toMatch(/^Step 1 of \d+\. Right flank \(\+Y\)\. Fig\. 1, box 2 \(Eq\. 1\)/);
     const trace = traceProcedure(forwardInput(tool(8), 'one-way', 0.05));
     const e = exact(8, 'one-way');
     await page.getByTestId('stepper-last').click();
     await expect
       .poll(() => caption.textContent())
-      .toBe(
-        `Step 26: converged on both flanks. wR = ${trace.right.widthMm.toFixed(6)} mm, wL = ${trace.left.widthMm.toFixed(6)} mm; ` +
+      .toContain(
+        `Fig. 1, box 26: converged on both flanks. wR = ${trace.right.widthMm.toFixed(6)} mm, wL = ${trace.left.widthMm.toFixed(6)} mm; ` +
           `the exact solver gives wR = ${e.halfWidthRightMm.toFixed(6)} mm, wL = ${e.halfWidthLeftMm.toFixed(6)} mm.`,
       );
     // Somewhere along the way: the left flank's own steps.
     await page.getByTestId('stepper-back').click();
-    await expect.poll(() => caption.textContent()).toMatch(/^Left flank \(-Y\) converged: wL = /);
+    await expect.poll(() => caption.textContent()).toMatch(/^Step \d+ of \d+\. Left flank \(-Y\) converged: wL = /);
     await page.close();
   });
 

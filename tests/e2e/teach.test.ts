@@ -9,6 +9,8 @@ import { compareForward } from '../../src/core/index';
 import { stepOverSweep } from '../../src/core/teaching';
 import { formatSignificant } from '../../src/core/units';
 import { forwardInput } from '../../src/core/validate';
+import { groupSteps, sceneToleranceMm } from '../../src/ui/views/stepGroups';
+import { traceFrames } from '../../src/worker/api';
 import { SHOTS, useSite } from './harness';
 
 const { open } = useSite('docs/teach');
@@ -113,6 +115,96 @@ describe('teacher: the comparison charts', () => {
         .evaluate((e) => Number.parseFloat(getComputedStyle(e).strokeWidth));
     expect(await width('bedi')).toBeGreaterThan(await width('sekine'));
     await page.getByTestId('comparison-chart').screenshot({ path: `${SHOTS}/teach-chart-highlight-bedi.png` });
+    await page.close();
+  });
+});
+
+describe('teacher: the step-through', () => {
+  const input = forwardInput(TOOL1, 'one-way', 0.1);
+  const frames = traceFrames(input).frames;
+  const steps = groupSteps(frames, sceneToleranceMm(3), 1);
+  const total = steps.length;
+
+  for (const vp of VIEWPORTS) {
+    for (const theme of THEMES) {
+      it(`${vp.name} ${theme}: one numbering, alike frames merged or explained, an honest d_s / Rcr gauge`, async () => {
+        const { page, errors } = await open(`?R=3&Rcr=1&rho=5&h=0.1&unit=mm&view=stepper&theme=${theme}`, vp);
+        const caption = page.getByTestId('stepper-caption');
+        const counter = page.getByTestId('stepper-counter');
+        await expect.poll(() => caption.textContent()).toMatch(/^Step 1 of \d+\. Right flank/);
+        // One numbering: the caption's step is the counter's, and the paper's are boxes of its Figure 1.
+        expect(total).toBeLessThan(frames.length);
+        expect(await counter.textContent()).toBe(`step 1 of ${total}`);
+        expect(((await caption.textContent()) ?? '').match(/step \d/gi)).toHaveLength(1);
+        expect(await caption.textContent()).toContain('Fig. 1, box 2 (Eq. 1)');
+        // The gauge: linear from 0, its scale shown, the bar as long as d_s / Rcr says.
+        const first = frames[0];
+        if (!first || first.dsMm === null) throw new Error('first frame has d_s');
+        const gauge = page.getByTestId('stepper-ds');
+        expect(await gauge.locator('svg').getAttribute('data-max')).toBe('1.25');
+        expect(await gauge.locator('.ds-tick').allTextContents()).toEqual([
+          '0',
+          '0.25',
+          '0.5',
+          '0.75',
+          '1 = Rcr',
+          '1.25',
+        ]);
+        const bar = await gauge.locator('.ds-bar').boundingBox();
+        const track = await gauge.locator('.ds-track').boundingBox();
+        if (!bar || !track) throw new Error('gauge not drawn');
+        expect(bar.width / track.width).toBeCloseTo(first.dsMm / 1 / 1.25, 2);
+        expect(await page.getByTestId('stepper-ds-text').textContent()).toMatch(/^ 0\.95178: d_s = 0\.951778 mm/);
+        // Forward through the trace: a merged search step says so, with the counter in step.
+        let merged = '';
+        for (let k = 2; k <= total && merged === ''; k++) {
+          await page.getByTestId('stepper-forward').click();
+          await expect.poll(() => counter.textContent()).toBe(`step ${k} of ${total}`);
+          const text = (await caption.textContent()) ?? '';
+          expect(text.startsWith(`Step ${k} of ${total}. `), text).toBe(true);
+          if (/Search passes .* shown as one/.test(text)) merged = text;
+        }
+        expect(merged).toMatch(/Search passes \d+ to \d+ shown as one \(\d+ passes: each narrows the range further/);
+        // The search has no d_s: the gauge says so instead of showing a bar.
+        expect(await page.getByTestId('stepper-ds-text').textContent()).toMatch(/no d_s here/);
+        expect(await gauge.locator('.ds-bar').getAttribute('width')).toBe('0.00');
+        await page.screenshot({ path: `${SHOTS}/teach-stepper-merged-${vp.name}-${theme}.png` });
+        // The flank's convergence looks like its last search pass: explained.
+        await page.getByTestId('stepper-last').click();
+        await expect
+          .poll(() => caption.textContent())
+          .toMatch(new RegExp(`^Step ${total} of ${total}\\. Fig\\. 1, box 26: converged\\.`));
+        await page.getByTestId('stepper-back').click();
+        await expect
+          .poll(() => caption.textContent())
+          .toMatch(/Left flank \(-Y\) converged: .*the search has stopped moving/);
+        await noHorizontalScroll(page);
+        await page.screenshot({ path: `${SHOTS}/teach-stepper-${vp.name}-${theme}.png` });
+        expect(errors).toEqual([]);
+        await page.close();
+      });
+    }
+  }
+
+  it('prefers-reduced-motion: Play shows one step per press, says so, and never animates', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.1&unit=mm&view=stepper', { width: 1440, height: 900 });
+    const counter = page.getByTestId('stepper-counter');
+    const note = page.getByTestId('stepper-motion-note');
+    await expect.poll(() => counter.textContent()).toBe(`step 1 of ${total}`);
+    expect(await note.isVisible()).toBe(false);
+    await page.emulateMedia({ reducedMotion: 'reduce' });
+    await expect.poll(() => note.isVisible()).toBe(true);
+    expect(await page.getByTestId('stepper-play').textContent()).toBe('Play (one step)');
+    await page.getByTestId('stepper-play').click();
+    await expect.poll(() => counter.textContent()).toBe(`step 2 of ${total}`);
+    await page.waitForTimeout(2000); // an animation would have moved on by now (700 ms a step)
+    expect(await counter.textContent()).toBe(`step 2 of ${total}`);
+    await page.screenshot({ path: `${SHOTS}/teach-stepper-reduced-motion.png` });
+    // Back to full motion: Play animates again.
+    await page.emulateMedia({ reducedMotion: 'no-preference' });
+    await expect.poll(() => note.isVisible()).toBe(false);
+    await page.getByTestId('stepper-play').click();
+    await expect.poll(() => counter.textContent(), { timeout: 6000 }).toMatch(/^step [4-9]/);
     await page.close();
   });
 });

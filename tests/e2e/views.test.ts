@@ -122,7 +122,9 @@ describe('teaching views in headless Chromium', () => {
   it('stepper: steps through the trace in the scene and reaches the converged P_hp', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.1&unit=mm&view=stepper');
     const caption = page.getByTestId('stepper-caption');
-    await expect.poll(() => caption.textContent()).toMatch(/Step 2 \(Eq\. 1\)/);
+    await expect
+      .poll(() => caption.textContent())
+      .toMatch(/^Step 1 of \d+\. Right flank \(\+Y\)\. Fig\. 1, box 2 \(Eq\. 1\)/);
     const frames = () =>
       page.evaluate(() => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames());
     const before = await frames();
