@@ -21,6 +21,7 @@ import { profilePolyline } from './geometry';
 import { PAPER_CONDITIONS, type PaperCondition, type ProcedureValues } from './paper';
 import { shapeOfTool } from './posture';
 import { PROCEDURE_KEYS, type ProcedureKey } from './procedures';
+import { noAnswerReason, type SweepGap, sweepGaps } from './sweepGaps';
 import type { InverseInput, PassPattern, ToolInput } from './validate';
 import { forwardInput, inverseInput, leavesNoScallop, scallopHeightLimits } from './validate';
 
@@ -219,13 +220,15 @@ export interface StepOverSweep {
   readonly axis: 'lead' | 'tilt';
   readonly angleDeg: number[];
   readonly values: { readonly [K in ProcedureKey]: Array<number | null> };
+  /** Per procedure, the runs of angles without an answer and why (empty where it always answers). */
+  readonly gaps: { readonly [K in ProcedureKey]: SweepGap[] };
 }
 
 /**
  * Sweeps the lead (geometrically from `fromDeg` to `toDeg`, dense at small angles) or the tilt
  * (linearly from `fromDeg` to `toDeg`) at a fixed tool, the other angle, pattern and h, always
  * including `includeDeg` when given. Every procedure's step-over L; null where h is at or above
- * the posture's limit, or where a procedure has no answer.
+ * the posture's limit, or where a procedure has no answer (with the reason in `gaps`).
  * @param tool validated tool (the swept angle's value in it is ignored).
  */
 export function stepOverSweep(
@@ -256,6 +259,9 @@ export function stepOverSweep(
   const values = Object.fromEntries(PROCEDURE_KEYS.map((k) => [k, [] as Array<number | null>])) as {
     [K in ProcedureKey]: Array<number | null>;
   };
+  const reasons = Object.fromEntries(PROCEDURE_KEYS.map((k) => [k, [] as Array<string | null>])) as {
+    [K in ProcedureKey]: Array<string | null>;
+  };
   for (const angle of angles) {
     const t: ToolInput = {
       toolRadiusMm: tool.toolRadiusMm,
@@ -272,7 +278,12 @@ export function stepOverSweep(
         const r = c.approximations[key];
         values[key].push(r.ok ? r.intervalMm : null);
       }
+      // Without an exact answer every procedure is blank there, for the exact solver's reason.
+      reasons[key].push(values[key].at(-1) !== null ? null : noAnswerReason(c === null ? 'exact' : key, t));
     }
   }
-  return { axis, angleDeg: angles, values };
+  const gaps = Object.fromEntries(PROCEDURE_KEYS.map((k) => [k, sweepGaps(angles, reasons[k])])) as {
+    [K in ProcedureKey]: SweepGap[];
+  };
+  return { axis, angleDeg: angles, values, gaps };
 }

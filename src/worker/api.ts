@@ -394,11 +394,11 @@ function sweep(input: ForwardInput, axis: 'lead' | 'tilt'): Sweep {
   const h = input.scallopHeightMm;
   if (axis === 'lead') {
     const s = stepOverSweep(input, input.pattern, h, 'lead', 0.5, 89, 120, input.leadAngleDeg);
-    return { angleDeg: s.angleDeg, values: s.values };
+    return { angleDeg: s.angleDeg, values: s.values, gaps: s.gaps };
   }
   const beta = input.tiltAngleDeg;
   const s = stepOverSweep(input, input.pattern, h, 'tilt', Math.min(-60, beta), Math.max(60, beta), 120, beta);
-  return { angleDeg: s.angleDeg, values: s.values };
+  return { angleDeg: s.angleDeg, values: s.values, gaps: s.gaps };
 }
 
 const half = (r: { ok: true; halfIntervalMm: number } | { ok: false }) => (r.ok ? r.halfIntervalMm : null);

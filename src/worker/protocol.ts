@@ -10,6 +10,7 @@ import type { Surface } from '../core/cylinder';
 import type { LookupGrid, LookupTable, LookupTool } from '../core/lookupTable';
 import type { ApproximationKey, ProcedureKey } from '../core/procedures';
 import type { RaTargetInput, RoughnessSummary } from '../core/raTarget';
+import type { SweepGap } from '../core/sweepGaps';
 import type { PaperTableRow } from '../core/teaching';
 import type { ForwardInput, InputError, InverseInput, PassPattern } from '../core/validate';
 import type { Vec3 } from '../core/vec';
@@ -231,6 +232,8 @@ export interface FormulaModels {
 export interface Sweep {
   readonly angleDeg: readonly number[];
   readonly values: { readonly [K in ProcedureKey]: ReadonlyArray<number | null> };
+  /** Per procedure, the angle ranges without an answer and why (words with no numbers). */
+  readonly gaps: { readonly [K in ProcedureKey]: readonly SweepGap[] };
 }
 
 /** Cross-feed curves (flat y, z from the contact, mm). */
@@ -268,7 +271,7 @@ export type TeachReply =
       readonly reason: string | null;
     };
 
-export type { ApproximationKey, InputError, ProcedureKey, RaTargetInput, RoughnessSummary };
+export type { ApproximationKey, InputError, ProcedureKey, RaTargetInput, RoughnessSummary, SweepGap };
 
 /**
  * The `table` job: the lookup table of one validated tool, pattern and surface (mm) over a grid

@@ -58,7 +58,7 @@ describe('calculator page in headless Chromium', () => {
     expect(await frames(page)).toBe(before); // no busy render loop
     // Switching between teaching views that do not touch the 3D scene draws no frame either.
     await page.getByRole('tab', { name: 'L against lead and tilt' }).click();
-    await page.getByTestId('comparison-chart').locator('canvas').first().waitFor();
+    await page.getByTestId('comparison-chart').locator('svg.chart-svg').first().waitFor();
     await page.getByRole('tab', { name: 'Formulas' }).click();
     await page.getByTestId('formulas').locator('math').first().waitFor();
     await page.waitForTimeout(300);

@@ -56,7 +56,7 @@ describe('strict Content-Security-Policy', () => {
         const panel = page.locator(`#panel-${view}`);
         const ready = {
           profile: panel.locator('polygon.scallop'),
-          chart: panel.locator('canvas').first(),
+          chart: panel.locator('svg.chart-svg').first(),
           tables: panel.locator('table').first(),
           stepper: page.getByTestId('stepper-caption').filter({ hasText: /\d/ }),
           formulas: panel.locator('math').first(),

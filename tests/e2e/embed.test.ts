@@ -31,7 +31,7 @@ describe('dark mode', () => {
     await expect.poll(() => sceneShows(page, SCENE_BG.dark)).toBeGreaterThan(0.3);
     // The chart's curves take the dark palette: Sekine's amber #fbbf24, not the light #b45309.
     const lead = page.getByTestId('chart-lead');
-    await lead.locator('canvas').waitFor();
+    await lead.locator('svg.chart-svg').waitFor();
     await expect.poll(() => colourShare(page, lead, '#fbbf24', 40)).toBeGreaterThan(0.0005);
     expect(await colourShare(page, lead, '#b45309', 30)).toBe(0);
     await page.screenshot({ path: `${SHOTS}/theme-dark-system-1400.png` });

@@ -176,11 +176,11 @@ describe('tool posture on the page', () => {
   it('the chart of L against tilt at the current lead, beside L against lead', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=chart');
     const chart = page.getByTestId('comparison-chart');
-    await page.getByTestId('chart-tilt').locator('canvas').waitFor();
-    expect(await page.getByTestId('chart-tilt').locator('.u-title').textContent()).toMatch(
-      /L against tilt beta .*current beta = 5\)/,
+    await page.getByTestId('chart-tilt').locator('svg.chart-svg').waitFor();
+    expect(await page.getByTestId('chart-tilt').locator('.chart-title').textContent()).toMatch(
+      /L \[mm\] against tilt beta \[deg\] .*current beta = 5\)/,
     );
-    expect(await page.getByTestId('chart-lead').locator('.u-title').textContent()).toMatch(/current rho = 5\)/);
+    expect(await page.getByTestId('chart-lead').locator('.chart-title').textContent()).toMatch(/current rho = 5\)/);
     await expect
       .poll(() => page.getByTestId('chart-summary').textContent())
       .toMatch(new RegExp(`beta = 5 deg, L \\[mm\\]: Exact \\(3D\\) ${exact(5, 'one-way').intervalMm.toFixed(4)}`));
@@ -191,19 +191,21 @@ describe('tool posture on the page', () => {
   it('the stepper runs the procedure on both flanks and ends on both widths', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&tilt=8&h=0.05&unit=mm&view=stepper');
     const caption = page.getByTestId('stepper-caption');
-    await expect.poll(() => caption.textContent()).toMatch(/^Right flank \(\+Y\)\. Step 2 \(Eq\. 1\)/);
+    await expect
+      .poll(() => caption.textContent())
+      .toMatch(/^Step 1 of \d+\. Right flank \(\+Y\)\. Fig\. 1, box 2 \(Eq\. 1\)/);
     const trace = traceProcedure(forwardInput(tool(8), 'one-way', 0.05));
     const e = exact(8, 'one-way');
     await page.getByTestId('stepper-last').click();
     await expect
       .poll(() => caption.textContent())
-      .toBe(
-        `Step 26: converged on both flanks. wR = ${trace.right.widthMm.toFixed(6)} mm, wL = ${trace.left.widthMm.toFixed(6)} mm; ` +
+      .toContain(
+        `Fig. 1, box 26: converged on both flanks. wR = ${trace.right.widthMm.toFixed(6)} mm, wL = ${trace.left.widthMm.toFixed(6)} mm; ` +
           `the exact solver gives wR = ${e.halfWidthRightMm.toFixed(6)} mm, wL = ${e.halfWidthLeftMm.toFixed(6)} mm.`,
       );
     // Somewhere along the way: the left flank's own steps.
     await page.getByTestId('stepper-back').click();
-    await expect.poll(() => caption.textContent()).toMatch(/^Left flank \(-Y\) converged: wL = /);
+    await expect.poll(() => caption.textContent()).toMatch(/^Step \d+ of \d+\. Left flank \(-Y\) converged: wL = /);
     await page.close();
   });
 

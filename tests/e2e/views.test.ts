@@ -64,8 +64,8 @@ describe('teaching views in headless Chromium', () => {
   it('chart: L against rho, the signed errors and L against tilt, with the values at the current posture from the solver', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=chart');
     const chart = page.getByTestId('comparison-chart');
-    await chart.locator('canvas').first().waitFor();
-    expect(await chart.locator('canvas').count()).toBe(3);
+    await chart.locator('svg.chart-svg').first().waitFor();
+    expect(await chart.locator('svg.chart-svg').count()).toBe(3);
     const c = compareForward(tool(5, 0.05));
     const summary = page.getByTestId('chart-summary');
     await expect
@@ -79,22 +79,15 @@ describe('teaching views in headless Chromium', () => {
     await expect
       .poll(() => summary.textContent())
       .toMatch(new RegExp(`rho = 5\\.1 deg.*Exact \\(3D\\) ${c2.exact.intervalMm.toFixed(4)}`));
-    expect(await chart.locator('.u-title').first().textContent()).toMatch(/current rho = 5\.1/);
+    expect(await chart.locator('.chart-title').first().textContent()).toMatch(/current rho = 5\.1/);
     // The dashed current-rho marker: on the default log axis 5.1 deg sits near the middle of
     // 0.5-89 deg (log ratio 0.45); on a linear axis near the left edge (0.05).
     const markerAt = () =>
       page.evaluate(() => {
-        const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="chart-lead"] canvas');
-        const g = canvas?.getContext('2d');
-        if (!canvas || !g) return -1;
-        const data = g.getImageData(0, 0, canvas.width, canvas.height).data;
-        const counts = new Array<number>(canvas.width).fill(0);
-        for (let i = 0; i < data.length; i += 4) {
-          const red = Math.abs((data[i] as number) - 0xe1) + Math.abs((data[i + 1] as number) - 0x1d);
-          const column = (i / 4) % canvas.width;
-          if (red + Math.abs((data[i + 2] as number) - 0x48) < 60) counts[column] = (counts[column] ?? 0) + 1;
-        }
-        return counts.indexOf(Math.max(...counts)) / canvas.width;
+        const marker = document.querySelector('[data-testid="chart-lead"] .chart-marker')?.getBoundingClientRect();
+        const frame = document.querySelector('[data-testid="chart-lead"] .chart-frame')?.getBoundingClientRect();
+        if (!marker || !frame) return -1;
+        return (marker.left + marker.width / 2 - frame.left) / frame.width;
       });
     await expect.poll(markerAt).toBeGreaterThan(0.35);
     await page.getByTestId('chart-rho-axis').selectOption('linear');
@@ -129,7 +122,9 @@ describe('teaching views in headless Chromium', () => {
   it('stepper: steps through the trace in the scene and reaches the converged P_hp', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.1&unit=mm&view=stepper');
     const caption = page.getByTestId('stepper-caption');
-    await expect.poll(() => caption.textContent()).toMatch(/Step 2 \(Eq\. 1\)/);
+    await expect
+      .poll(() => caption.textContent())
+      .toMatch(/^Step 1 of \d+\. Right flank \(\+Y\)\. Fig\. 1, box 2 \(Eq\. 1\)/);
     const frames = () =>
       page.evaluate(() => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames());
     const before = await frames();

@@ -1,56 +1,72 @@
 /**
- * Comparison charts (uPlot): the step-over L of every procedure against the lead rho and against
- * the tilt beta (the other angle, the tool, the pattern and h fixed), each with the current angle
- * dashed, and each approximation's signed error against exact along the lead.
+ * Comparison charts (SVG, lineChart.ts): the step-over L of every procedure against the lead rho
+ * and against the tilt beta (the other angle, the tool, the pattern and h fixed), each with the
+ * current angle dashed, and each approximation's signed error against exact along the lead. Each
+ * chart has a legend with every procedure's value at the current angle, and says where a
+ * procedure has no answer, and why.
  */
-import uPlot from 'uplot';
-import 'uplot/dist/uPlot.min.css';
 import { APPROXIMATION_KEYS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures';
-import { fromMm, unitSymbol } from '../../core/units';
-import type { Sweep } from '../../worker/protocol';
-import { procedureColour } from '../colours';
-import { formatDeg, formatLen } from '../format';
-import { currentTheme, onThemeChange, themeColour } from '../theme';
+import { formatSignificant, fromMm, unitSymbol } from '../../core/units';
+import type { Sweep, SweepGap } from '../../worker/protocol';
+import { formatDeg, formatLen, formatSignedLen } from '../format';
 import { html, type TeachingView, type ViewContext } from './common';
+import { type ChartGapBand, type ChartLine, lineChart } from './lineChart';
+import './chart.css';
 
-/** One chart: its box, its plot once built, the keys it shows and the angle it marks. */
+/** Height of each plot area (CSS px): tall enough to read the curves apart. */
+const PLOT_HEIGHT_PX = 280;
+
+/** One chart's parts: its figure (title, picture, legend, notes on missing answers). */
 interface Chart {
-  readonly box: HTMLElement;
-  readonly keys: readonly ProcedureKey[];
-  plot: uPlot | null;
-  current: number;
+  readonly figure: HTMLElement;
+  readonly title: HTMLElement;
+  readonly picture: HTMLElement;
+  readonly legend: HTMLElement;
+  readonly notes: HTMLElement;
+}
+
+/** What one chart shows. */
+interface ChartData {
+  readonly title: string;
+  readonly x: readonly number[];
+  readonly logX: boolean;
+  readonly lines: readonly ChartLine[];
+  /** Factor from the lines' values to the axis unit. */
+  readonly yFactor: number;
+  readonly gaps: { readonly [K in ProcedureKey]: readonly SweepGap[] };
+  readonly current: number;
+  /** Index of the current angle among the samples (-1 when it is not one). */
+  readonly at: number;
+  readonly angleName: string;
+  readonly xLabel: string;
+  readonly yLabel: string;
+  readonly value: (v: number) => string;
+}
+
+function chart(testId: string): Chart {
+  const figure = html('figure', { class: 'chart-box', 'data-testid': testId });
+  const title = html('figcaption', { class: 'chart-title' });
+  const picture = html('div', { class: 'chart-picture' });
+  const legend = html('ul', { class: 'chart-legend', 'data-testid': `${testId}-legend` });
+  const notes = html('ul', { class: 'chart-gaps', 'data-testid': `${testId}-gaps` });
+  figure.append(title, legend, picture, notes);
+  return { figure, title, picture, legend, notes };
 }
 
 export class ChartView implements TeachingView {
   readonly id = 'chart';
   readonly title = 'L against lead and tilt';
   readonly element = html('div', { class: 'view-chart', 'data-testid': 'comparison-chart' });
-  private readonly lead: Chart = {
-    box: html('div', { class: 'chart-box', 'data-testid': 'chart-lead' }),
-    keys: PROCEDURE_KEYS,
-    plot: null,
-    current: 0,
-  };
-  private readonly error: Chart = {
-    box: html('div', { class: 'chart-box', 'data-testid': 'chart-error' }),
-    keys: APPROXIMATION_KEYS,
-    plot: null,
-    current: 0,
-  };
-  private readonly tilt: Chart = {
-    box: html('div', { class: 'chart-box', 'data-testid': 'chart-tilt' }),
-    keys: PROCEDURE_KEYS,
-    plot: null,
-    current: 0,
-  };
+  private readonly lead = chart('chart-lead');
+  private readonly error = chart('chart-error');
+  private readonly tilt = chart('chart-tilt');
   private readonly errorUnit = html('select', { 'aria-label': 'Error unit', 'data-testid': 'chart-error-unit' });
   private readonly rhoAxis = html('select', { 'aria-label': 'Lead angle axis', 'data-testid': 'chart-rho-axis' });
   /** The charted values at the current posture, as text (charts are pictures to a screen reader). */
   private readonly summary = html('p', { class: 'view-note', 'data-testid': 'chart-summary', 'aria-live': 'polite' });
   private ctx: ViewContext | null = null;
   private highlighted: ProcedureKey | null = null;
-  /** Unit, error unit, axis and width the charts were built for. */
-  private shape = '';
+  private drawnWidthPx = 0;
 
   constructor() {
     this.errorUnit.append(
@@ -66,33 +82,15 @@ export class ChartView implements TeachingView {
     this.rhoAxis.addEventListener('change', () => this.ctx && this.rebuild(this.ctx));
     const tools = html('div', { class: 'view-tools' });
     tools.append(this.errorUnit, this.rhoAxis);
-    this.element.append(this.summary, this.lead.box, tools, this.error.box, this.tilt.box);
-    // Canvas colours are read when the charts are built: a new theme builds them again.
-    onThemeChange(() => this.ctx && this.rebuild(this.ctx));
+    this.element.append(this.summary, this.lead.figure, tools, this.error.figure, this.tilt.figure);
+    // The drawing is laid out for its width: draw again when the box changes width.
+    new ResizeObserver(() => {
+      if (this.ctx && Math.abs(this.width() - this.drawnWidthPx) > 4) this.rebuild(this.ctx);
+    }).observe(this.element);
   }
 
   private width(): number {
-    return Math.max(280, Math.min(900, this.element.clientWidth || 600));
-  }
-
-  /** Draws the dashed line at the chart's current angle. */
-  private marker(chart: Chart): uPlot.Plugin {
-    return {
-      hooks: {
-        draw: (u: uPlot) => {
-          const x = u.valToPos(chart.current, 'x', true);
-          const ctx = u.ctx;
-          ctx.save();
-          ctx.strokeStyle = themeColour('--chart-marker') || '#e11d48';
-          ctx.setLineDash([4, 4]);
-          ctx.beginPath();
-          ctx.moveTo(x, u.bbox.top);
-          ctx.lineTo(x, u.bbox.top + u.bbox.height);
-          ctx.stroke();
-          ctx.restore();
-        },
-      },
-    };
+    return Math.max(240, Math.min(960, this.element.clientWidth || 600));
   }
 
   update(ctx: ViewContext): void {
@@ -104,109 +102,166 @@ export class ChartView implements TeachingView {
     const { lead, tilt } = ctx.data.sweeps;
     const rho = ctx.data.forward.leadAngleDeg;
     const beta = ctx.data.forward.tiltAngleDeg;
-    this.lead.current = this.error.current = rho;
-    this.tilt.current = beta;
     const unit = unitSymbol(ctx.unit);
-    const k = fromMm(1, ctx.unit);
-    const scaled = (s: Sweep): uPlot.AlignedData => [
-      [...s.angleDeg],
-      ...PROCEDURE_KEYS.map((key) => s.values[key].map((v) => (v === null ? null : v * k))),
-    ];
     const pct = this.errorUnit.value === 'pct';
-    const log = this.rhoAxis.value === 'log';
+    const logX = this.rhoAxis.value === 'log';
+    const leadOnly = beta !== 0;
+    const len = (v: number) => formatLen(v, ctx.unit);
     const exact = lead.values.exact;
-    const errorData: uPlot.AlignedData = [
-      [...lead.angleDeg],
-      ...APPROXIMATION_KEYS.map((key) =>
-        lead.values[key].map((v, i) => {
-          const e = exact[i];
-          if (v === null || e === null || e === undefined) return null;
-          return pct ? (100 * (v - e)) / e : (v - e) * k;
-        }),
-      ),
+    const errorLines = APPROXIMATION_KEYS.map((key) => ({
+      key,
+      values: lead.values[key].map((v, i) => {
+        const e = exact[i];
+        if (v === null || e === null || e === undefined || e === 0) return null;
+        return pct ? (100 * (v - e)) / e : v - e;
+      }),
+    }));
+    const lines = (s: Sweep, keys: readonly ProcedureKey[]) => keys.map((key) => ({ key, values: s.values[key] }));
+    const k = fromMm(1, ctx.unit);
+    const common = { logX, current: rho, at: lead.angleDeg.indexOf(rho), angleName: 'rho' };
+    const specs: Array<[Chart, ChartData]> = [
+      [
+        this.lead,
+        {
+          ...common,
+          title: `L [${unit}] against lead rho [deg] (R, Rcr, beta, h fixed; dashed: current rho = ${formatDeg(rho)})`,
+          x: lead.angleDeg,
+          lines: lines(lead, PROCEDURE_KEYS),
+          yFactor: k,
+          gaps: lead.gaps,
+          xLabel: 'lead angle rho [deg]',
+          yLabel: `L [${unit}]`,
+          value: len,
+        },
+      ],
+      [
+        this.error,
+        {
+          ...common,
+          title: `Signed error of each approximation against exact, along the lead [${pct ? '%' : unit}]`,
+          x: lead.angleDeg,
+          lines: errorLines,
+          yFactor: pct ? 1 : k,
+          gaps: lead.gaps,
+          xLabel: 'lead angle rho [deg]',
+          yLabel: pct ? 'error [%]' : `error [${unit}]`,
+          value: pct ? (v) => `${v > 0 ? '+' : ''}${v.toFixed(2)}` : (v) => formatSignedLen(v, ctx.unit),
+        },
+      ],
+      [
+        this.tilt,
+        {
+          title: `L [${unit}] against tilt beta [deg] (R, Rcr, rho, h fixed; dashed: current beta = ${formatDeg(beta)})`,
+          x: tilt.angleDeg,
+          logX: false,
+          lines: lines(tilt, PROCEDURE_KEYS),
+          yFactor: k,
+          gaps: tilt.gaps,
+          current: beta,
+          at: tilt.angleDeg.indexOf(beta),
+          angleName: 'beta',
+          xLabel: 'tilt angle beta [deg]',
+          yLabel: `L [${unit}]`,
+          value: len,
+        },
+      ],
     ];
+    this.drawnWidthPx = this.width();
+    for (const [c, data] of specs) this.draw(c, data, leadOnly);
     const at = tilt.angleDeg.indexOf(beta);
     this.summary.textContent =
       at < 0
         ? NO_SUMMARY
         : `At rho = ${formatDeg(rho)} deg, beta = ${formatDeg(beta)} deg, L [${unit}]: ${PROCEDURE_KEYS.map((key) => {
             const v = tilt.values[key][at];
-            return `${PROCEDURES[key].shortLabel} ${v === null || v === undefined ? 'n/a' : formatLen(v, ctx.unit)}`;
+            return `${PROCEDURES[key].shortLabel} ${v === null || v === undefined ? 'n/a' : len(v)}`;
           }).join(', ')}.`;
-    const titles = {
-      lead: `L against lead rho (R, Rcr, beta, h fixed; dashed: current rho = ${formatDeg(rho)})`,
-      error: 'Signed error of each approximation against exact, along the lead',
-      tilt: `L against tilt beta (R, Rcr, rho, h fixed; dashed: current beta = ${formatDeg(beta)})`,
-    };
-    const leadOnly = beta !== 0;
-    const theme = currentTheme();
-    const key = `${unit}|${pct}|${log}|${this.width()}|${leadOnly}|${theme}`;
-    const charts: Array<[Chart, uPlot.AlignedData, string]> = [
-      [this.lead, scaled(lead), titles.lead],
-      [this.error, errorData, titles.error],
-      [this.tilt, scaled(tilt), titles.tilt],
-    ];
-    if (key === this.shape && charts.every(([c]) => c.plot !== null)) {
-      // Same axes: new data only (cheaper than building the charts again).
-      for (const [c, data, title] of charts) {
-        c.plot?.setData(data);
-        const t = c.box.querySelector('.u-title');
-        if (t) t.textContent = title;
-      }
-      return;
-    }
-    this.shape = key;
-    const series = (keys: readonly ProcedureKey[]): uPlot.Series[] => [
-      { label: 'angle [deg]' },
-      ...keys.map((k) => ({
-        label: `${PROCEDURES[k].shortLabel}${leadOnly && PROCEDURES[k].leadOnly ? ' (lead only)' : ''}`,
-        stroke: procedureColour(k, theme),
-        width: k === 'exact' ? 2.5 : 1.6,
-        spanGaps: false,
-      })),
-    ];
-    const ink = themeColour('--fg') || '#1d2330';
-    const grid = themeColour('--line') || '#d8dde6';
-    const options = (chart: Chart, title: string, xLabel: string, yLabel: string, logX: boolean): uPlot.Options => ({
-      title,
-      width: this.width(),
-      height: 200,
-      focus: { alpha: 0.25 },
-      cursor: { focus: { prox: 16 } },
-      // The charted range exactly (a log scale would otherwise snap out to whole decades).
-      scales: { x: { time: false, distr: logX ? 3 : 1, range: (_u, min, max) => [min, max] } },
-      axes: [xLabel, yLabel].map((label) => ({ label, stroke: ink, grid: { stroke: grid }, ticks: { stroke: grid } })),
-      plugins: [this.marker(chart)],
-      series: series(chart.keys),
-    });
-    const specs: Array<[Chart, uPlot.AlignedData, uPlot.Options]> = [
-      [this.lead, scaled(lead), options(this.lead, titles.lead, 'lead angle rho [deg]', `L [${unit}]`, log)],
-      [
-        this.error,
-        errorData,
-        options(this.error, titles.error, 'lead angle rho [deg]', pct ? 'error [%]' : `error [${unit}]`, log),
-      ],
-      [this.tilt, scaled(tilt), options(this.tilt, titles.tilt, 'tilt angle beta [deg]', `L [${unit}]`, false)],
-    ];
-    for (const [chart, data, opts] of specs) {
-      chart.plot?.destroy();
-      chart.plot = new uPlot(opts, data, chart.box);
-    }
     this.highlight(this.highlighted);
+  }
+
+  private draw(c: Chart, data: ChartData, leadOnly: boolean): void {
+    const keys = data.lines.map((l) => l.key);
+    const bands: ChartGapBand[] = keys.flatMap((key) =>
+      data.gaps[key].map((g) => ({ key, from: g.fromDeg, to: g.toDeg, reason: g.reason })),
+    );
+    c.title.textContent = data.title;
+    c.picture.replaceChildren(
+      lineChart({
+        widthPx: this.drawnWidthPx,
+        plotHeightPx: PLOT_HEIGHT_PX,
+        x: data.x,
+        logX: data.logX,
+        lines: data.lines,
+        yFactor: data.yFactor,
+        gaps: bands,
+        markerX: data.current,
+        xLabel: data.xLabel,
+        yLabel: data.yLabel,
+        description: `${data.title}. The values at the current angle are listed beside the chart.`,
+      }),
+    );
+    // The legend: each procedure's value at the current angle, without hovering.
+    c.legend.replaceChildren(
+      html('li', { class: 'chart-legend-head' }, `at ${data.angleName} = ${formatDeg(data.current)} deg:`),
+      ...data.lines.map((line) => {
+        const v = data.at < 0 ? null : (line.values[data.at] ?? null);
+        const name = `${PROCEDURES[line.key].shortLabel}${leadOnly && PROCEDURES[line.key].leadOnly ? ' (lead only)' : ''}`;
+        const item = html('li', { class: 'legend-item', 'data-procedure': line.key });
+        item.append(
+          html('span', { class: 'swatch' }),
+          html('span', { class: 'legend-name' }, name),
+          html(
+            'span',
+            { class: 'legend-value', 'data-testid': `${c.figure.dataset.testid}-value-${line.key}` },
+            v === null || !Number.isFinite(v) ? 'n/a (see below)' : data.value(v),
+          ),
+        );
+        return item;
+      }),
+    );
+    c.notes.replaceChildren(...gapNotes(keys, data.gaps, data.angleName).map((t) => html('li', {}, t)));
   }
 
   highlight(key: ProcedureKey | null): void {
     this.highlighted = key;
-    for (const chart of [this.lead, this.error, this.tilt]) {
-      if (!chart.plot) continue;
-      const idx = key === null ? -1 : chart.keys.indexOf(key);
-      chart.plot.setSeries(idx >= 0 ? idx + 1 : null, { focus: idx >= 0 });
+    for (const el of this.element.querySelectorAll('[data-procedure]')) {
+      el.classList.toggle('chart-focus', key !== null && el.getAttribute('data-procedure') === key);
+      el.classList.toggle('chart-dim', key !== null && el.getAttribute('data-procedure') !== key);
     }
   }
 
   setVisible(visible: boolean): void {
     if (visible && this.ctx) this.rebuild(this.ctx);
   }
+}
+
+/**
+ * One sentence per distinct gap: the procedures without an answer over one range of the angle,
+ * and why (procedures sharing the same range and reason are named together).
+ */
+export function gapNotes(
+  keys: readonly ProcedureKey[],
+  gaps: { readonly [K in ProcedureKey]: readonly SweepGap[] },
+  angleName: string,
+): string[] {
+  const groups = new Map<string, { names: string[]; gap: SweepGap }>();
+  for (const key of keys) {
+    for (const gap of gaps[key]) {
+      const id = `${gap.fromDeg}|${gap.toDeg}|${gap.reason}`;
+      const g = groups.get(id) ?? { names: [], gap };
+      g.names.push(PROCEDURES[key].shortLabel);
+      groups.set(id, g);
+    }
+  }
+  return [...groups.values()].map(({ names, gap }) => {
+    // The edges are samples: the true edge lies between a sample and the next one.
+    const deg = (d: number) => formatSignificant(d, { digits: 3, trimZeros: true });
+    const range =
+      gap.fromDeg === gap.toDeg
+        ? `at about ${angleName} = ${deg(gap.fromDeg)} deg`
+        : `for ${angleName} from about ${deg(gap.fromDeg)} to ${deg(gap.toDeg)} deg`;
+    return `No answer from ${names.join(', ')} ${range}: ${gap.reason}.`;
+  });
 }
 
 const NO_SUMMARY = 'The current posture is outside the charted range.';
