@@ -101,6 +101,7 @@ export class CalculatorApp {
     this.simulation = new SimulationLoader((info) => this.restarted('simulation', info));
     const sceneRoot = must<HTMLElement>(root, '.scene');
     this.scene = new SceneSlot(() => import('../render/scene').then(({ ToolScene }) => new ToolScene(sceneRoot)));
+    this.sceneSection = must(root, '.view');
     this.scene.onFrame = () => this.observer.frame?.(this.fresh.shown.kind === 'current');
     this.fields = new FieldsPanel(root, {
       onField: (key, text) => this.change(withField(this.state, key, text)),
@@ -108,6 +109,8 @@ export class CalculatorApp {
       onUnit: (unit: Unit) => this.change(convertState(this.state, unit)),
       onPattern: (pattern: PassPattern) => this.change({ ...this.state, pattern }),
       onTarget: (target: Target) => this.change({ ...this.state, target }),
+      onSurface: (surface) => this.change({ ...this.state, surface }),
+      onSurfaceAxis: (surfaceAxis) => this.change({ ...this.state, surfaceAxis }),
       onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
     });
     // An embedded calculator without a teaching view shows none: no views, no views' worker.
@@ -119,7 +122,9 @@ export class CalculatorApp {
             display: { showTraceFrame: (frame) => this.scene.run('trace', (s) => s.showTraceFrame(frame)) },
             initialView: requested ?? 'profile',
             onLoadCondition: (c) =>
-              this.change(withValues({ ...this.state, mode: 'forward', pattern: 'one-way' }, { ...c, tilt: 0 })),
+              this.change(
+                withValues({ ...this.state, mode: 'forward', pattern: 'one-way', surface: 'plane' }, { ...c, tilt: 0 }),
+              ),
             onRestart: (info) => this.restarted('views', info),
             surface: this.simulation,
           });
@@ -143,6 +148,8 @@ export class CalculatorApp {
   }
 
   private readonly highlighter: Highlighter;
+  /** The 3D view's section (marked `cylinder` while the scene shows one: its legend follows). */
+  private readonly sceneSection: HTMLElement;
 
   /** Read by the e2e build's probe (and handy in a debugger). */
   get diagnostics() {
@@ -191,8 +198,13 @@ export class CalculatorApp {
     if (this.sceneDrawn?.reply !== reply || this.sceneDrawn.unit !== unit) {
       this.sceneDrawn = { reply, unit };
       const y0 = reply.exact.contactOffsetMm;
+      const surface = reply.scene.surface;
+      const cylinder = surface.kind === 'cylinder';
+      this.sceneSection.classList.toggle('cylinder', cylinder);
+      for (const e of this.sceneSection.querySelectorAll<HTMLElement>('.legend .plane-only, .legend .cylinder-only'))
+        e.hidden = e.classList.contains('plane-only') === cylinder;
       const labels = {
-        interval: `L = ${formatLenUnit(reply.exact.intervalMm, unit)}`,
+        interval: `L = ${formatLenUnit(reply.exact.intervalMm, unit)}${cylinder && surface.axis === 'feed' ? ' (arc)' : ''}`,
         contactOffset: y0 === 0 ? null : `y0 = ${formatSignedLen(y0, unit)} ${unitSymbol(unit)}`,
       };
       this.scene.run('update', (s) => s.update(reply.scene, labels));

@@ -21,6 +21,14 @@ interface Chart {
   current: number;
 }
 
+/** On a cylinder, what the charts' exact curve is and what the approximations' are. */
+function cylinderSummary(ctx: ViewContext): string {
+  const s = ctx.data.forward.surface;
+  if (s.kind !== 'cylinder') return '';
+  const side = s.radiusMm > 0 ? 'convex' : 'concave';
+  return ` On this ${side} cylinder (axis ${s.axis === 'feed' ? 'along' : 'across'} the feed) the exact curve is the cylinder's (none where the posture would gouge the surface or h is beyond its flanks); the approximations are as on a plane, as in the table.`;
+}
+
 export class ChartView implements TeachingView {
   readonly id = 'chart';
   readonly title = 'L against lead and tilt';
@@ -130,7 +138,7 @@ export class ChartView implements TeachingView {
         : `At rho = ${formatDeg(rho)} deg, beta = ${formatDeg(beta)} deg, L [${unit}]: ${PROCEDURE_KEYS.map((key) => {
             const v = tilt.values[key][at];
             return `${PROCEDURES[key].shortLabel} ${v === null || v === undefined ? 'n/a' : formatLen(v, ctx.unit)}`;
-          }).join(', ')}.`;
+          }).join(', ')}.${cylinderSummary(ctx)}`;
     const titles = {
       lead: `L against lead rho (R, Rcr, beta, h fixed; dashed: current rho = ${formatDeg(rho)})`,
       error: 'Signed error of each approximation against exact, along the lead',

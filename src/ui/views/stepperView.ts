@@ -109,6 +109,16 @@ export class StepperView implements TeachingView {
     this.pause();
     this.ctx = ctx;
     this.frames = ctx.data.frames;
+    if (ctx.data.cylinder !== null) {
+      // The paper's procedure searches the torus against the h pseudo plane: a plane's construction.
+      this.caption.textContent =
+        "The paper's 3D procedure (Figure 1) searches the torus sections against the h pseudo plane, so it is shown for a plane only. On this cylinder the exact solver works on the cylinder itself (see the results and the Cross-feed profile); choose a plane to step through the procedure.";
+      this.counter.textContent = '';
+      this.meter.value = 0;
+      this.meterText.textContent = '';
+      this.display.showTraceFrame(null);
+      return;
+    }
     this.go(Math.min(this.index, Math.max(0, this.frames.length - 1)));
   }
 
