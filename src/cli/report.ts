@@ -7,6 +7,7 @@ import {
   type ApproximationKey,
   CORRECTED_KEYS,
   type CorrectedKey,
+  CURVATURE_ROWS,
   type ExactForward,
   type ForwardComparison,
   type ForwardEstimate,
@@ -146,9 +147,7 @@ function simulationLines(sim: SimulationRun, exactCuspMm: number, exact: Roughne
 
 /** Label of a curvature row: the plane's answer, or a procedure's circle corrected for the curvature. */
 function curvatureLabel(key: CorrectedKey | 'plane'): string {
-  return key === 'plane'
-    ? 'Plane, exact (curvature ignored)'
-    : `${PROCEDURES[key].shortLabel}, corrected (1/rho = 1/Reff + 1/Rs)`;
+  return CURVATURE_ROWS[key === 'plane' ? 'plane' : (`${key}Corrected` as const)].label;
 }
 
 /** Notes under a table, numbered; returns the marker of the note just added. */

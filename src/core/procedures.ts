@@ -114,3 +114,58 @@ export const PROCEDURES: Readonly<Record<ProcedureKey, ProcedureInfo>> = {
     leadOnly: false,
   },
 };
+
+/**
+ * The rows a cylinder adds beside the exact answer (compare.ts, CurvatureComparison): the plane's
+ * exact answer, which ignores the curvature, and the usual correction `1/rho = 1/Reff + 1/Rs`
+ * applied to each procedure that has an effective radius. Labels as the command line prints them.
+ */
+export const CURVATURE_ROW_KEYS = [
+  'plane',
+  'sekineCorrected',
+  'redonnetCorrected',
+  'osculatingCorrected',
+  'cornerBallCorrected',
+] as const;
+
+export type CurvatureRowKey = (typeof CURVATURE_ROW_KEYS)[number];
+
+export interface CurvatureRowInfo {
+  readonly key: CurvatureRowKey;
+  /** The procedure whose effective radius is corrected; null for the plane's answer. */
+  readonly corrects: 'sekine' | 'redonnet' | 'osculating' | 'cornerBall' | null;
+  readonly label: string;
+  readonly shortLabel: string;
+  /** Colour in every view (hex): the corrected procedure's own hue, darker; slate for the plane. */
+  readonly colour: string;
+  readonly assumes: string;
+}
+
+const corrected = (
+  key: CurvatureRowKey,
+  base: 'sekine' | 'redonnet' | 'osculating' | 'cornerBall',
+  colour: string,
+): CurvatureRowInfo => ({
+  key,
+  corrects: base,
+  label: `${PROCEDURES[base].shortLabel}, corrected (1/rho = 1/Reff + 1/Rs)`,
+  shortLabel: `${PROCEDURES[base].shortLabel}, corrected`,
+  colour,
+  assumes: `${PROCEDURES[base].shortLabel}'s circle of radius Reff with the usual second-order curvature correction: the combined radius 1/rho = 1/Reff + 1/Rs (Rs signed; across the axis the surface is straight across the feed, so rho = Reff) in L = 2 sqrt(2 rho h - h^2).`,
+});
+
+export const CURVATURE_ROWS: Readonly<Record<CurvatureRowKey, CurvatureRowInfo>> = {
+  plane: {
+    key: 'plane',
+    corrects: null,
+    label: 'Plane, exact (curvature ignored)',
+    shortLabel: 'Plane (curvature ignored)',
+    colour: '#475569',
+    assumes:
+      "The exact answer for a plane at the same h: what a calculator that ignores the surface's curvature gives.",
+  },
+  sekineCorrected: corrected('sekineCorrected', 'sekine', '#78350f'),
+  redonnetCorrected: corrected('redonnetCorrected', 'redonnet', '#4c1d95'),
+  osculatingCorrected: corrected('osculatingCorrected', 'osculating', '#14532d'),
+  cornerBallCorrected: corrected('cornerBallCorrected', 'cornerBall', '#831843'),
+};

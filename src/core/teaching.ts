@@ -16,6 +16,7 @@ import {
   sekineScallopHeight,
 } from './approximations';
 import { compareForward } from './compare';
+import { minConcaveRadiusMm, PLANE, type Surface } from './cylinder';
 import { exactIntervalMm, exactScallopHeightMm } from './exact';
 import { profilePolyline } from './geometry';
 import { PAPER_CONDITIONS, type PaperCondition, type ProcedureValues } from './paper';
@@ -228,7 +229,10 @@ export interface StepOverSweep {
  * Sweeps the lead (geometrically from `fromDeg` to `toDeg`, dense at small angles) or the tilt
  * (linearly from `fromDeg` to `toDeg`) at a fixed tool, the other angle, pattern and h, always
  * including `includeDeg` when given. Every procedure's step-over L; null where h is at or above
- * the posture's limit, or where a procedure has no answer (with the reason in `gaps`).
+ * the posture's limit, or where a procedure has no answer (with the reason in `gaps`). On a
+ * cylinder the exact step-over is the cylinder's (null where the posture gouges a concave one or h
+ * is beyond its limit there), and the approximations are as on a plane (they ignore the
+ * curvature), as in the results table.
  * @param tool validated tool (the swept angle's value in it is ignored).
  */
 export function stepOverSweep(
@@ -240,6 +244,7 @@ export function stepOverSweep(
   toDeg: number,
   steps = 120,
   includeDeg: number | null = null,
+  surface: Surface = PLANE,
 ): StepOverSweep {
   const angles: number[] = [];
   for (let i = 0; i <= steps; i++) {
@@ -271,7 +276,13 @@ export function stepOverSweep(
     };
     const ok = h < scallopHeightLimits(t).limitMm || leavesNoScallop(t);
     const c = ok ? compareForward(forwardInput(t, pattern, h)) : null;
+    if (surface.kind === 'cylinder') {
+      const fits = surface.radiusMm > 0 || minConcaveRadiusMm(t, surface.axis) <= -surface.radiusMm;
+      const valid = fits && h < scallopHeightLimits(t, surface).limitMm;
+      values.exact.push(valid ? exactIntervalMm(forwardInput(t, pattern, h, surface)) : null);
+    }
     for (const key of PROCEDURE_KEYS) {
+      if (key === 'exact' && surface.kind === 'cylinder') continue;
       if (c === null) values[key].push(null);
       else if (key === 'exact') values[key].push(c.exact.intervalMm);
       else {

@@ -45,7 +45,9 @@ export type InputErrorCode =
   | 'beyond-diameter'
   | 'beyond-interval'
   | 'beyond-max-ra'
-  | 'wall-only';
+  | 'wall-only'
+  /** A target the page does not solve: a target Ra on a cylinder across the feed takes seconds (the command line does). */
+  | 'slow-target';
 
 /** One rejected field, as data; `message` is its description in mm (describeInputError). */
 export interface InputErrorOf<F extends AnyFieldName> {
@@ -169,6 +171,11 @@ export interface DescribeOptions {
    * is named `D` with its limits doubled, and limits set by R are written `D/2`.
    */
   readonly toolSizeAsDiameter?: boolean;
+  /**
+   * The surface radius was entered as a magnitude, the side chosen apart (the page's convex /
+   * concave switch): its messages name |Rs| and leave the sign convention out.
+   */
+  readonly radiusAsMagnitude?: boolean;
 }
 
 /** True for fields measured as lengths (converted to the user's unit in messages). */
@@ -217,6 +224,8 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
     case 'too-large':
       return `${label} must be at most ${limit} ${got}.`;
     case 'out-of-range':
+      if (e.field === 'surfaceRadius' && options.radiusAsMagnitude === true)
+        return `${label} must be a radius from ${length(MIN_SURFACE_RADIUS_MM)} to ${length(MAX_SURFACE_RADIUS_MM)} ${got}.`;
       if (e.field === 'surfaceRadius')
         return `${label} must be a radius from ${length(MIN_SURFACE_RADIUS_MM)} to ${length(MAX_SURFACE_RADIUS_MM)}, negative for a concave cylinder ${got}.`;
       return e.field === 'rho'
@@ -229,7 +238,9 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
     case 'gouging':
       return e.limit === null || !Number.isFinite(e.limit)
         ? `This tool gouges a concave cylinder of any radius with this axis and posture ${got}: a flat bottom without lead reaches below the surface on both sides of the contact. Add lead or tilt, or use a ball end.`
-        : `${label}: a concave cylinder must have a radius of at least ${length(Math.abs(e.limit))} for this tool and posture (Rs at most ${length(e.limit)}) ${got}; a tighter one is gouged (the tool reaches below the surface away from the contact).`;
+        : options.radiusAsMagnitude === true
+          ? `${label}: a concave cylinder must have a radius of at least ${length(Math.abs(e.limit))} for this tool and posture ${got}; a tighter one is gouged (the tool reaches below the surface away from the contact).`
+          : `${label}: a concave cylinder must have a radius of at least ${length(Math.abs(e.limit))} for this tool and posture (Rs at most ${length(e.limit)}) ${got}; a tighter one is gouged (the tool reaches below the surface away from the contact).`;
     case 'corner-exceeds-radius':
       return diameter
         ? `${label} must be at most D/2 = ${limit} ${got}; Rcr = D/2 is a ball end mill.`
@@ -248,6 +259,8 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
       return e.limit === null || !(e.limit > 0)
         ? `${label} cannot be reached ${got}: this tool in this posture leaves no scallop (a flat bottom lying on the surface), so Ra = 0 at any step-over up to its diameter.`
         : `${label} must be below ${limit} ${got}, the largest Ra this tool, posture and pattern leave on this surface; passes far enough apart to leave more leave a wall, not a scallop.`;
+    case 'slow-target':
+      return `${label} as the target on a cylinder with the axis across the feed takes seconds to solve (each step integrates the revolved profile), longer than the page waits for an answer ${got}: give the scallop height h instead, or use the command line's --ra.`;
     case 'beyond-interval':
       return `${label} must be below ${limit} ${got}, the widest step-over these flanks allow; at or beyond it adjacent passes leave a wall, not a scallop.`;
   }

@@ -1,6 +1,9 @@
 /**
  * three.js scene of the tool in its posture, its neighbouring passes, the cusp sections and the
- * h pseudo plane. Frame: the contact of this pass at the origin, X feed, Y cross-feed, Z up (mm).
+ * h pseudo plane; on a cylinder, the cylinder's patch, the h pseudo surface (the cylinder offset by h,
+ * radially), the neighbouring passes turned about its axis (axis along the feed) or stepped along
+ * it (across), and the cusps. Frame: the contact of this pass at the origin, X feed, Y cross-feed,
+ * Z up (mm). The surface's geometry comes from the core (surfaceGeometry.ts), as plain arrays.
  *
  * Its contract:
  *  - objects are built once and updated in place; nothing is rebuilt per update, so nothing
@@ -42,6 +45,15 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
+import type { Surface } from '../core/cylinder';
+import {
+  axisFoot,
+  passMatrix,
+  patchIndices,
+  surfacePatch,
+  surfacePoint,
+  surfacePolyline,
+} from '../core/surfaceGeometry';
 import { toolMeshIndices } from '../core/toolMesh';
 import type { Vec3 } from '../core/vec';
 import {
@@ -63,6 +75,11 @@ export interface SceneLabels {
 }
 
 const SECTION_POINTS = 96;
+/** The cylinder patches' grid: segments along the feed and across it. */
+const PATCH_FEED = 48;
+const PATCH_CROSS = 64;
+/** Segments of the CC paths and of the step-over's dimension (arcs on a cylinder). */
+const PATH_SEGMENTS = 48;
 const CANDIDATE_CAPACITY = 64;
 const BACKGROUND = 0xf7f8fa;
 const COLOURS = {
@@ -154,6 +171,13 @@ function lineOf(capacity: number, color: number, loop = false): Line {
   return line;
 }
 
+/** Sets a cylinder patch's points (the grid and its indices stay). */
+function setPatch(mesh: Mesh, points: Float64Array): void {
+  const attr = mesh.geometry.getAttribute('position') as BufferAttribute;
+  (attr.array as Float32Array).set(points);
+  attr.needsUpdate = true;
+}
+
 function setLine(line: Line, points: ArrayLike<number>, count: number): void {
   const attr = line.geometry.getAttribute('position') as BufferAttribute;
   const arr = attr.array as Float32Array;
@@ -243,12 +267,21 @@ export class ToolScene {
   private readonly neighbours: Mesh[];
   private readonly designedPlane: Mesh;
   private readonly hPlane: Mesh;
+  /** On a cylinder: its patch and the h pseudo surface (updated in place; hidden on a plane). */
+  private readonly designedCylinder: Mesh;
+  private readonly hCylinder: Mesh;
+  /** On a cylinder: the cusp points on the h pseudo surface. */
+  private readonly cuspPoints: Mesh[];
   private readonly right: CuspMarks;
   private readonly left: CuspMarks;
   private readonly toolAxis = lineOf(2, COLOURS.axis);
-  /** Cutter-contact paths of the three passes (lines along X on the plane). */
-  private readonly paths = [lineOf(2, COLOURS.path), lineOf(2, COLOURS.path), lineOf(2, COLOURS.path)];
-  private readonly dimension = lineOf(6, COLOURS.dimension);
+  /** Cutter-contact paths of the three passes (lines along the feed on the surface; arcs around a cylinder across the feed). */
+  private readonly paths = [
+    lineOf(PATH_SEGMENTS + 1, COLOURS.path),
+    lineOf(PATH_SEGMENTS + 1, COLOURS.path),
+    lineOf(PATH_SEGMENTS + 1, COLOURS.path),
+  ];
+  private readonly dimension = lineOf(PATH_SEGMENTS + 3, COLOURS.dimension);
   private readonly offsetDimension = lineOf(4, COLOURS.dimension);
   private readonly contact: Mesh;
   private readonly centre: Mesh;
@@ -331,6 +364,8 @@ export class ToolScene {
     );
     const ghost = new MeshBasicMaterial({ color: COLOURS.ghost, wireframe: true, transparent: true, opacity: 0.12 });
     this.neighbours = [new Mesh(this.toolGeometry, ghost), new Mesh(this.toolGeometry, ghost)];
+    // Their placement is a rigid motion from the core (passMatrix), set as the matrix itself.
+    for (const m of this.neighbours) m.matrixAutoUpdate = false;
     const planeGeometry = new PlaneGeometry(1, 1);
     this.designedPlane = new Mesh(
       planeGeometry,
@@ -352,6 +387,18 @@ export class ToolScene {
         depthWrite: false,
       }),
     );
+    const patch = () => {
+      const g = new BufferGeometry();
+      g.setAttribute('position', new BufferAttribute(new Float32Array((PATCH_FEED + 1) * (PATCH_CROSS + 1) * 3), 3));
+      g.setIndex(new BufferAttribute(patchIndices(PATCH_FEED, PATCH_CROSS), 1));
+      return g;
+    };
+    this.designedCylinder = new Mesh(patch(), this.designedPlane.material);
+    this.hCylinder = new Mesh(patch(), this.hPlane.material);
+    for (const m of [this.designedCylinder, this.hCylinder]) {
+      m.frustumCulled = false;
+      m.visible = false;
+    }
     const dot = new SphereGeometry(1, 16, 12);
     const marker = (color: number, text: string | null, className: string) => {
       const m = new Mesh(dot, new MeshBasicMaterial({ color, depthTest: false }));
@@ -364,12 +411,20 @@ export class ToolScene {
     this.axisFoot = marker(COLOURS.axis, null, '');
     this.right = new CuspMarks(dot, 'P_hp R', 'label-php');
     this.left = new CuspMarks(dot, 'P_hp L', 'label-php label-php-left');
+    this.cuspPoints = [
+      marker(COLOURS.pHp, 'cusp R', 'label-php'),
+      marker(COLOURS.pHp, 'cusp L', 'label-php label-php-left'),
+    ];
+    for (const m of this.cuspPoints) m.visible = false;
     this.dimension.add(this.dimLabel);
     this.offsetDimension.add(this.offsetLabel);
     this.buildAxes();
     this.scene.add(
       this.designedPlane,
       this.hPlane,
+      this.designedCylinder,
+      this.hCylinder,
+      ...this.cuspPoints,
       this.tool,
       ...this.neighbours,
       ...this.right.objects(),
@@ -431,30 +486,45 @@ export class ToolScene {
     this.toolGeometry.computeVertexNormals();
     this.toolGeometry.computeBoundingSphere();
     const L = g.intervalMm;
-    const mirror = g.pattern === 'zigzag' ? -1 : 1;
+    const surface: Surface = g.surface;
+    const cylinder = surface.kind === 'cylinder';
+    // The neighbours: carried along the surface by L (turned about a cylinder's axis along the feed).
     this.neighbours.forEach((m, i) => {
-      m.position.set(0, i === 0 ? -L : L, 0);
-      m.scale.set(1, mirror, 1);
+      m.matrix.fromArray(passMatrix(surface, i === 0 ? -L : L, g.pattern === 'zigzag'));
+      m.matrixWorldNeedsUpdate = true;
     });
 
     const R = g.toolRadiusMm;
     this.cornerRadiusMm = g.cornerRadiusMm;
     const sizeX = 2.8 * R;
     const sizeY = 2 * L + 2.4 * R;
-    this.designedPlane.scale.set(sizeX, sizeY, 1);
-    this.designedPlane.position.set(0, 0, 0);
-    this.hPlane.scale.set(sizeX, sizeY, 1);
-    this.hPlane.position.set(0, 0, g.scallopHeightMm);
+    this.designedPlane.visible = this.hPlane.visible = !cylinder;
+    this.designedCylinder.visible = this.hCylinder.visible = cylinder;
+    if (cylinder) {
+      setPatch(this.designedCylinder, surfacePatch(surface, 0, sizeX / 2, sizeY / 2, PATCH_FEED, PATCH_CROSS));
+      setPatch(this.hCylinder, surfacePatch(surface, g.scallopHeightMm, sizeX / 2, sizeY / 2, PATCH_FEED, PATCH_CROSS));
+    } else {
+      this.designedPlane.scale.set(sizeX, sizeY, 1);
+      this.designedPlane.position.set(0, 0, 0);
+      this.hPlane.scale.set(sizeX, sizeY, 1);
+      this.hPlane.position.set(0, 0, g.scallopHeightMm);
+    }
 
     const dotR = 0.035 * R;
     this.right.show(g.right, dotR);
     this.left.show(g.left, dotR);
+    this.cuspPoints.forEach((m, i) => {
+      const p = g.cuspPoints === null ? null : i === 0 ? g.cuspPoints.right : g.cuspPoints.left;
+      m.visible = p !== null;
+      if (p === null) return;
+      m.position.set(...p);
+      m.scale.setScalar(dotR);
+    });
 
-    // Tool axis from where it meets the plane (its foot) up the shank; the contact lies off it.
+    // Tool axis from where it meets the surface (its foot) up the shank; the contact lies off it.
     const [ox, oy, oz] = g.toolCentre;
     const [ax, ay, az] = g.toolAxis;
-    const down = oz / az;
-    const foot: Vec3 = [ox - down * ax, oy - down * ay, 0];
+    const foot = axisFoot(surface, g.toolCentre, g.toolAxis);
     const up = 2.2 * R;
     setLine(this.toolAxis, [...foot, ox + up * ax, oy + up * ay, oz + up * az], 2);
     this.axisFoot.scale.setScalar(0.6 * dotR);
@@ -464,17 +534,23 @@ export class ToolScene {
     this.contact.scale.setScalar(dotR);
     this.contact.position.set(0, 0, 0);
 
-    // The cutter-contact paths of the three passes, and the step-over L between two of them.
+    // The cutter-contact paths of the three passes, and the step-over L between two of them (along
+    // the surface: an arc around a cylinder with the axis along the feed).
     const xFrom = -1.3 * R;
     const xTo = 1.3 * R;
     this.paths.forEach((line, i) => {
       const y = (i - 1) * L;
-      setLine(line, [xFrom, y, 0, xTo, y, 0], 2);
+      setLine(line, surfacePolyline(surface, 0, [xFrom, y], [xTo, y], PATH_SEGMENTS), PATH_SEGMENTS + 1);
     });
     const x = xFrom;
     const tick = 0.08 * R;
-    setLine(this.dimension, [x, 0, tick, x, 0, 0, x, L, 0, x, L, tick, x, L, 0, x, 0, 0], 6);
-    this.dimLabel.position.set(x, L / 2, 2 * tick);
+    const arc = surfacePolyline(surface, 0, [x, 0], [x, L], PATH_SEGMENTS);
+    setLine(
+      this.dimension,
+      [...surfacePoint(surface, x, 0, tick), ...arc, ...surfacePoint(surface, x, L, tick)],
+      PATH_SEGMENTS + 3,
+    );
+    this.dimLabel.position.set(...surfacePoint(surface, x, L / 2, 2 * tick));
     setLabel(this.dimLabel, labels.interval);
     // y0: from the foot of O's drop to the contact, across the feed.
     this.offsetDimension.visible = labels.contactOffset !== null;

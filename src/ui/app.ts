@@ -123,6 +123,7 @@ export class CalculatorApp {
     const sceneBox = must<HTMLElement>(root, '.scene');
     this.sceneBox = sceneBox;
     this.scene = new SceneSlot(() => import('../render/scene').then(({ ToolScene }) => new ToolScene(sceneBox)));
+    this.sceneSection = must(root, '.view');
     this.scene.onFrame = () => this.observer.frame?.(this.fresh.shown.kind === 'current');
     this.scene.run('theme', (s) => s.applyTheme());
     onThemeChange(() => this.scene.run('theme', (s) => s.applyTheme()));
@@ -143,6 +144,8 @@ export class CalculatorApp {
       onUnit: (unit: Unit) => this.change(convertState(this.state, unit)),
       onPattern: (pattern: PassPattern) => this.change({ ...this.state, pattern }),
       onTarget: (target: Target) => this.change({ ...this.state, target }),
+      onSurface: (surface) => this.change({ ...this.state, surface }),
+      onSurfaceAxis: (surfaceAxis) => this.change({ ...this.state, surfaceAxis }),
       onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
     });
     // An embedded calculator without a teaching view shows none: no views, no views' worker.
@@ -154,7 +157,9 @@ export class CalculatorApp {
             display: { showTraceFrame: (frame) => this.scene.run('trace', (s) => s.showTraceFrame(frame)) },
             initialView: requested ?? 'profile',
             onLoadCondition: (c) =>
-              this.change(withValues({ ...this.state, mode: 'forward', pattern: 'one-way' }, { ...c, tilt: 0 })),
+              this.change(
+                withValues({ ...this.state, mode: 'forward', pattern: 'one-way', surface: 'plane' }, { ...c, tilt: 0 }),
+              ),
             onRestart: (info) => this.restarted('views', info),
             surface: this.simulation,
           });
@@ -174,6 +179,8 @@ export class CalculatorApp {
   }
 
   private readonly highlighter: Highlighter;
+  /** The 3D view's section (marked `cylinder` while the scene shows one: its legend follows). */
+  private readonly sceneSection: HTMLElement;
 
   /** Read by the e2e build's probe (and handy in a debugger). */
   get diagnostics() {
@@ -251,8 +258,13 @@ export class CalculatorApp {
     if (this.sceneDrawn?.reply !== reply || this.sceneDrawn.unit !== unit) {
       this.sceneDrawn = { reply, unit };
       const y0 = reply.exact.contactOffsetMm;
+      const surface = reply.scene.surface;
+      const cylinder = surface.kind === 'cylinder';
+      this.sceneSection.classList.toggle('cylinder', cylinder);
+      for (const e of this.sceneSection.querySelectorAll<HTMLElement>('.legend .plane-only, .legend .cylinder-only'))
+        e.hidden = e.classList.contains('plane-only') === cylinder;
       const labels = {
-        interval: `L = ${formatLenUnit(reply.exact.intervalMm, unit)}`,
+        interval: `L = ${formatLenUnit(reply.exact.intervalMm, unit)}${cylinder && surface.axis === 'feed' ? ' (arc)' : ''}`,
         contactOffset: y0 === 0 ? null : `y0 = ${formatSignedLenUnit(y0, unit)}`,
       };
       this.scene.run('update', (s) => s.update(reply.scene, labels));

@@ -4,7 +4,7 @@
  * for the theme on screen. Stylesheets colour swatches, curves and headings by class, so the page
  * needs no inline style attribute (a strict Content-Security-Policy allows no `style-src-attr`).
  */
-import { PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../core/procedures';
+import { CURVATURE_ROW_KEYS, CURVATURE_ROWS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../core/procedures';
 import type { Theme } from './theme';
 
 export function applyProcedureColours(root: HTMLElement): void {
@@ -12,6 +12,8 @@ export function applyProcedureColours(root: HTMLElement): void {
     root.style.setProperty(`--proc-light-${key}`, PROCEDURES[key].colour);
     root.style.setProperty(`--proc-dark-${key}`, PROCEDURES[key].colourDark);
   }
+  // The rows a cylinder adds (the plane's answer, the corrected procedures): `--curv-<key>`.
+  for (const key of CURVATURE_ROW_KEYS) root.style.setProperty(`--curv-${key}`, CURVATURE_ROWS[key].colour);
 }
 
 /** A procedure's colour on a theme (for canvas drawing, which cannot read custom properties). */

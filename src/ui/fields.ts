@@ -4,6 +4,7 @@
  * state it is given (values, ranges in the user's unit, messages); it holds no state itself.
  */
 
+import type { SurfaceAxis } from '../core/cylinder';
 import { unitSymbol } from '../core/units';
 import type { PassPattern } from '../core/validate';
 import { FIELD_LABELS, type FieldName } from '../core/validate';
@@ -19,6 +20,7 @@ import {
   PRESETS,
   parseField,
   presetOf,
+  type SurfaceKind,
   sizeIsDiameter,
   type Target,
   type ToolSize,
@@ -39,6 +41,9 @@ export interface FieldEvents {
   readonly onUnit: (unit: Unit) => void;
   readonly onPattern: (pattern: PassPattern) => void;
   readonly onTarget: (target: Target) => void;
+  /** The design surface (plane, convex or concave cylinder) and a cylinder's axis. */
+  readonly onSurface: (surface: SurfaceKind) => void;
+  readonly onSurfaceAxis: (axis: SurfaceAxis) => void;
   /** A preset was chosen: R and Rcr in mm. */
   readonly onPreset: (preset: { readonly R: number; readonly Rcr: number }) => void;
 }
@@ -51,6 +56,7 @@ const HINTS: Readonly<Record<FieldKey, string>> = {
   h: 'height of the highest cusp left between passes',
   L: 'distance between adjacent cutter-contact paths',
   ra: 'target roughness across the feed; the scallop height follows',
+  Rs: "the cylinder's radius, a positive number (convex or concave is chosen above)",
 };
 
 /** The tool size field's label and hint in diameter mode. */
@@ -65,7 +71,11 @@ const CORE_FIELD: Readonly<Record<FieldKey, FieldName>> = {
   h: 'h',
   L: 'interval',
   ra: 'ra',
+  Rs: 'surfaceRadius',
 };
+
+/** The test ids' names of fields whose key differs (the surface radius: input-surface-radius). */
+const TEST_NAME: Partial<Readonly<Record<FieldKey, string>>> = { Rs: 'surface-radius' };
 
 interface FieldView {
   readonly row: HTMLElement;
@@ -92,12 +102,17 @@ export class FieldsPanel {
     events: FieldEvents,
   ) {
     const container = must<HTMLElement>(root, '.fields');
-    for (const key of FIELD_KEYS) this.fields.set(key, this.buildField(container, key, events));
+    // The surface radius sits with the surface's switches.
+    const surfaceFields = root.querySelector<HTMLElement>('.surface-fields') ?? container;
+    for (const key of FIELD_KEYS)
+      this.fields.set(key, this.buildField(key === 'Rs' ? surfaceFields : container, key, events));
     this.wireSwitch('mode', (v) => events.onMode(v === 'inverse' ? 'inverse' : 'forward'));
     this.wireSwitch('unit', (v) => events.onUnit(v === 'in' ? 'in' : 'mm'));
     this.wireSwitch('pattern', (v) => events.onPattern(v === 'zigzag' ? 'zigzag' : 'one-way'));
     this.wireSwitch('target', (v) => events.onTarget(v === 'ra' ? 'ra' : 'h'));
     this.wireSwitch('size', (v) => events.onSize(v === 'D' ? 'D' : 'R'));
+    this.wireSwitch('surface', (v) => events.onSurface(v === 'convex' || v === 'concave' ? v : 'plane'));
+    this.wireSwitch('surfaceAxis', (v) => events.onSurfaceAxis(v === 'cross' ? 'cross' : 'feed'));
     const select = must<HTMLSelectElement>(root, '[data-testid="preset"]');
     this.preset = select;
     PRESETS.forEach((p, i) => {
@@ -112,10 +127,11 @@ export class FieldsPanel {
   private buildField(container: HTMLElement, key: FieldKey, events: FieldEvents): FieldView {
     const id = `field-${key}`;
     const label = FIELD_LABELS[CORE_FIELD[key]];
+    const testName = TEST_NAME[key] ?? key;
     const row = html('div', { class: 'field', 'data-field': key });
     const slider = html('input', {
       type: 'range',
-      'data-testid': `slider-${key}`,
+      'data-testid': `slider-${testName}`,
       'aria-label': `${label} slider`,
       'aria-describedby': `${id}-error`,
     });
@@ -125,13 +141,13 @@ export class FieldsPanel {
       inputmode: 'decimal',
       autocomplete: 'off',
       spellcheck: 'false',
-      'data-testid': `input-${key}`,
+      'data-testid': `input-${testName}`,
       'aria-describedby': `${id}-hint ${id}-error`,
     });
     const unitLabel = html('span', { class: 'unit' });
     const hint = html('span', { class: 'hint', id: `${id}-hint` }, HINTS[key]);
     const labelElement = html('label', { for: id }, label);
-    const error = html('div', { class: 'error', id: `${id}-error`, role: 'alert', 'data-testid': `error-${key}` });
+    const error = html('div', { class: 'error', id: `${id}-error`, role: 'alert', 'data-testid': `error-${testName}` });
     const line = html('div', { class: 'field-line' });
     line.append(slider, input, unitLabel);
     row.append(labelElement, line, hint, error);
@@ -158,9 +174,10 @@ export class FieldsPanel {
   render(state: CalculatorState, messages: ReadonlyMap<FieldKey, string>): void {
     const ranges = sliderRanges(state);
     const forward = state.mode === 'forward';
+    const plane = state.surface === 'plane';
     for (const [key, view] of this.fields) {
       const given = forward ? state.target : 'L';
-      view.row.hidden = (key === 'h' || key === 'ra' || key === 'L') && key !== given;
+      view.row.hidden = ((key === 'h' || key === 'ra' || key === 'L') && key !== given) || (key === 'Rs' && plane);
       view.unitLabel.textContent = isLengthField(key) ? unitSymbol(state.unit) : 'deg';
       if (key === 'R') {
         const diameter = sizeIsDiameter(state);
@@ -186,11 +203,16 @@ export class FieldsPanel {
       pattern: state.pattern,
       target: state.target,
       size: state.size ?? 'R',
+      surface: state.surface,
+      surfaceAxis: state.surfaceAxis,
     };
     // The preset box names the preset the tool fields hold, or "custom" once edited away from it.
     const preset = presetOf(state);
     const chosen = preset === null ? 'custom' : String(PRESETS.indexOf(preset));
     if (this.preset.value !== chosen) this.preset.value = chosen;
+    // A plane has no radius and no axis: both are hidden (their values kept for the next cylinder).
+    const axisSwitch = this.root.querySelector<HTMLElement>('[data-testid="surface-axis"]');
+    if (axisSwitch) axisSwitch.hidden = plane;
     const targetSwitch = this.root.querySelector<HTMLElement>('[data-testid="target-switch"]');
     if (targetSwitch) targetSwitch.hidden = !forward;
     for (const [name, value] of Object.entries(checked))

@@ -9,11 +9,12 @@ import {
   describeInputError,
   type FieldName,
   type InputError,
+  inputError,
   validateForward,
   validateInverse,
 } from '../core/validate';
 import type { SolveRequest } from '../worker/protocol';
-import { type CalculatorState, type FieldKey, fieldInMm, sizeIsDiameter } from './state';
+import { type CalculatorState, type FieldKey, fieldInMm, parseField, sizeIsDiameter } from './state';
 
 export type BuiltRequest =
   | { readonly ok: true; readonly request: SolveRequest }
@@ -21,8 +22,33 @@ export type BuiltRequest =
 
 /** The request the state asks, or why it cannot be asked. */
 export function buildRequest(state: CalculatorState): BuiltRequest {
+  const built = validated(state);
+  const own = [surfaceError(state), slowTarget(state)].filter((e): e is InputError => e !== null);
+  if (own.length === 0) return built;
+  // A radius typed with a sign: its own error, beside the others' (the rest validated on a plane).
+  return { ok: false, errors: [...own, ...(built.ok ? [] : built.errors)] };
+}
+
+/**
+ * A target Ra on a cylinder across the feed: solving it takes seconds (about 3 s: each secant step
+ * integrates the revolved profile), beyond the worker's watchdog, so the page asks for h there.
+ */
+function slowTarget(state: CalculatorState): InputError | null {
+  if (state.mode !== 'forward' || state.target !== 'ra' || state.surface === 'plane') return null;
+  if (state.surfaceAxis !== 'cross') return null;
+  return inputError('ra', 'slow-target', state.fields.ra.trim());
+}
+
+function validated(state: CalculatorState): BuiltRequest {
   const mm = (key: FieldKey) => fieldInMm(state, key);
-  const tool = { R: mm('R'), Rcr: mm('Rcr'), rho: mm('rho'), tilt: mm('tilt'), pattern: state.pattern };
+  const tool = {
+    R: mm('R'),
+    Rcr: mm('Rcr'),
+    rho: mm('rho'),
+    tilt: mm('tilt'),
+    pattern: state.pattern,
+    ...surfaceFields(state),
+  };
   if (state.mode === 'forward' && state.target === 'ra') {
     const v = validateRaTarget({ ...tool, ra: mm('ra') });
     return v.ok ? { ok: true, request: { mode: 'ra', input: v.value } } : v;
@@ -36,12 +62,43 @@ export function buildRequest(state: CalculatorState): BuiltRequest {
 }
 
 /**
- * The page field that shows an error of the core's field. Pattern errors cannot happen here, and
- * the page asks for no surface (a plane), so the surface's fields have no input on the page.
+ * The surface as the core's raw fields: none for a plane; for a cylinder the signed radius in mm
+ * (the field's magnitude, negative when concave) and the axis. A radius that is not a positive
+ * number goes as typed (the core words a missing or non-numeric one), or not at all when it has a
+ * sign or is 0 (surfaceError words that).
+ */
+function surfaceFields(state: CalculatorState): { surfaceRadius?: number | string; surfaceAxis?: string } {
+  if (state.surface === 'plane') return {};
+  const v = parseField(state.fields.Rs);
+  if (surfaceError(state) !== null || (v !== null && v <= 0)) return {};
+  const mm = fieldInMm(state, 'Rs');
+  return {
+    surfaceRadius: typeof mm === 'number' && state.surface === 'concave' ? -mm : mm,
+    surfaceAxis: state.surfaceAxis,
+  };
+}
+
+/** The radius field's own rule: a positive magnitude, without a sign (convex or concave is the switch). */
+function surfaceError(state: CalculatorState): InputError | null {
+  if (state.surface === 'plane') return null;
+  const v = parseField(state.fields.Rs);
+  const typed = state.fields.Rs.trim();
+  // The core reads a blank radius, or the word plane, as a plane: here a cylinder is chosen.
+  if (typed === '') return inputError('surfaceRadius', 'missing', typed);
+  if (typed === 'plane') return inputError('surfaceRadius', 'not-a-number', typed);
+  if (v !== null && v <= 0) return inputError('surfaceRadius', 'not-positive', typed);
+  return null;
+}
+
+/**
+ * The page field that shows an error of the core's field. Pattern and axis errors cannot happen
+ * here (switches offer only valid values); the surface radius's errors (gouging included) show on
+ * the radius field.
  */
 export function fieldOfError(field: FieldName): FieldKey | null {
   if (field === 'interval') return 'L';
-  return field === 'pattern' || field === 'surfaceRadius' || field === 'surfaceAxis' ? null : field;
+  if (field === 'surfaceRadius') return 'Rs';
+  return field === 'pattern' || field === 'surfaceAxis' ? null : field;
 }
 
 /** Each field's message, in the user's unit, quoting the text as typed. */
@@ -52,7 +109,11 @@ export function fieldMessages(state: CalculatorState, errors: readonly InputErro
     if (key === null || out.has(key)) continue;
     out.set(
       key,
-      describeInputError(e, state.unit, { typed: state.fields[key].trim(), toolSizeAsDiameter: sizeIsDiameter(state) }),
+      describeInputError(e, state.unit, {
+        typed: state.fields[key].trim(),
+        toolSizeAsDiameter: sizeIsDiameter(state),
+        radiusAsMagnitude: true,
+      }),
     );
   }
   return out;

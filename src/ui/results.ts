@@ -4,9 +4,17 @@
  * notes. It draws exactly what `Shown` says: a reply to the inputs on screen; the last one marked
  * stale while a newer one is awaited or the solver gave up; or dashes for invalid inputs.
  */
-import { APPROXIMATION_KEYS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../core/procedures';
+import type { Surface } from '../core/cylinder';
+import {
+  APPROXIMATION_KEYS,
+  CURVATURE_ROWS,
+  type CurvatureRowKey,
+  PROCEDURE_KEYS,
+  PROCEDURES,
+  type ProcedureKey,
+} from '../core/procedures';
 import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/units';
-import type { ProcedureNote, ProcedureRow, SolveMode, SolveReply } from '../worker/protocol';
+import type { CurvatureRow, ProcedureNote, ProcedureRow, SolveMode, SolveReply } from '../worker/protocol';
 import { setCopyValue } from './copy';
 import { html } from './dom';
 import { formatLen, formatLenUnit, formatSignedLen, formatSignedLenUnit } from './format';
@@ -37,6 +45,33 @@ export function noteText(key: ProcedureKey, note: ProcedureNote, unit: LengthUni
     case 'wall':
       return `${label}: its step-over L = ${formatLen(note.intervalMm, unit)} ${u} is not below the widest step-over that leaves a scallop (${formatLen(note.maxIntervalMm, unit)} ${u}): passes this far apart leave a wall.`;
   }
+}
+
+/** A comparison row's note in words (the plane's answer, or a procedure corrected for the curvature). */
+export function curvatureNoteText(key: CurvatureRowKey, note: ProcedureNote, unit: LengthUnit): string {
+  const label = CURVATURE_ROWS[key].shortLabel;
+  const u = unitSymbol(unit);
+  switch (note.kind) {
+    case 'reason':
+      return note.text;
+    case 'beyond-model': {
+      const what = note.quantity === 'h' ? 'h' : 'L/2';
+      const where = note.quantity === 'h' ? 'above the widest point of' : 'wider than';
+      return `${label}: ${what} = ${formatLen(note.valueMm, unit, 'height')} ${u} is ${where} its combined circle (rho = ${formatLen(note.limitMm, unit)} ${u}).`;
+    }
+    case 'wall':
+      return `${label}: its step-over L = ${formatLen(note.intervalMm, unit)} ${u} is not below the widest step-over that leaves a scallop on this cylinder (${formatLen(note.maxIntervalMm, unit)} ${u}): passes this far apart leave a wall.`;
+  }
+}
+
+/** What L and the heights mean on the surface of a request, in words (empty on a plane). */
+export function surfaceMeaning(surface: Surface, unit: LengthUnit): string {
+  if (surface.kind === 'plane') return '';
+  const side = surface.radiusMm > 0 ? 'convex' : 'concave';
+  const r = formatLenUnit(Math.abs(surface.radiusMm), unit);
+  return surface.axis === 'feed'
+    ? `On this ${side} cylinder (radius ${r}, axis along the feed: the passes run along it), L and the flank widths are arc lengths on the surface between the CC paths, and every height is measured radially, from the cylinder.`
+    : `On this ${side} cylinder (radius ${r}, axis across the feed: the passes go around it and step along its axis), L and the flank widths are measured along the axis, and every height radially, from the cylinder.`;
 }
 
 export class ResultsPanel {
@@ -135,6 +170,12 @@ export class ResultsPanel {
         : `L = ${formatPercent((100 * e.intervalMm) / (2 * R), 1).replace(/^\+/, '')} % of the tool diameter`,
     );
     const leadOnly = (ok ? ok.request.input.tiltAngleDeg : (tiltDeg ?? 0)) !== 0;
+    const meaning = this.root.querySelector<HTMLElement>('[data-testid="surface-meaning"]');
+    if (meaning) {
+      const text = ok ? surfaceMeaning(ok.request.input.surface, unit) : '';
+      if (meaning.textContent !== text) meaning.textContent = text;
+      meaning.hidden = text === '';
+    }
     this.table(ok, unit, drawMode, leadOnly);
   }
 
@@ -186,6 +227,8 @@ export class ResultsPanel {
       }
       this.tbody.append(tr);
     }
+    const curvature = reply?.curvature ?? null;
+    if (curvature !== null) this.curvatureRows(curvature, unit, forward, head.length, notes);
     const lead = leadOnly
       ? `With tilt, ${APPROXIMATION_KEYS.filter((k) => PROCEDURES[k].leadOnly)
           .map((k) => PROCEDURES[k].shortLabel)
@@ -194,7 +237,54 @@ export class ResultsPanel {
     const noScallop = reply?.exact.noScallop
       ? 'No scallop: a flat end lying flat leaves none at any step-over up to its diameter, so L = 2R.'
       : '';
-    const text = [noScallop, ...notes, reply ? lead : ''].filter((t) => t !== '').join(' ');
+    const curved =
+      curvature === null
+        ? ''
+        : 'On a cylinder the procedures above are applied as on a plane (they ignore the curvature); the rows below them give the exact answer for a plane at the same input (the curvature ignored) and the usual correction 1/rho = 1/Reff + 1/Rs of each procedure with an effective radius, each beside the exact answer on the cylinder.';
+    const text = [noScallop, ...notes, reply ? lead : '', curved].filter((t) => t !== '').join(' ');
     if (this.notes.textContent !== text) this.notes.textContent = text;
+  }
+
+  /** The rows a cylinder adds, under a heading row: the plane's answer and the corrected procedures. */
+  private curvatureRows(
+    rows: readonly CurvatureRow[],
+    unit: LengthUnit,
+    forward: boolean,
+    columns: number,
+    notes: string[],
+  ): void {
+    const head = html('tr', { class: 'curvature-head' });
+    head.append(
+      html(
+        'th',
+        { scope: 'colgroup', colspan: String(columns) },
+        'On the cylinder: curvature ignored, or corrected the usual way',
+      ),
+    );
+    this.tbody.append(head);
+    const resolution = forward ? 'length' : 'height';
+    for (const row of rows) {
+      const info = CURVATURE_ROWS[row.key];
+      const tr = html('tr', { 'data-curvature': row.key, title: info.assumes });
+      tr.append(html('th', { scope: 'row' }, info.label));
+      const cell = (testId: string | null, text: string) => {
+        const td = html('td');
+        td.append(testId === null ? document.createTextNode(text) : html('output', { 'data-testid': testId }, text));
+        tr.append(td);
+      };
+      cell(
+        `result-${row.key}-${forward ? 'half' : 'h'}`,
+        row.valueMm === null ? 'n/a' : formatLen(row.valueMm, unit, resolution),
+      );
+      cell(null, row.deviationMm === null ? NO_VALUE : formatSignedLen(row.deviationMm, unit, resolution));
+      cell(null, row.deviationPercent === null ? NO_VALUE : formatPercent(row.deviationPercent));
+      if (forward) cell(`result-${row.key}-real-h`, formatLen(row.realScallopMm, unit, 'height'));
+      if (row.note && !(row.note.kind === 'reason' && row.note.text === '')) {
+        const text = curvatureNoteText(row.key, row.note, unit);
+        tr.title = text;
+        notes.push(text);
+      }
+      this.tbody.append(tr);
+    }
   }
 }

@@ -5,10 +5,16 @@
  * L below the widest step-over). Pure (no DOM).
  */
 
-import { PLANE } from '../core/cylinder';
+import { minConcaveRadiusMm, PLANE, type Surface } from '../core/cylinder';
 import { maxRaCachedMm } from '../core/raTarget';
 import { fromMm, toMm } from '../core/units';
-import { maxIntervalMm, scallopHeightLimits, type ToolInput } from '../core/validate';
+import {
+  MAX_SURFACE_RADIUS_MM,
+  MIN_SURFACE_RADIUS_MM,
+  maxIntervalMm,
+  scallopHeightLimits,
+  type ToolInput,
+} from '../core/validate';
 import { type CalculatorState, type FieldKey, formatField, parseField, radiusField, sizeIsDiameter } from './state';
 
 export interface SliderRange {
@@ -19,8 +25,8 @@ export interface SliderRange {
 
 /** Steps per unit: round numbers of the unit itself. */
 const STEPS: Readonly<Record<'mm' | 'in', Readonly<Record<FieldKey, number>>>> = {
-  mm: { R: 0.01, Rcr: 0.01, rho: 0.1, tilt: 0.1, h: 0.001, L: 0.001, ra: 0.0001 },
-  in: { R: 0.001, Rcr: 0.001, rho: 0.1, tilt: 0.1, h: 0.0001, L: 0.0001, ra: 0.00001 },
+  mm: { R: 0.01, Rcr: 0.01, rho: 0.1, tilt: 0.1, h: 0.001, L: 0.001, ra: 0.0001, Rs: 0.1 },
+  in: { R: 0.001, Rcr: 0.001, rho: 0.1, tilt: 0.1, h: 0.0001, L: 0.0001, ra: 0.00001, Rs: 0.01 },
 };
 
 /** A tool for the ranges: the typed values where they make sense, defaults elsewhere. */
@@ -40,6 +46,28 @@ function rangeTool(state: CalculatorState): ToolInput {
   };
 }
 
+/** The surface radius slider's top (mm): the field takes up to 1e6 mm, the slider the usual sizes. */
+const RADIUS_SLIDER_MAX_MM = 500;
+
+/**
+ * The surface for the ranges: the typed cylinder when its radius is valid and (concave) not
+ * gouging, else a plane.
+ */
+function rangeSurface(state: CalculatorState, concaveMinMm: number): Surface {
+  if (state.surface === 'plane') return PLANE;
+  const v = parseField(state.fields.Rs);
+  if (v === null || !(v > 0)) return PLANE;
+  const mm = toMm(v, state.unit);
+  if (!(mm >= MIN_SURFACE_RADIUS_MM && mm <= MAX_SURFACE_RADIUS_MM)) return PLANE;
+  if (state.surface === 'concave' && !(mm >= concaveMinMm)) return PLANE;
+  return { kind: 'cylinder', radiusMm: state.surface === 'concave' ? -mm : mm, axis: state.surfaceAxis };
+}
+
+/** Rounds up to a whole number of steps. */
+function snapUp(value: number, step: number): number {
+  return Math.ceil(value / step - 1e-9) * step;
+}
+
 /** Rounds down to a whole number of steps (never below one step above the minimum). */
 function snap(value: number, step: number, min: number): number {
   return Math.max(min + step, Math.floor(value / step + 1e-9) * step);
@@ -51,8 +79,12 @@ export function sliderRanges(state: CalculatorState): Readonly<Record<FieldKey, 
   const step = STEPS[u];
   const tool = rangeTool(state);
   const len = (mm: number) => fromMm(mm, u);
-  const hLimit = scallopHeightLimits(tool).limitMm;
-  const lMax = maxIntervalMm(tool, state.pattern);
+  // A concave cylinder's slider starts at the gouging limit (Infinity: no concave fits; then from 1 step).
+  const concaveMin = state.surface === 'concave' ? minConcaveRadiusMm(tool, state.surfaceAxis) : 0;
+  const surface = rangeSurface(state, concaveMin);
+  const hLimit = scallopHeightLimits(tool, surface).limitMm;
+  const lMax = maxIntervalMm(tool, state.pattern, surface);
+  const rsMin = Number.isFinite(concaveMin) ? Math.max(step.Rs, snapUp(len(concaveMin), step.Rs)) : step.Rs;
   const ranges: Record<FieldKey, [number, number]> = {
     R: [step.R * 10, snap(len(25), step.R, 0)],
     Rcr: [0, snap(len(tool.toolRadiusMm), step.Rcr, 0)],
@@ -66,12 +98,13 @@ export function sliderRanges(state: CalculatorState): Readonly<Record<FieldKey, 
         ? [
             step.ra,
             snap(
-              len(Math.min(0.999 * maxRaCachedMm({ ...tool, pattern: state.pattern, surface: PLANE }), 0.5)),
+              len(Math.min(0.999 * maxRaCachedMm({ ...tool, pattern: state.pattern, surface }), 0.5)),
               step.ra,
               step.ra,
             ),
           ]
         : [step.ra, 10 * step.ra],
+    Rs: [rsMin, Math.max(rsMin + step.Rs, snap(len(RADIUS_SLIDER_MAX_MM), step.Rs, 0))],
   };
   // The size field in diameter mode: D runs over twice the radius's range.
   if (sizeIsDiameter(state)) ranges.R = [2 * ranges.R[0], 2 * ranges.R[1]];

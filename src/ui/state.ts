@@ -2,16 +2,20 @@
  * Calculator state as the user typed it, its URL form, and unit conversion. Pure (no DOM):
  * tested in Node. Field values are kept as text so an invalid entry is never lost.
  */
+
+import type { SurfaceAxis } from '../core/cylinder';
 import { formatInputNumber, fromMm, type LengthUnit, toMm } from '../core/units';
 import type { PassPattern } from '../core/validate';
 import type { SolveMode } from '../worker/protocol';
 
 export type Unit = LengthUnit;
-export type FieldKey = 'R' | 'Rcr' | 'rho' | 'tilt' | 'h' | 'L' | 'ra';
+export type FieldKey = 'R' | 'Rcr' | 'rho' | 'tilt' | 'h' | 'L' | 'ra' | 'Rs';
 /** What the forward problem is given: a scallop height h, or a roughness Ra (h then follows). */
 export type Target = 'h' | 'ra';
 /** How the tool size field is given: the radius R, or the diameter D = 2R, as catalogues give it. */
 export type ToolSize = 'R' | 'D';
+/** The design surface as the page offers it; a cylinder's radius is the field Rs, a magnitude. */
+export type SurfaceKind = 'plane' | 'convex' | 'concave';
 
 export interface CalculatorState {
   readonly unit: Unit;
@@ -19,6 +23,9 @@ export interface CalculatorState {
   readonly pattern: PassPattern;
   /** Forward mode's given value: h or Ra. */
   readonly target: Target;
+  /** The design surface, and a cylinder's axis (kept while a plane is chosen, for the next cylinder). */
+  readonly surface: SurfaceKind;
+  readonly surfaceAxis: SurfaceAxis;
   /** Text of each field in the current unit (angles in degrees); `R` holds D when `size` is 'D'. */
   readonly fields: Readonly<Record<FieldKey, string>>;
   /** The tool size field: radius R (default, also when missing) or diameter D. */
@@ -39,9 +46,10 @@ export const DEFAULT_FIELDS_MM: Readonly<Record<FieldKey, string>> = {
   h: '0.05',
   L: '2.9',
   ra: '0.0125',
+  Rs: '50',
 };
 
-export const FIELD_KEYS: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'tilt', 'h', 'ra', 'L'];
+export const FIELD_KEYS: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'tilt', 'h', 'ra', 'L', 'Rs'];
 
 /** True for the fields that hold a length (converted with the unit); angles are degrees. */
 export function isLengthField(key: FieldKey): boolean {
@@ -115,7 +123,15 @@ export function convertState(state: CalculatorState, to: Unit): CalculatorState 
 }
 
 export function defaultState(unit: Unit = 'mm', mode: SolveMode = 'forward'): CalculatorState {
-  const mm: CalculatorState = { unit: 'mm', mode, pattern: 'one-way', target: 'h', fields: DEFAULT_FIELDS_MM };
+  const mm: CalculatorState = {
+    unit: 'mm',
+    mode,
+    pattern: 'one-way',
+    target: 'h',
+    surface: 'plane',
+    surfaceAxis: 'feed',
+    fields: DEFAULT_FIELDS_MM,
+  };
   return unit === 'mm' ? mm : convertState(mm, unit);
 }
 
@@ -147,7 +163,7 @@ export interface ParsedUrl {
 
 /**
  * Reads the state from a query string (`?R=3&Rcr=1&rho=5&h=0.05&unit=mm`, plus `tilt=`,
- * `pattern=zigzag`, `mode=inverse&L=`, `target=ra&ra=`, `embed=1`). A present but invalid value, and a missing one
+ * `pattern=zigzag`, `surfaceRadius=&surfaceAxis=`, `mode=inverse&L=`, `target=ra&ra=`, `embed=1`). A present but invalid value, and a missing one
  * when others are given, falls back to its default with a notice (tilt and pattern have defaults
  * and are never missing). Cross-field rules are left to the calculator's own validation, which
  * shows them next to the fields.
@@ -179,7 +195,10 @@ export function parseUrl(search: string): ParsedUrl {
   const size = sizeFromUrl(params, notices);
   const needed: FieldKey[] = ['R', 'Rcr', 'rho', mode === 'forward' ? target : 'L'];
   const anyGiven = FIELD_KEYS.some((k) => params.has(k)) || params.has('D');
+  const surface = parseSurface(params, defaults.Rs, notices);
+  if (surface.radiusText !== null) fields.Rs = surface.radiusText;
   for (const key of FIELD_KEYS) {
+    if (key === 'Rs') continue; // in the link as the signed surfaceRadius (parseSurface)
     const text = params.get(key);
     if (text === null) {
       if (anyGiven && needed.includes(key) && !(key === 'R' && params.has('D')))
@@ -192,7 +211,15 @@ export function parseUrl(search: string): ParsedUrl {
     else fields[key] = text.trim();
   }
   const embed = params.get('embed') === '1' || params.get('embed') === 'true';
-  const state: CalculatorState = { unit, mode, pattern, target, fields };
+  const state: CalculatorState = {
+    unit,
+    mode,
+    pattern,
+    target,
+    surface: surface.kind,
+    surfaceAxis: surface.axis,
+    fields,
+  };
   return {
     state: size === 'D' ? diameterFromUrl(state, params, notices) : state,
     notices,
@@ -222,8 +249,44 @@ function diameterFromUrl(state: CalculatorState, params: URLSearchParams, notice
 }
 
 /**
+ * The surface in a link: `surfaceRadius=` signed in the link's unit (> 0 convex, < 0 concave; the
+ * field keeps its magnitude as written) and `surfaceAxis=feed|cross`; neither for a plane. An
+ * invalid radius falls back to a plane, an invalid axis to feed, each with a notice.
+ */
+function parseSurface(
+  params: URLSearchParams,
+  defaultRadius: string,
+  notices: string[],
+): { kind: SurfaceKind; axis: SurfaceAxis; radiusText: string | null } {
+  const axisText = params.get('surfaceAxis');
+  let axis: SurfaceAxis = 'feed';
+  if (axisText === 'cross') axis = 'cross';
+  else if (axisText !== null && axisText !== 'feed')
+    notices.push(`surfaceAxis="${axisText.slice(0, 20)}" is not feed or cross; using feed.`);
+  const text = params.get('surfaceRadius');
+  if (text === null || text.trim() === '' || text.trim() === 'plane') return { kind: 'plane', axis, radiusText: null };
+  const v = parseField(text);
+  if (v === null) {
+    notices.push(
+      `surfaceRadius="${text.slice(0, 20)}" in the link is not a number; using a plane (a cylinder's radius defaults to ${defaultRadius}).`,
+    );
+    return { kind: 'plane', axis, radiusText: null };
+  }
+  const t = text.trim();
+  return { kind: v < 0 ? 'concave' : 'convex', axis, radiusText: /^[+-]/.test(t) ? t.slice(1) : t };
+}
+
+/** The signed surface radius as the link writes it: the field's text, with a minus when concave. */
+export function signedRadiusText(state: CalculatorState): string {
+  const t = state.fields.Rs.trim();
+  if (state.surface !== 'concave' || t.startsWith('-')) return t;
+  return `-${t.startsWith('+') ? t.slice(1) : t}`;
+}
+
+/**
  * The query string that records a state (values as typed, in the current unit). The defaults of
- * the posture, no tilt and one-way passes, are left out, so the paper's links stay as they were.
+ * the posture, no tilt and one-way passes, are left out, so the paper's links stay as they were; so
+ * is the surface for a plane (a cylinder writes its signed radius and its axis).
  */
 export function toSearch(state: CalculatorState, extra: Readonly<Record<string, string>> = {}): string {
   const params = new URLSearchParams();
@@ -232,6 +295,10 @@ export function toSearch(state: CalculatorState, extra: Readonly<Record<string, 
   params.set('rho', state.fields.rho);
   if (state.fields.tilt.trim() !== '0') params.set('tilt', state.fields.tilt);
   if (state.pattern !== 'one-way') params.set('pattern', state.pattern);
+  if (state.surface !== 'plane') {
+    params.set('surfaceRadius', signedRadiusText(state));
+    params.set('surfaceAxis', state.surfaceAxis);
+  }
   if (state.mode === 'forward' && state.target === 'ra') {
     params.set('target', 'ra');
     params.set('ra', state.fields.ra);

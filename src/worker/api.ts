@@ -19,15 +19,24 @@ import {
   sekineHalfInterval,
   sekineModel,
 } from '../core/approximations';
-import { compareForward, compareInverse, type ForwardEstimate, type InverseEstimate } from '../core/compare';
-import type { Surface } from '../core/cylinder';
+import {
+  CORRECTED_KEYS,
+  type CorrectedKey,
+  type CurvatureComparison,
+  compareForward,
+  compareInverse,
+  type ForwardEstimate,
+  type InverseEstimate,
+} from '../core/compare';
+import { type CylinderSurface, revolvedProfile, type Surface } from '../core/cylinder';
 import { exactForward } from '../core/exact';
 import { cuspSection, intersectionLoops } from '../core/geometry';
 import { placeTool, ringTangent, sectionCentre } from '../core/placement';
 import { contactOffsetMm, type Flank, flankAtHeight, shapeOfTool } from '../core/posture';
-import { APPROXIMATION_KEYS, type ApproximationKey } from '../core/procedures';
+import { APPROXIMATION_KEYS, type ApproximationKey, CURVATURE_ROWS, type CurvatureRowKey } from '../core/procedures';
 import { forwardOfRaTarget, roughnessSummary, validateRaTarget } from '../core/raTarget';
 import { exactRoughness, exactRoughnessAtInterval, type Roughness } from '../core/roughness';
+import { surfacePoint, toSurfaceSection } from '../core/surfaceGeometry';
 import { type PaperTableRow, paperTables, profileCurves, stepOverSweep } from '../core/teaching';
 import { toolMesh } from '../core/toolMesh';
 import { traceProcedure } from '../core/trace';
@@ -43,8 +52,10 @@ import {
   validateInverse,
 } from '../core/validate';
 import {
+  type CurvatureRow,
   type Cusp,
   type CuspGeometry,
+  type CylinderCurves,
   type ExactSummary,
   LOOP_SAMPLES,
   type Loops,
@@ -134,7 +145,7 @@ function exactOfInverse(input: InverseInput, c: ReturnType<typeof compareInverse
     right: { yMm: zigzag ? L / 2 : e.halfWidthRightMm, heightMm: e.rightCuspHeightMm },
     left: { yMm: zigzag ? -L / 2 : -e.halfWidthLeftMm, heightMm: e.leftCuspHeightMm },
     noScallop: false,
-    maxIntervalMm: maxIntervalMm(input, input.pattern),
+    maxIntervalMm: maxIntervalMm(input, input.pattern, input.surface),
   };
 }
 
@@ -209,6 +220,89 @@ function inverseRow(key: ApproximationKey, input: InverseInput, r: InverseEstima
   };
 }
 
+/** The row key of a corrected procedure. */
+function correctedRowKey(key: CorrectedKey): CurvatureRowKey {
+  return `${key}Corrected`;
+}
+
+/**
+ * Why a corrected procedure has no value at h (forward) or L/2 (inverse): the model's own reason, a
+ * combined radius that is not positive (a concave surface tighter than Reff), or the quantity beyond
+ * the combined circle's widest point.
+ */
+function curvatureNote(
+  key: CorrectedKey,
+  tool: ToolInput,
+  surface: CylinderSurface,
+  quantity: 'h' | 'half',
+  valueMm: number,
+): ProcedureNote {
+  const m = modelOf(key, tool);
+  if (!m.ok) return { kind: 'reason', text: m.notApplicable };
+  if (!('circle' in m)) return { kind: 'reason', text: 'not applicable' };
+  const reff = m.circle;
+  const across = surface.axis === 'feed' ? surface.radiusMm : Number.POSITIVE_INFINITY;
+  const combined = Number.isFinite(across) ? (reff * across) / (reff + across) : reff;
+  if (!(combined > 0) || !Number.isFinite(combined)) {
+    return {
+      kind: 'reason',
+      text: `${CURVATURE_ROWS[correctedRowKey(key)].shortLabel}: its effective radius is not smaller than the concave surface's radius, so the combined radius 1/(1/Reff + 1/Rs) is not positive.`,
+    };
+  }
+  return { kind: 'beyond-model', shape: 'circle', quantity, valueMm, limitMm: combined };
+}
+
+/** The rows a cylinder adds (forward): the plane's answer and each corrected procedure. */
+function forwardCurvatureRows(input: ForwardInput, c: ReturnType<typeof compareForward>): CurvatureRow[] | null {
+  const k = c.curvature;
+  if (k === null) return null;
+  const row = (key: CurvatureRowKey, r: ForwardEstimate<unknown>, missing: () => ProcedureNote): CurvatureRow => {
+    if (!r.ok)
+      return { key, valueMm: null, deviationMm: null, deviationPercent: null, realScallopMm: null, note: missing() };
+    return {
+      key,
+      valueMm: r.halfIntervalMm,
+      deviationMm: r.deviationMm / 2,
+      deviationPercent: r.deviationPercent,
+      realScallopMm: r.realScallopMm,
+      note: r.warning === null ? null : { kind: 'wall', intervalMm: r.intervalMm, maxIntervalMm: c.maxIntervalMm },
+    };
+  };
+  const rows = [row('plane', k.plane, () => ({ kind: 'reason', text: k.plane.ok ? '' : k.plane.notApplicable }))];
+  for (const key of CORRECTED_KEYS)
+    rows.push(
+      row(correctedRowKey(key), k.corrected[key], () =>
+        curvatureNote(key, input, k.surface, 'h', input.scallopHeightMm),
+      ),
+    );
+  return rows;
+}
+
+/** The rows a cylinder adds (inverse): the scallop heights of the plane's answer and the corrected circles. */
+function inverseCurvatureRows(input: InverseInput, c: ReturnType<typeof compareInverse>): CurvatureRow[] | null {
+  const k = c.curvature;
+  if (k === null) return null;
+  const row = (key: CurvatureRowKey, r: InverseEstimate, missing: () => ProcedureNote): CurvatureRow =>
+    r.ok
+      ? {
+          key,
+          valueMm: r.scallopHeightMm,
+          deviationMm: r.deviationMm,
+          deviationPercent: r.deviationPercent,
+          realScallopMm: null,
+          note: null,
+        }
+      : { key, valueMm: null, deviationMm: null, deviationPercent: null, realScallopMm: null, note: missing() };
+  const rows = [row('plane', k.plane, () => ({ kind: 'reason', text: k.plane.ok ? '' : k.plane.notApplicable }))];
+  for (const key of CORRECTED_KEYS)
+    rows.push(
+      row(correctedRowKey(key), k.corrected[key], () =>
+        curvatureNote(key, input, k.surface, 'half', input.intervalMm / 2),
+      ),
+    );
+  return rows;
+}
+
 /** At most the two closed curves a torus leaves on a plane. */
 function asLoops(curves: Float64Array[]): Loops {
   const [a, b] = curves;
@@ -216,8 +310,32 @@ function asLoops(curves: Float64Array[]): Loops {
 }
 
 /** The scene's geometry: the tool in its posture, the cusp sections and curves (mm). */
-export function sceneGeometry(input: ToolInput, exact: ExactSummary): SceneGeometry {
+export function sceneGeometry(
+  input: ToolInput,
+  exact: ExactSummary,
+  surface: Surface = { kind: 'plane' },
+): SceneGeometry {
   const p = placeTool(input);
+  const mesh = toolMesh(input, 0.6 * input.toolRadiusMm, TOOL_RADIAL_SEGMENTS);
+  if (surface.kind === 'cylinder') {
+    // The torus against the h pseudo plane is the plane's construction: on a cylinder the scene
+    // marks the cusps themselves, on the offset cylinder, in the section through the contact.
+    const cusp = (c: Cusp) => (c.heightMm < MIN_LENGTH_MM ? null : surfacePoint(surface, 0, c.yMm, c.heightMm));
+    return {
+      toolRadiusMm: input.toolRadiusMm,
+      cornerRadiusMm: input.cornerRadiusMm,
+      pattern: exact.pattern,
+      intervalMm: exact.intervalMm,
+      scallopHeightMm: exact.cuspHeightMm,
+      toolCentre: p.centre,
+      toolAxis: p.axis,
+      toolPositions: mesh.positions,
+      right: null,
+      left: null,
+      surface,
+      cuspPoints: { right: cusp(exact.right), left: cusp(exact.left) },
+    };
+  }
   const same = exact.right.heightMm === exact.left.heightMm;
   const sections = (['right', 'left'] as const).map((flank) => {
     const h = exact[flank].heightMm;
@@ -240,7 +358,6 @@ export function sceneGeometry(input: ToolInput, exact: ExactSummary): SceneGeome
   const both = [rs?.s.ringAngleRad, ls?.s.ringAngleRad].filter((t): t is number => t !== undefined);
   const right = cusp(rs ?? null, same ? both : rs ? [rs.s.ringAngleRad] : []);
   const left = cusp(ls ?? null, same && rs ? [] : ls ? [ls.s.ringAngleRad] : []);
-  const mesh = toolMesh(input, 0.6 * input.toolRadiusMm, TOOL_RADIAL_SEGMENTS);
   return {
     toolRadiusMm: input.toolRadiusMm,
     cornerRadiusMm: input.cornerRadiusMm,
@@ -252,6 +369,8 @@ export function sceneGeometry(input: ToolInput, exact: ExactSummary): SceneGeome
     toolPositions: mesh.positions,
     right,
     left,
+    surface,
+    cuspPoints: null,
   };
 }
 
@@ -262,6 +381,7 @@ export function solve(request: SolveRequest): SolveReply {
   if (errors !== null) return { ok: false, request, errors };
   let exact: ExactSummary;
   let rows: ProcedureRow[];
+  let curvature: CurvatureRow[] | null;
   let roughness: Roughness;
   if (request.mode !== 'inverse') {
     const input = request.mode === 'ra' ? forwardOfRaTarget(request.input) : request.input;
@@ -270,6 +390,7 @@ export function solve(request: SolveRequest): SolveReply {
     roughness = exactRoughness(input, c.exact);
     rows = [exactRow(exact.halfIntervalMm, exact.cuspHeightMm)];
     for (const key of APPROXIMATION_KEYS) rows.push(forwardRow(key, input, c.approximations[key], c.maxIntervalMm));
+    curvature = forwardCurvatureRows(input, c);
   } else {
     const input = request.input;
     const c = compareInverse(input);
@@ -277,13 +398,15 @@ export function solve(request: SolveRequest): SolveReply {
     roughness = exactRoughnessAtInterval(input, input.pattern, c.exact, input.surface);
     rows = [exactRow(exact.cuspHeightMm, null)];
     for (const key of APPROXIMATION_KEYS) rows.push(inverseRow(key, input, c.approximations[key]));
+    curvature = inverseCurvatureRows(input, c);
   }
   return {
     ok: true,
     request,
     exact,
     rows,
-    scene: sceneGeometry(request.input, exact),
+    curvature,
+    scene: sceneGeometry(request.input, exact, request.input.surface),
     roughness: roughnessSummary(roughness, exact.cuspHeightMm),
     solveMs: performance.now() - t0,
   };
@@ -393,11 +516,21 @@ let tables: readonly PaperTableRow[] | null = null;
 function sweep(input: ForwardInput, axis: 'lead' | 'tilt'): Sweep {
   const h = input.scallopHeightMm;
   if (axis === 'lead') {
-    const s = stepOverSweep(input, input.pattern, h, 'lead', 0.5, 89, 120, input.leadAngleDeg);
+    const s = stepOverSweep(input, input.pattern, h, 'lead', 0.5, 89, 120, input.leadAngleDeg, input.surface);
     return { angleDeg: s.angleDeg, values: s.values, gaps: s.gaps };
   }
   const beta = input.tiltAngleDeg;
-  const s = stepOverSweep(input, input.pattern, h, 'tilt', Math.min(-60, beta), Math.max(60, beta), 120, beta);
+  const s = stepOverSweep(
+    input,
+    input.pattern,
+    h,
+    'tilt',
+    Math.min(-60, beta),
+    Math.max(60, beta),
+    120,
+    beta,
+    input.surface,
+  );
   return { angleDeg: s.angleDeg, values: s.values, gaps: s.gaps };
 }
 
@@ -450,15 +583,37 @@ function models(input: ForwardInput): TeachData['models'] {
   };
 }
 
+/** The profile view's curves on a cylinder (surface coordinates) and where each comparison row puts the next pass. */
+function cylinderCurves(
+  forward: ForwardInput,
+  surface: CylinderSurface,
+  c: { profile: Float64Array; ringEllipse: Float64Array },
+  k: CurvatureComparison | null,
+): CylinderCurves {
+  const passProfile =
+    surface.axis === 'feed' ? toSurfaceSection(surface, c.profile) : revolvedProfile(forward, surface);
+  const comparison: Array<{ key: CurvatureRowKey; intervalMm: number | null }> = [
+    { key: 'plane', intervalMm: k?.plane.ok ? k.plane.intervalMm : null },
+  ];
+  for (const key of CORRECTED_KEYS) {
+    const r = k?.corrected[key];
+    comparison.push({ key: correctedRowKey(key), intervalMm: r?.ok ? r.intervalMm : null });
+  }
+  return { surface, passProfile, ringEllipse: toSurfaceSection(surface, c.ringEllipse), comparison };
+}
+
 /** The teaching views' data for one request (in inverse mode: the forward state at the solved h). */
 export function teach(request: SolveRequest): TeachReply {
   const errors = revalidate(request);
   if (errors !== null) return { ok: false, request, errors, reason: null };
   let forward: ForwardInput;
   let exact: ExactSummary;
+  /** The forward comparison, when it is at hand (its curvature rows feed the profile on a cylinder). */
+  let compared: ReturnType<typeof compareForward> | null = null;
   if (request.mode !== 'inverse') {
     forward = request.mode === 'ra' ? forwardOfRaTarget(request.input) : request.input;
-    exact = exactOfForward(forward, compareForward(forward));
+    compared = compareForward(forward);
+    exact = exactOfForward(forward, compared);
   } else {
     const input = request.input;
     exact = exactOfInverse(input, compareInverse(input));
@@ -471,7 +626,7 @@ export function teach(request: SolveRequest): TeachReply {
           'No scallop: the flat bottom lying on the plane covers this step-over, so there is no profile to compare.',
       };
     }
-    forward = forwardInput(input, input.pattern, exact.cuspHeightMm);
+    forward = forwardInput(input, input.pattern, exact.cuspHeightMm, input.surface);
   }
   const c = profileCurves(forward);
   const approximations = {
@@ -482,6 +637,11 @@ export function teach(request: SolveRequest): TeachReply {
     cornerBall: c.cornerBall,
   };
   tables ??= paperTables();
+  const cylinder =
+    forward.surface.kind === 'cylinder'
+      ? cylinderCurves(forward, forward.surface, c, (compared ?? compareForward(forward)).curvature)
+      : null;
+  const trace = traceFrames(forward);
   return {
     ok: true,
     request,
@@ -489,9 +649,12 @@ export function teach(request: SolveRequest): TeachReply {
     exact,
     curves: { profile: c.profile, ringEllipse: c.ringEllipse, approximations },
     sweeps: { lead: sweep(forward, 'lead'), tilt: sweep(forward, 'tilt') },
-    ...traceFrames(forward),
+    // The paper's procedure works against the h pseudo plane: it has no frames on a cylinder.
+    frames: cylinder === null ? trace.frames : [],
+    traceResult: trace.traceResult,
     models: models(forward),
     tables,
+    cylinder,
   };
 }
 
@@ -507,6 +670,10 @@ export function transferables(reply: SolveReply | TeachReply): ArrayBuffer[] {
     const c = reply.curves;
     for (const curve of [c.profile, c.ringEllipse, ...Object.values(c.approximations)])
       if (curve) out.add(curve.buffer as ArrayBuffer);
+    if (reply.cylinder !== null) {
+      out.add(reply.cylinder.passProfile.buffer as ArrayBuffer);
+      out.add(reply.cylinder.ringEllipse.buffer as ArrayBuffer);
+    }
   }
   return [...out];
 }

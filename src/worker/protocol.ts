@@ -6,9 +6,9 @@
  * can show a reply only when it answers the inputs on screen (sameRequest).
  */
 
-import type { Surface } from '../core/cylinder';
+import type { CylinderSurface, Surface } from '../core/cylinder';
 import type { LookupGrid, LookupTable, LookupTool } from '../core/lookupTable';
-import type { ApproximationKey, ProcedureKey } from '../core/procedures';
+import type { ApproximationKey, CurvatureRowKey, ProcedureKey } from '../core/procedures';
 import type { RaTargetInput, RoughnessSummary } from '../core/raTarget';
 import type { SweepGap } from '../core/sweepGaps';
 import type { PaperTableRow } from '../core/teaching';
@@ -113,6 +113,20 @@ export interface ProcedureRow {
   readonly note: ProcedureNote | null;
 }
 
+/**
+ * One row a cylinder adds to the results table (the plane's exact answer, or a procedure corrected
+ * for the curvature), with the same fields as a procedure's row: forward L/2 and its deviation from
+ * exact, the scallop its own L really leaves on the cylinder; inverse the scallop height it predicts.
+ */
+export interface CurvatureRow {
+  readonly key: CurvatureRowKey;
+  readonly valueMm: number | null;
+  readonly deviationMm: number | null;
+  readonly deviationPercent: number | null;
+  readonly realScallopMm: number | null;
+  readonly note: ProcedureNote | null;
+}
+
 /** Segments around the tool axis of the tool mesh the worker sends (the scene builds the same indices). */
 export const TOOL_RADIAL_SEGMENTS = 64;
 /** Samples per branch of the torus / plane curves. */
@@ -146,9 +160,16 @@ export interface SceneGeometry {
   readonly toolAxis: Vec3;
   /** Tool surface, TOOL_RADIAL_SEGMENTS around the axis (indices: core toolMeshIndices). */
   readonly toolPositions: Float32Array;
-  /** The cusp on each side; null where it has no height (a flat bottom covers it). */
+  /** The cusp on each side; null where it has no height (a flat bottom covers it), and on a cylinder. */
   readonly right: CuspGeometry | null;
   readonly left: CuspGeometry | null;
+  /** The design surface: a plane, or a cylinder (surfaceGeometry.ts draws it). */
+  readonly surface: Surface;
+  /**
+   * On a cylinder, the cusp points on the h pseudo surface (where the neighbouring passes' profiles
+   * meet, in the section through the contact); null on a plane (the cusp sections say it there).
+   */
+  readonly cuspPoints: { readonly right: Vec3 | null; readonly left: Vec3 | null } | null;
 }
 
 /** The answer to `solve`. */
@@ -158,6 +179,8 @@ export type SolveReply =
       readonly request: SolveRequest;
       readonly exact: ExactSummary;
       readonly rows: readonly ProcedureRow[];
+      /** On a cylinder: the plane's answer and the corrected procedures (CURVATURE_ROW_KEYS order); null on a plane. */
+      readonly curvature: readonly CurvatureRow[] | null;
       readonly scene: SceneGeometry;
       /** Rz, Ra, Rq of the surface left at the exact step-over, and the rule of thumb Ra ~ h/4. */
       readonly roughness: RoughnessSummary;
@@ -246,6 +269,24 @@ export interface ProfileCurveSet {
   readonly approximations: { readonly [K in ApproximationKey]: Float64Array | null };
 }
 
+/**
+ * What the cross-feed profile view draws on a cylinder, in surface coordinates: (the arc length
+ * across the feed from the contact, the radial height above the surface), mm.
+ */
+export interface CylinderCurves {
+  readonly surface: CylinderSurface;
+  /**
+   * One pass's exact profile from the left flank's widest point to the right one's: with the axis
+   * along the feed the plane profile (turned about the axis for the next pass), across it the tool
+   * revolved about the axis (cylinder.ts revolvedProfile).
+   */
+  readonly passProfile: Float64Array;
+  /** The ring ellipse (curves.ringEllipse) in the same coordinates. */
+  readonly ringEllipse: Float64Array;
+  /** Where each comparison row puts the next pass: its step-over L on this cylinder (null where none). */
+  readonly comparison: ReadonlyArray<{ readonly key: CurvatureRowKey; readonly intervalMm: number | null }>;
+}
+
 /** Everything the teaching views draw, for the forward state the request comes to. */
 export interface TeachData {
   /** The forward input the views show: the request's own, or in inverse mode the solved h. */
@@ -258,6 +299,8 @@ export interface TeachData {
   readonly models: FormulaModels;
   /** Tables 2-5 recomputed beside the printed values. */
   readonly tables: readonly PaperTableRow[];
+  /** On a cylinder, the profile view's curves in surface coordinates; null on a plane. */
+  readonly cylinder: CylinderCurves | null;
 }
 
 /** The answer to `teach`. */

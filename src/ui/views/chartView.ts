@@ -53,6 +53,14 @@ function chart(testId: string): Chart {
   return { figure, title, picture, legend, notes };
 }
 
+/** On a cylinder, what the charts' exact curve is and what the approximations' are. */
+function cylinderSummary(ctx: ViewContext): string {
+  const s = ctx.data.forward.surface;
+  if (s.kind !== 'cylinder') return '';
+  const side = s.radiusMm > 0 ? 'convex' : 'concave';
+  return ` On this ${side} cylinder (axis ${s.axis === 'feed' ? 'along' : 'across'} the feed) the exact curve is the cylinder's (none where the posture would gouge the surface or h is beyond its flanks); the approximations are as on a plane, as in the table.`;
+}
+
 export class ChartView implements TeachingView {
   readonly id = 'chart';
   readonly title = 'L against lead and tilt';
@@ -175,7 +183,7 @@ export class ChartView implements TeachingView {
         : `At rho = ${formatDeg(rho)} deg, beta = ${formatDeg(beta)} deg, L [${unit}]: ${PROCEDURE_KEYS.map((key) => {
             const v = tilt.values[key][at];
             return `${PROCEDURES[key].shortLabel} ${v === null || v === undefined ? 'n/a' : len(v)}`;
-          }).join(', ')}.`;
+          }).join(', ')}.${cylinderSummary(ctx)}`;
     this.highlight(this.highlighted);
   }
 

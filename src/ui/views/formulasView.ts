@@ -6,6 +6,7 @@
 import mathml from 'virtual:formula-mathml';
 import { PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures';
 import { unitSymbol } from '../../core/units';
+import { formatSignedLen } from '../format';
 import { html, type TeachingView, untilted, type ViewContext } from './common';
 import { formulaSlotValues } from './formulaSlots';
 import { FORMULA_TEMPLATES, slotClass } from './formulaTemplates';
@@ -31,7 +32,19 @@ export class FormulasView implements TeachingView {
     });
     this.element.replaceChildren();
     const tilted = !untilted(ctx);
+    const surface = forward.surface;
+    if (surface.kind === 'cylinder') {
+      // The exact formulas below are the plane's: on a cylinder the exact answer is solved there.
+      this.element.append(
+        html(
+          'p',
+          { class: 'view-note', 'data-testid': 'formulas-cylinder-note' },
+          `On a cylinder (Rs = ${formatSignedLen(surface.radiusMm, ctx.unit)} ${unitSymbol(ctx.unit)}, axis ${surface.axis === 'feed' ? 'along' : 'across'} the feed) the exact step-over is solved on the cylinder itself (the flanks' reach at the radial height h, ${surface.axis === 'feed' ? 'as angles about its axis' : 'of the tool revolved about its axis'}), not by the plane's formulas, so they are left out. The approximations below are as on a plane; the table's corrected rows put 1/rho = 1/Reff + 1/Rs into L = 2 sqrt(2 rho h - h^2).`,
+        ),
+      );
+    }
     for (const key of PROCEDURE_KEYS) {
+      if (key === 'exact' && surface.kind === 'cylinder') continue;
       const slots = values[key];
       if (!slots) continue;
       const info = PROCEDURES[key];

@@ -3,11 +3,25 @@
  * with the scallops shaded, both cusps, the flanks' widths to each cusp, the ring ellipse the
  * profile is offset from, and the profiles each approximation assumes. Zoom with the wheel or
  * the buttons, pan by dragging; the vertical scale can be exaggerated, and then says so.
+ *
+ * On a cylinder the same, on the curved surface: each pass's exact profile (the plane profile
+ * turned about the axis, axis along the feed; the tool revolved about it, axis across, where this
+ * section through the axis shows the surface straight), the h pseudo surface, the approximations'
+ * profiles tangent at each contact, and where the plane's answer and the corrected procedures put
+ * the next pass. Heights are exaggerated radially, the surface's curvature kept at true scale.
  */
-import { PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures';
-import { formatLen } from '../format';
+import {
+  CURVATURE_ROW_KEYS,
+  CURVATURE_ROWS,
+  PROCEDURE_KEYS,
+  PROCEDURES,
+  type ProcedureKey,
+} from '../../core/procedures';
+import { fromSurfaceSection, toSurfaceSection } from '../../core/surfaceGeometry';
+import type { CylinderCurves } from '../../worker/protocol';
+import { formatLen, formatLenUnit } from '../format';
 import { html, svg, type TeachingView, untilted, type ViewContext } from './common';
-import { autoExaggeration } from './scale';
+import { autoExaggeration, EXAGGERATION_STEPS } from './scale';
 
 type Box = { x: number; y: number; w: number; h: number };
 
@@ -29,6 +43,33 @@ function profileHeight(pts: Float64Array, y: number): number {
   return y1 > y0 ? z0 + ((z1 - z0) * (y - y0)) / (y1 - y0) : Math.min(z0, z1);
 }
 
+/**
+ * A profile (flat s, h) from its left end to its right end, keeping from the contact (the point
+ * nearest s = 0) outwards only the points that go on outwards: in surface coordinates a flank can
+ * turn back near its widest point, and profileHeight needs s increasing.
+ */
+function monotoneProfile(pts: Float64Array): Float64Array {
+  const n = pts.length / 2;
+  if (n < 2) return pts;
+  let j0 = 0;
+  for (let i = 1; i < n; i++) if (Math.abs(pts[2 * i] as number) < Math.abs(pts[2 * j0] as number)) j0 = i;
+  const right: number[] = [pts[2 * j0] as number, pts[2 * j0 + 1] as number];
+  for (let i = j0 + 1, last = pts[2 * j0] as number; i < n; i++) {
+    const sMm = pts[2 * i] as number;
+    if (sMm <= last) break;
+    right.push(sMm, pts[2 * i + 1] as number);
+    last = sMm;
+  }
+  const left: number[] = [];
+  for (let i = j0 - 1, last = pts[2 * j0] as number; i >= 0; i--) {
+    const sMm = pts[2 * i] as number;
+    if (sMm >= last) break;
+    left.unshift(sMm, pts[2 * i + 1] as number);
+    last = sMm;
+  }
+  return Float64Array.from([...left, ...right]);
+}
+
 export class ProfileView implements TeachingView {
   readonly id = 'profile';
   readonly title = 'Cross-feed profile';
@@ -48,6 +89,10 @@ export class ProfileView implements TeachingView {
   private box: Box = { x: 0, y: 0, w: 1, h: 1 };
   private ctx: ViewContext | null = null;
   private readonly curves = new Map<ProcedureKey, SVGElement[]>();
+  /** On a cylinder: what the section shows (which axis, how the passes are made). */
+  private readonly cylinderNote = html('p', { class: 'view-note', 'data-testid': 'profile-cylinder-note' });
+  /** Where "Zoom to cusp" goes (display coordinates), set on a cylinder. */
+  private cuspAt: { x: number; y: number; k: number } | null = null;
 
   constructor() {
     this.exaggeration.append(html('option', { value: 'auto' }, 'vertical: auto'));
@@ -66,7 +111,8 @@ export class ProfileView implements TeachingView {
     cusp.addEventListener('click', () => this.zoomToCusp());
     tools.append(this.exaggeration, zoomIn, zoomOut, cusp, reset, this.scaleNote);
     this.plot.append(this.layer);
-    this.element.append(tools, this.plot, this.legend());
+    this.cylinderNote.hidden = true;
+    this.element.append(tools, this.cylinderNote, this.plot, this.legend());
     this.wirePanZoom();
   }
 
@@ -80,11 +126,31 @@ export class ProfileView implements TeachingView {
     const ring = html('span', { class: 'legend-item' });
     ring.append(html('span', { class: 'swatch swatch-faint' }), document.createTextNode('ring ellipse (a = Rb, b)'));
     legend.append(ring);
+    // On a cylinder: where the plane's answer and the corrected procedures put the next pass.
+    for (const key of CURVATURE_ROW_KEYS) {
+      const item = html('span', { class: 'legend-item cylinder-only', 'data-curvature': key });
+      item.append(
+        html('span', { class: 'swatch' }),
+        document.createTextNode(`${CURVATURE_ROWS[key].shortLabel}: next pass`),
+      );
+      legend.append(item);
+    }
     return legend;
   }
 
   update(ctx: ViewContext): void {
     this.ctx = ctx;
+    const cylinder = ctx.data.cylinder;
+    this.element.classList.toggle('on-cylinder', cylinder !== null);
+    for (const e of this.element.querySelectorAll<HTMLElement>('.legend-item.cylinder-only'))
+      e.hidden = cylinder === null;
+    this.cylinderNote.hidden = cylinder === null;
+    if (cylinder !== null) {
+      this.updateCylinder(ctx, cylinder);
+      return;
+    }
+    this.cuspAt = null;
+    this.plot.setAttribute('aria-label', 'Cross-feed profile of three adjacent passes');
     const { data } = ctx;
     const ex = data.exact;
     const L = ex.intervalMm;
@@ -166,6 +232,231 @@ export class ProfileView implements TeachingView {
     this.highlight(this.highlighted);
   }
 
+  /**
+   * The view on a cylinder, in surface coordinates (arc length across the feed, radial height)
+   * mapped to the section: D(s, hr) is the point hr above the surface at s, the height exaggerated
+   * by k, the surface itself at true scale.
+   */
+  private updateCylinder(ctx: ViewContext, cyl: CylinderCurves): void {
+    const { data, unit } = ctx;
+    const surface = cyl.surface;
+    const ex = data.exact;
+    const L = ex.intervalMm;
+    const h = ex.cuspHeightMm;
+    const R = data.forward.toolRadiusMm;
+    const top = Math.min(R, 4 * h);
+    const feed = surface.axis === 'feed';
+    const abs = Math.abs(surface.radiusMm);
+    const side = surface.radiusMm > 0 ? 'convex' : 'concave';
+    // A concave trough seen along its axis folds over if the heights grow past its radius: cap k.
+    const wanted = this.verticalScale(ctx);
+    const kMax = feed && surface.radiusMm < 0 ? (0.5 * abs) / top : Number.POSITIVE_INFINITY;
+    let k = wanted;
+    if (k > kMax) k = Math.max(1, ...EXAGGERATION_STEPS.filter((step) => step <= kMax));
+    const D = (sMm: number, hr: number): [number, number] => {
+      const [y, z] = fromSurfaceSection(surface, sMm, k * hr);
+      return [y, -z];
+    };
+    const pt = (sMm: number, hr: number) => D(sMm, hr).join(',');
+    this.plot.setAttribute(
+      'aria-label',
+      `Cross-feed profile of three adjacent passes on a ${side} cylinder, axis ${feed ? 'along' : 'across'} the feed`,
+    );
+    this.cylinderNote.textContent = feed
+      ? `On a ${side} cylinder of radius ${formatLenUnit(abs, unit)}, axis along the feed: each pass leaves the plane profile, the next one turned about the cylinder's axis by L/|Rs|; L is measured along the arc. Heights radially, from the surface.`
+      : `On a ${side} cylinder of radius ${formatLenUnit(abs, unit)}, axis across the feed: this section through the cylinder's axis shows the surface straight; each pass is the tool revolved about the axis (its profile is not the plane's), the next one stepped L along the axis. Heights radially, from the surface.`;
+    const mirrored = ex.pattern === 'zigzag';
+    const passes: ReadonlyArray<readonly [number, 1 | -1]> = [
+      [-L, mirrored ? -1 : 1],
+      [0, 1],
+      [L, mirrored ? -1 : 1],
+    ];
+    this.layer.replaceChildren();
+    this.curves.clear();
+    const profile = monotoneProfile(cyl.passProfile);
+    const passHeight = (sMm: number, [c, m]: readonly [number, 1 | -1]) => profileHeight(profile, m * (sMm - c));
+    const y0 = ex.contactOffsetMm;
+    // The arc shown, kept within half a turn of a small cylinder.
+    const limit = feed ? 0.98 * Math.PI * abs : Number.POSITIVE_INFINITY;
+    const span = {
+      from: Math.max(-limit, Math.min(-L - 0.2 * R, -y0 - 0.1 * R)),
+      to: Math.min(limit, Math.max(L + 0.2 * R, -y0 + 0.1 * R)),
+    };
+    const along = (from: number, to: number, hr: (sMm: number) => number, n = 240) => {
+      const parts: string[] = [];
+      for (let i = 0; i <= n; i++) {
+        const sMm = from + ((to - from) * i) / n;
+        parts.push(pt(sMm, hr(sMm)));
+      }
+      return parts;
+    };
+    // Scallops: between the surface and the lower envelope of the three passes.
+    const envelope = along(-L, L, (sMm) => Math.min(...passes.map((p) => passHeight(sMm, p))), 600);
+    const floor = along(L, -L, () => 0, 120);
+    this.layer.append(
+      svg('polygon', { points: [...envelope, ...floor].join(' '), class: 'scallop', 'data-testid': 'profile-scallop' }),
+    );
+    this.layer.append(
+      svg('polyline', {
+        points: along(span.from, span.to, () => 0).join(' '),
+        class: 'ground surface-curve',
+        'data-testid': 'profile-surface',
+      }),
+    );
+    this.layer.append(
+      svg('polyline', {
+        points: along(span.from, span.to, () => h).join(' '),
+        class: 'hplane',
+        'data-testid': 'profile-h-surface',
+      }),
+    );
+    if (feed) {
+      const ring: string[] = [];
+      for (let i = 0; i + 1 < cyl.ringEllipse.length; i += 2)
+        ring.push(pt(cyl.ringEllipse[i] as number, cyl.ringEllipse[i + 1] as number));
+      this.layer.append(svg('polyline', { points: ring.join(' '), class: 'ring' }));
+    }
+    const polyline = (key: ProcedureKey, points: string) => {
+      const line = svg('polyline', { points, class: `curve curve-${key}`, 'data-procedure': key });
+      this.layer.append(line);
+      const list = this.curves.get(key) ?? [];
+      list.push(line);
+      this.curves.set(key, list);
+    };
+    // The approximations: their profiles tangent to the surface at each contact.
+    for (const key of PROCEDURE_KEYS) {
+      if (key === 'exact') continue;
+      const pts = data.curves.approximations[key];
+      if (!pts) continue;
+      for (const sideSign of [1, -1]) {
+        const local: number[] = [];
+        for (let i = 0; i + 1 < pts.length; i += 2) {
+          if ((pts[i + 1] as number) > top) break;
+          local.push(sideSign * (pts[i] as number), pts[i + 1] as number);
+        }
+        const onSurface = toSurfaceSection(surface, local);
+        for (const [c] of passes) {
+          const parts: string[] = [];
+          for (let i = 0; i + 1 < onSurface.length; i += 2)
+            parts.push(pt(c + (onSurface[i] as number), onSurface[i + 1] as number));
+          polyline(key, parts.join(' '));
+        }
+      }
+    }
+    // The exact profile of each pass.
+    for (const [c, m] of passes) {
+      const parts: string[] = [];
+      for (let i = 0; i + 1 < cyl.passProfile.length; i += 2) {
+        const hr = cyl.passProfile[i + 1] as number;
+        if (hr <= top) parts.push(pt(c + m * (cyl.passProfile[i] as number), hr));
+      }
+      polyline('exact', parts.join(' '));
+    }
+    // Where the plane's answer and the corrected procedures put the next pass: a mark on the
+    // surface at their L, and for the plane's answer that pass's exact profile, dashed.
+    for (const row of cyl.comparison) {
+      if (row.intervalMm === null || !(row.intervalMm < span.to)) continue;
+      const sMm = row.intervalMm;
+      this.layer.append(
+        svg('polyline', {
+          points: [pt(sMm, -0.15 * top), pt(sMm, 0.6 * top)].join(' '),
+          class: 'curve comparison-mark',
+          'data-curvature': row.key,
+        }),
+      );
+      if (row.key === 'plane') {
+        const m = mirrored ? -1 : 1;
+        const parts: string[] = [];
+        for (let i = 0; i + 1 < profile.length; i += 2) {
+          const hr = profile[i + 1] as number;
+          if (hr <= top) parts.push(pt(sMm + m * (profile[i] as number), hr));
+        }
+        this.layer.append(
+          svg('polyline', {
+            points: parts.join(' '),
+            class: 'curve comparison-pass',
+            'data-curvature': 'plane',
+            'data-testid': 'profile-plane-pass',
+          }),
+        );
+      }
+    }
+    // Dimensions: the cusp heights radially, L/2 (or wR, wL) and L along the surface below it.
+    const [, yTop] = D(0, top);
+    const [, yBase] = D(0, 0);
+    const d = 0.03 * (span.to - span.from);
+    const below = (n: number) => -(n * d) / k;
+    const f = (mm: number) => formatLen(mm, unit);
+    const fh = (mm: number) => formatLen(mm, unit, 'height');
+    const { right, left } = ex;
+    const name = (c: { heightMm: number }) => (c.heightMm >= Math.max(right.heightMm, left.heightMm) ? 'h' : "h'");
+    const text = (x: number, y: number, label: string, cls = 'dim-text') => {
+      const t = svg('text', { x, y, class: cls });
+      t.textContent = label;
+      this.layer.append(t);
+    };
+    const radial = (sMm: number, hr: number, label: string) => {
+      const [a, b] = D(sMm, 0);
+      const [c2, e] = D(sMm, hr);
+      this.layer.append(svg('line', { x1: a, y1: b, x2: c2, y2: e, class: 'dim' }));
+      text((a + c2) / 2 + d / 2, (b + e) / 2, label);
+    };
+    const arcDim = (from: number, to: number, level: number, label: string) => {
+      this.layer.append(svg('polyline', { points: along(from, to, () => below(level), 48).join(' '), class: 'dim' }));
+      const [mx, my] = D((from + to) / 2, below(level));
+      text(mx, my - d / 3, label);
+    };
+    radial(right.yMm, right.heightMm, `${name(right)} = ${fh(right.heightMm)}`);
+    const untiltedHere = untilted(ctx);
+    if (!untiltedHere) radial(left.yMm, left.heightMm, `${name(left)} = ${fh(left.heightMm)}`);
+    if (untiltedHere || ex.pattern === 'zigzag') arcDim(0, L / 2, 2, `L/2 = ${f(L / 2)}`);
+    else {
+      arcDim(0, right.yMm, 2, `wR = ${f(right.yMm)}`);
+      arcDim(left.yMm, 0, 2, `wL = ${f(-left.yMm)}`);
+    }
+    arcDim(0, L, 4, `L = ${f(L)}${feed ? ' (arc)' : ''}`);
+    if (y0 !== 0) {
+      // The tool centre O: -y0 across the feed in the contact's tangent plane.
+      const local: number[] = [];
+      for (let i = 0; i <= 8; i++) local.push(-y0, (top * i) / 8);
+      const onSurface = toSurfaceSection(surface, local);
+      const parts: string[] = [];
+      for (let i = 0; i + 1 < onSurface.length; i += 2)
+        parts.push(pt(onSurface[i] as number, onSurface[i + 1] as number));
+      this.layer.append(svg('polyline', { points: parts.join(' '), class: 'centre-line' }));
+      const [ox, oy] = D(onSurface[onSurface.length - 2] as number, onSurface[onSurface.length - 1] as number);
+      text(ox + d / 3, oy + d, `O (y0 = ${f(y0)})`, 'dim-text centre-text');
+    }
+    // Home: everything drawn, with a margin.
+    let minX = Number.POSITIVE_INFINITY;
+    let maxX = Number.NEGATIVE_INFINITY;
+    let minY = Number.POSITIVE_INFINITY;
+    let maxY = Number.NEGATIVE_INFINITY;
+    for (const sMm of [span.from, span.to, 0, -L, L, (span.from + span.to) / 2]) {
+      for (const hr of [top, below(5), 0]) {
+        const [x, y] = D(sMm, hr);
+        minX = Math.min(minX, x);
+        maxX = Math.max(maxX, x);
+        minY = Math.min(minY, y);
+        maxY = Math.max(maxY, y);
+      }
+    }
+    minY = Math.min(minY, yTop);
+    maxY = Math.max(maxY, yBase);
+    const pad = 0.02 * (maxX - minX);
+    this.home = { x: minX - pad, y: minY - pad, w: maxX - minX + 2 * pad, h: maxY - minY + 2 * pad };
+    this.setBox(this.home);
+    const [cx, cy] = D(right.yMm, right.heightMm);
+    this.cuspAt = { x: cx, y: cy, k };
+    const auto = this.exaggeration.value === 'auto' ? ' (auto)' : '';
+    const capped = k < wanted ? ` (x${wanted} would fold the trough over)` : '';
+    this.scaleNote.textContent =
+      k === 1
+        ? `true scale${auto}${capped}`
+        : `heights above the surface exaggerated x${k}${auto}${capped}; the surface's curvature at true scale`;
+    this.highlight(this.highlighted);
+  }
+
   /** Cusp heights, the flanks' widths to their cusps, L, and the tool centre O. */
   private drawDimensions(ctx: ViewContext, k: number, top: number, d: number): void {
     const { data, unit } = ctx;
@@ -228,6 +519,12 @@ export class ProfileView implements TeachingView {
 
   private zoomToCusp(): void {
     if (!this.ctx) return;
+    if (this.cuspAt !== null) {
+      const w = Math.max(0.05 * Math.abs(this.ctx.data.exact.right.yMm), 0.002);
+      const hh = (2 * w * this.home.h) / this.home.w;
+      this.setBox({ x: this.cuspAt.x - w, y: this.cuspAt.y - hh / 2, w: 2 * w, h: hh });
+      return;
+    }
     const cusp = this.ctx.data.exact.right;
     const k = this.verticalScale(this.ctx);
     const w = Math.max(0.05 * Math.abs(cusp.yMm), 0.002);

@@ -148,6 +148,15 @@ export class StepperView implements TeachingView {
     this.gauge.setScale(
       gaugeMax(rcr > 0 ? ctx.data.frames.flatMap((f) => (f.dsMm === null ? [] : [f.dsMm / rcr])) : []),
     );
+    if (ctx.data.cylinder !== null) {
+      // The paper's procedure searches the torus against the h pseudo plane: a plane's construction.
+      this.caption.textContent =
+        "The paper's 3D procedure (Figure 1) searches the torus sections against the h pseudo plane, so it is shown for a plane only. On this cylinder the exact solver works on the cylinder itself (see the results and the Cross-feed profile); choose a plane to step through the procedure.";
+      this.counter.textContent = '';
+      this.gauge.show(null, '');
+      this.display.showTraceFrame(null);
+      return;
+    }
     this.go(Math.min(this.index, Math.max(0, this.steps.length - 1)));
   }
 
