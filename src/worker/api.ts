@@ -317,24 +317,23 @@ export function sceneGeometry(
 ): SceneGeometry {
   const p = placeTool(input);
   const mesh = toolMesh(input, 0.6 * input.toolRadiusMm, TOOL_RADIAL_SEGMENTS);
+  // What the scene draws on any surface: the tool in its posture and the step-over it leaves.
+  const common = {
+    toolRadiusMm: input.toolRadiusMm,
+    cornerRadiusMm: input.cornerRadiusMm,
+    pattern: exact.pattern,
+    intervalMm: exact.intervalMm,
+    scallopHeightMm: exact.cuspHeightMm,
+    toolCentre: p.centre,
+    toolAxis: p.axis,
+    toolPositions: mesh.positions,
+    surface,
+  };
   if (surface.kind === 'cylinder') {
     // The torus against the h pseudo plane is the plane's construction: on a cylinder the scene
     // marks the cusps themselves, on the offset cylinder, in the section through the contact.
     const cusp = (c: Cusp) => (c.heightMm < MIN_LENGTH_MM ? null : surfacePoint(surface, 0, c.yMm, c.heightMm));
-    return {
-      toolRadiusMm: input.toolRadiusMm,
-      cornerRadiusMm: input.cornerRadiusMm,
-      pattern: exact.pattern,
-      intervalMm: exact.intervalMm,
-      scallopHeightMm: exact.cuspHeightMm,
-      toolCentre: p.centre,
-      toolAxis: p.axis,
-      toolPositions: mesh.positions,
-      right: null,
-      left: null,
-      surface,
-      cuspPoints: { right: cusp(exact.right), left: cusp(exact.left) },
-    };
+    return { ...common, right: null, left: null, cuspPoints: { right: cusp(exact.right), left: cusp(exact.left) } };
   }
   const same = exact.right.heightMm === exact.left.heightMm;
   const sections = (['right', 'left'] as const).map((flank) => {
@@ -358,20 +357,7 @@ export function sceneGeometry(
   const both = [rs?.s.ringAngleRad, ls?.s.ringAngleRad].filter((t): t is number => t !== undefined);
   const right = cusp(rs ?? null, same ? both : rs ? [rs.s.ringAngleRad] : []);
   const left = cusp(ls ?? null, same && rs ? [] : ls ? [ls.s.ringAngleRad] : []);
-  return {
-    toolRadiusMm: input.toolRadiusMm,
-    cornerRadiusMm: input.cornerRadiusMm,
-    pattern: exact.pattern,
-    intervalMm: exact.intervalMm,
-    scallopHeightMm: exact.cuspHeightMm,
-    toolCentre: p.centre,
-    toolAxis: p.axis,
-    toolPositions: mesh.positions,
-    right,
-    left,
-    surface,
-    cuspPoints: null,
-  };
+  return { ...common, right, left, cuspPoints: null };
 }
 
 /** Solves one request: exact, every procedure, the scene. Never throws for any numeric input. */

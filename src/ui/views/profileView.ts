@@ -189,13 +189,7 @@ export class ProfileView implements TeachingView {
     const ringPts = data.curves.ringEllipse;
     for (let i = 0; i < ringPts.length; i += 2) ring.push(`${ringPts[i]},${Z(ringPts[i + 1] as number)}`);
     this.layer.append(svg('polyline', { points: ring.join(' '), class: 'ring' }));
-    const polyline = (key: ProcedureKey, points: string) => {
-      const line = svg('polyline', { points, class: `curve curve-${key}`, 'data-procedure': key });
-      this.layer.append(line);
-      const list = this.curves.get(key) ?? [];
-      list.push(line);
-      this.curves.set(key, list);
-    };
+    const polyline = (key: ProcedureKey, points: string) => this.addCurve(key, points);
     // The approximations: symmetric, their right halves drawn on both sides of each pass.
     for (const key of PROCEDURE_KEYS) {
       if (key === 'exact') continue;
@@ -316,13 +310,7 @@ export class ProfileView implements TeachingView {
         ring.push(pt(cyl.ringEllipse[i] as number, cyl.ringEllipse[i + 1] as number));
       this.layer.append(svg('polyline', { points: ring.join(' '), class: 'ring' }));
     }
-    const polyline = (key: ProcedureKey, points: string) => {
-      const line = svg('polyline', { points, class: `curve curve-${key}`, 'data-procedure': key });
-      this.layer.append(line);
-      const list = this.curves.get(key) ?? [];
-      list.push(line);
-      this.curves.set(key, list);
-    };
+    const polyline = (key: ProcedureKey, points: string) => this.addCurve(key, points);
     // The approximations: their profiles tangent to the surface at each contact.
     for (const key of PROCEDURE_KEYS) {
       if (key === 'exact') continue;
@@ -515,6 +503,15 @@ export class ProfileView implements TeachingView {
   highlight(key: ProcedureKey | null): void {
     this.highlighted = key;
     for (const [k, els] of this.curves) for (const e of els) e.classList.toggle('dimmed', key !== null && k !== key);
+  }
+
+  /** Draws one procedure's curve and keeps it for highlighting. */
+  private addCurve(key: ProcedureKey, points: string): void {
+    const line = svg('polyline', { points, class: `curve curve-${key}`, 'data-procedure': key });
+    this.layer.append(line);
+    const list = this.curves.get(key) ?? [];
+    list.push(line);
+    this.curves.set(key, list);
   }
 
   private zoomToCusp(): void {
