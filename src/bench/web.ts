@@ -18,10 +18,16 @@ import { gzipSync } from 'node:zlib';
 import type { Page } from 'playwright-core';
 import { build } from 'vite';
 import { launchChromium } from './browser';
+import { importClosure } from './chunks';
 import { serveStatic } from './staticServer';
 
 interface Hooks {
-  __pathInterval: { latencies(): number[]; firstResultMs(): number | null; frames(): number };
+  __pathInterval: {
+    latencies(): number[];
+    pointerLatencies(): number[];
+    firstResultMs(): number | null;
+    frames(): number;
+  };
 }
 
 function median(values: number[]): number {
@@ -44,6 +50,7 @@ async function measure(
   gesture: { start(): Promise<void>; step: Step; end(): Promise<void> },
 ) {
   const probe = () => page.evaluate(() => (window as unknown as Hooks).__pathInterval.latencies().length);
+  const pointerCount = () => page.evaluate(() => (window as unknown as Hooks).__pathInterval.pointerLatencies().length);
   await gesture.start();
   for (let i = 0; i < 10; i++) {
     await gesture.step(i);
@@ -51,6 +58,7 @@ async function measure(
   }
   await page.waitForTimeout(300);
   const warm = await probe();
+  const warmPointer = await pointerCount();
   for (let i = 0; i < moves; i++) {
     await gesture.step(10 + i);
     await page.waitForTimeout(100);
@@ -65,7 +73,11 @@ async function measure(
     warm + moves,
   );
   if (got.length === 0) throw new Error('no input reached a frame');
-  return got;
+  const fromPointer = (await page.evaluate(() => (window as unknown as Hooks).__pathInterval.pointerLatencies())).slice(
+    warmPointer,
+    warmPointer + moves,
+  );
+  return { fromInput: got, fromPointer };
 }
 
 /** A pointer drag of the slider's thumb, 3 px per step, back and forth (continuous input, as a hand). */
@@ -120,19 +132,26 @@ await build({ root, logLevel: 'warn' });
 const instrumented = 'test-results/site-bench';
 await build({ root, logLevel: 'warn', mode: 'e2e', build: { outDir: instrumented, emptyOutDir: true } });
 
-// Initial JS: the page's entry script (from index.html) and the solver worker. The teaching
-// views' chunk (charts, maths typesetting) loads after the first result.
+// Initial JS: the page's entry script (from index.html) and the solver worker, each with the chunks
+// it imports statically (the core they share is counted once). The 3D scene, three.js and the
+// teaching views' chunk load after the first result (dynamic imports).
 const assets = `${root}dist/assets`;
 const indexHtml = readFileSync(`${root}dist/index.html`, 'utf8');
+const scripts = readdirSync(assets).filter((n) => n.endsWith('.js'));
+const initial = importClosure(
+  scripts.filter((name) => indexHtml.includes(`assets/${name}`) || name.startsWith('solver.worker')),
+  scripts,
+  (name) => readFileSync(`${assets}/${name}`, 'utf8'),
+);
 let gzipBytes = 0;
 let rawBytes = 0;
 let initialGzipBytes = 0;
-for (const name of readdirSync(assets).filter((n) => n.endsWith('.js'))) {
+for (const name of scripts) {
   const data = readFileSync(`${assets}/${name}`);
   const gz = gzipSync(data, { level: 9 }).length;
   rawBytes += data.length;
   gzipBytes += gz;
-  if (indexHtml.includes(name) || name.startsWith('solver.worker')) initialGzipBytes += gz;
+  if (initial.has(name)) initialGzipBytes += gz;
 }
 
 const site = await serveStatic(`${root}${instrumented}`, 'bench/path-interval');
@@ -153,13 +172,18 @@ try {
   await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
   await page.waitForFunction(() => (window as unknown as Hooks).__pathInterval.frames() > 0);
   const moves = quick ? 5 : 40;
-  const latencies = await measure(page, moves, dragSlider(page, 'slider-h'));
-  const keyLatencies = await measure(page, moves, pressArrows(page, 'slider-h'));
+  const drag = await measure(page, moves, dragSlider(page, 'slider-h'));
+  const latencies = drag.fromInput;
+  const keyLatencies = (await measure(page, moves, pressArrows(page, 'slider-h'))).fromInput;
 
   const rows: Array<[string, string]> = [
     [
       'input -> results + next frame, median',
       `${median(latencies).toFixed(1)} ms (slider dragged: ${latencies.length} moves, max ${Math.max(...latencies).toFixed(1)} ms)`,
+    ],
+    [
+      '  from the pointer event time stamp, median',
+      drag.fromPointer.length > 0 ? `${median(drag.fromPointer).toFixed(1)} ms (when the browser got the move)` : '-',
     ],
     [
       '  the same with arrow keys, median',
@@ -179,6 +203,7 @@ try {
     console.log(
       JSON.stringify({
         inputToFrameMsMedian: Number(median(latencies).toFixed(2)),
+        pointerToFrameMsMedian: drag.fromPointer.length > 0 ? Number(median(drag.fromPointer).toFixed(2)) : null,
         keyInputToFrameMsMedian: Number(median(keyLatencies).toFixed(2)),
         coldLoadMsMedian: Number(median(coldLoads).toFixed(1)),
         jsInitialGzipKb: Number((initialGzipBytes / 1024).toFixed(1)),

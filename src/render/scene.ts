@@ -43,7 +43,6 @@ import {
   Vector3,
   WebGLRenderer,
 } from 'three';
-import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import type { Surface } from '../core/cylinder';
 import {
@@ -63,6 +62,7 @@ import {
   TOOL_RADIAL_SEGMENTS,
   type TraceFrame,
 } from '../worker/protocol';
+import { OrbitController } from './orbit';
 
 export type CameraPreset = 'iso' | 'feed' | 'top';
 
@@ -260,7 +260,7 @@ export class ToolScene {
   private readonly labels: CSS2DRenderer;
   private readonly scene = new Scene();
   private readonly camera = new PerspectiveCamera(40, 1, 0.01, 1000);
-  private readonly controls: OrbitControls;
+  private readonly controls: OrbitController;
   private readonly toolGeometry = new BufferGeometry();
   private readonly tool: Mesh;
   /** The neighbouring passes, at -L and +L (mirrored for zigzag). */
@@ -336,12 +336,11 @@ export class ToolScene {
     container.appendChild(this.labels.domElement);
 
     this.camera.up.set(0, 0, 1);
-    this.controls = new OrbitControls(this.camera, canvas);
-    this.controls.enableDamping = false;
-    // A vertical swipe over the scene scrolls the page (OrbitControls sets 'none'); a horizontal
+    this.controls = new OrbitController(this.camera, canvas);
+    // A vertical swipe over the scene scrolls the page; a horizontal
     // drag turns the view and two fingers zoom: the deliberate gestures.
     canvas.style.touchAction = 'pan-y';
-    this.controls.addEventListener('change', () => this.requestRender());
+    this.controls.onChange = () => this.requestRender();
 
     this.scene.add(new AmbientLight(0xffffff, 1.2));
     const sun = new DirectionalLight(0xffffff, 1.6);

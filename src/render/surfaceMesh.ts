@@ -16,7 +16,7 @@ import {
   Scene,
   WebGLRenderer,
 } from 'three';
-import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { OrbitController } from './orbit';
 import { type HeightField, type SurfaceGrid, surfaceGrid } from './surfaceGrid';
 
 const SURFACE_BACKGROUND = 0xf4f6f9;
@@ -26,7 +26,7 @@ export class SurfaceScene {
   private readonly renderer: WebGLRenderer;
   private readonly scene = new Scene();
   private readonly camera = new PerspectiveCamera(35, 1, 0.01, 1e6);
-  private readonly controls: OrbitControls;
+  private readonly controls: OrbitController;
   private readonly geometry = new BufferGeometry();
   private readonly resizeObserver: ResizeObserver;
   private frameRequested = false;
@@ -43,8 +43,10 @@ export class SurfaceScene {
     canvas.setAttribute('aria-label', '3D view of the simulated machined surface, coloured by height');
     container.append(canvas);
     this.camera.up.set(0, 0, 1);
-    this.controls = new OrbitControls(this.camera, canvas);
-    this.controls.addEventListener('change', () => this.requestRender());
+    this.controls = new OrbitController(this.camera, canvas);
+    // As the 3D scene: a vertical swipe scrolls the page, a horizontal drag turns the view.
+    canvas.style.touchAction = 'pan-y';
+    this.controls.onChange = () => this.requestRender();
     this.scene.add(new AmbientLight(0xffffff, 1.4));
     const sun = new DirectionalLight(0xffffff, 1.5);
     sun.position.set(2, -3, 5);

@@ -10,6 +10,7 @@ import type { PassPattern } from '../core/validate';
 import { FIELD_LABELS, type FieldName } from '../core/validate';
 import type { SolveMode } from '../worker/protocol';
 import { html } from './dom';
+import { dragEarly } from './sliderDrag';
 import { sliderRanges } from './sliders';
 import {
   type CalculatorState,
@@ -159,6 +160,7 @@ export class FieldsPanel {
     input.addEventListener('blur', () => events.onCommit());
     // A slider's value in the user's unit, without float noise.
     slider.addEventListener('input', () => events.onField(key, formatField(Number(slider.value)), false));
+    dragEarly(slider);
     return { row, label: labelElement, hint, slider, input, unitLabel, error };
   }
 

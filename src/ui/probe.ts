@@ -11,6 +11,8 @@ export interface Probe {
   frames(): number;
   softwareRendering(): boolean;
   latencies(): number[];
+  /** The same, from the time stamp of the pointer event behind each input (when the browser got it). */
+  pointerLatencies(): number[];
   firstResultMs(): number | null;
   activeView(): string | null;
   workerStarts(): number;
@@ -18,19 +20,45 @@ export interface Probe {
 
 export function startWithProbe(root: HTMLElement): void {
   const latencies: number[] = [];
+  const pointerLatencies: number[] = [];
   let pendingInputAt: number | null = null;
+  let pendingPointerAt: number | null = null;
+  /** Time stamp of the latest pointer event (raw updates included): where a drag's input began. */
+  let pointerAt: number | null = null;
+  const onPointer = (e: Event) => {
+    pointerAt = e.timeStamp;
+  };
+  for (const type of ['pointerdown', 'pointermove', 'pointerrawupdate']) window.addEventListener(type, onPointer, true);
   let firstResultMs: number | null = null;
   // Capture phase: the time of the event, before the page's own handler runs.
-  window.addEventListener('input', () => (pendingInputAt = performance.now()), true);
-  window.addEventListener('change', () => (pendingInputAt = performance.now()), true);
+  window.addEventListener(
+    'input',
+    () => {
+      pendingInputAt = performance.now();
+      // A pointer event within the last 100 ms caused this input (keys leave none).
+      pendingPointerAt = pointerAt !== null && pendingInputAt - pointerAt < 100 ? pointerAt : null;
+    },
+    true,
+  );
+  window.addEventListener(
+    'change',
+    () => {
+      pendingInputAt = performance.now();
+      pendingPointerAt = null;
+    },
+    true,
+  );
   const observer: AppObserver = {
     resultShown() {
       firstResultMs ??= performance.now();
     },
     frame(current) {
       if (current && pendingInputAt !== null) {
-        latencies.push(performance.now() - pendingInputAt);
+        const now = performance.now();
+        latencies.push(now - pendingInputAt);
+        if (pendingPointerAt !== null) pointerLatencies.push(now - pendingPointerAt);
         pendingInputAt = null;
+        pendingPointerAt = null;
       }
     },
   };
@@ -40,6 +68,7 @@ export function startWithProbe(root: HTMLElement): void {
     frames: d.frames,
     softwareRendering: d.softwareRendering,
     latencies: () => [...latencies],
+    pointerLatencies: () => [...pointerLatencies],
     firstResultMs: () => firstResultMs,
     activeView: d.activeView,
     workerStarts: d.workerStarts,

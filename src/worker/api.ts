@@ -1,6 +1,6 @@
 /**
  * The solver API that runs inside the Web Worker: one function per job, plain data in and out,
- * so it is tested in Node directly and exposed unchanged through Comlink in solver.worker.ts.
+ * so it is tested in Node directly and exposed unchanged (rpc.ts) in solver.worker.ts.
  *  - `solve`: the exact answer, every procedure beside it, and the 3D scene's geometry;
  *  - `teach`: the teaching views' data (profiles, sweeps, the traced procedure, formulas' models).
  * Every reply echoes its request. Inputs are validated again here: a bad request gets a typed
@@ -664,7 +664,7 @@ export function transferables(reply: SolveReply | TeachReply): ArrayBuffer[] {
   return [...out];
 }
 
-/** The worker's API object; its type is what the page sees through Comlink. */
+/** The worker's API object; its type is what the page sees through rpc.ts. */
 export const solverApi = { solve, teach, table };
 
 export type SolverApi = typeof solverApi;

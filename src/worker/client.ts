@@ -7,11 +7,12 @@
  * Replies carry their request, so the page checks them again against the inputs on screen; this
  * client only keeps the worker from doing work nobody waits for.
  */
-import * as Comlink from 'comlink';
-import type { WorkerApi } from './solver.worker';
+import { type Endpoint, type Remote, wrap } from './rpc';
+import type { WorkerApi } from './workerApi';
 
-/** What the client needs of a worker: a message endpoint that can be terminated. */
-export interface WorkerLike extends Comlink.Endpoint {
+/** What the client needs of a worker: a message endpoint that reports errors and can be terminated. */
+export interface WorkerLike extends Endpoint {
+  addEventListener(type: 'message' | 'error', listener: (event: { readonly data: unknown }) => void): void;
   terminate(): void;
 }
 
@@ -26,7 +27,7 @@ export interface JobClientOptions<Req, Rep> {
   /** Starts a worker (a stand-in in tests). */
   readonly createWorker: () => WorkerLike;
   /** Calls the job on the worker. */
-  readonly call: (api: Comlink.Remote<WorkerApi>, request: Req) => Promise<Rep>;
+  readonly call: (api: Remote<WorkerApi>, request: Req) => Promise<Rep>;
   /** Called with each reply to the latest request. */
   readonly onReply: (reply: Rep, request: Req) => void;
   /** Called when the worker had to be restarted. */
@@ -42,7 +43,7 @@ export const MAX_CONSECUTIVE_RESTARTS = 3;
 
 export class JobClient<Req, Rep> {
   private worker: WorkerLike | null = null;
-  private remote: Comlink.Remote<WorkerApi> | null = null;
+  private remote: Remote<WorkerApi> | null = null;
   private inFlight: { readonly request: Req } | null = null;
   private queued: { readonly request: Req } | null = null;
   private latest: { readonly request: Req } | null = null;
@@ -73,7 +74,7 @@ export class JobClient<Req, Rep> {
     this.inFlight = this.queued = this.latest = null;
   }
 
-  private ensureWorker(): Comlink.Remote<WorkerApi> {
+  private ensureWorker(): Remote<WorkerApi> {
     if (this.remote !== null) return this.remote;
     const worker = this.options.createWorker();
     worker.addEventListener('error', (e: unknown) => {
@@ -81,7 +82,7 @@ export class JobClient<Req, Rep> {
       if (this.worker === worker) this.restart(`the solver failed (${message || 'worker error'})`);
     });
     this.worker = worker;
-    this.remote = Comlink.wrap<WorkerApi>(worker);
+    this.remote = wrap<WorkerApi>(worker);
     this.started++;
     return this.remote;
   }

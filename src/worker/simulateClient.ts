@@ -4,11 +4,12 @@
  * tells the worker to stop the simulation it runs (it checks between steps), then is sent; the
  * client (JobClient) drops any reply but the latest's.
  */
-import * as Comlink from 'comlink';
 import { JobClient, type RestartInfo } from './client';
 import type { SolveRequest } from './protocol';
+import type { Remote } from './rpc';
 import type { SimulateReply } from './simulate';
-import type { WorkerApi } from './solver.worker';
+import type { WorkerApi } from './workerApi';
+import { startSolverWorker } from './workers';
 
 /**
  * A simulation takes about 0.15 s alone on 2 cores and several times that on a loaded machine;
@@ -17,10 +18,7 @@ import type { WorkerApi } from './solver.worker';
 export const SIMULATION_WATCHDOG_MS = 15_000;
 
 export function createSimulationWorker(): Worker {
-  return new Worker(new URL('./solver.worker.ts', import.meta.url), {
-    type: 'module',
-    name: 'path-interval-simulation',
-  });
+  return startSolverWorker('path-interval-simulation');
 }
 
 export interface SimulateEvents {
@@ -31,7 +29,7 @@ export interface SimulateEvents {
 }
 
 export class SimulateClient {
-  private remote: Comlink.Remote<WorkerApi> | null = null;
+  private remote: Remote<WorkerApi> | null = null;
   private readonly jobs: JobClient<SolveRequest, SimulateReply>;
 
   constructor(events: SimulateEvents) {
@@ -39,10 +37,7 @@ export class SimulateClient {
       createWorker: createSimulationWorker,
       call: (api, request) => {
         this.remote = api;
-        return api.simulate(
-          request,
-          Comlink.proxy((fraction: number) => events.onProgress(request, fraction)),
-        );
+        return api.simulate(request, (fraction: number) => events.onProgress(request, fraction));
       },
       onReply: events.onReply,
       onRestart: events.onRestart,

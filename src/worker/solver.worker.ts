@@ -1,36 +1,5 @@
-/** Module Web Worker entry: exposes the solver API through Comlink, transferring large arrays. */
-import * as Comlink from 'comlink';
-import { solve, teach, transferables } from './api';
-import type { SolveReply, SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
-import { type SimulateReply, SimulationRunner, simulationTransferables } from './simulate';
-import { table } from './table';
+/** Module Web Worker entry: answers the page's calls with the solver API (workerApi.ts, rpc.ts). */
+import { expose } from './rpc';
+import { workerApi } from './workerApi';
 
-/** A newer `simulate` or `cancelSimulation` stops the running simulation between steps. */
-const simulations = new SimulationRunner();
-
-const workerApi = {
-  solve(request: SolveRequest): SolveReply {
-    const reply = solve(request);
-    return Comlink.transfer(reply, transferables(reply));
-  },
-  teach(request: SolveRequest): TeachReply {
-    const reply = teach(request);
-    return Comlink.transfer(reply, transferables(reply));
-  },
-  /** The lookup table for the page's download (a string: nothing to transfer). */
-  table(request: TableRequest): TableReply {
-    return table(request);
-  },
-  async simulate(request: SolveRequest, onProgress?: (fraction: number) => void): Promise<SimulateReply> {
-    const reply = await simulations.run(request, onProgress);
-    return Comlink.transfer(reply, simulationTransferables(reply));
-  },
-  cancelSimulation(): void {
-    simulations.cancel();
-  },
-};
-
-/** The type the page sees: derived from this module, not written twice. */
-export type WorkerApi = typeof workerApi;
-
-Comlink.expose(workerApi);
+expose(workerApi, self);

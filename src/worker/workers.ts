@@ -3,17 +3,18 @@
  * never delays the results: both run the same module (solver.worker.ts). The names tell them
  * apart in the browser's tools (and to tests, through WorkerGlobalScope.name).
  */
+import solverWorkerUrl from 'virtual:solver-worker-url';
 import { JobClient, type RestartInfo } from './client';
 import type { SolveReply, SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
 
 /** The worker for `solve`: results and the 3D scene. */
 export function createSolverWorker(): Worker {
-  return new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module', name: 'path-interval-solver' });
+  return startSolverWorker('path-interval-solver');
 }
 
 /** The worker for `teach`: the teaching views' data. */
 export function createViewsWorker(): Worker {
-  return new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module', name: 'path-interval-views' });
+  return startSolverWorker('path-interval-views');
 }
 
 export interface JobEvents<Rep> {
@@ -33,10 +34,15 @@ export function teachClient(events: JobEvents<TeachReply>): JobClient<SolveReque
 
 /** The worker for `table`, started on the first download: the lookup table never delays the results. */
 export function createTableWorker(): Worker {
-  return new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module', name: 'path-interval-table' });
+  return startSolverWorker('path-interval-table');
 }
 
 /** The `table` job on its own worker. */
 export function tableClient(events: JobEvents<TableReply>): JobClient<TableRequest, TableReply> {
   return new JobClient({ createWorker: createTableWorker, call: (api, r) => api.table(r), ...events });
+}
+
+/** A solver worker (the module worker built from solver.worker.ts), named for the browser's tools. */
+export function startSolverWorker(name: string): Worker {
+  return new Worker(solverWorkerUrl, { type: 'module', name });
 }

@@ -6,6 +6,7 @@
  * under the strict Content-Security-Policy and records every violation.
  */
 import type { Page } from 'playwright-core';
+import { URL_SETTLE_MS } from '../../src/ui/urlState';
 import { describe, expect, it } from 'vitest';
 import {
   type CylinderSurface,
@@ -139,7 +140,7 @@ describe('curved surfaces on the page', () => {
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(e.intervalMm, 'mm'));
     expect(await radio(page, 'surface-kind', 'concave').isChecked()).toBe(true);
     expect(await radio(page, 'surface-axis', 'cross').isChecked()).toBe(true);
-    await page.waitForTimeout(200);
+    await page.waitForTimeout(2 * URL_SETTLE_MS); // the URL is written once the inputs settle
     expect(new URL(page.url()).search).toBe(query);
     await page.close();
     const embedded = await open(`${query}&embed=1`);

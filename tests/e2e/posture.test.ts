@@ -4,6 +4,7 @@
  * views following the posture. Numbers are checked against the solver core.
  */
 import type { Page } from 'playwright-core';
+import { URL_SETTLE_MS } from '../../src/ui/urlState';
 import { describe, expect, it } from 'vitest';
 import {
   compareForward,
@@ -41,7 +42,7 @@ describe('tool posture on the page', () => {
     expect(await text(page, 'result-width-left')).toBe('1.4436 mm');
     expect(await text(page, 'result-contact-offset')).toBe('0.0000 mm');
     expect(await page.getByTestId('result-cusp-height').isVisible()).toBe(false);
-    await page.waitForTimeout(200);
+    await page.waitForTimeout(2 * URL_SETTLE_MS); // the URL is written once the inputs settle
     const url = new URL(page.url());
     expect(url.searchParams.has('tilt')).toBe(false);
     expect(url.searchParams.has('pattern')).toBe(false);

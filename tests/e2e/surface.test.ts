@@ -53,7 +53,7 @@ describe('target Ra and roughness in headless Chromium', () => {
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(`${L.toFixed(4)} mm`);
     expect(await text(page, 'result-ra')).toBe('10.000 \u00b5m');
     expect(await text(page, 'result-ra-height')).toBe(`${(1000 * f.scallopHeightMm).toFixed(3)} \u00b5m`);
-    expect(page.url()).toMatch(/target=ra&ra=0\.01&/);
+    await expect.poll(() => page.url()).toMatch(/target=ra&ra=0\.01&/);
     // The slider moves the Ra by one step and the result follows.
     await page.getByTestId('slider-ra').focus();
     await page.keyboard.press('ArrowRight');

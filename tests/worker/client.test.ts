@@ -1,10 +1,10 @@
 /**
- * The page's worker client against a stand-in worker: a real Comlink endpoint (a MessageChannel)
+ * The page's worker client against a stand-in worker: a real rpc.ts endpoint (a MessageChannel)
  * whose `solve` and `teach` answer, throw, hang or die when the test says so.
  */
-import * as Comlink from 'comlink';
 import { afterEach, describe, expect, it } from 'vitest';
 import { JobClient, MAX_CONSECUTIVE_RESTARTS, type RestartInfo, type WorkerLike } from '../../src/worker/client';
+import { type Endpoint, expose } from '../../src/worker/rpc';
 
 type Req = { readonly n: number };
 type Rep = { readonly answers: number; readonly job: string };
@@ -66,7 +66,7 @@ class StandIn implements WorkerLike {
           } else if (workers.behaviour === 'throw') call.fail();
           if (workers.behaviour === 'die') setTimeout(() => this.die(), 0);
         });
-    Comlink.expose({ solve: job('solve'), teach: job('teach') }, this.channel.port2 as unknown as Comlink.Endpoint);
+    expose({ solve: job('solve'), teach: job('teach') }, this.channel.port2 as unknown as Endpoint);
   }
 
   postMessage(message: unknown, transfer?: unknown[]): void {

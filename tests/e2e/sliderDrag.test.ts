@@ -1,0 +1,103 @@
+/**
+ * The page's own mouse drag of its sliders (src/ui/sliderDrag.ts), driven with the mouse: the
+ * value lands where the browser's own slider puts it (compared with a touch tap, which the page
+ * leaves to the browser), and a dragged value and its answer are drawn in the same frame (the
+ * results are not marked stale in the frames of a slow drag).
+ */
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { useSite } from './harness';
+
+const site = useSite('docs/slider-drag');
+
+async function open(query: string): Promise<Page> {
+  const context = await site.browser().newContext({ viewport: { width: 1440, height: 900 }, hasTouch: true });
+  const page = await context.newPage();
+  await page.goto(`${site.url()}${query}`);
+  await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+  return page;
+}
+
+async function sliderBox(page: Page, testId: string) {
+  const box = await page.getByTestId(testId).boundingBox();
+  if (box === null) throw new Error(`${testId} is not visible`);
+  return box;
+}
+
+describe('slider drag with the mouse', () => {
+  it('puts the value where the browser puts it for a tap, over the whole track and past its ends', async () => {
+    const page = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    try {
+      for (const testId of ['slider-h', 'slider-rho', 'slider-tilt']) {
+        const box = await sliderBox(page, testId);
+        const y = box.y + box.height / 2;
+        const slider = page.getByTestId(testId);
+        const step = Number(await slider.getAttribute('step'));
+        const xs = [-5, 0, 3, 12, 13, 50, 97.5, box.width / 2, box.width - 12.5, box.width - 3, box.width + 5];
+        for (const dx of [...xs, ...Array.from({ length: 12 }, (_, i) => ((i + 0.37) * box.width) / 12)]) {
+          const x = box.x + dx;
+          await page.touchscreen.tap(x, y); // the browser's own slider
+          const native = Number(await slider.inputValue());
+          await page.mouse.click(x, y); // the page's drag
+          const own = Number(await slider.inputValue());
+          expect(
+            Math.abs(own - native),
+            `${testId} at ${dx.toFixed(1)} px: page ${own}, browser ${native}`,
+          ).toBeLessThanOrEqual(step * 1.0001);
+        }
+      }
+    } finally {
+      await page.context().close();
+    }
+  });
+
+  it('draws each dragged value with its answer: no frame shows the results stale during a slow drag', async () => {
+    const page = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    try {
+      const box = await sliderBox(page, 'slider-h');
+      const y = box.y + box.height / 2;
+      const x0 = box.x + box.width * 0.3;
+      await page.evaluate(() => {
+        const w = window as unknown as { __staleFrames: number; __frames: number };
+        w.__staleFrames = 0;
+        w.__frames = 0;
+        const results = document.querySelector('.results') as HTMLElement;
+        const sample = () => {
+          w.__frames++;
+          if (results.classList.contains('stale') || results.getAttribute('aria-busy') === 'true') w.__staleFrames++;
+          requestAnimationFrame(sample);
+        };
+        requestAnimationFrame(sample);
+      });
+      await page.mouse.move(x0, y);
+      await page.mouse.down();
+      const values = new Set<string>();
+      const steps = 24;
+      for (let i = 1; i <= steps; i++) {
+        await page.mouse.move(x0 + 3 * i, y);
+        await page.waitForTimeout(100);
+        values.add(await page.getByTestId('slider-h').inputValue());
+      }
+      const { staleFrames, frames } = await page.evaluate(() => {
+        const w = window as unknown as { __staleFrames: number; __frames: number };
+        return { staleFrames: w.__staleFrames, frames: w.__frames };
+      });
+      await page.mouse.up();
+      // The URL follows once the drag settles (tests/ui/urlState.test.ts: not at every step).
+      const last = await page.getByTestId('slider-h').inputValue();
+      await expect.poll(() => new URL(page.url()).searchParams.get('h')).toBe(String(Number(last)));
+      // Every step changed the value (else the test would assert nothing).
+      expect(values.size).toBe(steps);
+      expect(frames).toBeGreaterThan(steps);
+      // The browser's own drag shows at least one stale frame per step (24 or more). A reply can
+      // miss its frame now and then on a loaded machine; most must not.
+      expect(staleFrames, `${staleFrames} stale frames in ${frames}, ${steps} steps`).toBeLessThanOrEqual(steps / 2);
+      // The value shown answers the slider.
+      await expect
+        .poll(() => page.getByTestId('input-h').inputValue())
+        .toBe(String(Number(await page.getByTestId('slider-h').inputValue())));
+    } finally {
+      await page.context().close();
+    }
+  });
+});
