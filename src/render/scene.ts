@@ -62,6 +62,14 @@ import {
   TOOL_RADIAL_SEGMENTS,
   type TraceFrame,
 } from '../worker/protocol';
+import {
+  drawnHeightMm,
+  drawnPoints,
+  type HeightMap,
+  heightMapFor,
+  sceneHeightExaggeration,
+} from './heightExaggeration';
+import { type LabelRequest, type PixelRect, placeLabels } from './labelLayout';
 import { OrbitController } from './orbit';
 
 export type CameraPreset = 'iso' | 'feed' | 'top';
@@ -70,6 +78,8 @@ export type CameraPreset = 'iso' | 'feed' | 'top';
 export interface SceneLabels {
   /** The step-over dimension, e.g. `L = 2.8872 mm`. */
   readonly interval: string;
+  /** Its half, e.g. `L/2 = 1.4436 mm`. */
+  readonly halfInterval: string;
   /** The contact offset dimension, e.g. `y0 = 0.1234 mm`, or null to hide it (no offset). */
   readonly contactOffset: string | null;
 }
@@ -96,6 +106,7 @@ const COLOURS = {
   ghost: 0x6c7a89,
   plane: 0xc9ced6,
   hPlane: 0x2f80ed,
+  ridge: 0xb4235a,
 } as const;
 
 /**
@@ -114,6 +125,7 @@ const THEMED_COLOURS: ReadonlyMap<number, string> = new Map([
   [COLOURS.ghost, '--scene-ghost'],
   [COLOURS.plane, '--scene-plane'],
   [COLOURS.hPlane, '--scene-hplane'],
+  [COLOURS.ridge, '--scene-ridge'],
   [0xd62828, '--scene-x'],
   [0x2a9d8f, '--scene-y'],
   [0x1d4ed8, '--scene-z'],
@@ -210,14 +222,35 @@ function circlePoints(centre: Vec3, normal: Vec3, radius: number): Float32Array 
  * A label anchored at a 3D point. three.js positions the outer element (its inline transform is
  * set through the CSSOM); the inner one carries the class, so a stylesheet can offset it.
  */
-function label(text: string, className: string): CSS2DObject {
+function label(text: string, className: string, side: readonly [number, number], priority: number): CSS2DObject {
   const anchor = document.createElement('div');
   anchor.className = 'scene-label-anchor';
   const inner = document.createElement('span');
   inner.className = `scene-label ${className}`;
   inner.textContent = text;
   anchor.append(inner);
-  return new CSS2DObject(anchor);
+  const object = new CSS2DObject(anchor);
+  const spec: LabelSpec = { side, priority };
+  object.userData.label = spec;
+  return object;
+}
+
+/** How a label would like to be placed (see labelLayout.ts). */
+interface LabelSpec {
+  readonly side: readonly [number, number];
+  readonly priority: number;
+}
+
+/** Whether an object and all its ancestors are visible. */
+function shown(object: Object3D): boolean {
+  for (let o: Object3D | null = object; o !== null; o = o.parent) if (!o.visible) return false;
+  return true;
+}
+
+/** Marks an object with the key of its legend entry (index.html, `data-legend`). */
+function legend<T extends Object3D>(object: T, key: string): T {
+  object.userData.legend = key;
+  return object;
 }
 
 /** Sets a label's text (the inner element's). */
@@ -232,26 +265,40 @@ class CuspMarks {
   readonly loops = [lineOf(LOOP_MAX_POINTS, COLOURS.loop, true), lineOf(LOOP_MAX_POINTS, COLOURS.loop, true)];
   readonly point: Mesh;
 
-  constructor(dot: SphereGeometry, text: string, className: string) {
-    this.point = new Mesh(dot, new MeshBasicMaterial({ color: COLOURS.pHp, depthTest: false }));
+  /** The cusp along the feed (the scallop's ridge), at its height. */
+  readonly ridge = legend(lineOf(2, COLOURS.ridge), 'ridge');
+
+  constructor(dot: SphereGeometry, text: string, className: string, side: readonly [number, number]) {
+    this.point = legend(new Mesh(dot, new MeshBasicMaterial({ color: COLOURS.pHp, depthTest: false })), 'php');
     this.point.renderOrder = 11;
-    this.point.add(label(text, className));
+    this.point.userData.marker = true;
+    this.point.add(label(text, className, side, 8));
+    legend(this.section, 'section');
+    for (const l of this.loops) legend(l, 'loop');
   }
 
   objects(): Object3D[] {
-    return [this.section, ...this.loops, this.point];
+    return [this.section, ...this.loops, this.point, this.ridge];
   }
 
-  show(c: CuspGeometry | null, dotRadius: number): void {
-    this.section.visible = this.point.visible = c !== null;
+  /** Shows a cusp (or hides it: null), heights drawn through `map`; the ridge runs from x = xFrom to xTo. */
+  show(c: CuspGeometry | null, dotRadius: number, map: HeightMap, xFrom: number, xTo: number): void {
+    this.section.visible = this.point.visible = this.ridge.visible = c !== null;
     this.loops.forEach((line, i) => {
       const loop = c?.loops[i];
-      setLine(line, loop ?? [], loop ? loop.length / 3 : 0);
+      line.visible = loop !== undefined && loop.length > 0;
+      setLine(line, loop ? drawnPoints(map, loop) : [], loop ? loop.length / 3 : 0);
     });
     if (c === null) return;
-    setLine(this.section, circlePoints(c.sectionCentre, c.sectionNormal, c.sectionRadiusMm), SECTION_POINTS);
+    setLine(
+      this.section,
+      drawnPoints(map, circlePoints(c.sectionCentre, c.sectionNormal, c.sectionRadiusMm)),
+      SECTION_POINTS,
+    );
     this.point.scale.setScalar(dotRadius);
-    this.point.position.set(...c.pHp);
+    const z = drawnHeightMm(map, c.pHp[2]);
+    this.point.position.set(c.pHp[0], c.pHp[1], z);
+    setLine(this.ridge, [xFrom, c.pHp[1], z, xTo, c.pHp[1], z], 2);
   }
 }
 
@@ -281,18 +328,24 @@ export class ToolScene {
     lineOf(PATH_SEGMENTS + 1, COLOURS.path),
     lineOf(PATH_SEGMENTS + 1, COLOURS.path),
   ];
-  private readonly dimension = lineOf(PATH_SEGMENTS + 3, COLOURS.dimension);
-  private readonly offsetDimension = lineOf(4, COLOURS.dimension);
+  /** The step-over L between two CC paths, and L/2 from this pass's path, with arrowheads. */
+  private readonly dimension = legend(lineOf(PATH_SEGMENTS + 12, COLOURS.dimension), 'dimension');
+  private readonly halfDimension = legend(lineOf(PATH_SEGMENTS + 12, COLOURS.dimension), 'dimension');
+  private readonly offsetDimension = legend(lineOf(4, COLOURS.dimension), 'offset');
   private readonly contact: Mesh;
   private readonly centre: Mesh;
   private readonly axisFoot: Mesh;
-  private readonly dimLabel = label('L', 'label-dim');
-  private readonly offsetLabel = label('y0', 'label-offset');
+  private readonly dimLabel = label('L', 'label-dim', [0, -1], 6);
+  private readonly halfDimLabel = label('L/2', 'label-dim label-half', [0, -1], 6);
+  private readonly offsetLabel = label('y0', 'label-offset', [0, 1], 5);
+  /** The height exaggeration, said on the scene (a badge in its bottom left corner). */
+  private readonly scaleBadge: HTMLElement;
+  private heightMap: HeightMap = { factor: 1, bandMm: 0 };
   private readonly axes = new Group();
   private readonly traceSection = lineOf(SECTION_POINTS, COLOURS.trace, true);
   private readonly candidates: Points;
   private readonly traceMarker: Mesh;
-  private readonly traceLabel = label('', 'label-trace');
+  private readonly traceLabel = label('', 'label-trace', [-1, -1], 10);
   private readonly resizeObserver: ResizeObserver;
   private readonly onContextLost = () => {
     this.contextLost = true;
@@ -399,24 +452,48 @@ export class ToolScene {
       m.visible = false;
     }
     const dot = new SphereGeometry(1, 16, 12);
-    const marker = (color: number, text: string | null, className: string) => {
-      const m = new Mesh(dot, new MeshBasicMaterial({ color, depthTest: false }));
+    const marker = (
+      color: number,
+      key: string,
+      text: string | null,
+      className: string,
+      side: readonly [number, number],
+      priority: number,
+    ) => {
+      const m = legend(new Mesh(dot, new MeshBasicMaterial({ color, depthTest: false })), key);
       m.renderOrder = 11;
-      if (text !== null) m.add(label(text, className));
+      m.userData.marker = true;
+      if (text !== null) m.add(label(text, className, side, priority));
       return m;
     };
-    this.contact = marker(COLOURS.contact, 'CC (P_base)', 'label-pbase');
-    this.centre = marker(COLOURS.centre, 'O', 'label-centre');
-    this.axisFoot = marker(COLOURS.axis, null, '');
-    this.right = new CuspMarks(dot, 'P_hp R', 'label-php');
-    this.left = new CuspMarks(dot, 'P_hp L', 'label-php label-php-left');
+    this.contact = marker(COLOURS.contact, 'contact', 'CC (P_base)', 'label-pbase', [0, 1], 9);
+    this.centre = marker(COLOURS.centre, 'centre', 'O', 'label-centre', [1, -0.6], 7);
+    this.axisFoot = marker(COLOURS.axis, 'axis', null, '', [0, 0], 0);
+    this.right = new CuspMarks(dot, 'P_hp R', 'label-php', [1, -0.8]);
+    this.left = new CuspMarks(dot, 'P_hp L', 'label-php label-php-left', [-1, -0.8]);
     this.cuspPoints = [
-      marker(COLOURS.pHp, 'cusp R', 'label-php'),
-      marker(COLOURS.pHp, 'cusp L', 'label-php label-php-left'),
+      marker(COLOURS.pHp, 'cusp', 'cusp R', 'label-php', [1, -0.8], 8),
+      marker(COLOURS.pHp, 'cusp', 'cusp L', 'label-php label-php-left', [-1, -0.8], 8),
     ];
     for (const m of this.cuspPoints) m.visible = false;
     this.dimension.add(this.dimLabel);
+    this.halfDimension.add(this.halfDimLabel);
     this.offsetDimension.add(this.offsetLabel);
+    legend(this.tool, 'tool');
+    for (const m of this.neighbours) legend(m, 'tool');
+    for (const l of this.paths) legend(l, 'path');
+    legend(this.toolAxis, 'axis');
+    legend(this.designedPlane, 'design');
+    legend(this.designedCylinder, 'design');
+    legend(this.hPlane, 'hplane');
+    legend(this.hCylinder, 'hplane');
+    legend(this.axes, 'axes');
+    legend(this.traceSection, 'trace');
+    this.scaleBadge = document.createElement('div');
+    this.scaleBadge.className = 'scene-scale';
+    this.scaleBadge.setAttribute('data-testid', 'scene-exaggeration');
+    this.scaleBadge.hidden = true;
+    container.appendChild(this.scaleBadge);
     this.buildAxes();
     this.scene.add(
       this.designedPlane,
@@ -431,13 +508,14 @@ export class ToolScene {
       ...this.paths,
       this.toolAxis,
       this.dimension,
+      this.halfDimension,
       this.offsetDimension,
       this.contact,
       this.centre,
       this.axisFoot,
       this.axes,
     );
-    this.traceMarker = marker(COLOURS.trace, null, '');
+    this.traceMarker = marker(COLOURS.trace, 'trace', null, '', [0, 0], 0);
     this.traceMarker.renderOrder = 12;
     this.traceMarker.add(this.traceLabel);
     const candidateGeometry = new BufferGeometry();
@@ -448,6 +526,7 @@ export class ToolScene {
       new PointsMaterial({ color: COLOURS.trace, size: 6, sizeAttenuation: false, depthTest: false }),
     );
     this.candidates.frustumCulled = false;
+    legend(this.candidates, 'trace');
     this.candidates.renderOrder = 12;
     this.scene.add(this.traceSection, this.candidates, this.traceMarker);
     this.traceSection.visible = this.candidates.visible = this.traceMarker.visible = false;
@@ -466,7 +545,7 @@ export class ToolScene {
     ];
     for (const [dir, color, text] of specs) {
       const arrow = new ArrowHelper(dir, new Vector3(0, 0, 0), 1, color, 0.12, 0.06);
-      const tag = label(text, 'label-axis');
+      const tag = label(text, 'label-axis', [0, 0], 2);
       tag.position.set(0, 1.08, 0); // ArrowHelper's local +Y is its direction
       arrow.add(tag);
       this.axes.add(arrow);
@@ -475,11 +554,19 @@ export class ToolScene {
 
   /** Shows a solved state. Everything is updated in place. */
   update(g: SceneGeometry, labels: SceneLabels): void {
+    // Heights exaggerated near a plane when the scallop would be too low to see (the drawing only).
+    const map = heightMapFor(
+      g.surface.kind === 'plane' ? sceneHeightExaggeration(g.toolRadiusMm, g.scallopHeightMm) : 1,
+      g.scallopHeightMm,
+    );
+    this.heightMap = map;
+    const dz = (z: number) => drawnHeightMm(map, z);
+    const toolPositions = drawnPoints(map, g.toolPositions);
     const attr = this.toolGeometry.getAttribute('position') as BufferAttribute;
-    if (attr.array.length !== g.toolPositions.length) {
-      this.toolGeometry.setAttribute('position', new BufferAttribute(new Float32Array(g.toolPositions), 3));
+    if (attr.array.length !== toolPositions.length) {
+      this.toolGeometry.setAttribute('position', new BufferAttribute(toolPositions, 3));
     } else {
-      (attr.array as Float32Array).set(g.toolPositions);
+      (attr.array as Float32Array).set(toolPositions);
       attr.needsUpdate = true;
     }
     this.toolGeometry.computeVertexNormals();
@@ -506,12 +593,21 @@ export class ToolScene {
       this.designedPlane.scale.set(sizeX, sizeY, 1);
       this.designedPlane.position.set(0, 0, 0);
       this.hPlane.scale.set(sizeX, sizeY, 1);
-      this.hPlane.position.set(0, 0, g.scallopHeightMm);
+      this.hPlane.position.set(0, 0, dz(g.scallopHeightMm));
     }
+    this.scaleBadge.hidden = false;
+    this.scaleBadge.textContent =
+      map.factor === 1 ? 'heights at true scale' : `heights drawn x${map.factor} (up to 2h above the plane)`;
+    this.scaleBadge.title =
+      map.factor === 1
+        ? 'Every length and height is drawn at true scale.'
+        : `So that the scallop can be seen, heights from the plane up to twice the scallop height are drawn ${map.factor} times taller, the tool above them at true scale. Only the drawing: every number is the solver's.`;
 
     const dotR = 0.035 * R;
-    this.right.show(g.right, dotR);
-    this.left.show(g.left, dotR);
+    const xFrom = -1.3 * R;
+    const xTo = 1.3 * R;
+    this.right.show(g.right, dotR, map, xFrom, xTo);
+    this.left.show(g.left, dotR, map, xFrom, xTo);
     this.cuspPoints.forEach((m, i) => {
       const p = g.cuspPoints === null ? null : i === 0 ? g.cuspPoints.right : g.cuspPoints.left;
       m.visible = p !== null;
@@ -525,35 +621,51 @@ export class ToolScene {
     const [ax, ay, az] = g.toolAxis;
     const foot = axisFoot(surface, g.toolCentre, g.toolAxis);
     const up = 2.2 * R;
-    setLine(this.toolAxis, [...foot, ox + up * ax, oy + up * ay, oz + up * az], 2);
+    setLine(this.toolAxis, drawnPoints(map, [...foot, ox + up * ax, oy + up * ay, oz + up * az]), 2);
     this.axisFoot.scale.setScalar(0.6 * dotR);
-    this.axisFoot.position.set(...foot);
+    this.axisFoot.position.set(foot[0], foot[1], dz(foot[2]));
     this.centre.scale.setScalar(0.8 * dotR);
-    this.centre.position.set(ox, oy, oz);
+    this.centre.position.set(ox, oy, dz(oz));
     this.contact.scale.setScalar(dotR);
     this.contact.position.set(0, 0, 0);
 
     // The cutter-contact paths of the three passes, and the step-over L between two of them (along
     // the surface: an arc around a cylinder with the axis along the feed).
-    const xFrom = -1.3 * R;
-    const xTo = 1.3 * R;
     this.paths.forEach((line, i) => {
       const y = (i - 1) * L;
       setLine(line, surfacePolyline(surface, 0, [xFrom, y], [xTo, y], PATH_SEGMENTS), PATH_SEGMENTS + 1);
     });
-    const x = xFrom;
+    // L from this pass's path to the next at the start of the drawn passes, L/2 at their end: each
+    // along the surface with extension lines and arrowheads, its label above its middle.
     const tick = 0.08 * R;
-    const arc = surfacePolyline(surface, 0, [x, 0], [x, L], PATH_SEGMENTS);
-    setLine(
-      this.dimension,
-      [...surfacePoint(surface, x, 0, tick), ...arc, ...surfacePoint(surface, x, L, tick)],
-      PATH_SEGMENTS + 3,
-    );
-    this.dimLabel.position.set(...surfacePoint(surface, x, L / 2, 2 * tick));
+    const arrowMm = Math.min(0.07 * R, 0.25 * L);
+    const dimensionAt = (line: Line, x: number, length: number) => {
+      const arc = surfacePolyline(surface, 0, [x, 0], [x, length], PATH_SEGMENTS);
+      const head = (y: number, dir: 1 | -1) => [
+        ...surfacePoint(surface, x - 0.5 * arrowMm, y + dir * arrowMm, 0),
+        ...surfacePoint(surface, x, y, 0),
+        ...surfacePoint(surface, x + 0.5 * arrowMm, y + dir * arrowMm, 0),
+        ...surfacePoint(surface, x, y, 0),
+      ];
+      const points = [
+        ...surfacePoint(surface, x, 0, tick),
+        ...surfacePoint(surface, x, 0, 0),
+        ...head(0, 1),
+        ...arc,
+        ...head(length, -1),
+        ...surfacePoint(surface, x, length, tick),
+      ];
+      setLine(line, points, points.length / 3);
+    };
+    dimensionAt(this.dimension, xFrom, L);
+    dimensionAt(this.halfDimension, xTo, L / 2);
+    this.dimLabel.position.set(...surfacePoint(surface, xFrom, L / 2, tick));
+    this.halfDimLabel.position.set(...surfacePoint(surface, xTo, L / 4, tick));
     setLabel(this.dimLabel, labels.interval);
+    setLabel(this.halfDimLabel, labels.halfInterval);
     // y0: from the foot of O's drop to the contact, across the feed.
     this.offsetDimension.visible = labels.contactOffset !== null;
-    setLine(this.offsetDimension, [ox, oy, oz, ox, oy, 0, ox, oy, 0, ox, 0, 0], 4);
+    setLine(this.offsetDimension, [ox, oy, dz(oz), ox, oy, 0, ox, oy, 0, ox, 0, 0], 4);
     this.offsetLabel.position.set(ox, oy / 2, -tick);
     setLabel(this.offsetLabel, labels.contactOffset ?? '');
 
@@ -590,18 +702,20 @@ export class ToolScene {
     this.candidates.visible = on;
     this.traceMarker.visible = on && frame.point !== null;
     if (frame) {
+      const map = this.heightMap;
       setLine(
         this.traceSection,
-        circlePoints(frame.sectionCentre, frame.sectionNormal, this.cornerRadiusMm),
+        drawnPoints(map, circlePoints(frame.sectionCentre, frame.sectionNormal, this.cornerRadiusMm)),
         SECTION_POINTS,
       );
       const attr = this.candidates.geometry.getAttribute('position') as BufferAttribute;
       const n = Math.min(frame.candidates.length / 3, attr.count);
-      (attr.array as Float32Array).set(frame.candidates.slice(0, 3 * n));
+      (attr.array as Float32Array).set(drawnPoints(map, frame.candidates.slice(0, 3 * n)));
       attr.needsUpdate = true;
       this.candidates.geometry.setDrawRange(0, n);
       if (frame.point) {
-        this.traceMarker.position.set(...frame.point);
+        const [px, py, pz] = frame.point;
+        this.traceMarker.position.set(px, py, drawnHeightMm(map, pz));
         this.traceMarker.scale.setScalar(0.03 * (this.fittedRadiusMm || 1));
         setLabel(
           this.traceLabel,
@@ -657,8 +771,79 @@ export class ToolScene {
     if (this.contextLost) return; // drawn again on webglcontextrestored
     this.renderer.render(this.scene, this.camera);
     this.labels.render(this.scene, this.camera);
+    this.layoutLabels();
     this.frames++;
     this.onFrame?.();
+  }
+
+  /**
+   * Places the labels three.js has just positioned so that none covers another, a marked point or
+   * a badge, or runs out of the scene (labelLayout.ts), and records which legend entries the
+   * drawing uses (`data-drawn` on the scene box, read by the legend and the tests).
+   */
+  private layoutLabels(): void {
+    const w = this.container.clientWidth;
+    const h = this.container.clientHeight;
+    const toScreen = (o: Object3D): [number, number] => {
+      const v = new Vector3().setFromMatrixPosition(o.matrixWorld).project(this.camera);
+      return [(v.x * 0.5 + 0.5) * w, (-v.y * 0.5 + 0.5) * h];
+    };
+    const box = this.container.getBoundingClientRect();
+    const obstacles: PixelRect[] = [];
+    for (const badge of this.container.querySelectorAll<HTMLElement>('.stale-badge, .scene-scale')) {
+      const r = badge.getBoundingClientRect();
+      if (r.width > 0 && r.height > 0)
+        obstacles.push({
+          left: r.left - box.left,
+          top: r.top - box.top,
+          right: r.right - box.left,
+          bottom: r.bottom - box.top,
+        });
+    }
+    const objects: CSS2DObject[] = [];
+    const requests: LabelRequest[] = [];
+    const drawn = new Set<string>();
+    this.scene.traverse((o) => {
+      if (!shown(o)) return;
+      if (typeof o.userData.legend === 'string') drawn.add(o.userData.legend);
+      if (o.userData.marker === true) {
+        const [x, y] = toScreen(o);
+        obstacles.push({ left: x - 4, top: y - 4, right: x + 4, bottom: y + 4 });
+      }
+      const spec = o.userData.label as LabelSpec | undefined;
+      if (!(o instanceof CSS2DObject) || spec === undefined || o.element.style.display === 'none') return;
+      const inner = o.element.firstElementChild as HTMLElement | null;
+      if (!inner || inner.textContent === '') return;
+      // Sizes are measured when the text changes (a layout read), not every frame.
+      if (o.userData.sizedText !== inner.textContent || !(o.userData.widthPx > 0)) {
+        o.userData.sizedText = inner.textContent;
+        o.userData.widthPx = inner.offsetWidth;
+        o.userData.heightPx = inner.offsetHeight;
+      }
+      const [x, y] = toScreen(o);
+      objects.push(o);
+      requests.push({
+        anchorXPx: x,
+        anchorYPx: y,
+        widthPx: o.userData.widthPx as number,
+        heightPx: o.userData.heightPx as number,
+        side: spec.side,
+        priority: spec.priority,
+      });
+    });
+    const placements = placeLabels(requests, w, h, obstacles);
+    objects.forEach((o, i) => {
+      const p = placements[i];
+      const inner = o.element.firstElementChild as HTMLElement;
+      if (!p?.visible) {
+        inner.style.visibility = 'hidden';
+        return;
+      }
+      inner.style.visibility = '';
+      inner.style.transform = `translate(${p.dxPx.toFixed(1)}px, ${p.dyPx.toFixed(1)}px)`;
+    });
+    const keys = [...drawn].sort().join(' ');
+    if (this.container.dataset.drawn !== keys) this.container.dataset.drawn = keys;
   }
 
   private resize(): void {

@@ -265,6 +265,7 @@ export class CalculatorApp {
         e.hidden = e.classList.contains('plane-only') === cylinder;
       const labels = {
         interval: `L = ${formatLenUnit(reply.exact.intervalMm, unit)}${cylinder && surface.axis === 'feed' ? ' (arc)' : ''}`,
+        halfInterval: `L/2 = ${formatLenUnit(reply.exact.halfIntervalMm, unit)}${cylinder && surface.axis === 'feed' ? ' (arc)' : ''}`,
         contactOffset: y0 === 0 ? null : `y0 = ${formatSignedLenUnit(y0, unit)}`,
       };
       this.scene.run('update', (s) => s.update(reply.scene, labels));

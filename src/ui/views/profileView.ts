@@ -21,7 +21,7 @@ import { fromSurfaceSection, toSurfaceSection } from '../../core/surfaceGeometry
 import type { CylinderCurves } from '../../worker/protocol';
 import { formatLen, formatLenUnit } from '../format';
 import { html, svg, type TeachingView, untilted, type ViewContext } from './common';
-import { autoExaggeration, EXAGGERATION_STEPS } from './scale';
+import { autoExaggeration, EXAGGERATION_STEPS, scaleBar } from './scale';
 
 type Box = { x: number; y: number; w: number; h: number };
 
@@ -80,6 +80,10 @@ export class ProfileView implements TeachingView {
     'aria-label': 'Cross-feed profile of three adjacent passes',
   });
   private readonly layer = svg('g');
+  /** The scale bars (redrawn with every zoom and pan, so they keep their size on screen). */
+  private readonly bars = svg('g', { class: 'scale-bars', 'data-testid': 'profile-scale-bar' });
+  /** The vertical exaggeration drawn now. */
+  private shownK = 1;
   private readonly scaleNote = html('span', { class: 'scale-note', 'data-testid': 'profile-scale' });
   private readonly exaggeration = html('select', {
     'aria-label': 'Vertical scale',
@@ -110,9 +114,14 @@ export class ProfileView implements TeachingView {
     reset.addEventListener('click', () => this.setBox(this.home));
     cusp.addEventListener('click', () => this.zoomToCusp());
     tools.append(this.exaggeration, zoomIn, zoomOut, cusp, reset, this.scaleNote);
-    this.plot.append(this.layer);
+    this.plot.append(this.layer, this.bars);
     this.cylinderNote.hidden = true;
-    this.element.append(tools, this.cylinderNote, this.plot, this.legend());
+    const approxNote = html(
+      'p',
+      { class: 'view-note', 'data-testid': 'profile-approx-note' },
+      "The approximations' profiles are drawn at the exact step-over L (at each pass the exact answer puts), to compare their shapes with the exact profile; the step-over each of them gives is in the results table.",
+    );
+    this.element.append(tools, this.cylinderNote, this.plot, this.legend(), approxNote);
     this.wirePanZoom();
   }
 
@@ -167,7 +176,16 @@ export class ProfileView implements TeachingView {
     ];
     this.layer.replaceChildren();
     this.curves.clear();
-    const top = Math.min(R, 4 * h);
+    this.shownK = k;
+    const y0 = ex.contactOffsetMm;
+    const span = { from: Math.min(-L - 0.2 * R, -y0 - 0.1 * R), to: Math.max(L + 0.2 * R, -y0 + 0.1 * R) };
+    const d = 0.03 * (span.to - span.from);
+    // The band drawn: up to min(R, 4h), but an exaggerated band no taller than the view's shape
+    // allows over the full width (else the drawing shrinks to a strip): at least the cusps with a margin.
+    const room = this.plotRoom();
+    const hTop = Math.max(ex.right.heightMm, ex.left.heightMm);
+    const fits = ((room.maxHeightPx / room.widthPx) * (span.to - span.from) - 6 * d) / k;
+    const top = Math.max(Math.min(R, 4 * h, fits), Math.min(R, 4 * h, 1.5 * hTop));
     const profile = data.curves.profile;
     const passHeight = (y: number, [c, m]: readonly [number, 1 | -1]) => profileHeight(profile, m * (y - c));
     // Scallops: material left between the passes, under the lower envelope of the three profiles.
@@ -180,8 +198,6 @@ export class ProfileView implements TeachingView {
     env.push(`${L},${Z(0)}`);
     this.layer.append(svg('polygon', { points: env.join(' '), class: 'scallop', 'data-testid': 'profile-scallop' }));
     // The three passes, and the tool centre O (-y0 from the contact) when it lies beyond them.
-    const y0 = ex.contactOffsetMm;
-    const span = { from: Math.min(-L - 0.2 * R, -y0 - 0.1 * R), to: Math.max(L + 0.2 * R, -y0 + 0.1 * R) };
     this.layer.append(svg('line', { x1: span.from, y1: Z(0), x2: span.to, y2: Z(0), class: 'ground' }));
     this.layer.append(svg('line', { x1: span.from, y1: Z(h), x2: span.to, y2: Z(h), class: 'hplane' }));
     // The ring ellipse of the middle pass, faint.
@@ -216,10 +232,13 @@ export class ProfileView implements TeachingView {
       }
       polyline('exact', parts.join(' '));
     }
-    const d = 0.03 * (span.to - span.from);
     this.drawDimensions(ctx, k, top, d);
     const bottom = Z(0) + 5 * d;
     this.home = { x: span.from, y: Z(top) - d, w: span.to - span.from, h: bottom - Z(top) + d };
+    // A strong exaggeration: the plot grows (up to its limit) rather than the drawing shrinking to a strip.
+    const wantedPx = (room.widthPx * this.home.h) / this.home.w;
+    if (wantedPx > room.baseHeightPx && this.plot.clientWidth > 0)
+      this.plot.style.height = `${Math.round(Math.min(wantedPx, room.maxHeightPx))}px`;
     this.setBox(this.home);
     const auto = this.exaggeration.value === 'auto' ? ' (auto)' : '';
     this.scaleNote.textContent = k === 1 ? `true scale${auto}` : `vertical scale exaggerated x${k}${auto}`;
@@ -436,6 +455,7 @@ export class ProfileView implements TeachingView {
     this.setBox(this.home);
     const [cx, cy] = D(right.yMm, right.heightMm);
     this.cuspAt = { x: cx, y: cy, k };
+    this.shownK = k;
     const auto = this.exaggeration.value === 'auto' ? ' (auto)' : '';
     const capped = k < wanted ? ` (x${wanted} would fold the trough over)` : '';
     this.scaleNote.textContent =
@@ -548,6 +568,77 @@ export class ProfileView implements TeachingView {
     // Text keeps its on-screen size whatever the zoom.
     const size = String(b.w / 45);
     for (const t of this.layer.querySelectorAll('text')) t.setAttribute('font-size', size);
+    this.drawScaleBars(b, b.w / 45);
+  }
+
+  /**
+   * The plot's width and its height as the stylesheet sets it (any height it was grown to is
+   * reset), and the most it may grow to for an exaggerated drawing (pixels; a guess while the
+   * plot is not laid out).
+   */
+  private plotRoom(): { widthPx: number; baseHeightPx: number; maxHeightPx: number } {
+    this.plot.style.height = '';
+    const widthPx = this.plot.clientWidth || 800;
+    const baseHeightPx = this.plot.clientHeight || 320;
+    return {
+      widthPx,
+      baseHeightPx,
+      maxHeightPx: Math.max(baseHeightPx, Math.min(2 * baseHeightPx, 0.7 * window.innerHeight)),
+    };
+  }
+
+  /** Height over width of the plot on screen (0.4 while it is not laid out). */
+  private plotAspect(): number {
+    const w = this.plot.clientWidth;
+    const h = this.plot.clientHeight;
+    return w > 0 && h > 0 ? h / w : 0.4;
+  }
+
+  /**
+   * Scale bars in the user's unit at the bottom of the view: across the feed (true scale), and
+   * for heights when they are exaggerated (the bar drawn k times taller, and saying so).
+   */
+  private drawScaleBars(b: Box, fontSize: number): void {
+    this.bars.replaceChildren();
+    if (this.ctx === null) return;
+    const unit = this.ctx.unit;
+    // The box as drawn: the viewBox is fitted into the plot keeping its aspect, so one of its sides has room to spare.
+    const aspect = this.plotAspect();
+    const w = Math.max(b.w, b.h / aspect);
+    const h = Math.max(b.h, b.w * aspect);
+    const x0 = b.x + b.w / 2 - w / 2 + 0.03 * w;
+    const yBase = b.y + b.h / 2 + h / 2 - 0.05 * h;
+    const tick = 0.012 * w;
+    const text = (x: number, y: number, label: string, testId: string, anchor = 'start') => {
+      const t = svg('text', { x, y, class: 'dim-text scale-text', 'data-testid': testId, 'text-anchor': anchor });
+      t.setAttribute('font-size', String(fontSize));
+      t.textContent = label;
+      this.bars.append(t);
+    };
+    const across = scaleBar(0.2 * w, unit);
+    if (across !== null) {
+      const x1 = x0 + across.lengthMm;
+      this.bars.append(
+        svg('polyline', {
+          points: `${x0},${yBase - tick} ${x0},${yBase} ${x1},${yBase} ${x1},${yBase - tick}`,
+          class: 'scale-line',
+        }),
+      );
+      text(x0, yBase - 1.6 * tick, across.text, 'profile-scale-bar-x');
+    }
+    const k = this.shownK;
+    if (k === 1) return;
+    const up = scaleBar((0.25 * h) / k, unit);
+    if (up === null) return;
+    const x = x0 + 0.3 * w;
+    const y1 = yBase - k * up.lengthMm;
+    this.bars.append(
+      svg('polyline', {
+        points: `${x - tick},${y1} ${x},${y1} ${x},${yBase} ${x - tick},${yBase}`,
+        class: 'scale-line',
+      }),
+    );
+    text(x + tick, yBase - (k * up.lengthMm) / 2, `${up.text} high (drawn x${k})`, 'profile-scale-bar-z');
   }
 
   private wirePanZoom(): void {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { autoExaggeration, EXAGGERATION_STEPS } from '../../../src/ui/views/scale';
+import { autoExaggeration, EXAGGERATION_STEPS, scaleBar } from '../../../src/ui/views/scale';
 
 describe('auto vertical exaggeration of the profile view', () => {
   it('picks the largest step that keeps the feature within the fraction of the width', () => {
@@ -26,5 +26,18 @@ describe('auto vertical exaggeration of the profile view', () => {
     expect(autoExaggeration(4, 0)).toBe(1);
     expect(autoExaggeration(Number.NaN, 0.1)).toBe(1);
     expect(autoExaggeration(4, Number.POSITIVE_INFINITY)).toBe(1);
+  });
+});
+
+describe('profile scale bar', () => {
+  it('the largest 1-2-5 length in the user unit, or in um / thou where that reads better', () => {
+    expect(scaleBar(1.3, 'mm')).toEqual({ lengthMm: 1, text: '1 mm' });
+    expect(scaleBar(3, 'mm')).toEqual({ lengthMm: 2, text: '2 mm' });
+    expect(scaleBar(0.07, 'mm')).toEqual({ lengthMm: 0.05, text: '50 µm' });
+    expect(scaleBar(250, 'mm')).toEqual({ lengthMm: 200, text: '200 mm' });
+    expect(scaleBar(1.3, 'in')).toEqual({ lengthMm: 0.05 * 25.4, text: '0.05 in' });
+    expect(scaleBar(0.2, 'in')?.text).toBe('5 thou');
+    expect(scaleBar(0, 'mm')).toBeNull();
+    expect(scaleBar(Number.NaN, 'mm')).toBeNull();
   });
 });

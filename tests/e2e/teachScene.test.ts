@@ -1,0 +1,339 @@
+/**
+ * The teacher's 3D scene, profile and wide layout (issue 10), driven as a teacher would at
+ * 390 x 844 (phone), 768 x 1024 (tablet) and 1440 x 900 (projector), light and dark: the scene's
+ * labels never cover one another nor run out of the scene, the height exaggeration is said on the
+ * scene, L and L/2 are dimensioned, every element drawn has its legend entry; the profile has a
+ * scale bar in the user's unit, stays readable exaggerated, shows its whole legend and keeps its
+ * labels' size when zoomed; at 1440 x 900 the scene fills its column beside the teaching views.
+ * Screenshots are kept in test-results/screenshots/.
+ */
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { exactForward } from '../../src/core/index';
+import { forwardInput } from '../../src/core/validate';
+import { formatLenUnit } from '../../src/ui/format';
+import { SHOTS, useSite } from './harness';
+
+const { open } = useSite('docs/teach-scene');
+
+const VIEWPORTS = [
+  { name: 'phone', width: 390, height: 844 },
+  { name: 'tablet', width: 768, height: 1024 },
+  { name: 'wide', width: 1440, height: 900 },
+] as const;
+
+/** The postures a teacher would show: tilt, no lead, a ball end, a flat end with lead, zigzag, a cylinder. */
+const POSTURES = (
+  [
+    ['tilt', 'R=3&Rcr=1&rho=5&tilt=5&h=0.05'],
+    ['rho0', 'R=3&Rcr=1&rho=0&h=0.05'],
+    ['ball', 'R=3&Rcr=3&rho=5&h=0.05'],
+    ['flat-lead', 'R=3&Rcr=0&rho=5&h=0.05'],
+    ['zigzag', 'R=3&Rcr=1&rho=5&tilt=10&pattern=zigzag&h=0.05'],
+    ['cylinder', 'R=3&Rcr=1&rho=5&h=0.05&surface=convex&surfaceRadius=12'],
+  ] as const
+).map(([name, query]) => ({ name, query }));
+
+interface Box {
+  readonly text: string;
+  readonly left: number;
+  readonly top: number;
+  readonly right: number;
+  readonly bottom: number;
+}
+
+/** The scene's visible labels (and the exaggeration badge) with their boxes on screen, and the scene's box. */
+async function sceneLabels(page: Page): Promise<{ labels: Box[]; scene: Box }> {
+  return page.evaluate(() => {
+    const box = (e: Element, text: string) => {
+      const r = e.getBoundingClientRect();
+      return { text, left: r.left, top: r.top, right: r.right, bottom: r.bottom };
+    };
+    const sceneEl = document.querySelector('[data-testid="scene"]') as HTMLElement;
+    const labels = [...sceneEl.querySelectorAll<HTMLElement>('.scene-label, .scene-scale')]
+      .filter((e) => {
+        const r = e.getBoundingClientRect();
+        return e.checkVisibility({ visibilityProperty: true }) && r.width > 0 && r.height > 0;
+      })
+      .map((e) => box(e, e.textContent ?? ''));
+    return { labels, scene: box(sceneEl, 'scene') };
+  });
+}
+
+/** No two labels intersect, and each lies within the scene's box. */
+function expectClear({ labels, scene }: { labels: Box[]; scene: Box }, where: string): void {
+  for (const l of labels) {
+    const inside = l.left >= scene.left && l.right <= scene.right && l.top >= scene.top && l.bottom <= scene.bottom;
+    expect(inside, `${where}: "${l.text}" runs out of the scene`).toBe(true);
+  }
+  for (let i = 0; i < labels.length; i++) {
+    for (let j = i + 1; j < labels.length; j++) {
+      const a = labels[i] as Box;
+      const b = labels[j] as Box;
+      const overlap = a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+      expect(overlap, `${where}: "${a.text}" covers "${b.text}"`).toBe(false);
+    }
+  }
+}
+
+/** Every kind of element the scene draws (data-drawn) has a visible legend entry. */
+async function expectLegendFor(page: Page, where: string): Promise<string[]> {
+  const drawn = ((await page.getByTestId('scene').getAttribute('data-drawn')) ?? '').split(' ').filter(Boolean);
+  expect(drawn.length, `${where}: the scene says what it draws`).toBeGreaterThan(5);
+  for (const key of drawn) {
+    const visible = await page
+      .locator(`[data-testid="scene-legend"] [data-legend="${key}"]`)
+      .evaluateAll((els) => els.some((e) => (e as HTMLElement).checkVisibility()));
+    expect(visible, `${where}: no legend entry for "${key}"`).toBe(true);
+  }
+  return drawn;
+}
+
+/** Waits until the scene has drawn its labels for the state on screen. */
+async function sceneReady(page: Page): Promise<void> {
+  await page.getByTestId('scene').scrollIntoViewIfNeeded();
+  await expect
+    .poll(async () => (await sceneLabels(page)).labels.map((l) => l.text))
+    .toEqual(expect.arrayContaining(['CC (P_base)']));
+  await page.waitForTimeout(200);
+}
+
+describe('teacher: the 3D scene', () => {
+  for (const [i, vp] of VIEWPORTS.entries()) {
+    for (const [j, posture] of POSTURES.entries()) {
+      const theme = (i + j) % 2 === 0 ? 'light' : 'dark';
+      it(`${vp.name} ${theme} ${posture.name}: labels clear of each other and inside the scene, L and L/2 drawn, the exaggeration said, a legend entry for every element`, async () => {
+        const { page, errors } = await open(`?${posture.query}&unit=mm&theme=${theme}`, vp);
+        await sceneReady(page);
+        const found = await sceneLabels(page);
+        const texts = found.labels.map((l) => l.text);
+        expectClear(found, `${vp.name} ${posture.name}`);
+        const half = (await page.getByTestId('result-exact-half').textContent())?.trim() ?? '';
+        const whole = (await page.getByTestId('result-exact-interval').textContent())?.trim() ?? '';
+        // L and L/2 are dimensioned on the scene with the solver's numbers (the exaggeration changes none).
+        const arc = posture.name === 'cylinder' ? ' (arc)' : '';
+        expect(texts, JSON.stringify(texts)).toContain(`L = ${whole}${arc}`);
+        expect(texts, JSON.stringify(texts)).toContain(`L/2 = ${half} mm${arc}`);
+        // The exaggeration is said on the scene.
+        const badge = (await page.getByTestId('scene-exaggeration').textContent()) ?? '';
+        expect(badge).toMatch(posture.name === 'cylinder' ? /^heights at true scale$/ : /^heights drawn x\d+ /);
+        const drawn = await expectLegendFor(page, `${vp.name} ${posture.name}`);
+        expect(drawn).toEqual(
+          expect.arrayContaining(
+            posture.name === 'cylinder' ? ['tool', 'path', 'hplane', 'cusp'] : ['tool', 'path', 'hplane', 'dimension'],
+          ),
+        );
+        await page
+          .getByTestId('scene')
+          .screenshot({ path: `${SHOTS}/teach-scene-${posture.name}-${vp.name}-${theme}.png` });
+        expect(errors).toEqual([]);
+        await page.close();
+      });
+    }
+  }
+
+  it('the labels stay clear when the camera moves (along the feed, top)', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm', { width: 1440, height: 900 });
+    await sceneReady(page);
+    for (const name of ['Along the feed', 'Top', 'Isometric']) {
+      await page.getByRole('button', { name }).click();
+      await page.waitForTimeout(250);
+      expectClear(await sceneLabels(page), name);
+    }
+    await page.close();
+  });
+
+  it('the heights are exaggerated only when the scallop is too low to see, and only the drawing changes', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm', { width: 1440, height: 900 });
+    await sceneReady(page);
+    // 0.12 R = 0.36 mm: the largest 1-2-5 factor that keeps 5 h below it is 5.
+    expect(await page.getByTestId('scene-exaggeration').textContent()).toBe(
+      'heights drawn x5 (up to 2h above the plane)',
+    );
+    const e = exactForward(
+      forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 0.05),
+    );
+    const texts = (await sceneLabels(page)).labels.map((l) => l.text);
+    expect(texts).toContain(`L = ${formatLenUnit(e.intervalMm, 'mm')}`);
+    expect(texts).toContain(`L/2 = ${formatLenUnit(e.intervalMm / 2, 'mm')}`);
+    // A scallop tall enough to be seen: true scale.
+    const field = page.getByTestId('input-h');
+    await field.fill('0.5');
+    await field.press('Enter');
+    await expect.poll(() => page.getByTestId('scene-exaggeration').textContent()).toBe('heights at true scale');
+    await page.close();
+  });
+
+  it('step-through: single contact and best P_hp[i] clear of the other labels, and the trace in the legend', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=stepper', { width: 1440, height: 900 });
+    await sceneReady(page);
+    const counter = page.getByTestId('stepper-counter');
+    await expect.poll(() => counter.textContent()).toMatch(/step 1 of \d+/);
+    const total = Number(/of (\d+)/.exec((await counter.textContent()) ?? '')?.[1]);
+    const seen = new Set<string>();
+    for (let k = 1; k < total; k++) {
+      await page.getByTestId('stepper-forward').click();
+      await expect.poll(() => counter.textContent()).toMatch(new RegExp(`step ${k + 1} of`));
+      await page.waitForTimeout(80);
+      const found = await sceneLabels(page);
+      for (const l of found.labels) seen.add(l.text);
+      expectClear(found, `step ${k + 1}`);
+    }
+    expect([...seen]).toEqual(expect.arrayContaining(['single contact', 'best P_hp[i]']));
+    expect(await expectLegendFor(page, 'step-through')).toContain('trace');
+    await page.getByTestId('scene').screenshot({ path: `${SHOTS}/teach-scene-stepper.png` });
+    await page.close();
+  });
+});
+
+/** The profile's box and the boxes of its texts, on screen. */
+async function profileTexts(page: Page): Promise<{ svg: Box; texts: Box[] }> {
+  return page.getByTestId('profile-view').evaluate((view) => {
+    const box = (e: Element, text: string) => {
+      const r = e.getBoundingClientRect();
+      return { text, left: r.left, top: r.top, right: r.right, bottom: r.bottom };
+    };
+    const svgEl = view.querySelector('svg.profile-svg') as SVGSVGElement;
+    return {
+      svg: box(svgEl, 'svg'),
+      texts: [...svgEl.querySelectorAll('text')].map((t) => box(t, t.textContent ?? '')),
+    };
+  });
+}
+
+describe('teacher: the cross-feed profile', () => {
+  for (const [i, vp] of VIEWPORTS.entries()) {
+    const theme = i % 2 === 0 ? 'dark' : 'light';
+    it(`${vp.name} ${theme}: a scale bar in the user's unit, the note on the exact L, x100 readable`, async () => {
+      const { page } = await open(`?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile&theme=${theme}`, vp);
+      const view = page.getByTestId('profile-view');
+      await view.locator('polyline.curve-exact').first().waitFor({ state: 'attached' });
+      await view.scrollIntoViewIfNeeded();
+      expect(await page.getByTestId('profile-approx-note').textContent()).toMatch(
+        /approximations' profiles are drawn at the exact step-over L/,
+      );
+      await expect.poll(() => page.getByTestId('profile-scale-bar-x').textContent()).toMatch(/^\d+(\.\d+)? (mm|µm)$/);
+      expect(await page.getByTestId('profile-scale-bar-z').textContent()).toMatch(
+        /^\d+(\.\d+)? (mm|µm) high \(drawn x\d+\)$/,
+      );
+      // x100: the drawing fills the plot's width instead of shrinking to a strip.
+      await page.getByTestId('profile-exaggeration').selectOption('100');
+      await expect.poll(() => page.getByTestId('profile-scale').textContent()).toMatch(/x100/);
+      const plot = await view.locator('svg.profile-svg').boundingBox();
+      const scallop = await page.getByTestId('profile-scallop').boundingBox();
+      if (!plot || !scallop) throw new Error('no profile');
+      expect(scallop.width / plot.width, 'the scallops span the plot').toBeGreaterThan(0.45);
+      expect(scallop.height / plot.height, 'the scallops are tall enough to read').toBeGreaterThan(0.2);
+      expect(await page.getByTestId('profile-scale-bar-z').textContent()).toMatch(/\(drawn x100\)$/);
+      // Every label within the plot.
+      const { svg, texts } = await profileTexts(page);
+      for (const t of texts) expect(t.right <= svg.right + 1 && t.left >= svg.left - 1, t.text).toBe(true);
+      await view.screenshot({ path: `${SHOTS}/teach-profile-x100-${vp.name}-${theme}.png` });
+      await page.close();
+    });
+  }
+
+  it('the scale bar in inches (thou for small lengths)', async () => {
+    const { page } = await open('?R=0.125&Rcr=0.04&rho=5&h=0.002&unit=in&view=profile', { width: 1440, height: 900 });
+    await page.getByTestId('profile-view').locator('polyline.curve-exact').first().waitFor({ state: 'attached' });
+    await expect.poll(() => page.getByTestId('profile-scale-bar-x').textContent()).toMatch(/^\d+(\.\d+)? (in|thou)$/);
+    expect(await page.getByTestId('profile-scale-bar-z').textContent()).toMatch(/ (in|thou) high/);
+    await page.close();
+  });
+
+  it('labels keep their size on screen when zooming in and out', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile', { width: 1440, height: 900 });
+    const view = page.getByTestId('profile-view');
+    await view.locator('text.dim-text').first().waitFor({ state: 'attached' });
+    const label = view.locator('text.dim-text', { hasText: /^L = / });
+    const size = async () => (await label.boundingBox())?.height ?? 0;
+    const before = await size();
+    expect(before).toBeGreaterThan(6);
+    await page.getByRole('button', { name: 'Zoom in' }).click();
+    await page.getByRole('button', { name: 'Zoom in' }).click();
+    expect(Math.abs((await size()) - before), 'zoomed in x4').toBeLessThan(1);
+    const plot = await view.locator('svg.profile-svg').boundingBox();
+    if (!plot) throw new Error('no plot');
+    await page.mouse.move(plot.x + plot.width / 2, plot.y + plot.height / 2);
+    for (let k = 0; k < 8; k++) await page.mouse.wheel(0, 200);
+    await page.waitForTimeout(100);
+    expect(Math.abs((await size()) - before), 'zoomed out with the wheel').toBeLessThan(1);
+    await page.getByTestId('profile-reset').click();
+    expect(Math.abs((await size()) - before)).toBeLessThan(1);
+    await page.close();
+  });
+
+  for (const c of [
+    { name: 'phone', query: '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile', vp: { width: 390, height: 844 } },
+    { name: 'embed', query: '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile&embed=1', vp: { width: 480, height: 360 } },
+    {
+      name: 'embed-dark-tilt',
+      query: '?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=profile&embed=1&theme=dark',
+      vp: { width: 480, height: 360 },
+    },
+  ]) {
+    it(`${c.name}: the whole legend visible, no entry clipped`, async () => {
+      const { page } = await open(c.query, c.vp);
+      const view = page.getByTestId('profile-view');
+      await view.locator('polyline.curve-exact').first().waitFor({ state: 'attached' });
+      const legend = view.locator('.view-legend');
+      if (c.name === 'phone') await legend.scrollIntoViewIfNeeded();
+      const boxes = await legend.locator('.legend-item').evaluateAll((els) =>
+        els
+          .filter((e) => !(e as HTMLElement).hidden)
+          .map((e) => {
+            const r = e.getBoundingClientRect();
+            return { text: e.textContent, left: r.left, right: r.right, top: r.top, bottom: r.bottom };
+          }),
+      );
+      expect(boxes.length).toBeGreaterThanOrEqual(7);
+      const vw = c.vp.width;
+      const vh = c.vp.height;
+      for (const b of boxes) {
+        expect(b.left >= 0 && b.right <= vw, `${b.text} cut off at the side`).toBe(true);
+        expect(b.top >= 0 && b.bottom <= vh, `${b.text} below the frame`).toBe(true);
+      }
+      await page.screenshot({ path: `${SHOTS}/teach-profile-legend-${c.name}.png` });
+      await page.close();
+    });
+  }
+});
+
+describe('teacher: the wide layout', () => {
+  it('1440 x 900: the scene fills its column beside the teaching views, no empty half', async () => {
+    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile', { width: 1440, height: 900 });
+    await sceneReady(page);
+    await page.getByTestId('teaching').scrollIntoViewIfNeeded();
+    await page.waitForTimeout(200);
+    const scene = await page.getByTestId('scene').boundingBox();
+    const view = await page.locator('section.view').boundingBox();
+    const teaching = await page.getByTestId('teaching').boundingBox();
+    if (!scene || !view || !teaching) throw new Error('missing');
+    // Side by side, both on screen.
+    expect(teaching.x + teaching.width).toBeLessThanOrEqual(scene.x);
+    expect(scene.y).toBeGreaterThanOrEqual(0);
+    expect(scene.y).toBeLessThan(900 / 4);
+    // The scene takes most of the screen's height, and its column (scene, camera, legend) most of it.
+    expect(scene.height).toBeGreaterThan(0.6 * 900);
+    expect(scene.y + view.height).toBeGreaterThan(0.9 * 900);
+    await page.screenshot({ path: `${SHOTS}/teach-wide-layout.png` });
+    await page.close();
+  });
+
+  for (const vp of [
+    { width: 360, height: 740 },
+    { width: 414, height: 896 },
+    { width: 768, height: 1024 },
+  ]) {
+    it(`${vp.width} px: no horizontal scrolling with the scene's legend and the profile's scale bar`, async () => {
+      const { page } = await open('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=profile', vp);
+      await sceneReady(page);
+      const { scroll, client } = await page.evaluate(() => ({
+        scroll: document.documentElement.scrollWidth,
+        client: document.documentElement.clientWidth,
+      }));
+      expect(scroll).toBeLessThanOrEqual(client);
+      await page.close();
+    });
+  }
+});
