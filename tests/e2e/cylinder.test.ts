@@ -6,7 +6,6 @@
  * under the strict Content-Security-Policy and records every violation.
  */
 import type { Page } from 'playwright-core';
-import { URL_SETTLE_MS } from '../../src/ui/urlState';
 import { describe, expect, it } from 'vitest';
 import {
   type CylinderSurface,
@@ -20,6 +19,7 @@ import {
 } from '../../src/core/index';
 import { formatInputNumber, fromMm } from '../../src/core/units';
 import { formatLen, formatLenUnit } from '../../src/ui/format';
+import { URL_SETTLE_MS } from '../../src/ui/urlState';
 import { paintedFraction, SHOTS, STRICT_CSP, useSite } from './harness';
 
 const site = useSite('docs/cylinder', { build: 'production', headers: { 'Content-Security-Policy': STRICT_CSP } });

@@ -4,7 +4,6 @@
  * views following the posture. Numbers are checked against the solver core.
  */
 import type { Page } from 'playwright-core';
-import { URL_SETTLE_MS } from '../../src/ui/urlState';
 import { describe, expect, it } from 'vitest';
 import {
   compareForward,
@@ -16,6 +15,7 @@ import {
   type ToolInput,
   traceProcedure,
 } from '../../src/core/index';
+import { URL_SETTLE_MS } from '../../src/ui/urlState';
 import { SHOTS, useSite } from './harness';
 
 const site = useSite('docs/posture');

@@ -73,7 +73,8 @@ describe('rpc', () => {
   });
 
   it('the remote is not a thenable (awaiting it does not call the worker)', async () => {
-    const remote = connect({ then: () => 'called' } as Record<string, () => string>);
+    // Even when the worker exposes a function of that name.
+    const remote = connect(Object.fromEntries([['then', () => 'called']]) as Record<string, () => string>);
     expect((remote as unknown as { then?: unknown }).then).toBeUndefined();
     expect(await Promise.resolve(remote)).toBe(remote);
   });

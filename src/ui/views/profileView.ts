@@ -123,7 +123,29 @@ export class ProfileView implements TeachingView {
     );
     this.element.append(tools, this.cylinderNote, this.plot, this.legend(), approxNote);
     this.wirePanZoom();
+    this.plotObserver.observe(this.plot);
   }
+
+  /** The plot's size as last laid out (px; 0 before it is), and its height as the stylesheet sets it. */
+  private plotWidthPx = 0;
+  private plotHeightPx = 0;
+  private baseHeightPx = 0;
+  /** The height the plot was grown to for an exaggerated drawing (px), or null. */
+  private grownPx: number | null = null;
+  /**
+   * Sizes read when the browser reports a change, after its layout (reading them while drawing
+   * forced a layout of the whole page twice per update: 5-10 ms on every new answer); a new size
+   * draws the view again for it.
+   */
+  private readonly plotObserver = new ResizeObserver(() => {
+    const w = this.plot.clientWidth;
+    const h = this.plot.clientHeight;
+    if (w === this.plotWidthPx && h === this.plotHeightPx) return;
+    this.plotWidthPx = w;
+    this.plotHeightPx = h;
+    if (this.grownPx === null) this.baseHeightPx = h;
+    if (this.ctx !== null && w > 0) this.update(this.ctx);
+  });
 
   private legend(): HTMLElement {
     const legend = html('p', { class: 'view-legend' });
@@ -237,8 +259,12 @@ export class ProfileView implements TeachingView {
     this.home = { x: span.from, y: Z(top) - d, w: span.to - span.from, h: bottom - Z(top) + d };
     // A strong exaggeration: the plot grows (up to its limit) rather than the drawing shrinking to a strip.
     const wantedPx = (room.widthPx * this.home.h) / this.home.w;
-    if (wantedPx > room.baseHeightPx && this.plot.clientWidth > 0)
-      this.plot.style.height = `${Math.round(Math.min(wantedPx, room.maxHeightPx))}px`;
+    const grown =
+      wantedPx > room.baseHeightPx && this.plotWidthPx > 0 ? Math.round(Math.min(wantedPx, room.maxHeightPx)) : null;
+    if (grown !== this.grownPx) {
+      this.grownPx = grown;
+      this.plot.style.height = grown === null ? '' : `${grown}px`;
+    }
     this.setBox(this.home);
     const auto = this.exaggeration.value === 'auto' ? ' (auto)' : '';
     this.scaleNote.textContent = k === 1 ? `true scale${auto}` : `vertical scale exaggerated x${k}${auto}`;
@@ -577,9 +603,8 @@ export class ProfileView implements TeachingView {
    * plot is not laid out).
    */
   private plotRoom(): { widthPx: number; baseHeightPx: number; maxHeightPx: number } {
-    this.plot.style.height = '';
-    const widthPx = this.plot.clientWidth || 800;
-    const baseHeightPx = this.plot.clientHeight || 320;
+    const widthPx = this.plotWidthPx || 800;
+    const baseHeightPx = this.baseHeightPx || 320;
     return {
       widthPx,
       baseHeightPx,
@@ -589,8 +614,8 @@ export class ProfileView implements TeachingView {
 
   /** Height over width of the plot on screen (0.4 while it is not laid out). */
   private plotAspect(): number {
-    const w = this.plot.clientWidth;
-    const h = this.plot.clientHeight;
+    const w = this.plotWidthPx;
+    const h = this.grownPx ?? this.baseHeightPx;
     return w > 0 && h > 0 ? h / w : 0.4;
   }
 
