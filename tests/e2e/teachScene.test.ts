@@ -247,8 +247,8 @@ describe('teacher: the cross-feed profile', () => {
     await view.locator('text.dim-text').first().waitFor({ state: 'attached' });
     const label = view.locator('text.dim-text', { hasText: /^L = / });
     const size = async () => (await label.boundingBox())?.height ?? 0;
+    await expect.poll(size).toBeGreaterThan(6);
     const before = await size();
-    expect(before).toBeGreaterThan(6);
     await page.getByRole('button', { name: 'Zoom in' }).click();
     await page.getByRole('button', { name: 'Zoom in' }).click();
     expect(Math.abs((await size()) - before), 'zoomed in x4').toBeLessThan(1);

@@ -126,9 +126,8 @@ export class ProfileView implements TeachingView {
     this.plotObserver.observe(this.plot);
   }
 
-  /** The plot's size as last laid out (px; 0 before it is), and its height as the stylesheet sets it. */
+  /** The plot's width as last laid out (px; 0 before it is), and its height as the stylesheet sets it. */
   private plotWidthPx = 0;
-  private plotHeightPx = 0;
   private baseHeightPx = 0;
   /** The height the plot was grown to for an exaggerated drawing (px), or null. */
   private grownPx: number | null = null;
@@ -138,14 +137,20 @@ export class ProfileView implements TeachingView {
    * draws the view again for it.
    */
   private readonly plotObserver = new ResizeObserver(() => {
+    // Only a new width or a new stylesheet height calls for a new drawing: the plot's own growth
+    // (grownPx, set by the drawing) does not.
+    if (this.readPlotSize() && this.ctx !== null && this.plotWidthPx > 0) this.update(this.ctx);
+  });
+
+  /** Reads the plot's laid-out size; true when its width or its stylesheet height changed. */
+  private readPlotSize(): boolean {
     const w = this.plot.clientWidth;
     const h = this.plot.clientHeight;
-    if (w === this.plotWidthPx && h === this.plotHeightPx) return;
+    const changed = w !== this.plotWidthPx || (this.grownPx === null && h !== this.baseHeightPx);
     this.plotWidthPx = w;
-    this.plotHeightPx = h;
     if (this.grownPx === null) this.baseHeightPx = h;
-    if (this.ctx !== null && w > 0) this.update(this.ctx);
-  });
+    return changed;
+  }
 
   private legend(): HTMLElement {
     const legend = html('p', { class: 'view-legend' });
@@ -603,6 +608,9 @@ export class ProfileView implements TeachingView {
    * plot is not laid out).
    */
   private plotRoom(): { widthPx: number; baseHeightPx: number; maxHeightPx: number } {
+    // Before the first size report, read it once (one forced layout in the view's life) rather
+    // than draw for a guessed size and again when the report comes.
+    if (this.plotWidthPx === 0) this.readPlotSize();
     const widthPx = this.plotWidthPx || 800;
     const baseHeightPx = this.baseHeightPx || 320;
     return {
