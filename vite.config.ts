@@ -58,6 +58,9 @@ function chunkOf(id: string): string | null {
   return null;
 }
 
+/** Tests that drive headless Chromium or read the built sites (dist/, test-results/site-e2e/). */
+const BROWSER_TESTS = ['tests/e2e/**/*.test.ts', 'tests/build/sharedWorker.test.ts', 'tests/bench/web.test.ts'];
+
 export default defineConfig(({ mode }) => ({
   // Relative base: the built site works from any host and any sub-path.
   base: './',
@@ -72,12 +75,31 @@ export default defineConfig(({ mode }) => ({
     rollupOptions: { output: { manualChunks: chunkOf } },
   },
   test: {
-    include: ['tests/**/*.test.ts'],
-    environment: 'node',
     testTimeout: 30_000,
     hookTimeout: 60_000,
-    globalSetup: ['tests/e2e/globalSetup.ts'],
-    // Browser tests and benchmarks share one machine of 2 cores: run files one at a time.
-    fileParallelism: false,
+    environment: 'node',
+    // Two projects: `node` (pure modules, the worker's API, the CLI as a process; no site build,
+    // files in parallel) and `browser` (headless Chromium against the built sites, which its
+    // global set-up builds once; one file at a time, since a page and its workers share 2 cores).
+    // `npx vitest run --project node` runs the Node tests alone in seconds.
+    projects: [
+      {
+        extends: true,
+        test: {
+          name: 'node',
+          include: ['tests/**/*.test.ts'],
+          exclude: BROWSER_TESTS,
+        },
+      },
+      {
+        extends: true,
+        test: {
+          name: 'browser',
+          include: BROWSER_TESTS,
+          globalSetup: ['tests/e2e/globalSetup.ts'],
+          fileParallelism: false,
+        },
+      },
+    ],
   },
 }));
