@@ -1,20 +1,24 @@
 #!/usr/bin/env node
 // Part of `npm test`: makes sure MkDocs (pinned) is available for the example documentation site
-// (tests/docs-site/). Installs it with pip into a local virtual environment under
-// node_modules/.cache/mkdocs-venv when missing (falls back to `pip install --target` when
+// (tests/docs-site/). Installs it with pip into a virtual environment in a cache outside the clone
+// ($PATH_INTERVAL_CACHE, else $XDG_CACHE_HOME/path-interval, else ~/.cache/path-interval), so the
+// next CI run on the same machine reuses it and a new machine installs it again, when missing (falls back to `pip install --target` when
 // `python3 -m venv` is unavailable; installs Debian's python3 and python3-venv with apt-get when
 // Python itself is missing and we run as root, as on CI). Prints nothing when it is already there.
 //   node tests/support/ensure-mkdocs.mjs                          install if missing
 //   node tests/support/ensure-mkdocs.mjs build <mkdocs.yml> <dir> also build a site into <dir>
 import { execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
+import { homedir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 export const MKDOCS_VERSION = '1.6.1';
-const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
-const venv = join(root, 'node_modules', '.cache', 'mkdocs-venv');
-const target = join(root, 'node_modules', '.cache', 'mkdocs-target');
+/** The cache folder outside the clone: one MkDocs per machine and version, shared by every clone. */
+const cacheDir =
+  process.env.PATH_INTERVAL_CACHE || join(process.env.XDG_CACHE_HOME || join(homedir(), '.cache'), 'path-interval');
+const venv = join(cacheDir, `mkdocs-${MKDOCS_VERSION}-venv`);
+const target = join(cacheDir, `mkdocs-${MKDOCS_VERSION}-target`);
 
 /** How to run mkdocs here: the command and the environment it needs, or null when not installed. */
 export function mkdocsCommand() {
