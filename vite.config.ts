@@ -54,7 +54,7 @@ function pwa(mode: string) {
  */
 function chunkOf(id: string): string | null {
   if (id.includes('/node_modules/three/') || id.includes('/src/render/orbit')) return 'three';
-  if (/\/src\/(core\/|worker\/(rpc|protocol)|ui\/views\/scale)/.test(id)) return 'core';
+  if (/\/src\/(core\/|worker\/(rpc|protocol))/.test(id)) return 'core';
   return null;
 }
 

@@ -21,7 +21,7 @@ import { fromSurfaceSection, toSurfaceSection } from '../../core/surfaceGeometry
 import type { CylinderCurves } from '../../worker/protocol';
 import { formatLen, formatLenUnit } from '../format';
 import { html, svg, type TeachingView, untilted, type ViewContext } from './common';
-import { autoExaggeration, EXAGGERATION_STEPS, scaleBar } from './scale';
+import { autoExaggeration, EXAGGERATION_STEPS, scaleBar } from '../../core/drawingScale';
 
 type Box = { x: number; y: number; w: number; h: number };
 

@@ -18,7 +18,7 @@ import type { SurfaceDisplay } from '../simulation';
 import type { Unit } from '../state';
 import { onThemeChange } from '../theme';
 import { html, svg, type TeachingView } from './common';
-import { autoExaggeration } from './scale';
+import { autoExaggeration } from '../../core/drawingScale';
 import './surface.css';
 
 type SimulateOk = Extract<SimulateReply, { ok: true }>;

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { autoExaggeration, EXAGGERATION_STEPS, scaleBar } from '../../../src/ui/views/scale';
+import { autoExaggeration, EXAGGERATION_STEPS, scaleBar } from '../../src/core/drawingScale';
 
 describe('auto vertical exaggeration of the profile view', () => {
   it('picks the largest step that keeps the feature within the fraction of the width', () => {

@@ -1,5 +1,5 @@
-/** Vertical exaggeration of the profile view: pure, so Node tests read it. */
-import { formatSignificant, fromMm, type LengthUnit, readableLengthUnit, toMm } from '../../core/units';
+/** Drawing scales shared by the views and the 3D scenes: vertical exaggeration steps and scale bars (pure, so Node tests read it). */
+import { formatSignificant, fromMm, type LengthUnit, readableLengthUnit, toMm } from './units';
 
 /** The steps offered: 1-2-5 series from true scale to x1000. */
 export const EXAGGERATION_STEPS: readonly number[] = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000];
