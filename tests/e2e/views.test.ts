@@ -4,9 +4,9 @@
  */
 import { describe, expect, it } from 'vitest';
 import { sekineModel } from '../../src/core/approximations';
+import { autoExaggeration } from '../../src/core/drawingScale';
 import { compareForward, exactHalfIntervalMm, exactScallopHeightMm, traceProcedure } from '../../src/core/index';
 import { PAPER_CONDITIONS } from '../../src/core/paper';
-import { autoExaggeration } from '../../src/core/drawingScale';
 import { SHOTS, useSite } from './harness';
 
 const { open } = useSite('docs/views');

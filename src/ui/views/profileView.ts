@@ -10,6 +10,8 @@
  * profiles tangent at each contact, and where the plane's answer and the corrected procedures put
  * the next pass. Heights are exaggerated radially, the surface's curvature kept at true scale.
  */
+
+import { autoExaggeration, EXAGGERATION_STEPS, scaleBar } from '../../core/drawingScale';
 import {
   CURVATURE_ROW_KEYS,
   CURVATURE_ROWS,
@@ -21,7 +23,6 @@ import { fromSurfaceSection, toSurfaceSection } from '../../core/surfaceGeometry
 import type { CylinderCurves } from '../../worker/protocol';
 import { formatLen, formatLenUnit } from '../format';
 import { html, svg, type TeachingView, untilted, type ViewContext } from './common';
-import { autoExaggeration, EXAGGERATION_STEPS, scaleBar } from '../../core/drawingScale';
 
 type Box = { x: number; y: number; w: number; h: number };
 

@@ -7,6 +7,8 @@
  * No inline style: classes and SVG presentation attributes only (the page runs under
  * `style-src 'self'`).
  */
+
+import { autoExaggeration } from '../../core/drawingScale';
 import type { ProcedureKey } from '../../core/procedures';
 import { formatSignificant, unitSymbol } from '../../core/units';
 import { HEIGHT_RAMP } from '../../render/surfaceGrid';
@@ -18,7 +20,6 @@ import type { SurfaceDisplay } from '../simulation';
 import type { Unit } from '../state';
 import { onThemeChange } from '../theme';
 import { html, svg, type TeachingView } from './common';
-import { autoExaggeration } from '../../core/drawingScale';
 import './surface.css';
 
 type SimulateOk = Extract<SimulateReply, { ok: true }>;
