@@ -61,45 +61,62 @@ function chunkOf(id: string): string | null {
 /** Tests that drive headless Chromium or read the built sites (dist/, test-results/site-e2e/). */
 const BROWSER_TESTS = ['tests/e2e/**/*.test.ts', 'tests/build/sharedWorker.test.ts', 'tests/bench/web.test.ts'];
 
-export default defineConfig(({ mode }) => ({
-  // Relative base: the built site works from any host and any sub-path.
-  base: './',
-  // The formulas view's MathML is typeset here, at build time, so no TeX engine is shipped.
-  plugins: [formulaMathmlPlugin(), sharedWorkerPlugin(), pwa(mode)],
-  // three.js alone is about 560 kB raw (130 kB gzip) in its chunk; the benchmark tracks the gzip
-  // size against its 200 kB budget, so Rollup's generic 500 kB warning is raised.
+/**
+ * `vite build --mode lib` (npm run build:lib): the solver core as a library, one ES module in
+ * dist-lib/ (its types from tsconfig.lib.json beside it), the entry of package.json's `exports`.
+ */
+const LIBRARY = {
+  publicDir: false as const,
   build: {
-    chunkSizeWarningLimit: 700,
-    // Every browser the page supports has module preload; the polyfill would only add bytes.
-    modulePreload: { polyfill: false },
-    rollupOptions: { output: { manualChunks: chunkOf } },
+    outDir: 'dist-lib',
+    emptyOutDir: true,
+    lib: { entry: 'src/core/library.ts', formats: ['es' as const], fileName: () => 'path-interval.js' },
   },
-  test: {
-    testTimeout: 30_000,
-    hookTimeout: 60_000,
-    environment: 'node',
-    // Two projects: `node` (pure modules, the worker's API, the CLI as a process; no site build,
-    // files in parallel) and `browser` (headless Chromium against the built sites, which its
-    // global set-up builds once; one file at a time, since a page and its workers share 2 cores).
-    // `npx vitest run --project node` runs the Node tests alone in seconds.
-    projects: [
-      {
-        extends: true,
+};
+
+export default defineConfig(({ mode }) =>
+  mode === 'lib'
+    ? LIBRARY
+    : {
+        // Relative base: the built site works from any host and any sub-path.
+        base: './',
+        // The formulas view's MathML is typeset here, at build time, so no TeX engine is shipped.
+        plugins: [formulaMathmlPlugin(), sharedWorkerPlugin(), pwa(mode)],
+        // three.js alone is about 560 kB raw (130 kB gzip) in its chunk; the benchmark tracks the gzip
+        // size against its 200 kB budget, so Rollup's generic 500 kB warning is raised.
+        build: {
+          chunkSizeWarningLimit: 700,
+          // Every browser the page supports has module preload; the polyfill would only add bytes.
+          modulePreload: { polyfill: false },
+          rollupOptions: { output: { manualChunks: chunkOf } },
+        },
         test: {
-          name: 'node',
-          include: ['tests/**/*.test.ts'],
-          exclude: BROWSER_TESTS,
+          testTimeout: 30_000,
+          hookTimeout: 60_000,
+          environment: 'node',
+          // Two projects: `node` (pure modules, the worker's API, the CLI as a process; no site build,
+          // files in parallel) and `browser` (headless Chromium against the built sites, which its
+          // global set-up builds once; one file at a time, since a page and its workers share 2 cores).
+          // `npx vitest run --project node` runs the Node tests alone in seconds.
+          projects: [
+            {
+              extends: true,
+              test: {
+                name: 'node',
+                include: ['tests/**/*.test.ts'],
+                exclude: BROWSER_TESTS,
+              },
+            },
+            {
+              extends: true,
+              test: {
+                name: 'browser',
+                include: BROWSER_TESTS,
+                globalSetup: ['tests/e2e/globalSetup.ts'],
+                fileParallelism: false,
+              },
+            },
+          ],
         },
       },
-      {
-        extends: true,
-        test: {
-          name: 'browser',
-          include: BROWSER_TESTS,
-          globalSetup: ['tests/e2e/globalSetup.ts'],
-          fileParallelism: false,
-        },
-      },
-    ],
-  },
-}));
+);

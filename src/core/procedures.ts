@@ -40,6 +40,7 @@ export interface ProcedureInfo {
   readonly leadOnly: boolean;
 }
 
+/** The registry of procedures: each one's name, source (the paper's reference), colour and scope. */
 export const PROCEDURES: Readonly<Record<ProcedureKey, ProcedureInfo>> = {
   exact: {
     key: 'exact',
