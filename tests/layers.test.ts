@@ -24,7 +24,7 @@ function sourceFiles(dir: string): string[] {
 }
 
 /** Every module specifier of a file: static imports and re-exports, and dynamic `import()`. */
-export function specifiers(source: string): string[] {
+function specifiers(source: string): string[] {
   const out: string[] = [];
   const re = /(?:\bfrom\s*|\bimport\s*\(\s*|^\s*import\s+)['"]([^'"]+)['"]/gm;
   for (let m = re.exec(source); m !== null; m = re.exec(source)) out.push(m[1] as string);
