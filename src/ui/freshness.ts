@@ -59,6 +59,7 @@ export class Freshness<Rep extends { readonly request: SolveRequest }> {
   }
 }
 
+/** How a FreshJob asks its job's client, and when. */
 export interface FreshJobOptions {
   /**
    * Sends the wanted request to the job's client (JobClient.request, which does not send twice a
