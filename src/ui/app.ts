@@ -10,7 +10,7 @@ import type { ProcedureKey } from '../core/procedures';
 import type { PassPattern } from '../core/validate';
 import type { CameraPreset, ToolScene } from '../render/scene';
 import type { RestartInfo } from '../worker/client';
-import { type SolveMode, type SolveReply, type SolveRequest, sameRequest } from '../worker/protocol';
+import type { SolveMode, SolveReply, SolveRequest } from '../worker/protocol';
 import { solveClient } from '../worker/workers';
 import { applyProcedureColours } from './colours';
 import { wireCopyButtons } from './copy';
@@ -18,7 +18,7 @@ import { embedCode, wireCopyEmbed } from './embedCode';
 import { postHeightToParent } from './embedResize';
 import { FieldsPanel } from './fields';
 import { formatLenUnit, formatSignedLenUnit } from './format';
-import { Freshness } from './freshness';
+import { FreshJob } from './freshness';
 import { Highlighter } from './highlight';
 import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
@@ -77,19 +77,19 @@ export class CalculatorApp {
   private readonly teaching: TeachingLoader | null;
   private readonly roughness: RoughnessPanel;
   private readonly simulation: SimulationLoader;
-  private readonly fresh = new Freshness<SolveReply>();
   private readonly client = solveClient({
     onReply: (reply) => {
+      this.notice.clear('results');
       if (this.fresh.receive(reply)) this.draw();
     },
     onRestart: (info) => this.restarted('results', info),
   });
+  /** The results: asked of the solver whenever no reply answers the inputs on screen. */
+  private readonly fresh = new FreshJob<SolveReply>({ ask: (request) => this.client.request(request) });
   /** Holds a half-typed text back until a pause or a commit (typing.ts). */
   private readonly typing = new TypingGate(() => this.change(this.state));
   /** The field messages of the last committed state (kept while typing, so none flashes). */
   private messages: ReadonlyMap<FieldKey, string> = new Map();
-  /** The last request sent to the solver (not sent again while it is the same). */
-  private asked: SolveRequest | null = null;
   /** The reply and unit the scene shows. */
   private sceneDrawn: { reply: SolveReply; unit: Unit } | null = null;
 
@@ -115,7 +115,10 @@ export class CalculatorApp {
     this.notice = new Notice(must(root, '[data-testid="notice"]'));
     this.results = new ResultsPanel(root);
     this.roughness = new RoughnessPanel(root);
-    this.simulation = new SimulationLoader((info) => this.restarted('simulation', info));
+    this.simulation = new SimulationLoader(
+      (info) => this.restarted('simulation', info),
+      () => this.notice.clear('simulation'),
+    );
     this.lookup = new LookupDownload(
       must(root, '[data-testid="download-table"]'),
       must(root, '[data-testid="download-table-status"]'),
@@ -161,6 +164,7 @@ export class CalculatorApp {
                 withValues({ ...this.state, mode: 'forward', pattern: 'one-way', surface: 'plane' }, { ...c, tilt: 0 }),
               ),
             onRestart: (info) => this.restarted('views', info),
+            onAnswer: () => this.notice.clear('views'),
             surface: this.simulation,
           });
     const highlighter = new Highlighter(root, (key: ProcedureKey | null) => this.teaching?.highlight(key));
@@ -222,12 +226,8 @@ export class CalculatorApp {
     this.state = state;
     const built = buildRequest(state);
     const request = built.ok ? built.request : null;
+    // Asked (unless answered already) before any drawing, so the worker solves while the page draws.
     this.fresh.want(request);
-    // The request goes out before any drawing, so the worker solves while the page draws.
-    if (request !== null && !sameRequest(request, this.asked) && this.fresh.shown.kind !== 'current') {
-      this.asked = request;
-      this.client.request(request);
-    }
     this.messages = built.ok ? new Map<FieldKey, string>() : fieldMessages(state, built.errors);
     this.fields.render(state, this.messages);
     this.teaching?.want(request, state.unit);
@@ -273,14 +273,16 @@ export class CalculatorApp {
     this.observer.resultShown?.();
   }
 
-  private restarted(who: 'results' | 'views' | 'simulation', info: RestartInfo): void {
+  private restarted(who: 'results' | 'views' | 'simulation', info: RestartInfo<SolveRequest>): void {
     if (who === 'results') {
-      if (info.gaveUp) {
-        this.fresh.fail();
-        this.asked = null; // the next input asks again
-      }
+      if (info.gaveUp) this.fresh.gaveUp(info.request);
       this.draw();
     }
-    this.notice.show(restartMessage(who === 'results' ? who : 'views', info), info.gaveUp ? 0 : 5000);
+    // A give-up stays on screen until that worker answers again (notice.clear above).
+    this.notice.show(
+      restartMessage(who === 'results' ? who : 'views', info),
+      info.gaveUp ? 0 : 5000,
+      info.gaveUp ? who : null,
+    );
   }
 }

@@ -8,7 +8,7 @@ import type { RestartInfo } from '../worker/client';
 import { type SolveRequest, sameRequest } from '../worker/protocol';
 import type { SimulateReply } from '../worker/simulate';
 import { SimulateClient } from '../worker/simulateClient';
-import { Freshness, type Shown } from './freshness';
+import { FreshJob, type Shown } from './freshness';
 import type { Unit } from './state';
 
 /** What draws the simulation (the view, loaded with the other views' code). */
@@ -18,36 +18,34 @@ export interface SurfaceDisplay {
 }
 
 export class SimulationLoader {
-  private readonly fresh = new Freshness<SimulateReply>();
   private readonly client: SimulateClient;
-  private asked: SolveRequest | null = null;
-  private open = false;
+  /** Asks only while the view is open (setOpen). */
+  private readonly job: FreshJob<SimulateReply>;
   private unit: Unit = 'mm';
   private progress: number | null = null;
   private display: SurfaceDisplay | null = null;
 
-  constructor(onRestart: (info: RestartInfo) => void) {
+  /**
+   * `onRestart`: the simulation's worker was restarted or gave up; `onAnswer`: it answered (it
+   * works again after a give-up).
+   */
+  constructor(onRestart: (info: RestartInfo<SolveRequest>) => void, onAnswer: () => void = () => undefined) {
+    this.job = new FreshJob<SimulateReply>({ ask: (request) => this.client.request(request), open: false });
     this.client = new SimulateClient({
       onReply: (reply) => {
-        if (!reply.ok && reply.cancelled) {
-          // Stopped without a newer request (never expected): ask again when wanted.
-          if (sameRequest(reply.request, this.asked)) this.asked = null;
-          this.ask();
-          return;
-        }
-        if (this.fresh.receive(reply)) this.progress = null;
+        onAnswer();
+        // Stopped without a newer request (never expected): no answer, so it is asked again.
+        if (!reply.ok && reply.cancelled) this.job.sync();
+        else if (this.job.receive(reply)) this.progress = null;
         this.draw();
       },
       onRestart: (info) => {
-        if (info.gaveUp) {
-          this.fresh.fail();
-          this.asked = null;
-        }
+        if (info.gaveUp) this.job.gaveUp(info.request);
         onRestart(info);
         this.draw();
       },
       onProgress: (request, fraction) => {
-        if (!sameRequest(request, this.fresh.request) || this.fresh.shown.kind === 'current') return;
+        if (!sameRequest(request, this.job.request) || this.job.shown.kind === 'current') return;
         this.progress = fraction;
         this.draw();
       },
@@ -56,17 +54,15 @@ export class SimulationLoader {
 
   /** The inputs changed: the request they ask (null when invalid) and the unit to show. */
   want(request: SolveRequest | null, unit: Unit): void {
-    if (!sameRequest(request, this.fresh.request)) this.progress = null;
-    this.fresh.want(request);
+    if (!sameRequest(request, this.job.request)) this.progress = null;
     this.unit = unit;
-    this.ask();
+    this.job.want(request);
     this.draw();
   }
 
   /** The view opened or closed: the simulation runs only while it is open. */
   setOpen(open: boolean): void {
-    this.open = open;
-    this.ask();
+    this.job.setOpen(open);
   }
 
   attach(display: SurfaceDisplay): void {
@@ -78,15 +74,7 @@ export class SimulationLoader {
     return this.client.started;
   }
 
-  private ask(): void {
-    const request = this.fresh.request;
-    if (!this.open || request === null || this.fresh.shown.kind === 'current') return;
-    if (sameRequest(request, this.asked)) return;
-    this.asked = request;
-    this.client.request(request);
-  }
-
   private draw(): void {
-    this.display?.show(this.fresh.shown, this.unit, this.progress);
+    this.display?.show(this.job.shown, this.unit, this.progress);
   }
 }

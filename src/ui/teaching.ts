@@ -6,9 +6,9 @@
  */
 import type { ProcedureKey } from '../core/procedures';
 import type { RestartInfo } from '../worker/client';
-import { type SolveRequest, sameRequest, type TeachReply } from '../worker/protocol';
+import type { SolveRequest, TeachReply } from '../worker/protocol';
 import { teachClient } from '../worker/workers';
-import { Freshness } from './freshness';
+import { FreshJob } from './freshness';
 import type { Unit } from './state';
 import type { TeachingPanel, ViewId } from './views/panel';
 import type { TraceDisplay } from './views/stepperView';
@@ -22,26 +22,32 @@ export interface TeachingOptions {
   readonly display: TraceDisplay;
   readonly initialView: ViewId;
   readonly onLoadCondition: (c: { R: number; Rcr: number; rho: number; h: number }) => void;
-  readonly onRestart: (info: RestartInfo) => void;
+  readonly onRestart: (info: RestartInfo<SolveRequest>) => void;
+  /** The views' worker answered (it works again after a give-up). */
+  readonly onAnswer?: () => void;
   /** The Machined surface view's simulation. */
   readonly surface: SurfaceSource;
 }
 
 export class TeachingLoader {
-  private readonly fresh = new Freshness<TeachReply>();
   private readonly client = teachClient({
     onReply: (reply) => {
+      this.options.onAnswer?.();
       if (this.fresh.receive(reply)) this.schedule();
     },
     onRestart: (info) => {
-      if (info.gaveUp) this.fresh.fail();
+      if (info.gaveUp) this.fresh.gaveUp(info.request);
       this.options.onRestart(info);
       this.schedule();
     },
   });
+  /** Asked a moment after the inputs settle (a slider being dragged asks once it rests). */
+  private readonly fresh = new FreshJob<TeachReply>({
+    ask: (request) => this.client.request(request),
+    settleMs: SETTLE_MS,
+  });
   private panel: TeachingPanel | null = null;
   private loading = false;
-  private timer: ReturnType<typeof setTimeout> | null = null;
   private drawTimer: ReturnType<typeof setTimeout> | null = null;
   private unit: Unit = 'mm';
   /** The inputs are being typed (held back, typing.ts): said instead of "invalid". */
@@ -54,20 +60,9 @@ export class TeachingLoader {
 
   /** The inputs changed: the request they ask (null when invalid), and the unit to show. */
   want(request: SolveRequest | null, unit: Unit, typing = false): void {
-    const before = this.fresh.request;
     this.unit = unit;
     this.typing = typing;
     this.fresh.want(request);
-    if (!sameRequest(request, before)) {
-      if (this.timer !== null) clearTimeout(this.timer);
-      this.timer = null;
-    }
-    if (request !== null && !sameRequest(request, before) && this.fresh.shown.kind !== 'current') {
-      this.timer = setTimeout(() => {
-        this.timer = null;
-        this.client.request(request);
-      }, SETTLE_MS);
-    }
     this.schedule();
   }
 

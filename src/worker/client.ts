@@ -1,8 +1,14 @@
 /**
- * Page-side client of one job of a solver worker (solve, teach; later simulate): the latest request
+ * Page-side client of one job of a solver worker (solve, teach, simulate, table): the latest request
  * wins, a reply to an older request is dropped, and a worker that throws, dies or stops answering
  * is restarted and the last request sent again, the same job with the same input. After
  * MAX_CONSECUTIVE_RESTARTS in a row it gives up (and says so) until the next request.
+ *
+ * A request equal to the latest one whose reply is still to come is not sent twice; that is the
+ * only de-duplication on the way to the worker. Once the latest reply is delivered (or given up
+ * on), the same request is sent again when asked: the page may have dropped that reply because
+ * other inputs were on screen when it came (freshness.ts), so a memory of "already asked" kept
+ * past the reply could leave the page waiting for good (issue 17).
  *
  * Replies carry their request, so the page checks them again against the inputs on screen; this
  * client only keeps the worker from doing work nobody waits for.
@@ -16,11 +22,13 @@ export interface WorkerLike extends Endpoint {
   terminate(): void;
 }
 
-export interface RestartInfo {
+export interface RestartInfo<Req = unknown> {
   /** Why the worker was restarted. */
   readonly reason: string;
   /** True when it failed MAX_CONSECUTIVE_RESTARTS times in a row and the request was not sent again. */
   readonly gaveUp: boolean;
+  /** The latest request: sent again, or given up on (null before the first request). */
+  readonly request: Req | null;
 }
 
 export interface JobClientOptions<Req, Rep> {
@@ -28,10 +36,12 @@ export interface JobClientOptions<Req, Rep> {
   readonly createWorker: () => WorkerLike;
   /** Calls the job on the worker. */
   readonly call: (api: Remote<WorkerApi>, request: Req) => Promise<Rep>;
+  /** True when two requests ask the same question (protocol.ts sameRequest, sameTableRequest). */
+  readonly same: (a: Req, b: Req) => boolean;
   /** Called with each reply to the latest request. */
   readonly onReply: (reply: Rep, request: Req) => void;
   /** Called when the worker had to be restarted. */
-  readonly onRestart: (info: RestartInfo) => void;
+  readonly onRestart: (info: RestartInfo<Req>) => void;
   /** No answer within this time means the worker is dead or stuck (ms). */
   readonly watchdogMs?: number;
 }
@@ -47,6 +57,8 @@ export class JobClient<Req, Rep> {
   private inFlight: { readonly request: Req } | null = null;
   private queued: { readonly request: Req } | null = null;
   private latest: { readonly request: Req } | null = null;
+  /** The latest request's reply is still to come (neither delivered nor given up on). */
+  private awaiting = false;
   private watchdog: ReturnType<typeof setTimeout> | null = null;
   private consecutiveRestarts = 0;
   /** Number of workers started so far (1 after the first request). */
@@ -54,10 +66,15 @@ export class JobClient<Req, Rep> {
 
   constructor(private readonly options: JobClientOptions<Req, Rep>) {}
 
-  /** Asks for an answer; only the latest request's reply is delivered. */
+  /**
+   * Asks for an answer; only the latest request's reply is delivered. A request equal to the
+   * latest one, while its reply is still to come, changes nothing (it is not sent twice).
+   */
   request(request: Req): void {
+    if (this.awaits(request)) return;
     const entry = { request };
     this.latest = entry;
+    this.awaiting = true;
     if (this.inFlight !== null) {
       // One in flight: keep only the newest waiting request.
       this.queued = entry;
@@ -66,7 +83,13 @@ export class JobClient<Req, Rep> {
     this.send(entry);
   }
 
+  /** True when `request` equals the latest request and its reply is still to come. */
+  awaits(request: Req): boolean {
+    return this.awaiting && this.latest !== null && this.options.same(this.latest.request, request);
+  }
+
   dispose(): void {
+    this.awaiting = false;
     this.stopWatchdog();
     this.worker?.terminate();
     this.worker = null;
@@ -111,7 +134,9 @@ export class JobClient<Req, Rep> {
       this.send(next);
       return;
     }
-    if (entry === this.latest) this.options.onReply(reply, entry.request);
+    if (entry !== this.latest) return;
+    this.awaiting = false;
+    this.options.onReply(reply, entry.request);
   }
 
   private restart(reason: string): void {
@@ -123,10 +148,18 @@ export class JobClient<Req, Rep> {
     this.queued = null;
     this.consecutiveRestarts++;
     const gaveUp = this.consecutiveRestarts > MAX_CONSECUTIVE_RESTARTS;
-    this.options.onRestart({ reason, gaveUp });
-    // The same job with the same input: the latest request, whatever was in flight.
-    if (!gaveUp && this.latest !== null) this.send(this.latest);
-    else this.consecutiveRestarts = 0; // the next request starts afresh
+    const latest = this.latest;
+    if (gaveUp || latest === null) {
+      // Nothing is awaited any more; the next request (even the same one) starts afresh.
+      this.awaiting = false;
+      this.consecutiveRestarts = 0;
+    } else {
+      // The same job with the same input: the latest request, whatever was in flight.
+      this.awaiting = true;
+      this.send(latest);
+    }
+    // Told last, when the client is consistent again: the page may ask at once.
+    this.options.onRestart({ reason, gaveUp, request: latest?.request ?? null });
   }
 
   private startWatchdog(): void {

@@ -5,7 +5,15 @@
  */
 import solverWorkerUrl from 'virtual:solver-worker-url';
 import { JobClient, type RestartInfo } from './client';
-import type { SolveReply, SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
+import {
+  type SolveReply,
+  type SolveRequest,
+  sameRequest,
+  sameTableRequest,
+  type TableReply,
+  type TableRequest,
+  type TeachReply,
+} from './protocol';
 
 /** The worker for `solve`: results and the 3D scene. */
 export function createSolverWorker(): Worker {
@@ -17,19 +25,29 @@ export function createViewsWorker(): Worker {
   return startSolverWorker('path-interval-views');
 }
 
-export interface JobEvents<Rep> {
+export interface JobEvents<Req, Rep> {
   readonly onReply: (reply: Rep) => void;
-  readonly onRestart: (info: RestartInfo) => void;
+  readonly onRestart: (info: RestartInfo<Req>) => void;
 }
 
 /** The `solve` job on its own worker. */
-export function solveClient(events: JobEvents<SolveReply>): JobClient<SolveRequest, SolveReply> {
-  return new JobClient({ createWorker: createSolverWorker, call: (api, r) => api.solve(r), ...events });
+export function solveClient(events: JobEvents<SolveRequest, SolveReply>): JobClient<SolveRequest, SolveReply> {
+  return new JobClient({
+    createWorker: createSolverWorker,
+    call: (api, r) => api.solve(r),
+    same: sameRequest,
+    ...events,
+  });
 }
 
 /** The `teach` job on its own worker. */
-export function teachClient(events: JobEvents<TeachReply>): JobClient<SolveRequest, TeachReply> {
-  return new JobClient({ createWorker: createViewsWorker, call: (api, r) => api.teach(r), ...events });
+export function teachClient(events: JobEvents<SolveRequest, TeachReply>): JobClient<SolveRequest, TeachReply> {
+  return new JobClient({
+    createWorker: createViewsWorker,
+    call: (api, r) => api.teach(r),
+    same: sameRequest,
+    ...events,
+  });
 }
 
 /** The worker for `table`, started on the first download: the lookup table never delays the results. */
@@ -38,8 +56,13 @@ export function createTableWorker(): Worker {
 }
 
 /** The `table` job on its own worker. */
-export function tableClient(events: JobEvents<TableReply>): JobClient<TableRequest, TableReply> {
-  return new JobClient({ createWorker: createTableWorker, call: (api, r) => api.table(r), ...events });
+export function tableClient(events: JobEvents<TableRequest, TableReply>): JobClient<TableRequest, TableReply> {
+  return new JobClient({
+    createWorker: createTableWorker,
+    call: (api, r) => api.table(r),
+    same: sameTableRequest,
+    ...events,
+  });
 }
 
 /** A solver worker (the module worker built from solver.worker.ts), named for the browser's tools. */

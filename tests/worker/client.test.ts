@@ -110,6 +110,7 @@ function client(job: 'solve' | 'teach', watchdogMs = 2000) {
   const c = new JobClient<Req, Rep>({
     createWorker: workers.create,
     call: (api, r) => (api as unknown as Record<string, (r: Req) => Promise<Rep>>)[job]?.(r) as Promise<Rep>,
+    same: (a, b) => a.n === b.n,
     onReply: (reply) => replies.push(reply),
     onRestart: (info) => restarts.push(info),
     watchdogMs,
@@ -135,6 +136,26 @@ describe('worker client with a stand-in worker', () => {
     expect(replies).toEqual([{ answers: 3, job: 'solve' }]);
   });
 
+  it('de-duplicates only against the reply still to come: the same request again after its reply is sent again (issue 17)', async () => {
+    const { c, replies } = client('solve');
+    c.request({ n: 1 });
+    c.request({ n: 1 }); // awaited: nothing new to send
+    await workers.settle();
+    expect(workers.calls.map((x) => x.request.n)).toEqual([1]);
+    expect(c.awaits({ n: 1 })).toBe(true);
+    workers.calls[0]?.answer();
+    await workers.settle();
+    expect(replies.map((r) => r.answers)).toEqual([1]);
+    expect(c.awaits({ n: 1 })).toBe(false);
+    // The page may have dropped that reply (other inputs were on screen): asking again sends again.
+    c.request({ n: 1 });
+    await workers.settle();
+    expect(workers.calls.map((x) => x.request.n)).toEqual([1, 1]);
+    workers.calls[1]?.answer();
+    await workers.settle();
+    expect(replies.map((r) => r.answers)).toEqual([1, 1]);
+  });
+
   it('stale replies dropped: a reply to an earlier request is never delivered once a newer one was made', async () => {
     const { c, replies } = client('solve');
     c.request({ n: 1 });
@@ -155,7 +176,7 @@ describe('worker client with a stand-in worker', () => {
     c.request({ n: 2 }); // waiting behind 1 when the worker dies
     workers.started[0]?.die();
     await workers.settle();
-    expect(restarts).toEqual([{ reason: 'the solver failed (worker crashed)', gaveUp: false }]);
+    expect(restarts).toEqual([{ reason: 'the solver failed (worker crashed)', gaveUp: false, request: { n: 2 } }]);
     expect(workers.started).toHaveLength(2);
     const repeated = workers.calls.filter((x) => x.worker === 1);
     expect(repeated.map((x) => [x.job, x.request.n])).toEqual([['teach', 2]]);
@@ -195,13 +216,14 @@ describe('worker client with a stand-in worker', () => {
     // Nothing more is tried on its own...
     await workers.settle();
     expect(workers.started).toHaveLength(MAX_CONSECUTIVE_RESTARTS + 1);
-    // ...until the next request, which starts a new worker.
+    expect(restarts.at(-1)?.request).toEqual({ n: 1 });
+    // ...until the next request, even the same one, which starts a new worker.
     workers.behaviour = 'wait';
-    c.request({ n: 2 });
+    c.request({ n: 1 });
     await workers.settle();
     expect(workers.started).toHaveLength(MAX_CONSECUTIVE_RESTARTS + 2);
     workers.calls[workers.calls.length - 1]?.answer();
     await workers.settle();
-    expect(replies.map((r) => r.answers)).toEqual([2]);
+    expect(replies.map((r) => r.answers)).toEqual([1]);
   });
 });
