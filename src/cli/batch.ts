@@ -2,14 +2,16 @@
  * `--batch`: CSV cases on stdin to a CSV table on stdout, streamed record by record.
  *
  * Input: a header naming R, Rcr, rho and either h (scallop height) or Ra (target roughness),
- * optionally tilt, pattern, surfaceRadius and surfaceAxis, in any order (no other column); one
- * case per record. Blank lines are not records: they are skipped. An empty field of an optional
- * column takes its default (tilt 0, one-way, a plane, axis along the feed). Output: one row per
- * record, in order: the input columns echoed (R,Rcr,rho,h or Ra, then the optional ones given, in
- * the order above), with Ra the scallop height `h` that leaves it, the results
- * ({@link RESULT_COLUMNS}) and `error` last. Numbers are written in full precision (the
- * shortest text that reads back to the same double); a value that does not exist is an empty
- * field. A bad record gets its message in `error` and the run goes on.
+ * optionally tilt, pattern, surfaceRadius and surfaceAxis, in any order; the result columns
+ * ({@link RESULT_COLUMNS}) may be there too and are ignored, so a batch's own output, or the
+ * page's lookup table, reads back as it is (no other column); one case per record. Blank lines
+ * are not records: they are skipped. An empty field of an optional column takes its default
+ * (tilt 0, one-way, a plane, axis along the feed). Output: one row per record, in order: the
+ * input columns echoed (R,Rcr,rho,h or Ra, then the optional ones given, in the order above),
+ * with Ra the scallop height `h` that leaves it, the results ({@link RESULT_COLUMNS}) and `error`
+ * last. Numbers are written in full precision (the shortest text that reads back to the same
+ * double); a value that does not exist is an empty field. A bad record gets its message in
+ * `error` (on one line, control characters escaped) and the run goes on.
  */
 
 import type { Readable } from 'node:stream';
@@ -17,7 +19,7 @@ import { StringDecoder } from 'node:string_decoder';
 import { csvNumber, RESULT_COLUMNS, resultFields } from '../core/csvWrite';
 import { forwardInput, scallopHeightForRaMm, validateForward, validateTargetRa } from '../core/index';
 import { CsvReader, type CsvRecord, csvText } from './csv';
-import { describeSystemError, FLUSH_CHARS, type Output } from './output';
+import { describeSystemError, errorLine, escapeControls, FLUSH_CHARS, type Output } from './output';
 
 /** The result columns and their writers live in the shared CSV writer (core/csvWrite.ts). */
 export { csvNumber, RESULT_COLUMNS, resultFields };
@@ -47,7 +49,10 @@ export interface Layout {
 
 /** What the header must be, as the messages say it. */
 export const HEADER_RULE =
-  'the CSV header must be R,Rcr,rho,h (or Ra in place of h) in any order, optionally with tilt, pattern, surfaceRadius and surfaceAxis';
+  'the CSV header must be R,Rcr,rho,h (or Ra in place of h) in any order, optionally with tilt, pattern, surfaceRadius and surfaceAxis (and the output columns, which are ignored)';
+
+/** Result columns a header may hold (an output read back): ignored, computed again. */
+const IGNORED_COLUMNS: readonly string[] = RESULT_COLUMNS;
 
 /** Reads the header record: the layout, or the reason it is not one. */
 export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | { ok: false; error: string } {
@@ -55,10 +60,16 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
   if (record.error !== null) return { ok: false, error: `${rule}; line ${record.line}: ${record.error}` };
   const names = record.fields.map((f) => f.trim());
   const index: Partial<Record<InputColumn, number>> = {};
+  const ignored = new Set<string>();
   const problems: string[] = [];
   names.forEach((name, i) => {
+    if (IGNORED_COLUMNS.includes(name)) {
+      if (ignored.has(name)) problems.push(`column ${name} appears twice`);
+      ignored.add(name);
+      return;
+    }
     if (!(INPUT_COLUMNS as readonly string[]).includes(name)) {
-      problems.push(`unknown column ${JSON.stringify(name)}`);
+      problems.push(`unknown column "${name}"`);
       return;
     }
     const column = name as InputColumn;
@@ -98,8 +109,9 @@ function trimSpaces(text: string): string {
   return text.replace(/^[ \t]+|[ \t]+$/g, '');
 }
 
+/** A row with no results: its message in `error`, on one line (control characters escaped, as on stderr). */
 function errorRow(echo: string, layout: Layout, message: string): string {
-  return `${echo}${emptyResults(layout)},${csvText(message)}\n`;
+  return `${echo}${emptyResults(layout)},${csvText(escapeControls(message))}\n`;
 }
 
 /** A field of an optional column: undefined (the default) when the column is absent or the field empty. */
@@ -193,16 +205,18 @@ export async function runBatch(io: BatchIo, out: Output): Promise<number> {
     if (headerError === null && out.error === null) take([...reader.push(decoder.end()), ...reader.end()]);
   } catch (e) {
     await out.flush();
-    io.stderr.write(`error: cannot read standard input: ${describeSystemError(e)}\n`);
+    io.stderr.write(errorLine(`cannot read standard input: ${describeSystemError(e)}`));
     return 1;
   }
   if (headerError !== null) {
-    io.stderr.write(`error: ${headerError}\n`);
+    io.stderr.write(errorLine(headerError));
     return 2;
   }
   if (layout === null) {
     io.stderr.write(
-      'error: no CSV on stdin: expected a header line R,Rcr,rho,h (or Ra; optionally tilt, pattern, surfaceRadius, surfaceAxis)\n',
+      errorLine(
+        'no CSV on stdin: expected a header line R,Rcr,rho,h (or Ra; optionally tilt, pattern, surfaceRadius, surfaceAxis)',
+      ),
     );
     return 2;
   }

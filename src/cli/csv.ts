@@ -22,7 +22,10 @@ export interface CsvRecord {
   readonly blank: boolean;
 }
 
-/** Default limit on the characters of one record: 1 MiB. */
+/**
+ * Default limit on the characters of one record: 1 MiB (1,048,576 characters, the line break that
+ * ends it not counted; a line break inside a quoted field is).
+ */
 export const MAX_RECORD_CHARS = 1 << 20;
 
 enum State {
@@ -90,7 +93,10 @@ export class CsvReader {
         this.started = true;
         this.recordLine = this.line;
       }
-      this.recordChars++;
+      // The line break that ends a record is not one of its characters (one inside quotes is):
+      // a record of exactly the limit is read whether a line break or the end of input follows.
+      const endsRecord = (c === 10 || c === 13) && this.state !== State.Quoted;
+      if (!endsRecord) this.recordChars++;
       if (this.recordChars > this.maxRecordChars && !this.oversized) {
         this.oversized = true;
         this.fields = [];
@@ -150,8 +156,8 @@ export class CsvReader {
             break;
           }
           this.state = State.AfterQuoted;
-          i--; // read this character again after the closing quote
-          this.recordChars--;
+          i--; // read this character again after the closing quote (and count it once)
+          if (!endsRecord) this.recordChars--;
           runStart = i + 1;
           break;
         case State.AfterQuoted:

@@ -25,7 +25,7 @@ import {
 import { parseArgs, type Request, type ValueOption } from './args';
 import { runBatch } from './batch';
 import { isNumberText } from './csv';
-import { describeSystemError, isClosedPipe, Output } from './output';
+import { describeSystemError, errorLine, escapeControls, isClosedPipe, Output } from './output';
 import { type Extras, forwardJson, forwardTable, inverseJson, inverseTable, type SimulationRun } from './report';
 
 export interface Io {
@@ -64,7 +64,8 @@ radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
                         a plane only) and show its cusp height and roughness beside the exact ones
   --json                print one JSON object instead of a table
   --batch               read CSV on stdin (header R,Rcr,rho and h or Ra; optional tilt, pattern,
-                        surfaceRadius, surfaceAxis; any order; an empty field takes the default),
+                        surfaceRadius, surfaceAxis; any order; an empty field takes the default;
+                        output columns are ignored, so an output or a lookup table reads back),
                         write CSV: the input columns, h (with Ra), then
                         exact,sekine,redonnet,bedi (L/2 of each), interval,halfWidthRight,
                         halfWidthLeft,contactOffset,otherCuspHeight (exact), osculating,
@@ -101,11 +102,39 @@ function reportErrors(
     const options: DescribeOptions = asHalf ? { intervalAsHalf: true, typed: half.typed.trim() } : {};
     const message = describeInputError(e, 'mm', options);
     const option = optionOf(e.field, asHalf);
-    io.stderr.write(`error: ${option}: ${message}\n`);
-    return { ...e, option, message };
+    io.stderr.write(errorLine(`${option}: ${message}`));
+    return errorJson(e, option, escapeControls(message));
   });
   if (json) out.write(`${JSON.stringify({ errors: worded })}\n`);
   return 2;
+}
+
+/** An input error as JSON prints it: what does not exist (no limit, no side) is left out, never `null`. */
+export interface ErrorJson {
+  readonly field: AnyFieldName;
+  readonly option: string;
+  readonly code: AnyInputError['code'];
+  /** The value as given (JSON escapes its control characters). */
+  readonly got: string;
+  /** The bound it broke: mm for lengths, degrees for angles. */
+  readonly limit?: number;
+  /** For a flank or the shank: the side that sets the limit. */
+  readonly side?: 'right' | 'left';
+  /** The words of the stderr line, control characters escaped. */
+  readonly message: string;
+}
+
+/** The JSON of an input error (see {@link ErrorJson}). */
+export function errorJson(e: AnyInputError, option: string, message: string): ErrorJson {
+  return {
+    field: e.field,
+    option,
+    code: e.code,
+    got: e.got,
+    ...(e.limit === null ? {} : { limit: e.limit }),
+    ...(e.side === null ? {} : { side: e.side }),
+    message,
+  };
 }
 
 type Values = Readonly<Partial<Record<ValueOption, string>>>;
@@ -200,7 +229,7 @@ async function run(request: Request, io: Io, out: Output): Promise<number> {
       out.write(`${USAGE}\n`);
       return 0;
     case 'usage':
-      io.stderr.write(`error: ${request.error} (see path-interval --help)\n`);
+      io.stderr.write(errorLine(`${request.error} (see path-interval --help)`));
       return 2;
     case 'batch':
       return runBatch(io, out);
@@ -224,6 +253,6 @@ export async function main(args: readonly string[], io: Io): Promise<number> {
   await out.flush();
   const e = out.error;
   if (e === null || isClosedPipe(e)) return code;
-  io.stderr.write(`error: cannot write to standard output: ${describeSystemError(e)}\n`);
+  io.stderr.write(errorLine(`cannot write to standard output: ${describeSystemError(e)}`));
   return 1;
 }

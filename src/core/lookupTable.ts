@@ -1,10 +1,12 @@
 /**
  * A lookup table for the shop floor: the exact step-over of one tool, pass pattern and surface over
  * a grid of scallop heights x lead angles x tilts, as CSV in the command line's batch format
- * (csvWrite.ts): the input columns R, Rcr, rho, h, tilt, pattern, then the batch's result columns
- * (`exact` is L/2, `interval` is L) and `error`. A cell outside the valid domain (a scallop height
- * at or above the posture's limit, a posture that cuts a wall) keeps its input columns, leaves the
- * results empty and gives the reason in `error`, as the batch does. Pure; mm and degrees.
+ * (csvWrite.ts): the input columns R, Rcr, rho, h, tilt, pattern, surfaceRadius, surfaceAxis (both
+ * empty on a plane), then the batch's result columns (`exact` is L/2, `interval` is L) and `error`.
+ * Fed back to the command line's `--batch`, the file is answered on the same surface, row for row.
+ * A cell outside the valid domain (a scallop height at or above the posture's limit, a posture
+ * that cuts a wall or gouges a concave cylinder) keeps its input columns, leaves the results empty
+ * and gives the reason in `error`, as the batch does. Pure; mm and degrees.
  */
 
 import { csvNumber, csvText, RESULT_COLUMNS, resultFields } from './csvWrite';
@@ -71,8 +73,21 @@ export function lookupGrid(tool: Pick<LookupTool, 'toolRadiusMm' | 'cornerRadius
   };
 }
 
-/** The CSV header of a table (the batch's output header for these input columns). */
-export const LOOKUP_HEADER = ['R', 'Rcr', 'rho', 'h', 'tilt', 'pattern', ...RESULT_COLUMNS].join(',');
+/**
+ * The CSV header of a table: the batch's output header for these input columns (the batch echoes
+ * its input columns in this order), so the batch reads the file back as it is.
+ */
+export const LOOKUP_HEADER = [
+  'R',
+  'Rcr',
+  'rho',
+  'h',
+  'tilt',
+  'pattern',
+  'surfaceRadius',
+  'surfaceAxis',
+  ...RESULT_COLUMNS,
+].join(',');
 
 /** A table: its CSV text (header, then one row per cell, tilt slowest, h fastest) and counts. */
 export interface LookupTable {
@@ -92,10 +107,12 @@ export function lookupTable(tool: LookupTool, grid: LookupGrid): LookupTable {
   let empty = 0;
   const surfaceRadius = tool.surface.kind === 'cylinder' ? tool.surface.radiusMm : undefined;
   const surfaceAxis = tool.surface.kind === 'cylinder' ? tool.surface.axis : undefined;
+  // The pattern and the surface, as the batch reads them (a plane: both surface fields empty).
+  const pass = `${tool.pattern},${surfaceRadius === undefined ? '' : csvNumber(surfaceRadius)},${surfaceAxis ?? ''}`;
   for (const tilt of grid.tiltAnglesDeg)
     for (const rho of grid.leadAnglesDeg)
       for (const h of grid.scallopHeightsMm) {
-        const echo = [tool.toolRadiusMm, tool.cornerRadiusMm, rho, h, tilt].map(csvNumber).join(',');
+        const echo = `${[tool.toolRadiusMm, tool.cornerRadiusMm, rho, h, tilt].map(csvNumber).join(',')},${pass}`;
         const v = validateForward({
           R: tool.toolRadiusMm,
           Rcr: tool.cornerRadiusMm,
@@ -106,11 +123,11 @@ export function lookupTable(tool: LookupTool, grid: LookupGrid): LookupTable {
           surfaceRadius,
           surfaceAxis,
         });
-        if (v.ok) lines.push(`${echo},${tool.pattern},${resultFields(v.value)},`);
+        if (v.ok) lines.push(`${echo},${resultFields(v.value)},`);
         else {
           empty++;
           const reason = v.errors.map((e) => e.message).join(' ');
-          lines.push(`${echo},${tool.pattern}${','.repeat(RESULT_COLUMNS.length - 1)},${csvText(reason)}`);
+          lines.push(`${echo}${','.repeat(RESULT_COLUMNS.length - 1)},${csvText(reason)}`);
         }
       }
   return { csv: `${lines.join('\n')}\n`, rows: lines.length - 1, emptyCells: empty };

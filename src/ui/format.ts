@@ -4,7 +4,7 @@
  * convergence two finer) and never fewer than four significant digits, so a micro tool reads
  * 4.472e-5 rather than 0.0000. Never NaN, never -0: a missing value is a dash.
  */
-import { formatSignificant, fromMm, type LengthUnit, NO_VALUE, readableLengthUnit } from '../core/units';
+import { formatPercent, formatSignificant, fromMm, type LengthUnit, NO_VALUE, readableLengthUnit } from '../core/units';
 
 export type Resolution = 'length' | 'height' | 'fine';
 
@@ -56,6 +56,15 @@ export function formatLenUnit(
 /** A signed length with its unit symbol (formatLenUnit with `+` before positive values). */
 export function formatSignedLenUnit(mm: number | null, unit: LengthUnit, resolution: Resolution = 'length'): string {
   return formatLenUnit(mm, unit, resolution, true);
+}
+
+/**
+ * A signed percentage (a deviation against exact) with two decimals: `+` before positive values,
+ * `-` before negative ones, and a value that rounds to zero reads `0.00` (never `-0.00` or
+ * `+0.00`); a dash for null or a non-finite value. No `%` sign (the caption or title carries it).
+ */
+export function formatSignedPercent(percent: number | null): string {
+  return percent === null ? NO_VALUE : formatPercent(percent, 2);
 }
 
 /** An angle in degrees for captions: up to 6 significant digits, no trailing zeros. */

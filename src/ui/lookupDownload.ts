@@ -3,8 +3,8 @@
  * screen over a grid of scallop heights x lead angles x tilts (core/lookupTable.ts), computed by
  * the worker's `table` job on its own worker, saved as a CSV in the command line's batch format
  * (mm, full precision). The button is enabled only while the inputs on screen make a valid
- * question; the file answers the tool asked for at the click (its name says which), and a reply
- * is saved only if it echoes that request.
+ * question; the file answers the tool, pattern and surface asked for at the click (its name says
+ * which), and a reply is saved only if it echoes that request.
  */
 import { lookupGrid } from '../core/lookupTable';
 import { formatInputNumber } from '../core/units';
@@ -24,10 +24,16 @@ export function tableRequestOf(request: SolveRequest): TableRequest {
   return { tool, grid: lookupGrid(tool) };
 }
 
-/** The file name of a table: its tool and pattern, in mm. */
+/**
+ * The file name of a table: its tool, pattern and surface, in mm:
+ * `step-over-table_R3_Rcr1_one-way_plane.csv`, on a cylinder `..._one-way_Rs-30_cross.csv` (the
+ * signed radius, negative for a concave cylinder, and the axis, as the CSV's columns give them).
+ */
 export function tableFileName(request: TableRequest): string {
   const t = request.tool;
-  return `step-over-table_R${formatInputNumber(t.toolRadiusMm)}_Rcr${formatInputNumber(t.cornerRadiusMm)}_${t.pattern}.csv`;
+  const s = t.surface;
+  const surface = s.kind === 'cylinder' ? `Rs${formatInputNumber(s.radiusMm)}_${s.axis}` : 'plane';
+  return `step-over-table_R${formatInputNumber(t.toolRadiusMm)}_Rcr${formatInputNumber(t.cornerRadiusMm)}_${t.pattern}_${surface}.csv`;
 }
 
 /** What the status line says about a table saved. */

@@ -1,8 +1,10 @@
 /**
  * The worker's `table` job: the lookup table for the page's download (core/lookupTable.ts). The
- * worker trusts no caller: the tool is validated again and the grid must be finite numbers in the
- * domain's ranges, at most MAX_GRID_AXIS per axis; each cell is then validated and solved as the
- * command line's batch does. The reply echoes the request it answers.
+ * worker trusts no caller: the tool, pattern and surface are validated again (on their own: which
+ * postures a concave cylinder admits is a question for each cell) and the grid must be finite
+ * numbers in the domain's ranges, at most MAX_GRID_AXIS per axis; each cell is then validated and
+ * solved as the command line's batch does, a posture that gouges the cylinder being a row with
+ * its reason. The reply echoes the request it answers.
  */
 import { lookupTable } from '../core/lookupTable';
 import { validateForward } from '../core/validate';
@@ -35,13 +37,15 @@ export function table(request: TableRequest): TableReply {
     Rcr: t.cornerRadiusMm,
     rho: 0,
     tilt: 0,
-    // Any h the flat-lying tool accepts: only the tool is checked here.
+    // Any h the flat-lying tool accepts: only the tool, pattern and surface are checked here.
     h: 1e-6 * t.toolRadiusMm,
     pattern: t.pattern,
     surfaceRadius: t.surface.kind === 'cylinder' ? t.surface.radiusMm : undefined,
     surfaceAxis: t.surface.kind === 'cylinder' ? t.surface.axis : undefined,
   });
-  const toolErrors = tool.ok ? [] : tool.errors.filter((e) => e.field !== 'h');
+  // Gouging depends on the posture, and this one (lead 0, tilt 0) is only a placeholder: a flat
+  // bottom lying flat gouges every concave cylinder, while most of the grid's postures cut it.
+  const toolErrors = tool.ok ? [] : tool.errors.filter((e) => e.field !== 'h' && e.code !== 'gouging');
   if (toolErrors.length > 0) return { ok: false, request, reason: toolErrors.map((e) => e.message).join(' ') };
   const grid = badGrid(request);
   if (grid !== null) return { ok: false, request, reason: grid };

@@ -44,7 +44,16 @@ describe('batch header', () => {
     );
   });
 
+  it('the output columns may be read back: they are ignored and computed again (a batch output, a lookup table)', () => {
+    const output = outputHeader(layoutOf('R,Rcr,rho,h,surfaceRadius')).trimEnd();
+    expect(outputHeader(layoutOf(output)).trimEnd()).toBe(output);
+    const layout = layoutOf('exact,R,Rcr,error,rho,h,note');
+    expect(outputHeader(layout)).toBe(`R,Rcr,rho,h,${RESULT_COLUMNS.join(',')}\n`);
+    expect(row(layout, '99,3,1,stale,5,0.05,x')).toEqual(row(layoutOf('R,Rcr,rho,h'), '3,1,5,0.05'));
+  });
+
   it.each([
+    ['R,Rcr,rho,h,exact,exact', /column exact appears twice/],
     ['R,Rcr,rho', /missing h \(or Ra\)/],
     ['R,Rcr,rho,h,Ra', /give h or Ra, not both/],
     ['R,Rcr,Ra,surfaceradius', /missing rho; unknown column "surfaceradius"/],

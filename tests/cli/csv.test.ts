@@ -74,6 +74,24 @@ describe('CSV reader (RFC 4180)', () => {
     expect(records[3]).toEqual({ fields: ['3', '4'], line: 5, error: null, blank: false });
   });
 
+  it('a record of exactly the limit is read, whatever ends it (LF, CRLF, CR, the end of input); one more is refused', () => {
+    const exact = `${'1234567890,'.repeat(4)}123456789`; // 53 characters
+    const quoted = `"${'x'.repeat(51)}"`; // 53 characters, the quotes counted
+    const over = `${exact}0`;
+    const text = `${exact}\n${quoted}\r\n${exact}\r${over}\n"a\nb",${'y'.repeat(47)}\n${exact}`;
+    const records = parseCsv(text, 53);
+    expect(records.map((r) => [r.line, r.error === null ? r.fields.length : r.error])).toEqual([
+      [1, 5],
+      [2, 1],
+      [3, 5],
+      [4, 'the record is longer than 53 characters: not read'],
+      [5, 2], // a line break inside quotes is one of the record's characters: 5 + 1 + 47 = 53
+      [7, 5],
+    ]);
+    expect(parseCsv(`${over}`, 53)[0]?.error).toMatch(/longer than 53/);
+    expect(parseCsv(`"a\nb",${'y'.repeat(48)}\n`, 53)[0]?.error).toMatch(/longer than 53/);
+  });
+
   it('holds at most the limit in memory for one huge record (10 MB, limit 1 MiB default)', () => {
     const reader = new CsvReader();
     const chunk = 'y'.repeat(1 << 16);

@@ -338,6 +338,36 @@ describe('command line (as a process)', () => {
     expect(rows[8]?.[3]).toBe('0.05\n3,1,5,0.05');
   });
 
+  it('--batch: the 1 MiB limit counts the record, not the line break after it (issue 17)', async () => {
+    // Records of exactly 1,048,576 characters (spaces before h are trimmed) and one more.
+    const record = (chars: number) => `3,1,5,${' '.repeat(chars - '3,1,5,0.05'.length)}0.05`;
+    const quoted = (chars: number) => `3,1,5,"${' '.repeat(chars - '3,1,5,"0.05"'.length)}0.05"`;
+    const limit = 1 << 20;
+    expect(record(limit)).toHaveLength(1_048_576);
+    const [mixed, lastAtLimit, lastOver] = await Promise.all([
+      run(
+        ['--batch'],
+        `R,Rcr,rho,h\n${record(limit)}\n${record(limit)}\r\n${quoted(limit)}\r${record(limit + 1)}\n${quoted(limit + 1)}\n`,
+      ),
+      run(['--batch'], `R,Rcr,rho,h\n${record(limit)}`),
+      run(['--batch'], `R,Rcr,rho,h\n${record(limit + 1)}`),
+    ]);
+    const good = String(exactHalfIntervalMm(forwardInput(tool(3, 1, 5), 'one-way', 0.05)));
+    const rows = (r: { stdout: string }) => parseCsv(r.stdout).map((x) => x.fields);
+    const tooLong = (line: number) => `line ${line}: the record is longer than 1048576 characters: not read`;
+    expect(rows(mixed).map((f) => [f[3], f[4], f[16]])).toEqual([
+      ['h', 'exact', 'error'],
+      ['0.05', good, ''],
+      ['0.05', good, ''],
+      ['0.05', good, ''],
+      ['', '', tooLong(5)],
+      ['', '', tooLong(6)],
+    ]);
+    expect(rows(lastAtLimit)[1]?.[4]).toBe(good);
+    expect(rows(lastOver)[1]?.[16]).toBe(tooLong(2));
+    for (const r of [mixed, lastAtLimit, lastOver]) expect(r.code).toBe(0);
+  });
+
   it('--batch | head -1 ends quietly (exit 0); a closed pipe on a table too', async () => {
     const rows = ['R,Rcr,rho,h'];
     for (let i = 0; i < 100_000; i++) rows.push(`3,1,${i % 60},0.05`);

@@ -4,7 +4,7 @@ import { parseCsv } from '../../src/cli/csv';
 import { PLANE } from '../../src/core/cylinder';
 import { exactForward } from '../../src/core/exact';
 import { LOOKUP_HEADER, lookupGrid, lookupTable, series125 } from '../../src/core/lookupTable';
-import { forwardInput, scallopHeightLimits } from '../../src/core/validate';
+import { forwardInput, scallopHeightLimits, validateForward } from '../../src/core/validate';
 
 describe('lookup table', () => {
   it('the scallop heights follow the 1-2-5 series from about 1e-4 R up to the largest limit', () => {
@@ -48,6 +48,30 @@ describe('lookup table', () => {
       { toolRadiusMm: 3, cornerRadiusMm: 0, pattern: 'one-way', surface: PLANE },
       { scallopHeightsMm: [0.01], leadAnglesDeg: [0], tiltAnglesDeg: [0] },
     );
-    expect(t.csv.split('\n')[1]).toMatch(/^3,0,0,0\.01,0,one-way,3,,,,6,3,3,0,,,,exact: a flat end without lead/);
+    expect(t.csv.split('\n')[1]).toMatch(/^3,0,0,0\.01,0,one-way,,,3,,,,6,3,3,0,,,,exact: a flat end without lead/);
+  });
+
+  it('names its surface in every row: empty surface columns on a plane, the signed radius and the axis on a cylinder', () => {
+    expect(LOOKUP_HEADER).toMatch(/^R,Rcr,rho,h,tilt,pattern,surfaceRadius,surfaceAxis,exact,/);
+    const grid = { scallopHeightsMm: [0.05], leadAnglesDeg: [0, 5], tiltAnglesDeg: [0] };
+    const base = { toolRadiusMm: 3, cornerRadiusMm: 1, pattern: 'one-way' as const };
+    const plane = lookupTable({ ...base, surface: PLANE }, grid).csv.split('\n');
+    const concave = lookupTable({ ...base, surface: { kind: 'cylinder', radiusMm: -30, axis: 'cross' } }, grid);
+    const rows = concave.csv.split('\n');
+    expect(plane[2]).toMatch(/^3,1,5,0\.05,0,one-way,,,/);
+    expect(rows[2]).toMatch(/^3,1,5,0\.05,0,one-way,-30,cross,/);
+    // Lead 0 and tilt 0 gouge it (a flat bottom lying flat); lead 5 cuts it: a row with its reason, a row with L.
+    expect(rows[1]).toMatch(
+      /^3,1,0,0\.05,0,one-way,-30,cross,,,,,,,,,,,,,"?This tool gouges a concave cylinder of any radius/,
+    );
+    expect(concave.emptyCells).toBe(1);
+    const col = LOOKUP_HEADER.split(',').indexOf('interval');
+    const L = Number(rows[2]?.split(',')[col]);
+    const v = validateForward({ R: 3, Rcr: 1, rho: 5, h: 0.05, surfaceRadius: -30, surfaceAxis: 'cross' });
+    if (!v.ok) throw new Error('valid case');
+    expect(L).toBe(exactForward(v.value).intervalMm);
+    // The cylinder's answer, not the plane's (the issue's page shows L = 3.0381 mm).
+    expect(L.toFixed(4)).toBe('3.0381');
+    expect(L).not.toBe(Number(plane[2]?.split(',')[col]));
   });
 });

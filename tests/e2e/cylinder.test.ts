@@ -5,8 +5,10 @@
  * cylinder; inch mode. Expected values come from the solver core itself. Runs the production site
  * under the strict Content-Security-Policy and records every violation.
  */
+import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
+import { parseCsv } from '../../src/cli/csv';
 import {
   type CylinderSurface,
   compareForward,
@@ -17,6 +19,7 @@ import {
   minConcaveRadiusMm,
   type ToolInput,
 } from '../../src/core/index';
+import { LOOKUP_HEADER } from '../../src/core/lookupTable';
 import { formatInputNumber, fromMm } from '../../src/core/units';
 import { formatLen, formatLenUnit } from '../../src/ui/format';
 import { URL_SETTLE_MS } from '../../src/ui/urlState';
@@ -130,6 +133,35 @@ describe('curved surfaces on the page', () => {
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(e.intervalMm, 'mm'));
     expect(await text(page, 'error-surface-radius')).toBe('');
     expect(await violations()).toEqual([]);
+    await page.close();
+  });
+
+  it('the lookup table of a concave cylinder that a flat bottom lying flat gouges: saved, named by its surface, cells on the cylinder', async () => {
+    const { page, violations, errors } = await open(
+      '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&surfaceRadius=-30&surfaceAxis=cross',
+    );
+    await expect.poll(() => text(page, 'result-exact-interval')).toBe('3.0381 mm');
+    const button = page.getByTestId('download-table');
+    await expect.poll(() => button.isEnabled()).toBe(true);
+    const downloaded = page.waitForEvent('download');
+    await button.click();
+    // The status says what was saved (before the fix: "No table: This tool gouges ...").
+    await expect
+      .poll(() => text(page, 'download-table-status'), { timeout: 15_000 })
+      .toMatch(/^Saved step-over-table_R3_Rcr1_one-way_Rs-30_cross\.csv: 780 rows/);
+    const download = await downloaded;
+    expect(download.suggestedFilename()).toBe('step-over-table_R3_Rcr1_one-way_Rs-30_cross.csv');
+    const [head, ...rows] = parseCsv(readFileSync(await download.path(), 'utf8')).filter((r) => !r.blank);
+    expect(head?.fields.join(',')).toBe(LOOKUP_HEADER);
+    const col = (name: string) => LOOKUP_HEADER.split(',').indexOf(name);
+    const at = rows.find((r) => r.fields.slice(2, 5).join(',') === '5,0.05,0');
+    const e = exactForward(forwardInput(TOOL, 'one-way', 0.05, cyl(-30, 'cross')));
+    expect(Math.abs(Number(at?.fields[col('interval')]) - e.intervalMm)).toBeLessThanOrEqual(1e-13 * e.intervalMm);
+    expect(
+      rows.every((r) => r.fields[col('surfaceRadius')] === '-30' && r.fields[col('surfaceAxis')] === 'cross'),
+    ).toBe(true);
+    expect(await violations()).toEqual([]);
+    expect(errors).toEqual([]);
     await page.close();
   });
 

@@ -124,6 +124,86 @@ describe('auto-height', () => {
   });
 });
 
+describe('the custom element <path-interval-calculator>', () => {
+  /** Spellings of addresses that would run a script (or load a page of no origin of ours): each is refused. */
+  const REFUSED = [
+    'javascript:parent.__xss=4//',
+    ' JavaScript:parent.__xss=5//',
+    'java\tscript:parent.__xss=6//',
+    'data:text/html,<script>parent.__xss=7</script>',
+    'vbscript:msgbox(8)',
+  ];
+
+  it('loads only http(s) and relative src addresses: a javascript: src is refused with a warning naming src, and no script runs', async () => {
+    const host = await site.browser().newPage({ viewport: { width: 800, height: 900 } });
+    const warnings: string[] = [];
+    host.on('console', (m) => {
+      if (m.type() === 'warning') warnings.push(m.text());
+    });
+    await host.goto(`${site.url()}embed.js`); // a page of the calculator's site; its content is replaced
+    await host.setContent(`<script src="${site.url()}embed.js"></script>`);
+    await host.waitForFunction(() => customElements.get('path-interval-calculator') !== undefined);
+    // The refused ones, then a relative and an absolute http address, each taking its page's height.
+    const good = ['./', site.url()];
+    await host.evaluate(
+      ({ refused, good }) => {
+        const w = window as unknown as { resized: string[] };
+        w.resized = [];
+        for (const [i, src] of [...refused, ...good].entries()) {
+          const el = document.createElement('path-interval-calculator');
+          el.id = `calc-${i}`;
+          el.setAttribute('src', src);
+          el.setAttribute('view', 'formulas');
+          el.addEventListener('path-interval:resize', () => w.resized.push(el.id));
+          document.body.append(el);
+        }
+      },
+      { refused: REFUSED, good },
+    );
+    const resized = () => host.evaluate(() => new Set((window as unknown as { resized: string[] }).resized).size);
+    // Both good ones loaded the calculator and posted its height: by then a script address would have run.
+    await expect.poll(resized, { timeout: 20_000 }).toBe(good.length);
+    expect(await host.evaluate(() => (window as unknown as { __xss?: unknown }).__xss)).toBeUndefined();
+    for (const [i, src] of REFUSED.entries()) {
+      expect(await host.locator(`#calc-${i} iframe`).getAttribute('src'), src).toBe('about:blank');
+      expect(
+        warnings.some((w) =>
+          w.includes(`the src attribute ${JSON.stringify(src)} is not an http(s) or relative address`),
+        ),
+        `warning for ${JSON.stringify(src)} in ${JSON.stringify(warnings)}`,
+      ).toBe(true);
+    }
+    const relative = await host.locator(`#calc-${REFUSED.length} iframe`).getAttribute('src');
+    expect(relative).toBe(`${site.url()}?view=formulas&embed=1`);
+    expect(await host.locator(`#calc-${REFUSED.length + 1} iframe`).getAttribute('src')).toBe(relative);
+    // An address changed to a script address later: refused too, the frame emptied.
+    const before = warnings.length;
+    await host.evaluate(() => document.getElementById('calc-5')?.setAttribute('src', 'javascript:parent.__xss=9//'));
+    await expect.poll(() => host.locator('#calc-5 iframe').getAttribute('src')).toBe('about:blank');
+    expect(warnings.slice(before).join('\n')).toMatch(/the src attribute "javascript:parent.__xss=9\/\/"/);
+    // The address an element would load: https and protocol-relative kept, the refused ones null.
+    const urls = await host.evaluate((refused) => {
+      const url = (src: string) => {
+        const el = document.createElement('path-interval-calculator') as HTMLElement & { url: URL | null };
+        el.setAttribute('src', src);
+        el.setAttribute('r', '3');
+        return el.url?.href ?? null;
+      };
+      return {
+        https: url('https://calc.example/tool/'),
+        protocolRelative: url('//calc.example/tool/'),
+        refused: refused.map(url),
+      };
+    }, REFUSED);
+    expect(urls).toEqual({
+      https: 'https://calc.example/tool/?R=3&embed=1',
+      protocolRelative: `${new URL(site.url()).protocol}//calc.example/tool/?R=3&embed=1`,
+      refused: REFUSED.map(() => null),
+    });
+    await host.close();
+  });
+});
+
 describe('copy embed code', () => {
   it('copies the iframe and the custom element for the current state and view, and says so', async () => {
     const context = await site.browser().newContext({

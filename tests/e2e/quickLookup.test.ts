@@ -188,7 +188,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     const downloaded = page.waitForEvent('download');
     await press(vp, button);
     const download = await downloaded;
-    expect(download.suggestedFilename()).toBe('step-over-table_R3_Rcr1_zigzag.csv');
+    expect(download.suggestedFilename()).toBe('step-over-table_R3_Rcr1_zigzag_plane.csv');
     const csv = readFileSync(await download.path(), 'utf8');
     const [head, ...rows] = parseCsv(csv).filter((r) => !r.blank);
     expect(head?.fields.join(',')).toBe(LOOKUP_HEADER);
@@ -213,7 +213,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     expect(checked).toBeGreaterThan(300);
     await expect
       .poll(() => text(page, 'download-table-status'))
-      .toMatch(/^Saved step-over-table_R3_Rcr1_zigzag\.csv: \d+ rows/);
+      .toMatch(/^Saved step-over-table_R3_Rcr1_zigzag_plane\.csv: \d+ rows/);
     // The table runs on its own worker.
     expect(await Promise.all(page.workers().map((w) => w.evaluate(() => self.name)))).toContain('path-interval-table');
     // Invalid input: nothing to tabulate.

@@ -7,7 +7,7 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { compareForward } from '../../src/core/index';
 import { stepOverSweep } from '../../src/core/teaching';
-import { formatSignificant } from '../../src/core/units';
+import { formatPercent, formatSignificant } from '../../src/core/units';
 import { forwardInput } from '../../src/core/validate';
 import { groupSteps, sceneToleranceMm } from '../../src/ui/views/stepGroups';
 import { traceFrames } from '../../src/worker/api';
@@ -50,7 +50,7 @@ describe('teacher: the comparison charts', () => {
           expect(await page.getByTestId(`chart-lead-value-${key}`).textContent(), key).toBe(a.intervalMm.toFixed(4));
           // The error chart's legend: the signed % against exact.
           expect(await page.getByTestId(`chart-error-value-${key}`).textContent(), key).toBe(
-            `${a.deviationPercent > 0 ? '+' : ''}${a.deviationPercent.toFixed(2)}`,
+            formatPercent(a.deviationPercent),
           );
         }
         expect(await page.getByTestId('chart-tilt-value-exact').textContent()).toBe(c.exact.intervalMm.toFixed(4));
@@ -98,6 +98,45 @@ describe('teacher: the comparison charts', () => {
     expect(await page.getByTestId('chart-error-value-sekine').textContent()).toMatch(/^[+-]\d\.\d{4}$/);
     await page.getByTestId('comparison-chart').screenshot({ path: `${SHOTS}/teach-chart-rho1-gap.png` });
     await page.close();
+  });
+
+  it('an error that rounds to zero reads 0.00 in the legend, never -0.00 or +0.00 (mm and inch; issue 17)', async () => {
+    // Bedi's error here is -1.1e-14 %, Redonnet's and the osculating circle's +0.0029 %.
+    const input = forwardInput(
+      { toolRadiusMm: 0.001, cornerRadiusMm: 0, leadAngleDeg: 0.5, tiltAngleDeg: 0 },
+      'one-way',
+      1e-9,
+    );
+    const c = compareForward(input);
+    for (const unit of ['mm', 'in']) {
+      const { page, errors } = await open(`?R=0.001&Rcr=0&rho=0.5&h=1e-9&unit=${unit}&view=chart`, {
+        width: 1440,
+        height: 900,
+      });
+      await expect.poll(() => page.getByTestId('chart-error-value-bedi').textContent(), { message: unit }).toBe('0.00');
+      expect(await page.getByTestId('chart-error-value-redonnet').textContent(), unit).toBe('0.00');
+      expect(await page.getByTestId('chart-error-value-osculating').textContent(), unit).toBe('0.00');
+      const sekine = c.approximations.sekine;
+      if (sekine.ok) {
+        expect(await page.getByTestId('chart-error-value-sekine').textContent(), unit).toBe(
+          formatPercent(sekine.deviationPercent),
+        );
+      }
+      // No text of the page (its legends, ticks, results, SVG labels) reads as a negative zero.
+      const texts = await page.evaluate(() => {
+        const out: string[] = [];
+        const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+        for (let n = walker.nextNode(); n !== null; n = walker.nextNode()) out.push(n.nodeValue ?? '');
+        return out;
+      });
+      expect(texts.length).toBeGreaterThan(100);
+      expect(
+        texts.filter((t) => /(^|[^\w.])-0(\.0+)?(e[+-]?\d+)?(?![\d.]*[1-9])/.test(t)),
+        unit,
+      ).toEqual([]);
+      expect(errors).toEqual([]);
+      await page.close();
+    }
   });
 
   it('highlighting a procedure in the results emphasises its line and dims the others', async () => {

@@ -1,7 +1,15 @@
 /** Numbers as the page shows them: at least four significant digits, the user's unit, never -0 or NaN. */
 import { describe, expect, it } from 'vitest';
-import { formatPercent } from '../../src/core/units';
-import { formatLen, formatLenUnit, formatSignedLen } from '../../src/ui/format';
+import { formatAngleDeg, formatInputNumber, formatPercent } from '../../src/core/units';
+import {
+  formatDeg,
+  formatLen,
+  formatLenUnit,
+  formatRadAsDeg,
+  formatSignedLen,
+  formatSignedLenUnit,
+  formatSignedPercent,
+} from '../../src/ui/format';
 
 describe('page number formatting', () => {
   it('keeps the fixed resolution for usual sizes (0.1 um in mm, 10 uin in inch)', () => {
@@ -36,5 +44,48 @@ describe('page number formatting', () => {
     expect(formatPercent(-0.006)).toBe('-0.01');
     expect(formatPercent(7.1449)).toBe('+7.14');
     expect(formatPercent(Number.NaN)).toBe('\u2014');
+  });
+
+  it("a signed percentage (the chart legend's error) that rounds to zero reads 0.00, never -0.00 or +0.00", () => {
+    // Bedi's error for R = 0.001, Rcr = 0, rho = 0.5, h = 1e-9 (issue 17): a few 1e-6 % below exact.
+    expect(formatSignedPercent(-3e-6)).toBe('0.00');
+    expect(formatSignedPercent(-0.004999)).toBe('0.00');
+    expect(formatSignedPercent(-0)).toBe('0.00');
+    expect(formatSignedPercent(2e-7)).toBe('0.00');
+    expect(formatSignedPercent(-0.005001)).toBe('-0.01');
+    expect(formatSignedPercent(-29.2812)).toBe('-29.28');
+    expect(formatSignedPercent(0.125)).toBe('+0.13');
+    expect(formatSignedPercent(null)).toBe('\u2014');
+    expect(formatSignedPercent(Number.NaN)).toBe('\u2014');
+  });
+
+  it('no page formatter shows -0: negative values from 1e-330 to 100 and -0, in mm and inch', () => {
+    const values = [-0];
+    for (let e = -330; e <= 2; e += 0.25) for (const m of [1, 4.9999, 5, 5.0001, 9.99]) values.push(-m * 10 ** e);
+    /** A text whose number (the part before a unit symbol) is zero yet carries a minus sign. */
+    const negativeZero = (text: string) => {
+      const number = text.split(' ')[0] ?? '';
+      return number.startsWith('-') && Number(number) === 0;
+    };
+    const bad: string[] = [];
+    for (const v of values)
+      for (const unit of ['mm', 'in'] as const) {
+        const shown = [
+          formatLen(v, unit),
+          formatLen(v, unit, 'height'),
+          formatLen(v, unit, 'fine'),
+          formatSignedLen(v, unit),
+          formatLenUnit(v, unit),
+          formatSignedLenUnit(v, unit, 'height'),
+          formatDeg(v),
+          formatRadAsDeg(v),
+          formatSignedPercent(v),
+          formatPercent(v, 1),
+          formatInputNumber(v),
+          formatAngleDeg(v),
+        ];
+        for (const text of shown) if (negativeZero(text)) bad.push(`${v} ${unit}: ${text}`);
+      }
+    expect(bad).toEqual([]);
   });
 });

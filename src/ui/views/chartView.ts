@@ -8,7 +8,7 @@
 import { APPROXIMATION_KEYS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures';
 import { formatSignificant, fromMm, unitSymbol } from '../../core/units';
 import type { Sweep, SweepGap } from '../../worker/protocol';
-import { formatDeg, formatLen, formatSignedLen } from '../format';
+import { formatDeg, formatLen, formatSignedLen, formatSignedPercent } from '../format';
 import { html, type TeachingView, type ViewContext } from './common';
 import { type ChartGapBand, type ChartLine, lineChart } from './lineChart';
 import './chart.css';
@@ -153,7 +153,7 @@ export class ChartView implements TeachingView {
           gaps: lead.gaps,
           xLabel: 'lead angle rho [deg]',
           yLabel: pct ? 'error [%]' : `error [${unit}]`,
-          value: pct ? (v) => `${v > 0 ? '+' : ''}${v.toFixed(2)}` : (v) => formatSignedLen(v, ctx.unit),
+          value: pct ? formatSignedPercent : (v) => formatSignedLen(v, ctx.unit),
         },
       ],
       [
