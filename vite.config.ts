@@ -47,13 +47,14 @@ function pwa(mode: string) {
 }
 
 /**
- * Two named chunks: `three` (three.js and the views' orbit controller, loaded with the 3D views
- * after the first result) and `core` (the pure modules that the page, its views and the solver
- * worker all load: one copy, cached once). Fewer, larger chunks also compress better against the
- * 200 kB gzip budget than the small shared chunks Rollup would make.
+ * Two named chunks: `three` (three.js and the two 3D views' shared helpers, the orbit controller
+ * and the clipping planes, loaded with the 3D views after the first result) and `core` (the pure
+ * modules that the page, its views and the solver worker all load: one copy, cached once). Fewer,
+ * larger chunks also compress better against the 200 kB gzip budget than the small shared chunks
+ * Rollup would make.
  */
 function chunkOf(id: string): string | null {
-  if (id.includes('/node_modules/three/') || id.includes('/src/render/orbit')) return 'three';
+  if (id.includes('/node_modules/three/') || /\/src\/render\/(orbit|clipPlanes)/.test(id)) return 'three';
   if (/\/src\/(core\/|worker\/(rpc|protocol))/.test(id)) return 'core';
   return null;
 }

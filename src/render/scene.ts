@@ -12,8 +12,12 @@
  *    a restored WebGL context), never in a busy loop;
  *  - the camera is fitted on the first geometry and refitted, keeping the viewing direction,
  *    whenever the tool radius changes;
+ *  - the camera's near and far planes enclose what is drawn, from the camera's place, before each
+ *    frame (clipPlanes.ts): the tool is seen at every radius from 0.001 to 1000 mm and however the
+ *    user turns or zooms;
  *  - after `webglcontextlost` it waits; on `webglcontextrestored` (three.js rebuilds its GL
- *    state) it draws again without any input;
+ *    state, its clear colour reset to black) it sets the theme's colours again and draws the
+ *    last state without any input;
  *  - `dispose()` disconnects the resize observer and the canvas listeners and frees every
  *    GPU resource and DOM node it made.
  */
@@ -38,6 +42,7 @@ import {
   Points,
   PointsMaterial,
   Scene,
+  Sphere,
   SphereGeometry,
   Vector3,
   WebGLRenderer,
@@ -60,6 +65,7 @@ import {
   TOOL_RADIAL_SEGMENTS,
   type TraceFrame,
 } from '../worker/protocol';
+import { drawnBoundingSphere, fitClipPlanes } from './clipPlanes';
 import {
   drawnHeightMm,
   drawnPoints,
@@ -319,6 +325,7 @@ export class ToolScene {
   /** The layer of the labels' elements, over the canvas. */
   private readonly labels = document.createElement('div');
   private readonly scene = new Scene();
+  /** Its near and far planes are set before each frame from the drawing's size (clipPlanes.ts). */
   private readonly camera = new PerspectiveCamera(40, 1, 0.01, 1000);
   private readonly controls: OrbitController;
   private readonly toolGeometry = new BufferGeometry();
@@ -377,11 +384,15 @@ export class ToolScene {
   };
   private readonly onContextRestored = () => {
     this.contextLost = false;
-    this.requestRender();
+    // three.js's own listener (added with the renderer, so it ran before this one) has rebuilt its
+    // GL state, the clear colour with it (black): the theme's again, and a frame of the last state.
+    this.applyTheme();
   };
   private contextLost = false;
   private frameRequested = false;
   private cornerRadiusMm = 1;
+  /** A sphere around what the last state draws (world, mm): the camera's near and far planes enclose it. */
+  private drawnSphere = new Sphere().makeEmpty();
   /** Tool radius the camera was fitted to (0: not yet). */
   private fittedRadiusMm = 0;
   /** Frames rendered so far. */
@@ -709,6 +720,7 @@ export class ToolScene {
     setLabel(this.offsetLabel, labels.contactOffset ?? '');
 
     this.axes.scale.setScalar(1.6 * R);
+    this.drawnSphere = drawnBoundingSphere(this.scene, (o) => o instanceof LabelAnchor);
     if (Math.abs(R - this.fittedRadiusMm) > 1e-12 * R) this.fit(R);
     // New results are drawn at once rather than on the next animation frame: the browser
     // presents the frame at its next vsync either way, and this saves up to one frame of latency.
@@ -808,6 +820,8 @@ export class ToolScene {
   private renderNow(): void {
     this.frameRequested = false;
     if (this.contextLost) return; // drawn again on webglcontextrestored
+    // The near and far planes from the drawing's size and the camera's place (after any refit or move).
+    fitClipPlanes(this.camera, this.drawnSphere);
     this.renderer.render(this.scene, this.camera);
     this.layoutLabels();
     this.frames++;
