@@ -62,7 +62,8 @@ export function slopePosture(slopeDeg: number, rasterAngleDeg: number): SlopePos
   const ca = cosDeg(slopeDeg);
   const sp = sinDeg(rasterAngleDeg);
   const cp = cosDeg(rasterAngleDeg);
-  const d = Math.sqrt(cp * cp + ca * ca * sp * sp);
+  // Exactly 1 on a flat floor (the sum of squares would round).
+  const d = sa === 0 ? 1 : Math.sqrt(cp * cp + ca * ca * sp * sp);
   const leadRad = Math.atan2(sa * cp, ca * d);
   const tiltRad = Math.atan2(sa * ca * sp, Math.sqrt(cp * cp + ca * ca * ca * ca * sp * sp));
   const axis: [number, number, number] = d > 0 ? [(sa * cp) / d, (sa * ca * sp) / d, ca] : [0, sa, ca];
