@@ -272,7 +272,12 @@ function inverseCore(s: Setup, step: WaterlineStep): Core {
   if (gouging(s, null) === 0) return { kind: 'gouge', pass: 0, L: 0 };
   if (s.tool.rcr === 0) return { kind: 'wall-only' };
   const L = step.field === 'interval' ? step.mm : intervalOfStepDownMm(s.tool, s.mer, step.mm, s.maxL);
-  if (L === null || !(L < s.maxL)) return { kind: 'past', limitL: s.maxL };
+  if (L === null || !(L < s.maxL)) {
+    // Beyond the usable surface; if the shank forms the cusp before its end, that limit binds first.
+    const cap = Math.min(s.maxL * (1 - 1e-12), L ?? Number.POSITIVE_INFINITY);
+    const shankL = Number.isFinite(cap) ? (cuspAt(s, cap).onShank ? cap : null) : someShankL(s);
+    return shankL === null ? { kind: 'past', limitL: s.maxL } : { kind: 'shank', limitL: shankStartL(s, shankL) };
+  }
   if (gouging(s, L) === 1) return { kind: 'gouge', pass: 1, L };
   if (cuspAt(s, L).onShank) return { kind: 'shank', limitL: shankStartL(s, L) };
   return { kind: 'ok', L };

@@ -85,7 +85,13 @@ function goldenMin(f: (x: number) => number, a0: number, b0: number, iters = 90)
 }
 
 /** Minimum of f on [a, b]: dense samples, then golden section around the best sample. */
-function sampledMin(f: (x: number) => number, a: number, b: number, samples: number): { x: number; v: number } {
+function sampledMin(
+  f: (x: number) => number,
+  a: number,
+  b: number,
+  samples: number,
+  iters = 90,
+): { x: number; v: number } {
   let bi = 0;
   let bv = Number.POSITIVE_INFINITY;
   for (let i = 0; i <= samples; i++) {
@@ -97,7 +103,7 @@ function sampledMin(f: (x: number) => number, a: number, b: number, samples: num
   }
   const lo = a + ((b - a) * Math.max(0, bi - 1)) / samples;
   const hi = a + ((b - a) * Math.min(samples, bi + 1)) / samples;
-  const g = goldenMin(f, lo, hi);
+  const g = goldenMin(f, lo, hi, iters);
   return g.v <= bv ? g : { x: a + ((b - a) * bi) / samples, v: bv };
 }
 
@@ -184,9 +190,8 @@ function cuspSearch(
     K = Math.max(K, Math.abs((vals[i] as number) - (vals[i - 1] as number)) / dy);
   let lo = a;
   let hi = b;
-  for (let k = 0; k < 200; k++) {
+  for (let k = 0; k < 200 && Math.abs(hi - lo) > 1e-14 * (Math.abs(a) + Math.abs(b)); k++) {
     const m = 0.5 * (lo + hi);
-    if (m === lo || m === hi) break;
     if (e0(m) - e1(m) < 0) lo = m;
     else hi = m;
   }
@@ -290,8 +295,8 @@ export interface BruteRevolution {
 /** Least and greatest distance (mm) from the z axis of a horizontal disk (centre cx, cy; radius rho). */
 function diskDistances(cx: number, cy: number, rho: number): [number, number] {
   const D = (u: number) => Math.hypot(cx + rho * Math.cos(u), cy + rho * Math.sin(u));
-  const lo = sampledMin(D, 0, 2 * Math.PI, 64).v;
-  const hi = -sampledMin((u) => -D(u), 0, 2 * Math.PI, 64).v;
+  const lo = sampledMin(D, 0, 2 * Math.PI, 24, 64).v;
+  const hi = -sampledMin((u) => -D(u), 0, 2 * Math.PI, 24, 64).v;
   const covers = Math.hypot(cx, cy) <= rho;
   return [covers ? 0 : lo, hi];
 }
@@ -367,7 +372,7 @@ function revolutionColumn(t: BruteTool, tip: V3, r: number, hasAxis: boolean): n
   if (covers(0)) return tip[2];
   let a = 0;
   let b = zMax;
-  for (let k = 0; k < 70; k++) {
+  for (let k = 0; k < 200 && b - a > 1e-14 * zMax; k++) {
     const m = 0.5 * (a + b);
     if (covers(m)) b = m;
     else a = m;
