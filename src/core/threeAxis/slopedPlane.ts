@@ -222,8 +222,9 @@ function stepOfInterval(c: SlopedPlaneCase, p: SlopePosture, field: ThreeAxisFie
 /**
  * Inverse: the cusp height (mm, along the plane's normal) that a programmed step leaves: `Lxy`
  * (raster or waterline), `dz` (waterline) or `L`. Errors: as the forward, and the step at least
- * 1e-9 mm and below the widest step that still leaves a scallop below the shank and flank limits
- * (named in the step's own terms); `dz` only for waterline.
+ * 1e-9 mm and below the widest step whose cusp the corner still forms (`shank-cuts`: beyond it the
+ * shank would; on a waterline plane `dz < Rcr` up to 45 degrees, `Rcr sin 2 alpha` above) or that
+ * still leaves a scallop (`beyond-step`), named in the step's own terms; `dz` only for waterline.
  */
 export function slopedPlaneInverse(c: SlopedPlaneCase, step: ProgrammedStep): ThreeAxisResult<SlopedPlaneAnswer> {
   const { errors, posture } = checkCase(c);
@@ -263,7 +264,7 @@ export function slopedPlaneInverse(c: SlopedPlaneCase, step: ProgrammedStep): Th
       errors: [
         threeAxisError(
           step.field,
-          'beyond-step',
+          !flatOnFloor(s) && limits.limitBy.startsWith('shank') ? 'shank-cuts' : 'beyond-step',
           step.mm,
           limitStep,
           `must be below ${formatNumber(limitStep)} mm (got ${step.mm}), ${why}.`,

@@ -10,7 +10,8 @@
  *   concave one flatter; the cusp above this pass belongs to the pair (previous pass, this pass)
  *   and is this module's answer at the previous pass's CC point (slope alpha - L/Rc), where the
  *   same dz leaves a different cusp: a CAM system's constant dz leaves a different cusp on each
- *   side of a level, and each pair is answered at its upper CC point.
+ *   side of a level, and each pair is answered at its upper CC point. {@link waterlineCuspAbove}
+ *   gives that up-slope cusp for a constant dz.
  * - Only the meridian radius Rc changes the cusp: the swept section in the meridian plane is the
  *   tool's own profile whatever the distance to the axis (meridianTool.ts), so Rf enters through
  *   gouging (a bowl too tight, the tool reaching across the axis) and the axis bound alone.
@@ -43,6 +44,7 @@ import {
   meridian,
   newPassPair,
   type PassPair,
+  sinc,
   stepDownOfIntervalMm,
 } from './meridianPasses';
 import { type MeridianTool, meridianTool } from './meridianTool';
@@ -531,4 +533,78 @@ export function waterlineHeightLimitMm(c: RevolutionCase): number {
   const shankL = someShankL(s);
   if (shankL !== null) return shankHeightAt(s, shankStartL(s, shankL));
   return cuspAt(s, s.maxL * (1 - 1e-12)).heightMm;
+}
+
+/**
+ * The up-slope cusp at a CC point for a constant step-down (mm): the cusp between the pass `dz`
+ * higher (a CAM system's previous level, further up the meridian, at slope `alpha - L_u/Rc`) and
+ * this one. It differs from the down-slope answer with the same dz wherever the meridian is curved
+ * (the passes are not congruent). Found as the pair answered at the upper pass's CC point: its arc
+ * length `L_u` from `dz = (1 + Rcr k) L_u sinc(k L_u / 2) sin(alpha - k L_u / 2)` (Newton, rate
+ * `(1 + Rcr k) sin(alpha_u)`), the upper point's normal radius along the feed chosen so that the
+ * axis of revolution stays where it is, then {@link waterlineInverse} there with `L_u`. The answer's
+ * geometry is in the upper pass's frame. Errors as the inverse's, or `past-surface` when the pass
+ * above would lie beyond the top of a convex meridian (slope 0) or the vertical of a concave one.
+ */
+export function waterlineCuspAbove(c: RevolutionCase, stepDownMm: number): ThreeAxisResult<WaterlineAnswer> {
+  const errors = checkCase(c);
+  errors.push(...checkStep('stepDown', stepDownMm));
+  if (errors.length > 0) return { ok: false, errors };
+  const s = setupOf(c);
+  const { k, alpha0 } = s.mer;
+  const scale = 1 + s.tool.rcr * k;
+  const maxL = k > 0 ? alpha0 / k : k < 0 ? (Math.PI / 2 - alpha0) / -k : Number.POSITIVE_INFINITY;
+  const dzOf = (L: number) => scale * L * sinc((k * L) / 2) * Math.sin(alpha0 - (k * L) / 2);
+  const beyond = () =>
+    threeAxisError(
+      'stepDown',
+      'past-surface',
+      stepDownMm,
+      Number.isFinite(maxL) ? dzOf(maxL) : null,
+      `must be below ${formatNumber(dzOf(maxL))} mm here (got ${stepDownMm}): the pass above would lie beyond ${k > 0 ? 'the top of the convex meridian' : 'the vertical of the concave meridian'}.`,
+    );
+  if (Number.isFinite(maxL) && !(dzOf(maxL) > stepDownMm)) return { ok: false, errors: [beyond()] };
+  let lo = 0;
+  let hi = maxL;
+  let L = stepDownMm / (scale * s.mer.sin0);
+  if (!(L < hi)) L = 0.5 * hi;
+  for (let i = 0; i < 100; i++) {
+    const v = dzOf(L) - stepDownMm;
+    if (v === 0) break;
+    if (v > 0) hi = L;
+    else lo = L;
+    const slope = scale * Math.sin(alpha0 - k * L);
+    let next = slope > 0 ? L - v / slope : Number.NaN;
+    if (Math.abs(next - L) <= 1e-15 * L) {
+      L = Math.min(Math.max(next, lo), hi);
+      break;
+    }
+    if (!(next > lo && next < hi)) next = Number.isFinite(hi) ? 0.5 * (lo + hi) : 2 * L;
+    L = next;
+  }
+  const alphaU = alpha0 - k * L;
+  // The upper CC point relative to this one, and the axis relative to it.
+  const half = (k * L) / 2;
+  const chord = L * sinc(half);
+  const abar = alpha0 - half;
+  const upS = -chord * Math.cos(abar);
+  let feedU: number | null = null;
+  if (s.surf.axisS !== null) {
+    feedU = -(s.surf.axisS - upS) / Math.sin(alphaU);
+    if (!(feedU * (c.feedRadiusMm as number) > 0)) {
+      return {
+        ok: false,
+        errors: [
+          threeAxisError(
+            'stepDown',
+            'past-surface',
+            stepDownMm,
+            null,
+            `is too large here (got ${stepDownMm}): the pass above would lie across the axis of revolution.`,
+          ),
+        ],
+      };
+    }
+  }
+  return waterlineInverse({ ...c, slopeDeg: radToDeg(alphaU), feedRadiusMm: feedU }, { field: 'interval', mm: L });
 }

@@ -217,7 +217,9 @@ describe('refusals', () => {
     const f = slopedPlaneInverse(c, { field: 'stepDown', mm: 5 });
     expect(f.ok).toBe(false);
     if (!f.ok) {
-      expect(f.errors[0]).toMatchObject({ field: 'stepDown', code: 'beyond-step' });
+      // Beyond it the shank would form the cusp: dz < Rcr sin(2 alpha) above 45 degrees.
+      expect(f.errors[0]).toMatchObject({ field: 'stepDown', code: 'shank-cuts' });
+      expect(f.errors[0]?.limit).toBeCloseTo(Math.sin((100 * Math.PI) / 180), 12);
       const limit = f.errors[0]?.limit as number;
       const just = slopedPlaneInverse(c, { field: 'stepDown', mm: limit * (1 - 1e-9) });
       expect(just.ok).toBe(true);

@@ -2,6 +2,7 @@ import { afterAll, describe, expect, it } from 'vitest';
 import { slopedPlaneForward } from '../../../src/core/threeAxis/slopedPlane';
 import {
   type RevolutionCase,
+  waterlineCuspAbove,
   waterlineForward,
   waterlineHeightLimitMm,
   waterlineInverse,
@@ -273,5 +274,39 @@ describe('limits and refusals', () => {
     expect(!floor.ok && floor.errors[0]?.code).toBe('needs-slope');
     const radius = waterlineForward({ ...bull, slopeDeg: 20, feedRadiusMm: 0, crossRadiusMm: 2e6 }, 0.01);
     expect(radius.ok ? [] : radius.errors.map((e) => e.field)).toEqual(['feedRadius', 'crossRadius']);
+  });
+});
+
+describe('the up-slope cusp for a constant step-down', () => {
+  it('is the pair whose lower pass is this one; equal to the down-slope cusp on a plane, not on a curved meridian (seed 14)', () => {
+    const rand = seededRandom(14);
+    let curved = 0;
+    for (let i = 0; i < 100; i++) {
+      const R = 0.5 + 6 * rand();
+      const Rcr = R * (0.1 + 0.9 * rand());
+      const rc = rand() < 0.2 ? null : (rand() < 0.5 ? 1 : -1) * R * (3 + 30 * rand());
+      const rf = rand() < 0.3 ? null : (rand() < 0.5 ? 1 : -1) * R * (3 + 30 * rand());
+      const c: RevolutionCase = {
+        toolRadiusMm: R,
+        cornerRadiusMm: Rcr,
+        slopeDeg: 10 + 70 * rand(),
+        feedRadiusMm: rf,
+        crossRadiusMm: rc,
+      };
+      const down = waterlineForward(c, Rcr * 0.01 * (0.1 + rand()));
+      if (!down.ok) continue;
+      const dz = down.value.stepDownMm;
+      const up = waterlineCuspAbove(c, dz);
+      if (!up.ok) {
+        expect(['gouging', 'past-surface', 'shank-cuts']).toContain(up.errors[0]?.code);
+        continue;
+      }
+      // The pair's lower pass is this pass: its slope, the same dz.
+      expect(Math.abs(up.value.slopeNextDeg - c.slopeDeg)).toBeLessThan(1e-9);
+      expect(Math.abs(up.value.stepDownMm - dz)).toBeLessThan(1e-12 * (1 + dz));
+      if (rc === null) expect(Math.abs(up.value.cuspHeightMm - down.value.cuspHeightMm)).toBeLessThan(1e-12);
+      else if (Math.abs(up.value.cuspHeightMm - down.value.cuspHeightMm) > 1e-6 * down.value.cuspHeightMm) curved += 1;
+    }
+    expect(curved).toBeGreaterThan(20);
   });
 });
