@@ -18,7 +18,7 @@ describe('gouging of a surface of revolution', () => {
     const rand = seededRandom(21);
     let gouged = 0;
     let clear = 0;
-    for (let i = 0; i < 40; i++) {
+    for (let i = 0; i < 60; i++) {
       const R = 1 + 5 * rand();
       const Rcr = R * (0.05 + 0.95 * rand());
       const alpha = 1 + 85 * rand();
@@ -28,13 +28,22 @@ describe('gouging of a surface of revolution', () => {
       const t = meridianTool(R, Rcr);
       const m = meridian((alpha * Math.PI) / 180, rc);
       const pair = newPassPair();
-      fillPassPair(t, m, 0, pair);
+      // Every other case tests the lower pass of a pair (its own slope, the same surface).
+      const lower = i % 2 === 1;
+      // (within the usable meridian: the lower pass's slope between 0 and 90 degrees)
+      const a0 = (alpha * Math.PI) / 180;
+      const maxL = rc === null ? Number.POSITIVE_INFINITY : rc > 0 ? (Math.PI / 2 - a0) * rc : -a0 * rc;
+      const L = lower ? Math.min(R * rand(), 0.9 * maxL) : 0.1;
+      fillPassPair(t, m, L, pair);
       const surf = revolutionSurface(m.sin0, m.cos0, rc, rf);
-      const depth = gougeDepthMm(t, surf, pair.tipS0, pair.tipZ0);
+      const depth = lower
+        ? gougeDepthMm(t, surf, pair.tipS1, pair.tipZ1)
+        : gougeDepthMm(t, surf, pair.tipS0, pair.tipZ0);
       const s = { slopeDeg: alpha, feedRadiusMm: rf, crossRadiusMm: rc };
-      const tip = brutePair({ R, Rcr }, s, 0.1).tip0;
+      const placed = brutePair({ R, Rcr }, s, L);
+      const tip = lower ? placed.tip1 : placed.tip0;
       const sampled = bruteGougeDepthMm({ R, Rcr }, s, tip, 120, 240);
-      const label = JSON.stringify({ i, R, Rcr, alpha, rf, rc, depth, sampled });
+      const label = JSON.stringify({ i, R, Rcr, alpha, rf, rc, L, lower, depth, sampled });
       if (depth === 0) {
         clear += 1;
         expect(sampled, label).toBeLessThan(1e-9 * (1 + Math.abs(rc ?? 0)));
