@@ -81,18 +81,35 @@ function revolutionCases(count: number): Timed<RevolutionCase>[] {
 
 let sink = 0;
 
-/** Median over `rounds` of the mean ns per call within one round of `perRound` calls. */
-function measure<T>(fn: (c: Timed<T>) => number, cases: Timed<T>[], perRound: number, rounds: number): number {
-  const samples: number[] = [];
+/**
+ * Median over `rounds` of the mean ns per call within one round of `perRound` calls: wall clock
+ * and CPU time (process.cpuUsage, user + system). On a machine shared with other work the wall
+ * clock counts the time slices given to others; the CPU time does not.
+ */
+function measure<T>(
+  fn: (c: Timed<T>) => number,
+  cases: Timed<T>[],
+  perRound: number,
+  rounds: number,
+): { wall: number; cpu: number } {
+  const wall: number[] = [];
+  const cpu: number[] = [];
   for (let w = 0; w < Math.min(perRound, 2000); w++) sink += fn(cases[w % cases.length] as Timed<T>);
   for (let r = 0; r < rounds; r++) {
+    const c0 = process.cpuUsage();
     const t0 = process.hrtime.bigint();
     for (let i = 0; i < perRound; i++) sink += fn(cases[i % cases.length] as Timed<T>);
-    samples.push(Number(process.hrtime.bigint() - t0) / perRound);
+    wall.push(Number(process.hrtime.bigint() - t0) / perRound);
+    const c = process.cpuUsage(c0);
+    cpu.push(((c.user + c.system) * 1000) / perRound);
   }
-  samples.sort((x, y) => x - y);
-  const mid = samples.length >> 1;
-  return samples.length % 2 ? (samples[mid] as number) : ((samples[mid - 1] as number) + (samples[mid] as number)) / 2;
+  return { wall: median(wall), cpu: median(cpu) };
+}
+
+function median(xs: number[]): number {
+  xs.sort((x, y) => x - y);
+  const mid = xs.length >> 1;
+  return xs.length % 2 ? (xs[mid] as number) : ((xs[mid - 1] as number) + (xs[mid] as number)) / 2;
 }
 
 const args = process.argv.slice(2);
@@ -115,7 +132,7 @@ const postures: Timed<ForwardInput>[] = plane.map((c) => {
   return { input: forwardInput(tool, 'one-way', c.h), h: c.h };
 });
 
-const rows: Array<[string, string, number]> = [
+const rows: Array<[string, string, { wall: number; cpu: number }]> = [
   [
     'posture solver alone, same postures',
     'postureSolverSamePosturesNsPerCall',
@@ -154,32 +171,35 @@ const rows: Array<[string, string, number]> = [
   ],
 ];
 
-// The 200-slope sweeps, each call timed on its own (ms).
-function sweepMs(make: () => number): number {
-  const ms: number[] = [];
+// The 200-slope sweeps, each call timed on its own (ms, wall and CPU).
+function sweepMs(make: () => number): { wall: number; cpu: number } {
+  const wall: number[] = [];
+  const cpu: number[] = [];
   for (let i = 0; i < 3; i++) sink += make();
   for (let r = 0; r < Math.max(5, rounds); r++) {
+    const c0 = process.cpuUsage();
     const t0 = process.hrtime.bigint();
     sink += make();
-    ms.push(Number(process.hrtime.bigint() - t0) / 1e6);
+    wall.push(Number(process.hrtime.bigint() - t0) / 1e6);
+    const c = process.cpuUsage(c0);
+    cpu.push((c.user + c.system) / 1000);
   }
-  ms.sort((x, y) => x - y);
-  return ms[ms.length >> 1] as number;
+  return { wall: median(wall), cpu: median(cpu) };
 }
 const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, hMm: 0.05 } as const;
-const sweeps: Array<[string, string, number]> = [
+const sweeps: Array<[string, string, { wall: number; cpu: number }]> = [
   [
-    'sweep, raster psi 30 (ms)',
+    'raster psi 30',
     'sweep3AxisRasterMs',
     sweepMs(() => slopeSweep({ ...tool, passes: 'raster', rasterAngleDeg: 30 }).largestSlopeDeg),
   ],
   [
-    'sweep, waterline on the plane (ms)',
+    'waterline on the plane',
     'sweep3AxisWaterlinePlaneMs',
     sweepMs(() => slopeSweep({ ...tool, passes: 'waterline', rasterAngleDeg: 0 }).largestSlopeDeg),
   ],
   [
-    'sweep, waterline on a dome R30 (ms)',
+    'waterline on a dome R30',
     'sweep3AxisWaterlineDomeMs',
     sweepMs(
       () =>
@@ -194,12 +214,18 @@ console.log(
 );
 console.log(`Node ${process.version}, ${process.platform}/${process.arch}`);
 console.log('');
-console.log(`${'solver'.padEnd(40)}${'ns per call'.padStart(14)}`);
-for (const [label, , ns] of rows) console.log(`${label.padEnd(40)}${ns.toFixed(1).padStart(14)}`);
-for (const [label, , ms] of sweeps) console.log(`${label.padEnd(40)}${ms.toFixed(2).padStart(14)}`);
+console.log(`${'solver'.padEnd(40)}${'ns per call'.padStart(14)}${'CPU ns'.padStart(12)}`);
+for (const [label, , v] of rows)
+  console.log(`${label.padEnd(40)}${v.wall.toFixed(1).padStart(14)}${v.cpu.toFixed(1).padStart(12)}`);
+console.log(`${'sweep (200 slopes)'.padEnd(40)}${'ms'.padStart(14)}${'CPU ms'.padStart(12)}`);
+for (const [label, , v] of sweeps)
+  console.log(`${label.padEnd(40)}${v.wall.toFixed(2).padStart(14)}${v.cpu.toFixed(2).padStart(12)}`);
 console.log(`(checksum ${sink.toExponential(3)})`);
 if (json) {
   const out: Record<string, number> = { rounds };
-  for (const [, key, v] of [...rows, ...sweeps]) out[key] = Number(v.toFixed(2));
+  for (const [, key, v] of [...rows, ...sweeps]) {
+    out[key] = Number(v.wall.toFixed(2));
+    out[`${key}Cpu`] = Number(v.cpu.toFixed(2));
+  }
   console.log(JSON.stringify(out));
 }

@@ -54,17 +54,3 @@ export function profileHeightMm(t: MeridianTool, u: number): number {
   const w = Math.min(a - t.rb, t.rcr);
   return (w * w) / (t.rcr + Math.sqrt((t.rcr - w) * (t.rcr + w)));
 }
-
-/**
- * Tool tip offset from the CC point (mm) for contact at slope alpha (sine and cosine given):
- * `(Rcr sin alpha + Rb, -Rcr (1 - cos alpha))`, the z part as `-2 Rcr sin^2(alpha/2)`.
- */
-export function tipOffsetS(t: MeridianTool, sinA: number): number {
-  return t.rcr * sinA + t.rb;
-}
-
-/** The z part of {@link tipOffsetS}: `-Rcr (1 - cos alpha)` without cancellation (alpha in radians). */
-export function tipOffsetZ(t: MeridianTool, alphaRad: number): number {
-  const h = Math.sin(alphaRad / 2);
-  return -2 * t.rcr * h * h;
-}
