@@ -25,7 +25,7 @@ const TOOLS = [
   { name: 'bull-nose', R: 3, Rcr: 1 },
   { name: 'bull-nose 6/2', R: 6, Rcr: 2 },
 ] as const;
-const ALPHAS = [0, 1e-6, 5, 30, 60, 85];
+const ALPHAS = [0, 1e-6, 5, 30, 60, 85, 89.9];
 const PSIS = [0, 45, 90];
 
 describe('raster on a sloped plane against the brute force (polished to 1e-9 mm)', () => {

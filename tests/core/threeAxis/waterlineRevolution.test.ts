@@ -129,18 +129,21 @@ describe('closed forms and cross-checks', () => {
       // bisector at |Rs| + h (convex) or |Rs| - h (concave) from it.
       const Ro = convex ? Rs + R : -Rs - R;
       const p = convex ? Rs + h : -Rs - h;
-      const phi = 2 * Math.acos((Ro * Ro + p * p - R * R) / (2 * Ro * p));
+      // The angle at the centre between a ball centre (Ro) and the cusp (p), opposite the side R:
+      // half-angle form tan(t/2) = sqrt((s - Ro)(s - p) / (s (s - R))), well conditioned for small t.
+      const sp = (Ro + p + R) / 2;
+      const half = 2 * Math.atan(Math.sqrt(((sp - Ro) * (sp - p)) / (sp * (sp - R))));
+      const phi = 2 * half;
       const L = Math.abs(Rs) * phi;
       const a0 = (alpha * Math.PI) / 180;
       const a1 = a0 + (convex ? phi : -phi);
-      const dz = Ro * (Math.cos(Math.min(a0, a1)) - Math.cos(Math.max(a0, a1))) * (convex ? 1 : 1);
+      // Tips on the circle Ro about the centre, R below the ball centres: dz = Ro |cos a0 - cos a1|.
+      const dz = Math.abs(2 * Ro * Math.sin((a0 + a1) / 2) * Math.sin((a1 - a0) / 2));
       const eL = Math.abs(f.value.intervalMm - L);
       record('ball on a sphere, closed form (L)', eL);
-      // acos near 1 carries ~1e-16 / phi relative: compare with that allowance.
-      expect(eL).toBeLessThan(1e-9 + (1e-15 * Math.abs(Rs)) / Math.max(phi, 1e-9));
-      expect(Math.abs(f.value.stepDownMm - Math.abs(dz))).toBeLessThan(
-        1e-9 + (1e-15 * Math.abs(Rs)) / Math.max(phi, 1e-9),
-      );
+      record('ball on a sphere, closed form (dz)', Math.abs(f.value.stepDownMm - dz));
+      expect(eL).toBeLessThan(1e-9);
+      expect(Math.abs(f.value.stepDownMm - dz)).toBeLessThan(1e-9);
     }
     expect(n).toBeGreaterThan(150);
   });
