@@ -1,0 +1,238 @@
+/**
+ * The slope sweep (issue 20): for a tool, a scallop height and a pass strategy, the programmed
+ * step (`Lxy` for raster, `dz` for waterline) against the slope from 0 to the largest valid one,
+ * and the scallop that one constant programmed step really leaves at each slope: the picture a
+ * CAM programmer needs before choosing between raster and waterline for a steep area.
+ *
+ * - Raster: the sloped plane at the raster angle psi (slopedPlane.ts).
+ * - Waterline: the sloped plane (the default), or a surface of revolution whose radii Rf and Rc
+ *   are held at every slope (exact for a sphere, Rf = Rc; a local model otherwise).
+ * - The largest valid slope is where h reaches the slope's limit (the shank's, or a flank's, or
+ *   the end of the surface), found by a scan in 0.5 degree steps and bisection; 90 degrees (open:
+ *   a vertical wall leaves no scallop) when h never does. Slopes `largest k / (count - 1)`, the
+ *   last one a hair inside (`1e-9` relative) when the largest is a limit itself.
+ * - The constant step: given, or by default the flat floor's step-over for h,
+ *   `Lxy0 = 2 (R - Rcr + sqrt(2 Rcr h - h^2))` (2R for a flat end), used as `Lxy` (raster) or, for
+ *   waterline, typed as the step-down `dz` (a common practice to compare; on a flat floor a
+ *   step-down means nothing, so the waterline sweep has no step and no cusp at slope 0).
+ */
+import { flankLimits, postureShape } from '../posture';
+import type { ThreeAxisErrorCode } from './errors';
+import { slopedPlaneForward, slopedPlaneInverse, type ThreeAxisPasses } from './slopedPlane';
+import { slopePosture } from './slopePosture';
+import { waterlineForward, waterlineHeightLimitMm, waterlineInverse } from './waterlineRevolution';
+
+/** Input of the slope sweep (mm, degrees). */
+export interface SlopeSweepInput {
+  /** Tool radius R, mm, and corner radius Rcr, mm (0 <= Rcr <= R). */
+  readonly toolRadiusMm: number;
+  readonly cornerRadiusMm: number;
+  /** Scallop height h, mm (at least 1e-9). */
+  readonly hMm: number;
+  readonly passes: ThreeAxisPasses;
+  /** Raster angle psi from the fall line, degrees, 0 to 90 (raster only). */
+  readonly rasterAngleDeg: number;
+  /** Waterline only: the surface of revolution's signed radii, mm (null: straight); default a plane. */
+  readonly feedRadiusMm?: number | null;
+  readonly crossRadiusMm?: number | null;
+  /** The constant programmed step (Lxy or dz), mm; default the flat floor's step-over for h. */
+  readonly programmedStepMm?: number;
+  /** Number of slopes, default 200 (at least 2). */
+  readonly count?: number;
+}
+
+/** One slope of the sweep. */
+export interface SlopeSweepPoint {
+  readonly slopeDeg: number;
+  /** The programmed step that leaves h at this slope (Lxy or dz), mm; null where refused. */
+  readonly stepMm: number | null;
+  /** L along the surface for h, mm; null where refused. */
+  readonly intervalMm: number | null;
+  /** The equivalent posture at the CC point, degrees. */
+  readonly leadDeg: number;
+  readonly tiltDeg: number;
+  /** The largest scallop height at this slope (shank, flank or surface limit), mm. */
+  readonly heightLimitMm: number;
+  /** The cusp the constant programmed step leaves here, mm; null where that step is refused. */
+  readonly cuspAtProgrammedStepMm: number | null;
+  /** Why the constant step has no cusp here (shank, wall, beyond the surface...), or null. */
+  readonly programmedStepRefusal: ThreeAxisErrorCode | null;
+}
+
+/** The sweep. */
+export interface SlopeSweep {
+  readonly points: readonly SlopeSweepPoint[];
+  /** The largest slope at which h is valid, degrees (90 when h never reaches a limit below it). */
+  readonly largestSlopeDeg: number;
+  /** The flat floor's step-over for h (Lxy0), mm. */
+  readonly flatFloorStepMm: number;
+  /** The constant programmed step used, mm (Lxy for raster, dz for waterline). */
+  readonly programmedStepMm: number;
+}
+
+/** The flat floor's step-over (mm) for h: `2 (R - Rcr + sqrt(2 Rcr h - h^2))`, 2R for a flat end or h >= Rcr. */
+export function flatFloorStepMm(toolRadiusMm: number, cornerRadiusMm: number, hMm: number): number {
+  const rb = toolRadiusMm - cornerRadiusMm;
+  if (cornerRadiusMm === 0 || hMm >= cornerRadiusMm) return 2 * toolRadiusMm;
+  return 2 * (rb + Math.sqrt(hMm * (2 * cornerRadiusMm - hMm)));
+}
+
+/** True for waterline on a surface of revolution (a radius given), false for the plane. */
+function onRevolution(input: SlopeSweepInput): boolean {
+  return (
+    input.passes === 'waterline' && ((input.feedRadiusMm ?? null) !== null || (input.crossRadiusMm ?? null) !== null)
+  );
+}
+
+/** The height limit (mm) at a slope, for the sweep's strategy (Infinity: none, a flat end on a flat floor). */
+function heightLimitAt(input: SlopeSweepInput, slopeDeg: number): number {
+  if (onRevolution(input)) return revolutionLimit(input, slopeDeg);
+  const p = slopePosture(slopeDeg, input.passes === 'waterline' ? 90 : input.rasterAngleDeg);
+  const s = postureShape(input.toolRadiusMm, input.cornerRadiusMm, p.leadRad, p.tiltRad);
+  if (s.flatOnPlane && s.rcr === 0) return Number.POSITIVE_INFINITY;
+  return flankLimits(s).limitMm;
+}
+
+function revolutionLimit(input: SlopeSweepInput, slopeDeg: number): number {
+  if (slopeDeg === 0) return Number.POSITIVE_INFINITY;
+  return waterlineHeightLimitMm({
+    toolRadiusMm: input.toolRadiusMm,
+    cornerRadiusMm: input.cornerRadiusMm,
+    slopeDeg,
+    feedRadiusMm: input.feedRadiusMm ?? null,
+    crossRadiusMm: input.crossRadiusMm ?? null,
+  });
+}
+
+/**
+ * The largest slope (degrees, below 90) at which `h < limit`: a scan in 0.5 degree steps for the
+ * last valid one (a bowl's range starts above 0: its next pass would be past the bottom at small
+ * slopes), then bisection up to the first invalid one (90 is never valid: a vertical wall). 0 when
+ * no slope is valid.
+ */
+export function largestValidSlopeDeg(input: SlopeSweepInput): number {
+  const ok = (a: number) => a < 90 && input.hMm < heightLimitAt(input, a);
+  let last = -1;
+  for (let a = input.passes === 'waterline' ? 0.5 : 0; a < 90; a += 0.5) if (ok(a)) last = a;
+  if (last < 0) return 0;
+  let lo = last;
+  let hi = Math.min(90, last + 0.5);
+  for (let i = 0; i < 60 && hi - lo > 1e-12; i++) {
+    const mid = 0.5 * (lo + hi);
+    if (ok(mid)) lo = mid;
+    else hi = mid;
+  }
+  return lo;
+}
+
+/**
+ * The slope (degrees) where raster passes at `rasterAngleDeg` and waterline passes on the plane
+ * program the same step for h (`Lxy` of raster = `dz` of waterline): below it raster steps over
+ * more, above it waterline steps down more. `Lxy` falls and `dz` rises with the slope, so the
+ * crossing is found by bisection; null when they do not cross where both are valid.
+ */
+export function rasterWaterlineCrossingDeg(
+  toolRadiusMm: number,
+  cornerRadiusMm: number,
+  hMm: number,
+  rasterAngleDeg = 0,
+): number | null {
+  const base = { toolRadiusMm, cornerRadiusMm, rasterAngleDeg };
+  const diff = (a: number): number | null => {
+    const r = slopedPlaneForward({ ...base, slopeDeg: a, passes: 'raster' }, hMm);
+    const w = slopedPlaneForward({ ...base, slopeDeg: a, passes: 'waterline' }, hMm);
+    return r.ok && w.ok ? r.value.horizontalStepMm - (w.value.stepDownMm ?? 0) : null;
+  };
+  const top = Math.min(
+    largestValidSlopeDeg({ ...base, hMm, passes: 'raster' }),
+    largestValidSlopeDeg({ ...base, hMm, passes: 'waterline' }),
+  );
+  const dTop = diff(top * (1 - 1e-9));
+  if (dTop === null || dTop > 0) return null;
+  let lo = 1e-9;
+  let hi = top * (1 - 1e-9);
+  for (let i = 0; i < 80 && hi - lo > 1e-12; i++) {
+    const mid = 0.5 * (lo + hi);
+    const d = diff(mid);
+    if (d !== null && d > 0) lo = mid;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/** The sweep (see the module comment). Inputs as the solvers take them; refused slopes carry nulls. */
+export function slopeSweep(input: SlopeSweepInput): SlopeSweep {
+  const count = Math.max(2, Math.round(input.count ?? 200));
+  const floor = flatFloorStepMm(input.toolRadiusMm, input.cornerRadiusMm, input.hMm);
+  const programmed = input.programmedStepMm ?? floor;
+  const largest = largestValidSlopeDeg(input);
+  const points: SlopeSweepPoint[] = [];
+  const revolution = onRevolution(input);
+  for (let i = 0; i < count; i++) {
+    let a = (largest * i) / (count - 1);
+    if (i === count - 1 && a > 0) a *= 1 - 1e-9;
+    points.push(revolution ? revolutionPoint(input, a, programmed) : planePoint(input, a, programmed));
+  }
+  return { points, largestSlopeDeg: largest, flatFloorStepMm: floor, programmedStepMm: programmed };
+}
+
+function planePoint(input: SlopeSweepInput, slopeDeg: number, programmed: number): SlopeSweepPoint {
+  const c = {
+    toolRadiusMm: input.toolRadiusMm,
+    cornerRadiusMm: input.cornerRadiusMm,
+    slopeDeg,
+    passes: input.passes,
+    rasterAngleDeg: input.rasterAngleDeg,
+  };
+  const waterlineFloor = input.passes === 'waterline' && slopeDeg === 0;
+  const posture = slopePosture(slopeDeg, input.passes === 'waterline' ? 90 : input.rasterAngleDeg);
+  const f = waterlineFloor
+    ? slopedPlaneForward({ ...c, passes: 'raster', rasterAngleDeg: 90 }, input.hMm)
+    : slopedPlaneForward(c, input.hMm);
+  const inv = waterlineFloor
+    ? null
+    : slopedPlaneInverse(c, { field: input.passes === 'waterline' ? 'stepDown' : 'horizontalStep', mm: programmed });
+  return {
+    slopeDeg,
+    stepMm: f.ok ? (input.passes === 'waterline' ? (f.value.stepDownMm ?? 0) : f.value.horizontalStepMm) : null,
+    intervalMm: f.ok ? f.value.intervalMm : null,
+    leadDeg: posture.leadDeg,
+    tiltDeg: posture.tiltDeg,
+    heightLimitMm: heightLimitAt(input, slopeDeg),
+    cuspAtProgrammedStepMm: inv?.ok ? inv.value.cuspHeightMm : null,
+    programmedStepRefusal: inv === null || inv.ok ? null : (inv.errors[0]?.code ?? null),
+  };
+}
+
+function revolutionPoint(input: SlopeSweepInput, slopeDeg: number, programmed: number): SlopeSweepPoint {
+  const c = {
+    toolRadiusMm: input.toolRadiusMm,
+    cornerRadiusMm: input.cornerRadiusMm,
+    slopeDeg,
+    feedRadiusMm: input.feedRadiusMm ?? null,
+    crossRadiusMm: input.crossRadiusMm ?? null,
+  };
+  if (slopeDeg === 0)
+    return {
+      slopeDeg,
+      stepMm: 0,
+      intervalMm: null,
+      leadDeg: 0,
+      tiltDeg: 0,
+      heightLimitMm: Number.POSITIVE_INFINITY,
+      cuspAtProgrammedStepMm: null,
+      programmedStepRefusal: 'needs-slope',
+    };
+  const f = waterlineForward(c, input.hMm);
+  const inv = waterlineInverse(c, { field: 'stepDown', mm: programmed });
+  return {
+    slopeDeg,
+    stepMm: f.ok ? f.value.stepDownMm : null,
+    intervalMm: f.ok ? f.value.intervalMm : null,
+    leadDeg: 0,
+    tiltDeg: slopeDeg,
+    heightLimitMm: revolutionLimit(input, slopeDeg),
+    cuspAtProgrammedStepMm: inv.ok ? inv.value.cuspHeightMm : null,
+    programmedStepRefusal: inv.ok ? null : (inv.errors[0]?.code ?? null),
+  };
+}
