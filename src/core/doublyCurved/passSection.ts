@@ -121,6 +121,6 @@ class ChordSection implements PassSection {
     }
     const a = this.zc(x0 + tMax * this.dx, z0 + tMax * this.dz);
     const b = this.zc(x0 - tMax * this.dx, z0 - tMax * this.dz);
-    return a < b ? a : b;
+    return Math.min(a, b);
   }
 }
