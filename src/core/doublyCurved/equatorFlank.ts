@@ -251,10 +251,12 @@ class Flank implements EquatorFlank {
     const k = this.k;
     const scale = this.scale();
     if (!(U > 0)) return scale * this.reachAngle(0, h);
-    // The disks that reach r: [0, uF].
+    // The disks that reach r: [0, uF], the first root of e(u) = h. On a concave equator e is the
+    // radial height of the disk's farthest point from C, largest at the top: search up to it.
+    const uEnd = this.searchEnd();
     this.bottomObj.h = h;
-    const eEnd = this.bottomObj.value(U);
-    const uF = eEnd <= 0 ? U : bracketedRoot(this.bottomObj, 0, U, -h, eEnd);
+    const eEnd = this.bottomObj.value(uEnd);
+    const uF = eEnd <= 0 ? uEnd : bracketedRoot(this.bottomObj, 0, uEnd, -h, eEnd);
     if (!(k > 0)) {
       // A flat end: the flank is the centre curve itself, its point at radius r is the root.
       const cz = this.centre(uF);
@@ -265,8 +267,13 @@ class Flank implements EquatorFlank {
     return scale * maximise(this.reachObj, 0, uF, 4, 1e-10 * uF);
   }
 
+  /** Where the searches along the flank end: the top's disk on a concave equator (past it the flank falls), else the chord range's end. */
+  private searchEnd(): number {
+    return this.mode < 0 ? this.findTop().u : this.end;
+  }
+
   heightAtMm(reachMm: number): number {
-    const U = this.end;
+    const U = this.searchEnd();
     const theta = reachMm / this.scale();
     const k = this.k;
     if (!(U > 0)) return this.rayHeight(0, theta);

@@ -132,9 +132,7 @@ function point(g: ToolGeometry, piece: number, t: number, v: number, out: number
   const s = Math.sin(t);
   for (let i = 0; i < 3; i++) {
     out.push(
-      (g.O[i] as number) +
-        radial * (c * (g.e1[i] as number) + s * (g.e2[i] as number)) +
-        axial * (g.a[i] as number),
+      (g.O[i] as number) + radial * (c * (g.e1[i] as number) + s * (g.e2[i] as number)) + axial * (g.a[i] as number),
     );
   }
 }
