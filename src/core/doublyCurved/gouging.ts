@@ -33,7 +33,7 @@
 import { placeTool } from '../placement';
 import type { ToolInput } from '../validate';
 import { maximise, type Objective } from './search';
-import { MIN_PRINCIPAL_RADIUS_MM, type PrincipalRadii } from './types';
+import { MAX_PRINCIPAL_RADIUS_MM, MIN_PRINCIPAL_RADIUS_MM, type PrincipalRadii } from './types';
 
 /** Largest |curvature| a principal radius can have: 1 / 0.001 mm. */
 const MAX_CURVATURE_PER_MM = 1 / MIN_PRINCIPAL_RADIUS_MM;
@@ -67,11 +67,13 @@ export interface GougingCheck {
 }
 
 function limitOf(kMin: number): RadiusLimit {
-  if (kMin <= -MAX_CURVATURE_PER_MM) return { minCurvaturePerMm: kMin, kind: 'any', radiusMm: null };
+  if (kMin < -MAX_CURVATURE_PER_MM) return { minCurvaturePerMm: kMin, kind: 'any', radiusMm: null };
   if (kMin > MAX_CURVATURE_PER_MM) return { minCurvaturePerMm: kMin, kind: 'none', radiusMm: null };
-  // Beyond 1e12 mm a concave limit is no concave radius at all (rounding of a zero bound).
-  if (kMin < -1e-12) return { minCurvaturePerMm: kMin, kind: 'concave-at-least', radiusMm: -1 / kMin };
-  if (kMin > 1e-12) return { minCurvaturePerMm: kMin, kind: 'convex-at-most', radiusMm: 1 / kMin };
+  // Limits beyond the largest radius accepted (1e6 mm) are no radius of that side at all.
+  if (kMin < -1 / MAX_PRINCIPAL_RADIUS_MM)
+    return { minCurvaturePerMm: kMin, kind: 'concave-at-least', radiusMm: -1 / kMin };
+  if (kMin > 1 / MAX_PRINCIPAL_RADIUS_MM)
+    return { minCurvaturePerMm: kMin, kind: 'convex-at-most', radiusMm: 1 / kMin };
   // kMin = 0: straight passes, every convex radius too; no concave one.
   return { minCurvaturePerMm: 0, kind: 'not-concave', radiusMm: null };
 }
@@ -79,7 +81,7 @@ function limitOf(kMin: number): RadiusLimit {
 const curvature = (radiusMm: number) => (Number.isFinite(radiusMm) ? 1 / radiusMm : 0);
 
 /** The tool's ring, contact and shank, placed once. */
-class ToolGeometry {
+export class ToolGeometry {
   readonly rb: number;
   readonly k: number;
   readonly R: number;
@@ -128,7 +130,7 @@ function centreBound(dx: number, dy: number, dz: number, k: number, kf: number):
 }
 
 /** The ring's bound at offset delta from the contact's ring point. */
-class RingBound implements Objective {
+export class RingBound implements Objective {
   kf = 0;
   constructor(private readonly g: ToolGeometry) {}
   value(delta: number): number {
@@ -157,7 +159,7 @@ class RingBound implements Objective {
 }
 
 /** The feet of l on the chords (Rf > 0): the line O + s g + tau* d of the disk, its bound at s. */
-class FootBound implements Objective {
+export class FootBound implements Objective {
   kf = 0;
   /** The line's point nearest the contact's ball centre, relative to it, and its unit direction. */
   private px = 0;
@@ -221,7 +223,7 @@ class FootBound implements Objective {
  * kf (1/Rf, 0 straight): the largest bound over the ring and the line of feet; +Infinity when some
  * ball reaches below the CC point.
  */
-function endBound(g: ToolGeometry, kf: number, ring: RingBound, foot: FootBound): number {
+export function endBound(g: ToolGeometry, kf: number, ring: RingBound, foot: FootBound): number {
   // Near the contact the bound tends to minus the section's curvature there.
   if (!(g.rb > 0)) return -1 / g.k;
   ring.kf = kf;
@@ -238,7 +240,7 @@ function endBound(g: ToolGeometry, kf: number, ring: RingBound, foot: FootBound)
 }
 
 /** The shank's bound: its points (radius R, heights s >= 0 along the axis) up to a height cap. */
-class ShankBound {
+export class ShankBound {
   constructor(private readonly g: ToolGeometry) {}
   /** `-2 z / (y^2 + z^2)` at ring angle t and height s on a feed circle of curvature kf; -Infinity above the cap. */
   at(t: number, s: number, kf: number, cap: number): number {
@@ -248,6 +250,7 @@ class ShankBound {
     const x = g.O[0] + g.R * (st * g.v1[0] + ct * g.v2[0]) + s * g.a[0];
     const y = g.O[1] + g.R * (st * g.v1[1] + ct * g.v2[1]) + s * g.a[1];
     const z = g.O[2] + g.R * (st * g.v1[2] + ct * g.v2[2]) + s * g.a[2];
+    // Up to the nearest concave axis: the point's height and its image's (a concave feed circle lowers it).
     if (z > cap) return Number.NEGATIVE_INFINITY;
     let zc = z;
     if (kf !== 0) {
@@ -255,75 +258,65 @@ class ShankBound {
       const q = z + rf;
       zc = (Math.sign(rf) * (x * x + z * (z + 2 * rf))) / (Math.sqrt(x * x + q * q) + Math.abs(rf));
     }
+    if (zc > cap) return Number.NEGATIVE_INFINITY;
     const n = y * y + zc * zc;
-    return n > 0 ? (-2 * zc) / n : Number.NEGATIVE_INFINITY;
+    // Next to the CC point (a flat end's shank starts on the ring) the end's own bound, computed free
+    // of cancellation, decides; rounding would spoil this one there.
+    if (!(n > 1e-6 * g.R * g.R)) return Number.NEGATIVE_INFINITY;
+    return (-2 * zc) / n;
   }
 
-  /** Largest bound over the shank up to `cap` (mm above the CC point): a grid, then coordinate refinement. */
+  /**
+   * Largest bound over the shank up to `cap` (mm above the CC point): along each generator (ring
+   * angle t) the heights s from 0 to where the point or its image reaches the cap (bisection), a
+   * scan and Brent's method in s; over t a scan and Brent's method of that maximum.
+   */
   bound(kf: number, cap: number): number {
     const g = this.g;
     if (!Number.isFinite(cap) || !(g.a[2] > 0)) return Number.NEGATIVE_INFINITY;
-    // Heights along the axis that can stay below the cap: z = O_z + R r_z + s a_z <= cap.
-    const sMax = Math.max(0, (cap - g.O[2] + g.R) / g.a[2]);
-    if (!(sMax > 0)) return Number.NEGATIVE_INFINITY;
-    const nt = 96;
-    const ns = 48;
-    let best = Number.NEGATIVE_INFINITY;
-    let bt = 0;
-    let bs = 0;
-    for (let i = 0; i < nt; i++) {
-      const t = (2 * Math.PI * i) / nt;
-      for (let j = 0; j <= ns; j++) {
-        const s = (sMax * j) / ns;
-        const v = this.at(t, s, kf, cap);
-        if (v > best) {
-          best = v;
-          bt = t;
-          bs = s;
-        }
-      }
+    this.kf = kf;
+    this.cap = cap;
+    return maximise(this.outer, 0, 2 * Math.PI, 120, 1e-10);
+  }
+
+  private kf = 0;
+  private cap = 0;
+  private t = 0;
+  /** The bound along the generator at t (its best height). */
+  private readonly inner: Objective = { value: (s: number) => this.at(this.t, s, this.kf, this.cap) };
+  private readonly outer: Objective = { value: (t: number) => this.generator(t) };
+
+  /** Height of the point at (t, s) or of its image, whichever is higher, above the CC point. */
+  private height(t: number, s: number): number {
+    const g = this.g;
+    const st = Math.sin(t);
+    const ct = Math.cos(t);
+    const x = g.O[0] + g.R * (st * g.v1[0] + ct * g.v2[0]) + s * g.a[0];
+    const z = g.O[2] + g.R * (st * g.v1[2] + ct * g.v2[2]) + s * g.a[2];
+    if (this.kf === 0) return z;
+    const rf = 1 / this.kf;
+    const q = z + rf;
+    const zc = (Math.sign(rf) * (x * x + z * (z + 2 * rf))) / (Math.sqrt(x * x + q * q) + Math.abs(rf));
+    return Math.max(z, zc);
+  }
+
+  private generator(t: number): number {
+    const g = this.g;
+    this.t = t;
+    if (this.height(t, 0) > this.cap) return Number.NEGATIVE_INFINITY;
+    // The heights below the cap: [0, sMax], sMax by doubling then bisection (both heights grow with s).
+    let lo = 0;
+    let hi = Math.max(g.R, this.cap);
+    for (let i = 0; i < 60 && this.height(t, hi) <= this.cap; i++) {
+      lo = hi;
+      hi *= 2;
     }
-    if (!Number.isFinite(best)) return best;
-    // Refine: alternate golden-section searches in t and s, shrinking the windows.
-    let wt = (2 * Math.PI) / nt;
-    let ws = sMax / ns;
-    const gr = 0.381966011250105;
-    for (let round = 0; round < 6; round++) {
-      for (const axis of [0, 1]) {
-        let lo = axis === 0 ? bt - wt : Math.max(0, bs - ws);
-        let hi = axis === 0 ? bt + wt : Math.min(sMax, bs + ws);
-        const f = (u: number) => (axis === 0 ? this.at(u, bs, kf, cap) : this.at(bt, u, kf, cap));
-        let c = lo + gr * (hi - lo);
-        let e = hi - gr * (hi - lo);
-        let fc = f(c);
-        let fe = f(e);
-        for (let i = 0; i < 60; i++) {
-          if (fc >= fe) {
-            hi = e;
-            e = c;
-            fe = fc;
-            c = lo + gr * (hi - lo);
-            fc = f(c);
-          } else {
-            lo = c;
-            c = e;
-            fc = fe;
-            e = hi - gr * (hi - lo);
-            fe = f(e);
-          }
-        }
-        const x = fc >= fe ? c : e;
-        const v = Math.max(fc, fe);
-        if (v > best) {
-          best = v;
-          if (axis === 0) bt = x;
-          else bs = x;
-        }
-      }
-      wt /= 4;
-      ws /= 4;
+    for (let i = 0; i < 100 && hi - lo > 1e-13 * hi; i++) {
+      const m = 0.5 * (lo + hi);
+      if (this.height(t, m) <= this.cap) lo = m;
+      else hi = m;
     }
-    return best;
+    return maximise(this.inner, 0, lo, 16, 1e-10 * Math.max(lo, g.R));
   }
 }
 
@@ -335,76 +328,128 @@ function capOf(kf: number, kc: number): number {
   return cap;
 }
 
-/**
- * Gouging at a doubly curved point and, for each principal radius with the other held, the limit
- * that avoids it (see the module comment). Radii signed (mm, |R| >= 0.001, or infinite).
- * @param tool validated tool and posture.
- */
-export function doublyCurvedGouging(tool: ToolInput, radii: PrincipalRadii): GougingCheck {
-  const g = new ToolGeometry(tool);
-  const ring = new RingBound(g);
-  const foot = new FootBound(g);
-  const shank = new ShankBound(g);
-  const kf = curvature(radii.feedRadiusMm);
-  const kc = curvature(radii.crossRadiusMm);
-  const end = (f: number) => endBound(g, f, ring, foot);
-  // Does (f, c) pass? A small tolerance keeps the CC point's own disk (bound = -curvature) out of it.
-  const passes = (f: number, c: number, endF: number) => {
-    if (!(c >= endF - 1e-12 * Math.max(1, Math.abs(endF)))) return false;
-    const cap = capOf(f, c);
-    return !(shank.bound(f, cap) > c + 1e-12);
-  };
-  const endHere = end(kf);
-  const gouges = !passes(kf, kc, endHere);
-  // Cross curvature, feed held: the end's bound, raised by the shank's where it binds (bisection: the
-  // shank's cap depends on Rc when Rc is the nearest concave axis).
-  let cMin = endHere;
-  if (Number.isFinite(cMin) && cMin <= MAX_CURVATURE_PER_MM) {
-    const lo0 = Math.max(cMin, -MAX_CURVATURE_PER_MM);
-    if (!passes(kf, lo0, endHere)) {
-      if (!passes(kf, MAX_CURVATURE_PER_MM, endHere)) cMin = Number.POSITIVE_INFINITY;
-      else cMin = bisect((c) => passes(kf, c, endHere), lo0, MAX_CURVATURE_PER_MM);
-    }
+/** The predicate of one point (Rf, Rc): the tool end's bound and the shank's, prepared once. */
+class Checker {
+  private readonly g: ToolGeometry;
+  private readonly ring: RingBound;
+  private readonly foot: FootBound;
+  private readonly shank: ShankBound;
+  private endKf = Number.NaN;
+  private endValue = 0;
+
+  constructor(tool: ToolInput) {
+    this.g = new ToolGeometry(tool);
+    this.ring = new RingBound(this.g);
+    this.foot = new FootBound(this.g);
+    this.shank = new ShankBound(this.g);
   }
-  // Feed curvature, cross held: bisection on the predicate (monotone: see the module comment).
-  const feedPasses = (f: number) => passes(f, kc, end(f));
-  let fMin: number;
-  if (feedPasses(-MAX_CURVATURE_PER_MM)) fMin = Number.NEGATIVE_INFINITY;
-  else if (!feedPasses(MAX_CURVATURE_PER_MM)) fMin = Number.POSITIVE_INFINITY;
-  else fMin = bisect(feedPasses, -MAX_CURVATURE_PER_MM, MAX_CURVATURE_PER_MM);
-  return { gouges, feed: limitOf(fMin), cross: limitOf(cMin) };
+
+  /** The end's bound on the cross curvature for a feed curvature (the last one kept). */
+  end(kf: number): number {
+    if (kf !== this.endKf) {
+      this.endValue = endBound(this.g, kf, this.ring, this.foot);
+      this.endKf = kf;
+    }
+    return this.endValue;
+  }
+
+  /** True when the curvatures (kf, kc) leave the surface untouched but at the CC point. */
+  passes(kf: number, kc: number): boolean {
+    const endF = this.end(kf);
+    // A relative tolerance of 1e-12 keeps the CC point's own curvature limit (bound = -curvature) in.
+    if (!(kc >= endF - 1e-12 * Math.max(1, Math.abs(endF)))) return false;
+    return !(this.shank.bound(kf, capOf(kf, kc)) > kc + 1e-12 * Math.max(1, Math.abs(kc)));
+  }
 }
 
 /**
- * The boundary of a monotone predicate on [lo, hi] (false at lo, true at hi), bisected in the
- * radius where it is concave or convex (so that the limit radius keeps 1e-12 of its digits), to
- * the last bits.
+ * True when the tool gouges the doubly curved point (see the module comment): one evaluation of the
+ * predicate, a few milliseconds. Radii signed (mm, |R| >= 0.001, or infinite).
  */
-function bisect(ok: (k: number) => boolean, lo: number, hi: number): number {
-  // Does straight (0) pass? Then the boundary is concave: bisect on the radius 1/|k|.
-  const zeroOk = lo < 0 && hi > 0 ? ok(0) : hi <= 0;
-  if (lo < 0 && zeroOk) {
-    // Concave radii from 1/|lo| (fails) to infinity (passes).
-    let a = -1 / lo;
-    let b = Number.POSITIVE_INFINITY;
-    for (let i = 0; i < 200; i++) {
-      const m = Number.isFinite(b) ? 0.5 * (a + b) : 2 * a;
-      if (m === a || m === b) break;
-      if (ok(-1 / m)) b = m;
-      else a = m;
-      if (Number.isFinite(b) && b - a <= 1e-13 * b) break;
+export function doublyCurvedGouges(tool: ToolInput, radii: PrincipalRadii): boolean {
+  return !new Checker(tool).passes(curvature(radii.feedRadiusMm), curvature(radii.crossRadiusMm));
+}
+
+/**
+ * Gouging at a doubly curved point and, for each principal radius with the other held, the limit
+ * that avoids it (see the module comment): from the given curvature the search walks towards the
+ * more convex side until the predicate passes (or, when it passes, towards the concave side until it
+ * fails) over radii from 0.001 mm to 1e6 mm doubling, then bisects the radius to 1e-13 of itself.
+ * So the limit is the boundary nearest the given radius on that side. Radii signed (mm, |R| >=
+ * 0.001, or infinite). Tens of predicate evaluations: milliseconds to a few hundred.
+ * @param tool validated tool and posture.
+ */
+export function doublyCurvedGouging(tool: ToolInput, radii: PrincipalRadii): GougingCheck {
+  const c = new Checker(tool);
+  const kf = curvature(radii.feedRadiusMm);
+  const kc = curvature(radii.crossRadiusMm);
+  const gouges = !c.passes(kf, kc);
+  const cMin = boundary((k) => c.passes(kf, k), kc, !gouges);
+  const fMin = boundary((k) => c.passes(k, kc), kf, !gouges);
+  return { gouges, feed: limitOf(fMin), cross: limitOf(cMin) };
+}
+
+/** Curvatures from -1000 to 1000 per mm: radii 0.001 mm to 1e6 mm doubling, both signs, and 0. */
+const GRID: readonly number[] = (() => {
+  const radii: number[] = [];
+  for (let r = MIN_PRINCIPAL_RADIUS_MM; r <= MAX_PRINCIPAL_RADIUS_MM; r *= 2) radii.push(r);
+  radii.push(MAX_PRINCIPAL_RADIUS_MM);
+  const k = [...radii.map((r) => -1 / r), 0, ...radii.map((r) => 1 / r)];
+  return k.sort((a, b) => a - b);
+})();
+
+/**
+ * The smallest passing curvature of the run of passing curvatures next to k0 (when k0 passes: going
+ * down to the first failure; else going up to the first pass). -Infinity when nothing fails below,
+ * +Infinity when nothing passes above.
+ */
+function boundary(ok: (k: number) => boolean, k0: number, passesHere: boolean): number {
+  if (passesHere) {
+    let pass = k0;
+    for (let i = GRID.length - 1; i >= 0; i--) {
+      const k = GRID[i] as number;
+      if (k >= pass) continue;
+      if (!ok(k)) return bisectCurvature(ok, k, pass);
+      pass = k;
     }
-    return -1 / b;
+    return Number.NEGATIVE_INFINITY;
   }
-  // Convex radii from 1/hi (passes) to 1/max(lo, 0) (fails).
-  let a = 1 / hi;
-  let b = lo > 0 ? 1 / lo : Number.POSITIVE_INFINITY;
-  for (let i = 0; i < 200; i++) {
-    const m = Number.isFinite(b) ? 0.5 * (a + b) : 2 * a;
-    if (m === a || m === b) break;
-    if (ok(1 / m)) a = m;
-    else b = m;
-    if (Number.isFinite(b) && b - a <= 1e-13 * b) break;
+  let fail = k0;
+  for (const k of GRID) {
+    if (k <= fail) continue;
+    if (ok(k)) return bisectCurvature(ok, fail, k);
+    fail = k;
   }
-  return 1 / a;
+  return Number.POSITIVE_INFINITY;
+}
+
+/**
+ * The boundary between a failing curvature `a` and a passing one `b > a`, bisected in the radius on
+ * its side of straight (so the limit radius keeps its digits), to 1e-13 of the radius.
+ */
+function bisectCurvature(ok: (k: number) => boolean, a: number, b: number): number {
+  if (a < 0 && b > 0) {
+    if (ok(0)) b = 0;
+    else a = 0;
+  }
+  if (b <= 0) {
+    // Concave: radii from -1/a (fails) to -1/b (passes; infinite at b = 0, capped at 1e12 mm).
+    let lo = -1 / a;
+    let hi = b < 0 ? -1 / b : 1e12;
+    for (let i = 0; i < 200 && hi - lo > 1e-13 * hi; i++) {
+      const m = hi / lo > 4 ? Math.sqrt(lo * hi) : 0.5 * (lo + hi);
+      if (ok(-1 / m)) hi = m;
+      else lo = m;
+    }
+    return -1 / hi;
+  }
+  // Convex: radii from 1/b (passes) to 1/a (fails; infinite at a = 0).
+  let lo = 1 / b;
+  let hi = a > 0 ? 1 / a : 1e12;
+  for (let i = 0; i < 200 && hi - lo > 1e-13 * hi; i++) {
+    const m = hi / lo > 4 ? Math.sqrt(lo * hi) : 0.5 * (lo + hi);
+    if (ok(1 / m)) lo = m;
+    else hi = m;
+  }
+  return 1 / lo;
 }

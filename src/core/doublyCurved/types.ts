@@ -14,6 +14,12 @@ import type { PassPattern, ToolInput } from '../validate';
  */
 export const MIN_PRINCIPAL_RADIUS_MM = 0.001;
 
+/**
+ * Largest |radius| that is not straight, mm: as validate.ts's MAX_SURFACE_RADIUS_MM for cylinders
+ * (beyond it the plane answers to 1e-9 mm). Gouging limits beyond it mean no radius of that side.
+ */
+export const MAX_PRINCIPAL_RADIUS_MM = 1e6;
+
 /** The two signed principal radii of the design surface at the CC point. */
 export interface PrincipalRadii {
   /**

@@ -417,3 +417,50 @@ export function bruteForceDoublyCurved(
     lowestAwayFromContactMm: lowestAway,
   };
 }
+
+/**
+ * Gouging by brute force: the lowest radial height (mm) of one pass's section in X = 0 (the sampled
+ * tool carried along the feed circle as above), over its samples farther than `excludeMm` (arc
+ * length along the equator) from the CC point. The shank is sampled up to `shankLengthMm` and only
+ * where its points lie at most `capMm` above the CC point (the nearest concave axis's height), on
+ * the tool and in the plane X = 0.
+ * Negative: the swept tool reaches inside the surface. A sample's height is exact but for the
+ * sweep's sagitta (returned), so a value below minus the sagitta proves gouging, and the true lowest
+ * value lies within the sampling's reach of it.
+ */
+export function bruteForceLowestRadialHeight(
+  tool: { R: number; Rcr: number; leadDeg: number; tiltDeg: number },
+  rf: number,
+  rc: number,
+  options: { spacingMm: number; excludeMm: number; shankLengthMm: number; capMm: number },
+): { lowestMm: number; sagittaMm: number } {
+  const g = toolGeometry(tool.R, tool.Rcr, tool.leadDeg, tool.tiltDeg);
+  const smp = sampleBoxes(g, wholeTool(tool.R - tool.Rcr, options.shankLengthMm), options.spacingMm);
+  const keep: number[] = [];
+  const isShank: boolean[] = [];
+  for (let i = 0; i < smp.piece.length; i++) {
+    if (smp.piece[i] === 2 && (smp.xyz[3 * i + 2] as number) > options.capMm) continue;
+    keep.push(smp.xyz[3 * i] as number, smp.xyz[3 * i + 1] as number, smp.xyz[3 * i + 2] as number);
+    isShank.push(smp.piece[i] === 2);
+  }
+  const swept = sweepPass(Float64Array.from(keep), rf, options.spacingMm);
+  const finiteRc = Number.isFinite(rc);
+  const abs = Math.abs(rc);
+  let lowest = Number.POSITIVE_INFINITY;
+  for (let j = 0; j < swept.yz.length; j += 2) {
+    const y = swept.yz[j] as number;
+    const z = swept.yz[j + 1] as number;
+    // The shank counts up to the cap at its place on the tool and in the plane X = 0.
+    if (isShank[j / 2] && z > options.capMm) continue;
+    let arc = y;
+    let H = z;
+    if (finiteRc) {
+      const q = z + rc;
+      const dist = Math.hypot(y, q);
+      arc = abs * Math.atan2(y, rc > 0 ? q : -q);
+      H = rc > 0 ? dist - abs : abs - dist;
+    }
+    if (Math.abs(arc) > options.excludeMm && H < lowest) lowest = H;
+  }
+  return { lowestMm: lowest, sagittaMm: swept.sagitta };
+}
