@@ -276,7 +276,7 @@ export class ShankBound {
     if (!Number.isFinite(cap) || !(g.a[2] > 0)) return Number.NEGATIVE_INFINITY;
     this.kf = kf;
     this.cap = cap;
-    return maximise(this.outer, 0, 2 * Math.PI, 120, 1e-10);
+    return maximise(this.outer, 0, 2 * Math.PI, 72, 1e-10);
   }
 
   private kf = 0;
@@ -311,12 +311,12 @@ export class ShankBound {
       lo = hi;
       hi *= 2;
     }
-    for (let i = 0; i < 100 && hi - lo > 1e-13 * hi; i++) {
+    for (let i = 0; i < 60 && hi - lo > 1e-13 * hi; i++) {
       const m = 0.5 * (lo + hi);
       if (this.height(t, m) <= this.cap) lo = m;
       else hi = m;
     }
-    return maximise(this.inner, 0, lo, 16, 1e-10 * Math.max(lo, g.R));
+    return maximise(this.inner, 0, lo, 8, 1e-10 * Math.max(lo, g.R));
   }
 }
 
@@ -358,7 +358,21 @@ class Checker {
     const endF = this.end(kf);
     // A relative tolerance of 1e-12 keeps the CC point's own curvature limit (bound = -curvature) in.
     if (!(kc >= endF - 1e-12 * Math.max(1, Math.abs(endF)))) return false;
-    return !(this.shank.bound(kf, capOf(kf, kc)) > kc + 1e-12 * Math.max(1, Math.abs(kc)));
+    return !(this.shankBound(kf, capOf(kf, kc)) > kc + 1e-12 * Math.max(1, Math.abs(kc)));
+  }
+
+  private readonly shankCache = new Map<string, number>();
+
+  /** The shank's bound, kept per feed curvature and cap (a search over the shank costs milliseconds). */
+  private shankBound(kf: number, cap: number): number {
+    if (!Number.isFinite(cap)) return Number.NEGATIVE_INFINITY;
+    const key = `${kf} ${cap}`;
+    let v = this.shankCache.get(key);
+    if (v === undefined) {
+      v = this.shank.bound(kf, cap);
+      this.shankCache.set(key, v);
+    }
+    return v;
   }
 }
 
@@ -384,9 +398,25 @@ export function doublyCurvedGouging(tool: ToolInput, radii: PrincipalRadii): Gou
   const kf = curvature(radii.feedRadiusMm);
   const kc = curvature(radii.crossRadiusMm);
   const gouges = !c.passes(kf, kc);
-  const cMin = boundary((k) => c.passes(kf, k), kc, !gouges);
-  const fMin = boundary((k) => c.passes(k, kc), kf, !gouges);
-  return { gouges, feed: limitOf(fMin), cross: limitOf(cMin) };
+  return {
+    gouges,
+    feed: limitOf(boundary((k) => c.passes(k, kc), kf, !gouges)),
+    cross: limitOf(boundary((k) => c.passes(kf, k), kc, !gouges)),
+  };
+}
+
+/**
+ * The limit of one principal radius, the other held (one of the two searches of
+ * {@link doublyCurvedGouging}).
+ * @param which `feed` (Rf) or `cross` (Rc).
+ */
+export function doublyCurvedRadiusLimit(tool: ToolInput, radii: PrincipalRadii, which: 'feed' | 'cross'): RadiusLimit {
+  const c = new Checker(tool);
+  const kf = curvature(radii.feedRadiusMm);
+  const kc = curvature(radii.crossRadiusMm);
+  const ok = c.passes(kf, kc);
+  if (which === 'feed') return limitOf(boundary((k) => c.passes(k, kc), kf, ok));
+  return limitOf(boundary((k) => c.passes(kf, k), kc, ok));
 }
 
 /** Curvatures from -1000 to 1000 per mm: radii 0.001 mm to 1e6 mm doubling, both signs, and 0. */

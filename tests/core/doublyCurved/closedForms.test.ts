@@ -4,7 +4,7 @@
  * tilt mirrored, convex below plane below concave, inverse after forward.
  */
 import { describe, expect, it } from 'vitest';
-import { doublyCurvedGouging } from '../../../src/core/doublyCurved/gouging';
+import { doublyCurvedGouges } from '../../../src/core/doublyCurved/gouging';
 import {
   doublyCurvedForward,
   doublyCurvedIntervalMm,
@@ -100,7 +100,7 @@ describe('doubly curved point: symmetry, ordering and round trips', () => {
         const m = { ...t, tiltAngleDeg: -t.tiltAngleDeg };
         const rf = (rand() < 0.5 ? 1 : -1) * R * (15 + 30 * rand());
         const rc = (rand() < 0.5 ? 1 : -1) * R * (15 + 30 * rand());
-        if (doublyCurvedGouging(t, { feedRadiusMm: rf, crossRadiusMm: rc }).gouges) continue;
+        if (doublyCurvedGouges(t, { feedRadiusMm: rf, crossRadiusMm: rc })) continue;
         const h = 0.3 * doublyCurvedLimits({ ...t, feedRadiusMm: rf, crossRadiusMm: rc }).limitMm;
         for (const pattern of ['one-way', 'zigzag'] as const) {
           const a = fwd(t, rf, rc, h, pattern);
@@ -130,8 +130,7 @@ describe('doubly curved point: symmetry, ordering and round trips', () => {
         for (const which of ['feed', 'cross'] as const) {
           const radii = (r: number) => (which === 'feed' ? { rf: r, rc: other } : { rf: other, rc: r });
           const all = [mag, I, -mag].map(radii);
-          if (all.some(({ rf, rc }) => doublyCurvedGouging(t, { feedRadiusMm: rf, crossRadiusMm: rc }).gouges))
-            continue;
+          if (all.some(({ rf, rc }) => doublyCurvedGouges(t, { feedRadiusMm: rf, crossRadiusMm: rc }))) continue;
           const limit = Math.min(
             ...all.map(({ rf, rc }) => doublyCurvedLimits({ ...t, feedRadiusMm: rf, crossRadiusMm: rc }).limitMm),
           );
@@ -157,7 +156,7 @@ describe('doubly curved point: symmetry, ordering and round trips', () => {
         const t = tool(R, R * rand(), 40 * rand(), 60 * rand() - 30);
         const rf = (rand() < 0.5 ? 1 : -1) * R * (15 + 30 * rand());
         const rc = rand() < 0.2 ? rf : (rand() < 0.5 ? 1 : -1) * R * (15 + 30 * rand());
-        if (doublyCurvedGouging(t, { feedRadiusMm: rf, crossRadiusMm: rc }).gouges) continue;
+        if (doublyCurvedGouges(t, { feedRadiusMm: rf, crossRadiusMm: rc })) continue;
         const limit = doublyCurvedLimits({ ...t, feedRadiusMm: rf, crossRadiusMm: rc }).limitMm;
         for (const h of [limit * 1e-5, limit * 0.2, limit * 0.7]) {
           for (const pattern of ['one-way', 'zigzag'] as const) {

@@ -137,8 +137,8 @@ function point(g: ToolGeometry, piece: number, t: number, v: number, out: number
   }
 }
 
-/** Samples boxes at a spacing (mm along the surface). */
-function sampleBoxes(g: ToolGeometry, boxes: readonly Box[], ds: number): Samples {
+/** Samples boxes at a spacing (mm along the surface; `shankAxialMm` along the shank's generators). */
+function sampleBoxes(g: ToolGeometry, boxes: readonly Box[], ds: number, shankAxialMm = ds): Samples {
   const xyz: number[] = [];
   const piece: number[] = [];
   const ts: number[] = [];
@@ -155,7 +155,7 @@ function sampleBoxes(g: ToolGeometry, boxes: readonly Box[], ds: number): Sample
     if (b.piece === 0 && !(g.rcr > 0)) continue;
     if (b.piece === 1 && !(g.rb > 0)) continue;
     const nT = Math.max(1, Math.ceil(((b.t1 - b.t0) * tScale) / ds));
-    const nV = Math.max(1, Math.ceil(((b.v1 - b.v0) * vScale) / ds));
+    const nV = Math.max(1, Math.ceil(((b.v1 - b.v0) * vScale) / (b.piece === 2 ? shankAxialMm : ds)));
     const dt = (b.t1 - b.t0) / nT;
     const dv = (b.v1 - b.v0) / nV;
     const st = steps[b.piece] as [number, number];
@@ -432,10 +432,22 @@ export function bruteForceLowestRadialHeight(
   tool: { R: number; Rcr: number; leadDeg: number; tiltDeg: number },
   rf: number,
   rc: number,
-  options: { spacingMm: number; excludeMm: number; shankLengthMm: number; capMm: number },
+  options: {
+    spacingMm: number;
+    excludeMm: number;
+    shankLengthMm: number;
+    capMm: number;
+    /** Spacing along the shank's straight generators, mm (default the spacing). */
+    shankAxialMm?: number;
+  },
 ): { lowestMm: number; sagittaMm: number } {
   const g = toolGeometry(tool.R, tool.Rcr, tool.leadDeg, tool.tiltDeg);
-  const smp = sampleBoxes(g, wholeTool(tool.R - tool.Rcr, options.shankLengthMm), options.spacingMm);
+  const smp = sampleBoxes(
+    g,
+    wholeTool(tool.R - tool.Rcr, options.shankLengthMm),
+    options.spacingMm,
+    options.shankAxialMm ?? options.spacingMm,
+  );
   const keep: number[] = [];
   const isShank: boolean[] = [];
   for (let i = 0; i < smp.piece.length; i++) {
