@@ -18,6 +18,7 @@ import { contactOffsetMm, shapeOfTool } from '../posture';
 import type { ToolInput } from '../validate';
 import { type EquatorFlank, equatorFlank } from './equatorFlank';
 import { passSection } from './passSection';
+import { shankCutHeights } from './shankLimit';
 import type {
   DoublyCurvedForward,
   DoublyCurvedForwardInput,
@@ -36,7 +37,7 @@ export interface DoublyCurvedSolver {
   readonly contactOffsetMm: number;
   /** True without tilt: the flanks are mirror images. */
   readonly symmetric: boolean;
-  /** The flank limits (radial, mm): the tops; the shank where shank.ts finds it cutting. */
+  /** The flank limits (radial, mm): the tops, and the shank where it starts to form a flank (shankLimit.ts). */
   limits(): DoublyCurvedLimits;
 }
 
@@ -56,7 +57,10 @@ export function doublyCurvedSolver(tool: ToolInput, radii: PrincipalRadii): Doub
     symmetric,
     contactOffsetMm: contactOffsetMm(shapeOfTool(tool)),
     limits() {
-      if (cached === null) cached = limitsOf(right.topMm(), left.topMm(), null, null);
+      if (cached === null) {
+        const shank = shankCutHeights(tool, radii);
+        cached = limitsOf(right.topMm(), left.topMm(), shank.rightMm, shank.leftMm);
+      }
       return cached;
     },
   };
