@@ -79,7 +79,9 @@ export function bruteCases(seed: number, count: number, offset = 0): BruteCase[]
       const tool: ToolInput = {
         toolRadiusMm: R,
         cornerRadiusMm: Rcr,
-        leadAngleDeg: 3 + 30 * rand(),
+        // Cases 2, 8, 14, ... (bull-nose on a saddle +-, the plane, a convex sphere) without lead: the
+        // flat bottom then meets a convex feed circle inside its chords (the foot of l).
+        leadAngleDeg: i % 6 === 2 ? 0 : 3 + 30 * rand(),
         tiltAngleDeg: tilted ? (rand() < 0.5 ? 1 : -1) * (5 + 30 * rand()) : 0,
       };
       const [rf, rc] = radii(family, R, rand);
@@ -95,8 +97,12 @@ export function bruteCases(seed: number, count: number, offset = 0): BruteCase[]
   return out;
 }
 
-/** The solver's cusp between pass 0 and pass 1 (zigzag: the right-flank cusp) and the brute force's. */
-export function compare(c: BruteCase, levels: number): { exactMm: number; bruteMm: number; boundMm: number } {
+/**
+ * The solver's cusps against the brute force's: between pass 0 and pass 1, and for zigzag also the
+ * other cusp (pass 0 and 1 meet with two right flanks; the same passes of the tool mirrored in Y meet
+ * with the original's two left flanks).
+ */
+export function compare(c: BruteCase, levels: number): Array<{ exactMm: number; bruteMm: number; boundMm: number }> {
   const f = doublyCurvedForward({
     ...c.tool,
     pattern: c.pattern,
@@ -104,17 +110,24 @@ export function compare(c: BruteCase, levels: number): { exactMm: number; bruteM
     crossRadiusMm: c.rc,
     scallopHeightMm: c.h,
   });
-  // Zigzag: pass 1 is mirrored, so passes 0 and 1 meet with two right flanks: at h when the right
-  // flank is the narrower, else at the other (lower) cusp.
-  const exactMm =
-    c.pattern === 'zigzag' && f.halfWidthRightMm > f.halfWidthLeftMm ? (f.otherCuspHeightMm as number) : c.h;
-  const b = bruteForceDoublyCurved(
-    { R: c.tool.toolRadiusMm, Rcr: c.tool.cornerRadiusMm, leadDeg: c.tool.leadAngleDeg, tiltDeg: c.tool.tiltAngleDeg },
-    c.pattern,
-    c.rf,
-    c.rc,
-    f.intervalMm,
-    { spacingMm: c.tool.toolRadiusMm / 60, levels },
-  );
-  return { exactMm, bruteMm: b.cuspHeightMm, boundMm: b.boundMm };
+  const other = f.otherCuspHeightMm as number;
+  // Zigzag: the narrower flank's cusp is at h, the wider one's at the other (lower) height.
+  const cusps: Array<[number, number]> =
+    c.pattern === 'zigzag'
+      ? [
+          [c.tool.tiltAngleDeg, f.halfWidthRightMm > f.halfWidthLeftMm ? other : c.h],
+          [-c.tool.tiltAngleDeg, f.halfWidthLeftMm > f.halfWidthRightMm ? other : c.h],
+        ]
+      : [[c.tool.tiltAngleDeg, c.h]];
+  return cusps.map(([tilt, exactMm]) => {
+    const b = bruteForceDoublyCurved(
+      { R: c.tool.toolRadiusMm, Rcr: c.tool.cornerRadiusMm, leadDeg: c.tool.leadAngleDeg, tiltDeg: tilt },
+      c.pattern,
+      c.rf,
+      c.rc,
+      f.intervalMm,
+      { spacingMm: c.tool.toolRadiusMm / 60, levels },
+    );
+    return { exactMm, bruteMm: b.cuspHeightMm, boundMm: b.boundMm };
+  });
 }

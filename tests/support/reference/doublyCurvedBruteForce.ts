@@ -23,7 +23,8 @@
  * Refinement: level 0 samples the whole tool at `spacingMm`; each further level samples, for each
  * pass, only the boxes of tool parameters (ring angle, and corner angle, bottom radius or shank
  * height) of the samples that formed the boundary within a few bins of the previous level's cusp,
- * grown by two of its steps, `refine` times finer, with bins `refine` times narrower around the cusp.
+ * grown by half their size and two of its steps each way, `refine` times finer, with bins `refine`
+ * times narrower around the cusp.
  *
  * Bound: a bin's value can exceed the true boundary's lowest value in it by the samples' spacing
  * along the boundary times its slope, and fall below the boundary at the bin's centre by half the
@@ -385,12 +386,17 @@ export function bruteForceDoublyCurved(
         const [dt, dv] = smp.steps[p] as [number, number];
         const vMax = p === 0 ? 0 : p === 1 ? tool.R - tool.Rcr : shank;
         const vMin = p === 0 ? -0.5 * Math.PI : 0;
+        // Grown by their own size and two steps each way: where the fold is flat in a parameter (a
+        // flat bottom lying flat: every ring angle near the widest one gives nearly the same boundary)
+        // the samples that won their bins can sit on one side of it.
+        const wt = 0.5 * (r[1] - r[0]) + 2 * dt;
+        const wv = 0.5 * (r[3] - r[2]) + 2 * dv;
         boxes[k].push({
           piece: p as 0 | 1 | 2,
-          t0: r[0] - 2 * dt,
-          t1: r[1] + 2 * dt,
-          v0: Math.max(vMin, r[2] - 2 * dv),
-          v1: Math.min(vMax, r[3] + 2 * dv),
+          t0: r[0] - wt,
+          t1: r[1] + wt,
+          v0: Math.max(vMin, r[2] - wv),
+          v1: Math.min(vMax, r[3] + wv),
         });
       }
     }
