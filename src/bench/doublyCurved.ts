@@ -7,7 +7,12 @@
  *   npx tsx src/bench/doublyCurved.ts              readable lines
  *   npx tsx src/bench/doublyCurved.ts --json       and a last line holding one JSON object
  *   npx tsx src/bench/doublyCurved.ts --rounds 5   fewer rounds
+ *   npx tsx src/bench/doublyCurved.ts --table      and the comparison table of issue 19 (the paper's
+ *                                                   two tools, lead 10 degrees, h = 0.05 mm, one-way,
+ *                                                   |Rf|, |Rc| in {10, 50, 200} mm, dome, bowl, saddle)
  */
+import { compareDoublyCurved, type DoublyCurvedRow } from '../core/doublyCurved/compare';
+import { doublyCurvedGouging } from '../core/doublyCurved/gouging';
 import { doublyCurvedForward, doublyCurvedIntervalMm, doublyCurvedLimits } from '../core/doublyCurved/solve';
 import type { DoublyCurvedForwardInput } from '../core/doublyCurved/types';
 
@@ -83,4 +88,51 @@ console.log(
   `exact step-over alone:                   ${(result.exactDoublyCurvedIntervalNsPerCall / 1000).toFixed(2)} us per call`,
 );
 if (args.includes('--json')) console.log(JSON.stringify(result));
+if (args.includes('--table')) table();
+
+/** Markdown table: each shortcut's deviation from the exact step-over and the scallop its L leaves. */
+function table(): void {
+  const cell = (r: DoublyCurvedRow) =>
+    r.ok
+      ? `${r.deviationPercent >= 0 ? '+' : ''}${r.deviationPercent.toFixed(2)} % (leaves ${r.realScallopMm === null ? 'a wall' : r.realScallopMm.toFixed(4)})`
+      : 'n/a';
+  console.log(
+    '| tool | surface | Rf | Rc | exact L | plane | cylinder along (Rc) | cylinder across (Rf) | Redonnet corrected | Sekine corrected | osculating corrected |',
+  );
+  console.log('|---|---|---|---|---|---|---|---|---|---|---|');
+  const tools: Array<[string, number, number]> = [
+    ['R 3, Rcr 1', 3, 1],
+    ['R 6, Rcr 2', 6, 2],
+  ];
+  const families: Array<[string, number, number]> = [
+    ['dome', 1, 1],
+    ['bowl', -1, -1],
+    ['saddle', 1, -1],
+  ];
+  for (const [name, R, Rcr] of tools)
+    for (const [family, sf, sc] of families)
+      for (const f of [10, 50, 200])
+        for (const c of [10, 50, 200]) {
+          const tool = { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: 10, tiltAngleDeg: 0 };
+          const radii = { feedRadiusMm: sf * f, crossRadiusMm: sc * c };
+          const head = `| ${name} | ${family} | ${radii.feedRadiusMm} | ${radii.crossRadiusMm}`;
+          const g = doublyCurvedGouging(tool, radii);
+          if (g.gouges) {
+            const what = (l: typeof g.feed, which: string) =>
+              l.kind === 'concave-at-least'
+                ? `|${which}| >= ${(l.radiusMm as number).toFixed(2)}`
+                : l.kind === 'convex-at-most'
+                  ? `${which} convex <= ${(l.radiusMm as number).toFixed(2)}`
+                  : l.kind === 'none'
+                    ? `no ${which} helps`
+                    : `${which}: ${l.kind}`;
+            console.log(`${head} | gouges (${what(g.feed, 'Rf')}; ${what(g.cross, 'Rc')}) | | | | | | |`);
+            continue;
+          }
+          const r = compareDoublyCurved({ ...tool, ...radii, pattern: 'one-way', scallopHeightMm: 0.05 });
+          console.log(
+            `${head} | ${r.exact.intervalMm.toFixed(4)} | ${cell(r.plane)} | ${cell(r.cylinderAlong)} | ${cell(r.cylinderAcross)} | ${cell(r.corrected.redonnet)} | ${cell(r.corrected.sekine)} | ${cell(r.corrected.osculating)} |`,
+          );
+        }
+}
 if (sink === 42) console.log('');
