@@ -1,5 +1,6 @@
 import { VitePWA } from 'vite-plugin-pwa';
 import { defineConfig } from 'vitest/config';
+import { embedAttributesPlugin } from './src/build/embedAttributes.ts';
 import { formulaMathmlPlugin } from './src/build/formulaMathml.ts';
 import { sharedWorkerPlugin } from './src/build/sharedWorker.ts';
 
@@ -82,7 +83,8 @@ export default defineConfig(({ mode }) =>
         // Relative base: the built site works from any host and any sub-path.
         base: './',
         // The formulas view's MathML is typeset here, at build time, so no TeX engine is shipped.
-        plugins: [formulaMathmlPlugin(), sharedWorkerPlugin(), pwa(mode)],
+        // public/embed.js's attributes must be the field registry's (src/build/embedAttributes.ts).
+        plugins: [formulaMathmlPlugin(), sharedWorkerPlugin(), embedAttributesPlugin(), pwa(mode)],
         // three.js alone is about 560 kB raw (130 kB gzip) in its chunk; the benchmark tracks the gzip
         // size against its 200 kB budget, so Rollup's generic 500 kB warning is raised.
         build: {

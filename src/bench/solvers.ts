@@ -21,6 +21,8 @@ import {
   traceProcedure,
   validateForward,
 } from '../core/index';
+import { PASS_FIELDS } from '../core/input/fields';
+import { rawOf } from '../core/input/raw';
 
 /**
  * Deterministic inputs spread over the valid domain (mulberry32, seed 1); with `tilt`, tilts
@@ -96,16 +98,7 @@ function onCylinders(source: ForwardInput[], axis: 'feed' | 'cross'): ForwardInp
   source.forEach((c, i) => {
     const rs = (i % 2 === 0 ? 1 : -1) * c.toolRadiusMm * (10 + (i % 90));
     const surface = { kind: 'cylinder' as const, radiusMm: rs, axis };
-    const v = validateForward({
-      R: c.toolRadiusMm,
-      Rcr: c.cornerRadiusMm,
-      rho: c.leadAngleDeg,
-      tilt: c.tiltAngleDeg,
-      pattern: c.pattern,
-      h: c.scallopHeightMm,
-      surfaceRadius: surface.radiusMm,
-      surfaceAxis: axis,
-    });
+    const v = validateForward(rawOf({ ...c, surface }, [...PASS_FIELDS, 'h']));
     if (v.ok) out.push(v.value);
   });
   return out;

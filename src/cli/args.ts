@@ -3,23 +3,14 @@
  * Pure (no I/O). Values are kept as typed, so `--rho -5` reaches validation and its message.
  */
 
-/** Options that take a value, and the field of the core each one feeds. */
-export const VALUE_OPTIONS = [
-  'R',
-  'Rcr',
-  'rho',
-  'tilt',
-  'pattern',
-  'surface-radius',
-  'surface-axis',
-  'h',
-  'ra',
-  'interval',
-  'half-interval',
-] as const;
-export type ValueOption = (typeof VALUE_OPTIONS)[number];
+import { CLI_OPTIONS, type CliOption } from '../core/input/fields';
 
-const FLAG_OPTIONS = ['json', 'inverse', 'simulate', 'batch', 'help'] as const;
+/** Options that take a value: one per field of the field registry that the command line takes. */
+export const VALUE_OPTIONS: readonly CliOption[] = CLI_OPTIONS;
+export type ValueOption = CliOption;
+
+/** Options that take no value (not fields: what to do and how to write it). */
+export const FLAG_OPTIONS = ['json', 'inverse', 'simulate', 'batch', 'help'] as const;
 type FlagOption = (typeof FLAG_OPTIONS)[number];
 
 /** What the command line was asked to do. */

@@ -18,21 +18,40 @@ import type { Readable } from 'node:stream';
 import { StringDecoder } from 'node:string_decoder';
 import { csvNumber, RESULT_COLUMNS, resultFields } from '../core/csvWrite';
 import { forwardInput, scallopHeightForRaMm, validateForward, validateTargetRa } from '../core/index';
+import {
+  CSV_OPTIONAL_COLUMNS,
+  CSV_REQUIRED_COLUMNS,
+  CSV_TARGET_COLUMNS,
+  type CsvColumn,
+  csvColumnOf,
+  FIELDS,
+  PASS_FIELDS,
+} from '../core/input/fields';
+import { rawFields } from '../core/input/raw';
 import { CsvReader, type CsvRecord, csvText } from './csv';
 import { describeSystemError, errorLine, escapeControls, FLUSH_CHARS, type Output } from './output';
 
 /** The result columns and their writers live in the shared CSV writer (core/csvWrite.ts). */
 export { csvNumber, RESULT_COLUMNS, resultFields };
 
-/** Input columns: required first, then the target (one of the two), then the optional ones, in the order they are echoed. */
-export const REQUIRED_COLUMNS = ['R', 'Rcr', 'rho'] as const;
-export const TARGET_COLUMNS = ['h', 'Ra'] as const;
-export const OPTIONAL_COLUMNS = ['tilt', 'pattern', 'surfaceRadius', 'surfaceAxis'] as const;
-type InputColumn =
-  | (typeof REQUIRED_COLUMNS)[number]
-  | (typeof TARGET_COLUMNS)[number]
-  | (typeof OPTIONAL_COLUMNS)[number];
+/**
+ * Input columns (the field registry's): required first, then the target (one of the two), then the
+ * optional ones, in the order they are echoed.
+ */
+export const REQUIRED_COLUMNS = CSV_REQUIRED_COLUMNS;
+export const TARGET_COLUMNS = CSV_TARGET_COLUMNS;
+export const OPTIONAL_COLUMNS = CSV_OPTIONAL_COLUMNS;
+type InputColumn = CsvColumn;
 const INPUT_COLUMNS: readonly InputColumn[] = [...REQUIRED_COLUMNS, ...TARGET_COLUMNS, ...OPTIONAL_COLUMNS];
+
+/** The scallop height's and the target roughness's columns (h, Ra). */
+const H_COLUMN = csvColumnOf('h');
+const RA_COLUMN = csvColumnOf('ra');
+
+/** Column names as a message lists them: `a, b, c and d`. */
+function listed(names: readonly string[]): string {
+  return names.length < 2 ? names.join('') : `${names.slice(0, -1).join(', ')} and ${names.at(-1)}`;
+}
 
 /** Where each input column is in the records, and which are echoed. */
 export interface Layout {
@@ -43,13 +62,12 @@ export interface Layout {
   /** Echoed columns (canonical order) and their index in a record. */
   readonly echoed: readonly { readonly name: InputColumn; readonly index: number }[];
   readonly index: Readonly<Partial<Record<InputColumn, number>>>;
-  /** The target column: a scallop height, or a roughness Ra (then `h` is a result column). */
-  readonly target: (typeof TARGET_COLUMNS)[number];
+  /** The target column: a scallop height h, or a roughness Ra (then `h` is a result column). */
+  readonly target: InputColumn;
 }
 
 /** What the header must be, as the messages say it. */
-export const HEADER_RULE =
-  'the CSV header must be R,Rcr,rho,h (or Ra in place of h) in any order, optionally with tilt, pattern, surfaceRadius and surfaceAxis (and the output columns, which are ignored)';
+export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN} in place of ${H_COLUMN}) in any order, optionally with ${listed(OPTIONAL_COLUMNS)} (and the output columns, which are ignored)`;
 
 /** Result columns a header may hold (an output read back): ignored, computed again. */
 const IGNORED_COLUMNS: readonly string[] = RESULT_COLUMNS;
@@ -77,21 +95,22 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
     else index[column] = i;
   });
   const missing: string[] = REQUIRED_COLUMNS.filter((c) => index[c] === undefined);
-  if (index.h === undefined && index.Ra === undefined) missing.push('h (or Ra)');
-  if (index.h !== undefined && index.Ra !== undefined) problems.push('give h or Ra, not both');
+  const given = TARGET_COLUMNS.filter((c) => index[c] !== undefined);
+  if (given.length === 0) missing.push(`${H_COLUMN} (or ${RA_COLUMN})`);
+  if (given.length > 1) problems.push(`give ${H_COLUMN} or ${RA_COLUMN}, not both`);
   if (missing.length > 0) problems.unshift(`missing ${missing.join(', ')}`);
   if (problems.length > 0) return { ok: false, error: `${rule} (${problems.join('; ')})` };
   const echoed = INPUT_COLUMNS.flatMap((name) => {
     const i = index[name];
     return i === undefined ? [] : [{ name, index: i }];
   });
-  const target = index.Ra === undefined ? 'h' : 'Ra';
+  const target = given[0] as InputColumn;
   return { ok: true, layout: { width: names.length, names, echoed, index, target } };
 }
 
 /** The result columns of a layout: with a target Ra, the scallop height `h` that leaves it comes first. */
 export function resultColumns(layout: Layout): readonly string[] {
-  return layout.target === 'Ra' ? ['h', ...RESULT_COLUMNS] : RESULT_COLUMNS;
+  return layout.target === RA_COLUMN ? [H_COLUMN, ...RESULT_COLUMNS] : RESULT_COLUMNS;
 }
 
 /** The output header line for a layout. */
@@ -144,24 +163,21 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
     }
   }
   const { index } = layout;
-  // An empty optional field takes its default (tilt 0, one-way, plane, feed), as a missing column does.
-  const pass = {
-    R: fields[index.R as number],
-    Rcr: fields[index.Rcr as number],
-    rho: fields[index.rho as number],
-    tilt: optionalField(fields, index.tilt),
-    pattern: optionalField(fields, index.pattern),
-    surfaceRadius: optionalField(fields, index.surfaceRadius),
-    surfaceAxis: optionalField(fields, index.surfaceAxis),
-  };
-  if (layout.target === 'Ra') {
-    const v = validateTargetRa({ ...pass, ra: fields[index.Ra as number] });
+  // Each field from its column; an empty optional field takes its default (tilt 0, one-way, plane,
+  // feed), as a missing column does.
+  const pass = rawFields(PASS_FIELDS, (name) => {
+    const csv = FIELDS[name].csv;
+    const i = index[csv.column];
+    return csv.role === 'optional' ? optionalField(fields, i) : fields[i as number];
+  });
+  if (layout.target === RA_COLUMN) {
+    const v = validateTargetRa({ ...pass, ra: fields[index[RA_COLUMN] as number] });
     if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
     const p = v.value;
     const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);
     return `${echo},${csvNumber(h)},${resultFields(forwardInput(p, p.pattern, h, p.surface))},\n`;
   }
-  const v = validateForward({ ...pass, h: fields[index.h as number] });
+  const v = validateForward({ ...pass, h: fields[index[H_COLUMN] as number] });
   if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
   return `${echo},${resultFields(v.value)},\n`;
 }
@@ -215,7 +231,7 @@ export async function runBatch(io: BatchIo, out: Output): Promise<number> {
   if (layout === null) {
     io.stderr.write(
       errorLine(
-        'no CSV on stdin: expected a header line R,Rcr,rho,h (or Ra; optionally tilt, pattern, surfaceRadius, surfaceAxis)',
+        `no CSV on stdin: expected a header line ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN}; optionally ${OPTIONAL_COLUMNS.join(', ')})`,
       ),
     );
     return 2;

@@ -22,6 +22,8 @@ import {
   validateInverse,
   validateTargetRa,
 } from '../core/index';
+import { cliFlag, FIELDS, PASS_FIELDS } from '../core/input/fields';
+import { rawFields } from '../core/input/raw';
 import { parseArgs, type Request, type ValueOption } from './args';
 import { runBatch } from './batch';
 import { isNumberText } from './csv';
@@ -78,16 +80,7 @@ Exit codes: 0 success (a batch with bad rows included), 1 a read or write error,
 
 /** The option that gives a field, as the user types it, for messages. */
 export function optionOf(field: AnyFieldName, half: boolean): string {
-  switch (field) {
-    case 'interval':
-      return half ? '--half-interval' : '--interval';
-    case 'surfaceRadius':
-      return '--surface-radius';
-    case 'surfaceAxis':
-      return '--surface-axis';
-    default:
-      return `--${field}`;
-  }
+  return cliFlag(half && field === 'interval' ? 'halfInterval' : field);
 }
 
 function reportErrors(
@@ -145,17 +138,9 @@ interface Wanted {
   readonly simulate: boolean;
 }
 
-/** The raw tool, posture, pattern and surface of the options. */
+/** The raw tool, posture, pattern and surface of the options (each field's option, the field registry's). */
 function passValues(values: Values) {
-  return {
-    R: values.R,
-    Rcr: values.Rcr,
-    rho: values.rho,
-    tilt: values.tilt,
-    pattern: values.pattern,
-    surfaceRadius: values['surface-radius'],
-    surfaceAxis: values['surface-axis'],
-  };
+  return rawFields(PASS_FIELDS, (name) => values[FIELDS[name].cli]);
 }
 
 /**
@@ -186,14 +171,14 @@ function writeForward(input: ForwardInput, wanted: Wanted, out: Output, targetRa
 }
 
 function forward(values: Values, wanted: Wanted, io: Io, out: Output): number {
-  const v = validateForward({ ...passValues(values), h: values.h });
+  const v = validateForward({ ...passValues(values), h: values[FIELDS.h.cli] });
   if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, null);
   return writeForward(v.value, wanted, out);
 }
 
 /** --ra: the scallop height that leaves the target Ra, then the forward answer for it. */
 function targetRa(values: Values, wanted: Wanted, io: Io, out: Output): number {
-  const v = validateTargetRa({ ...passValues(values), ra: values.ra });
+  const v = validateTargetRa({ ...passValues(values), ra: values[FIELDS.ra.cli] });
   if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, null);
   const p = v.value;
   const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);
@@ -201,8 +186,8 @@ function targetRa(values: Values, wanted: Wanted, io: Io, out: Output): number {
 }
 
 function inverse(values: Values, wanted: Wanted, half: boolean, io: Io, out: Output): number {
-  let interval: unknown = values.interval;
-  const typedHalf = values['half-interval'];
+  let interval: unknown = values[FIELDS.interval.cli];
+  const typedHalf = values[FIELDS.halfInterval.cli];
   if (half && typedHalf !== undefined) {
     // L = 2 (L/2) exactly; validation messages quote L/2 as typed.
     // An L/2 so large that 2 (L/2) overflows is beyond any tool: the largest double stands for it.

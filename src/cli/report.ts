@@ -20,6 +20,8 @@ import {
   type SimulationResult,
   type Surface,
 } from '../core/index';
+import { PASS_FIELDS } from '../core/input/fields';
+import { rawOf } from '../core/input/raw';
 import { type Column, deviation, echo, length, NONE, percent, renderTable } from './table';
 
 /** The paper's procedures: their inverse is named by its equation. */
@@ -338,20 +340,9 @@ export function inverseTable(c: InverseComparison, extras: Extras = {}): string 
 export type JsonValue = number | string | boolean | JsonValue[] | { [key: string]: JsonValue };
 type JsonObject = { [key: string]: JsonValue };
 
+/** The tool, posture, pattern and surface as validation reads them (a plane has no surface fields: left out). */
 function toolJson(input: PassInput): JsonObject {
-  const out: JsonObject = {
-    R: input.toolRadiusMm,
-    Rcr: input.cornerRadiusMm,
-    rho: input.leadAngleDeg,
-    tilt: input.tiltAngleDeg,
-    pattern: input.pattern,
-  };
-  // A plane has neither: they are left out.
-  if (input.surface.kind === 'cylinder') {
-    out.surfaceRadius = input.surface.radiusMm;
-    out.surfaceAxis = input.surface.axis;
-  }
-  return out;
+  return rawOf(input, PASS_FIELDS) as JsonObject;
 }
 
 /** The extras as JSON fields: roughness, the rule of thumb beside it, the simulation. */

@@ -17,6 +17,7 @@ function mm(lengthMm: number): string {
   return `${formatSignificant(lengthMm, { digits: 6, trimZeros: true })} mm`;
 }
 
+import type { CylinderSurface } from './cylinder';
 import type { ForwardInput, InverseInput, ToolInput } from './validate';
 
 const DEG = RAD_PER_DEG;
@@ -284,4 +285,16 @@ export function cornerBallScallopHeight(input: InverseInput): Approximation<Scal
   const model = cornerBallModel(input);
   if (!model.ok) return model;
   return circleScallop('Corner ball', model.effectiveRadiusMm, input.intervalMm / 2);
+}
+
+/**
+ * The usual second-order curvature correction of a circle on a cylinder: the combined radius rho
+ * with `1/rho = 1/Reff + 1/Rs`, Rs the surface's signed radius across the feed (> 0 convex, < 0
+ * concave): the cylinder's own with the axis along the feed; across it the surface is straight
+ * across the feed (Rs infinite), so rho = Reff. Returns rho in mm (Reff > 0 in mm); it is not
+ * positive, or not finite, where a concave surface is as tight as the circle or tighter (|Rs| <= Reff).
+ */
+export function combinedRadiusMm(effectiveRadiusMm: number, surface: CylinderSurface): number {
+  const across = surface.axis === 'feed' ? surface.radiusMm : Number.POSITIVE_INFINITY;
+  return Number.isFinite(across) ? (effectiveRadiusMm * across) / (effectiveRadiusMm + across) : effectiveRadiusMm;
 }

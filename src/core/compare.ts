@@ -4,33 +4,18 @@
  * and a warning where a procedure's step-over is so wide that the passes would leave a wall.
  * Pure; lengths mm. Never NaN or Infinity: a missing value is null or "not applicable" with a reason.
  */
-import {
-  type Approximation,
-  type BediModel,
-  bediHalfInterval,
-  bediScallopHeight,
-  type CornerBallModel,
-  cornerBallHalfInterval,
-  cornerBallModel,
-  cornerBallScallopHeight,
-  type HalfInterval,
-  type OsculatingModel,
-  osculatingHalfInterval,
-  osculatingModel,
-  osculatingScallopHeight,
-  type RedonnetModel,
-  redonnetHalfInterval,
-  redonnetModel,
-  redonnetScallopHeight,
-  type ScallopHeight,
-  type SekineModel,
-  sekineHalfInterval,
-  sekineModel,
-  sekineScallopHeight,
-} from './approximations';
+import { type Approximation, combinedRadiusMm, type HalfInterval, type ScallopHeight } from './approximations';
 import type { CylinderSurface } from './cylinder';
 import { type ExactForward, type ExactInverse, exactForward, exactInverse } from './exact';
-import { type ApproximationKey, PROCEDURES } from './procedures';
+import {
+  APPROXIMATION_KEYS,
+  APPROXIMATIONS,
+  type ApproximationKey,
+  CORRECTED_KEYS,
+  type CorrectedKey,
+  type ForwardModels,
+  PROCEDURES,
+} from './procedures';
 import { formatSignificant } from './units';
 import {
   type ForwardInput,
@@ -40,6 +25,7 @@ import {
   maxIntervalMm,
   type RawForwardInput,
   type RawInverseInput,
+  type ToolInput,
   type Validation,
   validateForward,
   validateInverse,
@@ -71,18 +57,6 @@ export type InverseEstimate =
       readonly deviationPercent: number | null;
     }
   | { readonly ok: false; readonly notApplicable: string };
-
-export interface ForwardModels {
-  readonly sekine: SekineModel;
-  readonly redonnet: RedonnetModel;
-  readonly bedi: BediModel;
-  readonly osculating: OsculatingModel;
-  readonly cornerBall: CornerBallModel;
-}
-
-/** The procedures with an effective radius, which the usual curvature correction applies to. */
-export const CORRECTED_KEYS = ['sekine', 'redonnet', 'osculating', 'cornerBall'] as const;
-export type CorrectedKey = (typeof CORRECTED_KEYS)[number];
 
 /** What ignoring or correcting for the curvature gives on a cylinder (forward), mm. */
 export interface CurvatureComparison {
@@ -127,6 +101,13 @@ export interface InverseComparison {
   readonly curvature: InverseCurvatureComparison | null;
 }
 
+/** `value(key)` for every approximation, keyed by procedure, in the registry's order. */
+function eachApproximation<V>(value: (key: ApproximationKey) => V): Record<ApproximationKey, V> {
+  const out = {} as Record<ApproximationKey, V>;
+  for (const key of APPROXIMATION_KEYS) out[key] = value(key);
+  return out;
+}
+
 function estimate<M>(
   r: Approximation<HalfInterval & M>,
   input: ForwardInput,
@@ -153,6 +134,30 @@ function estimate<M>(
   };
 }
 
+/** The radii of a corrected procedure: its own effective radius and the combined one on the cylinder (mm). */
+type CorrectedRadii = Approximation<{ readonly effectiveRadiusMm: number; readonly combinedRadiusMm: number }>;
+
+/** Each corrected procedure's effective radius and combined radius on the cylinder, or its model's reason for none. */
+function correctedRadii(tool: ToolInput, surface: CylinderSurface): Record<CorrectedKey, CorrectedRadii> {
+  const out = {} as Record<CorrectedKey, CorrectedRadii>;
+  for (const key of CORRECTED_KEYS) {
+    const m = APPROXIMATIONS[key].model(tool);
+    out[key] = m.ok
+      ? {
+          ok: true,
+          effectiveRadiusMm: m.effectiveRadiusMm,
+          combinedRadiusMm: combinedRadiusMm(m.effectiveRadiusMm, surface),
+        }
+      : { ok: false, notApplicable: m.notApplicable };
+  }
+  return out;
+}
+
+/** Who a corrected procedure's reasons name. */
+function correctedWho(key: CorrectedKey): string {
+  return `${PROCEDURES[key].shortLabel}, corrected for the curvature`;
+}
+
 /** The plane's answer and the corrected circles on a cylinder (see CurvatureComparison). */
 function curvatureRows(
   input: ForwardInput,
@@ -167,26 +172,17 @@ function curvatureRows(
     exact,
     maxMm,
   );
-  // The surface's radius across the feed: the cylinder's with the axis along the feed; a straight
-  // generator (infinite) across it.
-  const across = surface.axis === 'feed' ? surface.radiusMm : Number.POSITIVE_INFINITY;
-  const radii: Record<CorrectedKey, Approximation<{ effectiveRadiusMm: number }>> = {
-    sekine: sekineModel(input),
-    redonnet: redonnetModel(input),
-    osculating: osculatingModel(input),
-    cornerBall: cornerBallModel(input),
-  };
   const h = input.scallopHeightMm;
   const corrected = {} as { -readonly [K in CorrectedKey]: ForwardEstimate<{ readonly combinedRadiusMm: number }> };
+  const radii = correctedRadii(input, surface);
   for (const key of CORRECTED_KEYS) {
     const m = radii[key];
-    const who = `${PROCEDURES[key].shortLabel}, corrected for the curvature`;
+    const who = correctedWho(key);
     if (!m.ok) {
-      corrected[key] = { ok: false, notApplicable: m.notApplicable };
+      corrected[key] = m;
       continue;
     }
-    const reff = m.effectiveRadiusMm;
-    const combined = Number.isFinite(across) ? (reff * across) / (reff + across) : reff;
+    const { effectiveRadiusMm: reff, combinedRadiusMm: combined } = m;
     if (!(combined > 0) || !Number.isFinite(combined)) {
       corrected[key] = {
         ok: false,
@@ -221,13 +217,10 @@ export function compareForward(input: ForwardInput): ForwardComparison {
     maxIntervalMm: maxMm,
     exact,
     curvature: input.surface.kind === 'cylinder' ? curvatureRows(input, input.surface, exact, maxMm) : null,
-    approximations: {
-      sekine: estimate(sekineHalfInterval(input), input, exact, maxMm),
-      redonnet: estimate(redonnetHalfInterval(input), input, exact, maxMm),
-      bedi: estimate(bediHalfInterval(input), input, exact, maxMm),
-      osculating: estimate(osculatingHalfInterval(input), input, exact, maxMm),
-      cornerBall: estimate(cornerBallHalfInterval(input), input, exact, maxMm),
-    },
+    // Each estimate carries its own procedure's model (the registry's functions are typed per key).
+    approximations: eachApproximation((key) =>
+      estimate(APPROXIMATIONS[key].halfInterval(input), input, exact, maxMm),
+    ) as ForwardComparison['approximations'],
   };
 }
 
@@ -255,28 +248,20 @@ function inverseCurvatureRows(
     L < planeMax
       ? heightEstimate({ ok: true, scallopHeightMm: exactInverse(planeInput).cuspHeightMm }, exactMm)
       : { ok: false, notApplicable: 'Plane: the step-over is at or beyond the widest one the tool allows on a plane.' };
-  const across = surface.axis === 'feed' ? surface.radiusMm : Number.POSITIVE_INFINITY;
-  const radii: Record<CorrectedKey, Approximation<{ effectiveRadiusMm: number }>> = {
-    sekine: sekineModel(input),
-    redonnet: redonnetModel(input),
-    osculating: osculatingModel(input),
-    cornerBall: cornerBallModel(input),
-  };
   const corrected = {} as { -readonly [K in CorrectedKey]: InverseEstimate };
   const half = L / 2;
+  const radii = correctedRadii(input, surface);
   for (const key of CORRECTED_KEYS) {
     const m = radii[key];
-    const who = `${PROCEDURES[key].shortLabel}, corrected for the curvature`;
     if (!m.ok) {
-      corrected[key] = { ok: false, notApplicable: m.notApplicable };
+      corrected[key] = m;
       continue;
     }
-    const reff = m.effectiveRadiusMm;
-    const rho = Number.isFinite(across) ? (reff * across) / (reff + across) : reff;
+    const rho = m.combinedRadiusMm;
     if (!(rho > 0) || !Number.isFinite(rho) || half > rho) {
       corrected[key] = {
         ok: false,
-        notApplicable: `${who}: L/2 is not inside its combined circle (${formatSignificant(rho, { digits: 5, trimZeros: true })} mm).`,
+        notApplicable: `${correctedWho(key)}: L/2 is not inside its combined circle (${formatSignificant(rho, { digits: 5, trimZeros: true })} mm).`,
       };
       continue;
     }
@@ -296,13 +281,7 @@ export function compareInverse(input: InverseInput): InverseComparison {
     input,
     exact,
     curvature: input.surface.kind === 'cylinder' ? inverseCurvatureRows(input, input.surface, h) : null,
-    approximations: {
-      sekine: heightEstimate(sekineScallopHeight(input), h),
-      redonnet: heightEstimate(redonnetScallopHeight(input), h),
-      bedi: heightEstimate(bediScallopHeight(input), h),
-      osculating: heightEstimate(osculatingScallopHeight(input), h),
-      cornerBall: heightEstimate(cornerBallScallopHeight(input), h),
-    },
+    approximations: eachApproximation((key) => heightEstimate(APPROXIMATIONS[key].scallopHeight(input), h)),
   };
 }
 

@@ -5,18 +5,10 @@
  * `-0`), a value that does not exist as an empty field, and the same result columns. Pure (no I/O,
  * no DOM); lengths in mm, angles in degrees.
  */
-import {
-  type Approximation,
-  bediHalfInterval,
-  cornerBallHalfInterval,
-  type HalfInterval,
-  osculatingHalfInterval,
-  redonnetHalfInterval,
-  sekineHalfInterval,
-} from './approximations';
+import type { Approximation, HalfInterval } from './approximations';
 import { compareForward } from './compare';
 import { exactForward } from './exact';
-import { APPROXIMATION_KEYS, PROCEDURES } from './procedures';
+import { APPROXIMATION_KEYS, APPROXIMATIONS, type ApproximationKey, PROCEDURES } from './procedures';
 import { type ForwardInput, maxIntervalMm } from './validate';
 
 /** A plain decimal number as the validation accepts it (sign, digits, point, exponent). */
@@ -89,26 +81,20 @@ const NO_SCALLOP_NOTE =
 export function resultFields(input: ForwardInput): string {
   const exact = exactForward(input);
   const maxMm = maxIntervalMm(input, input.pattern, input.surface);
-  const sekine = sekineHalfInterval(input);
-  const redonnet = redonnetHalfInterval(input);
-  const bedi = bediHalfInterval(input);
-  const osculating = osculatingHalfInterval(input);
-  const cornerBall = cornerBallHalfInterval(input);
-  let note = exact.noScallop ? NO_SCALLOP_NOTE : '';
-  if (
-    beyondWall(sekine, maxMm) ||
-    beyondWall(redonnet, maxMm) ||
-    beyondWall(bedi, maxMm) ||
-    beyondWall(osculating, maxMm) ||
-    beyondWall(cornerBall, maxMm)
-  ) {
-    note = warningNotes(input, note);
+  const half = {} as Record<ApproximationKey, Approximation<HalfInterval>>;
+  let beyond = false;
+  for (const key of APPROXIMATION_KEYS) {
+    const r = APPROXIMATIONS[key].halfInterval(input);
+    half[key] = r;
+    beyond ||= beyondWall(r, maxMm);
   }
+  const noScallop = exact.noScallop ? NO_SCALLOP_NOTE : '';
+  const note = beyond ? warningNotes(input, noScallop) : noScallop;
   return (
-    `${csvNumber(exact.halfIntervalMm)},${halfText(sekine)},${halfText(redonnet)},${halfText(bedi)},` +
+    `${csvNumber(exact.halfIntervalMm)},${halfText(half.sekine)},${halfText(half.redonnet)},${halfText(half.bedi)},` +
     `${csvNumber(exact.intervalMm)},${csvNumber(exact.halfWidthRightMm)},${csvNumber(exact.halfWidthLeftMm)},` +
     `${csvNumber(exact.contactOffsetMm)},${exact.otherCuspHeightMm === null ? '' : csvNumber(exact.otherCuspHeightMm)},` +
-    `${halfText(osculating)},${halfText(cornerBall)},${csvText(note)}`
+    `${halfText(half.osculating)},${halfText(half.cornerBall)},${csvText(note)}`
   );
 }
 

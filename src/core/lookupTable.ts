@@ -11,7 +11,16 @@
 
 import { csvNumber, csvText, RESULT_COLUMNS, resultFields } from './csvWrite';
 import type { Surface } from './cylinder';
-import { type PassPattern, scallopHeightLimits, validateForward } from './validate';
+import {
+  CSV_OPTIONAL_COLUMNS,
+  CSV_REQUIRED_COLUMNS,
+  csvColumnOf,
+  type FieldName,
+  fieldOfCsvColumn,
+  PASS_FIELDS,
+} from './input/fields';
+import { rawOf } from './input/raw';
+import { type PassPattern, type RawForwardInput, scallopHeightLimits, validateForward } from './validate';
 
 /** The grid of a table: scallop heights (mm), lead angles and tilts (degrees), each ascending. */
 export interface LookupGrid {
@@ -77,17 +86,17 @@ export function lookupGrid(tool: Pick<LookupTool, 'toolRadiusMm' | 'cornerRadius
  * The CSV header of a table: the batch's output header for these input columns (the batch echoes
  * its input columns in this order), so the batch reads the file back as it is.
  */
-export const LOOKUP_HEADER = [
-  'R',
-  'Rcr',
-  'rho',
-  'h',
-  'tilt',
-  'pattern',
-  'surfaceRadius',
-  'surfaceAxis',
-  ...RESULT_COLUMNS,
-].join(',');
+const INPUT_COLUMNS = [...CSV_REQUIRED_COLUMNS, csvColumnOf('h'), ...CSV_OPTIONAL_COLUMNS];
+export const LOOKUP_HEADER = [...INPUT_COLUMNS, ...RESULT_COLUMNS].join(',');
+
+/** The field each input column holds. */
+const INPUT_FIELDS = INPUT_COLUMNS.map((column) => fieldOfCsvColumn(column) as FieldName);
+
+/** A value as the batch reads it back: a number in full precision, a word, or empty (none, the default). */
+function inputCell(value: unknown): string {
+  if (value === undefined) return '';
+  return typeof value === 'number' ? csvNumber(value) : csvText(String(value));
+}
 
 /** A table: its CSV text (header, then one row per cell, tilt slowest, h fastest) and counts. */
 export interface LookupTable {
@@ -105,24 +114,16 @@ export interface LookupTable {
 export function lookupTable(tool: LookupTool, grid: LookupGrid): LookupTable {
   const lines = [LOOKUP_HEADER];
   let empty = 0;
-  const surfaceRadius = tool.surface.kind === 'cylinder' ? tool.surface.radiusMm : undefined;
-  const surfaceAxis = tool.surface.kind === 'cylinder' ? tool.surface.axis : undefined;
-  // The pattern and the surface, as the batch reads them (a plane: both surface fields empty).
-  const pass = `${tool.pattern},${surfaceRadius === undefined ? '' : csvNumber(surfaceRadius)},${surfaceAxis ?? ''}`;
   for (const tilt of grid.tiltAnglesDeg)
     for (const rho of grid.leadAnglesDeg)
       for (const h of grid.scallopHeightsMm) {
-        const echo = `${[tool.toolRadiusMm, tool.cornerRadiusMm, rho, h, tilt].map(csvNumber).join(',')},${pass}`;
-        const v = validateForward({
-          R: tool.toolRadiusMm,
-          Rcr: tool.cornerRadiusMm,
-          rho,
-          tilt,
+        // The cell's inputs as the batch reads them (a plane: both surface fields empty).
+        const raw: Partial<Record<FieldName, unknown>> = {
+          ...rawOf({ ...tool, leadAngleDeg: rho, tiltAngleDeg: tilt }, PASS_FIELDS),
           h,
-          pattern: tool.pattern,
-          surfaceRadius,
-          surfaceAxis,
-        });
+        };
+        const echo = INPUT_FIELDS.map((field) => inputCell(raw[field])).join(',');
+        const v = validateForward(raw as RawForwardInput);
         if (v.ok) lines.push(`${echo},${resultFields(v.value)},`);
         else {
           empty++;

@@ -1,7 +1,35 @@
 /**
- * The one registry of procedures: key, labels, equations, colour and what each assumes.
- * Every view, table, chart and the command line read their names and colours from here.
+ * The one registry of procedures: key, labels, equations, colour and what each assumes, and each
+ * approximation's functions (its model of the tool, the step-over at h, the scallop height at L).
+ * Every view, table, chart and the command line read their names and colours from here; the
+ * comparison, the sweeps, the CSV and the worker iterate the same list.
  */
+import {
+  type Approximation,
+  type BediModel,
+  bediHalfInterval,
+  bediModel,
+  bediScallopHeight,
+  type CornerBallModel,
+  cornerBallHalfInterval,
+  cornerBallModel,
+  cornerBallScallopHeight,
+  type HalfInterval,
+  type OsculatingModel,
+  osculatingHalfInterval,
+  osculatingModel,
+  osculatingScallopHeight,
+  type RedonnetModel,
+  redonnetHalfInterval,
+  redonnetModel,
+  redonnetScallopHeight,
+  type ScallopHeight,
+  type SekineModel,
+  sekineHalfInterval,
+  sekineModel,
+  sekineScallopHeight,
+} from './approximations';
+import type { ForwardInput, InverseInput, ToolInput } from './validate';
 
 /** Every procedure the calculator reports, exact first. */
 export const PROCEDURE_KEYS = ['exact', 'sekine', 'redonnet', 'bedi', 'osculating', 'cornerBall'] as const;
@@ -116,25 +144,118 @@ export const PROCEDURES: Readonly<Record<ProcedureKey, ProcedureInfo>> = {
   },
 };
 
+/** Each approximation's model of the tool in its posture (mm). */
+export interface ForwardModels {
+  readonly sekine: SekineModel;
+  readonly redonnet: RedonnetModel;
+  readonly bedi: BediModel;
+  readonly osculating: OsculatingModel;
+  readonly cornerBall: CornerBallModel;
+}
+
+/**
+ * The curve a model stands in for the tool's cross-feed profile with (mm): a circle touching the
+ * surface at the contact, or an ellipse (semi-axes along and across the surface).
+ */
+export type ModelCurve =
+  | { readonly shape: 'circle'; readonly radiusMm: number }
+  | { readonly shape: 'ellipse'; readonly longRadiusMm: number; readonly shortRadiusMm: number };
+
+/** What an approximation computes (approximations.ts): `M` is its model of the tool. */
+export interface ApproximationFunctions<M> {
+  /** Its model of the tool in its posture (mm), or why it has none there. */
+  model(tool: ToolInput): Approximation<M>;
+  /** Forward: `L/2` (mm) at the scallop height h, with its model; or why none. */
+  halfInterval(input: ForwardInput): Approximation<HalfInterval & M>;
+  /** Inverse: the scallop height (mm) at the step-over L; or why none. */
+  scallopHeight(input: InverseInput): Approximation<ScallopHeight>;
+  /** The curve of a model (mm). */
+  curve(model: M): ModelCurve;
+  /**
+   * The symbol texts give the height of the curve's widest point, above which h has no answer:
+   * `Reff` (a circle's radius), `Rcr` (the corner ball's), `Rlong sin(rho)` (Bedi's ellipse).
+   */
+  readonly widestSymbol: string;
+}
+
+const circle = (radiusMm: number): ModelCurve => ({ shape: 'circle', radiusMm });
+
+/** The approximations' functions, in the registry's order (APPROXIMATION_KEYS). */
+export const APPROXIMATIONS: { readonly [K in ApproximationKey]: ApproximationFunctions<ForwardModels[K]> } = {
+  sekine: {
+    model: sekineModel,
+    halfInterval: sekineHalfInterval,
+    scallopHeight: sekineScallopHeight,
+    curve: (m) => circle(m.effectiveRadiusMm),
+    widestSymbol: 'Reff',
+  },
+  redonnet: {
+    model: redonnetModel,
+    halfInterval: redonnetHalfInterval,
+    scallopHeight: redonnetScallopHeight,
+    curve: (m) => circle(m.effectiveRadiusMm),
+    widestSymbol: 'Reff',
+  },
+  bedi: {
+    model: bediModel,
+    halfInterval: bediHalfInterval,
+    scallopHeight: bediScallopHeight,
+    curve: (m) => ({ shape: 'ellipse', longRadiusMm: m.longRadiusMm, shortRadiusMm: m.shortRadiusMm }),
+    widestSymbol: 'Rlong sin(rho)',
+  },
+  osculating: {
+    model: osculatingModel,
+    halfInterval: osculatingHalfInterval,
+    scallopHeight: osculatingScallopHeight,
+    curve: (m) => circle(m.effectiveRadiusMm),
+    widestSymbol: 'Reff',
+  },
+  cornerBall: {
+    model: cornerBallModel,
+    halfInterval: cornerBallHalfInterval,
+    scallopHeight: cornerBallScallopHeight,
+    curve: (m) => circle(m.effectiveRadiusMm),
+    widestSymbol: 'Rcr',
+  },
+};
+
+/** An approximation's curve for a tool (mm), or why its model has none. */
+export function modelCurve<K extends ApproximationKey>(key: K, tool: ToolInput): Approximation<{ curve: ModelCurve }> {
+  const procedure: ApproximationFunctions<ForwardModels[K]> = APPROXIMATIONS[key];
+  const m = procedure.model(tool);
+  return m.ok ? { ok: true, curve: procedure.curve(m) } : m;
+}
+
+/**
+ * The procedures whose model is a circle of effective radius Reff, which the usual curvature
+ * correction applies to (a circle's curve in APPROXIMATIONS).
+ */
+export const CORRECTED_KEYS = [
+  'sekine',
+  'redonnet',
+  'osculating',
+  'cornerBall',
+] as const satisfies readonly ApproximationKey[];
+export type CorrectedKey = (typeof CORRECTED_KEYS)[number];
+
+/** The row key of a corrected procedure. */
+export function correctedRowKey<K extends CorrectedKey>(key: K): `${K}Corrected` {
+  return `${key}Corrected`;
+}
+
 /**
  * The rows a cylinder adds beside the exact answer (compare.ts, CurvatureComparison): the plane's
  * exact answer, which ignores the curvature, and the usual correction `1/rho = 1/Reff + 1/Rs`
  * applied to each procedure that has an effective radius. Labels as the command line prints them.
  */
-export const CURVATURE_ROW_KEYS = [
-  'plane',
-  'sekineCorrected',
-  'redonnetCorrected',
-  'osculatingCorrected',
-  'cornerBallCorrected',
-] as const;
+export const CURVATURE_ROW_KEYS = ['plane', ...CORRECTED_KEYS.map(correctedRowKey)] as const;
 
-export type CurvatureRowKey = (typeof CURVATURE_ROW_KEYS)[number];
+export type CurvatureRowKey = 'plane' | `${CorrectedKey}Corrected`;
 
 export interface CurvatureRowInfo {
   readonly key: CurvatureRowKey;
   /** The procedure whose effective radius is corrected; null for the plane's answer. */
-  readonly corrects: 'sekine' | 'redonnet' | 'osculating' | 'cornerBall' | null;
+  readonly corrects: CorrectedKey | null;
   readonly label: string;
   readonly shortLabel: string;
   /** Colour in every view (hex): the corrected procedure's own hue, darker; slate for the plane. */
@@ -142,12 +263,8 @@ export interface CurvatureRowInfo {
   readonly assumes: string;
 }
 
-const corrected = (
-  key: CurvatureRowKey,
-  base: 'sekine' | 'redonnet' | 'osculating' | 'cornerBall',
-  colour: string,
-): CurvatureRowInfo => ({
-  key,
+const corrected = (base: CorrectedKey, colour: string): CurvatureRowInfo => ({
+  key: correctedRowKey(base),
   corrects: base,
   label: `${PROCEDURES[base].shortLabel}, corrected (1/rho = 1/Reff + 1/Rs)`,
   shortLabel: `${PROCEDURES[base].shortLabel}, corrected`,
@@ -165,8 +282,8 @@ export const CURVATURE_ROWS: Readonly<Record<CurvatureRowKey, CurvatureRowInfo>>
     assumes:
       "The exact answer for a plane at the same h: what a calculator that ignores the surface's curvature gives.",
   },
-  sekineCorrected: corrected('sekineCorrected', 'sekine', '#78350f'),
-  redonnetCorrected: corrected('redonnetCorrected', 'redonnet', '#4c1d95'),
-  osculatingCorrected: corrected('osculatingCorrected', 'osculating', '#14532d'),
-  cornerBallCorrected: corrected('cornerBallCorrected', 'cornerBall', '#831843'),
+  sekineCorrected: corrected('sekine', '#78350f'),
+  redonnetCorrected: corrected('redonnet', '#4c1d95'),
+  osculatingCorrected: corrected('osculating', '#14532d'),
+  cornerBallCorrected: corrected('cornerBall', '#831843'),
 };

@@ -3,6 +3,8 @@
  * tool can leave, maxRaMm) and the forward input it comes to (h from scallopHeightForRaMm; the
  * step-over and everything else then follow from that h). Lengths mm.
  */
+import { PASS_FIELDS } from './input/fields';
+import { rawOf } from './input/raw';
 import {
   maxRaMm,
   type RawTargetRaInput,
@@ -25,15 +27,8 @@ let cached: { key: string; value: number } | null = null;
 
 /** maxRaMm, remembered for the last tool, posture, pattern and surface. */
 export function maxRaCachedMm(input: PassInput): number {
-  const s = input.surface;
-  const key = [
-    input.toolRadiusMm,
-    input.cornerRadiusMm,
-    input.leadAngleDeg,
-    input.tiltAngleDeg,
-    input.pattern,
-    s.kind === 'plane' ? 'plane' : `${s.radiusMm},${s.axis}`,
-  ].join('|');
+  // Every field of the pass, by the field registry's names (a plane has no surface fields).
+  const key = JSON.stringify(rawOf(input, PASS_FIELDS));
   if (cached?.key !== key) cached = { key, value: maxRaMm(input, input.pattern, input.surface) };
   return cached.value;
 }

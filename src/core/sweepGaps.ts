@@ -3,8 +3,7 @@
  * answer and the reason, in words with no number in them (so the page can show it in any unit).
  * Pure; angles in degrees.
  */
-import { bediModel, cornerBallModel, osculatingModel, redonnetModel, sekineModel } from './approximations';
-import type { ProcedureKey } from './procedures';
+import { APPROXIMATIONS, modelCurve, type ProcedureKey } from './procedures';
 import type { ToolInput } from './validate';
 
 /** A run of consecutive sweep samples where a procedure has no answer, for one reason. */
@@ -33,17 +32,12 @@ function withoutWho(text: string): string {
  */
 export function noAnswerReason(key: ProcedureKey, tool: ToolInput): string {
   if (key === 'exact') return EXACT_NO_ANSWER;
-  const model = {
-    sekine: sekineModel,
-    redonnet: redonnetModel,
-    bedi: bediModel,
-    osculating: osculatingModel,
-    cornerBall: cornerBallModel,
-  }[key](tool);
+  const model = modelCurve(key, tool);
   if (!model.ok) return withoutWho(model.notApplicable);
-  if (key === 'bedi') return 'h is above the widest point of its ellipse (its height Rlong sin(rho) is below h)';
-  const radius = key === 'cornerBall' ? 'Rcr' : 'Reff';
-  return `h is above the widest point of its circle (its radius ${radius} is below h)`;
+  const { shape } = model.curve;
+  // The height of a circle's widest point is its radius; an ellipse's, its short semi-axis.
+  const widest = `${shape === 'circle' ? 'radius' : 'height'} ${APPROXIMATIONS[key].widestSymbol}`;
+  return `h is above the widest point of its ${shape} (its ${widest} is below h)`;
 }
 
 /**

@@ -2,49 +2,43 @@
  * Data for the teaching views: the cross-feed profiles each procedure assumes, a sweep of
  * L/2 over the lead angle, and the paper's tables recomputed. Pure; lengths mm, angles degrees.
  */
-import {
-  bediHalfInterval,
-  bediModel,
-  bediScallopHeight,
-  cornerBallModel,
-  osculatingModel,
-  redonnetHalfInterval,
-  redonnetModel,
-  redonnetScallopHeight,
-  sekineHalfInterval,
-  sekineModel,
-  sekineScallopHeight,
-} from './approximations';
 import { compareForward } from './compare';
 import { minConcaveRadiusMm, PLANE, type Surface } from './cylinder';
 import { exactIntervalMm, exactScallopHeightMm } from './exact';
 import { profilePolyline } from './geometry';
 import { PAPER_CONDITIONS, type PaperCondition, type ProcedureValues } from './paper';
 import { shapeOfTool } from './posture';
-import { PROCEDURE_KEYS, type ProcedureKey } from './procedures';
+import {
+  APPROXIMATION_KEYS,
+  APPROXIMATIONS,
+  type ApproximationKey,
+  type ModelCurve,
+  modelCurve,
+  PAPER_PROCEDURE_KEYS,
+  type PaperProcedureKey,
+  PROCEDURE_KEYS,
+  type ProcedureKey,
+} from './procedures';
 import { noAnswerReason, type SweepGap, sweepGaps } from './sweepGaps';
 import type { InverseInput, PassPattern, ToolInput } from './validate';
 import { forwardInput, inverseInput, leavesNoScallop, scallopHeightLimits } from './validate';
 
 /** Cross-feed curves as flat (y, z) arrays, z above the contact, y from the contact (mm). */
-export interface ProfileCurves {
+export interface ProfileCurves extends ApproximationCurves {
   /** Exact tool profile, right flank only: y from 0 outwards (the whole profile without tilt, mirrored). */
   readonly exact: Float64Array;
   /** Exact tool profile, both flanks: y from the left flank's widest point to the right one's. */
   readonly profile: Float64Array;
   /** The ring ellipse it is offset from (semi-axes Rb, Rb cos(beta) sin(rho), turned by the tilt), closed. */
   readonly ringEllipse: Float64Array;
-  /** Circle of Sekine's Reff, or null where not applicable. */
-  readonly sekine: Float64Array | null;
-  /** Circle of Redonnet's Reff, or null. */
-  readonly redonnet: Float64Array | null;
-  /** Bedi's ellipse (semi-axes Rlong, Rlong sin rho), or null. */
-  readonly bedi: Float64Array | null;
-  /** The osculating circle at the contact, or null. */
-  readonly osculating: Float64Array | null;
-  /** The ball of the corner radius, or null. */
-  readonly cornerBall: Float64Array | null;
 }
+
+/**
+ * Each approximation's curve (its model's circle or ellipse: Sekine's and Redonnet's Reff, Bedi's
+ * ellipse with semi-axes Rlong and Rlong sin rho, the osculating circle, the corner ball), or null
+ * where its model does not apply.
+ */
+export type ApproximationCurves = { readonly [K in ApproximationKey]: Float64Array | null };
 
 /** Lower arc of a circle of radius r touching z = 0 at y = 0, for y in [0, min(r, yMax)]. */
 function circleArc(r: number, yMax: number, n: number): Float64Array {
@@ -96,21 +90,18 @@ export function profileCurves(tool: ToolInput, samples = 400): ProfileCurves {
     ring[2 * i] = ey * s.cosPhi + ez * s.sinPhi;
     ring[2 * i + 1] = -ey * s.sinPhi + ez * s.cosPhi + s.rcr;
   }
-  const sek = sekineModel(tool);
-  const red = redonnetModel(tool);
-  const bedi = bediModel(tool);
-  const osc = osculatingModel(tool);
-  const ball = cornerBallModel(tool);
-  return {
-    exact: Float64Array.from(right),
-    profile,
-    ringEllipse: ring,
-    sekine: sek.ok ? circleArc(sek.effectiveRadiusMm, 2 * R, n) : null,
-    redonnet: red.ok ? circleArc(red.effectiveRadiusMm, 2 * R, n) : null,
-    bedi: bedi.ok && bedi.shortRadiusMm > 0 ? ellipseArc(bedi.longRadiusMm, bedi.shortRadiusMm, 2 * R, n) : null,
-    osculating: osc.ok ? circleArc(osc.effectiveRadiusMm, 2 * R, n) : null,
-    cornerBall: ball.ok ? circleArc(ball.effectiveRadiusMm, 2 * R, n) : null,
-  };
+  const curves = {} as { -readonly [K in ApproximationKey]: Float64Array | null };
+  for (const key of APPROXIMATION_KEYS) {
+    const m = modelCurve(key, tool);
+    curves[key] = m.ok ? curveArc(m.curve, 2 * R, n) : null;
+  }
+  return { exact: Float64Array.from(right), profile, ringEllipse: ring, ...curves };
+}
+
+/** The lower arc of a model's curve for y in [0, yMax] (n + 1 points); null for a flat ellipse. */
+function curveArc(curve: ModelCurve, yMax: number, n: number): Float64Array | null {
+  if (curve.shape === 'circle') return circleArc(curve.radiusMm, yMax, n);
+  return curve.shortRadiusMm > 0 ? ellipseArc(curve.longRadiusMm, curve.shortRadiusMm, yMax, n) : null;
 }
 
 /** L/2 of the four procedures over the lead angle (NaN-free: null where none). */
@@ -152,20 +143,15 @@ export function rhoSweep(
     out.rhoDeg.push(rho);
     const tool: ToolInput = { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, tiltAngleDeg: tiltDeg };
     if (!(h < scallopHeightLimits(tool).limitMm)) {
-      out.exact.push(null);
-      out.sekine.push(null);
-      out.redonnet.push(null);
-      out.bedi.push(null);
+      for (const key of ['exact', ...PAPER_PROCEDURE_KEYS] as const) out[key].push(null);
       continue;
     }
     const input = forwardInput(tool, pattern, h);
     out.exact.push(exactIntervalMm(input) / 2);
-    const sek = sekineHalfInterval(input);
-    const red = redonnetHalfInterval(input);
-    const bed = bediHalfInterval(input);
-    out.sekine.push(sek.ok ? sek.halfIntervalMm : null);
-    out.redonnet.push(red.ok ? red.halfIntervalMm : null);
-    out.bedi.push(bed.ok ? bed.halfIntervalMm : null);
+    for (const key of PAPER_PROCEDURE_KEYS) {
+      const r = APPROXIMATIONS[key].halfInterval(input);
+      out[key].push(r.ok ? r.halfIntervalMm : null);
+    }
   }
   return out;
 }
@@ -177,14 +163,24 @@ export interface PaperTableRow extends Omit<PaperCondition, 'notesExactHalf'> {
   readonly computedHeight: ProcedureValues;
 }
 
+/** The paper's procedures' values beside the 3D one (0 where a procedure has none). */
+function paperValues(
+  threeD: number,
+  value: (key: PaperProcedureKey) => { ok: true; value: number } | { ok: false },
+): ProcedureValues {
+  const out: { -readonly [K in keyof ProcedureValues]: number } = { threeD, sekine: 0, redonnet: 0, bedi: 0 };
+  for (const key of PAPER_PROCEDURE_KEYS) {
+    const r = value(key);
+    out[key] = r.ok ? r.value : 0;
+  }
+  return out;
+}
+
 function heightsAt(input: InverseInput): ProcedureValues {
-  const value = (r: { ok: true; scallopHeightMm: number } | { ok: false }) => (r.ok ? r.scallopHeightMm : 0);
-  return {
-    threeD: exactScallopHeightMm(input),
-    sekine: value(sekineScallopHeight(input)),
-    redonnet: value(redonnetScallopHeight(input)),
-    bedi: value(bediScallopHeight(input)),
-  };
+  return paperValues(exactScallopHeightMm(input), (key) => {
+    const r = APPROXIMATIONS[key].scallopHeight(input);
+    return r.ok ? { ok: true, value: r.scallopHeightMm } : r;
+  });
 }
 
 /** Tables 2-5 recomputed (the conditions are all valid, so every value exists). */
@@ -195,7 +191,6 @@ export function paperTables(): PaperTableRow[] {
       'one-way',
       c.h,
     );
-    const value = (r: { ok: true; halfIntervalMm: number } | { ok: false }) => (r.ok ? r.halfIntervalMm : 0);
     return {
       table: c.table,
       R: c.R,
@@ -203,12 +198,10 @@ export function paperTables(): PaperTableRow[] {
       rho: c.rho,
       h: c.h,
       printedHalf: c.printedHalf,
-      computedHalf: {
-        threeD: exactIntervalMm(input) / 2,
-        sekine: value(sekineHalfInterval(input)),
-        redonnet: value(redonnetHalfInterval(input)),
-        bedi: value(bediHalfInterval(input)),
-      },
+      computedHalf: paperValues(exactIntervalMm(input) / 2, (key) => {
+        const r = APPROXIMATIONS[key].halfInterval(input);
+        return r.ok ? { ok: true, value: r.halfIntervalMm } : r;
+      }),
       printedHeight: c.printedHeight,
       computedHeight: heightsAt(inverseInput(input, 'one-way', 2 * c.printedHalf.threeD)),
     };

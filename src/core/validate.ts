@@ -7,21 +7,12 @@
  * (describeInputError), in the user's unit.
  */
 import { cylinderSolver, minConcaveRadiusMm, PLANE, type Surface, type SurfaceAxis } from './cylinder';
+import { FIELD_LABELS, FIELDS, type FieldName, isLengthField } from './input/fields';
 import { type FlankLimits, flankAtHeight, flankLimits, type PostureShape, shapeOfTool } from './posture';
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from './units';
 
-/** Names of the user-facing inputs. */
-export type FieldName =
-  | 'R'
-  | 'Rcr'
-  | 'rho'
-  | 'tilt'
-  | 'pattern'
-  | 'surfaceRadius'
-  | 'surfaceAxis'
-  | 'h'
-  | 'interval'
-  | 'ra';
+/** Names of the user-facing inputs (the field registry's, input/fields.ts). */
+export type { FieldName };
 
 /** Every field an error can name (the target roughness `ra` included; kept as an alias). */
 export type AnyFieldName = FieldName;
@@ -146,19 +137,8 @@ export const MIN_TOOL_RADIUS_MM = 0.001;
  */
 export const MIN_LENGTH_MM = 1e-9;
 
-/** Labels of the fields as messages name them. */
-export const FIELD_LABELS: Readonly<Record<AnyFieldName, string>> = {
-  R: 'Tool radius R',
-  Rcr: 'Corner radius Rcr',
-  rho: 'Lead angle rho',
-  tilt: 'Tilt angle beta',
-  pattern: 'Pass pattern',
-  surfaceRadius: 'Surface radius Rs',
-  surfaceAxis: 'Cylinder axis',
-  h: 'Scallop height h',
-  interval: 'Step-over L',
-  ra: 'Roughness Ra',
-};
+/** Labels of the fields as messages name them (the field registry's). */
+export { FIELD_LABELS };
 
 /** Options of {@link describeInputError}. */
 export interface DescribeOptions {
@@ -178,18 +158,6 @@ export interface DescribeOptions {
   readonly radiusAsMagnitude?: boolean;
 }
 
-/** True for fields measured as lengths (converted to the user's unit in messages). */
-function isLength(field: AnyFieldName): boolean {
-  return (
-    field === 'R' ||
-    field === 'Rcr' ||
-    field === 'h' ||
-    field === 'interval' ||
-    field === 'surfaceRadius' ||
-    field === 'ra'
-  );
-}
-
 /**
  * The message of an input error in `unit` (lengths converted; angles stay in degrees). The one
  * place where error data becomes words.
@@ -197,15 +165,11 @@ function isLength(field: AnyFieldName): boolean {
 export function describeInputError(e: AnyInputError, unit: LengthUnit, options: DescribeOptions = {}): string {
   const half = e.field === 'interval' && options.intervalAsHalf === true;
   const diameter = options.toolSizeAsDiameter === true;
-  const label = half
-    ? 'Half path interval L/2'
-    : diameter && e.field === 'R'
-      ? 'Tool diameter D'
-      : FIELD_LABELS[e.field];
+  const label = half ? FIELDS.halfInterval.label : diameter && e.field === 'R' ? FIELDS.D.label : FIELD_LABELS[e.field];
   const u = unitSymbol(unit);
   const scale = half ? 0.5 : diameter && e.field === 'R' ? 2 : 1;
   const length = (mm: number) => `${formatInputNumber(fromMm(mm * scale, unit))} ${u}`;
-  const limit = e.limit === null ? '' : isLength(e.field) ? length(e.limit) : `${formatAngleDeg(e.limit)} degrees`;
+  const limit = e.limit === null ? '' : isLengthField(e.field) ? length(e.limit) : `${formatAngleDeg(e.limit)} degrees`;
   const shown = options.typed ?? e.got;
   const got = `(got ${shown.length > 24 ? `${shown.slice(0, 21)}...` : shown})`;
   switch (e.code) {

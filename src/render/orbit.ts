@@ -11,6 +11,7 @@
  * drag or a pinch reaches the view.
  */
 import { type PerspectiveCamera, Quaternion, Vector3 } from 'three';
+import { degToRad } from '../core/units';
 
 /** Radians turned per pixel dragged, as a fraction of the element's height (a full turn per height). */
 const TURN_PER_HEIGHT_RAD = 2 * Math.PI;
@@ -95,7 +96,7 @@ export class OrbitController {
   /** Moves camera and target together by a drag of (dx, dy) pixels on an element `heightPx` high. */
   pan(dxPx: number, dyPx: number, heightPx: number): void {
     const distance = this.camera.position.distanceTo(this.target);
-    const unitsPerPx = (2 * distance * Math.tan(((this.camera.fov / 2) * Math.PI) / 180)) / Math.max(1, heightPx);
+    const unitsPerPx = (2 * distance * Math.tan(degToRad(this.camera.fov / 2))) / Math.max(1, heightPx);
     this.camera.updateMatrixWorld();
     this.right.setFromMatrixColumn(this.camera.matrixWorld, 0).multiplyScalar(-dxPx * unitsPerPx);
     this.upOnScreen.setFromMatrixColumn(this.camera.matrixWorld, 1).multiplyScalar(dyPx * unitsPerPx);

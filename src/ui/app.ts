@@ -6,6 +6,7 @@
  * (notices), results.ts (headline and table), teaching.ts (views loading), highlight.ts, and the
  * 3D scene (render/scene.ts).
  */
+import { FIELDS } from '../core/input/fields';
 import type { ProcedureKey } from '../core/procedures';
 import type { PassPattern } from '../core/validate';
 import type { CameraPreset, ToolScene } from '../render/scene';
@@ -47,8 +48,8 @@ import { TypingGate } from './typing';
 import { UrlState } from './urlState';
 import type { ViewId } from './views/panel';
 
-/** The teaching views' ids (kept here so the views' code can load lazily). */
-const VIEW_IDS: readonly ViewId[] = ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'];
+/** The teaching views' ids, as the link's `view=` names them (the field registry's; here, so the views' code can load lazily). */
+const VIEW_IDS: readonly ViewId[] = FIELDS.view.values;
 
 /** Observes the page from outside (the e2e build's probe); the page itself needs none. */
 export interface AppObserver {
@@ -106,11 +107,11 @@ export class CalculatorApp {
     document.documentElement.classList.toggle('single-view', embed && requested !== undefined);
     document.documentElement.dataset.view = requested ?? '';
     const extra: Record<string, string> = {};
-    if (embed) extra.embed = '1';
-    if (requested) extra.view = requested;
+    if (embed) extra[FIELDS.embed.url] = '1';
+    if (requested) extra[FIELDS.view.url] = requested;
     const theme = parseTheme(window.location.search);
     startTheme(theme);
-    if (theme.override) extra.theme = theme.override;
+    if (theme.override) extra[FIELDS.theme.url] = theme.override;
     this.url = new UrlState(extra, root.querySelector<HTMLAnchorElement>('[data-testid="open-full"]'));
     this.notice = new Notice(must(root, '[data-testid="notice"]'));
     this.results = new ResultsPanel(root);
@@ -134,7 +135,7 @@ export class CalculatorApp {
     wireCopyEmbed(must(root, '[data-testid="copy-embed"]'), must(root, '[data-testid="copy-embed-status"]'), () =>
       embedCode(
         `${window.location.origin}${window.location.pathname}`,
-        toSearch(this.state, { ...extra, view: this.teaching?.activeView ?? requested ?? 'profile' }),
+        toSearch(this.state, { ...extra, [FIELDS.view.url]: this.teaching?.activeView ?? requested ?? 'profile' }),
       ),
     );
     this.fields = new FieldsPanel(root, {

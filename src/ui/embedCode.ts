@@ -4,10 +4,8 @@
  * (public/embed.js, which sizes the iframe to its content). The button copies it to the clipboard
  * and says so; where the clipboard is refused it shows the code selected, to copy by hand.
  */
+import { embedAttributeOfParam } from '../core/input/fields';
 import { html } from './dom';
-
-/** The attribute of the custom element for each query parameter (public/embed.js maps them back). */
-const ATTRIBUTE: Readonly<Record<string, string>> = { R: 'r', Rcr: 'rcr', L: 'l' };
 
 function escapeAttribute(text: string): string {
   return text.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
@@ -23,7 +21,8 @@ export function embedCode(pageUrl: string, search: string): string {
   const frameParams = new URLSearchParams(params);
   frameParams.set('embed', '1');
   const src = `${pageUrl}?${frameParams.toString()}`;
-  const attributes = [...params].map(([k, v]) => `${ATTRIBUTE[k] ?? k}="${escapeAttribute(v)}"`).join(' ');
+  // Each parameter as the custom element's attribute (the field registry's; public/embed.js maps them back).
+  const attributes = [...params].map(([k, v]) => `${embedAttributeOfParam(k) ?? k}="${escapeAttribute(v)}"`).join(' ');
   const script = new URL('embed.js', pageUrl).href;
   return [
     '<!-- Path interval calculator: a plain iframe (fixed height) -->',

@@ -5,9 +5,9 @@
  */
 
 import type { SurfaceAxis } from '../core/cylinder';
+import { FIELD_LABELS, FIELDS, fieldOfPageKey } from '../core/input/fields';
 import { unitSymbol } from '../core/units';
 import type { PassPattern } from '../core/validate';
-import { FIELD_LABELS, type FieldName } from '../core/validate';
 import type { SolveMode } from '../worker/protocol';
 import { html } from './dom';
 import { dragEarly } from './sliderDrag';
@@ -61,19 +61,8 @@ const HINTS: Readonly<Record<FieldKey, string>> = {
 };
 
 /** The tool size field's label and hint in diameter mode. */
-const DIAMETER_LABEL = 'Tool diameter D';
+const DIAMETER_LABEL = FIELDS.D.label;
 const DIAMETER_HINT = 'as catalogues give it; D = 2R';
-
-const CORE_FIELD: Readonly<Record<FieldKey, FieldName>> = {
-  R: 'R',
-  Rcr: 'Rcr',
-  rho: 'rho',
-  tilt: 'tilt',
-  h: 'h',
-  L: 'interval',
-  ra: 'ra',
-  Rs: 'surfaceRadius',
-};
 
 /** The test ids' names of fields whose key differs (the surface radius: input-surface-radius). */
 const TEST_NAME: Partial<Readonly<Record<FieldKey, string>>> = { Rs: 'surface-radius' };
@@ -127,7 +116,7 @@ export class FieldsPanel {
 
   private buildField(container: HTMLElement, key: FieldKey, events: FieldEvents): FieldView {
     const id = `field-${key}`;
-    const label = FIELD_LABELS[CORE_FIELD[key]];
+    const label = FIELD_LABELS[fieldOfPageKey(key)];
     const testName = TEST_NAME[key] ?? key;
     const row = html('div', { class: 'field', 'data-field': key });
     const slider = html('input', {

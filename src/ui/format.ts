@@ -4,7 +4,15 @@
  * convergence two finer) and never fewer than four significant digits, so a micro tool reads
  * 4.472e-5 rather than 0.0000. Never NaN, never -0: a missing value is a dash.
  */
-import { formatPercent, formatSignificant, fromMm, type LengthUnit, NO_VALUE, readableLengthUnit } from '../core/units';
+import {
+  formatPercent,
+  formatSignificant,
+  fromMm,
+  type LengthUnit,
+  NO_VALUE,
+  radToDeg,
+  readableLengthUnit,
+} from '../core/units';
 
 export type Resolution = 'length' | 'height' | 'fine';
 
@@ -74,7 +82,8 @@ export function formatDeg(deg: number): string {
 
 /** An angle given in radians, in degrees with two decimals (captions of the step-through). */
 export function formatRadAsDeg(rad: number): string {
-  return `${formatSignificant((rad * 180) / Math.PI, { digits: Math.max(3, digitsFor((rad * 180) / Math.PI, 2)) })} deg`;
+  const deg = radToDeg(rad);
+  return `${formatSignificant(deg, { digits: Math.max(3, digitsFor(deg, 2)) })} deg`;
 }
 
 export { NO_VALUE };

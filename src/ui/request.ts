@@ -4,15 +4,10 @@
  * and nowhere else on the way in. Pure (no DOM).
  */
 
+import { type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
+import { rawFields } from '../core/input/raw';
 import { validateRaTarget } from '../core/raTarget';
-import {
-  describeInputError,
-  type FieldName,
-  type InputError,
-  inputError,
-  validateForward,
-  validateInverse,
-} from '../core/validate';
+import { describeInputError, type InputError, inputError, validateForward, validateInverse } from '../core/validate';
 import type { SolveRequest } from '../worker/protocol';
 import { type CalculatorState, type FieldKey, fieldInMm, parseField, sizeIsDiameter } from './state';
 
@@ -40,15 +35,12 @@ function slowTarget(state: CalculatorState): InputError | null {
 }
 
 function validated(state: CalculatorState): BuiltRequest {
-  const mm = (key: FieldKey) => fieldInMm(state, key);
-  const tool = {
-    R: mm('R'),
-    Rcr: mm('Rcr'),
-    rho: mm('rho'),
-    tilt: mm('tilt'),
-    pattern: state.pattern,
-    ...surfaceFields(state),
+  /** A field's value in mm or degrees (its text when it is not a number), read from its page field. */
+  const mm = (name: FieldName) => {
+    const key = pageKeyOf(name);
+    return key === null ? undefined : fieldInMm(state, key);
   };
+  const tool = { ...rawFields(TOOL_FIELDS, mm), pattern: state.pattern, ...surfaceFields(state) };
   if (state.mode === 'forward' && state.target === 'ra') {
     const v = validateRaTarget({ ...tool, ra: mm('ra') });
     return v.ok ? { ok: true, request: { mode: 'ra', input: v.value } } : v;
@@ -57,7 +49,7 @@ function validated(state: CalculatorState): BuiltRequest {
     const v = validateForward({ ...tool, h: mm('h') });
     return v.ok ? { ok: true, request: { mode: 'forward', input: v.value } } : v;
   }
-  const v = validateInverse({ ...tool, interval: mm('L') });
+  const v = validateInverse({ ...tool, interval: mm('interval') });
   return v.ok ? { ok: true, request: { mode: 'inverse', input: v.value } } : v;
 }
 
@@ -96,9 +88,7 @@ function surfaceError(state: CalculatorState): InputError | null {
  * the radius field.
  */
 export function fieldOfError(field: FieldName): FieldKey | null {
-  if (field === 'interval') return 'L';
-  if (field === 'surfaceRadius') return 'Rs';
-  return field === 'pattern' || field === 'surfaceAxis' ? null : field;
+  return pageKeyOf(field);
 }
 
 /** Each field's message, in the user's unit, quoting the text as typed. */

@@ -10,7 +10,9 @@ import { maxRaCachedMm } from '../core/raTarget';
 import { fromMm, toMm } from '../core/units';
 import {
   MAX_SURFACE_RADIUS_MM,
+  MAX_TOOL_RADIUS_MM,
   MIN_SURFACE_RADIUS_MM,
+  MIN_TOOL_RADIUS_MM,
   maxIntervalMm,
   scallopHeightLimits,
   type ToolInput,
@@ -36,7 +38,7 @@ function rangeTool(state: CalculatorState): ToolInput {
   const Rcr = num('Rcr');
   const rho = num('rho');
   const tilt = num('tilt');
-  const rMm = R !== null && R > 0 ? Math.min(1000, Math.max(0.001, toMm(R, state.unit))) : 3;
+  const rMm = R !== null && R > 0 ? Math.min(MAX_TOOL_RADIUS_MM, Math.max(MIN_TOOL_RADIUS_MM, toMm(R, state.unit))) : 3;
   const rcrMm = Rcr !== null && Rcr >= 0 ? Math.min(toMm(Rcr, state.unit), rMm) : rMm / 3;
   return {
     toolRadiusMm: rMm,

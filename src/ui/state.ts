@@ -4,12 +4,22 @@
  */
 
 import type { SurfaceAxis } from '../core/cylinder';
+import {
+  FIELDS,
+  type FieldId,
+  fieldOfPageKey,
+  isLengthField as isLength,
+  PAGE_FIELD_KEYS,
+  type PageFieldKey,
+  urlParamOf,
+} from '../core/input/fields';
 import { formatInputNumber, fromMm, type LengthUnit, toMm } from '../core/units';
 import type { PassPattern } from '../core/validate';
 import type { SolveMode } from '../worker/protocol';
 
 export type Unit = LengthUnit;
-export type FieldKey = 'R' | 'Rcr' | 'rho' | 'tilt' | 'h' | 'L' | 'ra' | 'Rs';
+/** The page's text fields: R (or D), Rcr, rho, tilt, Rs, h, ra, L (the field registry's page keys). */
+export type FieldKey = PageFieldKey;
 /** What the forward problem is given: a scallop height h, or a roughness Ra (h then follows). */
 export type Target = 'h' | 'ra';
 /** How the tool size field is given: the radius R, or the diameter D = 2R, as catalogues give it. */
@@ -49,12 +59,24 @@ export const DEFAULT_FIELDS_MM: Readonly<Record<FieldKey, string>> = {
   Rs: '50',
 };
 
-export const FIELD_KEYS: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'tilt', 'h', 'ra', 'L', 'Rs'];
+/** The page's text fields, in the form's order (the field registry's). */
+export const FIELD_KEYS: readonly FieldKey[] = PAGE_FIELD_KEYS;
 
 /** True for the fields that hold a length (converted with the unit); angles are degrees. */
 export function isLengthField(key: FieldKey): boolean {
-  return key !== 'rho' && key !== 'tilt';
+  return isLength(fieldOfPageKey(key));
 }
+
+/** The URL query parameter of a registry field. */
+const param = (id: FieldId): string => urlParamOf(id);
+
+/**
+ * The URL parameters that give a number of the tool or the problem (R or D, Rcr, rho, tilt, h, ra,
+ * L): one of them in a link makes the others it needs "missing" (the surface has its own defaults).
+ */
+const GIVEN_PARAMS: readonly string[] = Object.values(FIELDS).flatMap((f) =>
+  (f.group === 'tool' || f.group === 'quantity' || f.group === 'alias') && f.url !== null ? [f.url] : [],
+);
 
 /** Formats a number for a field: up to 6 significant digits, no float noise, no exponent for usual sizes. */
 export function formatField(value: number): string {
@@ -171,46 +193,33 @@ export interface ParsedUrl {
 export function parseUrl(search: string): ParsedUrl {
   const params = new URLSearchParams(search);
   const notices: string[] = [];
-  const unitText = params.get('unit');
-  let unit: Unit = 'mm';
-  if (unitText === 'in' || unitText === 'inch') unit = 'in';
-  else if (unitText !== null && unitText !== 'mm') notices.push(`unit="${unitText}" is not mm or in; using mm.`);
-  const modeText = params.get('mode');
-  let mode: SolveMode = 'forward';
-  if (modeText === 'inverse') mode = 'inverse';
-  else if (modeText !== null && modeText !== 'forward')
-    notices.push(`mode="${modeText}" is not forward or inverse; using forward.`);
-  const patternText = params.get('pattern');
-  let pattern: PassPattern = 'one-way';
-  if (patternText === 'zigzag') pattern = 'zigzag';
-  else if (patternText !== null && patternText !== 'one-way')
-    notices.push(`pattern="${patternText.slice(0, 20)}" is not one-way or zigzag; using one-way.`);
-  const targetText = params.get('target');
-  let target: Target = 'h';
-  if (targetText === 'ra') target = 'ra';
-  else if (targetText !== null && targetText !== 'h')
-    notices.push(`target="${targetText.slice(0, 20)}" is not h or ra; using h.`);
+  const unit = choice(params, 'unit', notices, { inch: 'in' });
+  const mode = choice(params, 'mode', notices);
+  const pattern = choice(params, 'pattern', notices);
+  const target = choice(params, 'target', notices);
   const defaults = defaultState(unit, mode).fields;
   const fields = { ...defaults };
   const size = sizeFromUrl(params, notices);
   const needed: FieldKey[] = ['R', 'Rcr', 'rho', mode === 'forward' ? target : 'L'];
-  const anyGiven = FIELD_KEYS.some((k) => params.has(k)) || params.has('D');
+  const anyGiven = GIVEN_PARAMS.some((p) => params.has(p));
   const surface = parseSurface(params, defaults.Rs, notices);
   if (surface.radiusText !== null) fields.Rs = surface.radiusText;
   for (const key of FIELD_KEYS) {
     if (key === 'Rs') continue; // in the link as the signed surfaceRadius (parseSurface)
-    const text = params.get(key);
+    const name = param(fieldOfPageKey(key));
+    const text = params.get(name);
     if (text === null) {
-      if (anyGiven && needed.includes(key) && !(key === 'R' && params.has('D')))
-        notices.push(`${key} is missing from the link; using the default ${defaults[key]}.`);
+      if (anyGiven && needed.includes(key) && !(key === 'R' && params.has(param('D'))))
+        notices.push(`${name} is missing from the link; using the default ${defaults[key]}.`);
       continue;
     }
     const v = parseField(text);
     if (v === null)
-      notices.push(`${key}="${text.slice(0, 20)}" in the link is not a number; using the default ${defaults[key]}.`);
+      notices.push(`${name}="${text.slice(0, 20)}" in the link is not a number; using the default ${defaults[key]}.`);
     else fields[key] = text.trim();
   }
-  const embed = params.get('embed') === '1' || params.get('embed') === 'true';
+  const embedText = params.get(param('embed'));
+  const embed = embedText !== null && (FIELDS.embed.values as readonly string[]).includes(embedText);
   const state: CalculatorState = {
     unit,
     mode,
@@ -224,8 +233,33 @@ export function parseUrl(search: string): ParsedUrl {
     state: size === 'D' ? diameterFromUrl(state, params, notices) : state,
     notices,
     embed,
-    view: params.get('view'),
+    view: params.get(param('view')),
   };
+}
+
+/** The words a switch of the link takes (the field registry's values; the first is the default). */
+type ChoiceId = 'unit' | 'mode' | 'pattern' | 'target' | 'surfaceAxis';
+type ChoiceOf<I extends ChoiceId> = (typeof FIELDS)[I]['values'][number];
+
+/**
+ * A switch's word in the link: one of its values (or an alias of one), else its default (the first
+ * value) with a notice; the default when the link leaves it out.
+ */
+function choice<I extends ChoiceId>(
+  params: URLSearchParams,
+  id: I,
+  notices: string[],
+  aliases: Readonly<Record<string, ChoiceOf<I>>> = {},
+): ChoiceOf<I> {
+  const values = FIELDS[id].values as readonly ChoiceOf<I>[];
+  const fallback = values[0] as ChoiceOf<I>;
+  const name = param(id);
+  const text = params.get(name);
+  if (text === null) return fallback;
+  const found = values.find((v) => v === text) ?? aliases[text];
+  if (found !== undefined) return found;
+  notices.push(`${name}="${text.slice(0, 20)}" is not ${values.join(' or ')}; using ${fallback}.`);
+  return fallback;
 }
 
 /**
@@ -233,18 +267,21 @@ export function parseUrl(search: string): ParsedUrl {
  * the size field to D; with both, R wins and a notice says so (a link names one of them).
  */
 function sizeFromUrl(params: URLSearchParams, notices: string[]): ToolSize {
-  if (!params.has('D')) return 'R';
-  if (!params.has('R')) return 'D';
-  notices.push(`both R and D are in the link; using R=${(params.get('R') ?? '').slice(0, 20)} (D ignored).`);
+  const [r, d] = [param('R'), param('D')];
+  if (!params.has(d)) return 'R';
+  if (!params.has(r)) return 'D';
+  notices.push(`both ${r} and ${d} are in the link; using ${r}=${(params.get(r) ?? '').slice(0, 20)} (${d} ignored).`);
   return 'R';
 }
 
 /** The state of a link that gives the diameter D: the size field holds D (its default 2R when D is not a number). */
 function diameterFromUrl(state: CalculatorState, params: URLSearchParams, notices: string[]): CalculatorState {
   const given = withSize(state, 'D');
-  const text = params.get('D') ?? '';
+  const text = params.get(param('D')) ?? '';
   if (parseField(text) !== null) return { ...given, fields: { ...given.fields, R: text.trim() } };
-  notices.push(`D="${text.slice(0, 20)}" in the link is not a number; using the default ${given.fields.R}.`);
+  notices.push(
+    `${param('D')}="${text.slice(0, 20)}" in the link is not a number; using the default ${given.fields.R}.`,
+  );
   return given;
 }
 
@@ -258,17 +295,14 @@ function parseSurface(
   defaultRadius: string,
   notices: string[],
 ): { kind: SurfaceKind; axis: SurfaceAxis; radiusText: string | null } {
-  const axisText = params.get('surfaceAxis');
-  let axis: SurfaceAxis = 'feed';
-  if (axisText === 'cross') axis = 'cross';
-  else if (axisText !== null && axisText !== 'feed')
-    notices.push(`surfaceAxis="${axisText.slice(0, 20)}" is not feed or cross; using feed.`);
-  const text = params.get('surfaceRadius');
+  const axis: SurfaceAxis = choice(params, 'surfaceAxis', notices);
+  const name = param('surfaceRadius');
+  const text = params.get(name);
   if (text === null || text.trim() === '' || text.trim() === 'plane') return { kind: 'plane', axis, radiusText: null };
   const v = parseField(text);
   if (v === null) {
     notices.push(
-      `surfaceRadius="${text.slice(0, 20)}" in the link is not a number; using a plane (a cylinder's radius defaults to ${defaultRadius}).`,
+      `${name}="${text.slice(0, 20)}" in the link is not a number; using a plane (a cylinder's radius defaults to ${defaultRadius}).`,
     );
     return { kind: 'plane', axis, radiusText: null };
   }
@@ -290,24 +324,25 @@ export function signedRadiusText(state: CalculatorState): string {
  */
 export function toSearch(state: CalculatorState, extra: Readonly<Record<string, string>> = {}): string {
   const params = new URLSearchParams();
-  params.set(sizeIsDiameter(state) ? 'D' : 'R', state.fields.R);
-  params.set('Rcr', state.fields.Rcr);
-  params.set('rho', state.fields.rho);
-  if (state.fields.tilt.trim() !== '0') params.set('tilt', state.fields.tilt);
-  if (state.pattern !== 'one-way') params.set('pattern', state.pattern);
+  const set = (id: FieldId, value: string) => params.set(param(id), value);
+  set(sizeIsDiameter(state) ? 'D' : 'R', state.fields.R);
+  set('Rcr', state.fields.Rcr);
+  set('rho', state.fields.rho);
+  if (state.fields.tilt.trim() !== '0') set('tilt', state.fields.tilt);
+  if (state.pattern !== 'one-way') set('pattern', state.pattern);
   if (state.surface !== 'plane') {
-    params.set('surfaceRadius', signedRadiusText(state));
-    params.set('surfaceAxis', state.surfaceAxis);
+    set('surfaceRadius', signedRadiusText(state));
+    set('surfaceAxis', state.surfaceAxis);
   }
   if (state.mode === 'forward' && state.target === 'ra') {
-    params.set('target', 'ra');
-    params.set('ra', state.fields.ra);
-  } else if (state.mode === 'forward') params.set('h', state.fields.h);
+    set('target', 'ra');
+    set('ra', state.fields.ra);
+  } else if (state.mode === 'forward') set('h', state.fields.h);
   else {
-    params.set('mode', 'inverse');
-    params.set('L', state.fields.L);
+    set('mode', 'inverse');
+    set('interval', state.fields.L);
   }
-  params.set('unit', state.unit);
+  set('unit', state.unit);
   for (const [k, v] of Object.entries(extra)) params.set(k, v);
   return `?${params.toString()}`;
 }

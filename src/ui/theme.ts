@@ -5,6 +5,8 @@
  * properties for that theme. Canvas parts (the 3D scenes, the chart) are told on each change.
  */
 
+import { FIELDS } from '../core/input/fields';
+
 export type Theme = 'light' | 'dark';
 
 export interface ThemeChoice {
@@ -16,12 +18,14 @@ export interface ThemeChoice {
 
 /** Reads `theme=` from a query string: `light`, `dark`, absent (follow the system) or invalid (notice). */
 export function parseTheme(search: string): ThemeChoice {
-  const text = new URLSearchParams(search).get('theme');
+  const { url, values } = FIELDS.theme;
+  const text = new URLSearchParams(search).get(url);
   if (text === null) return { override: null, notice: null };
-  if (text === 'light' || text === 'dark') return { override: text, notice: null };
+  const theme = values.find((v) => v === text);
+  if (theme !== undefined) return { override: theme, notice: null };
   return {
     override: null,
-    notice: `theme="${text.slice(0, 20)}" is not light or dark; following the system's colour scheme.`,
+    notice: `${url}="${text.slice(0, 20)}" is not ${values.join(' or ')}; following the system's colour scheme.`,
   };
 }
 

@@ -7,8 +7,10 @@
  */
 
 import type { CylinderSurface, Surface } from '../core/cylinder';
+import { type FieldName, PASS_FIELDS } from '../core/input/fields';
+import { sameFields } from '../core/input/raw';
 import type { LookupGrid, LookupTable, LookupTool } from '../core/lookupTable';
-import type { ApproximationKey, CurvatureRowKey, ProcedureKey } from '../core/procedures';
+import type { ApproximationKey, CurvatureRowKey, ForwardModels, ProcedureKey } from '../core/procedures';
 import type { RaTargetInput, RoughnessSummary } from '../core/raTarget';
 import type { SweepGap } from '../core/sweepGaps';
 import type { PaperTableRow } from '../core/teaching';
@@ -27,30 +29,15 @@ export type SolveRequest =
 /** The page's two directions (a target Ra is a forward question). */
 export type SolveMode = 'forward' | 'inverse';
 
+/** The field each mode's question gives (the field registry's): a scallop height, a target Ra, a step-over. */
+export const QUESTION_FIELD = { forward: 'h', ra: 'ra', inverse: 'interval' } as const satisfies Readonly<
+  Record<SolveRequest['mode'], FieldName>
+>;
+
 /** True when both requests ask the same question (every input equal); null equals nothing. */
 export function sameRequest(a: SolveRequest | null, b: SolveRequest | null): boolean {
   if (a === null || b === null || a.mode !== b.mode) return false;
-  const x = a.input;
-  const y = b.input;
-  if (
-    x.toolRadiusMm !== y.toolRadiusMm ||
-    x.cornerRadiusMm !== y.cornerRadiusMm ||
-    x.leadAngleDeg !== y.leadAngleDeg ||
-    x.tiltAngleDeg !== y.tiltAngleDeg ||
-    x.pattern !== y.pattern ||
-    !sameSurface(x.surface, y.surface)
-  )
-    return false;
-  if (a.mode === 'ra') return a.input.targetRaMm === (b.input as RaTargetInput).targetRaMm;
-  return a.mode === 'forward'
-    ? a.input.scallopHeightMm === (b.input as ForwardInput).scallopHeightMm
-    : a.input.intervalMm === (b.input as InverseInput).intervalMm;
-}
-
-/** True when both are the plane, or cylinders of the same radius and axis. */
-function sameSurface(a: Surface, b: Surface): boolean {
-  if (a.kind === 'plane' || b.kind === 'plane') return a.kind === b.kind;
-  return a.radiusMm === b.radiusMm && a.axis === b.axis;
+  return sameFields(a.input, b.input, PASS_FIELDS) && sameFields(a.input, b.input, [QUESTION_FIELD[a.mode]]);
 }
 
 /** Where one cusp stands: across the feed from this pass's contact, and its height above it (mm). */
@@ -100,9 +87,9 @@ export type ProcedureNote =
     }
   | { readonly kind: 'wall'; readonly intervalMm: number; readonly maxIntervalMm: number };
 
-/** One row of the results table. */
-export interface ProcedureRow {
-  readonly key: ProcedureKey;
+/** One row of the results table, of a procedure (K: ProcedureKey) or of a cylinder's comparison (CurvatureRowKey). */
+export interface ResultRow<K extends string> {
+  readonly key: K;
   /** Forward: L/2 of this procedure. Inverse: the scallop height it predicts. */
   readonly valueMm: number | null;
   /** Signed deviation from exact (of L/2 forward, of h inverse), mm and %; null for exact or no value. */
@@ -113,19 +100,15 @@ export interface ProcedureRow {
   readonly note: ProcedureNote | null;
 }
 
+/** One row of the results table. */
+export type ProcedureRow = ResultRow<ProcedureKey>;
+
 /**
  * One row a cylinder adds to the results table (the plane's exact answer, or a procedure corrected
  * for the curvature), with the same fields as a procedure's row: forward L/2 and its deviation from
  * exact, the scallop its own L really leaves on the cylinder; inverse the scallop height it predicts.
  */
-export interface CurvatureRow {
-  readonly key: CurvatureRowKey;
-  readonly valueMm: number | null;
-  readonly deviationMm: number | null;
-  readonly deviationPercent: number | null;
-  readonly realScallopMm: number | null;
-  readonly note: ProcedureNote | null;
-}
+export type CurvatureRow = ResultRow<CurvatureRowKey>;
 
 /** Segments around the tool axis of the tool mesh the worker sends (the scene builds the same indices). */
 export const TOOL_RADIAL_SEGMENTS = 64;
@@ -221,8 +204,14 @@ export interface TraceResult {
   readonly exactWidthLeftMm: number;
 }
 
+/** One approximation's model for the formulas (mm) and its L/2 at h (null where it has none). */
+export type FormulaModel<K extends ApproximationKey> = ForwardModels[K] & { readonly halfIntervalMm: number | null };
+
 /** Model quantities for the formulas (mm, radians), null where a model does not apply. */
-export interface FormulaModels {
+export type FormulaModels = FormulaShape & { readonly [K in ApproximationKey]: FormulaModel<K> | null };
+
+/** The exact profile's quantities for the formulas (mm, radians). */
+export interface FormulaShape {
   readonly shape: {
     readonly a: number;
     readonly b: number;
@@ -234,21 +223,6 @@ export interface FormulaModels {
   /** Ring-angle offsets of the sections carrying each flank's cusp point. */
   readonly rightOffsetRad: number;
   readonly leftOffsetRad: number;
-  readonly sekine: {
-    readonly toolCentreHeightMm: number;
-    readonly shortRadiusMm: number;
-    readonly longRadiusMm: number;
-    readonly effectiveRadiusMm: number;
-    readonly halfIntervalMm: number | null;
-  } | null;
-  readonly redonnet: { readonly effectiveRadiusMm: number; readonly halfIntervalMm: number | null } | null;
-  readonly bedi: {
-    readonly longRadiusMm: number;
-    readonly shortRadiusMm: number;
-    readonly halfIntervalMm: number | null;
-  } | null;
-  readonly osculating: { readonly effectiveRadiusMm: number; readonly halfIntervalMm: number | null } | null;
-  readonly cornerBall: { readonly effectiveRadiusMm: number; readonly halfIntervalMm: number | null } | null;
 }
 
 /** Step-over L of every procedure along one posture angle (mm; null where none). */
@@ -335,10 +309,8 @@ export function sameTableRequest(a: TableRequest | null, b: TableRequest | null)
   if (a === null || b === null) return false;
   const same = (x: readonly number[], y: readonly number[]) => x.length === y.length && x.every((v, i) => v === y[i]);
   return (
-    a.tool.toolRadiusMm === b.tool.toolRadiusMm &&
-    a.tool.cornerRadiusMm === b.tool.cornerRadiusMm &&
-    a.tool.pattern === b.tool.pattern &&
-    sameSurface(a.tool.surface, b.tool.surface) &&
+    // The tool's fields (a table's tool has no posture: the grid gives it).
+    sameFields(a.tool, b.tool, PASS_FIELDS) &&
     same(a.grid.scallopHeightsMm, b.grid.scallopHeightsMm) &&
     same(a.grid.leadAnglesDeg, b.grid.leadAnglesDeg) &&
     same(a.grid.tiltAnglesDeg, b.grid.tiltAnglesDeg)

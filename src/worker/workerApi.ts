@@ -3,10 +3,10 @@
  * Exposed by solver.worker.ts; its type is what the page's clients call (rpc.ts `Remote`).
  */
 import { solve, teach, transferables } from './api';
+import { table } from './jobs/table';
 import type { SolveReply, SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
 import { transfer } from './rpc';
 import { type SimulateReply, SimulationRunner, simulationTransferables } from './simulate';
-import { table } from './table';
 
 /** A newer `simulate` or `cancelSimulation` stops the running simulation between steps. */
 const simulations = new SimulationRunner();

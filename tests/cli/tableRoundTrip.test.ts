@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
 import { PLANE, type Surface } from '../../src/core/cylinder';
 import { lookupGrid } from '../../src/core/lookupTable';
-import { table } from '../../src/worker/table';
+import { table } from '../../src/worker/jobs/table';
 import { run } from './helpers';
 
 function tableOf(surface: Surface, pattern: 'one-way' | 'zigzag' = 'one-way'): string {

@@ -6,6 +6,7 @@
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
+import { EMBED_ATTRIBUTES } from '../../src/core/input/fields';
 import { SHOTS, useSite } from './harness';
 import { clippedElements, colourShare } from './pixels';
 
@@ -200,6 +201,19 @@ describe('the custom element <path-interval-calculator>', () => {
       protocolRelative: `${new URL(site.url()).protocol}//calc.example/tool/?R=3&embed=1`,
       refused: REFUSED.map(() => null),
     });
+    // Every attribute of the field registry (the surface, D, ...) becomes its query parameter.
+    const taken = await host.evaluate(
+      (attributes) => {
+        const el = document.createElement('path-interval-calculator') as HTMLElement & { url: URL | null };
+        el.setAttribute('src', 'https://calc.example/');
+        attributes.forEach(([a], i) => {
+          el.setAttribute(a, `v${i}`);
+        });
+        return Object.fromEntries(el.url?.searchParams ?? []);
+      },
+      EMBED_ATTRIBUTES.map(([a, p]) => [a, p] as [string, string]),
+    );
+    expect(taken).toEqual({ ...Object.fromEntries(EMBED_ATTRIBUTES.map(([, p], i) => [p, `v${i}`])), embed: '1' });
     await host.close();
   });
 });

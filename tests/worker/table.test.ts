@@ -3,8 +3,8 @@ import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
 import { PLANE } from '../../src/core/cylinder';
 import { lookupGrid, lookupTable } from '../../src/core/lookupTable';
+import { MAX_GRID_AXIS, table } from '../../src/worker/jobs/table';
 import { sameTableRequest, type TableRequest } from '../../src/worker/protocol';
-import { MAX_GRID_AXIS, table } from '../../src/worker/table';
 import { bruteForceCylinder } from '../support/cylinderBruteForce';
 
 const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, pattern: 'one-way' as const, surface: PLANE };

@@ -1,4 +1,5 @@
 /** Shared pieces of the teaching views. */
+import type { FIELDS } from '../../core/input/fields';
 import type { ProcedureKey } from '../../core/procedures';
 import type { TeachReply } from '../../worker/protocol';
 import type { Unit } from '../state';
@@ -12,7 +13,8 @@ export interface ViewContext {
   readonly unit: Unit;
 }
 
-export type ViewId = 'profile' | 'chart' | 'tables' | 'stepper' | 'formulas' | 'surface';
+/** A teaching view's id, as the link's `view=` names it (the field registry's values). */
+export type ViewId = (typeof FIELDS.view.values)[number];
 
 export interface TeachingView {
   readonly id: ViewId;

@@ -3,7 +3,7 @@
  * Pure: no DOM.
  */
 import type { ProcedureKey } from '../../core/procedures';
-import { formatSignificant, fromMm, type LengthUnit } from '../../core/units';
+import { formatSignificant, fromMm, type LengthUnit, radToDeg } from '../../core/units';
 import type { FormulaModels } from '../../worker/protocol';
 
 /** What the slots are filled from: the forward state (mm, degrees), its exact answer and the models. */
@@ -39,7 +39,7 @@ export type FormulaSlots = Readonly<{ exact: Slots } & Record<Exclude<ProcedureK
  */
 export function formulaSlotValues(x: FormulaInputs): FormulaSlots {
   const len = (mm: number | null) => formulaNumber(mm === null ? null : fromMm(mm, x.unit));
-  const deg = (rad: number) => formulaNumber((rad * 180) / Math.PI);
+  const deg = (rad: number) => formulaNumber(radToDeg(rad));
   const m = x.models;
   const s = m.shape;
   return {

@@ -6,9 +6,12 @@
  * solved as the command line's batch does, a posture that gouges the cylinder being a row with
  * its reason. The reply echoes the request it answers.
  */
-import { lookupTable } from '../core/lookupTable';
-import { validateForward } from '../core/validate';
-import type { TableReply, TableRequest } from './protocol';
+
+import { PASS_FIELDS } from '../../core/input/fields';
+import { rawOf } from '../../core/input/raw';
+import { lookupTable } from '../../core/lookupTable';
+import { validateForward } from '../../core/validate';
+import type { TableReply, TableRequest } from '../protocol';
 
 /** Values per axis of the grid, at most (the page asks about 12 x 12 x 5). */
 export const MAX_GRID_AXIS = 64;
@@ -33,15 +36,9 @@ function badGrid(request: TableRequest): string | null {
 export function table(request: TableRequest): TableReply {
   const t = request.tool;
   const tool = validateForward({
-    R: t.toolRadiusMm,
-    Rcr: t.cornerRadiusMm,
-    rho: 0,
-    tilt: 0,
+    ...rawOf({ ...t, leadAngleDeg: 0, tiltAngleDeg: 0 }, PASS_FIELDS),
     // Any h the flat-lying tool accepts: only the tool, pattern and surface are checked here.
     h: 1e-6 * t.toolRadiusMm,
-    pattern: t.pattern,
-    surfaceRadius: t.surface.kind === 'cylinder' ? t.surface.radiusMm : undefined,
-    surfaceAxis: t.surface.kind === 'cylinder' ? t.surface.axis : undefined,
   });
   // Gouging depends on the posture, and this one (lead 0, tilt 0) is only a placeholder: a flat
   // bottom lying flat gouges every concave cylinder, while most of the grid's postures cut it.

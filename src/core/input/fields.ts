@@ -1,0 +1,399 @@
+/**
+ * The one field registry: every input the calculator takes, with each name it goes by. The core's
+ * property (`toolRadiusMm`), its short symbol (`R`), how it is measured (a length, an angle, a word
+ * from a list), the label messages give it, its range, and its name on each channel: the page's URL
+ * parameter, the command line's flag, the batch's CSV column, the embed element's attribute and the
+ * page's field. Validation, the page, the URL, the command line, the batch, the worker and the embed
+ * element (public/embed.js, generated from here by src/build/embedAttributes.ts) take their names
+ * from this table, so a field is renamed or added here, once. Pure data, no imports.
+ *
+ * Lengths are mm and angles degrees inside the program; the page's fields and URL hold the user's
+ * unit, converted at the edge (ui/request.ts). The rules themselves (cross-field limits, the
+ * posture's limits) are validate.ts's; `range` records the fixed bounds that the rules apply.
+ */
+
+/** How a field is measured: a length (mm inside), an angle (degrees), or one word of a list. */
+export type FieldKind = 'length' | 'angle' | 'enum';
+
+/**
+ * What a field is:
+ * - `tool`: the tool and its posture (ToolInput's four numbers);
+ * - `pass`: the pass pattern and the design surface (with the tool: PassInput);
+ * - `quantity`: the quantity a problem is given (h, L, a target Ra);
+ * - `alias`: another form of a field (the diameter D of R, the half step-over L/2 of L);
+ * - `page`: a setting of the page only (unit, mode, view...), in its URL and embed element.
+ */
+export type FieldGroup = 'tool' | 'pass' | 'quantity' | 'alias' | 'page';
+
+/** The fixed bounds of a number (mm or degrees); null where another field or the posture sets it. */
+export interface FieldRange {
+  readonly min: number | null;
+  readonly max: number | null;
+  /** True when the bound itself is accepted (`<=`), false for a strict bound (`<`). */
+  readonly minIncluded: boolean;
+  readonly maxIncluded: boolean;
+  /** The whole rule in words, bounds set by other fields included (`0 <= Rcr <= R`). */
+  readonly rule: string;
+}
+
+/** A column of the batch's CSV: required (R, Rcr, rho), the target (h or Ra), or optional (a default when absent or empty). */
+export interface CsvColumnSpec {
+  readonly column: string;
+  readonly role: 'required' | 'target' | 'optional';
+}
+
+/** Everything the registry says of one field. */
+export interface FieldSpec {
+  /** The symbol formulas and short texts use (`R`, `Rcr`, `beta`, `L/2`). */
+  readonly short: string;
+  /** The property of the core's validated input (`toolRadiusMm`; `surface.radiusMm` inside the surface); null for none. */
+  readonly core: string | null;
+  readonly kind: FieldKind;
+  readonly group: FieldGroup;
+  /** The field's name in messages and on the page (`Tool radius R`). */
+  readonly label: string;
+  /** For `alias`: the field it is another form of. */
+  readonly aliasOf?: string;
+  /** Numbers: the fixed bounds validation applies. */
+  readonly range?: FieldRange;
+  /** Words: the values accepted (the first is the default, where one applies). */
+  readonly values?: readonly string[];
+  /** The page's URL query parameter; null when the URL does not take it. */
+  readonly url: string | null;
+  /** The command line's option, without its `--`; null when the command line does not take it. */
+  readonly cli: string | null;
+  /** The batch's CSV input column; null when the batch does not read it. */
+  readonly csv: CsvColumnSpec | null;
+  /** The `<path-interval-calculator>` attribute (lower case: HTML folds attribute names); null for none. */
+  readonly embed: string | null;
+  /** The page's text field (`state.fields` key); null for a switch or a field the page does not show. */
+  readonly page: string | null;
+}
+
+/**
+ * A setting of the page only (not a field of the core, nor of the command line or the batch): one
+ * word of `values` (the first is the default), under the URL parameter `name` and, unless
+ * `inEmbed` is false, the embed element's attribute of the same name.
+ */
+function pageSetting<const N extends string, const V extends readonly string[], const E extends boolean = true>(
+  name: N,
+  label: string,
+  values: V,
+  inEmbed: E = true as E,
+) {
+  return {
+    short: name,
+    core: null,
+    kind: 'enum',
+    group: 'page',
+    label,
+    values,
+    url: name,
+    cli: null,
+    csv: null,
+    embed: (inEmbed ? name : null) as E extends true ? N : null,
+    page: null,
+  } as const;
+}
+
+/** The registry, in the order the command line lists its options and the page its fields. */
+export const FIELDS = {
+  R: {
+    short: 'R',
+    core: 'toolRadiusMm',
+    kind: 'length',
+    group: 'tool',
+    label: 'Tool radius R',
+    range: { min: 0.001, max: 1000, minIncluded: true, maxIncluded: true, rule: '0.001 <= R <= 1000 mm' },
+    url: 'R',
+    cli: 'R',
+    csv: { column: 'R', role: 'required' },
+    embed: 'r',
+    page: 'R',
+  },
+  D: {
+    short: 'D',
+    core: null,
+    kind: 'length',
+    group: 'alias',
+    aliasOf: 'R',
+    label: 'Tool diameter D',
+    url: 'D',
+    cli: null,
+    csv: null,
+    embed: 'd',
+    page: null,
+  },
+  Rcr: {
+    short: 'Rcr',
+    core: 'cornerRadiusMm',
+    kind: 'length',
+    group: 'tool',
+    label: 'Corner radius Rcr',
+    range: { min: 0, max: null, minIncluded: true, maxIncluded: true, rule: '0 <= Rcr <= R' },
+    url: 'Rcr',
+    cli: 'Rcr',
+    csv: { column: 'Rcr', role: 'required' },
+    embed: 'rcr',
+    page: 'Rcr',
+  },
+  rho: {
+    short: 'rho',
+    core: 'leadAngleDeg',
+    kind: 'angle',
+    group: 'tool',
+    label: 'Lead angle rho',
+    range: { min: 0, max: 90, minIncluded: true, maxIncluded: false, rule: '0 <= rho < 90 degrees' },
+    url: 'rho',
+    cli: 'rho',
+    csv: { column: 'rho', role: 'required' },
+    embed: 'rho',
+    page: 'rho',
+  },
+  tilt: {
+    short: 'beta',
+    core: 'tiltAngleDeg',
+    kind: 'angle',
+    group: 'tool',
+    label: 'Tilt angle beta',
+    range: { min: -90, max: 90, minIncluded: false, maxIncluded: false, rule: '-90 < beta < 90 degrees' },
+    url: 'tilt',
+    cli: 'tilt',
+    csv: { column: 'tilt', role: 'optional' },
+    embed: 'tilt',
+    page: 'tilt',
+  },
+  pattern: {
+    short: 'pattern',
+    core: 'pattern',
+    kind: 'enum',
+    group: 'pass',
+    label: 'Pass pattern',
+    values: ['one-way', 'zigzag'],
+    url: 'pattern',
+    cli: 'pattern',
+    csv: { column: 'pattern', role: 'optional' },
+    embed: 'pattern',
+    page: null,
+  },
+  surfaceRadius: {
+    short: 'Rs',
+    core: 'surface.radiusMm',
+    kind: 'length',
+    group: 'pass',
+    label: 'Surface radius Rs',
+    range: {
+      min: 0.001,
+      max: 1e6,
+      minIncluded: true,
+      maxIncluded: true,
+      rule: '0.001 <= |Rs| <= 1e6 mm, > 0 convex, < 0 concave; none for a plane',
+    },
+    url: 'surfaceRadius',
+    cli: 'surface-radius',
+    csv: { column: 'surfaceRadius', role: 'optional' },
+    embed: 'surface-radius',
+    page: 'Rs',
+  },
+  surfaceAxis: {
+    short: 'axis',
+    core: 'surface.axis',
+    kind: 'enum',
+    group: 'pass',
+    label: 'Cylinder axis',
+    values: ['feed', 'cross'],
+    url: 'surfaceAxis',
+    cli: 'surface-axis',
+    csv: { column: 'surfaceAxis', role: 'optional' },
+    embed: 'surface-axis',
+    page: null,
+  },
+  h: {
+    short: 'h',
+    core: 'scallopHeightMm',
+    kind: 'length',
+    group: 'quantity',
+    label: 'Scallop height h',
+    range: { min: 1e-9, max: null, minIncluded: true, maxIncluded: false, rule: '1e-9 mm <= h < the posture limit' },
+    url: 'h',
+    cli: 'h',
+    csv: { column: 'h', role: 'target' },
+    embed: 'h',
+    page: 'h',
+  },
+  ra: {
+    short: 'Ra',
+    core: 'targetRaMm',
+    kind: 'length',
+    group: 'quantity',
+    label: 'Roughness Ra',
+    range: { min: 1e-9, max: null, minIncluded: true, maxIncluded: false, rule: '1e-9 mm <= Ra < the largest Ra' },
+    url: 'ra',
+    cli: 'ra',
+    csv: { column: 'Ra', role: 'target' },
+    embed: 'ra',
+    page: 'ra',
+  },
+  interval: {
+    short: 'L',
+    core: 'intervalMm',
+    kind: 'length',
+    group: 'quantity',
+    label: 'Step-over L',
+    range: { min: 2e-9, max: null, minIncluded: true, maxIncluded: false, rule: '2e-9 mm <= L < the widest step-over' },
+    url: 'L',
+    cli: 'interval',
+    csv: null,
+    embed: 'l',
+    page: 'L',
+  },
+  halfInterval: {
+    short: 'L/2',
+    core: null,
+    kind: 'length',
+    group: 'alias',
+    aliasOf: 'interval',
+    label: 'Half path interval L/2',
+    url: null,
+    cli: 'half-interval',
+    csv: null,
+    embed: null,
+    page: null,
+  },
+  unit: pageSetting('unit', 'Unit', ['mm', 'in'] as const),
+  mode: pageSetting('mode', 'Mode', ['forward', 'inverse'] as const),
+  target: pageSetting('target', 'Given in forward mode', ['h', 'ra'] as const),
+  view: pageSetting('view', 'Teaching view', ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'] as const),
+  theme: pageSetting('theme', 'Theme', ['light', 'dark'] as const),
+  // The element sets `embed` itself: no attribute.
+  embed: pageSetting('embed', 'Embedded', ['1', 'true'] as const, false),
+} as const satisfies Readonly<Record<string, FieldSpec>>;
+
+type Fields = typeof FIELDS;
+
+/** Every registry entry's id. */
+export type FieldId = keyof Fields;
+
+/** The fields an input error can name: the tool, the pass and the problems' quantities (validate.ts). */
+export type FieldName = {
+  [K in FieldId]: Fields[K]['group'] extends 'tool' | 'pass' | 'quantity' ? K : never;
+}[FieldId];
+
+/** The tool and posture fields (ToolInput), in order. */
+export type ToolFieldName = { [K in FieldId]: Fields[K]['group'] extends 'tool' ? K : never }[FieldId];
+
+/** The tool, posture, pattern and surface fields (PassInput), in order. */
+export type PassFieldName = { [K in FieldId]: Fields[K]['group'] extends 'tool' | 'pass' ? K : never }[FieldId];
+
+/** The page's text fields (`state.fields` keys). */
+export type PageFieldKey = { [K in FieldId]: Fields[K]['page'] }[FieldId] & string;
+
+/** The command line's value options (without `--`). */
+export type CliOption = { [K in FieldId]: Fields[K]['cli'] }[FieldId] & string;
+
+/** The batch's input columns. */
+export type CsvColumn = { [K in FieldId]: Fields[K]['csv'] extends { column: infer C } ? C : never }[FieldId];
+
+/** The registry as a plain list, in its order. */
+const ENTRIES = Object.entries(FIELDS) as ReadonlyArray<readonly [FieldId, FieldSpec]>;
+
+/** The ids of the entries that `keep` selects, in the registry's order. */
+function idsWhere<K extends FieldId>(keep: (spec: FieldSpec) => boolean): readonly K[] {
+  return ENTRIES.filter(([, spec]) => keep(spec)).map(([id]) => id as K);
+}
+
+/** The tool and posture fields: R, Rcr, rho, tilt. */
+export const TOOL_FIELDS: readonly ToolFieldName[] = idsWhere((s) => s.group === 'tool');
+
+/** The fields of a pass: the tool fields, then the pattern and the surface. */
+export const PASS_FIELDS: readonly PassFieldName[] = idsWhere((s) => s.group === 'tool' || s.group === 'pass');
+
+/** Every field an input error can name. */
+export const FIELD_NAMES: readonly FieldName[] = idsWhere(
+  (s) => s.group === 'tool' || s.group === 'pass' || s.group === 'quantity',
+);
+
+/** The label of each field as messages name it. */
+export const FIELD_LABELS: Readonly<Record<FieldName, string>> = Object.fromEntries(
+  FIELD_NAMES.map((name) => [name, FIELDS[name].label]),
+) as Record<FieldName, string>;
+
+/** True for fields measured as lengths (mm inside; converted to the user's unit at the edges). */
+export function isLengthField(id: FieldId): boolean {
+  return FIELDS[id].kind === 'length';
+}
+
+/** The page's text fields, in the registry's order (the form's order). */
+export const PAGE_FIELD_KEYS: readonly PageFieldKey[] = ENTRIES.flatMap(([, s]) =>
+  s.page === null ? [] : [s.page as PageFieldKey],
+);
+
+/** The field behind a page's text field. */
+export function fieldOfPageKey(key: PageFieldKey): FieldName {
+  const found = ENTRIES.find(([, s]) => s.page === key);
+  if (found === undefined) throw new Error(`no field has the page key ${key}`);
+  return found[0] as FieldName;
+}
+
+/** The page's text field of a field, or null for a switch (pattern, axis) or none. */
+export function pageKeyOf(id: FieldId): PageFieldKey | null {
+  return FIELDS[id].page as PageFieldKey | null;
+}
+
+/** The command line's value options, in the registry's order. */
+export const CLI_OPTIONS: readonly CliOption[] = ENTRIES.flatMap(([, s]) =>
+  s.cli === null ? [] : [s.cli as CliOption],
+);
+
+/** The command-line option of a field, with its `--` (`--surface-radius`). */
+export function cliFlag(id: FieldId): string {
+  const cli = FIELDS[id].cli;
+  if (cli === null) throw new Error(`the command line has no option for ${id}`);
+  return `--${cli}`;
+}
+
+/** The batch's columns of one role, in the registry's order. */
+function csvColumns(role: CsvColumnSpec['role']): readonly CsvColumn[] {
+  return ENTRIES.flatMap(([, s]) => (s.csv !== null && s.csv.role === role ? [s.csv.column as CsvColumn] : []));
+}
+
+/** The batch's required columns (R, Rcr, rho), its targets (h or Ra) and its optional columns, in the order they are echoed. */
+export const CSV_REQUIRED_COLUMNS = csvColumns('required');
+export const CSV_TARGET_COLUMNS = csvColumns('target');
+export const CSV_OPTIONAL_COLUMNS = csvColumns('optional');
+
+/** The field read from a CSV column, or null for a column the batch does not read. */
+export function fieldOfCsvColumn(column: string): FieldName | null {
+  const found = ENTRIES.find(([, s]) => s.csv?.column === column);
+  return found === undefined ? null : (found[0] as FieldName);
+}
+
+/** The CSV column of a field (it must have one). */
+export function csvColumnOf(id: FieldId): CsvColumn {
+  const csv = FIELDS[id].csv;
+  if (csv === null) throw new Error(`the batch has no column for ${id}`);
+  return csv.column as CsvColumn;
+}
+
+/** Every URL query parameter the page reads, in the registry's order. */
+export const URL_PARAMS: readonly string[] = ENTRIES.flatMap(([, s]) => (s.url === null ? [] : [s.url]));
+
+/** The URL query parameter of a field (it must have one). */
+export function urlParamOf(id: FieldId): string {
+  const url = FIELDS[id].url;
+  if (url === null) throw new Error(`the URL has no parameter for ${id}`);
+  return url;
+}
+
+/**
+ * The `<path-interval-calculator>` attributes and the URL query parameter each becomes, in the
+ * registry's order: every field the URL takes, but `embed` (the element sets it).
+ */
+export const EMBED_ATTRIBUTES: ReadonlyArray<readonly [attribute: string, param: string]> = ENTRIES.flatMap(([, s]) =>
+  s.embed === null || s.url === null ? [] : [[s.embed, s.url] as const],
+);
+
+/** The embed element's attribute for a URL query parameter, or null when the element has none. */
+export function embedAttributeOfParam(param: string): string | null {
+  return EMBED_ATTRIBUTES.find(([, p]) => p === param)?.[0] ?? null;
+}
