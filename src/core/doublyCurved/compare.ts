@@ -8,8 +8,8 @@
  * signed deviation from the exact step-over and the scallop its own step-over really leaves here
  * (the exact inverse), or null where passes that far apart leave a wall. Lengths mm.
  */
-import { cornerBallModel, osculatingModel, redonnetModel, sekineModel } from '../approximations';
-import { CORRECTED_KEYS, type CorrectedKey } from '../compare';
+import { combinedRadiusMm } from '../approximations';
+import { APPROXIMATIONS, CORRECTED_KEYS, type CorrectedKey } from '../procedures';
 import { type DoublyCurvedSolver, doublyCurvedSolver, forwardWith, inverseWith } from './solve';
 import type { DoublyCurvedForward, DoublyCurvedForwardInput, DoublyCurvedPass } from './types';
 
@@ -77,22 +77,17 @@ export function compareDoublyCurved(input: DoublyCurvedForwardInput): DoublyCurv
       return { ok: false, notApplicable: 'h is at or above the flank limit of that surface.' };
     return row(forwardWith(s, input.pattern, h).intervalMm, exact.intervalMm, solver, input.pattern, maxMm);
   };
-  const radii = {
-    sekine: sekineModel(input),
-    redonnet: redonnetModel(input),
-    osculating: osculatingModel(input),
-    cornerBall: cornerBallModel(input),
-  };
   const rc = input.crossRadiusMm;
   const corrected = {} as { -readonly [K in CorrectedKey]: DoublyCurvedRow & { readonly combinedRadiusMm?: number } };
   for (const key of CORRECTED_KEYS) {
-    const m = radii[key];
+    const m = APPROXIMATIONS[key].model(input);
     if (!m.ok) {
       corrected[key] = { ok: false, notApplicable: m.notApplicable };
       continue;
     }
     const reff = m.effectiveRadiusMm;
-    const combined = Number.isFinite(rc) ? (reff * rc) / (reff + rc) : reff;
+    // The correction across the feed is the one of a cylinder along the feed of radius Rc.
+    const combined = combinedRadiusMm(reff, { kind: 'cylinder', radiusMm: rc, axis: 'feed' });
     if (!(combined > 0) || !Number.isFinite(combined)) {
       corrected[key] = {
         ok: false,
