@@ -48,14 +48,18 @@ function pwa(mode: string) {
 }
 
 /**
- * Two named chunks: `three` (three.js and the two 3D views' shared helpers, the orbit controller
- * and the clipping planes, loaded with the 3D views after the first result) and `core` (the pure
- * modules that the page, its views and the solver worker all load: one copy, cached once). Fewer,
- * larger chunks also compress better against the 200 kB gzip budget than the small shared chunks
- * Rollup would make.
+ * Two named chunks: `three` (three.js and the two 3D views' shared helpers, the WebGL view, the
+ * orbit controller and the clipping planes, loaded with the 3D views after the first result) and
+ * `core` (the pure modules that the page, its views and the solver worker all load: one copy,
+ * cached once). Fewer, larger chunks also compress better against the 200 kB gzip budget than the
+ * small shared chunks Rollup would make. The core's modules that only one lazy view uses (the 3D
+ * scene's marks, the profile's section) go with that view instead of delaying the first result.
  */
+const VIEW_ONLY_CORE = /\/src\/core\/(sceneMarks|sectionProfile)\./;
+
 function chunkOf(id: string): string | null {
-  if (id.includes('/node_modules/three/') || /\/src\/render\/(orbit|clipPlanes)/.test(id)) return 'three';
+  if (id.includes('/node_modules/three/') || /\/src\/render\/(orbit|clipPlanes|view3d)/.test(id)) return 'three';
+  if (VIEW_ONLY_CORE.test(id)) return null;
   if (/\/src\/(core\/|worker\/(rpc|protocol))/.test(id)) return 'core';
   return null;
 }

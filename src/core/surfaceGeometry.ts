@@ -15,53 +15,94 @@
 import type { Surface } from './cylinder';
 import type { Vec3 } from './vec';
 
+/** A writable list of numbers: a plain array or a typed one (a three.js buffer's Float32Array). */
+export type NumberSink = { [index: number]: number };
+
 /** The point of the surface offset by `heightMm` at (feed, cross) (mm). */
 export function surfacePoint(surface: Surface, feedMm: number, crossMm: number, heightMm: number): Vec3 {
-  if (surface.kind === 'plane') return [feedMm, crossMm, heightMm];
-  const rs = surface.radiusMm;
+  const p: Vec3 = [0, 0, 0];
+  surfacePointInto(p, 0, surface, feedMm, crossMm, heightMm);
+  return p;
+}
+
+/**
+ * {@link surfacePoint} written into `out` at `offset`, `offset + 1`, `offset + 2` (x, y, z in mm),
+ * so that a caller filling a buffer allocates nothing per point.
+ */
+export function surfacePointInto(
+  out: NumberSink,
+  offset: number,
+  surface: Surface,
+  feedMm: number,
+  crossMm: number,
+  heightMm: number,
+): void {
+  if (surface.kind === 'plane') {
+    out[offset] = feedMm;
+    out[offset + 1] = crossMm;
+    out[offset + 2] = heightMm;
+    return;
+  }
+  // The arc length is the one coordinate measured around the cylinder.
+  const feedAxis = surface.axis === 'feed';
+  const arc = feedAxis ? crossMm : feedMm;
+  const along = feedAxis ? feedMm : crossMm;
+  const around = aroundMm(surface.radiusMm, arc, heightMm);
+  out[offset] = feedAxis ? along : around;
+  out[offset + 1] = feedAxis ? around : along;
+  out[offset + 2] = aboveTangentMm(surface.radiusMm, arc, heightMm);
+}
+
+/**
+ * On a cylinder of signed radius `rs`, the point `heightMm` above the surface at the arc length
+ * `arcMm` from the contact around it: its distance from the plane through the contact and the axis
+ * (mm).
+ */
+function aroundMm(rs: number, arcMm: number, heightMm: number): number {
   const abs = Math.abs(rs);
   const side = rs > 0 ? 1 : -1;
-  // The arc length is the one coordinate measured around the cylinder.
-  const arc = surface.axis === 'feed' ? crossMm : feedMm;
-  const along = surface.axis === 'feed' ? feedMm : crossMm;
-  const theta = arc / abs;
-  const r = abs + side * heightMm;
+  return (abs + side * heightMm) * Math.sin(arcMm / abs);
+}
+
+/** The same point's height above the contact's tangent plane (mm). */
+function aboveTangentMm(rs: number, arcMm: number, heightMm: number): number {
+  const abs = Math.abs(rs);
+  const side = rs > 0 ? 1 : -1;
+  const theta = arcMm / abs;
   const half = Math.sin(theta / 2);
-  // Height above the contact's tangent plane, without cancellation for a large radius:
-  // convex (Rs + h) cos(theta) - Rs = h cos(theta) - 2 Rs sin^2(theta/2); concave mirrored.
-  const z = heightMm * Math.cos(theta) - side * 2 * abs * half * half;
-  const around = r * Math.sin(theta);
-  return surface.axis === 'feed' ? [along, around, z] : [around, along, z];
+  // Without cancellation for a large radius: convex (Rs + h) cos(theta) - Rs = h cos(theta) -
+  // 2 Rs sin^2(theta/2); concave mirrored.
+  return heightMm * Math.cos(theta) - side * 2 * abs * half * half;
 }
 
 /**
  * A patch of the surface offset by `heightMm`: `feedHalfMm` and `crossHalfMm` either side of the
  * contact, measured on the surface (an arc around a cylinder is kept within half a turn either way),
  * as a grid of (segFeed + 1) x (segCross + 1) points, flat xyz, feed index outer. Triangles:
- * {@link patchIndices}.
+ * {@link patchIndices}. Written into `out` when given (at least that many numbers; a view's
+ * vertex buffer, filled in place), else into a new array.
  */
-export function surfacePatch(
+export function surfacePatch<T extends NumberSink = Float64Array>(
   surface: Surface,
   heightMm: number,
   feedHalfMm: number,
   crossHalfMm: number,
   segFeed: number,
   segCross: number,
-): Float64Array {
+  out?: T,
+): T {
   const [feedHalf, crossHalf] = patchExtent(surface, feedHalfMm, crossHalfMm);
-  const out = new Float64Array((segFeed + 1) * (segCross + 1) * 3);
+  const to = out ?? (new Float64Array((segFeed + 1) * (segCross + 1) * 3) as NumberSink as T);
   let k = 0;
   for (let i = 0; i <= segFeed; i++) {
     const f = -feedHalf + (2 * feedHalf * i) / segFeed;
     for (let j = 0; j <= segCross; j++) {
       const c = -crossHalf + (2 * crossHalf * j) / segCross;
-      const p = surfacePoint(surface, f, c, heightMm);
-      out[k++] = p[0];
-      out[k++] = p[1];
-      out[k++] = p[2];
+      surfacePointInto(to, k, surface, f, c, heightMm);
+      k += 3;
     }
   }
-  return out;
+  return to;
 }
 
 /** The patch's half extents (feed, cross) after keeping an arc within 0.98 of half a turn. */
@@ -105,12 +146,31 @@ export function surfacePolyline(
   n: number,
 ): Float64Array {
   const out = new Float64Array((n + 1) * 3);
+  surfacePolylineInto(out, 0, surface, heightMm, from[0], from[1], to[0], to[1], n);
+  return out;
+}
+
+/**
+ * {@link surfacePolyline} from (fromFeedMm, fromCrossMm) to (toFeedMm, toCrossMm), written into
+ * `out` from the point index `firstPoint` on (n + 1 points; nothing allocated).
+ */
+export function surfacePolylineInto(
+  out: NumberSink,
+  firstPoint: number,
+  surface: Surface,
+  heightMm: number,
+  fromFeedMm: number,
+  fromCrossMm: number,
+  toFeedMm: number,
+  toCrossMm: number,
+  n: number,
+): void {
   for (let i = 0; i <= n; i++) {
     const u = i / n;
-    const p = surfacePoint(surface, from[0] + (to[0] - from[0]) * u, from[1] + (to[1] - from[1]) * u, heightMm);
-    out.set(p, 3 * i);
+    const feed = fromFeedMm + (toFeedMm - fromFeedMm) * u;
+    const cross = fromCrossMm + (toCrossMm - fromCrossMm) * u;
+    surfacePointInto(out, 3 * (firstPoint + i), surface, feed, cross, heightMm);
   }
-  return out;
 }
 
 /**
@@ -204,9 +264,23 @@ export function toSurfaceSection(surface: Surface, points: ArrayLike<number>): F
   return out;
 }
 
-/** The inverse of {@link toSurfaceSection} for one point: (y, z) of (cross, height). */
-export function fromSurfaceSection(surface: Surface, crossMm: number, heightMm: number): [number, number] {
-  if (surface.kind === 'plane' || surface.axis === 'cross') return [crossMm, heightMm];
-  const p = surfacePoint(surface, 0, crossMm, heightMm);
-  return [p[1], p[2]];
+/**
+ * The inverse of {@link toSurfaceSection} for one point: (y, z) of (cross, height), written into
+ * `out` when given (a caller's two numbers, reused from point to point), else into a new pair.
+ */
+export function fromSurfaceSection(
+  surface: Surface,
+  crossMm: number,
+  heightMm: number,
+  out: [number, number] = [0, 0],
+): [number, number] {
+  if (surface.kind === 'plane' || surface.axis === 'cross') {
+    out[0] = crossMm;
+    out[1] = heightMm;
+    return out;
+  }
+  // The point of the section through the contact (x = 0) around the cylinder, axis along the feed.
+  out[0] = aroundMm(surface.radiusMm, crossMm, heightMm);
+  out[1] = aboveTangentMm(surface.radiusMm, crossMm, heightMm);
+  return out;
 }

@@ -78,13 +78,19 @@ function drawnBox(geometry: BufferGeometry, box: Box3): Box3 {
  * objects and their children are left out. World matrices are updated first.
  *
  * @param isLabel which geometry-less objects are drawn points (the scene's label anchors)
+ * @param out the sphere written (a new one by default)
  * @returns the sphere, or an empty one (radius -1) when nothing is drawn
  */
-export function drawnBoundingSphere(root: Object3D, isLabel: (o: Object3D) => boolean): Sphere {
+export function drawnBoundingSphere(
+  root: Object3D,
+  isLabel: (o: Object3D) => boolean,
+  out: Sphere = new Sphere(),
+): Sphere {
   root.updateMatrixWorld();
   const all = new Box3();
   const local = new Map<BufferGeometry, Box3>();
   const world = new Box3();
+  const anchor = new Vector3();
   const visit = (o: Object3D): void => {
     if (!o.visible) return;
     const geometry = (o as Object3D & { geometry?: BufferGeometry }).geometry;
@@ -95,10 +101,9 @@ export function drawnBoundingSphere(root: Object3D, isLabel: (o: Object3D) => bo
         local.set(geometry, box);
       }
       if (!box.isEmpty()) all.union(world.copy(box).applyMatrix4(o.matrixWorld));
-    } else if (isLabel(o)) all.expandByPoint(new Vector3().setFromMatrixPosition(o.matrixWorld));
+    } else if (isLabel(o)) all.expandByPoint(anchor.setFromMatrixPosition(o.matrixWorld));
     for (const child of o.children) visit(child);
   };
   visit(root);
-  const sphere = new Sphere();
-  return all.isEmpty() ? sphere.makeEmpty() : all.getBoundingSphere(sphere);
+  return all.isEmpty() ? out.makeEmpty() : all.getBoundingSphere(out);
 }

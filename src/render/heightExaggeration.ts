@@ -41,7 +41,15 @@ export function drawnHeightMm(map: HeightMap, zMm: number): number {
 /** A copy of flat xyz points with each z drawn through `map`. */
 export function drawnPoints(map: HeightMap, xyz: ArrayLike<number>): Float32Array {
   const out = Float32Array.from(xyz as ArrayLike<number>);
-  if (map.factor === 1) return out;
-  for (let i = 2; i < out.length; i += 3) out[i] = drawnHeightMm(map, out[i] as number);
+  drawHeightsInPlace(map, out, out.length / 3);
   return out;
+}
+
+/**
+ * Draws the heights of the first `count` points of flat xyz `xyz` through `map`, in place (a
+ * view's vertex buffer, just written with true heights: nothing is allocated).
+ */
+export function drawHeightsInPlace(map: HeightMap, xyz: { [index: number]: number }, count: number): void {
+  if (map.factor === 1) return;
+  for (let i = 2; i < 3 * count; i += 3) xyz[i] = drawnHeightMm(map, xyz[i] as number);
 }

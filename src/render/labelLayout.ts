@@ -49,21 +49,28 @@ const DIRECTIONS: ReadonlyArray<readonly [number, number]> = Array.from({ length
 
 /** Whether two rectangles overlap, each grown by `gapPx` / 2. */
 export function rectsIntersect(a: PixelRect, b: PixelRect, gapPx = 0): boolean {
-  return a.left < b.right + gapPx && b.left < a.right + gapPx && a.top < b.bottom + gapPx && b.top < a.bottom + gapPx;
+  return overlaps(a.left, a.top, a.right, a.bottom, b, gapPx);
 }
 
-/** The offset of a label's centre that puts its box `gapPx` clear of the anchor in direction `dir`. */
-function offsetFor(dir: readonly [number, number], widthPx: number, heightPx: number, gapPx: number): [number, number] {
-  const [ux, uy] = dir;
-  const n = Math.hypot(ux, uy);
-  if (n === 0) return [0, 0];
-  const x = ux / n;
-  const y = uy / n;
-  // Scale the direction until the box clears the anchor by gapPx along it.
-  const tx = x === 0 ? Number.POSITIVE_INFINITY : (widthPx / 2 + gapPx) / Math.abs(x);
-  const ty = y === 0 ? Number.POSITIVE_INFINITY : (heightPx / 2 + gapPx) / Math.abs(y);
-  const t = Math.min(tx, ty);
-  return [x * t, y * t];
+/** {@link rectsIntersect} for a rectangle given by its sides. */
+function overlaps(left: number, top: number, right: number, bottom: number, b: PixelRect, gapPx: number): boolean {
+  return left < b.right + gapPx && b.left < right + gapPx && top < b.bottom + gapPx && b.top < bottom + gapPx;
+}
+
+/** The side a centred label tries first when its anchor's place is taken: above. */
+const ABOVE = [0, -1] as const;
+
+/** The directions after a preferred side, by how far they turn from it (kept per side: a label's side is fixed). */
+const TURNS = new WeakMap<readonly [number, number], ReadonlyArray<readonly [number, number]>>();
+
+function directionsFrom(pref: readonly [number, number]): ReadonlyArray<readonly [number, number]> {
+  let dirs = TURNS.get(pref);
+  if (dirs === undefined) {
+    const turn = (d: readonly [number, number]) => -(d[0] * pref[0] + d[1] * pref[1]) / (Math.hypot(...pref) || 1);
+    dirs = [...DIRECTIONS].sort((a, b) => turn(a) - turn(b));
+    TURNS.set(pref, dirs);
+  }
+  return dirs;
 }
 
 /**
@@ -82,31 +89,49 @@ export function placeLabels(
   gapPx = 2,
 ): LabelPlacement[] {
   const placed: PixelRect[] = [...obstacles];
-  const out: LabelPlacement[] = labels.map(() => ({ dxPx: 0, dyPx: 0, visible: false }));
+  const out: LabelPlacement[] = labels.map(() => HIDDEN);
   const order = labels.map((_, i) => i).sort((a, b) => (labels[b]?.priority ?? 0) - (labels[a]?.priority ?? 0));
+  /** Places label `l` (index i) at the offset (dx, dy) if it fits there; whether it did. */
+  const tryAt = (i: number, l: LabelRequest, dx: number, dy: number): boolean => {
+    const { anchorXPx: ax, anchorYPx: ay, widthPx: w, heightPx: h } = l;
+    const left = ax + dx - w / 2;
+    const top = ay + dy - h / 2;
+    const right = ax + dx + w / 2;
+    const bottom = ay + dy + h / 2;
+    if (left < 1 || top < 1 || right > widthPx - 1 || bottom > heightPx - 1) return false;
+    for (const p of placed) if (overlaps(left, top, right, bottom, p, gapPx)) return false;
+    placed.push({ left, top, right, bottom });
+    out[i] = { dxPx: dx, dyPx: dy, visible: true };
+    return true;
+  };
+  /** Tries the direction d (need not be unit length) with the box `gapPx` clear of the anchor along it. */
+  const tryDirection = (i: number, l: LabelRequest, d: readonly [number, number], gap: number): boolean => {
+    const n = Math.hypot(d[0], d[1]);
+    if (n === 0) return tryAt(i, l, 0, 0);
+    const x = d[0] / n;
+    const y = d[1] / n;
+    // Scale the direction until the box clears the anchor by gap along it.
+    const tx = x === 0 ? Number.POSITIVE_INFINITY : (l.widthPx / 2 + gap) / Math.abs(x);
+    const ty = y === 0 ? Number.POSITIVE_INFINITY : (l.heightPx / 2 + gap) / Math.abs(y);
+    const t = Math.min(tx, ty);
+    return tryAt(i, l, x * t, y * t);
+  };
   for (const i of order) {
     const l = labels[i] as LabelRequest;
     const { anchorXPx: ax, anchorYPx: ay, widthPx: w, heightPx: h } = l;
     if (!(ax >= 0 && ax <= widthPx && ay >= 0 && ay <= heightPx) || !(w > 0 && h > 0)) continue;
     const centred = l.side[0] === 0 && l.side[1] === 0;
-    const candidates: Array<[number, number]> = [];
-    if (centred) candidates.push([0, 0]);
+    if (centred && tryAt(i, l, 0, 0)) continue;
     // Nearest first; at each clearance the preferred side, then the others by how far they turn from it.
-    const pref = centred ? ([0, -1] as const) : l.side;
-    const turn = (d: readonly [number, number]) => -(d[0] * pref[0] + d[1] * pref[1]) / (Math.hypot(...pref) || 1);
-    const dirs = [...DIRECTIONS].sort((a, b) => turn(a) - turn(b));
-    for (const gap of GAPS_PX) {
-      candidates.push(offsetFor(pref, w, h, gap));
-      for (const d of dirs) candidates.push(offsetFor(d, w, h, gap));
-    }
-    for (const [dx, dy] of candidates) {
-      const r = { left: ax + dx - w / 2, top: ay + dy - h / 2, right: ax + dx + w / 2, bottom: ay + dy + h / 2 };
-      if (r.left < 1 || r.top < 1 || r.right > widthPx - 1 || r.bottom > heightPx - 1) continue;
-      if (placed.some((p) => rectsIntersect(r, p, gapPx))) continue;
-      placed.push(r);
-      out[i] = { dxPx: dx, dyPx: dy, visible: true };
-      break;
+    const pref = centred ? ABOVE : l.side;
+    const dirs = directionsFrom(pref);
+    search: for (const gap of GAPS_PX) {
+      if (tryDirection(i, l, pref, gap)) break;
+      for (const d of dirs) if (tryDirection(i, l, d, gap)) break search;
     }
   }
   return out;
 }
+
+/** A label not placed. */
+const HIDDEN: LabelPlacement = { dxPx: 0, dyPx: 0, visible: false };

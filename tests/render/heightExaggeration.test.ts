@@ -1,6 +1,12 @@
 /** Height exaggeration of the 3D scene (pure part of render/scene.ts). */
 import { describe, expect, it } from 'vitest';
-import { drawnHeightMm, drawnPoints, heightMapFor, sceneHeightExaggeration } from '../../src/render/heightExaggeration';
+import {
+  drawHeightsInPlace,
+  drawnHeightMm,
+  drawnPoints,
+  heightMapFor,
+  sceneHeightExaggeration,
+} from '../../src/render/heightExaggeration';
 
 describe('scene height exaggeration', () => {
   it('the largest 1-2-5 factor that draws the scallop at most 0.12 R; true scale for a tall scallop', () => {
@@ -34,5 +40,15 @@ describe('scene height exaggeration', () => {
       4,
       Math.fround(2.4),
     ]);
+  });
+
+  it("draws a buffer's heights in place, only its first points, and leaves x and y", () => {
+    const map = heightMapFor(5, 0.05);
+    const buffer = Float32Array.from([1, 2, 0.05, 3, 4, 2, 5, 6, 0.05]);
+    drawHeightsInPlace(map, buffer, 2);
+    expect([...buffer]).toEqual([...drawnPoints(map, [1, 2, 0.05, 3, 4, 2]), 5, 6, Math.fround(0.05)]);
+    const trueScale = Float32Array.from([1, 2, 0.05]);
+    drawHeightsInPlace(heightMapFor(1, 0.05), trueScale, 1);
+    expect([...trueScale]).toEqual([1, 2, Math.fround(0.05)]);
   });
 });

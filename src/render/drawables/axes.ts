@@ -1,0 +1,51 @@
+/** The axes X (feed), Y and Z: unit arrows built once, scaled with the tool (1.6 R). */
+import { BufferGeometry, Group, Line, LineBasicMaterial, type Object3D, Vector3 } from 'three';
+import { LabelAnchor, legend } from '../labelLayer';
+import { COLOURS, type Drawable, type DrawState, disposeObjects } from './parts';
+
+/** Two unit vectors perpendicular to the unit vector `d` and to each other. */
+function perpendiculars(d: Vector3): [Vector3, Vector3] {
+  const u = new Vector3(Math.abs(d.x) < 0.9 ? 1 : 0, Math.abs(d.x) < 0.9 ? 0 : 1, 0).cross(d).normalize();
+  return [u, d.clone().cross(u).normalize()];
+}
+
+export class AxesDrawable implements Drawable {
+  private readonly axes = legend(new Group(), 'axes');
+  readonly objects: readonly Object3D[] = [this.axes];
+
+  constructor() {
+    const specs: Array<[Vector3, number, string]> = [
+      [new Vector3(1, 0, 0), COLOURS.x, 'X (feed)'],
+      [new Vector3(0, 1, 0), COLOURS.y, 'Y'],
+      [new Vector3(0, 0, 1), COLOURS.z, 'Z'],
+    ];
+    for (const [dir, color, text] of specs) {
+      // A shaft and a head of two crossed strokes, 0.12 long (drawn lines: no cone geometry).
+      const [u, v] = perpendiculars(dir);
+      const arrow = new Group();
+      const at = (k: number, w: Vector3 | null, s: number) => {
+        const p = dir.clone().multiplyScalar(k);
+        return w === null ? p : p.addScaledVector(w, s);
+      };
+      const strokes = [
+        [at(0, null, 0), at(1, null, 0)],
+        [at(0.88, u, 0.045), at(1, null, 0), at(0.88, u, -0.045)],
+        [at(0.88, v, 0.045), at(1, null, 0), at(0.88, v, -0.045)],
+      ];
+      const material = new LineBasicMaterial({ color });
+      for (const points of strokes) arrow.add(new Line(new BufferGeometry().setFromPoints(points), material));
+      const tag = new LabelAnchor(text, 'label-axis', [0, 0], 2);
+      tag.position.copy(dir).multiplyScalar(1.08);
+      arrow.add(tag);
+      this.axes.add(arrow);
+    }
+  }
+
+  update(s: DrawState): void {
+    this.axes.scale.setScalar(1.6 * s.toolRadiusMm);
+  }
+
+  dispose(): void {
+    disposeObjects(this.objects);
+  }
+}

@@ -1,0 +1,55 @@
+/**
+ * The design surface and the h pseudo surface (the surface offset by the scallop height h): two
+ * translucent patches around the contact, 2.8 R along the feed and 2 L + 2.4 R across it, whatever
+ * the surface (surfaceGeometry.ts gives their points; a plane is one more surface there). Heights
+ * are drawn through the state's height map.
+ */
+import { BufferAttribute, BufferGeometry, DoubleSide, Mesh, MeshBasicMaterial, type Object3D } from 'three';
+import { patchIndices, surfacePatch } from '../../core/surfaceGeometry';
+import { drawHeightsInPlace } from '../heightExaggeration';
+import { legend } from '../labelLayer';
+import { COLOURS, type Drawable, type DrawState, disposeObjects } from './parts';
+
+/** The patches' grid: segments along the feed and across it. */
+const PATCH_FEED = 48;
+const PATCH_CROSS = 64;
+
+function patchMesh(color: number, opacity: number): Mesh {
+  const g = new BufferGeometry();
+  g.setAttribute('position', new BufferAttribute(new Float32Array((PATCH_FEED + 1) * (PATCH_CROSS + 1) * 3), 3));
+  g.setIndex(new BufferAttribute(patchIndices(PATCH_FEED, PATCH_CROSS), 1));
+  const m = new Mesh(
+    g,
+    new MeshBasicMaterial({ color, side: DoubleSide, transparent: true, opacity, depthWrite: false }),
+  );
+  m.frustumCulled = false;
+  return m;
+}
+
+/** Writes a patch of the surface offset by `heightMm` into `mesh`'s buffer, heights drawn through the map. */
+function fillPatch(mesh: Mesh, s: DrawState, heightMm: number): void {
+  const attr = mesh.geometry.getAttribute('position') as BufferAttribute;
+  const points = attr.array as Float32Array;
+  const feedHalfMm = (2.8 * s.toolRadiusMm) / 2;
+  const crossHalfMm = (2 * s.intervalMm + 2.4 * s.toolRadiusMm) / 2;
+  surfacePatch(s.geometry.surface, heightMm, feedHalfMm, crossHalfMm, PATCH_FEED, PATCH_CROSS, points);
+  drawHeightsInPlace(s.map, points, attr.count);
+  attr.needsUpdate = true;
+  // Kept for three.js's back-to-front sorting of the translucent objects.
+  mesh.geometry.computeBoundingSphere();
+}
+
+export class DesignSurfacesDrawable implements Drawable {
+  private readonly design = legend(patchMesh(COLOURS.plane, 0.55), 'design');
+  private readonly hSurface = legend(patchMesh(COLOURS.hPlane, 0.18), 'hplane');
+  readonly objects: readonly Object3D[] = [this.design, this.hSurface];
+
+  update(s: DrawState): void {
+    fillPatch(this.design, s, 0);
+    fillPatch(this.hSurface, s, s.geometry.scallopHeightMm);
+  }
+
+  dispose(): void {
+    disposeObjects(this.objects);
+  }
+}

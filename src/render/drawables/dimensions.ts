@@ -1,0 +1,61 @@
+/**
+ * The dimensions: the step-over L from this pass's path to the next at the start of the drawn
+ * passes, L/2 at their end (each along the surface, with extension lines and arrowheads, its label
+ * above its middle), and the contact offset y0 from the foot of the tool centre's drop to the
+ * contact, across the feed.
+ */
+import type { Line, Object3D } from 'three';
+import { dimensionPointCount, surfaceDimensionInto } from '../../core/sceneMarks';
+import { surfacePoint } from '../../core/surfaceGeometry';
+import { drawnHeightMm } from '../heightExaggeration';
+import { LabelAnchor, legend } from '../labelLayer';
+import { COLOURS, type Drawable, type DrawState, disposeObjects, finishLine, lineOf, positionsOf } from './parts';
+import { PATH_SEGMENTS } from './paths';
+
+export class DimensionsDrawable implements Drawable {
+  private readonly interval = legend(lineOf(dimensionPointCount(PATH_SEGMENTS), COLOURS.dimension), 'dimension');
+  private readonly half = legend(lineOf(dimensionPointCount(PATH_SEGMENTS), COLOURS.dimension), 'dimension');
+  private readonly offset = legend(lineOf(4, COLOURS.dimension), 'offset');
+  private readonly intervalLabel = new LabelAnchor('L', 'label-dim', [0, -1], 6);
+  private readonly halfLabel = new LabelAnchor('L/2', 'label-dim label-half', [0, -1], 6);
+  private readonly offsetLabel = new LabelAnchor('y0', 'label-offset', [0, 1], 5);
+  readonly objects: readonly Object3D[] = [this.interval, this.half, this.offset];
+
+  constructor() {
+    this.interval.add(this.intervalLabel);
+    this.half.add(this.halfLabel);
+    this.offset.add(this.offsetLabel);
+  }
+
+  update(s: DrawState): void {
+    const g = s.geometry;
+    const surface = g.surface;
+    const R = s.toolRadiusMm;
+    const L = s.intervalMm;
+    const tick = 0.08 * R;
+    const arrowMm = Math.min(0.07 * R, 0.25 * L);
+    const dimension = (line: Line, xMm: number, lengthMm: number) =>
+      finishLine(
+        line,
+        surfaceDimensionInto(positionsOf(line), 0, surface, xMm, lengthMm, tick, arrowMm, PATH_SEGMENTS),
+      );
+    dimension(this.interval, s.fromMm, L);
+    dimension(this.half, s.toMm, L / 2);
+    this.intervalLabel.position.fromArray(surfacePoint(surface, s.fromMm, L / 2, tick));
+    this.halfLabel.position.fromArray(surfacePoint(surface, s.toMm, L / 4, tick));
+    this.intervalLabel.setText(s.labels.interval);
+    this.halfLabel.setText(s.labels.halfInterval);
+    // y0: from the foot of O's drop to the contact, across the feed.
+    const [ox, oy, oz] = g.toolCentre;
+    this.offset.visible = s.labels.contactOffset !== null;
+    const p = positionsOf(this.offset);
+    p.set([ox, oy, drawnHeightMm(s.map, oz), ox, oy, 0, ox, oy, 0, ox, 0, 0]);
+    finishLine(this.offset, 4);
+    this.offsetLabel.position.set(ox, oy / 2, -tick);
+    this.offsetLabel.setText(s.labels.contactOffset ?? '');
+  }
+
+  dispose(): void {
+    disposeObjects(this.objects);
+  }
+}

@@ -1,0 +1,163 @@
+/**
+ * What the 3D scene's drawables share: the state one update draws, their colours (and the theme's
+ * names for them), and the parts they are made of: lines drawn over everything and filled in place,
+ * the marked points, and the disposal of what they made. Each drawable (a module of this folder)
+ * builds its objects once, updates them in place from a {@link DrawState}, and frees them.
+ */
+import {
+  BufferAttribute,
+  BufferGeometry,
+  Line,
+  LineBasicMaterial,
+  LineLoop,
+  type Material,
+  Mesh,
+  MeshBasicMaterial,
+  type Object3D,
+  type SphereGeometry,
+} from 'three';
+import type { SceneGeometry } from '../../worker/protocol';
+import { drawHeightsInPlace, type HeightMap } from '../heightExaggeration';
+import { legend } from '../labelLayer';
+
+/** Texts of the scene's labels, in the user's unit (the scene knows no units). */
+export interface SceneLabels {
+  /** The step-over dimension, e.g. `L = 2.8872 mm`. */
+  readonly interval: string;
+  /** Its half, e.g. `L/2 = 1.4436 mm`. */
+  readonly halfInterval: string;
+  /** The contact offset dimension, e.g. `y0 = 0.1234 mm`, or null to hide it (no offset). */
+  readonly contactOffset: string | null;
+}
+
+/** What one update draws: the solved state, its labels, and the sizes the drawables share (mm). */
+export interface DrawState {
+  readonly geometry: SceneGeometry;
+  readonly labels: SceneLabels;
+  /** The heights drawn (exaggerated near a plane when the scallop is too low to see). */
+  readonly map: HeightMap;
+  readonly toolRadiusMm: number;
+  readonly intervalMm: number;
+  /** The radius of a marked point's dot. */
+  readonly dotRadiusMm: number;
+  /** The passes are drawn from x = fromMm to x = toMm along the feed. */
+  readonly fromMm: number;
+  readonly toMm: number;
+}
+
+/** A part of the scene: built once, updated in place, freed with `dispose`. */
+export interface Drawable {
+  /** Its objects, added to the scene once. */
+  readonly objects: readonly Object3D[];
+  update(state: DrawState): void;
+  dispose(): void;
+}
+
+export const COLOURS = {
+  section: 0xff7a00,
+  loop: 0xd6336c,
+  axis: 0x444444,
+  dimension: 0x111111,
+  contact: 0x1b7f3b,
+  centre: 0x374151,
+  pHp: 0xd6336c,
+  trace: 0x7c3aed,
+  path: 0x1b7f3b,
+  tool: 0xb8c7d9,
+  ghost: 0x6c7a89,
+  plane: 0xc9ced6,
+  hPlane: 0x2f80ed,
+  ridge: 0xb4235a,
+  x: 0xd62828,
+  y: 0x2a9d8f,
+  z: 0x1d4ed8,
+} as const;
+
+/**
+ * The stylesheet's custom property for each colour of the scene (theme.ts switches them with the
+ * page's light or dark theme); the constants above are the light values and the fallback.
+ */
+export const THEMED_COLOURS: ReadonlyMap<number, string> = new Map([
+  [COLOURS.section, '--scene-section'],
+  [COLOURS.loop, '--scene-loop'],
+  [COLOURS.axis, '--scene-axis'],
+  [COLOURS.dimension, '--scene-dimension'],
+  [COLOURS.contact, '--scene-contact'],
+  [COLOURS.centre, '--scene-centre'],
+  [COLOURS.trace, '--scene-trace'],
+  [COLOURS.tool, '--scene-tool'],
+  [COLOURS.ghost, '--scene-ghost'],
+  [COLOURS.plane, '--scene-plane'],
+  [COLOURS.hPlane, '--scene-hplane'],
+  [COLOURS.ridge, '--scene-ridge'],
+  [COLOURS.x, '--scene-x'],
+  [COLOURS.y, '--scene-y'],
+  [COLOURS.z, '--scene-z'],
+]);
+
+/** Points of a circle drawn as a section (a cusp's, the traced one). */
+export const SECTION_POINTS = 96;
+
+/** A line of up to `capacity` points drawn over everything (no depth test), empty until written. */
+export function lineOf(capacity: number, color: number, loop = false): Line {
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(new Float32Array(capacity * 3), 3));
+  geometry.setDrawRange(0, 0);
+  const material = new LineBasicMaterial({ color, depthTest: false });
+  const line = loop ? new LineLoop(geometry, material) : new Line(geometry, material);
+  line.renderOrder = 10;
+  line.frustumCulled = false;
+  return line;
+}
+
+/** The vertex buffer of a line (or points) object, to be written in place. */
+export function positionsOf(object: { geometry: BufferGeometry }): Float32Array {
+  return (object.geometry.getAttribute('position') as BufferAttribute).array as Float32Array;
+}
+
+/**
+ * Marks the first `count` points of a line (or points) object's buffer as written: drawn from the
+ * next frame on. With `map`, their heights are first drawn through it (in place).
+ */
+export function finishLine(object: { geometry: BufferGeometry }, count: number, map?: HeightMap): void {
+  const attr = object.geometry.getAttribute('position') as BufferAttribute;
+  const n = Math.min(count, attr.count);
+  if (map !== undefined) drawHeightsInPlace(map, attr.array as Float32Array, n);
+  attr.needsUpdate = true;
+  object.geometry.setDrawRange(0, n);
+}
+
+/** Writes `count` points (flat xyz) into a line's buffer (as many as it holds), heights drawn through `map`. */
+export function writeLine(line: Line, points: ArrayLike<number>, count: number, map?: HeightMap): void {
+  const arr = positionsOf(line);
+  const n = Math.min(count, arr.length / 3);
+  for (let i = 0; i < n * 3; i++) arr[i] = points[i] as number;
+  finishLine(line, n, map);
+}
+
+/**
+ * A marked point: a dot of `color` (the unit sphere `dot`, scaled by the drawable) drawn over
+ * everything, that labels keep clear of, with its legend entry.
+ */
+export function markerOf(dot: SphereGeometry, color: number, key: string): Mesh {
+  const m = legend(new Mesh(dot, new MeshBasicMaterial({ color, depthTest: false })), key);
+  m.renderOrder = 11;
+  m.userData.marker = true;
+  return m;
+}
+
+/** Frees the geometries and materials of `objects` and of their descendants (each once). */
+export function disposeObjects(objects: readonly Object3D[]): void {
+  const geometries = new Set<BufferGeometry>();
+  const materials = new Set<Material>();
+  for (const root of objects)
+    root.traverse((o) => {
+      const drawable = o as Partial<Mesh>;
+      if (drawable.geometry) geometries.add(drawable.geometry);
+      const m = drawable.material;
+      if (Array.isArray(m)) for (const x of m) materials.add(x);
+      else if (m) materials.add(m);
+    });
+  for (const g of geometries) g.dispose();
+  for (const m of materials) m.dispose();
+}

@@ -1,0 +1,31 @@
+/**
+ * The cutter-contact paths of the three passes, L apart: lines along the feed on the surface (an
+ * arc around a cylinder whose axis runs across the feed).
+ */
+import type { Line, Object3D } from 'three';
+import { surfacePolylineInto } from '../../core/surfaceGeometry';
+import { legend } from '../labelLayer';
+import { COLOURS, type Drawable, type DrawState, disposeObjects, finishLine, lineOf, positionsOf } from './parts';
+
+/** Segments of a path along the feed. */
+export const PATH_SEGMENTS = 48;
+
+export class PathsDrawable implements Drawable {
+  private readonly paths: readonly Line[] = [0, 1, 2].map(() =>
+    legend(lineOf(PATH_SEGMENTS + 1, COLOURS.path), 'path'),
+  );
+  readonly objects: readonly Object3D[] = this.paths;
+
+  update(s: DrawState): void {
+    const surface = s.geometry.surface;
+    this.paths.forEach((line, i) => {
+      const y = (i - 1) * s.intervalMm;
+      surfacePolylineInto(positionsOf(line), 0, surface, 0, s.fromMm, y, s.toMm, y, PATH_SEGMENTS);
+      finishLine(line, PATH_SEGMENTS + 1);
+    });
+  }
+
+  dispose(): void {
+    disposeObjects(this.objects);
+  }
+}

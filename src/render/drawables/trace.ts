@@ -1,0 +1,89 @@
+/**
+ * The step-through of the paper's procedure (its Figure 1), one frame at a time: the section
+ * circle the frame is at, the candidate points on it, and the point found (with what it is), or
+ * nothing while no frame is shown.
+ */
+import { BufferAttribute, BufferGeometry, type Object3D, Points, PointsMaterial, SphereGeometry } from 'three';
+import { circleInto } from '../../core/sceneMarks';
+import type { TraceFrame } from '../../worker/protocol';
+import { drawnHeightMm, type HeightMap } from '../heightExaggeration';
+import { LabelAnchor, legend } from '../labelLayer';
+import { COLOURS, disposeObjects, finishLine, lineOf, markerOf, positionsOf, SECTION_POINTS } from './parts';
+
+/** The most candidate points a frame shows. */
+const CANDIDATE_CAPACITY = 64;
+
+/** How a frame is drawn: the state's height map, the corner radius (the section's) and the tool radius (mm). */
+export interface TraceSizes {
+  readonly map: HeightMap;
+  readonly cornerRadiusMm: number;
+  readonly toolRadiusMm: number;
+}
+
+export class TraceDrawable {
+  private readonly section = legend(lineOf(SECTION_POINTS, COLOURS.trace, true), 'trace');
+  private readonly dot = new SphereGeometry(1, 16, 12);
+  private readonly marker = markerOf(this.dot, COLOURS.trace, 'trace');
+  private readonly label = new LabelAnchor('', 'label-trace', [-1, -1], 10);
+  private readonly candidates: Points;
+  readonly objects: readonly Object3D[];
+
+  constructor() {
+    this.marker.renderOrder = 12;
+    this.marker.add(this.label);
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new BufferAttribute(new Float32Array(CANDIDATE_CAPACITY * 3), 3));
+    geometry.setDrawRange(0, 0);
+    this.candidates = legend(
+      new Points(
+        geometry,
+        new PointsMaterial({ color: COLOURS.trace, size: 6, sizeAttenuation: false, depthTest: false }),
+      ),
+      'trace',
+    );
+    this.candidates.frustumCulled = false;
+    this.candidates.renderOrder = 12;
+    this.objects = [this.section, this.candidates, this.marker];
+    this.section.visible = this.candidates.visible = this.marker.visible = false;
+  }
+
+  /**
+   * Shows one frame, or hides the replay (null).
+   * @returns whether anything changed (hiding what is hidden changes nothing)
+   */
+  show(frame: TraceFrame | null, sizes: TraceSizes): boolean {
+    const on = frame !== null;
+    if (!on && !this.section.visible) return false;
+    this.section.visible = on;
+    this.candidates.visible = on;
+    this.marker.visible = on && frame.point !== null;
+    if (frame === null) return true;
+    const map = sizes.map;
+    circleInto(
+      positionsOf(this.section),
+      0,
+      frame.sectionCentre,
+      frame.sectionNormal,
+      sizes.cornerRadiusMm,
+      SECTION_POINTS,
+    );
+    finishLine(this.section, SECTION_POINTS, map);
+    const candidates = positionsOf(this.candidates);
+    const n = Math.min(frame.candidates.length / 3, CANDIDATE_CAPACITY);
+    for (let i = 0; i < 3 * n; i++) candidates[i] = frame.candidates[i] as number;
+    finishLine(this.candidates, n, map);
+    if (frame.point) {
+      const [px, py, pz] = frame.point;
+      this.marker.position.set(px, py, drawnHeightMm(map, pz));
+      this.marker.scale.setScalar(0.03 * sizes.toolRadiusMm);
+      this.label.setText(
+        frame.phase === 'converged' ? 'P_hp (converged)' : frame.phase === 'search' ? 'best P_hp[i]' : 'single contact',
+      );
+    }
+    return true;
+  }
+
+  dispose(): void {
+    disposeObjects(this.objects);
+  }
+}
