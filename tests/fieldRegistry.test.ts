@@ -62,10 +62,38 @@ import { sameRequest } from '../src/worker/protocol';
 import { runMain } from './cli/helpers';
 
 const ENTRIES = Object.entries(FIELDS) as Array<[FieldId, FieldSpec]>;
-const withUrl = ENTRIES.filter(([, f]) => f.url !== null);
+/**
+ * The page reads every URL parameter but the three-axis ones: their names are in the registry (and
+ * the embed element) for the page's part of issue 20, which reads them; until then the command
+ * line and the batch are their channels.
+ */
+const withUrl = ENTRIES.filter(([, f]) => f.url !== null && f.group !== 'threeAxis');
 const withCli = ENTRIES.filter(([, f]) => f.cli !== null);
 
 describe('the registry itself', () => {
+  it("gives the three-axis fields the issue's names (URL and embed element)", () => {
+    const three = ENTRIES.filter(([, f]) => f.group === 'threeAxis');
+    expect(three.map(([, f]) => f.url)).toEqual([
+      'slope',
+      'passes',
+      'rasterAngle',
+      'feedRadius',
+      'crossRadius',
+      'Lxy',
+      'dz',
+    ]);
+    expect(three.map(([, f]) => f.cli)).toEqual([
+      'slope',
+      'passes',
+      'raster-angle',
+      'feed-radius',
+      'cross-radius',
+      'horizontal-step',
+      'step-down',
+    ]);
+    for (const [, f] of three) expect(EMBED_ATTRIBUTES).toContainEqual([f.embed, f.url]);
+  });
+
   it('names each field once per channel: no URL parameter, flag, column, attribute or page field is shared', () => {
     for (const channel of ['url', 'cli', 'embed', 'page'] as const) {
       const names = ENTRIES.map(([, f]) => f[channel]).filter((n) => n !== null);
@@ -116,9 +144,13 @@ describe('the registry itself', () => {
 
 /** A valid command line, and the option whose value `bad` replaces for field `id`. */
 function cliCase(id: FieldId, bad: string): string[] {
-  const base = ['--R', '3', '--Rcr', '1', '--rho', '5'];
+  const threeAxis = FIELDS[id].group === 'threeAxis';
+  // A three-axis case: the slope in place of the lead; waterline for its own fields.
+  const base = ['--R', '3', '--Rcr', '1', ...(threeAxis ? ['--slope', '30'] : ['--rho', '5'])];
+  if (id === 'feedRadius' || id === 'crossRadius' || id === 'stepDown') base.push('--passes', 'waterline');
   const given = ['--h', '0.05'];
-  if (id === 'interval' || id === 'halfInterval' || id === 'ra') given.length = 0;
+  if (id === 'interval' || id === 'halfInterval' || id === 'ra' || id === 'horizontalStep' || id === 'stepDown')
+    given.length = 0;
   if (id === 'surfaceAxis') base.push('--surface-radius', '50');
   const args = [...base, ...given];
   const flag = cliFlag(id);

@@ -3,7 +3,8 @@
  * Pure (no I/O). Values are kept as typed, so `--rho -5` reaches validation and its message.
  */
 
-import { CLI_OPTIONS, type CliOption } from '../core/input/fields';
+import { CLI_OPTIONS, type CliOption, cliFlag, THREE_AXIS_FIELDS } from '../core/input/fields';
+import type { ThreeAxisQuantity } from '../core/threeAxis/validate';
 
 /** Options that take a value: one per field of the field registry that the command line takes. */
 export const VALUE_OPTIONS: readonly CliOption[] = CLI_OPTIONS;
@@ -32,6 +33,13 @@ export type Request =
       readonly values: Readonly<Partial<Record<ValueOption, string>>>;
       /** True when the step-over was given as its half (`--half-interval`). */
       readonly half: boolean;
+    }
+  | {
+      /** Three-axis machining (--slope): the quantity given, h or a step (the inverse). */
+      readonly kind: 'threeAxis';
+      readonly json: boolean;
+      readonly values: Readonly<Partial<Record<ValueOption, string>>>;
+      readonly quantity: ThreeAxisQuantity;
     }
   | { readonly kind: 'usage'; readonly error: string };
 
@@ -108,6 +116,11 @@ export function parseArgs(args: readonly string[]): Request {
     return { kind: 'batch' };
   }
   const json = flags.has('json');
+  if (values.slope !== undefined) return threeAxisRequest(values, flags, json);
+  const threeAxisOnly = THREE_AXIS_FIELDS.find((id) => values[FIELD_OPTION[id]] !== undefined);
+  if (threeAxisOnly !== undefined) {
+    return usage(`${cliFlag(threeAxisOnly)} is for three-axis machining: give the surface's slope with --slope <deg>`);
+  }
   const simulate = flags.has('simulate');
   const hasInterval = values.interval !== undefined;
   const hasHalf = values['half-interval'] !== undefined;
@@ -142,4 +155,69 @@ export function parseArgs(args: readonly string[]): Request {
   }
   if (flags.has('inverse') || hasInterval || hasHalf) return { kind: 'inverse', json, simulate, values, half: hasHalf };
   return { kind: hasRa ? 'ra' : 'forward', json, simulate, values };
+}
+
+/** Each three-axis field's option (the field registry's). */
+const FIELD_OPTION = Object.fromEntries(THREE_AXIS_FIELDS.map((id) => [id, cliFlag(id).slice(2)])) as Record<
+  (typeof THREE_AXIS_FIELDS)[number],
+  ValueOption
+>;
+
+/** The options that give the quantity of a three-axis problem, and the quantity each gives. */
+const THREE_AXIS_QUANTITIES: ReadonlyArray<readonly [ValueOption, ThreeAxisQuantity]> = [
+  ['h', 'h'],
+  ['interval', 'interval'],
+  ['horizontal-step', 'horizontalStep'],
+  ['step-down', 'stepDown'],
+];
+
+/** Options of the five-axis case that a three-axis one (--slope) does not take, and why. */
+const NOT_WITH_SLOPE: ReadonlyArray<readonly [string, string]> = [
+  ['rho', 'the slope (and the raster angle) set the lead and tilt of the upright tool'],
+  ['tilt', 'the slope (and the raster angle) set the lead and tilt of the upright tool'],
+  ['pattern', 'the upright tool is the same one-way or zigzag'],
+  ['surface-radius', 'a surface of revolution is given by --feed-radius and --cross-radius (waterline)'],
+  ['surface-axis', 'a surface of revolution is given by --feed-radius and --cross-radius (waterline)'],
+  ['ra', 'three-axis machining takes a scallop height --h or a step'],
+  ['half-interval', 'give the step along the surface as --interval <mm>'],
+  ['inverse', 'a step (--interval, --horizontal-step or --step-down) asks for the cusp height'],
+  ['simulate', 'the simulation of the passes models a tool posture on a plane, not the sloped surface'],
+];
+
+/** --slope: three-axis machining; its usage errors are the combinations that do not exist. */
+function threeAxisRequest(
+  values: Readonly<Partial<Record<ValueOption, string>>>,
+  flags: ReadonlySet<string>,
+  json: boolean,
+): Request {
+  for (const [name, why] of NOT_WITH_SLOPE) {
+    if (values[name as ValueOption] !== undefined || flags.has(name)) {
+      return usage(`--${name} does not go with --slope: ${why}`);
+    }
+  }
+  const passes = values.passes?.trim();
+  if (passes === 'waterline') {
+    if (values['raster-angle'] !== undefined) {
+      return usage('--raster-angle is for raster passes: waterline passes follow the contour (psi = 90)');
+    }
+    if (values['horizontal-step'] !== undefined) {
+      return usage('--horizontal-step is the step of raster passes: give waterline passes their --step-down <mm>');
+    }
+  } else if (passes === undefined || passes === 'raster') {
+    for (const name of ['feed-radius', 'cross-radius'] as const) {
+      if (values[name] !== undefined) {
+        return usage(`--${name} is for waterline passes on a surface of revolution: add --passes waterline`);
+      }
+    }
+    if (values['step-down'] !== undefined) {
+      return usage('--step-down is the step of waterline passes: give raster passes their --horizontal-step <mm>');
+    }
+  }
+  const given = THREE_AXIS_QUANTITIES.filter(([option]) => values[option] !== undefined);
+  if (given.length > 1) {
+    return usage(
+      `${given.map(([o]) => `--${o}`).join(' and ')} do not go together: give --h for the step, or one step for the cusp height it leaves`,
+    );
+  }
+  return { kind: 'threeAxis', json, values, quantity: given[0]?.[1] ?? 'h' };
 }

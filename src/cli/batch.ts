@@ -22,12 +22,14 @@ import {
   CSV_OPTIONAL_COLUMNS,
   CSV_REQUIRED_COLUMNS,
   CSV_TARGET_COLUMNS,
+  CSV_THREE_AXIS_COLUMNS,
   type CsvColumn,
   csvColumnOf,
   FIELDS,
   PASS_FIELDS,
 } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
+import { solveThreeAxis, validateThreeAxis } from '../core/threeAxis/validate';
 import { CsvReader, type CsvRecord, csvText } from './csv';
 import { describeSystemError, errorLine, escapeControls, FLUSH_CHARS, type Output } from './output';
 
@@ -64,10 +66,39 @@ export interface Layout {
   readonly index: Readonly<Partial<Record<InputColumn, number>>>;
   /** The target column: a scallop height h, or a roughness Ra (then `h` is a result column). */
   readonly target: InputColumn;
+  /** True for a header with a `slope` column: three-axis rows ({@link THREE_AXIS_RESULT_COLUMNS}). */
+  readonly threeAxis: boolean;
 }
 
+/** The column that selects three-axis machining (a header with it needs no rho). */
+const SLOPE_COLUMN = csvColumnOf('slope');
+
+/**
+ * Result columns of three-axis rows: L along the surface, the horizontal step Lxy, the step-down dz
+ * (waterline; empty for raster), the equivalent lead and tilt at the CC point (degrees), a note and
+ * the error. In a three-axis header that also has `lead`, `tilt` is this result column (an output
+ * read back), not an input.
+ */
+export const THREE_AXIS_RESULT_COLUMNS = ['interval', 'horizontalStep', 'stepDown', 'lead', 'tilt', 'note', 'error'];
+
+/**
+ * Input columns of a three-axis header, in the order they are echoed (R, Rcr, h, then slope,
+ * passes, rasterAngle, feedRadius, crossRadius); rho and tilt are read (a row with either and a
+ * slope is that row's error) but not echoed.
+ */
+const THREE_AXIS_ECHOED: readonly InputColumn[] = [
+  ...REQUIRED_COLUMNS.filter((c) => c !== csvColumnOf('rho')),
+  H_COLUMN,
+  ...CSV_THREE_AXIS_COLUMNS,
+];
+const THREE_AXIS_INPUT_COLUMNS: readonly InputColumn[] = [
+  ...THREE_AXIS_ECHOED,
+  csvColumnOf('rho'),
+  csvColumnOf('tilt'),
+];
+
 /** What the header must be, as the messages say it. */
-export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN} in place of ${H_COLUMN}) in any order, optionally with ${listed(OPTIONAL_COLUMNS)} (and the output columns, which are ignored)`;
+export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN} in place of ${H_COLUMN}) in any order, optionally with ${listed(OPTIONAL_COLUMNS)} (and the output columns, which are ignored); or, for three-axis machining, R,Rcr,h,${SLOPE_COLUMN} optionally with ${listed(CSV_THREE_AXIS_COLUMNS.filter((c) => c !== SLOPE_COLUMN))}`;
 
 /** Result columns a header may hold (an output read back): ignored, computed again. */
 const IGNORED_COLUMNS: readonly string[] = RESULT_COLUMNS;
@@ -77,6 +108,7 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
   const rule = HEADER_RULE;
   if (record.error !== null) return { ok: false, error: `${rule}; line ${record.line}: ${record.error}` };
   const names = record.fields.map((f) => f.trim());
+  if (names.includes(SLOPE_COLUMN)) return parseThreeAxisHeader(names);
   const index: Partial<Record<InputColumn, number>> = {};
   const ignored = new Set<string>();
   const problems: string[] = [];
@@ -84,6 +116,10 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
     if (IGNORED_COLUMNS.includes(name)) {
       if (ignored.has(name)) problems.push(`column ${name} appears twice`);
       ignored.add(name);
+      return;
+    }
+    if ((CSV_THREE_AXIS_COLUMNS as readonly string[]).includes(name)) {
+      problems.push(`column ${name} is for three-axis rows: add a ${SLOPE_COLUMN} column`);
       return;
     }
     if (!(INPUT_COLUMNS as readonly string[]).includes(name)) {
@@ -105,11 +141,46 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
     return i === undefined ? [] : [{ name, index: i }];
   });
   const target = given[0] as InputColumn;
-  return { ok: true, layout: { width: names.length, names, echoed, index, target } };
+  return { ok: true, layout: { width: names.length, names, echoed, index, target, threeAxis: false } };
+}
+
+/** A three-axis header (it has a slope column): R, Rcr, h and slope required; no rho needed. */
+function parseThreeAxisHeader(names: readonly string[]): { ok: true; layout: Layout } | { ok: false; error: string } {
+  const index: Partial<Record<InputColumn, number>> = {};
+  const ignored = new Set<string>();
+  const problems: string[] = [];
+  const tiltIsResult = names.includes('lead');
+  names.forEach((name, i) => {
+    if (THREE_AXIS_RESULT_COLUMNS.includes(name) && (name !== 'tilt' || tiltIsResult)) {
+      if (ignored.has(name)) problems.push(`column ${name} appears twice`);
+      ignored.add(name);
+      return;
+    }
+    if (name === RA_COLUMN) {
+      problems.push(`three-axis rows take a scallop height ${H_COLUMN}, not ${RA_COLUMN}`);
+      return;
+    }
+    if (!(THREE_AXIS_INPUT_COLUMNS as readonly string[]).includes(name)) {
+      problems.push(`unknown column "${name}"`);
+      return;
+    }
+    const column = name as InputColumn;
+    if (index[column] !== undefined) problems.push(`column ${name} appears twice`);
+    else index[column] = i;
+  });
+  const missing = [...THREE_AXIS_ECHOED.slice(0, 4)].filter((c) => index[c] === undefined);
+  if (missing.length > 0) problems.unshift(`missing ${missing.join(', ')}`);
+  if (problems.length > 0) return { ok: false, error: `${HEADER_RULE} (${problems.join('; ')})` };
+  const echoed = THREE_AXIS_ECHOED.flatMap((name) => {
+    const i = index[name];
+    return i === undefined ? [] : [{ name, index: i }];
+  });
+  return { ok: true, layout: { width: names.length, names, echoed, index, target: H_COLUMN, threeAxis: true } };
 }
 
 /** The result columns of a layout: with a target Ra, the scallop height `h` that leaves it comes first. */
 export function resultColumns(layout: Layout): readonly string[] {
+  if (layout.threeAxis) return THREE_AXIS_RESULT_COLUMNS;
   return layout.target === RA_COLUMN ? [H_COLUMN, ...RESULT_COLUMNS] : RESULT_COLUMNS;
 }
 
@@ -163,6 +234,7 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
     }
   }
   const { index } = layout;
+  if (layout.threeAxis) return threeAxisRow(fields, layout, echo);
   // Each field from its column; an empty optional field takes its default (tilt 0, one-way, plane,
   // feed), as a missing column does.
   const pass = rawFields(PASS_FIELDS, (name) => {
@@ -180,6 +252,26 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
   const v = validateForward({ ...pass, h: fields[index[H_COLUMN] as number] });
   if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
   return `${echo},${resultFields(v.value)},\n`;
+}
+
+/** The output row of a valid-shaped three-axis record: interval, Lxy, dz, lead, tilt, note, error. */
+function threeAxisRow(fields: readonly string[], layout: Layout, echo: string): string {
+  const { index } = layout;
+  const at = (column: InputColumn) => optionalField(fields, index[column]);
+  const raw = Object.fromEntries(
+    (['R', 'Rcr', 'slope', 'passes', 'rasterAngle', 'feedRadius', 'crossRadius', 'rho', 'tilt'] as const).map((id) => [
+      id,
+      at(csvColumnOf(id)),
+    ]),
+  );
+  const v = validateThreeAxis(raw, 'h', at(H_COLUMN));
+  if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
+  const r = solveThreeAxis(v.value);
+  if (!r.ok) return errorRow(echo, layout, r.errors.map((e) => e.message).join(' '));
+  const a = r.value;
+  const note = a.noScallop ? 'no scallop: a flat end on a flat floor, L = 2R for any h' : '';
+  const stepDown = a.stepDownMm === null ? '' : csvNumber(a.stepDownMm);
+  return `${echo},${csvNumber(a.intervalMm)},${csvNumber(a.horizontalStepMm)},${stepDown},${csvNumber(a.leadDeg)},${csvNumber(a.tiltDeg)},${csvText(note)},\n`;
 }
 
 /** Stderr and stdout of a batch run. */

@@ -24,11 +24,18 @@ import {
 } from '../core/index';
 import { cliFlag, FIELDS, PASS_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
+import {
+  solveThreeAxis,
+  type ThreeAxisInputError,
+  type ThreeAxisQuantity,
+  validateThreeAxis,
+} from '../core/threeAxis/validate';
 import { parseArgs, type Request, type ValueOption } from './args';
 import { runBatch } from './batch';
 import { isNumberText } from './csv';
 import { describeSystemError, errorLine, escapeControls, isClosedPipe, Output } from './output';
 import { type Extras, forwardJson, forwardTable, inverseJson, inverseTable, type SimulationRun } from './report';
+import { threeAxisJson, threeAxisTable } from './threeAxisReport';
 
 export interface Io {
   readonly stdin: Readable;
@@ -40,6 +47,9 @@ export const USAGE = `Usage: path-interval --R <mm> --Rcr <mm> --rho <deg> [opti
        path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --ra <mm> [--json] [--simulate]
        path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --interval <mm> [--json] [--simulate]
        path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --half-interval <mm> [--json] [--simulate]
+       path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --h <mm> [--json]
+       path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --horizontal-step <mm> [--json]
+       path-interval --R <mm> --Rcr <mm> --slope <deg> --passes waterline [...] --step-down <mm> [--json]
        path-interval --batch < cases.csv > table.csv
 
 Step-over (path interval L, between adjacent cutter-contact paths) of a filleted (bull-nose)
@@ -65,9 +75,27 @@ radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
   --simulate            also simulate the passes (the tool solid over a 512 x 512 height field;
                         a plane only) and show its cusp height and roughness beside the exact ones
   --json                print one JSON object instead of a table
+
+Three-axis machining (the tool upright, the surface sloped; then --rho and --tilt are not given):
+  --slope <deg>         slope alpha of the surface at the contact (0 to 90; 90 is a vertical wall,
+                        cut flat by the side: no scallop)
+  --passes <p>          raster (default: parallel passes) or waterline (Z-level, along the contour)
+  --raster-angle <deg>  raster only: plan angle psi of the passes to the fall line (0 to 90; default 0)
+  --feed-radius <mm>    waterline only: a surface of revolution about a vertical axis, signed normal
+                        radius along the feed (> 0 convex: dome, boss; < 0 concave: bowl, fillet)
+  --cross-radius <mm>   waterline only: signed radius of the meridian (signs as --feed-radius);
+                        without either radius: a sloped plane
+  --h <mm>              the scallop height: gives the programmed step (Lxy or dz), L along the
+                        surface and the equivalent lead and tilt
+  --interval <mm>       inverse: the cusp height a step-over L along the surface leaves
+  --horizontal-step <mm> inverse, raster: the cusp height a horizontal step Lxy leaves
+  --step-down <mm>      inverse, waterline: the cusp height a step-down dz (tool tip to tool tip) leaves
   --batch               read CSV on stdin (header R,Rcr,rho and h or Ra; optional tilt, pattern,
                         surfaceRadius, surfaceAxis; any order; an empty field takes the default;
                         output columns are ignored, so an output or a lookup table reads back),
+                        three-axis: a header with slope needs no rho; optional passes,
+                        rasterAngle, feedRadius, crossRadius; output interval,horizontalStep,
+                        stepDown,lead,tilt,scallopHeight,note,error),
                         write CSV: the input columns, h (with Ra), then
                         exact,sekine,redonnet,bedi (L/2 of each), interval,halfWidthRight,
                         halfWidthLeft,contactOffset,otherCuspHeight (exact), osculating,
@@ -208,6 +236,41 @@ function inverse(values: Values, wanted: Wanted, half: boolean, io: Io, out: Out
   return 0;
 }
 
+/** A three-axis input error as a stderr line (and JSON): named by its option, the registry's. */
+function reportThreeAxisErrors(io: Io, out: Output, errors: readonly ThreeAxisInputError[], json: boolean): number {
+  const worded = errors.map((e) => {
+    const option = cliFlag(e.field);
+    const message = escapeControls(e.message);
+    io.stderr.write(errorLine(`${option}: ${e.message}`));
+    return {
+      field: e.field,
+      option,
+      code: e.code,
+      got: escapeControls(String(e.got)),
+      ...(e.limit === null ? {} : { limit: e.limit }),
+      message,
+    };
+  });
+  if (json) out.write(`${JSON.stringify({ errors: worded })}\n`);
+  return 2;
+}
+
+/** --slope: three-axis machining, forward (--h) or the cusp a step leaves. */
+function threeAxis(values: Values, quantity: ThreeAxisQuantity, json: boolean, io: Io, out: Output): number {
+  const raw = Object.fromEntries(
+    (['R', 'Rcr', 'slope', 'passes', 'rasterAngle', 'feedRadius', 'crossRadius'] as const).map((id) => [
+      id,
+      values[FIELDS[id].cli],
+    ]),
+  );
+  const v = validateThreeAxis(raw, quantity, values[FIELDS[quantity].cli]);
+  if (!v.ok) return reportThreeAxisErrors(io, out, v.errors, json);
+  const r = solveThreeAxis(v.value);
+  if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, json);
+  out.write(json ? `${JSON.stringify(threeAxisJson(v.value, r.value))}\n` : `${threeAxisTable(v.value, r.value)}\n`);
+  return 0;
+}
+
 async function run(request: Request, io: Io, out: Output): Promise<number> {
   switch (request.kind) {
     case 'help':
@@ -224,6 +287,8 @@ async function run(request: Request, io: Io, out: Output): Promise<number> {
       return targetRa(request.values, request, io, out);
     case 'inverse':
       return inverse(request.values, request, request.half, io, out);
+    case 'threeAxis':
+      return threeAxis(request.values, request.quantity, request.json, io, out);
   }
 }
 

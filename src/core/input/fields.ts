@@ -21,9 +21,11 @@ export type FieldKind = 'length' | 'angle' | 'enum';
  * - `pass`: the pass pattern and the design surface (with the tool: PassInput);
  * - `quantity`: the quantity a problem is given (h, L, a target Ra);
  * - `alias`: another form of a field (the diameter D of R, the half step-over L/2 of L);
+ * - `threeAxis`: three-axis machining (issue 20: the tool upright, the surface sloped), its
+ *   surface, passes and programmed steps; validated by core/threeAxis/validate.ts;
  * - `page`: a setting of the page only (unit, mode, view...), in its URL and embed element.
  */
-export type FieldGroup = 'tool' | 'pass' | 'quantity' | 'alias' | 'page';
+export type FieldGroup = 'tool' | 'pass' | 'quantity' | 'alias' | 'threeAxis' | 'page';
 
 /** The fixed bounds of a number (mm or degrees); null where another field or the posture sets it. */
 export interface FieldRange {
@@ -36,10 +38,13 @@ export interface FieldRange {
   readonly rule: string;
 }
 
-/** A column of the batch's CSV: required (R, Rcr, rho), the target (h or Ra), or optional (a default when absent or empty). */
+/**
+ * A column of the batch's CSV: required (R, Rcr, rho), the target (h or Ra), optional (a default
+ * when absent or empty), or three-axis (a header with `slope` selects three-axis machining).
+ */
 export interface CsvColumnSpec {
   readonly column: string;
-  readonly role: 'required' | 'target' | 'optional';
+  readonly role: 'required' | 'target' | 'optional' | 'threeAxis';
 }
 
 /** Everything the registry says of one field. */
@@ -260,6 +265,121 @@ export const FIELDS = {
     embed: null,
     page: null,
   },
+  slope: {
+    short: 'alpha',
+    core: 'slopeDeg',
+    kind: 'angle',
+    group: 'threeAxis',
+    label: 'Slope alpha',
+    range: {
+      min: 0,
+      max: 90,
+      minIncluded: true,
+      maxIncluded: false,
+      rule: '0 <= alpha < 90 degrees (90 is a vertical wall: no scallop); above 0 for waterline',
+    },
+    url: 'slope',
+    cli: 'slope',
+    csv: { column: 'slope', role: 'threeAxis' },
+    embed: 'slope',
+    page: null,
+  },
+  passes: {
+    short: 'passes',
+    core: 'passes',
+    kind: 'enum',
+    group: 'threeAxis',
+    label: 'Pass strategy',
+    values: ['raster', 'waterline'],
+    url: 'passes',
+    cli: 'passes',
+    csv: { column: 'passes', role: 'threeAxis' },
+    embed: 'passes',
+    page: null,
+  },
+  rasterAngle: {
+    short: 'psi',
+    core: 'rasterAngleDeg',
+    kind: 'angle',
+    group: 'threeAxis',
+    label: 'Raster angle psi',
+    range: { min: 0, max: 90, minIncluded: true, maxIncluded: true, rule: '0 <= psi <= 90 degrees from the fall line' },
+    url: 'rasterAngle',
+    cli: 'raster-angle',
+    csv: { column: 'rasterAngle', role: 'threeAxis' },
+    embed: 'raster-angle',
+    page: null,
+  },
+  feedRadius: {
+    short: 'Rf',
+    core: 'feedRadiusMm',
+    kind: 'length',
+    group: 'threeAxis',
+    label: 'Feed radius Rf',
+    range: {
+      min: 0.001,
+      max: 1e6,
+      minIncluded: true,
+      maxIncluded: true,
+      rule: '0.001 <= |Rf| <= 1e6 mm, > 0 convex, < 0 concave; none for straight',
+    },
+    url: 'feedRadius',
+    cli: 'feed-radius',
+    csv: { column: 'feedRadius', role: 'threeAxis' },
+    embed: 'feed-radius',
+    page: null,
+  },
+  crossRadius: {
+    short: 'Rc',
+    core: 'crossRadiusMm',
+    kind: 'length',
+    group: 'threeAxis',
+    label: 'Cross radius Rc',
+    range: {
+      min: 0.001,
+      max: 1e6,
+      minIncluded: true,
+      maxIncluded: true,
+      rule: '0.001 <= |Rc| <= 1e6 mm, > 0 convex, < 0 concave; none for straight',
+    },
+    url: 'crossRadius',
+    cli: 'cross-radius',
+    csv: { column: 'crossRadius', role: 'threeAxis' },
+    embed: 'cross-radius',
+    page: null,
+  },
+  horizontalStep: {
+    short: 'Lxy',
+    core: 'horizontalStepMm',
+    kind: 'length',
+    group: 'threeAxis',
+    label: 'Horizontal step Lxy',
+    range: { min: 1e-9, max: null, minIncluded: true, maxIncluded: false, rule: '1e-9 mm <= Lxy < the widest step' },
+    url: 'Lxy',
+    cli: 'horizontal-step',
+    csv: null,
+    embed: 'lxy',
+    page: null,
+  },
+  stepDown: {
+    short: 'dz',
+    core: 'stepDownMm',
+    kind: 'length',
+    group: 'threeAxis',
+    label: 'Step-down dz',
+    range: {
+      min: 1e-9,
+      max: null,
+      minIncluded: true,
+      maxIncluded: false,
+      rule: '1e-9 mm <= dz < the largest step-down',
+    },
+    url: 'dz',
+    cli: 'step-down',
+    csv: null,
+    embed: 'dz',
+    page: null,
+  },
   unit: pageSetting('unit', 'Unit', ['mm', 'in'] as const),
   mode: pageSetting('mode', 'Mode', ['forward', 'inverse'] as const),
   target: pageSetting('target', 'Given in forward mode', ['h', 'ra'] as const),
@@ -361,6 +481,12 @@ function csvColumns(role: CsvColumnSpec['role']): readonly CsvColumn[] {
 export const CSV_REQUIRED_COLUMNS = csvColumns('required');
 export const CSV_TARGET_COLUMNS = csvColumns('target');
 export const CSV_OPTIONAL_COLUMNS = csvColumns('optional');
+/** The batch's three-axis columns (slope, passes, rasterAngle, feedRadius, crossRadius), in the order they are echoed. */
+export const CSV_THREE_AXIS_COLUMNS = csvColumns('threeAxis');
+
+/** The three-axis fields (slope, passes, raster angle, the surface's radii, the programmed steps), in order. */
+export type ThreeAxisFieldName = { [K in FieldId]: Fields[K]['group'] extends 'threeAxis' ? K : never }[FieldId];
+export const THREE_AXIS_FIELDS: readonly ThreeAxisFieldName[] = idsWhere((s) => s.group === 'threeAxis');
 
 /** The field read from a CSV column, or null for a column the batch does not read. */
 export function fieldOfCsvColumn(column: string): FieldName | null {

@@ -11,4 +11,5 @@ export * from './revolutionGouging';
 export * from './slopedPlane';
 export * from './slopePosture';
 export * from './slopeSweep';
+export * from './validate';
 export * from './waterlineRevolution';

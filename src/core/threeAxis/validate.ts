@@ -1,0 +1,301 @@
+/**
+ * Validation of the three-axis inputs (issue 20) as the command line and the batch give them (text
+ * by the field registry's names), and one entry that solves the validated case: a sloped plane
+ * (raster, or waterline without radii) or a surface of revolution (waterline with a feed or cross
+ * radius). Text is read as validate.ts reads it (the same strict decimal numbers, csvWrite's
+ * isNumberText); the ranges are the solvers' own (errors.ts, slopedPlane.ts,
+ * waterlineRevolution.ts), so each message names the constraint and its limit in mm or degrees.
+ * The combinations that do not exist are refused here too: a slope with a lead or a tilt (the slope
+ * sets them), a raster angle with waterline passes, a feed or cross radius with raster passes, a
+ * horizontal step with waterline passes and a step-down with raster passes.
+ */
+import { isNumberText } from '../csvWrite';
+import { FIELDS } from '../input/fields';
+import type { ThreeAxisError, ThreeAxisErrorCode, ThreeAxisField } from './errors';
+import { type SlopedPlaneCase, slopedPlaneForward, slopedPlaneInverse, type ThreeAxisPasses } from './slopedPlane';
+import { type RevolutionCase, waterlineForward, waterlineInverse } from './waterlineRevolution';
+
+/** The fields a three-axis input error can name (the solvers' fields, the strategy, and a lead or tilt given with a slope). */
+export type ThreeAxisInputField = ThreeAxisField | 'passes' | 'rho' | 'tilt';
+
+/** A rejected three-axis input: the solvers' error shape, with the parsing and combination codes. */
+export interface ThreeAxisInputError {
+  readonly field: ThreeAxisInputField;
+  readonly code: ThreeAxisErrorCode | 'missing' | 'not-a-number' | 'not-a-strategy' | 'not-with';
+  /** The value as given (text), or the number. */
+  readonly got: string | number;
+  /** The bound it broke (mm or degrees), or null. */
+  readonly limit: number | null;
+  /** One line, in mm and degrees. */
+  readonly message: string;
+}
+
+/** The raw three-axis inputs, by registry field name (text as typed; undefined or empty: not given). */
+export interface RawThreeAxisInput {
+  readonly R?: unknown;
+  readonly Rcr?: unknown;
+  readonly slope?: unknown;
+  readonly passes?: unknown;
+  readonly rasterAngle?: unknown;
+  readonly feedRadius?: unknown;
+  readonly crossRadius?: unknown;
+  /** A lead or tilt given beside the slope: an error (the slope sets them). */
+  readonly rho?: unknown;
+  readonly tilt?: unknown;
+}
+
+/** The quantity a three-axis problem is given: h (forward), or a step (inverse: the cusp it leaves). */
+export type ThreeAxisQuantity = 'h' | 'interval' | 'horizontalStep' | 'stepDown';
+
+/** A validated three-axis problem. */
+export type ThreeAxisProblem =
+  | {
+      readonly surface: 'plane';
+      readonly case: SlopedPlaneCase;
+      readonly quantity: ThreeAxisQuantity;
+      readonly mm: number;
+    }
+  | {
+      readonly surface: 'revolution';
+      readonly case: RevolutionCase;
+      readonly quantity: ThreeAxisQuantity;
+      readonly mm: number;
+    };
+
+/** The answer of a three-axis problem, whichever surface. */
+export interface ThreeAxisAnswer {
+  readonly passes: ThreeAxisPasses;
+  /** L along the surface between adjacent CC paths, mm. */
+  readonly intervalMm: number;
+  /** Lxy: horizontal distance between the passes' vertical planes (plane) or the tool axes (revolution), mm. */
+  readonly horizontalStepMm: number;
+  /** dz between adjacent levels (waterline), mm; null for raster. */
+  readonly stepDownMm: number | null;
+  /** Cusp height along the surface normal, mm (0: no scallop). */
+  readonly cuspHeightMm: number;
+  /** The equivalent posture at the CC point, degrees. */
+  readonly leadDeg: number;
+  readonly tiltDeg: number;
+  /** True when no scallop forms (a flat end on a flat floor: L = 2R). */
+  readonly noScallop: boolean;
+}
+
+const STRATEGIES: readonly ThreeAxisPasses[] = ['raster', 'waterline'];
+
+/** Text of a raw value, trimmed; undefined when not given (absent or empty). */
+function textOf(raw: unknown): string | undefined {
+  if (raw === undefined || raw === null) return undefined;
+  const text = (typeof raw === 'string' ? raw : String(raw)).trim();
+  return text === '' ? undefined : text;
+}
+
+function labelOf(field: ThreeAxisInputField): string {
+  return FIELDS[field].label;
+}
+
+function inputError(
+  field: ThreeAxisInputField,
+  code: ThreeAxisInputError['code'],
+  got: string | number,
+  detail: string,
+  limit: number | null = null,
+): ThreeAxisInputError {
+  return { field, code, got, limit, message: `${labelOf(field)} ${detail}` };
+}
+
+/** A number from its text: the value, or the error (missing, or not a finite decimal number). */
+function numberOf(
+  field: ThreeAxisInputField,
+  raw: unknown,
+  errors: ThreeAxisInputError[],
+  required: boolean,
+): number | undefined {
+  if (typeof raw === 'number' && Number.isFinite(raw)) return raw;
+  const text = textOf(raw);
+  if (text === undefined) {
+    if (required) errors.push(inputError(field, 'missing', '', 'is missing.'));
+    return undefined;
+  }
+  const value = Number(text);
+  if (!isNumberText(text) || !Number.isFinite(value)) {
+    errors.push(inputError(field, 'not-a-number', text, `must be a finite number (got "${text}").`));
+    return undefined;
+  }
+  return value;
+}
+
+/** The solvers' errors as input errors (same fields, codes and messages). */
+function fromSolver(errors: readonly ThreeAxisError[]): ThreeAxisInputError[] {
+  return errors.map((e) => ({ field: e.field, code: e.code, got: e.got, limit: e.limit, message: e.message }));
+}
+
+/**
+ * Validates a three-axis problem: the tool, the slope (degrees), the strategy (`raster` by
+ * default), the raster angle (raster only; degrees, default 0), the signed feed and cross radii
+ * (waterline only; mm; either one makes the surface one of revolution), and the quantity given
+ * (`h`, `interval` L along the surface, `horizontalStep` Lxy for raster, `stepDown` dz for
+ * waterline; mm). Fixed ranges are checked by the solver ({@link solveThreeAxis}); this checks the
+ * text and the combinations.
+ */
+export function validateThreeAxis(
+  raw: RawThreeAxisInput,
+  quantity: ThreeAxisQuantity,
+  rawValue: unknown,
+):
+  | { readonly ok: true; readonly value: ThreeAxisProblem }
+  | { readonly ok: false; readonly errors: readonly ThreeAxisInputError[] } {
+  const errors: ThreeAxisInputError[] = [];
+  const R = numberOf('R', raw.R, errors, true);
+  const Rcr = numberOf('Rcr', raw.Rcr, errors, true);
+  const slope = numberOf('slope', raw.slope, errors, true);
+  for (const field of ['rho', 'tilt'] as const) {
+    const text = textOf(raw[field]);
+    if (text !== undefined)
+      errors.push(
+        inputError(
+          field,
+          'not-with',
+          text,
+          'does not go with a slope: on a three-axis machine the slope and the raster angle set the lead and tilt (leave it empty).',
+        ),
+      );
+  }
+  const passesText = textOf(raw.passes) ?? 'raster';
+  const passes = STRATEGIES.find((s) => s === passesText);
+  if (passes === undefined)
+    errors.push(
+      inputError('passes', 'not-a-strategy', passesText, `must be raster or waterline (got "${passesText}").`),
+    );
+  const psiText = textOf(raw.rasterAngle);
+  if (passes === 'waterline' && psiText !== undefined)
+    errors.push(
+      inputError(
+        'rasterAngle',
+        'not-with',
+        psiText,
+        'is for raster passes only: waterline passes follow the contour (psi = 90 degrees).',
+      ),
+    );
+  const psi = passes === 'waterline' ? 90 : (numberOf('rasterAngle', raw.rasterAngle, errors, false) ?? 0);
+  let feed: number | null = null;
+  let cross: number | null = null;
+  for (const field of ['feedRadius', 'crossRadius'] as const) {
+    const text = textOf(raw[field]);
+    if (text === undefined) continue;
+    if (passes === 'raster') {
+      errors.push(
+        inputError(
+          field,
+          'not-with',
+          text,
+          'is for waterline passes on a surface of revolution only (give --passes waterline, or leave it out for a plane).',
+        ),
+      );
+      continue;
+    }
+    const value = numberOf(field, text, errors, false);
+    if (value === undefined) continue;
+    if (!(Math.abs(value) >= FIELDS[field].range.min && Math.abs(value) <= FIELDS[field].range.max))
+      errors.push(
+        inputError(
+          field,
+          'out-of-range',
+          value,
+          `must be from ${FIELDS[field].range.min} mm to ${FIELDS[field].range.max} mm in size, > 0 convex, < 0 concave (got ${value}); leave it out for a straight line.`,
+        ),
+      );
+    else if (field === 'feedRadius') feed = value;
+    else cross = value;
+  }
+  if (quantity === 'horizontalStep' && passes === 'waterline')
+    errors.push(
+      inputError(
+        'horizontalStep',
+        'not-with',
+        textOf(rawValue) ?? '',
+        'is the step of raster passes: waterline passes are programmed by their step-down dz.',
+      ),
+    );
+  if (quantity === 'stepDown' && passes === 'raster')
+    errors.push(
+      inputError(
+        'stepDown',
+        'not-with',
+        textOf(rawValue) ?? '',
+        'is the step of waterline passes: raster passes are programmed by their horizontal step Lxy.',
+      ),
+    );
+  const mm = numberOf(quantity, rawValue, errors, true);
+  if (errors.length > 0 || R === undefined || Rcr === undefined || slope === undefined || mm === undefined)
+    return { ok: false, errors };
+  const onRevolution =
+    passes === 'waterline' && (textOf(raw.feedRadius) !== undefined || textOf(raw.crossRadius) !== undefined);
+  if (onRevolution)
+    return {
+      ok: true,
+      value: {
+        surface: 'revolution',
+        case: { toolRadiusMm: R, cornerRadiusMm: Rcr, slopeDeg: slope, feedRadiusMm: feed, crossRadiusMm: cross },
+        quantity,
+        mm,
+      },
+    };
+  return {
+    ok: true,
+    value: {
+      surface: 'plane',
+      case: { toolRadiusMm: R, cornerRadiusMm: Rcr, slopeDeg: slope, passes: passes ?? 'raster', rasterAngleDeg: psi },
+      quantity,
+      mm,
+    },
+  };
+}
+
+/**
+ * Solves a validated three-axis problem: forward (h to L, Lxy, dz) or inverse (a step to the cusp
+ * height it leaves), with the equivalent lead and tilt. Errors are the solvers' (ranges, the
+ * vertical wall, the shank and flank limits with the height, the surface's end, gouging).
+ */
+export function solveThreeAxis(
+  p: ThreeAxisProblem,
+): { ok: true; value: ThreeAxisAnswer } | { ok: false; errors: readonly ThreeAxisInputError[] } {
+  if (p.surface === 'plane') {
+    const r =
+      p.quantity === 'h'
+        ? slopedPlaneForward(p.case, p.mm)
+        : slopedPlaneInverse(p.case, { field: p.quantity, mm: p.mm });
+    if (!r.ok) return { ok: false, errors: fromSolver(r.errors) };
+    const a = r.value;
+    return {
+      ok: true,
+      value: {
+        passes: p.case.passes,
+        intervalMm: a.intervalMm,
+        horizontalStepMm: a.horizontalStepMm,
+        stepDownMm: a.stepDownMm,
+        cuspHeightMm: a.cuspHeightMm,
+        leadDeg: a.leadDeg,
+        tiltDeg: a.tiltDeg,
+        noScallop: a.noScallop,
+      },
+    };
+  }
+  if (p.quantity === 'horizontalStep') throw new Error('validateThreeAxis refuses a horizontal step with waterline');
+  const r =
+    p.quantity === 'h' ? waterlineForward(p.case, p.mm) : waterlineInverse(p.case, { field: p.quantity, mm: p.mm });
+  if (!r.ok) return { ok: false, errors: fromSolver(r.errors) };
+  const a = r.value;
+  return {
+    ok: true,
+    value: {
+      passes: 'waterline',
+      intervalMm: a.intervalMm,
+      horizontalStepMm: a.radialStepMm,
+      stepDownMm: a.stepDownMm,
+      cuspHeightMm: a.cuspHeightMm,
+      leadDeg: a.leadDeg,
+      tiltDeg: a.tiltDeg,
+      noScallop: false,
+    },
+  };
+}
