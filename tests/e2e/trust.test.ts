@@ -46,16 +46,28 @@ async function resultNumbers(page: Page): Promise<string[]> {
 }
 
 /**
- * Keeps a worker busy for `ms` from now (it answers nothing meanwhile). Resolves once the busy task
- * is queued in the worker, before any message the page sends it afterwards.
+ * Keeps a worker of the page busy for `ms` (it answers nothing meanwhile). Resolves once the busy
+ * loop runs (it says so on a BroadcastChannel, which needs no turn of the worker's event loop), so
+ * any message the page sends the worker afterwards waits for the loop's end.
  */
-async function block(w: Worker, ms: number): Promise<void> {
-  await w.evaluate((t) => {
-    const end = Date.now() + t;
-    setTimeout(() => {
+async function block(page: Page, w: Worker, ms: number): Promise<void> {
+  await page.evaluate(() => {
+    const channel = new BroadcastChannel('e2e-block');
+    (window as unknown as { __busy: Promise<void> }).__busy = new Promise<void>((resolve) => {
+      channel.onmessage = () => {
+        channel.close();
+        resolve();
+      };
+    });
+  });
+  void w
+    .evaluate((t) => {
+      new BroadcastChannel('e2e-block').postMessage('busy');
+      const end = Date.now() + t;
       while (Date.now() < end);
-    }, 0);
-  }, ms);
+    }, ms)
+    .catch(() => undefined);
+  await page.evaluate(() => (window as unknown as { __busy: Promise<void> }).__busy);
 }
 
 /**
@@ -128,7 +140,7 @@ describe('numbers answer the inputs on screen', () => {
     await workerIdle(page, SOLVER);
     const answered = await replies(page, SOLVER);
     await recordNumbers(page);
-    await block(await namedWorker(page, SOLVER), 1000);
+    await block(page, await namedWorker(page, SOLVER), 1000);
     await page.getByTestId('input-h').fill('0.06');
     await page.getByTestId('input-h').fill('x');
     expect(await replies(page, SOLVER), 'no reply before the invalid input').toBe(answered);
@@ -179,7 +191,7 @@ describe('numbers answer the inputs on screen', () => {
     await page.evaluate(() => {
       (window as unknown as { __pathIntervalSolverWatchdogMs: number }).__pathIntervalSolverWatchdogMs = 250;
     });
-    await block(await namedWorker(page, SOLVER), 60_000);
+    await block(page, await namedWorker(page, SOLVER), 60_000);
     await page.getByTestId('input-h').fill('0.1');
     await expect
       .poll(() => page.getByTestId('notice').textContent(), { timeout: 20_000 })
