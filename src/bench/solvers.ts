@@ -1,10 +1,13 @@
 /**
- * Benchmark of the solver core: median time per call over repeated rounds.
+ * Benchmark of the solver core: median time per call over repeated rounds; and the command line's
+ * `--batch` throughput (rows per second, in process, the CSV fed in 64 kB chunks as a pipe does).
  *
  *   npm run bench                 readable table
  *   npm run bench -- --json       the same, and a last line holding one JSON object
  *   npm run bench -- --rounds 5   fewer rounds (quick smoke run)
  */
+import { Readable, Writable } from 'node:stream';
+import { main } from '../cli/main';
 import {
   bediHalfInterval,
   exactIntervalMm,
@@ -144,6 +147,38 @@ for (let r = 0; r < Math.max(5, rounds); r++) {
 simMs.sort((x, y) => x - y);
 const simulationMsMedian = simMs[simMs.length >> 1] as number;
 
+/**
+ * `--batch` throughput in rows per second: the median over `batchRounds` runs of main() on
+ * `batchRows` rows (h 0.010 to 0.059 mm, lead 0 to 59 degrees, R 3 and Rcr 1 mm, the header in
+ * another column order), stdin in 64 kB chunks, stdout counted and dropped.
+ */
+const batchRows = 20_000;
+const batchRounds = Math.min(rounds, 5);
+const batchCsv = ['h,rho,Rcr,R'];
+for (let i = 0; i < batchRows; i++) batchCsv.push(`${(0.01 + (i % 50) * 0.001).toFixed(3)},${i % 60},1,3`);
+const batchText = `${batchCsv.join('\n')}\n`;
+const batchChunks: string[] = [];
+for (let at = 0; at < batchText.length; at += 65_536) batchChunks.push(batchText.slice(at, at + 65_536));
+const batchRate: number[] = [];
+for (let r = 0; r < batchRounds; r++) {
+  let bytes = 0;
+  const drop = () =>
+    new Writable({
+      write(chunk: Buffer | string, _encoding, done) {
+        bytes += chunk.length;
+        done();
+      },
+    });
+  const t0 = process.hrtime.bigint();
+  const code = await main(['--batch'], { stdin: Readable.from(batchChunks), stdout: drop(), stderr: drop() });
+  const seconds = Number(process.hrtime.bigint() - t0) / 1e9;
+  if (code !== 0 || bytes === 0) throw new Error(`--batch failed in the benchmark (exit ${code})`);
+  batchRate.push(batchRows / seconds);
+  sink += bytes;
+}
+batchRate.sort((x, y) => x - y);
+const batchRowsPerSecond = batchRate[batchRate.length >> 1] as number;
+
 console.log(`Solver benchmark: median of ${rounds} rounds, ${cases.length} inputs spread over the valid domain`);
 console.log(`Node ${process.version}, ${process.platform}/${process.arch}`);
 console.log('');
@@ -152,11 +187,15 @@ for (const [label, , ns] of rows) console.log(`${label.padEnd(36)}${ns.toFixed(1
 console.log(
   `${'simulation 512 x 512, 5 passes (ms)'.padEnd(36)}${simulationMsMedian.toFixed(1).padStart(14)}   ${((simCells / simulationMsMedian) * 1000).toExponential(2)} cells/s`,
 );
+console.log(
+  `${'--batch, 20 000 rows (rows/s)'.padEnd(36)}${batchRowsPerSecond.toFixed(0).padStart(14)}   median of ${batchRounds} runs`,
+);
 console.log(`(checksum ${sink.toExponential(3)})`);
 if (json) {
   const out: Record<string, number> = { rounds };
   for (const [, key, ns] of rows) out[key] = Number(ns.toFixed(1));
   out.simulationMsMedian = Number(simulationMsMedian.toFixed(1));
   out.simulationCellsPerSecond = Math.round((simCells / simulationMsMedian) * 1000);
+  out.batchRowsPerSecond = Math.round(batchRowsPerSecond);
   console.log(JSON.stringify(out));
 }

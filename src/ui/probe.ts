@@ -3,7 +3,9 @@
  * the browser tests and `npm run bench:web` use); the production build contains none of it.
  * Exposes `window.__pathInterval`: frames drawn, software rendering, input-to-frame latencies
  * (from each input event to the first frame that answers it), the time of the first result, the
- * active teaching view and the solver workers started.
+ * active teaching view and the solver workers started; and, so that a test can await an event
+ * instead of sleeping, the calls sent to and the replies received from each named worker and the
+ * writes of the URL.
  */
 import { type AppObserver, CalculatorApp } from './app';
 
@@ -16,9 +18,76 @@ export interface Probe {
   firstResultMs(): number | null;
   activeView(): string | null;
   workerStarts(): number;
+  /** Replies (results or errors) received so far from the workers of this name (workers.ts). */
+  replies(worker: string): number;
+  /** Calls sent to the live workers of this name (of any name if none) still without a reply (0: idle). */
+  pending(worker?: string): number;
+  /** URL writes so far (history.replaceState calls: urlState.ts writes once the inputs settle). */
+  urlWrites(): number;
+}
+
+/** rpc.ts messages: a call from the page, and the worker's final answer to one (not progress). */
+const isCall = (data: unknown) => (data as { rpc?: unknown } | null)?.rpc === 'call';
+const isReply = (data: unknown) => ['ok', 'error'].includes((data as { rpc?: unknown } | null)?.rpc as string);
+
+/**
+ * Counts, per worker name, the calls posted to each worker and its replies, by replacing the
+ * global Worker with a subclass before the page starts any (the page's own listeners run after
+ * the counter's, in the same task). A terminated worker's unanswered calls no longer count.
+ */
+function countWorkerMessages(): Pick<Probe, 'replies' | 'pending'> {
+  const replies = new Map<string, number>();
+  const live = new Map<string, Set<{ pending: number }>>();
+  const NativeWorker = window.Worker;
+  class CountedWorker extends NativeWorker {
+    private readonly count = { pending: 0 };
+    private readonly workerName: string;
+    constructor(url: string | URL, options?: WorkerOptions) {
+      super(url, options);
+      const name = options?.name ?? '';
+      this.workerName = name;
+      const mine = live.get(name) ?? new Set();
+      live.set(name, mine.add(this.count));
+      this.addEventListener('message', (e) => {
+        if (!isReply(e.data)) return;
+        this.count.pending = Math.max(0, this.count.pending - 1);
+        replies.set(name, (replies.get(name) ?? 0) + 1);
+      });
+    }
+    override postMessage(message: unknown, options?: Transferable[] | StructuredSerializeOptions): void {
+      if (isCall(message)) this.count.pending++;
+      super.postMessage(message, options as Transferable[]);
+    }
+    override terminate(): void {
+      live.get(this.workerName)?.delete(this.count);
+      super.terminate();
+    }
+  }
+  window.Worker = CountedWorker;
+  return {
+    replies: (name) => replies.get(name) ?? 0,
+    pending: (name) =>
+      [...live.entries()]
+        .filter(([n]) => name === undefined || n === name)
+        .flatMap(([, counts]) => [...counts])
+        .reduce((n, c) => n + c.pending, 0),
+  };
+}
+
+/** Counts the URL writes (history.replaceState calls). */
+function countUrlWrites(): () => number {
+  let writes = 0;
+  const replace = history.replaceState.bind(history);
+  history.replaceState = (...args: Parameters<History['replaceState']>) => {
+    writes++;
+    replace(...args);
+  };
+  return () => writes;
 }
 
 export function startWithProbe(root: HTMLElement): void {
+  const workerMessages = countWorkerMessages();
+  const urlWrites = countUrlWrites();
   const latencies: number[] = [];
   const pointerLatencies: number[] = [];
   let pendingInputAt: number | null = null;
@@ -72,6 +141,8 @@ export function startWithProbe(root: HTMLElement): void {
     firstResultMs: () => firstResultMs,
     activeView: d.activeView,
     workerStarts: d.workerStarts,
+    ...workerMessages,
+    urlWrites,
   };
   (window as unknown as { __pathInterval: Probe }).__pathInterval = probe;
 }

@@ -30,6 +30,18 @@ export interface JobEvents<Req, Rep> {
   readonly onRestart: (info: RestartInfo<Req>) => void;
 }
 
+/**
+ * The watchdog time of the `solve` job (ms): undefined (the client's WATCHDOG_MS), except in the
+ * instrumented e2e build, where a test may set `window.__pathIntervalSolverWatchdogMs` (read at
+ * each request) so that a test of the give-up need not wait 4 x 3 s. The production build
+ * compiles this to `undefined` (tests/e2e/trust.test.ts checks it holds no `__pathInterval`).
+ */
+function solverWatchdogMs(): number | undefined {
+  if (import.meta.env.MODE !== 'e2e') return undefined;
+  const ms = (globalThis as { __pathIntervalSolverWatchdogMs?: unknown }).__pathIntervalSolverWatchdogMs;
+  return typeof ms === 'number' && ms > 0 ? ms : undefined;
+}
+
 /** The `solve` job on its own worker. */
 export function solveClient(events: JobEvents<SolveRequest, SolveReply>): JobClient<SolveRequest, SolveReply> {
   return new JobClient({
@@ -37,6 +49,10 @@ export function solveClient(events: JobEvents<SolveRequest, SolveReply>): JobCli
     call: (api, r) => api.solve(r),
     same: sameRequest,
     ...events,
+    // A getter: the client reads it at each request.
+    get watchdogMs() {
+      return solverWatchdogMs();
+    },
   });
 }
 

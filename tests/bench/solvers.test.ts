@@ -27,6 +27,7 @@ describe('npm run bench', () => {
       'targetRaNsPerCall',
       'simulationMsMedian',
       'simulationCellsPerSecond',
+      'batchRowsPerSecond',
     ]) {
       expect(last[key]).toBeGreaterThan(0);
     }

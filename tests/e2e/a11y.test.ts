@@ -7,7 +7,7 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { ROOT, SHOTS, useSite } from './harness';
+import { pageSettled, ROOT, SHOTS, useSite } from './harness';
 
 const site = useSite('docs/a11y');
 const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
@@ -53,7 +53,8 @@ describe('axe-core', () => {
         await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
         const view = /view=(\w+)/.exec(query)?.[1];
         if (view) await page.locator(`#panel-${view} > *`).first().waitFor();
-        await page.waitForTimeout(500);
+        // Every view's data drawn and the page quiet: axe reads the final page, not one half drawn.
+        await pageSettled(page);
         expect(await violations(page), `${query} ${theme}`).toEqual([]);
       }
       // A procedure highlighted (hover) keeps its contrast too.
@@ -82,7 +83,6 @@ describe('keyboard and roles', () => {
     expect(await selected()).toBe('surface');
     await page.keyboard.press('ArrowRight');
     expect(await selected()).toBe('profile');
-    await page.close();
   });
 
   it('the result rows are selectable grid rows: aria-selected follows click and Enter', async () => {
@@ -106,6 +106,5 @@ describe('keyboard and roles', () => {
     await page.keyboard.press('Enter');
     await expect.poll(() => paperRow(3).getAttribute('aria-selected')).toBe('true');
     expect(await selectedRows.count()).toBe(1);
-    await page.close();
   });
 });

@@ -6,14 +6,23 @@ import { spawnSync } from 'node:child_process';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { compareForward, compareInverse, forwardInput, inverseInput } from '../../src/core/index';
-import { namedWorker, paintedFraction, ROOT, SHOTS, useSite } from './harness';
+import {
+  animationFrames,
+  frames,
+  namedWorker,
+  paintedFraction,
+  ROOT,
+  SHOTS,
+  SOLVER,
+  useSite,
+  VIEWS_WORKER,
+  workerIdle,
+} from './harness';
 
 const site = useSite('docs/tools/path-interval');
 const open = site.open;
 
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
-const frames = (page: Page) =>
-  page.evaluate(() => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames());
 
 describe('calculator page in headless Chromium', () => {
   it('loads from a sub-path, solves in a module worker, and shows the command line numbers', async () => {
@@ -35,7 +44,6 @@ describe('calculator page in headless Chromium', () => {
     expect(workers.some((u) => u.startsWith(site.url()) && /solver\.worker/.test(u))).toBe(true);
     expect(errors).toEqual([]);
     await page.screenshot({ path: `${SHOTS}/calculator.png` });
-    await page.close();
   });
 
   it('draws the scene (the canvas is not blank) and renders only when something changed', async () => {
@@ -54,14 +62,20 @@ describe('calculator page in headless Chromium', () => {
     // Let the lazy teaching views load and draw their first data: nothing in the scene changes then.
     await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
     const before = await frames(page);
-    await page.waitForTimeout(1000);
+    // Both workers have answered everything, then 10 animation frames pass (a busy render loop
+    // would draw in each) with nothing new to draw.
+    await workerIdle(page, SOLVER);
+    await workerIdle(page, VIEWS_WORKER);
+    await animationFrames(page, 10);
     expect(await frames(page)).toBe(before); // no busy render loop
     // Switching between teaching views that do not touch the 3D scene draws no frame either.
     await page.getByRole('tab', { name: 'L against lead and tilt' }).click();
     await page.getByTestId('comparison-chart').locator('svg.chart-svg').first().waitFor();
     await page.getByRole('tab', { name: 'Formulas' }).click();
     await page.getByTestId('formulas').locator('math').first().waitFor();
-    await page.waitForTimeout(300);
+    // Each view's data answered (the chart's and the formulas'), then frames enough to draw any change.
+    await workerIdle(page, VIEWS_WORKER);
+    await animationFrames(page, 5);
     expect(await frames(page)).toBe(before);
     await page.getByRole('button', { name: 'Along the feed' }).click();
     await page.waitForFunction(
@@ -69,7 +83,6 @@ describe('calculator page in headless Chromium', () => {
       before,
     );
     await page.screenshot({ path: `${SHOTS}/along-the-feed.png` });
-    await page.close();
   });
 
   it('the mouse turns and zooms the scene (src/render/orbit.ts)', async () => {
@@ -93,7 +106,6 @@ describe('calculator page in headless Chromium', () => {
     expect((await canvas.screenshot()).equals(turned)).toBe(false);
     // The page did not scroll under the wheel over the scene.
     expect(await page.evaluate(() => window.scrollY)).toBe(0);
-    await page.close();
   });
 
   it('moving a slider by keyboard updates the numbers, the URL and the scene', async () => {
@@ -111,7 +123,6 @@ describe('calculator page in headless Chromium', () => {
     expect(await text(page, 'result-exact-half')).not.toBe(before);
     await expect.poll(() => new URL(page.url()).searchParams.get('rho')).toBe('5.2');
     await expect.poll(() => frames(page)).toBeGreaterThan(framesBefore);
-    await page.close();
   });
 
   it('invalid input shows an alert naming the constraint, dashes instead of NaN, and keeps the other values', async () => {
@@ -140,7 +151,6 @@ describe('calculator page in headless Chromium', () => {
     await expect.poll(() => text(page, 'result-exact-half')).toBe('1.4436'); // notes' exact column: 1.443592
     expect(await page.getByTestId('scene').getAttribute('class')).not.toMatch(/stale/);
     expect(errors).toEqual([]);
-    await page.close();
   });
 
   it('the URL holds the state: round trip, unit switch, and bad values fall back with a notice', async () => {
@@ -169,7 +179,6 @@ describe('calculator page in headless Chromium', () => {
     expect(await notice.textContent()).toMatch(/R="abc".*not a number.*h is missing/);
     expect(await again.getByTestId('input-R').inputValue()).toBe('3');
     await again.close();
-    await page.close();
   });
 
   it('embed mode fits 480x360 without horizontal scrolling and links to the full calculator', async () => {
@@ -186,7 +195,6 @@ describe('calculator page in headless Chromium', () => {
     expect(href.searchParams.get('embed')).toBeNull();
     expect(href.searchParams.get('rho')).toBe('20');
     await page.screenshot({ path: `${SHOTS}/embed-480x360.png` });
-    await page.close();
   });
 
   it('solve for scallop height: the inverse mode takes L and shows each procedure h', async () => {
@@ -207,15 +215,15 @@ describe('calculator page in headless Chromium', () => {
     await expect
       .poll(() => page.locator('[data-field="L"] [role="alert"]').textContent())
       .toMatch(/Step-over L must be below the tool diameter 2R = 6 mm \(got 7\)/);
-    await page.close();
   });
 
   it('a worker that dies is restarted, the request repeated, and the page says so', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     // The test kills the solver's worker itself (the page has no hook for it): close() from inside.
-    const solver = await namedWorker(page, 'path-interval-solver');
+    const solver = await namedWorker(page, SOLVER);
+    const closed = new Promise((resolve) => solver.once('close', resolve));
     void solver.evaluate(() => (globalThis as unknown as { close(): void }).close()).catch(() => undefined);
-    await page.waitForTimeout(200);
+    await closed;
     await page.getByTestId('input-h').fill('0.1');
     await expect.poll(() => text(page, 'result-exact-half'), { timeout: 10_000 }).toBe('1.8921'); // notes: 1.892088
     expect(await page.getByTestId('notice').textContent()).toMatch(/solver was restarted/);
@@ -223,7 +231,6 @@ describe('calculator page in headless Chromium', () => {
       (window as unknown as { __pathInterval: { workerStarts(): number } }).__pathInterval.workerStarts(),
     );
     expect(starts).toBe(2);
-    await page.close();
   });
 
   it('a burst of slider moves ends on the latest value (stale replies dropped)', async () => {
@@ -247,7 +254,7 @@ describe('calculator page in headless Chromium', () => {
     });
     // The solver is busy while the slider moves, so the replies lag behind the inputs: a page
     // that showed stale replies would show older values after the last move.
-    const solver = await namedWorker(page, 'path-interval-solver');
+    const solver = await namedWorker(page, SOLVER);
     void solver.evaluate(() => {
       const end = Date.now() + 800;
       while (Date.now() < end);
@@ -256,7 +263,8 @@ describe('calculator page in headless Chromium', () => {
     for (let i = 0; i < 30; i++) await page.keyboard.press('ArrowRight');
     await expect.poll(() => page.getByTestId('input-h').inputValue()).toBe('0.08');
     await expect.poll(() => text(page, 'result-exact-half'), { timeout: 5000 }).toBe(final);
-    await page.waitForTimeout(300);
+    // Every request of the burst answered: no late reply can come after this.
+    await workerIdle(page, SOLVER);
     type Seen = { text: string; h: string; stale: boolean };
     const seen = await page.evaluate(() => (window as unknown as { __seen: Seen[] }).__seen);
     // From the moment the field holds the last value, the only number written is its answer.
@@ -272,6 +280,5 @@ describe('calculator page in headless Chromium', () => {
     const current = seen.filter((s) => !s.stale && /\d/.test(s.text));
     expect(current.length).toBeGreaterThan(0);
     for (const s of current) expect(s.text, `h = ${s.h}`).toBe(halfAt(Number(s.h)));
-    await page.close();
   });
 });

@@ -5,24 +5,36 @@
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { STRICT_CSP, useSite } from './harness';
+import { animationFrames, STRICT_CSP, useSite } from './harness';
 
 const site = useSite('docs/csp', { build: 'production', headers: { 'Content-Security-Policy': STRICT_CSP } });
 
-/** Opens a page that records every CSP violation (the recorder is injected by the test, not shipped). */
+/** The file's tab, shared by its tests (each open is a fresh document in it), and where its console lines go. */
+let shared: Page | null = null;
+let consoleLines: string[] = [];
+
+/**
+ * Opens a page that records every CSP violation (the recorder is injected by the test, not
+ * shipped), in the file's shared tab.
+ */
 async function openRecorded(query: string): Promise<{ page: Page; violations: () => Promise<string[]> }> {
-  const page = await site.browser().newPage({ viewport: { width: 1400, height: 900 } });
+  if (shared === null || shared.isClosed()) {
+    const created = await site.browser().newPage({ viewport: { width: 1400, height: 900 } });
+    created.on('console', (m) => {
+      if (/Content Security Policy|Refused to/i.test(m.text())) consoleLines.push(m.text());
+    });
+    await created.addInitScript(() => {
+      const seen: string[] = [];
+      (window as unknown as { __violations: string[] }).__violations = seen;
+      document.addEventListener('securitypolicyviolation', (e) =>
+        seen.push(`${e.violatedDirective}: ${e.blockedURI} ${e.sample}`.trim()),
+      );
+    });
+    shared = created;
+  } else if (shared.url() !== 'about:blank') await shared.goto('about:blank');
+  const page = shared;
   const console: string[] = [];
-  page.on('console', (m) => {
-    if (/Content Security Policy|Refused to/i.test(m.text())) console.push(m.text());
-  });
-  await page.addInitScript(() => {
-    const seen: string[] = [];
-    (window as unknown as { __violations: string[] }).__violations = seen;
-    document.addEventListener('securitypolicyviolation', (e) =>
-      seen.push(`${e.violatedDirective}: ${e.blockedURI} ${e.sample}`.trim()),
-    );
-  });
+  consoleLines = console;
   await page.goto(`${site.url()}${query}`);
   await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
   const violations = async () => [
@@ -46,7 +58,6 @@ describe('strict Content-Security-Policy', () => {
       .filter({ hasText: /must not exceed/ })
       .waitFor();
     expect(await violations()).toEqual([]);
-    await page.close();
   });
 
   for (const view of ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'] as const) {
@@ -69,9 +80,9 @@ describe('strict Content-Security-Policy', () => {
         }
         if (view === 'profile') await page.getByTestId('profile-cusp').click();
         if (view === 'chart') await page.getByTestId('chart-error-unit').selectOption('mm');
-        await page.waitForTimeout(200);
+        // What the clicks changed is drawn, and any violation event it raised has been dispatched.
+        await animationFrames(page, 3);
         expect(await violations(), `${view}${embed}`).toEqual([]);
-        await page.close();
       }
     });
   }

@@ -22,7 +22,6 @@ import {
 import { LOOKUP_HEADER } from '../../src/core/lookupTable';
 import { formatInputNumber, fromMm } from '../../src/core/units';
 import { formatLen, formatLenUnit } from '../../src/ui/format';
-import { URL_SETTLE_MS } from '../../src/ui/urlState';
 import { paintedFraction, SHOTS, STRICT_CSP, useSite } from './harness';
 
 const site = useSite('docs/cylinder', { build: 'production', headers: { 'Content-Security-Policy': STRICT_CSP } });
@@ -32,19 +31,38 @@ const cyl = (radiusMm: number, axis: 'feed' | 'cross'): CylinderSurface => ({ ki
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
 const DASH = '\u2014';
 
-/** Opens a page that records every CSP violation (the recorder is injected by the test, not shipped). */
+/** The file's tab, shared by its tests (each open is a fresh document in it), and where its errors go. */
+let shared: Page | null = null;
+let pageErrors: string[] = [];
+
+/**
+ * Opens a page that records every CSP violation and counts the URL writes (both recorders are
+ * injected by the test, not shipped), in the file's shared tab.
+ */
 async function open(query: string): Promise<{ page: Page; violations: () => Promise<string[]>; errors: string[] }> {
-  const page = await site.browser().newPage({ viewport: { width: 1400, height: 1000 } });
+  if (shared === null || shared.isClosed()) {
+    const created = await site.browser().newPage({ viewport: { width: 1400, height: 1000 } });
+    created.on('pageerror', (e) => pageErrors.push(e.message));
+    created.on('console', (m) => {
+      if (m.type() === 'error' || /Content Security Policy|Refused to/i.test(m.text())) pageErrors.push(m.text());
+    });
+    await created.addInitScript(() => {
+      const seen: string[] = [];
+      (window as unknown as { __violations: string[] }).__violations = seen;
+      document.addEventListener('securitypolicyviolation', (e) => seen.push(`${e.violatedDirective}: ${e.blockedURI}`));
+      const w = window as unknown as { __urlWrites: number };
+      w.__urlWrites = 0;
+      const replace = history.replaceState.bind(history);
+      history.replaceState = (...args: Parameters<History['replaceState']>) => {
+        w.__urlWrites++;
+        replace(...args);
+      };
+    });
+    shared = created;
+  } else if (shared.url() !== 'about:blank') await shared.goto('about:blank');
+  const page = shared;
   const errors: string[] = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  page.on('console', (m) => {
-    if (m.type() === 'error' || /Content Security Policy|Refused to/i.test(m.text())) errors.push(m.text());
-  });
-  await page.addInitScript(() => {
-    const seen: string[] = [];
-    (window as unknown as { __violations: string[] }).__violations = seen;
-    document.addEventListener('securitypolicyviolation', (e) => seen.push(`${e.violatedDirective}: ${e.blockedURI}`));
-  });
+  pageErrors = errors;
   await page.goto(`${site.url()}${query}`);
   await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
   const violations = () => page.evaluate(() => (window as unknown as { __violations: string[] }).__violations);
@@ -94,7 +112,6 @@ describe('curved surfaces on the page', () => {
     expect(await page.locator('tr[data-curvature]').count()).toBe(0);
     expect(await violations()).toEqual([]);
     expect(errors).toEqual([]);
-    await page.close();
   });
 
   it('a concave cylinder too tight: the gouging message with the limit on the radius field, dashes elsewhere', async () => {
@@ -133,7 +150,6 @@ describe('curved surfaces on the page', () => {
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(e.intervalMm, 'mm'));
     expect(await text(page, 'error-surface-radius')).toBe('');
     expect(await violations()).toEqual([]);
-    await page.close();
   });
 
   it('the lookup table of a concave cylinder that a flat bottom lying flat gouges: saved, named by its surface, cells on the cylinder', async () => {
@@ -162,7 +178,6 @@ describe('curved surfaces on the page', () => {
     ).toBe(true);
     expect(await violations()).toEqual([]);
     expect(errors).toEqual([]);
-    await page.close();
   });
 
   it('the URL round-trips (and the embedded page links the full calculator with the same surface)', async () => {
@@ -172,19 +187,17 @@ describe('curved surfaces on the page', () => {
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(e.intervalMm, 'mm'));
     expect(await radio(page, 'surface-kind', 'concave').isChecked()).toBe(true);
     expect(await radio(page, 'surface-axis', 'cross').isChecked()).toBe(true);
-    await page.waitForTimeout(2 * URL_SETTLE_MS); // the URL is written once the inputs settle
+    // The URL is written once the inputs settle (urlState.ts): wait for that write.
+    await expect.poll(() => page.evaluate(() => (window as unknown as { __urlWrites: number }).__urlWrites)).toBe(1);
     expect(new URL(page.url()).search).toBe(query);
-    await page.close();
     const embedded = await open(`${query}&embed=1`);
     const href = (await embedded.page.getByTestId('open-full').getAttribute('href')) ?? '';
     expect(href).toBe(query);
-    await embedded.page.close();
     // Inverse mode on the cylinder: the cusp height of the core.
     const inv = await open('?R=3&Rcr=1&rho=5&surfaceRadius=50&surfaceAxis=feed&mode=inverse&L=2.5&unit=mm');
     const h = exactInverse(inverseInput(TOOL, 'one-way', 2.5, cyl(50, 'feed'))).cuspHeightMm;
     await expect.poll(() => text(inv.page, 'result-exact-height')).toBe(formatLenUnit(h, 'mm', 'height'));
     expect(await text(inv.page, 'result-plane-h')).toMatch(/\d/);
-    await inv.page.close();
   });
 
   it('inch mode: the radius in inches like the other lengths, and L in inches', async () => {
@@ -208,7 +221,6 @@ describe('curved surfaces on the page', () => {
     await expect.poll(() => page.getByTestId('input-surface-radius').inputValue()).toBe('50.8');
     await expect.poll(() => new URL(page.url()).searchParams.get('surfaceRadius')).toBe('-50.8');
     expect(await violations()).toEqual([]);
-    await page.close();
   });
 
   it('the 3D scene and the cross-feed profile show the cylinder, convex along the feed and concave across', async () => {
@@ -271,7 +283,6 @@ describe('curved surfaces on the page', () => {
         .toMatch(new RegExp(`Exact \\(3D\\) ${formatLen(e.intervalMm, 'mm').replace('.', '\\.')}.*cylinder's`));
       expect(await violations()).toEqual([]);
       expect(errors).toEqual([]);
-      await page.close();
     }
   }, 120_000);
 
@@ -281,6 +292,5 @@ describe('curved surfaces on the page', () => {
     await radio(page, 'surface-axis', 'cross').check();
     await expect.poll(() => text(page, 'error-ra')).toMatch(/takes seconds to solve/);
     expect(await text(page, 'result-exact-interval')).toBe(DASH);
-    await page.close();
   });
 });

@@ -94,7 +94,9 @@ describe('example documentation site (MkDocs)', () => {
         new MessageEvent('message', { data, origin: new URL(document.baseURI).origin, source: window }),
       );
     });
-    await page.waitForTimeout(300);
+    // The listeners run while the messages are dispatched; two animation frames later any height
+    // they set is laid out.
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
     expect(await frameHeight(page, selector)).toBe(before);
     // The same message from the iframe's window and origin is taken (the check is not blind).
     await page.locator(selector).evaluate((f) => {

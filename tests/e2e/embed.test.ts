@@ -7,7 +7,7 @@
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { EMBED_ATTRIBUTES } from '../../src/core/input/fields';
-import { SHOTS, useSite } from './harness';
+import { pageSettled, SHOTS, useSite } from './harness';
 import { clippedElements, colourShare } from './pixels';
 
 const site = useSite('docs/embed');
@@ -22,8 +22,7 @@ async function sceneShows(page: Page, hex: string): Promise<number> {
 
 describe('dark mode', () => {
   it('follows prefers-color-scheme, live, in the page, the 3D scene and the chart', async () => {
-    const page = await site.browser().newPage({ viewport: { width: 1400, height: 900 }, colorScheme: 'dark' });
-    await page.goto(`${site.url()}?${STATE}&view=chart`);
+    const { page } = await site.open(`?${STATE}&view=chart`, { width: 1400, height: 900 }, 'dark');
     await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
     expect(await page.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
     expect(await page.evaluate(() => getComputedStyle(document.documentElement).backgroundColor)).toBe(
@@ -40,12 +39,11 @@ describe('dark mode', () => {
     await expect.poll(() => page.evaluate(() => document.documentElement.dataset.theme)).toBe('light');
     await expect.poll(() => sceneShows(page, SCENE_BG.light)).toBeGreaterThan(0.3);
     await expect.poll(() => colourShare(page, lead, '#b45309', 40)).toBeGreaterThan(0.0005);
-    await page.close();
   });
 
   it('theme=dark|light in the link overrides the system; an invalid value gets a notice', async () => {
-    const dark = await site.browser().newPage({ viewport: { width: 480, height: 700 }, colorScheme: 'light' });
-    await dark.goto(`${site.url()}?${STATE}&view=profile&embed=1&theme=dark`);
+    const dark = (await site.open(`?${STATE}&view=profile&embed=1&theme=dark`, { width: 480, height: 700 }, 'light'))
+      .page;
     await dark.getByTestId('profile-view').locator('polygon.scallop').waitFor();
     expect(await dark.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
     // The profile's exact curve is drawn in the dark palette's exact colour.
@@ -56,21 +54,16 @@ describe('dark mode', () => {
     expect(stroke).toBe('rgb(243, 244, 246)');
     expect(new URL(dark.url()).searchParams.get('theme')).toBe('dark'); // kept while the state changes
     await dark.screenshot({ path: `${SHOTS}/theme-dark-embed-profile-480.png` });
-    await dark.close();
 
-    const light = await site.browser().newPage({ viewport: { width: 1400, height: 900 }, colorScheme: 'dark' });
-    await light.goto(`${site.url()}?${STATE}&theme=light`);
+    const light = (await site.open(`?${STATE}&theme=light`, { width: 1400, height: 900 }, 'dark')).page;
     await light.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
     expect(await light.evaluate(() => document.documentElement.dataset.theme)).toBe('light');
     await expect.poll(() => sceneShows(light, SCENE_BG.light)).toBeGreaterThan(0.3);
-    await light.close();
 
-    const bad = await site.browser().newPage({ viewport: { width: 1400, height: 900 }, colorScheme: 'dark' });
-    await bad.goto(`${site.url()}?${STATE}&theme=purple`);
+    const bad = (await site.open(`?${STATE}&theme=purple`, { width: 1400, height: 900 }, 'dark')).page;
     await bad.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
     expect(await bad.getByTestId('notice').textContent()).toMatch(/theme="purple" is not light or dark/);
     expect(await bad.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
-    await bad.close();
   });
 });
 
@@ -111,16 +104,38 @@ describe('auto-height', () => {
   });
 
   it('a page that is not in a frame posts nothing', async () => {
-    const { page } = await site.open(`?${STATE}&embed=1`, { width: 480, height: 400 });
-    const posted = await page.evaluate(
-      () =>
-        new Promise<number>((resolve) => {
-          let n = 0;
-          window.addEventListener('message', () => n++);
-          setTimeout(() => resolve(n), 500);
-        }),
-    );
-    expect(posted).toBe(0);
+    // Every message the page gets from its start (a page not in a frame is its own parent).
+    const page = await site.browser().newPage({ viewport: { width: 480, height: 400 } });
+    await page.addInitScript(() => {
+      const seen: unknown[] = [];
+      (window as unknown as { __messages: unknown[] }).__messages = seen;
+      window.addEventListener('message', (e) => seen.push(e.data));
+    });
+    await page.goto(`${site.url()}?${STATE}&embed=1`);
+    await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+    const posted = await page.evaluate(async () => {
+      const app = document.getElementById('app') as HTMLElement;
+      // The content grows (a framed page would post its height, from its ResizeObserver); once this
+      // test's own observer, registered after the page's, has run, a message the page posted is
+      // queued: a marker posted after it arrives after it.
+      await new Promise<void>((resolve) => {
+        let first = true;
+        new ResizeObserver(() => {
+          if (first) {
+            first = false;
+            const extra = document.createElement('div');
+            extra.textContent = 'grow';
+            app.append(extra);
+          } else resolve();
+        }).observe(app);
+      });
+      await new Promise<void>((resolve) => {
+        window.addEventListener('message', (e) => e.data === 'marker' && resolve());
+        window.postMessage('marker', '*');
+      });
+      return (window as unknown as { __messages: unknown[] }).__messages.filter((m) => m !== 'marker');
+    });
+    expect(posted).toEqual([]);
     await page.close();
   });
 });
@@ -269,7 +284,6 @@ describe('copy embed code', () => {
     const box = page.getByTestId('embed-code');
     expect(await box.isVisible()).toBe(true);
     expect(await box.inputValue()).toMatch(/<iframe src="[^"]*view=profile/);
-    await page.close();
   });
 });
 
@@ -281,7 +295,7 @@ describe('every view fits', () => {
         await page.goto(`${site.url()}?${STATE}&view=${view}&embed=1`);
         await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
         await page.locator(`#panel-${view} > *`).first().waitFor();
-        await page.waitForTimeout(400);
+        await pageSettled(page);
         const width = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
         expect(width[0], `${view}`).toBeLessThanOrEqual(width[1] as number);
         expect(await clippedElements(page), `${view} ${theme}`).toEqual([]);
@@ -317,7 +331,7 @@ describe('every view fits', () => {
         await page.goto(`${site.url()}?${STATE}&view=${view}`);
         await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
         await page.locator(`#panel-${view} > *`).first().waitFor();
-        await page.waitForTimeout(300);
+        await pageSettled(page);
         const scroll = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
         expect(scroll[0], `${view} at ${width}`).toBeLessThanOrEqual(scroll[1] as number);
         expect(await clippedElements(page), `${view} at ${width}`).toEqual([]);

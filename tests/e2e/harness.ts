@@ -34,14 +34,28 @@ export function siteDir(build: 'e2e' | 'production'): string {
 export interface Harness {
   readonly browser: () => Browser;
   readonly url: () => string;
-  /** Opens the page with a query and waits for the first result (attached: it may be hidden). */
-  open(query: string, viewport?: { width: number; height: number }): Promise<{ page: Page; errors: string[] }>;
+  /**
+   * Opens the page with a query and waits for the first result (attached: it may be hidden). The
+   * file's tests share one tab: each open is a fresh document in it (new workers, new state), at
+   * the viewport and colour scheme asked (light by default), motion allowed, screen media; only the tab, its
+   * context and the HTTP cache carry over. A test that routes requests, injects scripts or needs
+   * two pages at once takes its own page from `browser()` instead. Closing the shared page is
+   * allowed (the next open starts another).
+   */
+  open(
+    query: string,
+    viewport?: { width: number; height: number },
+    colorScheme?: 'light' | 'dark',
+  ): Promise<{ page: Page; errors: string[] }>;
 }
 
 /** Registers beforeAll/afterAll hooks for a test file. */
 export function useSite(subPath: string, options: SiteOptions = {}): Harness {
   let browser: Browser | null = null;
   let site: StaticSite | null = null;
+  let shared: Page | null = null;
+  /** Where the shared page's errors go: the latest open's list. */
+  let errors: string[] = [];
   beforeAll(async () => {
     mkdirSync(SHOTS, { recursive: true });
     site = await serveStatic(siteDir(options.build ?? 'e2e'), subPath, options.headers);
@@ -55,19 +69,36 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
     if (v === null) throw new Error(`${what} is not started`);
     return v;
   };
-  return {
-    browser: () => need(browser, 'browser'),
-    url: () => need(site, 'site').url,
-    async open(query, viewport = { width: 1400, height: 900 }) {
-      const page = await need(browser, 'browser').newPage({ viewport });
-      const errors: string[] = [];
+  const sharedPage = async (
+    viewport: { width: number; height: number },
+    colorScheme: 'light' | 'dark',
+  ): Promise<Page> => {
+    if (shared === null || shared.isClosed()) {
+      const page = await need(browser, 'browser').newPage({ viewport, colorScheme });
       page.on('pageerror', (e) => errors.push(e.message));
       page.on('console', (m) => {
         if (m.type() === 'error') errors.push(m.text());
       });
+      shared = page;
+      return page;
+    }
+    const size = shared.viewportSize();
+    if (size?.width !== viewport.width || size.height !== viewport.height) await shared.setViewportSize(viewport);
+    await shared.emulateMedia({ media: 'screen', colorScheme, reducedMotion: 'no-preference' });
+    return shared;
+  };
+  return {
+    browser: () => need(browser, 'browser'),
+    url: () => need(site, 'site').url,
+    async open(query, viewport = { width: 1400, height: 900 }, colorScheme = 'light') {
+      const page = await sharedPage(viewport, colorScheme);
+      // Leave the previous document first, so that nothing it logs while closing is counted here.
+      if (page.url() !== 'about:blank') await page.goto('about:blank');
+      errors = [];
+      const mine = errors;
       await page.goto(`${need(site, 'site').url}${query}`);
       await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
-      return { page, errors };
+      return { page, errors: mine };
     },
   };
 }
@@ -90,4 +121,90 @@ export async function namedWorker(page: Page, name: string): Promise<Worker> {
   const found = await find();
   if (found === null) throw new Error(`no worker ${name}`);
   return found;
+}
+
+type Probe = {
+  __pathInterval: {
+    frames(): number;
+    replies(worker: string): number;
+    pending(worker?: string): number;
+    urlWrites(): number;
+  };
+};
+
+/** The results' worker and the teaching views' (workers.ts), as the probe counts them. */
+export const SOLVER = 'path-interval-solver';
+export const VIEWS_WORKER = 'path-interval-views';
+
+/** Frames the 3D scene has drawn (instrumented build). */
+export const frames = (page: Page): Promise<number> =>
+  page.evaluate(() => (window as unknown as Probe).__pathInterval.frames());
+
+/** Replies received so far from the workers of this name (instrumented build). */
+export const replies = (page: Page, worker: string): Promise<number> =>
+  page.evaluate((w) => (window as unknown as Probe).__pathInterval.replies(w), worker);
+
+/** URL writes so far (instrumented build; urlState.ts writes once the inputs settle). */
+export const urlWrites = (page: Page): Promise<number> =>
+  page.evaluate(() => (window as unknown as Probe).__pathInterval.urlWrites());
+
+/**
+ * Waits until every call sent to the live workers of this name has its reply: from then on no late
+ * reply of theirs can arrive (instrumented build). Polled from the test, so the page's own handling
+ * of the last reply (same task) is done.
+ */
+export async function workerIdle(page: Page, worker: string, timeout = 20_000): Promise<void> {
+  await expect
+    .poll(() => page.evaluate((w) => (window as unknown as Probe).__pathInterval.pending(w), worker), { timeout })
+    .toBe(0);
+}
+
+/** Waits for `count` animation frames of the page (each a chance for the browser to render). */
+export async function animationFrames(page: Page, count = 2): Promise<void> {
+  await page.evaluate(async (n) => {
+    for (let i = 0; i < n; i++) await new Promise((r) => requestAnimationFrame(r));
+  }, count);
+}
+
+/**
+ * Waits until the 3D scene has drawn and then let `quiet` animation frames pass without drawing
+ * (instrumented build): whatever it was asked to draw is on screen, labels laid out.
+ */
+export async function sceneIdle(page: Page, quiet = 3): Promise<void> {
+  await page.waitForFunction(() => (window as unknown as Probe).__pathInterval.frames() > 0);
+  await page.evaluate(async (n) => {
+    const probe = (window as unknown as Probe).__pathInterval;
+    let last = probe.frames();
+    for (let still = 0; still < n; ) {
+      await new Promise((r) => requestAnimationFrame(r));
+      const now = probe.frames();
+      still = now === last ? still + 1 : 0;
+      last = now;
+    }
+  }, quiet);
+}
+
+/**
+ * Waits until the page has nothing left to do: every call to any of its workers answered, then
+ * `quiet` animation frames in a row in which neither the DOM changed nor the 3D scene drew
+ * (instrumented build). Layout read after this is the page's final one for its state.
+ */
+export async function pageSettled(page: Page, quiet = 3): Promise<void> {
+  await expect
+    .poll(() => page.evaluate(() => (window as unknown as Probe).__pathInterval.pending()), { timeout: 20_000 })
+    .toBe(0);
+  await page.evaluate(async (n) => {
+    const probe = (window as unknown as Probe).__pathInterval;
+    let changes = 0;
+    const observer = new MutationObserver(() => changes++);
+    observer.observe(document, { subtree: true, childList: true, attributes: true, characterData: true });
+    let last = `${changes} ${probe.frames()}`;
+    for (let still = 0; still < n; ) {
+      await new Promise((r) => requestAnimationFrame(r));
+      const now = `${changes} ${probe.frames()}`;
+      still = now === last ? still + 1 : 0;
+      last = now;
+    }
+    observer.disconnect();
+  }, quiet);
 }

@@ -15,8 +15,7 @@ import {
   type ToolInput,
   traceProcedure,
 } from '../../src/core/index';
-import { URL_SETTLE_MS } from '../../src/ui/urlState';
-import { SHOTS, useSite } from './harness';
+import { frames, SHOTS, sceneIdle, urlWrites, useSite } from './harness';
 
 const site = useSite('docs/posture');
 const { open } = site;
@@ -42,11 +41,11 @@ describe('tool posture on the page', () => {
     expect(await text(page, 'result-width-left')).toBe('1.4436 mm');
     expect(await text(page, 'result-contact-offset')).toBe('0.0000 mm');
     expect(await page.getByTestId('result-cusp-height').isVisible()).toBe(false);
-    await page.waitForTimeout(2 * URL_SETTLE_MS); // the URL is written once the inputs settle
+    // The URL is written once the inputs settle (urlState.ts): wait for that write.
+    await expect.poll(() => urlWrites(page)).toBeGreaterThan(0);
     const url = new URL(page.url());
     expect(url.searchParams.has('tilt')).toBe(false);
     expect(url.searchParams.has('pattern')).toBe(false);
-    await page.close();
   });
 
   it('the tilt field and slider: L, wR, wL and y0 of the exact solver; in the URL; arrow keys step 0.1 deg', async () => {
@@ -72,7 +71,6 @@ describe('tool posture on the page', () => {
       .poll(() => page.getByTestId('error-tilt').textContent())
       .toMatch(/Tilt angle beta must be above -90 and below 90 degrees \(got 95\)/);
     expect(await text(page, 'result-exact-interval')).toBe('\u2014');
-    await page.close();
   });
 
   it('the pattern switch: zigzag gives L = 2 min(wR, wL) and both cusp heights; in the URL', async () => {
@@ -96,7 +94,6 @@ describe('tool posture on the page', () => {
     expect(await again.locator('[data-testid="pattern-switch"] input[value="zigzag"]').isChecked()).toBe(true);
     await again.close();
     await page.screenshot({ path: `${SHOTS}/posture-zigzag.png` });
-    await page.close();
   });
 
   it('the table: osculating circle and corner ball rows; the paper three labelled lead-only with tilt', async () => {
@@ -113,7 +110,6 @@ describe('tool posture on the page', () => {
     expect(await page.getByTestId('table-notes').textContent()).toMatch(/lead-only models/);
     await page.getByTestId('input-tilt').fill('0');
     await expect.poll(() => label('sekine')).toBe('Sekine et al. (Eqs. 4-8)');
-    await page.close();
   });
 
   it('says what the step-over means (between cutter-contact paths) and gives the tool-centre offset', async () => {
@@ -121,7 +117,6 @@ describe('tool posture on the page', () => {
     const meaning = (await page.getByTestId('step-over-meaning').textContent()) ?? '';
     expect(meaning).toMatch(/distance between adjacent cutter-contact \(CC\) paths/);
     expect(meaning).toMatch(/tool centre point O instead, offset each CC path across the feed by −y0 = [-+]?\d/);
-    await page.close();
   });
 
   it('the 3D scene: tilted tool, its axis and centre O off the contact, cusp sections on both sides, L and y0', async () => {
@@ -136,10 +131,12 @@ describe('tool posture on the page', () => {
     await expect.poll(labels).toEqual(expect.arrayContaining(['P_hp R', 'P_hp L', 'O', 'CC (P_base)']));
     expect(await labels()).toContain(`L = ${mm(e.intervalMm)}`);
     expect(await labels(), JSON.stringify(await labels())).toContain(`y0 = ${signed(e.contactOffsetMm)}`);
+    await sceneIdle(page);
+    const before = await frames(page);
     await page.getByRole('button', { name: 'Along the feed' }).click();
-    await page.waitForTimeout(300);
+    await expect.poll(() => frames(page)).toBeGreaterThan(before);
+    await sceneIdle(page);
     await page.getByTestId('scene').screenshot({ path: `${SHOTS}/posture-scene-feed.png` });
-    await page.close();
   });
 
   it('the profile: three passes, both cusps, wR and wL labelled, O at -y0; zigzag: both cusp heights', async () => {
@@ -171,7 +168,6 @@ describe('tool posture on the page', () => {
           `L = ${z.intervalMm.toFixed(4)}`,
         ]),
       );
-    await page.close();
   });
 
   it('the chart of L against tilt at the current lead, beside L against lead', async () => {
@@ -186,7 +182,6 @@ describe('tool posture on the page', () => {
       .poll(() => page.getByTestId('chart-summary').textContent())
       .toMatch(new RegExp(`beta = 5 deg, L \\[mm\\]: Exact \\(3D\\) ${exact(5, 'one-way').intervalMm.toFixed(4)}`));
     await chart.screenshot({ path: `${SHOTS}/posture-chart.png` });
-    await page.close();
   });
 
   it('the stepper runs the procedure on both flanks and ends on both widths', async () => {
@@ -207,7 +202,6 @@ describe('tool posture on the page', () => {
     // Somewhere along the way: the left flank's own steps.
     await page.getByTestId('stepper-back').click();
     await expect.poll(() => caption.textContent()).toMatch(/^Step \d+ of \d+\. Left flank \(-Y\) converged: wL = /);
-    await page.close();
   });
 
   it('the formulas follow the posture: projected ellipse, rotation phi, D0, y0, osculating radius, corner ball', async () => {
@@ -230,6 +224,5 @@ describe('tool posture on the page', () => {
     expect(await formulas.locator('section[data-procedure="cornerBall"]').textContent()).toMatch(/Rcr=1/);
     expect(await formulas.locator('section[data-procedure="sekine"]').textContent()).toMatch(/tilt ignored/);
     await page.screenshot({ path: `${SHOTS}/posture-formulas.png`, fullPage: true });
-    await page.close();
   });
 });

@@ -22,16 +22,27 @@ const VIEWPORTS = [
 ] as const;
 type Viewport = (typeof VIEWPORTS)[number];
 
-/** Opens the page in its own context (touch on the phone; clipboard allowed) and waits for the first result. */
+/** One context per viewport (touch on the phone; clipboard allowed) and its tab, shared by that viewport's tests. */
+const contexts = new Map<string, { context: BrowserContext; page: Page }>();
+
+/**
+ * Opens the page in the viewport's context (each open a fresh document in its tab) and waits for
+ * the first result.
+ */
 async function open(vp: Viewport, query: string): Promise<{ page: Page; context: BrowserContext }> {
-  const context = await site.browser().newContext({
-    viewport: { width: vp.width, height: vp.height },
-    hasTouch: vp.touch,
-    isMobile: vp.touch,
-    acceptDownloads: true,
-  });
-  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
-  const page = await context.newPage();
+  let entry = contexts.get(vp.name);
+  if (entry === undefined || entry.page.isClosed()) {
+    const context = await site.browser().newContext({
+      viewport: { width: vp.width, height: vp.height },
+      hasTouch: vp.touch,
+      isMobile: vp.touch,
+      acceptDownloads: true,
+    });
+    await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
+    entry = { context, page: await context.newPage() };
+    contexts.set(vp.name, entry);
+  } else await entry.page.goto('about:blank');
+  const { context, page } = entry;
   await page.goto(`${site.url()}${query}`);
   await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
   return { page, context };
@@ -71,7 +82,7 @@ function cli(args: readonly string[]): { exact: { interval: number; halfInterval
 
 describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
   it('a catalogue diameter: the switch makes the field D, D10 answers as R 5, errors name D, presets say custom', async () => {
-    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     expect(await page.getByTestId('preset').locator('option:checked').textContent()).toBe(
       'D6, corner R1 (paper Tool 1)',
     );
@@ -98,11 +109,10 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
       .filter({ hasText: /D\/2 = 5 mm/ })
       .waitFor();
     expect(await page.getByTestId('input-R').inputValue()).toBe('10');
-    await context.close();
   });
 
   it('typing: a half-typed value shows no error and no old number, a decimal comma works, a pause or Enter commits', async () => {
-    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     const before = await text(page, 'result-exact-interval');
     await typeInto(page, 'input-h', '0');
     // Held back: no message, every number a dash, the status says why.
@@ -134,11 +144,10 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     await typeInto(page, 'input-h', '0');
     await page.keyboard.press('Enter');
     expect(await text(page, 'error-h')).toMatch(/must be greater than 0 mm \(got 0\)/);
-    await context.close();
   });
 
   it('a flat end without lead leaves no scallop: the page says so and gives L = 2R, as the command line', async () => {
-    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     await typeInto(page, 'input-Rcr', '0');
     await typeInto(page, 'input-rho', '0');
     const want = cli(['--R', '3', '--Rcr', '0', '--rho', '0', '--h', '0.05']);
@@ -152,11 +161,10 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     // With lead it leaves a scallop again and the statement goes.
     await typeInto(page, 'input-rho', '5');
     await expect.poll(() => page.getByTestId('no-scallop').isHidden()).toBe(true);
-    await context.close();
   });
 
   it('Copy gives the plain number in the unit on screen, confirms it, and is disabled without a value', async () => {
-    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     const headlineCopy = page.locator('.big button.copy');
     await expect.poll(() => headlineCopy.isEnabled()).toBe(true);
     await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
@@ -178,11 +186,10 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     await typeInto(page, 'input-h', 'x');
     await page.keyboard.press('Enter');
     for (const b of await page.locator('button.copy').all()) expect(await b.isDisabled()).toBe(true);
-    await context.close();
   });
 
   it('downloads the lookup table from the worker; its cells are the core exact step-over', async () => {
-    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&pattern=zigzag');
+    const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&pattern=zigzag');
     const button = page.getByTestId('download-table');
     await expect.poll(() => button.isEnabled()).toBe(true);
     const downloaded = page.waitForEvent('download');
@@ -220,7 +227,6 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     await typeInto(page, 'input-Rcr', '9');
     await page.keyboard.press('Enter');
     expect(await button.isDisabled()).toBe(true);
-    await context.close();
   });
 
   it('touch targets are at least 24 px; a vertical swipe over the scene or the profile scrolls the page', async () => {
@@ -275,8 +281,8 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
           .poll(moved, { timeout: 3000, message: `${target} (touch-action ${touchAction})` })
           .toBeGreaterThan(50);
       }
+      await cdp.detach();
       await page.screenshot({ path: `${SHOTS}/quick-lookup-touch-${vp.name}.png` });
     }
-    await context.close();
   });
 });

@@ -109,8 +109,7 @@ describe('the 3D scene at the limits of the tool radius', () => {
     ['R = 0.001 mm (the smallest accepted)', 'R=0.001&Rcr=0.0005&rho=5&h=0.00005&unit=mm'],
   ] as const) {
     it(`${name}: the tool is drawn, not only the badge`, async () => {
-      const page = await site.browser().newPage({ viewport: { width: 1400, height: 900 } });
-      await page.goto(`${site.url()}?${query}`);
+      const { page } = await site.open(`?${query}`);
       await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
       expect(await page.locator('[data-testid^="error-"]:not(:empty)').count()).toBe(0);
       await settled(page);
@@ -124,15 +123,13 @@ describe('the 3D scene at the limits of the tool radius', () => {
       expect(painted).toBeGreaterThan(0.5 * reference);
       // Its labels are placed (none hidden behind the camera or beyond the far plane).
       expect(await page.locator('.scene-label.label-axis:visible').count()).toBe(3);
-      await page.close();
     });
   }
 });
 
 describe('the 3D scene refitted to a new tool radius', () => {
   it('R from 3 mm to 500 mm, then to 0.001 mm, in one page: the tool stays in view', async () => {
-    const page = await site.browser().newPage({ viewport: { width: 1400, height: 900 } });
-    await page.goto(`${site.url()}?R=3&Rcr=1&rho=5&h=0.05&unit=mm`);
+    const { page } = await site.open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     await settled(page);
     const reference = await paintedFraction(page);
     const enter = async (fields: ReadonlyArray<readonly [string, string]>) => {
@@ -156,15 +153,13 @@ describe('the 3D scene refitted to a new tool radius', () => {
     );
     expect(large).toBeGreaterThan(0.5 * reference);
     expect(small).toBeGreaterThan(0.5 * reference);
-    await page.close();
   });
 });
 
 describe('a lost WebGL context', () => {
   for (const theme of ['light', 'dark'] as const) {
     it(`${theme}: the 3D scene comes back on the theme's background, the Machined surface view draws again, no input`, async () => {
-      const page = await site.browser().newPage({ viewport: { width: 1400, height: 900 }, colorScheme: theme });
-      await page.goto(`${site.url()}?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=surface`);
+      const { page } = await site.open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=surface', undefined, theme);
       const scene = page.getByTestId('scene-canvas');
       await settled(page);
       const background = () => colourShare(page, scene, SCENE_BG[theme], 12);
@@ -187,7 +182,6 @@ describe('a lost WebGL context', () => {
       await loseAndRestore(page, 'surface-canvas');
       await expect.poll(async () => differingShare(page, drawn, await surface.screenshot())).toBeLessThan(0.01);
       await page.screenshot({ path: `${SHOTS}/context-restored-${theme}.png` });
-      await page.close();
     });
   }
 });

@@ -6,7 +6,7 @@
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { useSite } from './harness';
+import { animationFrames, useSite } from './harness';
 
 const site = useSite('docs/slider-drag');
 
@@ -73,9 +73,21 @@ describe('slider drag with the mouse', () => {
       await page.mouse.down();
       const values = new Set<string>();
       const steps = 24;
+      /** The field shows the slider's value and the results answer it (neither stale nor awaited). */
+      const answered = () =>
+        page.evaluate(() => {
+          const results = document.querySelector('.results') as HTMLElement;
+          const slider = document.querySelector('[data-testid="slider-h"]') as HTMLInputElement;
+          const field = document.querySelector('[data-testid="input-h"]') as HTMLInputElement;
+          const current = !results.classList.contains('stale') && results.getAttribute('aria-busy') !== 'true';
+          return current && Number(field.value) === Number(slider.value) ? slider.value : null;
+        });
       for (let i = 1; i <= steps; i++) {
+        const previous = await page.getByTestId('slider-h').inputValue();
         await page.mouse.move(x0 + 3 * i, y);
-        await page.waitForTimeout(100);
+        // A slow drag: the next move comes once this value's answer is drawn, two frames later.
+        await expect.poll(answered).toSatisfy((v: string | null) => v !== null && v !== previous);
+        await animationFrames(page, 2);
         values.add(await page.getByTestId('slider-h').inputValue());
       }
       const { staleFrames, frames } = await page.evaluate(() => {

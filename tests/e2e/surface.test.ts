@@ -9,17 +9,19 @@ import { exactForward, forwardInput } from '../../src/core/index';
 import { forwardOfRaTarget, validateRaTarget } from '../../src/core/raTarget';
 import { exactRoughness, maxRaMm } from '../../src/core/roughness';
 import { formatInputNumber, fromMm, toMm } from '../../src/core/units';
-import { SHOTS, useSite } from './harness';
+import { animationFrames, SHOTS, SOLVER, useSite, VIEWS_WORKER, workerIdle } from './harness';
 
 const { open } = useSite('docs/surface');
 
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent()) ?? '';
 
+const SIMULATION_WORKER = 'path-interval-simulation';
+
 /** The simulation worker, by its name (none until the view is opened). */
 async function simulationWorkers(page: Page): Promise<number> {
   let n = 0;
-  for (const w of page.workers()) if ((await w.evaluate(() => self.name)) === 'path-interval-simulation') n++;
+  for (const w of page.workers()) if ((await w.evaluate(() => self.name)) === SIMULATION_WORKER) n++;
   return n;
 }
 
@@ -60,7 +62,6 @@ describe('target Ra and roughness in headless Chromium', () => {
     await expect.poll(() => text(page, 'result-ra')).toBe('10.100 \u00b5m');
     expect(errors).toEqual([]);
     await page.screenshot({ path: `${SHOTS}/target-ra.png` });
-    await page.close();
   });
 
   it('an Ra above the maximum shows the message naming the limit (in the unit on screen) and dashes', async () => {
@@ -82,7 +83,6 @@ describe('target Ra and roughness in headless Chromium', () => {
     await expect
       .poll(() => text(page, 'error-ra'))
       .toContain(`must be below ${formatInputNumber(fromMm(maxInch, 'in'))} in (got 0.019685)`);
-    await page.close();
   });
 });
 
@@ -90,7 +90,10 @@ describe('Machined surface view in headless Chromium', () => {
   it('simulates only when opened; the simulated cusp is within the stated bound of exact; 3D, legend, trace', async () => {
     const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
     await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
-    await page.waitForTimeout(300);
+    // Everything the page asked is answered and drawn: a simulation started on load would exist now.
+    await workerIdle(page, SOLVER);
+    await workerIdle(page, VIEWS_WORKER);
+    await animationFrames(page, 2);
     expect(await simulationWorkers(page)).toBe(0);
     await page.locator('[role="tab"][data-view="surface"]').click();
     const line = page.getByTestId('surface-comparison');
@@ -116,7 +119,6 @@ describe('Machined surface view in headless Chromium', () => {
     await expect.poll(async () => (await canvas.screenshot()).length).toBeGreaterThan(3000);
     expect(errors).toEqual([]);
     await page.screenshot({ path: `${SHOTS}/view-surface.png`, fullPage: true });
-    await page.close();
   });
 
   it('a burst of inputs ends on the latest; invalid input hides the numbers; zigzag and target Ra', async () => {
@@ -144,7 +146,8 @@ describe('Machined surface view in headless Chromium', () => {
       statuses.some((t) => /^Simulating the passes: \d+ %\.\.\.$/.test(t)),
       statuses.join(' | '),
     ).toBe(true);
-    await page.waitForTimeout(500); // no late reply to an earlier input replaces it
+    // Every simulation asked is answered: no late reply to an earlier input can replace this one.
+    await workerIdle(page, SIMULATION_WORKER);
     expect(await line.textContent()).toMatch(/exact 0\.045000 mm/);
     // Invalid: no number of the earlier inputs stays on screen.
     await page.getByTestId('input-h').fill('-1');
@@ -169,7 +172,6 @@ describe('Machined surface view in headless Chromium', () => {
       .toMatch(/Simulated cusp .* 4 passes/);
     const trace = (await page.getByTestId('surface-trace').locator('text').allTextContents()).join(' ');
     expect(trace).toMatch(/Ra 0\.00[78]\d+ mm/);
-    await page.close();
   });
 
   it('?view=surface&embed=1 shows just that view, without horizontal scrolling at 480 px wide', async () => {
@@ -186,6 +188,5 @@ describe('Machined surface view in headless Chromium', () => {
     ]);
     expect(scroll).toBeLessThanOrEqual(client as number);
     await page.screenshot({ path: `${SHOTS}/embed-surface.png` });
-    await page.close();
   });
 });

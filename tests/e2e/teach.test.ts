@@ -13,7 +13,8 @@ import { groupSteps, sceneToleranceMm } from '../../src/ui/views/stepGroups';
 import { traceFrames } from '../../src/worker/api';
 import { SHOTS, useSite } from './harness';
 
-const { open } = useSite('docs/teach');
+const site = useSite('docs/teach');
+const { open } = site;
 
 const TOOL1 = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 const VIEWPORTS = [
@@ -84,7 +85,6 @@ describe('teacher: the comparison charts', () => {
         await noHorizontalScroll(page);
         await chart.screenshot({ path: `${SHOTS}/teach-chart-${vp.name}-${theme}.png` });
         expect(errors).toEqual([]);
-        await page.close();
       });
     }
   }
@@ -97,7 +97,6 @@ describe('teacher: the comparison charts', () => {
     await expect.poll(() => page.getByTestId('chart-error').locator('.chart-title').textContent()).toMatch(/\[mm\]$/);
     expect(await page.getByTestId('chart-error-value-sekine').textContent()).toMatch(/^[+-]\d\.\d{4}$/);
     await page.getByTestId('comparison-chart').screenshot({ path: `${SHOTS}/teach-chart-rho1-gap.png` });
-    await page.close();
   });
 
   it('an error that rounds to zero reads 0.00 in the legend, never -0.00 or +0.00 (mm and inch; issue 17)', async () => {
@@ -135,7 +134,6 @@ describe('teacher: the comparison charts', () => {
         unit,
       ).toEqual([]);
       expect(errors).toEqual([]);
-      await page.close();
     }
   });
 
@@ -154,7 +152,6 @@ describe('teacher: the comparison charts', () => {
         .evaluate((e) => Number.parseFloat(getComputedStyle(e).strokeWidth));
     expect(await width('bedi')).toBeGreaterThan(await width('sekine'));
     await page.getByTestId('comparison-chart').screenshot({ path: `${SHOTS}/teach-chart-highlight-bedi.png` });
-    await page.close();
   });
 });
 
@@ -220,13 +217,16 @@ describe('teacher: the step-through', () => {
         await noHorizontalScroll(page);
         await page.screenshot({ path: `${SHOTS}/teach-stepper-${vp.name}-${theme}.png` });
         expect(errors).toEqual([]);
-        await page.close();
       });
     }
   }
 
   it('prefers-reduced-motion: Play shows one step per press, says so, and never animates', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.1&unit=mm&view=stepper', { width: 1440, height: 900 });
+    // A page of its own, on Playwright's clock: time flows as usual, and `runFor` fires at once
+    // every timer due within a stretch of time instead of the test waiting it out.
+    const page = await site.browser().newPage({ viewport: { width: 1440, height: 900 } });
+    await page.clock.install();
+    await page.goto(`${site.url()}?R=3&Rcr=1&rho=5&h=0.1&unit=mm&view=stepper`);
     const counter = page.getByTestId('stepper-counter');
     const note = page.getByTestId('stepper-motion-note');
     await expect.poll(() => counter.textContent()).toBe(`step 1 of ${total}`);
@@ -236,13 +236,15 @@ describe('teacher: the step-through', () => {
     expect(await page.getByTestId('stepper-play').textContent()).toBe('Play (one step)');
     await page.getByTestId('stepper-play').click();
     await expect.poll(() => counter.textContent()).toBe(`step 2 of ${total}`);
-    await page.waitForTimeout(2000); // an animation would have moved on by now (700 ms a step)
+    // Every timer of the next 2.1 s fires: an animation (700 ms a step) would move on 3 steps.
+    await page.clock.runFor(2100);
     expect(await counter.textContent()).toBe(`step 2 of ${total}`);
     await page.screenshot({ path: `${SHOTS}/teach-stepper-reduced-motion.png` });
     // Back to full motion: Play animates again.
     await page.emulateMedia({ reducedMotion: 'no-preference' });
     await expect.poll(() => note.isVisible()).toBe(false);
     await page.getByTestId('stepper-play').click();
+    await page.clock.runFor(2100);
     await expect.poll(() => counter.textContent(), { timeout: 6000 }).toMatch(/^step [4-9]/);
     await page.close();
   });

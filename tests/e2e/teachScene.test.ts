@@ -12,7 +12,7 @@ import { describe, expect, it } from 'vitest';
 import { exactForward } from '../../src/core/index';
 import { forwardInput } from '../../src/core/validate';
 import { formatLenUnit } from '../../src/ui/format';
-import { SHOTS, useSite } from './harness';
+import { animationFrames, frames, SHOTS, sceneIdle, useSite } from './harness';
 
 const { open } = useSite('docs/teach-scene');
 
@@ -89,13 +89,21 @@ async function expectLegendFor(page: Page, where: string): Promise<string[]> {
   return drawn;
 }
 
-/** Waits until the scene has drawn its labels for the state on screen. */
+/** Waits until the scene has drawn its labels for the state on screen and has nothing more to draw. */
 async function sceneReady(page: Page): Promise<void> {
   await page.getByTestId('scene').scrollIntoViewIfNeeded();
   await expect
     .poll(async () => (await sceneLabels(page)).labels.map((l) => l.text))
     .toEqual(expect.arrayContaining(['CC (P_base)']));
-  await page.waitForTimeout(200);
+  await sceneIdle(page);
+}
+
+/** Clicks a control that moves the scene's camera, and waits until the scene has drawn it. */
+async function drawnAfter(page: Page, act: () => Promise<void>): Promise<void> {
+  const before = await frames(page);
+  await act();
+  await expect.poll(() => frames(page)).toBeGreaterThan(before);
+  await sceneIdle(page);
 }
 
 describe('teacher: the 3D scene', () => {
@@ -127,7 +135,6 @@ describe('teacher: the 3D scene', () => {
           .getByTestId('scene')
           .screenshot({ path: `${SHOTS}/teach-scene-${posture.name}-${vp.name}-${theme}.png` });
         expect(errors).toEqual([]);
-        await page.close();
       });
     }
   }
@@ -136,11 +143,9 @@ describe('teacher: the 3D scene', () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm', { width: 1440, height: 900 });
     await sceneReady(page);
     for (const name of ['Along the feed', 'Top', 'Isometric']) {
-      await page.getByRole('button', { name }).click();
-      await page.waitForTimeout(250);
+      await drawnAfter(page, () => page.getByRole('button', { name }).click());
       expectClear(await sceneLabels(page), name);
     }
-    await page.close();
   });
 
   it('the heights are exaggerated only when the scallop is too low to see, and only the drawing changes', async () => {
@@ -161,7 +166,6 @@ describe('teacher: the 3D scene', () => {
     await field.fill('0.5');
     await field.press('Enter');
     await expect.poll(() => page.getByTestId('scene-exaggeration').textContent()).toBe('heights at true scale');
-    await page.close();
   });
 
   it('step-through: single contact and best P_hp[i] clear of the other labels, and the trace in the legend', async () => {
@@ -174,7 +178,7 @@ describe('teacher: the 3D scene', () => {
     for (let k = 1; k < total; k++) {
       await page.getByTestId('stepper-forward').click();
       await expect.poll(() => counter.textContent()).toMatch(new RegExp(`step ${k + 1} of`));
-      await page.waitForTimeout(80);
+      await sceneIdle(page);
       const found = await sceneLabels(page);
       for (const l of found.labels) seen.add(l.text);
       expectClear(found, `step ${k + 1}`);
@@ -182,7 +186,6 @@ describe('teacher: the 3D scene', () => {
     expect([...seen]).toEqual(expect.arrayContaining(['single contact', 'best P_hp[i]']));
     expect(await expectLegendFor(page, 'step-through')).toContain('trace');
     await page.getByTestId('scene').screenshot({ path: `${SHOTS}/teach-scene-stepper.png` });
-    await page.close();
   });
 });
 
@@ -229,7 +232,6 @@ describe('teacher: the cross-feed profile', () => {
       const { svg, texts } = await profileTexts(page);
       for (const t of texts) expect(t.right <= svg.right + 1 && t.left >= svg.left - 1, t.text).toBe(true);
       await view.screenshot({ path: `${SHOTS}/teach-profile-x100-${vp.name}-${theme}.png` });
-      await page.close();
     });
   }
 
@@ -238,7 +240,6 @@ describe('teacher: the cross-feed profile', () => {
     await page.getByTestId('profile-view').locator('polyline.curve-exact').first().waitFor({ state: 'attached' });
     await expect.poll(() => page.getByTestId('profile-scale-bar-x').textContent()).toMatch(/^\d+(\.\d+)? (in|thou)$/);
     expect(await page.getByTestId('profile-scale-bar-z').textContent()).toMatch(/ (in|thou) high/);
-    await page.close();
   });
 
   it('labels keep their size on screen when zooming in and out', async () => {
@@ -255,12 +256,17 @@ describe('teacher: the cross-feed profile', () => {
     const plot = await view.locator('svg.profile-svg').boundingBox();
     if (!plot) throw new Error('no plot');
     await page.mouse.move(plot.x + plot.width / 2, plot.y + plot.height / 2);
+    const boxWidth = async () =>
+      Number(((await view.locator('svg.profile-svg').getAttribute('viewBox')) ?? '').split(' ')[2]);
+    const zoomedIn = await boxWidth();
     for (let k = 0; k < 8; k++) await page.mouse.wheel(0, 200);
-    await page.waitForTimeout(100);
+    // The wheel zoomed out past the two clicks' zoom (the view is wider than before it), then the
+    // drawing was laid out again.
+    await expect.poll(boxWidth).toBeGreaterThan(zoomedIn * 4);
+    await animationFrames(page, 2);
     expect(Math.abs((await size()) - before), 'zoomed out with the wheel').toBeLessThan(1);
     await page.getByTestId('profile-reset').click();
     expect(Math.abs((await size()) - before)).toBeLessThan(1);
-    await page.close();
   });
 
   for (const c of [
@@ -294,7 +300,6 @@ describe('teacher: the cross-feed profile', () => {
         expect(b.top >= 0 && b.bottom <= vh, `${b.text} below the frame`).toBe(true);
       }
       await page.screenshot({ path: `${SHOTS}/teach-profile-legend-${c.name}.png` });
-      await page.close();
     });
   }
 });
@@ -304,7 +309,7 @@ describe('teacher: the wide layout', () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile', { width: 1440, height: 900 });
     await sceneReady(page);
     await page.getByTestId('teaching').scrollIntoViewIfNeeded();
-    await page.waitForTimeout(200);
+    await animationFrames(page, 2);
     const scene = await page.getByTestId('scene').boundingBox();
     const view = await page.locator('section.view').boundingBox();
     const teaching = await page.getByTestId('teaching').boundingBox();
@@ -317,7 +322,6 @@ describe('teacher: the wide layout', () => {
     expect(scene.height).toBeGreaterThan(0.6 * 900);
     expect(scene.y + view.height).toBeGreaterThan(0.9 * 900);
     await page.screenshot({ path: `${SHOTS}/teach-wide-layout.png` });
-    await page.close();
   });
 
   for (const vp of [
@@ -333,7 +337,6 @@ describe('teacher: the wide layout', () => {
         client: document.documentElement.clientWidth,
       }));
       expect(scroll).toBeLessThanOrEqual(client);
-      await page.close();
     });
   }
 });

@@ -7,7 +7,20 @@
 import { readdirSync, readFileSync } from 'node:fs';
 import type { Page, Worker } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { namedWorker, paintedFraction, SHOTS, siteDir, useSite } from './harness';
+import { compareForward, forwardInput } from '../../src/core/index';
+import {
+  frames,
+  namedWorker,
+  paintedFraction,
+  replies,
+  SHOTS,
+  SOLVER,
+  sceneIdle,
+  siteDir,
+  useSite,
+  VIEWS_WORKER,
+  workerIdle,
+} from './harness';
 
 const site = useSite('docs/trust');
 const open = site.open;
@@ -15,8 +28,13 @@ const open = site.open;
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
 const DASH = '\u2014';
 
-type Probe = { __pathInterval: { frames(): number } };
-const frames = (page: Page) => page.evaluate(() => (window as unknown as Probe).__pathInterval.frames());
+/** Waits until the results and the scene answer the inputs on screen and the scene has drawn them. */
+async function currentScene(page: Page): Promise<void> {
+  await workerIdle(page, SOLVER);
+  await expect.poll(() => page.locator('section.results').getAttribute('class')).not.toMatch(/stale/);
+  await expect.poll(() => page.getByTestId('scene').getAttribute('class')).not.toMatch(/stale/);
+  await sceneIdle(page);
+}
 
 /** Every number shown in the results: headline, details and every table cell. */
 async function resultNumbers(page: Page): Promise<string[]> {
@@ -27,27 +45,82 @@ async function resultNumbers(page: Page): Promise<string[]> {
   );
 }
 
-/** Keeps a worker busy for `ms` (not awaited: the worker answers nothing meanwhile). */
-function block(w: Worker, ms: number): void {
+/**
+ * Keeps a worker of the page busy for `ms` (it answers nothing meanwhile). Resolves once the busy
+ * loop runs (it says so on a BroadcastChannel, which needs no turn of the worker's event loop), so
+ * any message the page sends the worker afterwards waits for the loop's end.
+ */
+async function block(page: Page, w: Worker, ms: number): Promise<void> {
+  await page.evaluate(() => {
+    const channel = new BroadcastChannel('e2e-block');
+    (window as unknown as { __busy: Promise<void> }).__busy = new Promise<void>((resolve) => {
+      channel.onmessage = () => {
+        channel.close();
+        resolve();
+      };
+    });
+  });
   void w
     .evaluate((t) => {
+      new BroadcastChannel('e2e-block').postMessage('busy');
       const end = Date.now() + t;
       while (Date.now() < end);
     }, ms)
     .catch(() => undefined);
+  await page.evaluate(() => (window as unknown as { __busy: Promise<void> }).__busy);
 }
 
-/** For 2 s, every 100 ms: no number anywhere in the results. */
-async function neverANumber(page: Page): Promise<void> {
-  for (let i = 0; i < 20; i++) {
-    expect(await resultNumbers(page)).toEqual([]);
-    await page.waitForTimeout(100);
-  }
+/**
+ * Records, from now on, each state of the results with the value in the h field at that moment:
+ * the results are read after every change to them or to the field (a MutationObserver runs
+ * before the browser can paint the change), so a number shown for a single frame is caught.
+ */
+async function recordNumbers(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const w = window as unknown as { __shown: Array<{ h: string; numbers: string[] }> };
+    w.__shown = [];
+    const field = document.querySelector('[data-testid="input-h"]') as HTMLInputElement;
+    const read = () =>
+      w.__shown.push({
+        h: field.value,
+        numbers: [...document.querySelectorAll('.results output, .results .procedures td')]
+          .map((e) => e.textContent ?? '')
+          .filter((t) => /\d/.test(t)),
+      });
+    new MutationObserver(read).observe(document.querySelector('section.results') as HTMLElement, {
+      childList: true,
+      characterData: true,
+      subtree: true,
+      attributes: true,
+    });
+    // Typing sets the field's value property (no attribute): read at each input event too.
+    field.addEventListener('input', () => queueMicrotask(read));
+  });
+}
+
+/**
+ * While the h field held `invalid`, no number was ever shown in the results, from the start of
+ * the recording until every request the results' worker had was answered (the late replies have
+ * come and were dropped); and none now.
+ */
+async function neverANumber(page: Page, invalid: string): Promise<void> {
+  await workerIdle(page, SOLVER);
+  const shown = await page.evaluate(
+    () => (window as unknown as { __shown: Array<{ h: string; numbers: string[] }> }).__shown,
+  );
+  const whileInvalid = shown.filter((s) => s.h === invalid);
+  expect(whileInvalid.length, 'the recording saw the invalid input').toBeGreaterThan(0);
+  expect(whileInvalid.flatMap((s) => s.numbers)).toEqual([]);
+  expect(await page.getByTestId('input-h').inputValue()).toBe(invalid);
+  expect(await resultNumbers(page)).toEqual([]);
 }
 
 describe('numbers answer the inputs on screen', () => {
   it('valid then invalid input in one task never shows a number afterwards (poll 2 s)', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await workerIdle(page, SOLVER);
+    const answered = await replies(page, SOLVER);
+    await recordNumbers(page);
     await page.evaluate(() => {
       const h = document.querySelector<HTMLInputElement>('[data-testid="input-h"]') as HTMLInputElement;
       h.value = '0.06';
@@ -56,19 +129,26 @@ describe('numbers answer the inputs on screen', () => {
       h.dispatchEvent(new Event('input', { bubbles: true }));
     });
     expect(await text(page, 'result-exact-interval')).toBe(DASH);
-    await neverANumber(page);
-    expect(await page.getByTestId('error-h').textContent()).toMatch(/must be a number \(got "abc"\)/);
-    await page.close();
+    // The typed error is shown after a pause (typing.ts); the reply to 0.06 has come and was dropped.
+    await expect.poll(() => page.getByTestId('error-h').textContent()).toMatch(/must be a number \(got "abc"\)/);
+    await neverANumber(page, 'abc');
+    expect(await replies(page, SOLVER)).toBe(answered + 1);
   });
 
   it('with a busy solver, the late reply to a valid input does not overwrite the dashes of the invalid one', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    block(await namedWorker(page, 'path-interval-solver'), 1000);
+    await workerIdle(page, SOLVER);
+    const answered = await replies(page, SOLVER);
+    await recordNumbers(page);
+    await block(page, await namedWorker(page, SOLVER), 1000);
     await page.getByTestId('input-h').fill('0.06');
-    await page.waitForTimeout(50);
     await page.getByTestId('input-h').fill('x');
-    await neverANumber(page);
+    expect(await replies(page, SOLVER), 'no reply before the invalid input').toBe(answered);
+    await neverANumber(page, 'x');
+    // The valid input's reply came (late, after the block) and was dropped.
+    expect(await replies(page, SOLVER)).toBeGreaterThan(answered);
     // A burst of events ending on an invalid value: the same.
+    await recordNumbers(page);
     await page.evaluate(() => {
       const h = document.querySelector<HTMLInputElement>('[data-testid="input-h"]') as HTMLInputElement;
       for (let i = 0; i < 1000; i++) {
@@ -76,8 +156,7 @@ describe('numbers answer the inputs on screen', () => {
         h.dispatchEvent(new Event('input', { bubbles: true }));
       }
     });
-    await neverANumber(page);
-    await page.close();
+    await neverANumber(page, 'x');
   });
 
   it('an invalid field leaves no number in any result cell, and marks the scene and the views stale', async () => {
@@ -94,7 +173,6 @@ describe('numbers answer the inputs on screen', () => {
     expect(await page.getByTestId('views-stale').textContent()).toMatch(/Out of date: the inputs are invalid/);
     expect(await page.getByTestId('table-notes').textContent()).toBe('');
     await page.screenshot({ path: `${SHOTS}/trust-invalid.png` });
-    await page.close();
   });
 
   it('after the solver gives up (3 restarts) the last result stays marked stale and the page says so', async () => {
@@ -109,17 +187,23 @@ describe('numbers answer the inputs on screen', () => {
     await page.goto(`${site.url()}?R=3&Rcr=1&rho=5&h=0.05&unit=mm`);
     await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
     await expect.poll(() => fetches).toBe(2);
-    block(await namedWorker(page, 'path-interval-solver'), 60_000);
+    // The instrumented build's watchdog, shortened from 3 s for this page's solver (workers.ts).
+    await page.evaluate(() => {
+      (window as unknown as { __pathIntervalSolverWatchdogMs: number }).__pathIntervalSolverWatchdogMs = 250;
+    });
+    await block(page, await namedWorker(page, SOLVER), 60_000);
     await page.getByTestId('input-h').fill('0.1');
     await expect
-      .poll(() => page.getByTestId('notice').textContent(), { timeout: 20_000, interval: 500 })
+      .poll(() => page.getByTestId('notice').textContent(), { timeout: 20_000 })
       .toMatch(/stopped after 3 restarts/);
+    // Three workers started after the stuck one, none after the give-up.
+    expect(fetches).toBe(5);
     expect(await page.locator('section.results').getAttribute('class')).toMatch(/stale/);
     expect(await page.getByTestId('results-status').textContent()).toMatch(/Out of date: the solver gave up/);
     expect(await page.getByTestId('scene').getAttribute('class')).toMatch(/stale/);
     await page.screenshot({ path: `${SHOTS}/trust-gave-up.png` });
     await page.close();
-  }, 40_000);
+  });
 
   it("a views' worker that dies is restarted and the views' request repeated: the views come back current with no input", async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
@@ -127,9 +211,10 @@ describe('numbers answer the inputs on screen', () => {
     await view.locator('polygon.scallop').waitFor();
     await expect.poll(() => page.getByTestId('teaching').getAttribute('class')).not.toMatch(/stale/);
     // The test kills the views' worker itself (the page has no hook for it), then changes h once.
-    const views = await namedWorker(page, 'path-interval-views');
+    const views = await namedWorker(page, VIEWS_WORKER);
+    const closed = new Promise((resolve) => views.once('close', resolve));
     void views.evaluate(() => (globalThis as unknown as { close(): void }).close()).catch(() => undefined);
-    await page.waitForTimeout(200);
+    await closed;
     await page.getByTestId('input-h').fill('0.1');
     // No further input: the restarted worker answers the repeated request and the views follow.
     await expect
@@ -139,7 +224,6 @@ describe('numbers answer the inputs on screen', () => {
       .poll(() => page.getByTestId('teaching').getAttribute('class'), { timeout: 10_000 })
       .not.toMatch(/stale/);
     await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain('L/2 = 1.8921');
-    await page.close();
   });
 });
 
@@ -159,38 +243,45 @@ describe('the 3D scene keeps its contract', () => {
     for (let i = 1; i <= 20; i++) await settle((3 + 0.1 * i).toFixed(2));
     expect(await count()).toBe(before);
     expect(await page.locator('.scene-label.label-axis').count()).toBe(3);
-    await page.close();
   });
 
   it('draws again after a WebGL context loss and restore, with no input', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    await expect.poll(() => frames(page)).toBeGreaterThan(0);
-    await page.waitForTimeout(500);
+    await sceneIdle(page);
     const before = await frames(page);
     await page.evaluate(async () => {
       const canvas = document.querySelector('[data-testid="scene-canvas"]') as HTMLCanvasElement;
       const lose = canvas.getContext('webgl2')?.getExtension('WEBGL_lose_context');
-      lose?.loseContext();
-      await new Promise((r) => setTimeout(r, 300));
-      lose?.restoreContext();
+      if (!lose) throw new Error('no WEBGL_lose_context');
+      const lost = new Promise((r) => canvas.addEventListener('webglcontextlost', r, { once: true }));
+      lose.loseContext();
+      await lost;
+      // Two animation frames without a context before it comes back.
+      for (let i = 0; i < 2; i++) await new Promise((r) => requestAnimationFrame(r));
+      lose.restoreContext();
     });
     await expect.poll(() => frames(page)).toBeGreaterThan(before);
     await expect.poll(() => paintedFraction(page)).toBeGreaterThan(0.05);
-    await page.close();
   });
 
   it('refits the camera when R changes: a bigger tool is not drawn bigger on screen', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    await page.waitForTimeout(300);
+    await currentScene(page);
     const small = await paintedFraction(page);
     await page.getByTestId('input-R').fill('12');
     await page.getByTestId('input-Rcr').fill('4');
     await expect.poll(() => new URL(page.url()).searchParams.get('Rcr')).toBe('4');
-    await page.waitForTimeout(300);
+    await currentScene(page);
+    // The scene answers R = 12: the results beside it read the core's L/2 for it.
+    const big4 = forwardInput(
+      { toolRadiusMm: 12, cornerRadiusMm: 4, leadAngleDeg: 5, tiltAngleDeg: 0 },
+      'one-way',
+      0.05,
+    );
+    expect(await text(page, 'result-exact-half')).toBe(compareForward(big4).exact.halfIntervalMm.toFixed(4));
     const big = await paintedFraction(page);
     // Same shape, 4x the size: refitted, it covers about the same part of the view.
     expect(Math.abs(big - small)).toBeLessThan(0.25 * small);
-    await page.close();
   });
 });
 
@@ -229,7 +320,6 @@ describe('units and digits in every view', () => {
         expect(await p.getByTestId('stepper-caption').textContent()).toMatch(/Rcr = 0\.03000 in\./);
       }
       if (view === 'formulas') expect(content).toMatch(/Lengths in in, angles in degrees/);
-      await p.close();
     }
     // The paper's tables stay in the paper's mm, and say so.
     const t = (await open(`${q}&view=tables`)).page;
@@ -237,8 +327,6 @@ describe('units and digits in every view', () => {
     expect(await t.getByTestId('paper-tables').textContent()).toMatch(
       /in mm as the paper prints them \(in either unit\)/,
     );
-    await t.close();
-    await page.close();
   });
 
   it('slider arrow keys step in the user unit: R = 0.25 in becomes 0.251 in', async () => {
@@ -246,7 +334,6 @@ describe('units and digits in every view', () => {
     await page.getByTestId('slider-R').focus();
     await page.keyboard.press('ArrowRight');
     await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('0.251');
-    await page.close();
   });
 
   it('a micro tool shows significant digits, in the results and the views, never 0.0000', async () => {
@@ -260,7 +347,6 @@ describe('units and digits in every view', () => {
     await expect
       .poll(() => page.getByTestId('profile-view').locator('text.dim-text').allTextContents())
       .toContain('L/2 = 0.00004471');
-    await page.close();
     // The other views: the same significant digits, and no length rounded to 0.0000.
     const ZERO = /(?<![\d.])0\.0000(?!\d)/;
     const expected = { chart: 'Exact (3D) 0.00008942', stepper: 'L/2 = 0.00004471 mm', formulas: 'L/2=0.00004471' };
@@ -272,7 +358,6 @@ describe('units and digits in every view', () => {
       }
       await expect.poll(() => p.locator(`#panel-${view}`).textContent()).toContain(expected[view]);
       expect((await p.locator(`#panel-${view}`).textContent()) ?? '', view).not.toMatch(ZERO);
-      await p.close();
     }
   }, 60_000);
 });
@@ -297,6 +382,5 @@ describe('the shipped site', () => {
     expect(t).toMatch(/search range can stop just before the true maximum/);
     expect(t).toMatch(/1\.879 mm .* 1\.892 mm/);
     expect(await page.getByTestId('paper-tables').textContent()).not.toMatch(/shared\/|notes\/|\.md\b/);
-    await page.close();
   });
 });

@@ -58,7 +58,6 @@ describe('teaching views in headless Chromium', () => {
     await page.getByTestId('profile-exaggeration').selectOption('1');
     await expect.poll(() => page.getByTestId('profile-scale').textContent()).toBe('true scale');
     expect(errors).toEqual([]);
-    await page.close();
   });
 
   it('chart: L against rho, the signed errors and L against tilt, with the values at the current posture from the solver', async () => {
@@ -93,7 +92,6 @@ describe('teaching views in headless Chromium', () => {
     await page.getByTestId('chart-rho-axis').selectOption('linear');
     await expect.poll(markerAt).toBeLessThan(0.2);
     await page.screenshot({ path: `${SHOTS}/view-chart.png` });
-    await page.close();
   });
 
   it('tables: printed and recomputed values of Tables 2-5, the 3D deviations highlighted, a click loads a condition', async () => {
@@ -116,7 +114,6 @@ describe('teaching views in headless Chromium', () => {
     expect(await page.getByTestId('input-rho').inputValue()).toBe('10');
     expect(await page.getByTestId('input-h').inputValue()).toBe('0.05');
     await expect.poll(() => page.getByTestId('result-exact-half').textContent()).toBe('1.5580'); // notes' exact column: 1.558019
-    await page.close();
   });
 
   it('stepper: steps through the trace in the scene and reaches the converged P_hp', async () => {
@@ -147,7 +144,6 @@ describe('teaching views in headless Chromium', () => {
       .poll(() => page.getByTestId('stepper-counter').textContent(), { timeout: 5000 })
       .toMatch(/^step [3-9]/);
     await page.getByTestId('stepper-play').click();
-    await page.close();
   });
 
   it('formulas: typeset equations with the current numbers substituted', async () => {
@@ -163,7 +159,6 @@ describe('teaching views in headless Chromium', () => {
     expect(await formulas.textContent()).toMatch(/osculating circle/i);
     expect(await formulas.textContent()).not.toMatch(/NaN|\{\{|\\/);
     await page.screenshot({ path: `${SHOTS}/view-formulas.png`, fullPage: true });
-    await page.close();
   });
 
   it('formulas in inverse mode give each procedure its L/2 at the solved h, not the height', async () => {
@@ -180,7 +175,6 @@ describe('teaching views in headless Chromium', () => {
     expect(
       await page.getByTestId('formulas').locator('section[data-procedure="exact"] math').last().textContent(),
     ).toMatch(/=1\.5$/);
-    await page.close();
   });
 
   it('hovering or selecting a procedure highlights it in the profile and the results table', async () => {
@@ -196,7 +190,6 @@ describe('teaching views in headless Chromium', () => {
     await expect.poll(() => page.locator('polyline.curve-bedi').first().getAttribute('class')).toMatch(/dimmed/);
     expect(await page.locator('polyline.curve-redonnet').first().getAttribute('class')).not.toMatch(/dimmed/);
     expect(await page.locator('.procedures tr[data-procedure="redonnet"]').getAttribute('class')).toMatch(/selected/);
-    await page.close();
   });
 
   it('?view=profile&embed=1 shows just that view, without horizontal scrolling at 480x360', async () => {
@@ -210,6 +203,5 @@ describe('teaching views in headless Chromium', () => {
     ]);
     expect(scroll).toBeLessThanOrEqual(client as number);
     await page.screenshot({ path: `${SHOTS}/embed-profile.png` });
-    await page.close();
   });
 });
