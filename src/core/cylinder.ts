@@ -25,20 +25,29 @@
  * A flank's width at radius r is the maximum over y of y + sqrt(Rcr^2 - (B(y) - r)^2), found by a scan
  * and golden-section search to the last bits. The next pass is that profile translated by L.
  *
- * The shank (the cylinder of radius R above the corner) is checked exactly for axis = feed (radially,
- * where its silhouette leaves the profile); for axis = cross the plane's shank heights are used.
+ * Walls. Along the feed on a convex cylinder a flank's polar angle peaks where its tangent passes
+ * through the axis, below the plane's widest point: beyond, a pass reaches no farther (a wall). On a
+ * concave one the wall is where the radial height stops growing, at most the plane's widest point.
+ * Across the feed it is the end of the revolved profile (the disk's widest chord). Without lead the
+ * ring projects onto a segment (a point for a ball end) and whole arcs of the profile hang on one
+ * ring angle; those flanks are two corner balls joined by the flat bottom's edge (Stadium), in
+ * closed form.
+ *
+ * The shank (the cylinder of radius R above the corner): along the feed, radially, where its
+ * silhouette leaves the plane profile; across it, where the revolved profile's nearest (concave:
+ * farthest) point moves from the corner onto the shank (crossShankHeights).
  *
  * Gouging (concave). The tool end must stay inside the cylinder except at the contact: every ring
  * point e (relative to the contact, seen along the feed for axis = feed, along the axis for
  * axis = cross) needs |Rs| >= (E^2 + E_z^2 - Rcr^2) / (2 (E_z - Rcr)), E its horizontal offset. The
- * smallest admissible radius is the maximum of that over the ring.
+ * head's smallest admissible radius is the maximum of that over the ring; the shank must not cross
+ * the wall up to the axis height (shankMinConcaveRadiusMm); the larger of the two is the limit.
  */
 import { type Placement, placeTool } from './placement';
 import {
   evalSection,
   type Flank,
   type FlankLimits,
-  flankLimits,
   flankSign,
   newSection,
   type PostureShape,
@@ -261,33 +270,182 @@ function radialHeight(s: PostureShape, sign: number, delta: number, rs: number):
   return rs > 0 ? num / (d + rs) : -num / (d - rs);
 }
 
-/** Radial limits of one flank on a cylinder with the axis along the feed (mm): wall and shank. */
+/** Radial height (mm) of a point (y, z) relative to the contact: `d - Rs` convex, `|Rs| - d` concave. */
+function radialHeightOf(y: number, z: number, rs: number): number {
+  const d = Math.sqrt(y * y + (z + rs) * (z + rs));
+  const num = y * y + z * (z + 2 * rs);
+  return rs > 0 ? num / (d + rs) : -num / (d - rs);
+}
+
+/**
+ * The flank of a profile whose ring projects onto a segment or a point (b = 0: no lead; or a ball
+ * end), in the flank's frame (y out from the contact, z up): two balls of radius Rcr around the
+ * ring points S and E joined by their common tangent, whose normal makes the angle `theta` with
+ * straight down. The flank runs around S from normal angle 0 to theta, along the tangent, then
+ * around E up to pi/2 (the plane's widest point). The section parametrisation of posture.ts
+ * collapses here (a whole arc hangs on one ring angle), so these flanks are handled in closed form.
+ */
+interface Stadium {
+  /** Ring points (ball centres) S and E relative to the contact, mm. */
+  readonly sy: number;
+  readonly sz: number;
+  readonly ey: number;
+  readonly ez: number;
+  /** Normal angle of the tangent from S to E (radians from straight down); pi/2 when there is one ball. */
+  readonly theta: number;
+  /** Normal angle at which the shank's silhouette leaves ball S (the side the tool leans to), or null. */
+  readonly shankTheta: number | null;
+}
+
+/** The flank `sign` as a stadium when the profile is degenerate (b = 0 or a ball end), else null. */
+function stadiumOf(s: PostureShape, sign: number): Stadium | null {
+  const rcr = s.rcr;
+  const lean = sign * s.sinPhi > 0;
+  // The shank's silhouette leaves where the profile's normal is (cos phi, -sin phi): pi/2 - |phi|.
+  const shankTheta = lean ? Math.PI / 2 - Math.abs(s.phi) : null;
+  if (s.a === 0) return { sy: 0, sz: rcr, ey: 0, ez: rcr, theta: Math.PI / 2, shankTheta };
+  if (s.b !== 0) return null;
+  // A flat bottom lying on the plane: the contact is its centre, the flank its flat half then the rim's ball.
+  if (s.flatOnPlane) return { sy: 0, sz: rcr, ey: s.a, ez: rcr, theta: 0, shankTheta: null };
+  // No lead, with tilt: the ring is the segment from the contact's ring point (t0) to the opposite one
+  // (evalSection at delta = pi: dy = 2 a cos phi, dz = 2 D0), which rises away from the lean.
+  if (lean) return { sy: 0, sz: rcr, ey: 0, ez: rcr, theta: Math.PI / 2, shankTheta };
+  return { sy: 0, sz: rcr, ey: 2 * s.a * s.cosPhi, ez: 2 * s.d0 + rcr, theta: Math.abs(s.phi), shankTheta: null };
+}
+
+/**
+ * Normal angle (radians) on a ball around (ey, ez) at which its tangent passes through the axis of a
+ * convex cylinder (the ball's farthest polar angle): `cos(theta) (ez + Rs) - sin(theta) ey = Rcr`.
+ */
+function tangentThroughAxisRad(ey: number, ez: number, rcr: number, rs: number): number {
+  const qz = ez + rs;
+  const d = Math.sqrt(ey * ey + qz * qz);
+  return Math.PI / 2 - Math.asin(Math.min(1, rcr / d)) - Math.atan2(ey, qz);
+}
+
+/** Radial limits of a stadium flank (see Stadium): its wall's height and the shank's, mm. */
+function stadiumLimit(st: Stadium, rcr: number, rs: number): { topMm: number; shankMm: number | null } {
+  const onBall = (cy: number, cz: number, theta: number) =>
+    radialHeightOf(cy + rcr * Math.sin(theta), cz - rcr * Math.cos(theta), rs);
+  let topMm: number;
+  let topOnFirstBall: number | null = null;
+  if (rs > 0) {
+    // Convex: the flank's polar angle peaks where its tangent passes through the axis; beyond, the
+    // pass reaches no farther (a wall). The tangent's signed distance from the axis,
+    // cos(theta) (z + Rs) - sin(theta) y, falls along the flank (constant along the straight part).
+    const c = Math.cos(st.theta);
+    const sn = Math.sin(st.theta);
+    const along = c * (st.sz + rs) - sn * st.sy - rcr;
+    if (along <= 0 || st.theta >= Math.PI / 2) {
+      const theta = Math.max(0, Math.min(st.theta, tangentThroughAxisRad(st.sy, st.sz, rcr, rs)));
+      topOnFirstBall = theta;
+      topMm = onBall(st.sy, st.sz, theta);
+    } else {
+      const theta = Math.max(st.theta, Math.min(Math.PI / 2, tangentThroughAxisRad(st.ey, st.ez, rcr, rs)));
+      topMm = onBall(st.ey, st.ez, theta);
+    }
+  } else if (st.theta >= Math.PI / 2) {
+    // Concave, one ball: the radial height grows up to the plane's widest point.
+    topOnFirstBall = Math.PI / 2;
+    topMm = onBall(st.sy, st.sz, Math.PI / 2);
+  } else {
+    // Concave: the radial height grows around S, then along the tangent until its foot nearest the
+    // axis (0, -Rs), then around E up to the widest point.
+    const ny = Math.sin(st.theta);
+    const nz = -Math.cos(st.theta);
+    const py = st.sy + rcr * ny;
+    const pz = st.sz + rcr * nz + rs;
+    const dy = st.ey - st.sy;
+    const dz = st.ez - st.sz;
+    const lambda = -(py * dy + pz * dz) / (dy * dy + dz * dz);
+    topMm =
+      lambda < 1
+        ? radialHeightOf(st.sy + rcr * ny + Math.max(0, lambda) * dy, st.sz + rcr * nz + Math.max(0, lambda) * dz, rs)
+        : onBall(st.ey, st.ez, Math.PI / 2);
+  }
+  const shankMm =
+    st.shankTheta !== null && topOnFirstBall !== null && st.shankTheta < topOnFirstBall
+      ? onBall(st.sy, st.sz, st.shankTheta)
+      : null;
+  return { topMm, shankMm };
+}
+
+/**
+ * Radial height (mm) of a stadium flank at polar angle beta from the contact: where the ray from the
+ * axis at beta enters (convex) or leaves (concave) the union of the two balls and the band between.
+ */
+function stadiumHeightAtAngle(st: Stadium, rcr: number, rs: number, beta: number): number {
+  const side = rs > 0 ? 1 : -1;
+  const uy = Math.sin(beta);
+  const uz = side * Math.cos(beta);
+  let best = side > 0 ? Number.POSITIVE_INFINITY : Number.NEGATIVE_INFINITY;
+  const keep = (distance: number) => {
+    best = side > 0 ? Math.min(best, distance) : Math.max(best, distance);
+  };
+  const ball = (cy: number, cz: number) => {
+    const qz = cz + rs;
+    const along = cy * uy + qz * uz;
+    const perp = cy * uz - qz * uy;
+    const disc = (rcr - perp) * (rcr + perp);
+    if (disc >= 0) keep(along - side * Math.sqrt(disc));
+  };
+  ball(st.sy, st.sz);
+  ball(st.ey, st.ez);
+  const dy = st.ey - st.sy;
+  const dz = st.ez - st.sz;
+  if (dy !== 0 || dz !== 0) {
+    // The band's outer edge: (sy, sz) + Rcr n(theta) + lambda (dy, dz), met by the ray (0, -Rs) + s u.
+    const py = st.sy + rcr * Math.sin(st.theta);
+    const pz = st.sz - rcr * Math.cos(st.theta) + rs;
+    const det = uy * dz - uz * dy;
+    if (det !== 0) {
+      const distance = (py * dz - pz * dy) / det;
+      const lambda = (py * uz - pz * uy) / det;
+      if (lambda >= 0 && lambda <= 1) keep(distance);
+    }
+  }
+  return side * (best - Math.abs(rs));
+}
+
+/**
+ * Convex cylinder, smooth profile: the section offset (radians) where the flank's tangent passes
+ * through the axis, so that its polar angle peaks (beyond it the pass reaches no farther: a wall).
+ * The tangent's signed distance from the axis, `cos(theta) (H + Rs) - sin(theta) Y`, falls
+ * strictly along the flank (its derivative in theta is `-(sin(theta) (H + Rs) + cos(theta) Y)`),
+ * from Rs at the contact to -Y at the plane's widest point: bisection.
+ */
+function convexTop(s: PostureShape, sign: number, rs: number, plane: number): number {
+  let lo = 0;
+  let hi = plane;
+  for (let i = 0; i < 200; i++) {
+    const mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
+    const p = profilePoint(s, sign, mid);
+    if (p.ct * (p.h + rs) - p.st * p.y > 0) lo = mid;
+    else hi = mid;
+  }
+  return lo;
+}
+
+/**
+ * Radial limits of one flank on a cylinder with the axis along the feed (mm): the wall (convex: where
+ * the flank's polar angle peaks; concave: where its radial height stops growing, at most the plane's
+ * widest point) and the shank, and the section offset of the wall (smooth profiles).
+ */
 function feedFlankLimit(
   s: PostureShape,
   sign: number,
   rs: number,
 ): { topMm: number; shankMm: number | null; deltaTop: number } {
-  if (s.a === 0) {
-    // A ball end: the ring is one point and the flank is its circle (radius R), by normal angle
-    // theta: (R sin theta, R (1 - cos theta)); its top at theta = pi/2, the shank at pi/2 - |phi|.
-    const at = (theta: number) => {
-      const y = s.rcr * Math.sin(theta);
-      const half = Math.sin(theta / 2);
-      const h = 2 * s.rcr * half * half;
-      const d = Math.sqrt(y * y + (h + rs) * (h + rs));
-      const num = y * y + h * (h + 2 * rs);
-      return rs > 0 ? num / (d + rs) : -num / (d - rs);
-    };
-    const shankMm = sign * s.sinPhi > 0 ? at(Math.PI / 2 - Math.abs(s.phi)) : null;
-    return { topMm: at(Math.PI / 2), shankMm, deltaTop: 0 };
-  }
-  let top = planeTop(s, sign);
-  if (rs < 0) top = Math.min(top, concaveTop(s, sign, rs, top));
+  const st = stadiumOf(s, sign);
+  if (st !== null) return { ...stadiumLimit(st, s.rcr, rs), deltaTop: 0 };
+  const plane = planeTop(s, sign);
+  const top = rs < 0 ? Math.min(plane, concaveTop(s, sign, rs, plane)) : convexTop(s, sign, rs, plane);
   const topMm = radialHeight(s, sign, top, rs);
   // The shank: it leaves the profile at the end of the ellipse's long axis (t = pi/2), on the side
   // the tool leans to (posture.ts); radially, its height is that point's.
   let shankMm: number | null = null;
-  if (sign * s.sinPhi > 0 && s.a > 0) {
+  if (sign * s.sinPhi > 0) {
     const tShank = Math.PI / 2 - Math.atan2(sign * s.sinT0, s.cosT0);
     if (tShank >= 0 && tShank < top) shankMm = radialHeight(s, sign, tShank, rs);
   }
@@ -532,16 +690,77 @@ function crossHeightAtWidth(ch: Chords, sign: number, rcr: number, w: number, co
   return -top;
 }
 
+/**
+ * Radial heights (mm) at which the shank starts to shape each flank of the revolved profile (axis
+ * across the feed), or null on a side where it does not. A pass turns the tool about the axis, so
+ * the profile at y is the point of the tool's slice at y nearest the axis (convex; farthest,
+ * concave). The shank starts to cut where that point moves from the end onto the shank, across the
+ * equator (the circle of radius R at the corner's top, `O + R r(t)`), where the two surfaces share
+ * the normal r(t). There the slice's boundary normal, (r_x, r_z), points at the axis (convex: the
+ * nearest point of a convex slice; concave: away from it, the farthest):
+ *
+ *   F(t) = P_x r_z - (P_z + Rs) r_x = 0,   side (-(P_x r_x + (P_z + Rs) r_z)) > 0,
+ *
+ * P relative to the contact, side = sign(Rs). Roots by a scan of the ring and bisection; on each side
+ * the one nearest the contact. At the equator's points across the axis (r = +-Y: the widest point
+ * of an untilted tool, where the shank joins without cutting) the slice's normal vanishes; those
+ * are left out.
+ */
+function crossShankHeights(p: Placement, rs: number): { right: number | null; left: number | null } {
+  const R = p.ringRadiusMm + p.cornerRadiusMm;
+  const { centre, v1, v2 } = p;
+  const side = rs > 0 ? 1 : -1;
+  const r = [0, 0, 0];
+  const P = [0, 0, 0];
+  const at = (t: number) => {
+    const sn = Math.sin(t);
+    const c = Math.cos(t);
+    for (let k = 0; k < 3; k++) {
+      r[k] = sn * (v1[k] as number) + c * (v2[k] as number);
+      P[k] = (centre[k] as number) + R * (r[k] as number);
+    }
+    return (P[0] as number) * (r[2] as number) - ((P[2] as number) + rs) * (r[0] as number);
+  };
+  let right: { y: number; h: number } | null = null;
+  let left: { y: number; h: number } | null = null;
+  const n = 64;
+  let tPrev = 0;
+  let fPrev = at(0);
+  for (let i = 1; i <= n; i++) {
+    const t = (2 * Math.PI * i) / n;
+    const f = at(t);
+    if (fPrev <= 0 !== f <= 0) {
+      let lo = tPrev;
+      let hi = t;
+      for (let k = 0; k < 200; k++) {
+        const mid = 0.5 * (lo + hi);
+        if (!(mid > lo && mid < hi)) break;
+        if (at(mid) <= 0 === fPrev <= 0) lo = mid;
+        else hi = mid;
+      }
+      at(0.5 * (lo + hi));
+      const [x, y, z] = P as [number, number, number];
+      const rx = r[0] as number;
+      const rz = r[2] as number;
+      if (Math.sqrt(rx * rx + rz * rz) > 1e-9 && side * -(x * rx + (z + rs) * rz) > 0) {
+        const h = (side * (x * x + z * (z + 2 * rs))) / (Math.sqrt(x * x + (z + rs) * (z + rs)) + Math.abs(rs));
+        if (y > 0 && (right === null || y < right.y)) right = { y, h };
+        if (y < 0 && (left === null || y > left.y)) left = { y, h };
+      }
+    }
+    tPrev = t;
+    fPrev = f;
+  }
+  return { right: right?.h ?? null, left: left?.h ?? null };
+}
+
 // ---------------------------------------------------------------------------------------------
 // Public API
 
 /** A cylinder prepared for one tool and posture. */
 export interface CylinderSolver {
   readonly surface: CylinderSurface;
-  /**
-   * Radial height limits: each flank's wall, and the shank where it cuts (exact for axis = feed;
-   * for axis = cross the plane's shank heights stand in, see the module comment), mm.
-   */
+  /** Radial height limits: each flank's wall, and the shank where it starts to cut (module comment), mm. */
   limits(): FlankLimits;
   /**
    * How far a flank reaches at radial height h: the polar angle about the axis (axis = feed,
@@ -562,6 +781,8 @@ class FeedSolver implements CylinderSolver {
   private readonly tops: [number | null, number | null] = [null, null];
   private readonly s: PostureShape;
   private readonly rs: number;
+  /** Each flank as a stadium when the profile is degenerate (no lead, or a ball end), else null. */
+  private readonly stadiums: [Stadium | null, Stadium | null];
 
   constructor(
     readonly surface: CylinderSurface,
@@ -569,6 +790,7 @@ class FeedSolver implements CylinderSolver {
   ) {
     this.s = p.shape;
     this.rs = surface.radiusMm;
+    this.stadiums = [stadiumOf(p.shape, 1), stadiumOf(p.shape, -1)];
   }
 
   limits(): FlankLimits {
@@ -580,12 +802,16 @@ class FeedSolver implements CylinderSolver {
     return this.cached;
   }
 
-  /** The concave radial top of a flank (a search), kept once found. */
-  private concaveTop(sign: number, plane: number): number {
+  /**
+   * The section offset of a flank's wall (a search), kept once found: on a concave cylinder where
+   * its radial height stops growing (at most the plane's widest point), on a convex one where its
+   * polar angle peaks.
+   */
+  private top(sign: number, plane: number): number {
     const index = sign > 0 ? 0 : 1;
     const known = this.tops[index];
     if (known !== null) return known;
-    const top = concaveTop(this.s, sign, this.rs, plane);
+    const top = this.rs < 0 ? concaveTop(this.s, sign, this.rs, plane) : convexTop(this.s, sign, this.rs, plane);
     this.tops[index] = top;
     return top;
   }
@@ -601,7 +827,7 @@ class FeedSolver implements CylinderSolver {
     if (this.rs > 0) return plane;
     const at = profilePoint(s, sign, plane);
     if (at.y * at.y + (at.h - h) * (at.h + h + 2 * this.rs) < 0) return plane;
-    return this.concaveTop(sign, plane);
+    return this.top(sign, plane);
   }
 
   reach(flank: Flank, h: number): number {
@@ -611,9 +837,9 @@ class FeedSolver implements CylinderSolver {
   heightAt(flank: Flank, beta: number): number {
     const sign = flankSign(flank);
     const s = this.s;
-    const plane = s.a === 0 ? 0 : planeTop(s, sign);
-    const top = this.rs < 0 && s.a > 0 ? this.concaveTop(sign, plane) : plane;
-    return feedHeightAtAngle(s, flank, this.rs, beta, top);
+    const stadium = this.stadiums[sign > 0 ? 0 : 1] ?? null;
+    if (stadium !== null) return stadiumHeightAtAngle(stadium, s.rcr, this.rs, beta);
+    return feedHeightAtAngle(s, flank, this.rs, beta, this.top(sign, planeTop(s, sign)));
   }
 
   intervalFromReach(angle: number): number {
@@ -640,10 +866,16 @@ class CrossSolver implements CylinderSolver {
   limits(): FlankLimits {
     if (this.cached === null) {
       // The widest point of each flank: the chord at the end of the disk's Y range (one ring
-      // point). The shank across the axis: the plane's heights stand in (not modelled revolved).
-      const top = (y: number) => this.ch.height(y);
-      const plane = flankLimits(this.p.shape);
-      this.cached = limitsOf(top(this.ch.yHi), top(this.ch.yLo), plane.shankRightMm, plane.shankLeftMm);
+      // point). The shank: where the revolved profile's lowest (highest) point moves onto it.
+      const topRight = this.ch.height(this.ch.yHi);
+      const topLeft = this.ch.height(this.ch.yLo);
+      const shank = crossShankHeights(this.p, this.surface.radiusMm);
+      this.cached = limitsOf(
+        topRight,
+        topLeft,
+        shank.right !== null && shank.right < topRight ? shank.right : null,
+        shank.left !== null && shank.left < topLeft ? shank.left : null,
+      );
     }
     return this.cached;
   }
@@ -672,7 +904,7 @@ export function cylinderSolver(tool: ToolInput, surface: CylinderSurface): Cylin
 }
 
 /**
- * The smallest concave radius |Rs| (mm) the tool end fits in without gouging: the maximum over the
+ * The smallest concave radius |Rs| (mm) the tool end (its head) fits in without gouging: the maximum over the
  * ring of `(E^2 + E_z^2 - Rcr^2) / (2 (E_z - Rcr))`, written `E^2 / (2 rise) + (rise + 2 Rcr) / 2`
  * with `rise = E_z - Rcr` the ring point's height above the contact's ring point (Eq. 1
  * generalised, `2 D0 sin^2(delta/2)`) and E its horizontal offset (the chord: seen along the feed
@@ -681,8 +913,7 @@ export function cylinderSolver(tool: ToolInput, surface: CylinderSurface): Cylin
  * every concave cylinder (a ring point other than the contact at the contact's height: a flat
  * bottom without lead across the axis). Sampled over the ring, then refined by golden-section search.
  */
-export function minConcaveRadiusMm(tool: ToolInput, axis: SurfaceAxis): number {
-  const p = placeTool(tool);
+function headMinConcaveRadiusMm(p: Placement, axis: SurfaceAxis): number {
   const s = p.shape;
   const rb = p.ringRadiusMm;
   const rcr = p.cornerRadiusMm;
@@ -721,6 +952,92 @@ export function minConcaveRadiusMm(tool: ToolInput, axis: SurfaceAxis): number {
   }
   // Near the contact the ratio tends to the local curvature radius: include that limit.
   return Math.max(value, ratio(0.5 * (a + b)), ratio(1e-7), ratio(2 * Math.PI - 1e-7));
+}
+
+/**
+ * The smallest concave radius |Rs| (mm) at and above which the shank stays inside the cylinder up to
+ * the height of its axis (shared/notes/posture-and-surfaces.md): 0 when it never meets the wall,
+ * Infinity when it does at any radius. Seen along the axis (along the feed for axis = feed, along Y
+ * for cross), the shank is a strip of half-width R around the projected tool axis, leaning from the
+ * normal by `k = a_w / a_z` (w the horizontal of the view); its edges start on the head at the two
+ * equator points `J = O +- R c`, c = a x view / |a x view|. An edge stays inside up to the axis
+ * height rho iff, where it reaches that height, `|J_w + k (rho - J_z)| <= rho` (the distance from the
+ * axis is convex along the edge, and its start J lies on the head, inside). Each side is a condition
+ * `m rho >= q`: with m > 0 it holds from `q / m` up; with m <= 0 and q > 0 it fails at every radius
+ * above J_z (a lean of 45 degrees or more towards the wall: the chord from the contact to the wall
+ * at the axis height leans 45 degrees). Radii up to J_z, where the edge starts above the axis
+ * height, are not needed: the head's own limit lies above them in every posture measured.
+ */
+function shankMinConcaveRadiusMm(p: Placement, axis: SurfaceAxis): number {
+  const a = p.axis;
+  const R = p.ringRadiusMm + p.cornerRadiusMm;
+  // View along X (feed): w = Y; along Y (cross): w = X. c = a x view, normalised.
+  const w = axis === 'feed' ? 1 : 0;
+  const cw = axis === 'feed' ? a[2] : -a[2];
+  const cz = axis === 'feed' ? -a[1] : a[0];
+  const cn = Math.sqrt(cw * cw + cz * cz);
+  const k = a[w] / a[2];
+  let need = 0;
+  for (const edge of [1, -1]) {
+    const jw = (p.centre[w] as number) + (edge * R * cw) / cn;
+    const jz = (p.centre[2] as number) + (edge * R * cz) / cn;
+    const w0 = jw - k * jz;
+    for (const s of [1, -1]) {
+      // s = 1: w <= rho (the wall at +w); s = -1: w >= -rho.
+      const m = 1 - s * k;
+      const q = s * w0;
+      if (m > 0) {
+        if (q / m > jz) need = Math.max(need, q / m);
+      } else if (q > 0 || m < 0) return Number.POSITIVE_INFINITY;
+    }
+  }
+  return need;
+}
+
+/** What a concave cylinder must be for a tool and posture, and why (mm, degrees). */
+export interface ConcaveFit {
+  /** Smallest radius |Rs| the head (corner and bottom) fits in; Infinity if none. */
+  readonly headMm: number;
+  /** Smallest radius from which the shank stays inside up to the axis height; 0 if any, Infinity if none. */
+  readonly shankMm: number;
+  /** The smallest admissible radius: the larger of both. */
+  readonly minRadiusMm: number;
+  /** Which of them sets it (the head on a tie). */
+  readonly limitedBy: 'head' | 'shank';
+  /**
+   * The shank's lean from the surface normal seen along the cylinder's axis, degrees (>= 0): the
+   * projected lean `atan(tan(beta) / cos(rho))` along the feed, the lead rho across it.
+   */
+  readonly shankLeanDeg: number;
+}
+
+/**
+ * Whether and from which radius a concave cylinder takes the tool (gouging by the head or the
+ * shank): see headMinConcaveRadiusMm and shankMinConcaveRadiusMm.
+ * @param tool validated tool and posture. @param axis the cylinder's axis.
+ */
+export function concaveFit(tool: ToolInput, axis: SurfaceAxis): ConcaveFit {
+  const p = placeTool(tool);
+  const headMm = headMinConcaveRadiusMm(p, axis);
+  const shankMm = shankMinConcaveRadiusMm(p, axis);
+  const a = p.axis;
+  const lean = Math.atan2(Math.abs(axis === 'feed' ? a[1] : a[0]), a[2]);
+  return {
+    headMm,
+    shankMm,
+    minRadiusMm: Math.max(headMm, shankMm),
+    limitedBy: shankMm > headMm ? 'shank' : 'head',
+    shankLeanDeg: (lean * 180) / Math.PI,
+  };
+}
+
+/**
+ * The smallest concave radius |Rs| (mm) that takes the tool in its posture without gouging: the
+ * larger of the head's and the shank's limits (concaveFit); Infinity when no radius does.
+ * @param tool validated tool and posture. @param axis the cylinder's axis.
+ */
+export function minConcaveRadiusMm(tool: ToolInput, axis: SurfaceAxis): number {
+  return concaveFit(tool, axis).minRadiusMm;
 }
 
 /**

@@ -21,7 +21,8 @@ import {
   type PostureShape,
   shapeOfTool,
 } from './posture';
-import type { ForwardInput, InverseInput, PassPattern } from './validate';
+import { stepOverFromReaches } from './stepOverRule';
+import type { ForwardInput, InverseInput } from './validate';
 
 /** The exact answer of the forward problem (scallop height to step-over), mm. */
 export interface ExactForward {
@@ -70,11 +71,6 @@ export interface ExactInverse {
   readonly left: FlankPoint;
 }
 
-/** Step-over (mm) of a pattern from the two flank widths at the scallop height. */
-export function intervalFromWidths(pattern: PassPattern, rightMm: number, leftMm: number): number {
-  return pattern === 'one-way' ? rightMm + leftMm : 2 * Math.min(rightMm, leftMm);
-}
-
 /**
  * Exact step-over L (mm) for a validated forward input: the fast path (no geometry, no
  * allocation beyond the shape). Error below 1e-9 mm over the valid domain.
@@ -86,14 +82,14 @@ export function exactIntervalMm(input: ForwardInput): number {
     const h = input.scallopHeightMm;
     const right = c.reach('right', h);
     const left = input.tiltAngleDeg === 0 ? right : c.reach('left', h);
-    return c.intervalFromReach(input.pattern === 'one-way' ? right + left : 2 * Math.min(right, left));
+    return c.intervalFromReach(stepOverFromReaches(input.pattern, right, left));
   }
   const s = shapeOfTool(input);
   if (s.flatOnPlane && s.rcr === 0) return 2 * s.a;
   const h = input.scallopHeightMm;
   const right = flankWidthMm(s, 'right', h);
   if (input.tiltAngleDeg === 0) return 2 * right;
-  return intervalFromWidths(input.pattern, right, flankWidthMm(s, 'left', h));
+  return stepOverFromReaches(input.pattern, right, flankWidthMm(s, 'left', h));
 }
 
 /**
@@ -128,7 +124,7 @@ export function exactForward(input: ForwardInput): ExactForward {
   }
   const right = flankAtHeight(s, 'right', h);
   const left = flankAtHeight(s, 'left', h);
-  const L = intervalFromWidths(input.pattern, right.widthMm, left.widthMm);
+  const L = stepOverFromReaches(input.pattern, right.widthMm, left.widthMm);
   let other: number | null = null;
   if (input.pattern === 'zigzag') {
     // The wider flank meets its mirror at L/2, lower than h (equal without tilt).
@@ -243,7 +239,7 @@ function cylinderForward(input: ForwardInput, surface: CylinderSurface): ExactFo
   const reachL = c.reach('left', h);
   const wR = c.intervalFromReach(reachR);
   const wL = c.intervalFromReach(reachL);
-  const L = intervalFromWidths(input.pattern, wR, wL);
+  const L = stepOverFromReaches(input.pattern, wR, wL);
   let other: number | null = null;
   if (input.pattern === 'zigzag') {
     const wider = reachR > reachL ? 'right' : 'left';

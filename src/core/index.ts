@@ -11,6 +11,7 @@ export * from './posture';
 export * from './procedures';
 export * from './roughness';
 export * from './simulation';
+export * from './stepOverRule';
 export * from './surfaceGeometry';
 export * from './trace';
 export * from './units';

@@ -6,9 +6,10 @@
  * the bound it broke, what was given). Messages are written from that data in one place
  * (describeInputError), in the user's unit.
  */
-import { cylinderSolver, minConcaveRadiusMm, PLANE, type Surface, type SurfaceAxis } from './cylinder';
+import { concaveFit, cylinderSolver, PLANE, type Surface, type SurfaceAxis } from './cylinder';
 import { FIELD_LABELS, FIELDS, type FieldName, isLengthField } from './input/fields';
 import { type FlankLimits, flankAtHeight, flankLimits, type PostureShape, shapeOfTool } from './posture';
+import { stepOverFromReaches } from './stepOverRule';
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from './units';
 
 /** Names of the user-facing inputs (the field registry's, input/fields.ts). */
@@ -30,6 +31,8 @@ export type InputErrorCode =
   | 'not-a-pattern'
   | 'not-an-axis'
   | 'gouging'
+  /** A concave cylinder whose wall the shank crosses below the axis height (limit: the smallest radius, or null: any). */
+  | 'shank-gouging'
   | 'corner-exceeds-radius'
   | 'flank-wall'
   | 'shank-cuts'
@@ -50,6 +53,11 @@ export interface InputErrorOf<F extends AnyFieldName> {
   readonly limit: number | null;
   /** For `flank-wall` and `shank-cuts`: the side (right is +Y, the side the tool tilts to). */
   readonly side: 'right' | 'left' | null;
+  /**
+   * For `shank-gouging`: the cylinder's axis and the shank's lean from the surface normal seen along
+   * it (degrees), which set what would help.
+   */
+  readonly shankLean?: { readonly axis: SurfaceAxis; readonly leanDeg: number };
   /** The message in mm, ready to show as it is. */
   readonly message: string;
 }
@@ -205,6 +213,20 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
         : options.radiusAsMagnitude === true
           ? `${label}: a concave cylinder must have a radius of at least ${length(Math.abs(e.limit))} for this tool and posture ${got}; a tighter one is gouged (the tool reaches below the surface away from the contact).`
           : `${label}: a concave cylinder must have a radius of at least ${length(Math.abs(e.limit))} for this tool and posture (Rs at most ${length(e.limit)}) ${got}; a tighter one is gouged (the tool reaches below the surface away from the contact).`;
+    case 'shank-gouging': {
+      const lean = formatAngleDeg(e.shankLean?.leanDeg ?? 45);
+      const help =
+        e.shankLean?.axis === 'cross'
+          ? 'Less lead would help (seen along the axis the shank leans by the lead; tilt does not matter).'
+          : 'Less tilt or lead would help.';
+      if (e.limit === null || !Number.isFinite(e.limit))
+        return `The shank of this tool crosses the wall of a concave cylinder of any radius with this axis and posture ${got}: seen along the cylinder's axis it leans ${lean} degrees from the surface normal, and at 45 degrees or more it meets the wall below the axis's height. ${help}`;
+      const radius =
+        options.radiusAsMagnitude === true
+          ? `at least ${length(Math.abs(e.limit))}`
+          : `at least ${length(Math.abs(e.limit))} (Rs at most ${length(e.limit)})`;
+      return `${label}: a concave cylinder must have a radius of ${radius} for this tool and posture ${got}; in a tighter one the shank (the tool's cylindrical side, leaning ${lean} degrees from the surface normal seen along the cylinder's axis) crosses the surface below the axis's height. ${help}`;
+    }
     case 'corner-exceeds-radius':
       return diameter
         ? `${label} must be at most D/2 = ${limit} ${got}; Rcr = D/2 is a ball end mill.`
@@ -237,8 +259,12 @@ export function inputError<F extends AnyFieldName>(
   got: string,
   limit: number | null = null,
   side: 'right' | 'left' | null = null,
+  shankLean?: InputErrorOf<F>['shankLean'],
 ): InputErrorOf<F> {
-  const data = { field, code, got, limit, side, message: '' };
+  const data =
+    shankLean === undefined
+      ? { field, code, got, limit, side, message: '' }
+      : { field, code, got, limit, side, shankLean, message: '' };
   return { ...data, message: describeInputError(data, 'mm') };
 }
 
@@ -374,12 +400,21 @@ function checkSurface(raw: RawToolInput, errors: InputError[]): Surface | null {
   return { kind: 'cylinder', radiusMm: rs, axis: axisText as SurfaceAxis };
 }
 
-/** A concave cylinder too tight for the tool and posture: the gouging error, else null. */
+/**
+ * A concave cylinder too tight for the tool and posture (concaveFit: the head, or the shank up to the
+ * axis height): the gouging error naming the smallest radius (or "any radius"), else null.
+ */
 function gouging(tool: ToolInput, surface: Surface, shown: string): InputError | null {
   if (surface.kind !== 'cylinder' || surface.radiusMm > 0) return null;
-  const min = minConcaveRadiusMm(tool, surface.axis);
+  const fit = concaveFit(tool, surface.axis);
+  const min = fit.minRadiusMm;
   if (Math.abs(surface.radiusMm) >= min) return null;
-  return inputError('surfaceRadius', 'gouging', shown, Number.isFinite(min) ? -min : null);
+  const limit = Number.isFinite(min) ? -min : null;
+  if (fit.limitedBy === 'head') return inputError('surfaceRadius', 'gouging', shown, limit);
+  return inputError('surfaceRadius', 'shank-gouging', shown, limit, null, {
+    axis: surface.axis,
+    leanDeg: fit.shankLeanDeg,
+  });
 }
 
 function toolOf(values: Collected['values']): ToolInput | null {
@@ -459,7 +494,7 @@ export function maxIntervalMm(tool: ToolInput, pattern: PassPattern, surface: Su
     const h = c.limits().limitMm;
     const right = c.reach('right', h);
     const left = c.reach('left', h);
-    return c.intervalFromReach(pattern === 'one-way' ? right + left : 2 * Math.min(right, left));
+    return c.intervalFromReach(stepOverFromReaches(pattern, right, left));
   }
   const s = shapeOfTool(tool);
   const limit = flankLimits(s).limitMm;
@@ -469,7 +504,7 @@ export function maxIntervalMm(tool: ToolInput, pattern: PassPattern, surface: Su
 function intervalAtHeight(s: PostureShape, pattern: PassPattern, h: number): number {
   const right = flankAtHeight(s, 'right', h).widthMm;
   const left = flankAtHeight(s, 'left', h).widthMm;
-  return pattern === 'one-way' ? right + left : 2 * Math.min(right, left);
+  return stepOverFromReaches(pattern, right, left);
 }
 
 /**

@@ -242,7 +242,9 @@ describe('--ra: the step-over for a target roughness', () => {
       expect(Math.abs(out.roughness.Ra - target), JSON.stringify(cli)).toBeLessThanOrEqual(1e-9);
       checked++;
     }
-    expect(checked).toBeGreaterThan(0.6 * N);
+    // Most cases are checked (48 of 80 here); the rest leave no scallop or are gouged, the shank's
+    // trough wall included since issue 17 (2 of these 80).
+    expect(checked).toBeGreaterThan(0.55 * N);
   }, 120_000);
 
   it('errors name --ra and its limit; a tool without scallop says why; --json lists the option', async () => {

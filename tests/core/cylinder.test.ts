@@ -188,7 +188,12 @@ describe('cylinders against brute-force sampling of the tool swept along or arou
         });
         if (!v.ok) throw new Error(`invalid case: ${v.errors[0]?.message}`);
         const e = exactForward(v.value);
-        const b = bruteForceCylinder(t, pattern, radius, axis, e.intervalMm, { spacingMm: R / 1000, bins: 3000 });
+        // The real tool: its shank too (valid heights lie below where it would shape the flanks).
+        const b = bruteForceCylinder(t, pattern, radius, axis, e.intervalMm, {
+          spacingMm: R / 1000,
+          bins: 3000,
+          shankLengthMm: R / 2,
+        });
         const other = e.otherCuspHeightMm ?? h;
         const rightNarrow = e.halfWidthRightMm <= e.halfWidthLeftMm;
         b.cuspHeightsMm.forEach((c, i) => {

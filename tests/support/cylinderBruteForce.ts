@@ -1,8 +1,8 @@
 /**
  * Brute-force cusp heights on a cylinder, sharing nothing with src/core/cylinder.ts: points of the
- * real tool surface (the lower outer quarter of the torus and the bottom disk, in the tool's
- * posture; placement.ts only places the tool) are swept as the passes run, and the material left
- * is read on bins of the cross-section.
+ * real tool surface (the lower outer quarter of the torus, the bottom disk and, on request, the
+ * shank, in the tool's posture; placement.ts only places the tool) are swept as the passes run,
+ * and the material left is read on bins of the cross-section.
  *
  * Axis along the feed: a pass translates along X, so a point (y, z) of the tool stays at that
  * cross-section position; the next pass is the tool turned about the axis by phi = L / |Rs|
@@ -47,7 +47,13 @@ export function bruteForceCylinder(
   radiusMm: number,
   axis: 'feed' | 'cross',
   intervalMm: number,
-  options: { readonly spacingMm: number; readonly bins: number; readonly passes?: number },
+  options: {
+    readonly spacingMm: number;
+    readonly bins: number;
+    readonly passes?: number;
+    /** Length of shank (radius R, above the corner) sampled too, mm; 0 (default) leaves it out. */
+    readonly shankLengthMm?: number;
+  },
 ): BruteForceCylinder {
   const p = placeTool(tool);
   const rs = radiusMm;
@@ -75,6 +81,16 @@ export function bruteForceCylinder(
         p.centre[0] + c * r[0] + a * p.axis[0],
         p.centre[1] + c * r[1] + a * p.axis[1],
         p.centre[2] + c * r[2] + a * p.axis[2],
+      );
+    }
+    const shankLength = options.shankLengthMm ?? 0;
+    const nU = shankLength > 0 ? Math.ceil(shankLength / ds) : 0;
+    for (let j = 1; j <= nU; j++) {
+      const u = (shankLength * j) / nU;
+      pts.push(
+        p.centre[0] + (rb + rcr) * r[0] + u * p.axis[0],
+        p.centre[1] + (rb + rcr) * r[1] + u * p.axis[1],
+        p.centre[2] + (rb + rcr) * r[2] + u * p.axis[2],
       );
     }
     const nR = Math.ceil(rb / ds);
@@ -147,4 +163,63 @@ export function bruteForceCylinder(
   }
   const width = span / bins;
   return { cuspHeightsMm: cusps, boundMm: ds + width * largestSlope(best, width) };
+}
+
+/** How far the tool reaches beyond a concave cylinder's wall, by brute force (mm). */
+export interface ConcaveOverreach {
+  /** Largest distance beyond the wall of a sampled point of the head (corner and bottom), mm; <= 0 inside. */
+  readonly headMm: number;
+  /** The same for the shank's points up to the height of the cylinder's axis, mm. */
+  readonly shankMm: number;
+}
+
+/**
+ * Samples the tool's surface in its posture with the contact at the origin (placement.ts only
+ * places it; nothing else is shared with cylinder.ts) and measures each point's distance from the
+ * axis of the concave cylinder of radius `radiusMm` (< 0), which lies |Rs| above the contact, along
+ * X (axis = feed) or Y (cross). The head (the torus's outer half and the bottom disk) counts wherever
+ * it is, the shank (radius R above the corner) up to the axis height (shared/notes/
+ * posture-and-surfaces.md). The head is sampled every `spacingMm`; the shank by its generators (ring
+ * angle every `spacingMm` of arc): along a generator, a straight line, the distance from the axis is
+ * convex, so its largest value below the axis height lies at an end, the corner or the point at the
+ * axis height, which are both taken (and 16 points between, as a check).
+ */
+export function concaveOverreach(
+  tool: ToolInput,
+  radiusMm: number,
+  axis: 'feed' | 'cross',
+  options: { readonly spacingMm: number },
+): ConcaveOverreach {
+  const p = placeTool(tool);
+  const abs = Math.abs(radiusMm);
+  const rb = p.ringRadiusMm;
+  const rcr = p.cornerRadiusMm;
+  const R = rb + rcr;
+  const ds = options.spacingMm;
+  const beyond = (q: readonly number[]) => {
+    const w = (axis === 'feed' ? q[1] : q[0]) as number;
+    const z = q[2] as number;
+    return Math.sqrt(w * w + (z - abs) * (z - abs)) - abs;
+  };
+  let headMm = Number.NEGATIVE_INFINITY;
+  let shankMm = Number.NEGATIVE_INFINITY;
+  const nT = Math.max(64, Math.ceil((2 * Math.PI * R) / ds));
+  const nPsi = Math.max(8, Math.ceil((Math.PI * rcr) / ds));
+  const nR = Math.max(2, Math.ceil(rb / ds));
+  for (let i = 0; i < nT; i++) {
+    const t = (2 * Math.PI * i) / nT;
+    const r = [0, 1, 2].map((k) => Math.sin(t) * (p.v1[k] as number) + Math.cos(t) * (p.v2[k] as number));
+    const point = (radial: number, axial: number) =>
+      [0, 1, 2].map((k) => (p.centre[k] as number) + radial * (r[k] as number) + axial * (p.axis[k] as number));
+    for (let j = 0; j <= nPsi; j++) {
+      const psi = -Math.PI / 2 + (Math.PI * j) / nPsi;
+      headMm = Math.max(headMm, beyond(point(rb + rcr * Math.cos(psi), rcr * Math.sin(psi))));
+    }
+    for (let j = 0; j < nR; j++) headMm = Math.max(headMm, beyond(point((rb * j) / nR, -rcr)));
+    // The generator from the corner's top (axial 0) up to the axis height.
+    const foot = point(R, 0);
+    const top = (abs - (foot[2] as number)) / p.axis[2];
+    if (top >= 0) for (let j = 0; j <= 17; j++) shankMm = Math.max(shankMm, beyond(point(R, (top * j) / 17)));
+  }
+  return { headMm, shankMm };
 }
