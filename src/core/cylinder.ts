@@ -158,19 +158,37 @@ function feedAngleAtHeight(s: PostureShape, flank: Flank, rs: number, h: number,
  * angle plus the half-angle its ball subtends (0 when it does not reach r).
  */
 function feedAngleOfSection(s: PostureShape, sign: number, delta: number, rs: number, h: number): number {
-  const p = profilePoint(s, sign, delta);
-  const side = rs > 0 ? 1 : -1;
-  // Ring point relative to the axis C = (0, -Rs): (ey, ez + Rs); polar angle from C's direction to the contact.
-  const qz = p.ez + rs;
-  const alpha = Math.atan2(p.ey, side * qz);
-  const de = Math.sqrt(p.ey * p.ey + qz * qz);
+  evalSection(s, sign, delta, section);
+  const half = ballHalfAngleRad(section.dy, section.dz, s.rcr, rs, h);
+  // Ring point relative to the axis C = (0, -Rs): (dy, dz + Rcr + Rs); polar angle from C's direction to the contact.
+  return Math.atan2(section.dy, (rs > 0 ? 1 : -1) * (section.dz + s.rcr + rs)) + (half ?? 0);
+}
+
+/**
+ * Half the polar angle (radians) that a ball of radius Rcr subtends at the radius r = |Rs + h| about
+ * a cylinder's axis (axis along the feed; h the radial height), or null when it does not reach r.
+ * The ball's centre lies `cy` across and `zeta + Rcr` above the contact (zeta: its ring point's rise
+ * above the contact's, e.g. evalSection's dz), at distance de from the axis; the half-angle is
+ * `2 asin(sqrt((Rcr - (de - r)) (Rcr + (de - r)) / (4 de r)))`, each factor written as a product
+ * of terms free of cancellation, so that h of 1e-9 mm keeps its digits beside a corner of 100 mm.
+ */
+function ballHalfAngleRad(cy: number, zeta: number, rcr: number, rs: number, h: number): number | null {
+  if (!(rcr > 0)) return null;
+  const qz = zeta + rcr + rs;
+  const de = Math.sqrt(cy * cy + qz * qz);
   const r = Math.abs(rs + h);
-  // d_e^2 - r^2 = ey^2 + (ez - h)(ez + h + 2 Rs), without cancellation.
-  const diff = (p.ey * p.ey + (p.ez - h) * (p.ez + h + 2 * rs)) / (de + r);
-  const rcr = s.rcr;
-  if (!(rcr > 0) || !(Math.abs(diff) < rcr)) return alpha;
-  const half = Math.sqrt(((rcr - diff) * (rcr + diff)) / (4 * de * r));
-  return alpha + 2 * Math.asin(Math.min(1, half));
+  const cy2 = cy * cy;
+  let lo: number; // Rcr - (de - r) = ((Rcr + r)^2 - de^2) / (Rcr + r + de)
+  let hi: number; // Rcr + (de - r) = (de^2 - (r - Rcr)^2) / (de + r - Rcr)
+  if (rs > 0) {
+    lo = ((h - zeta) * (2 * rcr + 2 * rs + h + zeta) - cy2) / (rcr + r + de);
+    hi = r >= rcr ? ((2 * rcr + zeta - h) * (2 * rs + zeta + h) + cy2) / (de + r - rcr) : de + rcr - r;
+  } else {
+    lo = ((-2 * rs - h - zeta) * (2 * rcr - h + zeta) - cy2) / (rcr + r + de);
+    hi = r >= rcr ? ((zeta - h) * (2 * rcr + zeta + h + 2 * rs) + cy2) / (de + r - rcr) : de + rcr - r;
+  }
+  if (!(lo > 0) || !(hi > 0)) return null;
+  return 2 * Math.asin(Math.min(1, Math.sqrt((lo * hi) / (4 * de * r))));
 }
 
 /** Height (radial) of the flank point at polar angle beta (the inverse), by the same root approach. */
@@ -311,8 +329,11 @@ function tangentThroughAxisRad(ey: number, ez: number, rcr: number, rs: number):
  * fraction, ball E by normal angle.
  */
 function stadiumLimit(st: Stadium, rcr: number, rs: number): { topMm: number; shankMm: number | null } {
-  const onBall = (cy: number, cz: number, theta: number) =>
-    radialHeightOf(cy + rcr * Math.sin(theta), cz - rcr * Math.cos(theta), rs);
+  // The point at normal angle theta on the ball around (cy, cz): z = (cz - Rcr) + 2 Rcr sin^2(theta / 2).
+  const onBall = (cy: number, cz: number, theta: number) => {
+    const half = Math.sin(theta / 2);
+    return radialHeightOf(cy + rcr * Math.sin(theta), cz - rcr + 2 * rcr * half * half, rs);
+  };
   let topMm: number;
   let top: [number, number];
   if (rs > 0) {
@@ -343,10 +364,9 @@ function stadiumLimit(st: Stadium, rcr: number, rs: number): { topMm: number; sh
     // Where it falls, a lower point beyond the first crossing of a height would reach farther: the
     // flanks hold (for every pass and pattern) below the lowest point of that dip (as the smooth
     // profiles, feedFlankLimit).
-    const ny = Math.sin(st.theta);
-    const nz = -Math.cos(st.theta);
-    const py = st.sy + rcr * ny;
-    const pz = st.sz + rcr * nz + rs;
+    const half = Math.sin(st.theta / 2);
+    const py = st.sy + rcr * Math.sin(st.theta);
+    const pz = st.sz - rcr + 2 * rcr * half * half + rs;
     const { dy, dz } = st;
     const lambda = -(py * dy + pz * dz) / (dy * dy + dz * dz);
     const ey = st.sy + dy;
@@ -381,23 +401,21 @@ function stadiumLimit(st: Stadium, rcr: number, rs: number): { topMm: number; sh
  */
 function stadiumReach(st: Stadium, rcr: number, rs: number, h: number): number {
   const side = rs > 0 ? 1 : -1;
-  const r = Math.abs(rs + h);
-  const ball = (cy: number, cz: number) => {
-    const qz = cz + rs;
-    const alpha = Math.atan2(cy, side * qz);
-    const de = Math.sqrt(cy * cy + qz * qz);
-    // de^2 - r^2 = cy^2 + (cz - h)(cz + h + 2 Rs), without cancellation.
-    const diff = (cy * cy + (cz - h) * (cz + h + 2 * rs)) / (de + r);
-    if (!(rcr > 0) || !(Math.abs(diff) < rcr)) return Math.abs(diff) <= 0 ? alpha : Number.NEGATIVE_INFINITY;
-    return alpha + 2 * Math.asin(Math.min(1, Math.sqrt(((rcr - diff) * (rcr + diff)) / (4 * de * r))));
+  // A ball around S + (cy, zeta): its crossing (a flat end's corner point only where it lies at h).
+  const ball = (cy: number, zeta: number) => {
+    const alpha = Math.atan2(cy, side * (zeta + rcr + rs));
+    const half = ballHalfAngleRad(cy, zeta, rcr, rs, h);
+    if (half !== null) return alpha + half;
+    return rcr === 0 && radialHeightOf(cy, zeta, rs) === h ? alpha : Number.NEGATIVE_INFINITY;
   };
-  let best = Math.max(ball(st.sy, st.sz), ball(st.sy + st.dy, st.sz + st.dz));
+  let best = Math.max(ball(st.sy, st.sz - rcr), ball(st.sy + st.dy, st.sz - rcr + st.dz));
   const { dy, dz } = st;
   if (dy > 0 || dz > 0) {
     // The tangent (sy, sz) + Rcr n(theta) + lambda (dy, dz) against the circle: relative to the
     // contact's height h above, |P - C|^2 - r^2 = (py^2 + (pz - h)(pz + h + 2 Rs)) + 2 lambda (..) + lambda^2 |D|^2.
     const py = st.sy + rcr * Math.sin(st.theta);
-    const pz = st.sz - rcr * Math.cos(st.theta);
+    const half = Math.sin(st.theta / 2);
+    const pz = st.sz - rcr + 2 * rcr * half * half;
     const c0 = py * py + (pz - h) * (pz + h + 2 * rs);
     const c1 = py * dy + (pz + rs) * dz;
     const c2 = dy * dy + dz * dz;
@@ -440,7 +458,8 @@ function stadiumHeightAtAngle(st: Stadium, rcr: number, rs: number, beta: number
   if (dy > 0 || dz > 0) {
     // The band's outer edge: (sy, sz) + Rcr n(theta) + lambda (dy, dz), met by the ray (0, -Rs) + s u.
     const py = st.sy + rcr * Math.sin(st.theta);
-    const pz = st.sz - rcr * Math.cos(st.theta) + rs;
+    const half = Math.sin(st.theta / 2);
+    const pz = st.sz - rcr + 2 * rcr * half * half + rs;
     const det = uy * dz - uz * dy;
     if (det !== 0) {
       const distance = (py * dz - pz * dy) / det;

@@ -131,6 +131,26 @@ describe('a trough along the feed whose flank dips (nearly flat bottom, a little
   });
 });
 
+describe('a scallop of a nanometre beside a large corner, along the feed', () => {
+  it('ball ends (two circles, closed form): the crossing keeps its digits (the old form lost up to 1.5e-8 mm)', () => {
+    for (const [R, rs, rho, tilt] of [
+      [115.5, 3512, 0.001, -89],
+      [500, -2000, 10, 30],
+      [1000, 1e6, 0, 0],
+      [1000, -1e6, 45, 10],
+    ] as const) {
+      const h = 1e-9;
+      // Half the angle between the passes at radius |Rs| +- h, the ball's centre at |Rs| +- R from the
+      // axis: sin^2(x / 2) = (R^2 - (d - r)^2) / (4 d r), R^2 - (d - r)^2 = h (2 R - h) exactly.
+      const d = rs > 0 ? rs + R : -rs - R;
+      const r = rs > 0 ? rs + h : -rs - h;
+      const expected = 2 * Math.abs(rs) * 2 * Math.asin(Math.sqrt((h * (2 * R - h)) / (4 * d * r)));
+      const got = exactForward(forwardInput(tool(R, R, rho, tilt), 'one-way', h, cyl(rs, 'feed'))).intervalMm;
+      expect(Math.abs(got - expected) / expected, `R ${R} Rs ${rs}`).toBeLessThan(1e-12);
+    }
+  });
+});
+
 describe('the wall of a convex cylinder along the feed', () => {
   it("is where the flank's polar angle peaks (its tangent through the axis), below the plane's widest point", () => {
     // R 3, Rcr 1, rho 5, no tilt, Rs 10: the plane's widest point is 1.5700 mm up, but the flank's
