@@ -158,19 +158,37 @@ function feedAngleAtHeight(s: PostureShape, flank: Flank, rs: number, h: number,
  * angle plus the half-angle its ball subtends (0 when it does not reach r).
  */
 function feedAngleOfSection(s: PostureShape, sign: number, delta: number, rs: number, h: number): number {
-  const p = profilePoint(s, sign, delta);
-  const side = rs > 0 ? 1 : -1;
-  // Ring point relative to the axis C = (0, -Rs): (ey, ez + Rs); polar angle from C's direction to the contact.
-  const qz = p.ez + rs;
-  const alpha = Math.atan2(p.ey, side * qz);
-  const de = Math.sqrt(p.ey * p.ey + qz * qz);
+  evalSection(s, sign, delta, section);
+  const half = ballHalfAngleRad(section.dy, section.dz, s.rcr, rs, h);
+  // Ring point relative to the axis C = (0, -Rs): (dy, dz + Rcr + Rs); polar angle from C's direction to the contact.
+  return Math.atan2(section.dy, (rs > 0 ? 1 : -1) * (section.dz + s.rcr + rs)) + (half ?? 0);
+}
+
+/**
+ * Half the polar angle (radians) that a ball of radius Rcr subtends at the radius r = |Rs + h| about
+ * a cylinder's axis (axis along the feed; h the radial height), or null when it does not reach r.
+ * The ball's centre lies `cy` across and `zeta + Rcr` above the contact (zeta: its ring point's rise
+ * above the contact's, e.g. evalSection's dz), at distance de from the axis; the half-angle is
+ * `2 asin(sqrt((Rcr - (de - r)) (Rcr + (de - r)) / (4 de r)))`, each factor written as a product
+ * of terms free of cancellation, so that h of 1e-9 mm keeps its digits beside a corner of 100 mm.
+ */
+function ballHalfAngleRad(cy: number, zeta: number, rcr: number, rs: number, h: number): number | null {
+  if (!(rcr > 0)) return null;
+  const qz = zeta + rcr + rs;
+  const de = Math.sqrt(cy * cy + qz * qz);
   const r = Math.abs(rs + h);
-  // d_e^2 - r^2 = ey^2 + (ez - h)(ez + h + 2 Rs), without cancellation.
-  const diff = (p.ey * p.ey + (p.ez - h) * (p.ez + h + 2 * rs)) / (de + r);
-  const rcr = s.rcr;
-  if (!(rcr > 0) || !(Math.abs(diff) < rcr)) return alpha;
-  const half = Math.sqrt(((rcr - diff) * (rcr + diff)) / (4 * de * r));
-  return alpha + 2 * Math.asin(Math.min(1, half));
+  const cy2 = cy * cy;
+  let lo: number; // Rcr - (de - r) = ((Rcr + r)^2 - de^2) / (Rcr + r + de)
+  let hi: number; // Rcr + (de - r) = (de^2 - (r - Rcr)^2) / (de + r - Rcr)
+  if (rs > 0) {
+    lo = ((h - zeta) * (2 * rcr + 2 * rs + h + zeta) - cy2) / (rcr + r + de);
+    hi = r >= rcr ? ((2 * rcr + zeta - h) * (2 * rs + zeta + h) + cy2) / (de + r - rcr) : de + rcr - r;
+  } else {
+    lo = ((-2 * rs - h - zeta) * (2 * rcr - h + zeta) - cy2) / (rcr + r + de);
+    hi = r >= rcr ? ((zeta - h) * (2 * rcr + zeta + h + 2 * rs) + cy2) / (de + r - rcr) : de + rcr - r;
+  }
+  if (!(lo > 0) || !(hi > 0)) return null;
+  return 2 * Math.asin(Math.min(1, Math.sqrt((lo * hi) / (4 * de * r))));
 }
 
 /** Height (radial) of the flank point at polar angle beta (the inverse), by the same root approach. */
@@ -228,48 +246,6 @@ function planeTop(s: PostureShape, sign: number): number {
   return Math.atan2(s.a * s.b, (s.a * s.a - s.b * s.b) * sign * s.sinPhi * s.cosPhi);
 }
 
-/** Where a flank's radial height stops growing on a concave cylinder: its normal passes through the axis. */
-function concaveTop(s: PostureShape, sign: number, rs: number, top: number): number {
-  // F = radial distance to the axis along the flank: it falls from the contact while the normal
-  // points away from the axis. Golden-section search for its minimum on [0, top].
-  const dist2 = (d: number) => {
-    const p = profilePoint(s, sign, d);
-    return p.y * p.y + (p.h + rs) * (p.h + rs);
-  };
-  let a = 0;
-  let b = top;
-  const g = (Math.sqrt(5) - 1) / 2;
-  let c = b - g * (b - a);
-  let e = a + g * (b - a);
-  let fc = dist2(c);
-  let fe = dist2(e);
-  for (let i = 0; i < 200 && b - a > 1e-15 * Math.max(b, 1e-300); i++) {
-    if (fc < fe) {
-      b = e;
-      e = c;
-      fe = fc;
-      c = b - g * (b - a);
-      fc = dist2(c);
-    } else {
-      a = c;
-      c = e;
-      fc = fe;
-      e = a + g * (b - a);
-      fe = dist2(e);
-    }
-  }
-  return 0.5 * (a + b);
-}
-
-/** Radial height of section delta's profile point, signed towards the material (mm). */
-function radialHeight(s: PostureShape, sign: number, delta: number, rs: number): number {
-  const p = profilePoint(s, sign, delta);
-  const d = Math.sqrt(p.y * p.y + (p.h + rs) * (p.h + rs));
-  // d - |Rs| for convex, |Rs| - d for concave, from d^2 - Rs^2 = Y^2 + H (H + 2 Rs).
-  const num = p.y * p.y + p.h * (p.h + 2 * rs);
-  return rs > 0 ? num / (d + rs) : -num / (d - rs);
-}
-
 /** Radial height (mm) of a point (y, z) relative to the contact: `d - Rs` convex, `|Rs| - d` concave. */
 function radialHeightOf(y: number, z: number, rs: number): number {
   const d = Math.sqrt(y * y + (z + rs) * (z + rs));
@@ -278,39 +254,63 @@ function radialHeightOf(y: number, z: number, rs: number): number {
 }
 
 /**
- * The flank of a profile whose ring projects onto a segment or a point (b = 0: no lead; or a ball
- * end), in the flank's frame (y out from the contact, z up): two balls of radius Rcr around the
- * ring points S and E joined by their common tangent, whose normal makes the angle `theta` with
- * straight down. The flank runs around S from normal angle 0 to theta, along the tangent, then
- * around E up to pi/2 (the plane's widest point). The section parametrisation of posture.ts
- * collapses here (a whole arc hangs on one ring angle), so these flanks are handled in closed form.
+ * Below this ratio b / a the ring's projection is taken as its segment (a stadium flank, below): the
+ * profile moves by at most b, under 1e-11 mm for R <= 1000 mm, while the section parametrisation
+ * loses the normal's digits (its components are of the order of b / a, and their squares underflow
+ * below 1e-154).
+ */
+const THIN_RING = 1e-14;
+
+/**
+ * The flank of a profile whose ring projects onto a segment or a point (no lead, or a lead so small
+ * that b < 1e-14 a; or a ball end), in the flank's frame (y out from the contact, z up): two balls
+ * of radius Rcr around the ring points S (the contact's) and E (the ring point at t = pi/2, the end
+ * of the ellipse's long axis, `evalSection` at pi/2 - t0) joined by their common tangent, whose
+ * normal makes the angle `theta` with straight down. The flank runs around S from normal angle 0 to
+ * theta, along the tangent, then around E up to pi/2 (the plane's widest point). Away from the lean
+ * E is the far end of the segment; towards it (and for a ball end) E is S. The section
+ * parametrisation of posture.ts collapses here (a whole arc hangs on one ring angle), so these
+ * flanks are handled in closed form.
  */
 interface Stadium {
-  /** Ring points (ball centres) S and E relative to the contact, mm. */
+  /** Ring point (ball centre) S relative to the contact, mm. */
   readonly sy: number;
   readonly sz: number;
-  readonly ey: number;
-  readonly ez: number;
-  /** Normal angle of the tangent from S to E (radians from straight down); pi/2 when there is one ball. */
+  /** E - S (kept apart: added to S a tiny segment would round away), mm; 0 when E is S. */
+  readonly dy: number;
+  readonly dz: number;
+  /** Normal angle of the tangent from S to E (radians from straight down); pi/2 when E is S. */
   readonly theta: number;
-  /** Normal angle at which the shank's silhouette leaves ball S (the side the tool leans to), or null. */
+  /**
+   * Normal angle at which the shank's silhouette leaves the flank (the side the tool leans to: the
+   * normal (cos phi, -sin phi), at the ring point t = pi/2, E), or null.
+   */
   readonly shankTheta: number | null;
 }
 
-/** The flank `sign` as a stadium when the profile is degenerate (b = 0 or a ball end), else null. */
+/** The flank `sign` as a stadium when the ring is degenerate (b < 1e-14 a, or a ball end), else null. */
 function stadiumOf(s: PostureShape, sign: number): Stadium | null {
+  if (s.a > 0 && s.b > THIN_RING * s.a) return null;
   const rcr = s.rcr;
   const lean = sign * s.sinPhi > 0;
-  // The shank's silhouette leaves where the profile's normal is (cos phi, -sin phi): pi/2 - |phi|.
-  const shankTheta = lean ? Math.PI / 2 - Math.abs(s.phi) : null;
-  if (s.a === 0) return { sy: 0, sz: rcr, ey: 0, ez: rcr, theta: Math.PI / 2, shankTheta };
-  if (s.b !== 0) return null;
-  // A flat bottom lying on the plane: the contact is its centre, the flank its flat half then the rim's ball.
-  if (s.flatOnPlane) return { sy: 0, sz: rcr, ey: s.a, ez: rcr, theta: 0, shankTheta: null };
-  // No lead, with tilt: the ring is the segment from the contact's ring point (t0) to the opposite one
-  // (evalSection at delta = pi: dy = 2 a cos phi, dz = 2 D0), which rises away from the lean.
-  if (lean) return { sy: 0, sz: rcr, ey: 0, ez: rcr, theta: Math.PI / 2, shankTheta };
-  return { sy: 0, sz: rcr, ey: 2 * s.a * s.cosPhi, ez: 2 * s.d0 + rcr, theta: Math.abs(s.phi), shankTheta: null };
+  // The segment from the contact's ring point t0 to t = pi/2; a flat bottom lying on the plane
+  // (t0 = 0 by convention) gives its half, from the centre to the rim.
+  const sec = newSection();
+  // pi/2 - t0 as atan2(cos t0, sin t0): without the cancellation of pi/2 - t0 when t0 is near pi/2.
+  if (s.a > 0) evalSection(s, sign, Math.atan2(s.cosT0, sign * s.sinT0), sec);
+  // A segment shorter than the thin ring's own error (towards the lean: of the order of b^2 / a) is
+  // no segment: S and E are one ball.
+  const long = s.a > 0 && Math.sqrt(sec.dy * sec.dy + sec.dz * sec.dz) > THIN_RING * s.a;
+  const dy = long ? sec.dy : 0;
+  const dz = long ? sec.dz : 0;
+  return {
+    sy: 0,
+    sz: rcr,
+    dy,
+    dz,
+    theta: long ? Math.atan2(dz, dy) : Math.PI / 2,
+    shankTheta: lean ? Math.PI / 2 - Math.abs(s.phi) : null,
+  };
 }
 
 /**
@@ -323,51 +323,114 @@ function tangentThroughAxisRad(ey: number, ez: number, rcr: number, rs: number):
   return Math.PI / 2 - Math.asin(Math.min(1, rcr / d)) - Math.atan2(ey, qz);
 }
 
-/** Radial limits of a stadium flank (see Stadium): its wall's height and the shank's, mm. */
+/**
+ * Radial limits of a stadium flank (see Stadium): its wall's height and the shank's, mm. Positions
+ * along the flank are compared as (piece, parameter): ball S by normal angle, the tangent by its
+ * fraction, ball E by normal angle.
+ */
 function stadiumLimit(st: Stadium, rcr: number, rs: number): { topMm: number; shankMm: number | null } {
-  const onBall = (cy: number, cz: number, theta: number) =>
-    radialHeightOf(cy + rcr * Math.sin(theta), cz - rcr * Math.cos(theta), rs);
+  // The point at normal angle theta on the ball around (cy, cz): z = (cz - Rcr) + 2 Rcr sin^2(theta / 2).
+  const onBall = (cy: number, cz: number, theta: number) => {
+    const half = Math.sin(theta / 2);
+    return radialHeightOf(cy + rcr * Math.sin(theta), cz - rcr + 2 * rcr * half * half, rs);
+  };
   let topMm: number;
-  let topOnFirstBall: number | null = null;
+  let top: [number, number];
   if (rs > 0) {
     // Convex: the flank's polar angle peaks where its tangent passes through the axis; beyond, the
     // pass reaches no farther (a wall). The tangent's signed distance from the axis,
     // cos(theta) (z + Rs) - sin(theta) y, falls along the flank (constant along the straight part).
-    const c = Math.cos(st.theta);
-    const sn = Math.sin(st.theta);
-    const along = c * (st.sz + rs) - sn * st.sy - rcr;
+    const along = Math.cos(st.theta) * (st.sz + rs) - Math.sin(st.theta) * st.sy - rcr;
     if (along <= 0 || st.theta >= Math.PI / 2) {
       const theta = Math.max(0, Math.min(st.theta, tangentThroughAxisRad(st.sy, st.sz, rcr, rs)));
-      topOnFirstBall = theta;
+      top = [0, theta];
       topMm = onBall(st.sy, st.sz, theta);
     } else {
-      const theta = Math.max(st.theta, Math.min(Math.PI / 2, tangentThroughAxisRad(st.ey, st.ez, rcr, rs)));
-      topMm = onBall(st.ey, st.ez, theta);
+      const theta = Math.max(
+        st.theta,
+        Math.min(Math.PI / 2, tangentThroughAxisRad(st.sy + st.dy, st.sz + st.dz, rcr, rs)),
+      );
+      top = [2, theta];
+      topMm = onBall(st.sy + st.dy, st.sz + st.dz, theta);
     }
   } else if (st.theta >= Math.PI / 2) {
     // Concave, one ball: the radial height grows up to the plane's widest point.
-    topOnFirstBall = Math.PI / 2;
+    top = [0, Math.PI / 2];
     topMm = onBall(st.sy, st.sz, Math.PI / 2);
   } else {
-    // Concave: the radial height grows around S, then along the tangent until its foot nearest the
-    // axis (0, -Rs), then around E up to the widest point.
-    const ny = Math.sin(st.theta);
-    const nz = -Math.cos(st.theta);
-    const py = st.sy + rcr * ny;
-    const pz = st.sz + rcr * nz + rs;
-    const dy = st.ey - st.sy;
-    const dz = st.ez - st.sz;
+    // Concave: the radial height grows around S and along the tangent, up to the tangent's foot
+    // nearest the axis (0, -Rs) if that lies on it; then it falls along the rest of the tangent, and
+    // around E until E's farthest point from the axis, before it grows again up to the widest point.
+    // Where it falls, a lower point beyond the first crossing of a height would reach farther: the
+    // flanks hold (for every pass and pattern) below the lowest point of that dip (as the smooth
+    // profiles, feedFlankLimit).
+    const half = Math.sin(st.theta / 2);
+    const py = st.sy + rcr * Math.sin(st.theta);
+    const pz = st.sz - rcr + 2 * rcr * half * half + rs;
+    const { dy, dz } = st;
     const lambda = -(py * dy + pz * dz) / (dy * dy + dz * dz);
-    topMm =
-      lambda < 1
-        ? radialHeightOf(st.sy + rcr * ny + Math.max(0, lambda) * dy, st.sz + rcr * nz + Math.max(0, lambda) * dz, rs)
-        : onBall(st.ey, st.ez, Math.PI / 2);
+    const ey = st.sy + dy;
+    const ez = st.sz + dz;
+    if (lambda >= 1) {
+      top = [2, Math.PI / 2];
+      topMm = onBall(ey, ez, Math.PI / 2);
+    } else {
+      // The dip's lowest point: the tangent's end, or E's farthest point from the axis past it.
+      const far = Math.atan2(ey, -rs - ez);
+      const theta = Math.min(Math.PI / 2, Math.max(st.theta, far));
+      top = [2, theta];
+      topMm = onBall(ey, ez, theta);
+    }
   }
-  const shankMm =
-    st.shankTheta !== null && topOnFirstBall !== null && st.shankTheta < topOnFirstBall
-      ? onBall(st.sy, st.sz, st.shankTheta)
-      : null;
+  let shankMm: number | null = null;
+  if (st.shankTheta !== null) {
+    // The junction lies on E (t = pi/2) once past the tangent; else S and E coincide.
+    const onE = st.shankTheta >= st.theta;
+    const at: [number, number] = [onE ? 2 : 0, st.shankTheta];
+    if (at[0] < top[0] || (at[0] === top[0] && at[1] < top[1]))
+      shankMm = onE ? onBall(st.sy + st.dy, st.sz + st.dz, st.shankTheta) : onBall(st.sy, st.sz, st.shankTheta);
+  }
   return { topMm, shankMm };
+}
+
+/**
+ * Polar angle (radians, from the contact) that a stadium flank reaches at radial height h: the
+ * largest over its pieces (the two balls, as in feedAngleOfSection, and the tangent between them) of
+ * the angle of their crossing with the circle of radius |Rs| + s h about the axis. Each crossing is a
+ * point of the tool at that radius, and the flank's own is among them.
+ */
+function stadiumReach(st: Stadium, rcr: number, rs: number, h: number): number {
+  const side = rs > 0 ? 1 : -1;
+  // A ball around S + (cy, zeta): its crossing (a flat end's corner point only where it lies at h).
+  const ball = (cy: number, zeta: number) => {
+    const alpha = Math.atan2(cy, side * (zeta + rcr + rs));
+    const half = ballHalfAngleRad(cy, zeta, rcr, rs, h);
+    if (half !== null) return alpha + half;
+    return rcr === 0 && radialHeightOf(cy, zeta, rs) === h ? alpha : Number.NEGATIVE_INFINITY;
+  };
+  let best = Math.max(ball(st.sy, st.sz - rcr), ball(st.sy + st.dy, st.sz - rcr + st.dz));
+  const { dy, dz } = st;
+  if (dy > 0 || dz > 0) {
+    // The tangent (sy, sz) + Rcr n(theta) + lambda (dy, dz) against the circle: relative to the
+    // contact's height h above, |P - C|^2 - r^2 = (py^2 + (pz - h)(pz + h + 2 Rs)) + 2 lambda (..) + lambda^2 |D|^2.
+    const py = st.sy + rcr * Math.sin(st.theta);
+    const half = Math.sin(st.theta / 2);
+    const pz = st.sz - rcr + 2 * rcr * half * half;
+    const c0 = py * py + (pz - h) * (pz + h + 2 * rs);
+    const c1 = py * dy + (pz + rs) * dz;
+    const c2 = dy * dy + dz * dz;
+    const disc = c1 * c1 - c2 * c0;
+    if (disc >= 0) {
+      const root = Math.sqrt(disc);
+      // The two roots without cancellation: q = -(c1 + sign(c1) root), lambda = q / c2 and c0 / q.
+      const q = -(c1 + (c1 >= 0 ? root : -root));
+      for (const lambda of [q / c2, q !== 0 ? c0 / q : Number.NaN]) {
+        if (!(lambda >= 0 && lambda <= 1)) continue;
+        best = Math.max(best, Math.atan2(py + lambda * dy, side * (pz + lambda * dz + rs)));
+      }
+    }
+  }
+  return best;
 }
 
 /**
@@ -390,13 +453,13 @@ function stadiumHeightAtAngle(st: Stadium, rcr: number, rs: number, beta: number
     if (disc >= 0) keep(along - side * Math.sqrt(disc));
   };
   ball(st.sy, st.sz);
-  ball(st.ey, st.ez);
-  const dy = st.ey - st.sy;
-  const dz = st.ez - st.sz;
-  if (dy !== 0 || dz !== 0) {
+  ball(st.sy + st.dy, st.sz + st.dz);
+  const { dy, dz } = st;
+  if (dy > 0 || dz > 0) {
     // The band's outer edge: (sy, sz) + Rcr n(theta) + lambda (dy, dz), met by the ray (0, -Rs) + s u.
     const py = st.sy + rcr * Math.sin(st.theta);
-    const pz = st.sz - rcr * Math.cos(st.theta) + rs;
+    const half = Math.sin(st.theta / 2);
+    const pz = st.sz - rcr + 2 * rcr * half * half + rs;
     const det = uy * dz - uz * dy;
     if (det !== 0) {
       const distance = (py * dz - pz * dy) / det;
@@ -408,56 +471,161 @@ function stadiumHeightAtAngle(st: Stadium, rcr: number, rs: number, beta: number
 }
 
 /**
- * Convex cylinder, smooth profile: the section offset (radians) where the flank's tangent passes
- * through the axis, so that its polar angle peaks (beyond it the pass reaches no farther: a wall).
- * The tangent's signed distance from the axis, `cos(theta) (H + Rs) - sin(theta) Y`, falls
- * strictly along the flank (its derivative in theta is `-(sin(theta) (H + Rs) + cos(theta) Y)`),
- * from Rs at the contact to -Y at the plane's widest point: bisection.
+ * The profile point of the flank `sign` whose normal makes the angle theta with straight down,
+ * relative to the contact (mm), and its section offset delta (radians): the ring ellipse's support
+ * point in that direction, `(sin t, cos t) ~ (a sin(theta + phi), b cos(theta + phi))`, offset by
+ * Rcr along the normal. Unlike the section parametrisation this stays well conditioned for a thin
+ * ellipse (b << a), where the normal turns within a tiny range of t. Requires b > 0.
  */
-function convexTop(s: PostureShape, sign: number, rs: number, plane: number): number {
-  let lo = 0;
-  let hi = plane;
-  for (let i = 0; i < 200; i++) {
-    const mid = 0.5 * (lo + hi);
-    if (!(mid > lo && mid < hi)) break;
-    const p = profilePoint(s, sign, mid);
-    if (p.ct * (p.h + rs) - p.st * p.y > 0) lo = mid;
-    else hi = mid;
-  }
-  return lo;
+function profileAtNormal(s: PostureShape, sign: number, theta: number): { y: number; z: number; delta: number } {
+  const sinPhi = sign * s.sinPhi;
+  const sinT0 = sign * s.sinT0;
+  const st = Math.sin(theta);
+  const ct = Math.cos(theta);
+  const u = s.a * (st * s.cosPhi + ct * sinPhi);
+  const v = s.b * (ct * s.cosPhi - st * sinPhi);
+  const n = Math.sqrt(u * u + v * v);
+  const sinT = u / n;
+  const cosT = v / n;
+  // y(t) = a cos(phi) sin t - b sin(phi) cos t, z(t) = -(a sin(phi) sin t + b cos(phi) cos t), from t0.
+  const ds = sinT - sinT0;
+  const dc = cosT - s.cosT0;
+  const half = Math.sin(theta / 2);
+  return {
+    y: s.a * s.cosPhi * ds - s.b * sinPhi * dc + s.rcr * st,
+    z: -(s.a * sinPhi * ds + s.b * s.cosPhi * dc) + 2 * s.rcr * half * half,
+    delta: Math.atan2(sinT * s.cosT0 - cosT * sinT0, cosT * s.cosT0 + sinT * sinT0),
+  };
 }
 
 /**
- * Radial limits of one flank on a cylinder with the axis along the feed (mm): the wall (convex: where
- * the flank's polar angle peaks; concave: where its radial height stops growing, at most the plane's
- * widest point) and the shank, and the section offset of the wall (smooth profiles).
+ * Golden-section search for the minimum of f on [lo, hi] (f unimodal there); its argument.
  */
-function feedFlankLimit(
-  s: PostureShape,
-  sign: number,
-  rs: number,
-): { topMm: number; shankMm: number | null; deltaTop: number } {
-  const st = stadiumOf(s, sign);
-  if (st !== null) return { ...stadiumLimit(st, s.rcr, rs), deltaTop: 0 };
-  const plane = planeTop(s, sign);
-  const top = rs < 0 ? Math.min(plane, concaveTop(s, sign, rs, plane)) : convexTop(s, sign, rs, plane);
-  const topMm = radialHeight(s, sign, top, rs);
-  // The shank: it leaves the profile at the end of the ellipse's long axis (t = pi/2), on the side
-  // the tool leans to (posture.ts); radially, its height is that point's.
-  let shankMm: number | null = null;
-  if (sign * s.sinPhi > 0) {
-    const tShank = Math.PI / 2 - Math.atan2(sign * s.sinT0, s.cosT0);
-    if (tShank >= 0 && tShank < top) shankMm = radialHeight(s, sign, tShank, rs);
+function goldenMin(f: (x: number) => number, lo0: number, hi0: number): number {
+  let lo = lo0;
+  let hi = hi0;
+  const g = (Math.sqrt(5) - 1) / 2;
+  let c = hi - g * (hi - lo);
+  let e = lo + g * (hi - lo);
+  let fc = f(c);
+  let fe = f(e);
+  for (let i = 0; i < 200 && hi - lo > 1e-15 * Math.max(hi0, 1e-300); i++) {
+    if (fc < fe) {
+      hi = e;
+      e = c;
+      fe = fc;
+      c = hi - g * (hi - lo);
+      fc = f(c);
+    } else {
+      lo = c;
+      c = e;
+      fc = fe;
+      e = lo + g * (hi - lo);
+      fe = f(e);
+    }
   }
-  return { topMm, shankMm, deltaTop: top };
+  return 0.5 * (lo + hi);
 }
 
-function limitsOf(
-  topRightMm: number,
-  topLeftMm: number,
-  shankRightMm: number | null,
-  shankLeftMm: number | null,
-): FlankLimits {
+/**
+ * The wall of a flank on a concave cylinder along the feed (smooth profile): its radial height and
+ * section offset. Along the flank the profile point's distance from the axis is stationary where
+ * its normal passes through the axis, that is where the ring point's own distance D(delta) = |e -
+ * C| is (its derivative is (e - C).e'), and there it is D + Rcr. So the flank's radial height grows
+ * up to the first minimum of D (golden section; no profile normal needed, which a thin ring would
+ * garble), or to the plane's widest point if D still falls there. If it peaks before that, it falls
+ * to the next maximum of D (or the widest point) and grows again: a lower point beyond the first
+ * crossing of a height would reach farther, so the flank holds below that dip's lowest height,
+ * which is then the limit (the first crossing stays the flank below it, with the peak's offset as
+ * the bracket). D is unimodal on each side of the peak in every posture measured.
+ */
+function concaveFlankTop(s: PostureShape, sign: number, rs: number): { topMm: number; deltaTop: number } {
+  const rcr = s.rcr;
+  const abs = -rs;
+  const sec = newSection();
+  const ring = (delta: number) => {
+    evalSection(s, sign, delta, sec);
+    return { y: sec.dy, z: sec.dz };
+  };
+  const distance = (delta: number) => {
+    const e = ring(delta);
+    return Math.sqrt(e.y * e.y + (e.z + rcr - abs) * (e.z + rcr - abs));
+  };
+  // |Rs| - (D + Rcr) = ((|Rs| - Rcr)^2 - D^2) / (|Rs| - Rcr + D), the numerator dz (2 (|Rs| - Rcr) - dz) - dy^2.
+  const atCritical = (delta: number) => {
+    const e = ring(delta);
+    const d = Math.sqrt(e.y * e.y + (e.z + rcr - abs) * (e.z + rcr - abs));
+    return (e.z * (2 * (abs - rcr) - e.z) - e.y * e.y) / (abs - rcr + d);
+  };
+  const plane = planeTop(s, sign);
+  const widest = () => {
+    const e = ring(plane);
+    return radialHeightOf(e.y + rcr, e.z + rcr, rs);
+  };
+  const peak = goldenMin(distance, 0, plane);
+  if (!(distance(peak) < distance(plane)) || peak >= plane * (1 - 1e-12)) return { topMm: widest(), deltaTop: plane };
+  // The dip's lowest height: the profile point is never farther from the axis than D + Rcr, so
+  // |Rs| - max D - Rcr bounds it from below (exactly where that maximum is a critical point).
+  const low = goldenMin((d) => -distance(d), peak, plane);
+  return { topMm: Math.min(atCritical(low), widest(), atCritical(peak)), deltaTop: peak };
+}
+
+/** The shank's radial height on a flank of a smooth profile (where the normal is (cos phi, -sin phi)), if it leans that way. */
+function concaveShank(s: PostureShape, sign: number, rs: number): number | null {
+  if (!(sign * s.sinPhi > 0)) return null;
+  const p = profileAtNormal(s, sign, Math.PI / 2 - Math.abs(s.phi));
+  return radialHeightOf(p.y, p.z, rs);
+}
+
+/** Radial limits of one flank along the feed (mm) and the section offset of its wall (radians; 0 for a stadium). */
+interface FeedFlankLimit {
+  readonly topMm: number;
+  readonly shankMm: number | null;
+  readonly deltaTop: number;
+}
+
+/**
+ * Radial limits of one flank on a cylinder with the axis along the feed (mm), and the section offset
+ * of its wall. The wall: on a convex cylinder where the flank's polar angle peaks, its tangent
+ * through the axis (the tangent's signed distance from the axis, `cos(theta) (z + Rs) - sin(theta)
+ * y`, falls strictly along the flank: its derivative in theta is `-(sin(theta) (z + Rs) + cos(theta)
+ * y)`; bisection); on a concave one where its radial height stops growing, at most the plane's
+ * widest point, or below a dip (concaveFlankTop). The shank: it leaves the profile at the
+ * end of the ellipse's long axis, where the normal is (cos phi, -sin phi), on the side the tool
+ * leans to (posture.ts); radially, its height is that point's, if it comes before the wall.
+ */
+function feedFlankLimit(s: PostureShape, sign: number, rs: number): FeedFlankLimit {
+  const st = stadiumOf(s, sign);
+  if (st !== null) return { ...stadiumLimit(st, s.rcr, rs), deltaTop: 0 };
+  if (rs < 0) return { ...concaveFlankTop(s, sign, rs), shankMm: concaveShank(s, sign, rs) };
+  let lo = 0;
+  let hi = Math.PI / 2;
+  for (let i = 0; i < 200; i++) {
+    const mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
+    const p = profileAtNormal(s, sign, mid);
+    if (Math.cos(mid) * (p.z + rs) - Math.sin(mid) * p.y > 0) lo = mid;
+    else hi = mid;
+  }
+  const top = profileAtNormal(s, sign, lo);
+  const shankTheta = Math.PI / 2 - Math.abs(s.phi);
+  const shank = sign * s.sinPhi > 0 && shankTheta < lo ? profileAtNormal(s, sign, shankTheta) : null;
+  return {
+    topMm: radialHeightOf(top.y, top.z, rs),
+    shankMm: shank === null ? null : radialHeightOf(shank.y, shank.z, rs),
+    deltaTop: top.delta,
+  };
+}
+
+/**
+ * The binding limit of two flanks and their shank heights. Heights are clamped at 0: a flank that
+ * dips below the surface belongs to a trough the tool gouges, which validation refuses first.
+ */
+function limitsOf(topRight: number, topLeft: number, shankRight: number | null, shankLeft: number | null): FlankLimits {
+  const topRightMm = Math.max(0, topRight);
+  const topLeftMm = Math.max(0, topLeft);
+  const shankRightMm = shankRight === null ? null : Math.max(0, shankRight);
+  const shankLeftMm = shankLeft === null ? null : Math.max(0, shankLeft);
   const candidates: Array<[number, FlankLimits['limitBy']]> = [];
   if (shankRightMm !== null) candidates.push([shankRightMm, 'shank-right']);
   if (shankLeftMm !== null) candidates.push([shankLeftMm, 'shank-left']);
@@ -778,10 +946,11 @@ export interface CylinderSolver {
 /** Axis along the feed: flank angles about the axis (classes: no closures built per call). */
 class FeedSolver implements CylinderSolver {
   private cached: FlankLimits | null = null;
-  private readonly tops: [number | null, number | null] = [null, null];
+  /** Each flank's limits (feedFlankLimit), found once. */
+  private readonly flanks: [FeedFlankLimit | null, FeedFlankLimit | null] = [null, null];
   private readonly s: PostureShape;
   private readonly rs: number;
-  /** Each flank as a stadium when the profile is degenerate (no lead, or a ball end), else null. */
+  /** Each flank as a stadium when the ring is degenerate (no lead, or a ball end), else null. */
   private readonly stadiums: [Stadium | null, Stadium | null];
 
   constructor(
@@ -793,27 +962,22 @@ class FeedSolver implements CylinderSolver {
     this.stadiums = [stadiumOf(p.shape, 1), stadiumOf(p.shape, -1)];
   }
 
+  private flank(sign: number): FeedFlankLimit {
+    const index = sign > 0 ? 0 : 1;
+    const known = this.flanks[index];
+    if (known !== null && known !== undefined) return known;
+    const found = feedFlankLimit(this.s, sign, this.rs);
+    this.flanks[index] = found;
+    return found;
+  }
+
   limits(): FlankLimits {
     if (this.cached === null) {
-      const right = feedFlankLimit(this.s, 1, this.rs);
-      const left = feedFlankLimit(this.s, -1, this.rs);
+      const right = this.flank(1);
+      const left = this.flank(-1);
       this.cached = limitsOf(right.topMm, left.topMm, right.shankMm, left.shankMm);
     }
     return this.cached;
-  }
-
-  /**
-   * The section offset of a flank's wall (a search), kept once found: on a concave cylinder where
-   * its radial height stops growing (at most the plane's widest point), on a convex one where its
-   * polar angle peaks.
-   */
-  private top(sign: number, plane: number): number {
-    const index = sign > 0 ? 0 : 1;
-    const known = this.tops[index];
-    if (known !== null) return known;
-    const top = this.rs < 0 ? concaveTop(this.s, sign, this.rs, plane) : convexTop(this.s, sign, this.rs, plane);
-    this.tops[index] = top;
-    return top;
   }
 
   /**
@@ -822,16 +986,18 @@ class FeedSolver implements CylinderSolver {
    */
   private bracket(sign: number, h: number): number {
     const s = this.s;
-    if (s.a === 0) return 0;
     const plane = planeTop(s, sign);
     if (this.rs > 0) return plane;
     const at = profilePoint(s, sign, plane);
     if (at.y * at.y + (at.h - h) * (at.h + h + 2 * this.rs) < 0) return plane;
-    return this.top(sign, plane);
+    return this.flank(sign).deltaTop;
   }
 
   reach(flank: Flank, h: number): number {
-    return feedAngleAtHeight(this.s, flank, this.rs, h, this.bracket(flankSign(flank), h));
+    const sign = flankSign(flank);
+    const stadium = this.stadiums[sign > 0 ? 0 : 1] ?? null;
+    if (stadium !== null) return stadiumReach(stadium, this.s.rcr, this.rs, h);
+    return feedAngleAtHeight(this.s, flank, this.rs, h, this.bracket(sign, h));
   }
 
   heightAt(flank: Flank, beta: number): number {
@@ -839,7 +1005,7 @@ class FeedSolver implements CylinderSolver {
     const s = this.s;
     const stadium = this.stadiums[sign > 0 ? 0 : 1] ?? null;
     if (stadium !== null) return stadiumHeightAtAngle(stadium, s.rcr, this.rs, beta);
-    return feedHeightAtAngle(s, flank, this.rs, beta, this.top(sign, planeTop(s, sign)));
+    return feedHeightAtAngle(s, flank, this.rs, beta, this.flank(sign).deltaTop);
   }
 
   intervalFromReach(angle: number): number {

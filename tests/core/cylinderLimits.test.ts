@@ -74,6 +74,26 @@ describe('item 8: cylinders without lead but with tilt (rho = 0, beta != 0)', ()
     });
   }
 
+  it('a lead of 1e-320 to 1e-6 degrees: the limits of no lead (no jump), L against the brute force', () => {
+    // With b / a below about 1e-9 the section parametrisation's normal is ill-conditioned (the old
+    // code refused h there, or cut the shank's height by 1e-4 relative): the limits come from the
+    // normal angle (and below b = 1e-14 a from the segment), continuous down to rho = 0.
+    for (const [rs, axis] of [
+      [40, 'feed'],
+      [-60, 'feed'],
+      [40, 'cross'],
+    ] as const) {
+      const s = cyl(rs, axis);
+      const at0 = cylinderSolver(tool(3, 0.8, 0, 12), s).limits();
+      for (const rho of [1e-320, 1e-200, 1e-14, 1e-12, 1e-9, 1e-6]) {
+        const l = cylinderSolver(tool(3, 0.8, rho, 12), s).limits();
+        expect(l.limitBy, `${rho} ${axis} ${rs}`).toBe(at0.limitBy);
+        expect(Math.abs(l.limitMm - at0.limitMm), `${rho} ${axis} ${rs}`).toBeLessThan(1e-9);
+      }
+      checkCase(tool(3, 0.8, 1e-10, 12), s, `rho 1e-10 ${axis} ${rs}`);
+    }
+  });
+
   it('a tilted flat end (Rcr = 0) without lead is wall-only on a cylinder as on the plane', () => {
     for (const axis of ['feed', 'cross'] as const) {
       const v = validateForward({ R: 3, Rcr: 0, rho: 0, tilt: 10, h: 0.01, surfaceRadius: 50, surfaceAxis: axis });
@@ -87,6 +107,47 @@ describe('item 8: cylinders without lead but with tilt (rho = 0, beta != 0)', ()
     checkCase(tool(3, 1, 0, 0), cyl(40, 'cross'), 'flat bottom, cross');
     checkCase(tool(2, 2, 0, 25), cyl(15, 'feed'), 'ball end, feed');
     checkCase(tool(2, 2, 30, -25), cyl(-15, 'feed'), 'ball end, concave feed');
+  });
+});
+
+describe('a trough along the feed whose flank dips (nearly flat bottom, a little tilt)', () => {
+  it('the flanks hold below the dip, and the limit does not jump between no lead and a tiny one', () => {
+    // R 3, Rcr 0.8, tilt 3, Rs -60: away from the tilt the flank runs along the flat bottom's edge,
+    // whose foot nearest the axis lies on it: the radial height rises to 0.081 mm there, falls to
+    // 0.067 mm at the edge's end, then rises again. Above 0.067 mm a lower point past the first
+    // crossing reaches farther (the old limit, the peak, let h = 0.07 mm through with L 2.5 mm short).
+    const limits = [0, 1e-9, 0.05, 0.2].map((rho) => {
+      const t = tool(3, 0.8, rho, 3);
+      const s = cyl(-60, 'feed');
+      checkCase(t, s, `rho ${rho}`);
+      return cylinderSolver(t, s).limits();
+    });
+    for (const l of limits) {
+      expect(l.limitBy).toBe('left-flank');
+      expect(Math.abs(l.limitMm - 0.0668024)).toBeLessThan(1e-5);
+    }
+    const v = validateForward({ R: 3, Rcr: 0.8, rho: 0.05, tilt: 3, h: 0.07, surfaceRadius: -60 });
+    expect(!v.ok && v.errors[0]?.code).toBe('flank-wall');
+  });
+});
+
+describe('a scallop of a nanometre beside a large corner, along the feed', () => {
+  it('ball ends (two circles, closed form): the crossing keeps its digits (the old form lost up to 1.5e-8 mm)', () => {
+    for (const [R, rs, rho, tilt] of [
+      [115.5, 3512, 0.001, -89],
+      [500, -2000, 10, 30],
+      [1000, 1e6, 0, 0],
+      [1000, -1e6, 45, 10],
+    ] as const) {
+      const h = 1e-9;
+      // Half the angle between the passes at radius |Rs| +- h, the ball's centre at |Rs| +- R from the
+      // axis: sin^2(x / 2) = (R^2 - (d - r)^2) / (4 d r), R^2 - (d - r)^2 = h (2 R - h) exactly.
+      const d = rs > 0 ? rs + R : -rs - R;
+      const r = rs > 0 ? rs + h : -rs - h;
+      const expected = 2 * Math.abs(rs) * 2 * Math.asin(Math.sqrt((h * (2 * R - h)) / (4 * d * r)));
+      const got = exactForward(forwardInput(tool(R, R, rho, tilt), 'one-way', h, cyl(rs, 'feed'))).intervalMm;
+      expect(Math.abs(got - expected) / expected, `R ${R} Rs ${rs}`).toBeLessThan(1e-12);
+    }
   });
 });
 

@@ -8,6 +8,7 @@
 import Decimal from 'decimal.js';
 import { describe, expect, it } from 'vitest';
 import { bruteForceProfile } from './reference/bruteForce3d';
+import { cylinderReach } from './reference/cylinderReach';
 import { HighPrecisionProfile, referenceProfile } from './reference/highPrecision';
 
 const DEG = Math.PI / 180;
@@ -530,5 +531,54 @@ describe('inverse and domain', () => {
     expect(() => p.heightAtWidthRightMm(p.wmaxRightMm * 1.001)).toThrow(RangeError);
     // The rounded widest point itself is accepted.
     expect(p.widthRightMm(p.hmaxRightMm)).toBeCloseTo(p.wmaxRightMm, 14);
+  });
+});
+
+describe('the polished cylinder brute force (reference/cylinderReach.ts) against closed forms and the plane', () => {
+  const tool = (R: number, Rcr: number, rho: number, tilt: number) => ({
+    toolRadiusMm: R,
+    cornerRadiusMm: Rcr,
+    leadAngleDeg: rho,
+    tiltAngleDeg: tilt,
+  });
+
+  it('a ball end along the feed: the half-angle of two circles (law of cosines), convex and concave', () => {
+    for (const [R, rs, h, rho, tilt] of [
+      [3, 20, 0.05, 10, 20],
+      [3, -20, 0.05, 0, 0],
+      [1, 5, 0.2, 45, -30],
+    ] as const) {
+      const d = rs > 0 ? rs + R : -rs - R;
+      const r = rs > 0 ? rs + h : -rs - h;
+      const half = 2 * Math.asin(Math.sqrt((h * (2 * R - h)) / (4 * d * r)));
+      const ref = cylinderReach(tool(R, R, rho, tilt), rs, 'feed', { ringSamples: 360 });
+      for (const side of ['right', 'left'] as const)
+        expect(Math.abs(ref.reach(side, h, false) - half) * Math.abs(rs)).toBeLessThan(1e-12);
+    }
+  });
+
+  it('across the feed: a ball end leaves the plane circle, a flat bottom the plane profile Rb + sqrt(2 Rcr h - h^2)', () => {
+    const ball = cylinderReach(tool(3, 3, 20, 10), 5, 'cross', { ringSamples: 360 });
+    expect(Math.abs(ball.reach('right', 0.05, false) - Math.sqrt(0.05 * (6 - 0.05)))).toBeLessThan(1e-12);
+    const flat = cylinderReach(tool(3, 1, 0, 0), 10, 'cross', { ringSamples: 360 });
+    expect(Math.abs(flat.reach('left', 0.05, false) - (2 + Math.sqrt(2 * 0.05 - 0.0025)))).toBeLessThan(1e-12);
+  });
+
+  it('a nearly flat cylinder gives the plane flanks of the 3D brute force, with and without the shank', () => {
+    for (const [R, Rcr, rho, tilt, h] of [
+      [3, 1, 5, 20, 0.3],
+      [2, 0.5, 30, -40, 0.2],
+    ] as const) {
+      const plane = bruteForceProfile(R, Rcr, rho, tilt);
+      const ref = cylinderReach(tool(R, Rcr, rho, tilt), 1e7, 'cross', { ringSamples: 360 });
+      // Across a cylinder of 1e7 mm the flanks differ from the plane's by about w^2 / Rs.
+      expect(Math.abs(ref.reach('right', h, false) - plane.widthRightMm(h))).toBeLessThan(1e-6);
+      expect(Math.abs(ref.reach('left', h, false) - plane.widthLeftMm(h))).toBeLessThan(1e-6);
+      const hs = 1.5 * Math.min(plane.hmaxRightMm, plane.hmaxLeftMm);
+      const above = Math.min(hs, 0.9 * Math.max(plane.hmaxRightMm, plane.hmaxLeftMm));
+      const lean = tilt > 0 ? 'right' : 'left';
+      const bf = lean === 'right' ? plane.widthRightWithShankMm(above) : plane.widthLeftWithShankMm(above);
+      expect(Math.abs(ref.reach(lean, above, true) - bf)).toBeLessThan(1e-6);
+    }
   });
 });
