@@ -141,6 +141,8 @@ export interface ErrorJson {
   readonly limit?: number;
   /** For a flank or the shank: the side that sets the limit. */
   readonly side?: 'right' | 'left';
+  /** For `shank-gouging`: the shank's lean from the surface normal seen along the cylinder's axis. */
+  readonly shankLean?: AnyInputError['shankLean'];
   /** The words of the stderr line, control characters escaped. */
   readonly message: string;
 }
@@ -154,6 +156,7 @@ export function errorJson(e: AnyInputError, option: string, message: string): Er
     got: e.got,
     ...(e.limit === null ? {} : { limit: e.limit }),
     ...(e.side === null ? {} : { side: e.side }),
+    ...(e.shankLean === undefined ? {} : { shankLean: e.shankLean }),
     message,
   };
 }

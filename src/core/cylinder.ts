@@ -53,6 +53,7 @@ import {
   type PostureShape,
   type Section,
 } from './posture';
+import { radToDeg } from './units';
 import type { ToolInput } from './validate';
 
 /** Which way the cylinder's axis runs: along the feed (passes along it) or across (passes around it). */
@@ -1193,7 +1194,7 @@ export function concaveFit(tool: ToolInput, axis: SurfaceAxis): ConcaveFit {
     shankMm,
     minRadiusMm: Math.max(headMm, shankMm),
     limitedBy: shankMm > headMm ? 'shank' : 'head',
-    shankLeanDeg: (lean * 180) / Math.PI,
+    shankLeanDeg: radToDeg(lean),
   };
 }
 

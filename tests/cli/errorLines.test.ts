@@ -130,4 +130,30 @@ describe('JSON errors leave out what does not exist', () => {
       expect(r.stdout).not.toMatch(/null/);
     }
   });
+
+  it("a trough whose wall the shank crosses: no limit, the shank's lean seen along the axis (closed form)", async () => {
+    const r = await run([
+      ...TOOL,
+      '--tilt',
+      '50',
+      '--h',
+      '0.01',
+      '--surface-radius',
+      '-3.7',
+      '--surface-axis',
+      'feed',
+      '--json',
+    ]);
+    expect(r.code).toBe(2);
+    const [e] = JSON.parse(r.stdout).errors as Array<Record<string, unknown>>;
+    expect(Object.keys(e ?? {})).toEqual(['field', 'option', 'code', 'got', 'shankLean', 'message']);
+    expect(e?.code).toBe('shank-gouging');
+    // Seen along the cylinder's axis (X), the tool axis (cos b sin r, sin b, cos b cos r) leans
+    // atan2(|sin b|, cos b cos r) from the normal: 50.1075 degrees for b = 50, r = 5.
+    const rad = Math.PI / 180;
+    const lean = Math.atan2(Math.sin(50 * rad), Math.cos(50 * rad) * Math.cos(5 * rad)) / rad;
+    const shankLean = e?.shankLean as { axis: string; leanDeg: number };
+    expect(shankLean.axis).toBe('feed');
+    expect(shankLean.leanDeg).toBeCloseTo(lean, 9);
+  });
 });
