@@ -33,8 +33,6 @@ import {
   URL_PARAMS,
 } from '../src/core/input/fields';
 import { rawOf } from '../src/core/input/raw';
-import { LOOKUP_HEADER } from '../src/core/lookupTable';
-import { validateRaTarget } from '../src/core/raTarget';
 import {
   describeInputError,
   forwardInput,
@@ -47,7 +45,9 @@ import {
   MIN_TOOL_RADIUS_MM,
   validateForward,
   validateInverse,
-} from '../src/core/validate';
+} from '../src/core/input/validate';
+import { LOOKUP_HEADER } from '../src/core/output/lookupTable';
+import { validateRaTarget } from '../src/core/roughness/raTarget';
 import { buildRequest, fieldMessages } from '../src/ui/request';
 import {
   defaultState,

@@ -11,10 +11,10 @@
  *                                                   two tools, lead 10 degrees, h = 0.05 mm, one-way,
  *                                                   |Rf|, |Rc| in {10, 50, 200} mm, dome, bowl, saddle)
  */
-import { compareDoublyCurved, type DoublyCurvedRow } from '../core/doublyCurved/compare';
-import { doublyCurvedGouging } from '../core/doublyCurved/gouging';
-import { doublyCurvedForward, doublyCurvedIntervalMm, doublyCurvedLimits } from '../core/doublyCurved/solve';
-import type { DoublyCurvedForwardInput } from '../core/doublyCurved/types';
+import { compareDoublyCurved, type DoublyCurvedRow } from '../core/surfaces/doublyCurved/compare';
+import { doublyCurvedGouging } from '../core/surfaces/doublyCurved/gouging';
+import { doublyCurvedForward, doublyCurvedIntervalMm, doublyCurvedLimits } from '../core/surfaces/doublyCurved/solve';
+import type { DoublyCurvedForwardInput } from '../core/surfaces/doublyCurved/types';
 
 /** Deterministic inputs (mulberry32, seed 19): the radii 3 to 30 tool radii, both signs. */
 function inputs(count: number): DoublyCurvedForwardInput[] {

@@ -10,7 +10,9 @@
  * validated forward with both gouging checks; target 50000 ns), and the 200-slope sweeps in ms
  * (target: within one 16 ms frame).
  */
-import { exactIntervalMm } from '../core/exact';
+
+import { type ForwardInput, forwardInput } from '../core/input/validate';
+import { exactIntervalMm } from '../core/surfaces/exact';
 import {
   type RevolutionCase,
   type SlopedPlaneCase,
@@ -19,7 +21,6 @@ import {
   slopeSweep,
   waterlineForward,
 } from '../core/threeAxis/index';
-import { type ForwardInput, forwardInput } from '../core/validate';
 
 /** mulberry32, seed 1: the same inputs on every run. */
 function random(seed: number): () => number {

@@ -1,5 +1,5 @@
 /**
- * The closing note's table (issue 20): for the paper's two tools (src/core/paper.ts, Tables 2 and
+ * The closing note's table (issue 20): for the paper's two tools (src/core/procedures/paper.ts, Tables 2 and
  * 3: R 3 / Rcr 1 and R 6 / Rcr 2) at h 0.01 and 0.05 mm, the programmed steps at slopes 0 to 75
  * degrees on a sloped plane (raster Lxy at psi 0 and 90, waterline dz) and the scallop that the
  * flat floor's step really leaves at each (Lxy0 as Lxy for raster; typed as dz for waterline, and,
@@ -8,7 +8,7 @@
  *
  *   npx tsx src/bench/threeAxisTable.ts
  */
-import { PAPER_CONDITIONS } from '../core/paper';
+import { PAPER_CONDITIONS } from '../core/procedures/paper';
 import {
   flatFloorStepMm,
   type SlopedPlaneAnswer,

@@ -16,7 +16,6 @@
 
 import type { Readable } from 'node:stream';
 import { StringDecoder } from 'node:string_decoder';
-import { csvNumber, RESULT_COLUMNS, resultFields } from '../core/csvWrite';
 import { forwardInput, scallopHeightForRaMm, validateForward, validateTargetRa } from '../core/index';
 import {
   CSV_OPTIONAL_COLUMNS,
@@ -29,11 +28,12 @@ import {
   PASS_FIELDS,
 } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
+import { csvNumber, RESULT_COLUMNS, resultFields } from '../core/output/csvWrite';
 import { solveThreeAxis, validateThreeAxis } from '../core/threeAxis/validate';
 import { CsvReader, type CsvRecord, csvText } from './csv';
 import { describeSystemError, errorLine, escapeControls, FLUSH_CHARS, type Output } from './output';
 
-/** The result columns and their writers live in the shared CSV writer (core/csvWrite.ts). */
+/** The result columns and their writers live in the shared CSV writer (core/output/csvWrite.ts). */
 export { csvNumber, RESULT_COLUMNS, resultFields };
 
 /**

@@ -229,4 +229,4 @@ export function parseCsv(text: string, maxRecordChars: number = MAX_RECORD_CHARS
   return [...reader.push(text), ...reader.end()];
 }
 
-export { csvField, csvText, isNumberText } from '../core/csvWrite';
+export { csvField, csvText, isNumberText } from '../core/output/csvWrite';

@@ -1,18 +1,19 @@
 /**
  * Pure solver core: no DOM, no three.js. Runs unchanged in Node, a Web Worker and tests.
  */
-export * from './approximations';
-export * from './compare';
-export * from './cylinder';
-export * from './exact';
-export * from './geometry';
-export * from './placement';
-export * from './posture';
-export * from './procedures';
-export * from './roughness';
-export * from './simulation';
-export * from './stepOverRule';
-export * from './surfaceGeometry';
-export * from './trace';
-export * from './units';
-export * from './validate';
+
+export * from './input/units';
+export * from './input/validate';
+export * from './output/geometry';
+export * from './output/surfaceGeometry';
+export * from './procedures/approximations';
+export * from './procedures/compare';
+export * from './procedures/procedures';
+export * from './procedures/trace';
+export * from './roughness/roughness';
+export * from './simulation/simulation';
+export * from './surfaces/cylinder';
+export * from './surfaces/exact';
+export * from './tool/placement';
+export * from './tool/posture';
+export * from './tool/stepOverRule';

@@ -13,16 +13,8 @@
  * "Path interval of a filleted end mill", extended to tilt, zigzag passes and cylinders as the
  * README's "What it computes" says.
  */
-export type { ForwardComparison, InverseComparison } from './compare';
-export { compareForward, compareInverse, solveForwardRaw, solveInverseRaw } from './compare';
-export type { CylinderSurface, Surface, SurfaceAxis } from './cylinder';
-export type { ExactForward, ExactInverse } from './exact';
-export { exactForward, exactInverse } from './exact';
-export type { ApproximationKey, ProcedureInfo, ProcedureKey } from './procedures';
-export { PROCEDURE_KEYS, PROCEDURES } from './procedures';
-export type { RawTargetRaInput, Roughness, TargetRaInput } from './roughness';
-export { exactRoughness, exactRoughnessAtInterval, scallopHeightForRaMm, validateTargetRa } from './roughness';
-export type { LengthUnit } from './units';
+
+export type { LengthUnit } from './input/units';
 export type {
   AnyInputError,
   ForwardInput,
@@ -35,7 +27,7 @@ export type {
   RawToolInput,
   ToolInput,
   Validation,
-} from './validate';
+} from './input/validate';
 export {
   describeInputError,
   forwardInput,
@@ -44,4 +36,18 @@ export {
   scallopHeightLimits,
   validateForward,
   validateInverse,
-} from './validate';
+} from './input/validate';
+export type { ForwardComparison, InverseComparison } from './procedures/compare';
+export { compareForward, compareInverse, solveForwardRaw, solveInverseRaw } from './procedures/compare';
+export type { ApproximationKey, ProcedureInfo, ProcedureKey } from './procedures/procedures';
+export { PROCEDURE_KEYS, PROCEDURES } from './procedures/procedures';
+export type { RawTargetRaInput, Roughness, TargetRaInput } from './roughness/roughness';
+export {
+  exactRoughness,
+  exactRoughnessAtInterval,
+  scallopHeightForRaMm,
+  validateTargetRa,
+} from './roughness/roughness';
+export type { CylinderSurface, Surface, SurfaceAxis } from './surfaces/cylinder';
+export type { ExactForward, ExactInverse } from './surfaces/exact';
+export { exactForward, exactInverse } from './surfaces/exact';

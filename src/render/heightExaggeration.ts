@@ -5,7 +5,7 @@
  * of the tool above that band at true scale (so the tool keeps its shape). Only the drawing
  * changes: every number shown stays the solver's.
  */
-import { autoExaggeration } from '../core/drawingScale';
+import { autoExaggeration } from '../core/output/drawingScale';
 
 /**
  * The largest 1-2-5 factor (up to x1000, as the profile view offers) at which the scallop height

@@ -11,7 +11,7 @@
  * drag or a pinch reaches the view.
  */
 import { type PerspectiveCamera, Quaternion, Vector3 } from 'three';
-import { degToRad } from '../core/units';
+import { degToRad } from '../core/input/units';
 
 /** Radians turned per pixel dragged, as a fraction of the element's height (a full turn per height). */
 const TURN_PER_HEIGHT_RAD = 2 * Math.PI;

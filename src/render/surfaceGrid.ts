@@ -3,7 +3,7 @@
  * from the simulation's height field, heights exaggerated from the lowest point, and colours by
  * height along one ramp (the view's legend draws the same ramp).
  */
-import type { SimulationResult } from '../core/simulation';
+import type { SimulationResult } from '../core/simulation/simulation';
 
 /** The colour ramp, low to high (dark blue, teal, green, yellow), as 0-1 RGB stops. */
 export const HEIGHT_RAMP: readonly (readonly [number, number, number])[] = [

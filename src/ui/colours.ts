@@ -4,7 +4,13 @@
  * for the theme on screen. Stylesheets colour swatches, curves and headings by class, so the page
  * needs no inline style attribute (a strict Content-Security-Policy allows no `style-src-attr`).
  */
-import { CURVATURE_ROW_KEYS, CURVATURE_ROWS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../core/procedures';
+import {
+  CURVATURE_ROW_KEYS,
+  CURVATURE_ROWS,
+  PROCEDURE_KEYS,
+  PROCEDURES,
+  type ProcedureKey,
+} from '../core/procedures/procedures';
 import type { Theme } from './theme';
 
 export function applyProcedureColours(root: HTMLElement): void {

@@ -6,7 +6,7 @@
  * value is missing (invalid or pending input, typing); a copy is confirmed by "Copied" on the
  * button for COPIED_MS and by a polite live region that names the value and its unit.
  */
-import { type LengthUnit, unitSymbol } from '../core/units';
+import { type LengthUnit, unitSymbol } from '../core/input/units';
 
 /** How long the button says "Copied" (ms). */
 export const COPIED_MS = 1500;

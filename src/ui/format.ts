@@ -12,7 +12,7 @@ import {
   NO_VALUE,
   radToDeg,
   readableLengthUnit,
-} from '../core/units';
+} from '../core/input/units';
 
 export type Resolution = 'length' | 'height' | 'fine';
 

@@ -3,7 +3,7 @@
  * for a moment; a click (or Enter) on a results row selects it, and the selection stays until
  * clicked again. Reports the key to show; marks the results rows itself.
  */
-import { PROCEDURE_KEYS, type ProcedureKey } from '../core/procedures';
+import { PROCEDURE_KEYS, type ProcedureKey } from '../core/procedures/procedures';
 
 function keyOf(target: EventTarget | null): ProcedureKey | null {
   const el = target instanceof Element ? target.closest<HTMLElement>('[data-procedure]') : null;

@@ -1,13 +1,14 @@
 /**
  * The lookup table download (`download-table`): the exact step-over of the tool and pattern on
- * screen over a grid of scallop heights x lead angles x tilts (core/lookupTable.ts), computed by
+ * screen over a grid of scallop heights x lead angles x tilts (core/output/lookupTable.ts), computed by
  * the worker's `table` job on its own worker, saved as a CSV in the command line's batch format
  * (mm, full precision). The button is enabled only while the inputs on screen make a valid
  * question; the file answers the tool, pattern and surface asked for at the click (its name says
  * which), and a reply is saved only if it echoes that request.
  */
-import { lookupGrid } from '../core/lookupTable';
-import { formatInputNumber } from '../core/units';
+
+import { formatInputNumber } from '../core/input/units';
+import { lookupGrid } from '../core/output/lookupTable';
 import type { RestartInfo } from '../worker/client';
 import { type SolveRequest, sameTableRequest, type TableReply, type TableRequest } from '../worker/protocol';
 import { tableClient } from '../worker/workers';

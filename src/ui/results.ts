@@ -4,7 +4,8 @@
  * notes. It draws exactly what `Shown` says: a reply to the inputs on screen; the last one marked
  * stale while a newer one is awaited or the solver gave up; or dashes for invalid inputs.
  */
-import type { Surface } from '../core/cylinder';
+
+import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
 import {
   APPROXIMATION_KEYS,
   CURVATURE_ROWS,
@@ -12,8 +13,8 @@ import {
   PROCEDURE_KEYS,
   PROCEDURES,
   type ProcedureKey,
-} from '../core/procedures';
-import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/units';
+} from '../core/procedures/procedures';
+import type { Surface } from '../core/surfaces/cylinder';
 import type { CurvatureRow, ProcedureNote, ProcedureRow, SolveMode, SolveReply } from '../worker/protocol';
 import { setCopyValue } from './copy';
 import { html } from './dom';

@@ -5,9 +5,7 @@
  * L below the widest step-over). Pure (no DOM).
  */
 
-import { minConcaveRadiusMm, PLANE, type Surface } from '../core/cylinder';
-import { maxRaCachedMm } from '../core/raTarget';
-import { fromMm, toMm } from '../core/units';
+import { fromMm, toMm } from '../core/input/units';
 import {
   MAX_SURFACE_RADIUS_MM,
   MAX_TOOL_RADIUS_MM,
@@ -16,7 +14,9 @@ import {
   maxIntervalMm,
   scallopHeightLimits,
   type ToolInput,
-} from '../core/validate';
+} from '../core/input/validate';
+import { maxRaCachedMm } from '../core/roughness/raTarget';
+import { minConcaveRadiusMm, PLANE, type Surface } from '../core/surfaces/cylinder';
 import { type CalculatorState, type FieldKey, formatField, parseField, radiusField, sizeIsDiameter } from './state';
 
 export interface SliderRange {

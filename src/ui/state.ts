@@ -3,7 +3,6 @@
  * tested in Node. Field values are kept as text so an invalid entry is never lost.
  */
 
-import type { SurfaceAxis } from '../core/cylinder';
 import {
   FIELDS,
   type FieldId,
@@ -13,8 +12,9 @@ import {
   type PageFieldKey,
   urlParamOf,
 } from '../core/input/fields';
-import { formatInputNumber, fromMm, type LengthUnit, toMm } from '../core/units';
-import type { PassPattern } from '../core/validate';
+import { formatInputNumber, fromMm, type LengthUnit, toMm } from '../core/input/units';
+import type { PassPattern } from '../core/input/validate';
+import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
 
 export type Unit = LengthUnit;

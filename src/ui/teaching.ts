@@ -4,7 +4,7 @@
  * they never delay the results or the 3D frame. The views are drawn only from a reply to the
  * inputs on screen; otherwise the panel is marked out of date.
  */
-import type { ProcedureKey } from '../core/procedures';
+import type { ProcedureKey } from '../core/procedures/procedures';
 import type { RestartInfo } from '../worker/client';
 import type { SolveRequest, TeachReply } from '../worker/protocol';
 import { teachClient } from '../worker/workers';

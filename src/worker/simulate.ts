@@ -1,15 +1,15 @@
 /**
- * The `simulate` job: the passes simulated on a height field (core/simulation.ts) at the exact
+ * The `simulate` job: the passes simulated on a height field (core/simulation/simulation.ts) at the exact
  * step-over of a request, beside the exact cusp and roughness it checks. Plain data in and out,
  * tested in Node; the worker (solver.worker.ts) runs it with a stop signal so that the next
  * input cancels it (latest wins). It yields between the simulation's steps, so a cancel message
  * gets through, and reports progress once it has run longer than a frame.
  * The reply echoes its request (the page's SolveRequest); its arrays are transferred.
  */
-import { compareForward, compareInverse } from '../core/compare';
-import { forwardOfRaTarget } from '../core/raTarget';
-import { exactRoughness, exactRoughnessAtInterval, type Roughness } from '../core/roughness';
-import { type SimulationResult, startSimulation } from '../core/simulation';
+import { compareForward, compareInverse } from '../core/procedures/compare';
+import { forwardOfRaTarget } from '../core/roughness/raTarget';
+import { exactRoughness, exactRoughnessAtInterval, type Roughness } from '../core/roughness/roughness';
+import { type SimulationResult, startSimulation } from '../core/simulation/simulation';
 import { revalidate } from './api';
 import type { InputError, SolveRequest } from './protocol';
 
@@ -17,7 +17,7 @@ import type { InputError, SolveRequest } from './protocol';
 export const PAGE_SIMULATION_CELLS = 512;
 
 /**
- * What the simulation measured (mm; core/simulation.ts), beside the exact values it checks:
+ * What the simulation measured (mm; core/simulation/simulation.ts), beside the exact values it checks:
  * `heightsMm` and `trace` are transferred.
  */
 export type SimulationSummary = Pick<

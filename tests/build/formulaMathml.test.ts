@@ -5,7 +5,7 @@ import {
   renderAllFormulas,
   renderFormulaTemplate,
 } from '../../src/build/formulaMathml';
-import { PROCEDURE_KEYS } from '../../src/core/procedures';
+import { PROCEDURE_KEYS } from '../../src/core/procedures/procedures';
 import { FORMULA_TEMPLATES, slotClass, slotNames } from '../../src/ui/views/formulaTemplates';
 
 describe('formula MathML, typeset at build time', () => {

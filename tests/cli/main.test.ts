@@ -2,7 +2,6 @@ import { spawn } from 'node:child_process';
 import { closeSync, openSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
-import { exactHalfIntervalMm } from '../../src/core/exact';
 import {
   compareForward,
   compareInverse,
@@ -12,7 +11,8 @@ import {
   scallopHeightLimits,
   validateForward,
 } from '../../src/core/index';
-import { PAPER_CONDITIONS } from '../../src/core/paper';
+import { PAPER_CONDITIONS } from '../../src/core/procedures/paper';
+import { exactHalfIntervalMm } from '../../src/core/surfaces/exact';
 import { BIN, checkResultFields, logUniform, pick, random, randomHeight, randomTool, run } from './helpers';
 
 const STACK = /\n\s+at |node:internal|Error:/;

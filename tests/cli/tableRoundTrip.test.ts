@@ -5,8 +5,8 @@
  */
 import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
-import { PLANE, type Surface } from '../../src/core/cylinder';
-import { lookupGrid } from '../../src/core/lookupTable';
+import { lookupGrid } from '../../src/core/output/lookupTable';
+import { PLANE, type Surface } from '../../src/core/surfaces/cylinder';
 import { table } from '../../src/worker/jobs/table';
 import { run } from './helpers';
 

@@ -19,8 +19,8 @@ import {
   minConcaveRadiusMm,
   type ToolInput,
 } from '../../src/core/index';
-import { LOOKUP_HEADER } from '../../src/core/lookupTable';
-import { formatInputNumber, fromMm } from '../../src/core/units';
+import { formatInputNumber, fromMm } from '../../src/core/input/units';
+import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
 import { formatLen, formatLenUnit } from '../../src/ui/format';
 import { paintedFraction, SHOTS, STRICT_CSP, useSite } from './harness';
 

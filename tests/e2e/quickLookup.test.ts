@@ -9,9 +9,9 @@ import { readFileSync } from 'node:fs';
 import type { BrowserContext, Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
-import { exactForward } from '../../src/core/exact';
-import { LOOKUP_HEADER } from '../../src/core/lookupTable';
-import { forwardInput, scallopHeightLimits } from '../../src/core/validate';
+import { forwardInput, scallopHeightLimits } from '../../src/core/input/validate';
+import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
+import { exactForward } from '../../src/core/surfaces/exact';
 import { ROOT, SHOTS, useSite } from './harness';
 
 const site = useSite('docs/quick-lookup');

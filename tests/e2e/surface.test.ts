@@ -6,9 +6,9 @@
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { exactForward, forwardInput } from '../../src/core/index';
-import { forwardOfRaTarget, validateRaTarget } from '../../src/core/raTarget';
-import { exactRoughness, maxRaMm } from '../../src/core/roughness';
-import { formatInputNumber, fromMm, toMm } from '../../src/core/units';
+import { formatInputNumber, fromMm, toMm } from '../../src/core/input/units';
+import { forwardOfRaTarget, validateRaTarget } from '../../src/core/roughness/raTarget';
+import { exactRoughness, maxRaMm } from '../../src/core/roughness/roughness';
 import { animationFrames, SHOTS, SOLVER, useSite, VIEWS_WORKER, workerIdle } from './harness';
 
 const { open } = useSite('docs/surface');

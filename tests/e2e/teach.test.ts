@@ -6,9 +6,9 @@
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { compareForward } from '../../src/core/index';
-import { stepOverSweep } from '../../src/core/teaching';
-import { formatPercent, formatSignificant } from '../../src/core/units';
-import { forwardInput } from '../../src/core/validate';
+import { formatPercent, formatSignificant } from '../../src/core/input/units';
+import { forwardInput } from '../../src/core/input/validate';
+import { stepOverSweep } from '../../src/core/procedures/teaching';
 import { groupSteps, sceneToleranceMm } from '../../src/ui/views/stepGroups';
 import { traceFrames } from '../../src/worker/api';
 import { SHOTS, useSite } from './harness';

@@ -10,7 +10,7 @@
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { exactForward } from '../../src/core/index';
-import { forwardInput } from '../../src/core/validate';
+import { forwardInput } from '../../src/core/input/validate';
 import { formatLenUnit } from '../../src/ui/format';
 import { animationFrames, frames, SHOTS, sceneIdle, useSite } from './harness';
 

@@ -3,10 +3,10 @@
  * content, follows a slider change, and shows the solver's numbers. Screenshots are kept.
  */
 import { describe, expect, it } from 'vitest';
-import { sekineModel } from '../../src/core/approximations';
-import { autoExaggeration } from '../../src/core/drawingScale';
 import { compareForward, exactHalfIntervalMm, exactScallopHeightMm, traceProcedure } from '../../src/core/index';
-import { PAPER_CONDITIONS } from '../../src/core/paper';
+import { autoExaggeration } from '../../src/core/output/drawingScale';
+import { sekineModel } from '../../src/core/procedures/approximations';
+import { PAPER_CONDITIONS } from '../../src/core/procedures/paper';
 import { SHOTS, useSite } from './harness';
 
 const { open } = useSite('docs/views');

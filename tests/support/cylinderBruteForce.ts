@@ -1,5 +1,5 @@
 /**
- * Brute-force cusp heights on a cylinder, sharing nothing with src/core/cylinder.ts: points of the
+ * Brute-force cusp heights on a cylinder, sharing nothing with src/core/surfaces/cylinder.ts: points of the
  * real tool surface (the lower outer quarter of the torus, the bottom disk and, on request, the
  * shank, in the tool's posture; placement.ts only places the tool) are swept as the passes run,
  * and the material left is read on bins of the cross-section.
@@ -16,8 +16,9 @@
  * its width times the slope, and by the sample spacing along the surface; both shrink with the
  * resolution.
  */
-import { placeTool } from '../../src/core/placement';
-import type { PassPattern, ToolInput } from '../../src/core/validate';
+
+import type { PassPattern, ToolInput } from '../../src/core/input/validate';
+import { placeTool } from '../../src/core/tool/placement';
 
 export interface BruteForceCylinder {
   /** Radial heights of the cusps between pass k and k + 1, mm. */

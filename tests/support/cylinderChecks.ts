@@ -3,9 +3,9 @@
  * limits against the polished brute force of reference/cylinderReach.ts.
  */
 import { expect } from 'vitest';
-import { type CylinderSurface, cylinderSolver } from '../../src/core/cylinder';
-import { exactForward, exactIntervalMm } from '../../src/core/exact';
-import { forwardInput, type PassPattern, type ToolInput } from '../../src/core/validate';
+import { forwardInput, type PassPattern, type ToolInput } from '../../src/core/input/validate';
+import { type CylinderSurface, cylinderSolver } from '../../src/core/surfaces/cylinder';
+import { exactForward, exactIntervalMm } from '../../src/core/surfaces/exact';
 import { type CylinderReachReference, cylinderReach } from './reference/cylinderReach';
 
 /** Step-overs agree with the reference to this, mm (issue 7). */

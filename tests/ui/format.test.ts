@@ -1,6 +1,6 @@
 /** Numbers as the page shows them: at least four significant digits, the user's unit, never -0 or NaN. */
 import { describe, expect, it } from 'vitest';
-import { formatAngleDeg, formatInputNumber, formatPercent } from '../../src/core/units';
+import { formatAngleDeg, formatInputNumber, formatPercent } from '../../src/core/input/units';
 import {
   formatDeg,
   formatLen,

@@ -1,7 +1,7 @@
 /** The lookup table's file name and status line: they name the tool, the pattern and the surface. */
 import { describe, expect, it } from 'vitest';
-import { PLANE } from '../../src/core/cylinder';
-import { lookupGrid } from '../../src/core/lookupTable';
+import { lookupGrid } from '../../src/core/output/lookupTable';
+import { PLANE } from '../../src/core/surfaces/cylinder';
 import { tableFileName } from '../../src/ui/lookupDownload';
 
 const base = { toolRadiusMm: 3, cornerRadiusMm: 1, pattern: 'one-way' as const };

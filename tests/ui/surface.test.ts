@@ -4,8 +4,8 @@
  * errors show. Pure: no DOM.
  */
 import { describe, expect, it } from 'vitest';
-import { minConcaveRadiusMm } from '../../src/core/cylinder';
-import { formatInputNumber, fromMm, toMm } from '../../src/core/units';
+import { formatInputNumber, fromMm, toMm } from '../../src/core/input/units';
+import { minConcaveRadiusMm } from '../../src/core/surfaces/cylinder';
 import { buildRequest, fieldMessages, fieldOfError } from '../../src/ui/request';
 import { sliderRanges } from '../../src/ui/sliders';
 import { convertState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';

@@ -1,7 +1,7 @@
 /** The target choice (h or Ra) in the state, the URL and the request. */
 import { describe, expect, it } from 'vitest';
-import { maxRaMm } from '../../src/core/roughness';
-import { formatInputNumber } from '../../src/core/units';
+import { formatInputNumber } from '../../src/core/input/units';
+import { maxRaMm } from '../../src/core/roughness/roughness';
 import { buildRequest, fieldMessages } from '../../src/ui/request';
 import { sliderRanges } from '../../src/ui/sliders';
 import { convertState, parseUrl, toSearch, withField } from '../../src/ui/state';

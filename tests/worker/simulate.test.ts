@@ -1,7 +1,7 @@
 /** The `simulate` job in Node: finite numbers, the request echoed, cancellation, progress. */
 import { describe, expect, it } from 'vitest';
 import { exactForward, exactRoughness, forwardInput, inverseInput, type ToolInput } from '../../src/core/index';
-import { forwardOfRaTarget, validateRaTarget } from '../../src/core/raTarget';
+import { forwardOfRaTarget, validateRaTarget } from '../../src/core/roughness/raTarget';
 import type { SolveRequest } from '../../src/worker/protocol';
 import { type SimulateReply, SimulationRunner, simulate, simulationTransferables } from '../../src/worker/simulate';
 

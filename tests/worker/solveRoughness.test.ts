@@ -9,7 +9,7 @@ import {
   inverseInput,
   type ToolInput,
 } from '../../src/core/index';
-import { forwardOfRaTarget, validateRaTarget } from '../../src/core/raTarget';
+import { forwardOfRaTarget, validateRaTarget } from '../../src/core/roughness/raTarget';
 import { solve, teach } from '../../src/worker/api';
 import { type SolveRequest, sameRequest } from '../../src/worker/protocol';
 

@@ -1,8 +1,8 @@
 /** The worker's `table` job in Node: it echoes its request, revalidates the tool, bounds the grid. */
 import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
-import { PLANE } from '../../src/core/cylinder';
-import { lookupGrid, lookupTable } from '../../src/core/lookupTable';
+import { lookupGrid, lookupTable } from '../../src/core/output/lookupTable';
+import { PLANE } from '../../src/core/surfaces/cylinder';
 import { MAX_GRID_AXIS, table } from '../../src/worker/jobs/table';
 import { sameTableRequest, type TableRequest } from '../../src/worker/protocol';
 import { bruteForceCylinder } from '../support/cylinderBruteForce';

@@ -3,7 +3,7 @@
  * slope of 0 or a raster angle of 90 gives exactly 0, not 6e-17, and the posture has no
  * spurious lead of 4e-15 degrees). Elsewhere `Math.sin(deg * pi / 180)`.
  */
-import { degToRad } from '../units';
+import { degToRad } from '../input/units';
 
 /** sin of `angleDeg` (degrees, any finite value); exactly 0 or +-1 at multiples of 90. */
 export function sinDeg(angleDeg: number): number {

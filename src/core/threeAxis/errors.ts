@@ -4,7 +4,7 @@
  * page can word them in the user's unit later. Never thrown: every solver returns either an
  * answer or one of these.
  */
-import { formatSignificant } from '../units';
+import { formatSignificant } from '../input/units';
 
 /** The inputs a three-axis error can name. */
 export type ThreeAxisField =

@@ -16,7 +16,7 @@
  *   waterline, typed as the step-down `dz` (a common practice to compare; on a flat floor a
  *   step-down means nothing, so the waterline sweep has no step and no cusp at slope 0).
  */
-import { flankLimits, postureShape } from '../posture';
+import { flankLimits, postureShape } from '../tool/posture';
 import type { ThreeAxisErrorCode } from './errors';
 import { slopedPlaneForward, slopedPlaneInverse, type ThreeAxisPasses } from './slopedPlane';
 import { slopePosture } from './slopePosture';

@@ -13,7 +13,7 @@
  * flat end, Rcr = 0, has no scallop flank on the uphill side at any h once it is tilted). A
  * vertical wall (alpha = 90) is cut flat by the side: no scallop, no step.
  */
-import { flankLimits, flankWidthMm, type PostureShape, postureShape } from '../posture';
+import { flankLimits, flankWidthMm, type PostureShape, postureShape } from '../tool/posture';
 import { sinDeg } from './angles';
 import {
   checkHeight,

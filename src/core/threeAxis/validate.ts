@@ -9,8 +9,9 @@
  * sets them), a raster angle with waterline passes, a feed or cross radius with raster passes, a
  * horizontal step with waterline passes and a step-down with raster passes.
  */
-import { isNumberText } from '../csvWrite';
+
 import { FIELDS } from '../input/fields';
+import { isNumberText } from '../output/csvWrite';
 import type { ThreeAxisError, ThreeAxisErrorCode, ThreeAxisField } from './errors';
 import { type SlopedPlaneCase, slopedPlaneForward, slopedPlaneInverse, type ThreeAxisPasses } from './slopedPlane';
 import { type RevolutionCase, waterlineForward, waterlineInverse } from './waterlineRevolution';

@@ -23,7 +23,7 @@
  *
  * Lengths mm, angles degrees at the interface.
  */
-import { radToDeg } from '../units';
+import { radToDeg } from '../input/units';
 import { cosDeg, sinDeg } from './angles';
 import {
   checkHeight,

@@ -4,7 +4,7 @@
  * the cusp points on the h pseudo surface (where the neighbouring passes' profiles meet).
  */
 import { type Mesh, type Object3D, SphereGeometry } from 'three';
-import { circleInto } from '../../core/sceneMarks';
+import { circleInto } from '../../core/output/sceneMarks';
 import { type CuspGeometry, LOOP_MAX_POINTS } from '../../worker/protocol';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';

@@ -5,7 +5,7 @@
  * are drawn through the state's height map.
  */
 import { BufferAttribute, BufferGeometry, DoubleSide, Mesh, MeshBasicMaterial, type Object3D } from 'three';
-import { patchIndices, surfacePatch } from '../../core/surfaceGeometry';
+import { patchIndices, surfacePatch } from '../../core/output/surfaceGeometry';
 import { drawHeightsInPlace } from '../heightExaggeration';
 import { legend } from '../labelLayer';
 import { COLOURS, type Drawable, type DrawState, disposeObjects } from './parts';

@@ -5,8 +5,8 @@
  * contact, across the feed.
  */
 import type { Line, Object3D } from 'three';
-import { dimensionPointCount, surfaceDimensionInto } from '../../core/sceneMarks';
-import { surfacePoint } from '../../core/surfaceGeometry';
+import { dimensionPointCount, surfaceDimensionInto } from '../../core/output/sceneMarks';
+import { surfacePoint } from '../../core/output/surfaceGeometry';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import { COLOURS, type Drawable, type DrawState, disposeObjects, finishLine, lineOf, positionsOf } from './parts';

@@ -3,7 +3,7 @@
  * arc around a cylinder whose axis runs across the feed).
  */
 import type { Line, Object3D } from 'three';
-import { surfacePolylineInto } from '../../core/surfaceGeometry';
+import { surfacePolylineInto } from '../../core/output/surfaceGeometry';
 import { legend } from '../labelLayer';
 import { COLOURS, type Drawable, type DrawState, disposeObjects, finishLine, lineOf, positionsOf } from './parts';
 

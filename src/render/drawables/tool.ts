@@ -11,8 +11,8 @@ import {
   MeshStandardMaterial,
   type Object3D,
 } from 'three';
-import { passMatrix } from '../../core/surfaceGeometry';
-import { toolMeshIndices } from '../../core/toolMesh';
+import { passMatrix } from '../../core/output/surfaceGeometry';
+import { toolMeshIndices } from '../../core/tool/toolMesh';
 import { TOOL_RADIAL_SEGMENTS } from '../../worker/protocol';
 import { drawHeightsInPlace } from '../heightExaggeration';
 import { legend } from '../labelLayer';

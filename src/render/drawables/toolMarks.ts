@@ -3,7 +3,7 @@
  * O, and the tool axis from where it meets the surface (its foot, marked) up the shank.
  */
 import { type Object3D, SphereGeometry } from 'three';
-import { axisFoot } from '../../core/surfaceGeometry';
+import { axisFoot } from '../../core/output/surfaceGeometry';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import {

@@ -4,7 +4,7 @@
  * nothing while no frame is shown.
  */
 import { BufferAttribute, BufferGeometry, type Object3D, Points, PointsMaterial, SphereGeometry } from 'three';
-import { circleInto } from '../../core/sceneMarks';
+import { circleInto } from '../../core/output/sceneMarks';
 import type { TraceFrame } from '../../worker/protocol';
 import { drawnHeightMm, type HeightMap } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';

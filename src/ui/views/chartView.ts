@@ -5,8 +5,9 @@
  * chart has a legend with every procedure's value at the current angle, and says where a
  * procedure has no answer, and why.
  */
-import { APPROXIMATION_KEYS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures';
-import { formatSignificant, fromMm, unitSymbol } from '../../core/units';
+
+import { formatSignificant, fromMm, unitSymbol } from '../../core/input/units';
+import { APPROXIMATION_KEYS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import type { Sweep, SweepGap } from '../../worker/protocol';
 import { formatDeg, formatLen, formatSignedLen, formatSignedPercent } from '../format';
 import { html, type TeachingView, type ViewContext } from './common';

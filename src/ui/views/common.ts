@@ -1,6 +1,6 @@
 /** Shared pieces of the teaching views. */
 import type { FIELDS } from '../../core/input/fields';
-import type { ProcedureKey } from '../../core/procedures';
+import type { ProcedureKey } from '../../core/procedures/procedures';
 import type { TeachReply } from '../../worker/protocol';
 import type { Unit } from '../state';
 

@@ -1,5 +1,5 @@
 /** Served by src/build/formulaMathml.ts: each procedure's equations as MathML, slots marked `slot-<name>`. */
 declare module 'virtual:formula-mathml' {
-  const mathml: Readonly<Record<import('../../core/procedures').ProcedureKey, readonly string[]>>;
+  const mathml: Readonly<Record<import('../../core/procedures/procedures').ProcedureKey, readonly string[]>>;
   export default mathml;
 }

@@ -2,8 +2,9 @@
  * The numbers that fill the formulas' slots (formulaTemplates.ts), lengths in the user's unit.
  * Pure: no DOM.
  */
-import type { ProcedureKey } from '../../core/procedures';
-import { formatSignificant, fromMm, type LengthUnit, radToDeg } from '../../core/units';
+
+import { formatSignificant, fromMm, type LengthUnit, radToDeg } from '../../core/input/units';
+import type { ProcedureKey } from '../../core/procedures/procedures';
 import type { FormulaModels } from '../../worker/protocol';
 
 /** What the slots are filled from: the forward state (mm, degrees), its exact answer and the models. */

@@ -4,8 +4,9 @@
  * (src/build/formulaMathml.ts), so the page ships MathML, not a TeX engine.
  * Pure data with no runtime imports: the Vite config (the build step) loads it natively.
  */
-import type { ProcedureKey } from '../../core/procedures';
-import type { PassPattern } from '../../core/validate';
+
+import type { PassPattern } from '../../core/input/validate';
+import type { ProcedureKey } from '../../core/procedures/procedures';
 
 /** Slot syntax inside a template: `{{name}}`, name in [A-Za-z0-9]. */
 export const SLOT_PATTERN = /\{\{([A-Za-z0-9]+)\}\}/g;

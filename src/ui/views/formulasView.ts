@@ -4,8 +4,8 @@
  * fills the slots.
  */
 import mathml from 'virtual:formula-mathml';
-import { PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures';
-import { unitSymbol } from '../../core/units';
+import { unitSymbol } from '../../core/input/units';
+import { PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import { formatSignedLen } from '../format';
 import { html, type TeachingView, untilted, type ViewContext } from './common';
 import { formulaSlotValues } from './formulaSlots';

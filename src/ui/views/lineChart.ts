@@ -4,7 +4,7 @@
  * dashed marker at the current angle. Every colour comes from the stylesheet through classes and
  * `data-procedure` (theme custom properties), so the chart follows the theme and prints crisply.
  */
-import type { ProcedureKey } from '../../core/procedures';
+import type { ProcedureKey } from '../../core/procedures/procedures';
 import { extent, linearScale, linePath, logScale, type Scale, tickLabel } from './chartScale';
 import { svg } from './common';
 

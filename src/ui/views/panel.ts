@@ -2,7 +2,7 @@
  * The teaching views in one tabbed panel. Views are built on first use; `?view=` opens one.
  * The panel is told when its data no longer answers the inputs on screen, and then says so.
  */
-import type { ProcedureKey } from '../../core/procedures';
+import type { ProcedureKey } from '../../core/procedures/procedures';
 import { ChartView } from './chartView';
 import { html, type TeachingView, type ViewContext, type ViewId } from './common';
 import { FormulasView } from './formulasView';

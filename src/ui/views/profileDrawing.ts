@@ -12,11 +12,11 @@
  * map and its pass profile (data), not a branch here.
  */
 
-import type { Surface } from '../../core/cylinder';
-import { PLANE } from '../../core/cylinder';
-import { PROCEDURE_KEYS, type ProcedureKey } from '../../core/procedures';
-import { lowestPassHeight, monotoneProfile, sectionRadiusMm } from '../../core/sectionProfile';
-import { fromSurfaceSection, toSurfaceSection } from '../../core/surfaceGeometry';
+import { lowestPassHeight, monotoneProfile, sectionRadiusMm } from '../../core/output/sectionProfile';
+import { fromSurfaceSection, toSurfaceSection } from '../../core/output/surfaceGeometry';
+import { PROCEDURE_KEYS, type ProcedureKey } from '../../core/procedures/procedures';
+import type { Surface } from '../../core/surfaces/cylinder';
+import { PLANE } from '../../core/surfaces/cylinder';
 import type { CylinderCurves, ProfileCurveSet } from '../../worker/protocol';
 import { formatLen } from '../format';
 import type { Unit } from '../state';

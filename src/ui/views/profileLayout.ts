@@ -4,7 +4,7 @@
  * how tall the plot grows for an exaggerated drawing. Display coordinates are the SVG's: x across
  * the feed (mm), y down (mm, heights times the exaggeration k).
  */
-import { EXAGGERATION_STEPS } from '../../core/drawingScale';
+import { EXAGGERATION_STEPS } from '../../core/output/drawingScale';
 
 /** A box in display coordinates (the SVG's viewBox). */
 export interface Box {

@@ -3,7 +3,7 @@
  * across the feed at true scale, and for heights when they are exaggerated (the bar drawn k times
  * taller, and saying so). Redrawn with every zoom and pan, so they keep their size on screen.
  */
-import { scaleBar } from '../../core/drawingScale';
+import { scaleBar } from '../../core/output/drawingScale';
 import type { Unit } from '../state';
 import { svg } from './common';
 import type { Box } from './profileLayout';

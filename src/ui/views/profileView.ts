@@ -15,16 +15,16 @@
  * pan and zoom profilePanZoom.ts.
  */
 
-import type { Surface } from '../../core/cylinder';
-import { autoExaggeration } from '../../core/drawingScale';
+import { autoExaggeration } from '../../core/output/drawingScale';
+import { sectionRadiusMm } from '../../core/output/sectionProfile';
 import {
   CURVATURE_ROW_KEYS,
   CURVATURE_ROWS,
   PROCEDURE_KEYS,
   PROCEDURES,
   type ProcedureKey,
-} from '../../core/procedures';
-import { sectionRadiusMm } from '../../core/sectionProfile';
+} from '../../core/procedures/procedures';
+import type { Surface } from '../../core/surfaces/cylinder';
 import { formatLenUnit } from '../format';
 import type { Unit } from '../state';
 import { html, svg, type TeachingView, untilted, type ViewContext } from './common';

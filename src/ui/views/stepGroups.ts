@@ -6,7 +6,7 @@
  * section, a flank's convergence on its last search point) is marked so its caption says why.
  * Pure; lengths mm.
  */
-import type { Vec3 } from '../../core/vec';
+import type { Vec3 } from '../../core/math/vec';
 import type { TraceFrame } from '../../worker/protocol';
 
 /** One step of the step-through: a run of frames that look the same. */

@@ -4,8 +4,9 @@
  * single-contact section, the candidate points P_hp[i] and the converged P_hp), with a caption
  * per step written here, in the user's unit.
  */
-import type { ProcedureKey } from '../../core/procedures';
-import { formatSignificant, unitSymbol } from '../../core/units';
+
+import { formatSignificant, unitSymbol } from '../../core/input/units';
+import type { ProcedureKey } from '../../core/procedures/procedures';
 import type { TraceFrame } from '../../worker/protocol';
 import { formatLen, formatRadAsDeg } from '../format';
 import { html, type TeachingView, type TeachOk, untilted, type ViewContext } from './common';

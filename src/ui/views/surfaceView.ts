@@ -8,9 +8,9 @@
  * `style-src 'self'`).
  */
 
-import { autoExaggeration } from '../../core/drawingScale';
-import type { ProcedureKey } from '../../core/procedures';
-import { formatSignificant, unitSymbol } from '../../core/units';
+import { formatSignificant, unitSymbol } from '../../core/input/units';
+import { autoExaggeration } from '../../core/output/drawingScale';
+import type { ProcedureKey } from '../../core/procedures/procedures';
 import { HEIGHT_RAMP } from '../../render/surfaceGrid';
 import { SurfaceScene } from '../../render/surfaceMesh';
 import type { SimulateReply } from '../../worker/simulate';

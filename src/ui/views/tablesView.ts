@@ -2,8 +2,8 @@
  * The paper's Tables 2-5 regenerated beside the printed values. A computed value that does
  * not round to the printed digits is highlighted; clicking a condition loads it.
  */
-import { PROCEDURES, type ProcedureKey } from '../../core/procedures';
-import type { PaperTableRow } from '../../core/teaching';
+import { PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
+import type { PaperTableRow } from '../../core/procedures/teaching';
 import { formatLen } from '../format';
 import { html, type TeachingView, type ViewContext } from './common';
 

@@ -3,8 +3,9 @@
  * two cusps of this pass (where they stand and how high), from the forward or the inverse
  * comparison. Mm.
  */
-import type { compareForward, compareInverse } from '../../core/compare';
-import { type ForwardInput, type InverseInput, maxIntervalMm } from '../../core/validate';
+
+import { type ForwardInput, type InverseInput, maxIntervalMm } from '../../core/input/validate';
+import type { compareForward, compareInverse } from '../../core/procedures/compare';
 import type { Cusp, ExactSummary } from '../protocol';
 
 /** The exact answer of a forward comparison: on zigzag passes, the cusps at L/2 either side. */

@@ -3,15 +3,16 @@
  * phi, D0, the contact) and each approximation's model with its L/2 at h, or null where its model
  * does not apply. Mm and radians.
  */
-import { contactOffsetMm, flankAtHeight, shapeOfTool } from '../../core/posture';
+
+import type { ForwardInput } from '../../core/input/validate';
 import {
   APPROXIMATION_KEYS,
   APPROXIMATIONS,
   type ApproximationFunctions,
   type ApproximationKey,
   type ForwardModels,
-} from '../../core/procedures';
-import type { ForwardInput } from '../../core/validate';
+} from '../../core/procedures/procedures';
+import { contactOffsetMm, flankAtHeight, shapeOfTool } from '../../core/tool/posture';
 import type { FormulaModel, FormulaModels, FormulaShape } from '../protocol';
 
 /** One approximation's model and its L/2 at h (null where its model has none here). */

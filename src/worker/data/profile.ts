@@ -3,12 +3,13 @@
  * curve; on a cylinder also the pass's profile in surface coordinates and where each comparison
  * row (the plane's answer, the corrected procedures) puts the next pass. Mm.
  */
-import type { CurvatureComparison } from '../../core/compare';
-import { type CylinderSurface, revolvedProfile } from '../../core/cylinder';
-import { CORRECTED_KEYS, type CurvatureRowKey, correctedRowKey } from '../../core/procedures';
-import { toSurfaceSection } from '../../core/surfaceGeometry';
-import type { ProfileCurves } from '../../core/teaching';
-import type { ForwardInput } from '../../core/validate';
+
+import type { ForwardInput } from '../../core/input/validate';
+import { toSurfaceSection } from '../../core/output/surfaceGeometry';
+import type { CurvatureComparison } from '../../core/procedures/compare';
+import { CORRECTED_KEYS, type CurvatureRowKey, correctedRowKey } from '../../core/procedures/procedures';
+import type { ProfileCurves } from '../../core/procedures/teaching';
+import { type CylinderSurface, revolvedProfile } from '../../core/surfaces/cylinder';
 import type { CylinderCurves, ProfileCurveSet } from '../protocol';
 
 /** The curves the profile view draws on any surface. */

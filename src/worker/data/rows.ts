@@ -3,7 +3,9 @@
  * plane's answer and of each procedure corrected for the curvature; a row without a value says why
  * as data (ProcedureNote), which the page words in the user's unit. Mm.
  */
-import { combinedRadiusMm } from '../../core/approximations';
+
+import type { ForwardInput, InverseInput, ToolInput } from '../../core/input/validate';
+import { combinedRadiusMm } from '../../core/procedures/approximations';
 import type {
   CurvatureComparison,
   ForwardComparison,
@@ -11,8 +13,7 @@ import type {
   InverseComparison,
   InverseCurvatureComparison,
   InverseEstimate,
-} from '../../core/compare';
-import type { CylinderSurface } from '../../core/cylinder';
+} from '../../core/procedures/compare';
 import {
   APPROXIMATION_KEYS,
   type ApproximationKey,
@@ -21,8 +22,8 @@ import {
   CURVATURE_ROWS,
   correctedRowKey,
   modelCurve,
-} from '../../core/procedures';
-import type { ForwardInput, InverseInput, ToolInput } from '../../core/validate';
+} from '../../core/procedures/procedures';
+import type { CylinderSurface } from '../../core/surfaces/cylinder';
 import type { CurvatureRow, ExactSummary, ProcedureNote, ProcedureRow, ResultRow } from '../protocol';
 
 /** Where the forward problem's rows are measured: at h; the inverse's: at L/2. */

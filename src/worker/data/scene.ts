@@ -3,13 +3,14 @@
  * the section through each cusp point and the curves where the torus meets the cusp's height; on a
  * cylinder the cusp points on the offset surface. Mm.
  */
-import type { Surface } from '../../core/cylinder';
-import { cuspSection, intersectionLoops } from '../../core/geometry';
-import { placeTool } from '../../core/placement';
-import { flankAtHeight } from '../../core/posture';
-import { surfacePoint } from '../../core/surfaceGeometry';
-import { toolMesh } from '../../core/toolMesh';
-import { MIN_LENGTH_MM, type ToolInput } from '../../core/validate';
+
+import { MIN_LENGTH_MM, type ToolInput } from '../../core/input/validate';
+import { cuspSection, intersectionLoops } from '../../core/output/geometry';
+import { surfacePoint } from '../../core/output/surfaceGeometry';
+import type { Surface } from '../../core/surfaces/cylinder';
+import { placeTool } from '../../core/tool/placement';
+import { flankAtHeight } from '../../core/tool/posture';
+import { toolMesh } from '../../core/tool/toolMesh';
 import {
   type Cusp,
   type CuspGeometry,

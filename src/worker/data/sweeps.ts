@@ -3,8 +3,9 @@
  * dense at small angles) and along the tilt (-60 to 60 degrees, widened to the current one), each
  * through the current posture, with the runs of angles where a procedure has none and why. Mm, degrees.
  */
-import { stepOverSweep } from '../../core/teaching';
-import type { ForwardInput } from '../../core/validate';
+
+import type { ForwardInput } from '../../core/input/validate';
+import { stepOverSweep } from '../../core/procedures/teaching';
 import type { Sweep } from '../protocol';
 
 /** Samples per sweep (the current angle is added to them). */

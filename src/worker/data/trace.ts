@@ -3,11 +3,12 @@
  * frames (the section visited, d_s, the candidates, the converged P_hp), beside the exact solver's
  * widths. Mm and radians.
  */
-import { exactForward } from '../../core/exact';
-import { ringTangent, sectionCentre } from '../../core/placement';
-import type { Flank } from '../../core/posture';
-import { traceProcedure } from '../../core/trace';
-import type { ForwardInput } from '../../core/validate';
+
+import type { ForwardInput } from '../../core/input/validate';
+import { traceProcedure } from '../../core/procedures/trace';
+import { exactForward } from '../../core/surfaces/exact';
+import { ringTangent, sectionCentre } from '../../core/tool/placement';
+import type { Flank } from '../../core/tool/posture';
 import type { TeachData, TraceFrame } from '../protocol';
 
 /** The trace of the paper's procedure on both flanks as frames for the 3D step-through. */

@@ -5,8 +5,8 @@
  */
 import { PASS_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
-import { validateRaTarget } from '../../core/raTarget';
-import { type InputError, validateForward, validateInverse } from '../../core/validate';
+import { type InputError, validateForward, validateInverse } from '../../core/input/validate';
+import { validateRaTarget } from '../../core/roughness/raTarget';
 import { QUESTION_FIELD, type SolveRequest } from '../protocol';
 
 /** The request's input validated again, or its errors (null when it is valid). */

@@ -3,9 +3,9 @@
  * table's rows, and a cylinder's comparison rows), the 3D scene's geometry and the roughness. The
  * reply echoes its request; a bad request gets a typed error reply, never an exception.
  */
-import { compareForward, compareInverse } from '../../core/compare';
-import { forwardOfRaTarget, roughnessSummary } from '../../core/raTarget';
-import { exactRoughness, exactRoughnessAtInterval, type Roughness } from '../../core/roughness';
+import { compareForward, compareInverse } from '../../core/procedures/compare';
+import { forwardOfRaTarget, roughnessSummary } from '../../core/roughness/raTarget';
+import { exactRoughness, exactRoughnessAtInterval, type Roughness } from '../../core/roughness/roughness';
 import { exactOfForward, exactOfInverse } from '../data/exact';
 import { forwardCurvatureRows, forwardRows, inverseCurvatureRows, inverseRows } from '../data/rows';
 import { sceneGeometry } from '../data/scene';

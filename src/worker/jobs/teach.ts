@@ -3,10 +3,11 @@
  * forward state at the solved h): the profile's curves, the chart's sweeps, the step-through's
  * frames, the formulas' models and the paper's tables. The reply echoes its request.
  */
-import { compareForward, compareInverse } from '../../core/compare';
-import { forwardOfRaTarget } from '../../core/raTarget';
-import { type PaperTableRow, paperTables, profileCurves } from '../../core/teaching';
-import { type ForwardInput, forwardInput, MIN_LENGTH_MM } from '../../core/validate';
+
+import { type ForwardInput, forwardInput, MIN_LENGTH_MM } from '../../core/input/validate';
+import { compareForward, compareInverse } from '../../core/procedures/compare';
+import { type PaperTableRow, paperTables, profileCurves } from '../../core/procedures/teaching';
+import { forwardOfRaTarget } from '../../core/roughness/raTarget';
 import { exactOfForward, exactOfInverse } from '../data/exact';
 import { formulaModels } from '../data/models';
 import { cylinderCurves, profileCurveSet } from '../data/profile';

@@ -1,7 +1,7 @@
 import { afterAll, describe, expect, it } from 'vitest';
-import { exactIntervalMm, exactInverse } from '../../../src/core/exact';
+import { forwardInput, inverseInput } from '../../../src/core/input/validate';
+import { exactIntervalMm, exactInverse } from '../../../src/core/surfaces/exact';
 import { slopedPlaneForward, slopedPlaneInverse } from '../../../src/core/threeAxis/slopedPlane';
-import { forwardInput, inverseInput } from '../../../src/core/validate';
 import { seededRandom } from '../../support/bruteForce';
 import { bruteRasterCusp } from '../../support/reference/threeAxisBruteForce';
 

@@ -1,6 +1,6 @@
 /**
  * Brute-force cusp heights at a doubly curved point (shared/notes/doubly-curved-and-3-axis.md,
- * section 1), sharing nothing with src/core/doublyCurved (no chords, no disks, no envelope): the
+ * section 1), sharing nothing with src/core/surfaces/doublyCurved (no chords, no disks, no envelope): the
  * real tool surface is sampled (the lower outer quarter of the torus corner, the flat bottom disk,
  * the shank cylinder of radius R up to `shankLengthMm`), placed in its posture with its lowest point
  * at the CC point (its own support-point computation, not placement.ts), and carried along two

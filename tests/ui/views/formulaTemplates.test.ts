@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { forwardInput, type ToolInput } from '../../../src/core/index';
-import { PROCEDURE_KEYS } from '../../../src/core/procedures';
+import { PROCEDURE_KEYS } from '../../../src/core/procedures/procedures';
 import { formulaNumber, formulaSlotValues } from '../../../src/ui/views/formulaSlots';
 import { FORMULA_TEMPLATES, slotNames } from '../../../src/ui/views/formulaTemplates';
 import { teach } from '../../../src/worker/api';

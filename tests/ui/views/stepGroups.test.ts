@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { forwardInput } from '../../../src/core/validate';
+import { forwardInput } from '../../../src/core/input/validate';
 import { gaugeMax, groupSteps, looksSame, sceneToleranceMm } from '../../../src/ui/views/stepGroups';
 import { traceFrames } from '../../../src/worker/api';
 

@@ -1,0 +1,344 @@
+/**
+ * Roughness of the surface the passes leave, across the feed (ISO 4287 / ISO 21920-2 parameters as
+ * defined in shared/notes/posture-and-surfaces.md): over one period (one step-over one-way, two
+ * zigzag) with the mean line at the period's mean height, `Rz` = highest peak - deepest valley,
+ * `Ra` = mean of |z - mean|, `Rq` = root mean square of z - mean. Lengths mm.
+ *
+ * Derivation. A period is made of flank segments, each running from a contact (z = 0) out to a cusp
+ * at width W and height H (one-way: the right flank of one pass and the left flank of the next,
+ * both up to h; zigzag: two right flanks meeting at L/2 and two left flanks meeting at L/2). On a
+ * segment the height rises monotonically with the distance y from the contact, so with w(z) the
+ * flank's width at height z (posture.ts), integration by parts gives for any f:
+ *
+ *   int_0^W f(z(y)) dy = f(H) W - int_0^H f'(z) w(z) dz.
+ *
+ * So the area is `H W - A1`, with `A1 = int_0^H w dz`; `int (z - m)^2 dy = (H - m)^2 W - 2 (A2 - m A1)`,
+ * `A2 = int_0^H z w dz`; and `int |z - m| dy = (H - m) W - A1 + 2 ((m - z_m) y_m + int_0^{z_m} w dz)`
+ * with `z_m = min(m, H)`, `y_m = w(z_m)` (the part below the mean line counted with its sign). The
+ * integrals of w are taken in `u = sqrt(z)`, where `w(u^2)` is smooth (w grows like sqrt(z) at the
+ * contact), by adaptive Gauss-Kronrod (7-15) to a relative 1e-13. A flat bottom lying on the plane
+ * (w(0) = Rb) needs nothing special: its flat part is the rectangle `w(0) H` inside `H W - A1`.
+ * On a cylinder the same holds with heights measured radially and widths along the design surface
+ * (arc length about the axis, or distance along it): the mean line is then a coaxial cylinder.
+ */
+
+import {
+  type AnyInputError,
+  type ForwardInput,
+  forwardInput,
+  inputError,
+  leavesNoScallop,
+  MIN_LENGTH_MM,
+  type PassInput,
+  type PassPattern,
+  type RawToolInput,
+  scallopHeightLimits,
+  type ToolInput,
+  type Validation,
+  validatePassAnd,
+} from '../input/validate';
+import { type CylinderSolver, cylinderSolver, PLANE, type Surface } from '../surfaces/cylinder';
+import { type ExactForward, type ExactInverse, exactForward } from '../surfaces/exact';
+import { type Flank, flankWidthMm, type PostureShape, shapeOfTool } from '../tool/posture';
+
+/** Roughness across the feed, mm. */
+export interface Roughness {
+  /** Highest peak minus deepest valley. */
+  readonly rzMm: number;
+  /** Arithmetic mean deviation from the mean line. */
+  readonly raMm: number;
+  /** Root mean square deviation from the mean line. */
+  readonly rqMm: number;
+  /** Height of the mean line above the deepest valley (the contacts). */
+  readonly meanMm: number;
+}
+
+/** One flank from its contact out to a cusp, mm. */
+export interface FlankSegment {
+  readonly flank: Flank;
+  /** Width from the contact (from O on a flat bottom lying on the plane) to the cusp. */
+  readonly widthMm: number;
+  /** Height of the cusp above the contact. */
+  readonly heightMm: number;
+}
+
+// Gauss-Kronrod 7-15 nodes and weights on [-1, 1] (QUADPACK's qk15 table, 33 digits, rounded
+// to the nearest double: the shortest decimal that reads back as that double).
+const XGK = [
+  0.9914553711208126, 0.9491079123427585, 0.8648644233597691, 0.7415311855993945, 0.5860872354676911,
+  0.4058451513773972, 0.20778495500789848, 0,
+];
+const WGK = [
+  0.022935322010529224, 0.06309209262997856, 0.10479001032225019, 0.14065325971552592, 0.1690047266392679,
+  0.19035057806478542, 0.20443294007529889, 0.20948214108472782,
+];
+const WG = [0.1294849661688697, 0.27970539148927664, 0.3818300505051189, 0.4179591836734694];
+
+/**
+ * Integrals of `2u w(u^2)` and `2u^3 w(u^2)` over one panel [a, b]: the 15-point Kronrod estimates,
+ * and the difference between the Kronrod and the embedded 7-point Gauss estimate of the first.
+ * Kronrod nodes: +-XGK[j] (j = 0..6) and 0; the Gauss nodes are +-XGK[1], +-XGK[3], +-XGK[5] and 0.
+ */
+function panel(w: (z: number) => number, a: number, b: number): [number, number, number] {
+  const c = 0.5 * (a + b);
+  const r = 0.5 * (b - a);
+  const f = (u: number): [number, number] => {
+    const z = u * u;
+    const f1 = 2 * u * w(z);
+    return [f1, z * f1];
+  };
+  const [c1, c2] = f(c);
+  let k1 = (WGK[7] as number) * c1;
+  let k2 = (WGK[7] as number) * c2;
+  let g1 = (WG[3] as number) * c1;
+  for (let j = 0; j < 7; j++) {
+    const d = r * (XGK[j] as number);
+    const [l1, l2] = f(c - d);
+    const [h1, h2] = f(c + d);
+    k1 += (WGK[j] as number) * (l1 + h1);
+    k2 += (WGK[j] as number) * (l2 + h2);
+    if (j % 2 === 1) g1 += (WG[(j - 1) / 2] as number) * (l1 + h1);
+  }
+  return [k1 * r, k2 * r, Math.abs((k1 - g1) * r)];
+}
+
+/**
+ * `[int_0^Z w dz, int_0^Z z w dz]` for a flank, in u = sqrt(z), by adaptive GK15 to a relative 1e-13
+ * of the first integral.
+ */
+export function widthIntegrals(w: (z: number) => number, zMax: number): [number, number] {
+  if (!(zMax > 0)) return [0, 0];
+  const top = Math.sqrt(zMax);
+  let a1 = 0;
+  let a2 = 0;
+  const scale = zMax * w(zMax);
+  const todo: Array<[number, number]> = [];
+  // Start from 4 panels: the integrand can turn sharply where a flat face meets a corner.
+  for (let i = 0; i < 4; i++) todo.push([(top * i) / 4, (top * (i + 1)) / 4]);
+  let evaluations = 0;
+  while (todo.length > 0) {
+    const [lo, hi] = todo.pop() as [number, number];
+    const [i1, i2, err] = panel(w, lo, hi);
+    evaluations++;
+    const tol = Math.max(1e-13 * scale * ((hi - lo) / top), 1e-300);
+    if (err <= tol || hi - lo <= 1e-9 * top || evaluations > 4000) {
+      a1 += i1;
+      a2 += i2;
+    } else {
+      const mid = 0.5 * (lo + hi);
+      todo.push([lo, mid], [mid, hi]);
+    }
+  }
+  return [a1, a2];
+}
+
+/** A flank's width (mm, along the surface from the contact) at a height (mm, normal to the surface). */
+export type WidthAt = (flank: Flank) => (heightMm: number) => number;
+
+/** Widths of the plane profile (posture.ts). */
+export function planeWidths(shape: PostureShape): WidthAt {
+  return (flank) => (z) => flankWidthMm(shape, flank, z);
+}
+
+/**
+ * Widths on a cylinder: the flank's reach at radial height z as a length along the design surface
+ * (arc length for the axis along the feed, distance along the axis across it), as the step-over is.
+ */
+export function cylinderWidths(solver: CylinderSolver): WidthAt {
+  return (flank) => (z) => solver.intervalFromReach(solver.reach(flank, z));
+}
+
+/**
+ * Roughness of a period made of flank segments (see the module comment). `widths` gives each
+ * flank's width at a height (planeWidths, or cylinderWidths: heights measured radially, lengths
+ * along the surface).
+ */
+export function roughnessOfSegments(widths: WidthAt | PostureShape, segments: readonly FlankSegment[]): Roughness {
+  const widthAt: WidthAt = typeof widths === 'function' ? widths : planeWidths(widths);
+  let length = 0;
+  let area = 0;
+  const data = segments.map((seg) => {
+    const w = widthAt(seg.flank);
+    const [a1, a2] = widthIntegrals(w, seg.heightMm);
+    length += seg.widthMm;
+    area += seg.heightMm * seg.widthMm - a1;
+    return { seg, w, a1, a2 };
+  });
+  if (!(length > 0)) return { rzMm: 0, raMm: 0, rqMm: 0, meanMm: 0 };
+  const m = area / length;
+  let abs = 0;
+  let sq = 0;
+  let peak = 0;
+  for (const { seg, w, a1, a2 } of data) {
+    const H = seg.heightMm;
+    const W = seg.widthMm;
+    peak = Math.max(peak, H);
+    sq += (H - m) * (H - m) * W - 2 * (a2 - m * a1);
+    const zm = Math.min(m, H);
+    const below = zm > 0 ? (m - zm) * w(zm) + widthIntegrals(w, zm)[0] : m * w(0);
+    abs += (H - m) * W - a1 + 2 * below;
+  }
+  return { rzMm: peak, raMm: Math.max(0, abs / length), rqMm: Math.sqrt(Math.max(0, sq / length)), meanMm: m };
+}
+
+/** The width function of a tool on its surface. */
+function widthsOf(tool: ToolInput, surface: Surface): WidthAt {
+  return surface.kind === 'cylinder' ? cylinderWidths(cylinderSolver(tool, surface)) : planeWidths(shapeOfTool(tool));
+}
+
+/**
+ * Exact roughness (mm) of the surface that passes of a forward solution leave, on a plane or a
+ * cylinder (measured radially, over arc length). For zigzag the other cusp's flank pair is
+ * included (two step-overs per period).
+ */
+export function exactRoughness(input: ForwardInput, e: ExactForward = exactForward(input)): Roughness {
+  if (e.noScallop) return { rzMm: 0, raMm: 0, rqMm: 0, meanMm: 0 };
+  const shape = widthsOf(input, input.surface);
+  if (input.pattern === 'zigzag') {
+    // The narrow flank's cusp is h; the wider flank meets its mirror lower, at L/2.
+    const rightNarrow = e.halfWidthRightMm <= e.halfWidthLeftMm;
+    const other = e.otherCuspHeightMm ?? e.cuspHeightMm;
+    return roughnessOfSegments(shape, [
+      { flank: 'right', widthMm: e.halfIntervalMm, heightMm: rightNarrow ? e.cuspHeightMm : other },
+      { flank: 'left', widthMm: e.halfIntervalMm, heightMm: rightNarrow ? other : e.cuspHeightMm },
+    ]);
+  }
+  return roughnessOfSegments(shape, [
+    { flank: 'right', widthMm: e.halfWidthRightMm, heightMm: e.cuspHeightMm },
+    { flank: 'left', widthMm: e.halfWidthLeftMm, heightMm: e.cuspHeightMm },
+  ]);
+}
+
+/** Exact roughness (mm) of the surface passes `e.intervalMm` apart leave (inverse solution). */
+export function exactRoughnessAtInterval(
+  tool: ToolInput,
+  pattern: PassPattern,
+  e: ExactInverse,
+  surface: Surface = PLANE,
+): Roughness {
+  if (e.cuspHeightMm === 0) return { rzMm: 0, raMm: 0, rqMm: 0, meanMm: 0 };
+  const shape = widthsOf(tool, surface);
+  if (pattern === 'zigzag') {
+    return roughnessOfSegments(shape, [
+      { flank: 'right', widthMm: e.intervalMm / 2, heightMm: e.rightCuspHeightMm },
+      { flank: 'left', widthMm: e.intervalMm / 2, heightMm: e.leftCuspHeightMm },
+    ]);
+  }
+  return roughnessOfSegments(shape, [
+    { flank: 'right', widthMm: e.halfWidthRightMm, heightMm: e.cuspHeightMm },
+    { flank: 'left', widthMm: e.halfWidthLeftMm, heightMm: e.cuspHeightMm },
+  ]);
+}
+
+/** The shop rule of thumb `Ra ~ h/4` (for a parabolic scallop the exact ratio is 4/(9 sqrt 3) = 0.2566). */
+export function raRuleOfThumbMm(scallopHeightMm: number): number {
+  return scallopHeightMm / 4;
+}
+
+/** The largest Ra (mm) a tool, posture and pattern can reach on a surface while leaving a scallop. */
+export function maxRaMm(tool: ToolInput, pattern: PassPattern, surface: Surface = PLANE): number {
+  const limit = scallopHeightLimits(tool, surface).limitMm;
+  if (!(limit > 0)) return 0;
+  return exactRoughness(forwardInput(tool, pattern, limit * (1 - 1e-12), surface)).raMm;
+}
+
+/**
+ * The scallop height h (mm) whose passes leave a roughness Ra equal to `targetRaMm` (then the
+ * step-over follows from h). Ra grows with h; a bracketed secant (Illinois) in log h, started
+ * from the rule of thumb h = 4 Ra, converges in a handful of steps. Requires
+ * 0 < target < maxRaMm(tool, pattern).
+ */
+export function scallopHeightForRaMm(
+  tool: ToolInput,
+  pattern: PassPattern,
+  targetRaMm: number,
+  surface: Surface = PLANE,
+): number {
+  const limit = scallopHeightLimits(tool, surface).limitMm * (1 - 1e-12);
+  const ra = (h: number) => exactRoughness(forwardInput(tool, pattern, h, surface)).raMm - targetRaMm;
+  let lo = Math.log(Math.min(limit, 1e-12 * limit + targetRaMm * 1e-3));
+  let hi = Math.log(limit);
+  let fLo = ra(Math.exp(lo));
+  let fHi = ra(Math.exp(hi));
+  if (fLo >= 0) return Math.exp(lo);
+  if (fHi <= 0) return Math.exp(hi);
+  // Start near the rule of thumb when it lies inside the bracket.
+  let x = Math.log(Math.min(limit, Math.max(Math.exp(lo), 4 * targetRaMm)));
+  let side = 0;
+  for (let i = 0; i < 100; i++) {
+    const f = ra(Math.exp(x));
+    if (f === 0) return Math.exp(x);
+    if (f < 0) {
+      lo = x;
+      fLo = f;
+      if (side === -1) fHi /= 2;
+      side = -1;
+    } else {
+      hi = x;
+      fHi = f;
+      if (side === 1) fLo /= 2;
+      side = 1;
+    }
+    if (hi - lo <= 1e-15 * Math.max(1, Math.abs(hi))) break;
+    x = hi - (fHi * (hi - lo)) / (fHi - fLo);
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+  }
+  return Math.exp(0.5 * (lo + hi));
+}
+
+/** Raw values of the target-roughness problem (mm and degrees): the tool, pattern, surface and a target Ra. */
+export interface RawTargetRaInput extends RawToolInput {
+  readonly ra: unknown;
+}
+
+/** A validated target roughness: the pass and the Ra (mm) its passes must leave. */
+export interface TargetRaInput extends PassInput {
+  /** Target Ra in mm: at least {@link MIN_LENGTH_MM}, below maxRaMm of the pass. */
+  readonly targetRaMm: number;
+}
+
+/**
+ * Validates a target roughness: the tool rules of validateForward, and `Ra` from
+ * {@link MIN_LENGTH_MM} to below maxRaMm (the supremum, reached only at the scallop height where
+ * adjacent passes start to leave a wall; error code `beyond-max-ra` with that limit, or with 0
+ * for a flat end lying on a plane, which leaves no scallop; `wall-only` when the tool cuts a step
+ * in this posture). The one validation of a target Ra, for the command line and the page.
+ * @param maxRa the largest Ra of a valid pass (maxRaMm; the page passes a cached one).
+ */
+export function validateTargetRa(
+  raw: RawTargetRaInput,
+  maxRa: (pass: PassInput) => number = (p) => maxRaMm(p, p.pattern, p.surface),
+): Validation<TargetRaInput, AnyInputError> {
+  const v = validatePassAnd(raw, 'ra');
+  const errors = [...v.errors];
+  const ra = v.value;
+  if (ra !== undefined && !v.gouges) {
+    if (ra <= 0) errors.push(inputError('ra', 'not-positive', v.shown));
+    else if (ra < MIN_LENGTH_MM) errors.push(inputError('ra', 'too-small', v.shown, MIN_LENGTH_MM));
+    else if (v.pass !== null) {
+      const p = v.pass;
+      const flatLying = p.surface.kind === 'plane' && leavesNoScallop(p);
+      if (!flatLying && !(scallopHeightLimits(p, p.surface).limitMm >= MIN_LENGTH_MM)) {
+        // As validateForward: in this posture the tool cuts a step, no scallop forms.
+        errors.push(inputError('ra', 'wall-only', v.shown));
+      } else {
+        const max = flatLying ? 0 : maxRa(p);
+        if (!(ra < max)) errors.push(inputError('ra', 'beyond-max-ra', v.shown, max));
+      }
+    }
+  }
+  if (errors.length > 0 || v.pass === null || ra === undefined) return { ok: false, errors };
+  const p = v.pass;
+  return {
+    ok: true,
+    value: {
+      toolRadiusMm: p.toolRadiusMm,
+      cornerRadiusMm: p.cornerRadiusMm,
+      leadAngleDeg: p.leadAngleDeg,
+      tiltAngleDeg: p.tiltAngleDeg,
+      pattern: p.pattern,
+      surface: p.surface,
+      targetRaMm: ra,
+    },
+  };
+}

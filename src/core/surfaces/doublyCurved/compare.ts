@@ -1,0 +1,116 @@
+/**
+ * What the usual shortcuts get wrong at a doubly curved point (issue 19, "Comparison rows"): beside
+ * the exact step-over, the plane's answer at the same posture (both curvatures ignored), each
+ * cylinder's (one radius ignored: Rf straight is the cylinder along the feed, Rc straight the one
+ * across), and the usual correction of every procedure with an effective radius,
+ * `1 / rho = 1 / Reff + 1 / Rc` (Rc signed; Redonnet et al. 2013, ref. 34 of the paper; as
+ * compare.ts does on cylinders) with the circle's `L = 2 sqrt(2 rho h - h^2)`. Each row carries its
+ * signed deviation from the exact step-over and the scallop its own step-over really leaves here
+ * (the exact inverse), or null where passes that far apart leave a wall. Lengths mm.
+ */
+import { combinedRadiusMm } from '../../procedures/approximations';
+import { APPROXIMATIONS, CORRECTED_KEYS, type CorrectedKey } from '../../procedures/procedures';
+import { type DoublyCurvedSolver, doublyCurvedSolver, forwardWith, inverseWith } from './solve';
+import type { DoublyCurvedForward, DoublyCurvedForwardInput, DoublyCurvedPass } from './types';
+
+/** One shortcut's step-over beside the exact one. */
+export type DoublyCurvedRow =
+  | {
+      readonly ok: true;
+      /** Its step-over L (mm). */
+      readonly intervalMm: number;
+      /** L minus the exact step-over: mm and % of the exact. */
+      readonly deviationMm: number;
+      readonly deviationPercent: number;
+      /** The highest cusp its L really leaves at this point (mm); null at or beyond the widest step-over. */
+      readonly realScallopMm: number | null;
+    }
+  | { readonly ok: false; readonly notApplicable: string };
+
+/** The comparison rows of the forward problem at a doubly curved point. */
+export interface DoublyCurvedComparison {
+  readonly exact: DoublyCurvedForward;
+  /** The widest step-over that still leaves a scallop here (the reaches at the limit height), mm. */
+  readonly maxIntervalMm: number;
+  /** The plane's exact answer at the same posture. */
+  readonly plane: DoublyCurvedRow;
+  /** The cylinder along the feed (Rf ignored: radius Rc) and across it (Rc ignored: radius Rf). */
+  readonly cylinderAlong: DoublyCurvedRow;
+  readonly cylinderAcross: DoublyCurvedRow;
+  /** The usual correction of each procedure with an effective radius, combined with Rc. */
+  readonly corrected: { readonly [K in CorrectedKey]: DoublyCurvedRow & { readonly combinedRadiusMm?: number } };
+}
+
+/**
+ * The widest step-over (mm) that leaves a scallop at a doubly curved point: the flanks' reaches at
+ * the limit height (one-way their sum, zigzag twice the smaller).
+ */
+export function doublyCurvedMaxIntervalMm(solver: DoublyCurvedSolver, pattern: DoublyCurvedPass['pattern']): number {
+  const h = solver.limits().limitMm;
+  const right = solver.right.reachMm(h);
+  const left = solver.symmetric ? right : solver.left.reachMm(h);
+  return pattern === 'one-way' ? right + left : 2 * Math.min(right, left);
+}
+
+function row(
+  L: number,
+  exactL: number,
+  solver: DoublyCurvedSolver,
+  pattern: DoublyCurvedPass['pattern'],
+  maxMm: number,
+): DoublyCurvedRow & { ok: true } {
+  const deviationMm = L - exactL;
+  const realScallopMm = L > 0 && L < maxMm ? inverseWith(solver, pattern, L).cuspHeightMm : null;
+  return { ok: true, intervalMm: L, deviationMm, deviationPercent: (100 * deviationMm) / exactL, realScallopMm };
+}
+
+/** The plane's, each cylinder's and the usual correction's step-overs beside the exact one. @param input validated, not gouging. */
+export function compareDoublyCurved(input: DoublyCurvedForwardInput): DoublyCurvedComparison {
+  const I = Number.POSITIVE_INFINITY;
+  const h = input.scallopHeightMm;
+  const solver = doublyCurvedSolver(input, input);
+  const exact = forwardWith(solver, input.pattern, h);
+  const maxMm = doublyCurvedMaxIntervalMm(solver, input.pattern);
+  const other = (rf: number, rc: number): DoublyCurvedRow => {
+    const s = doublyCurvedSolver(input, { feedRadiusMm: rf, crossRadiusMm: rc });
+    if (!(h < s.limits().limitMm))
+      return { ok: false, notApplicable: 'h is at or above the flank limit of that surface.' };
+    return row(forwardWith(s, input.pattern, h).intervalMm, exact.intervalMm, solver, input.pattern, maxMm);
+  };
+  const rc = input.crossRadiusMm;
+  const corrected = {} as { -readonly [K in CorrectedKey]: DoublyCurvedRow & { readonly combinedRadiusMm?: number } };
+  for (const key of CORRECTED_KEYS) {
+    const m = APPROXIMATIONS[key].model(input);
+    if (!m.ok) {
+      corrected[key] = { ok: false, notApplicable: m.notApplicable };
+      continue;
+    }
+    const reff = m.effectiveRadiusMm;
+    // The correction across the feed is the one of a cylinder along the feed of radius Rc.
+    const combined = combinedRadiusMm(reff, { kind: 'cylinder', radiusMm: rc, axis: 'feed' });
+    if (!(combined > 0) || !Number.isFinite(combined)) {
+      corrected[key] = {
+        ok: false,
+        notApplicable: `its effective radius (${reff} mm) is not smaller than the concave radius across the feed, so the combined radius is not positive.`,
+      };
+      continue;
+    }
+    if (h > combined) {
+      corrected[key] = {
+        ok: false,
+        notApplicable: `h is above the widest point of the combined circle (${combined} mm).`,
+      };
+      continue;
+    }
+    const L = 2 * Math.sqrt(h) * Math.sqrt(2 * combined - h);
+    corrected[key] = { ...row(L, exact.intervalMm, solver, input.pattern, maxMm), combinedRadiusMm: combined };
+  }
+  return {
+    exact,
+    maxIntervalMm: maxMm,
+    plane: other(I, I),
+    cylinderAlong: other(I, input.crossRadiusMm),
+    cylinderAcross: other(input.feedRadiusMm, I),
+    corrected,
+  };
+}

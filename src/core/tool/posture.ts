@@ -1,0 +1,428 @@
+/**
+ * The exact cross-feed profile of a filleted end mill in any posture (lead `rho`, tilt `beta`),
+ * on a plane, and its two flanks. Derivation (conventions of shared/notes/posture-and-surfaces.md):
+ *
+ * The tool end is the disk of radius `Rb` (centre O, normal the axis `a`) grown by a ball of
+ * radius `Rcr`. Moving along X it leaves the lower boundary of its projection along X onto YZ:
+ * the projected disk grown by a disk of radius `Rcr`. The projected disk is an ellipse whose
+ * shape matrix is `Rb^2 (I - a_yz a_yz^T)`: semi-axis `a = Rb` across `a_yz` and
+ * `b = Rb |a_x| = Rb cos(beta) sin(rho)` along it, rotated from the paper's frame by
+ * `phi = atan2(sin beta, cos beta cos rho)`. So the profile is the paper's offset ellipse
+ * (semi-axes `Rb`, `Rb cos(beta) sin(rho)`) turned by `phi`; `beta = 0` gives `phi = 0`.
+ *
+ * In the ellipse's own frame a ring point is `e(t) = (a sin t, -b cos t)` (t is the ring angle:
+ * the 3D ring point `O + Rb (sin t v1 + cos t v2)` projects onto it). The contact (lowest point)
+ * is the support point in the global down direction, at `t0` with
+ * `(sin t0, cos t0) = (a sin phi, b cos phi) / D0`, `D0 = sqrt(a^2 sin^2 phi + b^2 cos^2 phi)`.
+ * With `delta = t - t0`, relative to the contact's ring point:
+ *
+ *   height  dz(delta) = 2 D0 sin^2(delta/2)
+ *   width   dy(delta) = 2 sin(delta/2) (a cos phi cos(t0 + delta/2) + b sin phi sin(t0 + delta/2))
+ *
+ * both free of cancellation. The section (ball) around the ring point meets the plane `h` above
+ * the contact at vertical offset `q = h - dz` above its lowest point; its farthest crossing lies
+ * `r = sqrt(q (2 Rcr - q))` beyond `dy` (the paper's farthest `P_hp` of a section). The flank's
+ * width at height h is the maximum over sections of `W(delta) = dy + r`, attained where the
+ * profile's normal angle `theta(delta) = atan2(D0 sin delta, a cos phi cos t + b sin phi sin t)`
+ * equals the angle of the crossing on its ball, `atan2(r, Rcr - q)`. That condition is
+ * monotone in delta, so a bracketed Newton solves it; the width is then `W(delta*)`, whose
+ * error is second order in the error of delta* (it is a maximum). The left flank is the right
+ * flank of the mirrored posture (`phi -> -phi`). Lengths mm, angles radians.
+ */
+import { degToRad } from '../input/units';
+
+/** The profile of one posture: the rotated offset ellipse, with its contact precomputed. */
+export interface PostureShape {
+  /** Long semi-axis of the projected ring, `Rb = R - Rcr`, mm. */
+  readonly a: number;
+  /** Short semi-axis, `Rb cos(beta) sin(rho)`, mm (>= 0). */
+  readonly b: number;
+  /** Corner radius `Rcr`, mm. */
+  readonly rcr: number;
+  /** Rotation `phi` of the ellipse (radians, in (-pi/2, pi/2)), its sine and cosine. */
+  readonly phi: number;
+  readonly sinPhi: number;
+  readonly cosPhi: number;
+  /** Support of the ring ellipse in the down direction: `sqrt(a^2 sin^2 phi + b^2 cos^2 phi)`, mm. */
+  readonly d0: number;
+  /** Ring angle `t0` of the contact: its sine and cosine. */
+  readonly sinT0: number;
+  readonly cosT0: number;
+  /**
+   * True for a flat bottom lying flat on the plane (b = 0 and phi = 0: no lead, no tilt): the
+   * contact is the whole bottom face; widths are then measured from the tool centre point.
+   */
+  readonly flatOnPlane: boolean;
+}
+
+/** Which flank: right (+Y, towards the tilt) or left (-Y). */
+export type Flank = 'right' | 'left';
+
+/**
+ * The profile shape of a tool in a posture.
+ * @param toolRadiusMm R > 0, mm. @param cornerRadiusMm 0 <= Rcr <= R, mm.
+ * @param leadAngleRad rho in [0, pi/2). @param tiltAngleRad beta in (-pi/2, pi/2).
+ */
+export function postureShape(
+  toolRadiusMm: number,
+  cornerRadiusMm: number,
+  leadAngleRad: number,
+  tiltAngleRad: number,
+): PostureShape {
+  const a = toolRadiusMm - cornerRadiusMm;
+  const cosBeta = Math.cos(tiltAngleRad);
+  const sinBeta = Math.sin(tiltAngleRad);
+  const b = a * cosBeta * Math.sin(leadAngleRad);
+  const phi = Math.atan2(sinBeta, cosBeta * Math.cos(leadAngleRad));
+  return shapeWithPhi(a, b, cornerRadiusMm, phi, Math.sin(phi), Math.cos(phi));
+}
+
+function shapeWithPhi(a: number, b: number, rcr: number, phi: number, sinPhi: number, cosPhi: number): PostureShape {
+  const as = a * sinPhi;
+  const bc = b * cosPhi;
+  // sqrt rather than Math.hypot (slow in V8): |R| <= 1000 mm keeps the squares far from overflow.
+  const d0 = Math.sqrt(as * as + bc * bc);
+  const flatOnPlane = d0 === 0 && a > 0;
+  // Ball end (a = 0): the ring is a point; t0 is immaterial. Flat on the plane: t0 = 0, the centre.
+  const sinT0 = d0 > 0 ? as / d0 : 0;
+  const cosT0 = d0 > 0 ? bc / d0 : 1;
+  return { a, b, rcr, phi, sinPhi, cosPhi, d0, sinT0, cosT0, flatOnPlane };
+}
+
+/** The same tool seen in the mirror `y -> -y`: its right flank is the original's left flank. */
+export function mirrorShape(s: PostureShape): PostureShape {
+  return { ...s, phi: -s.phi, sinPhi: -s.sinPhi, sinT0: -s.sinT0 };
+}
+
+/** +1 for the right flank, -1 for the left (the right flank of the mirror image). */
+export function flankSign(flank: Flank): 1 | -1 {
+  return flank === 'right' ? 1 : -1;
+}
+
+/** The shape of a validated tool input (angles in degrees). */
+export function shapeOfTool(tool: {
+  readonly toolRadiusMm: number;
+  readonly cornerRadiusMm: number;
+  readonly leadAngleDeg: number;
+  readonly tiltAngleDeg: number;
+}): PostureShape {
+  return postureShape(tool.toolRadiusMm, tool.cornerRadiusMm, degToRad(tool.leadAngleDeg), degToRad(tool.tiltAngleDeg));
+}
+
+/**
+ * Contact offset `y0` (mm): Y of the contact point minus Y of the tool centre point O. Positive
+ * when the tool leans to +Y (it touches down with its right side). `(a^2 - b^2) sin phi cos phi / D0`.
+ */
+export function contactOffsetMm(s: PostureShape): number {
+  if (!(s.d0 > 0)) return 0;
+  return ((s.a * s.a - s.b * s.b) * s.sinPhi * s.cosPhi) / s.d0;
+}
+
+/** Height (mm) of the tool centre point O above the contact: `D0 + Rcr` (Eq. 7 for beta = 0). */
+export function centreHeightMm(s: PostureShape): number {
+  return s.d0 + s.rcr;
+}
+
+/**
+ * Ring-angle offset (radians, from the contact) of the right flank's widest point, where the
+ * profile's normal is horizontal: `atan2(ab, (a^2 - b^2) sin phi cos phi)`; `pi/2` when flat on
+ * the plane, 0 for a ball end (the ring is a point).
+ */
+function widestOffsetRad(s: PostureShape, sign: number): number {
+  if (s.flatOnPlane) return Math.PI / 2;
+  if (s.a === 0) return 0;
+  return Math.atan2(s.a * s.b, (s.a * s.a - s.b * s.b) * sign * s.sinPhi * s.cosPhi);
+}
+
+/**
+ * Height (mm) above the contact of the right flank's widest point (`hmax`): above it the flank
+ * is a wall. `2 D0 sin^2(delta_w / 2) + Rcr`; `b + Rcr` without tilt.
+ */
+function flankTopMm(s: PostureShape, sign: number): number {
+  const half = Math.sin(widestOffsetRad(s, sign) / 2);
+  return 2 * s.d0 * half * half + s.rcr;
+}
+
+/**
+ * Height (mm) above the contact at which the shank (the cylinder of radius R above the corner)
+ * starts to cut on the right flank, or null when it never reaches below that flank's top (the
+ * tool does not lean to +Y). The shank's silhouette is the line tangent to the profile where its
+ * normal is `(cos phi, -sin phi)`, the end of the ellipse's long axis (t = pi/2):
+ * `D0 - a sin phi + Rcr (1 - sin phi) = b^2 cos^2 phi / (D0 + a sin phi) + Rcr cos^2 phi / (1 + sin phi)`.
+ * For a ball end leaning by beta' it is `R (1 - sin beta')`.
+ */
+function shankTopMm(s: PostureShape, sign: number): number | null {
+  const sinPhi = sign * s.sinPhi;
+  if (!(sinPhi > 0)) return null;
+  const c2 = s.cosPhi * s.cosPhi;
+  const ellipse = s.b === 0 ? 0 : (s.b * s.b * c2) / (s.d0 + s.a * sinPhi);
+  return ellipse + (s.rcr * c2) / (1 + sinPhi);
+}
+
+/** Where each flank stops being a scallop flank (mm above the contact). */
+export interface FlankLimits {
+  /** Height of the right / left flank's widest point: above it the flank is a wall. */
+  readonly topRightMm: number;
+  readonly topLeftMm: number;
+  /** Height at which the shank starts to cut on that side, or null where it never does. */
+  readonly shankRightMm: number | null;
+  readonly shankLeftMm: number | null;
+  /** The binding limit: scallop heights must stay below it. */
+  readonly limitMm: number;
+  /** What sets `limitMm`. */
+  readonly limitBy: 'right-flank' | 'left-flank' | 'shank-right' | 'shank-left';
+}
+
+/** The flank and shank limits of a posture (see flankTopMm, shankTopMm). */
+export function flankLimits(s: PostureShape): FlankLimits {
+  const topRightMm = flankTopMm(s, 1);
+  const topLeftMm = flankTopMm(s, -1);
+  const shankRightMm = shankTopMm(s, 1);
+  const shankLeftMm = shankTopMm(s, -1);
+  // The shank first: on the side the tool leans to it binds before (or with) that flank's top,
+  // and a tie is better explained by the shank.
+  const candidates: Array<[number, FlankLimits['limitBy']]> = [];
+  if (shankRightMm !== null) candidates.push([shankRightMm, 'shank-right']);
+  if (shankLeftMm !== null) candidates.push([shankLeftMm, 'shank-left']);
+  candidates.push([topRightMm, 'right-flank'], [topLeftMm, 'left-flank']);
+  let best = candidates[0] as [number, FlankLimits['limitBy']];
+  for (const c of candidates) if (c[0] < best[0]) best = c;
+  return { topRightMm, topLeftMm, shankRightMm, shankLeftMm, limitMm: best[0], limitBy: best[1] };
+}
+
+/** Radius of curvature (mm) of the profile at the contact: `Rcr + a^2 b^2 / D0^3`; null if infinite. */
+export function contactCurvatureRadiusMm(s: PostureShape): number | null {
+  if (s.flatOnPlane) return null;
+  if (s.a === 0 || s.b === 0) return s.rcr;
+  const ab = s.a * s.b;
+  return s.rcr + (ab * ab) / (s.d0 * s.d0 * s.d0);
+}
+
+/** Where a flank reaches a given height: its width and the section that carries it. */
+export interface FlankPoint {
+  /** Horizontal distance from the contact (from O when flat on the plane), mm. */
+  readonly widthMm: number;
+  /** Height above the contact, mm. */
+  readonly heightMm: number;
+  /** Ring-angle offset `delta = |t - t0|` of the section through the point (radians, >= 0). */
+  readonly ringOffsetRad: number;
+  /** Normal angle of the profile there, from straight down towards the flank (radians). */
+  readonly normalAngleRad: number;
+}
+
+/** Scratch state of one section, filled in place (no allocation in the solver loop). */
+export interface Section {
+  sinD: number;
+  cosD: number;
+  sinT: number;
+  cosT: number;
+  /** dz, dy of the ring point relative to the contact's ring point. */
+  dz: number;
+  dy: number;
+  /** `D0 sin delta` and `a cos phi cos t + b sin phi sin t`: the profile normal (unnormalised). */
+  nSin: number;
+  nCos: number;
+  /** Derivative of nCos with respect to delta. */
+  dNCos: number;
+}
+
+/**
+ * Fills `out` for the section `delta` past the contact on the flank `sign` (+1 right, -1 left:
+ * the left flank is the right flank of the mirror image, phi -> -phi, t0 -> -t0).
+ */
+export function evalSection(s: PostureShape, sign: number, delta: number, out: Section): void {
+  const sinT0 = sign * s.sinT0;
+  const sinPhi = sign * s.sinPhi;
+  const sinH = Math.sin(delta / 2);
+  const cosH = Math.cos(delta / 2);
+  // Double-angle forms: two trigonometric calls per section instead of four.
+  const sinD = 2 * sinH * cosH;
+  const cosD = (cosH - sinH) * (cosH + sinH);
+  const sinT = sinT0 * cosD + s.cosT0 * sinD;
+  const cosT = s.cosT0 * cosD - sinT0 * sinD;
+  // t0 + delta/2: its sine and cosine by the half-angle rotation of t0.
+  const sinM = sinT0 * cosH + s.cosT0 * sinH;
+  const cosM = s.cosT0 * cosH - sinT0 * sinH;
+  out.sinD = sinD;
+  out.cosD = cosD;
+  out.sinT = sinT;
+  out.cosT = cosT;
+  out.dz = 2 * s.d0 * sinH * sinH;
+  out.dy = 2 * sinH * (s.a * s.cosPhi * cosM + s.b * sinPhi * sinM);
+  out.nSin = s.d0 * sinD;
+  out.nCos = s.a * s.cosPhi * cosT + s.b * sinPhi * sinT;
+  out.dNCos = -s.a * s.cosPhi * sinT + s.b * sinPhi * cosT;
+}
+
+/** `sqrt(q (2 Rcr - q))`, 0 outside [0, 2 Rcr]: the ball's horizontal reach at offset q. */
+function reachMm(rcr: number, q: number): number {
+  if (!(q > 0) || !(q < 2 * rcr)) return 0;
+  return Math.sqrt(q * (2 * rcr - q));
+}
+
+/** A section's scratch state, ready to be filled by {@link evalSection}. */
+export function newSection(): Section {
+  return { sinD: 0, cosD: 1, sinT: 0, cosT: 1, dz: 0, dy: 0, nSin: 0, nCos: 0, dNCos: 0 };
+}
+
+const scratch: Section = newSection();
+
+/** Half-angle form of the corner's normal angle at vertical offset q: `acos(1 - q/Rcr)`. */
+function cornerAngleRad(rcr: number, q: number): number {
+  return 2 * Math.asin(Math.min(1, Math.sqrt(Math.max(0, q) / (2 * rcr))));
+}
+
+/**
+ * Ring-angle offset of the section carrying the flank `sign` at height h (0 < h below the
+ * flank's top). Bracketed Newton on the sign-monotone
+ * `G(delta) = D0 sin(delta) (Rcr - q) - (a cos phi cos t + b sin phi sin t) r`, zero where the
+ * profile normal meets the section's crossing with the plane. Leaves that section in `scratch`.
+ */
+function sectionAtHeight(s: PostureShape, sign: number, h: number): number {
+  const rcr = s.rcr;
+  const sec = scratch;
+  if (s.flatOnPlane) {
+    evalSection(s, sign, Math.PI / 2, sec);
+    return Math.PI / 2;
+  }
+  let delta = 0;
+  if (s.a > 0) {
+    const deltaTop = widestOffsetRad(s, sign);
+    if (rcr === 0) {
+      // Flat end: the flank is the ring ellipse itself, dz(delta) = h in closed form.
+      delta = Math.min(deltaTop, 2 * Math.asin(Math.min(1, Math.sqrt(h / (2 * s.d0)))));
+    } else {
+      let lo = 0;
+      // The section's ring point cannot rise above h: dz(delta) <= h bounds delta from above.
+      let hi = h < 2 * s.d0 ? Math.min(deltaTop, 2 * Math.asin(Math.sqrt(h / (2 * s.d0)))) : deltaTop;
+      if (hi > 0) {
+        // Start from the osculating circle: theta ~ sqrt(2h/Reff), delta ~ theta ab / D0^2.
+        const ab = s.a * s.b;
+        const reff = rcr + (ab * ab) / (s.d0 * s.d0 * s.d0);
+        delta = (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0);
+        if (!(delta > lo && delta < hi)) delta = 0.5 * (lo + hi);
+        for (let i = 0; i < 100; i++) {
+          evalSection(s, sign, delta, sec);
+          const q = h - sec.dz;
+          const c = rcr - q;
+          const r = reachMm(rcr, q);
+          const g = sec.nSin * c - sec.nCos * r;
+          if (g === 0) break;
+          if (g > 0) hi = delta;
+          else lo = delta;
+          let slope = s.d0 * sec.cosD * c + sec.nSin * sec.nSin - sec.dNCos * r;
+          if (r > 0) slope += (sec.nCos * sec.nSin * c) / r;
+          let next = slope > 0 ? delta - g / slope : Number.NaN;
+          // A Newton step below 1e-12 (relative): done (1e-8 was measured to cost up to 7e-9 mm with
+          // a corner of 1e-9 R, where the root sits next to the ball's vertical tangent). This comes
+          // before the bracket test, which a converged step can fail by rounding alone (it lands on
+          // the bracket end it just set).
+          if (Math.abs(next - delta) <= 1e-12 * delta) {
+            delta = Math.min(Math.max(next, lo), hi);
+            break;
+          }
+          if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+          delta = next;
+          if (hi - lo <= 4e-16 * hi) break;
+        }
+      }
+    }
+  }
+  evalSection(s, sign, delta, sec);
+  return delta;
+}
+
+/**
+ * Width (mm) of a flank at `heightMm` above the contact: the farthest crossing of any torus
+ * section with the plane h above the contact (measured from the contact; from O when the tool
+ * is flat on the plane). Valid for 0 < h below that flank's top (flankLimits); error below
+ * 1e-9 mm over the valid domain. Allocation-free.
+ */
+export function flankWidthMm(s: PostureShape, flank: Flank, heightMm: number): number {
+  const rcr = s.rcr;
+  if (s.a === 0) return reachMm(rcr, heightMm);
+  sectionAtHeight(s, flankSign(flank), heightMm);
+  return scratch.dy + reachMm(rcr, heightMm - scratch.dz);
+}
+
+/** The point of a flank at `heightMm` above the contact (see flankWidthMm), with its section. */
+export function flankAtHeight(s: PostureShape, flank: Flank, heightMm: number): FlankPoint {
+  const rcr = s.rcr;
+  if (s.a === 0) {
+    return {
+      widthMm: reachMm(rcr, heightMm),
+      heightMm,
+      ringOffsetRad: 0,
+      normalAngleRad: cornerAngleRad(rcr, heightMm),
+    };
+  }
+  const delta = sectionAtHeight(s, flankSign(flank), heightMm);
+  const q = heightMm - scratch.dz;
+  // At the root the profile normal is the angle of the crossing on its ball, acos(1 - q/Rcr),
+  // which stays defined where a corner collapses onto one ring angle (b = 0).
+  const normal = rcr > 0 ? cornerAngleRad(rcr, q) : Math.atan2(scratch.nSin, scratch.nCos);
+  return { widthMm: scratch.dy + reachMm(rcr, q), heightMm, ringOffsetRad: delta, normalAngleRad: normal };
+}
+
+/**
+ * The point of a flank at horizontal distance `widthMm` from the contact: the inverse of
+ * flankAtHeight. The height is the minimum over sections of `dz + Rcr - sqrt(Rcr^2 - (w - dy)^2)`,
+ * found at the section where the profile normal meets the ball's lowest point at that width.
+ * Valid for 0 <= w up to the flank's widest point; 0 on a flat bottom lying on the plane.
+ */
+export function flankAtWidth(s: PostureShape, flank: Flank, widthMm: number): FlankPoint {
+  const rcr = s.rcr;
+  const w = widthMm;
+  const lowest = (u: number) => (u * u) / (rcr + Math.sqrt(Math.max(0, (rcr - u) * (rcr + u))));
+  if (s.a === 0 || s.flatOnPlane) {
+    const edge = s.a === 0 ? 0 : s.a;
+    if (w <= edge) return { widthMm: w, heightMm: 0, ringOffsetRad: 0, normalAngleRad: 0 };
+    const u = Math.min(w - edge, rcr);
+    return {
+      widthMm: w,
+      heightMm: lowest(u),
+      ringOffsetRad: s.a === 0 ? 0 : Math.PI / 2,
+      normalAngleRad: Math.asin(Math.min(1, u / rcr)),
+    };
+  }
+  const sign = flankSign(flank);
+  const sec = scratch;
+  let lo = 0;
+  let hi = widestOffsetRad(s, sign);
+  let delta = 0.5 * (lo + hi);
+  for (let i = 0; i < 200 && hi > lo; i++) {
+    evalSection(s, sign, delta, sec);
+    const u = w - sec.dy;
+    // Sign of the mismatch between the profile normal and the ball's normal at offset u:
+    // D0 sin(delta) sqrt(Rcr^2 - u^2) - nCos u; past the ball's reach, move on.
+    let g: number;
+    let slope = 0;
+    if (rcr === 0) {
+      g = -u; // flat end: solve dy(delta) = w
+      slope = sec.nCos;
+    } else if (u >= rcr) g = -1;
+    else if (u <= -rcr) g = 1;
+    else {
+      const v = Math.sqrt((rcr - u) * (rcr + u));
+      g = sec.nSin * v - sec.nCos * u;
+      // u' = -nCos, v' = u nCos / v
+      slope = s.d0 * sec.cosD * v + (sec.nSin * u * sec.nCos) / v - sec.dNCos * u + sec.nCos * sec.nCos;
+    }
+    if (g === 0) break;
+    if (g > 0) hi = delta;
+    else lo = delta;
+    let next = slope > 0 ? delta - g / slope : Number.NaN;
+    if (Math.abs(next - delta) <= 1e-15 * delta) {
+      delta = Math.min(Math.max(next, lo), hi);
+      break;
+    }
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    delta = next;
+    if (hi - lo <= 4e-16 * hi) break;
+  }
+  evalSection(s, sign, delta, sec);
+  const u = Math.min(rcr, Math.max(-rcr, w - sec.dy));
+  const height = rcr === 0 ? sec.dz : sec.dz + lowest(u);
+  const normal = rcr > 0 ? Math.asin(Math.max(0, u) / rcr) : Math.atan2(sec.nSin, sec.nCos);
+  return { widthMm: w, heightMm: height, ringOffsetRad: delta, normalAngleRad: normal };
+}

@@ -1,0 +1,134 @@
+/**
+ * Stratified cases for the brute-force checks of the doubly curved solver (issue 19): every family
+ * of sign combinations (dome ++, bowl --, saddles +- and -+, convex and concave spheres, the two
+ * cylinders both ways, the plane), ball, flat and bull-nose ends, with and without tilt, both
+ * patterns, from a seed. Concave radii are drawn wide enough not to gouge (doublyCurvedGouges).
+ */
+
+import type { PassPattern, ToolInput } from '../../../../src/core/input/validate';
+import { doublyCurvedGouges } from '../../../../src/core/surfaces/doublyCurved/gouging';
+import { doublyCurvedForward, doublyCurvedLimits } from '../../../../src/core/surfaces/doublyCurved/solve';
+import { seededRandom } from '../../../support/bruteForce';
+import { bruteForceDoublyCurved } from '../../../support/reference/doublyCurvedBruteForce';
+
+export const FAMILIES = [
+  'dome',
+  'bowl',
+  'saddle+-',
+  'saddle-+',
+  'sphere+',
+  'sphere-',
+  'cylinder-along',
+  'cylinder-across',
+  'plane',
+] as const;
+export type Family = (typeof FAMILIES)[number];
+export const TOOLS = ['ball', 'flat', 'bull-nose'] as const;
+
+export interface BruteCase {
+  readonly name: string;
+  readonly family: Family;
+  readonly tool: ToolInput;
+  readonly pattern: PassPattern;
+  readonly rf: number;
+  readonly rc: number;
+  readonly h: number;
+}
+
+const I = Number.POSITIVE_INFINITY;
+
+function radii(family: Family, R: number, rand: () => number): [number, number] {
+  const m = () => R * (6 + 30 * rand());
+  switch (family) {
+    case 'dome':
+      return [m(), m()];
+    case 'bowl':
+      return [-m(), -m()];
+    case 'saddle+-':
+      return [m(), -m()];
+    case 'saddle-+':
+      return [-m(), m()];
+    case 'sphere+': {
+      const r = m();
+      return [r, r];
+    }
+    case 'sphere-': {
+      const r = m();
+      return [-r, -r];
+    }
+    case 'cylinder-along':
+      return [I, (rand() < 0.5 ? 1 : -1) * m()];
+    case 'cylinder-across':
+      return [(rand() < 0.5 ? 1 : -1) * m(), I];
+    case 'plane':
+      return [I, I];
+  }
+}
+
+/** `count` cases from a seed, cycling the families, tools, tilt and patterns so that each stratum appears. */
+export function bruteCases(seed: number, count: number, offset = 0): BruteCase[] {
+  const rand = seededRandom(seed);
+  const out: BruteCase[] = [];
+  for (let i = offset; out.length < count; i++) {
+    const family = FAMILIES[i % FAMILIES.length] as Family;
+    const kind = TOOLS[i % TOOLS.length] as (typeof TOOLS)[number];
+    const tilted = Math.floor(i / 3) % 2 === 1;
+    const pattern: PassPattern = Math.floor(i / 2) % 2 === 0 ? 'one-way' : 'zigzag';
+    for (let attempt = 0; attempt < 50; attempt++) {
+      const R = 1 + 3 * rand();
+      const Rcr = kind === 'ball' ? R : kind === 'flat' ? 0 : R * (0.15 + 0.7 * rand());
+      const tool: ToolInput = {
+        toolRadiusMm: R,
+        cornerRadiusMm: Rcr,
+        // Cases 2, 8, 14, ... (bull-nose on a saddle +-, the plane, a convex sphere) without lead: the
+        // flat bottom then meets a convex feed circle inside its chords (the foot of l).
+        leadAngleDeg: i % 6 === 2 ? 0 : 3 + 30 * rand(),
+        tiltAngleDeg: tilted ? (rand() < 0.5 ? 1 : -1) * (5 + 30 * rand()) : 0,
+      };
+      const [rf, rc] = radii(family, R, rand);
+      if (doublyCurvedGouges(tool, { feedRadiusMm: rf, crossRadiusMm: rc })) continue;
+      const limit = doublyCurvedLimits({ ...tool, feedRadiusMm: rf, crossRadiusMm: rc }).limitMm;
+      if (!(limit > 1e-3)) continue;
+      const h = Math.min(0.1 * R, limit * (0.05 + 0.5 * rand()));
+      const name = `${family}, ${kind}, ${tilted ? 'tilt' : 'no tilt'}, ${pattern} (seed ${seed} #${i}: R ${R.toFixed(4)} Rcr ${Rcr.toFixed(4)} rho ${tool.leadAngleDeg.toFixed(3)} tilt ${tool.tiltAngleDeg.toFixed(3)} Rf ${rf.toFixed(3)} Rc ${rc.toFixed(3)} h ${h.toFixed(5)})`;
+      out.push({ name, family, tool, pattern, rf, rc, h });
+      break;
+    }
+  }
+  return out;
+}
+
+/**
+ * The solver's cusps against the brute force's: between pass 0 and pass 1, and for zigzag also the
+ * other cusp (pass 0 and 1 meet with two right flanks; the same passes of the tool mirrored in Y meet
+ * with the original's two left flanks).
+ */
+export function compare(c: BruteCase, levels: number): Array<{ exactMm: number; bruteMm: number; boundMm: number }> {
+  const f = doublyCurvedForward({
+    ...c.tool,
+    pattern: c.pattern,
+    feedRadiusMm: c.rf,
+    crossRadiusMm: c.rc,
+    scallopHeightMm: c.h,
+  });
+  const other = f.otherCuspHeightMm as number;
+  // Zigzag: the narrower flank's cusp is at h, the wider one's at the other (lower) height.
+  const cusps: Array<[number, number]> =
+    c.pattern === 'zigzag'
+      ? [
+          [c.tool.tiltAngleDeg, f.halfWidthRightMm > f.halfWidthLeftMm ? other : c.h],
+          [-c.tool.tiltAngleDeg, f.halfWidthLeftMm > f.halfWidthRightMm ? other : c.h],
+        ]
+      : [[c.tool.tiltAngleDeg, c.h]];
+  return cusps.map(([tilt, exactMm]) => {
+    const b = bruteForceDoublyCurved(
+      { R: c.tool.toolRadiusMm, Rcr: c.tool.cornerRadiusMm, leadDeg: c.tool.leadAngleDeg, tiltDeg: tilt },
+      c.pattern,
+      c.rf,
+      c.rc,
+      f.intervalMm,
+      { spacingMm: c.tool.toolRadiusMm / 60, levels },
+    );
+    return { exactMm, bruteMm: b.cuspHeightMm, boundMm: b.boundMm };
+  });
+}
