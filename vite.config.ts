@@ -55,7 +55,7 @@ function pwa(mode: string) {
  * small shared chunks Rollup would make. The core's modules that only one lazy view uses (the 3D
  * scene's marks, the profile's section) go with that view instead of delaying the first result.
  */
-const VIEW_ONLY_CORE = /\/src\/core\/(sceneMarks|sectionProfile)\./;
+const VIEW_ONLY_CORE = /\/src\/core\/output\/(sceneMarks|sectionProfile)\./;
 
 function chunkOf(id: string): string | null {
   if (id.includes('/node_modules/three/') || /\/src\/render\/(orbit|clipPlanes|view3d)/.test(id)) return 'three';
