@@ -10,6 +10,7 @@ import { doublyCurvedGouges } from '../../../../src/core/surfaces/doublyCurved/g
 import { doublyCurvedForward, doublyCurvedLimits } from '../../../../src/core/surfaces/doublyCurved/solve';
 import { seededRandom } from '../../../support/bruteForce';
 import { bruteForceDoublyCurved } from '../../../support/reference/doublyCurvedBruteForce';
+import { polishDoublyCurvedCusp } from '../../../support/reference/doublyCurvedPolished';
 
 export const FAMILIES = [
   'dome',
@@ -98,12 +99,40 @@ export function bruteCases(seed: number, count: number, offset = 0): BruteCase[]
   return out;
 }
 
+/** The tool's kind from its radii. */
+export function toolKind(c: BruteCase): (typeof TOOLS)[number] {
+  if (c.tool.cornerRadiusMm === c.tool.toolRadiusMm) return 'ball';
+  return c.tool.cornerRadiusMm === 0 ? 'flat' : 'bull-nose';
+}
+
+/** Keeps the largest error (mm) per stratum of the case: family, tool, tilt, pattern. */
+export function recordWorst(worst: Map<string, number>, c: BruteCase, errorMm: number): void {
+  for (const key of [
+    `family ${c.family}`,
+    `tool ${toolKind(c)}`,
+    c.tool.tiltAngleDeg === 0 ? 'no tilt' : 'tilt',
+    `pattern ${c.pattern}`,
+  ])
+    worst.set(key, Math.max(worst.get(key) ?? 0, errorMm));
+}
+
+/** The table of largest errors, one stratum a line, families first. */
+export function worstTable(title: string, worst: Map<string, number>): string {
+  const rows = [...worst].sort(([a], [b]) => a.localeCompare(b));
+  return `${title}\n${rows.map(([k, v]) => `  ${k.padEnd(26)} ${v.toExponential(2)} mm`).join('\n')}`;
+}
+
 /**
  * The solver's cusps against the brute force's: between pass 0 and pass 1, and for zigzag also the
  * other cusp (pass 0 and 1 meet with two right flanks; the same passes of the tool mirrored in Y meet
- * with the original's two left flanks).
+ * with the original's two left flanks). With `polish`, also the polished cusp (doublyCurvedPolished.ts,
+ * started from this brute force's winning samples); NaN without.
  */
-export function compare(c: BruteCase, levels: number): Array<{ exactMm: number; bruteMm: number; boundMm: number }> {
+export function compare(
+  c: BruteCase,
+  levels: number,
+  polish = false,
+): Array<{ exactMm: number; bruteMm: number; boundMm: number; polishedMm: number }> {
   const f = doublyCurvedForward({
     ...c.tool,
     pattern: c.pattern,
@@ -121,14 +150,14 @@ export function compare(c: BruteCase, levels: number): Array<{ exactMm: number; 
         ]
       : [[c.tool.tiltAngleDeg, c.h]];
   return cusps.map(([tilt, exactMm]) => {
-    const b = bruteForceDoublyCurved(
-      { R: c.tool.toolRadiusMm, Rcr: c.tool.cornerRadiusMm, leadDeg: c.tool.leadAngleDeg, tiltDeg: tilt },
-      c.pattern,
-      c.rf,
-      c.rc,
-      f.intervalMm,
-      { spacingMm: c.tool.toolRadiusMm / 60, levels },
-    );
-    return { exactMm, bruteMm: b.cuspHeightMm, boundMm: b.boundMm };
+    const tool = { R: c.tool.toolRadiusMm, Rcr: c.tool.cornerRadiusMm, leadDeg: c.tool.leadAngleDeg, tiltDeg: tilt };
+    const b = bruteForceDoublyCurved(tool, c.pattern, c.rf, c.rc, f.intervalMm, {
+      spacingMm: c.tool.toolRadiusMm / 60,
+      levels,
+    });
+    const polishedMm = polish
+      ? polishDoublyCurvedCusp(tool, c.pattern, c.rf, c.rc, f.intervalMm, b).polishedMm
+      : Number.NaN;
+    return { exactMm, bruteMm: b.cuspHeightMm, boundMm: b.boundMm, polishedMm };
   });
 }
