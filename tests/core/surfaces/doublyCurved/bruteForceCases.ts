@@ -66,24 +66,56 @@ function radii(family: Family, R: number, rand: () => number): [number, number] 
   }
 }
 
+/** The stratum of case i: family, tool, tilt, pattern. */
+interface Stratum {
+  readonly family: Family;
+  readonly kind: (typeof TOOLS)[number];
+  readonly tilted: boolean;
+  readonly pattern: PassPattern;
+  /** No lead: a flat bottom then meets a convex feed circle inside its chords (the foot of l). */
+  readonly leadless: boolean;
+}
+
 /** `count` cases from a seed, cycling the families, tools, tilt and patterns so that each stratum appears. */
 export function bruteCases(seed: number, count: number, offset = 0): BruteCase[] {
+  return casesOf(seed, count, offset, (i) => ({
+    family: FAMILIES[i % FAMILIES.length] as Family,
+    kind: TOOLS[i % TOOLS.length] as (typeof TOOLS)[number],
+    tilted: Math.floor(i / 3) % 2 === 1,
+    pattern: Math.floor(i / 2) % 2 === 0 ? 'one-way' : 'zigzag',
+    // Cases 2, 8, 14, ... (bull-nose on a saddle +-, the plane, a convex sphere).
+    leadless: i % 6 === 2,
+  }));
+}
+
+/**
+ * `count` cases from a seed crossing every family with every tool (case i: family i mod 9, tool
+ * floor(i / 9) mod 3), tilt alternating and the pattern every second case; no lead for the ball on
+ * the saddle +- and the ball and the bull-nose on the plane (the other leadless tools there gouge or
+ * leave no scallop, and the case would be skipped).
+ */
+export function crossCases(seed: number, count: number, offset = 0): BruteCase[] {
+  return casesOf(seed, count, offset, (i) => ({
+    family: FAMILIES[i % FAMILIES.length] as Family,
+    kind: TOOLS[Math.floor(i / FAMILIES.length) % TOOLS.length] as (typeof TOOLS)[number],
+    tilted: i % 2 === 1,
+    pattern: Math.floor(i / 2) % 2 === 0 ? 'one-way' : 'zigzag',
+    leadless: (i % 9 === 2 && i < 9) || (i % 9 === 8 && i < 27 && Math.floor(i / 9) !== 1),
+  }));
+}
+
+function casesOf(seed: number, count: number, offset: number, stratum: (i: number) => Stratum): BruteCase[] {
   const rand = seededRandom(seed);
   const out: BruteCase[] = [];
   for (let i = offset; out.length < count; i++) {
-    const family = FAMILIES[i % FAMILIES.length] as Family;
-    const kind = TOOLS[i % TOOLS.length] as (typeof TOOLS)[number];
-    const tilted = Math.floor(i / 3) % 2 === 1;
-    const pattern: PassPattern = Math.floor(i / 2) % 2 === 0 ? 'one-way' : 'zigzag';
+    const { family, kind, tilted, pattern, leadless } = stratum(i);
     for (let attempt = 0; attempt < 50; attempt++) {
       const R = 1 + 3 * rand();
       const Rcr = kind === 'ball' ? R : kind === 'flat' ? 0 : R * (0.15 + 0.7 * rand());
       const tool: ToolInput = {
         toolRadiusMm: R,
         cornerRadiusMm: Rcr,
-        // Cases 2, 8, 14, ... (bull-nose on a saddle +-, the plane, a convex sphere) without lead: the
-        // flat bottom then meets a convex feed circle inside its chords (the foot of l).
-        leadAngleDeg: i % 6 === 2 ? 0 : 3 + 30 * rand(),
+        leadAngleDeg: leadless ? 0 : 3 + 30 * rand(),
         tiltAngleDeg: tilted ? (rand() < 0.5 ? 1 : -1) * (5 + 30 * rand()) : 0,
       };
       const [rf, rc] = radii(family, R, rand);
