@@ -61,12 +61,29 @@ export interface DoublyCurvedBruteForce {
   readonly boundMm: number;
   /** The lowest radial height of pass 0 alone away from its CC point (negative: it gouges), mm. */
   readonly lowestAwayFromContactMm: number;
+  /**
+   * Per pass (0, then 1 before its turn about m), the tool-surface parameters of the sample that
+   * was lowest in the cusp's bin (or the nearest bin that pass reached), for a polishing start
+   * (doublyCurvedPolished.ts); null where the pass has no sample near the cusp.
+   */
+  readonly winners: [ToolSample | null, ToolSample | null];
+}
+
+/**
+ * A point of the tool surface by its parameters: piece 0 the corner's lower outer quarter (v the
+ * corner angle in [-pi/2, 0]), 1 the bottom disk (v the radius in [0, Rb]), 2 the shank (v the
+ * height above the corner, mm); t the angle about the tool axis from e1 towards e2, radians.
+ */
+export interface ToolSample {
+  readonly piece: 0 | 1 | 2;
+  readonly t: number;
+  readonly v: number;
 }
 
 const deg = Math.PI / 180;
 
 /** The tool in its posture: centre O, axis a, and a basis (e1, e2) of the plane normal to a. */
-interface ToolGeometry {
+export interface ToolGeometry {
   readonly R: number;
   readonly rcr: number;
   readonly rb: number;
@@ -416,11 +433,23 @@ export function bruteForceDoublyCurved(
     const v = boundary(b);
     if (Number.isFinite(u) && Number.isFinite(v)) slope = Math.max(slope, Math.abs(v - u) / lv.width);
   }
+  const winner = (k: 0 | 1): ToolSample | null => {
+    for (let d = 0; d < n && found.bin >= 0; d++) {
+      for (const b of [found.bin - d, found.bin + d]) {
+        const i = b >= 0 && b < n ? (lv.who[k][b] as number) : -1;
+        if (i < 0) continue;
+        const smp = lv.samples[k];
+        return { piece: smp.piece[i] as 0 | 1 | 2, t: smp.t[i] as number, v: smp.v[i] as number };
+      }
+    }
+    return null;
+  };
   return {
     cuspHeightMm: found.cusp,
     cuspReachMm: lv.from + (found.bin + 0.5) * lv.width,
     boundMm: slope * (lv.width + 2 * ds) + lv.sagitta,
     lowestAwayFromContactMm: lowestAway,
+    winners: [winner(0), winner(1)],
   };
 }
 

@@ -10,6 +10,7 @@ import { doublyCurvedGouges } from '../../../../src/core/surfaces/doublyCurved/g
 import { doublyCurvedForward, doublyCurvedLimits } from '../../../../src/core/surfaces/doublyCurved/solve';
 import { seededRandom } from '../../../support/bruteForce';
 import { bruteForceDoublyCurved } from '../../../support/reference/doublyCurvedBruteForce';
+import { polishDoublyCurvedCusp } from '../../../support/reference/doublyCurvedPolished';
 
 export const FAMILIES = [
   'dome',
@@ -65,24 +66,56 @@ function radii(family: Family, R: number, rand: () => number): [number, number] 
   }
 }
 
+/** The stratum of case i: family, tool, tilt, pattern. */
+interface Stratum {
+  readonly family: Family;
+  readonly kind: (typeof TOOLS)[number];
+  readonly tilted: boolean;
+  readonly pattern: PassPattern;
+  /** No lead: a flat bottom then meets a convex feed circle inside its chords (the foot of l). */
+  readonly leadless: boolean;
+}
+
 /** `count` cases from a seed, cycling the families, tools, tilt and patterns so that each stratum appears. */
 export function bruteCases(seed: number, count: number, offset = 0): BruteCase[] {
+  return casesOf(seed, count, offset, (i) => ({
+    family: FAMILIES[i % FAMILIES.length] as Family,
+    kind: TOOLS[i % TOOLS.length] as (typeof TOOLS)[number],
+    tilted: Math.floor(i / 3) % 2 === 1,
+    pattern: Math.floor(i / 2) % 2 === 0 ? 'one-way' : 'zigzag',
+    // Cases 2, 8, 14, ... (bull-nose on a saddle +-, the plane, a convex sphere).
+    leadless: i % 6 === 2,
+  }));
+}
+
+/**
+ * `count` cases from a seed crossing every family with every tool (case i: family i mod 9, tool
+ * floor(i / 9) mod 3), tilt alternating and the pattern every second case; no lead for the ball on
+ * the saddle +- and the ball and the bull-nose on the plane (the other leadless tools there gouge or
+ * leave no scallop, and the case would be skipped).
+ */
+export function crossCases(seed: number, count: number, offset = 0): BruteCase[] {
+  return casesOf(seed, count, offset, (i) => ({
+    family: FAMILIES[i % FAMILIES.length] as Family,
+    kind: TOOLS[Math.floor(i / FAMILIES.length) % TOOLS.length] as (typeof TOOLS)[number],
+    tilted: i % 2 === 1,
+    pattern: Math.floor(i / 2) % 2 === 0 ? 'one-way' : 'zigzag',
+    leadless: (i % 9 === 2 && i < 9) || (i % 9 === 8 && i < 27 && Math.floor(i / 9) !== 1),
+  }));
+}
+
+function casesOf(seed: number, count: number, offset: number, stratum: (i: number) => Stratum): BruteCase[] {
   const rand = seededRandom(seed);
   const out: BruteCase[] = [];
   for (let i = offset; out.length < count; i++) {
-    const family = FAMILIES[i % FAMILIES.length] as Family;
-    const kind = TOOLS[i % TOOLS.length] as (typeof TOOLS)[number];
-    const tilted = Math.floor(i / 3) % 2 === 1;
-    const pattern: PassPattern = Math.floor(i / 2) % 2 === 0 ? 'one-way' : 'zigzag';
+    const { family, kind, tilted, pattern, leadless } = stratum(i);
     for (let attempt = 0; attempt < 50; attempt++) {
       const R = 1 + 3 * rand();
       const Rcr = kind === 'ball' ? R : kind === 'flat' ? 0 : R * (0.15 + 0.7 * rand());
       const tool: ToolInput = {
         toolRadiusMm: R,
         cornerRadiusMm: Rcr,
-        // Cases 2, 8, 14, ... (bull-nose on a saddle +-, the plane, a convex sphere) without lead: the
-        // flat bottom then meets a convex feed circle inside its chords (the foot of l).
-        leadAngleDeg: i % 6 === 2 ? 0 : 3 + 30 * rand(),
+        leadAngleDeg: leadless ? 0 : 3 + 30 * rand(),
         tiltAngleDeg: tilted ? (rand() < 0.5 ? 1 : -1) * (5 + 30 * rand()) : 0,
       };
       const [rf, rc] = radii(family, R, rand);
@@ -98,12 +131,40 @@ export function bruteCases(seed: number, count: number, offset = 0): BruteCase[]
   return out;
 }
 
+/** The tool's kind from its radii. */
+export function toolKind(c: BruteCase): (typeof TOOLS)[number] {
+  if (c.tool.cornerRadiusMm === c.tool.toolRadiusMm) return 'ball';
+  return c.tool.cornerRadiusMm === 0 ? 'flat' : 'bull-nose';
+}
+
+/** Keeps the largest error (mm) per stratum of the case: family, tool, tilt, pattern. */
+export function recordWorst(worst: Map<string, number>, c: BruteCase, errorMm: number): void {
+  for (const key of [
+    `family ${c.family}`,
+    `tool ${toolKind(c)}`,
+    c.tool.tiltAngleDeg === 0 ? 'no tilt' : 'tilt',
+    `pattern ${c.pattern}`,
+  ])
+    worst.set(key, Math.max(worst.get(key) ?? 0, errorMm));
+}
+
+/** The table of largest errors, one stratum a line, families first. */
+export function worstTable(title: string, worst: Map<string, number>): string {
+  const rows = [...worst].sort(([a], [b]) => a.localeCompare(b));
+  return `${title}\n${rows.map(([k, v]) => `  ${k.padEnd(26)} ${v.toExponential(2)} mm`).join('\n')}`;
+}
+
 /**
  * The solver's cusps against the brute force's: between pass 0 and pass 1, and for zigzag also the
  * other cusp (pass 0 and 1 meet with two right flanks; the same passes of the tool mirrored in Y meet
- * with the original's two left flanks).
+ * with the original's two left flanks). With `polish`, also the polished cusp (doublyCurvedPolished.ts,
+ * started from this brute force's winning samples); NaN without.
  */
-export function compare(c: BruteCase, levels: number): Array<{ exactMm: number; bruteMm: number; boundMm: number }> {
+export function compare(
+  c: BruteCase,
+  levels: number,
+  polish = false,
+): Array<{ exactMm: number; bruteMm: number; boundMm: number; polishedMm: number }> {
   const f = doublyCurvedForward({
     ...c.tool,
     pattern: c.pattern,
@@ -121,14 +182,14 @@ export function compare(c: BruteCase, levels: number): Array<{ exactMm: number; 
         ]
       : [[c.tool.tiltAngleDeg, c.h]];
   return cusps.map(([tilt, exactMm]) => {
-    const b = bruteForceDoublyCurved(
-      { R: c.tool.toolRadiusMm, Rcr: c.tool.cornerRadiusMm, leadDeg: c.tool.leadAngleDeg, tiltDeg: tilt },
-      c.pattern,
-      c.rf,
-      c.rc,
-      f.intervalMm,
-      { spacingMm: c.tool.toolRadiusMm / 60, levels },
-    );
-    return { exactMm, bruteMm: b.cuspHeightMm, boundMm: b.boundMm };
+    const tool = { R: c.tool.toolRadiusMm, Rcr: c.tool.cornerRadiusMm, leadDeg: c.tool.leadAngleDeg, tiltDeg: tilt };
+    const b = bruteForceDoublyCurved(tool, c.pattern, c.rf, c.rc, f.intervalMm, {
+      spacingMm: c.tool.toolRadiusMm / 60,
+      levels,
+    });
+    const polishedMm = polish
+      ? polishDoublyCurvedCusp(tool, c.pattern, c.rf, c.rc, f.intervalMm, b).polishedMm
+      : Number.NaN;
+    return { exactMm, bruteMm: b.cuspHeightMm, boundMm: b.boundMm, polishedMm };
   });
 }
