@@ -243,9 +243,7 @@ export function maxRaMm(tool: ToolInput, pattern: PassPattern, surface: Surface 
 
 /**
  * The scallop height h (mm) whose passes leave a roughness Ra equal to `targetRaMm` (then the
- * step-over follows from h). Ra grows with h; a bracketed secant (Illinois) in log h, started
- * from the rule of thumb h = 4 Ra, converges in a handful of steps. Requires
- * 0 < target < maxRaMm(tool, pattern).
+ * step-over follows from h). See {@link heightForRaMm}. Requires 0 < target < maxRaMm(tool, pattern).
  */
 export function scallopHeightForRaMm(
   tool: ToolInput,
@@ -254,8 +252,25 @@ export function scallopHeightForRaMm(
   surface: Surface = PLANE,
 ): number {
   const limit = scallopHeightLimits(tool, surface).limitMm * (1 - 1e-12);
-  const ra = (h: number) => exactRoughness(forwardInput(tool, pattern, h, surface)).raMm - targetRaMm;
-  let lo = Math.log(Math.min(limit, 1e-12 * limit + targetRaMm * 1e-3));
+  return heightForRaMm((h) => exactRoughness(forwardInput(tool, pattern, h, surface)).raMm, targetRaMm, limit);
+}
+
+/**
+ * The height h (mm) at which `raAt(h)` (the Ra of the passes that leave the scallop h, increasing
+ * in h) equals `targetRaMm`: a bracketed secant (Illinois) in log h, started from the rule of thumb
+ * h = 4 Ra, converges in a handful of steps.
+ *
+ * The bracket's lower end is h = 2 Ra: the profile lies between the contacts (0) and the highest
+ * cusp (h), so its mean deviation is at most h / 2 and Ra(2 Ra) <= Ra. (A lower end a thousand
+ * times below the answer, as before, costs seconds across a cylinder's axis: there the flank width
+ * at a height of a few nanometres carries the rounding of the corner centre's height, the adaptive
+ * quadrature never meets its relative 1e-13 and runs to its cap.)
+ * @param limitMm the largest height (just below the flank limit); requires 0 < target < raAt(limit).
+ */
+export function heightForRaMm(raAt: (h: number) => number, targetRaMm: number, limitMm: number): number {
+  const limit = limitMm;
+  const ra = (h: number) => raAt(h) - targetRaMm;
+  let lo = Math.log(Math.min(limit, 2 * targetRaMm));
   let hi = Math.log(limit);
   let fLo = ra(Math.exp(lo));
   let fHi = ra(Math.exp(hi));

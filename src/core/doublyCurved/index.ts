@@ -10,3 +10,4 @@ export * from './passSection';
 export * from './shankLimit';
 export * from './solve';
 export * from './types';
+export * from './roughness';
