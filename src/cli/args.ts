@@ -117,7 +117,10 @@ export function parseArgs(args: readonly string[]): Request {
   }
   const json = flags.has('json');
   if (values.slope !== undefined) return threeAxisRequest(values, flags, json);
-  const threeAxisOnly = THREE_AXIS_FIELDS.find((id) => values[FIELD_OPTION[id]] !== undefined);
+  // The principal radii are also a five-axis surface (a doubly curved point): not three-axis only.
+  const threeAxisOnly = THREE_AXIS_FIELDS.find(
+    (id) => id !== 'feedRadius' && id !== 'crossRadius' && values[FIELD_OPTION[id]] !== undefined,
+  );
   if (threeAxisOnly !== undefined) {
     return usage(`${cliFlag(threeAxisOnly)} is for three-axis machining: give the surface's slope with --slope <deg>`);
   }
@@ -145,6 +148,20 @@ export function parseArgs(args: readonly string[]): Request {
   }
   const radius = values['surface-radius']?.trim();
   const onPlane = radius === undefined || radius === '' || radius === 'plane';
+  const principal = (['feed-radius', 'cross-radius'] as const).find((name) => values[name] !== undefined);
+  if (principal !== undefined) {
+    const cylinder = (['surface-radius', 'surface-axis'] as const).find((name) => values[name] !== undefined);
+    if (cylinder !== undefined) {
+      return usage(
+        `--${cylinder} and --${principal} do not go together: give the surface once, as --surface-radius with --surface-axis (a cylinder) or as --feed-radius and --cross-radius`,
+      );
+    }
+    if (simulate) {
+      return usage(
+        '--simulate works on a plane only: the simulation of the passes does not model a curved surface (leave out the radii or --simulate)',
+      );
+    }
+  }
   if (values['surface-axis'] !== undefined && radius === undefined) {
     return usage('--surface-axis needs --surface-radius <mm>: a plane has no axis');
   }
