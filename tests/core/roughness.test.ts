@@ -313,3 +313,33 @@ describe('exact roughness on cylinders (measured radially, over arc length on th
     expect(Math.abs(exactRoughness(forwardInput(t, 'one-way', h, surface)).raMm - target)).toBeLessThan(1e-12);
   });
 });
+
+describe('heightForRaMm: the bracket of the target Ra', () => {
+  it('never asks for the Ra of a height below 2 Ra (where the width across a cylinder carries rounding), and finds h', async () => {
+    const { heightForRaMm } = await import('../../src/core/roughness');
+    const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 10, tiltAngleDeg: 5 };
+    for (const surface of [
+      { kind: 'cylinder', radiusMm: 50, axis: 'cross' },
+      { kind: 'cylinder', radiusMm: -50, axis: 'cross' },
+      { kind: 'cylinder', radiusMm: 50, axis: 'feed' },
+      undefined,
+    ] as const) {
+      const max = maxRaMm(tool, 'one-way', surface);
+      const limit = scallopHeightLimits(tool, surface).limitMm * (1 - 1e-12);
+      for (const target of [0.001 * max, 0.3 * max, 0.95 * max]) {
+        let lowest = Number.POSITIVE_INFINITY;
+        const h = heightForRaMm(
+          (x) => {
+            lowest = Math.min(lowest, x);
+            return exactRoughness(forwardInput(tool, 'one-way', x, surface)).raMm;
+          },
+          target,
+          limit,
+        );
+        expect(lowest, JSON.stringify(surface)).toBeGreaterThanOrEqual(2 * target * (1 - 1e-12));
+        const ra = exactRoughness(forwardInput(tool, 'one-way', h, surface)).raMm;
+        expect(Math.abs(ra - target) / target).toBeLessThan(1e-12);
+      }
+    }
+  });
+});
