@@ -343,3 +343,26 @@ describe('heightForRaMm: the bracket of the target Ra', () => {
     }
   });
 });
+
+describe('widthIntegrals: rounding in the width', () => {
+  it('stops splitting where the error estimate is the width rounding (a few hundred calls, not the 60 000 of the panel cap), to the accuracy the width allows', async () => {
+    const { widthIntegrals } = await import('../../src/core/roughness');
+    // w = 2 sqrt(z) with a relative rounding of 1e-11 (deterministic, unrelated to z's digits).
+    let seed = 7;
+    const noise = () => {
+      seed = (seed * 16807) % 2147483647;
+      return seed / 2147483647 - 0.5;
+    };
+    for (const zMax of [1e-6, 0.003, 0.5]) {
+      let calls = 0;
+      const [a1, a2] = widthIntegrals((z) => {
+        calls++;
+        return 2 * Math.sqrt(z) * (1 + 2e-11 * noise());
+      }, zMax);
+      // int_0^Z 2 sqrt(z) dz = 4/3 Z^1.5; int_0^Z 2 z sqrt(z) dz = 4/5 Z^2.5.
+      expect(Math.abs(a1 / ((4 / 3) * zMax ** 1.5) - 1), String(zMax)).toBeLessThan(1e-10);
+      expect(Math.abs(a2 / ((4 / 5) * zMax ** 2.5) - 1), String(zMax)).toBeLessThan(1e-10);
+      expect(calls, String(zMax)).toBeLessThan(2000);
+    }
+  });
+});
