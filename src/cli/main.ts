@@ -51,7 +51,8 @@ import {
 } from './doublyCurvedReport';
 import { describeSystemError, errorLine, escapeControls, isClosedPipe, Output } from './output';
 import { type Extras, forwardJson, forwardTable, inverseJson, inverseTable, type SimulationRun } from './report';
-import { threeAxisJson, threeAxisTable } from './threeAxisReport';
+import { sweepSlopes } from './slopeSweep';
+import { slopeSweepJson, slopeSweepTable, threeAxisJson, threeAxisTable } from './threeAxisReport';
 
 export interface Io {
   readonly stdin: Readable;
@@ -66,6 +67,7 @@ export const USAGE = `Usage: path-interval --R <mm> --Rcr <mm> --rho <deg> [opti
        path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --h <mm> [--json]
        path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --horizontal-step <mm> [--json]
        path-interval --R <mm> --Rcr <mm> --slope <deg> --passes waterline [...] --step-down <mm> [--json]
+       path-interval --R <mm> --Rcr <mm> --h <mm> --slope-sweep [three-axis options] [--json]
        path-interval --batch < cases.csv > table.csv
 
 Step-over (path interval L, between adjacent cutter-contact paths) of a filleted (bull-nose)
@@ -82,6 +84,13 @@ radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
   --surface-radius <mm> a cylinder: signed radius, > 0 convex, < 0 concave (0.001 <= |Rs| <= 1e6);
                         omitted: a plane. Scallop heights are measured radially, L along the surface
   --surface-axis <a>    feed (default: passes run along the cylinder) or cross (passes go around it)
+  --feed-radius <mm>    a doubly curved point: signed principal radius along the feed Rf (> 0
+                        convex, < 0 concave; 0.001 <= |Rf| <= 1e6; omitted: straight)
+  --cross-radius <mm>   and across the feed Rc. Both: the exact answer at that point beside the
+                        plane's, each cylinder's and the usual correction 1/rho = 1/Reff + 1/Rc;
+                        one alone is the cylinder shorthand (--cross-radius Rs is --surface-radius
+                        Rs --surface-axis feed; --feed-radius Rs, the axis across); not with
+                        --surface-radius or --surface-axis
   --h <mm>              scallop height (from 1e-9 up to the flank and shank limits)
   --ra <mm>             instead of --h: the step-over that leaves this roughness Ra (up to the
                         largest Ra the tool leaves, named in the error)
@@ -106,8 +115,11 @@ Three-axis machining (the tool upright, the surface sloped; then --rho and --til
   --interval <mm>       inverse: the cusp height a step-over L along the surface leaves
   --horizontal-step <mm> inverse, raster: the cusp height a horizontal step Lxy leaves
   --step-down <mm>      inverse, waterline: the cusp height a step-down dz (tool tip to tool tip) leaves
+  --slope-sweep         instead of --slope, with --h: Lxy (raster) or dz (waterline) for h at 31 slopes
+                        from 0 to the largest valid, and the cusp one constant step leaves at each
+                        (the flat floor's step for h, or the typed --horizontal-step / --step-down)
   --batch               read CSV on stdin (header R,Rcr,rho and h or Ra; optional tilt, pattern,
-                        surfaceRadius, surfaceAxis; any order; an empty field takes the default;
+                        surfaceRadius, surfaceAxis, or feedRadius, crossRadius; any order; an empty field takes the default;
                         output columns are ignored, so an output or a lookup table reads back),
                         three-axis: a header with slope needs no rho; optional passes,
                         rasterAngle, feedRadius, crossRadius; output interval,horizontalStep,
@@ -389,6 +401,17 @@ async function run(request: Request, io: Io, out: Output): Promise<number> {
     }
     case 'threeAxis':
       return threeAxis(request.values, request.quantity, request.json, io, out);
+    case 'slopeSweep': {
+      const r = sweepSlopes(request.values);
+      if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, request.json);
+      const step = { typed: r.typed };
+      out.write(
+        request.json
+          ? `${JSON.stringify(slopeSweepJson(r.input, r.sweep, step))}\n`
+          : `${slopeSweepTable(r.input, r.sweep, step)}\n`,
+      );
+      return 0;
+    }
   }
 }
 
