@@ -283,7 +283,9 @@ export function scallopHeightForRaMm(
 /**
  * The height h (mm) at which `raAt(h)` (the Ra of the passes that leave the scallop h, increasing
  * in h) equals `targetRaMm`: a bracketed secant (Illinois) in log h, started from the rule of thumb
- * h = 4 Ra, converges in a handful of steps.
+ * h = 4 Ra, converges in a handful of steps; it stops when Ra is within a relative 1e-13 of the
+ * target or h is bracketed to a relative 1e-12 (closer steps chased the rounding of Ra, twice as
+ * many of them).
  *
  * The bracket's lower end is h = 2 Ra: the profile lies between the contacts (0) and the highest
  * cusp (h), so its mean deviation is at most h / 2 and Ra(2 Ra) <= Ra. (A lower end a thousand
@@ -306,7 +308,8 @@ export function heightForRaMm(raAt: (h: number) => number, targetRaMm: number, l
   let side = 0;
   for (let i = 0; i < 100; i++) {
     const f = ra(Math.exp(x));
-    if (f === 0) return Math.exp(x);
+    // Ra itself is integrated to a relative 1e-13: closer than that is noise, not progress.
+    if (Math.abs(f) <= 1e-13 * targetRaMm) return Math.exp(x);
     if (f < 0) {
       lo = x;
       fLo = f;
@@ -318,7 +321,9 @@ export function heightForRaMm(raAt: (h: number) => number, targetRaMm: number, l
       if (side === 1) fLo /= 2;
       side = 1;
     }
-    if (hi - lo <= 1e-15 * Math.max(1, Math.abs(hi))) break;
+    // h to a relative 1e-12 (1e-14 mm at h = 0.01 mm): where the width carries rounding (across a
+    // cylinder's axis), Ra's own noise is about that, and narrower brackets chased it.
+    if (hi - lo <= 1e-12) break;
     x = hi - (fHi * (hi - lo)) / (fHi - fLo);
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
   }
