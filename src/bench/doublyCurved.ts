@@ -11,6 +11,7 @@
  *                                                   two tools, lead 10 degrees, h = 0.05 mm, one-way,
  *                                                   |Rf|, |Rc| in {10, 50, 200} mm, dome, bowl, saddle)
  */
+import { pathToFileURL } from 'node:url';
 import { compareDoublyCurved, type DoublyCurvedRow } from '../core/surfaces/doublyCurved/compare';
 import { doublyCurvedGouging } from '../core/surfaces/doublyCurved/gouging';
 import { doublyCurvedForward, doublyCurvedIntervalMm, doublyCurvedLimits } from '../core/surfaces/doublyCurved/solve';
@@ -73,22 +74,35 @@ function measure(
   return samples[Math.floor(samples.length / 2)] as number;
 }
 
-const args = process.argv.slice(2);
-const roundsAt = args.indexOf('--rounds');
-const rounds = roundsAt >= 0 ? Math.max(1, Number(args[roundsAt + 1]) || 15) : 15;
-const cases = inputs(400);
-const result = {
-  exactDoublyCurvedNsPerCall: measure((x) => doublyCurvedForward(x).intervalMm, cases, 400, rounds),
-  exactDoublyCurvedIntervalNsPerCall: measure((x) => doublyCurvedIntervalMm(x), cases, 400, rounds),
-};
-console.log(
-  `exact forward at a doubly curved point: ${(result.exactDoublyCurvedNsPerCall / 1000).toFixed(2)} us per call (median of ${rounds} rounds)`,
-);
-console.log(
-  `exact step-over alone:                   ${(result.exactDoublyCurvedIntervalNsPerCall / 1000).toFixed(2)} us per call`,
-);
-if (args.includes('--json')) console.log(JSON.stringify(result));
-if (args.includes('--table')) table();
+/**
+ * The doubly curved figures (ns per call, median of `rounds`): the exact forward answer (key
+ * exactDoublyCurvedNsPerCall, target 30 us) and the step-over alone. Also run by `npm run bench`.
+ */
+export function doublyCurvedBench(rounds: number): {
+  exactDoublyCurvedNsPerCall: number;
+  exactDoublyCurvedIntervalNsPerCall: number;
+} {
+  const cases = inputs(400);
+  return {
+    exactDoublyCurvedNsPerCall: measure((x) => doublyCurvedForward(x).intervalMm, cases, 400, rounds),
+    exactDoublyCurvedIntervalNsPerCall: measure((x) => doublyCurvedIntervalMm(x), cases, 400, rounds),
+  };
+}
+
+if (import.meta.url === pathToFileURL(process.argv[1] ?? '').href) {
+  const args = process.argv.slice(2);
+  const roundsAt = args.indexOf('--rounds');
+  const rounds = roundsAt >= 0 ? Math.max(1, Number(args[roundsAt + 1]) || 15) : 15;
+  const result = doublyCurvedBench(rounds);
+  console.log(
+    `exact forward at a doubly curved point: ${(result.exactDoublyCurvedNsPerCall / 1000).toFixed(2)} us per call (median of ${rounds} rounds)`,
+  );
+  console.log(
+    `exact step-over alone:                   ${(result.exactDoublyCurvedIntervalNsPerCall / 1000).toFixed(2)} us per call`,
+  );
+  if (args.includes('--json')) console.log(JSON.stringify(result));
+  if (args.includes('--table')) table();
+}
 
 /** Markdown table: each shortcut's deviation from the exact step-over and the scallop its L leaves. */
 function table(): void {

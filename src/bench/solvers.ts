@@ -26,6 +26,8 @@ import {
 } from '../core/index';
 import { PASS_FIELDS } from '../core/input/fields';
 import { rawOf } from '../core/input/raw';
+import { doublyCurvedBench } from './doublyCurved';
+import { threeAxisBench } from './threeAxis';
 
 /**
  * Deterministic inputs spread over the valid domain (mulberry32, seed 1); with `tilt`, tilts
@@ -132,6 +134,31 @@ rows.push(
   ],
 );
 
+// A target Ra across a cylinder's axis, as the page asks it: the largest Ra (validation) and the
+// scallop height for 30 % of it, wall clock per case (ms), median over cases and rounds. Issue 19:
+// at most 50 ms (it took 2.4 to 3 s).
+const raCrossMs: number[] = [];
+for (let r = 0; r < Math.max(3, Math.min(rounds, 7)); r++) {
+  for (const c of crossCases.slice(0, 16)) {
+    const t0 = process.hrtime.bigint();
+    const max = maxRaMm(c, c.pattern, c.surface);
+    sink += scallopHeightForRaMm(c, c.pattern, 0.3 * max, c.surface);
+    raCrossMs.push(Number(process.hrtime.bigint() - t0) / 1e6);
+  }
+}
+raCrossMs.sort((x, y) => x - y);
+const targetRaCylinderCrossMsMedian = raCrossMs[raCrossMs.length >> 1] as number;
+const targetRaCylinderCrossMsMax = raCrossMs.at(-1) as number;
+
+// Issue 19 and 20: the doubly curved point and three-axis machining (src/bench/doublyCurved.ts, threeAxis.ts).
+const doubly = doublyCurvedBench(Math.max(3, Math.min(rounds, 15)));
+rows.push(
+  ['exact at a doubly curved point', 'exactDoublyCurvedNsPerCall', doubly.exactDoublyCurvedNsPerCall],
+  ['  its step-over alone', 'exactDoublyCurvedIntervalNsPerCall', doubly.exactDoublyCurvedIntervalNsPerCall],
+);
+const three = threeAxisBench(rounds);
+for (const [label, key, v] of three.rows) rows.push([`three-axis: ${label}`, key, v.wall]);
+
 // The page's default simulation: 512 x 512 cells, 5 one-way passes, the paper's Tool 1 at h = 0.05 mm.
 const simTool = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 const simInterval = exactIntervalMm(forwardInput(simTool, 'one-way', 0.05));
@@ -190,6 +217,12 @@ console.log(
 console.log(
   `${'--batch, 20 000 rows (rows/s)'.padEnd(36)}${batchRowsPerSecond.toFixed(0).padStart(14)}   median of ${batchRounds} runs`,
 );
+console.log(
+  `${'target Ra across a cylinder (ms)'.padEnd(36)}${targetRaCylinderCrossMsMedian.toFixed(1).padStart(14)}   median; slowest ${targetRaCylinderCrossMsMax.toFixed(1)} ms (maxRa and the solve)`,
+);
+for (const [label, , v] of three.sweeps) {
+  console.log(`${`three-axis sweep, ${label} (ms)`.padEnd(36)}${v.wall.toFixed(2).padStart(14)}`);
+}
 console.log(`(checksum ${sink.toExponential(3)})`);
 if (json) {
   const out: Record<string, number> = { rounds };
@@ -197,5 +230,8 @@ if (json) {
   out.simulationMsMedian = Number(simulationMsMedian.toFixed(1));
   out.simulationCellsPerSecond = Math.round((simCells / simulationMsMedian) * 1000);
   out.batchRowsPerSecond = Math.round(batchRowsPerSecond);
+  out.targetRaCylinderCrossMsMedian = Number(targetRaCylinderCrossMsMedian.toFixed(2));
+  out.targetRaCylinderCrossMsMax = Number(targetRaCylinderCrossMsMax.toFixed(2));
+  for (const [, key, v] of three.sweeps) out[key] = Number(v.wall.toFixed(2));
   console.log(JSON.stringify(out));
 }

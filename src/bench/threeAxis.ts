@@ -10,7 +10,7 @@
  * validated forward with both gouging checks; target 50000 ns), and the 200-slope sweeps in ms
  * (target: within one 16 ms frame).
  */
-
+import { pathToFileURL } from 'node:url';
 import { type ForwardInput, forwardInput } from '../core/input/validate';
 import { exactIntervalMm } from '../core/surfaces/exact';
 import {
@@ -113,120 +113,136 @@ function median(xs: number[]): number {
   return xs.length % 2 ? (xs[mid] as number) : ((xs[mid - 1] as number) + (xs[mid] as number)) / 2;
 }
 
-const args = process.argv.slice(2);
-const json = args.includes('--json');
-const roundsArg = args.indexOf('--rounds');
-const rounds = roundsArg >= 0 ? Math.max(1, Number(args[roundsArg + 1]) || 1) : 21;
-const plane = planeCases(1024);
-const revolution = revolutionCases(512);
+/** A figure: wall clock and CPU time. */
+export type Figure = { wall: number; cpu: number };
 
-// The posture solver alone on the same postures (lead and tilt from the slope): the reference the
-// three-axis figures ride on, so that a loaded machine shows as a ratio.
-const postures: Timed<ForwardInput>[] = plane.map((c) => {
-  const r = slopedPlaneForward(c.input, c.h);
-  const tool = {
-    toolRadiusMm: c.input.toolRadiusMm,
-    cornerRadiusMm: c.input.cornerRadiusMm,
-    leadAngleDeg: r.ok ? r.value.leadDeg : 0,
-    tiltAngleDeg: r.ok ? r.value.tiltDeg : 0,
-  };
-  return { input: forwardInput(tool, 'one-way', c.h), h: c.h };
-});
+/**
+ * The three-axis figures (median of `rounds`): ns per call of the solvers (keys
+ * exact3AxisPlaneNsPerCall, target 1.5 us; exact3AxisWaterlineNsPerCall, target 50 us...) and the
+ * 200-slope sweeps in ms. Also run by `npm run bench`.
+ */
+export function threeAxisBench(rounds: number): {
+  rows: Array<[string, string, Figure]>;
+  sweeps: Array<[string, string, Figure]>;
+} {
+  const plane = planeCases(1024);
+  const revolution = revolutionCases(512);
 
-const rows: Array<[string, string, { wall: number; cpu: number }]> = [
-  [
-    'posture solver alone, same postures',
-    'postureSolverSamePosturesNsPerCall',
-    measure((c) => exactIntervalMm(c.input), postures, 100_000, rounds),
-  ],
-  [
-    'sloped plane, validated forward',
-    'exact3AxisPlaneNsPerCall',
-    measure(
-      (c) => {
-        const r = slopedPlaneForward(c.input, c.h);
-        return r.ok ? r.value.horizontalStepMm : 0;
-      },
-      plane,
-      100_000,
-      rounds,
-    ),
-  ],
-  [
-    'sloped plane, L only (no validation)',
-    'exact3AxisPlaneFastNsPerCall',
-    measure((c) => slopedPlaneIntervalMm(c.input, c.h), plane, 100_000, rounds),
-  ],
-  [
-    'waterline on a surface of revolution',
-    'exact3AxisWaterlineNsPerCall',
-    measure(
-      (c) => {
-        const r = waterlineForward(c.input, c.h);
-        return r.ok ? r.value.stepDownMm : 0;
-      },
-      revolution,
-      10_000,
-      rounds,
-    ),
-  ],
-];
+  // The posture solver alone on the same postures (lead and tilt from the slope): the reference the
+  // three-axis figures ride on, so that a loaded machine shows as a ratio.
+  const postures: Timed<ForwardInput>[] = plane.map((c) => {
+    const r = slopedPlaneForward(c.input, c.h);
+    const tool = {
+      toolRadiusMm: c.input.toolRadiusMm,
+      cornerRadiusMm: c.input.cornerRadiusMm,
+      leadAngleDeg: r.ok ? r.value.leadDeg : 0,
+      tiltAngleDeg: r.ok ? r.value.tiltDeg : 0,
+    };
+    return { input: forwardInput(tool, 'one-way', c.h), h: c.h };
+  });
 
-// The 200-slope sweeps, each call timed on its own (ms, wall and CPU).
-function sweepMs(make: () => number): { wall: number; cpu: number } {
-  const wall: number[] = [];
-  const cpu: number[] = [];
-  for (let i = 0; i < 3; i++) sink += make();
-  for (let r = 0; r < Math.max(5, rounds); r++) {
-    const c0 = process.cpuUsage();
-    const t0 = process.hrtime.bigint();
-    sink += make();
-    wall.push(Number(process.hrtime.bigint() - t0) / 1e6);
-    const c = process.cpuUsage(c0);
-    cpu.push((c.user + c.system) / 1000);
+  const rows: Array<[string, string, { wall: number; cpu: number }]> = [
+    [
+      'posture solver alone, same postures',
+      'postureSolverSamePosturesNsPerCall',
+      measure((c) => exactIntervalMm(c.input), postures, 100_000, rounds),
+    ],
+    [
+      'sloped plane, validated forward',
+      'exact3AxisPlaneNsPerCall',
+      measure(
+        (c) => {
+          const r = slopedPlaneForward(c.input, c.h);
+          return r.ok ? r.value.horizontalStepMm : 0;
+        },
+        plane,
+        100_000,
+        rounds,
+      ),
+    ],
+    [
+      'sloped plane, L only (no validation)',
+      'exact3AxisPlaneFastNsPerCall',
+      measure((c) => slopedPlaneIntervalMm(c.input, c.h), plane, 100_000, rounds),
+    ],
+    [
+      'waterline on a surface of revolution',
+      'exact3AxisWaterlineNsPerCall',
+      measure(
+        (c) => {
+          const r = waterlineForward(c.input, c.h);
+          return r.ok ? r.value.stepDownMm : 0;
+        },
+        revolution,
+        10_000,
+        rounds,
+      ),
+    ],
+  ];
+
+  // The 200-slope sweeps, each call timed on its own (ms, wall and CPU).
+  function sweepMs(make: () => number): { wall: number; cpu: number } {
+    const wall: number[] = [];
+    const cpu: number[] = [];
+    for (let i = 0; i < 3; i++) sink += make();
+    for (let r = 0; r < Math.max(5, rounds); r++) {
+      const c0 = process.cpuUsage();
+      const t0 = process.hrtime.bigint();
+      sink += make();
+      wall.push(Number(process.hrtime.bigint() - t0) / 1e6);
+      const c = process.cpuUsage(c0);
+      cpu.push((c.user + c.system) / 1000);
+    }
+    return { wall: median(wall), cpu: median(cpu) };
   }
-  return { wall: median(wall), cpu: median(cpu) };
+  const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, hMm: 0.05 } as const;
+  const sweeps: Array<[string, string, { wall: number; cpu: number }]> = [
+    [
+      'raster psi 30',
+      'sweep3AxisRasterMs',
+      sweepMs(() => slopeSweep({ ...tool, passes: 'raster', rasterAngleDeg: 30 }).largestSlopeDeg),
+    ],
+    [
+      'waterline on the plane',
+      'sweep3AxisWaterlinePlaneMs',
+      sweepMs(() => slopeSweep({ ...tool, passes: 'waterline', rasterAngleDeg: 0 }).largestSlopeDeg),
+    ],
+    [
+      'waterline on a dome R30',
+      'sweep3AxisWaterlineDomeMs',
+      sweepMs(
+        () =>
+          slopeSweep({ ...tool, passes: 'waterline', rasterAngleDeg: 0, feedRadiusMm: 30, crossRadiusMm: 30 })
+            .largestSlopeDeg,
+      ),
+    ],
+  ];
+
+  return { rows, sweeps };
 }
-const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, hMm: 0.05 } as const;
-const sweeps: Array<[string, string, { wall: number; cpu: number }]> = [
-  [
-    'raster psi 30',
-    'sweep3AxisRasterMs',
-    sweepMs(() => slopeSweep({ ...tool, passes: 'raster', rasterAngleDeg: 30 }).largestSlopeDeg),
-  ],
-  [
-    'waterline on the plane',
-    'sweep3AxisWaterlinePlaneMs',
-    sweepMs(() => slopeSweep({ ...tool, passes: 'waterline', rasterAngleDeg: 0 }).largestSlopeDeg),
-  ],
-  [
-    'waterline on a dome R30',
-    'sweep3AxisWaterlineDomeMs',
-    sweepMs(
-      () =>
-        slopeSweep({ ...tool, passes: 'waterline', rasterAngleDeg: 0, feedRadiusMm: 30, crossRadiusMm: 30 })
-          .largestSlopeDeg,
-    ),
-  ],
-];
 
-console.log(
-  `Three-axis benchmark: median of ${rounds} rounds (${plane.length} plane, ${revolution.length} revolution inputs)`,
-);
-console.log(`Node ${process.version}, ${process.platform}/${process.arch}`);
-console.log('');
-console.log(`${'solver'.padEnd(40)}${'ns per call'.padStart(14)}${'CPU ns'.padStart(12)}`);
-for (const [label, , v] of rows)
-  console.log(`${label.padEnd(40)}${v.wall.toFixed(1).padStart(14)}${v.cpu.toFixed(1).padStart(12)}`);
-console.log(`${'sweep (200 slopes)'.padEnd(40)}${'ms'.padStart(14)}${'CPU ms'.padStart(12)}`);
-for (const [label, , v] of sweeps)
-  console.log(`${label.padEnd(40)}${v.wall.toFixed(2).padStart(14)}${v.cpu.toFixed(2).padStart(12)}`);
-console.log(`(checksum ${sink.toExponential(3)})`);
-if (json) {
-  const out: Record<string, number> = { rounds };
-  for (const [, key, v] of [...rows, ...sweeps]) {
-    out[key] = Number(v.wall.toFixed(2));
-    out[`${key}Cpu`] = Number(v.cpu.toFixed(2));
+if (import.meta.url === pathToFileURL(process.argv[1] ?? '').href) {
+  const args = process.argv.slice(2);
+  const json = args.includes('--json');
+  const roundsArg = args.indexOf('--rounds');
+  const rounds = roundsArg >= 0 ? Math.max(1, Number(args[roundsArg + 1]) || 1) : 21;
+  const { rows, sweeps } = threeAxisBench(rounds);
+  console.log(`Three-axis benchmark: median of ${rounds} rounds (1024 plane, 512 revolution inputs)`);
+  console.log(`Node ${process.version}, ${process.platform}/${process.arch}`);
+  console.log('');
+  console.log(`${'solver'.padEnd(40)}${'ns per call'.padStart(14)}${'CPU ns'.padStart(12)}`);
+  for (const [label, , v] of rows)
+    console.log(`${label.padEnd(40)}${v.wall.toFixed(1).padStart(14)}${v.cpu.toFixed(1).padStart(12)}`);
+  console.log(`${'sweep (200 slopes)'.padEnd(40)}${'ms'.padStart(14)}${'CPU ms'.padStart(12)}`);
+  for (const [label, , v] of sweeps)
+    console.log(`${label.padEnd(40)}${v.wall.toFixed(2).padStart(14)}${v.cpu.toFixed(2).padStart(12)}`);
+  console.log(`(checksum ${sink.toExponential(3)})`);
+  if (json) {
+    const out: Record<string, number> = { rounds };
+    for (const [, key, v] of [...rows, ...sweeps]) {
+      out[key] = Number(v.wall.toFixed(2));
+      out[`${key}Cpu`] = Number(v.cpu.toFixed(2));
+    }
+    console.log(JSON.stringify(out));
   }
-  console.log(JSON.stringify(out));
 }

@@ -11,7 +11,7 @@ export const VALUE_OPTIONS: readonly CliOption[] = CLI_OPTIONS;
 export type ValueOption = CliOption;
 
 /** Options that take no value (not fields: what to do and how to write it). */
-export const FLAG_OPTIONS = ['json', 'inverse', 'simulate', 'batch', 'help'] as const;
+export const FLAG_OPTIONS = ['json', 'inverse', 'simulate', 'batch', 'help', 'slope-sweep'] as const;
 type FlagOption = (typeof FLAG_OPTIONS)[number];
 
 /** What the command line was asked to do. */
@@ -40,6 +40,15 @@ export type Request =
       readonly json: boolean;
       readonly values: Readonly<Partial<Record<ValueOption, string>>>;
       readonly quantity: ThreeAxisQuantity;
+    }
+  | {
+      /**
+       * --slope-sweep: three-axis machining over the slopes, the programmed step for h at each and
+       * the scallop one constant step leaves (the flat floor's, or --horizontal-step / --step-down).
+       */
+      readonly kind: 'slopeSweep';
+      readonly json: boolean;
+      readonly values: Readonly<Partial<Record<ValueOption, string>>>;
     }
   | { readonly kind: 'usage'; readonly error: string };
 
@@ -116,8 +125,12 @@ export function parseArgs(args: readonly string[]): Request {
     return { kind: 'batch' };
   }
   const json = flags.has('json');
+  if (flags.has('slope-sweep')) return slopeSweepRequest(values, flags, json);
   if (values.slope !== undefined) return threeAxisRequest(values, flags, json);
-  const threeAxisOnly = THREE_AXIS_FIELDS.find((id) => values[FIELD_OPTION[id]] !== undefined);
+  // The principal radii are also a five-axis surface (a doubly curved point): not three-axis only.
+  const threeAxisOnly = THREE_AXIS_FIELDS.find(
+    (id) => id !== 'feedRadius' && id !== 'crossRadius' && values[FIELD_OPTION[id]] !== undefined,
+  );
   if (threeAxisOnly !== undefined) {
     return usage(`${cliFlag(threeAxisOnly)} is for three-axis machining: give the surface's slope with --slope <deg>`);
   }
@@ -145,6 +158,20 @@ export function parseArgs(args: readonly string[]): Request {
   }
   const radius = values['surface-radius']?.trim();
   const onPlane = radius === undefined || radius === '' || radius === 'plane';
+  const principal = (['feed-radius', 'cross-radius'] as const).find((name) => values[name] !== undefined);
+  if (principal !== undefined) {
+    const cylinder = (['surface-radius', 'surface-axis'] as const).find((name) => values[name] !== undefined);
+    if (cylinder !== undefined) {
+      return usage(
+        `--${cylinder} and --${principal} do not go together: give the surface once, as --surface-radius with --surface-axis (a cylinder) or as --feed-radius and --cross-radius`,
+      );
+    }
+    if (simulate) {
+      return usage(
+        '--simulate works on a plane only: the simulation of the passes does not model a curved surface (leave out the radii or --simulate)',
+      );
+    }
+  }
   if (values['surface-axis'] !== undefined && radius === undefined) {
     return usage('--surface-axis needs --surface-radius <mm>: a plane has no axis');
   }
@@ -220,4 +247,47 @@ function threeAxisRequest(
     );
   }
   return { kind: 'threeAxis', json, values, quantity: given[0]?.[1] ?? 'h' };
+}
+
+/**
+ * --slope-sweep: the three-axis options but the slope (swept from 0 to the largest valid), --h, and
+ * optionally the constant programmed step (--horizontal-step for raster, --step-down for waterline).
+ */
+function slopeSweepRequest(
+  values: Readonly<Partial<Record<ValueOption, string>>>,
+  flags: ReadonlySet<string>,
+  json: boolean,
+): Request {
+  if (values.slope !== undefined) {
+    return usage('--slope does not go with --slope-sweep: the sweep runs over every slope from 0 to the largest valid');
+  }
+  if (values.interval !== undefined) {
+    return usage(
+      '--interval does not go with --slope-sweep: give --h, and the constant step as --horizontal-step (raster) or --step-down (waterline)',
+    );
+  }
+  if (values.h === undefined) return usage('--slope-sweep needs the scallop height --h <mm>');
+  if (values['horizontal-step'] !== undefined && values['step-down'] !== undefined) {
+    return usage('--horizontal-step and --step-down do not go together: give the one constant step the passes program');
+  }
+  // The rest as --slope takes it (the same combinations do not exist), with the sweep's quantity h.
+  const checked = threeAxisRequest(
+    { ...values, h: undefined, 'horizontal-step': undefined, 'step-down': undefined, slope: '0' },
+    flags,
+    json,
+  );
+  if (checked.kind === 'usage') return usage(checked.error.replace('with --slope:', 'with --slope-sweep:'));
+  for (const [name, passes] of [
+    ['horizontal-step', 'waterline'],
+    ['step-down', 'raster'],
+  ] as const) {
+    if (values[name] !== undefined && (values.passes?.trim() ?? 'raster') === passes) {
+      return usage(
+        name === 'step-down'
+          ? '--step-down is the step of waterline passes: give raster passes their --horizontal-step <mm>'
+          : '--horizontal-step is the step of raster passes: give waterline passes their --step-down <mm>',
+      );
+    }
+  }
+  return { kind: 'slopeSweep', json, values };
 }

@@ -16,7 +16,17 @@
 
 import type { Readable } from 'node:stream';
 import { StringDecoder } from 'node:string_decoder';
-import { forwardInput, scallopHeightForRaMm, validateForward, validateTargetRa } from '../core/index';
+import {
+  type AnyInputError,
+  APPROXIMATIONS,
+  type ApproximationKey,
+  describeInputError,
+  forwardInput,
+  type RawToolInput,
+  scallopHeightForRaMm,
+  validateForward,
+  validateTargetRa,
+} from '../core/index';
 import {
   CSV_OPTIONAL_COLUMNS,
   CSV_REQUIRED_COLUMNS,
@@ -29,11 +39,16 @@ import {
 } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
 import { csvNumber, RESULT_COLUMNS, resultFields } from '../core/output/csvWrite';
+import {
+  doublyCurvedForward,
+  doublyCurvedHeightForRaMm,
+  validateDoublyCurved,
+} from '../core/surfaces/doublyCurved/index';
 import { solveThreeAxis, validateThreeAxis } from '../core/threeAxis/validate';
 import { CsvReader, type CsvRecord, csvText } from './csv';
 import { describeSystemError, errorLine, escapeControls, FLUSH_CHARS, type Output } from './output';
 
-/** The result columns and their writers live in the shared CSV writer (core/output/csvWrite.ts). */
+/** The result columns and their writers live in the shared CSV writer (core/csvWrite.ts). */
 export { csvNumber, RESULT_COLUMNS, resultFields };
 
 /**
@@ -44,7 +59,18 @@ export const REQUIRED_COLUMNS = CSV_REQUIRED_COLUMNS;
 export const TARGET_COLUMNS = CSV_TARGET_COLUMNS;
 export const OPTIONAL_COLUMNS = CSV_OPTIONAL_COLUMNS;
 type InputColumn = CsvColumn;
-const INPUT_COLUMNS: readonly InputColumn[] = [...REQUIRED_COLUMNS, ...TARGET_COLUMNS, ...OPTIONAL_COLUMNS];
+/**
+ * The principal radii of a doubly curved point (optional; empty: straight): both in a row make it a
+ * doubly curved point, one alone the cylinder it is (feedRadius Rs: axis across; crossRadius Rs:
+ * axis along the feed), as on the command line.
+ */
+export const RADIUS_COLUMNS: readonly InputColumn[] = [csvColumnOf('feedRadius'), csvColumnOf('crossRadius')];
+const INPUT_COLUMNS: readonly InputColumn[] = [
+  ...REQUIRED_COLUMNS,
+  ...TARGET_COLUMNS,
+  ...OPTIONAL_COLUMNS,
+  ...RADIUS_COLUMNS,
+];
 
 /** The scallop height's and the target roughness's columns (h, Ra). */
 const H_COLUMN = csvColumnOf('h');
@@ -98,7 +124,7 @@ const THREE_AXIS_INPUT_COLUMNS: readonly InputColumn[] = [
 ];
 
 /** What the header must be, as the messages say it. */
-export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN} in place of ${H_COLUMN}) in any order, optionally with ${listed(OPTIONAL_COLUMNS)} (and the output columns, which are ignored); or, for three-axis machining, R,Rcr,h,${SLOPE_COLUMN} optionally with ${listed(CSV_THREE_AXIS_COLUMNS.filter((c) => c !== SLOPE_COLUMN))}`;
+export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN} in place of ${H_COLUMN}) in any order, optionally with ${listed([...OPTIONAL_COLUMNS, ...RADIUS_COLUMNS])} (and the output columns, which are ignored); or, for three-axis machining, R,Rcr,h,${SLOPE_COLUMN} optionally with ${listed(CSV_THREE_AXIS_COLUMNS.filter((c) => c !== SLOPE_COLUMN))}`;
 
 /** Result columns a header may hold (an output read back): ignored, computed again. */
 const IGNORED_COLUMNS: readonly string[] = RESULT_COLUMNS;
@@ -118,7 +144,7 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
       ignored.add(name);
       return;
     }
-    if ((CSV_THREE_AXIS_COLUMNS as readonly string[]).includes(name)) {
+    if ((CSV_THREE_AXIS_COLUMNS as readonly string[]).includes(name) && !RADIUS_COLUMNS.includes(name as InputColumn)) {
       problems.push(`column ${name} is for three-axis rows: add a ${SLOPE_COLUMN} column`);
       return;
     }
@@ -249,9 +275,91 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
     const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);
     return `${echo},${csvNumber(h)},${resultFields(forwardInput(p, p.pattern, h, p.surface))},\n`;
   }
+  const rf = optionalField(fields, index[csvColumnOf('feedRadius')]);
+  const rc = optionalField(fields, index[csvColumnOf('crossRadius')]);
+  if (rf !== undefined || rc !== undefined) {
+    const cylinder = pass.surfaceRadius !== undefined || pass.surfaceAxis !== undefined;
+    if (cylinder) {
+      return errorRow(
+        echo,
+        layout,
+        'give the surface once: surfaceRadius with surfaceAxis (a cylinder), or feedRadius and crossRadius',
+      );
+    }
+    if (rf !== undefined && rc !== undefined) return doublyCurvedRow(pass, rf, rc, fields, layout, echo);
+    // One radius alone: the cylinder it is (the cylinder's own path, the same digits).
+    const cylinderPass = { ...pass, surfaceRadius: rf ?? rc, surfaceAxis: rf === undefined ? 'feed' : 'cross' };
+    const as = rf === undefined ? 'crossRadius' : 'feedRadius';
+    return passRow(cylinderPass, fields, layout, echo, as);
+  }
+  return passRow(pass, fields, layout, echo);
+}
+
+/** The row of a plane or a cylinder (h or a target Ra). */
+function passRow(
+  pass: RawToolInput,
+  fields: readonly string[],
+  layout: Layout,
+  echo: string,
+  as?: 'feedRadius' | 'crossRadius',
+): string {
+  const { index } = layout;
+  const words = (errors: readonly AnyInputError[]) =>
+    errors.map((e) => (as === undefined ? e.message : describeInputError(e, 'mm', { surfaceRadiusAs: as }))).join(' ');
+  if (layout.target === RA_COLUMN) {
+    const v = validateTargetRa({ ...pass, ra: fields[index[RA_COLUMN] as number] });
+    if (!v.ok) return errorRow(echo, layout, words(v.errors));
+    const p = v.value;
+    const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);
+    return `${echo},${csvNumber(h)},${resultFields(forwardInput(p, p.pattern, h, p.surface))},\n`;
+  }
   const v = validateForward({ ...pass, h: fields[index[H_COLUMN] as number] });
-  if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
+  if (!v.ok) return errorRow(echo, layout, words(v.errors));
   return `${echo},${resultFields(v.value)},\n`;
+}
+
+/**
+ * The row of a doubly curved point: the exact answer in the result columns (exact L/2, interval,
+ * flank reaches, contact offset, otherCuspHeight), the paper's procedures and the others as on a
+ * plane (as the cylinder rows give them: they ignore the curvature); a gouging point's message in
+ * `error`.
+ */
+function doublyCurvedRow(
+  pass: RawToolInput,
+  rf: string,
+  rc: string,
+  fields: readonly string[],
+  layout: Layout,
+  echo: string,
+): string {
+  const { index } = layout;
+  const ra = layout.target === RA_COLUMN;
+  const quantity = ra ? 'ra' : 'h';
+  const raw = {
+    R: pass.R,
+    Rcr: pass.Rcr,
+    rho: pass.rho,
+    tilt: pass.tilt,
+    pattern: pass.pattern,
+    feedRadius: rf,
+    crossRadius: rc,
+  };
+  const v = validateDoublyCurved(raw, quantity, fields[index[ra ? RA_COLUMN : H_COLUMN] as number]);
+  if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
+  const p = v.value;
+  const h = ra ? doublyCurvedHeightForRaMm(p, p.pattern, p, p.valueMm) : p.valueMm;
+  const e = doublyCurvedForward({ ...p, scallopHeightMm: h });
+  const plane = forwardInput(p, p.pattern, h);
+  const half = (key: ApproximationKey) => {
+    const r = APPROXIMATIONS[key].halfInterval(plane);
+    return r.ok ? csvNumber(r.halfIntervalMm) : '';
+  };
+  const other = e.otherCuspHeightMm === null ? '' : csvNumber(e.otherCuspHeightMm);
+  return (
+    `${echo},${ra ? `${csvNumber(h)},` : ''}${csvNumber(e.intervalMm / 2)},${half('sekine')},${half('redonnet')},${half('bedi')},` +
+    `${csvNumber(e.intervalMm)},${csvNumber(e.halfWidthRightMm)},${csvNumber(e.halfWidthLeftMm)},` +
+    `${csvNumber(e.contactOffsetMm)},${other},${half('osculating')},${half('cornerBall')},,\n`
+  );
 }
 
 /** The output row of a valid-shaped three-axis record: interval, Lxy, dz, lead, tilt, note, error. */

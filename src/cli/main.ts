@@ -25,6 +25,16 @@ import {
 import { cliFlag, FIELDS, PASS_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
 import {
+  compareDoublyCurved,
+  type DoublyCurvedQuantity,
+  doublyCurvedHeightForRaMm,
+  doublyCurvedInverse,
+  doublyCurvedRoughness,
+  doublyCurvedRoughnessAtInterval,
+  doublyCurvedSolver,
+  validateDoublyCurved,
+} from '../core/surfaces/doublyCurved/index';
+import {
   solveThreeAxis,
   type ThreeAxisInputError,
   type ThreeAxisQuantity,
@@ -33,9 +43,16 @@ import {
 import { parseArgs, type Request, type ValueOption } from './args';
 import { runBatch } from './batch';
 import { isNumberText } from './csv';
+import {
+  doublyCurvedForwardJson,
+  doublyCurvedForwardTable,
+  doublyCurvedInverseJson,
+  doublyCurvedInverseTable,
+} from './doublyCurvedReport';
 import { describeSystemError, errorLine, escapeControls, isClosedPipe, Output } from './output';
 import { type Extras, forwardJson, forwardTable, inverseJson, inverseTable, type SimulationRun } from './report';
-import { threeAxisJson, threeAxisTable } from './threeAxisReport';
+import { sweepSlopes } from './slopeSweep';
+import { slopeSweepJson, slopeSweepTable, threeAxisJson, threeAxisTable } from './threeAxisReport';
 
 export interface Io {
   readonly stdin: Readable;
@@ -50,6 +67,7 @@ export const USAGE = `Usage: path-interval --R <mm> --Rcr <mm> --rho <deg> [opti
        path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --h <mm> [--json]
        path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --horizontal-step <mm> [--json]
        path-interval --R <mm> --Rcr <mm> --slope <deg> --passes waterline [...] --step-down <mm> [--json]
+       path-interval --R <mm> --Rcr <mm> --h <mm> --slope-sweep [three-axis options] [--json]
        path-interval --batch < cases.csv > table.csv
 
 Step-over (path interval L, between adjacent cutter-contact paths) of a filleted (bull-nose)
@@ -66,6 +84,13 @@ radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
   --surface-radius <mm> a cylinder: signed radius, > 0 convex, < 0 concave (0.001 <= |Rs| <= 1e6);
                         omitted: a plane. Scallop heights are measured radially, L along the surface
   --surface-axis <a>    feed (default: passes run along the cylinder) or cross (passes go around it)
+  --feed-radius <mm>    a doubly curved point: signed principal radius along the feed Rf (> 0
+                        convex, < 0 concave; 0.001 <= |Rf| <= 1e6; omitted: straight)
+  --cross-radius <mm>   and across the feed Rc. Both: the exact answer at that point beside the
+                        plane's, each cylinder's and the usual correction 1/rho = 1/Reff + 1/Rc;
+                        one alone is the cylinder shorthand (--cross-radius Rs is --surface-radius
+                        Rs --surface-axis feed; --feed-radius Rs, the axis across); not with
+                        --surface-radius or --surface-axis
   --h <mm>              scallop height (from 1e-9 up to the flank and shank limits)
   --ra <mm>             instead of --h: the step-over that leaves this roughness Ra (up to the
                         largest Ra the tool leaves, named in the error)
@@ -90,8 +115,11 @@ Three-axis machining (the tool upright, the surface sloped; then --rho and --til
   --interval <mm>       inverse: the cusp height a step-over L along the surface leaves
   --horizontal-step <mm> inverse, raster: the cusp height a horizontal step Lxy leaves
   --step-down <mm>      inverse, waterline: the cusp height a step-down dz (tool tip to tool tip) leaves
+  --slope-sweep         instead of --slope, with --h: Lxy (raster) or dz (waterline) for h at 31 slopes
+                        from 0 to the largest valid, and the cusp one constant step leaves at each
+                        (the flat floor's step for h, or the typed --horizontal-step / --step-down)
   --batch               read CSV on stdin (header R,Rcr,rho and h or Ra; optional tilt, pattern,
-                        surfaceRadius, surfaceAxis; any order; an empty field takes the default;
+                        surfaceRadius, surfaceAxis, or feedRadius, crossRadius; any order; an empty field takes the default;
                         output columns are ignored, so an output or a lookup table reads back),
                         three-axis: a header with slope needs no rho; optional passes,
                         rasterAngle, feedRadius, crossRadius; output interval,horizontalStep,
@@ -117,12 +145,19 @@ function reportErrors(
   errors: readonly AnyInputError[],
   json: boolean,
   half: { readonly typed: string } | null,
+  surfaceRadiusAs?: 'feedRadius' | 'crossRadius',
 ): number {
   const worded = errors.map((e) => {
     const asHalf = half !== null && e.field === 'interval';
-    const options: DescribeOptions = asHalf ? { intervalAsHalf: true, typed: half.typed.trim() } : {};
+    const options: DescribeOptions = {
+      ...(asHalf ? { intervalAsHalf: true, typed: half.typed.trim() } : {}),
+      ...(surfaceRadiusAs === undefined ? {} : { surfaceRadiusAs }),
+    };
     const message = describeInputError(e, 'mm', options);
-    const option = optionOf(e.field, asHalf);
+    const option =
+      surfaceRadiusAs !== undefined && e.field === 'surfaceRadius'
+        ? cliFlag(surfaceRadiusAs)
+        : optionOf(e.field, asHalf);
     io.stderr.write(errorLine(`${option}: ${message}`));
     return errorJson(e, option, escapeControls(message));
   });
@@ -143,6 +178,8 @@ export interface ErrorJson {
   readonly side?: 'right' | 'left';
   /** For `shank-gouging`: the shank's lean from the surface normal seen along the cylinder's axis. */
   readonly shankLean?: AnyInputError['shankLean'];
+  /** For `radius-gouging`: what the named radius must be with the other held, and the other's limit. */
+  readonly radiusLimit?: AnyInputError['radiusLimit'];
   /** The words of the stderr line, control characters escaped. */
   readonly message: string;
 }
@@ -157,6 +194,7 @@ export function errorJson(e: AnyInputError, option: string, message: string): Er
     ...(e.limit === null ? {} : { limit: e.limit }),
     ...(e.side === null ? {} : { side: e.side }),
     ...(e.shankLean === undefined ? {} : { shankLean: e.shankLean }),
+    ...(e.radiusLimit === undefined ? {} : { radiusLimit: e.radiusLimit }),
     message,
   };
 }
@@ -201,34 +239,37 @@ function writeForward(input: ForwardInput, wanted: Wanted, out: Output, targetRa
   return 0;
 }
 
-function forward(values: Values, wanted: Wanted, io: Io, out: Output): number {
+function forward(values: Values, wanted: Wanted, io: Io, out: Output, as?: RadiusOption): number {
   const v = validateForward({ ...passValues(values), h: values[FIELDS.h.cli] });
-  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, null);
+  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, null, as);
   return writeForward(v.value, wanted, out);
 }
 
 /** --ra: the scallop height that leaves the target Ra, then the forward answer for it. */
-function targetRa(values: Values, wanted: Wanted, io: Io, out: Output): number {
+function targetRa(values: Values, wanted: Wanted, io: Io, out: Output, as?: RadiusOption): number {
   const v = validateTargetRa({ ...passValues(values), ra: values[FIELDS.ra.cli] });
-  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, null);
+  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, null, as);
   const p = v.value;
   const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);
   return writeForward(forwardInput(p, p.pattern, h, p.surface), wanted, out, p.targetRaMm);
 }
 
-function inverse(values: Values, wanted: Wanted, half: boolean, io: Io, out: Output): number {
-  let interval: unknown = values[FIELDS.interval.cli];
+/** The step-over as validation reads it: --interval, or 2 (L/2) from --half-interval. */
+function intervalOf(values: Values, half: boolean): unknown {
   const typedHalf = values[FIELDS.halfInterval.cli];
-  if (half && typedHalf !== undefined) {
-    // L = 2 (L/2) exactly; validation messages quote L/2 as typed.
-    // An L/2 so large that 2 (L/2) overflows is beyond any tool: the largest double stands for it.
-    const text = typedHalf.trim();
-    const doubled = 2 * Number(text);
-    if (!isNumberText(text)) interval = typedHalf;
-    else interval = Number.isFinite(doubled) ? doubled : Math.sign(doubled) * Number.MAX_VALUE;
-  }
-  const v = validateInverse({ ...passValues(values), interval });
-  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, half ? { typed: typedHalf ?? '' } : null);
+  if (!half || typedHalf === undefined) return values[FIELDS.interval.cli];
+  // L = 2 (L/2) exactly; validation messages quote L/2 as typed.
+  // An L/2 so large that 2 (L/2) overflows is beyond any tool: the largest double stands for it.
+  const text = typedHalf.trim();
+  const doubled = 2 * Number(text);
+  if (!isNumberText(text)) return typedHalf;
+  return Number.isFinite(doubled) ? doubled : Math.sign(doubled) * Number.MAX_VALUE;
+}
+
+function inverse(values: Values, wanted: Wanted, half: boolean, io: Io, out: Output, as?: RadiusOption): number {
+  const typedHalf = values[FIELDS.halfInterval.cli];
+  const v = validateInverse({ ...passValues(values), interval: intervalOf(values, half) });
+  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, half ? { typed: typedHalf ?? '' } : null, as);
   const input = v.value;
   const c = compareInverse(input);
   const extras: Extras = {
@@ -274,6 +315,71 @@ function threeAxis(values: Values, quantity: ThreeAxisQuantity, json: boolean, i
   return 0;
 }
 
+/** A principal radius's field, when one alone stands for a cylinder. */
+type RadiusOption = 'feedRadius' | 'crossRadius';
+
+/**
+ * The surface the options give: the principal radii (--feed-radius, --cross-radius) both given are
+ * a doubly curved point; one alone is the cylinder it is (--cross-radius Rs is --surface-radius Rs
+ * --surface-axis feed, --feed-radius Rs is the axis across), answered by the cylinder's own path
+ * (the same digits); neither leaves the options as they are (args.ts refuses the two forms mixed).
+ */
+function surfaceForm(
+  values: Values,
+): { readonly kind: 'doubly' } | { readonly kind: 'pass'; readonly values: Values; readonly as?: RadiusOption } {
+  const rf = values[FIELDS.feedRadius.cli];
+  const rc = values[FIELDS.crossRadius.cli];
+  if (rf !== undefined && rc !== undefined) return { kind: 'doubly' };
+  if (rf === undefined && rc === undefined) return { kind: 'pass', values };
+  const rest: Partial<Record<ValueOption, string>> = { ...values };
+  delete rest[FIELDS.feedRadius.cli];
+  delete rest[FIELDS.crossRadius.cli];
+  rest[FIELDS.surfaceRadius.cli] = rf ?? rc;
+  rest[FIELDS.surfaceAxis.cli] = rf === undefined ? 'feed' : 'cross';
+  return { kind: 'pass', values: rest, as: rf === undefined ? 'crossRadius' : 'feedRadius' };
+}
+
+/** A doubly curved point (both principal radii): forward, target Ra or inverse. */
+function doublyCurved(request: Request & { kind: 'forward' | 'ra' | 'inverse' }, io: Io, out: Output): number {
+  const values = request.values;
+  const half = request.kind === 'inverse' ? request.half : false;
+  const quantity: DoublyCurvedQuantity = request.kind === 'forward' ? 'h' : request.kind === 'ra' ? 'ra' : 'interval';
+  const raw = Object.fromEntries(
+    (['R', 'Rcr', 'rho', 'tilt', 'pattern', 'feedRadius', 'crossRadius'] as const).map((id) => [
+      id,
+      values[FIELDS[id].cli],
+    ]),
+  );
+  const given = quantity === 'interval' ? intervalOf(values, half) : values[FIELDS[quantity].cli];
+  const v = validateDoublyCurved(raw as { R: unknown; Rcr: unknown; rho: unknown }, quantity, given);
+  if (!v.ok) {
+    const typedHalf = values[FIELDS.halfInterval.cli];
+    return reportErrors(io, out, v.errors, request.json, half ? { typed: typedHalf ?? '' } : null);
+  }
+  const p = v.value;
+  const solver = doublyCurvedSolver(p, p);
+  if (quantity === 'interval') {
+    const e = doublyCurvedInverse({ ...p, intervalMm: p.valueMm });
+    const r = doublyCurvedRoughnessAtInterval(solver, p.pattern, e);
+    out.write(
+      request.json ? `${JSON.stringify(doublyCurvedInverseJson(p, e, r))}\n` : `${doublyCurvedInverseTable(p, e, r)}\n`,
+    );
+    return 0;
+  }
+  const h = quantity === 'ra' ? doublyCurvedHeightForRaMm(p, p.pattern, p, p.valueMm) : p.valueMm;
+  const c = compareDoublyCurved({ ...p, scallopHeightMm: h });
+  const extras: Extras = {
+    roughness: doublyCurvedRoughness(solver, p.pattern, c.exact),
+    ...(quantity === 'ra' ? { targetRaMm: p.valueMm } : {}),
+  };
+  out.write(
+    request.json
+      ? `${JSON.stringify(doublyCurvedForwardJson(p, h, c, extras))}\n`
+      : `${doublyCurvedForwardTable(p, h, c, extras)}\n`,
+  );
+  return 0;
+}
+
 async function run(request: Request, io: Io, out: Output): Promise<number> {
   switch (request.kind) {
     case 'help':
@@ -285,13 +391,27 @@ async function run(request: Request, io: Io, out: Output): Promise<number> {
     case 'batch':
       return runBatch(io, out);
     case 'forward':
-      return forward(request.values, request, io, out);
     case 'ra':
-      return targetRa(request.values, request, io, out);
-    case 'inverse':
-      return inverse(request.values, request, request.half, io, out);
+    case 'inverse': {
+      const form = surfaceForm(request.values);
+      if (form.kind === 'doubly') return doublyCurved(request, io, out);
+      if (request.kind === 'forward') return forward(form.values, request, io, out, form.as);
+      if (request.kind === 'ra') return targetRa(form.values, request, io, out, form.as);
+      return inverse(form.values, request, request.kind === 'inverse' && request.half, io, out, form.as);
+    }
     case 'threeAxis':
       return threeAxis(request.values, request.quantity, request.json, io, out);
+    case 'slopeSweep': {
+      const r = sweepSlopes(request.values);
+      if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, request.json);
+      const step = { typed: r.typed };
+      out.write(
+        request.json
+          ? `${JSON.stringify(slopeSweepJson(r.input, r.sweep, step))}\n`
+          : `${slopeSweepTable(r.input, r.sweep, step)}\n`,
+      );
+      return 0;
+    }
   }
 }
 

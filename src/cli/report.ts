@@ -90,7 +90,7 @@ export function ruleOfThumb(
 }
 
 /** Lines of the roughness block (exact Rz, Ra, Rq and the rule of thumb). */
-function roughnessLines(r: Roughness, scallopHeightMm: number): string[] {
+export function roughnessLines(r: Roughness, scallopHeightMm: number): string[] {
   const thumb = ruleOfThumb(scallopHeightMm, r.raMm);
   const off =
     thumb.deviationPercent === null
@@ -148,7 +148,7 @@ function simulationLines(sim: SimulationRun, exactCuspMm: number, exact: Roughne
 }
 
 /** Label of a curvature row: the plane's answer, or a procedure's circle corrected for the curvature. */
-function curvatureLabel(key: CorrectedKey | 'plane'): string {
+export function curvatureLabel(key: CorrectedKey | 'plane'): string {
   return CURVATURE_ROWS[key === 'plane' ? 'plane' : (`${key}Corrected` as const)].label;
 }
 
@@ -342,11 +342,15 @@ type JsonObject = { [key: string]: JsonValue };
 
 /** The tool, posture, pattern and surface as validation reads them (a plane has no surface fields: left out). */
 function toolJson(input: PassInput): JsonObject {
-  return rawOf(input, PASS_FIELDS) as JsonObject;
+  const out = rawOf(input, PASS_FIELDS) as JsonObject;
+  // A cylinder is a doubly curved point with one radius straight: its principal radii too.
+  const s = input.surface;
+  if (s.kind === 'cylinder') out[s.axis === 'feed' ? 'crossRadius' : 'feedRadius'] = s.radiusMm;
+  return out;
 }
 
 /** The extras as JSON fields: roughness, the rule of thumb beside it, the simulation. */
-function extrasJson(extras: Extras, scallopHeightMm: number): JsonObject {
+export function extrasJson(extras: Extras, scallopHeightMm: number): JsonObject {
   const out: JsonObject = {};
   const r = extras.roughness;
   if (r !== undefined) {

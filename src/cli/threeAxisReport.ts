@@ -4,6 +4,7 @@
  * dz for waterline), then L along the surface and the equivalent lead and tilt at the CC point.
  * Pure; lengths mm, angles degrees.
  */
+import type { SlopeSweep, SlopeSweepInput } from '../core/threeAxis/slopeSweep';
 import type { ThreeAxisAnswer, ThreeAxisProblem, ThreeAxisQuantity } from '../core/threeAxis/validate';
 import type { JsonValue } from './report';
 import { type Column, echo, length, renderTable } from './table';
@@ -114,5 +115,97 @@ export function threeAxisJson(p: ThreeAxisProblem, a: ThreeAxisAnswer): JsonObje
     input,
     exact,
     posture: { lead: a.leadDeg, tilt: a.tiltDeg === 0 ? 0 : a.tiltDeg },
+  };
+}
+
+/** Whether the sweep's constant step was typed or is the flat floor's. */
+export interface SweepStep {
+  readonly typed: boolean;
+}
+
+function sweepCaseLine(i: SlopeSweepInput): string {
+  const kind =
+    i.cornerRadiusMm === i.toolRadiusMm
+      ? 'Ball end mill'
+      : i.cornerRadiusMm === 0
+        ? 'Flat end mill'
+        : 'Filleted end mill';
+  const tool = `${kind} R = ${echo(i.toolRadiusMm)} mm, Rcr = ${echo(i.cornerRadiusMm)} mm, upright (three-axis)`;
+  if (i.passes === 'raster') return `${tool}; raster passes at psi = ${echo(i.rasterAngleDeg)} deg to the fall line`;
+  const radius = (r: number | null | undefined) => (r === null || r === undefined ? 'straight' : `${echo(r)} mm`);
+  const surface =
+    (i.feedRadiusMm ?? null) === null && (i.crossRadiusMm ?? null) === null
+      ? 'a plane'
+      : `a surface of revolution, Rf ${radius(i.feedRadiusMm)}, Rc ${radius(i.crossRadiusMm)} held at every slope`;
+  return `${tool}; waterline passes on ${surface}`;
+}
+
+/** The slope sweep as a table: for each slope the step for h, L, the posture, the limit and the constant step's cusp. */
+export function slopeSweepTable(i: SlopeSweepInput, s: SlopeSweep, step: SweepStep): string {
+  const raster = i.passes === 'raster';
+  const name = raster ? 'Lxy' : 'dz';
+  const constant = step.typed
+    ? `the typed ${raster ? 'horizontal step' : 'step-down'} ${name} = ${echo(s.programmedStepMm)} mm`
+    : `the flat floor's step-over for h, ${name} = ${length(s.programmedStepMm)} mm`;
+  const columns: Column[] = [
+    { header: 'slope [deg]', align: 'right' },
+    { header: `${name} for h [mm]`, align: 'right' },
+    { header: 'L [mm]', align: 'right' },
+    { header: 'lead [deg]', align: 'right' },
+    { header: 'tilt [deg]', align: 'right' },
+    { header: 'h limit [mm]', align: 'right' },
+    { header: `h at ${name} = const [mm]`, align: 'right' },
+  ];
+  const rows = s.points.map((p) => [
+    angle(p.slopeDeg),
+    p.stepMm === null ? '-' : length(p.stepMm),
+    p.intervalMm === null ? '-' : length(p.intervalMm),
+    angle(p.leadDeg),
+    angle(p.tiltDeg),
+    Number.isFinite(p.heightLimitMm) ? length(p.heightLimitMm) : 'none',
+    p.cuspAtProgrammedStepMm !== null ? length(p.cuspAtProgrammedStepMm) : (p.programmedStepRefusal ?? '-'),
+  ]);
+  const largest =
+    s.largestSlopeDeg >= 90 - 1e-6
+      ? 'h is valid up to a vertical wall (90 deg, where the side cuts it flat)'
+      : `the largest slope where h is valid: ${angle(s.largestSlopeDeg)} deg`;
+  return [
+    sweepCaseLine(i),
+    `Scallop height h = ${echo(i.hMm)} mm; ${largest}`,
+    `Constant programmed step: ${constant}`,
+    '',
+    ...renderTable(columns, rows),
+    '',
+    `${name} for h: the step that leaves h at that slope (exact); h at ${name} = const: the cusp the constant step really leaves there`,
+    '(a code where that step leaves no scallop: a wall, the shank, beyond the surface...); heights along the surface normal.',
+  ].join('\n');
+}
+
+/** The slope sweep as JSON: the input, the largest valid slope, the constant step and the points (absent values left out). */
+export function slopeSweepJson(i: SlopeSweepInput, s: SlopeSweep, step: SweepStep): JsonObject {
+  const input: JsonObject = { R: i.toolRadiusMm, Rcr: i.cornerRadiusMm, h: i.hMm, passes: i.passes };
+  if (i.passes === 'raster') input.rasterAngle = i.rasterAngleDeg;
+  if (i.feedRadiusMm !== undefined && i.feedRadiusMm !== null) input.feedRadius = i.feedRadiusMm;
+  if (i.crossRadiusMm !== undefined && i.crossRadiusMm !== null) input.crossRadius = i.crossRadiusMm;
+  if (step.typed) input[i.passes === 'raster' ? 'horizontalStep' : 'stepDown'] = s.programmedStepMm;
+  const points: JsonValue[] = s.points.map((p) => {
+    const o: JsonObject = { slope: p.slopeDeg, lead: p.leadDeg, tilt: p.tiltDeg === 0 ? 0 : p.tiltDeg };
+    if (p.stepMm !== null) o[i.passes === 'raster' ? 'horizontalStep' : 'stepDown'] = p.stepMm;
+    if (p.intervalMm !== null) o.interval = p.intervalMm;
+    if (Number.isFinite(p.heightLimitMm)) o.heightLimit = p.heightLimitMm;
+    if (p.cuspAtProgrammedStepMm !== null) o.cuspAtProgrammedStep = p.cuspAtProgrammedStepMm;
+    if (p.programmedStepRefusal !== null) o.programmedStepRefusal = p.programmedStepRefusal;
+    return o;
+  });
+  return {
+    unit: 'mm',
+    machine: '3axis',
+    sweep: 'slope',
+    input,
+    largestSlope: s.largestSlopeDeg,
+    flatFloorStep: s.flatFloorStepMm,
+    programmedStep: s.programmedStepMm,
+    programmedStepTyped: step.typed,
+    points,
   };
 }

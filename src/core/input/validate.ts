@@ -15,8 +15,12 @@ import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol 
 /** Names of the user-facing inputs (the field registry's, input/fields.ts). */
 export type { FieldName };
 
-/** Every field an error can name (the target roughness `ra` included; kept as an alias). */
-export type AnyFieldName = FieldName;
+/**
+ * Every field an error can name: the registry's tool, pass and quantity fields, and the two
+ * principal radii of a doubly curved point (core/doublyCurved/validate.ts; the registry files them
+ * under three-axis machining, where waterline passes take them too).
+ */
+export type AnyFieldName = FieldName | 'feedRadius' | 'crossRadius';
 
 /** Why a field was rejected. */
 export type InputErrorCode =
@@ -40,6 +44,11 @@ export type InputErrorCode =
   | 'beyond-interval'
   | 'beyond-max-ra'
   | 'wall-only'
+  /**
+   * A doubly curved point the tool gouges (limit: the signed radius of this field that the
+   * nearest admissible value reaches with the other held, or null: none helps; `radiusLimit`).
+   */
+  | 'radius-gouging'
   /** A target the page does not solve: a target Ra on a cylinder across the feed takes seconds (the command line does). */
   | 'slow-target';
 
@@ -58,6 +67,19 @@ export interface InputErrorOf<F extends AnyFieldName> {
    * it (degrees), which set what would help.
    */
   readonly shankLean?: { readonly axis: SurfaceAxis; readonly leanDeg: number };
+  /**
+   * For `radius-gouging`: what this radius must be with the other held (`kind` as gouging.ts's
+   * RadiusLimit: `concave-at-least`, `convex-at-most`, `not-concave`, `none`), the other radius held
+   * (signed mm, Infinity straight), and what the other radius must be with this one held.
+   */
+  readonly radiusLimit?: {
+    readonly kind: 'concave-at-least' | 'convex-at-most' | 'not-concave' | 'none';
+    readonly heldMm: number;
+    readonly other: {
+      readonly kind: 'any' | 'concave-at-least' | 'convex-at-most' | 'not-concave' | 'none';
+      readonly radiusMm: number | null;
+    };
+  };
   /** The message in mm, ready to show as it is. */
   readonly message: string;
 }
@@ -164,6 +186,11 @@ export interface DescribeOptions {
    * concave switch): its messages name |Rs| and leave the sign convention out.
    */
   readonly radiusAsMagnitude?: boolean;
+  /**
+   * The cylinder was given as one principal radius (the command line's --feed-radius or
+   * --cross-radius alone): its messages name that radius instead of Rs.
+   */
+  readonly surfaceRadiusAs?: 'feedRadius' | 'crossRadius';
 }
 
 /**
@@ -173,7 +200,13 @@ export interface DescribeOptions {
 export function describeInputError(e: AnyInputError, unit: LengthUnit, options: DescribeOptions = {}): string {
   const half = e.field === 'interval' && options.intervalAsHalf === true;
   const diameter = options.toolSizeAsDiameter === true;
-  const label = half ? FIELDS.halfInterval.label : diameter && e.field === 'R' ? FIELDS.D.label : FIELD_LABELS[e.field];
+  const label = half
+    ? FIELDS.halfInterval.label
+    : diameter && e.field === 'R'
+      ? FIELDS.D.label
+      : e.field === 'surfaceRadius' && options.surfaceRadiusAs !== undefined
+        ? FIELDS[options.surfaceRadiusAs].label
+        : FIELDS[e.field].label;
   const u = unitSymbol(unit);
   const scale = half ? 0.5 : diameter && e.field === 'R' ? 2 : 1;
   const length = (mm: number) => `${formatInputNumber(fromMm(mm * scale, unit))} ${u}`;
@@ -198,6 +231,8 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
     case 'out-of-range':
       if (e.field === 'surfaceRadius' && options.radiusAsMagnitude === true)
         return `${label} must be a radius from ${length(MIN_SURFACE_RADIUS_MM)} to ${length(MAX_SURFACE_RADIUS_MM)} ${got}.`;
+      if (e.field === 'feedRadius' || e.field === 'crossRadius')
+        return `${label} must be a radius from ${length(MIN_SURFACE_RADIUS_MM)} to ${length(MAX_SURFACE_RADIUS_MM)}, negative for concave; leave it out for straight ${got}.`;
       if (e.field === 'surfaceRadius')
         return `${label} must be a radius from ${length(MIN_SURFACE_RADIUS_MM)} to ${length(MAX_SURFACE_RADIUS_MM)}, negative for a concave cylinder ${got}.`;
       return e.field === 'rho'
@@ -245,11 +280,51 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
       return e.limit === null || !(e.limit > 0)
         ? `${label} cannot be reached ${got}: this tool in this posture leaves no scallop (a flat bottom lying on the surface), so Ra = 0 at any step-over up to its diameter.`
         : `${label} must be below ${limit} ${got}, the largest Ra this tool, posture and pattern leave on this surface; passes far enough apart to leave more leave a wall, not a scallop.`;
+    case 'radius-gouging':
+      return radiusGougingText(e, label, length, got);
     case 'slow-target':
       return `${label} as the target on a cylinder with the axis across the feed takes seconds to solve (each step integrates the revolved profile), longer than the page waits for an answer ${got}: give the scallop height h instead, or use the command line's --ra.`;
     case 'beyond-interval':
       return `${label} must be below ${limit} ${got}, the widest step-over these flanks allow; at or beyond it adjacent passes leave a wall, not a scallop.`;
   }
+}
+
+/** The message of a `radius-gouging` error (see describeInputError). */
+function radiusGougingText(e: AnyInputError, label: string, length: (mm: number) => string, got: string): string {
+  const feed = e.field === 'feedRadius';
+  const me = feed ? 'Rf' : 'Rc';
+  const them = feed ? 'Rc' : 'Rf';
+  const r = e.radiusLimit;
+  const held = r === undefined || !Number.isFinite(r.heldMm) ? `${them} straight` : `${them} = ${length(r.heldMm)}`;
+  const mag = e.limit === null ? '' : length(Math.abs(e.limit));
+  let need: string;
+  switch (r?.kind ?? 'none') {
+    case 'concave-at-least':
+      need = `${label}: a concave ${me} must be at least ${mag} (${me} at most ${length(-Math.abs(e.limit ?? 0))}) for this tool and posture with ${held} held ${got}`;
+      break;
+    case 'convex-at-most':
+      need = `${label} must be convex and at most ${mag} for this tool and posture with ${held} held ${got}`;
+      break;
+    case 'not-concave':
+      need = `${label} must be straight or convex for this tool and posture with ${held} held ${got}: any concave ${me} is gouged`;
+      break;
+    default:
+      need = `This tool gouges the point at any radius ${me} with ${held} held ${got}`;
+  }
+  const o = r?.other;
+  const otherText =
+    o === undefined
+      ? ''
+      : o.kind === 'concave-at-least' && o.radiusMm !== null
+        ? `; or, with ${me} held, a concave ${them} of at least ${length(o.radiusMm)}`
+        : o.kind === 'convex-at-most' && o.radiusMm !== null
+          ? `; or, with ${me} held, a convex ${them} of at most ${length(o.radiusMm)}`
+          : o.kind === 'not-concave'
+            ? `; or, with ${me} held, a straight or convex ${them}`
+            : o.kind === 'none'
+              ? `; no ${them} helps with ${me} held`
+              : '';
+  return `${need}${otherText} (the tool reaches below the surface away from the contact).`;
 }
 
 /** An input error as data, with its message in mm. */
@@ -268,12 +343,13 @@ export function inputError<F extends AnyFieldName>(
   return { ...data, message: describeInputError(data, 'mm') };
 }
 
-type Parsed = { ok: true; value: number; shown: string } | { ok: false; code: InputErrorCode; shown: string };
+export type Parsed = { ok: true; value: number; shown: string } | { ok: false; code: InputErrorCode; shown: string };
 
 /** A strict decimal number: optional sign, digits with an optional point, optional exponent. */
 const NUMBER_PATTERN = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
 
-function parseNumber(raw: unknown): Parsed {
+/** Parses a number as validation does: a strict decimal text or a finite number; else the error code. */
+export function parseNumber(raw: unknown): Parsed {
   if (raw === undefined || raw === null) return { ok: false, code: 'missing', shown: '' };
   if (typeof raw === 'number') {
     if (Number.isNaN(raw)) return { ok: false, code: 'not-a-number', shown: 'NaN' };

@@ -38,7 +38,8 @@ export function maxRaCachedMm(input: PassInput): number {
  * command line) with maxRaMm remembered for the last pass (the page validates on every keystroke).
  */
 export function validateRaTarget(raw: RawRaTargetInput): Validation<RaTargetInput> {
-  return validateTargetRa(raw, maxRaCachedMm);
+  // Its errors name the tool, pass and Ra fields only (never a doubly curved point's radii).
+  return validateTargetRa(raw, maxRaCachedMm) as Validation<RaTargetInput>;
 }
 
 /** The forward input a valid target Ra comes to: the scallop height whose passes leave that Ra. */

@@ -105,6 +105,15 @@ function panel(w: (z: number) => number, a: number, b: number): [number, number,
 /**
  * `[int_0^Z w dz, int_0^Z z w dz]` for a flank, in u = sqrt(z), by adaptive GK15 to a relative 1e-13
  * of the first integral.
+ *
+ * A panel is split in two until its error estimate meets its share of the tolerance, unless the
+ * halves' estimates add up to half the panel's or more: then the estimate is the rounding of the
+ * width itself, not the rule's error (halving a panel divides the rule's error by 4 at a kink of w
+ * and by far more where w is smooth; rounding noise stays as large), and splitting further cannot
+ * improve the integral (QUADPACK's roundoff detection, in the same spirit). The width across a
+ * cylinder's axis carries the rounding of the corner centre's height (about 1e-16 of R), a relative
+ * 1e-13 of a scallop of a few micrometres or less: without this test the panels ran to the cap of
+ * 4000, some seconds of width solves per integral.
  */
 export function widthIntegrals(w: (z: number) => number, zMax: number): [number, number] {
   if (!(zMax > 0)) return [0, 0];
@@ -112,21 +121,37 @@ export function widthIntegrals(w: (z: number) => number, zMax: number): [number,
   let a1 = 0;
   let a2 = 0;
   const scale = zMax * w(zMax);
-  const todo: Array<[number, number]> = [];
-  // Start from 4 panels: the integrand can turn sharply where a flat face meets a corner.
-  for (let i = 0; i < 4; i++) todo.push([(top * i) / 4, (top * (i + 1)) / 4]);
+  // Panels waiting to be split: [lo, hi, its error estimate].
+  const todo: Array<[number, number, number]> = [];
   let evaluations = 0;
-  while (todo.length > 0) {
-    const [lo, hi] = todo.pop() as [number, number];
+  const tolOf = (lo: number, hi: number) => Math.max(1e-13 * scale * ((hi - lo) / top), 1e-300);
+  // Start from 4 panels: the integrand can turn sharply where a flat face meets a corner.
+  for (let i = 0; i < 4; i++) {
+    const lo = (top * i) / 4;
+    const hi = (top * (i + 1)) / 4;
     const [i1, i2, err] = panel(w, lo, hi);
     evaluations++;
-    const tol = Math.max(1e-13 * scale * ((hi - lo) / top), 1e-300);
-    if (err <= tol || hi - lo <= 1e-9 * top || evaluations > 4000) {
+    if (err <= tolOf(lo, hi)) {
       a1 += i1;
       a2 += i2;
-    } else {
-      const mid = 0.5 * (lo + hi);
-      todo.push([lo, mid], [mid, hi]);
+    } else todo.push([lo, hi, err]);
+  }
+  while (todo.length > 0) {
+    const [lo, hi, parentErr] = todo.pop() as [number, number, number];
+    const mid = 0.5 * (lo + hi);
+    const left = panel(w, lo, mid);
+    const right = panel(w, mid, hi);
+    evaluations += 2;
+    const roundoff = left[2] + right[2] >= 0.5 * parentErr;
+    const last = roundoff || hi - lo <= 2e-9 * top || evaluations > 4000;
+    for (const [from, to, p] of [
+      [lo, mid, left],
+      [mid, hi, right],
+    ] as const) {
+      if (last || p[2] <= tolOf(from, to)) {
+        a1 += p[0];
+        a2 += p[1];
+      } else todo.push([from, to, p[2]]);
     }
   }
   return [a1, a2];
@@ -244,9 +269,7 @@ export function maxRaMm(tool: ToolInput, pattern: PassPattern, surface: Surface 
 
 /**
  * The scallop height h (mm) whose passes leave a roughness Ra equal to `targetRaMm` (then the
- * step-over follows from h). Ra grows with h; a bracketed secant (Illinois) in log h, started
- * from the rule of thumb h = 4 Ra, converges in a handful of steps. Requires
- * 0 < target < maxRaMm(tool, pattern).
+ * step-over follows from h). See {@link heightForRaMm}. Requires 0 < target < maxRaMm(tool, pattern).
  */
 export function scallopHeightForRaMm(
   tool: ToolInput,
@@ -255,8 +278,27 @@ export function scallopHeightForRaMm(
   surface: Surface = PLANE,
 ): number {
   const limit = scallopHeightLimits(tool, surface).limitMm * (1 - 1e-12);
-  const ra = (h: number) => exactRoughness(forwardInput(tool, pattern, h, surface)).raMm - targetRaMm;
-  let lo = Math.log(Math.min(limit, 1e-12 * limit + targetRaMm * 1e-3));
+  return heightForRaMm((h) => exactRoughness(forwardInput(tool, pattern, h, surface)).raMm, targetRaMm, limit);
+}
+
+/**
+ * The height h (mm) at which `raAt(h)` (the Ra of the passes that leave the scallop h, increasing
+ * in h) equals `targetRaMm`: a bracketed secant (Illinois) in log h, started from the rule of thumb
+ * h = 4 Ra, converges in a handful of steps; it stops when Ra is within a relative 1e-13 of the
+ * target or h is bracketed to a relative 1e-12 (closer steps chased the rounding of Ra, twice as
+ * many of them).
+ *
+ * The bracket's lower end is h = 2 Ra: the profile lies between the contacts (0) and the highest
+ * cusp (h), so its mean deviation is at most h / 2 and Ra(2 Ra) <= Ra. (A lower end a thousand
+ * times below the answer, as before, costs seconds across a cylinder's axis: there the flank width
+ * at a height of a few nanometres carries the rounding of the corner centre's height, the adaptive
+ * quadrature never meets its relative 1e-13 and runs to its cap.)
+ * @param limitMm the largest height (just below the flank limit); requires 0 < target < raAt(limit).
+ */
+export function heightForRaMm(raAt: (h: number) => number, targetRaMm: number, limitMm: number): number {
+  const limit = limitMm;
+  const ra = (h: number) => raAt(h) - targetRaMm;
+  let lo = Math.log(Math.min(limit, 2 * targetRaMm));
   let hi = Math.log(limit);
   let fLo = ra(Math.exp(lo));
   let fHi = ra(Math.exp(hi));
@@ -267,7 +309,8 @@ export function scallopHeightForRaMm(
   let side = 0;
   for (let i = 0; i < 100; i++) {
     const f = ra(Math.exp(x));
-    if (f === 0) return Math.exp(x);
+    // Ra itself is integrated to a relative 1e-13: closer than that is noise, not progress.
+    if (Math.abs(f) <= 1e-13 * targetRaMm) return Math.exp(x);
     if (f < 0) {
       lo = x;
       fLo = f;
@@ -279,7 +322,9 @@ export function scallopHeightForRaMm(
       if (side === 1) fLo /= 2;
       side = 1;
     }
-    if (hi - lo <= 1e-15 * Math.max(1, Math.abs(hi))) break;
+    // h to a relative 1e-12 (1e-14 mm at h = 0.01 mm): where the width carries rounding (across a
+    // cylinder's axis), Ra's own noise is about that, and narrower brackets chased it.
+    if (hi - lo <= 1e-12) break;
     x = hi - (fHi * (hi - lo)) / (fHi - fLo);
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
   }

@@ -313,3 +313,56 @@ describe('exact roughness on cylinders (measured radially, over arc length on th
     expect(Math.abs(exactRoughness(forwardInput(t, 'one-way', h, surface)).raMm - target)).toBeLessThan(1e-12);
   });
 });
+
+describe('heightForRaMm: the bracket of the target Ra', () => {
+  it('never asks for the Ra of a height below 2 Ra (where the width across a cylinder carries rounding), and finds h', async () => {
+    const { heightForRaMm } = await import('../../../src/core/roughness/roughness');
+    const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 10, tiltAngleDeg: 5 };
+    for (const surface of [
+      { kind: 'cylinder', radiusMm: 50, axis: 'cross' },
+      { kind: 'cylinder', radiusMm: -50, axis: 'cross' },
+      { kind: 'cylinder', radiusMm: 50, axis: 'feed' },
+      undefined,
+    ] as const) {
+      const max = maxRaMm(tool, 'one-way', surface);
+      const limit = scallopHeightLimits(tool, surface).limitMm * (1 - 1e-12);
+      for (const target of [0.001 * max, 0.3 * max, 0.95 * max]) {
+        let lowest = Number.POSITIVE_INFINITY;
+        const h = heightForRaMm(
+          (x) => {
+            lowest = Math.min(lowest, x);
+            return exactRoughness(forwardInput(tool, 'one-way', x, surface)).raMm;
+          },
+          target,
+          limit,
+        );
+        expect(lowest, JSON.stringify(surface)).toBeGreaterThanOrEqual(2 * target * (1 - 1e-12));
+        const ra = exactRoughness(forwardInput(tool, 'one-way', h, surface)).raMm;
+        expect(Math.abs(ra - target) / target).toBeLessThan(1e-12);
+      }
+    }
+  });
+});
+
+describe('widthIntegrals: rounding in the width', () => {
+  it('stops splitting where the error estimate is the width rounding (a few hundred calls, not the 60 000 of the panel cap), to the accuracy the width allows', async () => {
+    const { widthIntegrals } = await import('../../../src/core/roughness/roughness');
+    // w = 2 sqrt(z) with a relative rounding of 1e-11 (deterministic, unrelated to z's digits).
+    let seed = 7;
+    const noise = () => {
+      seed = (seed * 16807) % 2147483647;
+      return seed / 2147483647 - 0.5;
+    };
+    for (const zMax of [1e-6, 0.003, 0.5]) {
+      let calls = 0;
+      const [a1, a2] = widthIntegrals((z) => {
+        calls++;
+        return 2 * Math.sqrt(z) * (1 + 2e-11 * noise());
+      }, zMax);
+      // int_0^Z 2 sqrt(z) dz = 4/3 Z^1.5; int_0^Z 2 z sqrt(z) dz = 4/5 Z^2.5.
+      expect(Math.abs(a1 / ((4 / 3) * zMax ** 1.5) - 1), String(zMax)).toBeLessThan(1e-10);
+      expect(Math.abs(a2 / ((4 / 5) * zMax ** 2.5) - 1), String(zMax)).toBeLessThan(1e-10);
+      expect(calls, String(zMax)).toBeLessThan(2000);
+    }
+  });
+});

@@ -7,6 +7,8 @@ export * from './compare';
 export * from './equatorFlank';
 export * from './gouging';
 export * from './passSection';
+export * from './roughness';
 export * from './shankLimit';
 export * from './solve';
 export * from './types';
+export * from './validate';

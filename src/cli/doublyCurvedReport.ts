@@ -1,0 +1,229 @@
+/**
+ * A doubly curved point's answer (issue 19: signed principal radii Rf along the feed, Rc across) as
+ * a table for the terminal or as a JSON object: the exact answer, then (forward) the comparison rows
+ * of core/doublyCurved/compare.ts: the plane's answer, each cylinder's (one radius ignored) and the
+ * usual correction 1/rho = 1/Reff + 1/Rc of each procedure with an effective radius, each with its
+ * deviation from the exact step-over and the scallop its L really leaves; the roughness. Pure;
+ * lengths mm, angles degrees.
+ */
+
+import { CORRECTED_KEYS, PROCEDURES, type Roughness } from '../core/index';
+import type {
+  DoublyCurvedComparison,
+  DoublyCurvedInverse,
+  DoublyCurvedPass,
+  DoublyCurvedRow,
+} from '../core/surfaces/doublyCurved/index';
+import { curvatureLabel, type Extras, extrasJson, type JsonValue, roughnessLines } from './report';
+import { type Column, deviation, echo, length, NONE, percent, renderTable } from './table';
+
+type JsonObject = { [key: string]: JsonValue };
+
+const KEY_VALUE: readonly Column[] = [
+  { header: '', align: 'left' },
+  { header: '', align: 'right' },
+  { header: '', align: 'left' },
+  { header: '', align: 'left' },
+];
+
+function indent(lines: readonly string[]): string[] {
+  return lines.map((l) => `  ${l}`);
+}
+
+/** The kind of point from the signs of its radii. */
+export function pointKind(rf: number, rc: number): string {
+  if (rf > 0 && rc > 0) return rf === rc ? 'convex sphere' : 'dome (both convex)';
+  if (rf < 0 && rc < 0) return rf === rc ? 'concave sphere' : 'bowl (both concave)';
+  return 'saddle (one convex, one concave)';
+}
+
+function caseLine(p: DoublyCurvedPass): string {
+  const kind =
+    p.cornerRadiusMm === p.toolRadiusMm
+      ? 'Ball end mill'
+      : p.cornerRadiusMm === 0
+        ? 'Flat end mill'
+        : 'Filleted end mill';
+  return (
+    `${kind} R = ${echo(p.toolRadiusMm)} mm, Rcr = ${echo(p.cornerRadiusMm)} mm; ` +
+    `lead rho = ${echo(p.leadAngleDeg)} deg, tilt beta = ${echo(p.tiltAngleDeg)} deg; ${p.pattern} passes ` +
+    `at a doubly curved point, ${pointKind(p.feedRadiusMm, p.crossRadiusMm)}: ` +
+    `Rf = ${echo(p.feedRadiusMm)} mm along the feed, Rc = ${echo(p.crossRadiusMm)} mm across ` +
+    '(heights along the normal, L along the surface)'
+  );
+}
+
+/** Each comparison row: its JSON key and its label. */
+function rowsOf(c: DoublyCurvedComparison): Array<[string, string, DoublyCurvedRow]> {
+  const out: Array<[string, string, DoublyCurvedRow]> = [
+    ['plane', curvatureLabel('plane'), c.plane],
+    ['cylinderAlong', 'Cylinder along the feed, exact (Rf ignored)', c.cylinderAlong],
+    ['cylinderAcross', 'Cylinder across the feed, exact (Rc ignored)', c.cylinderAcross],
+  ];
+  for (const key of CORRECTED_KEYS) {
+    out.push([key, `${PROCEDURES[key].shortLabel}, 1/rho = 1/Reff + 1/Rc`, c.corrected[key]]);
+  }
+  return out;
+}
+
+/** The forward answer at a doubly curved point as a table. */
+export function doublyCurvedForwardTable(
+  p: DoublyCurvedPass,
+  h: number,
+  c: DoublyCurvedComparison,
+  extras: Extras,
+): string {
+  const e = c.exact;
+  const target =
+    extras.targetRaMm === undefined
+      ? `Scallop height h = ${echo(h)} mm`
+      : `Target roughness Ra = ${echo(extras.targetRaMm)} mm: scallop height h = ${length(h)} mm`;
+  const facts: string[][] = [
+    ['L', length(e.intervalMm), 'mm', 'step-over: arc length along the surface between adjacent CC paths'],
+    ['L/2', length(e.intervalMm / 2), 'mm', 'half step-over'],
+    ['wR', length(e.halfWidthRightMm), 'mm', 'right flank (+Y) from the contact, at the cusp'],
+    ['wL', length(e.halfWidthLeftMm), 'mm', 'left flank (-Y) from the contact, at the cusp'],
+    ['y0', length(e.contactOffsetMm), 'mm', 'contact offset: the tool centre point runs -y0 (in Y) from its CC path'],
+    ['h', length(e.cuspHeightMm), 'mm', p.pattern === 'zigzag' ? 'highest cusp' : 'cusp height'],
+  ];
+  if (e.otherCuspHeightMm !== null) facts.push(['h2', length(e.otherCuspHeightMm), 'mm', 'other cusp, zigzag']);
+  const out = [
+    caseLine(p),
+    target,
+    '',
+    `${PROCEDURES.exact.label}:`,
+    ...indent(renderTable(KEY_VALUE, facts, false)),
+    '',
+  ];
+  const columns: Column[] = [
+    { header: 'shortcut', align: 'left' },
+    { header: 'L [mm]', align: 'right' },
+    { header: 'dev L [mm]', align: 'right' },
+    { header: 'dev [%]', align: 'right' },
+    { header: 'real h [mm]', align: 'right' },
+    { header: 'note', align: 'left' },
+  ];
+  const notes: string[] = [];
+  const rows: string[][] = [[PROCEDURES.exact.label, length(e.intervalMm), NONE, NONE, length(e.cuspHeightMm)]];
+  for (const [, label, r] of rowsOf(c)) {
+    if (!r.ok) {
+      notes.push(`[${notes.length + 1}] ${r.notApplicable}`);
+      rows.push([label, 'n/a', NONE, NONE, NONE, `[${notes.length}]`]);
+    } else {
+      rows.push([
+        label,
+        length(r.intervalMm),
+        deviation(r.deviationMm),
+        percent(r.deviationPercent),
+        r.realScallopMm === null ? 'wall' : length(r.realScallopMm),
+      ]);
+    }
+  }
+  out.push('What the shortcuts give at this point, beside the exact answer:', ...renderTable(columns, rows));
+  out.push('', 'dev L: step-over minus the exact one; real h: the scallop that step-over really leaves here (exact).');
+  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, e.cuspHeightMm));
+  if (notes.length > 0) out.push('', ...notes);
+  return out.join('\n');
+}
+
+/** The inverse answer (step-over to cusp heights) at a doubly curved point as a table. */
+export function doublyCurvedInverseTable(p: DoublyCurvedPass, e: DoublyCurvedInverse, roughness: Roughness): string {
+  const facts: string[][] = [['h', length(e.cuspHeightMm), 'mm', 'scallop height (the highest cusp)']];
+  if (e.otherCuspHeightMm !== null) {
+    facts.push(
+      ['h2', length(e.otherCuspHeightMm), 'mm', 'other cusp, zigzag'],
+      ['hR', length(e.rightCuspHeightMm), 'mm', 'cusp between right flanks (wR = L/2)'],
+      ['hL', length(e.leftCuspHeightMm), 'mm', 'cusp between left flanks (wL = L/2)'],
+    );
+  }
+  facts.push(
+    ['wR', length(e.halfWidthRightMm), 'mm', 'right flank (+Y) from the contact, at its cusp'],
+    ['wL', length(e.halfWidthLeftMm), 'mm', 'left flank (-Y) from the contact, at its cusp'],
+    ['y0', length(e.contactOffsetMm), 'mm', 'contact offset: the tool centre point runs -y0 (in Y) from its CC path'],
+  );
+  return [
+    caseLine(p),
+    `Step-over L = ${echo(e.intervalMm)} mm (L/2 = ${echo(e.intervalMm / 2)} mm) along the surface between CC paths`,
+    '',
+    `${PROCEDURES.exact.label}:`,
+    ...indent(renderTable(KEY_VALUE, facts, false)),
+    '',
+    ...roughnessLines(roughness, e.cuspHeightMm),
+  ].join('\n');
+}
+
+/** The pass as JSON input fields (the registry's names). */
+function inputJson(p: DoublyCurvedPass): JsonObject {
+  return {
+    R: p.toolRadiusMm,
+    Rcr: p.cornerRadiusMm,
+    rho: p.leadAngleDeg,
+    tilt: p.tiltAngleDeg,
+    pattern: p.pattern,
+    feedRadius: p.feedRadiusMm,
+    crossRadius: p.crossRadiusMm,
+  };
+}
+
+function rowJson(r: DoublyCurvedRow & { readonly combinedRadiusMm?: number }): JsonObject {
+  if (!r.ok) return { notApplicable: r.notApplicable };
+  const out: JsonObject = {
+    interval: r.intervalMm,
+    intervalDeviation: r.deviationMm,
+    deviationPercent: r.deviationPercent,
+  };
+  if (r.realScallopMm !== null) out.realScallopHeight = r.realScallopMm;
+  if (r.combinedRadiusMm !== undefined) out.combinedRadius = r.combinedRadiusMm;
+  return out;
+}
+
+/** The forward answer at a doubly curved point as JSON (lengths mm, angles degrees). */
+export function doublyCurvedForwardJson(
+  p: DoublyCurvedPass,
+  h: number,
+  c: DoublyCurvedComparison,
+  extras: Extras,
+): JsonObject {
+  const e = c.exact;
+  const exact: JsonObject = {
+    interval: e.intervalMm,
+    halfInterval: e.intervalMm / 2,
+    halfWidthRight: e.halfWidthRightMm,
+    halfWidthLeft: e.halfWidthLeftMm,
+    contactOffset: e.contactOffsetMm,
+    scallopHeight: e.cuspHeightMm,
+  };
+  if (e.otherCuspHeightMm !== null) exact.otherCuspHeight = e.otherCuspHeightMm;
+  const comparison: JsonObject = {};
+  for (const [key, , r] of rowsOf(c)) comparison[key] = rowJson(r);
+  const target: JsonObject = extras.targetRaMm === undefined ? { h } : { Ra: extras.targetRaMm };
+  return {
+    unit: 'mm',
+    input: { ...inputJson(p), ...target },
+    maxInterval: c.maxIntervalMm,
+    exact,
+    comparison,
+    ...extrasJson(extras, e.cuspHeightMm),
+  };
+}
+
+/** The inverse answer at a doubly curved point as JSON. */
+export function doublyCurvedInverseJson(p: DoublyCurvedPass, e: DoublyCurvedInverse, roughness: Roughness): JsonObject {
+  const exact: JsonObject = {
+    scallopHeight: e.cuspHeightMm,
+    rightCuspHeight: e.rightCuspHeightMm,
+    leftCuspHeight: e.leftCuspHeightMm,
+  };
+  if (e.otherCuspHeightMm !== null) exact.otherCuspHeight = e.otherCuspHeightMm;
+  exact.interval = e.intervalMm;
+  exact.halfInterval = e.intervalMm / 2;
+  exact.halfWidthRight = e.halfWidthRightMm;
+  exact.halfWidthLeft = e.halfWidthLeftMm;
+  exact.contactOffset = e.contactOffsetMm;
+  return {
+    unit: 'mm',
+    input: { ...inputJson(p), interval: e.intervalMm, halfInterval: e.intervalMm / 2 },
+    exact,
+    ...extrasJson({ roughness }, e.cuspHeightMm),
+  };
+}
