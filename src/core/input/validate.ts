@@ -6,7 +6,10 @@
  * the bound it broke, what was given). Messages are written from that data in one place
  * (describeInputError), in the user's unit.
  */
-import { concaveFit, cylinderSolver, PLANE, type Surface, type SurfaceAxis } from '../surfaces/cylinder';
+import type { ForwardInput, InverseInput, PassInput } from '../domain/pass';
+import { PLANE, type Surface, type SurfaceAxis } from '../domain/surface';
+import { PASS_PATTERNS, type PassPattern, type ToolInput } from '../domain/tool';
+import { concaveFit, cylinderSolver } from '../surfaces/cylinder';
 import { type FlankLimits, flankAtHeight, flankLimits, type PostureShape, shapeOfTool } from '../tool/posture';
 import { stepOverFromReaches } from '../tool/stepOverRule';
 import { FIELD_LABELS, FIELDS, type FieldName, isLengthField } from './fields';
@@ -73,40 +76,9 @@ export type Validation<T, E extends AnyInputError = InputError> =
   | { readonly ok: true; readonly value: T }
   | { readonly ok: false; readonly errors: readonly E[] };
 
-/** How adjacent passes run: every pass the same way, or alternating (posture relative to the feed). */
-export type PassPattern = 'one-way' | 'zigzag';
-
-export const PASS_PATTERNS: readonly PassPattern[] = ['one-way', 'zigzag'];
-
-/** A validated tool and posture: lengths in mm, angles in degrees. */
-export interface ToolInput {
-  /** Tool radius `R` in mm, {@link MIN_TOOL_RADIUS_MM} <= R <= {@link MAX_TOOL_RADIUS_MM}. */
-  readonly toolRadiusMm: number;
-  /** Corner (tip) radius `Rcr` in mm, 0 <= Rcr <= R. */
-  readonly cornerRadiusMm: number;
-  /** Lead angle `rho` (inclination along the feed) in degrees, 0 <= rho < 90. */
-  readonly leadAngleDeg: number;
-  /** Tilt angle `beta` (inclination across the feed, + leans the shank to +Y) in degrees, -90 < beta < 90. */
-  readonly tiltAngleDeg: number;
-}
-
-/** Tool, posture, pass pattern and the design surface (a plane or a cylinder). */
-export interface PassInput extends ToolInput {
-  readonly pattern: PassPattern;
-  readonly surface: Surface;
-}
-
-/** Input of the forward problem: scallop height to path interval. */
-export interface ForwardInput extends PassInput {
-  /** Scallop height `h` in mm: at least {@link MIN_LENGTH_MM}, below the flank and shank limits. */
-  readonly scallopHeightMm: number;
-}
-
-/** Input of the inverse problem: path interval (step-over) to scallop height. */
-export interface InverseInput extends PassInput {
-  /** Step-over `L` in mm (between cutter-contact paths): 0 < L below the widest step-over without a wall. */
-  readonly intervalMm: number;
-}
+/** The domain types (domain/): re-exported where they were defined before, for the callers. */
+export type { ForwardInput, InverseInput, PassInput, PassPattern, ToolInput };
+export { PASS_PATTERNS };
 
 /** Raw values as they come from a form, a URL or a CSV cell (mm and degrees). */
 export interface RawToolInput {

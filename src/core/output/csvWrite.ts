@@ -6,7 +6,8 @@
  * no DOM); lengths in mm, angles in degrees.
  */
 
-import { type ForwardInput, maxIntervalMm } from '../input/validate';
+import type { ForwardInput } from '../domain/pass';
+import { maxIntervalMm } from '../input/validate';
 import type { Approximation, HalfInterval } from '../procedures/approximations';
 import { compareForward } from '../procedures/compare';
 import { APPROXIMATION_KEYS, APPROXIMATIONS, type ApproximationKey, PROCEDURES } from '../procedures/procedures';

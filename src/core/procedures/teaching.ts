@@ -3,10 +3,12 @@
  * L/2 over the lead angle, and the paper's tables recomputed. Pure; lengths mm, angles degrees.
  */
 
-import type { InverseInput, PassPattern, ToolInput } from '../input/validate';
+import type { InverseInput } from '../domain/pass';
+import { PLANE, type Surface } from '../domain/surface';
+import type { PassPattern, ToolInput } from '../domain/tool';
 import { forwardInput, inverseInput, leavesNoScallop, scallopHeightLimits } from '../input/validate';
 import { profilePolyline } from '../output/geometry';
-import { minConcaveRadiusMm, PLANE, type Surface } from '../surfaces/cylinder';
+import { minConcaveRadiusMm } from '../surfaces/cylinder';
 import { exactIntervalMm, exactScallopHeightMm } from '../surfaces/exact';
 import { shapeOfTool } from '../tool/posture';
 import { compareForward } from './compare';

@@ -22,22 +22,21 @@
  * (arc length about the axis, or distance along it): the mean line is then a coaxial cylinder.
  */
 
+import type { ForwardInput, PassInput } from '../domain/pass';
+import { PLANE, type Surface } from '../domain/surface';
+import type { PassPattern, ToolInput } from '../domain/tool';
 import {
   type AnyInputError,
-  type ForwardInput,
   forwardInput,
   inputError,
   leavesNoScallop,
   MIN_LENGTH_MM,
-  type PassInput,
-  type PassPattern,
   type RawToolInput,
   scallopHeightLimits,
-  type ToolInput,
   type Validation,
   validatePassAnd,
 } from '../input/validate';
-import { type CylinderSolver, cylinderSolver, PLANE, type Surface } from '../surfaces/cylinder';
+import { type CylinderSolver, cylinderSolver } from '../surfaces/cylinder';
 import { type ExactForward, type ExactInverse, exactForward } from '../surfaces/exact';
 import { type Flank, flankWidthMm, type PostureShape, shapeOfTool } from '../tool/posture';
 

@@ -10,7 +10,8 @@
  * the other cusp is lower. Without tilt both give `L = 2 (L/2)` of the paper.
  */
 
-import type { ForwardInput, InverseInput } from '../input/validate';
+import type { ForwardInput, InverseInput } from '../domain/pass';
+import type { CylinderSurface } from '../domain/surface';
 import {
   contactOffsetMm,
   type FlankPoint,
@@ -22,7 +23,7 @@ import {
   shapeOfTool,
 } from '../tool/posture';
 import { stepOverFromReaches } from '../tool/stepOverRule';
-import { type CylinderSurface, cylinderSolver } from './cylinder';
+import { cylinderSolver } from './cylinder';
 
 /** The exact answer of the forward problem (scallop height to step-over), mm. */
 export interface ExactForward {
