@@ -11,7 +11,7 @@ import { maxIntervalMm } from '../input/validate';
 import type { Approximation, HalfInterval } from '../procedures/approximations';
 import { compareForward } from '../procedures/compare';
 import { APPROXIMATION_KEYS, APPROXIMATIONS, type ApproximationKey, PROCEDURES } from '../procedures/procedures';
-import { exactForward } from '../surfaces/exact';
+import { exactForward } from '../surfaces/solve';
 
 /** A plain decimal number as the validation accepts it (sign, digits, point, exponent). */
 const NUMBER_TEXT = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;

@@ -19,7 +19,7 @@ import {
   validateForward,
   validateInverse,
 } from '../input/validate';
-import { type ExactForward, type ExactInverse, exactForward, exactInverse } from '../surfaces/exact';
+import { type ExactForward, type ExactInverse, exactForward, exactInverse } from '../surfaces/solve';
 import { type Approximation, combinedRadiusMm, type HalfInterval, type ScallopHeight } from './approximations';
 import {
   APPROXIMATION_KEYS,

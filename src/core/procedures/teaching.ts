@@ -9,7 +9,7 @@ import type { PassPattern, ToolInput } from '../domain/tool';
 import { forwardInput, inverseInput, leavesNoScallop, scallopHeightLimits } from '../input/validate';
 import { profilePolyline } from '../output/geometry';
 import { minConcaveRadiusMm } from '../surfaces/cylinder';
-import { exactIntervalMm, exactScallopHeightMm } from '../surfaces/exact';
+import { exactIntervalMm, exactScallopHeightMm } from '../surfaces/solve';
 import { shapeOfTool } from '../tool/posture';
 import { compareForward } from './compare';
 import { PAPER_CONDITIONS, type PaperCondition, type ProcedureValues } from './paper';

@@ -37,7 +37,7 @@ import {
   validatePassAnd,
 } from '../input/validate';
 import { type CylinderSolver, cylinderSolver } from '../surfaces/cylinder';
-import { type ExactForward, type ExactInverse, exactForward } from '../surfaces/exact';
+import { type ExactForward, type ExactInverse, exactForward } from '../surfaces/solve';
 import { type Flank, flankWidthMm, type PostureShape, shapeOfTool } from '../tool/posture';
 
 /** Roughness across the feed, mm. */
