@@ -43,6 +43,10 @@ export function congruentSurfaceModel<S extends SurfaceDescriptorBase>(surface: 
     inverse: (input) => congruentInverse(input, surface.passes(input, input.surface)),
     limits: (tool, s) => surface.passes(tool, s).limits(),
     maxIntervalMm: (tool, pattern, s) => congruentMaxIntervalMm(surface.passes(tool, s), pattern),
+    flankWidths: (tool, s) => {
+      const c = surface.passes(tool, s);
+      return (flank, h) => c.intervalFromReach(c.reach(flank, h));
+    },
     fit: (tool, s) => surface.fit(tool, s),
     leavesNoScallop: () => false,
   };

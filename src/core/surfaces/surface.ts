@@ -103,6 +103,11 @@ export interface SurfaceModel<S extends SurfaceDescriptorBase> {
   limits(tool: ToolInput, surface: S): FlankLimits;
   /** The widest step-over (mm) that still leaves a scallop: the flanks' reach at the height limit. */
   maxIntervalMm(tool: ToolInput, pattern: PassPattern, surface: S): number;
+  /**
+   * How far each flank reaches at a height (both mm), measured as the step-over is (along the
+   * surface: arc length about an axis, or a width): the profile the roughness integrates.
+   */
+  flankWidths(tool: ToolInput, surface: S): (flank: Flank, heightMm: number) => number;
   /** Gouging: whether the tool, away from the contact, reaches below the surface. */
   fit(tool: ToolInput, surface: S): SurfaceFit;
   /**

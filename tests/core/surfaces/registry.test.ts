@@ -89,6 +89,10 @@ describe('surface registry: every registered model keeps the contract', () => {
             expect(Math.abs(fast - f.intervalMm), where).toBeLessThanOrEqual(4e-16 * f.intervalMm);
             expect(f.intervalMm, where).toBeGreaterThan(0);
             expect(f.intervalMm, where).toBeLessThan(max);
+            // The roughness's profile: each flank's width at h is the forward answer's.
+            const width = m.flankWidths(tool, surface);
+            expect(Math.abs(width('right', h) - f.halfWidthRightMm), where).toBeLessThanOrEqual(1e-12 * f.intervalMm);
+            expect(Math.abs(width('left', h) - f.halfWidthLeftMm), where).toBeLessThanOrEqual(1e-12 * f.intervalMm);
             const back = exactInverse(inverseOf(tool, pattern, surface, f.intervalMm));
             expect(Math.abs(back.cuspHeightMm - h), where).toBeLessThan(1e-9 + 1e-9 * h);
             if (pattern === 'zigzag') {

@@ -101,6 +101,12 @@ export const doublyCurvedModel: SurfaceModel<DoublyCurvedSurface> = {
     if (straight !== null) return modelOf(straight).maxIntervalMm(tool, pattern, straight);
     return doublyCurvedMaxIntervalMm(doublyCurvedSolver(tool, surface), pattern);
   },
+  flankWidths: (tool, surface) => {
+    const straight = straightSurface(surface);
+    if (straight !== null) return modelOf(straight).flankWidths(tool, straight);
+    const solver = doublyCurvedSolver(tool, surface);
+    return (flank, h) => (flank === 'right' ? solver.right : solver.left).reachMm(h);
+  },
   fit,
   leavesNoScallop: (tool, surface) => {
     const straight = straightSurface(surface);

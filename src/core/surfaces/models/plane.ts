@@ -4,7 +4,7 @@
  */
 import type { PlaneSurface } from '../../domain/surface';
 import type { PassPattern, ToolInput } from '../../domain/tool';
-import { flankAtHeight, flankLimits, shapeOfTool } from '../../tool/posture';
+import { flankAtHeight, flankLimits, flankWidthMm, shapeOfTool } from '../../tool/posture';
 import { stepOverFromReaches } from '../../tool/stepOverRule';
 import { planeForward, planeIntervalMm, planeInverse } from '../exact';
 import { FITS, type SurfaceModel } from '../surface';
@@ -35,6 +35,10 @@ export const planeModel: SurfaceModel<PlaneSurface> = {
   inverse: planeInverse,
   limits: (tool) => flankLimits(shapeOfTool(tool)),
   maxIntervalMm: planeMaxIntervalMm,
+  flankWidths: (tool) => {
+    const s = shapeOfTool(tool);
+    return (flank, h) => flankWidthMm(s, flank, h);
+  },
   fit: () => FITS,
   leavesNoScallop,
 };
