@@ -21,16 +21,18 @@ export type SurfaceDescriptor = DescriptorOf<(typeof MODELS)[number]>;
 /** The registered kinds, in registration order. */
 export const SURFACE_KINDS: readonly SurfaceDescriptor['kind'][] = MODELS.map((m) => m.kind);
 
-const BY_KIND: Readonly<Record<string, SurfaceModel<SurfaceDescriptorBase>>> = Object.fromEntries(
-  MODELS.map((m) => [m.kind, m as SurfaceModel<SurfaceDescriptorBase>]),
-);
+/** The models as an array of one type (a short scan by kind beats a keyed lookup on the solvers' fast paths). */
+const LIST: readonly SurfaceModel<SurfaceDescriptorBase>[] = MODELS;
 
 /**
  * The model of a surface descriptor. Throws on an unregistered kind: descriptors come from
  * validation (or a caller's own code), never from raw input, so that is a programming error.
  */
 export function surfaceModel<S extends SurfaceDescriptor>(surface: S): SurfaceModel<S> {
-  const model = BY_KIND[surface.kind];
-  if (model === undefined) throw new Error(`no surface model registered for kind "${surface.kind}"`);
-  return model as SurfaceModel<S>;
+  const kind = surface.kind;
+  for (let i = 0; i < LIST.length; i++) {
+    const model = LIST[i] as SurfaceModel<SurfaceDescriptorBase>;
+    if (model.kind === kind) return model as SurfaceModel<S>;
+  }
+  throw new Error(`no surface model registered for kind "${kind}"`);
 }
