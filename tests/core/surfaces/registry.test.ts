@@ -176,11 +176,17 @@ describe('surface registry: every registered model keeps the contract', () => {
     }
   });
 
-  it('only a flat face lying on the plane leaves no scallop', () => {
+  it('a surface that takes a flat face lying on it says so, and its forward answer is no scallop at 2R', () => {
     const flat: ToolInput = { toolRadiusMm: 3, cornerRadiusMm: 0, leadAngleDeg: 0, tiltAngleDeg: 0 };
+    expect(surfaceModel({ kind: 'plane' }).leavesNoScallop(flat, { kind: 'plane' })).toBe(true);
     for (const surface of SAMPLES) {
-      expect(surfaceModel(surface).leavesNoScallop(flat, surface), name(surface)).toBe(surface.kind === 'plane');
-      for (const tool of TOOLS) expect(surfaceModel(surface).leavesNoScallop(tool, surface)).toBe(false);
+      const m = surfaceModel(surface);
+      if (m.leavesNoScallop(flat, surface)) {
+        const f = exactForward(forwardOf(flat, 'one-way', surface, 0.1));
+        expect(f.noScallop, name(surface)).toBe(true);
+        expect(f.intervalMm).toBe(2 * flat.toolRadiusMm);
+      } else expect(surface.kind, 'a curved surface').not.toBe('plane');
+      for (const tool of TOOLS) expect(m.leavesNoScallop(tool, surface), name(surface)).toBe(false);
     }
   });
 });
