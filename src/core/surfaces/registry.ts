@@ -7,11 +7,12 @@
 import type { SurfaceDescriptorBase } from '../domain/surface';
 import { cylinderModel } from './models/cylinder';
 import { doublyCurvedModel } from './models/doublyCurved';
+import { offsetPlaneModel } from './models/offsetPlane';
 import { planeModel } from './models/plane';
 import type { SurfaceModel } from './surface';
 
 /** Every registered surface model. */
-const MODELS = [planeModel, cylinderModel, doublyCurvedModel] as const;
+const MODELS = [planeModel, cylinderModel, doublyCurvedModel, offsetPlaneModel] as const;
 
 type DescriptorOf<M> = M extends SurfaceModel<infer S> ? S : never;
 
