@@ -7,12 +7,11 @@
 import type { SurfaceDescriptorBase } from '../domain/surface';
 import { cylinderModel } from './models/cylinder';
 import { doublyCurvedModel } from './models/doublyCurved';
-import { offsetPlaneModel } from './models/offsetPlane';
 import { planeModel } from './models/plane';
 import type { SurfaceModel } from './surface';
 
 /** Every registered surface model. */
-const MODELS = [planeModel, cylinderModel, doublyCurvedModel, offsetPlaneModel] as const;
+const MODELS = [planeModel, cylinderModel, doublyCurvedModel] as const;
 
 type DescriptorOf<M> = M extends SurfaceModel<infer S> ? S : never;
 

@@ -25,7 +25,6 @@ const SAMPLES: readonly SurfaceDescriptor[] = [
   { kind: 'doublyCurved', feedRadiusMm: 30, crossRadiusMm: 50 },
   { kind: 'doublyCurved', feedRadiusMm: -90, crossRadiusMm: -70 },
   { kind: 'doublyCurved', feedRadiusMm: 40, crossRadiusMm: -200 },
-  { kind: 'offsetPlane', offsetMm: 2.5 },
 ];
 
 const TOOLS: readonly ToolInput[] = [
