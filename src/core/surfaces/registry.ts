@@ -8,10 +8,11 @@ import type { SurfaceDescriptorBase } from '../domain/surface';
 import { cylinderModel } from './models/cylinder';
 import { doublyCurvedModel } from './models/doublyCurved';
 import { planeModel } from './models/plane';
+import { slopedPlaneModel } from './models/slopedPlane';
 import type { SurfaceModel } from './surface';
 
 /** Every registered surface model. */
-const MODELS = [planeModel, cylinderModel, doublyCurvedModel] as const;
+const MODELS = [planeModel, cylinderModel, doublyCurvedModel, slopedPlaneModel] as const;
 
 type DescriptorOf<M> = M extends SurfaceModel<infer S> ? S : never;
 

@@ -11,6 +11,7 @@ import type { PassPattern, ToolInput } from '../../../src/core/domain/tool';
 import { doublyCurvedForward, doublyCurvedInverse } from '../../../src/core/surfaces/doublyCurved/solve';
 import { SURFACE_KINDS, type SurfaceDescriptor, surfaceModel } from '../../../src/core/surfaces/registry';
 import { exactForward, exactIntervalMm, exactInverse } from '../../../src/core/surfaces/solve';
+import { slopedPlaneIntervalMm } from '../../../src/core/threeAxis/slopedPlane';
 import { contactCurvatureRadiusMm, shapeOfTool } from '../../../src/core/tool/posture';
 
 const I = Number.POSITIVE_INFINITY;
@@ -25,6 +26,8 @@ const SAMPLES: readonly SurfaceDescriptor[] = [
   { kind: 'doublyCurved', feedRadiusMm: 30, crossRadiusMm: 50 },
   { kind: 'doublyCurved', feedRadiusMm: -90, crossRadiusMm: -70 },
   { kind: 'doublyCurved', feedRadiusMm: 40, crossRadiusMm: -200 },
+  { kind: 'slopedPlane', slopeDeg: 25, passes: 'raster', rasterAngleDeg: 30 },
+  { kind: 'slopedPlane', slopeDeg: 40, passes: 'waterline', rasterAngleDeg: 0 },
 ];
 
 const TOOLS: readonly ToolInput[] = [
@@ -187,6 +190,31 @@ describe('surface registry: every registered model keeps the contract', () => {
         expect(f.intervalMm).toBe(2 * flat.toolRadiusMm);
       } else expect(surface.kind, 'a curved surface').not.toBe('plane');
       for (const tool of TOOLS) expect(m.leavesNoScallop(tool, surface), name(surface)).toBe(false);
+    }
+  });
+
+  it('a sloped plane (a surface that supplies the posture) answers as threeAxis/slopedPlane.ts does', () => {
+    for (const [slopeDeg, passes, rasterAngleDeg] of [
+      [25, 'raster', 30],
+      [40, 'waterline', 0],
+      [0, 'raster', 0],
+    ] as const) {
+      const surface: SurfaceDescriptor = { kind: 'slopedPlane', slopeDeg, passes, rasterAngleDeg };
+      for (const tool of TOOLS) {
+        const c = {
+          toolRadiusMm: tool.toolRadiusMm,
+          cornerRadiusMm: tool.cornerRadiusMm,
+          slopeDeg,
+          passes,
+          rasterAngleDeg,
+        };
+        const h = 0.3 * surfaceModel(surface).limits(tool, surface).limitMm;
+        const own = slopedPlaneIntervalMm(c, h);
+        for (const pattern of PATTERNS) {
+          const L = exactIntervalMm(forwardOf(tool, pattern, surface, h));
+          expect(Math.abs(L - own), `${name(surface)} ${pattern}`).toBeLessThan(1e-12 * own);
+        }
+      }
     }
   });
 });
