@@ -10,7 +10,7 @@
  * Lengths mm.
  */
 import type { ForwardInput, InverseInput } from '../../domain/pass';
-import type { DoublyCurvedSurface, Surface } from '../../domain/surface';
+import type { CylinderSurface, DoublyCurvedSurface, PlaneSurface, Surface } from '../../domain/surface';
 import type { PassPattern, ToolInput } from '../../domain/tool';
 import {
   type Flank,
@@ -27,19 +27,30 @@ import type { ExactForward, ExactInverse, SurfaceFit, SurfaceModel } from '../su
 import { cylinderModel } from './cylinder';
 import { planeModel } from './plane';
 
-/** The plane or cylinder a doubly curved point with a straight radius is, or null when both are curved. */
-export function straightSurface(surface: DoublyCurvedSurface): Surface | null {
-  const feedStraight = !Number.isFinite(surface.feedRadiusMm);
-  const crossStraight = !Number.isFinite(surface.crossRadiusMm);
-  if (feedStraight && crossStraight) return { kind: 'plane' };
-  if (feedStraight) return { kind: 'cylinder', radiusMm: surface.crossRadiusMm, axis: 'feed' };
-  if (crossStraight) return { kind: 'cylinder', radiusMm: surface.feedRadiusMm, axis: 'cross' };
-  return null;
+/** A straight surface and its model. */
+interface Straight {
+  readonly model: SurfaceModel<Surface>;
+  readonly surface: Surface;
 }
 
-/** The model answering a straight surface. */
-function modelOf(surface: Surface): SurfaceModel<Surface> {
-  return (surface.kind === 'plane' ? planeModel : cylinderModel) as SurfaceModel<Surface>;
+const asModel = (m: SurfaceModel<PlaneSurface> | SurfaceModel<CylinderSurface>) => m as SurfaceModel<Surface>;
+
+/** The plane or cylinder a doubly curved point with a straight radius is, with its model; null when both are curved. */
+export function straightSurface(surface: DoublyCurvedSurface): Straight | null {
+  const feedStraight = !Number.isFinite(surface.feedRadiusMm);
+  const crossStraight = !Number.isFinite(surface.crossRadiusMm);
+  if (feedStraight && crossStraight) return { model: asModel(planeModel), surface: { kind: 'plane' } };
+  if (feedStraight)
+    return {
+      model: asModel(cylinderModel),
+      surface: { kind: 'cylinder', radiusMm: surface.crossRadiusMm, axis: 'feed' },
+    };
+  if (crossStraight)
+    return {
+      model: asModel(cylinderModel),
+      surface: { kind: 'cylinder', radiusMm: surface.feedRadiusMm, axis: 'cross' },
+    };
+  return null;
 }
 
 /** The plane profile's point at height h (clamped to the flank's top), for drawing only (as on a cylinder). */
@@ -50,7 +61,7 @@ function drawnPoint(s: PostureShape, flank: Flank, heightMm: number): FlankPoint
 
 function forward(input: ForwardInput<DoublyCurvedSurface>): ExactForward {
   const straight = straightSurface(input.surface);
-  if (straight !== null) return modelOf(straight).forward({ ...input, surface: straight });
+  if (straight !== null) return straight.model.forward({ ...input, surface: straight.surface });
   const a = forwardWith(doublyCurvedSolver(input, input.surface), input.pattern, input.scallopHeightMm);
   const s = shapeOfTool(input);
   return {
@@ -69,7 +80,7 @@ function forward(input: ForwardInput<DoublyCurvedSurface>): ExactForward {
 
 function inverse(input: InverseInput<DoublyCurvedSurface>): ExactInverse {
   const straight = straightSurface(input.surface);
-  if (straight !== null) return modelOf(straight).inverse({ ...input, surface: straight });
+  if (straight !== null) return straight.model.inverse({ ...input, surface: straight.surface });
   const a = inverseWith(doublyCurvedSolver(input, input.surface), input.pattern, input.intervalMm);
   const s = shapeOfTool(input);
   return { ...a, right: drawnPoint(s, 'right', a.rightCuspHeightMm), left: drawnPoint(s, 'left', a.leftCuspHeightMm) };
@@ -78,7 +89,7 @@ function inverse(input: InverseInput<DoublyCurvedSurface>): ExactInverse {
 /** Gouging: the doubly curved predicate (no single radius to name: each radius's limit depends on the other). */
 function fit(tool: ToolInput, surface: DoublyCurvedSurface): SurfaceFit {
   const straight = straightSurface(surface);
-  if (straight !== null) return modelOf(straight).fit(tool, straight);
+  if (straight !== null) return straight.model.fit(tool, straight.surface);
   return doublyCurvedGouges(tool, surface) ? { gouges: true, by: 'head', limitRadiusMm: null } : { gouges: false };
 }
 
@@ -87,29 +98,32 @@ export const doublyCurvedModel: SurfaceModel<DoublyCurvedSurface> = {
   kind: 'doublyCurved',
   intervalMm: (input) => {
     const straight = straightSurface(input.surface);
-    if (straight !== null) return modelOf(straight).intervalMm({ ...input, surface: straight });
+    if (straight !== null) return straight.model.intervalMm({ ...input, surface: straight.surface });
     return forward(input).intervalMm;
   },
   forward,
   inverse,
   limits: (tool, surface) => {
     const straight = straightSurface(surface);
-    return straight !== null ? modelOf(straight).limits(tool, straight) : doublyCurvedSolver(tool, surface).limits();
+    return straight !== null
+      ? straight.model.limits(tool, straight.surface)
+      : doublyCurvedSolver(tool, surface).limits();
   },
   maxIntervalMm: (tool: ToolInput, pattern: PassPattern, surface) => {
     const straight = straightSurface(surface);
-    if (straight !== null) return modelOf(straight).maxIntervalMm(tool, pattern, straight);
+    if (straight !== null) return straight.model.maxIntervalMm(tool, pattern, straight.surface);
     return doublyCurvedMaxIntervalMm(doublyCurvedSolver(tool, surface), pattern);
   },
   flankWidths: (tool, surface) => {
     const straight = straightSurface(surface);
-    if (straight !== null) return modelOf(straight).flankWidths(tool, straight);
+    if (straight !== null) return straight.model.flankWidths(tool, straight.surface);
     const solver = doublyCurvedSolver(tool, surface);
     return (flank, h) => (flank === 'right' ? solver.right : solver.left).reachMm(h);
   },
   fit,
   leavesNoScallop: (tool, surface) => {
     const straight = straightSurface(surface);
-    return straight !== null && modelOf(straight).leavesNoScallop(tool, straight);
+    if (straight === null) return false;
+    return straight.model.leavesNoScallop(tool, straight.surface);
   },
 };
