@@ -3,7 +3,7 @@
  * worker boundary, the three.js rendering and the UI, with no edge going back down-up. The command
  * line sits on the core; the build plugins and benchmarks are tools that nothing imports.
  */
-import { readdirSync, readFileSync } from 'node:fs';
+import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { dirname, join, relative, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
@@ -58,6 +58,91 @@ function edges(): Edge[] {
   return list;
 }
 
+/** The file a relative specifier names: `x.ts`, `x.mjs` or `x/index.ts`; null when none exists. */
+function resolveFile(from: string, spec: string): string | null {
+  const base = resolve(dirname(from), spec);
+  for (const candidate of [base, `${base}.ts`, `${base}.mjs`, join(base, 'index.ts')])
+    if (/\.(ts|mjs)$/.test(candidate) && existsSync(candidate)) return candidate;
+  return null;
+}
+
+/** The import graph of the files under `dir` (type imports included), by path relative to SRC. */
+function fileGraph(dir: string): Map<string, string[]> {
+  const graph = new Map<string, string[]>();
+  for (const file of sourceFiles(dir)) {
+    const targets: string[] = [];
+    for (const spec of specifiers(readFileSync(file, 'utf8'))) {
+      if (!spec.startsWith('.')) continue;
+      const target = resolveFile(file, spec);
+      if (target?.startsWith(dir)) targets.push(relative(SRC, target));
+    }
+    graph.set(relative(SRC, file), targets);
+  }
+  return graph;
+}
+
+/**
+ * Every import cycle of a graph, one per strongly connected component with more than one file (or a
+ * file importing itself), written `a -> b -> ... -> a` along one of its loops (Tarjan's algorithm).
+ */
+function cycles(graph: ReadonlyMap<string, readonly string[]>): string[] {
+  const index = new Map<string, number>();
+  const low = new Map<string, number>();
+  const stack: string[] = [];
+  const onStack = new Set<string>();
+  const found: string[] = [];
+  let next = 0;
+  const visit = (v: string): void => {
+    index.set(v, next);
+    low.set(v, next);
+    next++;
+    stack.push(v);
+    onStack.add(v);
+    for (const w of graph.get(v) ?? []) {
+      if (!index.has(w)) {
+        visit(w);
+        low.set(v, Math.min(low.get(v) as number, low.get(w) as number));
+      } else if (onStack.has(w)) low.set(v, Math.min(low.get(v) as number, index.get(w) as number));
+    }
+    if (low.get(v) !== index.get(v)) return;
+    const component: string[] = [];
+    for (let w = stack.pop(); w !== undefined; w = stack.pop()) {
+      onStack.delete(w);
+      component.push(w);
+      if (w === v) break;
+    }
+    if (component.length > 1 || (graph.get(v) ?? []).includes(v)) found.push(loopThrough(graph, new Set(component), v));
+  };
+  for (const v of [...graph.keys()].sort()) if (!index.has(v)) visit(v);
+  return found;
+}
+
+/** One loop from `start` back to it inside a strongly connected component (breadth first). */
+function loopThrough(
+  graph: ReadonlyMap<string, readonly string[]>,
+  within: ReadonlySet<string>,
+  start: string,
+): string {
+  const previous = new Map<string, string>();
+  const queue = [start];
+  while (queue.length > 0) {
+    const v = queue.shift() as string;
+    for (const w of graph.get(v) ?? []) {
+      if (!within.has(w)) continue;
+      if (w === start) {
+        const path = [start];
+        for (let u: string | undefined = v; u !== undefined && u !== start; u = previous.get(u)) path.splice(1, 0, u);
+        return [...path, start].join(' -> ');
+      }
+      if (!previous.has(w)) {
+        previous.set(w, v);
+        queue.push(w);
+      }
+    }
+  }
+  return start;
+}
+
 describe('layers of src/', () => {
   const all = edges();
 
@@ -85,5 +170,29 @@ describe('layers of src/', () => {
   it('keeps the core pure: no three.js, no DOM or Node modules', () => {
     const bad = all.filter((e) => e.from === 'core' && e.to.startsWith('pkg:'));
     expect(bad.map((e) => `${e.file} imports ${e.to}`)).toEqual([]);
+  });
+
+  it('finds an import cycle when there is one (the checker itself)', () => {
+    const graph = new Map([
+      ['a.ts', ['b.ts']],
+      ['b.ts', ['c.ts']],
+      ['c.ts', ['a.ts', 'd.ts']],
+      ['d.ts', []],
+    ]);
+    expect(cycles(graph)).toEqual(['a.ts -> b.ts -> c.ts -> a.ts']);
+    expect(
+      cycles(
+        new Map([
+          ['a.ts', ['b.ts']],
+          ['b.ts', []],
+        ]),
+      ),
+    ).toEqual([]);
+  });
+
+  it('has no import cycle inside the core, type imports included (the domain types live in core/domain/)', () => {
+    const core = fileGraph(join(SRC, 'core'));
+    expect(core.size).toBeGreaterThan(50);
+    expect(cycles(core)).toEqual([]);
   });
 });

@@ -12,7 +12,7 @@
  */
 import { pathToFileURL } from 'node:url';
 import { type ForwardInput, forwardInput } from '../core/input/validate';
-import { exactIntervalMm } from '../core/surfaces/exact';
+import { exactIntervalMm } from '../core/surfaces/solve';
 import {
   type RevolutionCase,
   type SlopedPlaneCase,

@@ -49,5 +49,5 @@ export {
   validateTargetRa,
 } from './roughness/roughness';
 export type { CylinderSurface, Surface, SurfaceAxis } from './surfaces/cylinder';
-export type { ExactForward, ExactInverse } from './surfaces/exact';
-export { exactForward, exactInverse } from './surfaces/exact';
+export type { ExactForward, ExactInverse } from './surfaces/solve';
+export { exactForward, exactInverse } from './surfaces/solve';

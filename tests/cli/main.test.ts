@@ -12,7 +12,7 @@ import {
   validateForward,
 } from '../../src/core/index';
 import { PAPER_CONDITIONS } from '../../src/core/procedures/paper';
-import { exactHalfIntervalMm } from '../../src/core/surfaces/exact';
+import { exactHalfIntervalMm } from '../../src/core/surfaces/solve';
 import { BIN, checkResultFields, logUniform, pick, random, randomHeight, randomTool, run } from './helpers';
 
 const STACK = /\n\s+at |node:internal|Error:/;

@@ -11,7 +11,7 @@ import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
 import { forwardInput, scallopHeightLimits } from '../../src/core/input/validate';
 import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
-import { exactForward } from '../../src/core/surfaces/exact';
+import { exactForward } from '../../src/core/surfaces/solve';
 import { ROOT, SHOTS, useSite } from './harness';
 
 const site = useSite('docs/quick-lookup');

@@ -5,7 +5,7 @@
 import { expect } from 'vitest';
 import { forwardInput, type PassPattern, type ToolInput } from '../../src/core/input/validate';
 import { type CylinderSurface, cylinderSolver } from '../../src/core/surfaces/cylinder';
-import { exactForward, exactIntervalMm } from '../../src/core/surfaces/exact';
+import { exactForward, exactIntervalMm } from '../../src/core/surfaces/solve';
 import { type CylinderReachReference, cylinderReach } from './reference/cylinderReach';
 
 /** Step-overs agree with the reference to this, mm (issue 7). */

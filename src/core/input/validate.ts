@@ -6,9 +6,12 @@
  * the bound it broke, what was given). Messages are written from that data in one place
  * (describeInputError), in the user's unit.
  */
-import { concaveFit, cylinderSolver, PLANE, type Surface, type SurfaceAxis } from '../surfaces/cylinder';
-import { type FlankLimits, flankAtHeight, flankLimits, type PostureShape, shapeOfTool } from '../tool/posture';
-import { stepOverFromReaches } from '../tool/stepOverRule';
+import type { ForwardInput, InverseInput, PassInput } from '../domain/pass';
+import { PLANE, type Surface, type SurfaceAxis } from '../domain/surface';
+import { PASS_PATTERNS, type PassPattern, type ToolInput } from '../domain/tool';
+import { leavesNoScallop } from '../surfaces/models/plane';
+import { type SurfaceDescriptor, surfaceModel } from '../surfaces/registry';
+import type { FlankLimits } from '../tool/posture';
 import { FIELD_LABELS, FIELDS, type FieldName, isLengthField } from './fields';
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from './units';
 
@@ -95,40 +98,9 @@ export type Validation<T, E extends AnyInputError = InputError> =
   | { readonly ok: true; readonly value: T }
   | { readonly ok: false; readonly errors: readonly E[] };
 
-/** How adjacent passes run: every pass the same way, or alternating (posture relative to the feed). */
-export type PassPattern = 'one-way' | 'zigzag';
-
-export const PASS_PATTERNS: readonly PassPattern[] = ['one-way', 'zigzag'];
-
-/** A validated tool and posture: lengths in mm, angles in degrees. */
-export interface ToolInput {
-  /** Tool radius `R` in mm, {@link MIN_TOOL_RADIUS_MM} <= R <= {@link MAX_TOOL_RADIUS_MM}. */
-  readonly toolRadiusMm: number;
-  /** Corner (tip) radius `Rcr` in mm, 0 <= Rcr <= R. */
-  readonly cornerRadiusMm: number;
-  /** Lead angle `rho` (inclination along the feed) in degrees, 0 <= rho < 90. */
-  readonly leadAngleDeg: number;
-  /** Tilt angle `beta` (inclination across the feed, + leans the shank to +Y) in degrees, -90 < beta < 90. */
-  readonly tiltAngleDeg: number;
-}
-
-/** Tool, posture, pass pattern and the design surface (a plane or a cylinder). */
-export interface PassInput extends ToolInput {
-  readonly pattern: PassPattern;
-  readonly surface: Surface;
-}
-
-/** Input of the forward problem: scallop height to path interval. */
-export interface ForwardInput extends PassInput {
-  /** Scallop height `h` in mm: at least {@link MIN_LENGTH_MM}, below the flank and shank limits. */
-  readonly scallopHeightMm: number;
-}
-
-/** Input of the inverse problem: path interval (step-over) to scallop height. */
-export interface InverseInput extends PassInput {
-  /** Step-over `L` in mm (between cutter-contact paths): 0 < L below the widest step-over without a wall. */
-  readonly intervalMm: number;
-}
+/** The domain types (domain/): re-exported where they were defined before, for the callers. */
+export type { ForwardInput, InverseInput, PassInput, PassPattern, ToolInput };
+export { PASS_PATTERNS };
 
 /** Raw values as they come from a form, a URL or a CSV cell (mm and degrees). */
 export interface RawToolInput {
@@ -477,20 +449,15 @@ function checkSurface(raw: RawToolInput, errors: InputError[]): Surface | null {
 }
 
 /**
- * A concave cylinder too tight for the tool and posture (concaveFit: the head, or the shank up to the
- * axis height): the gouging error naming the smallest radius (or "any radius"), else null.
+ * A surface too tight for the tool and posture (its model's fit: on a concave cylinder the head, or
+ * the shank up to the axis height): the gouging error naming the nearest admissible radius (or "any
+ * radius"), else null.
  */
 function gouging(tool: ToolInput, surface: Surface, shown: string): InputError | null {
-  if (surface.kind !== 'cylinder' || surface.radiusMm > 0) return null;
-  const fit = concaveFit(tool, surface.axis);
-  const min = fit.minRadiusMm;
-  if (Math.abs(surface.radiusMm) >= min) return null;
-  const limit = Number.isFinite(min) ? -min : null;
-  if (fit.limitedBy === 'head') return inputError('surfaceRadius', 'gouging', shown, limit);
-  return inputError('surfaceRadius', 'shank-gouging', shown, limit, null, {
-    axis: surface.axis,
-    leanDeg: fit.shankLeanDeg,
-  });
+  const fit = surfaceModel(surface).fit(tool, surface);
+  if (!fit.gouges) return null;
+  if (fit.by === 'head') return inputError('surfaceRadius', 'gouging', shown, fit.limitRadiusMm);
+  return inputError('surfaceRadius', 'shank-gouging', shown, fit.limitRadiusMm, null, fit.shankLean);
 }
 
 function toolOf(values: Collected['values']): ToolInput | null {
@@ -542,45 +509,24 @@ export function validatePassAnd(
   };
 }
 
-/**
- * A flat end (Rcr = 0) with neither lead nor tilt: its bottom face lies on the plane and has no
- * corner to curve up, so it leaves no scallop at any step-over up to its diameter. Any h is then
- * a valid question, answered by L = 2R (exact.ts).
- */
-export function leavesNoScallop(tool: ToolInput): boolean {
-  return tool.cornerRadiusMm === 0 && tool.leadAngleDeg === 0 && tool.tiltAngleDeg === 0;
-}
+/** A flat end with neither lead nor tilt (the plane's model, surfaces/models/plane.ts); re-exported for the callers. */
+export { leavesNoScallop };
 
 /**
  * The scallop heights a tool in a posture can leave on a surface: below `limitMm` (flankLimits on a
  * plane; measured radially on a cylinder); mm. On a plane without tilt it is `(R - Rcr) sin(rho) + Rcr`.
+ * Any registered surface (surfaces/registry.ts).
  */
-export function scallopHeightLimits(tool: ToolInput, surface: Surface = PLANE): FlankLimits {
-  if (surface.kind === 'cylinder') return cylinderSolver(tool, surface).limits();
-  return flankLimits(shapeOfTool(tool));
+export function scallopHeightLimits(tool: ToolInput, surface: SurfaceDescriptor = PLANE): FlankLimits {
+  return surfaceModel(surface).limits(tool, surface);
 }
 
 /**
  * The widest step-over (mm) that still leaves a scallop, for a tool, posture, pattern and surface:
- * the flanks' reach at the height limit; 2R on a plane without tilt.
+ * the flanks' reach at the height limit; 2R on a plane without tilt. Any registered surface.
  */
-export function maxIntervalMm(tool: ToolInput, pattern: PassPattern, surface: Surface = PLANE): number {
-  if (surface.kind === 'cylinder') {
-    const c = cylinderSolver(tool, surface);
-    const h = c.limits().limitMm;
-    const right = c.reach('right', h);
-    const left = c.reach('left', h);
-    return c.intervalFromReach(stepOverFromReaches(pattern, right, left));
-  }
-  const s = shapeOfTool(tool);
-  const limit = flankLimits(s).limitMm;
-  return intervalAtHeight(s, pattern, limit);
-}
-
-function intervalAtHeight(s: PostureShape, pattern: PassPattern, h: number): number {
-  const right = flankAtHeight(s, 'right', h).widthMm;
-  const left = flankAtHeight(s, 'left', h).widthMm;
-  return stepOverFromReaches(pattern, right, left);
+export function maxIntervalMm(tool: ToolInput, pattern: PassPattern, surface: SurfaceDescriptor = PLANE): number {
+  return surfaceModel(surface).maxIntervalMm(tool, pattern, surface);
 }
 
 /**
@@ -605,7 +551,7 @@ export function validateForward(raw: RawForwardInput): Validation<ForwardInput> 
   if (h !== undefined && gouge === null) {
     if (h <= 0) reject(c, 'h', 'not-positive');
     else if (h < MIN_LENGTH_MM) reject(c, 'h', 'too-small', MIN_LENGTH_MM);
-    else if (tool !== null && surface !== null && !(surface.kind === 'plane' && leavesNoScallop(tool))) {
+    else if (tool !== null && surface !== null && !surfaceModel(surface).leavesNoScallop(tool, surface)) {
       const limits = scallopHeightLimits(tool, surface);
       if (!(limits.limitMm >= MIN_LENGTH_MM)) c.errors.push(inputError('h', 'wall-only', c.shown.h ?? ''));
       else if (h >= limits.limitMm) {
@@ -649,9 +595,9 @@ export function validateInverse(raw: RawInverseInput): Validation<InverseInput> 
     if (L <= 0) reject(c, 'interval', 'not-positive');
     else if (L < 2 * MIN_LENGTH_MM) reject(c, 'interval', 'too-small', 2 * MIN_LENGTH_MM);
     else if (tool !== null && pattern !== null && surface !== null) {
-      const leavesScallop = surface.kind === 'plane' && leavesNoScallop(tool);
+      const noScallop = surfaceModel(surface).leavesNoScallop(tool, surface);
       const limit = scallopHeightLimits(tool, surface).limitMm;
-      const max = leavesScallop || limit >= MIN_LENGTH_MM ? maxIntervalMm(tool, pattern, surface) : Number.NaN;
+      const max = noScallop || limit >= MIN_LENGTH_MM ? maxIntervalMm(tool, pattern, surface) : Number.NaN;
       const onPlaneNoTilt = tool.tiltAngleDeg === 0 && surface.kind === 'plane';
       if (!(max > 0) || !Number.isFinite(max)) reject(c, 'interval', 'wall-only');
       else if (!(L < max)) reject(c, 'interval', onPlaneNoTilt ? 'beyond-diameter' : 'beyond-interval', max);

@@ -6,11 +6,12 @@
  * no DOM); lengths in mm, angles in degrees.
  */
 
-import { type ForwardInput, maxIntervalMm } from '../input/validate';
+import type { ForwardInput } from '../domain/pass';
+import { maxIntervalMm } from '../input/validate';
 import type { Approximation, HalfInterval } from '../procedures/approximations';
 import { compareForward } from '../procedures/compare';
 import { APPROXIMATION_KEYS, APPROXIMATIONS, type ApproximationKey, PROCEDURES } from '../procedures/procedures';
-import { exactForward } from '../surfaces/exact';
+import { exactForward } from '../surfaces/solve';
 
 /** A plain decimal number as the validation accepts it (sign, digits, point, exponent). */
 const NUMBER_TEXT = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;

@@ -5,7 +5,7 @@
  * placement.ts: contact at the origin, X feed, Z up).
  */
 
-import type { ToolInput } from '../input/validate';
+import type { ToolInput } from '../domain/tool';
 import { cross, dot, norm, type Vec3 } from '../math/vec';
 import {
   cutSection,

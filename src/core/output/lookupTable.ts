@@ -9,6 +9,8 @@
  * and gives the reason in `error`, as the batch does. Pure; mm and degrees.
  */
 
+import type { Surface } from '../domain/surface';
+import type { PassPattern } from '../domain/tool';
 import {
   CSV_OPTIONAL_COLUMNS,
   CSV_REQUIRED_COLUMNS,
@@ -18,8 +20,7 @@ import {
   PASS_FIELDS,
 } from '../input/fields';
 import { rawOf } from '../input/raw';
-import { type PassPattern, type RawForwardInput, scallopHeightLimits, validateForward } from '../input/validate';
-import type { Surface } from '../surfaces/cylinder';
+import { type RawForwardInput, scallopHeightLimits, validateForward } from '../input/validate';
 import { csvNumber, csvText, RESULT_COLUMNS, resultFields } from './csvWrite';
 
 /** The grid of a table: scallop heights (mm), lead angles and tilts (degrees), each ascending. */

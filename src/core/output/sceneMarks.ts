@@ -7,8 +7,8 @@
  * feed, Z the surface normal there.
  */
 
+import type { Surface } from '../domain/surface';
 import type { Vec3 } from '../math/vec';
-import type { Surface } from '../surfaces/cylinder';
 import { type NumberSink, surfacePointInto, surfacePolylineInto } from './surfaceGeometry';
 
 /**

@@ -5,7 +5,7 @@
  * On a plane s and h are the plain y and z; a surface enters only through its section's signed
  * radius (surfaceGeometry.ts maps (s, h) to the section's y and z).
  */
-import type { Surface } from '../surfaces/cylinder';
+import type { Surface } from '../domain/surface';
 
 /**
  * The signed radius of the design surface's section across the feed (mm): the cylinder's radius Rs

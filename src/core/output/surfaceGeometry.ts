@@ -13,8 +13,8 @@
  *    measured (shared/notes/posture-and-surfaces.md): radius Rs + h convex, |Rs| - h concave.
  */
 
+import type { Surface } from '../domain/surface';
 import type { Vec3 } from '../math/vec';
-import type { Surface } from '../surfaces/cylinder';
 
 /** A writable list of numbers: a plain array or a typed one (a three.js buffer's Float32Array). */
 export type NumberSink = { [index: number]: number };

@@ -18,8 +18,9 @@ function mm(lengthMm: number): string {
   return `${formatSignificant(lengthMm, { digits: 6, trimZeros: true })} mm`;
 }
 
-import type { ForwardInput, InverseInput, ToolInput } from '../input/validate';
-import type { CylinderSurface } from '../surfaces/cylinder';
+import type { ForwardInput, InverseInput } from '../domain/pass';
+import type { CylinderSurface } from '../domain/surface';
+import type { ToolInput } from '../domain/tool';
 
 const DEG = RAD_PER_DEG;
 

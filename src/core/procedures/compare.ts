@@ -5,22 +5,21 @@
  * Pure; lengths mm. Never NaN or Infinity: a missing value is null or "not applicable" with a reason.
  */
 
+import type { ForwardInput, InverseInput } from '../domain/pass';
+import type { CylinderSurface } from '../domain/surface';
+import type { ToolInput } from '../domain/tool';
 import { formatSignificant } from '../input/units';
 import {
-  type ForwardInput,
   forwardInput,
-  type InverseInput,
   inverseInput,
   maxIntervalMm,
   type RawForwardInput,
   type RawInverseInput,
-  type ToolInput,
   type Validation,
   validateForward,
   validateInverse,
 } from '../input/validate';
-import type { CylinderSurface } from '../surfaces/cylinder';
-import { type ExactForward, type ExactInverse, exactForward, exactInverse } from '../surfaces/exact';
+import { type ExactForward, type ExactInverse, exactForward, exactInverse } from '../surfaces/solve';
 import { type Approximation, combinedRadiusMm, type HalfInterval, type ScallopHeight } from './approximations';
 import {
   APPROXIMATION_KEYS,

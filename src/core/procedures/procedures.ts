@@ -5,7 +5,8 @@
  * comparison, the sweeps, the CSV and the worker iterate the same list.
  */
 
-import type { ForwardInput, InverseInput, ToolInput } from '../input/validate';
+import type { ForwardInput, InverseInput } from '../domain/pass';
+import type { ToolInput } from '../domain/tool';
 import {
   type Approximation,
   type BediModel,

@@ -4,7 +4,7 @@
  * Pure; angles in degrees.
  */
 
-import type { ToolInput } from '../input/validate';
+import type { ToolInput } from '../domain/tool';
 import { APPROXIMATIONS, modelCurve, type ProcedureKey } from './procedures';
 
 /** A run of consecutive sweep samples where a procedure has no answer, for one reason. */

@@ -3,11 +3,13 @@
  * L/2 over the lead angle, and the paper's tables recomputed. Pure; lengths mm, angles degrees.
  */
 
-import type { InverseInput, PassPattern, ToolInput } from '../input/validate';
+import type { InverseInput } from '../domain/pass';
+import { PLANE, type Surface } from '../domain/surface';
+import type { PassPattern, ToolInput } from '../domain/tool';
 import { forwardInput, inverseInput, leavesNoScallop, scallopHeightLimits } from '../input/validate';
 import { profilePolyline } from '../output/geometry';
-import { minConcaveRadiusMm, PLANE, type Surface } from '../surfaces/cylinder';
-import { exactIntervalMm, exactScallopHeightMm } from '../surfaces/exact';
+import { surfaceModel } from '../surfaces/registry';
+import { exactIntervalMm, exactScallopHeightMm } from '../surfaces/solve';
 import { shapeOfTool } from '../tool/posture';
 import { compareForward } from './compare';
 import { PAPER_CONDITIONS, type PaperCondition, type ProcedureValues } from './paper';
@@ -271,7 +273,7 @@ export function stepOverSweep(
     const ok = h < scallopHeightLimits(t).limitMm || leavesNoScallop(t);
     const c = ok ? compareForward(forwardInput(t, pattern, h)) : null;
     if (surface.kind === 'cylinder') {
-      const fits = surface.radiusMm > 0 || minConcaveRadiusMm(t, surface.axis) <= -surface.radiusMm;
+      const fits = !surfaceModel(surface).fit(t, surface).gouges;
       const valid = fits && h < scallopHeightLimits(t, surface).limitMm;
       values.exact.push(valid ? exactIntervalMm(forwardInput(t, pattern, h, surface)) : null);
     }

@@ -17,7 +17,7 @@
  * Lengths mm (relative to the contact), angles radians.
  */
 
-import type { ForwardInput } from '../input/validate';
+import type { ForwardInput } from '../domain/pass';
 import type { Vec3 } from '../math/vec';
 import { type Placement, placeTool } from '../tool/placement';
 import type { Flank } from '../tool/posture';

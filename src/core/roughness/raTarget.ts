@@ -3,9 +3,11 @@
  * tool can leave, maxRaMm) and the forward input it comes to (h from scallopHeightForRaMm; the
  * step-over and everything else then follow from that h). Lengths mm.
  */
+
+import type { ForwardInput, PassInput } from '../domain/pass';
 import { PASS_FIELDS } from '../input/fields';
 import { rawOf } from '../input/raw';
-import { type ForwardInput, forwardInput, type PassInput, type Validation } from '../input/validate';
+import { forwardInput, type Validation } from '../input/validate';
 import {
   maxRaMm,
   type RawTargetRaInput,

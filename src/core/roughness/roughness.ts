@@ -22,24 +22,23 @@
  * (arc length about the axis, or distance along it): the mean line is then a coaxial cylinder.
  */
 
+import type { ForwardInput, PassInput } from '../domain/pass';
+import { PLANE, type Surface } from '../domain/surface';
+import type { PassPattern, ToolInput } from '../domain/tool';
 import {
   type AnyInputError,
-  type ForwardInput,
   forwardInput,
   inputError,
-  leavesNoScallop,
   MIN_LENGTH_MM,
-  type PassInput,
-  type PassPattern,
   type RawToolInput,
   scallopHeightLimits,
-  type ToolInput,
   type Validation,
   validatePassAnd,
 } from '../input/validate';
-import { type CylinderSolver, cylinderSolver, PLANE, type Surface } from '../surfaces/cylinder';
-import { type ExactForward, type ExactInverse, exactForward } from '../surfaces/exact';
-import { type Flank, flankWidthMm, type PostureShape, shapeOfTool } from '../tool/posture';
+import type { CylinderSolver } from '../surfaces/cylinder';
+import { type SurfaceDescriptor, surfaceModel } from '../surfaces/registry';
+import { type ExactForward, type ExactInverse, exactForward } from '../surfaces/solve';
+import { type Flank, flankWidthMm, type PostureShape } from '../tool/posture';
 
 /** Roughness across the feed, mm. */
 export interface Roughness {
@@ -207,8 +206,9 @@ export function roughnessOfSegments(widths: WidthAt | PostureShape, segments: re
 }
 
 /** The width function of a tool on its surface. */
-function widthsOf(tool: ToolInput, surface: Surface): WidthAt {
-  return surface.kind === 'cylinder' ? cylinderWidths(cylinderSolver(tool, surface)) : planeWidths(shapeOfTool(tool));
+function widthsOf(tool: ToolInput, surface: SurfaceDescriptor): WidthAt {
+  const width = surfaceModel(surface).flankWidths(tool, surface);
+  return (flank) => (z) => width(flank, z);
 }
 
 /**
@@ -362,7 +362,7 @@ export function validateTargetRa(
     else if (ra < MIN_LENGTH_MM) errors.push(inputError('ra', 'too-small', v.shown, MIN_LENGTH_MM));
     else if (v.pass !== null) {
       const p = v.pass;
-      const flatLying = p.surface.kind === 'plane' && leavesNoScallop(p);
+      const flatLying = surfaceModel(p.surface).leavesNoScallop(p, p.surface);
       if (!flatLying && !(scallopHeightLimits(p, p.surface).limitMm >= MIN_LENGTH_MM)) {
         // As validateForward: in this posture the tool cuts a step, no scallop forms.
         errors.push(inputError('ra', 'wall-only', v.shown));

@@ -28,7 +28,7 @@
  * within twice the height bound. Lengths mm.
  */
 
-import type { PassPattern, ToolInput } from '../input/validate';
+import type { PassPattern, ToolInput } from '../domain/tool';
 import { type Placement, placeTool } from '../tool/placement';
 
 /** What is simulated: a tool in its posture, a pass pattern and a step-over. */

@@ -44,8 +44,9 @@
  * the wall up to the axis height (shankMinConcaveRadiusMm); the larger of the two is the limit.
  */
 
+import { type CylinderSurface, PLANE, type Surface, type SurfaceAxis } from '../domain/surface';
+import type { ToolInput } from '../domain/tool';
 import { radToDeg } from '../input/units';
-import type { ToolInput } from '../input/validate';
 import { type Placement, placeTool } from '../tool/placement';
 import {
   evalSection,
@@ -57,20 +58,9 @@ import {
   type Section,
 } from '../tool/posture';
 
-/** Which way the cylinder's axis runs: along the feed (passes along it) or across (passes around it). */
-export type SurfaceAxis = 'feed' | 'cross';
-
-/** A cylinder: signed radius (convex > 0, concave < 0) and axis orientation. */
-export interface CylinderSurface {
-  readonly kind: 'cylinder';
-  readonly radiusMm: number;
-  readonly axis: SurfaceAxis;
-}
-
-/** The design surface: a plane, or a cylinder. */
-export type Surface = { readonly kind: 'plane' } | CylinderSurface;
-
-export const PLANE: Surface = { kind: 'plane' };
+/** The surface descriptors, defined in domain/surface.ts; re-exported for the callers. */
+export type { CylinderSurface, Surface, SurfaceAxis };
+export { PLANE };
 
 // ---------------------------------------------------------------------------------------------
 // Axis along the feed

@@ -8,9 +8,15 @@
  * the feed): every other pass is mirrored, cusps alternate between two right flanks (where
  * `wR = L/2`) and two left flanks (`wL = L/2`); for no cusp above h, `L = 2 min(wR, wL)` and
  * the other cusp is lower. Without tilt both give `L = 2 (L/2)` of the paper.
+ *
+ * The same rule serves every surface whose passes are congruent (surface.ts's CongruentPasses: the
+ * cylinders, as cylinder.ts prepares them): `congruentForward` and `congruentInverse` combine the
+ * flanks' reaches there. Which of them answers a surface is the registry's choice
+ * (surfaces/registry.ts, models/*); the public entry is surfaces/solve.ts.
  */
 
-import type { ForwardInput, InverseInput } from '../input/validate';
+import type { ForwardInput, InverseInput } from '../domain/pass';
+import type { SurfaceDescriptorBase } from '../domain/surface';
 import {
   contactOffsetMm,
   type FlankPoint,
@@ -22,68 +28,32 @@ import {
   shapeOfTool,
 } from '../tool/posture';
 import { stepOverFromReaches } from '../tool/stepOverRule';
-import { type CylinderSurface, cylinderSolver } from './cylinder';
+import type { CongruentPasses, ExactForward, ExactInverse } from './surface';
 
-/** The exact answer of the forward problem (scallop height to step-over), mm. */
-export interface ExactForward {
-  /** Step-over L between adjacent cutter-contact paths. */
-  readonly intervalMm: number;
-  /** L / 2. */
-  readonly halfIntervalMm: number;
-  /** Widths of the right and left flank at the scallop height, from the contact (wR, wL). */
-  readonly halfWidthRightMm: number;
-  readonly halfWidthLeftMm: number;
-  /** Contact offset y0: Y of the contact point minus Y of the tool centre point O. */
-  readonly contactOffsetMm: number;
-  /** Height of the highest cusp the passes leave: h (0 when no scallop forms at all). */
-  readonly cuspHeightMm: number;
-  /** Zigzag: the height of the other, lower cusp; null for one-way passes. */
-  readonly otherCuspHeightMm: number | null;
-  /**
-   * True when the tool leaves no scallop at any step-over up to `intervalMm`: a flat end with
-   * neither lead nor tilt (its bottom face lies on the plane and has no corner to curve up).
-   */
-  readonly noScallop: boolean;
-  /**
-   * The flank points of the plane profile at the cusps (geometry and teaching). On a cylinder they
-   * are the plane profile's points at the same height, for drawing only: the cylinder's flanks are
-   * measured radially.
-   */
-  readonly right: FlankPoint;
-  readonly left: FlankPoint;
-}
+/** The answers' types, defined with the surface interface (surface.ts); re-exported for the callers. */
+export type { ExactForward, ExactInverse };
 
-/** The exact answer of the inverse problem (step-over to scallop height), mm. */
-export interface ExactInverse {
-  readonly intervalMm: number;
-  /** Height of the highest cusp the passes leave (the scallop height); 0 on a flat bottom. */
-  readonly cuspHeightMm: number;
-  /** Zigzag: the height of the other, lower cusp; null for one-way passes. */
-  readonly otherCuspHeightMm: number | null;
-  /** Heights of the cusps formed by right flanks and by left flanks (equal for one-way). */
-  readonly rightCuspHeightMm: number;
-  readonly leftCuspHeightMm: number;
-  /** Widths of the right and left flank at their cusps, from the contact. */
-  readonly halfWidthRightMm: number;
-  readonly halfWidthLeftMm: number;
-  readonly contactOffsetMm: number;
-  readonly right: FlankPoint;
-  readonly left: FlankPoint;
+/** An input whose surface these solvers ignore or take as prepared passes (any registered kind). */
+type AnyForward = ForwardInput<SurfaceDescriptorBase>;
+type AnyInverse = InverseInput<SurfaceDescriptorBase>;
+
+/**
+ * Exact step-over L (mm) for congruent passes (`c` prepared for the input's tool and surface): the
+ * reaches alone, no display geometry. @param input validated.
+ */
+export function congruentIntervalMm(input: AnyForward, c: CongruentPasses): number {
+  // Without tilt the flanks are mirror images.
+  const h = input.scallopHeightMm;
+  const right = c.reach('right', h);
+  const left = input.tiltAngleDeg === 0 ? right : c.reach('left', h);
+  return c.intervalFromReach(stepOverFromReaches(input.pattern, right, left));
 }
 
 /**
- * Exact step-over L (mm) for a validated forward input: the fast path (no geometry, no
+ * Exact step-over L (mm) on a plane for a validated forward input: the fast path (no geometry, no
  * allocation beyond the shape). Error below 1e-9 mm over the valid domain.
  */
-export function exactIntervalMm(input: ForwardInput): number {
-  if (input.surface.kind === 'cylinder') {
-    // The reaches alone (no display geometry); without tilt the flanks are mirror images.
-    const c = cylinderSolver(input, input.surface);
-    const h = input.scallopHeightMm;
-    const right = c.reach('right', h);
-    const left = input.tiltAngleDeg === 0 ? right : c.reach('left', h);
-    return c.intervalFromReach(stepOverFromReaches(input.pattern, right, left));
-  }
+export function planeIntervalMm(input: AnyForward): number {
   const s = shapeOfTool(input);
   if (s.flatOnPlane && s.rcr === 0) return 2 * s.a;
   const h = input.scallopHeightMm;
@@ -92,17 +62,8 @@ export function exactIntervalMm(input: ForwardInput): number {
   return stepOverFromReaches(input.pattern, right, flankWidthMm(s, 'left', h));
 }
 
-/**
- * Exact half path interval `L/2` in mm (the paper's quantity; L / 2 for either pattern).
- * @param input validated by validateForward.
- */
-export function exactHalfIntervalMm(input: ForwardInput): number {
-  return exactIntervalMm(input) / 2;
-}
-
-/** Exact forward solution: step-over, flank widths, contact offset and cusp heights (mm). */
-export function exactForward(input: ForwardInput): ExactForward {
-  if (input.surface.kind === 'cylinder') return cylinderForward(input, input.surface);
+/** Exact forward solution on a plane: step-over, flank widths, contact offset and cusp heights (mm). */
+export function planeForward(input: AnyForward): ExactForward {
   const s = shapeOfTool(input);
   const h = input.scallopHeightMm;
   const y0 = contactOffsetMm(s);
@@ -176,9 +137,8 @@ function oneWayCuspHeightMm(s: PostureShape, L: number, limitMm: number): number
   return u * u;
 }
 
-/** Exact inverse: the cusp heights (mm) that passes L apart leave. @param input validated by validateInverse. */
-export function exactInverse(input: InverseInput): ExactInverse {
-  if (input.surface.kind === 'cylinder') return cylinderInverse(input, input.surface);
+/** Exact inverse on a plane: the cusp heights (mm) that passes L apart leave. @param input validated by validateInverse. */
+export function planeInverse(input: AnyInverse): ExactInverse {
   const s = shapeOfTool(input);
   const L = input.intervalMm;
   const y0 = contactOffsetMm(s);
@@ -218,21 +178,12 @@ export function exactInverse(input: InverseInput): ExactInverse {
 }
 
 /**
- * Exact scallop height (mm) left by passes `intervalMm` apart: the highest cusp. 0 when the
- * point lies on a flat bottom lying on the plane (rho = 0 without tilt, L/2 <= R - Rcr).
- */
-export function exactScallopHeightMm(input: InverseInput): number {
-  return exactInverse(input).cuspHeightMm;
-}
-
-/**
- * On a cylinder (cylinder.ts): the step-over from the flanks' reach at the radial height h, one-way
+ * For congruent passes (`c` prepared for the input's tool and surface), as on a cylinder (cylinder.ts): the step-over from the flanks' reach at the radial height h, one-way
  * `L = |Rs| (A_R + A_L)` (axis = feed, A the polar angles) or `w_R + w_L` (axis = cross, widths
  * along the axis); zigzag twice the smaller reach. "Widths" are reported as the reach converted to
  * length along the surface.
  */
-function cylinderForward(input: ForwardInput, surface: CylinderSurface): ExactForward {
-  const c = cylinderSolver(input, surface);
+export function congruentForward(input: AnyForward, c: CongruentPasses): ExactForward {
   const s = shapeOfTool(input);
   const h = input.scallopHeightMm;
   const reachR = c.reach('right', h);
@@ -260,9 +211,11 @@ function cylinderForward(input: ForwardInput, surface: CylinderSurface): ExactFo
   };
 }
 
-/** The inverse on a cylinder: cusp heights at a step-over (one-way by a bracketed secant in sqrt(h)). */
-function cylinderInverse(input: InverseInput, surface: CylinderSurface): ExactInverse {
-  const c = cylinderSolver(input, surface);
+/**
+ * The inverse for congruent passes, as on a cylinder: cusp heights at a step-over (one-way by a
+ * bracketed secant in sqrt(h)). `c` prepared for the input's tool and surface.
+ */
+export function congruentInverse(input: AnyInverse, c: CongruentPasses): ExactInverse {
   const s = shapeOfTool(input);
   const L = input.intervalMm;
   const reach = c.reachFromInterval(L);

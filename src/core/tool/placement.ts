@@ -13,8 +13,8 @@
  * `T(t) = cos t v1 - sin t v2`. Lengths mm, angles radians.
  */
 
+import type { ToolInput } from '../domain/tool';
 import { degToRad } from '../input/units';
-import type { ToolInput } from '../input/validate';
 import { addScaled, type Vec3 } from '../math/vec';
 import { type PostureShape, shapeOfTool } from './posture';
 

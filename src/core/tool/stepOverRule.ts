@@ -3,7 +3,7 @@
  * (shared/notes/posture-and-surfaces.md, "Pass patterns"). The one place it is written: the plane's
  * and the cylinders' solvers, their fast paths and the validators' widest step-over all call it.
  */
-import type { PassPattern } from '../input/validate';
+import type { PassPattern } from '../domain/tool';
 
 /**
  * Step-over from the reaches of the two flanks at the scallop height.

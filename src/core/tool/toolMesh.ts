@@ -5,7 +5,7 @@
  * the origin, designed plane z = 0). Pure: plain typed arrays, mm.
  */
 
-import type { ToolInput } from '../input/validate';
+import type { ToolInput } from '../domain/tool';
 import { placeTool } from './placement';
 
 /** Points along the revolved profile: bottom centre, corner arc, shank top. */

@@ -6,7 +6,7 @@
 
 import type { ForwardInput } from '../../core/input/validate';
 import { traceProcedure } from '../../core/procedures/trace';
-import { exactForward } from '../../core/surfaces/exact';
+import { exactForward } from '../../core/surfaces/solve';
 import { ringTangent, sectionCentre } from '../../core/tool/placement';
 import type { Flank } from '../../core/tool/posture';
 import type { TeachData, TraceFrame } from '../protocol';

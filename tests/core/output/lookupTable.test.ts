@@ -4,7 +4,7 @@ import { parseCsv } from '../../../src/cli/csv';
 import { forwardInput, scallopHeightLimits, validateForward } from '../../../src/core/input/validate';
 import { LOOKUP_HEADER, lookupGrid, lookupTable, series125 } from '../../../src/core/output/lookupTable';
 import { PLANE } from '../../../src/core/surfaces/cylinder';
-import { exactForward } from '../../../src/core/surfaces/exact';
+import { exactForward } from '../../../src/core/surfaces/solve';
 
 describe('lookup table', () => {
   it('the scallop heights follow the 1-2-5 series from about 1e-4 R up to the largest limit', () => {

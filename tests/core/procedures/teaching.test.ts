@@ -7,7 +7,7 @@ import {
 } from '../../../src/core/procedures/approximations';
 import { PAPER_CONDITIONS } from '../../../src/core/procedures/paper';
 import { paperTables, profileCurves, rhoSweep, stepOverSweep } from '../../../src/core/procedures/teaching';
-import { exactForward, exactIntervalMm } from '../../../src/core/surfaces/exact';
+import { exactForward, exactIntervalMm } from '../../../src/core/surfaces/solve';
 
 const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { passGeometry } from '../../../src/core/output/geometry';
 import { PAPER_CONDITIONS } from '../../../src/core/procedures/paper';
 import { traceProcedure } from '../../../src/core/procedures/trace';
-import { exactHalfIntervalMm } from '../../../src/core/surfaces/exact';
+import { exactHalfIntervalMm } from '../../../src/core/surfaces/solve';
 import { seededRandom } from '../../support/bruteForce';
 
 const DEG = Math.PI / 180;

@@ -9,7 +9,7 @@ import {
 } from '../../../src/core/input/validate';
 import { exactRoughness, maxRaMm, raRuleOfThumbMm, scallopHeightForRaMm } from '../../../src/core/roughness/roughness';
 import { cylinderSolver } from '../../../src/core/surfaces/cylinder';
-import { exactForward } from '../../../src/core/surfaces/exact';
+import { exactForward } from '../../../src/core/surfaces/solve';
 import { flankAtWidth, shapeOfTool } from '../../../src/core/tool/posture';
 import { seededRandom } from '../../support/bruteForce';
 

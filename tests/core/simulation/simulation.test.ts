@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { forwardInput, type PassPattern, scallopHeightLimits, type ToolInput } from '../../../src/core/input/validate';
 import { exactRoughness } from '../../../src/core/roughness/roughness';
 import { simulatePasses, startSimulation } from '../../../src/core/simulation/simulation';
-import { exactForward } from '../../../src/core/surfaces/exact';
+import { exactForward } from '../../../src/core/surfaces/solve';
 import { seededRandom } from '../../support/bruteForce';
 
 /**

@@ -9,7 +9,7 @@ import {
 } from '../../../src/core/input/validate';
 import { compareForward } from '../../../src/core/procedures/compare';
 import { type CylinderSurface, minConcaveRadiusMm } from '../../../src/core/surfaces/cylinder';
-import { exactForward, exactInverse } from '../../../src/core/surfaces/exact';
+import { exactForward, exactInverse } from '../../../src/core/surfaces/solve';
 import { seededRandom } from '../../support/bruteForce';
 import { bruteForceCylinder } from '../../support/cylinderBruteForce';
 

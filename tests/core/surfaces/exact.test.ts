@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { passGeometry } from '../../../src/core/output/geometry';
 import { PAPER_CONDITIONS } from '../../../src/core/procedures/paper';
-import { exactForward, exactHalfIntervalMm, exactScallopHeightMm } from '../../../src/core/surfaces/exact';
+import { exactForward, exactHalfIntervalMm, exactScallopHeightMm } from '../../../src/core/surfaces/solve';
 import { placeTool } from '../../../src/core/tool/placement';
 import { bruteForceHalfIntervalMm, seededRandom } from '../../support/bruteForce';
 

@@ -7,7 +7,7 @@ import {
   redonnetHalfInterval,
   sekineHalfInterval,
 } from '../../../src/core/procedures/approximations';
-import { exactForward, exactInverse } from '../../../src/core/surfaces/exact';
+import { exactForward, exactInverse } from '../../../src/core/surfaces/solve';
 import { seededRandom } from '../../support/bruteForce';
 import { everyNumberFinite } from '../../support/finite';
 

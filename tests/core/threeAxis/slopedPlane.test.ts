@@ -1,6 +1,6 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import { forwardInput, inverseInput } from '../../../src/core/input/validate';
-import { exactIntervalMm, exactInverse } from '../../../src/core/surfaces/exact';
+import { exactIntervalMm, exactInverse } from '../../../src/core/surfaces/solve';
 import { slopedPlaneForward, slopedPlaneInverse } from '../../../src/core/threeAxis/slopedPlane';
 import { seededRandom } from '../../support/bruteForce';
 import { bruteRasterCusp } from '../../support/reference/threeAxisBruteForce';

@@ -14,7 +14,7 @@ import {
 } from '../../../src/core/input/validate';
 import { stepOverSweep } from '../../../src/core/procedures/teaching';
 import { cylinderSolver } from '../../../src/core/surfaces/cylinder';
-import { exactForward, exactIntervalMm } from '../../../src/core/surfaces/exact';
+import { exactForward, exactIntervalMm } from '../../../src/core/surfaces/solve';
 import { flankLimits, shapeOfTool } from '../../../src/core/tool/posture';
 import { stepOverFromReaches } from '../../../src/core/tool/stepOverRule';
 import { cyl, referenceIntervalMm, TOL_MM, tool } from '../../support/cylinderChecks';

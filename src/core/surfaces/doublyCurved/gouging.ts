@@ -31,7 +31,7 @@
  * predicate. Lengths mm, curvatures 1/mm.
  */
 
-import type { ToolInput } from '../../input/validate';
+import type { ToolInput } from '../../domain/tool';
 import { placeTool } from '../../tool/placement';
 import { maximise, type Objective } from './search';
 import { MAX_PRINCIPAL_RADIUS_MM, MIN_PRINCIPAL_RADIUS_MM, type PrincipalRadii } from './types';

@@ -28,7 +28,7 @@
  * point; the CC point's ball centre is (0, Rcr). Lengths mm.
  */
 
-import type { ToolInput } from '../../input/validate';
+import type { ToolInput } from '../../domain/tool';
 import { placeTool } from '../../tool/placement';
 
 /** The lowest ball centres of one pass's section, chord by chord (see the module comment). */

@@ -18,7 +18,7 @@
  * the widest point, the flank's own top). Its image's radial height is the limit. Lengths mm.
  */
 
-import type { ToolInput } from '../../input/validate';
+import type { ToolInput } from '../../domain/tool';
 import { placeTool } from '../../tool/placement';
 import type { PrincipalRadii } from './types';
 

@@ -15,7 +15,7 @@
  * plane). Lengths mm.
  */
 
-import type { ToolInput } from '../../input/validate';
+import type { ToolInput } from '../../domain/tool';
 import { contactOffsetMm, shapeOfTool } from '../../tool/posture';
 import { type EquatorFlank, equatorFlank } from './equatorFlank';
 import { passSection } from './passSection';

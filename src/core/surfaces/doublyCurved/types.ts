@@ -6,7 +6,7 @@
  * as in posture-and-surfaces.md: X feed, Y cross-feed, Z the surface normal out of the material, the
  * CC point at the origin. Lengths mm, angles of the posture degrees (as `ToolInput`).
  */
-import type { PassPattern, ToolInput } from '../../input/validate';
+import type { PassPattern, ToolInput } from '../../domain/tool';
 
 /**
  * Smallest |radius| accepted for `Rf` and `Rc`, mm (the notes: `|R| >= 0.001 mm`). Source:

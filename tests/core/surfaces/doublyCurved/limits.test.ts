@@ -17,7 +17,7 @@ import {
   doublyCurvedInverse,
   doublyCurvedLimits,
 } from '../../../../src/core/surfaces/doublyCurved/solve';
-import { exactForward, exactInverse } from '../../../../src/core/surfaces/exact';
+import { exactForward, exactInverse } from '../../../../src/core/surfaces/solve';
 import { seededRandom } from '../../../support/bruteForce';
 
 const I = Number.POSITIVE_INFINITY;

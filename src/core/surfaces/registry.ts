@@ -1,0 +1,39 @@
+/**
+ * The surface registry: each kind of surface descriptor (domain/surface.ts) mapped to its model
+ * (surface.ts's SurfaceModel, one module under models/). Adding a surface is one new module and one
+ * line in MODELS; the solvers' entry (solve.ts) and the validation find it here by the descriptor's
+ * `kind`, so no caller switches on it.
+ */
+import type { SurfaceDescriptorBase } from '../domain/surface';
+import { cylinderModel } from './models/cylinder';
+import { doublyCurvedModel } from './models/doublyCurved';
+import { planeModel } from './models/plane';
+import { slopedPlaneModel } from './models/slopedPlane';
+import type { SurfaceModel } from './surface';
+
+/** Every registered surface model. */
+const MODELS = [planeModel, cylinderModel, doublyCurvedModel, slopedPlaneModel] as const;
+
+type DescriptorOf<M> = M extends SurfaceModel<infer S> ? S : never;
+
+/** Every surface descriptor a registered model answers (the union of their descriptor types). */
+export type SurfaceDescriptor = DescriptorOf<(typeof MODELS)[number]>;
+
+/** The registered kinds, in registration order. */
+export const SURFACE_KINDS: readonly SurfaceDescriptor['kind'][] = MODELS.map((m) => m.kind);
+
+/** The models as an array of one type (a short scan by kind beats a keyed lookup on the solvers' fast paths). */
+const LIST: readonly SurfaceModel<SurfaceDescriptorBase>[] = MODELS;
+
+/**
+ * The model of a surface descriptor. Throws on an unregistered kind: descriptors come from
+ * validation (or a caller's own code), never from raw input, so that is a programming error.
+ */
+export function surfaceModel<S extends SurfaceDescriptor>(surface: S): SurfaceModel<S> {
+  const kind = surface.kind;
+  for (let i = 0; i < LIST.length; i++) {
+    const model = LIST[i] as SurfaceModel<SurfaceDescriptorBase>;
+    if (model.kind === kind) return model as SurfaceModel<S>;
+  }
+  throw new Error(`no surface model registered for kind "${kind}"`);
+}
