@@ -40,6 +40,7 @@
     lxy: 'Lxy',
     dz: 'dz',
     unit: 'unit',
+    machine: 'machine',
     mode: 'mode',
     target: 'target',
     view: 'view',

@@ -62,12 +62,21 @@ import { sameRequest } from '../src/worker/protocol';
 import { runMain } from './cli/helpers';
 
 const ENTRIES = Object.entries(FIELDS) as Array<[FieldId, FieldSpec]>;
+/** Every field the page's URL takes (the three-axis ones and the doubly curved point's radii too). */
+const withUrl = ENTRIES.filter(([, f]) => f.url !== null);
+
 /**
- * The page reads every URL parameter but the three-axis ones: their names are in the registry (and
- * the embed element) for the page's part of issue 20, which reads them; until then the command
- * line and the batch are their channels.
+ * The rest of a link that makes a field count: the inverse mode for L, the target for Ra, the
+ * three-axis machine for its fields (inverse for the programmed steps, waterline passes for dz).
  */
-const withUrl = ENTRIES.filter(([, f]) => f.url !== null && f.group !== 'threeAxis');
+function urlContext(id: string): string {
+  if (id === 'interval') return '&mode=inverse';
+  if (id === 'ra') return '&target=ra';
+  if (id === 'slope' || id === 'rasterAngle' || id === 'passes') return '&machine=3axis';
+  if (id === 'horizontalStep') return '&machine=3axis&mode=inverse';
+  if (id === 'stepDown') return '&machine=3axis&mode=inverse&passes=waterline';
+  return '';
+}
 const withCli = ENTRIES.filter(([, f]) => f.cli !== null);
 
 describe('the registry itself', () => {
@@ -248,7 +257,7 @@ describe("the page's URL takes every registry field under its parameter", () => 
   it('a number of each field is read into its field and written back under the same parameter', () => {
     for (const [id, f] of withUrl) {
       if (f.kind === 'enum') continue;
-      const mode = id === 'interval' ? '&mode=inverse' : id === 'ra' ? '&target=ra' : '';
+      const mode = urlContext(id);
       const parsed = parseUrl(`?${f.url}=7${mode}&unit=mm`);
       const key = id === 'D' ? 'R' : id === 'surfaceRadius' ? 'Rs' : pageKeyOf(id);
       expect(key, id).not.toBeNull();
@@ -264,7 +273,7 @@ describe("the page's URL takes every registry field under its parameter", () => 
     for (const [id, f] of withUrl) {
       if (f.kind !== 'enum') continue;
       for (const value of f.values ?? []) {
-        const search = `?${f.url}=${value}${id === 'surfaceAxis' ? '&surfaceRadius=40' : ''}`;
+        const search = `?${f.url}=${value}${id === 'surfaceAxis' ? '&surfaceRadius=40' : urlContext(id)}`;
         const parsed = parseUrl(search);
         expect(parsed.notices, `${id}=${value}`).toEqual([]);
         if (id === 'view') expect(parsed.view).toBe(value);
@@ -306,6 +315,12 @@ describe("the page's fields are the registry's", () => {
       if (key === 'L') state = { ...state, mode: 'inverse' };
       if (key === 'ra') state = { ...state, target: 'ra' };
       if (key === 'Rs') state = { ...state, surface: 'convex' };
+      // Three-axis fields in three-axis machining; the radii at a doubly curved point (both curved).
+      if (key === 'slope' || key === 'psi') state = { ...state, machine: '3axis' };
+      if (key === 'Lxy') state = { ...state, machine: '3axis', mode: 'inverse' };
+      if (key === 'dz') state = { ...state, machine: '3axis', mode: 'inverse', passes: 'waterline' };
+      if (key === 'Rf' || key === 'Rc')
+        state = { ...state, surface: 'curved', feedSide: 'convex', crossSide: 'convex' };
       const built = buildRequest(state);
       if (built.ok) throw new Error(`${key}=abc is valid`);
       const message = fieldMessages(state, built.errors).get(key) ?? '';

@@ -11,7 +11,8 @@ import type { ProcedureKey } from '../core/procedures';
 import type { PassPattern } from '../core/validate';
 import type { CameraPreset, ToolScene } from '../render/scene';
 import type { RestartInfo } from '../worker/client';
-import type { SolveMode, SolveReply, SolveRequest } from '../worker/protocol';
+import { isSolveReply, isSolveRequest, type PageReply, type PageRequest } from '../worker/pageProtocol';
+import type { SolveMode } from '../worker/protocol';
 import { solveClient } from '../worker/workers';
 import { applyProcedureColours } from './colours';
 import { wireCopyButtons } from './copy';
@@ -24,7 +25,7 @@ import { Highlighter } from './highlight';
 import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
 import { buildRequest, fieldMessages } from './request';
-import { ResultsPanel } from './results';
+import { type QuestionKind, ResultsPanel } from './results';
 import { RoughnessPanel } from './roughness';
 import { SceneSlot } from './sceneSlot';
 import { SimulationLoader } from './simulation';
@@ -42,6 +43,7 @@ import {
   withSize,
   withValues,
 } from './state';
+import { withCurvedPreset } from './surfaceState';
 import { TeachingLoader } from './teaching';
 import { onThemeChange, parseTheme, startTheme } from './theme';
 import { TypingGate } from './typing';
@@ -50,6 +52,10 @@ import type { ViewId } from './views/panel';
 
 /** The teaching views' ids, as the link's `view=` names them (the field registry's; here, so the views' code can load lazily). */
 const VIEW_IDS: readonly ViewId[] = FIELDS.view.values;
+
+/** What the teaching views say while the inputs ask a doubly curved or three-axis question. */
+const ELSEWHERE =
+  'These views show a plane or a cylinder at a five-axis posture: they still show the last such inputs (the results above answer the inputs on screen).';
 
 /** Observes the page from outside (the e2e build's probe); the page itself needs none. */
 export interface AppObserver {
@@ -86,13 +92,13 @@ export class CalculatorApp {
     onRestart: (info) => this.restarted('results', info),
   });
   /** The results: asked of the solver whenever no reply answers the inputs on screen. */
-  private readonly fresh = new FreshJob<SolveReply>({ ask: (request) => this.client.request(request) });
+  private readonly fresh = new FreshJob<PageReply>({ ask: (request) => this.client.request(request) });
   /** Holds a half-typed text back until a pause or a commit (typing.ts). */
   private readonly typing = new TypingGate(() => this.change(this.state));
   /** The field messages of the last committed state (kept while typing, so none flashes). */
   private messages: ReadonlyMap<FieldKey, string> = new Map();
   /** The reply and unit the scene shows. */
-  private sceneDrawn: { reply: SolveReply; unit: Unit } | null = null;
+  private sceneDrawn: { reply: PageReply; unit: Unit } | null = null;
 
   constructor(
     root: HTMLElement,
@@ -148,7 +154,17 @@ export class CalculatorApp {
       onUnit: (unit: Unit) => this.change(convertState(this.state, unit)),
       onPattern: (pattern: PassPattern) => this.change({ ...this.state, pattern }),
       onTarget: (target: Target) => this.change({ ...this.state, target }),
-      onSurface: (surface) => this.change({ ...this.state, surface }),
+      // A doubly curved point chosen with both radii straight starts as a dome.
+      onSurface: (surface) =>
+        this.change(
+          surface === 'curved' && this.state.feedSide === 'straight' && this.state.crossSide === 'straight'
+            ? withCurvedPreset({ ...this.state, surface }, 'dome')
+            : { ...this.state, surface },
+        ),
+      onMachine: (machine) => this.change({ ...this.state, machine }),
+      onPasses: (passes) => this.change({ ...this.state, passes }),
+      onSide: (key, side) => this.change({ ...this.state, [key === 'Rf' ? 'feedSide' : 'crossSide']: side }),
+      onSurfacePreset: (preset) => this.change(withCurvedPreset(this.state, preset)),
       onSurfaceAxis: (surfaceAxis) => this.change({ ...this.state, surfaceAxis }),
       onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
     });
@@ -231,9 +247,11 @@ export class CalculatorApp {
     this.fresh.want(request);
     this.messages = built.ok ? new Map<FieldKey, string>() : fieldMessages(state, built.errors);
     this.fields.render(state, this.messages);
-    this.teaching?.want(request, state.unit);
-    this.simulation.want(request, state.unit);
-    this.lookup.want(request);
+    // The views, the simulation and the table answer a plane's or a cylinder's question (five-axis).
+    const classic = request !== null && isSolveRequest(request) ? request : null;
+    this.teaching?.want(classic, state.unit, false, this.kind() === 'classic' ? null : ELSEWHERE);
+    this.simulation.want(classic, state.unit);
+    this.lookup.want(classic);
     this.draw();
     this.url.write(state);
   }
@@ -243,14 +261,19 @@ export class CalculatorApp {
     const shown = this.fresh.shown;
     const tilt = parseField(this.state.fields.tilt);
     const typing = this.typing.holding;
-    this.results.render(shown, this.state.unit, this.state.mode, tilt, typing);
+    this.results.render(shown, this.state.unit, this.state.mode, tilt, typing, {
+      kind: this.kind(),
+      passes: this.state.passes,
+    });
     this.sceneBox.classList.toggle('typing', typing);
     this.roughness.render(shown, this.state.unit);
     this.highlighter.markRows();
     // The first answer (or the first error) is on screen: now the scene may take its time to load.
     if (shown.kind !== 'pending') this.scene.load();
-    if (shown.kind !== 'current' || !shown.reply.ok) {
+    if (shown.kind !== 'current' || !shown.reply.ok || !isSolveReply(shown.reply)) {
       this.scene.run('stale', (s) => s.setStale(true));
+      // A doubly curved or three-axis answer: the 3D scene of those is still to come.
+      if (shown.kind === 'current' && shown.reply.ok) this.observer.resultShown?.();
       return;
     }
     const reply = shown.reply;
@@ -274,7 +297,15 @@ export class CalculatorApp {
     this.observer.resultShown?.();
   }
 
-  private restarted(who: 'results' | 'views' | 'simulation', info: RestartInfo<SolveRequest>): void {
+  /** The kind of question the inputs on screen ask. */
+  private kind(): QuestionKind {
+    if (this.state.machine === '3axis') return 'three-axis';
+    return this.state.surface === 'curved' && this.state.feedSide !== 'straight' && this.state.crossSide !== 'straight'
+      ? 'curved'
+      : 'classic';
+  }
+
+  private restarted(who: 'results' | 'views' | 'simulation', info: RestartInfo<PageRequest>): void {
     if (who === 'results') {
       if (info.gaveUp) this.fresh.gaveUp(info.request);
       this.draw();

@@ -5,11 +5,12 @@
  */
 
 import type { SurfaceAxis } from '../core/cylinder';
-import { FIELD_LABELS, FIELDS, fieldOfPageKey } from '../core/input/fields';
+import { FIELDS, fieldOfPageKey } from '../core/input/fields';
 import { unitSymbol } from '../core/units';
 import type { PassPattern } from '../core/validate';
 import type { SolveMode } from '../worker/protocol';
 import { html } from './dom';
+import type { Machine, Passes } from './machineState';
 import { dragEarly } from './sliderDrag';
 import { sliderRanges } from './sliders';
 import {
@@ -27,6 +28,19 @@ import {
   type ToolSize,
   type Unit,
 } from './state';
+import {
+  CURVED_PRESETS,
+  type CurvedPreset,
+  curvedPresetOf,
+  PRESET_LABELS,
+  RADIUS_SIDES,
+  type RadiusKey,
+  type RadiusSide,
+  sideOf,
+  WATERLINE_PRESETS,
+  type WaterlinePreset,
+  waterlinePresetOf,
+} from './surfaceState';
 
 export interface FieldEvents {
   /**
@@ -47,6 +61,13 @@ export interface FieldEvents {
   readonly onSurfaceAxis: (axis: SurfaceAxis) => void;
   /** A preset was chosen: R and Rcr in mm. */
   readonly onPreset: (preset: { readonly R: number; readonly Rcr: number }) => void;
+  /** Five-axis or three-axis machining; three-axis raster or waterline passes. */
+  readonly onMachine: (machine: Machine) => void;
+  readonly onPasses: (passes: Passes) => void;
+  /** A doubly curved point's radius turned convex, concave or straight. */
+  readonly onSide: (key: RadiusKey, side: RadiusSide) => void;
+  /** A surface preset (dome, bowl, saddle...) was chosen. */
+  readonly onSurfacePreset: (preset: CurvedPreset | WaterlinePreset) => void;
 }
 
 const HINTS: Readonly<Record<FieldKey, string>> = {
@@ -58,14 +79,36 @@ const HINTS: Readonly<Record<FieldKey, string>> = {
   L: 'distance between adjacent cutter-contact paths',
   ra: 'target roughness across the feed; the scallop height follows',
   Rs: "the cylinder's radius, a positive number (convex or concave is chosen above)",
+  slope: "the surface's slope from the horizontal at the contact (0 a flat floor)",
+  psi: 'passes in plan from the fall line: 0 up and down the slope, 90 along the contour',
+  Rf: 'principal radius along the feed, a positive number; its side is chosen beside it',
+  Rc: 'principal radius across the feed, a positive number; its side is chosen beside it',
+  Lxy: 'horizontal distance between adjacent raster passes, as the CAM system programs it',
+  dz: 'vertical distance between adjacent levels (tool tips), as the CAM system programs it',
 };
+
+/** The order of the form: the slope and raster angle sit where the lead and tilt do. */
+const FORM_ORDER: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'tilt', 'slope', 'psi', 'h', 'ra', 'L', 'Lxy', 'dz'];
+
+/** The fields shown with the surface's switches. */
+const SURFACE_KEYS: readonly FieldKey[] = ['Rs', 'Rf', 'Rc'];
 
 /** The tool size field's label and hint in diameter mode. */
 const DIAMETER_LABEL = FIELDS.D.label;
 const DIAMETER_HINT = 'as catalogues give it; D = 2R';
 
 /** The test ids' names of fields whose key differs (the surface radius: input-surface-radius). */
-const TEST_NAME: Partial<Readonly<Record<FieldKey, string>>> = { Rs: 'surface-radius' };
+const TEST_NAME: Partial<Readonly<Record<FieldKey, string>>> = {
+  Rs: 'surface-radius',
+  Rf: 'feed-radius',
+  Rc: 'cross-radius',
+  psi: 'raster-angle',
+  Lxy: 'horizontal-step',
+  dz: 'step-down',
+};
+
+/** The sides' names in a radius's side box. */
+const SIDE_LABEL: Readonly<Record<RadiusSide, string>> = { convex: 'convex', concave: 'concave', straight: 'straight' };
 
 interface FieldView {
   readonly row: HTMLElement;
@@ -86,6 +129,10 @@ function must<T extends Element>(root: ParentNode, selector: string): T {
 export class FieldsPanel {
   private readonly fields = new Map<FieldKey, FieldView>();
   private readonly preset: HTMLSelectElement;
+  private readonly surfacePreset: HTMLSelectElement;
+  /** The presets the surface box lists now (five-axis or waterline). */
+  private presetsShown: readonly string[] = [];
+  private readonly sides = new Map<RadiusKey, HTMLSelectElement>();
 
   constructor(
     private readonly root: HTMLElement,
@@ -94,14 +141,26 @@ export class FieldsPanel {
     const container = must<HTMLElement>(root, '.fields');
     // The surface radius sits with the surface's switches.
     const surfaceFields = root.querySelector<HTMLElement>('.surface-fields') ?? container;
-    for (const key of FIELD_KEYS)
-      this.fields.set(key, this.buildField(key === 'Rs' ? surfaceFields : container, key, events));
+    const order = [...FORM_ORDER, ...FIELD_KEYS.filter((k) => !FORM_ORDER.includes(k))];
+    for (const key of order)
+      this.fields.set(key, this.buildField(SURFACE_KEYS.includes(key) ? surfaceFields : container, key, events));
+    for (const key of ['Rf', 'Rc'] as const) this.sides.set(key, this.buildSide(key, events));
+    this.wireSwitch('machine', (v) => events.onMachine(v === '3axis' ? '3axis' : '5axis'));
+    this.wireSwitch('passes', (v) => events.onPasses(v === 'waterline' ? 'waterline' : 'raster'));
+    this.surfacePreset = must<HTMLSelectElement>(root, '[data-testid="surface-preset"]');
+    this.surfacePreset.addEventListener('change', () => {
+      const v = this.surfacePreset.value;
+      const preset = [...CURVED_PRESETS, ...WATERLINE_PRESETS].find((p) => p === v);
+      if (preset) events.onSurfacePreset(preset);
+    });
     this.wireSwitch('mode', (v) => events.onMode(v === 'inverse' ? 'inverse' : 'forward'));
     this.wireSwitch('unit', (v) => events.onUnit(v === 'in' ? 'in' : 'mm'));
     this.wireSwitch('pattern', (v) => events.onPattern(v === 'zigzag' ? 'zigzag' : 'one-way'));
     this.wireSwitch('target', (v) => events.onTarget(v === 'ra' ? 'ra' : 'h'));
     this.wireSwitch('size', (v) => events.onSize(v === 'D' ? 'D' : 'R'));
-    this.wireSwitch('surface', (v) => events.onSurface(v === 'convex' || v === 'concave' ? v : 'plane'));
+    this.wireSwitch('surface', (v) =>
+      events.onSurface(v === 'convex' || v === 'concave' || v === 'curved' ? v : 'plane'),
+    );
     this.wireSwitch('surfaceAxis', (v) => events.onSurfaceAxis(v === 'cross' ? 'cross' : 'feed'));
     const select = must<HTMLSelectElement>(root, '[data-testid="preset"]');
     this.preset = select;
@@ -116,7 +175,7 @@ export class FieldsPanel {
 
   private buildField(container: HTMLElement, key: FieldKey, events: FieldEvents): FieldView {
     const id = `field-${key}`;
-    const label = FIELD_LABELS[fieldOfPageKey(key)];
+    const label = FIELDS[fieldOfPageKey(key)].label;
     const testName = TEST_NAME[key] ?? key;
     const row = html('div', { class: 'field', 'data-field': key });
     const slider = html('input', {
@@ -153,6 +212,23 @@ export class FieldsPanel {
     return { row, label: labelElement, hint, slider, input, unitLabel, error };
   }
 
+  /** A radius's side box (convex, concave, straight), in its field's line. */
+  private buildSide(key: RadiusKey, events: FieldEvents): HTMLSelectElement {
+    const view = this.fields.get(key);
+    const label = FIELDS[fieldOfPageKey(key)].label;
+    const select = html('select', {
+      'data-testid': `side-${TEST_NAME[key] ?? key}`,
+      'aria-label': `${label}: convex, concave or straight`,
+    });
+    for (const side of RADIUS_SIDES) select.append(html('option', { value: side }, SIDE_LABEL[side]));
+    select.addEventListener('change', () => {
+      const side = RADIUS_SIDES.find((s) => s === select.value);
+      if (side) events.onSide(key, side);
+    });
+    view?.unitLabel.after(select);
+    return select;
+  }
+
   private wireSwitch(name: string, on: (value: string) => void): void {
     for (const radio of this.root.querySelectorAll<HTMLInputElement>(`input[name="${name}"]`)) {
       radio.addEventListener('change', () => {
@@ -165,14 +241,40 @@ export class FieldsPanel {
   render(state: CalculatorState, messages: ReadonlyMap<FieldKey, string>): void {
     const ranges = sliderRanges(state);
     const forward = state.mode === 'forward';
+    const five = state.machine === '5axis';
     const plane = state.surface === 'plane';
+    const cylinder = five && (state.surface === 'convex' || state.surface === 'concave');
+    const radii = five ? state.surface === 'curved' : state.passes === 'waterline';
+    const given: FieldKey = forward ? state.target : five ? 'L' : state.passes === 'waterline' ? 'dz' : 'Lxy';
+    const shown: Readonly<Record<FieldKey, boolean>> = {
+      R: true,
+      Rcr: true,
+      rho: five,
+      tilt: five,
+      slope: !five,
+      psi: !five && state.passes === 'raster',
+      h: given === 'h',
+      ra: given === 'ra',
+      L: given === 'L',
+      Lxy: given === 'Lxy',
+      dz: given === 'dz',
+      Rs: cylinder,
+      Rf: radii,
+      Rc: radii,
+    };
     for (const [key, view] of this.fields) {
-      const given = forward ? state.target : 'L';
-      view.row.hidden = ((key === 'h' || key === 'ra' || key === 'L') && key !== given) || (key === 'Rs' && plane);
+      view.row.hidden = !shown[key];
+      if (key === 'Rf' || key === 'Rc') {
+        const side = sideOf(state, key);
+        const box = this.sides.get(key);
+        if (box && box.value !== side) box.value = side;
+        view.input.disabled = side === 'straight';
+        view.slider.disabled = side === 'straight';
+      }
       view.unitLabel.textContent = isLengthField(key) ? unitSymbol(state.unit) : 'deg';
       if (key === 'R') {
         const diameter = sizeIsDiameter(state);
-        view.label.textContent = diameter ? DIAMETER_LABEL : FIELD_LABELS.R;
+        view.label.textContent = diameter ? DIAMETER_LABEL : FIELDS.R.label;
         view.hint.textContent = diameter ? DIAMETER_HINT : HINTS.R;
         view.slider.setAttribute('aria-label', `${view.label.textContent} slider`);
       }
@@ -196,18 +298,56 @@ export class FieldsPanel {
       size: state.size ?? 'R',
       surface: state.surface,
       surfaceAxis: state.surfaceAxis,
+      machine: state.machine,
+      passes: state.passes,
     };
+    this.renderSurfaceSwitches(state, five, radii);
     // The preset box names the preset the tool fields hold, or "custom" once edited away from it.
     const preset = presetOf(state);
     const chosen = preset === null ? 'custom' : String(PRESETS.indexOf(preset));
     if (this.preset.value !== chosen) this.preset.value = chosen;
     // A plane has no radius and no axis: both are hidden (their values kept for the next cylinder).
     const axisSwitch = this.root.querySelector<HTMLElement>('[data-testid="surface-axis"]');
-    if (axisSwitch) axisSwitch.hidden = plane;
+    if (axisSwitch) axisSwitch.hidden = plane || !cylinder;
     const targetSwitch = this.root.querySelector<HTMLElement>('[data-testid="target-switch"]');
     if (targetSwitch) targetSwitch.hidden = !forward;
     for (const [name, value] of Object.entries(checked))
       for (const radio of this.root.querySelectorAll<HTMLInputElement>(`input[name="${name}"]`))
         radio.checked = radio.value === value;
+  }
+
+  /**
+   * The surface's switches by machine: five-axis the surface kind (plane, cylinders, doubly curved
+   * point) and its presets; three-axis raster passes a sloped plane (said in words), waterline the
+   * surface of revolution's presets and radii; the pass strategy switch only for three-axis.
+   */
+  private renderSurfaceSwitches(state: CalculatorState, five: boolean, radii: boolean): void {
+    const toggle = (selector: string, hidden: boolean) => {
+      const e = this.root.querySelector<HTMLElement>(selector);
+      if (e) e.hidden = hidden;
+    };
+    toggle('[data-testid="surface-kind"]', !five);
+    toggle('[data-testid="passes-switch"]', five);
+    toggle('[data-testid="pattern-switch"]', !five);
+    toggle('.surface-preset', !radii);
+    const note = this.root.querySelector<HTMLElement>('[data-testid="surface-note"]');
+    if (note) {
+      const text =
+        five || state.passes === 'waterline'
+          ? ''
+          : "Raster passes on a sloped plane: the slope and the raster angle set the tool's lead and tilt at the contact.";
+      if (note.textContent !== text) note.textContent = text;
+      note.hidden = text === '';
+    }
+    if (!radii) return;
+    const presets: readonly string[] = five ? CURVED_PRESETS : WATERLINE_PRESETS;
+    if (this.presetsShown !== presets) {
+      this.presetsShown = presets;
+      this.surfacePreset.replaceChildren(html('option', { value: 'custom' }, 'custom radii'));
+      for (const p of presets)
+        this.surfacePreset.append(html('option', { value: p }, PRESET_LABELS[p as CurvedPreset | WaterlinePreset]));
+    }
+    const chosen = (five ? curvedPresetOf(state) : waterlinePresetOf(state)) ?? 'custom';
+    if (this.surfacePreset.value !== chosen) this.surfacePreset.value = chosen;
   }
 }

@@ -5,7 +5,7 @@
  *  - current: the reply to the inputs on screen: its numbers;
  *  - pending: not answered yet: the last reply, if any, marked stale (never as if current);
  *  - failed: the worker gave up: as pending, and the page says so.
- * A reply counts only if its request equals the one wanted (sameRequest), so a late or repeated
+ * A reply counts only if its request equals the one wanted (samePageRequest), so a late or repeated
  * reply to an earlier input can never come back on screen.
  *
  * FreshJob adds when to ask: whenever what is shown is pending, the wanted request is asked of the
@@ -14,7 +14,7 @@
  * (client.ts), so a reply dropped here (another input was on screen when it came) can never leave
  * the page waiting for a request nobody sends again (issue 17).
  */
-import { type SolveRequest, sameRequest } from '../worker/protocol';
+import { type PageRequest, samePageRequest } from '../worker/pageProtocol';
 
 export type Shown<Rep> =
   | { readonly kind: 'invalid'; readonly last: Rep | null }
@@ -22,21 +22,21 @@ export type Shown<Rep> =
   | { readonly kind: 'pending'; readonly last: Rep | null }
   | { readonly kind: 'failed'; readonly last: Rep | null };
 
-export class Freshness<Rep extends { readonly request: SolveRequest }> {
-  private wanted: SolveRequest | null = null;
+export class Freshness<Rep extends { readonly request: Req }, Req extends PageRequest = Rep['request']> {
+  private wanted: Req | null = null;
   private last: Rep | null = null;
   private failed = false;
 
   /** The inputs changed: the request they ask, or null when they are invalid. */
-  want(request: SolveRequest | null): Shown<Rep> {
-    if (!sameRequest(request, this.wanted)) this.failed = false;
+  want(request: Req | null): Shown<Rep> {
+    if (!samePageRequest(request, this.wanted)) this.failed = false;
     this.wanted = request;
     return this.shown;
   }
 
   /** A reply arrived; true when it answers the inputs on screen (and is now shown). */
   receive(reply: Rep): boolean {
-    if (!sameRequest(reply.request, this.wanted)) return false;
+    if (!samePageRequest(reply.request, this.wanted)) return false;
     this.last = reply;
     this.failed = false;
     return true;
@@ -48,25 +48,26 @@ export class Freshness<Rep extends { readonly request: SolveRequest }> {
   }
 
   /** The request the inputs ask (null when invalid). */
-  get request(): SolveRequest | null {
+  get request(): Req | null {
     return this.wanted;
   }
 
   get shown(): Shown<Rep> {
     if (this.wanted === null) return { kind: 'invalid', last: this.last };
-    if (this.last !== null && sameRequest(this.last.request, this.wanted)) return { kind: 'current', reply: this.last };
+    if (this.last !== null && samePageRequest(this.last.request, this.wanted))
+      return { kind: 'current', reply: this.last };
     return { kind: this.failed ? 'failed' : 'pending', last: this.last };
   }
 }
 
 /** How a FreshJob asks its job's client, and when. */
-export interface FreshJobOptions {
+export interface FreshJobOptions<Req extends PageRequest = PageRequest> {
   /**
    * Sends the wanted request to the job's client (JobClient.request, which does not send twice a
    * request whose reply is still to come). Called again after every event while nothing answers
    * the inputs on screen.
    */
-  readonly ask: (request: SolveRequest) => void;
+  readonly ask: (request: Req) => void;
   /**
    * The wait after the wanted request changes before it is asked, in ms (0, the default: at once).
    * The teaching views wait for a slider being dragged to rest.
@@ -82,19 +83,19 @@ export interface FreshJobOptions {
  * wanted request has been asked of the client (or its settle wait runs), so its reply comes or the
  * client restarts, or gives up and `shown` turns to failed. Pure apart from the settle timer.
  */
-export class FreshJob<Rep extends { readonly request: SolveRequest }> {
-  private readonly fresh = new Freshness<Rep>();
+export class FreshJob<Rep extends { readonly request: Req }, Req extends PageRequest = Rep['request']> {
+  private readonly fresh = new Freshness<Rep, Req>();
   private open: boolean;
   private timer: ReturnType<typeof setTimeout> | null = null;
 
-  constructor(private readonly options: FreshJobOptions) {
+  constructor(private readonly options: FreshJobOptions<Req>) {
     this.open = options.open ?? true;
   }
 
   /** The inputs changed: the request they ask (null when invalid); asks it unless it is shown. */
-  want(request: SolveRequest | null): Shown<Rep> {
+  want(request: Req | null): Shown<Rep> {
     const before = this.fresh.request;
-    const changed = request === null ? before !== null : !sameRequest(request, before);
+    const changed = request === null ? before !== null : !samePageRequest(request, before);
     this.fresh.want(request);
     const settleMs = this.options.settleMs ?? 0;
     if (changed && settleMs > 0) {
@@ -121,8 +122,8 @@ export class FreshJob<Rep extends { readonly request: SolveRequest }> {
    * The client gave up on `request` (RestartInfo.request): shown as failed if that is the wanted
    * request (until the inputs change); otherwise the wanted one is asked afresh.
    */
-  gaveUp(request: SolveRequest | null): void {
-    if (sameRequest(request, this.fresh.request)) this.fresh.fail();
+  gaveUp(request: Req | null): void {
+    if (samePageRequest(request, this.fresh.request)) this.fresh.fail();
     this.sync();
   }
 
@@ -143,7 +144,7 @@ export class FreshJob<Rep extends { readonly request: SolveRequest }> {
   }
 
   /** The request the inputs ask (null when invalid). */
-  get request(): SolveRequest | null {
+  get request(): Req | null {
     return this.fresh.request;
   }
 

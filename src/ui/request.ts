@@ -8,15 +8,53 @@ import { type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
 import { validateRaTarget } from '../core/raTarget';
 import { describeInputError, type InputError, inputError, validateForward, validateInverse } from '../core/validate';
-import type { SolveRequest } from '../worker/protocol';
+import type { PageRequest } from '../worker/pageProtocol';
+import { buildCurvedRequest, cylinderState, renameRadius } from './curvedRequest';
 import { type CalculatorState, type FieldKey, fieldInMm, parseField, sizeIsDiameter } from './state';
+import type { RadiusKey } from './surfaceState';
+import { buildThreeAxisRequest } from './threeAxisRequest';
+
+/** A message the page words itself (a doubly curved point's, three-axis machining's), on its field. */
+export interface PageFieldError {
+  readonly key: FieldKey;
+  readonly message: string;
+}
 
 export type BuiltRequest =
-  | { readonly ok: true; readonly request: SolveRequest }
-  | { readonly ok: false; readonly errors: readonly InputError[] };
+  | { readonly ok: true; readonly request: PageRequest }
+  | { readonly ok: false; readonly errors: readonly (InputError | PageFieldError)[] };
 
-/** The request the state asks, or why it cannot be asked. */
+/**
+ * The request the state asks, or why it cannot be asked: three-axis machining's, a doubly curved
+ * point's (with a straight radius, the cylinder's or the plane's), or the plane's or cylinder's.
+ */
 export function buildRequest(state: CalculatorState): BuiltRequest {
+  if (state.machine === '3axis') return buildThreeAxisRequest(state);
+  if (state.surface === 'curved') {
+    const curved = buildCurvedRequest(state);
+    if (curved !== null) return curved;
+    const { state: cylinder, radius } = cylinderState(state);
+    const built = buildClassic(cylinder);
+    return built.ok || radius === null ? built : { ok: false, errors: onRadius(cylinder, built.errors, radius) };
+  }
+  return buildClassic(state);
+}
+
+/** A cylinder's errors on the curved radius it came from (the cylinder's radius field is not shown). */
+function onRadius(
+  state: CalculatorState,
+  errors: readonly (InputError | PageFieldError)[],
+  key: RadiusKey,
+): Array<InputError | PageFieldError> {
+  const messages = fieldMessages(state, errors);
+  return errors.map((e) => {
+    if ('key' in e || e.field !== 'surfaceRadius') return e;
+    return { key, message: renameRadius(messages.get('Rs') ?? e.message, key) };
+  });
+}
+
+/** The plane's or the cylinder's request (five-axis). */
+function buildClassic(state: CalculatorState): BuiltRequest {
   const built = validated(state);
   const own = [surfaceError(state), slowTarget(state)].filter((e): e is InputError => e !== null);
   if (own.length === 0) return built;
@@ -92,9 +130,16 @@ export function fieldOfError(field: FieldName): FieldKey | null {
 }
 
 /** Each field's message, in the user's unit, quoting the text as typed. */
-export function fieldMessages(state: CalculatorState, errors: readonly InputError[]): Map<FieldKey, string> {
+export function fieldMessages(
+  state: CalculatorState,
+  errors: readonly (InputError | PageFieldError)[],
+): Map<FieldKey, string> {
   const out = new Map<FieldKey, string>();
   for (const e of errors) {
+    if ('key' in e) {
+      if (!out.has(e.key)) out.set(e.key, e.message);
+      continue;
+    }
     const key = fieldOfError(e.field);
     if (key === null || out.has(key)) continue;
     out.set(

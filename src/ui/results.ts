@@ -1,77 +1,31 @@
-/**
- * The results: the headline (step-over L, or the scallop height when solving for it), the flank
- * widths, the contact offset and the cusp heights, and the table of every procedure with its
- * notes. It draws exactly what `Shown` says: a reply to the inputs on screen; the last one marked
- * stale while a newer one is awaited or the solver gave up; or dashes for invalid inputs.
- */
-import type { Surface } from '../core/cylinder';
-import {
-  APPROXIMATION_KEYS,
-  CURVATURE_ROWS,
-  type CurvatureRowKey,
-  PROCEDURE_KEYS,
-  PROCEDURES,
-  type ProcedureKey,
-} from '../core/procedures';
+import { APPROXIMATION_KEYS, CURVATURE_ROWS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../core/procedures';
 import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/units';
-import type { CurvatureRow, ProcedureNote, ProcedureRow, SolveMode, SolveReply } from '../worker/protocol';
+import { type CurvedReply, isSolveReply, type PageReply, type ThreeAxisReply } from '../worker/pageProtocol';
+import type { CurvatureRow, ProcedureRow, SolveMode, SolveReply } from '../worker/protocol';
 import { setCopyValue } from './copy';
 import { html } from './dom';
 import { formatLen, formatLenUnit, formatSignedLen, formatSignedLenUnit } from './format';
 import type { Shown } from './freshness';
+import { curvedMeaning, OtherResults } from './resultsOther';
+import { curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
+
+export { curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
 
 type OkReply = Extract<SolveReply, { ok: true }>;
+
+/** Which kind of question the inputs on screen (or a reply) are: a plane's or cylinder's, a doubly curved point's, three-axis. */
+export type QuestionKind = 'classic' | 'curved' | 'three-axis';
+
+/** The kind of a reply's question. */
+function kindOf(reply: PageReply): QuestionKind {
+  if (isSolveReply(reply)) return 'classic';
+  return reply.request.mode === 'three-axis' ? 'three-axis' : 'curved';
+}
 
 function must<T extends Element>(root: ParentNode, selector: string): T {
   const found = root.querySelector<T>(selector);
   if (!found) throw new Error(`missing element ${selector}`);
   return found;
-}
-
-/** A procedure's note in words, lengths in the user's unit. */
-export function noteText(key: ProcedureKey, note: ProcedureNote, unit: LengthUnit): string {
-  const label = PROCEDURES[key].shortLabel;
-  const u = unitSymbol(unit);
-  switch (note.kind) {
-    case 'reason':
-      return note.text;
-    case 'beyond-model': {
-      const what = note.quantity === 'h' ? 'h' : 'L/2';
-      const limit =
-        note.shape === 'circle' ? 'Reff' : note.quantity === 'h' ? 'its height Rlong sin(rho)' : 'its half-width Rlong';
-      const where = note.quantity === 'h' ? 'above the widest point of' : 'wider than';
-      return `${label}: ${what} = ${formatLen(note.valueMm, unit, 'height')} ${u} is ${where} its ${note.shape} (${limit} = ${formatLen(note.limitMm, unit)} ${u}).`;
-    }
-    case 'wall':
-      return `${label}: its step-over L = ${formatLen(note.intervalMm, unit)} ${u} is not below the widest step-over that leaves a scallop (${formatLen(note.maxIntervalMm, unit)} ${u}): passes this far apart leave a wall.`;
-  }
-}
-
-/** A comparison row's note in words (the plane's answer, or a procedure corrected for the curvature). */
-export function curvatureNoteText(key: CurvatureRowKey, note: ProcedureNote, unit: LengthUnit): string {
-  const label = CURVATURE_ROWS[key].shortLabel;
-  const u = unitSymbol(unit);
-  switch (note.kind) {
-    case 'reason':
-      return note.text;
-    case 'beyond-model': {
-      const what = note.quantity === 'h' ? 'h' : 'L/2';
-      const where = note.quantity === 'h' ? 'above the widest point of' : 'wider than';
-      return `${label}: ${what} = ${formatLen(note.valueMm, unit, 'height')} ${u} is ${where} its combined circle (rho = ${formatLen(note.limitMm, unit)} ${u}).`;
-    }
-    case 'wall':
-      return `${label}: its step-over L = ${formatLen(note.intervalMm, unit)} ${u} is not below the widest step-over that leaves a scallop on this cylinder (${formatLen(note.maxIntervalMm, unit)} ${u}): passes this far apart leave a wall.`;
-  }
-}
-
-/** What L and the heights mean on the surface of a request, in words (empty on a plane). */
-export function surfaceMeaning(surface: Surface, unit: LengthUnit): string {
-  if (surface.kind === 'plane') return '';
-  const side = surface.radiusMm > 0 ? 'convex' : 'concave';
-  const r = formatLenUnit(Math.abs(surface.radiusMm), unit);
-  return surface.axis === 'feed'
-    ? `On this ${side} cylinder (radius ${r}, axis along the feed: the passes run along it), L and the flank widths are arc lengths on the surface between the CC paths, and every height is measured radially, from the cylinder.`
-    : `On this ${side} cylinder (radius ${r}, axis across the feed: the passes go around it and step along its axis), L and the flank widths are measured along the axis, and every height radially, from the cylinder.`;
 }
 
 export class ResultsPanel {
@@ -84,7 +38,10 @@ export class ResultsPanel {
   private readonly cuspRow: HTMLElement;
   private readonly status: HTMLElement;
   /** What the table shows now (so an unchanged reply is not drawn again). */
-  private drawn: { reply: OkReply | null; unit: LengthUnit; mode: SolveMode; leadOnly: boolean } | null = null;
+  private drawn: { reply: PageReply | null; unit: LengthUnit; mode: SolveMode; leadOnly: boolean } | null = null;
+  private readonly other: OtherResults;
+  private readonly classicDetails: HTMLElement;
+  private readonly classicOnly: readonly HTMLElement[];
 
   constructor(private readonly root: HTMLElement) {
     this.section = must(root, '.results');
@@ -95,6 +52,9 @@ export class ResultsPanel {
     this.notes = must(root, '[data-testid="table-notes"]');
     this.cuspRow = must(root, '[data-role="cusps"]');
     this.status = must(root, '[data-testid="results-status"]');
+    this.other = new OtherResults(root);
+    this.classicDetails = must(root, '.results .details[data-role="classic"]');
+    this.classicOnly = [...root.querySelectorAll<HTMLElement>('[data-role="not-three-axis"]')];
   }
 
   private set(testId: string, text: string): void {
@@ -106,9 +66,22 @@ export class ResultsPanel {
    * Draws what is shown. `mode` and `tiltDeg` are the inputs on screen (they label the headline
    * and the table while no reply answers them).
    */
-  render(shown: Shown<SolveReply>, unit: LengthUnit, mode: SolveMode, tiltDeg: number | null, typing = false): void {
-    const reply = shown.kind === 'current' ? shown.reply : shown.kind === 'invalid' ? null : shown.last;
-    const ok = reply?.ok ? reply : null;
+  render(
+    shown: Shown<PageReply>,
+    unit: LengthUnit,
+    mode: SolveMode,
+    tiltDeg: number | null,
+    typing = false,
+    inputs: { readonly kind: QuestionKind; readonly passes: 'raster' | 'waterline' } = {
+      kind: 'classic',
+      passes: 'raster',
+    },
+  ): void {
+    const any = shown.kind === 'current' ? shown.reply : shown.kind === 'invalid' ? null : shown.last;
+    // A stale reply is drawn as its own kind (marked stale); with none, the inputs' kind.
+    const kind = any?.ok ? kindOf(any) : inputs.kind;
+    const reply = any !== null && kindOf(any) === kind ? any : null;
+    const ok = reply?.ok && isSolveReply(reply) ? reply : null;
     // A stale reply keeps its own mode (marked stale); nothing at all follows the inputs' mode.
     const drawMode: SolveMode = ok ? (ok.request.mode === 'inverse' ? 'inverse' : 'forward') : mode;
     const stale = shown.kind !== 'current';
@@ -124,6 +97,32 @@ export class ResultsPanel {
             : 'No answer: the solver gave up.'
           : '';
     this.status.hidden = this.status.textContent === '';
+    this.other.showThreeAxis(kind === 'three-axis');
+    this.classicDetails.hidden = kind === 'three-axis';
+    for (const e of this.classicOnly) e.hidden = kind === 'three-axis';
+    if (kind === 'three-axis') {
+      const t =
+        reply?.ok && reply.request.mode === 'three-axis' ? (reply as Extract<ThreeAxisReply, { ok: true }>) : null;
+      const headline = { label: this.headlineLabel, value: this.headline };
+      this.other.threeAxis(headline, t, inputs.passes, mode, unit, shown.kind === 'current');
+      this.set(
+        'no-scallop',
+        t?.answer.noScallop && shown.kind === 'current'
+          ? 'No scallop: a flat end on a flat floor lies flat, so L = 2R for any h.'
+          : '',
+      );
+      must<HTMLElement>(this.root, '[data-testid="no-scallop"]').hidden = !(
+        t?.answer.noScallop && shown.kind === 'current'
+      );
+      this.set('result-percent-diameter', '');
+      this.setMeaning('');
+      this.table(t, unit, drawMode, false);
+      return;
+    }
+    if (kind === 'curved') {
+      this.curved(reply?.ok ? (reply as Extract<CurvedReply, { ok: true }>) : null, shown, unit, mode);
+      return;
+    }
     const forward = drawMode === 'forward';
     this.headlineLabel.textContent = forward ? 'Step-over L' : 'Scallop height h';
     this.headline.dataset.testid = forward ? 'result-exact-interval' : 'result-exact-height';
@@ -170,19 +169,98 @@ export class ResultsPanel {
         : `L = ${formatPercent((100 * e.intervalMm) / (2 * R), 1).replace(/^\+/, '')} % of the tool diameter`,
     );
     const leadOnly = (ok ? ok.request.input.tiltAngleDeg : (tiltDeg ?? 0)) !== 0;
-    const meaning = this.root.querySelector<HTMLElement>('[data-testid="surface-meaning"]');
-    if (meaning) {
-      const text = ok ? surfaceMeaning(ok.request.input.surface, unit) : '';
-      if (meaning.textContent !== text) meaning.textContent = text;
-      meaning.hidden = text === '';
-    }
+    this.setMeaning(ok ? surfaceMeaning(ok.request.input.surface, unit) : '');
     this.table(ok, unit, drawMode, leadOnly);
   }
 
-  private table(reply: OkReply | null, unit: LengthUnit, mode: SolveMode, leadOnly: boolean): void {
+  private setMeaning(text: string): void {
+    const meaning = this.root.querySelector<HTMLElement>('[data-testid="surface-meaning"]');
+    if (!meaning) return;
+    if (meaning.textContent !== text) meaning.textContent = text;
+    meaning.hidden = text === '';
+  }
+
+  /** A doubly curved point's answer: the headline, the details (reaches, offset, cusps) and the comparison rows. */
+  private curved(
+    reply: Extract<CurvedReply, { ok: true }> | null,
+    shown: Shown<PageReply>,
+    unit: LengthUnit,
+    mode: SolveMode,
+  ): void {
+    const e = reply?.exact ?? null;
+    const forward =
+      (reply === null ? mode : reply.request.mode === 'curved-forward' ? 'forward' : 'inverse') === 'forward';
+    this.headlineLabel.textContent = forward ? 'Step-over L' : 'Scallop height h';
+    this.headline.dataset.testid = forward ? 'result-exact-interval' : 'result-exact-height';
+    const value = (mm: number | null | undefined, resolution: 'length' | 'height' = 'length') =>
+      e === null ? NO_VALUE : formatLenUnit(mm ?? null, unit, resolution);
+    this.headline.textContent = forward ? value(e?.intervalMm) : value(e?.cuspHeightMm, 'height');
+    const current = shown.kind === 'current' && e !== null;
+    setCopyValue(
+      this.headline,
+      current ? formatLen(forward ? e.intervalMm : e.cuspHeightMm, unit, forward ? 'length' : 'height') : null,
+      unit,
+    );
+    this.set('result-exact-half', e === null ? NO_VALUE : formatLen(e.intervalMm / 2, unit));
+    const half = this.root.querySelector('[data-testid="result-exact-half"]');
+    if (half) setCopyValue(half, current ? formatLen(e.intervalMm / 2, unit) : null, unit);
+    this.set('result-width-right', value(e?.halfWidthRightMm));
+    this.set('result-width-left', value(e?.halfWidthLeftMm));
+    this.set('result-contact-offset', e === null ? NO_VALUE : formatSignedLenUnit(e.contactOffsetMm, unit));
+    this.set('result-centre-offset', e === null ? NO_VALUE : formatSignedLenUnit(-e.contactOffsetMm, unit));
+    const centre = this.root.querySelector('[data-testid="result-centre-offset"]');
+    if (centre) setCopyValue(centre, current ? formatLen(-e.contactOffsetMm, unit) : null, unit);
+    this.set('no-scallop', '');
+    must<HTMLElement>(this.root, '[data-testid="no-scallop"]').hidden = true;
+    const zigzag = e?.pattern === 'zigzag';
+    this.cuspRow.hidden = !zigzag;
+    this.set('result-cusp-height', zigzag ? value(e?.cuspHeightMm, 'height') : NO_VALUE);
+    this.set('result-other-cusp-height', zigzag ? value(e?.otherCuspHeightMm, 'height') : NO_VALUE);
+    const R = reply?.request.input.toolRadiusMm;
+    this.set(
+      'result-percent-diameter',
+      e === null || R === undefined
+        ? ''
+        : `L = ${formatPercent((100 * e.intervalMm) / (2 * R), 1).replace(/^\+/, '')} % of the tool diameter`,
+    );
+    this.setMeaning(reply === null ? '' : curvedMeaning(reply, unit));
+    this.table(reply, unit, forward ? 'forward' : 'inverse', false);
+  }
+
+  private table(reply: PageReply | null, unit: LengthUnit, mode: SolveMode, leadOnly: boolean): void {
     const d = this.drawn;
     if (d && d.reply === reply && d.unit === unit && d.mode === mode && d.leadOnly === leadOnly) return;
     this.drawn = { reply, unit, mode, leadOnly };
+    const tableElement = this.thead.parentElement;
+    if (tableElement) tableElement.hidden = reply !== null && kindOf(reply) === 'three-axis';
+    if (reply !== null && kindOf(reply) === 'three-axis') {
+      this.thead.replaceChildren();
+      this.tbody.replaceChildren();
+      this.setNotes('');
+      return;
+    }
+    if (reply !== null && kindOf(reply) === 'curved') {
+      const c = reply.ok ? (reply as Extract<CurvedReply, { ok: true }>) : null;
+      const notes = this.other.curvedTable(this.thead, this.tbody, c, unit);
+      const inverse = c !== null && c.comparison === null;
+      this.setNotes(
+        [
+          ...notes,
+          inverse
+            ? 'The comparison rows are given for the forward problem (a scallop height to the step-over).'
+            : 'Each row beside the exact answer: the plane (both curvatures ignored), each cylinder (one radius ignored) and the usual correction 1/rho = 1/Reff + 1/Rc of each procedure with an effective radius, with its deviation from exact and the scallop its own L really leaves at this point.',
+        ].join(' '),
+      );
+      return;
+    }
+    this.classicTable(reply?.ok && isSolveReply(reply) ? reply : null, unit, mode, leadOnly);
+  }
+
+  private setNotes(text: string): void {
+    if (this.notes.textContent !== text) this.notes.textContent = text;
+  }
+
+  private classicTable(reply: OkReply | null, unit: LengthUnit, mode: SolveMode, leadOnly: boolean): void {
     const u = unitSymbol(unit);
     const forward = mode === 'forward';
     const head = forward

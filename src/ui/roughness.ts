@@ -5,7 +5,7 @@
  * or while no reply answers the inputs on screen; never a number for other inputs).
  */
 import { formatPercent, type LengthUnit, NO_VALUE } from '../core/units';
-import type { SolveReply } from '../worker/protocol';
+import { isSolveReply, type PageReply } from '../worker/pageProtocol';
 import { html } from './dom';
 import { formatLenUnit } from './format';
 import type { Shown } from './freshness';
@@ -44,9 +44,10 @@ export class RoughnessPanel {
     if (e && e.textContent !== text) e.textContent = text;
   }
 
-  render(shown: Shown<SolveReply>, unit: LengthUnit): void {
+  render(shown: Shown<PageReply>, unit: LengthUnit): void {
     // Only a reply to the inputs on screen: a stale one would show numbers for other inputs.
-    const reply = shown.kind === 'current' && shown.reply.ok ? shown.reply : null;
+    // (A doubly curved point's and three-axis roughness are not computed yet: dashes.)
+    const reply = shown.kind === 'current' && shown.reply.ok && isSolveReply(shown.reply) ? shown.reply : null;
     const r = reply?.roughness ?? null;
     const len = (mm: number | undefined) =>
       r === null || mm === undefined ? NO_VALUE : formatLenUnit(mm, unit, 'fine');

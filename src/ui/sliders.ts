@@ -27,8 +27,38 @@ export interface SliderRange {
 
 /** Steps per unit: round numbers of the unit itself. */
 const STEPS: Readonly<Record<'mm' | 'in', Readonly<Record<FieldKey, number>>>> = {
-  mm: { R: 0.01, Rcr: 0.01, rho: 0.1, tilt: 0.1, h: 0.001, L: 0.001, ra: 0.0001, Rs: 0.1 },
-  in: { R: 0.001, Rcr: 0.001, rho: 0.1, tilt: 0.1, h: 0.0001, L: 0.0001, ra: 0.00001, Rs: 0.01 },
+  mm: {
+    R: 0.01,
+    Rcr: 0.01,
+    rho: 0.1,
+    tilt: 0.1,
+    h: 0.001,
+    L: 0.001,
+    ra: 0.0001,
+    Rs: 0.1,
+    slope: 0.1,
+    psi: 0.1,
+    Rf: 0.1,
+    Rc: 0.1,
+    Lxy: 0.001,
+    dz: 0.001,
+  },
+  in: {
+    R: 0.001,
+    Rcr: 0.001,
+    rho: 0.1,
+    tilt: 0.1,
+    h: 0.0001,
+    L: 0.0001,
+    ra: 0.00001,
+    Rs: 0.01,
+    slope: 0.1,
+    psi: 0.1,
+    Rf: 0.01,
+    Rc: 0.01,
+    Lxy: 0.0001,
+    dz: 0.0001,
+  },
 };
 
 /** A tool for the ranges: the typed values where they make sense, defaults elsewhere. */
@@ -107,6 +137,15 @@ export function sliderRanges(state: CalculatorState): Readonly<Record<FieldKey, 
           ]
         : [step.ra, 10 * step.ra],
     Rs: [rsMin, Math.max(rsMin + step.Rs, snap(len(RADIUS_SLIDER_MAX_MM), step.Rs, 0))],
+    // Three-axis: the slope below a vertical wall, the raster angle from the fall line to the contour.
+    slope: [0, 89.9],
+    psi: [0, 90],
+    // A doubly curved point's radii (the field takes up to 1e6 mm; gouging is said on the field).
+    Rf: [step.Rf, Math.max(2 * step.Rf, snap(len(RADIUS_SLIDER_MAX_MM), step.Rf, 0))],
+    Rc: [step.Rc, Math.max(2 * step.Rc, snap(len(RADIUS_SLIDER_MAX_MM), step.Rc, 0))],
+    // The programmed steps: up to the tool's diameter (Lxy) or radius (dz); the field says the true limit.
+    Lxy: [step.Lxy * 10, snap(len(2 * tool.toolRadiusMm), step.Lxy, step.Lxy * 10)],
+    dz: [step.dz, snap(len(tool.toolRadiusMm), step.dz, step.dz)],
   };
   // The size field in diameter mode: D runs over twice the radius's range.
   if (sizeIsDiameter(state)) ranges.R = [2 * ranges.R[0], 2 * ranges.R[1]];

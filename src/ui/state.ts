@@ -8,14 +8,19 @@ import {
   FIELDS,
   type FieldId,
   fieldOfPageKey,
-  isLengthField as isLength,
   PAGE_FIELD_KEYS,
   type PageFieldKey,
   urlParamOf,
 } from '../core/input/fields';
-import { formatInputNumber, fromMm, type LengthUnit, toMm } from '../core/units';
+import { type LengthUnit, toMm } from '../core/units';
 import type { PassPattern } from '../core/validate';
 import type { SolveMode } from '../worker/protocol';
+import { choice, convertField, fieldText, formatField, isLengthField, parseField } from './fieldText';
+import { type Machine, type Passes, parseMachine, threeAxisNeeded, threeAxisSearch } from './machineState';
+import { type CurvedFields, parseLinkRadii, RADIUS_PARAM, type RadiusSide, signedRadiusOf } from './surfaceState';
+
+export { choice, convertField, fieldText, formatField, isLengthField, parseField, withDecimalPoint } from './fieldText';
+export { PRESETS, type Preset, presetOf } from './toolPresets';
 
 export type Unit = LengthUnit;
 /** The page's text fields: R (or D), Rcr, rho, tilt, Rs, h, ra, L (the field registry's page keys). */
@@ -24,10 +29,13 @@ export type FieldKey = PageFieldKey;
 export type Target = 'h' | 'ra';
 /** How the tool size field is given: the radius R, or the diameter D = 2R, as catalogues give it. */
 export type ToolSize = 'R' | 'D';
-/** The design surface as the page offers it; a cylinder's radius is the field Rs, a magnitude. */
-export type SurfaceKind = 'plane' | 'convex' | 'concave';
+/**
+ * The design surface as the page offers it: a plane, a cylinder (its radius the field Rs, a
+ * magnitude), or a doubly curved point (`curved`: the fields Rf and Rc, magnitudes, with their sides).
+ */
+export type SurfaceKind = 'plane' | 'convex' | 'concave' | 'curved';
 
-export interface CalculatorState {
+export interface CalculatorState extends CurvedFields {
   readonly unit: Unit;
   readonly mode: SolveMode;
   readonly pattern: PassPattern;
@@ -36,6 +44,13 @@ export interface CalculatorState {
   /** The design surface, and a cylinder's axis (kept while a plane is chosen, for the next cylinder). */
   readonly surface: SurfaceKind;
   readonly surfaceAxis: SurfaceAxis;
+  /** The sides of the doubly curved point's radii (kept while another surface is chosen). */
+  readonly feedSide: RadiusSide;
+  readonly crossSide: RadiusSide;
+  /** Five-axis (lead and tilt given) or three-axis (the tool upright: the slope sets them). */
+  readonly machine: Machine;
+  /** Three-axis passes: raster (parallel, at the raster angle) or waterline (Z-level). */
+  readonly passes: Passes;
   /** Text of each field in the current unit (angles in degrees); `R` holds D when `size` is 'D'. */
   readonly fields: Readonly<Record<FieldKey, string>>;
   /** The tool size field: radius R (default, also when missing) or diameter D. */
@@ -57,15 +72,16 @@ export const DEFAULT_FIELDS_MM: Readonly<Record<FieldKey, string>> = {
   L: '2.9',
   ra: '0.0125',
   Rs: '50',
+  slope: '30',
+  psi: '0',
+  Rf: '80',
+  Rc: '40',
+  Lxy: '2.5',
+  dz: '1',
 };
 
 /** The page's text fields, in the form's order (the field registry's). */
 export const FIELD_KEYS: readonly FieldKey[] = PAGE_FIELD_KEYS;
-
-/** True for the fields that hold a length (converted with the unit); angles are degrees. */
-export function isLengthField(key: FieldKey): boolean {
-  return isLength(fieldOfPageKey(key));
-}
 
 /** The URL query parameter of a registry field. */
 const param = (id: FieldId): string => urlParamOf(id);
@@ -77,31 +93,6 @@ const param = (id: FieldId): string => urlParamOf(id);
 const GIVEN_PARAMS: readonly string[] = Object.values(FIELDS).flatMap((f) =>
   (f.group === 'tool' || f.group === 'quantity' || f.group === 'alias') && f.url !== null ? [f.url] : [],
 );
-
-/** Formats a number for a field: up to 6 significant digits, no float noise, no exponent for usual sizes. */
-export function formatField(value: number): string {
-  return Number.isFinite(value) ? formatInputNumber(value) : '';
-}
-
-const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
-
-/**
- * A field's text with a decimal comma read as a decimal point (`0,05` is 0.05, as typed where the
- * comma is the decimal separator). Only a single comma and no point: `1,000.5` stays as it is (and
- * is not a number).
- */
-export function withDecimalPoint(text: string): string {
-  const t = text.trim();
-  return /^[^,.]*,[^,.]*$/.test(t) ? t.replace(',', '.') : t;
-}
-
-/** Parses a field's text (a decimal comma accepted); null when it is not a plain finite number. */
-export function parseField(text: string): number | null {
-  const t = withDecimalPoint(text);
-  if (!NUMBER.test(t)) return null;
-  const v = Number(t);
-  return Number.isFinite(v) ? v : null;
-}
 
 /** A field's value in mm (lengths) or degrees (angles), or its text when it is not a number. */
 export function fieldInMm(state: CalculatorState, key: FieldKey): number | string {
@@ -125,19 +116,6 @@ export function withSize(state: CalculatorState, size: ToolSize): CalculatorStat
   return { ...state, size, fields: { ...state.fields, R } };
 }
 
-/** A value in mm or degrees as the text of a field in `unit`. */
-export function fieldText(key: FieldKey, valueMm: number, unit: Unit): string {
-  return formatField(isLengthField(key) ? fromMm(valueMm, unit) : valueMm);
-}
-
-/** Converts one field's text between units (angles unchanged, invalid text kept as is). */
-export function convertField(key: FieldKey, text: string, from: Unit, to: Unit): string {
-  if (from === to || !isLengthField(key)) return text;
-  const v = parseField(text);
-  if (v === null) return text;
-  return formatField(fromMm(toMm(v, from), to));
-}
-
 export function convertState(state: CalculatorState, to: Unit): CalculatorState {
   const fields = { ...state.fields };
   for (const key of FIELD_KEYS) fields[key] = convertField(key, state.fields[key], state.unit, to);
@@ -152,6 +130,10 @@ export function defaultState(unit: Unit = 'mm', mode: SolveMode = 'forward'): Ca
     target: 'h',
     surface: 'plane',
     surfaceAxis: 'feed',
+    feedSide: 'straight',
+    crossSide: 'straight',
+    machine: '5axis',
+    passes: 'raster',
     fields: DEFAULT_FIELDS_MM,
   };
   return unit === 'mm' ? mm : convertState(mm, unit);
@@ -197,15 +179,27 @@ export function parseUrl(search: string): ParsedUrl {
   const mode = choice(params, 'mode', notices);
   const pattern = choice(params, 'pattern', notices);
   const target = choice(params, 'target', notices);
+  const { machine, passes } = parseMachine(params, notices);
   const defaults = defaultState(unit, mode).fields;
   const fields = { ...defaults };
   const size = sizeFromUrl(params, notices);
-  const needed: FieldKey[] = ['R', 'Rcr', 'rho', mode === 'forward' ? target : 'L'];
+  const needed: FieldKey[] =
+    machine === '3axis'
+      ? threeAxisNeeded(mode, target, passes)
+      : ['R', 'Rcr', 'rho', mode === 'forward' ? target : 'L'];
   const anyGiven = GIVEN_PARAMS.some((p) => params.has(p));
   const surface = parseSurface(params, defaults.Rs, notices);
   if (surface.radiusText !== null) fields.Rs = surface.radiusText;
+  const radii = parseLinkRadii(params, notices);
+  if (radii.texts.Rf !== null) fields.Rf = radii.texts.Rf;
+  if (radii.texts.Rc !== null) fields.Rc = radii.texts.Rc;
+  if (radii.given && surface.kind !== 'plane' && machine === '5axis')
+    notices.push(
+      `${param('surfaceRadius')} and ${RADIUS_PARAM.Rf} or ${RADIUS_PARAM.Rc} are both in the link; using ${RADIUS_PARAM.Rf} and ${RADIUS_PARAM.Rc} (a link gives the surface one way).`,
+    );
   for (const key of FIELD_KEYS) {
-    if (key === 'Rs') continue; // in the link as the signed surfaceRadius (parseSurface)
+    // In the link as signed radii (parseSurface, parseLinkRadii).
+    if (key === 'Rs' || key === 'Rf' || key === 'Rc') continue;
     const name = param(fieldOfPageKey(key));
     const text = params.get(name);
     if (text === null) {
@@ -225,8 +219,12 @@ export function parseUrl(search: string): ParsedUrl {
     mode,
     pattern,
     target,
-    surface: surface.kind,
+    surface: radii.given && machine === '5axis' ? 'curved' : surface.kind,
     surfaceAxis: surface.axis,
+    feedSide: radii.feedSide,
+    crossSide: radii.crossSide,
+    machine,
+    passes,
     fields,
   };
   return {
@@ -235,31 +233,6 @@ export function parseUrl(search: string): ParsedUrl {
     embed,
     view: params.get(param('view')),
   };
-}
-
-/** The words a switch of the link takes (the field registry's values; the first is the default). */
-type ChoiceId = 'unit' | 'mode' | 'pattern' | 'target' | 'surfaceAxis';
-type ChoiceOf<I extends ChoiceId> = (typeof FIELDS)[I]['values'][number];
-
-/**
- * A switch's word in the link: one of its values (or an alias of one), else its default (the first
- * value) with a notice; the default when the link leaves it out.
- */
-function choice<I extends ChoiceId>(
-  params: URLSearchParams,
-  id: I,
-  notices: string[],
-  aliases: Readonly<Record<string, ChoiceOf<I>>> = {},
-): ChoiceOf<I> {
-  const values = FIELDS[id].values as readonly ChoiceOf<I>[];
-  const fallback = values[0] as ChoiceOf<I>;
-  const name = param(id);
-  const text = params.get(name);
-  if (text === null) return fallback;
-  const found = values.find((v) => v === text) ?? aliases[text];
-  if (found !== undefined) return found;
-  notices.push(`${name}="${text.slice(0, 20)}" is not ${values.join(' or ')}; using ${fallback}.`);
-  return fallback;
 }
 
 /**
@@ -327,10 +300,20 @@ export function toSearch(state: CalculatorState, extra: Readonly<Record<string, 
   const set = (id: FieldId, value: string) => params.set(param(id), value);
   set(sizeIsDiameter(state) ? 'D' : 'R', state.fields.R);
   set('Rcr', state.fields.Rcr);
+  if (state.machine === '3axis') {
+    for (const [name, value] of threeAxisSearch(state)) params.set(name, value);
+    for (const [k, v] of Object.entries(extra)) params.set(k, v);
+    return `?${params.toString()}`;
+  }
   set('rho', state.fields.rho);
   if (state.fields.tilt.trim() !== '0') set('tilt', state.fields.tilt);
   if (state.pattern !== 'one-way') set('pattern', state.pattern);
-  if (state.surface !== 'plane') {
+  if (state.surface === 'curved')
+    for (const key of ['Rf', 'Rc'] as const) {
+      const signed = signedRadiusOf(state, key);
+      if (signed !== null) params.set(RADIUS_PARAM[key], signed);
+    }
+  else if (state.surface !== 'plane') {
     set('surfaceRadius', signedRadiusText(state));
     set('surfaceAxis', state.surfaceAxis);
   }
@@ -345,35 +328,4 @@ export function toSearch(state: CalculatorState, extra: Readonly<Record<string, 
   set('unit', state.unit);
   for (const [k, v] of Object.entries(extra)) params.set(k, v);
   return `?${params.toString()}`;
-}
-
-/** A tool preset: its name as a catalogue gives it (diameter D, corner radius), R and Rcr in mm. */
-export interface Preset {
-  readonly label: string;
-  readonly R: number;
-  readonly Rcr: number;
-}
-
-/** Presets: the paper's tools and a few common catalogue sizes, named by diameter and corner radius (mm). */
-export const PRESETS: readonly Preset[] = [
-  { label: 'D6, corner R1 (paper Tool 1)', R: 3, Rcr: 1 },
-  { label: 'D12, corner R2 (paper Tool 2)', R: 6, Rcr: 2 },
-  { label: 'D6, corner R0.5', R: 3, Rcr: 0.5 },
-  { label: 'D10, corner R1', R: 5, Rcr: 1 },
-  { label: 'D16, corner R3', R: 8, Rcr: 3 },
-  { label: 'D1/2 in, corner R0.060 in', R: 6.35, Rcr: 1.524 },
-];
-
-/**
- * The preset the tool fields hold, or null ("custom") once a value was edited away from every
- * preset. Compared as the fields show them (6 significant digits in the user's unit), so a preset
- * converted to inches still matches.
- */
-export function presetOf(state: CalculatorState): Preset | null {
-  const same = (key: 'R' | 'Rcr', mm: number) => {
-    const v = parseField(state.fields[key]);
-    return v !== null && formatField(v) === fieldText(key, mm, state.unit);
-  };
-  const size = sizeIsDiameter(state) ? 2 : 1;
-  return PRESETS.find((p) => same('R', size * p.R) && same('Rcr', p.Rcr)) ?? null;
 }

@@ -52,16 +52,23 @@ export class TeachingLoader {
   private unit: Unit = 'mm';
   /** The inputs are being typed (held back, typing.ts): said instead of "invalid". */
   private typing = false;
+  /** Why these views do not answer the inputs on screen (another kind of question), or null. */
+  private elsewhere: string | null = null;
   private highlighted: ProcedureKey | null = null;
   /** The reply and unit the views show now. */
   private drawn: { reply: TeachReply; unit: Unit } | null = null;
 
   constructor(private readonly options: TeachingOptions) {}
 
-  /** The inputs changed: the request they ask (null when invalid), and the unit to show. */
-  want(request: SolveRequest | null, unit: Unit, typing = false): void {
+  /**
+   * The inputs changed: the request they ask (null when invalid), and the unit to show.
+   * `elsewhere`: the inputs ask a question these views do not draw (a doubly curved point,
+   * three-axis machining), said in words instead of "invalid".
+   */
+  want(request: SolveRequest | null, unit: Unit, typing = false, elsewhere: string | null = null): void {
     this.unit = unit;
     this.typing = typing;
+    this.elsewhere = elsewhere;
     this.fresh.want(request);
     this.schedule();
   }
@@ -96,11 +103,13 @@ export class TeachingLoader {
         ? null
         : shown.kind === 'invalid' && this.typing
           ? 'Typing: these views follow when you pause or press Enter.'
-          : shown.kind === 'invalid'
-            ? 'Out of date: the inputs are invalid, so these views still show the last valid inputs.'
-            : shown.kind === 'failed'
-              ? "Out of date: the teaching views' solver gave up; change any input to try again."
-              : 'Updating: these views still show the previous inputs.';
+          : shown.kind === 'invalid' && this.elsewhere !== null
+            ? this.elsewhere
+            : shown.kind === 'invalid'
+              ? 'Out of date: the inputs are invalid, so these views still show the last valid inputs.'
+              : shown.kind === 'failed'
+                ? "Out of date: the teaching views' solver gave up; change any input to try again."
+                : 'Updating: these views still show the previous inputs.';
     this.panel?.setStale(text);
   }
 

@@ -2,9 +2,11 @@
  * The solver worker's API: one function per job, the large arrays of a reply marked for transfer.
  * Exposed by solver.worker.ts; its type is what the page's clients call (rpc.ts `Remote`).
  */
-import { solve, teach, transferables } from './api';
+import { teach, transferables } from './api';
+import { solvePage } from './jobs/page';
 import { table } from './jobs/table';
-import type { SolveReply, SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
+import { isSolveReply, type PageReply, type PageRequest } from './pageProtocol';
+import type { SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
 import { transfer } from './rpc';
 import { type SimulateReply, SimulationRunner, simulationTransferables } from './simulate';
 
@@ -12,9 +14,9 @@ import { type SimulateReply, SimulationRunner, simulationTransferables } from '.
 const simulations = new SimulationRunner();
 
 export const workerApi = {
-  solve(request: SolveRequest): SolveReply {
-    const reply = solve(request);
-    return transfer(reply, transferables(reply));
+  solve(request: PageRequest): PageReply {
+    const reply = solvePage(request);
+    return isSolveReply(reply) ? transfer(reply, transferables(reply)) : reply;
   },
   teach(request: SolveRequest): TeachReply {
     const reply = teach(request);

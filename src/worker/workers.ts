@@ -5,8 +5,8 @@
  */
 import solverWorkerUrl from 'virtual:solver-worker-url';
 import { JobClient, type RestartInfo } from './client';
+import { type PageReply, type PageRequest, samePageRequest } from './pageProtocol';
 import {
-  type SolveReply,
   type SolveRequest,
   sameRequest,
   sameTableRequest,
@@ -43,11 +43,11 @@ function solverWatchdogMs(): number | undefined {
 }
 
 /** The `solve` job on its own worker. */
-export function solveClient(events: JobEvents<SolveRequest, SolveReply>): JobClient<SolveRequest, SolveReply> {
+export function solveClient(events: JobEvents<PageRequest, PageReply>): JobClient<PageRequest, PageReply> {
   return new JobClient({
     createWorker: createSolverWorker,
     call: (api, r) => api.solve(r),
-    same: sameRequest,
+    same: samePageRequest,
     ...events,
     // A getter: the client reads it at each request.
     get watchdogMs() {

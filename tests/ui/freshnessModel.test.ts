@@ -20,7 +20,8 @@ import { FreshJob, type Shown } from '../../src/ui/freshness';
 import { SimulationLoader } from '../../src/ui/simulation';
 import { TeachingLoader } from '../../src/ui/teaching';
 import { type RestartInfo, WATCHDOG_MS } from '../../src/worker/client';
-import { type SolveReply, type SolveRequest, sameRequest } from '../../src/worker/protocol';
+import { type PageReply, type PageRequest, samePageRequest } from '../../src/worker/pageProtocol';
+import type { SolveRequest } from '../../src/worker/protocol';
 import type { SimulateReply } from '../../src/worker/simulate';
 import { SIMULATION_WATCHDOG_MS } from '../../src/worker/simulateClient';
 import { solveClient } from '../../src/worker/workers';
@@ -139,18 +140,48 @@ class FakeWorker {
 }
 
 const TOOL: ToolInput = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
-/** The inputs a user moves between: h in mm, or an invalid text (null: no request). */
-const VALUES: readonly (number | null)[] = [0.05, 0.051, 0.052, null];
-const requestOf = (h: number | null): SolveRequest | null =>
-  h === null ? null : { mode: 'forward', input: forwardInput(TOOL, 'one-way', h) };
+/**
+ * The inputs a user moves between: h in mm on a plane, a doubly curved point (issue 19) or
+ * three-axis machining (issue 20) at two slopes, or an invalid text (null: no request).
+ */
+type Input = number | 'curved' | 'three-axis-30' | 'three-axis-31' | null;
+const VALUES: readonly Input[] = [0.05, 0.051, 0.052, 'curved', 'three-axis-30', 'three-axis-31', null];
+/** The results' request of an input (every kind: app.ts asks the solver for each). */
+const pageRequestOf = (h: Input): PageRequest | null => {
+  if (h === 'curved')
+    return {
+      mode: 'curved-forward',
+      input: { ...TOOL, pattern: 'one-way', feedRadiusMm: 80, crossRadiusMm: -40, scallopHeightMm: 0.05 },
+    };
+  if (h === 'three-axis-30' || h === 'three-axis-31')
+    return {
+      mode: 'three-axis',
+      input: {
+        surface: 'plane',
+        case: {
+          toolRadiusMm: 3,
+          cornerRadiusMm: 1,
+          slopeDeg: h === 'three-axis-30' ? 30 : 31,
+          passes: 'raster',
+          rasterAngleDeg: 0,
+        },
+        quantity: 'h',
+        mm: 0.05,
+      },
+    };
+  return requestOf(h);
+};
+/** The views' and the simulation's request: a plane's or cylinder's only (app.ts gives them null otherwise). */
+const requestOf = (h: Input): SolveRequest | null =>
+  typeof h === 'number' ? { mode: 'forward', input: forwardInput(TOOL, 'one-way', h) } : null;
 
 /** What the page shows, as the test reads it: the kind, and the request its numbers answer. */
 interface Seen {
   readonly kind: 'invalid' | 'current' | 'pending' | 'failed';
-  readonly answers: SolveRequest | null;
+  readonly answers: PageRequest | null;
 }
 
-function seenOf<Rep extends { readonly request: SolveRequest }>(shown: Shown<Rep> | null): Seen {
+function seenOf<Rep extends { readonly request: PageRequest }>(shown: Shown<Rep> | null): Seen {
   if (shown === null) return { kind: 'pending', answers: null };
   return { kind: shown.kind, answers: shown.kind === 'current' ? shown.reply.request : null };
 }
@@ -159,11 +190,13 @@ interface Subject {
   /** The name of the subject's worker (workers.ts). */
   readonly worker: string;
   readonly watchdogMs: number;
-  want(h: number | null): void;
+  want(h: Input): void;
+  /** The request the subject is given for an input (as app.ts gives it). */
+  requestFor(h: Input): PageRequest | null;
   setOpen(open: boolean): void;
   seen(): Seen;
   /** The requests the worker gave up on (RestartInfo.request of each give-up), in order. */
-  readonly gaveUpOn: (SolveRequest | null)[];
+  readonly gaveUpOn: (PageRequest | null)[];
 }
 
 /** The results, wired as app.ts wires them. */
@@ -171,8 +204,9 @@ function results(): Subject {
   const subject = {
     worker: 'path-interval-solver',
     watchdogMs: WATCHDOG_MS,
-    gaveUpOn: [] as (SolveRequest | null)[],
-    want: (h: number | null) => void job.want(requestOf(h)),
+    gaveUpOn: [] as (PageRequest | null)[],
+    want: (h: Input) => void job.want(pageRequestOf(h)),
+    requestFor: pageRequestOf,
     setOpen: () => undefined,
     seen: () => seenOf(job.shown),
   };
@@ -185,7 +219,7 @@ function results(): Subject {
       }
     },
   });
-  const job: FreshJob<SolveReply> = new FreshJob<SolveReply>({ ask: (r) => client.request(r) });
+  const job: FreshJob<PageReply> = new FreshJob<PageReply>({ ask: (r) => client.request(r) });
   return subject;
 }
 
@@ -194,8 +228,9 @@ function simulation(): Subject {
   const subject = {
     worker: 'path-interval-simulation',
     watchdogMs: SIMULATION_WATCHDOG_MS,
-    gaveUpOn: [] as (SolveRequest | null)[],
-    want: (h: number | null) => loader.want(requestOf(h), 'mm'),
+    gaveUpOn: [] as (PageRequest | null)[],
+    want: (h: Input) => loader.want(requestOf(h), 'mm'),
+    requestFor: requestOf,
     setOpen: (open: boolean) => loader.setOpen(open),
     seen: () => seenOf(last),
   };
@@ -214,8 +249,9 @@ function teaching(): Subject {
   const subject = {
     worker: 'path-interval-views',
     watchdogMs: WATCHDOG_MS,
-    gaveUpOn: [] as (SolveRequest | null)[],
-    want: (h: number | null) => loader.want(requestOf(h), 'mm'),
+    gaveUpOn: [] as (PageRequest | null)[],
+    want: (h: Input) => loader.want(requestOf(h), 'mm'),
+    requestFor: requestOf,
     setOpen: () => undefined,
     seen: (): Seen => {
       const panel = panels.all.at(-1);
@@ -330,13 +366,13 @@ async function settle(s: Subject): Promise<void> {
 }
 
 /** The page's state after the replies settled: the answer to the inputs on screen, nothing stale. */
-function expectAnswered(s: Subject, h: number | null): void {
+function expectAnswered(s: Subject, h: Input): void {
   const seen = s.seen();
-  const wanted = requestOf(h);
+  const wanted = s.requestFor(h);
   if (wanted === null) expect(seen.kind).toBe('invalid');
   else {
     expect(seen.kind).toBe('current');
-    expect(sameRequest(seen.answers, wanted), `shown answers h = ${h}`).toBe(true);
+    expect(samePageRequest(seen.answers, wanted), `shown answers h = ${h}`).toBe(true);
   }
 }
 
@@ -366,9 +402,9 @@ async function run(make: () => Subject, cmds: readonly Cmd[]): Promise<void> {
   if (s.seen().kind === 'failed') {
     // Allowed only when the worker gave up on these very inputs since they were typed; changing an
     // input tries again.
-    const onThese = s.gaveUpOn.slice(gaveUpsAtChange).some((r) => sameRequest(r, requestOf(h)));
+    const onThese = s.gaveUpOn.slice(gaveUpsAtChange).some((r) => samePageRequest(r, s.requestFor(h)));
     expect(onThese, 'shown as given up, but the worker gave up on no request for these inputs').toBe(true);
-    const other = VALUES.find((v) => v !== h && v !== null) ?? null;
+    const other = VALUES.find((v) => v !== h && s.requestFor(v) !== null) ?? null;
     s.want(other);
     s.want(h);
     await settle(s);

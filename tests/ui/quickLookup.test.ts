@@ -21,7 +21,7 @@ describe('tool size as catalogues give it', () => {
     const r = withField(defaultState(), 'R', '5');
     const a = buildRequest(d);
     const b = buildRequest(r);
-    expect(a.ok && a.request.input.toolRadiusMm).toBe(5);
+    expect(a.ok && a.request.mode === 'forward' && a.request.input.toolRadiusMm).toBe(5);
     expect(a.ok && b.ok && a.request).toEqual(b.ok && b.request);
   });
 

@@ -73,7 +73,7 @@ describe('the request a surface makes', () => {
     if (!r.ok || r.request.mode !== 'forward') throw new Error('valid');
     expect(r.request.input.surface).toEqual({ kind: 'cylinder', radiusMm: -30 * 25.4, axis: 'cross' });
     const p = buildRequest(defaultState());
-    expect(p.ok && p.request.input.surface).toEqual({ kind: 'plane' });
+    expect(p.ok && p.request.mode === 'forward' && p.request.input.surface).toEqual({ kind: 'plane' });
     const inv = buildRequest(parse('?R=3&Rcr=1&rho=5&surfaceRadius=30&mode=inverse&L=2.5&unit=mm').state);
     expect(inv.ok && inv.request.mode === 'inverse' && inv.request.input.surface).toEqual({
       kind: 'cylinder',

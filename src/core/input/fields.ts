@@ -282,7 +282,7 @@ export const FIELDS = {
     cli: 'slope',
     csv: { column: 'slope', role: 'threeAxis' },
     embed: 'slope',
-    page: null,
+    page: 'slope',
   },
   passes: {
     short: 'passes',
@@ -308,7 +308,7 @@ export const FIELDS = {
     cli: 'raster-angle',
     csv: { column: 'rasterAngle', role: 'threeAxis' },
     embed: 'raster-angle',
-    page: null,
+    page: 'psi',
   },
   feedRadius: {
     short: 'Rf',
@@ -327,7 +327,7 @@ export const FIELDS = {
     cli: 'feed-radius',
     csv: { column: 'feedRadius', role: 'threeAxis' },
     embed: 'feed-radius',
-    page: null,
+    page: 'Rf',
   },
   crossRadius: {
     short: 'Rc',
@@ -346,7 +346,7 @@ export const FIELDS = {
     cli: 'cross-radius',
     csv: { column: 'crossRadius', role: 'threeAxis' },
     embed: 'cross-radius',
-    page: null,
+    page: 'Rc',
   },
   horizontalStep: {
     short: 'Lxy',
@@ -359,7 +359,7 @@ export const FIELDS = {
     cli: 'horizontal-step',
     csv: null,
     embed: 'lxy',
-    page: null,
+    page: 'Lxy',
   },
   stepDown: {
     short: 'dz',
@@ -378,9 +378,11 @@ export const FIELDS = {
     cli: 'step-down',
     csv: null,
     embed: 'dz',
-    page: null,
+    page: 'dz',
   },
   unit: pageSetting('unit', 'Unit', ['mm', 'in'] as const),
+  /** The machine: five-axis (lead and tilt given) or three-axis (the tool upright, the slope sets them; issue 20). */
+  machine: pageSetting('machine', 'Machine', ['5axis', '3axis'] as const),
   mode: pageSetting('mode', 'Mode', ['forward', 'inverse'] as const),
   target: pageSetting('target', 'Given in forward mode', ['h', 'ra'] as const),
   view: pageSetting('view', 'Teaching view', ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'] as const),
@@ -448,11 +450,11 @@ export const PAGE_FIELD_KEYS: readonly PageFieldKey[] = ENTRIES.flatMap(([, s]) 
   s.page === null ? [] : [s.page as PageFieldKey],
 );
 
-/** The field behind a page's text field. */
-export function fieldOfPageKey(key: PageFieldKey): FieldName {
+/** The field behind a page's text field (a tool, pass or quantity field, or a three-axis one). */
+export function fieldOfPageKey(key: PageFieldKey): FieldName | ThreeAxisFieldName {
   const found = ENTRIES.find(([, s]) => s.page === key);
   if (found === undefined) throw new Error(`no field has the page key ${key}`);
-  return found[0] as FieldName;
+  return found[0] as FieldName | ThreeAxisFieldName;
 }
 
 /** The page's text field of a field, or null for a switch (pattern, axis) or none. */

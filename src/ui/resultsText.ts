@@ -1,0 +1,55 @@
+/**
+ * The results' words: a procedure's note, a comparison row's note, what L and the heights mean on a
+ * cylinder; lengths in the user's unit. Pure.
+ */
+import type { Surface } from '../core/cylinder';
+import { CURVATURE_ROWS, type CurvatureRowKey, PROCEDURES, type ProcedureKey } from '../core/procedures';
+import { type LengthUnit, unitSymbol } from '../core/units';
+import type { ProcedureNote } from '../worker/protocol';
+import { formatLen, formatLenUnit } from './format';
+
+/** A procedure's note in words, lengths in the user's unit. */
+export function noteText(key: ProcedureKey, note: ProcedureNote, unit: LengthUnit): string {
+  const label = PROCEDURES[key].shortLabel;
+  const u = unitSymbol(unit);
+  switch (note.kind) {
+    case 'reason':
+      return note.text;
+    case 'beyond-model': {
+      const what = note.quantity === 'h' ? 'h' : 'L/2';
+      const limit =
+        note.shape === 'circle' ? 'Reff' : note.quantity === 'h' ? 'its height Rlong sin(rho)' : 'its half-width Rlong';
+      const where = note.quantity === 'h' ? 'above the widest point of' : 'wider than';
+      return `${label}: ${what} = ${formatLen(note.valueMm, unit, 'height')} ${u} is ${where} its ${note.shape} (${limit} = ${formatLen(note.limitMm, unit)} ${u}).`;
+    }
+    case 'wall':
+      return `${label}: its step-over L = ${formatLen(note.intervalMm, unit)} ${u} is not below the widest step-over that leaves a scallop (${formatLen(note.maxIntervalMm, unit)} ${u}): passes this far apart leave a wall.`;
+  }
+}
+
+/** A comparison row's note in words (the plane's answer, or a procedure corrected for the curvature). */
+export function curvatureNoteText(key: CurvatureRowKey, note: ProcedureNote, unit: LengthUnit): string {
+  const label = CURVATURE_ROWS[key].shortLabel;
+  const u = unitSymbol(unit);
+  switch (note.kind) {
+    case 'reason':
+      return note.text;
+    case 'beyond-model': {
+      const what = note.quantity === 'h' ? 'h' : 'L/2';
+      const where = note.quantity === 'h' ? 'above the widest point of' : 'wider than';
+      return `${label}: ${what} = ${formatLen(note.valueMm, unit, 'height')} ${u} is ${where} its combined circle (rho = ${formatLen(note.limitMm, unit)} ${u}).`;
+    }
+    case 'wall':
+      return `${label}: its step-over L = ${formatLen(note.intervalMm, unit)} ${u} is not below the widest step-over that leaves a scallop on this cylinder (${formatLen(note.maxIntervalMm, unit)} ${u}): passes this far apart leave a wall.`;
+  }
+}
+
+/** What L and the heights mean on the surface of a request, in words (empty on a plane). */
+export function surfaceMeaning(surface: Surface, unit: LengthUnit): string {
+  if (surface.kind === 'plane') return '';
+  const side = surface.radiusMm > 0 ? 'convex' : 'concave';
+  const r = formatLenUnit(Math.abs(surface.radiusMm), unit);
+  return surface.axis === 'feed'
+    ? `On this ${side} cylinder (radius ${r}, axis along the feed: the passes run along it), L and the flank widths are arc lengths on the surface between the CC paths, and every height is measured radially, from the cylinder.`
+    : `On this ${side} cylinder (radius ${r}, axis across the feed: the passes go around it and step along its axis), L and the flank widths are measured along the axis, and every height radially, from the cylinder.`;
+}

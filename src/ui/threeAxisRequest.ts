@@ -1,0 +1,100 @@
+/**
+ * The page's three-axis question (issue 20): the tool, the slope, the pass strategy, the raster
+ * angle (raster) or the surface's radii (waterline), and h forward or the programmed step inverse
+ * (Lxy for raster, dz for waterline), validated and solved as the command line does (core
+ * validateThreeAxis, solveThreeAxis: a few microseconds on a plane, tens on a surface of revolution)
+ * so that every refusal shows on its field, in the user's unit. Pure.
+ */
+import { FIELDS } from '../core/input/fields';
+import {
+  type ThreeAxisInputError,
+  type ThreeAxisInputField,
+  type ThreeAxisQuantity,
+  validateThreeAxis,
+} from '../core/threeAxis/validate';
+import { formatInputNumber, fromMm, unitSymbol } from '../core/units';
+import { checkThreeAxis } from '../worker/jobs/threeAxis';
+import { radiusMm } from './curvedRequest';
+import { programmedStepKey } from './machineState';
+import type { BuiltRequest, PageFieldError } from './request';
+import { type CalculatorState, type FieldKey, fieldInMm } from './state';
+
+/** The page field of each field a three-axis error names (null: a switch, or a field the page does not give). */
+const KEY_OF: Readonly<Record<ThreeAxisInputField, FieldKey | null>> = {
+  R: 'R',
+  Rcr: 'Rcr',
+  slope: 'slope',
+  rasterAngle: 'psi',
+  feedRadius: 'Rf',
+  crossRadius: 'Rc',
+  h: 'h',
+  interval: 'L',
+  horizontalStep: 'Lxy',
+  stepDown: 'dz',
+  passes: null,
+  rho: 'rho',
+  tilt: 'tilt',
+};
+
+/**
+ * A core message (mm and degrees) in the user's unit: every `<number> mm` converted, and the value
+ * quoted as typed (the core quotes it in mm). Angles stay in degrees.
+ */
+export function inUnit(message: string, state: CalculatorState, key: FieldKey | null): string {
+  const typed = key === null ? null : state.fields[key].trim();
+  const withTyped =
+    typed === null || typed === '' ? message : message.replace(/\(got [^)]*\)/, `(got ${typed.slice(0, 24)})`);
+  if (state.unit === 'mm') return withTyped;
+  const u = unitSymbol(state.unit);
+  return withTyped.replace(
+    /(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?) mm\b/gi,
+    (_m, n: string) => `${formatInputNumber(fromMm(Number(n), state.unit))} ${u}`,
+  );
+}
+
+/** A three-axis error on its page field, in the user's unit (R in diameter mode is named D). */
+function onField(e: ThreeAxisInputError, state: CalculatorState): PageFieldError | null {
+  const key = KEY_OF[e.field];
+  if (key === null) return null;
+  return { key, message: inUnit(e.message, state, key) };
+}
+
+/** The request of a three-axis state, or why it cannot be asked (each message on its field). */
+export function buildThreeAxisRequest(state: CalculatorState): BuiltRequest {
+  const own: PageFieldError[] = [];
+  const forward = state.mode === 'forward';
+  if (forward && state.target === 'ra')
+    own.push({
+      key: 'ra',
+      message: `${FIELDS.ra.label} as a target is not offered for three-axis machining: give the scallop height h.`,
+    });
+  const waterline = state.passes === 'waterline';
+  const radius = (key: 'Rf' | 'Rc'): number | undefined => {
+    if (!waterline) return undefined;
+    const r = radiusMm(state, key);
+    if (typeof r !== 'number') {
+      own.push(r);
+      return undefined;
+    }
+    return Number.isFinite(r) ? r : undefined;
+  };
+  const raw = {
+    R: fieldInMm(state, 'R'),
+    Rcr: fieldInMm(state, 'Rcr'),
+    slope: fieldInMm(state, 'slope'),
+    passes: state.passes,
+    rasterAngle: waterline ? undefined : fieldInMm(state, 'psi'),
+    feedRadius: radius('Rf'),
+    crossRadius: radius('Rc'),
+  };
+  const stepKey = programmedStepKey(state.passes);
+  const quantity: ThreeAxisQuantity = forward ? 'h' : waterline ? 'stepDown' : 'horizontalStep';
+  const value = fieldInMm(state, forward ? 'h' : stepKey);
+  const v = validateThreeAxis(raw, quantity, value);
+  const solved = v.ok && own.length === 0 ? checkThreeAxis(v.value) : null;
+  const errors = [...(v.ok ? [] : v.errors), ...(solved !== null && !solved.ok ? solved.errors : [])];
+  // The page's own messages first (a field shows the first message that names it).
+  const all = [...own, ...errors.flatMap((e) => onField(e, state) ?? [])];
+  if (!v.ok || all.length > 0 || solved === null || !solved.ok) return { ok: false, errors: all };
+  return { ok: true, request: { mode: 'three-axis', input: v.value } };
+}

@@ -1,0 +1,76 @@
+/**
+ * The checks of a doubly curved question beyond the tool's own (validate.ts checks the tool and
+ * posture): each radius in range (0.001 mm to 1e6 mm, or straight), no gouging (gouging.ts: on the
+ * field of each radius whose change would help, with its limit, the other held), the scallop height
+ * below the flank and shank limits, the step-over below the widest that leaves a scallop. Used by
+ * the page as it builds the request and by the worker, which trusts no caller. Mm.
+ */
+import {
+  doublyCurvedGouges,
+  doublyCurvedGouging,
+  doublyCurvedMaxIntervalMm,
+  doublyCurvedSolver,
+  MAX_PRINCIPAL_RADIUS_MM,
+  MIN_PRINCIPAL_RADIUS_MM,
+  type PrincipalRadii,
+  type RadiusLimit,
+} from '../../core/doublyCurved';
+import type { PassPattern, ToolInput } from '../../core/validate';
+import type { CurvedError } from '../pageProtocol';
+
+/** True for a radius the model takes: straight (infinite), or a magnitude from 0.001 mm to 1e6 mm. */
+function radiusInRange(radiusMm: number): boolean {
+  const r = Math.abs(radiusMm);
+  return r === Number.POSITIVE_INFINITY || (r >= MIN_PRINCIPAL_RADIUS_MM && r <= MAX_PRINCIPAL_RADIUS_MM);
+}
+
+/** A limit that a change of its radius can meet (not `any`: that radius is not the cause; not `none`). */
+function helps(limit: RadiusLimit): boolean {
+  return limit.kind === 'concave-at-least' || limit.kind === 'convex-at-most' || limit.kind === 'not-concave';
+}
+
+/**
+ * The radii's errors: out of range, or gouging. A gouging point puts its message on each radius
+ * whose change would avoid it (its limit, the other held); where neither would, on both ("at any
+ * radius").
+ */
+export function curvedRadiusErrors(tool: ToolInput, radii: PrincipalRadii): CurvedError[] {
+  const out: CurvedError[] = [];
+  if (!radiusInRange(radii.feedRadiusMm))
+    out.push({ field: 'feedRadius', code: 'out-of-range', gotMm: radii.feedRadiusMm });
+  if (!radiusInRange(radii.crossRadiusMm))
+    out.push({ field: 'crossRadius', code: 'out-of-range', gotMm: radii.crossRadiusMm });
+  if (out.length > 0 || !doublyCurvedGouges(tool, radii)) return out;
+  const g = doublyCurvedGouging(tool, radii);
+  const feedHelps = helps(g.feed);
+  const crossHelps = helps(g.cross);
+  if (feedHelps || !crossHelps)
+    out.push({ field: 'feedRadius', code: 'gouging', limit: g.feed, otherMm: radii.crossRadiusMm });
+  if (crossHelps || !feedHelps)
+    out.push({ field: 'crossRadius', code: 'gouging', limit: g.cross, otherMm: radii.feedRadiusMm });
+  return out;
+}
+
+/**
+ * Every check of a doubly curved question whose tool and posture are valid: the radii, then the
+ * scallop height (forward) or the step-over (inverse) against this point's limits.
+ * @param question `{ h }` forward or `{ interval }` inverse, mm.
+ */
+export function curvedErrors(
+  tool: ToolInput,
+  radii: PrincipalRadii,
+  pattern: PassPattern,
+  question: { readonly h: number } | { readonly interval: number },
+): CurvedError[] {
+  const radiusErrors = curvedRadiusErrors(tool, radii);
+  if (radiusErrors.length > 0) return radiusErrors;
+  const solver = doublyCurvedSolver(tool, radii);
+  const limits = solver.limits();
+  if ('h' in question) {
+    if (!(question.h < limits.limitMm))
+      return [{ field: 'h', code: 'above-limit', limitMm: Math.max(0, limits.limitMm), limitBy: limits.limitBy }];
+    return [];
+  }
+  const maxMm = doublyCurvedMaxIntervalMm(solver, pattern);
+  return question.interval < maxMm ? [] : [{ field: 'interval', code: 'beyond-max', maxMm }];
+}

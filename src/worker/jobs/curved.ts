@@ -1,0 +1,70 @@
+/**
+ * The worker's `solve` job for a doubly curved point (issue 19): the exact step-over and cusps
+ * (core/doublyCurved), and forward the comparison rows (the plane, each cylinder, the usual
+ * correction). The request is validated again (the tool and posture as validate.ts does, then this
+ * point's own checks): a bad request gets a typed error reply, never an exception.
+ */
+import {
+  compareDoublyCurved,
+  doublyCurvedMaxIntervalMm,
+  doublyCurvedSolver,
+  inverseWith,
+} from '../../core/doublyCurved';
+import { TOOL_FIELDS } from '../../core/input/fields';
+import { rawOf } from '../../core/input/raw';
+import { type InputError, inputError, MIN_LENGTH_MM, validatePassAnd } from '../../core/validate';
+import { curvedErrors } from '../data/curvedCheck';
+import type { CurvedError, CurvedReply, CurvedRequest } from '../pageProtocol';
+
+/** The request's errors (the tool's, then the point's), or null when it is valid. */
+export function revalidateCurved(request: CurvedRequest): readonly (InputError | CurvedError)[] | null {
+  const i = request.input;
+  const field = request.mode === 'curved-forward' ? 'h' : 'interval';
+  const value = request.mode === 'curved-forward' ? request.input.scallopHeightMm : request.input.intervalMm;
+  const v = validatePassAnd({ ...rawOf(i, TOOL_FIELDS), pattern: i.pattern, [field]: value }, field);
+  if (v.errors.length > 0) return v.errors as InputError[];
+  const min = field === 'h' ? MIN_LENGTH_MM : 2 * MIN_LENGTH_MM;
+  if (!(value >= min)) return [inputError(field, value > 0 ? 'too-small' : 'not-positive', String(value), min)];
+  const question = field === 'h' ? { h: value } : { interval: value };
+  const errors = curvedErrors(i, i, i.pattern, question);
+  return errors.length > 0 ? errors : null;
+}
+
+/** Solves a doubly curved request. Never throws for any numeric input. */
+export function solveCurved(request: CurvedRequest): CurvedReply {
+  const t0 = performance.now();
+  const errors = revalidateCurved(request);
+  if (errors !== null) return { ok: false, request, errors };
+  const i = request.input;
+  const solver = doublyCurvedSolver(i, i);
+  const limits = solver.limits();
+  const maxIntervalMm = doublyCurvedMaxIntervalMm(solver, i.pattern);
+  if (request.mode === 'curved-forward') {
+    const { exact, maxIntervalMm: _max, ...comparison } = compareDoublyCurved(request.input);
+    return {
+      ok: true,
+      request,
+      exact: { ...exact, pattern: i.pattern, maxIntervalMm, limits },
+      comparison,
+      solveMs: performance.now() - t0,
+    };
+  }
+  const e = inverseWith(solver, i.pattern, request.input.intervalMm);
+  return {
+    ok: true,
+    request,
+    exact: {
+      pattern: i.pattern,
+      intervalMm: e.intervalMm,
+      halfWidthRightMm: e.halfWidthRightMm,
+      halfWidthLeftMm: e.halfWidthLeftMm,
+      contactOffsetMm: e.contactOffsetMm,
+      cuspHeightMm: e.cuspHeightMm,
+      otherCuspHeightMm: e.otherCuspHeightMm,
+      maxIntervalMm,
+      limits,
+    },
+    comparison: null,
+    solveMs: performance.now() - t0,
+  };
+}

@@ -1,0 +1,108 @@
+/**
+ * The worker's `solve` job for three-axis machining (issue 20): the programmed step (Lxy or dz), L
+ * along the surface, the cusp and the equivalent lead and tilt (core solveThreeAxis); on a surface
+ * of revolution the pair of passes in the meridian plane; and the slope sweep the chart draws. The
+ * request is validated again from its numbers (core validateThreeAxis): a bad request gets a typed
+ * error reply, never an exception.
+ */
+import { rasterWaterlineCrossingDeg, slopeSweep } from '../../core/threeAxis/slopeSweep';
+import {
+  type RawThreeAxisInput,
+  solveThreeAxis,
+  type ThreeAxisInputError,
+  type ThreeAxisProblem,
+  validateThreeAxis,
+} from '../../core/threeAxis/validate';
+import { waterlineForward, waterlineInverse } from '../../core/threeAxis/waterlineRevolution';
+import type { ThreeAxisReply, ThreeAxisRequest } from '../pageProtocol';
+
+/** The raw inputs (by registry field name) a validated problem came from. */
+export function rawOfThreeAxis(p: ThreeAxisProblem): RawThreeAxisInput {
+  const tool = { R: p.case.toolRadiusMm, Rcr: p.case.cornerRadiusMm, slope: p.case.slopeDeg };
+  if (p.surface === 'plane') {
+    const c = p.case;
+    return c.passes === 'raster'
+      ? { ...tool, passes: 'raster', rasterAngle: c.rasterAngleDeg }
+      : { ...tool, passes: 'waterline' };
+  }
+  return {
+    ...tool,
+    passes: 'waterline',
+    feedRadius: p.case.feedRadiusMm ?? undefined,
+    crossRadius: p.case.crossRadiusMm ?? undefined,
+  };
+}
+
+/**
+ * The problem validated and solved, or its errors: the page builds its request so (and shows the
+ * errors on the fields), the worker solves it so again.
+ */
+export function checkThreeAxis(
+  p: ThreeAxisProblem,
+):
+  | { ok: true; value: ReturnType<typeof solveThreeAxis> & { ok: true } }
+  | { ok: false; errors: readonly ThreeAxisInputError[] } {
+  const v = validateThreeAxis(rawOfThreeAxis(p), p.quantity, p.mm);
+  if (!v.ok) return v;
+  const r = solveThreeAxis(v.value);
+  return r.ok ? { ok: true, value: r } : r;
+}
+
+/** The pair of passes in the meridian plane (waterline on a surface of revolution), or null. */
+function waterlinePair(p: ThreeAxisProblem): Extract<ThreeAxisReply, { ok: true }>['waterline'] {
+  if (p.surface !== 'revolution') return null;
+  const r =
+    p.quantity === 'h'
+      ? waterlineForward(p.case, p.mm)
+      : p.quantity === 'stepDown' || p.quantity === 'interval'
+        ? waterlineInverse(p.case, { field: p.quantity, mm: p.mm })
+        : null;
+  if (r === null || !r.ok) return null;
+  return { geometry: r.value.geometry, slopeNextDeg: r.value.slopeNextDeg, radialStepMm: r.value.radialStepMm };
+}
+
+/** Solves a three-axis request. Never throws for any numeric input. */
+export function solveThreeAxisRequest(request: ThreeAxisRequest): ThreeAxisReply {
+  const t0 = performance.now();
+  const p = request.input;
+  const checked = checkThreeAxis(p);
+  if (!checked.ok) return { ok: false, request, errors: checked.errors };
+  const answer = checked.value.value;
+  const c = p.case;
+  const hMm = answer.cuspHeightMm;
+  const programmed = answer.passes === 'waterline' ? answer.stepDownMm : answer.horizontalStepMm;
+  let sweep = null;
+  let crossingDeg: number | null = null;
+  if (!answer.noScallop && hMm >= 1e-9) {
+    try {
+      sweep = slopeSweep({
+        toolRadiusMm: c.toolRadiusMm,
+        cornerRadiusMm: c.cornerRadiusMm,
+        hMm,
+        passes: answer.passes,
+        rasterAngleDeg: p.surface === 'plane' ? p.case.rasterAngleDeg : 90,
+        feedRadiusMm: p.surface === 'revolution' ? p.case.feedRadiusMm : null,
+        crossRadiusMm: p.surface === 'revolution' ? p.case.crossRadiusMm : null,
+        // Inverse: the step typed, held constant; forward: the flat floor's step (the sweep's default).
+        ...(p.quantity === 'h' || programmed === null ? {} : { programmedStepMm: programmed }),
+      });
+      crossingDeg = rasterWaterlineCrossingDeg(
+        c.toolRadiusMm,
+        c.cornerRadiusMm,
+        hMm,
+        p.surface === 'plane' && p.case.passes === 'raster' ? p.case.rasterAngleDeg : 0,
+      );
+    } catch {
+      sweep = null;
+    }
+  }
+  return {
+    ok: true,
+    request,
+    answer,
+    waterline: waterlinePair(p),
+    sweep,
+    crossingDeg,
+    solveMs: performance.now() - t0,
+  };
+}

@@ -1,0 +1,145 @@
+/**
+ * The page's questions beyond a plane or a cylinder, and their answers, beside protocol.ts's:
+ * a doubly curved point (issue 19: two principal radii, five-axis) and three-axis machining
+ * (issue 20: the tool upright on a sloped plane or a surface of revolution). Plain data crossing
+ * the worker boundary; lengths mm, angles degrees. Every reply echoes its request, so the page shows
+ * a reply only while it answers the inputs on screen (samePageRequest).
+ */
+import type { DoublyCurvedComparison, DoublyCurvedLimits, RadiusLimit } from '../core/doublyCurved';
+import type { DoublyCurvedForwardInput, DoublyCurvedInverseInput, DoublyCurvedPass } from '../core/doublyCurved/types';
+import type { SlopeSweep } from '../core/threeAxis/slopeSweep';
+import type { ThreeAxisAnswer, ThreeAxisInputError, ThreeAxisProblem } from '../core/threeAxis/validate';
+import type { WaterlineGeometry } from '../core/threeAxis/waterlineRevolution';
+import type { InputError } from '../core/validate';
+import { type SolveReply, type SolveRequest, sameRequest } from './protocol';
+
+/** A doubly curved point (both radii curved): a scallop height to the step-over, or a step-over to the cusps. */
+export type CurvedRequest =
+  | { readonly mode: 'curved-forward'; readonly input: DoublyCurvedForwardInput }
+  | { readonly mode: 'curved-inverse'; readonly input: DoublyCurvedInverseInput };
+
+/** Three-axis machining: a validated problem (core/threeAxis/validate.ts). */
+export interface ThreeAxisRequest {
+  readonly mode: 'three-axis';
+  readonly input: ThreeAxisProblem;
+}
+
+/** Every question the page's `solve` job takes. */
+export type PageRequest = SolveRequest | CurvedRequest | ThreeAxisRequest;
+
+/** True for a plane's or a cylinder's question (protocol.ts's SolveRequest: the teaching views, the table...). */
+export function isSolveRequest(request: PageRequest): request is SolveRequest {
+  return request.mode === 'forward' || request.mode === 'inverse' || request.mode === 'ra';
+}
+
+/** True when two plain values (numbers, text, null, arrays and objects of them) are equal. */
+function samePlain(a: unknown, b: unknown): boolean {
+  if (a === b) return true;
+  if (typeof a !== 'object' || typeof b !== 'object' || a === null || b === null) return false;
+  const ka = Object.keys(a);
+  const kb = Object.keys(b);
+  if (ka.length !== kb.length) return false;
+  return ka.every((k) => samePlain((a as Record<string, unknown>)[k], (b as Record<string, unknown>)[k]));
+}
+
+/** True when both requests ask the same question (every input equal); null equals nothing. */
+export function samePageRequest(a: PageRequest | null, b: PageRequest | null): boolean {
+  if (a === null || b === null || a.mode !== b.mode) return false;
+  if (isSolveRequest(a)) return sameRequest(a, b as SolveRequest);
+  return samePlain(a.input, b.input);
+}
+
+/**
+ * Why a doubly curved input is refused, as data (the page words it in the user's unit): a radius
+ * out of range, the tool gouging (each radius's limit with the other held), a scallop height at or
+ * above the flanks' or shank's limit, a step-over at or beyond the widest that leaves a scallop.
+ */
+export type CurvedError =
+  | { readonly field: 'feedRadius' | 'crossRadius'; readonly code: 'out-of-range'; readonly gotMm: number }
+  | {
+      readonly field: 'feedRadius' | 'crossRadius';
+      readonly code: 'gouging';
+      /** What this radius must be with the other held (gouging.ts). */
+      readonly limit: RadiusLimit;
+      /** The other radius held, signed mm (Infinity: straight). */
+      readonly otherMm: number;
+    }
+  | {
+      readonly field: 'h';
+      readonly code: 'above-limit';
+      readonly limitMm: number;
+      readonly limitBy: DoublyCurvedLimits['limitBy'];
+    }
+  | { readonly field: 'interval'; readonly code: 'beyond-max'; readonly maxMm: number };
+
+/** The exact answer at a doubly curved point (mm; reaches and L arc lengths along the equator). */
+export interface CurvedSummary {
+  readonly pattern: DoublyCurvedPass['pattern'];
+  readonly intervalMm: number;
+  readonly halfWidthRightMm: number;
+  readonly halfWidthLeftMm: number;
+  readonly contactOffsetMm: number;
+  /** The highest cusp (radial), and zigzag's other one (null for one-way). */
+  readonly cuspHeightMm: number;
+  readonly otherCuspHeightMm: number | null;
+  /** The widest step-over that leaves a scallop here. */
+  readonly maxIntervalMm: number;
+  /** The flank and shank limits (radial heights). */
+  readonly limits: DoublyCurvedLimits;
+}
+
+/** The answer to a doubly curved question. */
+export type CurvedReply =
+  | {
+      readonly ok: true;
+      readonly request: CurvedRequest;
+      readonly exact: CurvedSummary;
+      /**
+       * Forward: the plane's, each cylinder's and the usual correction's step-overs beside the exact
+       * one (core compareDoublyCurved); null for the inverse problem.
+       */
+      readonly comparison: Omit<DoublyCurvedComparison, 'exact' | 'maxIntervalMm'> | null;
+      readonly solveMs: number;
+    }
+  | {
+      readonly ok: false;
+      readonly request: CurvedRequest;
+      /** The tool's and posture's errors (validate.ts), or this point's. */
+      readonly errors: readonly (InputError | CurvedError)[];
+    };
+
+/** The answer to a three-axis question. */
+export type ThreeAxisReply =
+  | {
+      readonly ok: true;
+      readonly request: ThreeAxisRequest;
+      /** L, Lxy, dz, the cusp and the equivalent lead and tilt (core solveThreeAxis). */
+      readonly answer: ThreeAxisAnswer;
+      /** Waterline on a surface of revolution: the pair of passes in the meridian plane; null otherwise. */
+      readonly waterline: {
+        readonly geometry: WaterlineGeometry;
+        readonly slopeNextDeg: number;
+        readonly radialStepMm: number;
+      } | null;
+      /**
+       * The slope sweep for the chart (200 slopes from 0 to the largest valid one) at the scallop
+       * height of this answer, with the step programmed here held constant; null without a scallop.
+       */
+      readonly sweep: SlopeSweep | null;
+      /**
+       * On a plane, the slope (degrees) where raster passes (at this raster angle; 0 for waterline)
+       * and waterline passes program the same step for this h (core rasterWaterlineCrossingDeg);
+       * null where they do not cross or without a scallop.
+       */
+      readonly crossingDeg: number | null;
+      readonly solveMs: number;
+    }
+  | { readonly ok: false; readonly request: ThreeAxisRequest; readonly errors: readonly ThreeAxisInputError[] };
+
+/** Every answer of the page's `solve` job. */
+export type PageReply = SolveReply | CurvedReply | ThreeAxisReply;
+
+/** True for a plane's or a cylinder's answer. */
+export function isSolveReply(reply: PageReply): reply is SolveReply {
+  return isSolveRequest(reply.request);
+}
