@@ -164,7 +164,7 @@ export class CalculatorApp {
       onMachine: (machine) => this.change({ ...this.state, machine }),
       onPasses: (passes) => this.change({ ...this.state, passes }),
       onSide: (key, side) => this.change({ ...this.state, [key === 'Rf' ? 'feedSide' : 'crossSide']: side }),
-      onSurfacePreset: (preset) => this.change(withCurvedPreset(this.state, preset)),
+      onSurfacePreset: (preset) => this.change(withCurvedPreset(this.state, preset, this.state.machine === '3axis')),
       onSurfaceAxis: (surfaceAxis) => this.change({ ...this.state, surfaceAxis }),
       onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
     });

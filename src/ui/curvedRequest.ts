@@ -77,7 +77,8 @@ export function describeCurvedError(e: CurvedError, state: CalculatorState): Pag
   }
   const key: RadiusKey = e.field === 'feedRadius' ? 'Rf' : 'Rc';
   const label = LABEL[key];
-  const typed = got(state.fields[key]);
+  const side = sideOf(state, key);
+  const typed = got(`${state.fields[key].trim()}${side === 'straight' ? '' : `, ${side}`}`);
   if (e.code === 'out-of-range')
     return {
       key,

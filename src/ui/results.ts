@@ -115,6 +115,8 @@ export class ResultsPanel {
         t?.answer.noScallop && shown.kind === 'current'
       );
       this.set('result-percent-diameter', '');
+      // L/2 along the surface (in the hidden five-axis details: what answers, for any reader of the page).
+      this.set('result-exact-half', t === null ? NO_VALUE : formatLen(t.answer.intervalMm / 2, unit));
       this.setMeaning('');
       this.table(t, unit, drawMode, false);
       return;

@@ -43,7 +43,9 @@ const KEY_OF: Readonly<Record<ThreeAxisInputField, FieldKey | null>> = {
 export function inUnit(message: string, state: CalculatorState, key: FieldKey | null): string {
   const typed = key === null ? null : state.fields[key].trim();
   const withTyped =
-    typed === null || typed === '' ? message : message.replace(/\(got [^)]*\)/, `(got ${typed.slice(0, 24)})`);
+    typed === null || typed === ''
+      ? message
+      : message.replace(/\(got ("?)[^)]*\)/, (_m, q: string) => `(got ${q}${typed.slice(0, 24)}${q})`);
   if (state.unit === 'mm') return withTyped;
   const u = unitSymbol(state.unit);
   return withTyped.replace(
