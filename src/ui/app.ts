@@ -251,7 +251,8 @@ export class CalculatorApp {
     const classic = request !== null && isSolveRequest(request) ? request : null;
     this.teaching?.want(classic, state.unit, false, this.kind() === 'classic' ? null : ELSEWHERE);
     this.simulation.want(classic, state.unit);
-    this.lookup.want(classic);
+    // The lookup table: a plane's, a cylinder's or a doubly curved point's (not three-axis).
+    this.lookup.want(request !== null && request.mode !== 'three-axis' ? request : null);
     this.draw();
     this.url.write(state);
   }

@@ -7,6 +7,7 @@
  */
 
 import type { CylinderSurface, Surface } from '../core/cylinder';
+import type { PrincipalRadii } from '../core/doublyCurved/types';
 import { type FieldName, PASS_FIELDS } from '../core/input/fields';
 import { sameFields } from '../core/input/raw';
 import type { LookupGrid, LookupTable, LookupTool } from '../core/lookupTable';
@@ -297,6 +298,12 @@ export type { ApproximationKey, InputError, ProcedureKey, RaTargetInput, Roughne
 export interface TableRequest {
   readonly tool: LookupTool;
   readonly grid: LookupGrid;
+  /**
+   * A doubly curved point's two signed radii (mm; issue 19): the table is then that point's
+   * (worker/data/curvedTable.ts), the tool's surface a plane placeholder. Absent for a plane or a
+   * cylinder.
+   */
+  readonly radii?: PrincipalRadii;
 }
 
 /** The answer to `table`, echoing its request: the CSV and its counts, or why there is none. */
@@ -311,6 +318,8 @@ export function sameTableRequest(a: TableRequest | null, b: TableRequest | null)
   return (
     // The tool's fields (a table's tool has no posture: the grid gives it).
     sameFields(a.tool, b.tool, PASS_FIELDS) &&
+    a.radii?.feedRadiusMm === b.radii?.feedRadiusMm &&
+    a.radii?.crossRadiusMm === b.radii?.crossRadiusMm &&
     same(a.grid.scallopHeightsMm, b.grid.scallopHeightsMm) &&
     same(a.grid.leadAnglesDeg, b.grid.leadAnglesDeg) &&
     same(a.grid.tiltAnglesDeg, b.grid.tiltAnglesDeg)

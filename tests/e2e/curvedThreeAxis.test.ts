@@ -60,6 +60,8 @@ describe.each([
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(curvedL(80, 40), 'mm'));
     expect(await page.getByTestId('side-feed-radius').inputValue()).toBe('convex');
     expect(await page.getByTestId('side-cross-radius').inputValue()).toBe('convex');
+    // The lookup table of this point can be downloaded (its columns: tests/worker/curvedTable.test.ts).
+    expect(await page.getByTestId('download-table').isEnabled()).toBe(true);
     // The three-axis results are not shown at a five-axis point.
     expect(await page.getByTestId('result-equivalent-lead').isVisible()).toBe(false);
     const c = compareDoublyCurved({
@@ -120,6 +122,7 @@ describe.each([
     // Nor are the five-axis ones (flank widths, the surface kind) in three-axis machining.
     expect(await page.getByTestId('result-width-right').isVisible()).toBe(false);
     expect(await page.getByTestId('surface-kind').isVisible()).toBe(false);
+    expect(await page.getByTestId('download-table').isEnabled()).toBe(false);
     await expect.poll(() => new URL(page.url()).searchParams.get('slope')).toBe('30');
     expect(new URL(page.url()).searchParams.get('machine')).toBe('3axis');
     expect(new URL(page.url()).searchParams.has('rho')).toBe(false);

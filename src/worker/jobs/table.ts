@@ -11,6 +11,7 @@ import { PASS_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
 import { lookupTable } from '../../core/lookupTable';
 import { validateForward } from '../../core/validate';
+import { badRadii, curvedLookupTable } from '../data/curvedTable';
 import type { TableReply, TableRequest } from '../protocol';
 
 /** Values per axis of the grid, at most (the page asks about 12 x 12 x 5). */
@@ -46,5 +47,10 @@ export function table(request: TableRequest): TableReply {
   if (toolErrors.length > 0) return { ok: false, request, reason: toolErrors.map((e) => e.message).join(' ') };
   const grid = badGrid(request);
   if (grid !== null) return { ok: false, request, reason: grid };
+  if (request.radii !== undefined) {
+    const bad = badRadii(request.radii);
+    if (bad !== null) return { ok: false, request, reason: bad };
+    return { ok: true, request, ...curvedLookupTable(t, t.pattern, request.radii, request.grid) };
+  }
   return { ok: true, request, ...lookupTable(t, request.grid) };
 }
