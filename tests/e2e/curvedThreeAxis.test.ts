@@ -5,6 +5,7 @@
  * slope typed (the programmed step of the core, copyable), a waterline link that loads and answers.
  * Expected values come from the solver core itself.
  */
+import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { compareDoublyCurved, doublyCurvedForward, doublyCurvedRadiusLimit } from '../../src/core/doublyCurved';
@@ -12,7 +13,7 @@ import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
 import { waterlineForward } from '../../src/core/threeAxis/waterlineRevolution';
 import { formatInputNumber } from '../../src/core/units';
 import { formatLen, formatLenUnit } from '../../src/ui/format';
-import { SHOTS, urlWrites, useSite } from './harness';
+import { pageSettled, ROOT, SHOTS, urlWrites, useSite } from './harness';
 
 const site = useSite('docs/curved-three-axis');
 
@@ -149,5 +150,26 @@ describe.each([
     await expect.poll(() => text(page, 'error-slope')).toMatch(/^Slope alpha must be above 0 degrees for waterline/);
     expect(await text(page, 'result-programmed-step')).toBe(DASH);
     expect(errors).toEqual([]);
+  });
+});
+
+describe('accessibility of the new inputs and results', () => {
+  const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
+  it('axe-core finds no violation at a doubly curved point, in three-axis raster and waterline', async () => {
+    for (const query of [
+      '?R=3&Rcr=1&rho=5&h=0.05&feedRadius=80&crossRadius=-40&unit=mm',
+      '?R=3&Rcr=1&machine=3axis&slope=30&rasterAngle=20&h=0.05&unit=mm',
+      '?R=3&Rcr=1&machine=3axis&slope=40&passes=waterline&feedRadius=-50&crossRadius=-6&mode=inverse&dz=0.2&unit=mm',
+    ]) {
+      const { page } = await site.open(query, DESKTOP);
+      await pageSettled(page);
+      await page.addScriptTag({ content: AXE });
+      const found = await page.evaluate(async () => {
+        type Run = { violations: Array<{ id: string; nodes: Array<{ target: string[] }> }> };
+        const axe = (window as unknown as { axe: { run(): Promise<Run> } }).axe;
+        return (await axe.run()).violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+      });
+      expect(found, query).toEqual([]);
+    }
   });
 });
