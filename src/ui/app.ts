@@ -7,8 +7,8 @@
  * 3D scene (render/scene.ts).
  */
 import { FIELDS } from '../core/input/fields';
-import type { PassPattern } from '../core/input/validate';
-import type { ProcedureKey } from '../core/procedures/procedures';
+import type { ProcedureKey } from '../core/procedures';
+import type { PassPattern } from '../core/validate';
 import type { CameraPreset, ToolScene } from '../render/scene';
 import type { RestartInfo } from '../worker/client';
 import { isSolveReply, isSolveRequest, type PageReply, type PageRequest } from '../worker/pageProtocol';
@@ -164,7 +164,7 @@ export class CalculatorApp {
       onMachine: (machine) => this.change({ ...this.state, machine }),
       onPasses: (passes) => this.change({ ...this.state, passes }),
       onSide: (key, side) => this.change({ ...this.state, [key === 'Rf' ? 'feedSide' : 'crossSide']: side }),
-      onSurfacePreset: (preset) => this.change(withCurvedPreset(this.state, preset)),
+      onSurfacePreset: (preset) => this.change(withCurvedPreset(this.state, preset, this.state.machine === '3axis')),
       onSurfaceAxis: (surfaceAxis) => this.change({ ...this.state, surfaceAxis }),
       onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
     });
@@ -251,7 +251,8 @@ export class CalculatorApp {
     const classic = request !== null && isSolveRequest(request) ? request : null;
     this.teaching?.want(classic, state.unit, false, this.kind() === 'classic' ? null : ELSEWHERE);
     this.simulation.want(classic, state.unit);
-    this.lookup.want(classic);
+    // The lookup table: a plane's, a cylinder's or a doubly curved point's (not three-axis).
+    this.lookup.want(request !== null && request.mode !== 'three-axis' ? request : null);
     this.draw();
     this.url.write(state);
   }

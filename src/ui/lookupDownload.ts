@@ -1,28 +1,34 @@
 /**
  * The lookup table download (`download-table`): the exact step-over of the tool and pattern on
- * screen over a grid of scallop heights x lead angles x tilts (core/output/lookupTable.ts), computed by
+ * screen over a grid of scallop heights x lead angles x tilts (core/lookupTable.ts), computed by
  * the worker's `table` job on its own worker, saved as a CSV in the command line's batch format
  * (mm, full precision). The button is enabled only while the inputs on screen make a valid
  * question; the file answers the tool, pattern and surface asked for at the click (its name says
  * which), and a reply is saved only if it echoes that request.
  */
 
-import { formatInputNumber } from '../core/input/units';
-import { lookupGrid } from '../core/output/lookupTable';
+import { PLANE } from '../core/cylinder';
+import { lookupGrid } from '../core/lookupTable';
+import { formatInputNumber } from '../core/units';
 import type { RestartInfo } from '../worker/client';
+import type { CurvedRequest } from '../worker/pageProtocol';
 import { type SolveRequest, sameTableRequest, type TableReply, type TableRequest } from '../worker/protocol';
 import { tableClient } from '../worker/workers';
 
-/** The table request for the tool, pattern and surface of a solve request. */
-export function tableRequestOf(request: SolveRequest): TableRequest {
+/** The table request for the tool, pattern and surface of a solve request (or of a doubly curved point's). */
+export function tableRequestOf(request: SolveRequest | CurvedRequest): TableRequest {
   const i = request.input;
+  const curved = request.mode === 'curved-forward' || request.mode === 'curved-inverse';
   const tool = {
     toolRadiusMm: i.toolRadiusMm,
     cornerRadiusMm: i.cornerRadiusMm,
     pattern: i.pattern,
-    surface: i.surface,
+    surface: curved ? PLANE : request.input.surface,
   };
-  return { tool, grid: lookupGrid(tool) };
+  const grid = lookupGrid(tool);
+  return curved
+    ? { tool, grid, radii: { feedRadiusMm: request.input.feedRadiusMm, crossRadiusMm: request.input.crossRadiusMm } }
+    : { tool, grid };
 }
 
 /**
@@ -33,7 +39,13 @@ export function tableRequestOf(request: SolveRequest): TableRequest {
 export function tableFileName(request: TableRequest): string {
   const t = request.tool;
   const s = t.surface;
-  const surface = s.kind === 'cylinder' ? `Rs${formatInputNumber(s.radiusMm)}_${s.axis}` : 'plane';
+  const r = request.radii;
+  const surface =
+    r !== undefined
+      ? `Rf${formatInputNumber(r.feedRadiusMm)}_Rc${formatInputNumber(r.crossRadiusMm)}`
+      : s.kind === 'cylinder'
+        ? `Rs${formatInputNumber(s.radiusMm)}_${s.axis}`
+        : 'plane';
   return `step-over-table_R${formatInputNumber(t.toolRadiusMm)}_Rcr${formatInputNumber(t.cornerRadiusMm)}_${t.pattern}_${surface}.csv`;
 }
 
@@ -49,7 +61,7 @@ export function tableSummary(reply: Extract<TableReply, { ok: true }>): string {
 }
 
 export class LookupDownload {
-  private current: SolveRequest | null = null;
+  private current: SolveRequest | CurvedRequest | null = null;
   private asked: TableRequest | null = null;
   private client: ReturnType<typeof tableClient> | null = null;
 
@@ -62,7 +74,7 @@ export class LookupDownload {
   }
 
   /** The inputs on screen changed: the request they ask, or null (invalid, or being typed). */
-  want(request: SolveRequest | null): void {
+  want(request: SolveRequest | CurvedRequest | null): void {
     this.current = request;
     this.button.disabled = request === null || this.asked !== null;
   }

@@ -1,11 +1,5 @@
-import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
-import {
-  APPROXIMATION_KEYS,
-  CURVATURE_ROWS,
-  PROCEDURE_KEYS,
-  PROCEDURES,
-  type ProcedureKey,
-} from '../core/procedures/procedures';
+import { APPROXIMATION_KEYS, CURVATURE_ROWS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../core/procedures';
+import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/units';
 import { type CurvedReply, isSolveReply, type PageReply, type ThreeAxisReply } from '../worker/pageProtocol';
 import type { CurvatureRow, ProcedureRow, SolveMode, SolveReply } from '../worker/protocol';
 import { setCopyValue } from './copy';
@@ -121,6 +115,8 @@ export class ResultsPanel {
         t?.answer.noScallop && shown.kind === 'current'
       );
       this.set('result-percent-diameter', '');
+      // L/2 along the surface (in the hidden five-axis details: what answers, for any reader of the page).
+      this.set('result-exact-half', t === null ? NO_VALUE : formatLen(t.answer.intervalMm / 2, unit));
       this.setMeaning('');
       this.table(t, unit, drawMode, false);
       return;

@@ -3,6 +3,7 @@
  * tested in Node. Field values are kept as text so an invalid entry is never lost.
  */
 
+import type { SurfaceAxis } from '../core/cylinder';
 import {
   FIELDS,
   type FieldId,
@@ -11,9 +12,8 @@ import {
   type PageFieldKey,
   urlParamOf,
 } from '../core/input/fields';
-import { type LengthUnit, toMm } from '../core/input/units';
-import type { PassPattern } from '../core/input/validate';
-import type { SurfaceAxis } from '../core/surfaces/cylinder';
+import { type LengthUnit, toMm } from '../core/units';
+import type { PassPattern } from '../core/validate';
 import type { SolveMode } from '../worker/protocol';
 import { choice, convertField, fieldText, formatField, isLengthField, parseField } from './fieldText';
 import { type Machine, type Passes, parseMachine, threeAxisNeeded, threeAxisSearch } from './machineState';

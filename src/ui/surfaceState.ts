@@ -117,10 +117,15 @@ function scaled(text: string, factor: number): string {
 /**
  * The sides (and texts) a preset sets. A dome keeps the radii unless they are equal (then Rc is
  * halved, or it would be the sphere); a sphere copies Rf into Rc; a cylinder keeps the curved
- * radius's side when it was curved (convex otherwise). Waterline: a bowl copies Rf into Rc, a
+ * radius's side when it was curved (convex otherwise). Waterline (`waterline` true: three-axis
+ * waterline passes on a surface of revolution): a bowl copies Rf into Rc (a spherical bowl), a
  * fillet takes Rc as an eighth of Rf unless it is already the smaller.
  */
-export function withCurvedPreset<S extends CurvedFields>(state: S, preset: CurvedPreset | WaterlinePreset): S {
+export function withCurvedPreset<S extends CurvedFields>(
+  state: S,
+  preset: CurvedPreset | WaterlinePreset,
+  waterline = false,
+): S {
   const curved = (side: RadiusSide): RadiusSide => (side === 'straight' ? 'convex' : side);
   const fields = { ...state.fields };
   let feedSide: RadiusSide;
@@ -139,7 +144,7 @@ export function withCurvedPreset<S extends CurvedFields>(state: S, preset: Curve
       break;
     case 'bowl':
       [feedSide, crossSide] = ['concave', 'concave'];
-      if (WATERLINE_PRESETS.includes(preset)) fields.Rc = state.fields.Rf;
+      if (waterline) fields.Rc = state.fields.Rf;
       break;
     case 'saddle':
       [feedSide, crossSide] = ['convex', 'concave'];

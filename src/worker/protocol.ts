@@ -6,16 +6,17 @@
  * can show a reply only when it answers the inputs on screen (sameRequest).
  */
 
+import type { CylinderSurface, Surface } from '../core/cylinder';
+import type { PrincipalRadii } from '../core/doublyCurved/types';
 import { type FieldName, PASS_FIELDS } from '../core/input/fields';
 import { sameFields } from '../core/input/raw';
-import type { ForwardInput, InputError, InverseInput, PassPattern } from '../core/input/validate';
-import type { Vec3 } from '../core/math/vec';
-import type { LookupGrid, LookupTable, LookupTool } from '../core/output/lookupTable';
-import type { ApproximationKey, CurvatureRowKey, ForwardModels, ProcedureKey } from '../core/procedures/procedures';
-import type { SweepGap } from '../core/procedures/sweepGaps';
-import type { PaperTableRow } from '../core/procedures/teaching';
-import type { RaTargetInput, RoughnessSummary } from '../core/roughness/raTarget';
-import type { CylinderSurface, Surface } from '../core/surfaces/cylinder';
+import type { LookupGrid, LookupTable, LookupTool } from '../core/lookupTable';
+import type { ApproximationKey, CurvatureRowKey, ForwardModels, ProcedureKey } from '../core/procedures';
+import type { RaTargetInput, RoughnessSummary } from '../core/raTarget';
+import type { SweepGap } from '../core/sweepGaps';
+import type { PaperTableRow } from '../core/teaching';
+import type { ForwardInput, InputError, InverseInput, PassPattern } from '../core/validate';
+import type { Vec3 } from '../core/vec';
 
 /**
  * One question: a scallop height to a step-over, a step-over to the cusp heights, or a target
@@ -292,11 +293,17 @@ export type { ApproximationKey, InputError, ProcedureKey, RaTargetInput, Roughne
 
 /**
  * The `table` job: the lookup table of one validated tool, pattern and surface (mm) over a grid
- * of scallop heights, lead angles and tilts (core/output/lookupTable.ts).
+ * of scallop heights, lead angles and tilts (core/lookupTable.ts).
  */
 export interface TableRequest {
   readonly tool: LookupTool;
   readonly grid: LookupGrid;
+  /**
+   * A doubly curved point's two signed radii (mm; issue 19): the table is then that point's
+   * (worker/data/curvedTable.ts), the tool's surface a plane placeholder. Absent for a plane or a
+   * cylinder.
+   */
+  readonly radii?: PrincipalRadii;
 }
 
 /** The answer to `table`, echoing its request: the CSV and its counts, or why there is none. */
@@ -311,6 +318,8 @@ export function sameTableRequest(a: TableRequest | null, b: TableRequest | null)
   return (
     // The tool's fields (a table's tool has no posture: the grid gives it).
     sameFields(a.tool, b.tool, PASS_FIELDS) &&
+    a.radii?.feedRadiusMm === b.radii?.feedRadiusMm &&
+    a.radii?.crossRadiusMm === b.radii?.crossRadiusMm &&
     same(a.grid.scallopHeightsMm, b.grid.scallopHeightsMm) &&
     same(a.grid.leadAnglesDeg, b.grid.leadAnglesDeg) &&
     same(a.grid.tiltAnglesDeg, b.grid.tiltAnglesDeg)

@@ -6,13 +6,13 @@
  * against the core. Pure: no DOM.
  */
 import { describe, expect, it } from 'vitest';
-import { formatInputNumber, fromMm, toMm } from '../../src/core/input/units';
 import {
   doublyCurvedForward,
   doublyCurvedInverse,
   doublyCurvedLimits,
   doublyCurvedRadiusLimit,
-} from '../../src/core/surfaces/doublyCurved';
+} from '../../src/core/doublyCurved';
+import { formatInputNumber, fromMm, toMm } from '../../src/core/units';
 import { buildRequest, fieldMessages } from '../../src/ui/request';
 import { type CalculatorState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';
 import { CURVED_PRESETS, curvedPresetOf, withCurvedPreset } from '../../src/ui/surfaceState';
@@ -32,6 +32,9 @@ function messagesOf(state: CalculatorState): Map<string, string> {
 function expectClean(text: string): void {
   expect(text.replace(/\(got [^)]*\)/g, '')).not.toMatch(/NaN|Infinity|(^|[^\d.])-0(?![\d.])/);
 }
+
+/** A dome with unequal radii (the defaults, 80 and 40 mm). */
+const dome0 = (s: CalculatorState) => withCurvedPreset(s, 'dome');
 
 describe('the doubly curved point in the state and the URL', () => {
   it('feedRadius and crossRadius round-trip, signed in the link, magnitudes with sides in the state', () => {
@@ -69,6 +72,9 @@ describe('the doubly curved point in the state and the URL', () => {
     for (const preset of CURVED_PRESETS) expect(curvedPresetOf(withCurvedPreset(s, preset)), preset).toBe(preset);
     const sphere = withCurvedPreset(s, 'sphere');
     expect(sphere.fields.Rc).toBe(sphere.fields.Rf);
+    // Five-axis, a bowl keeps the radii (a waterline bowl is spherical).
+    expect(withCurvedPreset(dome0(s), 'bowl').fields).toEqual(dome0(s).fields);
+    expect(withCurvedPreset(dome0(s), 'bowl', true).fields.Rc).toBe(dome0(s).fields.Rf);
     const dome = withCurvedPreset(sphere, 'dome');
     expect(Number(dome.fields.Rc)).toBe(Number(dome.fields.Rf) / 2);
     expect([withCurvedPreset(s, 'saddle').feedSide, withCurvedPreset(s, 'saddle').crossSide]).toEqual([

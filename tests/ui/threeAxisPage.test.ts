@@ -5,9 +5,9 @@
  * make against the core's own answer, and every refusal on its field in the user's unit. Pure.
  */
 import { describe, expect, it } from 'vitest';
-import { formatInputNumber, fromMm, toMm } from '../../src/core/input/units';
 import { slopedPlaneForward, slopedPlaneInverse } from '../../src/core/threeAxis/slopedPlane';
 import { waterlineForward, waterlineInverse } from '../../src/core/threeAxis/waterlineRevolution';
+import { formatInputNumber, fromMm, toMm } from '../../src/core/units';
 import { buildRequest, fieldMessages } from '../../src/ui/request';
 import { type CalculatorState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';
 import { WATERLINE_PRESETS, waterlinePresetOf, withCurvedPreset } from '../../src/ui/surfaceState';
@@ -56,8 +56,9 @@ describe('three-axis machining in the state and the URL', () => {
 
   it('the waterline presets set the surface of revolution and are read back from it', () => {
     const s: CalculatorState = { ...defaultState(), machine: '3axis', passes: 'waterline' };
-    for (const preset of WATERLINE_PRESETS) expect(waterlinePresetOf(withCurvedPreset(s, preset)), preset).toBe(preset);
-    const fillet = withCurvedPreset(s, 'fillet');
+    for (const preset of WATERLINE_PRESETS)
+      expect(waterlinePresetOf(withCurvedPreset(s, preset, true)), preset).toBe(preset);
+    const fillet = withCurvedPreset(s, 'fillet', true);
     expect(Number(fillet.fields.Rc)).toBeLessThan(Number(fillet.fields.Rf));
   });
 });

@@ -1,5 +1,5 @@
 /**
- * The worker's `table` job: the lookup table for the page's download (core/output/lookupTable.ts). The
+ * The worker's `table` job: the lookup table for the page's download (core/lookupTable.ts). The
  * worker trusts no caller: the tool, pattern and surface are validated again (on their own: which
  * postures a concave cylinder admits is a question for each cell) and the grid must be finite
  * numbers in the domain's ranges, at most MAX_GRID_AXIS per axis; each cell is then validated and
@@ -9,8 +9,9 @@
 
 import { PASS_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
-import { validateForward } from '../../core/input/validate';
-import { lookupTable } from '../../core/output/lookupTable';
+import { lookupTable } from '../../core/lookupTable';
+import { validateForward } from '../../core/validate';
+import { badRadii, curvedLookupTable } from '../data/curvedTable';
 import type { TableReply, TableRequest } from '../protocol';
 
 /** Values per axis of the grid, at most (the page asks about 12 x 12 x 5). */
@@ -46,5 +47,10 @@ export function table(request: TableRequest): TableReply {
   if (toolErrors.length > 0) return { ok: false, request, reason: toolErrors.map((e) => e.message).join(' ') };
   const grid = badGrid(request);
   if (grid !== null) return { ok: false, request, reason: grid };
+  if (request.radii !== undefined) {
+    const bad = badRadii(request.radii);
+    if (bad !== null) return { ok: false, request, reason: bad };
+    return { ok: true, request, ...curvedLookupTable(t, t.pattern, request.radii, request.grid) };
+  }
   return { ok: true, request, ...lookupTable(t, request.grid) };
 }

@@ -1,0 +1,175 @@
+/**
+ * Issues 19 and 20 on the page, driven as a user would in headless Chromium, at a desktop and a
+ * phone viewport: a doubly curved point chosen by its preset (the exact L and the comparison rows
+ * of the core), gouging said on the radius that must grow; the machine switched to three-axis, the
+ * slope typed (the programmed step of the core, copyable), a waterline link that loads and answers.
+ * Expected values come from the solver core itself.
+ */
+import { readFileSync } from 'node:fs';
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { compareDoublyCurved, doublyCurvedForward, doublyCurvedRadiusLimit } from '../../src/core/doublyCurved';
+import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
+import { waterlineForward } from '../../src/core/threeAxis/waterlineRevolution';
+import { formatInputNumber } from '../../src/core/units';
+import { formatLen, formatLenUnit } from '../../src/ui/format';
+import { pageSettled, ROOT, SHOTS, urlWrites, useSite } from './harness';
+
+const site = useSite('docs/curved-three-axis');
+
+const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
+const DESKTOP = { width: 1400, height: 900 };
+const PHONE = { width: 390, height: 844 };
+const DASH = '\u2014';
+
+const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
+const radio = (page: Page, group: string, value: string) =>
+  page.locator(`[data-testid="${group}"] input[value="${value}"]`);
+
+/** The core's exact L at the default radii (Rf 80 mm, Rc 40 mm) with the given sides. */
+function curvedL(feedRadiusMm: number, crossRadiusMm: number): number {
+  return doublyCurvedForward({ ...TOOL, pattern: 'one-way', feedRadiusMm, crossRadiusMm, scallopHeightMm: 0.05 })
+    .intervalMm;
+}
+
+/** The core's Lxy of raster passes up and down a plane of this slope. */
+function rasterStep(slopeDeg: number, h = 0.05): number {
+  const r = slopedPlaneForward(
+    { toolRadiusMm: 3, cornerRadiusMm: 1, slopeDeg, passes: 'raster', rasterAngleDeg: 0 },
+    h,
+  );
+  if (!r.ok) throw new Error('core refused');
+  return r.value.horizontalStepMm;
+}
+
+/** No horizontal scrolling: the page fits its viewport's width. */
+async function fitsWidth(page: Page): Promise<boolean> {
+  return page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth);
+}
+
+describe.each([
+  ['desktop', DESKTOP],
+  ['phone', PHONE],
+] as const)('doubly curved points and three-axis machining (%s)', (name, viewport) => {
+  it('a dome chosen by its preset: L and the comparison rows are the core values; in the URL', async () => {
+    const { page, errors } = await site.open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm', viewport);
+    await radio(page, 'surface-kind', 'curved').check();
+    // A bowl first, then the dome: each preset's L is the core's.
+    await page.getByTestId('surface-preset').selectOption('bowl');
+    await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(curvedL(-80, -40), 'mm'));
+    await page.getByTestId('surface-preset').selectOption('dome');
+    await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(curvedL(80, 40), 'mm'));
+    expect(await page.getByTestId('side-feed-radius').inputValue()).toBe('convex');
+    expect(await page.getByTestId('side-cross-radius').inputValue()).toBe('convex');
+    // The lookup table of this point can be downloaded (its columns: tests/worker/curvedTable.test.ts).
+    expect(await page.getByTestId('download-table').isEnabled()).toBe(true);
+    // The three-axis results are not shown at a five-axis point.
+    expect(await page.getByTestId('result-equivalent-lead').isVisible()).toBe(false);
+    const c = compareDoublyCurved({
+      ...TOOL,
+      pattern: 'one-way',
+      feedRadiusMm: 80,
+      crossRadiusMm: 40,
+      scallopHeightMm: 0.05,
+    });
+    if (!c.plane.ok || !c.cylinderAlong.ok) throw new Error('rows');
+    expect(await text(page, 'result-curved-plane-L')).toBe(formatLen(c.plane.intervalMm, 'mm'));
+    expect(await text(page, 'result-curved-cylinderAlong-L')).toBe(formatLen(c.cylinderAlong.intervalMm, 'mm'));
+    expect(await text(page, 'result-curved-cylinderAlong-real-h')).toBe(
+      formatLen(c.cylinderAlong.realScallopMm, 'mm', 'height'),
+    );
+    await expect.poll(() => urlWrites(page)).toBeGreaterThan(0);
+    await expect.poll(() => new URL(page.url()).searchParams.get('crossRadius')).toBe('40');
+    expect(new URL(page.url()).searchParams.get('feedRadius')).toBe('80');
+    expect(await fitsWidth(page)).toBe(true);
+    await page.screenshot({ path: `${SHOTS}/curved-dome-${name}.png`, fullPage: true });
+    expect(errors).toEqual([]);
+  });
+
+  it('a gouging concave radius: its message on that field with the limit, dashes in the results', async () => {
+    const { page } = await site.open('?R=3&Rcr=1&rho=5&h=0.05&feedRadius=80&crossRadius=-30&unit=mm', viewport);
+    await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(curvedL(80, -30), 'mm'));
+    await page.getByTestId('input-cross-radius').fill('2');
+    const limit = doublyCurvedRadiusLimit(TOOL, { feedRadiusMm: 80, crossRadiusMm: -2 }, 'cross');
+    await expect
+      .poll(() => text(page, 'error-cross-radius'))
+      .toContain(`at least ${formatInputNumber(limit.radiusMm ?? 0)} mm while concave`);
+    expect(await text(page, 'error-feed-radius')).toBe('');
+    expect(await text(page, 'result-exact-interval')).toBe(DASH);
+    expect(await page.getByTestId('error-cross-radius').isVisible()).toBe(true);
+    // Widening the radius past the limit answers again.
+    await page.getByTestId('input-cross-radius').fill('25');
+    await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(curvedL(80, -25), 'mm'));
+    expect(await text(page, 'error-cross-radius')).toBe('');
+  });
+
+  it('three-axis: the slope sets the posture; the programmed step Lxy is the core value, copyable', async () => {
+    const { page, errors } = await site.open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm', viewport);
+    await radio(page, 'machine-switch', '3axis').check();
+    expect(await page.getByTestId('input-rho').isVisible()).toBe(false);
+    expect(await page.getByTestId('input-tilt').isVisible()).toBe(false);
+    const slope = page.getByTestId('input-slope');
+    expect(await slope.isVisible()).toBe(true);
+    await slope.fill('50');
+    await expect.poll(() => text(page, 'result-programmed-step')).toBe(formatLenUnit(rasterStep(50), 'mm'));
+    await slope.fill('30');
+    const step = rasterStep(30);
+    await expect.poll(() => text(page, 'result-programmed-step')).toBe(formatLenUnit(step, 'mm'));
+    expect(await page.getByTestId('result-programmed-step').getAttribute('data-copy')).toBe(formatLen(step, 'mm'));
+    // L along the surface and the equivalent posture follow it.
+    expect(await text(page, 'result-exact-interval')).toMatch(/\d/);
+    expect(await text(page, 'result-equivalent-lead')).toBe('30 deg');
+    expect(await text(page, 'result-equivalent-tilt')).toBe('0 deg');
+    // Nor are the five-axis ones (flank widths, the surface kind) in three-axis machining.
+    expect(await page.getByTestId('result-width-right').isVisible()).toBe(false);
+    expect(await page.getByTestId('surface-kind').isVisible()).toBe(false);
+    expect(await page.getByTestId('download-table').isEnabled()).toBe(false);
+    await expect.poll(() => new URL(page.url()).searchParams.get('slope')).toBe('30');
+    expect(new URL(page.url()).searchParams.get('machine')).toBe('3axis');
+    expect(new URL(page.url()).searchParams.has('rho')).toBe(false);
+    expect(await fitsWidth(page)).toBe(true);
+    await page.screenshot({ path: `${SHOTS}/three-axis-raster-${name}.png`, fullPage: true });
+    expect(errors).toEqual([]);
+  });
+
+  it('a waterline link on a dome loads and answers: dz of the core; a bad slope is said on its field', async () => {
+    const { page, errors } = await site.open(
+      '?R=3&Rcr=1&machine=3axis&slope=40&passes=waterline&feedRadius=50&crossRadius=50&h=0.02&unit=mm',
+      viewport,
+    );
+    const core = waterlineForward(
+      { toolRadiusMm: 3, cornerRadiusMm: 1, slopeDeg: 40, feedRadiusMm: 50, crossRadiusMm: 50 },
+      0.02,
+    );
+    if (!core.ok) throw new Error('core refused');
+    await expect.poll(() => text(page, 'result-programmed-step')).toBe(formatLenUnit(core.value.stepDownMm, 'mm'));
+    expect(await text(page, 'result-exact-interval')).toBe(formatLenUnit(core.value.intervalMm, 'mm'));
+    expect(await radio(page, 'passes-switch', 'waterline').isChecked()).toBe(true);
+    expect(await page.getByTestId('surface-preset').inputValue()).toBe('dome');
+    await page.getByTestId('input-slope').fill('0');
+    await expect.poll(() => text(page, 'error-slope')).toMatch(/^Slope alpha must be above 0 degrees for waterline/);
+    expect(await text(page, 'result-programmed-step')).toBe(DASH);
+    expect(errors).toEqual([]);
+  });
+});
+
+describe('accessibility of the new inputs and results', () => {
+  const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
+  it('axe-core finds no violation at a doubly curved point, in three-axis raster and waterline', async () => {
+    for (const query of [
+      '?R=3&Rcr=1&rho=5&h=0.05&feedRadius=80&crossRadius=-40&unit=mm',
+      '?R=3&Rcr=1&machine=3axis&slope=30&rasterAngle=20&h=0.05&unit=mm',
+      '?R=3&Rcr=1&machine=3axis&slope=40&passes=waterline&feedRadius=-50&crossRadius=-6&mode=inverse&dz=0.2&unit=mm',
+    ]) {
+      const { page } = await site.open(query, DESKTOP);
+      await pageSettled(page);
+      await page.addScriptTag({ content: AXE });
+      const found = await page.evaluate(async () => {
+        type Run = { violations: Array<{ id: string; nodes: Array<{ target: string[] }> }> };
+        const axe = (window as unknown as { axe: { run(): Promise<Run> } }).axe;
+        return (await axe.run()).violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+      });
+      expect(found, query).toEqual([]);
+    }
+  });
+});
