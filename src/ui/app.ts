@@ -7,8 +7,8 @@
  * 3D scene (render/scene.ts).
  */
 import { FIELDS } from '../core/input/fields';
-import type { ProcedureKey } from '../core/procedures';
-import type { PassPattern } from '../core/validate';
+import type { PassPattern } from '../core/input/validate';
+import type { ProcedureKey } from '../core/procedures/procedures';
 import type { CameraPreset, ToolScene } from '../render/scene';
 import type { RestartInfo } from '../worker/client';
 import { isSolveReply, isSolveRequest, type PageReply, type PageRequest } from '../worker/pageProtocol';

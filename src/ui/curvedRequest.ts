@@ -7,8 +7,8 @@
  */
 import { FIELDS, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
-import { formatInputNumber, fromMm, toMm, unitSymbol } from '../core/units';
-import { type InputError, inputError, MIN_LENGTH_MM, validatePassAnd } from '../core/validate';
+import { formatInputNumber, fromMm, toMm, unitSymbol } from '../core/input/units';
+import { type InputError, inputError, MIN_LENGTH_MM, validatePassAnd } from '../core/input/validate';
 import { curvedErrors } from '../worker/data/curvedCheck';
 import type { CurvedError } from '../worker/pageProtocol';
 import type { BuiltRequest, PageFieldError } from './request';

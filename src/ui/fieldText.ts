@@ -4,7 +4,7 @@
  * words a switch of the link takes. Pure; re-exported by state.ts.
  */
 import { FIELDS, fieldOfPageKey, isLengthField as isLength, type PageFieldKey, urlParamOf } from '../core/input/fields';
-import { formatInputNumber, fromMm, type LengthUnit, toMm } from '../core/units';
+import { formatInputNumber, fromMm, type LengthUnit, toMm } from '../core/input/units';
 
 type FieldKey = PageFieldKey;
 type Unit = LengthUnit;

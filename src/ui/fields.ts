@@ -4,10 +4,10 @@
  * state it is given (values, ranges in the user's unit, messages); it holds no state itself.
  */
 
-import type { SurfaceAxis } from '../core/cylinder';
 import { FIELDS, fieldOfPageKey } from '../core/input/fields';
-import { unitSymbol } from '../core/units';
-import type { PassPattern } from '../core/validate';
+import { unitSymbol } from '../core/input/units';
+import type { PassPattern } from '../core/input/validate';
+import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
 import { html } from './dom';
 import type { Machine, Passes } from './machineState';

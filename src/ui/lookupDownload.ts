@@ -7,9 +7,9 @@
  * which), and a reply is saved only if it echoes that request.
  */
 
-import { PLANE } from '../core/cylinder';
-import { lookupGrid } from '../core/lookupTable';
-import { formatInputNumber } from '../core/units';
+import { formatInputNumber } from '../core/input/units';
+import { lookupGrid } from '../core/output/lookupTable';
+import { PLANE } from '../core/surfaces/cylinder';
 import type { RestartInfo } from '../worker/client';
 import type { CurvedRequest } from '../worker/pageProtocol';
 import { type SolveRequest, sameTableRequest, type TableReply, type TableRequest } from '../worker/protocol';

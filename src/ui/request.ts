@@ -6,8 +6,14 @@
 
 import { type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
-import { validateRaTarget } from '../core/raTarget';
-import { describeInputError, type InputError, inputError, validateForward, validateInverse } from '../core/validate';
+import {
+  describeInputError,
+  type InputError,
+  inputError,
+  validateForward,
+  validateInverse,
+} from '../core/input/validate';
+import { validateRaTarget } from '../core/roughness/raTarget';
 import type { PageRequest } from '../worker/pageProtocol';
 import { buildCurvedRequest, cylinderState, renameRadius } from './curvedRequest';
 import { type CalculatorState, type FieldKey, fieldInMm, parseField, sizeIsDiameter } from './state';

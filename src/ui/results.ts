@@ -1,5 +1,11 @@
-import { APPROXIMATION_KEYS, CURVATURE_ROWS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../core/procedures';
-import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/units';
+import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
+import {
+  APPROXIMATION_KEYS,
+  CURVATURE_ROWS,
+  PROCEDURE_KEYS,
+  PROCEDURES,
+  type ProcedureKey,
+} from '../core/procedures/procedures';
 import { type CurvedReply, isSolveReply, type PageReply, type ThreeAxisReply } from '../worker/pageProtocol';
 import type { CurvatureRow, ProcedureRow, SolveMode, SolveReply } from '../worker/protocol';
 import { setCopyValue } from './copy';

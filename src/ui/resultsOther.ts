@@ -5,9 +5,10 @@
  * scallop its own L really leaves) and three-axis machining (issue 20: the programmed step first,
  * Lxy or dz, copyable; then L along the surface, the cusp and the equivalent lead and tilt).
  */
-import type { DoublyCurvedRow } from '../core/doublyCurved';
-import { CORRECTED_KEYS, CURVATURE_ROWS, correctedRowKey } from '../core/procedures';
-import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/units';
+
+import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
+import { CORRECTED_KEYS, CURVATURE_ROWS, correctedRowKey } from '../core/procedures/procedures';
+import type { DoublyCurvedRow } from '../core/surfaces/doublyCurved';
 import type { CurvedReply, ThreeAxisReply } from '../worker/pageProtocol';
 import type { SolveMode } from '../worker/protocol';
 import { setCopyValue } from './copy';

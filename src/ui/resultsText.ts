@@ -2,9 +2,10 @@
  * The results' words: a procedure's note, a comparison row's note, what L and the heights mean on a
  * cylinder; lengths in the user's unit. Pure.
  */
-import type { Surface } from '../core/cylinder';
-import { CURVATURE_ROWS, type CurvatureRowKey, PROCEDURES, type ProcedureKey } from '../core/procedures';
-import { type LengthUnit, unitSymbol } from '../core/units';
+
+import { type LengthUnit, unitSymbol } from '../core/input/units';
+import { CURVATURE_ROWS, type CurvatureRowKey, PROCEDURES, type ProcedureKey } from '../core/procedures/procedures';
+import type { Surface } from '../core/surfaces/cylinder';
 import type { ProcedureNote } from '../worker/protocol';
 import { formatLen, formatLenUnit } from './format';
 

@@ -4,7 +4,7 @@
  * Ra ~ h/4 with its error. Drawn from the same Shown as the other results (dashes when invalid
  * or while no reply answers the inputs on screen; never a number for other inputs).
  */
-import { formatPercent, type LengthUnit, NO_VALUE } from '../core/units';
+import { formatPercent, type LengthUnit, NO_VALUE } from '../core/input/units';
 import { isSolveReply, type PageReply } from '../worker/pageProtocol';
 import { html } from './dom';
 import { formatLenUnit } from './format';

@@ -3,7 +3,6 @@
  * tested in Node. Field values are kept as text so an invalid entry is never lost.
  */
 
-import type { SurfaceAxis } from '../core/cylinder';
 import {
   FIELDS,
   type FieldId,
@@ -12,8 +11,9 @@ import {
   type PageFieldKey,
   urlParamOf,
 } from '../core/input/fields';
-import { type LengthUnit, toMm } from '../core/units';
-import type { PassPattern } from '../core/validate';
+import { type LengthUnit, toMm } from '../core/input/units';
+import type { PassPattern } from '../core/input/validate';
+import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
 import { choice, convertField, fieldText, formatField, isLengthField, parseField } from './fieldText';
 import { type Machine, type Passes, parseMachine, threeAxisNeeded, threeAxisSearch } from './machineState';

@@ -6,13 +6,13 @@
  * so that every refusal shows on its field, in the user's unit. Pure.
  */
 import { FIELDS } from '../core/input/fields';
+import { formatInputNumber, fromMm, unitSymbol } from '../core/input/units';
 import {
   type ThreeAxisInputError,
   type ThreeAxisInputField,
   type ThreeAxisQuantity,
   validateThreeAxis,
 } from '../core/threeAxis/validate';
-import { formatInputNumber, fromMm, unitSymbol } from '../core/units';
 import { checkThreeAxis } from '../worker/jobs/threeAxis';
 import { radiusMm } from './curvedRequest';
 import { programmedStepKey } from './machineState';

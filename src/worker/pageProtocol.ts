@@ -5,12 +5,17 @@
  * the worker boundary; lengths mm, angles degrees. Every reply echoes its request, so the page shows
  * a reply only while it answers the inputs on screen (samePageRequest).
  */
-import type { DoublyCurvedComparison, DoublyCurvedLimits, RadiusLimit } from '../core/doublyCurved';
-import type { DoublyCurvedForwardInput, DoublyCurvedInverseInput, DoublyCurvedPass } from '../core/doublyCurved/types';
+
+import type { InputError } from '../core/input/validate';
+import type { DoublyCurvedComparison, DoublyCurvedLimits, RadiusLimit } from '../core/surfaces/doublyCurved';
+import type {
+  DoublyCurvedForwardInput,
+  DoublyCurvedInverseInput,
+  DoublyCurvedPass,
+} from '../core/surfaces/doublyCurved/types';
 import type { SlopeSweep } from '../core/threeAxis/slopeSweep';
 import type { ThreeAxisAnswer, ThreeAxisInputError, ThreeAxisProblem } from '../core/threeAxis/validate';
 import type { WaterlineGeometry } from '../core/threeAxis/waterlineRevolution';
-import type { InputError } from '../core/validate';
 import { type SolveReply, type SolveRequest, sameRequest } from './protocol';
 
 /** A doubly curved point (both radii curved): a scallop height to the step-over, or a step-over to the cusps. */

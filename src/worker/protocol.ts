@@ -6,17 +6,17 @@
  * can show a reply only when it answers the inputs on screen (sameRequest).
  */
 
-import type { CylinderSurface, Surface } from '../core/cylinder';
-import type { PrincipalRadii } from '../core/doublyCurved/types';
 import { type FieldName, PASS_FIELDS } from '../core/input/fields';
 import { sameFields } from '../core/input/raw';
-import type { LookupGrid, LookupTable, LookupTool } from '../core/lookupTable';
-import type { ApproximationKey, CurvatureRowKey, ForwardModels, ProcedureKey } from '../core/procedures';
-import type { RaTargetInput, RoughnessSummary } from '../core/raTarget';
-import type { SweepGap } from '../core/sweepGaps';
-import type { PaperTableRow } from '../core/teaching';
-import type { ForwardInput, InputError, InverseInput, PassPattern } from '../core/validate';
-import type { Vec3 } from '../core/vec';
+import type { ForwardInput, InputError, InverseInput, PassPattern } from '../core/input/validate';
+import type { Vec3 } from '../core/math/vec';
+import type { LookupGrid, LookupTable, LookupTool } from '../core/output/lookupTable';
+import type { ApproximationKey, CurvatureRowKey, ForwardModels, ProcedureKey } from '../core/procedures/procedures';
+import type { SweepGap } from '../core/procedures/sweepGaps';
+import type { PaperTableRow } from '../core/procedures/teaching';
+import type { RaTargetInput, RoughnessSummary } from '../core/roughness/raTarget';
+import type { CylinderSurface, Surface } from '../core/surfaces/cylinder';
+import type { PrincipalRadii } from '../core/surfaces/doublyCurved/types';
 
 /**
  * One question: a scallop height to a step-over, a step-over to the cusp heights, or a target

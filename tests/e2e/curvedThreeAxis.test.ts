@@ -8,10 +8,14 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { compareDoublyCurved, doublyCurvedForward, doublyCurvedRadiusLimit } from '../../src/core/doublyCurved';
+import { formatInputNumber } from '../../src/core/input/units';
+import {
+  compareDoublyCurved,
+  doublyCurvedForward,
+  doublyCurvedRadiusLimit,
+} from '../../src/core/surfaces/doublyCurved';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
 import { waterlineForward } from '../../src/core/threeAxis/waterlineRevolution';
-import { formatInputNumber } from '../../src/core/units';
 import { formatLen, formatLenUnit } from '../../src/ui/format';
 import { pageSettled, ROOT, SHOTS, urlWrites, useSite } from './harness';
 

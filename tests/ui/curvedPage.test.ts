@@ -6,13 +6,13 @@
  * against the core. Pure: no DOM.
  */
 import { describe, expect, it } from 'vitest';
+import { formatInputNumber, fromMm, toMm } from '../../src/core/input/units';
 import {
   doublyCurvedForward,
   doublyCurvedInverse,
   doublyCurvedLimits,
   doublyCurvedRadiusLimit,
-} from '../../src/core/doublyCurved';
-import { formatInputNumber, fromMm, toMm } from '../../src/core/units';
+} from '../../src/core/surfaces/doublyCurved';
 import { buildRequest, fieldMessages } from '../../src/ui/request';
 import { type CalculatorState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';
 import { CURVED_PRESETS, curvedPresetOf, withCurvedPreset } from '../../src/ui/surfaceState';

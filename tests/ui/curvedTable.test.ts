@@ -6,9 +6,9 @@
  */
 import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
-import { PLANE } from '../../src/core/cylinder';
-import { doublyCurvedForward, doublyCurvedGouges, doublyCurvedLimits } from '../../src/core/doublyCurved';
-import { lookupGrid } from '../../src/core/lookupTable';
+import { lookupGrid } from '../../src/core/output/lookupTable';
+import { PLANE } from '../../src/core/surfaces/cylinder';
+import { doublyCurvedForward, doublyCurvedGouges, doublyCurvedLimits } from '../../src/core/surfaces/doublyCurved';
 import { tableFileName, tableRequestOf } from '../../src/ui/lookupDownload';
 import { buildRequest } from '../../src/ui/request';
 import { parseUrl } from '../../src/ui/state';

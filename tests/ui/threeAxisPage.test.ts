@@ -5,9 +5,9 @@
  * make against the core's own answer, and every refusal on its field in the user's unit. Pure.
  */
 import { describe, expect, it } from 'vitest';
+import { formatInputNumber, fromMm, toMm } from '../../src/core/input/units';
 import { slopedPlaneForward, slopedPlaneInverse } from '../../src/core/threeAxis/slopedPlane';
 import { waterlineForward, waterlineInverse } from '../../src/core/threeAxis/waterlineRevolution';
-import { formatInputNumber, fromMm, toMm } from '../../src/core/units';
 import { buildRequest, fieldMessages } from '../../src/ui/request';
 import { type CalculatorState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';
 import { WATERLINE_PRESETS, waterlinePresetOf, withCurvedPreset } from '../../src/ui/surfaceState';

@@ -5,6 +5,8 @@
  * below the flank and shank limits, the step-over below the widest that leaves a scallop. Used by
  * the page as it builds the request and by the worker, which trusts no caller. Mm.
  */
+
+import type { PassPattern, ToolInput } from '../../core/input/validate';
 import {
   doublyCurvedGouges,
   doublyCurvedGouging,
@@ -14,8 +16,7 @@ import {
   MIN_PRINCIPAL_RADIUS_MM,
   type PrincipalRadii,
   type RadiusLimit,
-} from '../../core/doublyCurved';
-import type { PassPattern, ToolInput } from '../../core/validate';
+} from '../../core/surfaces/doublyCurved';
 import type { CurvedError } from '../pageProtocol';
 
 /** True for a radius the model takes: straight (infinite), or a magnitude from 0.001 mm to 1e6 mm. */

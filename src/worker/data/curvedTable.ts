@@ -10,7 +10,11 @@
  * gives its reason in `error`. Mm and degrees.
  */
 
-import { csvNumber, csvText, RESULT_COLUMNS } from '../../core/csvWrite';
+import { CSV_REQUIRED_COLUMNS, csvColumnOf } from '../../core/input/fields';
+import { formatSignificant } from '../../core/input/units';
+import type { PassPattern } from '../../core/input/validate';
+import { csvNumber, csvText, RESULT_COLUMNS } from '../../core/output/csvWrite';
+import type { LookupGrid, LookupTable } from '../../core/output/lookupTable';
 import {
   doublyCurvedGouges,
   doublyCurvedSolver,
@@ -18,11 +22,7 @@ import {
   MAX_PRINCIPAL_RADIUS_MM,
   MIN_PRINCIPAL_RADIUS_MM,
   type PrincipalRadii,
-} from '../../core/doublyCurved';
-import { CSV_REQUIRED_COLUMNS, csvColumnOf } from '../../core/input/fields';
-import type { LookupGrid, LookupTable } from '../../core/lookupTable';
-import { formatSignificant } from '../../core/units';
-import type { PassPattern } from '../../core/validate';
+} from '../../core/surfaces/doublyCurved';
 
 /** The input columns: R, Rcr, rho, h, tilt, pattern, then the two radii. */
 export const CURVED_INPUT_COLUMNS = [

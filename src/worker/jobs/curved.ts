@@ -4,15 +4,16 @@
  * correction). The request is validated again (the tool and posture as validate.ts does, then this
  * point's own checks): a bad request gets a typed error reply, never an exception.
  */
+
+import { TOOL_FIELDS } from '../../core/input/fields';
+import { rawOf } from '../../core/input/raw';
+import { type InputError, inputError, MIN_LENGTH_MM, validatePassAnd } from '../../core/input/validate';
 import {
   compareDoublyCurved,
   doublyCurvedMaxIntervalMm,
   doublyCurvedSolver,
   inverseWith,
-} from '../../core/doublyCurved';
-import { TOOL_FIELDS } from '../../core/input/fields';
-import { rawOf } from '../../core/input/raw';
-import { type InputError, inputError, MIN_LENGTH_MM, validatePassAnd } from '../../core/validate';
+} from '../../core/surfaces/doublyCurved';
 import { curvedErrors } from '../data/curvedCheck';
 import type { CurvedError, CurvedReply, CurvedRequest } from '../pageProtocol';
 

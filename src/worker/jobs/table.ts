@@ -9,8 +9,8 @@
 
 import { PASS_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
-import { lookupTable } from '../../core/lookupTable';
-import { validateForward } from '../../core/validate';
+import { validateForward } from '../../core/input/validate';
+import { lookupTable } from '../../core/output/lookupTable';
 import { badRadii, curvedLookupTable } from '../data/curvedTable';
 import type { TableReply, TableRequest } from '../protocol';
 
