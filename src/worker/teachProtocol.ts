@@ -38,6 +38,9 @@ export interface SlopeChartData {
   /** The slope on screen, degrees, and the programmed step answering it, mm (null: waterline at 0). */
   readonly currentSlopeDeg: number;
   readonly currentStepMm: number | null;
+  /** At the current slope: the other strategy's step on the plane, and the scallop the constant step leaves (mm; null where none). */
+  readonly currentOtherStepMm: number | null;
+  readonly currentCuspAtConstantStepMm: number | null;
   /** The raster angle the crossing compares (the current one for raster, 0 for waterline), degrees. */
   readonly crossingRasterAngleDeg: number;
   /** Where raster and waterline program the same step for h on a plane, degrees; null: no crossing. */

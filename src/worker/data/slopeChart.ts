@@ -4,7 +4,8 @@
  * raster/waterline crossing), the programmed step at each slope, the other strategy's step on the
  * plane for the same h, the scallop a constant step leaves, and the crossing's step. Mm, degrees.
  */
-import { slopedPlaneForward } from '../../core/threeAxis/slopedPlane';
+import { slopedPlaneForward, slopedPlaneInverse } from '../../core/threeAxis/slopedPlane';
+import { waterlineInverse } from '../../core/threeAxis/waterlineRevolution';
 import type { ThreeAxisReply } from '../pageProtocol';
 import type { SlopeChartData } from '../teachProtocol';
 
@@ -25,6 +26,20 @@ export function planeStepMm(
   const r = slopedPlaneForward({ toolRadiusMm, cornerRadiusMm, slopeDeg, passes, rasterAngleDeg }, hMm);
   if (!r.ok) return null;
   return passes === 'raster' ? r.value.horizontalStepMm : r.value.stepDownMm;
+}
+
+/** The scallop (mm) the constant step leaves at the current slope (as the sweep's points), or null. */
+function cuspAtConstantStep(reply: Extract<ThreeAxisReply, { ok: true }>, stepMm: number): number | null {
+  const p = reply.request.input;
+  if (p.surface === 'revolution') {
+    if (p.case.slopeDeg === 0) return null;
+    const r = waterlineInverse(p.case, { field: 'stepDown', mm: stepMm });
+    return r.ok ? r.value.cuspHeightMm : null;
+  }
+  if (p.case.passes === 'waterline' && p.case.slopeDeg === 0) return null;
+  const field = p.case.passes === 'waterline' ? 'stepDown' : 'horizontalStep';
+  const r = slopedPlaneInverse(p.case, { field, mm: stepMm });
+  return r.ok ? r.value.cuspHeightMm : null;
 }
 
 /** The chart's data from a solved three-axis reply, or null when it has no sweep (no scallop). */
@@ -57,6 +72,8 @@ export function slopeChart(reply: Extract<ThreeAxisReply, { ok: true }>): SlopeC
     constantStepMm: sweep.programmedStepMm,
     currentSlopeDeg: c.slopeDeg,
     currentStepMm: a.passes === 'waterline' ? a.stepDownMm : a.horizontalStepMm,
+    currentOtherStepMm: onPlane ? planeStepMm(R, Rcr, hMm, other, c.slopeDeg, otherAngle) : null,
+    currentCuspAtConstantStepMm: cuspAtConstantStep(reply, sweep.programmedStepMm),
     crossingRasterAngleDeg,
     crossingDeg: reply.crossingDeg,
     crossingStepMm:
