@@ -29,6 +29,12 @@ export interface SlopeChartData {
   readonly otherStepMm: ReadonlyArray<number | null>;
   /** The scallop the constant programmed step leaves at each slope, mm; null where that step is refused. */
   readonly cuspAtConstantStepMm: ReadonlyArray<number | null>;
+  /** The runs of slopes (degrees) where the constant step leaves no cusp, and the core's reason (errors.ts code). */
+  readonly constantStepRefusals: ReadonlyArray<{
+    readonly fromDeg: number;
+    readonly toDeg: number;
+    readonly code: string;
+  }>;
   /** The largest slope at which h is valid, degrees. */
   readonly largestSlopeDeg: number;
   /** The flat floor's step-over for h (Lxy0), mm. */

@@ -59,3 +59,24 @@ export function radiusGapNotes(s: RadiusSweepData, unit: Unit): string[] {
     return `No ${g.side} L ${range} (${held}): ${why}.`;
   });
 }
+
+/** Why a constant step leaves no cusp, by the core's code (core/threeAxis/errors.ts). */
+const REFUSAL_WORDS: Readonly<Record<string, string>> = {
+  'beyond-step': 'passes that far apart leave a wall, not a scallop',
+  'shank-cuts': "the tool's shank, not its corner, would form the cusp",
+  'flank-wall': 'the flank rises to a wall before the passes meet',
+  'wall-only': 'the side rises straight from the contact: no scallop at any step',
+  'past-surface': 'the next pass would lie past the usable surface',
+  'needs-slope': 'on a flat floor a step-down means nothing',
+  gouging: 'the tool would gouge the surface',
+};
+
+/** One sentence per run of slopes where the constant step leaves no cusp, and why. */
+export function refusalNotes(d: SlopeChartData, unit: Unit): string[] {
+  const step = `${d.passes === 'raster' ? 'Lxy' : 'dz'} = ${formatLenUnit(d.constantStepMm, unit)}`;
+  return d.constantStepRefusals.map((r) => {
+    const range =
+      r.fromDeg === r.toDeg ? `at about ${deg(r.fromDeg)}` : `from about ${deg(r.fromDeg)} to ${deg(r.toDeg)}`;
+    return `No scallop for the constant ${step} ${range}: ${REFUSAL_WORDS[r.code] ?? 'the solver refuses it'}.`;
+  });
+}

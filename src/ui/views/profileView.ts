@@ -37,6 +37,7 @@ import {
   untilted,
   type ViewContext,
 } from './common';
+import { radiusWords } from './pageChartText';
 import { curvedProfileSection, drawProfile, type ProfileSection, profileSection } from './profileDrawing';
 import { type Box, grownHeightPx, type PlotRoom, profileLayout } from './profileLayout';
 import { PanZoom } from './profilePanZoom';
@@ -98,9 +99,10 @@ const NO_APPROXIMATIONS: ProfileCurveSet['approximations'] = {
 /** How the view words a doubly curved point's section. */
 function curvedWords(feedRadiusMm: number, crossRadiusMm: number, unit: Unit): SurfaceWords {
   const side = (r: number) => (r > 0 ? 'convex' : 'concave');
+  const words = (r: number) => radiusWords(r, unit);
   return {
     ariaLabel: `Cross-feed profile of three adjacent passes at a doubly curved point (Rf ${side(feedRadiusMm)}, Rc ${side(crossRadiusMm)})`,
-    note: `At a doubly curved point (Rf ${side(feedRadiusMm)} ${formatLenUnit(Math.abs(feedRadiusMm), unit)} along the feed, Rc ${side(crossRadiusMm)} ${formatLenUnit(Math.abs(crossRadiusMm), unit)} across it): the section across the feed is the circle of radius |Rc|; each pass leaves the section its two flanks make seen from the main axis, the next one turned about it by L/|Rc|; L is measured along the arc. The marks show where the plane's answer, each cylinder's and the corrected procedures put the next pass. Heights radially, from the surface.`,
+    note: `At a doubly curved point (Rf ${words(feedRadiusMm)} along the feed, Rc ${words(crossRadiusMm)} across it): the section across the feed is the circle of radius |Rc|; each pass leaves the section its two flanks make seen from the main axis, the next one turned about it by L/|Rc|; L is measured along the arc. The marks show where the plane's answer, each cylinder's and the corrected procedures put the next pass. Heights radially, from the surface.`,
     heights: 'heights above the surface',
     trueScale: "; the surface's curvature at true scale",
   };
@@ -156,7 +158,7 @@ export class ProfileView implements TeachingView {
     this.surfaceNote.hidden = true;
     const approxNote = html(
       'p',
-      { class: 'view-note', 'data-testid': 'profile-approx-note' },
+      { class: 'view-note plane-model', 'data-testid': 'profile-approx-note' },
       "The approximations' profiles are drawn at the exact step-over L (at each pass the exact answer puts), to compare their shapes with the exact profile; the step-over each of them gives is in the results table.",
     );
     this.element.append(tools, this.surfaceNote, this.plot, this.legend(), approxNote);
@@ -192,11 +194,14 @@ export class ProfileView implements TeachingView {
   private legend(): HTMLElement {
     const legend = html('p', { class: 'view-legend' });
     for (const key of PROCEDURE_KEYS) {
-      const item = html('span', { class: 'legend-item', 'data-procedure': key });
+      const item = html('span', {
+        class: key === 'exact' ? 'legend-item' : 'legend-item plane-model',
+        'data-procedure': key,
+      });
       item.append(html('span', { class: 'swatch' }), document.createTextNode(PROCEDURES[key].shortLabel));
       legend.append(item);
     }
-    const ring = html('span', { class: 'legend-item' });
+    const ring = html('span', { class: 'legend-item plane-model' });
     ring.append(html('span', { class: 'swatch swatch-faint' }), document.createTextNode('ring ellipse (a = Rb, b)'));
     legend.append(ring);
     // On a cylinder: where the plane's answer and the corrected procedures put the next pass.
@@ -265,6 +270,9 @@ export class ProfileView implements TeachingView {
     this.element.classList.toggle('on-cylinder', section.surface.kind !== 'plane');
     for (const e of this.element.querySelectorAll<HTMLElement>('.legend-item.cylinder-only'))
       e.hidden = !comparing || !keys.has(e.dataset.curvature as CurvedMarkKey);
+    // At a doubly curved point no approximation's profile (nor the ring ellipse) is drawn.
+    for (const e of this.element.querySelectorAll<HTMLElement>('.plane-model'))
+      e.hidden = input.approximations === NO_APPROXIMATIONS;
     this.surfaceNote.hidden = words.note === null;
     if (words.note !== null) this.surfaceNote.textContent = words.note;
     this.plot.setAttribute('aria-label', words.ariaLabel);

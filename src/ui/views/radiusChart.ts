@@ -84,7 +84,7 @@ class RadiusFigure {
       return li;
     };
     this.legend.replaceChildren(
-      html('li', { class: 'chart-legend-head' }, `at |${self}| = ${formatLenUnit(cur, unit)}:`),
+      html('li', { class: 'chart-legend-head' }, `at ${self} ${radiusWords(s.currentMm, unit)}:`),
       item('convex', `${self} convex`, valueAt(s, 'convex')),
       item('concave', `${self} concave`, valueAt(s, 'concave')),
       item('straight', `${self} straight`, straight),

@@ -12,7 +12,7 @@ import { formatLen, formatLenUnit } from '../format';
 import type { Unit } from '../state';
 import { html } from './common';
 import { type ChartGapBand, type ChartLine, lineChart } from './lineChart';
-import { crossingSentence, deg } from './pageChartText';
+import { crossingSentence, deg, refusalNotes } from './pageChartText';
 
 /** Height of each plot area (CSS px). */
 const PLOT_HEIGHT_PX = 240;
@@ -148,6 +148,7 @@ export class SlopeChart {
       ),
     );
     this.notes.replaceChildren(
+      ...refusalNotes(d, unit).map((t) => html('li', {}, t)),
       ...(open
         ? [
             html(

@@ -5,6 +5,7 @@
  * plane for the same h, the scallop a constant step leaves, and the crossing's step. Mm, degrees.
  */
 import { slopedPlaneForward, slopedPlaneInverse } from '../../core/threeAxis/slopedPlane';
+import type { SlopeSweep } from '../../core/threeAxis/slopeSweep';
 import { waterlineInverse } from '../../core/threeAxis/waterlineRevolution';
 import type { ThreeAxisReply } from '../pageProtocol';
 import type { SlopeChartData } from '../teachProtocol';
@@ -42,6 +43,21 @@ function cuspAtConstantStep(reply: Extract<ThreeAxisReply, { ok: true }>, stepMm
   return r.ok ? r.value.cuspHeightMm : null;
 }
 
+/** The runs of slopes where the constant step is refused, each with its reason (the core's code). */
+function refusalRuns(points: SlopeSweep['points']): SlopeChartData['constantStepRefusals'] {
+  const out: Array<{ fromDeg: number; toDeg: number; code: string }> = [];
+  let run: { fromDeg: number; toDeg: number; code: string } | null = null;
+  for (const q of points) {
+    const code = q.cuspAtProgrammedStepMm === null ? (q.programmedStepRefusal ?? 'refused') : null;
+    if (code !== null && run !== null && run.code === code) run.toDeg = q.slopeDeg;
+    else {
+      run = code === null ? null : { fromDeg: q.slopeDeg, toDeg: q.slopeDeg, code };
+      if (run !== null) out.push(run);
+    }
+  }
+  return out;
+}
+
 /** The chart's data from a solved three-axis reply, or null when it has no sweep (no scallop). */
 export function slopeChart(reply: Extract<ThreeAxisReply, { ok: true }>): SlopeChartData | null {
   const sweep = reply.sweep;
@@ -67,6 +83,7 @@ export function slopeChart(reply: Extract<ThreeAxisReply, { ok: true }>): SlopeC
     stepMm: sweep.points.map((q) => q.stepMm),
     otherStepMm: slopeDeg.map((s) => (onPlane ? planeStepMm(R, Rcr, hMm, other, s, otherAngle) : null)),
     cuspAtConstantStepMm: sweep.points.map((q) => q.cuspAtProgrammedStepMm),
+    constantStepRefusals: refusalRuns(sweep.points),
     largestSlopeDeg: sweep.largestSlopeDeg,
     flatFloorStepMm: sweep.flatFloorStepMm,
     constantStepMm: sweep.programmedStepMm,

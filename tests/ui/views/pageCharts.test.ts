@@ -4,9 +4,10 @@
  * notes, from the worker's own data for real requests. No NaN, Infinity or -0 in any of them.
  */
 import { describe, expect, it } from 'vitest';
+import { slopedPlaneInverse } from '../../../src/core/threeAxis/slopedPlane';
 import { buildRequest } from '../../../src/ui/request';
 import { parseUrl } from '../../../src/ui/state';
-import { crossingSentence, radiusGapNotes, radiusWords } from '../../../src/ui/views/pageChartText';
+import { crossingSentence, radiusGapNotes, radiusWords, refusalNotes } from '../../../src/ui/views/pageChartText';
 import { teachCurved, teachThreeAxis } from '../../../src/worker/jobs/teachPage';
 import type { CurvedRequest, ThreeAxisRequest } from '../../../src/worker/pageProtocol';
 
@@ -55,6 +56,23 @@ describe('the crossing sentence', () => {
     const w = slopeOf('?R=3&Rcr=1&machine=3axis&slope=30&passes=waterline&feedRadius=50&crossRadius=50&h=0.01&unit=in');
     clean(crossingSentence(w, 'in'));
     expect(crossingSentence(w, 'in')).toMatch(/on a plane of that slope/);
+  });
+});
+
+describe('where the constant step leaves no scallop', () => {
+  it('each run of refused slopes is said with the core inverse reason', () => {
+    const d = slopeOf('?R=3&Rcr=1&machine=3axis&slope=30&rasterAngle=90&h=0.01&unit=mm');
+    const run = d.constantStepRefusals[0];
+    if (run === undefined) throw new Error('the flat floor step is refused on steep slopes');
+    const inv = slopedPlaneInverse(
+      { toolRadiusMm: 3, cornerRadiusMm: 1, slopeDeg: run.fromDeg, passes: 'raster', rasterAngleDeg: 90 },
+      { field: 'horizontalStep', mm: d.constantStepMm },
+    );
+    expect(inv.ok).toBe(false);
+    if (!inv.ok) expect(run.code).toBe(inv.errors[0]?.code);
+    const notes = refusalNotes(d, 'in');
+    expect(notes[0]).toMatch(/^No scallop for the constant Lxy = [\d.]+ in from about [\d.]+° to [\d.]+°: /);
+    for (const n of notes) clean(n);
   });
 });
 
