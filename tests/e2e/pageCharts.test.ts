@@ -108,4 +108,25 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
       .toMatch(/plane or a cylinder at a five-axis posture/);
     expect(errors).toEqual([]);
   });
+
+  it('on a phone: waterline on a dome charts dz against slope within the screen, with its sentence', async () => {
+    const phone = { width: 390, height: 844 };
+    const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.01&unit=mm&view=chart', phone);
+    await page.goto(
+      new URL(
+        '?R=3&Rcr=1&machine=3axis&slope=30&passes=waterline&feedRadius=50&crossRadius=50&h=0.01&unit=mm&view=chart',
+        page.url(),
+      ).href,
+    );
+    const sentence = page.getByTestId('chart-crossing');
+    await expect.poll(() => sentence.textContent()).toMatch(/on a plane of that slope/);
+    const chart = page.getByTestId('chart-slope');
+    expect(await chart.locator('.chart-title').textContent()).toMatch(/^Programmed step \[mm\] against slope/);
+    expect(await page.getByTestId('chart-slope-value-step').textContent()).toMatch(/^\d+\.\d{4}$/);
+    const box = await chart.locator('svg').boundingBox();
+    expect(box?.width).toBeGreaterThan(200);
+    expect((box?.x ?? 0) + (box?.width ?? 0)).toBeLessThanOrEqual(phone.width + 1);
+    await chart.screenshot({ path: `${SHOTS}/view-chart-slope-phone.png` });
+    expect(errors).toEqual([]);
+  });
 });
