@@ -55,7 +55,7 @@ const VIEW_IDS: readonly ViewId[] = FIELDS.view.values;
 
 /** What the teaching views say while the inputs ask a doubly curved or three-axis question. */
 const ELSEWHERE =
-  'These views show a plane or a cylinder at a five-axis posture: they still show the last such inputs (the results above answer the inputs on screen).';
+  'This view shows a plane or a cylinder at a five-axis posture: it still shows the last such inputs (the results above answer the inputs on screen).';
 
 /** Observes the page from outside (the e2e build's probe); the page itself needs none. */
 export interface AppObserver {
@@ -247,9 +247,10 @@ export class CalculatorApp {
     this.fresh.want(request);
     this.messages = built.ok ? new Map<FieldKey, string>() : fieldMessages(state, built.errors);
     this.fields.render(state, this.messages);
-    // The views, the simulation and the table answer a plane's or a cylinder's question (five-axis).
+    // The simulation and the table answer a plane's or a cylinder's question (five-axis); the views
+    // draw any (those that do not draw a doubly curved or three-axis question say so).
     const classic = request !== null && isSolveRequest(request) ? request : null;
-    this.teaching?.want(classic, state.unit, false, this.kind() === 'classic' ? null : ELSEWHERE);
+    this.teaching?.want(request, state.unit, false, this.kind() === 'classic' ? null : ELSEWHERE);
     this.simulation.want(classic, state.unit);
     // The lookup table: a plane's, a cylinder's or a doubly curved point's (not three-axis).
     this.lookup.want(request !== null && request.mode !== 'three-axis' ? request : null);

@@ -6,10 +6,13 @@
  */
 import type { ProcedureKey } from '../core/procedures/procedures';
 import type { RestartInfo } from '../worker/client';
-import type { SolveRequest, TeachReply } from '../worker/protocol';
+import { isSolveRequest, type PageRequest } from '../worker/pageProtocol';
+import type { TeachReply } from '../worker/protocol';
+import type { CurvedTeachReply, PageTeachReply, ThreeAxisTeachReply } from '../worker/teachProtocol';
 import { teachClient } from '../worker/workers';
 import { FreshJob } from './freshness';
 import type { Unit } from './state';
+import type { PageViewContext } from './views/common';
 import type { TeachingPanel, ViewId } from './views/panel';
 import type { TraceDisplay } from './views/stepperView';
 import type { SurfaceSource } from './views/surfaceView';
@@ -22,7 +25,7 @@ export interface TeachingOptions {
   readonly display: TraceDisplay;
   readonly initialView: ViewId;
   readonly onLoadCondition: (c: { R: number; Rcr: number; rho: number; h: number }) => void;
-  readonly onRestart: (info: RestartInfo<SolveRequest>) => void;
+  readonly onRestart: (info: RestartInfo<PageRequest>) => void;
   /** The views' worker answered (it works again after a give-up). */
   readonly onAnswer?: () => void;
   /** The Machined surface view's simulation. */
@@ -42,7 +45,7 @@ export class TeachingLoader {
     },
   });
   /** Asked a moment after the inputs settle (a slider being dragged asks once it rests). */
-  private readonly fresh = new FreshJob<TeachReply>({
+  private readonly fresh = new FreshJob<PageTeachReply>({
     ask: (request) => this.client.request(request),
     settleMs: SETTLE_MS,
   });
@@ -56,16 +59,16 @@ export class TeachingLoader {
   private elsewhere: string | null = null;
   private highlighted: ProcedureKey | null = null;
   /** The reply and unit the views show now. */
-  private drawn: { reply: TeachReply; unit: Unit } | null = null;
+  private drawn: { reply: PageTeachReply; unit: Unit } | null = null;
 
   constructor(private readonly options: TeachingOptions) {}
 
   /**
    * The inputs changed: the request they ask (null when invalid), and the unit to show.
-   * `elsewhere`: the inputs ask a question these views do not draw (a doubly curved point,
-   * three-axis machining), said in words instead of "invalid".
+   * `elsewhere`: the inputs ask a doubly curved or three-axis question, which only some views
+   * draw: what the others say (and what all say instead of "invalid" while the inputs are).
    */
-  want(request: SolveRequest | null, unit: Unit, typing = false, elsewhere: string | null = null): void {
+  want(request: PageRequest | null, unit: Unit, typing = false, elsewhere: string | null = null): void {
     this.unit = unit;
     this.typing = typing;
     this.elsewhere = elsewhere;
@@ -123,8 +126,20 @@ export class TeachingLoader {
     const reply = shown.reply;
     if (this.drawn?.reply === reply && this.drawn.unit === this.unit) return;
     this.drawn = { reply, unit: this.unit };
-    if (reply.ok) this.panel.update({ data: reply, unit: this.unit });
-    else if (reply.reason !== null) this.panel.showMessage(reply.reason);
+    if (isSolveRequest(reply.request)) {
+      const classic = reply as TeachReply;
+      if (classic.ok) this.panel.update({ data: classic, unit: this.unit });
+      else if (classic.reason !== null) this.panel.showMessage(classic.reason);
+    } else {
+      const page = reply as CurvedTeachReply | ThreeAxisTeachReply;
+      if (page.ok) {
+        const ctx: PageViewContext =
+          'slope' in page
+            ? { kind: 'three-axis', data: page, unit: this.unit }
+            : { kind: 'curved', data: page, unit: this.unit };
+        this.panel.updatePage(ctx, this.elsewhere ?? '');
+      } else if (page.reason !== null) this.panel.showMessage(page.reason);
+    }
     this.markStale();
   }
 

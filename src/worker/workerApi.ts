@@ -2,13 +2,15 @@
  * The solver worker's API: one function per job, the large arrays of a reply marked for transfer.
  * Exposed by solver.worker.ts; its type is what the page's clients call (rpc.ts `Remote`).
  */
-import { teach, transferables } from './api';
+import { transferables } from './api';
 import { solvePage } from './jobs/page';
 import { table } from './jobs/table';
-import { isSolveReply, type PageReply, type PageRequest } from './pageProtocol';
+import { teachPage } from './jobs/teachPage';
+import { isSolveReply, isSolveRequest, type PageReply, type PageRequest } from './pageProtocol';
 import type { SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
 import { transfer } from './rpc';
 import { type SimulateReply, SimulationRunner, simulationTransferables } from './simulate';
+import type { PageTeachReply } from './teachProtocol';
 
 /** A newer `simulate` or `cancelSimulation` stops the running simulation between steps. */
 const simulations = new SimulationRunner();
@@ -18,9 +20,10 @@ export const workerApi = {
     const reply = solvePage(request);
     return isSolveReply(reply) ? transfer(reply, transferables(reply)) : reply;
   },
-  teach(request: SolveRequest): TeachReply {
-    const reply = teach(request);
-    return transfer(reply, transferables(reply));
+  /** The teaching views' data: a plane's or a cylinder's (its arrays transferred), a doubly curved point's, three-axis'. */
+  teach(request: PageRequest): PageTeachReply {
+    const reply = teachPage(request);
+    return isSolveRequest(reply.request) ? transfer(reply, transferables(reply as TeachReply)) : reply;
   },
   /** The lookup table for the page's download (a string: nothing to transfer). */
   table(request: TableRequest): TableReply {

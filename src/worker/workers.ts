@@ -6,14 +6,8 @@
 import solverWorkerUrl from 'virtual:solver-worker-url';
 import { JobClient, type RestartInfo } from './client';
 import { type PageReply, type PageRequest, samePageRequest } from './pageProtocol';
-import {
-  type SolveRequest,
-  sameRequest,
-  sameTableRequest,
-  type TableReply,
-  type TableRequest,
-  type TeachReply,
-} from './protocol';
+import { sameTableRequest, type TableReply, type TableRequest } from './protocol';
+import type { PageTeachReply } from './teachProtocol';
 
 /** The worker for `solve`: results and the 3D scene. */
 export function createSolverWorker(): Worker {
@@ -57,11 +51,11 @@ export function solveClient(events: JobEvents<PageRequest, PageReply>): JobClien
 }
 
 /** The `teach` job on its own worker. */
-export function teachClient(events: JobEvents<SolveRequest, TeachReply>): JobClient<SolveRequest, TeachReply> {
+export function teachClient(events: JobEvents<PageRequest, PageTeachReply>): JobClient<PageRequest, PageTeachReply> {
   return new JobClient({
     createWorker: createViewsWorker,
     call: (api, r) => api.teach(r),
-    same: sameRequest,
+    same: samePageRequest,
     ...events,
   });
 }

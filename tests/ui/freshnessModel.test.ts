@@ -268,7 +268,7 @@ function teaching(): Subject {
     display: { showTraceFrame: () => undefined },
     initialView: 'profile',
     onLoadCondition: () => undefined,
-    onRestart: (info: RestartInfo<SolveRequest>) => {
+    onRestart: (info: RestartInfo<PageRequest>) => {
       if (info.gaveUp) subject.gaveUpOn.push(info.request);
     },
     surface: { setOpen: () => undefined, attach: () => undefined },

@@ -10,8 +10,10 @@ import { formatSignificant, fromMm, unitSymbol } from '../../core/input/units';
 import { APPROXIMATION_KEYS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import type { Sweep, SweepGap } from '../../worker/protocol';
 import { formatDeg, formatLen, formatSignedLen, formatSignedPercent } from '../format';
-import { html, type TeachingView, type ViewContext } from './common';
+import { html, type PageKind, type PageViewContext, type TeachingView, type ViewContext } from './common';
 import { type ChartGapBand, type ChartLine, lineChart } from './lineChart';
+import { RadiusCharts } from './radiusChart';
+import { SlopeChart } from './slopeChart';
 import './chart.css';
 
 /** Height of each plot area (CSS px): tall enough to read the curves apart. */
@@ -31,7 +33,7 @@ interface ChartData {
   readonly title: string;
   readonly x: readonly number[];
   readonly logX: boolean;
-  readonly lines: readonly ChartLine[];
+  readonly lines: ReadonlyArray<ChartLine & { readonly key: ProcedureKey }>;
   /** Factor from the lines' values to the axis unit. */
   readonly yFactor: number;
   readonly gaps: { readonly [K in ProcedureKey]: readonly SweepGap[] };
@@ -76,6 +78,13 @@ export class ChartView implements TeachingView {
   private ctx: ViewContext | null = null;
   private highlighted: ProcedureKey | null = null;
   private drawnWidthPx = 0;
+  /** The five-axis charts on a plane or a cylinder (hidden while a page question is drawn). */
+  private readonly classic = html('div', { class: 'chart-classic' });
+  /** Three-axis machining's chart, and a doubly curved point's (issues 20 and 19). */
+  readonly pageKinds: readonly PageKind[] = ['curved', 'three-axis'];
+  private readonly slope = new SlopeChart();
+  private readonly radius = new RadiusCharts();
+  private pageCtx: PageViewContext | null = null;
 
   constructor() {
     this.errorUnit.append(
@@ -91,10 +100,15 @@ export class ChartView implements TeachingView {
     this.rhoAxis.addEventListener('change', () => this.ctx && this.rebuild(this.ctx));
     const tools = html('div', { class: 'view-tools' });
     tools.append(this.errorUnit, this.rhoAxis);
-    this.element.append(this.summary, this.lead.figure, tools, this.error.figure, this.tilt.figure);
+    this.classic.append(this.summary, this.lead.figure, tools, this.error.figure, this.tilt.figure);
+    this.slope.element.hidden = true;
+    this.radius.element.hidden = true;
+    this.element.append(this.classic, this.slope.element, this.radius.element);
     // The drawing is laid out for its width: draw again when the box changes width.
     new ResizeObserver(() => {
-      if (this.ctx && Math.abs(this.width() - this.drawnWidthPx) > 4) this.rebuild(this.ctx);
+      if (Math.abs(this.width() - this.drawnWidthPx) <= 4) return;
+      if (this.pageCtx !== null) this.drawPage(this.pageCtx);
+      else if (this.ctx) this.rebuild(this.ctx);
     }).observe(this.element);
   }
 
@@ -104,7 +118,26 @@ export class ChartView implements TeachingView {
 
   update(ctx: ViewContext): void {
     this.ctx = ctx;
+    this.pageCtx = null;
+    this.classic.hidden = false;
+    this.slope.element.hidden = true;
+    this.radius.element.hidden = true;
     this.rebuild(ctx);
+  }
+
+  /** A three-axis question's chart "step against slope", or a doubly curved point's L against each radius. */
+  updatePage(ctx: PageViewContext): void {
+    this.pageCtx = ctx;
+    this.drawPage(ctx);
+  }
+
+  private drawPage(ctx: PageViewContext): void {
+    this.drawnWidthPx = this.width();
+    this.classic.hidden = true;
+    this.slope.element.hidden = ctx.kind !== 'three-axis';
+    this.radius.element.hidden = ctx.kind !== 'curved';
+    if (ctx.kind === 'three-axis') this.slope.draw(ctx.data.slope, ctx.unit, this.drawnWidthPx);
+    else this.radius.draw(ctx.data.feed, ctx.data.cross, ctx.unit, this.drawnWidthPx);
   }
 
   private rebuild(ctx: ViewContext): void {
@@ -240,7 +273,9 @@ export class ChartView implements TeachingView {
   }
 
   setVisible(visible: boolean): void {
-    if (visible && this.ctx) this.rebuild(this.ctx);
+    if (!visible) return;
+    if (this.pageCtx !== null) this.drawPage(this.pageCtx);
+    else if (this.ctx) this.rebuild(this.ctx);
   }
 }
 

@@ -2,6 +2,7 @@
 import type { FIELDS } from '../../core/input/fields';
 import type { ProcedureKey } from '../../core/procedures/procedures';
 import type { TeachReply } from '../../worker/protocol';
+import type { CurvedTeachReply, ThreeAxisTeachReply } from '../../worker/teachProtocol';
 import type { Unit } from '../state';
 
 export type TeachOk = Extract<TeachReply, { ok: true }>;
@@ -16,11 +17,26 @@ export interface ViewContext {
 /** A teaching view's id, as the link's `view=` names it (the field registry's values). */
 export type ViewId = (typeof FIELDS.view.values)[number];
 
+/** The kinds of question beyond a plane or a cylinder that a view may draw. */
+export type PageKind = 'curved' | 'three-axis';
+
+/**
+ * A doubly curved point's or three-axis machining's teaching data (a reply to the inputs on
+ * screen, checked by the page), and the unit to show.
+ */
+export type PageViewContext =
+  | { readonly kind: 'curved'; readonly data: Extract<CurvedTeachReply, { ok: true }>; readonly unit: Unit }
+  | { readonly kind: 'three-axis'; readonly data: Extract<ThreeAxisTeachReply, { ok: true }>; readonly unit: Unit };
+
 export interface TeachingView {
   readonly id: ViewId;
   readonly title: string;
   readonly element: HTMLElement;
   update(ctx: ViewContext): void;
+  /** The kinds of page question this view draws (with updatePage); none when absent. */
+  readonly pageKinds?: readonly PageKind[];
+  /** Draws a page question's data of one of its pageKinds. */
+  updatePage?(ctx: PageViewContext): void;
   /** Emphasises one procedure (or none). */
   highlight(key: ProcedureKey | null): void;
   /** Called when the view is shown or hidden (charts size themselves when shown). */

@@ -8,15 +8,20 @@ import type { ProcedureKey } from '../../core/procedures/procedures';
 import { extent, linearScale, linePath, logScale, type Scale, tickLabel } from './chartScale';
 import { svg } from './common';
 
-/** One procedure's line: a value (or null) per x sample. */
+/**
+ * One line: a value (or null) per x sample. Coloured by `key` as a procedure's (the default) or,
+ * with `colourBy: 'series'`, as one of chart.css's series (`data-series`: step, other, floor...).
+ */
 export interface ChartLine {
-  readonly key: ProcedureKey;
+  readonly key: ProcedureKey | string;
   readonly values: ReadonlyArray<number | null>;
+  readonly colourBy?: 'procedure' | 'series';
 }
 
-/** Where one procedure has no answer along x (data units of x). */
+/** Where one line has no answer along x (data units of x); coloured as its line. */
 export interface ChartGapBand {
-  readonly key: ProcedureKey;
+  readonly key: ProcedureKey | string;
+  readonly colourBy?: 'procedure' | 'series';
   readonly from: number;
   readonly to: number;
   readonly reason: string;
@@ -35,6 +40,8 @@ export interface LineChartSpec {
   readonly gaps: readonly ChartGapBand[];
   /** The current angle, dashed; not drawn when outside the charted range. */
   readonly markerX: number;
+  /** A dot at the current point (x, y in the lines' units), or none. */
+  readonly markerPoint?: { readonly x: number; readonly y: number } | null;
   readonly xLabel: string;
   readonly yLabel: string;
   /** Read by a screen reader in place of the picture. */
@@ -70,6 +77,7 @@ export function lineChart(spec: LineChartSpec): SVGSVGElement {
   const x = xScale(spec, left, right);
   const lines = spec.lines.map((l) => ({
     key: l.key,
+    colourBy: l.colourBy,
     values: l.values.map((v) => (v === null ? null : v * spec.yFactor)),
   }));
   const range = extent(lines.map((l) => l.values));
@@ -98,7 +106,7 @@ export function lineChart(spec: LineChartSpec): SVGSVGElement {
     const x1 = x.toPixel(g.from);
     const band = svg('rect', {
       class: 'chart-gap',
-      'data-procedure': g.key,
+      [`data-${g.colourBy ?? 'procedure'}`]: g.key,
       x: x1,
       y: top + 1 + (i % 6) * GAP_BAND_PX,
       width: Math.max(2, x.toPixel(g.to) - x1),
@@ -111,7 +119,7 @@ export function lineChart(spec: LineChartSpec): SVGSVGElement {
     root.append(
       svg('path', {
         class: line.key === 'exact' ? 'chart-line chart-line-exact' : 'chart-line',
-        'data-procedure': line.key,
+        [`data-${line.colourBy ?? 'procedure'}`]: line.key,
         d: linePath(spec.x, line.values, x.toPixel, y.toPixel),
       }),
     );
@@ -119,6 +127,11 @@ export function lineChart(spec: LineChartSpec): SVGSVGElement {
   if (spec.markerX >= x.min && spec.markerX <= x.max) {
     const px = x.toPixel(spec.markerX);
     root.append(svg('line', { class: 'chart-marker', x1: px, x2: px, y1: top, y2: bottom }));
+  }
+  const p = spec.markerPoint;
+  if (p && Number.isFinite(p.y) && p.x >= x.min && p.x <= x.max) {
+    const py = y.toPixel(p.y * spec.yFactor);
+    root.append(svg('circle', { class: 'chart-point', cx: x.toPixel(p.x).toFixed(1), cy: py.toFixed(1), r: 4 }));
   }
   return root;
 }

@@ -4,7 +4,7 @@
  */
 import type { ProcedureKey } from '../../core/procedures/procedures';
 import { ChartView } from './chartView';
-import { html, type TeachingView, type ViewContext, type ViewId } from './common';
+import { html, type PageViewContext, type TeachingView, type ViewContext, type ViewId } from './common';
 import { FormulasView } from './formulasView';
 import { ProfileView } from './profileView';
 import { StepperView, type TraceDisplay } from './stepperView';
@@ -21,6 +21,12 @@ export class TeachingPanel {
   private readonly message = html('p', { class: 'view-note views-message', 'data-testid': 'views-message' });
   private active: ViewId;
   private ctx: ViewContext | null = null;
+  /** A doubly curved or three-axis reply to the inputs on screen, or null (the views show ctx's). */
+  private pageCtx: PageViewContext | null = null;
+  /** What the views that do not draw pageCtx's kind say (they keep their last picture, greyed). */
+  private elsewhere = '';
+  /** Why the data does not answer the inputs on screen (the loader's word), or null. */
+  private staleText: string | null = null;
   private highlighted: ProcedureKey | null = null;
 
   constructor(
@@ -104,15 +110,28 @@ export class TeachingPanel {
       tab?.setAttribute('tabindex', on ? '0' : '-1');
       const panel = view.element.parentElement;
       if (panel) panel.hidden = !on;
-      if (on && this.ctx) view.update(this.ctx);
+      if (on) this.updateView(view);
       view.setVisible?.(on);
     }
     this.root.dataset.activeView = id;
+    this.showStale();
+  }
+
+  /** True when the view draws the page question on screen (none is: every view draws ctx). */
+  private draws(view: TeachingView): boolean {
+    return this.pageCtx === null || (view.pageKinds?.includes(this.pageCtx.kind) ?? false);
+  }
+
+  private updateView(view: TeachingView): void {
+    if (this.pageCtx !== null && this.draws(view)) view.updatePage?.(this.pageCtx);
+    else if (this.ctx !== null) view.update(this.ctx);
   }
 
   /** Data that answers the inputs on screen: only the visible view redraws now; the others when shown. */
   update(ctx: ViewContext): void {
     this.ctx = ctx;
+    this.pageCtx = null;
+    this.showStale();
     this.message.hidden = true;
     this.root.classList.remove('no-data');
     for (const view of this.views) {
@@ -122,10 +141,33 @@ export class TeachingPanel {
   }
 
   /**
+   * A doubly curved point's or three-axis machining's data that answers the inputs on screen: the
+   * views that draw its kind draw it (the visible one now); the others keep their last picture,
+   * greyed, under `elsewhere`.
+   */
+  updatePage(ctx: PageViewContext, elsewhere: string): void {
+    this.pageCtx = ctx;
+    this.elsewhere = elsewhere;
+    this.message.hidden = true;
+    this.root.classList.remove('no-data');
+    for (const view of this.views) if (view.id === this.active && this.draws(view)) view.updatePage?.(ctx);
+    this.showStale();
+    this.highlight(this.highlighted);
+  }
+
+  /**
    * Marks every view as out of date (`text` says why) or current again (null). While marked, the
-   * views keep their last picture, greyed, under the note; their numbers are not the inputs'.
+   * views keep their last picture, greyed, under the note; their numbers are not the inputs'. A
+   * view that does not draw the page question on screen stays marked.
    */
   setStale(text: string | null): void {
+    this.staleText = text;
+    this.showStale();
+  }
+
+  private showStale(): void {
+    const active = this.views.find((v) => v.id === this.active);
+    const text = this.staleText ?? (active !== undefined && !this.draws(active) ? this.elsewhere : null);
     this.root.classList.toggle('stale', text !== null);
     this.staleNote.hidden = text === null;
     if (this.staleNote.textContent !== (text ?? '')) this.staleNote.textContent = text ?? '';

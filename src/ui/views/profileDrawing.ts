@@ -9,7 +9,8 @@
  * above it) and mapped to the section by surfaceGeometry.ts, the heights exaggerated by k and the
  * surface at true scale. A plane is the surface of infinite radius: there the map is (s, h) -> (s,
  * h) and each line along the surface is one straight segment. A new surface brings its section's
- * map and its pass profile (data), not a branch here.
+ * map and its pass profile (data), not a branch here: a doubly curved point brings the circle of
+ * radius Rc and the pass its two flanks make (curvedProfileSection).
  */
 
 import { lowestPassHeight, monotoneProfile, sectionRadiusMm } from '../../core/output/sectionProfile';
@@ -18,6 +19,7 @@ import { PROCEDURE_KEYS, type ProcedureKey } from '../../core/procedures/procedu
 import type { Surface } from '../../core/surfaces/cylinder';
 import { PLANE } from '../../core/surfaces/cylinder';
 import type { CylinderCurves, ProfileCurveSet } from '../../worker/protocol';
+import type { CurvedSectionData } from '../../worker/teachProtocol';
 import { formatLen } from '../format';
 import type { Unit } from '../state';
 import { svg, type TeachOk } from './common';
@@ -30,8 +32,14 @@ export interface ProfileSection {
   readonly passProfile: Float64Array;
   /** The ring ellipse the pass profile is offset from (same coordinates), or null where it is not. */
   readonly ringEllipse: Float64Array | null;
-  /** Where the plane's answer and the corrected procedures put the next pass (none on a plane). */
-  readonly comparison: CylinderCurves['comparison'];
+  /**
+   * Where the plane's answer and the corrected procedures put the next pass (none on a plane); at a
+   * doubly curved point also each cylinder's (`cylinderAlong`, `cylinderAcross`).
+   */
+  readonly comparison: ReadonlyArray<{
+    readonly key: CylinderCurves['comparison'][number]['key'] | 'cylinderAlong' | 'cylinderAcross';
+    readonly intervalMm: number | null;
+  }>;
 }
 
 /**
@@ -48,6 +56,20 @@ export function profileSection(data: TeachOk): ProfileSection {
     passProfile: c.passProfile,
     ringEllipse: c.surface.axis === 'feed' ? c.ringEllipse : null,
     comparison: c.comparison,
+  };
+}
+
+/**
+ * The section at a doubly curved point (the worker's data/curvedSection.ts): across the feed the
+ * circle of radius Rc, drawn as the cylinder of that radius with its axis along the feed; no ring
+ * ellipse (the pass is not the plane profile turned about one axis).
+ */
+export function curvedProfileSection(data: CurvedSectionData): ProfileSection {
+  return {
+    surface: { kind: 'cylinder', radiusMm: data.crossRadiusMm, axis: 'feed' },
+    passProfile: data.passProfile,
+    ringEllipse: null,
+    comparison: data.comparison,
   };
 }
 

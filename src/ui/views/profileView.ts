@@ -25,10 +25,20 @@ import {
   type ProcedureKey,
 } from '../../core/procedures/procedures';
 import type { Surface } from '../../core/surfaces/cylinder';
+import type { ExactSummary, ProfileCurveSet } from '../../worker/protocol';
 import { formatLenUnit } from '../format';
 import type { Unit } from '../state';
-import { html, svg, type TeachingView, untilted, type ViewContext } from './common';
-import { drawProfile, profileSection } from './profileDrawing';
+import {
+  html,
+  type PageKind,
+  type PageViewContext,
+  svg,
+  type TeachingView,
+  untilted,
+  type ViewContext,
+} from './common';
+import { radiusWords } from './pageChartText';
+import { curvedProfileSection, drawProfile, type ProfileSection, profileSection } from './profileDrawing';
 import { type Box, grownHeightPx, type PlotRoom, profileLayout } from './profileLayout';
 import { PanZoom } from './profilePanZoom';
 import { drawScaleBars } from './profileScaleBars';
@@ -64,6 +74,40 @@ function surfaceWords(surface: Surface, unit: Unit): SurfaceWords {
   };
 }
 
+/** What one drawing of the view takes. */
+interface Drawable {
+  readonly section: ProfileSection;
+  readonly exact: ExactSummary;
+  readonly approximations: ProfileCurveSet['approximations'];
+  readonly untilted: boolean;
+  readonly unit: Unit;
+  readonly toolRadiusMm: number;
+  readonly words: SurfaceWords;
+}
+
+type CurvedMarkKey = ProfileSection['comparison'][number]['key'];
+
+/** A doubly curved point's section shows no approximation's profile (they assume a plane). */
+const NO_APPROXIMATIONS: ProfileCurveSet['approximations'] = {
+  sekine: null,
+  redonnet: null,
+  bedi: null,
+  osculating: null,
+  cornerBall: null,
+};
+
+/** How the view words a doubly curved point's section. */
+function curvedWords(feedRadiusMm: number, crossRadiusMm: number, unit: Unit): SurfaceWords {
+  const side = (r: number) => (r > 0 ? 'convex' : 'concave');
+  const words = (r: number) => radiusWords(r, unit);
+  return {
+    ariaLabel: `Cross-feed profile of three adjacent passes at a doubly curved point (Rf ${side(feedRadiusMm)}, Rc ${side(crossRadiusMm)})`,
+    note: `At a doubly curved point (Rf ${words(feedRadiusMm)} along the feed, Rc ${words(crossRadiusMm)} across it): the section across the feed is the circle of radius |Rc|; each pass leaves the section its two flanks make seen from the main axis, the next one turned about it by L/|Rc|; L is measured along the arc. The marks show where the plane's answer, each cylinder's and the corrected procedures put the next pass. Heights radially, from the surface.`,
+    heights: 'heights above the surface',
+    trueScale: "; the surface's curvature at true scale",
+  };
+}
+
 export class ProfileView implements TeachingView {
   readonly id = 'profile';
   readonly title = 'Cross-feed profile';
@@ -89,14 +133,17 @@ export class ProfileView implements TeachingView {
   /** On a curved surface: what the section shows (which axis, how the passes are made). */
   private readonly surfaceNote = html('p', { class: 'view-note', 'data-testid': 'profile-cylinder-note' });
   /** Where "Zoom to cusp" goes (display coordinates). */
-  private cuspAt: { x: number; y: number } | null = null;
+  private cuspAt: { x: number; y: number; widthMm: number } | null = null;
+  /** A doubly curved point's data shown (then ctx is the last plane's or cylinder's), or null. */
+  private pageCtx: PageViewContext | null = null;
+  readonly pageKinds: readonly PageKind[] = ['curved'];
 
   constructor() {
     this.exaggeration.append(html('option', { value: 'auto' }, 'vertical: auto'));
     for (const k of [1, 5, 20, 100])
       this.exaggeration.append(html('option', { value: String(k) }, k === 1 ? 'true scale' : `vertical x${k}`));
     this.exaggeration.value = 'auto';
-    this.exaggeration.addEventListener('change', () => this.ctx && this.update(this.ctx));
+    this.exaggeration.addEventListener('change', () => this.redraw());
     const tools = html('div', { class: 'view-tools' });
     const zoomIn = html('button', { type: 'button', 'aria-label': 'Zoom in' }, '+');
     const zoomOut = html('button', { type: 'button', 'aria-label': 'Zoom out' }, '\u2212');
@@ -111,7 +158,7 @@ export class ProfileView implements TeachingView {
     this.surfaceNote.hidden = true;
     const approxNote = html(
       'p',
-      { class: 'view-note', 'data-testid': 'profile-approx-note' },
+      { class: 'view-note plane-model', 'data-testid': 'profile-approx-note' },
       "The approximations' profiles are drawn at the exact step-over L (at each pass the exact answer puts), to compare their shapes with the exact profile; the step-over each of them gives is in the results table.",
     );
     this.element.append(tools, this.surfaceNote, this.plot, this.legend(), approxNote);
@@ -131,7 +178,7 @@ export class ProfileView implements TeachingView {
   private readonly plotObserver = new ResizeObserver(() => {
     // Only a new width or a new stylesheet height calls for a new drawing: the plot's own growth
     // (grownPx, set by the drawing) does not.
-    if (this.readPlotSize() && this.ctx !== null && this.plotWidthPx > 0) this.update(this.ctx);
+    if (this.readPlotSize() && this.plotWidthPx > 0) this.redraw();
   });
 
   /** Reads the plot's laid-out size; true when its width or its stylesheet height changed. */
@@ -147,11 +194,14 @@ export class ProfileView implements TeachingView {
   private legend(): HTMLElement {
     const legend = html('p', { class: 'view-legend' });
     for (const key of PROCEDURE_KEYS) {
-      const item = html('span', { class: 'legend-item', 'data-procedure': key });
+      const item = html('span', {
+        class: key === 'exact' ? 'legend-item' : 'legend-item plane-model',
+        'data-procedure': key,
+      });
       item.append(html('span', { class: 'swatch' }), document.createTextNode(PROCEDURES[key].shortLabel));
       legend.append(item);
     }
-    const ring = html('span', { class: 'legend-item' });
+    const ring = html('span', { class: 'legend-item plane-model' });
     ring.append(html('span', { class: 'swatch swatch-faint' }), document.createTextNode('ring ellipse (a = Rb, b)'));
     legend.append(ring);
     // On a cylinder: where the plane's answer and the corrected procedures put the next pass.
@@ -163,25 +213,74 @@ export class ProfileView implements TeachingView {
       );
       legend.append(item);
     }
+    // At a doubly curved point: where each cylinder's answer puts the next pass.
+    for (const [key, label] of [
+      ['cylinderAlong', 'Cylinder along the feed (Rf ignored)'],
+      ['cylinderAcross', 'Cylinder across the feed (Rc ignored)'],
+    ] as const) {
+      const item = html('span', { class: 'legend-item cylinder-only', 'data-curvature': key });
+      item.append(html('span', { class: 'swatch' }), document.createTextNode(`${label}: next pass`));
+      legend.append(item);
+    }
     return legend;
   }
 
   update(ctx: ViewContext): void {
     this.ctx = ctx;
+    this.pageCtx = null;
     const { data, unit } = ctx;
     const section = profileSection(data);
-    const words = surfaceWords(section.surface, unit);
+    this.draw({
+      section,
+      exact: data.exact,
+      approximations: data.curves.approximations,
+      untilted: untilted(ctx),
+      unit,
+      toolRadiusMm: data.forward.toolRadiusMm,
+      words: surfaceWords(section.surface, unit),
+    });
+  }
+
+  /** A doubly curved point: its section across the feed (the circle of radius Rc) with the exact passes and the comparison marks. */
+  updatePage(ctx: PageViewContext): void {
+    if (ctx.kind !== 'curved') return;
+    this.pageCtx = ctx;
+    const d = ctx.data.section;
+    this.draw({
+      section: curvedProfileSection(d),
+      exact: d.exact,
+      approximations: NO_APPROXIMATIONS,
+      untilted: d.untilted,
+      unit: ctx.unit,
+      toolRadiusMm: d.toolRadiusMm,
+      words: curvedWords(d.feedRadiusMm, d.crossRadiusMm, ctx.unit),
+    });
+  }
+
+  /** Draws again what is shown (a new size, a new exaggeration). */
+  private redraw(): void {
+    if (this.pageCtx !== null) this.updatePage(this.pageCtx);
+    else if (this.ctx !== null) this.update(this.ctx);
+  }
+
+  private draw(input: Drawable): void {
+    const { section, words, unit } = input;
     const comparing = section.comparison.length > 0;
+    const keys = new Set(section.comparison.map((c) => c.key));
     this.element.classList.toggle('on-cylinder', section.surface.kind !== 'plane');
-    for (const e of this.element.querySelectorAll<HTMLElement>('.legend-item.cylinder-only')) e.hidden = !comparing;
+    for (const e of this.element.querySelectorAll<HTMLElement>('.legend-item.cylinder-only'))
+      e.hidden = !comparing || !keys.has(e.dataset.curvature as CurvedMarkKey);
+    // At a doubly curved point no approximation's profile (nor the ring ellipse) is drawn.
+    for (const e of this.element.querySelectorAll<HTMLElement>('.plane-model'))
+      e.hidden = input.approximations === NO_APPROXIMATIONS;
     this.surfaceNote.hidden = words.note === null;
     if (words.note !== null) this.surfaceNote.textContent = words.note;
     this.plot.setAttribute('aria-label', words.ariaLabel);
-    const ex = data.exact;
-    const wanted = this.verticalScale(ctx);
+    const ex = input.exact;
+    const wanted = this.verticalScale(input.toolRadiusMm, ex);
     const room = this.plotRoom();
     const layout = profileLayout({
-      toolRadiusMm: data.forward.toolRadiusMm,
+      toolRadiusMm: input.toolRadiusMm,
       intervalMm: ex.intervalMm,
       cuspHeightMm: ex.cuspHeightMm,
       highestCuspMm: Math.max(ex.right.heightMm, ex.left.heightMm),
@@ -194,13 +293,13 @@ export class ProfileView implements TeachingView {
     const drawn = drawProfile(this.layer, this.curves, {
       section,
       exact: ex,
-      approximations: data.curves.approximations,
-      untilted: untilted(ctx),
+      approximations: input.approximations,
+      untilted: input.untilted,
       unit,
       layout,
     });
     this.shownK = k;
-    this.cuspAt = { x: drawn.cuspX, y: drawn.cuspY };
+    this.cuspAt = { x: drawn.cuspX, y: drawn.cuspY, widthMm: Math.abs(ex.right.yMm) };
     // A strong exaggeration: the plot grows (up to its limit) rather than the drawing shrinking to a strip.
     const grown = grownHeightPx(room, drawn.home, this.plotWidthPx > 0);
     if (grown !== this.grownPx) {
@@ -220,12 +319,11 @@ export class ProfileView implements TeachingView {
    * The chosen exaggeration, or with "auto" the largest 1-2-5 step at which the drawn band
    * (up to min(R, 4h)) stays within about a third of one step-over's width.
    */
-  private verticalScale(ctx: ViewContext): number {
+  private verticalScale(R: number, exact: ExactSummary): number {
     const chosen = Number(this.exaggeration.value);
     if (chosen > 0) return chosen;
-    const R = ctx.data.forward.toolRadiusMm;
-    const width = ctx.data.exact.intervalMm + 0.4 * R;
-    return autoExaggeration(width, Math.min(R, 4 * ctx.data.exact.cuspHeightMm));
+    const width = exact.intervalMm + 0.4 * R;
+    return autoExaggeration(width, Math.min(R, 4 * exact.cuspHeightMm));
   }
 
   private highlighted: ProcedureKey | null = null;
@@ -236,15 +334,16 @@ export class ProfileView implements TeachingView {
   }
 
   private zoomToCusp(): void {
-    if (!this.ctx || this.cuspAt === null) return;
-    this.panZoom.zoomTo(this.cuspAt.x, this.cuspAt.y, Math.max(0.05 * Math.abs(this.ctx.data.exact.right.yMm), 0.002));
+    if (this.cuspAt === null) return;
+    this.panZoom.zoomTo(this.cuspAt.x, this.cuspAt.y, Math.max(0.05 * this.cuspAt.widthMm, 0.002));
   }
 
   /** A box is shown: texts keep their on-screen size whatever the zoom, and the scale bars follow. */
   private boxShown(b: Box): void {
     const size = b.w / 45;
     for (const t of this.layer.querySelectorAll('text')) t.setAttribute('font-size', String(size));
-    if (this.ctx !== null) drawScaleBars(this.bars, b, this.plotAspect(), this.shownK, this.ctx.unit, size);
+    if (this.ctx !== null || this.pageCtx !== null)
+      drawScaleBars(this.bars, b, this.plotAspect(), this.shownK, (this.pageCtx ?? this.ctx)?.unit ?? 'mm', size);
     else this.bars.replaceChildren();
   }
 
