@@ -4,6 +4,7 @@
  */
 import { radToDeg } from '../../input/units';
 import type { ToolInput } from '../../input/validate';
+import { goldenMinimum } from '../../math/rootFinder';
 import { type Placement, placeTool } from '../../tool/placement';
 import type { SurfaceAxis } from '../cylinder';
 
@@ -45,17 +46,11 @@ function headMinConcaveRadiusMm(p: Placement, axis: SurfaceAxis): number {
     }
   }
   if (!Number.isFinite(value)) return value;
-  let a = (2 * Math.PI * (best - 1)) / n;
-  let b = (2 * Math.PI * (best + 1)) / n;
-  const g = (Math.sqrt(5) - 1) / 2;
-  for (let i = 0; i < 100; i++) {
-    const c = b - g * (b - a);
-    const e = a + g * (b - a);
-    if (ratio(c) > ratio(e)) b = e;
-    else a = c;
-  }
+  const a = (2 * Math.PI * (best - 1)) / n;
+  const b = (2 * Math.PI * (best + 1)) / n;
+  const peak = goldenMinimum({ value: (delta: number) => -ratio(delta) }, a, b, 0, b, 100);
   // Near the contact the ratio tends to the local curvature radius: include that limit.
-  return Math.max(value, ratio(0.5 * (a + b)), ratio(1e-7), ratio(2 * Math.PI - 1e-7));
+  return Math.max(value, ratio(peak), ratio(1e-7), ratio(2 * Math.PI - 1e-7));
 }
 
 /**

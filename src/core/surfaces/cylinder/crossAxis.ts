@@ -2,6 +2,7 @@
  * Axis across the feed (see ../cylinder.ts's module comment): the revolved profile's chords, its
  * width at a radial height and the inverse, and where the shank starts to shape it. Lengths mm.
  */
+import { bracketedRoot, maximise } from '../../math/rootFinder';
 import type { Placement } from '../../tool/placement';
 
 /**
@@ -94,102 +95,6 @@ export function crossChords(p: Placement, rs: number): Chords {
 }
 
 /**
- * The maximum of f on [lo, hi]: a scan of `samples` points brackets the best one, then Brent's
- * method (parabolic steps, golden-section ones where they do not help, so kinks are safe) to
- * `tol` in the argument. Returns the largest value seen.
- */
-export function maximise(
-  f: (x: number) => number,
-  lo: number,
-  hi: number,
-  samples: number,
-  tol: number,
-  must?: number,
-): number {
-  let best = 0;
-  let fBest = Number.NEGATIVE_INFINITY;
-  for (let i = 0; i <= samples; i++) {
-    const v = f(lo + ((hi - lo) * i) / samples);
-    if (v > fBest) {
-      fBest = v;
-      best = i;
-    }
-  }
-  let a = lo + ((hi - lo) * Math.max(0, best - 1)) / samples;
-  let b = lo + ((hi - lo) * Math.min(samples, best + 1)) / samples;
-  let x = lo + ((hi - lo) * best) / samples;
-  // A point known to count (the contact's chord, feasible at any height): when it beats the scan,
-  // search around it, between its neighbouring samples.
-  if (must !== undefined && must >= lo && must <= hi) {
-    const fm = f(must);
-    if (fm > fBest) {
-      fBest = fm;
-      x = must;
-      const k = Math.floor(((must - lo) / (hi - lo)) * samples);
-      a = lo + ((hi - lo) * Math.max(0, k)) / samples;
-      b = lo + ((hi - lo) * Math.min(samples, k + 1)) / samples;
-    }
-  }
-  const golden = 0.381966011250105;
-  let w = x;
-  let v = x;
-  let fx = fBest;
-  let fw = fx;
-  let fv = fx;
-  let d = 0;
-  let e = 0;
-  for (let i = 0; i < 200; i++) {
-    const m = 0.5 * (a + b);
-    if (Math.abs(x - m) <= 2 * tol - 0.5 * (b - a)) break;
-    let u: number;
-    let parabolic = false;
-    if (Math.abs(e) > tol) {
-      // Parabola through x, w, v (maximising: the same algebra on -f).
-      const r = (x - w) * (fv - fx);
-      let q = (x - v) * (fw - fx);
-      let pp = (x - v) * q - (x - w) * r;
-      q = 2 * (q - r);
-      if (q > 0) pp = -pp;
-      q = Math.abs(q);
-      if (Math.abs(pp) < Math.abs(0.5 * q * e) && pp > q * (a - x) && pp < q * (b - x)) {
-        e = d;
-        d = pp / q;
-        parabolic = true;
-      }
-    }
-    if (!parabolic) {
-      e = x < m ? b - x : a - x;
-      d = golden * e;
-    }
-    u = Math.abs(d) >= tol ? x + d : x + (d > 0 ? tol : -tol);
-    const fu = f(u);
-    if (fu >= fx) {
-      if (u < x) b = x;
-      else a = x;
-      v = w;
-      fv = fw;
-      w = x;
-      fw = fx;
-      x = u;
-      fx = fu;
-    } else {
-      if (u < x) a = u;
-      else b = u;
-      if (fu >= fw || w === x) {
-        v = w;
-        fv = fw;
-        w = u;
-        fw = fu;
-      } else if (fu >= fv || v === x || v === w) {
-        v = u;
-        fv = fu;
-      }
-    }
-  }
-  return Math.max(fBest, fx);
-}
-
-/**
  * Width of a flank of the revolved profile at radial height h (axis across the feed): the largest
  * distance out from the contact (along Y) at which some chord's circle reaches radius |Rs| + s h.
  */
@@ -204,7 +109,7 @@ export function crossWidthAtHeight(ch: Chords, sign: number, rcr: number, h: num
   if (!(ch.yHi > ch.yLo)) return f(ch.yLo);
   // The maximum is flat, so 1e-13 of the disk's span in y leaves its value exact to the last bits
   // (a kink, where the nearest point of a chord moves to its end, is handled by Brent's golden steps).
-  return maximise(f, ch.yLo, ch.yHi, 16, 1e-13 * (ch.yHi - ch.yLo), contactY);
+  return maximise({ value: f }, ch.yLo, ch.yHi, 16, 1e-13 * (ch.yHi - ch.yLo), undefined, contactY);
 }
 
 /** Radial height of the revolved profile at a distance w out from the contact (the inverse). */
@@ -220,7 +125,7 @@ export function crossHeightAtWidth(ch: Chords, sign: number, rcr: number, w: num
     return v - ch.height(y);
   };
   if (!(hi >= lo)) return Number.POSITIVE_INFINITY;
-  const top = hi > lo ? maximise(f, lo, hi, 16, 1e-13 * Math.max(hi - lo, rcr)) : f(lo);
+  const top = hi > lo ? maximise({ value: f }, lo, hi, 16, 1e-13 * Math.max(hi - lo, rcr)) : f(lo);
   return -top;
 }
 
@@ -235,7 +140,7 @@ export function crossHeightAtWidth(ch: Chords, sign: number, rcr: number, w: num
  *
  *   F(t) = P_x r_z - (P_z + Rs) r_x = 0,   side (-(P_x r_x + (P_z + Rs) r_z)) > 0,
  *
- * P relative to the contact, side = sign(Rs). Roots by a scan of the ring and bisection; on each side
+ * P relative to the contact, side = sign(Rs). Roots by a scan of the ring and the shared bracketed root; on each side
  * the one nearest the contact. At the equator's points across the axis (r = +-Y: the widest point
  * of an untilted tool, where the shank joins without cutting) the slice's normal vanishes; those
  * are left out.
@@ -255,6 +160,7 @@ export function crossShankHeights(p: Placement, rs: number): { right: number | n
     }
     return (P[0] as number) * (r[2] as number) - ((P[2] as number) + rs) * (r[0] as number);
   };
+  const ring = { value: at };
   let right: { y: number; h: number } | null = null;
   let left: { y: number; h: number } | null = null;
   const n = 64;
@@ -264,15 +170,7 @@ export function crossShankHeights(p: Placement, rs: number): { right: number | n
     const t = (2 * Math.PI * i) / n;
     const f = at(t);
     if (fPrev <= 0 !== f <= 0) {
-      let lo = tPrev;
-      let hi = t;
-      for (let k = 0; k < 200; k++) {
-        const mid = 0.5 * (lo + hi);
-        if (!(mid > lo && mid < hi)) break;
-        if (at(mid) <= 0 === fPrev <= 0) lo = mid;
-        else hi = mid;
-      }
-      at(0.5 * (lo + hi));
+      at(bracketedRoot(ring, tPrev, t, fPrev, f, 0));
       const [x, y, z] = P as [number, number, number];
       const rx = r[0] as number;
       const rz = r[2] as number;

@@ -2,6 +2,7 @@
  * Axis along the feed: each flank's radial limits (its wall, the shank) (see ../cylinder.ts's
  * module comment). Lengths mm, angles radians.
  */
+import { bracketedRoot, goldenMinimum, MAX_ITERATIONS, newSearchEnd } from '../../math/rootFinder';
 import { evalSection, type FlankLimits, newSection, type PostureShape } from '../../tool/posture';
 import { planeTop, radialHeightOf } from './feedProfile';
 import { stadiumLimit, stadiumOf } from './stadium';
@@ -32,35 +33,6 @@ export function profileAtNormal(s: PostureShape, sign: number, theta: number): {
     z: -(s.a * sinPhi * ds + s.b * s.cosPhi * dc) + 2 * s.rcr * half * half,
     delta: Math.atan2(sinT * s.cosT0 - cosT * sinT0, cosT * s.cosT0 + sinT * sinT0),
   };
-}
-
-/**
- * Golden-section search for the minimum of f on [lo, hi] (f unimodal there); its argument.
- */
-export function goldenMin(f: (x: number) => number, lo0: number, hi0: number): number {
-  let lo = lo0;
-  let hi = hi0;
-  const g = (Math.sqrt(5) - 1) / 2;
-  let c = hi - g * (hi - lo);
-  let e = lo + g * (hi - lo);
-  let fc = f(c);
-  let fe = f(e);
-  for (let i = 0; i < 200 && hi - lo > 1e-15 * Math.max(hi0, 1e-300); i++) {
-    if (fc < fe) {
-      hi = e;
-      e = c;
-      fe = fc;
-      c = hi - g * (hi - lo);
-      fc = f(c);
-    } else {
-      lo = c;
-      c = e;
-      fc = fe;
-      e = lo + g * (hi - lo);
-      fe = f(e);
-    }
-  }
-  return 0.5 * (lo + hi);
 }
 
 /**
@@ -98,11 +70,11 @@ export function concaveFlankTop(s: PostureShape, sign: number, rs: number): { to
     const e = ring(plane);
     return radialHeightOf(e.y + rcr, e.z + rcr, rs);
   };
-  const peak = goldenMin(distance, 0, plane);
+  const peak = goldenMinimum({ value: distance }, 0, plane);
   if (!(distance(peak) < distance(plane)) || peak >= plane * (1 - 1e-12)) return { topMm: widest(), deltaTop: plane };
   // The dip's lowest height: the profile point is never farther from the axis than D + Rcr, so
   // |Rs| - max D - Rcr bounds it from below (exactly where that maximum is a critical point).
-  const low = goldenMin((d) => -distance(d), peak, plane);
+  const low = goldenMinimum({ value: (d: number) => -distance(d) }, peak, plane);
   return { topMm: Math.min(atCritical(low), widest(), atCritical(peak)), deltaTop: peak };
 }
 
@@ -125,7 +97,7 @@ export interface FeedFlankLimit {
  * of its wall. The wall: on a convex cylinder where the flank's polar angle peaks, its tangent
  * through the axis (the tangent's signed distance from the axis, `cos(theta) (z + Rs) - sin(theta)
  * y`, falls strictly along the flank: its derivative in theta is `-(sin(theta) (z + Rs) + cos(theta)
- * y)`; bisection); on a concave one where its radial height stops growing, at most the plane's
+ * y)`; the shared bracketed root); on a concave one where its radial height stops growing, at most the plane's
  * widest point, or below a dip (concaveFlankTop). The shank: it leaves the profile at the
  * end of the ellipse's long axis, where the normal is (cos phi, -sin phi), on the side the tool
  * leans to (posture.ts); radially, its height is that point's, if it comes before the wall.
@@ -134,14 +106,20 @@ export function feedFlankLimit(s: PostureShape, sign: number, rs: number): FeedF
   const st = stadiumOf(s, sign);
   if (st !== null) return { ...stadiumLimit(st, s.rcr, rs), deltaTop: 0 };
   if (rs < 0) return { ...concaveFlankTop(s, sign, rs), shankMm: concaveShank(s, sign, rs) };
-  let lo = 0;
-  let hi = Math.PI / 2;
-  for (let i = 0; i < 200; i++) {
-    const mid = 0.5 * (lo + hi);
-    if (!(mid > lo && mid < hi)) break;
-    const p = profileAtNormal(s, sign, mid);
-    if (Math.cos(mid) * (p.z + rs) - Math.sin(mid) * p.y > 0) lo = mid;
-    else hi = mid;
+  const tangent = {
+    value(theta: number): number {
+      const p = profileAtNormal(s, sign, theta);
+      return Math.cos(theta) * (p.z + rs) - Math.sin(theta) * p.y;
+    },
+  };
+  // The last normal angle whose tangent still passes above the axis (the bracket's positive end).
+  const gLo = tangent.value(0);
+  const gHi = tangent.value(Math.PI / 2);
+  let lo = gLo > 0 ? Math.PI / 2 : 0;
+  if (gLo > 0 && gHi < 0) {
+    const end = newSearchEnd();
+    bracketedRoot(tangent, 0, Math.PI / 2, gLo, gHi, 0, MAX_ITERATIONS, end);
+    lo = end.lo;
   }
   const top = profileAtNormal(s, sign, lo);
   const shankTheta = Math.PI / 2 - Math.abs(s.phi);

@@ -2,9 +2,13 @@
  * Axis along the feed (see ../cylinder.ts's module comment): the profile point of a section, the
  * polar angle a flank reaches at a radial height and its inverse. Lengths mm, angles radians.
  */
+import { bracketedRoot, type NewtonObjective, newtonRoot, type Objective } from '../../math/rootFinder';
 import { evalSection, type Flank, flankSign, newSection, type PostureShape, type Section } from '../../tool/posture';
 
-/** A point of the cross-feed profile, relative to the contact (mm), and its section's normal. */
+/**
+ * A point of the cross-feed profile, relative to the contact (mm), its section's normal, and the
+ * section itself: filled by {@link profilePoint} into an object the caller owns.
+ */
 export interface ProfilePoint {
   /** Width Y and height H of the profile point. */
   y: number;
@@ -16,79 +20,102 @@ export interface ProfilePoint {
   n: number;
   st: number;
   ct: number;
+  /** The section evaluated (posture.ts's evalSection). */
+  readonly section: Section;
 }
 
-export const section: Section = newSection();
-export const point: ProfilePoint = { y: 0, h: 0, ey: 0, ez: 0, n: 0, st: 0, ct: 1 };
+/** A profile point to be filled by {@link profilePoint}. */
+export function newProfilePoint(): ProfilePoint {
+  return { y: 0, h: 0, ey: 0, ez: 0, n: 0, st: 0, ct: 1, section: newSection() };
+}
 
 /**
  * The profile point of section delta on the flank `sign` (posture.ts's evalSection, then the ball
- * of radius Rcr along the profile normal). Fills and returns a shared scratch object: read it
- * before the next call.
+ * of radius Rcr along the profile normal). Fills `out` (allocation-free) and returns it.
  */
-export function profilePoint(s: PostureShape, sign: number, delta: number): ProfilePoint {
+export function profilePoint(s: PostureShape, sign: number, delta: number, out: ProfilePoint): ProfilePoint {
+  const section = out.section;
   evalSection(s, sign, delta, section);
   const n = Math.sqrt(section.nSin * section.nSin + section.nCos * section.nCos);
   // Profile normal (sin theta, cos theta); where a corner collapses (b = 0, n = 0) take the ring point.
   const st = n > 0 ? section.nSin / n : 0;
   const ct = n > 0 ? section.nCos / n : 1;
-  point.y = section.dy + s.rcr * st;
-  point.h = section.dz + (s.rcr * (st * st)) / (1 + ct);
-  point.ey = section.dy;
-  point.ez = section.dz + s.rcr;
-  point.n = n;
-  point.st = st;
-  point.ct = ct;
-  return point;
+  out.y = section.dy + s.rcr * st;
+  out.h = section.dz + (s.rcr * (st * st)) / (1 + ct);
+  out.ey = section.dy;
+  out.ez = section.dz + s.rcr;
+  out.n = n;
+  out.st = st;
+  out.ct = ct;
+  return out;
 }
 
 /**
- * Polar angle of a flank point at radial height h on a cylinder with the axis along the feed: a
- * bracketed Newton on G(delta) = Y^2 + (H - h)(H + h + 2 Rs), with G' = 2 K (Y cos theta +
- * (H + Rs) sin theta), K = N + Rcr a b / N^2 (N the norm of the ellipse normal), started from the
- * plane's osculating estimate; then the angle as a maximum over sections (feedAngleOfSection).
- * @param top an offset past the root, where G has changed sign.
+ * G(delta) = Y^2 + (H - h)(H + h + 2 Rs), zero where the flank's profile point lies at radial
+ * height h, and its slope G' = 2 K (Y cos theta + (H + Rs) sin theta), K = N + Rcr a b / N^2 (N
+ * the norm of the ellipse normal).
  */
-export function feedAngleAtHeight(s: PostureShape, flank: Flank, rs: number, h: number, top: number): number {
+class RadiusMismatch implements NewtonObjective {
+  slope = 0;
+  private readonly ab: number;
+  constructor(
+    private readonly s: PostureShape,
+    private readonly sign: number,
+    private readonly rs: number,
+    private readonly h: number,
+    private readonly at: ProfilePoint,
+  ) {
+    this.ab = s.a * s.b;
+  }
+  value(delta: number): number {
+    const { y: Y, h: H, n, st, ct } = profilePoint(this.s, this.sign, delta, this.at);
+    const { h, rs } = this;
+    const k = n > 0 ? n + (this.s.rcr * this.ab) / (n * n) : Number.POSITIVE_INFINITY;
+    this.slope = 2 * k * (Y * ct + (H + rs) * st);
+    return Y * Y + (H - h) * (H + h + 2 * rs);
+  }
+}
+
+/**
+ * Polar angle of a flank point at radial height h on a cylinder with the axis along the feed: the
+ * shared safeguarded Newton (rootFinder.ts) on G (RadiusMismatch), started from the plane's
+ * osculating estimate; then the angle as a maximum over sections (feedAngleOfSection).
+ * @param top an offset past the root, where G has changed sign.
+ * @param at scratch the caller owns (filled here; its content is not part of the result).
+ */
+export function feedAngleAtHeight(
+  s: PostureShape,
+  flank: Flank,
+  rs: number,
+  h: number,
+  top: number,
+  at: ProfilePoint,
+): number {
   const sign = flankSign(flank);
   const rcr = s.rcr;
   const ab = s.a * s.b;
-  // G(0) = -h (h + 2 Rs): negative on a convex cylinder, positive on a concave one (it falls).
-  const falling = rs < 0;
-  let lo = 0;
-  let hi = top;
   let delta = 0;
-  if (hi > 0) {
+  if (top > 0) {
     const reff = rcr + (s.d0 > 0 ? (ab * ab) / (s.d0 * s.d0 * s.d0) : 0);
-    delta = s.d0 > 0 ? (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0) : 0.5 * hi;
-    if (!(delta > lo && delta < hi)) delta = 0.5 * (lo + hi);
-    for (let i = 0; i < 100; i++) {
-      const { y: Y, h: H, n, st, ct } = profilePoint(s, sign, delta);
-      const g = Y * Y + (H - h) * (H + h + 2 * rs);
-      if (g === 0) break;
-      const before = falling ? g > 0 : g < 0;
-      if (before) lo = delta;
-      else hi = delta;
-      const k = n > 0 ? n + (rcr * ab) / (n * n) : Number.POSITIVE_INFINITY;
-      const slope = 2 * k * (Y * ct + (H + rs) * st);
-      let next = Number.isFinite(slope) && slope !== 0 ? delta - g / slope : Number.NaN;
-      if (Math.abs(next - delta) <= 1e-12 * delta) {
-        delta = Math.min(Math.max(next, lo), hi);
-        break;
-      }
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      delta = next;
-      if (hi - lo <= 4e-16 * hi) break;
-    }
+    const start = s.d0 > 0 ? (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0) : 0.5 * top;
+    // G(0) = -h (h + 2 Rs): negative on a convex cylinder (G rises), positive on a concave one (it falls).
+    delta = newtonRoot(new RadiusMismatch(s, sign, rs, h, at), 0, top, start, rs > 0, 1e-12, 100);
   }
-  return feedAngleOfSection(s, sign, delta, rs, h);
+  return feedAngleOfSection(s, sign, delta, rs, h, at.section);
 }
 
 /**
  * The polar angle reached by the ball of section delta at radius r = |Rs| + s h: the ring point's
  * angle plus the half-angle its ball subtends (0 when it does not reach r).
  */
-export function feedAngleOfSection(s: PostureShape, sign: number, delta: number, rs: number, h: number): number {
+export function feedAngleOfSection(
+  s: PostureShape,
+  sign: number,
+  delta: number,
+  rs: number,
+  h: number,
+  section: Section,
+): number {
   evalSection(s, sign, delta, section);
   const half = ballHalfAngleRad(section.dy, section.dz, s.rcr, rs, h);
   // Ring point relative to the axis C = (0, -Rs): (dy, dz + Rcr + Rs); polar angle from C's direction to the contact.
@@ -122,43 +149,51 @@ export function ballHalfAngleRad(cy: number, zeta: number, rcr: number, rs: numb
   return 2 * Math.asin(Math.min(1, Math.sqrt((lo * hi) / (4 * de * r))));
 }
 
-/** Height (radial) of the flank point at polar angle beta (the inverse), by the same root approach. */
-export function feedHeightAtAngle(s: PostureShape, flank: Flank, rs: number, beta: number, deltaTop: number): number {
+/** J(delta) = Y cos(beta) - (|Rs| + s H) sin(beta): the profile point's angle against beta (rising). */
+class AngleMismatch implements Objective {
+  private readonly cb: number;
+  private readonly sb: number;
+  constructor(
+    private readonly s: PostureShape,
+    private readonly sign: number,
+    private readonly rs: number,
+    beta: number,
+    private readonly at: ProfilePoint,
+  ) {
+    this.cb = Math.cos(beta);
+    this.sb = Math.sin(beta);
+  }
+  value(delta: number): number {
+    const p = profilePoint(this.s, this.sign, delta, this.at);
+    return p.y * this.cb - (Math.abs(this.rs) + (this.rs > 0 ? 1 : -1) * p.h) * this.sb;
+  }
+}
+
+/**
+ * Height (radial) of the flank point at polar angle beta (the inverse): the section where J = 0
+ * (AngleMismatch) by the shared bracketed root, then the ray's crossing with that section's ball.
+ * @param at scratch the caller owns (filled here; its content is not part of the result).
+ */
+export function feedHeightAtAngle(
+  s: PostureShape,
+  flank: Flank,
+  rs: number,
+  beta: number,
+  deltaTop: number,
+  at: ProfilePoint,
+): number {
   const sign = flankSign(flank);
   const side = rs > 0 ? 1 : -1;
   const cb = Math.cos(beta);
   const sb = Math.sin(beta);
-  // J = Y cos(beta) - (|Rs| + s H) sin(beta): the profile point's angle against beta.
-  const J = (d: number) => {
-    const p = profilePoint(s, sign, d);
-    return p.y * cb - (Math.abs(rs) + side * p.h) * sb;
-  };
-  let lo = 0;
-  let hi = deltaTop;
-  let jLo = J(lo);
-  let jHi = J(hi);
-  for (let i = 0; i < 200 && hi - lo > 1e-16 * Math.max(hi, 1e-300); i++) {
-    let m = lo - (jLo * (hi - lo)) / (jHi - jLo);
-    if (!(m > lo && m < hi) || i % 4 === 3) m = 0.5 * (lo + hi);
-    const jm = J(m);
-    if (jm === 0) {
-      lo = m;
-      hi = m;
-      break;
-    }
-    if (jm > 0) {
-      hi = m;
-      jHi = jm;
-      jLo /= 2;
-    } else {
-      lo = m;
-      jLo = jm;
-      jHi /= 2;
-    }
-  }
+  const J = new AngleMismatch(s, sign, rs, beta, at);
+  const jLo = J.value(0);
+  const jHi = J.value(deltaTop);
+  // Without a sign change the section is the bracket's end that J approaches.
+  const root = jLo >= 0 ? 0 : jHi <= 0 ? deltaTop : bracketedRoot(J, 0, deltaTop, jLo, jHi, 1e-16);
   // The radius along the ray at beta through the section's ball: the entry (convex) or exit
   // (concave) distance, second-order insensitive to the section's error.
-  const p = profilePoint(s, sign, 0.5 * (lo + hi));
+  const p = profilePoint(s, sign, root, at);
   const qy = p.ey;
   const qz = p.ez + rs;
   // Ray direction from C: (sin beta, side cos beta).

@@ -8,7 +8,14 @@ import { type Flank, type FlankLimits, flankSign, type PostureShape } from '../.
 import type { CylinderSolver, CylinderSurface } from '../cylinder';
 import { type Chords, crossChords, crossHeightAtWidth, crossShankHeights, crossWidthAtHeight } from './crossAxis';
 import { type FeedFlankLimit, feedFlankLimit, limitsOf } from './feedLimits';
-import { feedAngleAtHeight, feedHeightAtAngle, planeTop, profilePoint } from './feedProfile';
+import {
+  feedAngleAtHeight,
+  feedHeightAtAngle,
+  newProfilePoint,
+  type ProfilePoint,
+  planeTop,
+  profilePoint,
+} from './feedProfile';
 import { type Stadium, stadiumHeightAtAngle, stadiumOf, stadiumReach } from './stadium';
 
 /** Axis along the feed: flank angles about the axis (classes: no closures built per call). */
@@ -20,6 +27,8 @@ class FeedSolver implements CylinderSolver {
   private readonly rs: number;
   /** Each flank as a stadium when the ring is degenerate (no lead, or a ball end), else null. */
   private readonly stadiums: [Stadium | null, Stadium | null];
+  /** Scratch of this solver's searches (filled and read within one call, never across calls). */
+  private readonly at: ProfilePoint = newProfilePoint();
 
   constructor(
     readonly surface: CylinderSurface,
@@ -56,7 +65,7 @@ class FeedSolver implements CylinderSolver {
     const s = this.s;
     const plane = planeTop(s, sign);
     if (this.rs > 0) return plane;
-    const at = profilePoint(s, sign, plane);
+    const at = profilePoint(s, sign, plane, this.at);
     if (at.y * at.y + (at.h - h) * (at.h + h + 2 * this.rs) < 0) return plane;
     return this.flank(sign).deltaTop;
   }
@@ -65,7 +74,7 @@ class FeedSolver implements CylinderSolver {
     const sign = flankSign(flank);
     const stadium = this.stadiums[sign > 0 ? 0 : 1] ?? null;
     if (stadium !== null) return stadiumReach(stadium, this.s.rcr, this.rs, h);
-    return feedAngleAtHeight(this.s, flank, this.rs, h, this.bracket(sign, h));
+    return feedAngleAtHeight(this.s, flank, this.rs, h, this.bracket(sign, h), this.at);
   }
 
   heightAt(flank: Flank, beta: number): number {
@@ -73,7 +82,7 @@ class FeedSolver implements CylinderSolver {
     const s = this.s;
     const stadium = this.stadiums[sign > 0 ? 0 : 1] ?? null;
     if (stadium !== null) return stadiumHeightAtAngle(stadium, s.rcr, this.rs, beta);
-    return feedHeightAtAngle(s, flank, this.rs, beta, this.flank(sign).deltaTop);
+    return feedHeightAtAngle(s, flank, this.rs, beta, this.flank(sign).deltaTop, this.at);
   }
 
   intervalFromReach(angle: number): number {
