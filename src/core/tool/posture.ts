@@ -30,6 +30,7 @@
  * flank of the mirrored posture (`phi -> -phi`). Lengths mm, angles radians.
  */
 import { degToRad } from '../input/units';
+import { type NewtonObjective, newtonRoot } from '../math/rootFinder';
 
 /** The profile of one posture: the rotated offset ellipse, with its contact precomputed. */
 export interface PostureShape {
@@ -265,22 +266,46 @@ export function newSection(): Section {
   return { sinD: 0, cosD: 1, sinT: 0, cosT: 1, dz: 0, dy: 0, nSin: 0, nCos: 0, dNCos: 0 };
 }
 
-const scratch: Section = newSection();
-
 /** Half-angle form of the corner's normal angle at vertical offset q: `acos(1 - q/Rcr)`. */
 function cornerAngleRad(rcr: number, q: number): number {
   return 2 * Math.asin(Math.min(1, Math.sqrt(Math.max(0, q) / (2 * rcr))));
 }
 
 /**
- * Ring-angle offset of the section carrying the flank `sign` at height h (0 < h below the
- * flank's top). Bracketed Newton on the sign-monotone
- * `G(delta) = D0 sin(delta) (Rcr - q) - (a cos phi cos t + b sin phi sin t) r`, zero where the
- * profile normal meets the section's crossing with the plane. Leaves that section in `scratch`.
+ * `G(delta) = D0 sin(delta) (Rcr - q) - (a cos phi cos t + b sin phi sin t) r` of
+ * {@link sectionAtHeight} and its slope, evaluated into `sec`. One instance, the private workspace
+ * of sectionAtHeight: its fields are set at the start of each call and read only within it.
  */
-function sectionAtHeight(s: PostureShape, sign: number, h: number): number {
+class HeightMismatch implements NewtonObjective {
+  slope = 0;
+  s: PostureShape | null = null;
+  sign = 1;
+  h = 0;
+  sec: Section = newSection();
+  value(delta: number): number {
+    const s = this.s as PostureShape;
+    const sec = this.sec;
+    const rcr = s.rcr;
+    evalSection(s, this.sign, delta, sec);
+    const q = this.h - sec.dz;
+    const c = rcr - q;
+    const r = reachMm(rcr, q);
+    let slope = s.d0 * sec.cosD * c + sec.nSin * sec.nSin - sec.dNCos * r;
+    if (r > 0) slope += (sec.nCos * sec.nSin * c) / r;
+    this.slope = slope;
+    return sec.nSin * c - sec.nCos * r;
+  }
+}
+const heightMismatch = new HeightMismatch();
+
+/**
+ * Ring-angle offset of the section carrying the flank `sign` at height h (0 < h below the
+ * flank's top). The shared safeguarded Newton (rootFinder.ts) on the sign-monotone G of
+ * HeightMismatch, zero where the profile normal meets the section's crossing with the plane.
+ * Fills `sec` with that section (allocation-free).
+ */
+function sectionAtHeight(s: PostureShape, sign: number, h: number, sec: Section): number {
   const rcr = s.rcr;
-  const sec = scratch;
   if (s.flatOnPlane) {
     evalSection(s, sign, Math.PI / 2, sec);
     return Math.PI / 2;
@@ -292,39 +317,22 @@ function sectionAtHeight(s: PostureShape, sign: number, h: number): number {
       // Flat end: the flank is the ring ellipse itself, dz(delta) = h in closed form.
       delta = Math.min(deltaTop, 2 * Math.asin(Math.min(1, Math.sqrt(h / (2 * s.d0)))));
     } else {
-      let lo = 0;
       // The section's ring point cannot rise above h: dz(delta) <= h bounds delta from above.
-      let hi = h < 2 * s.d0 ? Math.min(deltaTop, 2 * Math.asin(Math.sqrt(h / (2 * s.d0)))) : deltaTop;
+      const hi = h < 2 * s.d0 ? Math.min(deltaTop, 2 * Math.asin(Math.sqrt(h / (2 * s.d0)))) : deltaTop;
       if (hi > 0) {
         // Start from the osculating circle: theta ~ sqrt(2h/Reff), delta ~ theta ab / D0^2.
         const ab = s.a * s.b;
         const reff = rcr + (ab * ab) / (s.d0 * s.d0 * s.d0);
-        delta = (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0);
-        if (!(delta > lo && delta < hi)) delta = 0.5 * (lo + hi);
-        for (let i = 0; i < 100; i++) {
-          evalSection(s, sign, delta, sec);
-          const q = h - sec.dz;
-          const c = rcr - q;
-          const r = reachMm(rcr, q);
-          const g = sec.nSin * c - sec.nCos * r;
-          if (g === 0) break;
-          if (g > 0) hi = delta;
-          else lo = delta;
-          let slope = s.d0 * sec.cosD * c + sec.nSin * sec.nSin - sec.dNCos * r;
-          if (r > 0) slope += (sec.nCos * sec.nSin * c) / r;
-          let next = slope > 0 ? delta - g / slope : Number.NaN;
-          // A Newton step below 1e-12 (relative): done (1e-8 was measured to cost up to 7e-9 mm with
-          // a corner of 1e-9 R, where the root sits next to the ball's vertical tangent). This comes
-          // before the bracket test, which a converged step can fail by rounding alone (it lands on
-          // the bracket end it just set).
-          if (Math.abs(next - delta) <= 1e-12 * delta) {
-            delta = Math.min(Math.max(next, lo), hi);
-            break;
-          }
-          if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-          delta = next;
-          if (hi - lo <= 4e-16 * hi) break;
-        }
+        const start = (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0);
+        const g = heightMismatch;
+        g.s = s;
+        g.sign = sign;
+        g.h = h;
+        g.sec = sec;
+        // A Newton step below 1e-12 (relative) ends it (1e-8 was measured to cost up to 7e-9 mm
+        // with a corner of 1e-9 R, where the root sits next to the ball's vertical tangent).
+        delta = newtonRoot(g, 0, hi, start, true, 1e-12, 100);
+        g.s = null;
       }
     }
   }
@@ -338,11 +346,15 @@ function sectionAtHeight(s: PostureShape, sign: number, h: number): number {
  * is flat on the plane). Valid for 0 < h below that flank's top (flankLimits); error below
  * 1e-9 mm over the valid domain. Allocation-free.
  */
+/** flankWidthMm's workspace (filled and read within one call). */
+const widthSection: Section = newSection();
+
 export function flankWidthMm(s: PostureShape, flank: Flank, heightMm: number): number {
   const rcr = s.rcr;
   if (s.a === 0) return reachMm(rcr, heightMm);
-  sectionAtHeight(s, flankSign(flank), heightMm);
-  return scratch.dy + reachMm(rcr, heightMm - scratch.dz);
+  const sec = widthSection;
+  sectionAtHeight(s, flankSign(flank), heightMm, sec);
+  return sec.dy + reachMm(rcr, heightMm - sec.dz);
 }
 
 /** The point of a flank at `heightMm` above the contact (see flankWidthMm), with its section. */
@@ -356,13 +368,50 @@ export function flankAtHeight(s: PostureShape, flank: Flank, heightMm: number): 
       normalAngleRad: cornerAngleRad(rcr, heightMm),
     };
   }
-  const delta = sectionAtHeight(s, flankSign(flank), heightMm);
-  const q = heightMm - scratch.dz;
+  const sec = atHeightSection;
+  const delta = sectionAtHeight(s, flankSign(flank), heightMm, sec);
+  const q = heightMm - sec.dz;
   // At the root the profile normal is the angle of the crossing on its ball, acos(1 - q/Rcr),
   // which stays defined where a corner collapses onto one ring angle (b = 0).
-  const normal = rcr > 0 ? cornerAngleRad(rcr, q) : Math.atan2(scratch.nSin, scratch.nCos);
-  return { widthMm: scratch.dy + reachMm(rcr, q), heightMm, ringOffsetRad: delta, normalAngleRad: normal };
+  const normal = rcr > 0 ? cornerAngleRad(rcr, q) : Math.atan2(sec.nSin, sec.nCos);
+  return { widthMm: sec.dy + reachMm(rcr, q), heightMm, ringOffsetRad: delta, normalAngleRad: normal };
 }
+
+/**
+ * The mismatch of {@link flankAtWidth} between the profile normal and the ball's normal at offset
+ * `u = w - dy`: `D0 sin(delta) sqrt(Rcr^2 - u^2) - nCos u` (past the ball's reach, +-1: move on),
+ * and its slope, evaluated into `sec`. One instance, the private workspace of flankAtWidth.
+ */
+class WidthMismatch implements NewtonObjective {
+  slope = 0;
+  s: PostureShape | null = null;
+  sign = 1;
+  w = 0;
+  sec: Section = newSection();
+  value(delta: number): number {
+    const s = this.s as PostureShape;
+    const sec = this.sec;
+    const rcr = s.rcr;
+    evalSection(s, this.sign, delta, sec);
+    const u = this.w - sec.dy;
+    this.slope = 0;
+    if (rcr === 0) {
+      this.slope = sec.nCos;
+      return -u; // flat end: solve dy(delta) = w
+    }
+    if (u >= rcr) return -1;
+    if (u <= -rcr) return 1;
+    const v = Math.sqrt((rcr - u) * (rcr + u));
+    // u' = -nCos, v' = u nCos / v
+    this.slope = s.d0 * sec.cosD * v + (sec.nSin * u * sec.nCos) / v - sec.dNCos * u + sec.nCos * sec.nCos;
+    return sec.nSin * v - sec.nCos * u;
+  }
+}
+const widthMismatch = new WidthMismatch();
+/** flankAtWidth's workspace (filled and read within one call). */
+const atWidthSection: Section = newSection();
+/** flankAtHeight's workspace (filled and read within one call). */
+const atHeightSection: Section = newSection();
 
 /**
  * The point of a flank at horizontal distance `widthMm` from the contact: the inverse of
@@ -386,39 +435,17 @@ export function flankAtWidth(s: PostureShape, flank: Flank, widthMm: number): Fl
     };
   }
   const sign = flankSign(flank);
-  const sec = scratch;
-  let lo = 0;
-  let hi = widestOffsetRad(s, sign);
-  let delta = 0.5 * (lo + hi);
-  for (let i = 0; i < 200 && hi > lo; i++) {
-    evalSection(s, sign, delta, sec);
-    const u = w - sec.dy;
-    // Sign of the mismatch between the profile normal and the ball's normal at offset u:
-    // D0 sin(delta) sqrt(Rcr^2 - u^2) - nCos u; past the ball's reach, move on.
-    let g: number;
-    let slope = 0;
-    if (rcr === 0) {
-      g = -u; // flat end: solve dy(delta) = w
-      slope = sec.nCos;
-    } else if (u >= rcr) g = -1;
-    else if (u <= -rcr) g = 1;
-    else {
-      const v = Math.sqrt((rcr - u) * (rcr + u));
-      g = sec.nSin * v - sec.nCos * u;
-      // u' = -nCos, v' = u nCos / v
-      slope = s.d0 * sec.cosD * v + (sec.nSin * u * sec.nCos) / v - sec.dNCos * u + sec.nCos * sec.nCos;
-    }
-    if (g === 0) break;
-    if (g > 0) hi = delta;
-    else lo = delta;
-    let next = slope > 0 ? delta - g / slope : Number.NaN;
-    if (Math.abs(next - delta) <= 1e-15 * delta) {
-      delta = Math.min(Math.max(next, lo), hi);
-      break;
-    }
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    delta = next;
-    if (hi - lo <= 4e-16 * hi) break;
+  const sec = atWidthSection;
+  const hi = widestOffsetRad(s, sign);
+  let delta = 0;
+  if (hi > 0) {
+    const g = widthMismatch;
+    g.s = s;
+    g.sign = sign;
+    g.w = w;
+    g.sec = sec;
+    delta = newtonRoot(g, 0, hi, 0.5 * hi, true, 1e-15, 200);
+    g.s = null;
   }
   evalSection(s, sign, delta, sec);
   const u = Math.min(rcr, Math.max(-rcr, w - sec.dy));
