@@ -7,7 +7,9 @@
  *   with a bisection every fourth step and wherever the secant leaves the bracket.
  * - {@link newtonRoot}: the same bracket kept around Newton steps (a caller that has the slope
  *   cheaply converges in a few steps); bisection wherever a step leaves the bracket or the slope has
- *   the wrong sign.
+ *   the wrong sign. Its step, {@link newtonStep}, is exported for the hot loops (posture.ts, the
+ *   feed cylinder), which evaluate f themselves: a callback shared by many solvers is polymorphic
+ *   and was measured to cost about 10 % of the exact solve.
  * - {@link maximise}: the maximum on an interval, a scan then Brent's method (parabolic steps,
  *   golden-section steps where they do not help, so kinks are safe; R. P. Brent, "Algorithms for
  *   Minimization without Derivatives", 1973, ch. 5).
@@ -124,13 +126,65 @@ export function bracketedRoot(
 }
 
 /**
- * A root of `f` in [lo, hi] (lo < hi; hi may be +Infinity for a positive root, then bracketing by
- * doubling) by Newton steps from `x0` kept inside the bracket: the bracket shrinks with every
- * evaluation (`rising`: f < 0 below the root, > 0 above; else the reverse), and a step that leaves
- * it, or a slope of the wrong sign or not finite, is replaced by a bisection. Stops at an exact
- * zero, when a Newton step is within `stepRelTol` of x (the step's end, clamped to the bracket, is
- * returned), when the bracket is within 4e-16 of hi, or after `maxIterations` evaluations.
- * @param x0 start, inside (lo, hi) (else the midpoint is used).
+ * The state of a safeguarded Newton iteration driven by its caller ({@link newtonStep}): the
+ * bracket [lo, hi] around the root, the next point x to evaluate, and whether it is done.
+ */
+export interface NewtonState {
+  lo: number;
+  hi: number;
+  x: number;
+  done: boolean;
+}
+
+/** A fresh {@link NewtonState}. */
+export function newNewtonState(): NewtonState {
+  return { lo: 0, hi: 0, x: 0, done: false };
+}
+
+/**
+ * Starts a safeguarded Newton iteration on [lo, hi] (lo < hi; hi may be +Infinity for a positive
+ * root, then bracketing by doubling) from `x0` (the midpoint, or max(2 lo, 1) for an infinite hi,
+ * when x0 is not inside).
+ */
+export function newtonStart(st: NewtonState, lo: number, hi: number, x0: number): void {
+  st.lo = lo;
+  st.hi = hi;
+  st.x = x0 > lo && x0 < hi ? x0 : Number.isFinite(hi) ? 0.5 * (lo + hi) : Math.max(2 * lo, 1);
+  st.done = false;
+}
+
+/**
+ * One step of the safeguarded Newton iteration, given f and f' at `st.x` (the caller evaluates them,
+ * so the hot loops of the solvers stay free of callbacks): the bracket shrinks to the side of the
+ * root (`rising`: f < 0 below the root, > 0 above; else the reverse); the Newton step replaces x,
+ * or a bisection (doubling while hi is infinite) where the step leaves the bracket or the slope
+ * has the wrong sign or is not finite. Sets `done` at an exact zero, when the step is within
+ * `stepRelTol` of x (x is then the step's end clamped to the bracket), or when the bracket is
+ * within 4e-16 of hi. The caller caps the iterations.
+ */
+export function newtonStep(st: NewtonState, g: number, slope: number, rising: boolean, stepRelTol: number): void {
+  const x = st.x;
+  if (g === 0) {
+    st.done = true;
+    return;
+  }
+  if (g > 0 === rising) st.hi = x;
+  else st.lo = x;
+  const { lo, hi } = st;
+  let next = (rising ? slope > 0 : slope < 0) && Number.isFinite(slope) ? x - g / slope : Number.NaN;
+  if (Math.abs(next - x) <= stepRelTol * Math.abs(x)) {
+    st.x = Math.min(Math.max(next, lo), hi);
+    st.done = true;
+    return;
+  }
+  if (!(next > lo && next < hi)) next = Number.isFinite(hi) ? 0.5 * (lo + hi) : 2 * x;
+  st.x = next;
+  if (hi - lo <= 4e-16 * Math.abs(hi) && Number.isFinite(hi)) st.done = true;
+}
+
+/**
+ * A root of `f` in [lo, hi] by safeguarded Newton steps ({@link newtonStep}) from `x0`, for callers
+ * outside the hot loops: f.value(x) returns f(x) and leaves f'(x) in f.slope.
  * @param stepRelTol relative Newton step at which to stop, >= 0.
  * @returns the last iterate (f was last evaluated there unless the step criterion stopped it).
  */
@@ -143,24 +197,13 @@ export function newtonRoot(
   stepRelTol: number,
   maxIterations = MAX_ITERATIONS,
 ): number {
-  let x = x0;
-  if (!(x > lo && x < hi)) x = Number.isFinite(hi) ? 0.5 * (lo + hi) : Math.max(2 * lo, 1);
-  for (let i = 0; i < maxIterations; i++) {
-    const g = f.value(x);
-    if (g === 0) break;
-    if (g > 0 === rising) hi = x;
-    else lo = x;
-    const slope = f.slope;
-    let next = (rising ? slope > 0 : slope < 0) && Number.isFinite(slope) ? x - g / slope : Number.NaN;
-    if (Math.abs(next - x) <= stepRelTol * Math.abs(x)) {
-      x = Math.min(Math.max(next, lo), hi);
-      break;
-    }
-    if (!(next > lo && next < hi)) next = Number.isFinite(hi) ? 0.5 * (lo + hi) : 2 * x;
-    x = next;
-    if (hi - lo <= 4e-16 * Math.abs(hi) && Number.isFinite(hi)) break;
+  const st = newNewtonState();
+  newtonStart(st, lo, hi, x0);
+  for (let i = 0; i < maxIterations && !st.done; i++) {
+    const g = f.value(st.x);
+    newtonStep(st, g, f.slope, rising, stepRelTol);
   }
-  return x;
+  return st.x;
 }
 
 /**

@@ -30,7 +30,7 @@
  * flank of the mirrored posture (`phi -> -phi`). Lengths mm, angles radians.
  */
 import { degToRad } from '../input/units';
-import { type NewtonObjective, newtonRoot } from '../math/rootFinder';
+import { type NewtonState, newNewtonState, newtonStart, newtonStep } from '../math/rootFinder';
 
 /** The profile of one posture: the rotated offset ellipse, with its contact precomputed. */
 export interface PostureShape {
@@ -271,37 +271,14 @@ function cornerAngleRad(rcr: number, q: number): number {
   return 2 * Math.asin(Math.min(1, Math.sqrt(Math.max(0, q) / (2 * rcr))));
 }
 
-/**
- * `G(delta) = D0 sin(delta) (Rcr - q) - (a cos phi cos t + b sin phi sin t) r` of
- * {@link sectionAtHeight} and its slope, evaluated into `sec`. One instance, the private workspace
- * of sectionAtHeight: its fields are set at the start of each call and read only within it.
- */
-class HeightMismatch implements NewtonObjective {
-  slope = 0;
-  s: PostureShape | null = null;
-  sign = 1;
-  h = 0;
-  sec: Section = newSection();
-  value(delta: number): number {
-    const s = this.s as PostureShape;
-    const sec = this.sec;
-    const rcr = s.rcr;
-    evalSection(s, this.sign, delta, sec);
-    const q = this.h - sec.dz;
-    const c = rcr - q;
-    const r = reachMm(rcr, q);
-    let slope = s.d0 * sec.cosD * c + sec.nSin * sec.nSin - sec.dNCos * r;
-    if (r > 0) slope += (sec.nCos * sec.nSin * c) / r;
-    this.slope = slope;
-    return sec.nSin * c - sec.nCos * r;
-  }
-}
-const heightMismatch = new HeightMismatch();
+/** sectionAtHeight's Newton state (set and read within one call). */
+const heightNewton: NewtonState = newNewtonState();
 
 /**
  * Ring-angle offset of the section carrying the flank `sign` at height h (0 < h below the
- * flank's top). The shared safeguarded Newton (rootFinder.ts) on the sign-monotone G of
- * HeightMismatch, zero where the profile normal meets the section's crossing with the plane.
+ * flank's top). The shared safeguarded Newton step (rootFinder.ts) on the sign-monotone
+ * `G(delta) = D0 sin(delta) (Rcr - q) - (a cos phi cos t + b sin phi sin t) r`, zero where the
+ * profile normal meets the section's crossing with the plane.
  * Fills `sec` with that section (allocation-free).
  */
 function sectionAtHeight(s: PostureShape, sign: number, h: number, sec: Section): number {
@@ -324,15 +301,20 @@ function sectionAtHeight(s: PostureShape, sign: number, h: number, sec: Section)
         const ab = s.a * s.b;
         const reff = rcr + (ab * ab) / (s.d0 * s.d0 * s.d0);
         const start = (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0);
-        const g = heightMismatch;
-        g.s = s;
-        g.sign = sign;
-        g.h = h;
-        g.sec = sec;
         // A Newton step below 1e-12 (relative) ends it (1e-8 was measured to cost up to 7e-9 mm
         // with a corner of 1e-9 R, where the root sits next to the ball's vertical tangent).
-        delta = newtonRoot(g, 0, hi, start, true, 1e-12, 100);
-        g.s = null;
+        const st = heightNewton;
+        newtonStart(st, 0, hi, start);
+        for (let i = 0; i < 100 && !st.done; i++) {
+          evalSection(s, sign, st.x, sec);
+          const q = h - sec.dz;
+          const c = rcr - q;
+          const r = reachMm(rcr, q);
+          let slope = s.d0 * sec.cosD * c + sec.nSin * sec.nSin - sec.dNCos * r;
+          if (r > 0) slope += (sec.nCos * sec.nSin * c) / r;
+          newtonStep(st, sec.nSin * c - sec.nCos * r, slope, true, 1e-12);
+        }
+        delta = st.x;
       }
     }
   }
@@ -377,37 +359,8 @@ export function flankAtHeight(s: PostureShape, flank: Flank, heightMm: number): 
   return { widthMm: sec.dy + reachMm(rcr, q), heightMm, ringOffsetRad: delta, normalAngleRad: normal };
 }
 
-/**
- * The mismatch of {@link flankAtWidth} between the profile normal and the ball's normal at offset
- * `u = w - dy`: `D0 sin(delta) sqrt(Rcr^2 - u^2) - nCos u` (past the ball's reach, +-1: move on),
- * and its slope, evaluated into `sec`. One instance, the private workspace of flankAtWidth.
- */
-class WidthMismatch implements NewtonObjective {
-  slope = 0;
-  s: PostureShape | null = null;
-  sign = 1;
-  w = 0;
-  sec: Section = newSection();
-  value(delta: number): number {
-    const s = this.s as PostureShape;
-    const sec = this.sec;
-    const rcr = s.rcr;
-    evalSection(s, this.sign, delta, sec);
-    const u = this.w - sec.dy;
-    this.slope = 0;
-    if (rcr === 0) {
-      this.slope = sec.nCos;
-      return -u; // flat end: solve dy(delta) = w
-    }
-    if (u >= rcr) return -1;
-    if (u <= -rcr) return 1;
-    const v = Math.sqrt((rcr - u) * (rcr + u));
-    // u' = -nCos, v' = u nCos / v
-    this.slope = s.d0 * sec.cosD * v + (sec.nSin * u * sec.nCos) / v - sec.dNCos * u + sec.nCos * sec.nCos;
-    return sec.nSin * v - sec.nCos * u;
-  }
-}
-const widthMismatch = new WidthMismatch();
+/** flankAtWidth's Newton state (set and read within one call). */
+const widthNewton: NewtonState = newNewtonState();
 /** flankAtWidth's workspace (filled and read within one call). */
 const atWidthSection: Section = newSection();
 /** flankAtHeight's workspace (filled and read within one call). */
@@ -439,13 +392,29 @@ export function flankAtWidth(s: PostureShape, flank: Flank, widthMm: number): Fl
   const hi = widestOffsetRad(s, sign);
   let delta = 0;
   if (hi > 0) {
-    const g = widthMismatch;
-    g.s = s;
-    g.sign = sign;
-    g.w = w;
-    g.sec = sec;
-    delta = newtonRoot(g, 0, hi, 0.5 * hi, true, 1e-15, 200);
-    g.s = null;
+    // The mismatch between the profile normal and the ball's normal at offset u = w - dy:
+    // D0 sin(delta) sqrt(Rcr^2 - u^2) - nCos u; past the ball's reach (+-1), move on.
+    const st = widthNewton;
+    newtonStart(st, 0, hi, 0.5 * hi);
+    for (let i = 0; i < 200 && !st.done; i++) {
+      evalSection(s, sign, st.x, sec);
+      const u = w - sec.dy;
+      let g: number;
+      let slope = 0;
+      if (rcr === 0) {
+        g = -u; // flat end: solve dy(delta) = w
+        slope = sec.nCos;
+      } else if (u >= rcr) g = -1;
+      else if (u <= -rcr) g = 1;
+      else {
+        const v = Math.sqrt((rcr - u) * (rcr + u));
+        g = sec.nSin * v - sec.nCos * u;
+        // u' = -nCos, v' = u nCos / v
+        slope = s.d0 * sec.cosD * v + (sec.nSin * u * sec.nCos) / v - sec.dNCos * u + sec.nCos * sec.nCos;
+      }
+      newtonStep(st, g, slope, true, 1e-15);
+    }
+    delta = st.x;
   }
   evalSection(s, sign, delta, sec);
   const u = Math.min(rcr, Math.max(-rcr, w - sec.dy));

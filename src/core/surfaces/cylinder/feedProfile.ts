@@ -2,7 +2,14 @@
  * Axis along the feed (see ../cylinder.ts's module comment): the profile point of a section, the
  * polar angle a flank reaches at a radial height and its inverse. Lengths mm, angles radians.
  */
-import { bracketedRoot, type NewtonObjective, newtonRoot, type Objective } from '../../math/rootFinder';
+import {
+  bracketedRoot,
+  type NewtonState,
+  newNewtonState,
+  newtonStart,
+  newtonStep,
+  type Objective,
+} from '../../math/rootFinder';
 import { evalSection, type Flank, flankSign, newSection, type PostureShape, type Section } from '../../tool/posture';
 
 /**
@@ -22,11 +29,13 @@ export interface ProfilePoint {
   ct: number;
   /** The section evaluated (posture.ts's evalSection). */
   readonly section: Section;
+  /** The state of the Newton iteration of feedAngleAtHeight. */
+  readonly newton: NewtonState;
 }
 
 /** A profile point to be filled by {@link profilePoint}. */
 export function newProfilePoint(): ProfilePoint {
-  return { y: 0, h: 0, ey: 0, ez: 0, n: 0, st: 0, ct: 1, section: newSection() };
+  return { y: 0, h: 0, ey: 0, ez: 0, n: 0, st: 0, ct: 1, section: newSection(), newton: newNewtonState() };
 }
 
 /**
@@ -51,35 +60,11 @@ export function profilePoint(s: PostureShape, sign: number, delta: number, out: 
 }
 
 /**
- * G(delta) = Y^2 + (H - h)(H + h + 2 Rs), zero where the flank's profile point lies at radial
- * height h, and its slope G' = 2 K (Y cos theta + (H + Rs) sin theta), K = N + Rcr a b / N^2 (N
- * the norm of the ellipse normal).
- */
-class RadiusMismatch implements NewtonObjective {
-  slope = 0;
-  private readonly ab: number;
-  constructor(
-    private readonly s: PostureShape,
-    private readonly sign: number,
-    private readonly rs: number,
-    private readonly h: number,
-    private readonly at: ProfilePoint,
-  ) {
-    this.ab = s.a * s.b;
-  }
-  value(delta: number): number {
-    const { y: Y, h: H, n, st, ct } = profilePoint(this.s, this.sign, delta, this.at);
-    const { h, rs } = this;
-    const k = n > 0 ? n + (this.s.rcr * this.ab) / (n * n) : Number.POSITIVE_INFINITY;
-    this.slope = 2 * k * (Y * ct + (H + rs) * st);
-    return Y * Y + (H - h) * (H + h + 2 * rs);
-  }
-}
-
-/**
  * Polar angle of a flank point at radial height h on a cylinder with the axis along the feed: the
- * shared safeguarded Newton (rootFinder.ts) on G (RadiusMismatch), started from the plane's
- * osculating estimate; then the angle as a maximum over sections (feedAngleOfSection).
+ * shared safeguarded Newton step (rootFinder.ts) on G(delta) = Y^2 + (H - h)(H + h + 2 Rs), with
+ * G' = 2 K (Y cos theta + (H + Rs) sin theta), K = N + Rcr a b / N^2 (N the norm of the ellipse
+ * normal), started from the plane's osculating estimate; then the angle as a maximum over sections
+ * (feedAngleOfSection).
  * @param top an offset past the root, where G has changed sign.
  * @param at scratch the caller owns (filled here; its content is not part of the result).
  */
@@ -99,7 +84,14 @@ export function feedAngleAtHeight(
     const reff = rcr + (s.d0 > 0 ? (ab * ab) / (s.d0 * s.d0 * s.d0) : 0);
     const start = s.d0 > 0 ? (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0) : 0.5 * top;
     // G(0) = -h (h + 2 Rs): negative on a convex cylinder (G rises), positive on a concave one (it falls).
-    delta = newtonRoot(new RadiusMismatch(s, sign, rs, h, at), 0, top, start, rs > 0, 1e-12, 100);
+    const st = at.newton;
+    newtonStart(st, 0, top, start);
+    for (let i = 0; i < 100 && !st.done; i++) {
+      const { y: Y, h: H, n, st: sn, ct } = profilePoint(s, sign, st.x, at);
+      const k = n > 0 ? n + (rcr * ab) / (n * n) : Number.POSITIVE_INFINITY;
+      newtonStep(st, Y * Y + (H - h) * (H + h + 2 * rs), 2 * k * (Y * ct + (H + rs) * sn), rs > 0, 1e-12);
+    }
+    delta = st.x;
   }
   return feedAngleOfSection(s, sign, delta, rs, h, at.section);
 }
