@@ -23,7 +23,10 @@ function counted(fn: (x: number) => number): Objective & { calls: number; xs: nu
 }
 
 /** A Newton objective from f and f'. */
-function withSlope(fn: (x: number) => number, d: (x: number) => number): NewtonObjective & { calls: number } {
+function withSlope(
+  fn: (x: number) => number,
+  d: (x: number) => number,
+): NewtonObjective & { calls: number; slope: number } {
   return {
     calls: 0,
     slope: 0,
