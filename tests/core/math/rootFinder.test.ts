@@ -107,6 +107,19 @@ describe('bracketedRoot', () => {
     expect(f.calls).toBeLessThan(80);
   });
 
+  it('forces a bisection every fourth step: a jump of 1e10 is bracketed to the last bits, a steep exponential fast', () => {
+    // Regula falsi creeps from the low side of a jump (steps of 1e-10 of the bracket); the forced
+    // bisections find it (without them: 200 evaluations and 5e-5 off).
+    const jump = (x: number) => (x < 0.3 ? -1 : 1e10);
+    const f = counted(jump);
+    expect(Math.abs(bracketedRoot(f, 0, 1, -1, 1e10) - 0.3)).toBeLessThan(1e-15);
+    expect(f.calls).toBeLessThan(150);
+    const steep = (x: number) => Math.exp(50 * x) - 2;
+    const g = counted(steep);
+    expect(bracketedRoot(g, 0, 1, steep(0), steep(1))).toBeCloseTo(Math.log(2) / 50, 15);
+    expect(g.calls).toBeLessThan(50);
+  });
+
   it('takes an infinite end and a NaN inside without leaving the bracket', () => {
     const fn = (x: number) => (x > 0.9 ? Number.POSITIVE_INFINITY : x - 0.5);
     const f = counted(fn);
