@@ -17,6 +17,7 @@
 
 import type { ForwardInput, InverseInput } from '../domain/pass';
 import type { SurfaceDescriptorBase } from '../domain/surface';
+import { bracketedRoot } from '../math/rootFinder';
 import {
   contactOffsetMm,
   type FlankPoint,
@@ -244,37 +245,13 @@ export function congruentInverse(input: AnyInverse, c: CongruentPasses): ExactIn
   }
   // One-way with tilt (or across the axis): the cusp height z where the two reaches add up to L.
   const limit = c.limits().limitMm;
-  const f = (u: number) => c.intervalFromReach(c.reach('right', u * u) + c.reach('left', u * u)) - L;
-  let lo = 0;
-  let hi = Math.sqrt(limit);
-  let fLo = f(0);
-  let fHi = f(hi);
-  // The flat faces already cover L (a flat bottom lying on the cylinder): no scallop.
-  if (fLo >= 0) fHi = fLo;
-  let side = 0;
-  if (fLo >= 0) hi = 0;
-  for (let i = 0; i < 200 && hi - lo > 1e-16 * hi; i++) {
-    let u = hi - (fHi * (hi - lo)) / (fHi - fLo);
-    if (!(u > lo && u < hi)) u = 0.5 * (lo + hi);
-    const fu = f(u);
-    if (fu === 0) {
-      lo = u;
-      hi = u;
-      break;
-    }
-    if (fu < 0) {
-      lo = u;
-      fLo = fu;
-      if (side === -1) fHi /= 2;
-      side = -1;
-    } else {
-      hi = u;
-      fHi = fu;
-      if (side === 1) fLo /= 2;
-      side = 1;
-    }
-  }
-  const z = (0.5 * (lo + hi)) ** 2;
+  const f = { value: (u: number) => c.intervalFromReach(c.reach('right', u * u) + c.reach('left', u * u)) - L };
+  const hi = Math.sqrt(limit);
+  const fLo = f.value(0);
+  const fHi = fLo >= 0 ? fLo : f.value(hi);
+  // The flat faces already cover L (a flat bottom lying on the cylinder): no scallop. Past the
+  // limit (no sign change) the bracket's top.
+  const z = (fLo >= 0 ? 0 : fHi <= 0 ? hi : bracketedRoot(f, 0, hi, fLo, fHi, 1e-16)) ** 2;
   return {
     intervalMm: L,
     cuspHeightMm: z,

@@ -20,6 +20,7 @@
  * circle of radius `Rc + Rcr`). `dz` grows with `L` at the rate `(1 + Rcr k) sin alpha1 > 0`,
  * so the step-down gives `L` by a safeguarded Newton iteration.
  */
+import { newtonRoot } from '../math/rootFinder';
 import type { MeridianTool } from './meridianTool';
 
 /** sin(x)/x, 1 at 0 (series below 1e-4). */
@@ -102,27 +103,20 @@ export function stepDownOfIntervalMm(t: MeridianTool, m: Meridian, L: number): n
 
 /**
  * The arc length L (mm) whose step-down is `dzMm`, for `L` in [0, maxL] (dz increasing there):
- * Newton on `dz(L) - dzMm` with `dz'(L) = (1 + Rcr k) sin(alpha0 + kL)`, kept in its bracket.
+ * the shared safeguarded Newton (rootFinder.ts) on `dz(L) - dzMm` with `dz'(L) = (1 + Rcr k)
+ * sin(alpha0 + kL)`, kept in its bracket.
  * Returns null when even `maxL` steps down less than `dzMm`.
  */
 export function intervalOfStepDownMm(t: MeridianTool, m: Meridian, dzMm: number, maxL: number): number | null {
-  const f = (L: number) => stepDownOfIntervalMm(t, m, L) - dzMm;
-  let lo = 0;
-  let hi = maxL;
-  if (Number.isFinite(hi) && !(f(hi) >= 0)) return null;
   const scale = 1 + t.rcr * m.k;
-  let L = dzMm / (scale * m.sin0);
-  if (!(L < hi)) L = Number.isFinite(hi) ? 0.5 * hi : L;
-  for (let i = 0; i < 100; i++) {
-    const v = f(L);
-    if (v === 0) return L;
-    if (v > 0) hi = L;
-    else lo = L;
-    const slope = scale * Math.sin(m.alpha0 + m.k * L);
-    let next = slope > 0 ? L - v / slope : Number.NaN;
-    if (Math.abs(next - L) <= 1e-15 * L) return Math.min(Math.max(next, lo), hi);
-    if (!(next > lo && next < hi)) next = Number.isFinite(hi) ? 0.5 * (lo + hi) : 2 * L;
-    L = next;
-  }
-  return L;
+  const f = {
+    slope: 0,
+    value(L: number): number {
+      this.slope = scale * Math.sin(m.alpha0 + m.k * L);
+      return stepDownOfIntervalMm(t, m, L) - dzMm;
+    },
+  };
+  if (Number.isFinite(maxL) && !(f.value(maxL) >= 0)) return null;
+  const start = dzMm / (scale * m.sin0);
+  return newtonRoot(f, 0, maxL, start < maxL || !Number.isFinite(maxL) ? start : 0.5 * maxL, true, 1e-15, 100);
 }

@@ -13,6 +13,7 @@
  * flat end, Rcr = 0, has no scallop flank on the uphill side at any h once it is tilted). A
  * vertical wall (alpha = 90) is cut flat by the side: no scallop, no step.
  */
+import { bracketedRoot } from '../math/rootFinder';
 import { flankLimits, flankWidthMm, type PostureShape, postureShape } from '../tool/posture';
 import { sinDeg } from './angles';
 import {
@@ -279,37 +280,17 @@ export function slopedPlaneInverse(c: SlopedPlaneCase, step: ProgrammedStep): Th
 
 /**
  * Height (mm) of the one-way cusp that CC paths `L` apart leave: the root of `wR(z) + wL(z) = L`
- * below `limitMm` (the widths are the posture solver's flanks), by a bracketed regula falsi
- * (Illinois) in `u = sqrt(z)`, where the widths grow nearly linearly. (exact.ts's inverse gives the
+ * below `limitMm` (the widths are the posture solver's flanks), by the shared bracketed root
+ * (rootFinder.ts, Illinois) in `u = sqrt(z)`, where the widths grow nearly linearly. (exact.ts's inverse gives the
  * same root by Newton steps; it was measured at 0.06 to 4.5 ms on some steep tilted postures, too
  * slow for a 200-slope sweep, so the sweep solves it here from the forward widths.)
  */
 function oneWayCuspHeightMm(s: PostureShape, L: number, limitMm: number): number {
-  const width = (z: number) => flankWidthMm(s, 'right', z) + flankWidthMm(s, 'left', z);
-  let lo = 0;
-  let hi = Math.sqrt(limitMm);
+  const f = { value: (u: number) => flankWidthMm(s, 'right', u * u) + flankWidthMm(s, 'left', u * u) - L };
+  const hi = Math.sqrt(limitMm);
   // The flat bottom of a tool lying flat covers up to 2 (R - Rcr) without a cusp.
-  let fLo = width(0) - L;
+  const fLo = f.value(0);
   if (fLo >= 0) return 0;
-  let fHi = width(limitMm) - L;
-  let side = 0;
-  let u = hi;
-  for (let i = 0; i < 200 && hi - lo > 1e-16 * hi; i++) {
-    u = hi - (fHi * (hi - lo)) / (fHi - fLo);
-    if (!(u > lo && u < hi)) u = 0.5 * (lo + hi);
-    const f = width(u * u) - L;
-    if (f === 0) break;
-    if (f < 0) {
-      lo = u;
-      fLo = f;
-      if (side === -1) fHi /= 2;
-      side = -1;
-    } else {
-      hi = u;
-      fHi = f;
-      if (side === 1) fLo /= 2;
-      side = 1;
-    }
-  }
-  return u * u;
+  const fHi = f.value(hi);
+  return (fHi <= 0 ? hi : bracketedRoot(f, 0, hi, fLo, fHi, 1e-16)) ** 2;
 }

@@ -24,6 +24,7 @@
  * Lengths mm, angles degrees at the interface.
  */
 import { radToDeg } from '../input/units';
+import { bracketedRoot, MAX_ITERATIONS, newSearchEnd, newtonRoot } from '../math/rootFinder';
 import { cosDeg, sinDeg } from './angles';
 import {
   checkHeight,
@@ -209,7 +210,7 @@ function gouging(s: Setup, L: number | null): 0 | 1 | null {
 }
 
 /**
- * The L (mm) whose cusp is h high: a bracketed regula falsi (Illinois) on `sqrt(H(L)) - sqrt(h)`
+ * The L (mm) whose cusp is h high: the shared bracketed root (rootFinder.ts, Illinois) on `sqrt(H(L)) - sqrt(h)`
  * (nearly linear in L), where L past the shank's start counts as too far. Returns the bracket's
  * state: the root, or where the search ran out (shank, end of the usable surface).
  */
@@ -217,48 +218,30 @@ function solveInterval(s: Setup, h: number): Core {
   const t = s.tool;
   if (t.rcr === 0) return { kind: 'wall-only' };
   const rh = Math.sqrt(h);
-  const f = (L: number): number => {
-    const c = cuspAt(s, L);
-    return c.onShank ? Number.POSITIVE_INFINITY : Math.sqrt(Math.max(0, c.heightMm)) - rh;
+  const f = {
+    value(L: number): number {
+      const c = cuspAt(s, L);
+      return c.onShank ? Number.POSITIVE_INFINITY : Math.sqrt(Math.max(0, c.heightMm)) - rh;
+    },
   };
   const cap = s.maxL * (1 - 1e-12);
   let lo = 0;
   let fLo = -rh;
   let hi = Math.min(cap, 2 * Math.sqrt(2 * t.rcr * h) + Math.min(2 * t.rb, h / Math.max(s.mer.sin0, 1e-12)));
-  let fHi = f(hi);
+  let fHi = f.value(hi);
   while (fHi < 0) {
     if (hi >= cap) return { kind: 'past', limitL: s.maxL };
     lo = hi;
     fLo = fHi;
     hi = Math.min(cap, 2 * hi);
-    fHi = f(hi);
+    fHi = f.value(hi);
   }
-  let side = 0;
-  let L = hi;
-  for (let i = 0; i < 200; i++) {
-    let next = Number.isFinite(fHi) ? hi - (fHi * (hi - lo)) / (fHi - fLo) : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    const fn = f(next);
-    L = next;
-    if (fn === 0) break;
-    if (fn < 0) {
-      lo = next;
-      fLo = fn;
-      if (side === -1) fHi /= 2;
-      side = -1;
-    } else {
-      hi = next;
-      fHi = fn;
-      if (side === 1) fLo /= 2;
-      side = 1;
-    }
-    if (hi - lo <= 1e-15 * hi) break;
-  }
-  if (cuspAt(s, L).onShank || !Number.isFinite(fHi)) {
-    // Converged onto the shank's start: h is at or above the shank limit.
-    const c = cuspAt(s, L);
-    if (c.onShank || Math.abs(c.heightMm - h) > 1e-12 * (1 + h)) return { kind: 'shank', limitL: shankStartL(s, hi) };
-  }
+  const end = newSearchEnd();
+  const L = bracketedRoot(f, lo, hi, fLo, fHi, 1e-15, MAX_ITERATIONS, end);
+  // A bracket still closed by a point on the shank converged onto the shank's start (the sign
+  // change is the jump to +Infinity there, not a root): h is at or above the shank limit.
+  if (cuspAt(s, L).onShank || (cuspAt(s, end.hi).onShank && f.value(L) !== 0))
+    return { kind: 'shank', limitL: shankStartL(s, end.hi) };
   return { kind: 'ok', L };
 }
 
@@ -564,24 +547,15 @@ export function waterlineCuspAbove(c: RevolutionCase, stepDownMm: number): Three
       `must be below ${formatNumber(dzOf(maxL))} mm here (got ${stepDownMm}): the pass above would lie beyond ${k > 0 ? 'the top of the convex meridian' : 'the vertical of the concave meridian'}.`,
     );
   if (Number.isFinite(maxL) && !(dzOf(maxL) > stepDownMm)) return { ok: false, errors: [beyond()] };
-  let lo = 0;
-  let hi = maxL;
-  let L = stepDownMm / (scale * s.mer.sin0);
-  if (!(L < hi)) L = 0.5 * hi;
-  for (let i = 0; i < 100; i++) {
-    const v = dzOf(L) - stepDownMm;
-    if (v === 0) break;
-    if (v > 0) hi = L;
-    else lo = L;
-    const slope = scale * Math.sin(alpha0 - k * L);
-    let next = slope > 0 ? L - v / slope : Number.NaN;
-    if (Math.abs(next - L) <= 1e-15 * L) {
-      L = Math.min(Math.max(next, lo), hi);
-      break;
-    }
-    if (!(next > lo && next < hi)) next = Number.isFinite(hi) ? 0.5 * (lo + hi) : 2 * L;
-    L = next;
-  }
+  const mismatch = {
+    slope: 0,
+    value(L: number): number {
+      this.slope = scale * Math.sin(alpha0 - k * L);
+      return dzOf(L) - stepDownMm;
+    },
+  };
+  const start = stepDownMm / (scale * s.mer.sin0);
+  const L = newtonRoot(mismatch, 0, maxL, start < maxL ? start : 0.5 * maxL, true, 1e-15, 100);
   const alphaU = alpha0 - k * L;
   // The upper CC point relative to this one, and the axis relative to it.
   const half = (k * L) / 2;

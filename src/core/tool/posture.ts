@@ -28,111 +28,34 @@
  * monotone in delta, so a bracketed Newton solves it; the width is then `W(delta*)`, whose
  * error is second order in the error of delta* (it is a maximum). The left flank is the right
  * flank of the mirrored posture (`phi -> -phi`). Lengths mm, angles radians.
+ *
+ * The shape and its sections are in postureShape.ts (re-exported here); this module solves the
+ * flanks: their limits, the width at a height and the inverse.
  */
-import { degToRad } from '../input/units';
+import { type NewtonState, newNewtonState, newtonStart, newtonStep } from '../math/rootFinder';
+import {
+  evalSection,
+  type Flank,
+  flankSign,
+  newSection,
+  type PostureShape,
+  type Section,
+  widestOffsetRad,
+} from './postureShape';
 
-/** The profile of one posture: the rotated offset ellipse, with its contact precomputed. */
-export interface PostureShape {
-  /** Long semi-axis of the projected ring, `Rb = R - Rcr`, mm. */
-  readonly a: number;
-  /** Short semi-axis, `Rb cos(beta) sin(rho)`, mm (>= 0). */
-  readonly b: number;
-  /** Corner radius `Rcr`, mm. */
-  readonly rcr: number;
-  /** Rotation `phi` of the ellipse (radians, in (-pi/2, pi/2)), its sine and cosine. */
-  readonly phi: number;
-  readonly sinPhi: number;
-  readonly cosPhi: number;
-  /** Support of the ring ellipse in the down direction: `sqrt(a^2 sin^2 phi + b^2 cos^2 phi)`, mm. */
-  readonly d0: number;
-  /** Ring angle `t0` of the contact: its sine and cosine. */
-  readonly sinT0: number;
-  readonly cosT0: number;
-  /**
-   * True for a flat bottom lying flat on the plane (b = 0 and phi = 0: no lead, no tilt): the
-   * contact is the whole bottom face; widths are then measured from the tool centre point.
-   */
-  readonly flatOnPlane: boolean;
-}
-
-/** Which flank: right (+Y, towards the tilt) or left (-Y). */
-export type Flank = 'right' | 'left';
-
-/**
- * The profile shape of a tool in a posture.
- * @param toolRadiusMm R > 0, mm. @param cornerRadiusMm 0 <= Rcr <= R, mm.
- * @param leadAngleRad rho in [0, pi/2). @param tiltAngleRad beta in (-pi/2, pi/2).
- */
-export function postureShape(
-  toolRadiusMm: number,
-  cornerRadiusMm: number,
-  leadAngleRad: number,
-  tiltAngleRad: number,
-): PostureShape {
-  const a = toolRadiusMm - cornerRadiusMm;
-  const cosBeta = Math.cos(tiltAngleRad);
-  const sinBeta = Math.sin(tiltAngleRad);
-  const b = a * cosBeta * Math.sin(leadAngleRad);
-  const phi = Math.atan2(sinBeta, cosBeta * Math.cos(leadAngleRad));
-  return shapeWithPhi(a, b, cornerRadiusMm, phi, Math.sin(phi), Math.cos(phi));
-}
-
-function shapeWithPhi(a: number, b: number, rcr: number, phi: number, sinPhi: number, cosPhi: number): PostureShape {
-  const as = a * sinPhi;
-  const bc = b * cosPhi;
-  // sqrt rather than Math.hypot (slow in V8): |R| <= 1000 mm keeps the squares far from overflow.
-  const d0 = Math.sqrt(as * as + bc * bc);
-  const flatOnPlane = d0 === 0 && a > 0;
-  // Ball end (a = 0): the ring is a point; t0 is immaterial. Flat on the plane: t0 = 0, the centre.
-  const sinT0 = d0 > 0 ? as / d0 : 0;
-  const cosT0 = d0 > 0 ? bc / d0 : 1;
-  return { a, b, rcr, phi, sinPhi, cosPhi, d0, sinT0, cosT0, flatOnPlane };
-}
-
-/** The same tool seen in the mirror `y -> -y`: its right flank is the original's left flank. */
-export function mirrorShape(s: PostureShape): PostureShape {
-  return { ...s, phi: -s.phi, sinPhi: -s.sinPhi, sinT0: -s.sinT0 };
-}
-
-/** +1 for the right flank, -1 for the left (the right flank of the mirror image). */
-export function flankSign(flank: Flank): 1 | -1 {
-  return flank === 'right' ? 1 : -1;
-}
-
-/** The shape of a validated tool input (angles in degrees). */
-export function shapeOfTool(tool: {
-  readonly toolRadiusMm: number;
-  readonly cornerRadiusMm: number;
-  readonly leadAngleDeg: number;
-  readonly tiltAngleDeg: number;
-}): PostureShape {
-  return postureShape(tool.toolRadiusMm, tool.cornerRadiusMm, degToRad(tool.leadAngleDeg), degToRad(tool.tiltAngleDeg));
-}
-
-/**
- * Contact offset `y0` (mm): Y of the contact point minus Y of the tool centre point O. Positive
- * when the tool leans to +Y (it touches down with its right side). `(a^2 - b^2) sin phi cos phi / D0`.
- */
-export function contactOffsetMm(s: PostureShape): number {
-  if (!(s.d0 > 0)) return 0;
-  return ((s.a * s.a - s.b * s.b) * s.sinPhi * s.cosPhi) / s.d0;
-}
-
-/** Height (mm) of the tool centre point O above the contact: `D0 + Rcr` (Eq. 7 for beta = 0). */
-export function centreHeightMm(s: PostureShape): number {
-  return s.d0 + s.rcr;
-}
-
-/**
- * Ring-angle offset (radians, from the contact) of the right flank's widest point, where the
- * profile's normal is horizontal: `atan2(ab, (a^2 - b^2) sin phi cos phi)`; `pi/2` when flat on
- * the plane, 0 for a ball end (the ring is a point).
- */
-function widestOffsetRad(s: PostureShape, sign: number): number {
-  if (s.flatOnPlane) return Math.PI / 2;
-  if (s.a === 0) return 0;
-  return Math.atan2(s.a * s.b, (s.a * s.a - s.b * s.b) * sign * s.sinPhi * s.cosPhi);
-}
+export {
+  centreHeightMm,
+  contactOffsetMm,
+  evalSection,
+  type Flank,
+  flankSign,
+  mirrorShape,
+  newSection,
+  type PostureShape,
+  postureShape,
+  type Section,
+  shapeOfTool,
+} from './postureShape';
 
 /**
  * Height (mm) above the contact of the right flank's widest point (`hmax`): above it the flank
@@ -210,77 +133,29 @@ export interface FlankPoint {
   readonly normalAngleRad: number;
 }
 
-/** Scratch state of one section, filled in place (no allocation in the solver loop). */
-export interface Section {
-  sinD: number;
-  cosD: number;
-  sinT: number;
-  cosT: number;
-  /** dz, dy of the ring point relative to the contact's ring point. */
-  dz: number;
-  dy: number;
-  /** `D0 sin delta` and `a cos phi cos t + b sin phi sin t`: the profile normal (unnormalised). */
-  nSin: number;
-  nCos: number;
-  /** Derivative of nCos with respect to delta. */
-  dNCos: number;
-}
-
-/**
- * Fills `out` for the section `delta` past the contact on the flank `sign` (+1 right, -1 left:
- * the left flank is the right flank of the mirror image, phi -> -phi, t0 -> -t0).
- */
-export function evalSection(s: PostureShape, sign: number, delta: number, out: Section): void {
-  const sinT0 = sign * s.sinT0;
-  const sinPhi = sign * s.sinPhi;
-  const sinH = Math.sin(delta / 2);
-  const cosH = Math.cos(delta / 2);
-  // Double-angle forms: two trigonometric calls per section instead of four.
-  const sinD = 2 * sinH * cosH;
-  const cosD = (cosH - sinH) * (cosH + sinH);
-  const sinT = sinT0 * cosD + s.cosT0 * sinD;
-  const cosT = s.cosT0 * cosD - sinT0 * sinD;
-  // t0 + delta/2: its sine and cosine by the half-angle rotation of t0.
-  const sinM = sinT0 * cosH + s.cosT0 * sinH;
-  const cosM = s.cosT0 * cosH - sinT0 * sinH;
-  out.sinD = sinD;
-  out.cosD = cosD;
-  out.sinT = sinT;
-  out.cosT = cosT;
-  out.dz = 2 * s.d0 * sinH * sinH;
-  out.dy = 2 * sinH * (s.a * s.cosPhi * cosM + s.b * sinPhi * sinM);
-  out.nSin = s.d0 * sinD;
-  out.nCos = s.a * s.cosPhi * cosT + s.b * sinPhi * sinT;
-  out.dNCos = -s.a * s.cosPhi * sinT + s.b * sinPhi * cosT;
-}
-
 /** `sqrt(q (2 Rcr - q))`, 0 outside [0, 2 Rcr]: the ball's horizontal reach at offset q. */
 function reachMm(rcr: number, q: number): number {
   if (!(q > 0) || !(q < 2 * rcr)) return 0;
   return Math.sqrt(q * (2 * rcr - q));
 }
 
-/** A section's scratch state, ready to be filled by {@link evalSection}. */
-export function newSection(): Section {
-  return { sinD: 0, cosD: 1, sinT: 0, cosT: 1, dz: 0, dy: 0, nSin: 0, nCos: 0, dNCos: 0 };
-}
-
-const scratch: Section = newSection();
-
 /** Half-angle form of the corner's normal angle at vertical offset q: `acos(1 - q/Rcr)`. */
 function cornerAngleRad(rcr: number, q: number): number {
   return 2 * Math.asin(Math.min(1, Math.sqrt(Math.max(0, q) / (2 * rcr))));
 }
 
+/** sectionAtHeight's Newton state (set and read within one call). */
+const heightNewton: NewtonState = newNewtonState();
+
 /**
  * Ring-angle offset of the section carrying the flank `sign` at height h (0 < h below the
- * flank's top). Bracketed Newton on the sign-monotone
+ * flank's top). The shared safeguarded Newton step (rootFinder.ts) on the sign-monotone
  * `G(delta) = D0 sin(delta) (Rcr - q) - (a cos phi cos t + b sin phi sin t) r`, zero where the
- * profile normal meets the section's crossing with the plane. Leaves that section in `scratch`.
+ * profile normal meets the section's crossing with the plane.
+ * Fills `sec` with that section (allocation-free).
  */
-function sectionAtHeight(s: PostureShape, sign: number, h: number): number {
+function sectionAtHeight(s: PostureShape, sign: number, h: number, sec: Section): number {
   const rcr = s.rcr;
-  const sec = scratch;
   if (s.flatOnPlane) {
     evalSection(s, sign, Math.PI / 2, sec);
     return Math.PI / 2;
@@ -292,39 +167,27 @@ function sectionAtHeight(s: PostureShape, sign: number, h: number): number {
       // Flat end: the flank is the ring ellipse itself, dz(delta) = h in closed form.
       delta = Math.min(deltaTop, 2 * Math.asin(Math.min(1, Math.sqrt(h / (2 * s.d0)))));
     } else {
-      let lo = 0;
       // The section's ring point cannot rise above h: dz(delta) <= h bounds delta from above.
-      let hi = h < 2 * s.d0 ? Math.min(deltaTop, 2 * Math.asin(Math.sqrt(h / (2 * s.d0)))) : deltaTop;
+      const hi = h < 2 * s.d0 ? Math.min(deltaTop, 2 * Math.asin(Math.sqrt(h / (2 * s.d0)))) : deltaTop;
       if (hi > 0) {
         // Start from the osculating circle: theta ~ sqrt(2h/Reff), delta ~ theta ab / D0^2.
         const ab = s.a * s.b;
         const reff = rcr + (ab * ab) / (s.d0 * s.d0 * s.d0);
-        delta = (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0);
-        if (!(delta > lo && delta < hi)) delta = 0.5 * (lo + hi);
-        for (let i = 0; i < 100; i++) {
-          evalSection(s, sign, delta, sec);
+        const start = (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0);
+        // A Newton step below 1e-12 (relative) ends it (1e-8 was measured to cost up to 7e-9 mm
+        // with a corner of 1e-9 R, where the root sits next to the ball's vertical tangent).
+        const st = heightNewton;
+        newtonStart(st, 0, hi, start);
+        for (let i = 0; i < 100 && !st.done; i++) {
+          evalSection(s, sign, st.x, sec);
           const q = h - sec.dz;
           const c = rcr - q;
           const r = reachMm(rcr, q);
-          const g = sec.nSin * c - sec.nCos * r;
-          if (g === 0) break;
-          if (g > 0) hi = delta;
-          else lo = delta;
           let slope = s.d0 * sec.cosD * c + sec.nSin * sec.nSin - sec.dNCos * r;
           if (r > 0) slope += (sec.nCos * sec.nSin * c) / r;
-          let next = slope > 0 ? delta - g / slope : Number.NaN;
-          // A Newton step below 1e-12 (relative): done (1e-8 was measured to cost up to 7e-9 mm with
-          // a corner of 1e-9 R, where the root sits next to the ball's vertical tangent). This comes
-          // before the bracket test, which a converged step can fail by rounding alone (it lands on
-          // the bracket end it just set).
-          if (Math.abs(next - delta) <= 1e-12 * delta) {
-            delta = Math.min(Math.max(next, lo), hi);
-            break;
-          }
-          if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-          delta = next;
-          if (hi - lo <= 4e-16 * hi) break;
+          newtonStep(st, sec.nSin * c - sec.nCos * r, slope, true, 1e-12);
         }
+        delta = st.x;
       }
     }
   }
@@ -338,11 +201,15 @@ function sectionAtHeight(s: PostureShape, sign: number, h: number): number {
  * is flat on the plane). Valid for 0 < h below that flank's top (flankLimits); error below
  * 1e-9 mm over the valid domain. Allocation-free.
  */
+/** flankWidthMm's workspace (filled and read within one call). */
+const widthSection: Section = newSection();
+
 export function flankWidthMm(s: PostureShape, flank: Flank, heightMm: number): number {
   const rcr = s.rcr;
   if (s.a === 0) return reachMm(rcr, heightMm);
-  sectionAtHeight(s, flankSign(flank), heightMm);
-  return scratch.dy + reachMm(rcr, heightMm - scratch.dz);
+  const sec = widthSection;
+  sectionAtHeight(s, flankSign(flank), heightMm, sec);
+  return sec.dy + reachMm(rcr, heightMm - sec.dz);
 }
 
 /** The point of a flank at `heightMm` above the contact (see flankWidthMm), with its section. */
@@ -356,13 +223,21 @@ export function flankAtHeight(s: PostureShape, flank: Flank, heightMm: number): 
       normalAngleRad: cornerAngleRad(rcr, heightMm),
     };
   }
-  const delta = sectionAtHeight(s, flankSign(flank), heightMm);
-  const q = heightMm - scratch.dz;
+  const sec = atHeightSection;
+  const delta = sectionAtHeight(s, flankSign(flank), heightMm, sec);
+  const q = heightMm - sec.dz;
   // At the root the profile normal is the angle of the crossing on its ball, acos(1 - q/Rcr),
   // which stays defined where a corner collapses onto one ring angle (b = 0).
-  const normal = rcr > 0 ? cornerAngleRad(rcr, q) : Math.atan2(scratch.nSin, scratch.nCos);
-  return { widthMm: scratch.dy + reachMm(rcr, q), heightMm, ringOffsetRad: delta, normalAngleRad: normal };
+  const normal = rcr > 0 ? cornerAngleRad(rcr, q) : Math.atan2(sec.nSin, sec.nCos);
+  return { widthMm: sec.dy + reachMm(rcr, q), heightMm, ringOffsetRad: delta, normalAngleRad: normal };
 }
+
+/** flankAtWidth's Newton state (set and read within one call). */
+const widthNewton: NewtonState = newNewtonState();
+/** flankAtWidth's workspace (filled and read within one call). */
+const atWidthSection: Section = newSection();
+/** flankAtHeight's workspace (filled and read within one call). */
+const atHeightSection: Section = newSection();
 
 /**
  * The point of a flank at horizontal distance `widthMm` from the contact: the inverse of
@@ -386,39 +261,33 @@ export function flankAtWidth(s: PostureShape, flank: Flank, widthMm: number): Fl
     };
   }
   const sign = flankSign(flank);
-  const sec = scratch;
-  let lo = 0;
-  let hi = widestOffsetRad(s, sign);
-  let delta = 0.5 * (lo + hi);
-  for (let i = 0; i < 200 && hi > lo; i++) {
-    evalSection(s, sign, delta, sec);
-    const u = w - sec.dy;
-    // Sign of the mismatch between the profile normal and the ball's normal at offset u:
-    // D0 sin(delta) sqrt(Rcr^2 - u^2) - nCos u; past the ball's reach, move on.
-    let g: number;
-    let slope = 0;
-    if (rcr === 0) {
-      g = -u; // flat end: solve dy(delta) = w
-      slope = sec.nCos;
-    } else if (u >= rcr) g = -1;
-    else if (u <= -rcr) g = 1;
-    else {
-      const v = Math.sqrt((rcr - u) * (rcr + u));
-      g = sec.nSin * v - sec.nCos * u;
-      // u' = -nCos, v' = u nCos / v
-      slope = s.d0 * sec.cosD * v + (sec.nSin * u * sec.nCos) / v - sec.dNCos * u + sec.nCos * sec.nCos;
+  const sec = atWidthSection;
+  const hi = widestOffsetRad(s, sign);
+  let delta = 0;
+  if (hi > 0) {
+    // The mismatch between the profile normal and the ball's normal at offset u = w - dy:
+    // D0 sin(delta) sqrt(Rcr^2 - u^2) - nCos u; past the ball's reach (+-1), move on.
+    const st = widthNewton;
+    newtonStart(st, 0, hi, 0.5 * hi);
+    for (let i = 0; i < 200 && !st.done; i++) {
+      evalSection(s, sign, st.x, sec);
+      const u = w - sec.dy;
+      let g: number;
+      let slope = 0;
+      if (rcr === 0) {
+        g = -u; // flat end: solve dy(delta) = w
+        slope = sec.nCos;
+      } else if (u >= rcr) g = -1;
+      else if (u <= -rcr) g = 1;
+      else {
+        const v = Math.sqrt((rcr - u) * (rcr + u));
+        g = sec.nSin * v - sec.nCos * u;
+        // u' = -nCos, v' = u nCos / v
+        slope = s.d0 * sec.cosD * v + (sec.nSin * u * sec.nCos) / v - sec.dNCos * u + sec.nCos * sec.nCos;
+      }
+      newtonStep(st, g, slope, true, 1e-15);
     }
-    if (g === 0) break;
-    if (g > 0) hi = delta;
-    else lo = delta;
-    let next = slope > 0 ? delta - g / slope : Number.NaN;
-    if (Math.abs(next - delta) <= 1e-15 * delta) {
-      delta = Math.min(Math.max(next, lo), hi);
-      break;
-    }
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    delta = next;
-    if (hi - lo <= 4e-16 * hi) break;
+    delta = st.x;
   }
   evalSection(s, sign, delta, sec);
   const u = Math.min(rcr, Math.max(-rcr, w - sec.dy));

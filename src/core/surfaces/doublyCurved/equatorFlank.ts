@@ -32,8 +32,9 @@
  * Reaches are returned as arc length along the equator, `|Rc|` times the angle (a width when Rc is
  * infinite). Lengths mm, angles radians.
  */
+
+import { bracketedRoot, maximise, newSearchEnd, type Objective } from '../../math/rootFinder';
 import type { PassSection } from './passSection';
-import { bracketedRoot, maximise, type Objective, searchState } from './search';
 
 /** A flank of the section seen from `m`. */
 export interface EquatorFlank {
@@ -203,14 +204,16 @@ class Flank implements EquatorFlank {
       // Convex: the tangent from C with the largest polar angle.
       let u = 0;
       if (U > 0) {
-        maximise(new TopObjective(this), 0, U, 32, 1e-12 * U);
-        u = searchState.argMax;
+        const at = newSearchEnd();
+        maximise(new TopObjective(this), 0, U, 32, 1e-12 * U, at);
+        u = at.x;
       }
       result = { heightMm: this.tangentHeight(u), u };
     } else if (this.mode < 0 && U > 0) {
       // Concave: the first maximum of the radial height (a normal through C), unless it rises to the widest point.
-      const best = maximise(new TopObjective(this), 0, U, 32, 1e-12 * U);
-      const u = searchState.argMax;
+      const at = newSearchEnd();
+      const best = maximise(new TopObjective(this), 0, U, 32, 1e-12 * U, at);
+      const u = at.x;
       result = u >= U * (1 - 1e-9) ? { heightMm: this.widestHeight(U), u: U } : { heightMm: best, u };
     } else {
       result = { heightMm: this.widestHeight(U), u: U };

@@ -32,8 +32,8 @@
  */
 
 import type { ToolInput } from '../../domain/tool';
+import { maximise, type Objective } from '../../math/rootFinder';
 import { placeTool } from '../../tool/placement';
-import { maximise, type Objective } from './search';
 import { MAX_PRINCIPAL_RADIUS_MM, MIN_PRINCIPAL_RADIUS_MM, type PrincipalRadii } from './types';
 
 /** Largest |curvature| a principal radius can have: 1 / 0.001 mm. */

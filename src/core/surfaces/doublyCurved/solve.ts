@@ -16,6 +16,7 @@
  */
 
 import type { ToolInput } from '../../domain/tool';
+import { bracketedRoot, type Objective } from '../../math/rootFinder';
 import { contactOffsetMm, shapeOfTool } from '../../tool/posture';
 import { type EquatorFlank, equatorFlank } from './equatorFlank';
 import { passSection } from './passSection';
@@ -174,35 +175,30 @@ export function inverseWith(
   };
 }
 
-/** The one-way cusp height for a step-over L: wR(z) + wL(z) = L, secant (Illinois) in u = sqrt(z). */
+/** `wR(u^2) + wL(u^2) - L`: the one-way cusp's mismatch at height u^2 (u in sqrt(mm)). */
+class OneWayMismatch implements Objective {
+  constructor(
+    private readonly solver: DoublyCurvedSolver,
+    private readonly L: number,
+  ) {}
+  value(u: number): number {
+    return this.solver.right.reachMm(u * u) + this.solver.left.reachMm(u * u) - this.L;
+  }
+}
+
+/**
+ * The one-way cusp height for a step-over L: wR(z) + wL(z) = L, by the shared bracketed root
+ * (Illinois) in u = sqrt(z), where the reaches grow nearly linearly.
+ */
 function oneWayCuspMm(solver: DoublyCurvedSolver, L: number): number {
-  const f = (u: number) => solver.right.reachMm(u * u) + solver.left.reachMm(u * u) - L;
-  let lo = 0;
-  let hi = Math.sqrt(solver.limits().limitMm);
-  let fLo = f(lo);
-  let fHi = f(hi);
+  const f = new OneWayMismatch(solver, L);
+  const hi = Math.sqrt(solver.limits().limitMm);
+  const fLo = f.value(0);
+  const fHi = f.value(hi);
   // A flat face already covers L: no scallop.
   if (fLo >= 0) return 0;
   if (fHi <= 0) return hi * hi;
-  let side = 0;
-  for (let i = 0; i < 200 && hi - lo > 1e-16 * hi; i++) {
-    let u = hi - (fHi * (hi - lo)) / (fHi - fLo);
-    if (!(u > lo && u < hi) || i % 4 === 3) u = 0.5 * (lo + hi);
-    const fu = f(u);
-    if (fu === 0) return u * u;
-    if (fu < 0) {
-      lo = u;
-      fLo = fu;
-      if (side === -1) fHi /= 2;
-      side = -1;
-    } else {
-      hi = u;
-      fHi = fu;
-      if (side === 1) fLo /= 2;
-      side = 1;
-    }
-  }
-  return (0.5 * (lo + hi)) ** 2;
+  return bracketedRoot(f, 0, hi, fLo, fHi, 1e-16) ** 2;
 }
 
 /** The flank limits (radial heights, mm) of a tool at a doubly curved point. */
