@@ -2,7 +2,7 @@
  * The solver worker's API: one function per job, the large arrays of a reply marked for transfer.
  * Exposed by solver.worker.ts; its type is what the page's clients call (rpc.ts `Remote`).
  */
-import { teach, transferables } from './api';
+import { sceneTransferables, teach, transferables } from './api';
 import { solvePage } from './jobs/page';
 import { table } from './jobs/table';
 import { isSolveReply, type PageReply, type PageRequest } from './pageProtocol';
@@ -16,7 +16,9 @@ const simulations = new SimulationRunner();
 export const workerApi = {
   solve(request: PageRequest): PageReply {
     const reply = solvePage(request);
-    return isSolveReply(reply) ? transfer(reply, transferables(reply)) : reply;
+    if (isSolveReply(reply)) return transfer(reply, transferables(reply));
+    // A doubly curved or three-axis answer: its scene's arrays.
+    return reply.ok ? transfer(reply, [...sceneTransferables(reply.scene)]) : reply;
   },
   teach(request: SolveRequest): TeachReply {
     const reply = teach(request);

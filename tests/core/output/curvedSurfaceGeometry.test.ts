@@ -7,16 +7,16 @@
  * meridian circle revolved about the vertical axis, and its feed lines are level (waterline passes).
  */
 import { describe, expect, it } from 'vitest';
+import type { Vec3 } from '../../../src/core/math/vec';
 import {
   curvedAxisFoot,
   curvedHeightAboveMm,
-  revolutionFrame,
   type RevolutionPatch,
+  revolutionFrame,
   type TorusPatch,
   toMachine,
 } from '../../../src/core/output/curvedSurfaceGeometry';
 import { surfacePoint } from '../../../src/core/output/surfaceGeometry';
-import type { Vec3 } from '../../../src/core/math/vec';
 
 const INF = Number.POSITIVE_INFINITY;
 const torus = (feedRadiusMm: number, crossRadiusMm: number): TorusPatch => ({
