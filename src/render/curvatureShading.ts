@@ -9,8 +9,8 @@
  */
 
 /** The colour of a surface falling away from the tangent plane (convex) and rising from it (concave), 0-1 RGB. */
-export const FALLING_RGB: readonly [number, number, number] = [0.32, 0.52, 0.95];
-export const RISING_RGB: readonly [number, number, number] = [0.98, 0.58, 0.22];
+export const FALLING_RGB: readonly [number, number, number] = [0.2, 0.42, 0.95];
+export const RISING_RGB: readonly [number, number, number] = [1, 0.5, 0.08];
 
 /** Iso-height bands from the tangent plane to the patch's farthest height. */
 export const SHADING_BANDS = 5;
@@ -29,22 +29,30 @@ export function curvatureColoursInto(
   flatMm: number,
 ): number {
   const n = rows * columns;
-  let most = 0;
-  for (let i = 0; i < n; i++) most = Math.max(most, Math.abs(positions[3 * i + 2] as number));
+  // The farthest height on each side of the tangent plane: each side's bands span its own range.
+  let below = 0;
+  let above = 0;
+  for (let i = 0; i < n; i++) {
+    const z = positions[3 * i + 2] as number;
+    if (z < below) below = z;
+    if (z > above) above = z;
+  }
+  const most = Math.max(-below, above);
   if (!(most > flatMm)) {
     for (let i = 0; i < 3 * n; i++) out[i] = 1;
     return most;
   }
-  const band = most / SHADING_BANDS;
   const at = (r: number, c: number, k: number) =>
     positions[3 * (Math.min(rows - 1, Math.max(0, r)) * columns + Math.min(columns - 1, Math.max(0, c))) + k] as number;
   for (let r = 0; r < rows; r++)
     for (let c = 0; c < columns; c++) {
       const i = r * columns + c;
       const z = positions[3 * i + 2] as number;
-      // Terraces: the band's index, lighter near the tangent plane, deeper farther from it.
-      const level = Math.min(SHADING_BANDS, Math.floor(Math.abs(z) / band) + 1) / SHADING_BANDS;
-      const hue = z < 0 ? FALLING_RGB : RISING_RGB;
+      const falling = z < 0;
+      // Terraces: the band's index, pale near the tangent plane, full farther from it; every other band darker (iso-lines).
+      const band = Math.min(SHADING_BANDS - 1, Math.floor((SHADING_BANDS * Math.abs(z)) / (falling ? -below : above)));
+      const level = (band + 1) / SHADING_BANDS;
+      const hue = falling ? FALLING_RGB : RISING_RGB;
       // The normal from the grid's neighbours (central differences) against a light from above and the side.
       const ux = at(r + 1, c, 0) - at(r - 1, c, 0);
       const uy = at(r + 1, c, 1) - at(r - 1, c, 1);
@@ -57,7 +65,7 @@ export function curvatureColoursInto(
       const nz = ux * vy - uy * vx;
       const len = Math.hypot(nx, ny, nz) || 1;
       const light = Math.abs(0.36 * nx - 0.48 * ny + 0.8 * nz) / len;
-      const shade = 0.7 + 0.3 * light;
+      const shade = (0.75 + 0.25 * light) * (band % 2 === 1 ? 0.84 : 1);
       // White mixed towards the hue by the band's level.
       for (let k = 0; k < 3; k++) out[3 * i + k] = shade * (1 - level * (1 - (hue[k] as number)));
     }

@@ -8,7 +8,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import type { Vec3 } from '../../src/core/math/vec';
-import { type CurvedPatch, curvedHeightAboveMm, toMachine } from '../../src/core/output/curvedSurfaceGeometry';
+import { type CurvedPatch, curvedHeightAboveMm, revolutionFrame, toMachine } from '../../src/core/output/curvedSurfaceGeometry';
 import { applyMatrix, surfacePoint } from '../../src/core/output/surfaceGeometry';
 import { passSection } from '../../src/core/surfaces/doublyCurved/passSection';
 import type { ThreeAxisProblem } from '../../src/core/threeAxis/validate';
@@ -163,7 +163,7 @@ describe('three-axis machining: the scene in the machine frame', () => {
       const next = g.machine?.passMatrices[0] as number[];
       // The drawn surface L down the meridian is the solver's next CC point (meridian plane: s down-slope, z up).
       const cc1 = reply.waterline?.geometry.cc1 as readonly [number, number];
-      const onSurface = toMachine(f, surfacePoint(s, 0, reply.answer.intervalMm, 0));
+      const onSurface = toMachine(revolutionFrame(slope), surfacePoint(s, 0, reply.answer.intervalMm, 0));
       for (const [k, want] of [
         [0, -cc1[0]],
         [1, 0],

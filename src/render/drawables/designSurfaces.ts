@@ -17,6 +17,9 @@ import { COLOURS, type Drawable, type DrawState, disposeObjects } from './parts'
 const PATCH_FEED = 48;
 const PATCH_CROSS = 64;
 
+/** A curved patch's material colour: white (not themed), so that its vertex colours show as they are. */
+const CURVED_BASE = 0xffffff;
+
 function patchMesh(color: number, opacity: number, shaded: boolean): Mesh {
   const g = new BufferGeometry();
   const vertices = (PATCH_FEED + 1) * (PATCH_CROSS + 1) * 3;
@@ -49,11 +52,7 @@ function fillPatch(mesh: Mesh, s: DrawState, heightMm: number): void {
   attr.needsUpdate = true;
   const colours = mesh.geometry.getAttribute('color') as BufferAttribute | undefined;
   if (colours !== undefined) {
-    const kind = s.geometry.surface.kind;
-    const curved = kind === 'torus' || kind === 'revolution';
-    // A plane or a cylinder: white (the material's colour); a doubly curved patch: its shape.
-    if (curved) curvatureColoursInto(colours.array, points, PATCH_FEED + 1, PATCH_CROSS + 1, 0);
-    else (colours.array as Float32Array).fill(1);
+    curvatureColoursInto(colours.array, points, PATCH_FEED + 1, PATCH_CROSS + 1, 0);
     colours.needsUpdate = true;
   }
   // Kept for three.js's back-to-front sorting of the translucent objects.
@@ -61,12 +60,18 @@ function fillPatch(mesh: Mesh, s: DrawState, heightMm: number): void {
 }
 
 export class DesignSurfacesDrawable implements Drawable {
-  private readonly design = legend(patchMesh(COLOURS.plane, 0.55, true), 'design');
+  private readonly design = legend(patchMesh(COLOURS.plane, 0.55, false), 'design');
+  /** A doubly curved patch: coloured by its shape, more opaque so that the colours read. */
+  private readonly curved = legend(patchMesh(CURVED_BASE, 0.85, true), 'design');
   private readonly hSurface = legend(patchMesh(COLOURS.hPlane, 0.18, false), 'hplane');
-  readonly objects: readonly Object3D[] = [this.design, this.hSurface];
+  readonly objects: readonly Object3D[] = [this.design, this.curved, this.hSurface];
 
   update(s: DrawState): void {
-    fillPatch(this.design, s, 0);
+    const kind = s.geometry.surface.kind;
+    const curved = kind === 'torus' || kind === 'revolution';
+    this.design.visible = !curved;
+    this.curved.visible = curved;
+    fillPatch(curved ? this.curved : this.design, s, 0);
     fillPatch(this.hSurface, s, s.geometry.scallopHeightMm);
   }
 

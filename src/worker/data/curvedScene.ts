@@ -110,8 +110,10 @@ function machineView(
     const tip1: Vec3 = [tip0[0] + next[0], tip0[1] + next[1], tip0[2] + next[2]];
     step = stepDownDimension(frame, tip0, tip1, 1.6 * R, arrowMm);
   }
+  // Drawn turned half a turn about the vertical (x downhill): the iso camera, from +x, sees the slope's face.
+  const yawed = frame.map((v) => [-v[0], -v[1], v[2]] as const) as unknown as Frame;
   return {
-    frameMatrix: frameMatrix(frame),
+    frameMatrix: frameMatrix(yawed),
     passMatrices: [translation(next)],
     pathOffsetsMm: [0, L],
     step: { kind: passes === 'raster' ? 'horizontal' : 'vertical', points: step.points, labelAt: step.labelAt },
