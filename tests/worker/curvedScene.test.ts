@@ -8,7 +8,12 @@
  */
 import { describe, expect, it } from 'vitest';
 import type { Vec3 } from '../../src/core/math/vec';
-import { type CurvedPatch, curvedHeightAboveMm, revolutionFrame, toMachine } from '../../src/core/output/curvedSurfaceGeometry';
+import {
+  type CurvedPatch,
+  curvedHeightAboveMm,
+  revolutionFrame,
+  toMachine,
+} from '../../src/core/output/curvedSurfaceGeometry';
 import { applyMatrix, surfacePoint } from '../../src/core/output/surfaceGeometry';
 import { passSection } from '../../src/core/surfaces/doublyCurved/passSection';
 import type { ThreeAxisProblem } from '../../src/core/threeAxis/validate';
