@@ -68,6 +68,26 @@ const CASES = [
   ],
 ] as const;
 
+describe('the 3D scene of a doubly curved point at the limits of the tool radius', () => {
+  for (const [name, query] of [
+    ['R = 500 mm', 'R=500&Rcr=100&rho=5&h=0.05&unit=mm&feedRadius=1500&crossRadius=2500'],
+    ['R = 0.001 mm', 'R=0.001&Rcr=0.0005&rho=5&h=0.00005&unit=mm&feedRadius=0.003&crossRadius=0.005'],
+    ['R = 500 mm, raster on a sloped plane', 'R=500&Rcr=100&machine=3axis&slope=30&h=0.05&unit=mm'],
+  ] as const)
+    it(`a dome or a sloped plane, ${name}: drawn and fitted`, async () => {
+      const { page, errors } = await open(query, { width: 1400, height: 900 });
+      expect(await page.locator('[data-testid^="error-"]:not(:empty)').count()).toBe(0);
+      await sceneIdle(page);
+      const painted = await paintedFraction(page);
+      console.log(`${name}: painted ${painted.toFixed(3)}`);
+      expect(painted).toBeGreaterThan(0.1);
+      // The axes' labels are placed (none behind the camera or beyond the far plane).
+      expect(await page.locator('.scene-label.label-axis:visible').count()).toBe(3);
+      expect(errors).toEqual([]);
+      await page.close();
+    });
+});
+
 describe('the 3D scene of doubly curved points and three-axis machining', () => {
   for (const [device, viewport] of VIEWPORTS)
     for (const [name, query, step] of CASES)
