@@ -11,6 +11,8 @@ import { paintedFraction, SHOTS, sceneIdle, useSite } from './harness';
 
 const site = useSite('docs/curved-scene');
 
+type Probe = { __pathInterval: { frames(): number } };
+
 /**
  * Opens the page in a tab of its own (the harness's `open` waits for L/2, which a three-axis answer
  * does not show) and waits for the step-over L; collects the console's errors.
@@ -123,4 +125,44 @@ describe('the 3D scene of doubly curved points and three-axis machining', () => 
         expect(errors).toEqual([]);
         await page.close();
       });
+});
+
+describe('the 3D scene switched between machines and after a lost WebGL context', () => {
+  it('waterline on a dome, then five-axis: updated in place; the context lost and restored: drawn again, no input', async () => {
+    const { page, errors } = await open(
+      'R=3&Rcr=1&machine=3axis&slope=40&passes=waterline&feedRadius=20&crossRadius=20&h=0.05&unit=mm',
+      { width: 1400, height: 900 },
+    );
+    await sceneIdle(page);
+    const stepLabel = page.locator('.scene-label.label-step');
+    await expect.poll(async () => (await stepLabel.textContent()) ?? '').toMatch(/^dz = \d/);
+    await page.locator('input[name="machine"][value="5axis"]').check();
+    await expect.poll(() => new URL(page.url()).searchParams.get('machine')).toBeNull();
+    await expect.poll(() => page.locator('.scene.stale').count()).toBe(0);
+    await sceneIdle(page);
+    // The machine's step is gone with the machine; the scene still draws the surface and the tool.
+    expect(await stepLabel.isVisible()).toBe(false);
+    expect(await paintedFraction(page)).toBeGreaterThan(0.1);
+    const frames = () => page.evaluate(() => (window as unknown as Probe).__pathInterval.frames());
+    const before = await frames();
+    await page.evaluate(async () => {
+      const canvas = document.querySelector('[data-testid="scene-canvas"]') as HTMLCanvasElement;
+      const lose = canvas.getContext('webgl2')?.getExtension('WEBGL_lose_context');
+      if (!lose) throw new Error('no WEBGL_lose_context');
+      const event = (type: string) => new Promise((resolve) => canvas.addEventListener(type, resolve, { once: true }));
+      const lost = event('webglcontextlost');
+      lose.loseContext();
+      await lost;
+      // Chromium allows the restore once the loss event's dispatch is over (the next task).
+      await new Promise((resolve) => setTimeout(resolve, 0));
+      const restored = event('webglcontextrestored');
+      lose.restoreContext();
+      await restored;
+    });
+    await expect.poll(frames).toBeGreaterThan(before);
+    await sceneIdle(page);
+    expect(await paintedFraction(page)).toBeGreaterThan(0.1);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
 });
