@@ -54,6 +54,43 @@ async function hueShares(page: Page): Promise<{ blue: number; orange: number }> 
   }, png);
 }
 
+/** The scene's labels on screen overlap none other and lie inside the scene (as teachScene.test.ts checks). */
+async function expectLabelsClear(page: Page, where: string): Promise<void> {
+  const { labels, scene } = await page.evaluate(() => {
+    const box = (e: Element) => {
+      const r = e.getBoundingClientRect();
+      return { text: e.textContent ?? '', left: r.left, top: r.top, right: r.right, bottom: r.bottom };
+    };
+    const sceneEl = document.querySelector('[data-testid="scene"]') as HTMLElement;
+    const shown = [...sceneEl.querySelectorAll<HTMLElement>('.scene-label, .scene-scale')].filter((e) => {
+      const r = e.getBoundingClientRect();
+      return e.checkVisibility({ visibilityProperty: true }) && r.width > 0 && r.height > 0;
+    });
+    return { labels: shown.map(box), scene: box(sceneEl) };
+  });
+  for (const l of labels)
+    expect(
+      l.left >= scene.left && l.right <= scene.right && l.top >= scene.top && l.bottom <= scene.bottom,
+      `${where}: "${l.text}" runs out of the scene`,
+    ).toBe(true);
+  labels.forEach((a, i) => {
+    for (const b of labels.slice(i + 1))
+      expect(
+        a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom,
+        `${where}: "${a.text}" covers "${b.text}"`,
+      ).toBe(false);
+  });
+  // Every kind of element drawn has a visible legend entry.
+  const drawn = ((await page.getByTestId('scene').getAttribute('data-drawn')) ?? '').split(' ').filter(Boolean);
+  expect(drawn.length).toBeGreaterThan(5);
+  for (const key of drawn) {
+    const visible = await page
+      .locator(`[data-testid="scene-legend"] [data-legend="${key}"]`)
+      .evaluateAll((els) => els.some((e) => (e as HTMLElement).checkVisibility()));
+    expect(visible, `${where}: no legend entry for "${key}"`).toBe(true);
+  }
+}
+
 const VIEWPORTS = [
   ['phone', { width: 390, height: 844 }],
   ['desktop', { width: 1400, height: 900 }],
@@ -122,6 +159,7 @@ describe('the 3D scene of doubly curved points and three-axis machining', () => 
         const stepLabel = page.locator('.scene-label.label-step');
         if (step === null) expect(await stepLabel.isVisible()).toBe(false);
         else await expect.poll(async () => (await stepLabel.textContent()) ?? '').toMatch(step);
+        await expectLabelsClear(page, `${device} ${name}`);
         expect(errors).toEqual([]);
         await page.close();
       });
