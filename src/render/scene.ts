@@ -22,7 +22,7 @@
  *  - `dispose()` disconnects the observers and the canvas listeners and frees every GPU resource
  *    and DOM node it made.
  */
-import { AmbientLight, DirectionalLight } from 'three';
+import { AmbientLight, DirectionalLight, Group } from 'three';
 import type { SceneGeometry, TraceFrame } from '../worker/protocol';
 import { type CameraPreset, presetCamera, rescaleCamera } from './cameraFit';
 import { drawnBoundingSphere } from './clipPlanes';
@@ -69,6 +69,11 @@ export class ToolScene {
     this.dimensions,
     this.axes,
   ];
+  /**
+   * What the drawables draw, in the CC point's local frame: turned into the machine frame (z up, the
+   * tool axis) for three-axis machining, as it is at other times (the local frame is the world).
+   */
+  private readonly world = new Group();
   /** The height exaggeration, said on the scene (a badge in its bottom left corner). */
   private readonly scaleBadge = document.createElement('div');
   /** What the step-through draws with: the last state's sizes (a unit tool before any). */
@@ -94,7 +99,9 @@ export class ToolScene {
     const sun = new DirectionalLight(0xffffff, 1.6);
     sun.position.set(3, -4, 6);
     scene.add(sun);
-    for (const d of this.drawables) scene.add(...d.objects);
+    for (const d of this.drawables) this.world.add(...d.objects);
+    this.world.matrixAutoUpdate = false;
+    scene.add(this.world);
     scene.add(...this.trace.objects);
     this.scaleBadge.className = 'scene-scale';
     this.scaleBadge.setAttribute('data-testid', 'scene-exaggeration');
@@ -127,11 +134,15 @@ export class ToolScene {
   /** Shows a solved state. Everything is updated in place. */
   update(g: SceneGeometry, labels: SceneLabels): void {
     const R = g.toolRadiusMm;
-    // Heights exaggerated near a plane when the scallop would be too low to see (the drawing only).
+    // Heights exaggerated near a plane when the scallop would be too low to see (the drawing only);
+    // not in the machine frame, where the programmed step's dimension is drawn at true scale.
     const map = heightMapFor(
-      g.surface.kind === 'plane' ? sceneHeightExaggeration(R, g.scallopHeightMm) : 1,
+      g.surface.kind === 'plane' && g.machine === null ? sceneHeightExaggeration(R, g.scallopHeightMm) : 1,
       g.scallopHeightMm,
     );
+    if (g.machine === null) this.world.matrix.identity();
+    else this.world.matrix.fromArray(g.machine.frameMatrix as number[]);
+    this.world.matrixWorldNeedsUpdate = true;
     const state: DrawState = {
       geometry: g,
       labels,

@@ -11,7 +11,7 @@ import type { PassPattern } from '../core/input/validate';
 import type { ProcedureKey } from '../core/procedures/procedures';
 import type { CameraPreset, ToolScene } from '../render/scene';
 import type { RestartInfo } from '../worker/client';
-import { isSolveReply, isSolveRequest, type PageReply, type PageRequest } from '../worker/pageProtocol';
+import { isSolveRequest, type PageReply, type PageRequest } from '../worker/pageProtocol';
 import type { SolveMode } from '../worker/protocol';
 import { solveClient } from '../worker/workers';
 import { applyProcedureColours } from './colours';
@@ -19,7 +19,6 @@ import { wireCopyButtons } from './copy';
 import { embedCode, wireCopyEmbed } from './embedCode';
 import { postHeightToParent } from './embedResize';
 import { FieldsPanel } from './fields';
-import { formatLenUnit, formatSignedLenUnit } from './format';
 import { FreshJob } from './freshness';
 import { Highlighter } from './highlight';
 import { LookupDownload } from './lookupDownload';
@@ -27,6 +26,7 @@ import { linkNotice, Notice, restartMessage } from './messages';
 import { buildRequest, fieldMessages } from './request';
 import { type QuestionKind, ResultsPanel } from './results';
 import { RoughnessPanel } from './roughness';
+import { sceneOfReply } from './sceneLabels';
 import { SceneSlot } from './sceneSlot';
 import { SimulationLoader } from './simulation';
 import {
@@ -272,9 +272,10 @@ export class CalculatorApp {
     this.highlighter.markRows();
     // The first answer (or the first error) is on screen: now the scene may take its time to load.
     if (shown.kind !== 'pending') this.scene.load();
-    if (shown.kind !== 'current' || !shown.reply.ok || !isSolveReply(shown.reply)) {
+    const scene = shown.kind === 'current' ? sceneOfReply(shown.reply, this.state.unit) : null;
+    if (shown.kind !== 'current' || scene === null) {
       this.scene.run('stale', (s) => s.setStale(true));
-      // A doubly curved or three-axis answer: the 3D scene of those is still to come.
+      // A three-axis answer with nothing to draw (no scallop): the results stand alone.
       if (shown.kind === 'current' && shown.reply.ok) this.observer.resultShown?.();
       return;
     }
@@ -283,18 +284,11 @@ export class CalculatorApp {
     this.scene.run('stale', (s) => s.setStale(false));
     if (this.sceneDrawn?.reply !== reply || this.sceneDrawn.unit !== unit) {
       this.sceneDrawn = { reply, unit };
-      const y0 = reply.exact.contactOffsetMm;
-      const surface = reply.scene.surface;
-      const cylinder = surface.kind === 'cylinder';
+      const cylinder = scene.curvedLegend;
       this.sceneSection.classList.toggle('cylinder', cylinder);
       for (const e of this.sceneSection.querySelectorAll<HTMLElement>('.legend .plane-only, .legend .cylinder-only'))
         e.hidden = e.classList.contains('plane-only') === cylinder;
-      const labels = {
-        interval: `L = ${formatLenUnit(reply.exact.intervalMm, unit)}${cylinder && surface.axis === 'feed' ? ' (arc)' : ''}`,
-        halfInterval: `L/2 = ${formatLenUnit(reply.exact.halfIntervalMm, unit)}${cylinder && surface.axis === 'feed' ? ' (arc)' : ''}`,
-        contactOffset: y0 === 0 ? null : `y0 = ${formatSignedLenUnit(y0, unit)}`,
-      };
-      this.scene.run('update', (s) => s.update(reply.scene, labels));
+      this.scene.run('update', (s) => s.update(scene.geometry, scene.labels));
     }
     this.observer.resultShown?.();
   }

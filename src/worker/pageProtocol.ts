@@ -16,7 +16,7 @@ import type {
 import type { SlopeSweep } from '../core/threeAxis/slopeSweep';
 import type { ThreeAxisAnswer, ThreeAxisInputError, ThreeAxisProblem } from '../core/threeAxis/validate';
 import type { WaterlineGeometry } from '../core/threeAxis/waterlineRevolution';
-import { type SolveReply, type SolveRequest, sameRequest } from './protocol';
+import { type SceneGeometry, type SolveReply, type SolveRequest, sameRequest } from './protocol';
 
 /** A doubly curved point (both radii curved): a scallop height to the step-over, or a step-over to the cusps. */
 export type CurvedRequest =
@@ -104,6 +104,8 @@ export type CurvedReply =
        * one (core compareDoublyCurved); null for the inverse problem.
        */
       readonly comparison: Omit<DoublyCurvedComparison, 'exact' | 'maxIntervalMm'> | null;
+      /** What the 3D scene draws: the torus patch, the tool, the cusps (worker/data/curvedScene.ts). */
+      readonly scene: SceneGeometry;
       readonly solveMs: number;
     }
   | {
@@ -137,6 +139,8 @@ export type ThreeAxisReply =
        * null where they do not cross or without a scallop.
        */
       readonly crossingDeg: number | null;
+      /** What the 3D scene draws (worker/data/curvedScene.ts); null where nothing is (no scallop). */
+      readonly scene: SceneGeometry | null;
       readonly solveMs: number;
     }
   | { readonly ok: false; readonly request: ThreeAxisRequest; readonly errors: readonly ThreeAxisInputError[] };

@@ -11,11 +11,12 @@ import { sameFields } from '../core/input/raw';
 import type { ForwardInput, InputError, InverseInput, PassPattern } from '../core/input/validate';
 import type { Vec3 } from '../core/math/vec';
 import type { LookupGrid, LookupTable, LookupTool } from '../core/output/lookupTable';
+import type { DrawnSurface } from '../core/output/surfaceGeometry';
 import type { ApproximationKey, CurvatureRowKey, ForwardModels, ProcedureKey } from '../core/procedures/procedures';
 import type { SweepGap } from '../core/procedures/sweepGaps';
 import type { PaperTableRow } from '../core/procedures/teaching';
 import type { RaTargetInput, RoughnessSummary } from '../core/roughness/raTarget';
-import type { CylinderSurface, Surface } from '../core/surfaces/cylinder';
+import type { CylinderSurface } from '../core/surfaces/cylinder';
 import type { PrincipalRadii } from '../core/surfaces/doublyCurved/types';
 
 /**
@@ -147,13 +148,39 @@ export interface SceneGeometry {
   /** The cusp on each side; null where it has no height (a flat bottom covers it), and on a cylinder. */
   readonly right: CuspGeometry | null;
   readonly left: CuspGeometry | null;
-  /** The design surface: a plane, or a cylinder (surfaceGeometry.ts draws it). */
-  readonly surface: Surface;
+  /**
+   * The design surface: a plane, a cylinder, the torus patch of a doubly curved point or a surface
+   * of revolution under waterline passes (surfaceGeometry.ts draws it).
+   */
+  readonly surface: DrawnSurface;
   /**
    * On a cylinder, the cusp points on the h pseudo surface (where the neighbouring passes' profiles
    * meet, in the section through the contact); null on a plane (the cusp sections say it there).
+   * On a doubly curved patch likewise, in the cross-feed plane through the CC point.
    */
   readonly cuspPoints: { readonly right: Vec3 | null; readonly left: Vec3 | null } | null;
+  /** Three-axis machining: the machine frame and the programmed step; null on a five-axis machine. */
+  readonly machine: MachineView | null;
+}
+
+/**
+ * How a three-axis scene sits in the machine (z up, the tool axis): everything else of the scene is
+ * in the CC point's local frame, turned by `frameMatrix`; the passes drawn beside this one, and the
+ * step the CAM system programs as a dimension line (mm, local frame).
+ */
+export interface MachineView {
+  /** Local -> machine rotation, column-major 4 x 4 (core machineGeometry.ts frameMatrix). */
+  readonly frameMatrix: readonly number[];
+  /** Rigid motions (column-major 4 x 4, local frame) carrying this pass's tool to the other passes drawn. */
+  readonly passMatrices: readonly (readonly number[])[];
+  /** Cross offsets (along the surface) of the CC paths drawn, this pass's (0) included. */
+  readonly pathOffsetsMm: readonly number[];
+  /** The programmed step: `Lxy` horizontal (raster) or `dz` vertical (waterline). */
+  readonly step: {
+    readonly kind: 'horizontal' | 'vertical';
+    readonly points: Float64Array;
+    readonly labelAt: Vec3;
+  };
 }
 
 /** The answer to `solve`. */

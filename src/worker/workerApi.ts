@@ -2,7 +2,7 @@
  * The solver worker's API: one function per job, the large arrays of a reply marked for transfer.
  * Exposed by solver.worker.ts; its type is what the page's clients call (rpc.ts `Remote`).
  */
-import { transferables } from './api';
+import { sceneTransferables, transferables } from './api';
 import { solvePage } from './jobs/page';
 import { table } from './jobs/table';
 import { teachPage } from './jobs/teachPage';
@@ -18,7 +18,9 @@ const simulations = new SimulationRunner();
 export const workerApi = {
   solve(request: PageRequest): PageReply {
     const reply = solvePage(request);
-    return isSolveReply(reply) ? transfer(reply, transferables(reply)) : reply;
+    if (isSolveReply(reply)) return transfer(reply, transferables(reply));
+    // A doubly curved or three-axis answer: its scene's arrays.
+    return reply.ok ? transfer(reply, [...sceneTransferables(reply.scene)]) : reply;
   },
   /** The teaching views' data: a plane's or a cylinder's (its arrays transferred), a doubly curved point's, three-axis'. */
   teach(request: PageRequest): PageTeachReply {

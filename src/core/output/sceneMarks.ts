@@ -7,9 +7,8 @@
  * feed, Z the surface normal there.
  */
 
-import type { Surface } from '../domain/surface';
 import type { Vec3 } from '../math/vec';
-import { type NumberSink, surfacePointInto, surfacePolylineInto } from './surfaceGeometry';
+import { type DrawnSurface, type NumberSink, surfacePointInto, surfacePolylineInto } from './surfaceGeometry';
 
 /**
  * Writes `n` points of the circle of radius `radiusMm` about `centre` in the plane with the unit
@@ -76,7 +75,7 @@ export function dimensionPointCount(segments: number): number {
 export function surfaceDimensionInto(
   out: NumberSink,
   firstPoint: number,
-  surface: Surface,
+  surface: DrawnSurface,
   xMm: number,
   lengthMm: number,
   tickMm: number,

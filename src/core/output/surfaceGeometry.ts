@@ -15,12 +15,26 @@
 
 import type { Surface } from '../domain/surface';
 import type { Vec3 } from '../math/vec';
+import {
+  aboveTangentMm,
+  aroundMm,
+  type CurvedPatch,
+  curvedAxisFoot,
+  curvedPatchExtent,
+  curvedPointInto,
+  type NumberSink,
+} from './curvedSurfaceGeometry';
 
-/** A writable list of numbers: a plain array or a typed one (a three.js buffer's Float32Array). */
-export type NumberSink = { [index: number]: number };
+export type { NumberSink } from './curvedSurfaceGeometry';
+
+/**
+ * A surface the 3D scene draws: a plane, a cylinder, or a doubly curved patch (curvedSurfaceGeometry.ts:
+ * the torus patch of a doubly curved point, a surface of revolution under three-axis waterline passes).
+ */
+export type DrawnSurface = Surface | CurvedPatch;
 
 /** The point of the surface offset by `heightMm` at (feed, cross) (mm). */
-export function surfacePoint(surface: Surface, feedMm: number, crossMm: number, heightMm: number): Vec3 {
+export function surfacePoint(surface: DrawnSurface, feedMm: number, crossMm: number, heightMm: number): Vec3 {
   const p: Vec3 = [0, 0, 0];
   surfacePointInto(p, 0, surface, feedMm, crossMm, heightMm);
   return p;
@@ -33,11 +47,15 @@ export function surfacePoint(surface: Surface, feedMm: number, crossMm: number, 
 export function surfacePointInto(
   out: NumberSink,
   offset: number,
-  surface: Surface,
+  surface: DrawnSurface,
   feedMm: number,
   crossMm: number,
   heightMm: number,
 ): void {
+  if (surface.kind === 'torus' || surface.kind === 'revolution') {
+    curvedPointInto(out, offset, surface, feedMm, crossMm, heightMm);
+    return;
+  }
   if (surface.kind === 'plane') {
     out[offset] = feedMm;
     out[offset + 1] = crossMm;
@@ -55,28 +73,6 @@ export function surfacePointInto(
 }
 
 /**
- * On a cylinder of signed radius `rs`, the point `heightMm` above the surface at the arc length
- * `arcMm` from the contact around it: its distance from the plane through the contact and the axis
- * (mm).
- */
-function aroundMm(rs: number, arcMm: number, heightMm: number): number {
-  const abs = Math.abs(rs);
-  const side = rs > 0 ? 1 : -1;
-  return (abs + side * heightMm) * Math.sin(arcMm / abs);
-}
-
-/** The same point's height above the contact's tangent plane (mm). */
-function aboveTangentMm(rs: number, arcMm: number, heightMm: number): number {
-  const abs = Math.abs(rs);
-  const side = rs > 0 ? 1 : -1;
-  const theta = arcMm / abs;
-  const half = Math.sin(theta / 2);
-  // Without cancellation for a large radius: convex (Rs + h) cos(theta) - Rs = h cos(theta) -
-  // 2 Rs sin^2(theta/2); concave mirrored.
-  return heightMm * Math.cos(theta) - side * 2 * abs * half * half;
-}
-
-/**
  * A patch of the surface offset by `heightMm`: `feedHalfMm` and `crossHalfMm` either side of the
  * contact, measured on the surface (an arc around a cylinder is kept within half a turn either way),
  * as a grid of (segFeed + 1) x (segCross + 1) points, flat xyz, feed index outer. Triangles:
@@ -84,7 +80,7 @@ function aboveTangentMm(rs: number, arcMm: number, heightMm: number): number {
  * vertex buffer, filled in place), else into a new array.
  */
 export function surfacePatch<T extends NumberSink = Float64Array>(
-  surface: Surface,
+  surface: DrawnSurface,
   heightMm: number,
   feedHalfMm: number,
   crossHalfMm: number,
@@ -107,8 +103,9 @@ export function surfacePatch<T extends NumberSink = Float64Array>(
 }
 
 /** The patch's half extents (feed, cross) after keeping an arc within 0.98 of half a turn. */
-export function patchExtent(surface: Surface, feedHalfMm: number, crossHalfMm: number): [number, number] {
+export function patchExtent(surface: DrawnSurface, feedHalfMm: number, crossHalfMm: number): [number, number] {
   if (surface.kind === 'plane') return [feedHalfMm, crossHalfMm];
+  if (surface.kind !== 'cylinder') return curvedPatchExtent(surface, feedHalfMm, crossHalfMm);
   const maxArc = 0.98 * Math.PI * Math.abs(surface.radiusMm);
   return surface.axis === 'feed'
     ? [feedHalfMm, Math.min(crossHalfMm, maxArc)]
@@ -140,7 +137,7 @@ export function patchIndices(segFeed: number, segCross: number): Uint32Array {
  * (feed, cross) `from` to `to` in surface coordinates (a circle's arc around a cylinder), flat xyz.
  */
 export function surfacePolyline(
-  surface: Surface,
+  surface: DrawnSurface,
   heightMm: number,
   from: readonly [number, number],
   to: readonly [number, number],
@@ -158,7 +155,7 @@ export function surfacePolyline(
 export function surfacePolylineInto(
   out: NumberSink,
   firstPoint: number,
-  surface: Surface,
+  surface: DrawnSurface,
   heightMm: number,
   fromFeedMm: number,
   fromCrossMm: number,
@@ -180,14 +177,22 @@ export function surfacePolylineInto(
  * feed on the surface: a translation along Y on a plane and across a cylinder's axis (axis = cross,
  * passes stepped along the axis); a rotation about the cylinder's axis by -crossMm / Rs with the
  * axis along the feed. `mirror` first mirrors the pass across the feed (zigzag: the posture relative
- * to the feed). The surface's normal at the contact goes to the normal at the new contact.
+ * to the feed). The surface's normal at the contact goes to the normal at the new contact. On the
+ * torus patch of a doubly curved point, the rotation about m (Rs = Rc; a translation with Rc
+ * infinite), as the notes define the next pass. (A surface of revolution's passes are not
+ * congruent: its scene gives their motions itself; here a translation along Y.)
  */
-export function passMatrix(surface: Surface, crossMm: number, mirror: boolean): number[] {
+export function passMatrix(surface: DrawnSurface, crossMm: number, mirror: boolean): number[] {
   const m = mirror ? -1 : 1;
-  if (surface.kind === 'plane' || surface.axis === 'cross') {
+  const rs =
+    surface.kind === 'cylinder' && surface.axis === 'feed'
+      ? surface.radiusMm
+      : surface.kind === 'torus'
+        ? surface.crossRadiusMm
+        : Number.POSITIVE_INFINITY;
+  if (!Number.isFinite(rs)) {
     return [1, 0, 0, 0, 0, m, 0, 0, 0, 0, 1, 0, 0, crossMm, 0, 1];
   }
-  const rs = surface.radiusMm;
   const alpha = -crossMm / rs;
   const c = Math.cos(alpha);
   const s = Math.sin(alpha);
@@ -213,9 +218,10 @@ export function applyMatrix(mat: readonly number[], p: Vec3): Vec3 {
  * Where the tool axis (through the tool centre `centre`, direction `axis` pointing up the shank)
  * meets the design surface below the centre: its foot. On a cylinder, the first crossing going
  * down (convex: the tool is outside; concave: inside the trough); the plane's foot if the line
- * misses a convex cylinder.
+ * misses a convex cylinder. On a doubly curved patch, curvedSurfaceGeometry.ts's foot.
  */
-export function axisFoot(surface: Surface, centre: Vec3, axis: Vec3): Vec3 {
+export function axisFoot(surface: DrawnSurface, centre: Vec3, axis: Vec3): Vec3 {
+  if (surface.kind === 'torus' || surface.kind === 'revolution') return curvedAxisFoot(surface, centre, axis);
   const planeT = centre[2] / axis[2];
   const plane: Vec3 = [centre[0] - planeT * axis[0], centre[1] - planeT * axis[1], 0];
   if (surface.kind === 'plane') return plane;

@@ -2,14 +2,24 @@
  * The dimensions: the step-over L from this pass's path to the next at the start of the drawn
  * passes, L/2 at their end (each along the surface, with extension lines and arrowheads, its label
  * above its middle), and the contact offset y0 from the foot of the tool centre's drop to the
- * contact, across the feed.
+ * contact, across the feed. For three-axis machining, the step as programmed (the machine view's
+ * `Lxy` horizontal or `dz` vertical dimension, core machineGeometry.ts).
  */
 import type { Line, Object3D } from 'three';
 import { dimensionPointCount, surfaceDimensionInto } from '../../core/output/sceneMarks';
 import { surfacePoint } from '../../core/output/surfaceGeometry';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
-import { COLOURS, type Drawable, type DrawState, disposeObjects, finishLine, lineOf, positionsOf } from './parts';
+import {
+  COLOURS,
+  type Drawable,
+  type DrawState,
+  disposeObjects,
+  finishLine,
+  lineOf,
+  positionsOf,
+  writeLine,
+} from './parts';
 import { PATH_SEGMENTS } from './paths';
 
 export class DimensionsDrawable implements Drawable {
@@ -19,9 +29,13 @@ export class DimensionsDrawable implements Drawable {
   private readonly intervalLabel = new LabelAnchor('L', 'label-dim', [0, -1], 6);
   private readonly halfLabel = new LabelAnchor('L/2', 'label-dim label-half', [0, -1], 6);
   private readonly offsetLabel = new LabelAnchor('y0', 'label-offset', [0, 1], 5);
-  readonly objects: readonly Object3D[] = [this.interval, this.half, this.offset];
+  /** Three-axis: the programmed step (up to 16 points: two extension lines, a line, two arrowheads). */
+  private readonly step = legend(lineOf(16, COLOURS.dimension), 'dimension');
+  private readonly stepLabel = new LabelAnchor('', 'label-dim label-step', [1, 0], 6);
+  readonly objects: readonly Object3D[] = [this.interval, this.half, this.offset, this.step];
 
   constructor() {
+    this.step.add(this.stepLabel);
     this.interval.add(this.intervalLabel);
     this.half.add(this.halfLabel);
     this.offset.add(this.offsetLabel);
@@ -53,6 +67,13 @@ export class DimensionsDrawable implements Drawable {
     finishLine(this.offset, 4);
     this.offsetLabel.position.set(ox, oy / 2, -tick);
     this.offsetLabel.setText(s.labels.contactOffset ?? '');
+    const machine = g.machine;
+    this.step.visible = machine !== null;
+    if (machine !== null) {
+      writeLine(this.step, machine.step.points, machine.step.points.length / 3);
+      this.stepLabel.position.fromArray(machine.step.labelAt);
+      this.stepLabel.setText(s.labels.programmedStep ?? '');
+    }
   }
 
   dispose(): void {

@@ -28,6 +28,8 @@ export interface SceneLabels {
   readonly halfInterval: string;
   /** The contact offset dimension, e.g. `y0 = 0.1234 mm`, or null to hide it (no offset). */
   readonly contactOffset: string | null;
+  /** Three-axis: the programmed step's dimension, e.g. `Lxy = 0.91 mm` or `dz = 0.12 mm`. */
+  readonly programmedStep?: string;
 }
 
 /** What one update draws: the solved state, its labels, and the sizes the drawables share (mm). */

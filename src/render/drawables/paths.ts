@@ -1,6 +1,8 @@
 /**
  * The cutter-contact paths of the three passes, L apart: lines along the feed on the surface (an
- * arc around a cylinder whose axis runs across the feed).
+ * arc around a cylinder whose axis runs across the feed, the feed circle turned about m on a doubly
+ * curved patch, a level circle on a surface of revolution); for three-axis machining the passes its
+ * machine view draws.
  */
 import type { Line, Object3D } from 'three';
 import { surfacePolylineInto } from '../../core/output/surfaceGeometry';
@@ -18,8 +20,11 @@ export class PathsDrawable implements Drawable {
 
   update(s: DrawState): void {
     const surface = s.geometry.surface;
+    const offsets = s.geometry.machine?.pathOffsetsMm;
     this.paths.forEach((line, i) => {
-      const y = (i - 1) * s.intervalMm;
+      const y = offsets === undefined ? (i - 1) * s.intervalMm : offsets[i];
+      line.visible = y !== undefined;
+      if (y === undefined) return;
       surfacePolylineInto(positionsOf(line), 0, surface, 0, s.fromMm, y, s.toMm, y, PATH_SEGMENTS);
       finishLine(line, PATH_SEGMENTS + 1);
     });

@@ -1,6 +1,7 @@
 /**
  * The tool in its posture (a translucent body) and the neighbouring passes' tools at -L and +L
- * (wireframe ghosts, mirrored for zigzag), carried along the surface by the core's rigid motion.
+ * (wireframe ghosts, mirrored for zigzag), carried along the surface by the core's rigid motion;
+ * for three-axis machining the passes its machine view gives (one: the next pass).
  */
 import {
   BufferAttribute,
@@ -62,9 +63,17 @@ export class ToolDrawable implements Drawable {
     attr.needsUpdate = true;
     this.geometry.computeVertexNormals();
     this.geometry.computeBoundingSphere();
-    // The neighbours: carried along the surface by L (turned about a cylinder's axis along the feed).
+    // The neighbours: carried along the surface by L (turned about a cylinder's axis along the
+    // feed, about m on a doubly curved patch); in the machine frame, the passes it gives.
+    const given = g.machine?.passMatrices;
     this.neighbours.forEach((m, i) => {
-      m.matrix.fromArray(passMatrix(g.surface, i === 0 ? -s.intervalMm : s.intervalMm, g.pattern === 'zigzag'));
+      const motion =
+        given === undefined
+          ? passMatrix(g.surface, i === 0 ? -s.intervalMm : s.intervalMm, g.pattern === 'zigzag')
+          : given[i];
+      m.visible = motion !== undefined;
+      if (motion === undefined) return;
+      m.matrix.fromArray(motion as number[]);
       m.matrixWorldNeedsUpdate = true;
     });
   }

@@ -46,6 +46,7 @@ export function sceneGeometry(
     toolAxis: p.axis,
     toolPositions: mesh.positions,
     surface,
+    machine: null,
   };
   if (surface.kind === 'cylinder') {
     // The torus against the h pseudo plane is the plane's construction: on a cylinder the scene

@@ -15,7 +15,8 @@ import {
   inverseWith,
 } from '../../core/surfaces/doublyCurved';
 import { curvedErrors } from '../data/curvedCheck';
-import type { CurvedError, CurvedReply, CurvedRequest } from '../pageProtocol';
+import { curvedSceneGeometry } from '../data/curvedScene';
+import type { CurvedError, CurvedReply, CurvedRequest, CurvedSummary } from '../pageProtocol';
 
 /** The request's errors (the tool's, then the point's), or null when it is valid. */
 export function revalidateCurved(request: CurvedRequest): readonly (InputError | CurvedError)[] | null {
@@ -42,30 +43,34 @@ export function solveCurved(request: CurvedRequest): CurvedReply {
   const maxIntervalMm = doublyCurvedMaxIntervalMm(solver, i.pattern);
   if (request.mode === 'curved-forward') {
     const { exact, maxIntervalMm: _max, ...comparison } = compareDoublyCurved(request.input);
+    const summary = { ...exact, pattern: i.pattern, maxIntervalMm, limits };
     return {
       ok: true,
       request,
-      exact: { ...exact, pattern: i.pattern, maxIntervalMm, limits },
+      exact: summary,
       comparison,
+      scene: curvedSceneGeometry(i, summary),
       solveMs: performance.now() - t0,
     };
   }
   const e = inverseWith(solver, i.pattern, request.input.intervalMm);
+  const exact: CurvedSummary = {
+    pattern: i.pattern,
+    intervalMm: e.intervalMm,
+    halfWidthRightMm: e.halfWidthRightMm,
+    halfWidthLeftMm: e.halfWidthLeftMm,
+    contactOffsetMm: e.contactOffsetMm,
+    cuspHeightMm: e.cuspHeightMm,
+    otherCuspHeightMm: e.otherCuspHeightMm,
+    maxIntervalMm,
+    limits,
+  };
   return {
     ok: true,
     request,
-    exact: {
-      pattern: i.pattern,
-      intervalMm: e.intervalMm,
-      halfWidthRightMm: e.halfWidthRightMm,
-      halfWidthLeftMm: e.halfWidthLeftMm,
-      contactOffsetMm: e.contactOffsetMm,
-      cuspHeightMm: e.cuspHeightMm,
-      otherCuspHeightMm: e.otherCuspHeightMm,
-      maxIntervalMm,
-      limits,
-    },
+    exact,
     comparison: null,
+    scene: curvedSceneGeometry(i, exact),
     solveMs: performance.now() - t0,
   };
 }

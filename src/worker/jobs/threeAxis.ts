@@ -14,6 +14,7 @@ import {
   validateThreeAxis,
 } from '../../core/threeAxis/validate';
 import { waterlineForward, waterlineInverse } from '../../core/threeAxis/waterlineRevolution';
+import { threeAxisSceneGeometry } from '../data/curvedScene';
 import type { ThreeAxisReply, ThreeAxisRequest } from '../pageProtocol';
 
 /** The raw inputs (by registry field name) a validated problem came from. */
@@ -96,13 +97,15 @@ export function solveThreeAxisRequest(request: ThreeAxisRequest): ThreeAxisReply
       sweep = null;
     }
   }
+  const waterline = waterlinePair(p);
   return {
     ok: true,
     request,
     answer,
-    waterline: waterlinePair(p),
+    waterline,
     sweep,
     crossingDeg,
+    scene: threeAxisSceneGeometry(p, answer, waterline?.geometry ?? null),
     solveMs: performance.now() - t0,
   };
 }

@@ -1,0 +1,45 @@
+/**
+ * The colours of a doubly curved patch (render/curvatureShading.ts): a dome falls away from its
+ * tangent plane everywhere (blue only), a bowl rises everywhere (orange only), a saddle does both in
+ * alternate quadrants; a plane stays white (the material's own colour, as before).
+ */
+import { describe, expect, it } from 'vitest';
+import type { DrawnSurface } from '../../src/core/output/surfaceGeometry';
+import { patchIndices, surfacePatch } from '../../src/core/output/surfaceGeometry';
+import { curvatureColoursInto, FALLING_RGB, RISING_RGB } from '../../src/render/curvatureShading';
+
+const ROWS = 13;
+const COLUMNS = 17;
+
+/** Counts of bluish and orangish vertices of a patch 6 mm square around the CC point. */
+function hues(surface: DrawnSurface): { falling: number; rising: number; white: number } {
+  const points = surfacePatch(surface, 0, 3, 3, ROWS - 1, COLUMNS - 1);
+  const colours = new Float32Array(points.length);
+  curvatureColoursInto(colours, points, ROWS, COLUMNS, 1e-9);
+  let falling = 0;
+  let rising = 0;
+  let white = 0;
+  for (let i = 0; i < colours.length; i += 3) {
+    const [r, , b] = [colours[i] as number, colours[i + 1] as number, colours[i + 2] as number];
+    if (r === 1 && b === 1) white++;
+    else if (b > r) falling++;
+    else rising++;
+  }
+  return { falling, rising, white };
+}
+
+describe('curvature shading', () => {
+  it('dome: all falling; bowl: all rising; saddle: both; plane: white', () => {
+    const n = ROWS * COLUMNS;
+    // The CC point itself lies on the tangent plane: counted with the rising side (z = 0).
+    expect(hues({ kind: 'torus', feedRadiusMm: 20, crossRadiusMm: 30 }).falling).toBe(n - 1);
+    expect(hues({ kind: 'torus', feedRadiusMm: -20, crossRadiusMm: -30 }).rising).toBe(n);
+    const saddle = hues({ kind: 'torus', feedRadiusMm: 20, crossRadiusMm: -20 });
+    expect(saddle.falling).toBeGreaterThan(0.3 * n);
+    expect(saddle.rising).toBeGreaterThan(0.3 * n);
+    expect(hues({ kind: 'plane' }).white).toBe(n);
+    expect(FALLING_RGB[2]).toBeGreaterThan(FALLING_RGB[0]);
+    expect(RISING_RGB[0]).toBeGreaterThan(RISING_RGB[2]);
+    expect(patchIndices(ROWS - 1, COLUMNS - 1).length).toBe((ROWS - 1) * (COLUMNS - 1) * 6);
+  });
+});
