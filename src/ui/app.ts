@@ -22,6 +22,7 @@ import { FieldsPanel } from './fields';
 import { formatLenUnit, formatSignedLenUnit } from './format';
 import { FreshJob } from './freshness';
 import { Highlighter } from './highlight';
+import { plainLengths } from './lengthFields';
 import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
 import { buildRequest, fieldMessages } from './request';
@@ -141,17 +142,22 @@ export class CalculatorApp {
     wireCopyEmbed(must(root, '[data-testid="copy-embed"]'), must(root, '[data-testid="copy-embed-status"]'), () =>
       embedCode(
         `${window.location.origin}${window.location.pathname}`,
-        toSearch(this.state, { ...extra, [FIELDS.view.url]: this.teaching?.activeView ?? requested ?? 'profile' }),
+        toSearch(plainLengths(this.state), {
+          ...extra,
+          [FIELDS.view.url]: this.teaching?.activeView ?? requested ?? 'profile',
+        }),
       ),
     );
     this.fields = new FieldsPanel(root, {
       onField: (key, text, typing) => this.edit(key, withField(this.state, key, text), typing),
+      // A committed field shows the plain number a written length (1/2", 12.7 mm) means.
       onCommit: () => {
-        if (this.typing.release()) this.change(this.state);
+        const plain = plainLengths(this.state);
+        if (this.typing.release() || plain !== this.state) this.change(plain);
       },
-      onSize: (size: ToolSize) => this.change(withSize(this.state, size)),
+      onSize: (size: ToolSize) => this.change(withSize(plainLengths(this.state), size)),
       onMode: (mode: SolveMode) => this.change({ ...this.state, mode }),
-      onUnit: (unit: Unit) => this.change(convertState(this.state, unit)),
+      onUnit: (unit: Unit) => this.change(convertState(plainLengths(this.state), unit)),
       onPattern: (pattern: PassPattern) => this.change({ ...this.state, pattern }),
       onTarget: (target: Target) => this.change({ ...this.state, target }),
       // A doubly curved point chosen with both radii straight starts as a dome.
@@ -220,7 +226,7 @@ export class CalculatorApp {
    * typed field's own, which is cleared.
    */
   private edit(key: FieldKey, state: CalculatorState, typing: boolean): void {
-    if (!typing || buildRequest(state).ok) {
+    if (!typing || buildRequest(plainLengths(state)).ok) {
       this.typing.release();
       this.change(state);
       return;
@@ -241,11 +247,13 @@ export class CalculatorApp {
   private change(state: CalculatorState): void {
     this.typing.release();
     this.state = state;
-    const built = buildRequest(state);
+    // The question and the link read written lengths (1/2", 12.7 mm) as plain numbers.
+    const asked = plainLengths(state);
+    const built = buildRequest(asked);
     const request = built.ok ? built.request : null;
     // Asked (unless answered already) before any drawing, so the worker solves while the page draws.
     this.fresh.want(request);
-    this.messages = built.ok ? new Map<FieldKey, string>() : fieldMessages(state, built.errors);
+    this.messages = built.ok ? new Map<FieldKey, string>() : fieldMessages(asked, built.errors);
     this.fields.render(state, this.messages);
     // The views, the simulation and the table answer a plane's or a cylinder's question (five-axis).
     const classic = request !== null && isSolveRequest(request) ? request : null;
@@ -253,7 +261,7 @@ export class CalculatorApp {
     this.simulation.want(classic, state.unit);
     this.lookup.want(classic);
     this.draw();
-    this.url.write(state);
+    this.url.write(asked);
   }
 
   /** Draws the results and the scene from what answers the inputs on screen. */
