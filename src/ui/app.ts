@@ -16,6 +16,7 @@ import type { SolveMode } from '../worker/protocol';
 import { solveClient } from '../worker/workers';
 import { applyProcedureColours } from './colours';
 import { wireCopyButtons } from './copy';
+import { wireCopyLink } from './copyLink';
 import { embedCode, wireCopyEmbed } from './embedCode';
 import { postHeightToParent } from './embedResize';
 import { FieldsPanel } from './fields';
@@ -34,6 +35,7 @@ import {
   type CalculatorState,
   convertState,
   type FieldKey,
+  fieldInMm,
   parseField,
   parseUrl,
   type Target,
@@ -47,6 +49,7 @@ import {
 import { withCurvedPreset } from './surfaceState';
 import { TeachingLoader } from './teaching';
 import { onThemeChange, parseTheme, startTheme } from './theme';
+import { ToolShelf } from './toolShelf';
 import { TypingGate } from './typing';
 import { UrlState } from './urlState';
 import type { ViewId } from './views/panel';
@@ -174,6 +177,19 @@ export class CalculatorApp {
       onSurfaceAxis: (surfaceAxis) => this.change({ ...this.state, surfaceAxis }),
       onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
     });
+    this.shelf = new ToolShelf(must(root, '[data-testid="tool-shelf"]'), {
+      onTool: (t) => this.change(withValues(this.state, { R: t.diameterMm / 2, Rcr: t.cornerRadiusMm })),
+      current: () => {
+        const plain = plainLengths(this.state);
+        const r = fieldInMm(plain, 'R');
+        return { diameterMm: typeof r === 'number' ? 2 * r : r, cornerRadiusMm: fieldInMm(plain, 'Rcr') };
+      },
+    });
+    wireCopyLink(must(root, '[data-testid="copy-link"]'), must(root, '[data-testid="copy-link-status"]'), () => {
+      const view = this.teaching?.activeView;
+      const search = toSearch(plainLengths(this.state), view ? { [FIELDS.view.url]: view } : {});
+      return `${window.location.origin}${window.location.pathname}${search}`;
+    });
     // An embedded calculator without a teaching view shows none: no views, no views' worker.
     this.teaching =
       embed && requested === undefined
@@ -206,6 +222,8 @@ export class CalculatorApp {
   }
 
   private readonly highlighter: Highlighter;
+  /** Saved tools and imported tool libraries. */
+  private readonly shelf: ToolShelf;
   /** The 3D view's section (marked `cylinder` while the scene shows one: its legend follows). */
   private readonly sceneSection: HTMLElement;
 
@@ -255,6 +273,7 @@ export class CalculatorApp {
     this.fresh.want(request);
     this.messages = built.ok ? new Map<FieldKey, string>() : fieldMessages(asked, built.errors);
     this.fields.render(state, this.messages);
+    this.shelf.render(state.unit);
     // The views, the simulation and the table answer a plane's or a cylinder's question (five-axis).
     const classic = request !== null && isSolveRequest(request) ? request : null;
     this.teaching?.want(classic, state.unit, false, this.kind() === 'classic' ? null : ELSEWHERE);

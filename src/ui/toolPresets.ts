@@ -16,7 +16,7 @@ export interface Preset {
 
 /** An inch tool: diameter and corner radius in inches (R and Rcr kept in mm, exact: 1 in = 25.4 mm). */
 function inchTool(label: string, diameterIn: number, cornerIn: number): Preset {
-  return { label, sizedIn: 'in', R: (diameterIn * 25.4) / 2, Rcr: cornerIn * 25.4 };
+  return { label, sizedIn: 'in', R: (diameterIn * 254) / 20, Rcr: (cornerIn * 254) / 10 };
 }
 
 /**
