@@ -190,6 +190,8 @@ describe('tools of the shop (phone)', () => {
 
   it('Copy link: the copied URL opens the same state (written lengths as plain numbers)', async () => {
     const page = await open('?D=6&Rcr=1&rho=5&h=0.05&unit=mm');
+    // The fallback field for a refused clipboard is not shown while the clipboard works.
+    expect(await page.getByTestId('link-text').isVisible()).toBe(false);
     await typeInto(page, 'input-Rcr', '1/32"');
     await page.keyboard.press('Enter');
     await expect.poll(() => page.getByTestId('input-Rcr').inputValue()).toBe('0.79375');
@@ -199,6 +201,7 @@ describe('tools of the shop (phone)', () => {
     const link = await page.evaluate(() => navigator.clipboard.readText());
     expect(new URL(link).searchParams.get('Rcr')).toBe('0.79375');
     expect(link.startsWith(site.url())).toBe(true);
+    expect(await page.getByTestId('link-text').isVisible()).toBe(false);
     const again = await open(new URL(link).search);
     await expect.poll(() => text(again, 'result-exact-interval')).toBe(answer);
     expect(await again.getByTestId('input-R').inputValue()).toBe('6');
