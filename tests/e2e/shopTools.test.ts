@@ -162,6 +162,16 @@ describe('tools of the shop (phone)', () => {
     await expect.poll(() => status.textContent()).toMatch(/"notes\.txt": 0 tools read\.The file is not JSON/);
     expect(await list.locator('option').count()).toBe(4);
     await page.screenshot({ path: `${SHOTS}/shop-library-phone.png`, fullPage: true });
+    // Dropped on the shelf, as from a file manager: the same import.
+    await page.evaluate((json) => {
+      const data = new DataTransfer();
+      data.items.add(new File([json], 'dropped.json', { type: 'application/json' }));
+      const shelf = document.querySelector('[data-testid="tool-shelf"]');
+      shelf?.dispatchEvent(new DragEvent('dragover', { dataTransfer: data, bubbles: true, cancelable: true }));
+      shelf?.dispatchEvent(new DragEvent('drop', { dataTransfer: data, bubbles: true, cancelable: true }));
+    }, LIBRARY);
+    await expect.poll(() => status.textContent()).toMatch(/"dropped\.json": 3 tools read/);
+    expect(await page.getByTestId('tool-shelf').getAttribute('class')).not.toMatch(/dragging/);
   });
 
   it('saves a tool in the browser, and after a reload picks it to fill the fields', async () => {
