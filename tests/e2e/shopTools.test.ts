@@ -5,9 +5,10 @@
  * Expected step-overs come from the command line (its own parsing of plain mm numbers).
  */
 import { spawnSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
-import { ROOT, SHOTS, useSite } from './harness';
+import { pageSettled, ROOT, SHOTS, useSite } from './harness';
 
 const site = useSite('docs/shop-tools');
 const PHONE = { width: 390, height: 844 };
@@ -48,6 +49,19 @@ function cliInterval(R: number, Rcr: number, h: number): number {
   const args = ['--R', String(R), '--Rcr', String(Rcr), '--rho', '5', '--h', String(h), '--json'];
   const r = spawnSync(process.execPath, [`${ROOT}src/cli/bin.mjs`, ...args], { encoding: 'utf8' });
   return JSON.parse(r.stdout).exact.interval;
+}
+
+const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
+
+/** axe-core's violations on the page as it is: rule ids and their first targets. */
+async function violations(page: Page): Promise<string[]> {
+  await pageSettled(page);
+  await page.addScriptTag({ content: AXE });
+  return page.evaluate(async () => {
+    type Found = { id: string; nodes: { target: string[] }[] };
+    const axe = (window as unknown as { axe: { run(): Promise<{ violations: Found[] }> } }).axe;
+    return (await axe.run()).violations.map((v) => `${v.id}: ${v.nodes[0]?.target.join(' ')}`);
+  });
 }
 
 /** The headline step-over's number, in the unit on screen. */
@@ -162,6 +176,12 @@ describe('tools of the shop (phone)', () => {
     await expect.poll(() => status.textContent()).toMatch(/"notes\.txt": 0 tools read\.The file is not JSON/);
     expect(await list.locator('option').count()).toBe(4);
     await page.screenshot({ path: `${SHOTS}/shop-library-phone.png`, fullPage: true });
+    // The open shelf, its lists and its messages pass axe, light and dark.
+    expect(await violations(page)).toEqual([]);
+    await page.emulateMedia({ colorScheme: 'dark' });
+    expect(await violations(page)).toEqual([]);
+    await page.screenshot({ path: `${SHOTS}/shop-library-phone-dark.png` });
+    await page.emulateMedia({ colorScheme: 'light' });
     // Dropped on the shelf, as from a file manager: the same import.
     await page.evaluate((json) => {
       const data = new DataTransfer();
