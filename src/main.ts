@@ -1,6 +1,7 @@
 /** Page entry: styles and the calculator (with the test probe only in the `e2e` build mode). */
 import './ui/style.css';
 import './ui/quickLookup.css';
+import './ui/toolShelf.css';
 // After the stylesheet, so the printed sheet's rules win over the screen layout's.
 import './ui/print.css';
 import { CalculatorApp } from './ui/app';

@@ -16,11 +16,13 @@ import type { SolveMode } from '../worker/protocol';
 import { solveClient } from '../worker/workers';
 import { applyProcedureColours } from './colours';
 import { wireCopyButtons } from './copy';
+import { wireCopyLink } from './copyLink';
 import { embedCode, wireCopyEmbed } from './embedCode';
 import { postHeightToParent } from './embedResize';
 import { FieldsPanel } from './fields';
 import { FreshJob } from './freshness';
 import { Highlighter } from './highlight';
+import { plainLengths } from './lengthFields';
 import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
 import { buildRequest, fieldMessages } from './request';
@@ -33,6 +35,7 @@ import {
   type CalculatorState,
   convertState,
   type FieldKey,
+  fieldInMm,
   parseField,
   parseUrl,
   type Target,
@@ -46,6 +49,7 @@ import {
 import { withCurvedPreset } from './surfaceState';
 import { TeachingLoader } from './teaching';
 import { onThemeChange, parseTheme, startTheme } from './theme';
+import { ToolShelf } from './toolShelf';
 import { TypingGate } from './typing';
 import { UrlState } from './urlState';
 import type { ViewId } from './views/panel';
@@ -141,17 +145,22 @@ export class CalculatorApp {
     wireCopyEmbed(must(root, '[data-testid="copy-embed"]'), must(root, '[data-testid="copy-embed-status"]'), () =>
       embedCode(
         `${window.location.origin}${window.location.pathname}`,
-        toSearch(this.state, { ...extra, [FIELDS.view.url]: this.teaching?.activeView ?? requested ?? 'profile' }),
+        toSearch(plainLengths(this.state), {
+          ...extra,
+          [FIELDS.view.url]: this.teaching?.activeView ?? requested ?? 'profile',
+        }),
       ),
     );
     this.fields = new FieldsPanel(root, {
       onField: (key, text, typing) => this.edit(key, withField(this.state, key, text), typing),
+      // A committed field shows the plain number a written length (1/2", 12.7 mm) means.
       onCommit: () => {
-        if (this.typing.release()) this.change(this.state);
+        const plain = plainLengths(this.state);
+        if (this.typing.release() || plain !== this.state) this.change(plain);
       },
-      onSize: (size: ToolSize) => this.change(withSize(this.state, size)),
+      onSize: (size: ToolSize) => this.change(withSize(plainLengths(this.state), size)),
       onMode: (mode: SolveMode) => this.change({ ...this.state, mode }),
-      onUnit: (unit: Unit) => this.change(convertState(this.state, unit)),
+      onUnit: (unit: Unit) => this.change(convertState(plainLengths(this.state), unit)),
       onPattern: (pattern: PassPattern) => this.change({ ...this.state, pattern }),
       onTarget: (target: Target) => this.change({ ...this.state, target }),
       // A doubly curved point chosen with both radii straight starts as a dome.
@@ -167,6 +176,19 @@ export class CalculatorApp {
       onSurfacePreset: (preset) => this.change(withCurvedPreset(this.state, preset, this.state.machine === '3axis')),
       onSurfaceAxis: (surfaceAxis) => this.change({ ...this.state, surfaceAxis }),
       onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
+    });
+    this.shelf = new ToolShelf(must(root, '[data-testid="tool-shelf"]'), {
+      onTool: (t) => this.change(withValues(this.state, { R: t.diameterMm / 2, Rcr: t.cornerRadiusMm })),
+      current: () => {
+        const plain = plainLengths(this.state);
+        const r = fieldInMm(plain, 'R');
+        return { diameterMm: typeof r === 'number' ? 2 * r : r, cornerRadiusMm: fieldInMm(plain, 'Rcr') };
+      },
+    });
+    wireCopyLink(must(root, '[data-testid="copy-link"]'), must(root, '[data-testid="copy-link-status"]'), () => {
+      const view = this.teaching?.activeView;
+      const search = toSearch(plainLengths(this.state), view ? { [FIELDS.view.url]: view } : {});
+      return `${window.location.origin}${window.location.pathname}${search}`;
     });
     // An embedded calculator without a teaching view shows none: no views, no views' worker.
     this.teaching =
@@ -200,6 +222,8 @@ export class CalculatorApp {
   }
 
   private readonly highlighter: Highlighter;
+  /** Saved tools and imported tool libraries. */
+  private readonly shelf: ToolShelf;
   /** The 3D view's section (marked `cylinder` while the scene shows one: its legend follows). */
   private readonly sceneSection: HTMLElement;
 
@@ -220,7 +244,7 @@ export class CalculatorApp {
    * typed field's own, which is cleared.
    */
   private edit(key: FieldKey, state: CalculatorState, typing: boolean): void {
-    if (!typing || buildRequest(state).ok) {
+    if (!typing || buildRequest(plainLengths(state)).ok) {
       this.typing.release();
       this.change(state);
       return;
@@ -241,12 +265,15 @@ export class CalculatorApp {
   private change(state: CalculatorState): void {
     this.typing.release();
     this.state = state;
-    const built = buildRequest(state);
+    // The question and the link read written lengths (1/2", 12.7 mm) as plain numbers.
+    const asked = plainLengths(state);
+    const built = buildRequest(asked);
     const request = built.ok ? built.request : null;
     // Asked (unless answered already) before any drawing, so the worker solves while the page draws.
     this.fresh.want(request);
-    this.messages = built.ok ? new Map<FieldKey, string>() : fieldMessages(state, built.errors);
+    this.messages = built.ok ? new Map<FieldKey, string>() : fieldMessages(asked, built.errors);
     this.fields.render(state, this.messages);
+    this.shelf.render(state.unit);
     // The simulation and the table answer a plane's or a cylinder's question (five-axis); the views
     // draw any (those that do not draw a doubly curved or three-axis question say so).
     const classic = request !== null && isSolveRequest(request) ? request : null;
@@ -255,7 +282,7 @@ export class CalculatorApp {
     // The lookup table: a plane's, a cylinder's or a doubly curved point's (not three-axis).
     this.lookup.want(request !== null && request.mode !== 'three-axis' ? request : null);
     this.draw();
-    this.url.write(state);
+    this.url.write(asked);
   }
 
   /** Draws the results and the scene from what answers the inputs on screen. */

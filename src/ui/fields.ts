@@ -96,6 +96,8 @@ const SURFACE_KEYS: readonly FieldKey[] = ['Rs', 'Rf', 'Rc'];
 /** The tool size field's label and hint in diameter mode. */
 const DIAMETER_LABEL = FIELDS.D.label;
 const DIAMETER_HINT = 'as catalogues give it; D = 2R';
+/** The corner radius's hint in diameter mode. */
+const CORNER_HINT_DIAMETER = 'Rcr = 0 is a flat end, Rcr = D/2 is a ball end';
 
 /** The test ids' names of fields whose key differs (the surface radius: input-surface-radius). */
 const TEST_NAME: Partial<Readonly<Record<FieldKey, string>>> = {
@@ -164,9 +166,11 @@ export class FieldsPanel {
     this.wireSwitch('surfaceAxis', (v) => events.onSurfaceAxis(v === 'cross' ? 'cross' : 'feed'));
     const select = must<HTMLSelectElement>(root, '[data-testid="preset"]');
     this.preset = select;
+    const groups = { mm: html('optgroup', { label: 'metric (mm)' }), in: html('optgroup', { label: 'inch' }) };
     PRESETS.forEach((p, i) => {
-      select.append(html('option', { value: String(i) }, p.label));
+      groups[p.sizedIn].append(html('option', { value: String(i) }, p.label));
     });
+    select.append(groups.mm, groups.in);
     select.addEventListener('change', () => {
       const preset = PRESETS[Number(select.value)];
       if (preset) events.onPreset(preset);
@@ -278,6 +282,7 @@ export class FieldsPanel {
         view.hint.textContent = diameter ? DIAMETER_HINT : HINTS.R;
         view.slider.setAttribute('aria-label', `${view.label.textContent} slider`);
       }
+      if (key === 'Rcr') view.hint.textContent = sizeIsDiameter(state) ? CORNER_HINT_DIAMETER : HINTS.Rcr;
       if (view.input.value !== state.fields[key]) view.input.value = state.fields[key];
       const r = ranges[key];
       view.slider.min = r.min;

@@ -182,12 +182,12 @@ export function parseUrl(search: string): ParsedUrl {
   const { machine, passes } = parseMachine(params, notices);
   const defaults = defaultState(unit, mode).fields;
   const fields = { ...defaults };
-  const size = sizeFromUrl(params, notices);
+  const anyGiven = GIVEN_PARAMS.some((p) => params.has(p));
+  const size = sizeFromUrl(params, anyGiven, notices);
   const needed: FieldKey[] =
     machine === '3axis'
       ? threeAxisNeeded(mode, target, passes)
       : ['R', 'Rcr', 'rho', mode === 'forward' ? target : 'L'];
-  const anyGiven = GIVEN_PARAMS.some((p) => params.has(p));
   const surface = parseSurface(params, defaults.Rs, notices);
   if (surface.radiusText !== null) fields.Rs = surface.radiusText;
   const radii = parseLinkRadii(params, notices);
@@ -228,7 +228,8 @@ export function parseUrl(search: string): ParsedUrl {
     fields,
   };
   return {
-    state: size === 'D' ? diameterFromUrl(state, params, notices) : state,
+    state:
+      size === 'R' ? state : params.has(param('D')) ? diameterFromUrl(state, params, notices) : withSize(state, 'D'),
     notices,
     embed,
     view: params.get(param('view')),
@@ -237,11 +238,14 @@ export function parseUrl(search: string): ParsedUrl {
 
 /**
  * The tool size the link gives: `D=` (the diameter, as catalogues give it) without `R=` switches
- * the size field to D; with both, R wins and a notice says so (a link names one of them).
+ * the size field to D; with both, R wins and a notice says so (a link names one of them). A link
+ * that gives no number of the tool or the problem (a fresh page) shows the diameter, as catalogues
+ * and CAM tool libraries give it; one that gives others but neither R nor D keeps R (its notice
+ * names R missing, as such links always read).
  */
-function sizeFromUrl(params: URLSearchParams, notices: string[]): ToolSize {
+function sizeFromUrl(params: URLSearchParams, anyGiven: boolean, notices: string[]): ToolSize {
   const [r, d] = [param('R'), param('D')];
-  if (!params.has(d)) return 'R';
+  if (!params.has(d)) return anyGiven ? 'R' : 'D';
   if (!params.has(r)) return 'D';
   notices.push(`both ${r} and ${d} are in the link; using ${r}=${(params.get(r) ?? '').slice(0, 20)} (${d} ignored).`);
   return 'R';

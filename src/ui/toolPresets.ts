@@ -8,18 +8,37 @@ import type { CalculatorState } from './state';
 /** A tool preset: its name as a catalogue gives it (diameter D, corner radius), R and Rcr in mm. */
 export interface Preset {
   readonly label: string;
+  /** The unit the catalogue sizes it in: metric tools, or inch tools (fractional diameters). */
+  readonly sizedIn: 'mm' | 'in';
   readonly R: number;
   readonly Rcr: number;
 }
 
-/** Presets: the paper's tools and a few common catalogue sizes, named by diameter and corner radius (mm). */
+/** An inch tool: diameter and corner radius in inches (R and Rcr kept in mm, exact: 1 in = 25.4 mm). */
+function inchTool(label: string, diameterIn: number, cornerIn: number): Preset {
+  return { label, sizedIn: 'in', R: (diameterIn * 254) / 20, Rcr: (cornerIn * 254) / 10 };
+}
+
+/**
+ * Presets: the paper's tools and common catalogue sizes, named by diameter and corner radius: metric
+ * ones in mm, and inch bull noses of 1/4, 3/8 and 1/2 in with the corner radii US catalogues list
+ * (0.015, 0.030, 0.060, 0.125 in) and their ball ends.
+ */
 export const PRESETS: readonly Preset[] = [
-  { label: 'D6, corner R1 (paper Tool 1)', R: 3, Rcr: 1 },
-  { label: 'D12, corner R2 (paper Tool 2)', R: 6, Rcr: 2 },
-  { label: 'D6, corner R0.5', R: 3, Rcr: 0.5 },
-  { label: 'D10, corner R1', R: 5, Rcr: 1 },
-  { label: 'D16, corner R3', R: 8, Rcr: 3 },
-  { label: 'D1/2 in, corner R0.060 in', R: 6.35, Rcr: 1.524 },
+  { label: 'D6, corner R1 (paper Tool 1)', sizedIn: 'mm', R: 3, Rcr: 1 },
+  { label: 'D12, corner R2 (paper Tool 2)', sizedIn: 'mm', R: 6, Rcr: 2 },
+  { label: 'D6, corner R0.5', sizedIn: 'mm', R: 3, Rcr: 0.5 },
+  { label: 'D10, corner R1', sizedIn: 'mm', R: 5, Rcr: 1 },
+  { label: 'D16, corner R3', sizedIn: 'mm', R: 8, Rcr: 3 },
+  inchTool('D1/4 in, corner R0.015 in', 0.25, 0.015),
+  inchTool('D1/4 in, corner R0.030 in', 0.25, 0.03),
+  inchTool('D1/4 in, ball end', 0.25, 0.125),
+  inchTool('D3/8 in, corner R0.030 in', 0.375, 0.03),
+  inchTool('D3/8 in, corner R0.060 in', 0.375, 0.06),
+  inchTool('D1/2 in, corner R0.030 in', 0.5, 0.03),
+  inchTool('D1/2 in, corner R0.060 in', 0.5, 0.06),
+  inchTool('D1/2 in, corner R0.125 in', 0.5, 0.125),
+  inchTool('D1/2 in, ball end', 0.5, 0.25),
 ];
 
 /**

@@ -1,0 +1,116 @@
+/**
+ * The tools a shop saves in its browser (name, D, corner radius, flutes), kept in localStorage as
+ * JSON. Whatever the storage holds is checked as a tool library is (toolLibrary.ts): a corrupt or
+ * hostile entry is dropped with a line saying so, a storage that throws (disabled, private mode,
+ * full) leaves the list in memory with a line saying so, and nothing else is lost.
+ */
+import { checkTool, type LibraryTool } from '../core/input/toolLibrary';
+
+/** The storage key (versioned: a later form gets another key). */
+export const SAVED_TOOLS_KEY = 'path-interval.saved-tools.v1';
+
+/** The most tools kept (the oldest go first). */
+export const SAVED_TOOLS_MAX = 200;
+
+/** The part of the Web Storage API used (localStorage; a Map-backed stand-in in tests). */
+export interface ToolStorage {
+  getItem(key: string): string | null;
+  setItem(key: string, value: string): void;
+}
+
+/** The saved tools read from `text` (the stored JSON; null when none), and a line when some could not be read. */
+export function readSavedTools(text: string | null): { tools: LibraryTool[]; problem: string | null } {
+  if (text === null) return { tools: [], problem: null };
+  let json: unknown;
+  try {
+    json = JSON.parse(text);
+  } catch {
+    return {
+      tools: [],
+      problem: 'The saved tools in this browser could not be read (not JSON); the list starts empty.',
+    };
+  }
+  const list = typeof json === 'object' && json !== null && 'tools' in json ? json.tools : undefined;
+  if (!Array.isArray(list))
+    return { tools: [], problem: 'The saved tools in this browser could not be read; the list starts empty.' };
+  const tools: LibraryTool[] = [];
+  let dropped = 0;
+  for (const e of list.slice(0, SAVED_TOOLS_MAX)) {
+    const entry = typeof e === 'object' && e !== null ? (e as Record<string, unknown>) : {};
+    const name = typeof entry.name === 'string' ? entry.name : '';
+    const checked = checkTool(name, entry.diameterMm, entry.cornerRadiusMm, entry.flutes ?? null);
+    if (checked.ok && checked.tool.name !== '') tools.push(checked.tool);
+    else dropped++;
+  }
+  dropped += Math.max(0, list.length - SAVED_TOOLS_MAX);
+  return {
+    tools,
+    problem:
+      dropped === 0
+        ? null
+        : `${dropped} saved tool${dropped === 1 ? '' : 's'} could not be read and ${dropped === 1 ? 'was' : 'were'} left out.`,
+  };
+}
+
+/** The JSON the saved tools are stored as. */
+export function savedToolsText(tools: readonly LibraryTool[]): string {
+  return JSON.stringify({ tools });
+}
+
+/**
+ * The saved tools with `tool` added: a tool of the same name is replaced (saving again updates
+ * it), the newest first, at most {@link SAVED_TOOLS_MAX}.
+ */
+export function withSavedTool(tools: readonly LibraryTool[], tool: LibraryTool): LibraryTool[] {
+  return [tool, ...tools.filter((t) => t.name !== tool.name)].slice(0, SAVED_TOOLS_MAX);
+}
+
+/** The saved tools of a browser: read once, written on each change; a storage that throws is tolerated. */
+export class SavedTools {
+  private list: LibraryTool[];
+  /** The last thing that went wrong with the storage (shown to the user), or null. */
+  problem: string | null;
+
+  constructor(private readonly storage: ToolStorage | null) {
+    let text: string | null = null;
+    let blocked = storage === null;
+    try {
+      text = storage?.getItem(SAVED_TOOLS_KEY) ?? null;
+    } catch {
+      blocked = true;
+    }
+    const read = readSavedTools(text);
+    this.list = read.tools;
+    this.problem = blocked
+      ? 'This browser does not let the page keep saved tools; they last until the page closes.'
+      : read.problem;
+  }
+
+  get tools(): readonly LibraryTool[] {
+    return this.list;
+  }
+
+  /** Saves a tool (replacing one of the same name); false with a problem when the storage refused (kept in memory). */
+  save(tool: LibraryTool): boolean {
+    return this.store(withSavedTool(this.list, tool));
+  }
+
+  /** Forgets the tool named `name`. */
+  remove(name: string): boolean {
+    return this.store(this.list.filter((t) => t.name !== name));
+  }
+
+  private store(tools: LibraryTool[]): boolean {
+    this.list = tools;
+    try {
+      if (this.storage === null) throw new Error('no storage');
+      this.storage.setItem(SAVED_TOOLS_KEY, savedToolsText(tools));
+      this.problem = null;
+      return true;
+    } catch {
+      this.problem =
+        'This browser did not keep the tool (storage full or not allowed); it lasts until the page closes.';
+      return false;
+    }
+  }
+}

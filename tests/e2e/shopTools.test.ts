@@ -1,0 +1,240 @@
+/**
+ * Tools as the shop has them (issue 21), driven on a phone (390 x 844, touch): lengths typed as
+ * people write them (1/2", 12.7 mm), a Fusion 360 tool library imported through the file input and
+ * a tool picked from it, a tool saved in the browser and picked after a reload, and Copy link.
+ * Expected step-overs come from the command line (its own parsing of plain mm numbers).
+ */
+import { spawnSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import type { BrowserContext, Page } from 'playwright-core';
+import { afterAll, describe, expect, it } from 'vitest';
+import { pageSettled, ROOT, SHOTS, useSite } from './harness';
+
+const site = useSite('docs/shop-tools');
+const PHONE = { width: 390, height: 844 };
+
+let context: BrowserContext | null = null;
+let shared: Page | null = null;
+
+/** Opens the page on the phone (touch, clipboard allowed) and waits for the first result. */
+async function open(query: string): Promise<Page> {
+  if (context === null) {
+    context = await site.browser().newContext({ viewport: PHONE, hasTouch: true, isMobile: true });
+    await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
+  }
+  shared ??= await context.newPage();
+  await shared.goto(`${site.url()}${query}`);
+  await shared.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+  return shared;
+}
+
+afterAll(async () => {
+  await context?.close();
+});
+
+/** Clears a field and types into it with the keyboard, key by key. */
+async function typeInto(page: Page, testId: string, text: string): Promise<void> {
+  const input = page.getByTestId(testId);
+  await input.scrollIntoViewIfNeeded();
+  await input.tap();
+  await page.keyboard.press('ControlOrMeta+A');
+  await page.keyboard.press('Backspace');
+  await page.keyboard.type(text, { delay: 20 });
+}
+
+const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
+
+/** The command line's exact step-over L in mm for a tool and h given in mm. */
+function cliInterval(R: number, Rcr: number, h: number): number {
+  const args = ['--R', String(R), '--Rcr', String(Rcr), '--rho', '5', '--h', String(h), '--json'];
+  const r = spawnSync(process.execPath, [`${ROOT}src/cli/bin.mjs`, ...args], { encoding: 'utf8' });
+  return JSON.parse(r.stdout).exact.interval;
+}
+
+const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
+
+/** axe-core's violations on the page as it is: rule ids and their first targets. */
+async function violations(page: Page): Promise<string[]> {
+  await pageSettled(page);
+  await page.addScriptTag({ content: AXE });
+  return page.evaluate(async () => {
+    type Found = { id: string; nodes: { target: string[] }[] };
+    const axe = (window as unknown as { axe: { run(): Promise<{ violations: Found[] }> } }).axe;
+    return (await axe.run()).violations.map((v) => `${v.id}: ${v.nodes[0]?.target.join(' ')}`);
+  });
+}
+
+/** The headline step-over's number, in the unit on screen. */
+const headline = async (page: Page) => Number.parseFloat(await text(page, 'result-exact-interval'));
+
+describe('numbers typed as people write them (phone)', () => {
+  it('1/2" in inch mode is answered as D = 0.5 in; 12.7 mm and 1/2" in mm mode as D = 12.7 mm', async () => {
+    const page = await open('?D=0.25&Rcr=0.03&rho=5&h=0.002&unit=in');
+    const want = cliInterval(6.35, 0.762, 0.0508) / 25.4;
+    await typeInto(page, 'input-R', '1/2"');
+    // Answered while the text is still as typed (the field keeps it until it is committed).
+    await expect.poll(() => headline(page)).toBeCloseTo(want, 4);
+    expect(await page.getByTestId('input-R').inputValue()).toBe('1/2"');
+    expect(await text(page, 'error-R')).toBe('');
+    await page.keyboard.press('Enter');
+    await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('0.5');
+    await expect.poll(() => new URL(page.url()).searchParams.get('D')).toBe('0.5');
+    await page.screenshot({ path: `${SHOTS}/shop-fraction-inch-phone.png` });
+
+    const mm = await open('?D=6&Rcr=1&rho=5&h=0.05&unit=mm');
+    const wantMm = cliInterval(6.35, 1, 0.05);
+    await typeInto(mm, 'input-R', '12.7 mm');
+    await expect.poll(() => text(mm, 'result-exact-interval')).toBe(`${wantMm.toFixed(4)} mm`);
+    await mm.keyboard.press('Enter');
+    await expect.poll(() => mm.getByTestId('input-R').inputValue()).toBe('12.7');
+    await typeInto(mm, 'input-R', '1/4"');
+    await typeInto(mm, 'input-h', '50 um');
+    await mm.keyboard.press('Enter');
+    await expect.poll(() => mm.getByTestId('input-h').inputValue()).toBe('0.05');
+    expect(await mm.getByTestId('input-R').inputValue()).toBe('6.35');
+    await expect.poll(() => text(mm, 'result-exact-interval')).toBe(`${cliInterval(3.175, 1, 0.05).toFixed(4)} mm`);
+    await expect.poll(() => new URL(mm.url()).searchParams.get('D')).toBe('6.35');
+  });
+
+  it('anything else gets the usual message, never NaN', async () => {
+    const page = await open('?D=6&Rcr=1&rho=5&h=0.05&unit=mm');
+    await typeInto(page, 'input-Rcr', '1/0');
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, 'error-Rcr')).toMatch(/must be a number/);
+    expect(await page.getByTestId('input-Rcr').inputValue()).toBe('1/0');
+    expect(await page.locator('body').textContent()).not.toMatch(/NaN|Infinity/);
+  });
+
+  it('a fresh page gives the size as a diameter, with the corner hint in D terms', async () => {
+    const page = await open('');
+    expect(await page.locator('label[for="field-R"]').textContent()).toBe('Tool diameter D');
+    expect(await page.getByTestId('input-R').inputValue()).toBe('6');
+    expect(await page.locator('#field-Rcr-hint').textContent()).toMatch(/Rcr = D\/2 is a ball end/);
+    await page.getByTestId('preset').selectOption({ label: 'D3/8 in, corner R0.030 in' });
+    await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('9.525');
+    expect(await page.getByTestId('input-Rcr').inputValue()).toBe('0.762');
+  });
+});
+
+/** A small Fusion 360 library: two end mills (mm and inches), a drill, one without DC, and a hostile name. */
+const LIBRARY = JSON.stringify({
+  data: [
+    {
+      type: 'bull nose end mill',
+      unit: 'millimeters',
+      description: 'D10 R1.5 4FL',
+      geometry: { DC: 10, RE: 1.5, NOF: 4 },
+    },
+    { type: 'ball end mill', unit: 'inches', description: '1/4 ball', geometry: { DC: 0.25, RE: 0.125, NOF: 2 } },
+    { type: 'drill', unit: 'millimeters', description: 'Drill 5', geometry: { DC: 5 } },
+    { type: 'bull nose end mill', unit: 'millimeters', description: 'no size', geometry: { RE: 1 } },
+    {
+      type: 'flat end mill',
+      unit: 'millimeters',
+      description: '<img src=x onerror="window.__pwned=1">',
+      geometry: { DC: 8 },
+    },
+  ],
+  version: 16,
+});
+
+describe('tools of the shop (phone)', () => {
+  it('imports a Fusion 360 library through the file input and fills D and the corner radius from a pick', async () => {
+    const page = await open('?D=6&Rcr=1&rho=5&h=0.05&unit=mm');
+    await page.locator('[data-testid="tool-shelf"] summary').tap();
+    await page.getByTestId('tool-library-import').setInputFiles({
+      name: 'shop.json',
+      mimeType: 'application/json',
+      buffer: Buffer.from(LIBRARY),
+    });
+    const list = page.getByTestId('library-tools');
+    await list.waitFor();
+    const status = page.getByTestId('tool-library-status');
+    await expect.poll(() => status.textContent()).toMatch(/"shop\.json": 3 tools read/);
+    expect(await status.textContent()).toMatch(/Tool 4 "no size": geometry\.DC \(the diameter\) is missing\./);
+    expect(await status.textContent()).toMatch(
+      /Tool 3 "Drill 5": type "drill" is not a flat, bull nose or ball end mill/,
+    );
+    // The hostile name is text: no element made of it, nothing run.
+    expect(await page.locator('[data-testid="tool-shelf"] img').count()).toBe(0);
+    expect(await list.locator('option').allTextContents()).toContain(
+      '<img src=x onerror="window.__pwned=1">: D 8 mm, corner R 0 mm',
+    );
+    expect(await page.evaluate(() => (window as unknown as { __pwned?: number }).__pwned)).toBeUndefined();
+    await list.selectOption({ label: '1/4 ball: D 6.35 mm, corner R 3.175 mm, 2 flutes' });
+    await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('6.35');
+    expect(await page.getByTestId('input-Rcr').inputValue()).toBe('3.175');
+    await expect
+      .poll(() => text(page, 'result-exact-interval'))
+      .toBe(`${cliInterval(3.175, 3.175, 0.05).toFixed(4)} mm`);
+    // A file that is not a library leaves the list as it was.
+    await page.getByTestId('tool-library-import').setInputFiles({
+      name: 'notes.txt',
+      mimeType: 'text/plain',
+      buffer: Buffer.from('not json'),
+    });
+    await expect.poll(() => status.textContent()).toMatch(/"notes\.txt": 0 tools read\.The file is not JSON/);
+    expect(await list.locator('option').count()).toBe(4);
+    await page.screenshot({ path: `${SHOTS}/shop-library-phone.png`, fullPage: true });
+    // The open shelf, its lists and its messages pass axe, light and dark.
+    expect(await violations(page)).toEqual([]);
+    await page.emulateMedia({ colorScheme: 'dark' });
+    expect(await violations(page)).toEqual([]);
+    await page.screenshot({ path: `${SHOTS}/shop-library-phone-dark.png` });
+    await page.emulateMedia({ colorScheme: 'light' });
+    // Dropped on the shelf, as from a file manager: the same import.
+    await page.evaluate((json) => {
+      const data = new DataTransfer();
+      data.items.add(new File([json], 'dropped.json', { type: 'application/json' }));
+      const shelf = document.querySelector('[data-testid="tool-shelf"]');
+      shelf?.dispatchEvent(new DragEvent('dragover', { dataTransfer: data, bubbles: true, cancelable: true }));
+      shelf?.dispatchEvent(new DragEvent('drop', { dataTransfer: data, bubbles: true, cancelable: true }));
+    }, LIBRARY);
+    await expect.poll(() => status.textContent()).toMatch(/"dropped\.json": 3 tools read/);
+    expect(await page.getByTestId('tool-shelf').getAttribute('class')).not.toMatch(/dragging/);
+  });
+
+  it('saves a tool in the browser, and after a reload picks it to fill the fields', async () => {
+    const page = await open('?D=10&Rcr=1.5&rho=5&h=0.05&unit=mm');
+    await page.locator('[data-testid="tool-shelf"] summary').tap();
+    await page.getByTestId('tool-name').fill('Shop D10 R1.5');
+    await page.getByTestId('tool-flutes').fill('4');
+    await page.getByTestId('save-tool').tap();
+    await expect.poll(() => text(page, 'tool-library-status')).toBe('Saved "Shop D10 R1.5" in this browser.');
+    await page.goto(`${site.url()}?D=6&Rcr=1&rho=5&h=0.05&unit=in`);
+    await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+    await page.locator('[data-testid="tool-shelf"] summary').tap();
+    const saved = page.getByTestId('saved-tools');
+    const label = 'Shop D10 R1.5: D 0.393701 in, corner R 0.0590551 in, 4 flutes';
+    await expect.poll(() => saved.locator('option').allTextContents()).toContain(label);
+    await saved.selectOption({ label });
+    await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('0.393701');
+    expect(await page.getByTestId('input-Rcr').inputValue()).toBe('0.0590551');
+    // Corrupt storage: the page still opens, says so, and the list starts empty.
+    await page.evaluate(() => localStorage.setItem('path-interval.saved-tools.v1', '{not json'));
+    await page.reload();
+    await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+    expect(await text(page, 'tool-library-status')).toMatch(/could not be read \(not JSON\)/);
+    expect(await saved.locator('option').allTextContents()).toEqual(['no saved tools yet']);
+  });
+
+  it('Copy link: the copied URL opens the same state (written lengths as plain numbers)', async () => {
+    const page = await open('?D=6&Rcr=1&rho=5&h=0.05&unit=mm');
+    // The fallback field for a refused clipboard is not shown while the clipboard works.
+    expect(await page.getByTestId('link-text').isVisible()).toBe(false);
+    await typeInto(page, 'input-Rcr', '1/32"');
+    await page.keyboard.press('Enter');
+    await expect.poll(() => page.getByTestId('input-Rcr').inputValue()).toBe('0.79375');
+    const answer = await text(page, 'result-exact-interval');
+    await page.getByTestId('copy-link').tap();
+    await expect.poll(() => text(page, 'copy-link-status')).toMatch(/Link copied/);
+    const link = await page.evaluate(() => navigator.clipboard.readText());
+    expect(new URL(link).searchParams.get('Rcr')).toBe('0.79375');
+    expect(link.startsWith(site.url())).toBe(true);
+    expect(await page.getByTestId('link-text').isVisible()).toBe(false);
+    const again = await open(new URL(link).search);
+    await expect.poll(() => text(again, 'result-exact-interval')).toBe(answer);
+    expect(await again.getByTestId('input-R').inputValue()).toBe('6');
+    expect(await again.getByTestId('input-Rcr').inputValue()).toBe('0.79375');
+  });
+});

@@ -1,0 +1,91 @@
+/** Saved tools in the browser's storage: kept, replaced by name, and corrupt or refusing storage tolerated. */
+import { describe, expect, it } from 'vitest';
+import {
+  readSavedTools,
+  SAVED_TOOLS_KEY,
+  SAVED_TOOLS_MAX,
+  SavedTools,
+  type ToolStorage,
+} from '../../src/ui/savedTools';
+
+const tool = (name: string, diameterMm = 6, cornerRadiusMm = 1, flutes: number | null = 4) => ({
+  name,
+  diameterMm,
+  cornerRadiusMm,
+  flutes,
+});
+
+function memory(initial: string | null = null): ToolStorage & { data: Map<string, string> } {
+  const data = new Map<string, string>();
+  if (initial !== null) data.set(SAVED_TOOLS_KEY, initial);
+  return { data, getItem: (k) => data.get(k) ?? null, setItem: (k, v) => void data.set(k, v) };
+}
+
+describe('saved tools', () => {
+  it('are kept in the storage and read back by another page', () => {
+    const storage = memory();
+    const a = new SavedTools(storage);
+    expect(a.tools).toEqual([]);
+    expect(a.save(tool('D6 R1'))).toBe(true);
+    expect(a.save(tool('D10 R2', 10, 2, 3))).toBe(true);
+    expect(a.save(tool('D6 R1', 6, 0.5, 2))).toBe(true); // same name: replaced
+    const b = new SavedTools(storage);
+    expect(b.tools).toEqual([tool('D6 R1', 6, 0.5, 2), tool('D10 R2', 10, 2, 3)]);
+    expect(b.problem).toBeNull();
+    b.remove('D10 R2');
+    expect(new SavedTools(storage).tools).toEqual([tool('D6 R1', 6, 0.5, 2)]);
+  });
+
+  it.each([
+    ['not JSON', '{{{', /not JSON/],
+    ['not a list', '{"tools": 5}', /could not be read/],
+    ['null', 'null', /could not be read/],
+  ])('corrupt storage (%s): an empty list and a line', (_, text, line) => {
+    const s = new SavedTools(memory(text));
+    expect(s.tools).toEqual([]);
+    expect(s.problem).toMatch(line);
+  });
+
+  it('drops hostile or impossible entries, keeps the good ones', () => {
+    const text = JSON.stringify({
+      tools: [
+        tool('good'),
+        tool('corner too big', 6, 4),
+        { name: 5, diameterMm: 6, cornerRadiusMm: 1 },
+        tool('', 6, 1),
+        { name: 'no numbers' },
+        null,
+        'string',
+        { ...tool('nan'), diameterMm: 'NaN' },
+        tool('<b>bold</b>'),
+      ],
+    });
+    const read = readSavedTools(text);
+    expect(read.tools.map((t) => t.name)).toEqual(['good', '<b>bold</b>']);
+    expect(read.problem).toBe('7 saved tools could not be read and were left out.');
+  });
+
+  it('keeps at most SAVED_TOOLS_MAX, the newest first', () => {
+    const s = new SavedTools(memory());
+    for (let i = 0; i < SAVED_TOOLS_MAX + 5; i++) s.save(tool(`t${i}`));
+    expect(s.tools).toHaveLength(SAVED_TOOLS_MAX);
+    expect(s.tools[0]?.name).toBe(`t${SAVED_TOOLS_MAX + 4}`);
+  });
+
+  it('a storage that throws (disabled, full) keeps the list in memory with a line', () => {
+    const throwing: ToolStorage = {
+      getItem: () => {
+        throw new Error('SecurityError');
+      },
+      setItem: () => {
+        throw new Error('QuotaExceededError');
+      },
+    };
+    const s = new SavedTools(throwing);
+    expect(s.problem).toMatch(/does not let the page keep saved tools/);
+    expect(s.save(tool('a'))).toBe(false);
+    expect(s.tools.map((t) => t.name)).toEqual(['a']);
+    expect(s.problem).toMatch(/did not keep the tool/);
+    expect(new SavedTools(null).problem).toMatch(/does not let/);
+  });
+});
