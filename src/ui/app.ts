@@ -59,7 +59,7 @@ const VIEW_IDS: readonly ViewId[] = FIELDS.view.values;
 
 /** What the teaching views say while the inputs ask a doubly curved or three-axis question. */
 const ELSEWHERE =
-  'This view shows a plane or a cylinder at a five-axis posture: it still shows the last such inputs (the results above answer the inputs on screen).';
+  'This view draws a plane or a cylinder at a five-axis posture only: it has nothing to show for the inputs on screen (the results above answer them; the Chart and the Profile draw them).';
 
 /** Observes the page from outside (the e2e build's probe); the page itself needs none. */
 export interface AppObserver {

@@ -22,11 +22,16 @@ const DECIMALS: Readonly<Record<Resolution, Readonly<Record<LengthUnit, number>>
   fine: { mm: 6, in: 7 },
 };
 
-/** Significant digits that give `decimals` decimals for `value`, at least four. */
+/**
+ * Significant digits that give `decimals` decimals for `value`, at least four. The magnitude is
+ * taken after rounding to those decimals, so a value just below a power of ten that rounds up to it
+ * (9.99999999 at 3 decimals: 10.000) keeps the same decimals as one just above it.
+ */
 function digitsFor(value: number, decimals: number): number {
   const magnitude = Math.abs(value);
   if (magnitude === 0) return decimals + 1;
-  return Math.max(4, decimals + Math.floor(Math.log10(magnitude)) + 1);
+  const rounded = decimals <= 100 ? Number(magnitude.toFixed(decimals)) : magnitude;
+  return Math.max(4, decimals + Math.floor(Math.log10(rounded > 0 ? rounded : magnitude)) + 1);
 }
 
 /** A length given in mm, in `unit` (no symbol); a dash for null or a non-finite value. */

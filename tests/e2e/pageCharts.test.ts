@@ -101,11 +101,12 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
     expect(await view.locator('text.dim-text').allTextContents()).toContain(`L = ${exact.toFixed(4)} (arc)`);
     expect(await page.getByTestId('views-stale').isHidden()).toBe(true);
     await view.screenshot({ path: `${SHOTS}/view-profile-curved.png` });
-    // The step-through does not draw this question: it says so, greyed.
+    // The step-through does not draw this question: it says so, and hides its last picture (of other inputs).
     await page.getByRole('tab', { name: /step/i }).first().click();
     await expect
       .poll(() => page.getByTestId('views-stale').textContent())
-      .toMatch(/plane or a cylinder at a five-axis posture/);
+      .toMatch(/plane or a cylinder at a five-axis posture only/);
+    expect(await page.locator('.teaching .tab-panels').isHidden()).toBe(true);
     expect(errors).toEqual([]);
   });
 

@@ -140,7 +140,9 @@ describe('numbers answer the inputs on screen', () => {
     await workerIdle(page, SOLVER);
     const answered = await replies(page, SOLVER);
     await recordNumbers(page);
-    await block(page, await namedWorker(page, SOLVER), 1000);
+    // Busy long enough that both fills land inside it even on a loaded machine (at 1 s they did not,
+    // under a load of 12 on 2 cores); what follows waits for the late reply, not for the time.
+    await block(page, await namedWorker(page, SOLVER), 4000);
     await page.getByTestId('input-h').fill('0.06');
     await page.getByTestId('input-h').fill('x');
     expect(await replies(page, SOLVER), 'no reply before the invalid input').toBe(answered);

@@ -89,3 +89,15 @@ describe('page number formatting', () => {
     expect(bad).toEqual([]);
   });
 });
+
+describe('the decimals of a length do not depend on noise below the resolution', () => {
+  it('a value just below a power of ten that rounds up to it reads as one just above it (10.000 µm, 1.0000 mm, 0.10000 in)', () => {
+    for (const eps of [1e-13, 1e-11, 1e-9]) {
+      expect(formatLenUnit(0.01 * (1 - eps), 'mm', 'fine')).toBe('10.000 \u00b5m');
+      expect(formatLenUnit(0.01 * (1 + eps), 'mm', 'fine')).toBe('10.000 \u00b5m');
+      expect(formatLenUnit(1 - eps, 'mm')).toBe('1.0000 mm');
+      expect(formatLenUnit(1 + eps, 'mm')).toBe('1.0000 mm');
+      expect(formatLen(2.54 * (1 - eps), 'in')).toBe(formatLen(2.54 * (1 + eps), 'in'));
+    }
+  });
+});

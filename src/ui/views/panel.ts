@@ -142,8 +142,8 @@ export class TeachingPanel {
 
   /**
    * A doubly curved point's or three-axis machining's data that answers the inputs on screen: the
-   * views that draw its kind draw it (the visible one now); the others keep their last picture,
-   * greyed, under `elsewhere`.
+   * views that draw its kind draw it (the visible one now); the others show only `elsewhere`
+   * (their last picture answers other inputs, so it is hidden, not greyed).
    */
   updatePage(ctx: PageViewContext, elsewhere: string): void {
     this.pageCtx = ctx;
@@ -158,7 +158,7 @@ export class TeachingPanel {
   /**
    * Marks every view as out of date (`text` says why) or current again (null). While marked, the
    * views keep their last picture, greyed, under the note; their numbers are not the inputs'. A
-   * view that does not draw the page question on screen stays marked.
+   * view that does not draw the page question on screen shows only its note.
    */
   setStale(text: string | null): void {
     this.staleText = text;
@@ -167,8 +167,10 @@ export class TeachingPanel {
 
   private showStale(): void {
     const active = this.views.find((v) => v.id === this.active);
-    const text = this.staleText ?? (active !== undefined && !this.draws(active) ? this.elsewhere : null);
+    const elsewhere = active !== undefined && !this.draws(active);
+    const text = this.staleText ?? (elsewhere ? this.elsewhere : null);
     this.root.classList.toggle('stale', text !== null);
+    this.root.classList.toggle('elsewhere', this.staleText === null && elsewhere);
     this.staleNote.hidden = text === null;
     if (this.staleNote.textContent !== (text ?? '')) this.staleNote.textContent = text ?? '';
   }
