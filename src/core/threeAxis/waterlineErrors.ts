@@ -1,3 +1,7 @@
+/**
+ * The limits of waterline passes on a surface of revolution as input errors (waterlineRevolution.ts):
+ * the case's own inputs, and an unsuccessful solve worded with its limit in the quantity given.
+ */
 import {
   checkTool,
   formatNumber,
