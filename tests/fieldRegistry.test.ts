@@ -190,7 +190,15 @@ describe('the command line takes every registry field under its flag', () => {
   it('the command line sources name no flag the registry or the flag list does not have', () => {
     // `--name` is the parser's own placeholder (`--name value`, `--name=value`).
     const known = new Set<string>([...CLI_OPTIONS, ...FLAG_OPTIONS, 'name']);
-    for (const file of ['args.ts', 'main.ts', 'report.ts']) {
+    for (const file of [
+      'args.ts',
+      'main.ts',
+      'report.ts',
+      'reportExtras.ts',
+      'reportJson.ts',
+      'batch.ts',
+      'batchHeader.ts',
+    ]) {
       const source = readFileSync(new URL(`../src/cli/${file}`, import.meta.url), 'utf8');
       const named = [...source.matchAll(/--([a-z][a-zA-Z-]*)/g)].map((m) => m[1] as string);
       expect(

@@ -53,86 +53,16 @@ import { describeSystemError, errorLine, escapeControls, isClosedPipe, Output } 
 import { type Extras, forwardJson, forwardTable, inverseJson, inverseTable, type SimulationRun } from './report';
 import { sweepSlopes } from './slopeSweep';
 import { slopeSweepJson, slopeSweepTable, threeAxisJson, threeAxisTable } from './threeAxisReport';
+import { USAGE } from './usage';
+
+/** The help text (usage.ts), re-exported for the callers. */
+export { USAGE };
 
 export interface Io {
   readonly stdin: Readable;
   readonly stdout: Writable;
   readonly stderr: Writable;
 }
-
-export const USAGE = `Usage: path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --h <mm> [--json] [--simulate]
-       path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --ra <mm> [--json] [--simulate]
-       path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --interval <mm> [--json] [--simulate]
-       path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --half-interval <mm> [--json] [--simulate]
-       path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --h <mm> [--json]
-       path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --horizontal-step <mm> [--json]
-       path-interval --R <mm> --Rcr <mm> --slope <deg> --passes waterline [...] --step-down <mm> [--json]
-       path-interval --R <mm> --Rcr <mm> --h <mm> --slope-sweep [three-axis options] [--json]
-       path-interval --batch < cases.csv > table.csv
-
-Step-over (path interval L, between adjacent cutter-contact paths) of a filleted (bull-nose)
-end mill for a scallop height h or a roughness Ra, exact for any tool posture on a plane or a
-cylinder, beside the approximations of Sekine et al., Redonnet et al. and Bedi et al. (Sekine &
-Kameya 2022; lead-only models), the osculating circle at the contact and the ball of the corner
-radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
-
-  --R <mm>              tool radius (0.001 to 1000)
-  --Rcr <mm>            corner radius (0 <= Rcr <= R; Rcr = R is a ball end)
-  --rho <deg>           lead angle, along the feed (0 <= rho < 90)
-  --tilt <deg>          tilt angle, across the feed; + leans the shank to +Y (-90 < tilt < 90; default 0)
-  --pattern <p>         one-way (default) or zigzag (posture mirrored on every other pass)
-  --surface-radius <mm> a cylinder: signed radius, > 0 convex, < 0 concave (0.001 <= |Rs| <= 1e6);
-                        omitted: a plane. Scallop heights are measured radially, L along the surface
-  --surface-axis <a>    feed (default: passes run along the cylinder) or cross (passes go around it)
-  --feed-radius <mm>    a doubly curved point: signed principal radius along the feed Rf (> 0
-                        convex, < 0 concave; 0.001 <= |Rf| <= 1e6; omitted: straight)
-  --cross-radius <mm>   and across the feed Rc. Both: the exact answer at that point beside the
-                        plane's, each cylinder's and the usual correction 1/rho = 1/Reff + 1/Rc;
-                        one alone is the cylinder shorthand (--cross-radius Rs is --surface-radius
-                        Rs --surface-axis feed; --feed-radius Rs, the axis across); not with
-                        --surface-radius or --surface-axis
-  --h <mm>              scallop height (from 1e-9 up to the flank and shank limits)
-  --ra <mm>             instead of --h: the step-over that leaves this roughness Ra (up to the
-                        largest Ra the tool leaves, named in the error)
-  --interval <mm>       inverse: the scallop height left at step-over L
-  --half-interval <mm>  inverse, the step-over given as L/2
-  --inverse             optional with --interval or --half-interval (kept for old scripts)
-  --simulate            also simulate the passes (the tool solid over a 512 x 512 height field;
-                        a plane only) and show its cusp height and roughness beside the exact ones
-  --json                print one JSON object instead of a table
-
-Three-axis machining (the tool upright, the surface sloped; then --rho and --tilt are not given):
-  --slope <deg>         slope alpha of the surface at the contact (0 to 90; 90 is a vertical wall,
-                        cut flat by the side: no scallop)
-  --passes <p>          raster (default: parallel passes) or waterline (Z-level, along the contour)
-  --raster-angle <deg>  raster only: plan angle psi of the passes to the fall line (0 to 90; default 0)
-  --feed-radius <mm>    waterline only: a surface of revolution about a vertical axis, signed normal
-                        radius along the feed (> 0 convex: dome, boss; < 0 concave: bowl, fillet)
-  --cross-radius <mm>   waterline only: signed radius of the meridian (signs as --feed-radius);
-                        without either radius: a sloped plane
-  --h <mm>              the scallop height: gives the programmed step (Lxy or dz), L along the
-                        surface and the equivalent lead and tilt
-  --interval <mm>       inverse: the cusp height a step-over L along the surface leaves
-  --horizontal-step <mm> inverse, raster: the cusp height a horizontal step Lxy leaves
-  --step-down <mm>      inverse, waterline: the cusp height a step-down dz (tool tip to tool tip) leaves
-  --slope-sweep         instead of --slope, with --h: Lxy (raster) or dz (waterline) for h at 31 slopes
-                        from 0 to the largest valid, and the cusp one constant step leaves at each
-                        (the flat floor's step for h, or the typed --horizontal-step / --step-down)
-  --batch               read CSV on stdin (header R,Rcr,rho and h or Ra; optional tilt, pattern,
-                        surfaceRadius, surfaceAxis, or feedRadius, crossRadius; any order; an empty field takes the default;
-                        output columns are ignored, so an output or a lookup table reads back),
-                        three-axis: a header with slope needs no rho; optional passes,
-                        rasterAngle, feedRadius, crossRadius; output interval,horizontalStep,
-                        stepDown,lead,tilt,scallopHeight,note,error),
-                        write CSV: the input columns, h (with Ra), then
-                        exact,sekine,redonnet,bedi (L/2 of each), interval,halfWidthRight,
-                        halfWidthLeft,contactOffset,otherCuspHeight (exact), osculating,
-                        cornerBall (L/2), note, error; full precision; blank lines skipped
-  -h, --help            show this text
-
-Table: 7 significant digits. JSON and CSV: every digit of the double.
-Exit codes: 0 success (a batch with bad rows included), 1 a read or write error,
-2 invalid input or usage.`;
 
 /** The option that gives a field, as the user types it, for messages. */
 export function optionOf(field: AnyFieldName, half: boolean): string {

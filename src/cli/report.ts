@@ -1,6 +1,8 @@
 /**
  * One case's answer as a table for the terminal or as a JSON object. Pure: comparison in, text
  * or plain data out. Names come from the core's procedure registry; lengths mm, angles degrees.
+ * The parts: the roughness and simulation blocks (reportExtras.ts) and the JSON (reportJson.ts),
+ * re-exported here.
  */
 import {
   APPROXIMATION_KEYS,
@@ -8,21 +10,20 @@ import {
   CORRECTED_KEYS,
   type CorrectedKey,
   CURVATURE_ROWS,
-  type ExactForward,
   type ForwardComparison,
   type ForwardEstimate,
   type InverseComparison,
   type InverseEstimate,
   type PassInput,
   PROCEDURES,
-  type Roughness,
-  raRuleOfThumbMm,
-  type SimulationResult,
   type Surface,
 } from '../core/index';
-import { PASS_FIELDS } from '../core/input/fields';
-import { rawOf } from '../core/input/raw';
+import { type Extras, indent, KEY_VALUE, roughnessLines, simulationLines } from './reportExtras';
 import { type Column, deviation, echo, length, NONE, percent, renderTable } from './table';
+
+/** The extras (reportExtras.ts) and the JSON (reportJson.ts), re-exported for the callers. */
+export { type Extras, roughnessLines, ruleOfThumb, type SimulationRun } from './reportExtras';
+export { extrasJson, forwardJson, inverseJson, type JsonValue } from './reportJson';
 
 /** The paper's procedures: their inverse is named by its equation. */
 const PAPER_KEYS: readonly ApproximationKey[] = ['sekine', 'redonnet', 'bedi'];
@@ -65,88 +66,6 @@ function caseLine(input: PassInput): string {
   );
 }
 
-/** A simulation of the passes and its wall-clock time, or why it was not run. */
-export type SimulationRun =
-  | { readonly ok: true; readonly result: SimulationResult; readonly ms: number }
-  | { readonly ok: false; readonly notApplicable: string };
-
-/** What a case's report adds to the comparison: roughness, the target Ra it was solved for, a simulation. */
-export interface Extras {
-  /** Exact roughness of the surface the passes leave (at the exact step-over, or the given one). */
-  readonly roughness?: Roughness;
-  /** The target Ra (mm) the scallop height was solved for (--ra). */
-  readonly targetRaMm?: number;
-  readonly simulation?: SimulationRun;
-}
-
-/** The rule of thumb Ra ~ h/4 beside the exact Ra: its value and its error (null % when Ra = 0). */
-export function ruleOfThumb(
-  scallopHeightMm: number,
-  exactRaMm: number,
-): { raMm: number; deviationMm: number; deviationPercent: number | null } {
-  const raMm = raRuleOfThumbMm(scallopHeightMm);
-  const deviationMm = raMm - exactRaMm;
-  return { raMm, deviationMm, deviationPercent: exactRaMm > 0 ? (100 * deviationMm) / exactRaMm : null };
-}
-
-/** Lines of the roughness block (exact Rz, Ra, Rq and the rule of thumb). */
-export function roughnessLines(r: Roughness, scallopHeightMm: number): string[] {
-  const thumb = ruleOfThumb(scallopHeightMm, r.raMm);
-  const off =
-    thumb.deviationPercent === null
-      ? `${deviation(thumb.deviationMm)} mm off`
-      : `${deviation(thumb.deviationMm)} mm (${percent(thumb.deviationPercent)} %) off the exact Ra`;
-  const facts: string[][] = [
-    ['Rz', length(r.rzMm), 'mm', 'highest peak minus deepest valley'],
-    ['Ra', length(r.raMm), 'mm', 'mean absolute deviation from the mean line'],
-    ['Rq', length(r.rqMm), 'mm', 'root mean square deviation from the mean line'],
-    ['h/4', length(thumb.raMm), 'mm', `rule of thumb Ra ~ h/4: ${off}`],
-  ];
-  return [
-    'Roughness across the feed (exact, ISO 4287 over one period of the passes):',
-    ...indent(renderTable(KEY_VALUE, facts, false)),
-  ];
-}
-
-/** Lines of the simulation block: the simulated values beside the exact ones, with the stated bounds. */
-function simulationLines(sim: SimulationRun, exactCuspMm: number, exact: Roughness | undefined): string[] {
-  if (!sim.ok) return [`Simulation of the passes: ${sim.notApplicable}.`];
-  const s = sim.result;
-  const vs = (simulated: number, exactMm: number | undefined) =>
-    exactMm === undefined ? '' : `; exact minus simulated ${deviation(exactMm - simulated)} mm`;
-  const facts: string[][] = [
-    [
-      'h',
-      length(s.cuspHeightMm),
-      'mm',
-      `highest cusp, within ${length(s.resolutionBoundMm)} mm${vs(s.cuspHeightMm, exactCuspMm)}`,
-    ],
-    [
-      'Rz',
-      length(s.roughness.rzMm),
-      'mm',
-      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.rzMm, exact?.rzMm)}`,
-    ],
-    [
-      'Ra',
-      length(s.roughness.raMm),
-      'mm',
-      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.raMm, exact?.raMm)}`,
-    ],
-    [
-      'Rq',
-      length(s.roughness.rqMm),
-      'mm',
-      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.rqMm, exact?.rqMm)}`,
-    ],
-  ];
-  return [
-    `Simulation of the passes (the tool solid on a ${s.cellsAcross} x ${s.cellsAlong} height field, ` +
-      `${s.placements} placements, ${Math.round(sim.ms)} ms; independent of the exact solver):`,
-    ...indent(renderTable(KEY_VALUE, facts, false)),
-  ];
-}
-
 /** Label of a curvature row: the plane's answer, or a procedure's circle corrected for the curvature. */
 export function curvatureLabel(key: CorrectedKey | 'plane'): string {
   return CURVATURE_ROWS[key === 'plane' ? 'plane' : (`${key}Corrected` as const)].label;
@@ -159,17 +78,6 @@ class Notes {
     this.lines.push(`[${this.lines.length + 1}] ${text}`);
     return `[${this.lines.length}]`;
   }
-}
-
-const KEY_VALUE: readonly Column[] = [
-  { header: '', align: 'left' },
-  { header: '', align: 'right' },
-  { header: '', align: 'left' },
-  { header: '', align: 'left' },
-];
-
-function indent(lines: readonly string[]): string[] {
-  return lines.map((l) => `  ${l}`);
 }
 
 /** A row of the forward table: a step-over beside the exact one (or n/a with its reason as a note). */
@@ -334,146 +242,4 @@ export function inverseTable(c: InverseComparison, extras: Extras = {}): string 
   }
   if (notes.lines.length > 0) out.push('', ...notes.lines);
   return out.join('\n');
-}
-
-/** JSON data: numbers are always finite; a value that does not exist is left out, never null. */
-export type JsonValue = number | string | boolean | JsonValue[] | { [key: string]: JsonValue };
-type JsonObject = { [key: string]: JsonValue };
-
-/** The tool, posture, pattern and surface as validation reads them (a plane has no surface fields: left out). */
-function toolJson(input: PassInput): JsonObject {
-  const out = rawOf(input, PASS_FIELDS) as JsonObject;
-  // A cylinder is a doubly curved point with one radius straight: its principal radii too.
-  const s = input.surface;
-  if (s.kind === 'cylinder') out[s.axis === 'feed' ? 'crossRadius' : 'feedRadius'] = s.radiusMm;
-  return out;
-}
-
-/** The extras as JSON fields: roughness, the rule of thumb beside it, the simulation. */
-export function extrasJson(extras: Extras, scallopHeightMm: number): JsonObject {
-  const out: JsonObject = {};
-  const r = extras.roughness;
-  if (r !== undefined) {
-    out.roughness = { Rz: r.rzMm, Ra: r.raMm, Rq: r.rqMm };
-    const thumb = ruleOfThumb(scallopHeightMm, r.raMm);
-    const rule: JsonObject = { Ra: thumb.raMm, deviation: thumb.deviationMm };
-    if (thumb.deviationPercent !== null) rule.deviationPercent = thumb.deviationPercent;
-    out.raRuleOfThumb = rule;
-  }
-  const sim = extras.simulation;
-  if (sim !== undefined && !sim.ok) out.simulation = { notApplicable: sim.notApplicable };
-  else if (sim !== undefined) {
-    const s = sim.result;
-    out.simulation = {
-      cuspHeight: s.cuspHeightMm,
-      Rz: s.roughness.rzMm,
-      Ra: s.roughness.raMm,
-      Rq: s.roughness.rqMm,
-      cells: s.cells,
-      placements: s.placements,
-      ms: sim.ms,
-      cuspHeightBound: s.resolutionBoundMm,
-      roughnessBound: s.roughnessBoundMm,
-      cellsAcross: s.cellsAcross,
-      cellsAlong: s.cellsAlong,
-      cellSize: s.cellMm,
-    };
-  }
-  return out;
-}
-
-/** Model quantities of the approximations (mm), by their JSON names. */
-const MODEL_FIELDS = [
-  ['toolCentreHeightMm', 'toolCentreHeight'],
-  ['shortRadiusMm', 'shortRadius'],
-  ['longRadiusMm', 'longRadius'],
-  ['effectiveRadiusMm', 'effectiveRadius'],
-  ['combinedRadiusMm', 'combinedRadius'],
-] as const;
-
-function forwardEstimateJson(r: ForwardEstimate<unknown>, exact: ExactForward): JsonObject {
-  if (!r.ok) return { notApplicable: r.notApplicable };
-  const out: JsonObject = {
-    halfInterval: r.halfIntervalMm,
-    interval: r.intervalMm,
-    // As before tilt existed: the deviation of L/2; the step-over's is intervalDeviation.
-    deviation: r.halfIntervalMm - exact.halfIntervalMm,
-    intervalDeviation: r.deviationMm,
-    deviationPercent: r.deviationPercent,
-  };
-  if (r.realScallopMm !== null) out.realScallopHeight = r.realScallopMm;
-  if (r.warning !== null) out.warning = r.warning;
-  const model = r as unknown as Record<string, unknown>;
-  for (const [from, to] of MODEL_FIELDS) {
-    const v = model[from];
-    if (typeof v === 'number') out[to] = v;
-  }
-  return out;
-}
-
-/** The forward comparison as the documented JSON object (lengths mm, angles degrees). */
-export function forwardJson(c: ForwardComparison, extras: Extras = {}): JsonObject {
-  const { exact } = c;
-  const exactOut: JsonObject = {
-    halfInterval: exact.halfIntervalMm,
-    interval: exact.intervalMm,
-    halfWidthRight: exact.halfWidthRightMm,
-    halfWidthLeft: exact.halfWidthLeftMm,
-    contactOffset: exact.contactOffsetMm,
-    scallopHeight: exact.cuspHeightMm,
-  };
-  if (exact.otherCuspHeightMm !== null) exactOut.otherCuspHeight = exact.otherCuspHeightMm;
-  exactOut.noScallop = exact.noScallop;
-  const target: JsonObject =
-    extras.targetRaMm === undefined ? { h: c.input.scallopHeightMm } : { Ra: extras.targetRaMm };
-  const out: JsonObject = {
-    unit: 'mm',
-    input: { ...toolJson(c.input), ...target },
-    maxInterval: c.maxIntervalMm,
-    exact: exactOut,
-  };
-  for (const key of APPROXIMATION_KEYS) out[key] = forwardEstimateJson(c.approximations[key], exact);
-  if (c.curvature !== null) {
-    const k = c.curvature;
-    const rows: JsonObject = { plane: forwardEstimateJson(k.plane, exact) };
-    for (const key of CORRECTED_KEYS) rows[key] = forwardEstimateJson(k.corrected[key], exact);
-    out.curvature = rows;
-  }
-  return { ...out, ...extrasJson(extras, exact.cuspHeightMm) };
-}
-
-function inverseEstimateJson(r: InverseEstimate): JsonObject {
-  if (!r.ok) return { notApplicable: r.notApplicable };
-  const out: JsonObject = { scallopHeight: r.scallopHeightMm, deviation: r.deviationMm };
-  if (r.deviationPercent !== null) out.deviationPercent = r.deviationPercent;
-  return out;
-}
-
-/** The inverse comparison as the documented JSON object (lengths mm, angles degrees). */
-export function inverseJson(c: InverseComparison, extras: Extras = {}): JsonObject {
-  const { exact } = c;
-  const exactOut: JsonObject = {
-    scallopHeight: exact.cuspHeightMm,
-    rightCuspHeight: exact.rightCuspHeightMm,
-    leftCuspHeight: exact.leftCuspHeightMm,
-  };
-  if (exact.otherCuspHeightMm !== null) exactOut.otherCuspHeight = exact.otherCuspHeightMm;
-  exactOut.interval = exact.intervalMm;
-  exactOut.halfInterval = exact.intervalMm / 2;
-  exactOut.halfWidthRight = exact.halfWidthRightMm;
-  exactOut.halfWidthLeft = exact.halfWidthLeftMm;
-  exactOut.contactOffset = exact.contactOffsetMm;
-  const out: JsonObject = {
-    unit: 'mm',
-    input: { ...toolJson(c.input), interval: c.input.intervalMm, halfInterval: c.input.intervalMm / 2 },
-    exact: exactOut,
-  };
-  for (const key of APPROXIMATION_KEYS) out[key] = inverseEstimateJson(c.approximations[key]);
-  if (c.curvature !== null) {
-    const k = c.curvature;
-    const rows: JsonObject = { plane: inverseEstimateJson(k.plane) };
-    for (const key of CORRECTED_KEYS) rows[key] = inverseEstimateJson(k.corrected[key]);
-    out.curvature = rows;
-  }
-  return { ...out, ...extrasJson(extras, exact.cuspHeightMm) };
 }

@@ -1,4 +1,8 @@
 /**
+ * Long for a reason (over 400 lines): the registry is one table of data (about 290 lines, a few per
+ * field) and the lookups typed from it; moved to a module of their own and re-exported from here,
+ * the lookups would import the table back (an import cycle).
+ *
  * The one field registry: every input the calculator takes, with each name it goes by. The core's
  * property (`toolRadiusMm`), its short symbol (`R`), how it is measured (a length, an angle, a word
  * from a list), the label messages give it, its range, and its name on each channel: the page's URL

@@ -1,0 +1,101 @@
+/**
+ * The extras of a case's report (report.ts): the roughness block with the rule of thumb beside it,
+ * and the simulation block with its stated bounds. Lengths mm.
+ */
+import { type Roughness, raRuleOfThumbMm, type SimulationResult } from '../core/index';
+import { type Column, deviation, length, percent, renderTable } from './table';
+
+/** A simulation of the passes and its wall-clock time, or why it was not run. */
+export type SimulationRun =
+  | { readonly ok: true; readonly result: SimulationResult; readonly ms: number }
+  | { readonly ok: false; readonly notApplicable: string };
+
+/** What a case's report adds to the comparison: roughness, the target Ra it was solved for, a simulation. */
+export interface Extras {
+  /** Exact roughness of the surface the passes leave (at the exact step-over, or the given one). */
+  readonly roughness?: Roughness;
+  /** The target Ra (mm) the scallop height was solved for (--ra). */
+  readonly targetRaMm?: number;
+  readonly simulation?: SimulationRun;
+}
+
+/** The rule of thumb Ra ~ h/4 beside the exact Ra: its value and its error (null % when Ra = 0). */
+export function ruleOfThumb(
+  scallopHeightMm: number,
+  exactRaMm: number,
+): { raMm: number; deviationMm: number; deviationPercent: number | null } {
+  const raMm = raRuleOfThumbMm(scallopHeightMm);
+  const deviationMm = raMm - exactRaMm;
+  return { raMm, deviationMm, deviationPercent: exactRaMm > 0 ? (100 * deviationMm) / exactRaMm : null };
+}
+
+/** Lines of the roughness block (exact Rz, Ra, Rq and the rule of thumb). */
+export function roughnessLines(r: Roughness, scallopHeightMm: number): string[] {
+  const thumb = ruleOfThumb(scallopHeightMm, r.raMm);
+  const off =
+    thumb.deviationPercent === null
+      ? `${deviation(thumb.deviationMm)} mm off`
+      : `${deviation(thumb.deviationMm)} mm (${percent(thumb.deviationPercent)} %) off the exact Ra`;
+  const facts: string[][] = [
+    ['Rz', length(r.rzMm), 'mm', 'highest peak minus deepest valley'],
+    ['Ra', length(r.raMm), 'mm', 'mean absolute deviation from the mean line'],
+    ['Rq', length(r.rqMm), 'mm', 'root mean square deviation from the mean line'],
+    ['h/4', length(thumb.raMm), 'mm', `rule of thumb Ra ~ h/4: ${off}`],
+  ];
+  return [
+    'Roughness across the feed (exact, ISO 4287 over one period of the passes):',
+    ...indent(renderTable(KEY_VALUE, facts, false)),
+  ];
+}
+
+/** Lines of the simulation block: the simulated values beside the exact ones, with the stated bounds. */
+export function simulationLines(sim: SimulationRun, exactCuspMm: number, exact: Roughness | undefined): string[] {
+  if (!sim.ok) return [`Simulation of the passes: ${sim.notApplicable}.`];
+  const s = sim.result;
+  const vs = (simulated: number, exactMm: number | undefined) =>
+    exactMm === undefined ? '' : `; exact minus simulated ${deviation(exactMm - simulated)} mm`;
+  const facts: string[][] = [
+    [
+      'h',
+      length(s.cuspHeightMm),
+      'mm',
+      `highest cusp, within ${length(s.resolutionBoundMm)} mm${vs(s.cuspHeightMm, exactCuspMm)}`,
+    ],
+    [
+      'Rz',
+      length(s.roughness.rzMm),
+      'mm',
+      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.rzMm, exact?.rzMm)}`,
+    ],
+    [
+      'Ra',
+      length(s.roughness.raMm),
+      'mm',
+      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.raMm, exact?.raMm)}`,
+    ],
+    [
+      'Rq',
+      length(s.roughness.rqMm),
+      'mm',
+      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.rqMm, exact?.rqMm)}`,
+    ],
+  ];
+  return [
+    `Simulation of the passes (the tool solid on a ${s.cellsAcross} x ${s.cellsAlong} height field, ` +
+      `${s.placements} placements, ${Math.round(sim.ms)} ms; independent of the exact solver):`,
+    ...indent(renderTable(KEY_VALUE, facts, false)),
+  ];
+}
+
+/** The columns of a block of facts: symbol, value, unit, what it is. */
+export const KEY_VALUE: readonly Column[] = [
+  { header: '', align: 'left' },
+  { header: '', align: 'right' },
+  { header: '', align: 'left' },
+  { header: '', align: 'left' },
+];
+
+/** The lines indented by two spaces (a block under its heading). */
+export function indent(lines: readonly string[]): string[] {
+  return lines.map((l) => `  ${l}`);
+}
