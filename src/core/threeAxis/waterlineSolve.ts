@@ -85,6 +85,11 @@ export interface Setup {
   readonly maxL: number;
   /** What bounds maxL. */
   readonly maxBy: 'vertical' | 'bottom' | 'axis' | null;
+  /**
+   * This case's workspace for {@link cuspAt} (the pass pair and the cusp it fills): owned by the
+   * setup, so it lives as long as the one solve that made it and is shared with nothing else.
+   */
+  readonly work: { readonly pair: PassPair; readonly cusp: MeridianCusp };
 }
 
 /** The setup of a case: its tool, meridian, surface and usable range of L. */
@@ -118,17 +123,18 @@ export function setupOf(c: RevolutionCase): Setup {
       maxBy = 'axis';
     }
   }
-  return { tool: meridianTool(c.toolRadiusMm, c.cornerRadiusMm), mer, surf, maxL, maxBy };
+  const work = { pair: newPassPair(), cusp: newMeridianCusp() };
+  return { tool: meridianTool(c.toolRadiusMm, c.cornerRadiusMm), mer, surf, maxL, maxBy, work };
 }
 
-const pairScratch: PassPair = newPassPair();
-const cuspScratch: MeridianCusp = newMeridianCusp();
-
-/** Fills the scratch pair and cusp at L; returns the cusp. */
+/**
+ * The cusp at L (mm), filled into the setup's own workspace (no module state): read it before the
+ * next call with the same setup.
+ */
 export function cuspAt(s: Setup, L: number): MeridianCusp {
-  fillPassPair(s.tool, s.mer, L, pairScratch);
-  fillCusp(s.tool, s.mer, pairScratch, cuspScratch);
-  return cuspScratch;
+  fillPassPair(s.tool, s.mer, L, s.work.pair);
+  fillCusp(s.tool, s.mer, s.work.pair, s.work.cusp);
+  return s.work.cusp;
 }
 
 /** The L (mm) where the lower pass's shank starts to form the cusp, searched in (0, hi] (onShank at hi). */
@@ -145,8 +151,8 @@ export function shankStartL(s: Setup, hi: number): number {
 
 /** Height (mm) of the lower tool's corner top K1 along the normal at L: the shank limit there. */
 export function shankHeightAt(s: Setup, L: number): number {
-  fillPassPair(s.tool, s.mer, L, pairScratch);
-  return normalHeightMm(s.mer, pairScratch.tipS1 - s.tool.R, pairScratch.tipZ1 + s.tool.rcr);
+  fillPassPair(s.tool, s.mer, L, s.work.pair);
+  return normalHeightMm(s.mer, s.work.pair.tipS1 - s.tool.R, s.work.pair.tipZ1 + s.tool.rcr);
 }
 
 /** A value of L (mm) on the usable range where the shank forms the cusp, or null when none does. */
@@ -173,11 +179,11 @@ export type Core =
 
 /** Gouging of the upper pass (0) or the lower one at L (1), or null. */
 function gouging(s: Setup, L: number | null): 0 | 1 | null {
-  fillPassPair(s.tool, s.mer, L ?? 0, pairScratch);
-  if (gougeDepthMm(s.tool, s.surf, pairScratch.tipS0, pairScratch.tipZ0) > 0) return 0;
+  fillPassPair(s.tool, s.mer, L ?? 0, s.work.pair);
+  if (gougeDepthMm(s.tool, s.surf, s.work.pair.tipS0, s.work.pair.tipZ0) > 0) return 0;
   if (L === null) return null;
-  fillPassPair(s.tool, s.mer, L, pairScratch);
-  return gougeDepthMm(s.tool, s.surf, pairScratch.tipS1, pairScratch.tipZ1) > 0 ? 1 : null;
+  fillPassPair(s.tool, s.mer, L, s.work.pair);
+  return gougeDepthMm(s.tool, s.surf, s.work.pair.tipS1, s.work.pair.tipZ1) > 0 ? 1 : null;
 }
 
 /**
@@ -244,7 +250,7 @@ export function inverseCore(s: Setup, step: WaterlineStep): Core {
 /** The answer at L (mm) of a setup (after a successful core). */
 export function answerAt(c: RevolutionCase, s: Setup, L: number): WaterlineAnswer {
   const cusp = cuspAt(s, L);
-  const p = pairScratch;
+  const p = s.work.pair;
   return {
     intervalMm: L,
     stepDownMm: stepDownOfIntervalMm(s.tool, s.mer, L),

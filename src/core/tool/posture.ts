@@ -195,15 +195,15 @@ function sectionAtHeight(s: PostureShape, sign: number, h: number, sec: Section)
   return delta;
 }
 
+/** flankWidthMm's workspace (filled and read within one call). */
+const widthSection: Section = newSection();
+
 /**
  * Width (mm) of a flank at `heightMm` above the contact: the farthest crossing of any torus
  * section with the plane h above the contact (measured from the contact; from O when the tool
  * is flat on the plane). Valid for 0 < h below that flank's top (flankLimits); error below
  * 1e-9 mm over the valid domain. Allocation-free.
  */
-/** flankWidthMm's workspace (filled and read within one call). */
-const widthSection: Section = newSection();
-
 export function flankWidthMm(s: PostureShape, flank: Flank, heightMm: number): number {
   const rcr = s.rcr;
   if (s.a === 0) return reachMm(rcr, heightMm);
