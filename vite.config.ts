@@ -1,7 +1,9 @@
+import { fileURLToPath } from 'node:url';
 import { VitePWA } from 'vite-plugin-pwa';
 import { defineConfig } from 'vitest/config';
 import { embedAttributesPlugin } from './src/build/embedAttributes.ts';
 import { formulaMathmlPlugin } from './src/build/formulaMathml.ts';
+import { shaderWhitespacePlugin } from './src/build/shaderWhitespace.ts';
 import { sharedWorkerPlugin } from './src/build/sharedWorker.ts';
 
 /**
@@ -80,15 +82,32 @@ const LIBRARY = {
   },
 };
 
-export default defineConfig(({ mode }) =>
+/**
+ * The site's build takes three.js from its sources, through src/render/threeParts.ts (the parts the
+ * page uses): the bundled `three` keeps the animation system and the loaders alive through its
+ * top-level prototype writes. The dev server and the tests keep the bundled module.
+ */
+const THREE_FROM_SOURCES = [
+  { find: /^three$/, replacement: fileURLToPath(new URL('./src/render/threeParts.ts', import.meta.url)) },
+];
+
+export default defineConfig(({ mode, command }) =>
   mode === 'lib'
     ? LIBRARY
     : {
         // Relative base: the built site works from any host and any sub-path.
         base: './',
+        resolve: command === 'build' ? { alias: THREE_FROM_SOURCES } : {},
         // The formulas view's MathML is typeset here, at build time, so no TeX engine is shipped.
+        // three.js's shaders ship without comments and indentation (src/build/shaderWhitespace.ts).
         // public/embed.js's attributes must be the field registry's (src/build/embedAttributes.ts).
-        plugins: [formulaMathmlPlugin(), sharedWorkerPlugin(), embedAttributesPlugin(), pwa(mode)],
+        plugins: [
+          formulaMathmlPlugin(),
+          sharedWorkerPlugin(),
+          embedAttributesPlugin(),
+          shaderWhitespacePlugin(),
+          pwa(mode),
+        ],
         // three.js alone is about 560 kB raw (130 kB gzip) in its chunk; the benchmark tracks the gzip
         // size against its 200 kB budget, so Rollup's generic 500 kB warning is raised.
         build: {

@@ -51,6 +51,17 @@ async function measure(
 ) {
   const probe = () => page.evaluate(() => (window as unknown as Hooks).__pathInterval.latencies().length);
   const pointerCount = () => page.evaluate(() => (window as unknown as Hooks).__pathInterval.pointerLatencies().length);
+  // The input events the gesture caused, and the frames drawn: what to say when none reached a frame.
+  const events = () =>
+    page.evaluate(() => {
+      const w = window as unknown as { __benchInputs?: number } & Hooks;
+      if (w.__benchInputs === undefined) {
+        w.__benchInputs = 0;
+        window.addEventListener('input', () => (w.__benchInputs = (w.__benchInputs ?? 0) + 1), true);
+      }
+      return { inputs: w.__benchInputs, frames: w.__pathInterval.frames() };
+    });
+  const before = await events();
   await gesture.start();
   for (let i = 0; i < 10; i++) {
     await gesture.step(i);
@@ -72,7 +83,12 @@ async function measure(
     warm,
     warm + moves,
   );
-  if (got.length === 0) throw new Error('no input reached a frame');
+  if (got.length === 0) {
+    const after = await events();
+    throw new Error(
+      `no input reached a frame (${after.inputs - before.inputs} input events, ${after.frames - before.frames} frames drawn)`,
+    );
+  }
   const fromPointer = (await page.evaluate(() => (window as unknown as Hooks).__pathInterval.pointerLatencies())).slice(
     warmPointer,
     warmPointer + moves,
@@ -86,10 +102,17 @@ function dragSlider(page: Page, testId: string) {
   let y = 0;
   return {
     async start() {
-      const box = await page.getByTestId(testId).boundingBox();
+      const slider = page.getByTestId(testId);
+      // The inputs' column is taller than a laptop's viewport (the slider may sit below the fold):
+      // a mouse outside the viewport moves nothing, so scroll the slider in first.
+      await slider.scrollIntoViewIfNeeded();
+      const box = await slider.boundingBox();
+      const viewport = page.viewportSize();
       if (box === null) throw new Error(`${testId} is not visible`);
       x0 = box.x + box.width * 0.3;
       y = box.y + box.height / 2;
+      if (viewport !== null && (y < 0 || y > viewport.height || x0 + 30 > viewport.width))
+        throw new Error(`${testId} at (${x0.toFixed(0)}, ${y.toFixed(0)}) px is outside the viewport`);
       await page.mouse.move(x0, y);
       await page.mouse.down();
     },
