@@ -18,7 +18,9 @@ async function open(query: string): Promise<Page> {
   return page;
 }
 
+/** The slider's box in the viewport, scrolled into view first (the inputs' column is taller than a screen). */
 async function sliderBox(page: Page, testId: string) {
+  await page.getByTestId(testId).scrollIntoViewIfNeeded();
   const box = await page.getByTestId(testId).boundingBox();
   if (box === null) throw new Error(`${testId} is not visible`);
   return box;
