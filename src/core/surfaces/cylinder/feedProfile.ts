@@ -2,52 +2,43 @@
  * Axis along the feed (see ../cylinder.ts's module comment): the profile point of a section, the
  * polar angle a flank reaches at a radial height and its inverse. Lengths mm, angles radians.
  */
-import { bracketedRoot, type NewtonState, newtonStart, newtonStep, type Objective } from '../../math/rootFinder';
-import { evalSection, type Flank, flankSign, type PostureShape, type Section } from '../../tool/posture';
+import {
+  bracketedRoot,
+  type NewtonState,
+  newNewtonState,
+  newtonStart,
+  newtonStep,
+  type Objective,
+} from '../../math/rootFinder';
+import { evalSection, type Flank, flankSign, newSection, type PostureShape, type Section } from '../../tool/posture';
 
 /**
- * A point of the cross-feed profile, relative to the contact (mm), and its section's normal; the
- * object is also the section evaluated (posture.ts's evalSection fills its Section fields) and the
- * state of feedAngleAtHeight's Newton iteration: one object the caller owns, allocated once per
- * solver (three were measured at +5 % of the exact solve along the feed).
+ * A point of the cross-feed profile, relative to the contact (mm), and its section's normal; it
+ * also carries the work state of this module's searches (the section evaluated and the Newton
+ * state of feedAngleAtHeight): one object the caller owns, allocated once per solver. A class with
+ * fixed fields, and the section and Newton state of the one class each the other solvers use, so
+ * that evalSection and newtonStep see a single shape.
  */
-export interface ProfilePoint extends Section, NewtonState {
+export class ProfilePoint {
   /** Width Y and height H of the profile point. */
-  y: number;
-  h: number;
+  y = 0;
+  h = 0;
   /** The section's ring point (its ball's centre): ey, ez. */
-  ey: number;
-  ez: number;
+  ey = 0;
+  ez = 0;
   /** Norm of the profile's (unnormalised) normal, and the normal (sin theta, cos theta). */
-  n: number;
-  st: number;
-  ct: number;
+  n = 0;
+  st = 0;
+  ct = 1;
+  /** The section last evaluated (posture.ts's evalSection). */
+  readonly section: Section = newSection();
+  /** feedAngleAtHeight's Newton iteration. */
+  readonly newton: NewtonState = newNewtonState();
 }
 
 /** A profile point to be filled by {@link profilePoint}. */
 export function newProfilePoint(): ProfilePoint {
-  return {
-    sinD: 0,
-    cosD: 1,
-    sinT: 0,
-    cosT: 1,
-    dz: 0,
-    dy: 0,
-    nSin: 0,
-    nCos: 0,
-    dNCos: 0,
-    lo: 0,
-    hi: 0,
-    x: 0,
-    done: false,
-    y: 0,
-    h: 0,
-    ey: 0,
-    ez: 0,
-    n: 0,
-    st: 0,
-    ct: 1,
-  };
+  return new ProfilePoint();
 }
 
 /**
@@ -55,7 +46,7 @@ export function newProfilePoint(): ProfilePoint {
  * of radius Rcr along the profile normal). Fills `out` (allocation-free) and returns it.
  */
 export function profilePoint(s: PostureShape, sign: number, delta: number, out: ProfilePoint): ProfilePoint {
-  const section: Section = out;
+  const section = out.section;
   evalSection(s, sign, delta, section);
   const n = Math.sqrt(section.nSin * section.nSin + section.nCos * section.nCos);
   // Profile normal (sin theta, cos theta); where a corner collapses (b = 0, n = 0) take the ring point.
@@ -96,7 +87,7 @@ export function feedAngleAtHeight(
     const reff = rcr + (s.d0 > 0 ? (ab * ab) / (s.d0 * s.d0 * s.d0) : 0);
     const start = s.d0 > 0 ? (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0) : 0.5 * top;
     // G(0) = -h (h + 2 Rs): negative on a convex cylinder (G rises), positive on a concave one (it falls).
-    const newton: NewtonState = at;
+    const newton = at.newton;
     newtonStart(newton, 0, top, start);
     for (let i = 0; i < 100 && !newton.done; i++) {
       const { y: Y, h: H, n, st: sn, ct } = profilePoint(s, sign, newton.x, at);
@@ -105,7 +96,7 @@ export function feedAngleAtHeight(
     }
     delta = newton.x;
   }
-  return feedAngleOfSection(s, sign, delta, rs, h, at);
+  return feedAngleOfSection(s, sign, delta, rs, h, at.section);
 }
 
 /**
