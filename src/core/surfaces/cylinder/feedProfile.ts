@@ -2,22 +2,14 @@
  * Axis along the feed (see ../cylinder.ts's module comment): the profile point of a section, the
  * polar angle a flank reaches at a radial height and its inverse. Lengths mm, angles radians.
  */
-import {
-  bracketedRoot,
-  type NewtonState,
-  newNewtonState,
-  newtonStart,
-  newtonStep,
-  type Objective,
-} from '../../math/rootFinder';
+import { bracketedRoot, NewtonState, newtonStart, newtonStep, type Objective } from '../../math/rootFinder';
 import { evalSection, type Flank, flankSign, newSection, type PostureShape, type Section } from '../../tool/posture';
 
 /**
- * A point of the cross-feed profile, relative to the contact (mm), and its section's normal; it
- * also carries the work state of this module's searches (the section evaluated and the Newton
- * state of feedAngleAtHeight): one object the caller owns, allocated once per solver. A class with
- * fixed fields, and the section and Newton state of the one class each the other solvers use, so
- * that evalSection and newtonStep see a single shape.
+ * A point of the cross-feed profile, relative to the contact (mm), and its section's normal, with
+ * the section evaluated (posture.ts's evalSection): one object the caller owns, allocated once per
+ * solver. A class with fixed fields, its section of the one class every solver uses, so that
+ * evalSection sees a single shape.
  */
 export class ProfilePoint {
   /** Width Y and height H of the profile point. */
@@ -32,8 +24,6 @@ export class ProfilePoint {
   ct = 1;
   /** The section last evaluated (posture.ts's evalSection). */
   readonly section: Section = newSection();
-  /** feedAngleAtHeight's Newton iteration. */
-  readonly newton: NewtonState = newNewtonState();
 }
 
 /** A profile point to be filled by {@link profilePoint}. */
@@ -87,10 +77,17 @@ export function feedAngleAtHeight(
     const reff = rcr + (s.d0 > 0 ? (ab * ab) / (s.d0 * s.d0 * s.d0) : 0);
     const start = s.d0 > 0 ? (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0) : 0.5 * top;
     // G(0) = -h (h + 2 Rs): negative on a convex cylinder (G rises), positive on a concave one (it falls).
-    const newton = at.newton;
+    const newton = new NewtonState();
     newtonStart(newton, 0, top, start);
+    // The profile point in locals (profilePoint's arithmetic), the section in the caller's scratch.
+    const sec = at.section;
     for (let i = 0; i < 100 && !newton.done; i++) {
-      const { y: Y, h: H, n, st: sn, ct } = profilePoint(s, sign, newton.x, at);
+      evalSection(s, sign, newton.x, sec);
+      const n = Math.sqrt(sec.nSin * sec.nSin + sec.nCos * sec.nCos);
+      const sn = n > 0 ? sec.nSin / n : 0;
+      const ct = n > 0 ? sec.nCos / n : 1;
+      const Y = sec.dy + rcr * sn;
+      const H = sec.dz + (rcr * (sn * sn)) / (1 + ct);
       const k = n > 0 ? n + (rcr * ab) / (n * n) : Number.POSITIVE_INFINITY;
       newtonStep(newton, Y * Y + (H - h) * (H + h + 2 * rs), 2 * k * (Y * ct + (H + rs) * sn), rs > 0, 1e-12);
     }
