@@ -53,22 +53,21 @@ export function profilePoint(s: PostureShape, sign: number, delta: number, out: 
 }
 
 /**
+ * feedAngleAtHeight's section (filled and read within one call, never by a caller): module-level,
+ * as posture.ts's, because a solver-owned work object allocated per solve was measured at +5 % of
+ * the exact solve along the feed.
+ */
+const angleSection: Section = newSection();
+
+/**
  * Polar angle of a flank point at radial height h on a cylinder with the axis along the feed: the
  * shared safeguarded Newton step (rootFinder.ts) on G(delta) = Y^2 + (H - h)(H + h + 2 Rs), with
  * G' = 2 K (Y cos theta + (H + Rs) sin theta), K = N + Rcr a b / N^2 (N the norm of the ellipse
  * normal), started from the plane's osculating estimate; then the angle as a maximum over sections
  * (feedAngleOfSection).
  * @param top an offset past the root, where G has changed sign.
- * @param at scratch the caller owns (filled here; its content is not part of the result).
  */
-export function feedAngleAtHeight(
-  s: PostureShape,
-  flank: Flank,
-  rs: number,
-  h: number,
-  top: number,
-  at: ProfilePoint,
-): number {
+export function feedAngleAtHeight(s: PostureShape, flank: Flank, rs: number, h: number, top: number): number {
   const sign = flankSign(flank);
   const rcr = s.rcr;
   const ab = s.a * s.b;
@@ -80,7 +79,7 @@ export function feedAngleAtHeight(
     const newton = new NewtonState();
     newtonStart(newton, 0, top, start);
     // The profile point in locals (profilePoint's arithmetic), the section in the caller's scratch.
-    const sec = at.section;
+    const sec = angleSection;
     for (let i = 0; i < 100 && !newton.done; i++) {
       evalSection(s, sign, newton.x, sec);
       const n = Math.sqrt(sec.nSin * sec.nSin + sec.nCos * sec.nCos);
@@ -93,7 +92,7 @@ export function feedAngleAtHeight(
     }
     delta = newton.x;
   }
-  return feedAngleOfSection(s, sign, delta, rs, h, at.section);
+  return feedAngleOfSection(s, sign, delta, rs, h, angleSection);
 }
 
 /**
@@ -164,16 +163,9 @@ class AngleMismatch implements Objective {
 /**
  * Height (radial) of the flank point at polar angle beta (the inverse): the section where J = 0
  * (AngleMismatch) by the shared bracketed root, then the ray's crossing with that section's ball.
- * @param at scratch the caller owns (filled here; its content is not part of the result).
  */
-export function feedHeightAtAngle(
-  s: PostureShape,
-  flank: Flank,
-  rs: number,
-  beta: number,
-  deltaTop: number,
-  at: ProfilePoint,
-): number {
+export function feedHeightAtAngle(s: PostureShape, flank: Flank, rs: number, beta: number, deltaTop: number): number {
+  const at = new ProfilePoint();
   const sign = flankSign(flank);
   const side = rs > 0 ? 1 : -1;
   const cb = Math.cos(beta);
