@@ -7,8 +7,8 @@ import { evalSection, type Flank, flankSign, newSection, type PostureShape, type
 
 /**
  * A point of the cross-feed profile, relative to the contact (mm), and its section's normal, with
- * the section evaluated (posture.ts's evalSection): one object the caller owns, allocated once per
- * solver. A class with fixed fields, its section of the one class every solver uses, so that
+ * the section evaluated (posture.ts's evalSection): an object the caller owns and fills within one
+ * call. A class with fixed fields, its section of the one class every solver uses, so that
  * evalSection sees a single shape.
  */
 export class ProfilePoint {
