@@ -127,18 +127,21 @@ export function bracketedRoot(
 
 /**
  * The state of a safeguarded Newton iteration driven by its caller ({@link newtonStep}): the
- * bracket [lo, hi] around the root, the next point x to evaluate, and whether it is done.
+ * bracket [lo, hi] around the root, the next point x to evaluate, and whether it is done. A class
+ * with its fields set in the constructor, so that every solver hands {@link newtonStep} objects of
+ * one shape (its property accesses stay monomorphic and it inlines into the hot loops; objects of
+ * several shapes were measured at +5 % of the exact solve along a cylinder's feed).
  */
-export interface NewtonState {
-  lo: number;
-  hi: number;
-  x: number;
-  done: boolean;
+export class NewtonState {
+  lo = 0;
+  hi = 0;
+  x = 0;
+  done = false;
 }
 
 /** A fresh {@link NewtonState}. */
 export function newNewtonState(): NewtonState {
-  return { lo: 0, hi: 0, x: 0, done: false };
+  return new NewtonState();
 }
 
 /**

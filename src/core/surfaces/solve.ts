@@ -5,7 +5,7 @@
  * a model supplies. Lengths mm.
  */
 import type { ForwardInput, InverseInput } from '../domain/pass';
-import { type SurfaceDescriptor, surfaceModel } from './registry';
+import { modelIntervalMm, type SurfaceDescriptor, surfaceModel } from './registry';
 import type { ExactForward, ExactInverse } from './surface';
 
 /**
@@ -13,7 +13,7 @@ import type { ExactForward, ExactInverse } from './surface';
  * below 1e-9 mm over the valid domain.
  */
 export function exactIntervalMm(input: ForwardInput<SurfaceDescriptor>): number {
-  return surfaceModel(input.surface).intervalMm(input);
+  return modelIntervalMm(input);
 }
 
 /**

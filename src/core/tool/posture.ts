@@ -32,7 +32,7 @@
  * The shape and its sections are in postureShape.ts (re-exported here); this module solves the
  * flanks: their limits, the width at a height and the inverse.
  */
-import { type NewtonState, newNewtonState, newtonStart, newtonStep } from '../math/rootFinder';
+import { NewtonState, newtonStart, newtonStep } from '../math/rootFinder';
 import {
   evalSection,
   type Flank,
@@ -144,9 +144,6 @@ function cornerAngleRad(rcr: number, q: number): number {
   return 2 * Math.asin(Math.min(1, Math.sqrt(Math.max(0, q) / (2 * rcr))));
 }
 
-/** sectionAtHeight's Newton state (set and read within one call). */
-const heightNewton: NewtonState = newNewtonState();
-
 /**
  * Ring-angle offset of the section carrying the flank `sign` at height h (0 < h below the
  * flank's top). The shared safeguarded Newton step (rootFinder.ts) on the sign-monotone
@@ -176,7 +173,7 @@ function sectionAtHeight(s: PostureShape, sign: number, h: number, sec: Section)
         const start = (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0);
         // A Newton step below 1e-12 (relative) ends it (1e-8 was measured to cost up to 7e-9 mm
         // with a corner of 1e-9 R, where the root sits next to the ball's vertical tangent).
-        const st = heightNewton;
+        const st = new NewtonState();
         newtonStart(st, 0, hi, start);
         for (let i = 0; i < 100 && !st.done; i++) {
           evalSection(s, sign, st.x, sec);
@@ -232,8 +229,6 @@ export function flankAtHeight(s: PostureShape, flank: Flank, heightMm: number): 
   return { widthMm: sec.dy + reachMm(rcr, q), heightMm, ringOffsetRad: delta, normalAngleRad: normal };
 }
 
-/** flankAtWidth's Newton state (set and read within one call). */
-const widthNewton: NewtonState = newNewtonState();
 /** flankAtWidth's workspace (filled and read within one call). */
 const atWidthSection: Section = newSection();
 /** flankAtHeight's workspace (filled and read within one call). */
@@ -267,7 +262,7 @@ export function flankAtWidth(s: PostureShape, flank: Flank, widthMm: number): Fl
   if (hi > 0) {
     // The mismatch between the profile normal and the ball's normal at offset u = w - dy:
     // D0 sin(delta) sqrt(Rcr^2 - u^2) - nCos u; past the ball's reach (+-1), move on.
-    const st = widthNewton;
+    const st = new NewtonState();
     newtonStart(st, 0, hi, 0.5 * hi);
     for (let i = 0; i < 200 && !st.done; i++) {
       evalSection(s, sign, st.x, sec);

@@ -108,20 +108,23 @@ export function widestOffsetRad(s: PostureShape, sign: number): number {
   return Math.atan2(s.a * s.b, (s.a * s.a - s.b * s.b) * sign * s.sinPhi * s.cosPhi);
 }
 
-/** Scratch state of one section, filled in place (no allocation in the solver loop). */
-export interface Section {
-  sinD: number;
-  cosD: number;
-  sinT: number;
-  cosT: number;
+/**
+ * Scratch state of one section, filled in place (no allocation in the solver loop). A class with
+ * every field set at construction, so that evalSection sees one shape from every caller.
+ */
+export class Section {
+  sinD = 0;
+  cosD = 1;
+  sinT = 0;
+  cosT = 1;
   /** dz, dy of the ring point relative to the contact's ring point. */
-  dz: number;
-  dy: number;
+  dz = 0;
+  dy = 0;
   /** `D0 sin delta` and `a cos phi cos t + b sin phi sin t`: the profile normal (unnormalised). */
-  nSin: number;
-  nCos: number;
+  nSin = 0;
+  nCos = 0;
   /** Derivative of nCos with respect to delta. */
-  dNCos: number;
+  dNCos = 0;
 }
 
 /**
@@ -154,5 +157,5 @@ export function evalSection(s: PostureShape, sign: number, delta: number, out: S
 
 /** A section's scratch state, ready to be filled by {@link evalSection}. */
 export function newSection(): Section {
-  return { sinD: 0, cosD: 1, sinT: 0, cosT: 1, dz: 0, dy: 0, nSin: 0, nCos: 0, dNCos: 0 };
+  return new Section();
 }

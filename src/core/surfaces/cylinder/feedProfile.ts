@@ -2,52 +2,33 @@
  * Axis along the feed (see ../cylinder.ts's module comment): the profile point of a section, the
  * polar angle a flank reaches at a radial height and its inverse. Lengths mm, angles radians.
  */
-import { bracketedRoot, type NewtonState, newtonStart, newtonStep, type Objective } from '../../math/rootFinder';
-import { evalSection, type Flank, flankSign, type PostureShape, type Section } from '../../tool/posture';
+import { bracketedRoot, NewtonState, newtonStart, newtonStep, type Objective } from '../../math/rootFinder';
+import { evalSection, type Flank, flankSign, newSection, type PostureShape, type Section } from '../../tool/posture';
 
 /**
- * A point of the cross-feed profile, relative to the contact (mm), and its section's normal; the
- * object is also the section evaluated (posture.ts's evalSection fills its Section fields) and the
- * state of feedAngleAtHeight's Newton iteration: one object the caller owns, allocated once per
- * solver (three were measured at +5 % of the exact solve along the feed).
+ * A point of the cross-feed profile, relative to the contact (mm), and its section's normal, with
+ * the section evaluated (posture.ts's evalSection): an object the caller owns and fills within one
+ * call. A class with fixed fields, its section of the one class every solver uses, so that
+ * evalSection sees a single shape.
  */
-export interface ProfilePoint extends Section, NewtonState {
+export class ProfilePoint {
   /** Width Y and height H of the profile point. */
-  y: number;
-  h: number;
+  y = 0;
+  h = 0;
   /** The section's ring point (its ball's centre): ey, ez. */
-  ey: number;
-  ez: number;
+  ey = 0;
+  ez = 0;
   /** Norm of the profile's (unnormalised) normal, and the normal (sin theta, cos theta). */
-  n: number;
-  st: number;
-  ct: number;
+  n = 0;
+  st = 0;
+  ct = 1;
+  /** The section last evaluated (posture.ts's evalSection). */
+  readonly section: Section = newSection();
 }
 
 /** A profile point to be filled by {@link profilePoint}. */
 export function newProfilePoint(): ProfilePoint {
-  return {
-    sinD: 0,
-    cosD: 1,
-    sinT: 0,
-    cosT: 1,
-    dz: 0,
-    dy: 0,
-    nSin: 0,
-    nCos: 0,
-    dNCos: 0,
-    lo: 0,
-    hi: 0,
-    x: 0,
-    done: false,
-    y: 0,
-    h: 0,
-    ey: 0,
-    ez: 0,
-    n: 0,
-    st: 0,
-    ct: 1,
-  };
+  return new ProfilePoint();
 }
 
 /**
@@ -55,7 +36,7 @@ export function newProfilePoint(): ProfilePoint {
  * of radius Rcr along the profile normal). Fills `out` (allocation-free) and returns it.
  */
 export function profilePoint(s: PostureShape, sign: number, delta: number, out: ProfilePoint): ProfilePoint {
-  const section: Section = out;
+  const section = out.section;
   evalSection(s, sign, delta, section);
   const n = Math.sqrt(section.nSin * section.nSin + section.nCos * section.nCos);
   // Profile normal (sin theta, cos theta); where a corner collapses (b = 0, n = 0) take the ring point.
@@ -72,22 +53,21 @@ export function profilePoint(s: PostureShape, sign: number, delta: number, out: 
 }
 
 /**
+ * feedAngleAtHeight's section (filled and read within one call, never by a caller): module-level,
+ * as posture.ts's, because a solver-owned work object allocated per solve was measured at +5 % of
+ * the exact solve along the feed.
+ */
+const angleSection: Section = newSection();
+
+/**
  * Polar angle of a flank point at radial height h on a cylinder with the axis along the feed: the
  * shared safeguarded Newton step (rootFinder.ts) on G(delta) = Y^2 + (H - h)(H + h + 2 Rs), with
  * G' = 2 K (Y cos theta + (H + Rs) sin theta), K = N + Rcr a b / N^2 (N the norm of the ellipse
  * normal), started from the plane's osculating estimate; then the angle as a maximum over sections
  * (feedAngleOfSection).
  * @param top an offset past the root, where G has changed sign.
- * @param at scratch the caller owns (filled here; its content is not part of the result).
  */
-export function feedAngleAtHeight(
-  s: PostureShape,
-  flank: Flank,
-  rs: number,
-  h: number,
-  top: number,
-  at: ProfilePoint,
-): number {
+export function feedAngleAtHeight(s: PostureShape, flank: Flank, rs: number, h: number, top: number): number {
   const sign = flankSign(flank);
   const rcr = s.rcr;
   const ab = s.a * s.b;
@@ -96,16 +76,23 @@ export function feedAngleAtHeight(
     const reff = rcr + (s.d0 > 0 ? (ab * ab) / (s.d0 * s.d0 * s.d0) : 0);
     const start = s.d0 > 0 ? (Math.sqrt((2 * h) / reff) * ab) / (s.d0 * s.d0) : 0.5 * top;
     // G(0) = -h (h + 2 Rs): negative on a convex cylinder (G rises), positive on a concave one (it falls).
-    const newton: NewtonState = at;
+    const newton = new NewtonState();
     newtonStart(newton, 0, top, start);
+    // The profile point in locals (profilePoint's arithmetic), the section in the caller's scratch.
+    const sec = angleSection;
     for (let i = 0; i < 100 && !newton.done; i++) {
-      const { y: Y, h: H, n, st: sn, ct } = profilePoint(s, sign, newton.x, at);
+      evalSection(s, sign, newton.x, sec);
+      const n = Math.sqrt(sec.nSin * sec.nSin + sec.nCos * sec.nCos);
+      const sn = n > 0 ? sec.nSin / n : 0;
+      const ct = n > 0 ? sec.nCos / n : 1;
+      const Y = sec.dy + rcr * sn;
+      const H = sec.dz + (rcr * (sn * sn)) / (1 + ct);
       const k = n > 0 ? n + (rcr * ab) / (n * n) : Number.POSITIVE_INFINITY;
       newtonStep(newton, Y * Y + (H - h) * (H + h + 2 * rs), 2 * k * (Y * ct + (H + rs) * sn), rs > 0, 1e-12);
     }
     delta = newton.x;
   }
-  return feedAngleOfSection(s, sign, delta, rs, h, at);
+  return feedAngleOfSection(s, sign, delta, rs, h, angleSection);
 }
 
 /**
@@ -176,16 +163,9 @@ class AngleMismatch implements Objective {
 /**
  * Height (radial) of the flank point at polar angle beta (the inverse): the section where J = 0
  * (AngleMismatch) by the shared bracketed root, then the ray's crossing with that section's ball.
- * @param at scratch the caller owns (filled here; its content is not part of the result).
  */
-export function feedHeightAtAngle(
-  s: PostureShape,
-  flank: Flank,
-  rs: number,
-  beta: number,
-  deltaTop: number,
-  at: ProfilePoint,
-): number {
+export function feedHeightAtAngle(s: PostureShape, flank: Flank, rs: number, beta: number, deltaTop: number): number {
+  const at = new ProfilePoint();
   const sign = flankSign(flank);
   const side = rs > 0 ? 1 : -1;
   const cb = Math.cos(beta);

@@ -36,6 +36,9 @@ export interface CylinderSolver {
   /** The reach a step-over corresponds to. */
   reachFromInterval(intervalMm: number): number;
 }
+/** FeedSolver.bracket's profile point (filled and read within one call). */
+const bracketPoint: ProfilePoint = newProfilePoint();
+
 /** Axis along the feed: flank angles about the axis (classes: no closures built per call). */
 class FeedSolver implements CylinderSolver {
   private cached: FlankLimits | null = null;
@@ -45,8 +48,6 @@ class FeedSolver implements CylinderSolver {
   private readonly rs: number;
   /** Each flank as a stadium when the ring is degenerate (no lead, or a ball end), else null. */
   private readonly stadiums: [Stadium | null, Stadium | null];
-  /** Scratch of this solver's searches (filled and read within one call, never across calls). */
-  private readonly at: ProfilePoint = newProfilePoint();
 
   constructor(
     readonly surface: CylinderSurface,
@@ -83,7 +84,7 @@ class FeedSolver implements CylinderSolver {
     const s = this.s;
     const plane = planeTop(s, sign);
     if (this.rs > 0) return plane;
-    const at = profilePoint(s, sign, plane, this.at);
+    const at = profilePoint(s, sign, plane, bracketPoint);
     if (at.y * at.y + (at.h - h) * (at.h + h + 2 * this.rs) < 0) return plane;
     return this.flank(sign).deltaTop;
   }
@@ -92,7 +93,7 @@ class FeedSolver implements CylinderSolver {
     const sign = flankSign(flank);
     const stadium = this.stadiums[sign > 0 ? 0 : 1] ?? null;
     if (stadium !== null) return stadiumReach(stadium, this.s.rcr, this.rs, h);
-    return feedAngleAtHeight(this.s, flank, this.rs, h, this.bracket(sign, h), this.at);
+    return feedAngleAtHeight(this.s, flank, this.rs, h, this.bracket(sign, h));
   }
 
   heightAt(flank: Flank, beta: number): number {
@@ -100,7 +101,7 @@ class FeedSolver implements CylinderSolver {
     const s = this.s;
     const stadium = this.stadiums[sign > 0 ? 0 : 1] ?? null;
     if (stadium !== null) return stadiumHeightAtAngle(stadium, s.rcr, this.rs, beta);
-    return feedHeightAtAngle(s, flank, this.rs, beta, this.flank(sign).deltaTop, this.at);
+    return feedHeightAtAngle(s, flank, this.rs, beta, this.flank(sign).deltaTop);
   }
 
   intervalFromReach(angle: number): number {
