@@ -11,22 +11,21 @@ import { formatInputNumber } from '../core/input/units';
 import { lookupGrid } from '../core/output/lookupTable';
 import { PLANE } from '../core/surfaces/cylinder';
 import type { RestartInfo } from '../worker/client';
-import type { CurvedRequest } from '../worker/pageProtocol';
+import { type CurvedRequest, isCurvedRequest } from '../worker/pageProtocol';
 import { type SolveRequest, sameTableRequest, type TableReply, type TableRequest } from '../worker/protocol';
 import { tableClient } from '../worker/workers';
 
 /** The table request for the tool, pattern and surface of a solve request (or of a doubly curved point's). */
 export function tableRequestOf(request: SolveRequest | CurvedRequest): TableRequest {
   const i = request.input;
-  const curved = request.mode === 'curved-forward' || request.mode === 'curved-inverse';
   const tool = {
     toolRadiusMm: i.toolRadiusMm,
     cornerRadiusMm: i.cornerRadiusMm,
     pattern: i.pattern,
-    surface: curved ? PLANE : request.input.surface,
+    surface: isCurvedRequest(request) ? PLANE : request.input.surface,
   };
   const grid = lookupGrid(tool);
-  return curved
+  return isCurvedRequest(request)
     ? { tool, grid, radii: { feedRadiusMm: request.input.feedRadiusMm, crossRadiusMm: request.input.crossRadiusMm } }
     : { tool, grid };
 }
