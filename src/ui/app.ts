@@ -257,7 +257,7 @@ export class CalculatorApp {
     this.fields.render(state, kept);
     this.teaching?.want(null, state.unit, true);
     this.simulation.want(null, state.unit);
-    this.lookup.want(null);
+    this.lookup.want(null, state.machine === '3axis');
     this.draw();
   }
 
@@ -280,7 +280,10 @@ export class CalculatorApp {
     this.teaching?.want(request, state.unit, false, this.kind() === 'classic' ? null : ELSEWHERE);
     this.simulation.want(classic, state.unit);
     // The lookup table: a plane's, a cylinder's or a doubly curved point's (not three-axis).
-    this.lookup.want(request !== null && request.mode !== 'three-axis' ? request : null);
+    this.lookup.want(
+      request !== null && request.mode !== 'three-axis' ? request : null,
+      this.state.machine === '3axis',
+    );
     this.draw();
     this.url.write(asked);
   }

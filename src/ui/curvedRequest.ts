@@ -8,7 +8,13 @@
 import { FIELDS, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
 import { formatInputNumber, fromMm, toMm, unitSymbol } from '../core/input/units';
-import { type InputError, inputError, MIN_LENGTH_MM, validatePassAnd } from '../core/input/validate';
+import {
+  describeInputError,
+  type InputError,
+  inputError,
+  MIN_LENGTH_MM,
+  validatePassAnd,
+} from '../core/input/validate';
 import { curvedErrors } from '../worker/data/curvedCheck';
 import type { CurvedError } from '../worker/pageProtocol';
 import type { BuiltRequest, PageFieldError } from './request';
@@ -61,6 +67,15 @@ function held(key: RadiusKey, otherMm: number, unit: Unit): string {
 /** One doubly curved error as one line on its field, lengths in the user's unit. */
 export function describeCurvedError(e: CurvedError, state: CalculatorState): PageFieldError {
   const unit = state.unit;
+  if (e.field === 'ra') {
+    // Worded as the plane's and the cylinder's (the largest Ra, or none when no scallop forms).
+    const typed = state.fields.ra.trim();
+    const error = inputError('ra', 'beyond-max-ra', typed, e.maxMm);
+    return {
+      key: 'ra',
+      message: describeInputError(error, unit, { typed }).replace('on this surface', 'at this point'),
+    };
+  }
   if (e.field === 'h' || e.field === 'interval') {
     const key: FieldKey = e.field === 'h' ? 'h' : 'L';
     if (e.code === 'beyond-max')
@@ -120,16 +135,11 @@ export function buildCurvedRequest(state: CalculatorState): BuiltRequest | null 
   const own: PageFieldError[] = [rf, rc].filter((r): r is PageFieldError => typeof r !== 'number');
   if (own.length === 0 && (rf === Number.POSITIVE_INFINITY || rc === Number.POSITIVE_INFINITY)) return null;
   const forward = state.mode === 'forward';
-  if (forward && state.target === 'ra')
-    own.push({
-      key: 'ra',
-      message: `${FIELDS.ra.label} as a target is not offered at a doubly curved point: give the scallop height h.`,
-    });
-  const mm = (name: (typeof TOOL_FIELDS)[number] | 'h' | 'interval') => {
+  const mm = (name: (typeof TOOL_FIELDS)[number] | 'h' | 'interval' | 'ra') => {
     const key = pageKeyOf(name);
     return key === null ? undefined : fieldInMm(state, key);
   };
-  const field = forward ? 'h' : 'interval';
+  const field = forward ? (state.target === 'ra' ? 'ra' : 'h') : 'interval';
   const v = validatePassAnd({ ...rawFields(TOOL_FIELDS, mm), pattern: state.pattern, [field]: mm(field) }, field);
   const errors: Array<InputError | PageFieldError> = [...own, ...(v.errors as InputError[])];
   const min = forward ? MIN_LENGTH_MM : 2 * MIN_LENGTH_MM;
@@ -138,7 +148,7 @@ export function buildCurvedRequest(state: CalculatorState): BuiltRequest | null 
   if (errors.length > 0 || v.pass === null || v.value === undefined || typeof rf !== 'number' || typeof rc !== 'number')
     return { ok: false, errors };
   const radii = { feedRadiusMm: rf, crossRadiusMm: rc };
-  const question = forward ? { h: v.value } : { interval: v.value };
+  const question = field === 'h' ? { h: v.value } : field === 'ra' ? { ra: v.value } : { interval: v.value };
   const checks = curvedErrors(v.pass, radii, state.pattern, question);
   if (checks.length > 0) return { ok: false, errors: checks.map((e) => describeCurvedError(e, state)) };
   const tool = {
@@ -149,6 +159,7 @@ export function buildCurvedRequest(state: CalculatorState): BuiltRequest | null 
     pattern: state.pattern,
     ...radii,
   };
+  if (field === 'ra') return { ok: true, request: { mode: 'curved-ra', input: { ...tool, targetRaMm: v.value } } };
   return forward
     ? { ok: true, request: { mode: 'curved-forward', input: { ...tool, scallopHeightMm: v.value } } }
     : { ok: true, request: { mode: 'curved-inverse', input: { ...tool, intervalMm: v.value } } };

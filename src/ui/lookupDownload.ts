@@ -11,22 +11,22 @@ import { formatInputNumber } from '../core/input/units';
 import { lookupGrid } from '../core/output/lookupTable';
 import { PLANE } from '../core/surfaces/cylinder';
 import type { RestartInfo } from '../worker/client';
-import type { CurvedRequest } from '../worker/pageProtocol';
+import { type CurvedRequest, isCurvedRequest } from '../worker/pageProtocol';
 import { type SolveRequest, sameTableRequest, type TableReply, type TableRequest } from '../worker/protocol';
 import { tableClient } from '../worker/workers';
+import { THREE_AXIS_TABLE_NOTE } from './threeAxisNotes';
 
 /** The table request for the tool, pattern and surface of a solve request (or of a doubly curved point's). */
 export function tableRequestOf(request: SolveRequest | CurvedRequest): TableRequest {
   const i = request.input;
-  const curved = request.mode === 'curved-forward' || request.mode === 'curved-inverse';
   const tool = {
     toolRadiusMm: i.toolRadiusMm,
     cornerRadiusMm: i.cornerRadiusMm,
     pattern: i.pattern,
-    surface: curved ? PLANE : request.input.surface,
+    surface: isCurvedRequest(request) ? PLANE : request.input.surface,
   };
   const grid = lookupGrid(tool);
-  return curved
+  return isCurvedRequest(request)
     ? { tool, grid, radii: { feedRadiusMm: request.input.feedRadiusMm, crossRadiusMm: request.input.crossRadiusMm } }
     : { tool, grid };
 }
@@ -60,6 +60,7 @@ export function tableSummary(reply: Extract<TableReply, { ok: true }>): string {
   );
 }
 
+/** The download button and its status line (see the module comment). */
 export class LookupDownload {
   private current: SolveRequest | CurvedRequest | null = null;
   private asked: TableRequest | null = null;
@@ -73,10 +74,16 @@ export class LookupDownload {
     button.addEventListener('click', () => this.ask());
   }
 
-  /** The inputs on screen changed: the request they ask, or null (invalid, or being typed). */
-  want(request: SolveRequest | CurvedRequest | null): void {
-    this.current = request;
-    this.button.disabled = request === null || this.asked !== null;
+  /**
+   * The inputs on screen changed: the request they ask, or null (invalid, or being typed). With
+   * `threeAxis` the button stays disabled and the status line says why (THREE_AXIS_TABLE_NOTE).
+   */
+  want(request: SolveRequest | CurvedRequest | null, threeAxis = false): void {
+    this.current = threeAxis ? null : request;
+    this.button.disabled = this.current === null || this.asked !== null;
+    if (this.asked !== null) return;
+    if (threeAxis) this.status.textContent = THREE_AXIS_TABLE_NOTE;
+    else if (this.status.textContent === THREE_AXIS_TABLE_NOTE) this.status.textContent = '';
   }
 
   private ask(): void {

@@ -62,20 +62,10 @@ function onRadius(
 /** The plane's or the cylinder's request (five-axis). */
 function buildClassic(state: CalculatorState): BuiltRequest {
   const built = validated(state);
-  const own = [surfaceError(state), slowTarget(state)].filter((e): e is InputError => e !== null);
+  const own = [surfaceError(state)].filter((e): e is InputError => e !== null);
   if (own.length === 0) return built;
   // A radius typed with a sign: its own error, beside the others' (the rest validated on a plane).
   return { ok: false, errors: [...own, ...(built.ok ? [] : built.errors)] };
-}
-
-/**
- * A target Ra on a cylinder across the feed: solving it takes seconds (about 3 s: each secant step
- * integrates the revolved profile), beyond the worker's watchdog, so the page asks for h there.
- */
-function slowTarget(state: CalculatorState): InputError | null {
-  if (state.mode !== 'forward' || state.target !== 'ra' || state.surface === 'plane') return null;
-  if (state.surfaceAxis !== 'cross') return null;
-  return inputError('ra', 'slow-target', state.fields.ra.trim());
 }
 
 function validated(state: CalculatorState): BuiltRequest {

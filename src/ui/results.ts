@@ -197,7 +197,7 @@ export class ResultsPanel {
   ): void {
     const e = reply?.exact ?? null;
     const forward =
-      (reply === null ? mode : reply.request.mode === 'curved-forward' ? 'forward' : 'inverse') === 'forward';
+      (reply === null ? mode : reply.request.mode === 'curved-inverse' ? 'inverse' : 'forward') === 'forward';
     this.headlineLabel.textContent = forward ? 'Step-over L' : 'Scallop height h';
     this.headline.dataset.testid = forward ? 'result-exact-interval' : 'result-exact-height';
     const value = (mm: number | null | undefined, resolution: 'length' | 'height' = 'length') =>

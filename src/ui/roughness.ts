@@ -1,15 +1,21 @@
 /**
  * The roughness results: Rz, Ra, Rq of the surface left at the exact step-over (from the solve
- * reply), the scallop height they come from when the target is Ra, and the rule of thumb
+ * reply: a plane's, a cylinder's, or a doubly curved point's, heights along the normal there), the
+ * scallop height they come from when the target is Ra, and the rule of thumb
  * Ra ~ h/4 with its error. Drawn from the same Shown as the other results (dashes when invalid
  * or while no reply answers the inputs on screen; never a number for other inputs).
  */
 import { formatPercent, type LengthUnit, NO_VALUE } from '../core/input/units';
-import { isSolveReply, type PageReply } from '../worker/pageProtocol';
+import type { PageReply } from '../worker/pageProtocol';
 import { html } from './dom';
 import { formatLenUnit } from './format';
 import type { Shown } from './freshness';
 
+/** Why the rows show dashes for three-axis machining. */
+export const THREE_AXIS_NOTE =
+  'Rz, Ra and Rq are not computed for three-axis machining: the scallop height h is the answer there.';
+
+/** The roughness rows under the results (see the module comment). */
 export class RoughnessPanel {
   private readonly outputs = new Map<string, HTMLOutputElement>();
   private readonly heightRow: HTMLElement;
@@ -46,19 +52,21 @@ export class RoughnessPanel {
 
   render(shown: Shown<PageReply>, unit: LengthUnit): void {
     // Only a reply to the inputs on screen: a stale one would show numbers for other inputs.
-    // (A doubly curved point's and three-axis roughness are not computed yet: dashes.)
-    const reply = shown.kind === 'current' && shown.reply.ok && isSolveReply(shown.reply) ? shown.reply : null;
+    // Three-axis machining's roughness is not computed: dashes (the panel's note says so).
+    const reply = shown.kind === 'current' && shown.reply.ok && 'roughness' in shown.reply ? shown.reply : null;
     const r = reply?.roughness ?? null;
     const len = (mm: number | undefined) =>
       r === null || mm === undefined ? NO_VALUE : formatLenUnit(mm, unit, 'fine');
     this.set('result-rz', len(r?.rzMm));
     this.set('result-ra', len(r?.raMm));
     this.set('result-rq', len(r?.rqMm));
-    const fromRa = reply?.request.mode === 'ra';
+    const fromRa = reply?.request.mode === 'ra' || reply?.request.mode === 'curved-ra';
     this.heightRow.hidden = !fromRa;
     this.set('result-ra-height', fromRa ? len(r?.scallopHeightMm) : NO_VALUE);
-    const text =
-      r === null || r.ruleErrorPercent === null
+    const threeAxis = shown.kind === 'current' && shown.reply.request.mode === 'three-axis';
+    const text = threeAxis
+      ? THREE_AXIS_NOTE
+      : r === null || r.ruleErrorPercent === null
         ? ''
         : `Rule of thumb Ra ~ h/4 = ${formatLenUnit(r.ruleOfThumbRaMm, unit, 'fine')}: ${formatPercent(r.ruleErrorPercent)} % against the exact Ra.`;
     if (this.rule.textContent !== text) this.rule.textContent = text;

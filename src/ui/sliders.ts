@@ -1,8 +1,9 @@
 /**
  * The sliders' ranges and steps, in the user's unit: steps are round numbers of that unit (0.01 mm
  * or 0.001 in for the tool), so arrow keys move a value by a clean amount instead of a converted
- * millimetre step. The ranges follow the other values (Rcr up to R, h below the posture's limit,
- * L below the widest step-over). Pure (no DOM).
+ * millimetre step. The ranges follow the other values (Rcr up to R, h below the limit of the
+ * question on screen: the posture's on a plane or cylinder, a doubly curved point's, three-axis
+ * machining's at the slope; L and Ra below the widest and largest there). Pure (no DOM).
  */
 
 import { fromMm, toMm } from '../core/input/units';
@@ -17,6 +18,8 @@ import {
 } from '../core/input/validate';
 import { maxRaCachedMm } from '../core/roughness/raTarget';
 import { minConcaveRadiusMm, PLANE, type Surface } from '../core/surfaces/cylinder';
+import { cylinderState } from './curvedRequest';
+import { curvedLimits, threeAxisLimits } from './questionLimits';
 import { type CalculatorState, type FieldKey, formatField, parseField, radiusField, sizeIsDiameter } from './state';
 
 export interface SliderRange {
@@ -111,11 +114,15 @@ export function sliderRanges(state: CalculatorState): Readonly<Record<FieldKey, 
   const step = STEPS[u];
   const tool = rangeTool(state);
   const len = (mm: number) => fromMm(mm, u);
+  // A doubly curved point with a straight radius is a cylinder's (or the plane's) question.
+  const classic = state.machine === '3axis' ? null : state.surface === 'curved' ? cylinderState(state).state : state;
   // A concave cylinder's slider starts at the gouging limit (Infinity: no concave fits; then from 1 step).
-  const concaveMin = state.surface === 'concave' ? minConcaveRadiusMm(tool, state.surfaceAxis) : 0;
-  const surface = rangeSurface(state, concaveMin);
-  const hLimit = scallopHeightLimits(tool, surface).limitMm;
-  const lMax = maxIntervalMm(tool, state.pattern, surface);
+  const concaveMin = classic?.surface === 'concave' ? minConcaveRadiusMm(tool, classic.surfaceAxis) : 0;
+  const surface = classic === null ? PLANE : rangeSurface(classic, concaveMin);
+  const question = curvedLimits(state, tool) ?? threeAxisLimits(state);
+  const hLimit = question?.hMm ?? scallopHeightLimits(tool, surface).limitMm;
+  const lMax = question?.intervalMm ?? maxIntervalMm(tool, state.pattern, surface);
+  const raMax = () => question?.raMm ?? maxRaCachedMm({ ...tool, pattern: state.pattern, surface });
   const rsMin = Number.isFinite(concaveMin) ? Math.max(step.Rs, snapUp(len(concaveMin), step.Rs)) : step.Rs;
   const ranges: Record<FieldKey, [number, number]> = {
     R: [step.R * 10, snap(len(25), step.R, 0)],
@@ -127,14 +134,7 @@ export function sliderRanges(state: CalculatorState): Readonly<Record<FieldKey, 
     // Only drawn (and its maximum worked out) while Ra is the target.
     ra:
       state.mode === 'forward' && state.target === 'ra'
-        ? [
-            step.ra,
-            snap(
-              len(Math.min(0.999 * maxRaCachedMm({ ...tool, pattern: state.pattern, surface }), 0.5)),
-              step.ra,
-              step.ra,
-            ),
-          ]
+        ? [step.ra, snap(len(Math.min(0.999 * raMax(), 0.5)), step.ra, step.ra)]
         : [step.ra, 10 * step.ra],
     Rs: [rsMin, Math.max(rsMin + step.Rs, snap(len(RADIUS_SLIDER_MAX_MM), step.Rs, 0))],
     // Three-axis: the slope below a vertical wall, the raster angle from the fall line to the contour.

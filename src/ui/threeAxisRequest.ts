@@ -8,6 +8,7 @@
 import { FIELDS } from '../core/input/fields';
 import { formatInputNumber, fromMm, unitSymbol } from '../core/input/units';
 import {
+  type RawThreeAxisInput,
   type ThreeAxisInputError,
   type ThreeAxisInputField,
   type ThreeAxisQuantity,
@@ -61,6 +62,33 @@ function onField(e: ThreeAxisInputError, state: CalculatorState): PageFieldError
   return { key, message: inUnit(e.message, state, key) };
 }
 
+/**
+ * A three-axis state's raw inputs (mm and degrees, by the core's field names): the tool, slope,
+ * passes, the raster angle (raster) or the radii (waterline; straight: none). A radius field's own
+ * error (missing, not a number, a sign) is pushed on `errors` and the radius left out.
+ */
+export function threeAxisRaw(state: CalculatorState, errors: PageFieldError[]): RawThreeAxisInput {
+  const waterline = state.passes === 'waterline';
+  const radius = (key: 'Rf' | 'Rc'): number | undefined => {
+    if (!waterline) return undefined;
+    const r = radiusMm(state, key);
+    if (typeof r !== 'number') {
+      errors.push(r);
+      return undefined;
+    }
+    return Number.isFinite(r) ? r : undefined;
+  };
+  return {
+    R: fieldInMm(state, 'R'),
+    Rcr: fieldInMm(state, 'Rcr'),
+    slope: fieldInMm(state, 'slope'),
+    passes: state.passes,
+    rasterAngle: waterline ? undefined : fieldInMm(state, 'psi'),
+    feedRadius: radius('Rf'),
+    crossRadius: radius('Rc'),
+  };
+}
+
 /** The request of a three-axis state, or why it cannot be asked (each message on its field). */
 export function buildThreeAxisRequest(state: CalculatorState): BuiltRequest {
   const own: PageFieldError[] = [];
@@ -70,27 +98,9 @@ export function buildThreeAxisRequest(state: CalculatorState): BuiltRequest {
       key: 'ra',
       message: `${FIELDS.ra.label} as a target is not offered for three-axis machining: give the scallop height h.`,
     });
-  const waterline = state.passes === 'waterline';
-  const radius = (key: 'Rf' | 'Rc'): number | undefined => {
-    if (!waterline) return undefined;
-    const r = radiusMm(state, key);
-    if (typeof r !== 'number') {
-      own.push(r);
-      return undefined;
-    }
-    return Number.isFinite(r) ? r : undefined;
-  };
-  const raw = {
-    R: fieldInMm(state, 'R'),
-    Rcr: fieldInMm(state, 'Rcr'),
-    slope: fieldInMm(state, 'slope'),
-    passes: state.passes,
-    rasterAngle: waterline ? undefined : fieldInMm(state, 'psi'),
-    feedRadius: radius('Rf'),
-    crossRadius: radius('Rc'),
-  };
+  const raw = threeAxisRaw(state, own);
   const stepKey = programmedStepKey(state.passes);
-  const quantity: ThreeAxisQuantity = forward ? 'h' : waterline ? 'stepDown' : 'horizontalStep';
+  const quantity: ThreeAxisQuantity = forward ? 'h' : state.passes === 'waterline' ? 'stepDown' : 'horizontalStep';
   const value = fieldInMm(state, forward ? 'h' : stepKey);
   const v = validateThreeAxis(raw, quantity, value);
   const solved = v.ok && own.length === 0 ? checkThreeAxis(v.value) : null;

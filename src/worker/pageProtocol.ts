@@ -7,6 +7,7 @@
  */
 
 import type { InputError } from '../core/input/validate';
+import type { RoughnessSummary } from '../core/roughness/raTarget';
 import type { DoublyCurvedComparison, DoublyCurvedLimits, RadiusLimit } from '../core/surfaces/doublyCurved';
 import type {
   DoublyCurvedForwardInput,
@@ -18,10 +19,24 @@ import type { ThreeAxisAnswer, ThreeAxisInputError, ThreeAxisProblem } from '../
 import type { WaterlineGeometry } from '../core/threeAxis/waterlineRevolution';
 import { type SceneGeometry, type SolveReply, type SolveRequest, sameRequest } from './protocol';
 
-/** A doubly curved point (both radii curved): a scallop height to the step-over, or a step-over to the cusps. */
+/** A target roughness at a doubly curved point: Ra (mm, 0 < Ra below the largest the tool leaves there). */
+export interface DoublyCurvedRaInput extends DoublyCurvedPass {
+  readonly targetRaMm: number;
+}
+
+/**
+ * A doubly curved point (both radii curved): a scallop height to the step-over, a target Ra to the
+ * scallop height that leaves it and its step-over, or a step-over to the cusps.
+ */
 export type CurvedRequest =
   | { readonly mode: 'curved-forward'; readonly input: DoublyCurvedForwardInput }
+  | { readonly mode: 'curved-ra'; readonly input: DoublyCurvedRaInput }
   | { readonly mode: 'curved-inverse'; readonly input: DoublyCurvedInverseInput };
+
+/** True for a doubly curved point's question. */
+export function isCurvedRequest(request: PageRequest): request is CurvedRequest {
+  return request.mode === 'curved-forward' || request.mode === 'curved-ra' || request.mode === 'curved-inverse';
+}
 
 /** Three-axis machining: a validated problem (core/threeAxis/validate.ts). */
 export interface ThreeAxisRequest {
@@ -75,7 +90,8 @@ export type CurvedError =
       readonly limitMm: number;
       readonly limitBy: DoublyCurvedLimits['limitBy'];
     }
-  | { readonly field: 'interval'; readonly code: 'beyond-max'; readonly maxMm: number };
+  | { readonly field: 'interval'; readonly code: 'beyond-max'; readonly maxMm: number }
+  | { readonly field: 'ra'; readonly code: 'beyond-max-ra'; readonly maxMm: number };
 
 /** The exact answer at a doubly curved point (mm; reaches and L arc lengths along the equator). */
 export interface CurvedSummary {
@@ -104,6 +120,12 @@ export type CurvedReply =
        * one (core compareDoublyCurved); null for the inverse problem.
        */
       readonly comparison: Omit<DoublyCurvedComparison, 'exact' | 'maxIntervalMm'> | null;
+      /**
+       * Rz, Ra, Rq along the normal of the surface left at the exact step-over (core
+       * doublyCurved/roughness.ts), beside the rule of thumb; its scallopHeightMm is the h a target
+       * Ra comes to.
+       */
+      readonly roughness: RoughnessSummary;
       /** What the 3D scene draws: the torus patch, the tool, the cusps (worker/data/curvedScene.ts). */
       readonly scene: SceneGeometry;
       readonly solveMs: number;

@@ -7,6 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
 import { lookupGrid } from '../../src/core/output/lookupTable';
 import { PLANE, type Surface } from '../../src/core/surfaces/cylinder';
+import { doublyCurvedForward } from '../../src/core/surfaces/doublyCurved';
 import { table } from '../../src/worker/jobs/table';
 import { run } from './helpers';
 
@@ -48,5 +49,51 @@ describe('lookup table read back by --batch', () => {
       expect(r.code, JSON.stringify(surface)).toBe(0);
       expect(r.stdout, JSON.stringify(surface)).toBe(csv);
     }
+  }, 30_000);
+
+  it('a doubly curved point (a saddle): its feedRadius and crossRadius columns read back, the same answers', async () => {
+    const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, pattern: 'one-way' as const, surface: PLANE };
+    const reply = table({ tool, grid: lookupGrid(tool), radii: { feedRadiusMm: 80, crossRadiusMm: -40 } });
+    if (!reply.ok) throw new Error(`no table: ${reply.reason}`);
+    const r = await run(['--batch'], reply.csv);
+    expect(r.stderr).toBe('');
+    expect(r.code).toBe(0);
+    // Row for row the same inputs and the same exact answer (full precision), refused on the same
+    // rows. (The batch also fills the plane procedures' columns and words gouging its own way.)
+    const page = parseCsv(reply.csv).filter((x) => !x.blank);
+    const back = parseCsv(r.stdout).filter((x) => !x.blank);
+    expect(back[0]?.fields).toEqual(page[0]?.fields);
+    expect(back.length).toBe(page.length);
+    const head = page[0]?.fields ?? [];
+    const same = ['R', 'Rcr', 'rho', 'h', 'tilt', 'pattern', 'feedRadius', 'crossRadius', 'exact', 'interval']
+      .concat(['halfWidthRight', 'halfWidthLeft', 'contactOffset', 'otherCuspHeight'])
+      .map((name) => head.indexOf(name));
+    expect(same).not.toContain(-1);
+    const error = head.indexOf('error');
+    let answered = 0;
+    for (let i = 1; i < page.length; i++) {
+      const a = page[i]?.fields ?? [];
+      const b = back[i]?.fields ?? [];
+      expect(
+        same.map((c) => b[c]),
+        `row ${i}`,
+      ).toEqual(same.map((c) => a[c]));
+      expect(b[error] === '', `row ${i}`).toBe(a[error] === '');
+      if (a[error] === '') answered++;
+    }
+    expect(answered).toBeGreaterThan(100);
+    // Answered at the point (core compareDoublyCurved), not on the plane.
+    const exact = doublyCurvedForward({
+      toolRadiusMm: 3,
+      cornerRadiusMm: 1,
+      leadAngleDeg: 5,
+      tiltAngleDeg: 0,
+      pattern: 'one-way',
+      feedRadiusMm: 80,
+      crossRadiusMm: -40,
+      scallopHeightMm: 0.05,
+    });
+    expect(Number(pageCase(r.stdout))).toBe(exact.intervalMm);
+    expect(Number(pageCase(r.stdout))).not.toBe(Number(pageCase(tableOf(PLANE))));
   }, 30_000);
 });

@@ -12,11 +12,18 @@ import { formatInputNumber } from '../../src/core/input/units';
 import {
   compareDoublyCurved,
   doublyCurvedForward,
+  doublyCurvedHeightForRaMm,
   doublyCurvedRadiusLimit,
+  doublyCurvedRoughness,
+  doublyCurvedSolver,
 } from '../../src/core/surfaces/doublyCurved';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
 import { waterlineForward } from '../../src/core/threeAxis/waterlineRevolution';
 import { formatLen, formatLenUnit } from '../../src/ui/format';
+import { THREE_AXIS_NOTE } from '../../src/ui/roughness';
+import { sliderRanges } from '../../src/ui/sliders';
+import { parseUrl } from '../../src/ui/state';
+import { THREE_AXIS_TABLE_NOTE } from '../../src/ui/threeAxisNotes';
 import { pageSettled, ROOT, SHOTS, urlWrites, useSite } from './harness';
 
 const site = useSite('docs/curved-three-axis');
@@ -153,6 +160,51 @@ describe.each([
     await page.getByTestId('input-slope').fill('0');
     await expect.poll(() => text(page, 'error-slope')).toMatch(/^Slope alpha must be above 0 degrees for waterline/);
     expect(await text(page, 'result-programmed-step')).toBe(DASH);
+    expect(errors).toEqual([]);
+  });
+});
+
+describe('roughness, a target Ra and the sliders at a doubly curved point; three-axis roughness', () => {
+  it('a saddle: Rz, Ra, Rq of the core; a target Ra typed answers the core h and L; the h slider stops at this point', async () => {
+    const { page, errors } = await site.open('?R=3&Rcr=1&rho=5&h=0.05&feedRadius=80&crossRadius=-40&unit=mm', DESKTOP);
+    const radii = { feedRadiusMm: 80, crossRadiusMm: -40 };
+    const e = curvedL(80, -40);
+    await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(e, 'mm'));
+    const c = compareDoublyCurved({ ...TOOL, pattern: 'one-way', ...radii, scallopHeightMm: 0.05 });
+    const r = doublyCurvedRoughness(doublyCurvedSolver(TOOL, radii), 'one-way', c.exact);
+    await expect.poll(() => text(page, 'result-ra')).toBe(formatLenUnit(r.raMm, 'mm', 'fine'));
+    expect(await text(page, 'result-rz')).toBe(formatLenUnit(r.rzMm, 'mm', 'fine'));
+    expect(await text(page, 'result-rq')).toBe(formatLenUnit(r.rqMm, 'mm', 'fine'));
+    // The h slider's top is this point's limit (not the plane's), as the field's message states it.
+    const state = parseUrl('?R=3&Rcr=1&rho=5&h=0.05&feedRadius=80&crossRadius=-40&unit=mm').state;
+    expect(await page.getByTestId('slider-h').getAttribute('max')).toBe(sliderRanges(state).h.max);
+    expect(sliderRanges(state).h.max).not.toBe(sliderRanges(parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm').state).h.max);
+    // A target Ra: the h that leaves it and its step-over, as the core gives them.
+    await radio(page, 'target-switch', 'ra').check();
+    await page.getByTestId('input-ra').fill('0.004');
+    const h = doublyCurvedHeightForRaMm(TOOL, 'one-way', radii, 0.004);
+    const L = compareDoublyCurved({ ...TOOL, pattern: 'one-way', ...radii, scallopHeightMm: h }).exact.intervalMm;
+    await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(L, 'mm'));
+    expect(await text(page, 'result-ra-height')).toBe(formatLenUnit(h, 'mm', 'fine'));
+    expect(await text(page, 'error-ra')).toBe('');
+    // Above the largest Ra at this point: said on the field, no answer.
+    await page.getByTestId('input-ra').fill('5');
+    await expect.poll(() => text(page, 'error-ra')).toMatch(/^Roughness Ra must be below [\d.]+ mm \(got 5\)/);
+    expect(await text(page, 'result-exact-interval')).toBe(DASH);
+    expect(errors).toEqual([]);
+  });
+
+  it('three-axis: the roughness rows are dashes and say why; the lookup table is not offered, said', async () => {
+    const { page, errors } = await site.open('?R=3&Rcr=1&machine=3axis&slope=30&h=0.05&unit=mm', DESKTOP);
+    await expect.poll(() => text(page, 'result-programmed-step')).toBe(formatLenUnit(rasterStep(30), 'mm'));
+    await expect.poll(() => text(page, 'result-ra-rule')).toBe(THREE_AXIS_NOTE);
+    expect(await text(page, 'result-ra')).toBe(DASH);
+    // The lookup table is not offered here: the status line says so, and what answers it instead.
+    expect(await page.getByTestId('download-table').isEnabled()).toBe(false);
+    expect(await text(page, 'download-table-status')).toBe(THREE_AXIS_TABLE_NOTE);
+    await radio(page, 'machine-switch', '5axis').check();
+    await expect.poll(() => page.getByTestId('download-table').isEnabled()).toBe(true);
+    expect(await text(page, 'download-table-status')).toBe('');
     expect(errors).toEqual([]);
   });
 });

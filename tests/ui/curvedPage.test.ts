@@ -186,7 +186,9 @@ describe('bad input at a doubly curved point: one line on its field, in the user
     expect(L.get('L')).toMatch(/^Step-over L must be below [\d.]+ mm at this point \(got 20\)/);
     // Other values are kept: the radii and the tool fields as typed.
     expect(withField(s, 'Rf', 'abc').fields.Rc).toBe('40');
-    const ra = messagesOf({ ...s, target: 'ra' });
-    expect(ra.get('ra')).toMatch(/^Roughness Ra as a target is not offered at a doubly curved point/);
+    // A target Ra is answered at a doubly curved point; above the largest Ra there, said on its field.
+    expect(buildRequest({ ...s, target: 'ra' }).ok).toBe(true);
+    const ra = messagesOf(withField({ ...s, target: 'ra' }, 'ra', '5'));
+    expect(ra.get('ra')).toMatch(/^Roughness Ra must be below [\d.]+ mm \(got 5\), the largest Ra .* at this point/);
   });
 });

@@ -5,10 +5,14 @@
  */
 import { describe, expect, it } from 'vitest';
 import { formatInputNumber, fromMm, toMm } from '../../src/core/input/units';
+import { forwardInput } from '../../src/core/input/validate';
+import { scallopHeightForRaMm } from '../../src/core/roughness/roughness';
 import { minConcaveRadiusMm } from '../../src/core/surfaces/cylinder';
+import { exactForward } from '../../src/core/surfaces/solve';
 import { buildRequest, fieldMessages, fieldOfError } from '../../src/ui/request';
 import { sliderRanges } from '../../src/ui/sliders';
 import { convertState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';
+import { solvePage } from '../../src/worker/jobs/page';
 
 const parse = (q: string) => parseUrl(q);
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
@@ -116,11 +120,19 @@ describe('the request a surface makes', () => {
     expect(buildRequest(withField(defaultState(), 'Rs', 'abc')).ok).toBe(true);
   });
 
-  it('a target Ra on a cylinder across the feed is not solved on the page (seconds), said on the Ra field', () => {
+  it('a target Ra on a cylinder across the feed is answered on the page, the step-over as the core gives it', () => {
     const s = parse('?R=3&Rcr=1&rho=5&surfaceRadius=50&surfaceAxis=cross&target=ra&ra=0.01&unit=mm').state;
     const r = buildRequest(s);
-    if (r.ok) throw new Error('not on the page');
-    expect(fieldMessages(s, r.errors).get('ra')).toMatch(/takes seconds to solve .* --ra/);
+    if (!r.ok || r.request.mode !== 'ra') throw new Error('asked');
+    const reply = solvePage(r.request);
+    if (!reply.ok || !('roughness' in reply) || !('exact' in reply)) throw new Error('answered');
+    const surface = { kind: 'cylinder', radiusMm: 50, axis: 'cross' } as const;
+    const tool = { ...TOOL, pattern: 'one-way' } as const;
+    const h = scallopHeightForRaMm(TOOL, 'one-way', 0.01, surface);
+    expect(reply.roughness.scallopHeightMm).toBe(h);
+    expect(reply.exact.intervalMm).toBe(exactForward(forwardInput(tool, 'one-way', h, surface)).intervalMm);
+    // Independent of the solve: the surface that step-over leaves has the Ra asked for.
+    expect(reply.roughness.raMm).toBeCloseTo(0.01, 9);
     const feed = buildRequest({ ...s, surfaceAxis: 'feed' });
     expect(feed.ok && feed.request.mode).toBe('ra');
   });

@@ -2,7 +2,8 @@
  * The checks of a doubly curved question beyond the tool's own (validate.ts checks the tool and
  * posture): each radius in range (0.001 mm to 1e6 mm, or straight), no gouging (gouging.ts: on the
  * field of each radius whose change would help, with its limit, the other held), the scallop height
- * below the flank and shank limits, the step-over below the widest that leaves a scallop. Used by
+ * below the flank and shank limits, the step-over below the widest that leaves a scallop, a target
+ * Ra below the largest that the passes leave while leaving a scallop. Used by
  * the page as it builds the request and by the worker, which trusts no caller. Mm.
  */
 
@@ -11,6 +12,7 @@ import {
   doublyCurvedGouges,
   doublyCurvedGouging,
   doublyCurvedMaxIntervalMm,
+  doublyCurvedMaxRaMm,
   doublyCurvedSolver,
   MAX_PRINCIPAL_RADIUS_MM,
   MIN_PRINCIPAL_RADIUS_MM,
@@ -54,14 +56,14 @@ export function curvedRadiusErrors(tool: ToolInput, radii: PrincipalRadii): Curv
 
 /**
  * Every check of a doubly curved question whose tool and posture are valid: the radii, then the
- * scallop height (forward) or the step-over (inverse) against this point's limits.
- * @param question `{ h }` forward or `{ interval }` inverse, mm.
+ * scallop height (forward), the target Ra or the step-over (inverse) against this point's limits.
+ * @param question `{ h }` forward, `{ ra }` a target Ra, or `{ interval }` inverse, mm.
  */
 export function curvedErrors(
   tool: ToolInput,
   radii: PrincipalRadii,
   pattern: PassPattern,
-  question: { readonly h: number } | { readonly interval: number },
+  question: { readonly h: number } | { readonly ra: number } | { readonly interval: number },
 ): CurvedError[] {
   const radiusErrors = curvedRadiusErrors(tool, radii);
   if (radiusErrors.length > 0) return radiusErrors;
@@ -71,6 +73,10 @@ export function curvedErrors(
     if (!(question.h < limits.limitMm))
       return [{ field: 'h', code: 'above-limit', limitMm: Math.max(0, limits.limitMm), limitBy: limits.limitBy }];
     return [];
+  }
+  if ('ra' in question) {
+    const maxRaMm = limits.limitMm > 0 ? doublyCurvedMaxRaMm(tool, pattern, radii) : 0;
+    return question.ra < maxRaMm ? [] : [{ field: 'ra', code: 'beyond-max-ra', maxMm: maxRaMm }];
   }
   const maxMm = doublyCurvedMaxIntervalMm(solver, pattern);
   return question.interval < maxMm ? [] : [{ field: 'interval', code: 'beyond-max', maxMm }];

@@ -1,6 +1,7 @@
 /**
  * The worker's `solve` job for a doubly curved point (issue 19): the exact step-over and cusps
- * (core/doublyCurved), and forward the comparison rows (the plane, each cylinder, the usual
+ * (core/doublyCurved), the roughness along the normal (a target Ra first comes to the scallop
+ * height that leaves it, doublyCurvedHeightForRaMm), and forward the comparison rows (the plane, each cylinder, the usual
  * correction). The request is validated again (the tool and posture as validate.ts does, then this
  * point's own checks): a bad request gets a typed error reply, never an exception.
  */
@@ -8,9 +9,13 @@
 import { TOOL_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
 import { type InputError, inputError, MIN_LENGTH_MM, validatePassAnd } from '../../core/input/validate';
+import { roughnessSummary } from '../../core/roughness/raTarget';
 import {
   compareDoublyCurved,
+  doublyCurvedHeightForRaMm,
   doublyCurvedMaxIntervalMm,
+  doublyCurvedRoughness,
+  doublyCurvedRoughnessAtInterval,
   doublyCurvedSolver,
   inverseWith,
 } from '../../core/surfaces/doublyCurved';
@@ -21,13 +26,17 @@ import type { CurvedError, CurvedReply, CurvedRequest, CurvedSummary } from '../
 /** The request's errors (the tool's, then the point's), or null when it is valid. */
 export function revalidateCurved(request: CurvedRequest): readonly (InputError | CurvedError)[] | null {
   const i = request.input;
-  const field = request.mode === 'curved-forward' ? 'h' : 'interval';
-  const value = request.mode === 'curved-forward' ? request.input.scallopHeightMm : request.input.intervalMm;
+  const [field, value] =
+    request.mode === 'curved-forward'
+      ? (['h', request.input.scallopHeightMm] as const)
+      : request.mode === 'curved-ra'
+        ? (['ra', request.input.targetRaMm] as const)
+        : (['interval', request.input.intervalMm] as const);
   const v = validatePassAnd({ ...rawOf(i, TOOL_FIELDS), pattern: i.pattern, [field]: value }, field);
   if (v.errors.length > 0) return v.errors as InputError[];
-  const min = field === 'h' ? MIN_LENGTH_MM : 2 * MIN_LENGTH_MM;
+  const min = field === 'interval' ? 2 * MIN_LENGTH_MM : MIN_LENGTH_MM;
   if (!(value >= min)) return [inputError(field, value > 0 ? 'too-small' : 'not-positive', String(value), min)];
-  const question = field === 'h' ? { h: value } : { interval: value };
+  const question = field === 'h' ? { h: value } : field === 'ra' ? { ra: value } : { interval: value };
   const errors = curvedErrors(i, i, i.pattern, question);
   return errors.length > 0 ? errors : null;
 }
@@ -41,14 +50,20 @@ export function solveCurved(request: CurvedRequest): CurvedReply {
   const solver = doublyCurvedSolver(i, i);
   const limits = solver.limits();
   const maxIntervalMm = doublyCurvedMaxIntervalMm(solver, i.pattern);
-  if (request.mode === 'curved-forward') {
-    const { exact, maxIntervalMm: _max, ...comparison } = compareDoublyCurved(request.input);
+  if (request.mode !== 'curved-inverse') {
+    const hMm =
+      request.mode === 'curved-forward'
+        ? request.input.scallopHeightMm
+        : doublyCurvedHeightForRaMm(i, i.pattern, i, request.input.targetRaMm);
+    const { exact, maxIntervalMm: _max, ...comparison } = compareDoublyCurved({ ...i, scallopHeightMm: hMm });
     const summary = { ...exact, pattern: i.pattern, maxIntervalMm, limits };
+    const roughness = doublyCurvedRoughness(solver, i.pattern, exact);
     return {
       ok: true,
       request,
       exact: summary,
       comparison,
+      roughness: roughnessSummary(roughness, exact.cuspHeightMm),
       scene: curvedSceneGeometry(i, summary),
       solveMs: performance.now() - t0,
     };
@@ -70,6 +85,7 @@ export function solveCurved(request: CurvedRequest): CurvedReply {
     request,
     exact,
     comparison: null,
+    roughness: roughnessSummary(doublyCurvedRoughnessAtInterval(solver, i.pattern, e), e.cuspHeightMm),
     scene: curvedSceneGeometry(i, exact),
     solveMs: performance.now() - t0,
   };

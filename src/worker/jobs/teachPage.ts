@@ -5,7 +5,7 @@
  * one gets an error reply, never an exception. The reply echoes its request.
  */
 import { MIN_LENGTH_MM } from '../../core/input/validate';
-import { doublyCurvedSolver, inverseWith } from '../../core/surfaces/doublyCurved';
+import { doublyCurvedHeightForRaMm, doublyCurvedSolver, inverseWith } from '../../core/surfaces/doublyCurved';
 import { curvedSection } from '../data/curvedSection';
 import { radiusSweep } from '../data/radiusSweep';
 import { slopeChart } from '../data/slopeChart';
@@ -25,14 +25,16 @@ export function teachThreeAxis(request: ThreeAxisRequest): ThreeAxisTeachReply {
   return slope === null ? { ok: false, request, reason: NO_SCALLOP } : { ok: true, request, slope };
 }
 
-/** The doubly curved point's chart and profile (in inverse mode at the solved h). */
+/** The doubly curved point's chart and profile (in inverse mode at the solved h, for a target Ra at its h). */
 export function teachCurved(request: CurvedRequest): CurvedTeachReply {
   if (revalidateCurved(request) !== null) return { ok: false, request, reason: null };
   const i = request.input;
   const hMm =
     request.mode === 'curved-forward'
       ? request.input.scallopHeightMm
-      : inverseWith(doublyCurvedSolver(i, i), i.pattern, request.input.intervalMm).cuspHeightMm;
+      : request.mode === 'curved-ra'
+        ? doublyCurvedHeightForRaMm(i, i.pattern, i, request.input.targetRaMm)
+        : inverseWith(doublyCurvedSolver(i, i), i.pattern, request.input.intervalMm).cuspHeightMm;
   if (!(hMm >= MIN_LENGTH_MM)) return { ok: false, request, reason: NO_SCALLOP };
   return {
     ok: true,
