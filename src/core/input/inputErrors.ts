@@ -41,9 +41,7 @@ export type InputErrorCode =
    * A doubly curved point the tool gouges (limit: the signed radius of this field that the
    * nearest admissible value reaches with the other held, or null: none helps; `radiusLimit`).
    */
-  | 'radius-gouging'
-  /** A target the page does not solve: a target Ra on a cylinder across the feed takes seconds (the command line does). */
-  | 'slow-target';
+  | 'radius-gouging';
 
 /** One rejected field, as data; `message` is its description in mm (describeInputError). */
 export interface InputErrorOf<F extends AnyFieldName> {
@@ -200,8 +198,6 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
         : `${label} must be below ${limit} ${got}, the largest Ra this tool, posture and pattern leave on this surface; passes far enough apart to leave more leave a wall, not a scallop.`;
     case 'radius-gouging':
       return radiusGougingText(e, label, length, got);
-    case 'slow-target':
-      return `${label} as the target on a cylinder with the axis across the feed takes seconds to solve (each step integrates the revolved profile), longer than the page waits for an answer ${got}: give the scallop height h instead, or use the command line's --ra.`;
     case 'beyond-interval':
       return `${label} must be below ${limit} ${got}, the widest step-over these flanks allow; at or beyond it adjacent passes leave a wall, not a scallop.`;
   }
