@@ -26,6 +26,7 @@ import { plainLengths } from './lengthFields';
 import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
 import { buildRequest, fieldMessages } from './request';
+import { ResultBar } from './resultBar';
 import { type QuestionKind, ResultsPanel } from './results';
 import { RoughnessPanel } from './roughness';
 import { sceneOfReply } from './sceneLabels';
@@ -81,6 +82,8 @@ export class CalculatorApp {
   private readonly url: UrlState;
   private readonly notice: Notice;
   private readonly results: ResultsPanel;
+  /** The headline kept in view on a phone while a field has focus (resultBar.ts). */
+  private readonly resultBar: ResultBar;
   /** The 3D scene, built after the first result (its code and WebGL context load then). */
   private readonly scene: SceneSlot<ToolScene>;
   private readonly sceneBox: HTMLElement;
@@ -125,6 +128,7 @@ export class CalculatorApp {
     this.url = new UrlState(extra, root.querySelector<HTMLAnchorElement>('[data-testid="open-full"]'));
     this.notice = new Notice(must(root, '[data-testid="notice"]'));
     this.results = new ResultsPanel(root);
+    this.resultBar = new ResultBar(root);
     this.roughness = new RoughnessPanel(root);
     this.simulation = new SimulationLoader(
       (info) => this.restarted('simulation', info),
@@ -297,6 +301,7 @@ export class CalculatorApp {
       kind: this.kind(),
       passes: this.state.passes,
     });
+    this.resultBar.render(typing);
     this.sceneBox.classList.toggle('typing', typing);
     this.roughness.render(shown, this.state.unit);
     this.highlighter.markRows();

@@ -1,0 +1,146 @@
+/**
+ * The result bar (issue 21) at 390 x 844: while a field has focus the headline answer stays in view
+ * at the bottom of the screen, the same text as the results panel's headline (it mirrors, it does
+ * not compute), a dash when the input is invalid, marked while typing, with a Copy button that
+ * copies the headline's value; three-axis shows the programmed step; axe finds nothing on it.
+ */
+import { readFileSync } from 'node:fs';
+import type { BrowserContext, Page } from 'playwright-core';
+import { afterAll, describe, expect, it } from 'vitest';
+import { pageSettled, ROOT, SHOTS, useSite } from './harness';
+
+const site = useSite('docs/result-bar');
+const PHONE = { width: 390, height: 844 };
+const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
+
+let context: BrowserContext | null = null;
+let shared: Page | null = null;
+
+/** Opens the page on the phone (touch, clipboard allowed) and waits for the first result. */
+async function open(query: string): Promise<Page> {
+  if (context === null) {
+    context = await site.browser().newContext({ viewport: PHONE, hasTouch: true, isMobile: true });
+    await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
+  }
+  shared ??= await context.newPage();
+  await shared.goto(`${site.url()}${query}`);
+  await shared.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+  return shared;
+}
+
+afterAll(async () => {
+  await context?.close();
+});
+
+const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
+
+/** True when the whole of the element lies inside the viewport. */
+const inViewport = (page: Page, id: string) =>
+  page.getByTestId(id).evaluate((e) => {
+    const r = e.getBoundingClientRect();
+    return r.height > 0 && r.top >= 0 && r.bottom <= window.innerHeight && r.left >= 0 && r.right <= window.innerWidth;
+  });
+
+/** Clears the focused field and types, key by key. */
+async function retype(page: Page, value: string): Promise<void> {
+  await page.keyboard.press('ControlOrMeta+A');
+  await page.keyboard.press('Backspace');
+  await page.keyboard.type(value, { delay: 30 });
+}
+
+describe('result bar on a phone', () => {
+  it('keeps the headline in view while h has focus, follows the results, dashes when invalid, copies', async () => {
+    const page = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const bar = page.getByTestId('result-bar');
+    expect(await bar.isVisible()).toBe(false);
+    const h = page.getByTestId('input-h');
+    await h.scrollIntoViewIfNeeded();
+    await h.tap();
+    await expect.poll(() => bar.isVisible()).toBe(true);
+    expect(await inViewport(page, 'result-bar')).toBe(true);
+    // The bar shows the same text as the results' headline.
+    const first = await text(page, 'result-exact-interval');
+    expect(first).toMatch(/\d mm$/);
+    expect(await text(page, 'result-bar-value')).toBe(first);
+    expect(await bar.getAttribute('data-mark')).toBe('');
+    await page.screenshot({ path: `${SHOTS}/result-bar-phone.png` });
+
+    // A new h: the bar follows the results.
+    await retype(page, '0.01');
+    await expect.poll(() => text(page, 'result-exact-interval')).not.toBe(first);
+    await expect.poll(() => page.locator('.results').getAttribute('aria-busy')).toBe('false');
+    const second = await text(page, 'result-exact-interval');
+    expect(second).toMatch(/\d/);
+    expect(await text(page, 'result-bar-value')).toBe(second);
+
+    // Copy: the headline's value, in mm, as the results panel's Copy gives it.
+    const copy = bar.getByRole('button');
+    expect(await copy.getAttribute('aria-label')).toBe('Copy Step-over L');
+    await copy.tap();
+    await expect.poll(() => copy.textContent()).toBe('Copied');
+    const copied = await page.evaluate(() => navigator.clipboard.readText());
+    expect(copied).toBe(await page.getByTestId('result-exact-interval').getAttribute('data-copy'));
+    expect(Number.parseFloat(second)).toBeCloseTo(Number(copied), 4);
+
+    // Half-typed: held back, the bar says typing and shows no number.
+    await retype(page, '-');
+    expect(await bar.getAttribute('data-mark')).toBe('typing');
+    expect(await text(page, 'result-bar-mark')).toBe('typing');
+    expect(await text(page, 'result-bar-value')).not.toMatch(/\d/);
+    // Invalid once committed: a dash, no number, Copy disabled.
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, 'error-h')).toMatch(/must be/);
+    expect(await bar.getAttribute('data-mark')).not.toBe('typing');
+    expect(await text(page, 'result-bar-value')).toBe('\u2014');
+    expect(await copy.isDisabled()).toBe(true);
+    expect(await bar.isVisible()).toBe(true);
+
+    // Focus leaves the inputs: the bar goes.
+    await page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
+    await expect.poll(() => bar.isVisible()).toBe(false);
+  });
+
+  it('three-axis: the bar shows the programmed step; axe finds nothing with the bar shown', async () => {
+    const page = await open('?R=3&Rcr=1&machine=3axis&slope=30&h=0.05&unit=mm');
+    await page.getByTestId('result-programmed-step').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+    const h = page.getByTestId('input-h');
+    await h.scrollIntoViewIfNeeded();
+    await h.tap();
+    const bar = page.getByTestId('result-bar');
+    await expect.poll(() => bar.isVisible()).toBe(true);
+    const step = await text(page, 'result-programmed-step');
+    expect(step).toMatch(/\d mm$/);
+    expect(await text(page, 'result-bar-value')).toBe(step);
+    expect(await page.locator('[data-testid="result-bar"] .bar-label').textContent()).toMatch(/\(as programmed\)$/);
+    await pageSettled(page);
+    await page.addScriptTag({ content: AXE });
+    const violations = await page.evaluate(async () => {
+      const axe = (
+        window as unknown as {
+          axe: { run(ctx: unknown): Promise<{ violations: Array<{ id: string; nodes: unknown[] }> }> };
+        }
+      ).axe;
+      return (await axe.run({ include: [['[data-testid="result-bar"]']] })).violations.map(
+        (v) => `${v.id} x${v.nodes.length}`,
+      );
+    });
+    expect(violations).toEqual([]);
+  });
+
+  it('stays out of an embed and of print', async () => {
+    for (const query of ['?R=3&Rcr=1&rho=5&h=0.05&unit=mm&embed=1', '?R=3&Rcr=1&rho=5&h=0.05&unit=mm']) {
+      const page = await open(query);
+      const h = page.getByTestId('input-h');
+      await h.scrollIntoViewIfNeeded();
+      await h.tap();
+      await expect.poll(() => page.evaluate(() => document.activeElement?.getAttribute('data-testid'))).toBe('input-h');
+      if (query.includes('embed')) expect(await page.getByTestId('result-bar').isVisible()).toBe(false);
+      else {
+        expect(await page.getByTestId('result-bar').isVisible()).toBe(true);
+        await page.emulateMedia({ media: 'print' });
+        expect(await page.getByTestId('result-bar').isVisible()).toBe(false);
+        await page.emulateMedia({ media: 'screen' });
+      }
+    }
+  });
+});
