@@ -1,7 +1,7 @@
 /** Shared set-up of the browser tests: a built site on a loopback sub-path and one Chromium. */
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import type { Browser, Page, Worker } from 'playwright-core';
+import type { Browser, BrowserContext, Page, Worker } from 'playwright-core';
 import { afterAll, beforeAll, expect } from 'vitest';
 import { launchChromium } from '../../src/bench/browser';
 import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
@@ -207,4 +207,29 @@ export async function pageSettled(page: Page, quiet = 3): Promise<void> {
     }
     observer.disconnect();
   }, quiet);
+}
+
+/** The phone's viewport the phone tests use (CSS px). */
+export const PHONE = { width: 390, height: 844 };
+
+/**
+ * A phone page shared by a file's tests (390x844, touch, clipboard allowed): `open(query)` loads
+ * the query in it and waits for the first result (attached); the context closes after the file.
+ */
+export function usePhonePage(site: Harness): (query: string) => Promise<Page> {
+  let context: BrowserContext | null = null;
+  let shared: Page | null = null;
+  afterAll(async () => {
+    await context?.close();
+  });
+  return async (query: string) => {
+    if (context === null) {
+      context = await site.browser().newContext({ viewport: PHONE, hasTouch: true, isMobile: true });
+      await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
+    }
+    shared ??= await context.newPage();
+    await shared.goto(`${site.url()}${query}`);
+    await shared.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+    return shared;
+  };
 }

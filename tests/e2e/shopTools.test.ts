@@ -6,31 +6,13 @@
  */
 import { spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import type { BrowserContext, Page } from 'playwright-core';
-import { afterAll, describe, expect, it } from 'vitest';
-import { pageSettled, ROOT, SHOTS, useSite } from './harness';
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { pageSettled, ROOT, SHOTS, usePhonePage, useSite } from './harness';
 
 const site = useSite('docs/shop-tools');
-const PHONE = { width: 390, height: 844 };
 
-let context: BrowserContext | null = null;
-let shared: Page | null = null;
-
-/** Opens the page on the phone (touch, clipboard allowed) and waits for the first result. */
-async function open(query: string): Promise<Page> {
-  if (context === null) {
-    context = await site.browser().newContext({ viewport: PHONE, hasTouch: true, isMobile: true });
-    await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
-  }
-  shared ??= await context.newPage();
-  await shared.goto(`${site.url()}${query}`);
-  await shared.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
-  return shared;
-}
-
-afterAll(async () => {
-  await context?.close();
-});
+const open = usePhonePage(site);
 
 /** Clears a field and types into it with the keyboard, key by key. */
 async function typeInto(page: Page, testId: string, text: string): Promise<void> {
