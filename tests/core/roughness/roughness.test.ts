@@ -13,11 +13,10 @@ import { exactForward } from '../../../src/core/surfaces/solve';
 import { flankAtWidth, shapeOfTool } from '../../../src/core/tool/posture';
 import { seededRandom } from '../../support/bruteForce';
 
-/** 16-point Gauss-Legendre nodes and weights on [-1, 1], computed once by Newton on P16. */
-const [GL16_X, GL16_W] = (() => {
+/** n-point Gauss-Legendre nodes and weights on [-1, 1], by Newton on the Legendre polynomial P_n. */
+function gaussLegendre(n: number): [number[], number[]] {
   const xs: number[] = [];
   const ws: number[] = [];
-  const n = 16;
   for (let i = 1; i <= n; i++) {
     let x = Math.cos((Math.PI * (i - 0.25)) / (n + 0.5));
     for (let k = 0; k < 100; k++) {
@@ -35,7 +34,10 @@ const [GL16_X, GL16_W] = (() => {
     }
   }
   return [xs, ws];
-})();
+}
+
+/** 16-point Gauss-Legendre nodes and weights on [-1, 1], computed once. */
+const [GL16_X, GL16_W] = gaussLegendre(16);
 
 /**
  * Independent check of the roughness formulas: the period's profile z(y) integrated directly in y
@@ -122,25 +124,7 @@ const tool = (R: number, Rcr: number, rho: number, tilt: number): ToolInput => (
 describe('exact roughness of the passes on a plane', () => {
   it('a ball end: mean line, Ra and Rq of a circular scallop (direct Gauss-Legendre in y), any posture', () => {
     // 64-point Gauss-Legendre on [0, W] for z = y^2 / (R + sqrt(R^2 - y^2)), computed stably.
-    const nodes: number[] = [];
-    const weights: number[] = [];
-    const n = 64;
-    for (let i = 1; i <= n; i++) {
-      let x = Math.cos((Math.PI * (i - 0.25)) / (n + 0.5));
-      for (let k = 0; k < 100; k++) {
-        let p0 = 1;
-        let p1 = x;
-        for (let j = 2; j <= n; j++) [p0, p1] = [p1, ((2 * j - 1) * x * p1 - (j - 1) * p0) / j];
-        const dp = (n * (x * p1 - p0)) / (x * x - 1);
-        const dx = p1 / dp;
-        x -= dx;
-        if (Math.abs(dx) < 1e-16) {
-          nodes.push(x);
-          weights.push(2 / ((1 - x * x) * dp * dp));
-          break;
-        }
-      }
-    }
+    const [nodes, weights] = gaussLegendre(64);
     for (const [R, h, rho, tilt] of [
       [3, 0.05, 5, 0],
       [3, 0.05, 30, 40],
