@@ -299,7 +299,7 @@ describe("the page's URL takes every registry field under its parameter", () => 
 
   it("the page's sources read and write no URL parameter the registry does not have", () => {
     const known = new Set(URL_PARAMS);
-    for (const file of ['state.ts', 'theme.ts', 'app.ts', 'urlState.ts', 'embedCode.ts']) {
+    for (const file of ['state.ts', 'theme.ts', 'themeChoice.ts', 'app.ts', 'urlState.ts', 'embedCode.ts']) {
       const source = readFileSync(new URL(`../src/ui/${file}`, import.meta.url), 'utf8');
       const named = [...source.matchAll(/(?:params|searchParams|\))\.(?:get|has|set)\(\s*'([^']+)'/g)].map(
         (m) => m[1] as string,

@@ -9,7 +9,7 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import type { Plugin } from 'vite';
-import { EMBED_ATTRIBUTES } from '../core/input/fields.ts';
+import { EMBED_ATTRIBUTES, FIELDS } from '../core/input/fields.ts';
 
 /** public/embed.js. */
 export const EMBED_SCRIPT = fileURLToPath(new URL('../../public/embed.js', import.meta.url));
@@ -24,15 +24,21 @@ function key(name: string): string {
   return /^[A-Za-z_$][\w$]*$/.test(name) ? name : `'${name}'`;
 }
 
-/** The generated block: each attribute and the URL query parameter it becomes, in the registry's order. */
+/**
+ * The generated block: each attribute and the URL query parameter it becomes, in the registry's
+ * order, and the words the `theme` attribute takes (the registry's theme values).
+ */
 export function attributesBlock(): string {
   const entries = EMBED_ATTRIBUTES.map(([attribute, param]) => `    ${key(attribute)}: '${param}',`);
+  const themes = FIELDS.theme.values.map((v) => `'${v}'`).join(', ');
   return [
     BEGIN_MARKER,
     '  /** Each attribute of the element and the query parameter it becomes. */',
     '  const PARAMS = {',
     ...entries,
     '  };',
+    `  /** The words of the \`${FIELDS.theme.embed}\` attribute (and of the page's \`${FIELDS.theme.url}=\`). */`,
+    `  const THEMES = [${themes}];`,
     END_MARKER,
   ].join('\n');
 }

@@ -19,6 +19,7 @@ import { wireCopyButtons } from './copy';
 import { wireCopyLink } from './copyLink';
 import { embedCode, wireCopyEmbed } from './embedCode';
 import { postHeightToParent } from './embedResize';
+import { listenForHostTheme } from './embedTheme';
 import { FieldsPanel } from './fields';
 import { FreshJob } from './freshness';
 import { Highlighter } from './highlight';
@@ -49,7 +50,8 @@ import {
 } from './state';
 import { withCurvedPreset } from './surfaceState';
 import { TeachingLoader } from './teaching';
-import { onThemeChange, parseTheme, startTheme } from './theme';
+import { onThemeChange, setThemeOverride, startTheme } from './theme';
+import { parseTheme } from './themeChoice';
 import { ToolShelf } from './toolShelf';
 import { TypingGate } from './typing';
 import { UrlState } from './urlState';
@@ -145,7 +147,16 @@ export class CalculatorApp {
     this.scene.onFrame = () => this.observer.frame?.(this.fresh.shown.kind === 'current');
     this.scene.run('theme', (s) => s.applyTheme());
     onThemeChange(() => this.scene.run('theme', (s) => s.applyTheme()));
-    if (embed) postHeightToParent(root);
+    if (embed) {
+      // The host's theme changes restyle the page in place; the address keeps the theme in force.
+      listenForHostTheme((override) => {
+        setThemeOverride(override);
+        if (override === null) delete extra[FIELDS.theme.url];
+        else extra[FIELDS.theme.url] = override;
+        this.url.write(this.state);
+      });
+      postHeightToParent(root);
+    }
     wireCopyEmbed(must(root, '[data-testid="copy-embed"]'), must(root, '[data-testid="copy-embed-status"]'), () =>
       embedCode(
         `${window.location.origin}${window.location.pathname}`,

@@ -11,7 +11,7 @@ import {
   PROCEDURES,
   type ProcedureKey,
 } from '../core/procedures/procedures';
-import type { Theme } from './theme';
+import type { Theme } from './themeChoice';
 
 export function applyProcedureColours(root: HTMLElement): void {
   for (const key of PROCEDURE_KEYS) {

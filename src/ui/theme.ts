@@ -1,33 +1,13 @@
 /**
  * Light or dark: the page follows the system's `prefers-color-scheme` unless the link says
- * `theme=light|dark` (a documentation host matching its own theme). The chosen theme is
+ * `theme=light|dark` (a documentation host matching its own theme; `theme=auto` follows the system,
+ * as without it). An embedding host may change it later without reloading the page
+ * (embedTheme.ts calls {@link setThemeOverride}). The chosen theme is
  * `data-theme` on the root element; every colour then comes from the stylesheet's custom
  * properties for that theme. Canvas parts (the 3D scenes, the chart) are told on each change.
+ * Reading the link's word is themeChoice.ts's (no DOM).
  */
-
-import { FIELDS } from '../core/input/fields';
-
-export type Theme = 'light' | 'dark';
-
-export interface ThemeChoice {
-  /** The theme the link asks for, or null to follow the system. */
-  readonly override: Theme | null;
-  /** A notice when the link's value is not light or dark (it is then ignored). */
-  readonly notice: string | null;
-}
-
-/** Reads `theme=` from a query string: `light`, `dark`, absent (follow the system) or invalid (notice). */
-export function parseTheme(search: string): ThemeChoice {
-  const { url, values } = FIELDS.theme;
-  const text = new URLSearchParams(search).get(url);
-  if (text === null) return { override: null, notice: null };
-  const theme = values.find((v) => v === text);
-  if (theme !== undefined) return { override: theme, notice: null };
-  return {
-    override: null,
-    notice: `${url}="${text.slice(0, 20)}" is not ${values.join(' or ')}; following the system's colour scheme.`,
-  };
-}
+import type { Theme, ThemeChoice } from './themeChoice';
 
 const listeners = new Set<(theme: Theme) => void>();
 
@@ -42,20 +22,45 @@ export function onThemeChange(listener: (theme: Theme) => void): () => void {
   return () => listeners.delete(listener);
 }
 
+/** The override in force (null: the system's scheme is followed) and the system's scheme, once started. */
+let override: Theme | null = null;
+let media: MediaQueryList | null = null;
+
+/** Puts `theme` on the root element and tells the listeners (after the stylesheet has the new colours). */
+function apply(theme: Theme): void {
+  const root = document.documentElement;
+  if (root.dataset.theme === theme) return;
+  root.dataset.theme = theme;
+  for (const listener of listeners) listener(theme);
+}
+
+function systemTheme(): Theme {
+  return media?.matches ? 'dark' : 'light';
+}
+
 /**
  * Applies the choice to the root element and, without an override, follows the system's
  * scheme as it changes (listeners are told after the stylesheet has the new colours).
  */
 export function startTheme(choice: ThemeChoice): Theme {
-  const root = document.documentElement;
-  const media = window.matchMedia('(prefers-color-scheme: dark)');
-  const apply = (theme: Theme): void => {
-    if (root.dataset.theme === theme) return;
-    root.dataset.theme = theme;
-    for (const listener of listeners) listener(theme);
-  };
-  apply(choice.override ?? (media.matches ? 'dark' : 'light'));
-  if (choice.override === null) media.addEventListener('change', (e) => apply(e.matches ? 'dark' : 'light'));
+  override = choice.override;
+  if (media === null) {
+    media = window.matchMedia('(prefers-color-scheme: dark)');
+    media.addEventListener('change', () => {
+      if (override === null) apply(systemTheme());
+    });
+  }
+  apply(override ?? systemTheme());
+  return currentTheme();
+}
+
+/**
+ * Changes the override while the page runs (no reload): light or dark, or null to follow the
+ * system's scheme from now on. Call after {@link startTheme}.
+ */
+export function setThemeOverride(next: Theme | null): Theme {
+  override = next;
+  apply(override ?? systemTheme());
   return currentTheme();
 }
 

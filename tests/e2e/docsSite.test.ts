@@ -2,8 +2,10 @@
  * The example documentation site (tests/docs-site/, MkDocs, installed by the project's own
  * tests/support/ensure-mkdocs.mjs) is built, served at /docs/ beside the calculator's production
  * build at /calculator/ on one server, and opened as a reader would: the embeds (the custom
- * element in light and dark, a plain iframe with the README's listener) render, take the height
- * of their content, and ignore a resize message from another origin or another window.
+ * element following the page, light and dark, a plain iframe with the README's listener) render,
+ * take the height of their content, and ignore a resize message from another origin or another
+ * window; the page follows the reader's colour scheme (color_mode: auto), and its theme="auto"
+ * embed with it, in place: a light embed on a light page, a dark one on a dark page.
  */
 import { execFileSync } from 'node:child_process';
 import type { Browser, Frame, Page } from 'playwright-core';
@@ -34,9 +36,9 @@ afterAll(async () => {
   await server?.close();
 });
 
-async function openDocs(): Promise<Page> {
+async function openDocs(colorScheme: 'light' | 'dark' = 'light'): Promise<Page> {
   if (!browser || !server) throw new Error('not started');
-  const page = await browser.newPage({ viewport: { width: 1100, height: 900 } });
+  const page = await browser.newPage({ viewport: { width: 1100, height: 900 }, colorScheme });
   await page.goto(`${server.urls[0]}index.html`);
   return page;
 }
@@ -60,6 +62,7 @@ describe('example documentation site (MkDocs)', () => {
     const page = await openDocs();
     expect(await page.locator('h1').first().textContent()).toMatch(/Step-over of a bull-nose end mill/);
     const cases: Array<[string, string, 'light' | 'dark']> = [
+      ['#embed-auto iframe', '[data-testid="profile-view"] polygon.scallop', 'light'],
       ['#embed-light iframe', '[data-testid="profile-view"] polygon.scallop', 'light'],
       ['#embed-dark iframe', '.formula', 'dark'],
       ['#plain-frame', '[data-testid="paper-table-half"] tr[data-condition]', 'dark'],
@@ -70,7 +73,9 @@ describe('example documentation site (MkDocs)', () => {
       expect(await frame.evaluate(() => document.documentElement.dataset.theme), selector).toBe(theme);
       expect(await frame.getByTestId('result-exact-half').textContent()).toMatch(/^1\.44\d+$/);
       // The iframe follows the posted height: equal to the content, no inner scrollbar.
-      await expect.poll(async () => (await frameHeight(page, selector)) - (await contentHeight(frame))).toBe(0);
+      await expect
+        .poll(async () => (await frameHeight(page, selector)) - (await contentHeight(frame)), { timeout: 15_000 })
+        .toBe(0);
       expect(await frame.evaluate(() => document.documentElement.scrollHeight <= window.innerHeight)).toBe(true);
     }
     // The plain iframe started at 360 px and the tables are taller: it grew.
@@ -83,7 +88,9 @@ describe('example documentation site (MkDocs)', () => {
     const page = await openDocs();
     const selector = '#embed-light iframe';
     const frame = await embedded(page, selector, '[data-testid="profile-view"] polygon.scallop');
-    await expect.poll(async () => (await frameHeight(page, selector)) - (await contentHeight(frame))).toBe(0);
+    await expect
+      .poll(async () => (await frameHeight(page, selector)) - (await contentHeight(frame)), { timeout: 15_000 })
+      .toBe(0);
     const before = await frameHeight(page, selector);
     // From the iframe's own window but another origin, then from the right origin but another window.
     await page.locator(selector).evaluate((f) => {
@@ -111,6 +118,56 @@ describe('example documentation site (MkDocs)', () => {
       );
     });
     await expect.poll(() => frameHeight(page, selector)).toBe(2345);
+    await page.close();
+  }, 60_000);
+});
+
+/** The page's own colours: MkDocs' colour mode (data-bs-theme) and the body's background. */
+const pageLook = (page: Page) =>
+  page.evaluate(() => ({
+    mode: document.documentElement.dataset.bsTheme,
+    background: getComputedStyle(document.body).backgroundColor,
+  }));
+/** The embedded page's theme, its background, and the marker the test left on its window. */
+const frameLook = (frame: Frame) =>
+  frame.evaluate(() => ({
+    theme: document.documentElement.dataset.theme,
+    background: getComputedStyle(document.documentElement).backgroundColor,
+    marker: (window as unknown as { marker?: string }).marker ?? null,
+  }));
+
+describe('the page and its theme="auto" embed follow the reader\'s colour scheme together', () => {
+  it('a light page shows a light embed; turned dark, both are dark, the embed restyled without reloading', async () => {
+    const page = await openDocs('light');
+    const selector = '#embed-auto iframe';
+    const frame = await embedded(page, selector, '[data-testid="profile-view"] polygon.scallop');
+    await expect
+      .poll(async () => (await frameHeight(page, selector)) - (await contentHeight(frame)), { timeout: 15_000 })
+      .toBe(0);
+    expect(await pageLook(page)).toEqual({ mode: 'light', background: 'rgb(255, 255, 255)' });
+    await frame.evaluate(() => {
+      (window as unknown as { marker: string }).marker = 'same document';
+    });
+    expect(await frameLook(frame)).toEqual({
+      theme: 'light',
+      background: 'rgb(255, 255, 255)',
+      marker: 'same document',
+    });
+    const src = await page.locator(selector).getAttribute('src');
+    await page.locator('#embed-auto').scrollIntoViewIfNeeded();
+    await page.screenshot({ path: `${SHOTS}/docs-site-light-page-light-embed.png` });
+
+    await page.emulateMedia({ colorScheme: 'dark' });
+    await expect.poll(async () => (await pageLook(page)).mode).toBe('dark');
+    expect((await pageLook(page)).background).not.toBe('rgb(255, 255, 255)');
+    await expect
+      .poll(() => frameLook(frame))
+      .toEqual({ theme: 'dark', background: 'rgb(18, 22, 31)', marker: 'same document' });
+    expect(await page.locator(selector).getAttribute('src')).toBe(src);
+    // The pinned embeds keep their themes on the dark page.
+    const pinned = await embedded(page, '#embed-light iframe', '[data-testid="profile-view"] polygon.scallop');
+    expect((await frameLook(pinned)).theme).toBe('light');
+    await page.screenshot({ path: `${SHOTS}/docs-site-dark-page-dark-embed.png` });
     await page.close();
   }, 60_000);
 });

@@ -4,10 +4,14 @@
  * fitting its 480 px embed and the full page fitting phones and tablets (no sideways scrolling,
  * nothing cut off).
  */
-import type { Page } from 'playwright-core';
-import { describe, expect, it } from 'vitest';
+
+import { mkdirSync, writeFileSync } from 'node:fs';
+import type { Frame, Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
 import { EMBED_ATTRIBUTES } from '../../src/core/input/fields';
-import { pageSettled, SHOTS, useSite } from './harness';
+import { axeViolations } from './axe';
+import { pageSettled, ROOT, SHOTS, useSite } from './harness';
 import { clippedElements, colourShare } from './pixels';
 
 const site = useSite('docs/embed');
@@ -62,7 +66,7 @@ describe('dark mode', () => {
 
     const bad = (await site.open(`?${STATE}&theme=purple`, { width: 1400, height: 900 }, 'dark')).page;
     await bad.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
-    expect(await bad.getByTestId('notice').textContent()).toMatch(/theme="purple" is not light or dark/);
+    expect(await bad.getByTestId('notice').textContent()).toMatch(/theme="purple" is not light, dark or auto/);
     expect(await bad.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
   });
 });
@@ -341,4 +345,235 @@ describe('every view fits', () => {
       await page.close();
     }
   }, 180_000);
+});
+
+/** Host pages (written by the tests) served on another port: another origin than the calculator's, as a documentation site is. */
+const HOSTS_DIR = `${ROOT}test-results/embed-hosts`;
+let hosts: StaticSite | null = null;
+beforeAll(async () => {
+  mkdirSync(HOSTS_DIR, { recursive: true });
+  hosts = await serveStatic(HOSTS_DIR, 'host');
+});
+afterAll(async () => {
+  await hosts?.close();
+});
+let hostPages = 0;
+
+/**
+ * A host page on another origin than the calculator's, in `scheme`: it loads embed.js from the
+ * calculator's site and then has `body`; it counts the elements' resize events (`window.resized`).
+ */
+async function hostPage(scheme: 'light' | 'dark', body: string): Promise<Page> {
+  if (hosts === null) throw new Error('the host server is not started');
+  const name = `host-${++hostPages}.html`;
+  writeFileSync(
+    `${HOSTS_DIR}/${name}`,
+    '<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Host</title>' +
+      "<script>window.resized = 0; addEventListener('path-interval:resize', () => { window.resized += 1; }, true);</script>" +
+      `<script src="${site.url()}embed.js"></script></head><body><main>${body}</main></body></html>`,
+  );
+  const host = await site.browser().newPage({ viewport: { width: 900, height: 1000 }, colorScheme: scheme });
+  await host.goto(`${hosts.url}${name}`);
+  return host;
+}
+
+/** The frame of the element `#id` once its page has started (posted its height) and drawn `drawn`. */
+async function startedFrame(host: Page, id: string, drawn: string): Promise<Frame> {
+  await expect
+    .poll(() => host.evaluate(() => (window as unknown as { resized: number }).resized), { timeout: 20_000 })
+    .toBeGreaterThan(0);
+  const frame = await (await host.locator(`#${id} iframe`).elementHandle())?.contentFrame();
+  if (!frame) throw new Error(`no frame in #${id}`);
+  await frame.locator(drawn).first().waitFor({ timeout: 20_000 });
+  return frame;
+}
+
+/** What the embedded page shows of its theme: the theme, its background, the marker this test left on its window. */
+const look = (frame: Frame) =>
+  frame.evaluate(() => ({
+    theme: document.documentElement.dataset.theme,
+    background: getComputedStyle(document.documentElement).backgroundColor,
+    marker: (window as unknown as { marker?: string }).marker ?? null,
+  }));
+const LIGHT_BG = 'rgb(255, 255, 255)';
+const DARK_BG = 'rgb(18, 22, 31)';
+const PROFILE = '[data-testid="profile-view"] polygon.scallop';
+
+describe('the theme of <path-interval-calculator>, changed without reloading the frame', () => {
+  it('a new theme attribute (light, dark, auto) restyles the embedded page in place; another value loads the address', async () => {
+    const host = await hostPage(
+      'light',
+      '<path-interval-calculator id="calc" view="profile" r="3" rcr="1" rho="5" h="0.05" theme="light"></path-interval-calculator>',
+    );
+    const element = host.locator('#calc');
+    const iframe = host.locator('#calc iframe');
+    const frame = await startedFrame(host, 'calc', PROFILE);
+    const src = await iframe.getAttribute('src');
+    expect(new URL(src ?? '').searchParams.get('theme')).toBe('light');
+    await frame.evaluate(() => {
+      (window as unknown as { marker: string }).marker = 'same document';
+    });
+    expect(await look(frame)).toEqual({ theme: 'light', background: LIGHT_BG, marker: 'same document' });
+
+    await element.evaluate((e) => e.setAttribute('theme', 'dark'));
+    await expect.poll(() => look(frame)).toEqual({ theme: 'dark', background: DARK_BG, marker: 'same document' });
+    expect(await iframe.getAttribute('src')).toBe(src); // not reloaded
+    // The drawing took the dark palette too (the profile's exact curve).
+    const stroke = () =>
+      frame
+        .locator('.profile-svg .curve-exact')
+        .first()
+        .evaluate((e) => getComputedStyle(e).stroke);
+    await expect.poll(stroke).toBe('rgb(243, 244, 246)');
+    // The embedded page's own address keeps the theme in force.
+    await expect.poll(() => frame.evaluate(() => new URL(location.href).searchParams.get('theme'))).toBe('dark');
+    await host.screenshot({ path: `${SHOTS}/embed-theme-attribute-dark.png` });
+    expect(await axeViolations(frame), 'restyled dark').toEqual([]);
+
+    // auto: the host page's scheme (light), then as it changes.
+    await element.evaluate((e) => e.setAttribute('theme', 'auto'));
+    await expect.poll(() => look(frame)).toEqual({ theme: 'light', background: LIGHT_BG, marker: 'same document' });
+    await host.emulateMedia({ colorScheme: 'dark' });
+    await expect.poll(() => look(frame)).toEqual({ theme: 'dark', background: DARK_BG, marker: 'same document' });
+    expect(await iframe.getAttribute('src')).toBe(src);
+
+    // A word the page does not take is no theme message: the address is loaded, and the page says so.
+    await element.evaluate((e) => e.setAttribute('theme', 'purple'));
+    await expect.poll(() => iframe.getAttribute('src')).toContain('theme=purple');
+    const reloaded = await startedFrame(host, 'calc', PROFILE);
+    await expect
+      .poll(() => reloaded.getByTestId('notice').textContent())
+      .toMatch(/theme="purple" is not light, dark or auto/);
+    expect((await look(reloaded)).marker).toBeNull();
+    await host.close();
+  });
+
+  it('theme="auto" takes the host page\'s colour scheme and follows it as it changes, in place', async () => {
+    const host = await hostPage(
+      'dark',
+      '<path-interval-calculator id="auto" view="profile" r="3" rcr="1" rho="5" h="0.05" theme="auto"></path-interval-calculator>',
+    );
+    const iframe = host.locator('#auto iframe');
+    const frame = await startedFrame(host, 'auto', PROFILE);
+    const src = await iframe.getAttribute('src');
+    // The host's scheme, resolved by the element: the page is told dark (it does not follow its own).
+    expect(new URL(src ?? '').searchParams.get('theme')).toBe('dark');
+    await frame.evaluate(() => {
+      (window as unknown as { marker: string }).marker = 'same document';
+    });
+    expect(await look(frame)).toEqual({ theme: 'dark', background: DARK_BG, marker: 'same document' });
+    await host.screenshot({ path: `${SHOTS}/embed-theme-auto-dark.png` });
+    await host.emulateMedia({ colorScheme: 'light' });
+    await expect.poll(() => look(frame)).toEqual({ theme: 'light', background: LIGHT_BG, marker: 'same document' });
+    expect(await iframe.getAttribute('src')).toBe(src);
+    await host.screenshot({ path: `${SHOTS}/embed-theme-auto-light.png` });
+    expect(await axeViolations(frame), 'restyled light').toEqual([]);
+    await host.close();
+  });
+
+  it("the embedded page takes a theme message only from its host's window and origin, with a theme word", async () => {
+    const host = await hostPage(
+      'light',
+      '<path-interval-calculator id="calc" view="profile" r="3" rcr="1" rho="5" h="0.05" theme="light"></path-interval-calculator>',
+    );
+    const frame = await startedFrame(host, 'calc', PROFILE);
+    const hostOrigin = new URL(hosts?.url ?? '').origin;
+    expect(await frame.evaluate(() => location.ancestorOrigins[0])).toBe(hostOrigin);
+    // From another origin (as the host's window), and from the host's origin but another window.
+    const synthetic = (origin: string, fromParent: boolean) =>
+      frame.evaluate(
+        ({ origin, fromParent }) => {
+          const data = { type: 'path-interval:theme', theme: 'dark' };
+          const source = fromParent ? window.parent : window;
+          window.dispatchEvent(new MessageEvent('message', { data, origin, source }));
+          return document.documentElement.dataset.theme;
+        },
+        { origin, fromParent },
+      );
+    expect(await synthetic('http://evil.example', true)).toBe('light');
+    expect(await synthetic(hostOrigin, false)).toBe('light');
+    // The check is not blind: the same message from the host's window and origin is taken.
+    expect(await synthetic(hostOrigin, true)).toBe('dark');
+    expect(await synthetic(hostOrigin, false)).toBe('dark'); // (and stays)
+
+    // Real messages from the host with data that is no theme word: ignored, in order, then a good one.
+    await frame.evaluate(() => {
+      const w = window as unknown as { seen: number };
+      w.seen = 0;
+      window.addEventListener('message', () => {
+        w.seen += 1;
+      });
+    });
+    const hostile: unknown[] = [
+      'light',
+      { type: 'path-interval:theme', theme: 'Light' },
+      { type: 'path-interval:theme', theme: ['light'] },
+      { type: 'path-interval:theme', theme: '<img src=x onerror="parent.__xss=1">' },
+      { type: 'path-interval:resize', theme: 'light', height: 1e9 },
+      { type: 'path-interval:theme', theme: { value: 'light' } },
+      null,
+    ];
+    await host.locator('#calc iframe').evaluate((f, messages) => {
+      for (const m of messages) (f as HTMLIFrameElement).contentWindow?.postMessage(m, '*');
+    }, hostile);
+    await expect.poll(() => frame.evaluate(() => (window as unknown as { seen: number }).seen)).toBe(hostile.length);
+    expect((await look(frame)).theme).toBe('dark');
+    expect(await frame.locator('img[src="x"]').count()).toBe(0);
+    await host.locator('#calc iframe').evaluate((f) => {
+      (f as HTMLIFrameElement).contentWindow?.postMessage({ type: 'path-interval:theme', theme: 'light' }, '*');
+    });
+    await expect.poll(async () => (await look(frame)).theme).toBe('light');
+    await host.close();
+  });
+});
+
+describe('hostile attribute values of <path-interval-calculator>', () => {
+  it('quotes, markup, javascript:, fragments, separators and huge numbers stay query values: no injection, no NaN', async () => {
+    const values: Record<string, string> = {
+      r: '3" onload="parent.__xss=1',
+      rcr: 'javascript:parent.__xss=2//',
+      rho: '<script>parent.__xss=3</script>',
+      h: '1e999',
+      tilt: '9'.repeat(400),
+      'surface-radius': '-1e308',
+      unit: 'mm&embed=0&src=javascript:parent.__xss=4//',
+      view: 'profile#top',
+      theme: '"><img src=x onerror="parent.__xss=5">',
+      pattern: 'zigzag\n\u0000%00%22',
+      l: '../../etc/passwd?x=1',
+    };
+    const host = await hostPage('light', '<p>Hostile attributes</p>');
+    await host.evaluate((values) => {
+      const el = document.createElement('path-interval-calculator');
+      el.id = 'calc';
+      el.setAttribute('title', '"><img src=x onerror="parent.__xss=6">');
+      for (const [name, value] of Object.entries(values)) el.setAttribute(name, value);
+      document.querySelector('main')?.append(el);
+    }, values);
+    const frame = await startedFrame(host, 'calc', '[data-testid="notice"]');
+    const src = new URL((await host.locator('#calc iframe').getAttribute('src')) ?? '');
+    // The calculator's own address, each value once under its parameter, exactly as given; embed=1 once; no fragment.
+    expect(src.origin + src.pathname).toBe(new URL(site.url()).origin + new URL(site.url()).pathname);
+    expect(src.hash).toBe('');
+    expect(src.searchParams.getAll('embed')).toEqual(['1']);
+    expect(src.searchParams.has('src')).toBe(false);
+    const param = Object.fromEntries(EMBED_ATTRIBUTES);
+    for (const [name, value] of Object.entries(values)) {
+      expect(src.searchParams.getAll(param[name] as string), name).toEqual([value]);
+    }
+    expect([...src.searchParams.keys()].length).toBe(Object.keys(values).length + 1);
+    // Nothing ran, nothing was injected into either page, the frame's name is the text as given.
+    expect(await host.evaluate(() => (window as unknown as { __xss?: unknown }).__xss)).toBeUndefined();
+    expect(await host.locator('img').count()).toBe(0);
+    expect(await frame.locator('img[src="x"], script:not([src])').count()).toBe(0);
+    expect(await host.locator('#calc iframe').getAttribute('title')).toBe('"><img src=x onerror="parent.__xss=6">');
+    // The page names the values it could not take, and shows no NaN or Infinity.
+    const notice = (await frame.getByTestId('notice').textContent()) ?? '';
+    expect(notice).toMatch(/Rcr="javascript:parent\.__" in the link is not a number/);
+    expect(notice).toMatch(/h="1e999" in the link is not a number/);
+    const text = (await frame.locator('body').textContent()) ?? '';
+    expect(text).not.toMatch(/NaN|Infinity|-0(?![.\d])/);
+    await host.screenshot({ path: `${SHOTS}/embed-hostile-attributes.png`, fullPage: true });
+    await host.close();
+  });
 });

@@ -8,13 +8,14 @@ import { describe, expect, it } from 'vitest';
 import { EMBED_ATTRIBUTES, FIELDS } from '../../src/core/input/fields';
 import { embedCode } from '../../src/ui/embedCode';
 import { parseUrl, toSearch } from '../../src/ui/state';
-import { parseTheme } from '../../src/ui/theme';
+import { parseTheme } from '../../src/ui/themeChoice';
 
 describe('theme', () => {
   it('takes each of the registry words under its parameter; another word gets a notice naming it', () => {
     const { url, values } = FIELDS.theme;
-    for (const value of values) expect(parseTheme(`?${url}=${value}`)).toEqual({ override: value, notice: null });
-    expect(parseTheme(`?${url}=zzz`).notice).toMatch(new RegExp(`^${url}="zzz" is not ${values.join(' or ')}`));
+    for (const value of values)
+      expect(parseTheme(`?${url}=${value}`)).toEqual({ override: value === 'auto' ? null : value, notice: null });
+    expect(parseTheme(`?${url}=zzz`).notice).toMatch(new RegExp(`^${url}="zzz" is not light, dark or auto;`));
     expect(parseTheme('?').override).toBeNull();
   });
 });

@@ -390,7 +390,8 @@ export const FIELDS = {
   mode: pageSetting('mode', 'Mode', ['forward', 'inverse'] as const),
   target: pageSetting('target', 'Given in forward mode', ['h', 'ra'] as const),
   view: pageSetting('view', 'Teaching view', ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'] as const),
-  theme: pageSetting('theme', 'Theme', ['light', 'dark'] as const),
+  /** Light, dark, or auto (the system's colour scheme, as without it; the embed element resolves it to its host page's). */
+  theme: pageSetting('theme', 'Theme', ['light', 'dark', 'auto'] as const),
   // The element sets `embed` itself: no attribute.
   embed: pageSetting('embed', 'Embedded', ['1', 'true'] as const, false),
 } as const satisfies Readonly<Record<string, FieldSpec>>;
