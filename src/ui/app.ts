@@ -261,7 +261,7 @@ export class CalculatorApp {
     this.fields.render(state, kept);
     this.teaching?.want(null, state.unit, true);
     this.simulation.want(null, state.unit);
-    this.lookup.want(null, state.machine === '3axis');
+    this.lookup.want(null, state.unit, state.machine === '3axis');
     this.draw();
   }
 
@@ -286,6 +286,7 @@ export class CalculatorApp {
     // The lookup table: a plane's, a cylinder's or a doubly curved point's (not three-axis).
     this.lookup.want(
       request !== null && request.mode !== 'three-axis' ? request : null,
+      state.unit,
       this.state.machine === '3axis',
     );
     this.draw();
