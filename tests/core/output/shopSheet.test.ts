@@ -26,11 +26,11 @@ function threeAxis(raw: Record<string, unknown>): SheetCase {
 /** Each answered cell: [row, column, step mm]. */
 function answered(sheet: ShopSheet): Array<[number, number, number]> {
   const out: Array<[number, number, number]> = [];
-  sheet.cells.forEach((row, i) =>
+  sheet.cells.forEach((row, i) => {
     row.forEach((cell, j) => {
       if (cell.ok) out.push([i, j, cell.stepMm]);
-    }),
-  );
+    });
+  });
   return out;
 }
 
@@ -150,7 +150,7 @@ describe('shop sheet', () => {
     const problem = c.kind === 'three-axis' ? c.problem : (null as never);
     const heights = sheet.scallopHeightsMm;
     let refused = 0;
-    sheet.cells.forEach((row, i) =>
+    sheet.cells.forEach((row, i) => {
       row.forEach((cell, j) => {
         const at = { ...problem, case: { ...problem.case, slopeDeg: sheet.columnsDeg[j] ?? 0 } } as ThreeAxisProblem;
         const h = heights[i] ?? 0;
@@ -164,8 +164,8 @@ describe('shop sheet', () => {
         const back = solveThreeAxis({ ...at, quantity: 'stepDown', mm: cell.stepMm });
         if (!back.ok) throw new Error(back.errors[0]?.message);
         near(back.value.cuspHeightMm, h, 1e-9);
-      }),
-    );
+      });
+    });
     expect(refused).toBeGreaterThan(0);
   });
 });
