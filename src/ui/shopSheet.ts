@@ -198,7 +198,11 @@ export class ShopSheetPanel {
       `${stepSymbol(sheet)} (${u}) by scallop height h (${u}, rows) and ${column} (degrees, columns)`,
     );
     const head = el('tr');
-    head.append(el('th', 'corner', `h (${u}) \u2193 ${column} (deg) \u2192`));
+    // The corner names both axes and their units, on two lines (narrow on a phone).
+    const corner = el('th', 'corner');
+    corner.scope = 'col';
+    corner.append(el('span', '', `${column} (deg) \u2192`), el('span', '', `h (${u}) \u2193`));
+    head.append(corner);
     for (const deg of sheet.columnsDeg) {
       const th = el('th', '', formatDeg(deg));
       th.scope = 'col';

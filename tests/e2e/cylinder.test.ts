@@ -175,7 +175,7 @@ describe('curved surfaces on the page', () => {
     const col = (name: string) => header.split(',').indexOf(name);
     const at = rows.find((r) => r.fields.slice(2, 5).join(',') === '5,0.05,0');
     const e = exactForward(forwardInput(TOOL, 'one-way', 0.05, cyl(-30, 'cross')));
-    expect(Math.abs(Number(at?.fields[col('interval')]) - e.intervalMm)).toBeLessThanOrEqual(1e-13 * e.intervalMm);
+    expect(Math.abs(Number(at?.fields[col('interval_mm')]) - e.intervalMm)).toBeLessThanOrEqual(1e-13 * e.intervalMm);
     expect(
       rows.every((r) => r.fields[col('surfaceRadius_mm')] === '-30' && r.fields[col('surfaceAxis')] === 'cross'),
     ).toBe(true);
