@@ -201,7 +201,12 @@ export class ShopSheetPanel {
     // The corner names both axes and their units, on two lines (narrow on a phone).
     const corner = el('th', 'corner');
     corner.scope = 'col';
-    corner.append(el('span', '', `${column} (deg) \u2192`), el('span', '', `h (${u}) \u2193`));
+    const axis = (name: string, unitText: string, arrow: string) => {
+      const line = el('span', '', name);
+      line.append(el('span', 'unit', ` (${unitText})`), ` ${arrow}`);
+      return line;
+    };
+    corner.append(axis(column, 'deg', '\u2192'), axis('h', u, '\u2193'));
     head.append(corner);
     for (const deg of sheet.columnsDeg) {
       const th = el('th', '', formatDeg(deg));

@@ -132,6 +132,10 @@ describe('shop sheet', () => {
         const box = await page.getByTestId('shop-sheet-dialog').boundingBox();
         expect((box?.x ?? -1) >= 0 && (box?.x ?? 0) + (box?.width ?? 0) <= vp.width).toBe(true);
         await page.screenshot({ path: `${SHOTS}/shop-sheet-mm-${vp.name}-${theme}.png` });
+        // Seven lead columns without scrolling sideways, on the phone too.
+        expect(await page.locator('.sheet-scroll').evaluate((e) => [e.scrollWidth, e.clientWidth])).toSatisfy(
+          ([scroll, client]: number[]) => (scroll ?? 1) <= (client ?? 0),
+        );
         expect(await violations(page), `${vp.name} ${theme}`).toEqual([]);
         const { name, csv } = await downloadCsv(vp, page);
         expect(name).toBe('shop-sheet_R3_Rcr1_one-way_plane_tilt0_mm.csv');
