@@ -11,6 +11,7 @@ import {
   csvColumnOf,
 } from '../core/input/fields';
 import { RESULT_COLUMNS } from '../core/output/csvWrite';
+import { unitNamedColumn } from '../core/output/lookupUnits';
 import type { CsvRecord } from './csv';
 
 /**
@@ -92,11 +93,29 @@ export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COL
 /** Result columns a header may hold (an output read back): ignored, computed again. */
 const IGNORED_COLUMNS: readonly string[] = RESULT_COLUMNS;
 
+/**
+ * The header's names with their units read (the page's lookup table names them: `R_mm`,
+ * `rho_deg`): the batch column each stands for, or why the batch cannot read it (a column in
+ * inches: the batch reads mm).
+ */
+function plainNames(fields: readonly string[]): { names: string[]; problems: string[] } {
+  const problems: string[] = [];
+  const names = fields.map((f) => {
+    const named = unitNamedColumn(f.trim());
+    if (named.unit === 'in')
+      problems.push(`column ${f.trim()} is in inches: the command line reads mm (download the table in mm)`);
+    return named.column;
+  });
+  return { names, problems };
+}
+
 /** Reads the header record: the layout, or the reason it is not one. */
 export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | { ok: false; error: string } {
   const rule = HEADER_RULE;
   if (record.error !== null) return { ok: false, error: `${rule}; line ${record.line}: ${record.error}` };
-  const names = record.fields.map((f) => f.trim());
+  const plain = plainNames(record.fields);
+  if (plain.problems.length > 0) return { ok: false, error: `${rule} (${plain.problems.join('; ')})` };
+  const names = plain.names;
   if (names.includes(SLOPE_COLUMN)) return parseThreeAxisHeader(names);
   const index: Partial<Record<InputColumn, number>> = {};
   const ignored = new Set<string>();

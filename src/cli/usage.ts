@@ -64,7 +64,8 @@ Three-axis machining (the tool upright, the surface sloped; then --rho and --til
                         (the flat floor's step for h, or the typed --horizontal-step / --step-down)
   --batch               read CSV on stdin (header R,Rcr,rho and h or Ra; optional tilt, pattern,
                         surfaceRadius, surfaceAxis, or feedRadius, crossRadius; any order; an empty field takes the default;
-                        output columns are ignored, so an output or a lookup table reads back),
+                        output columns are ignored, so an output or a lookup table reads back;
+                        a column may name its unit, R_mm, rho_deg, as the page's mm table does),
                         three-axis: a header with slope needs no rho; optional passes,
                         rasterAngle, feedRadius, crossRadius; output interval,horizontalStep,
                         stepDown,lead,tilt,scallopHeight,note,error),

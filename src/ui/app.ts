@@ -32,6 +32,7 @@ import { type QuestionKind, ResultsPanel } from './results';
 import { RoughnessPanel } from './roughness';
 import { sceneOfReply } from './sceneLabels';
 import { SceneSlot } from './sceneSlot';
+import { ShopSheetPanel } from './shopSheet';
 import { SimulationLoader } from './simulation';
 import {
   type CalculatorState,
@@ -90,6 +91,7 @@ export class CalculatorApp {
   private readonly scene: SceneSlot<ToolScene>;
   private readonly sceneBox: HTMLElement;
   private readonly lookup: LookupDownload;
+  private readonly sheet: ShopSheetPanel;
   private readonly teaching: TeachingLoader | null;
   private readonly roughness: RoughnessPanel;
   private readonly simulation: SimulationLoader;
@@ -140,6 +142,7 @@ export class CalculatorApp {
       must(root, '[data-testid="download-table"]'),
       must(root, '[data-testid="download-table-status"]'),
     );
+    this.sheet = new ShopSheetPanel(must(root, '[data-testid="shop-sheet"]'));
     const sceneBox = must<HTMLElement>(root, '.scene');
     this.sceneBox = sceneBox;
     this.scene = new SceneSlot(() => import('../render/scene').then(({ ToolScene }) => new ToolScene(sceneBox)));
@@ -272,7 +275,8 @@ export class CalculatorApp {
     this.fields.render(state, kept);
     this.teaching?.want(null, state.unit, true);
     this.simulation.want(null, state.unit);
-    this.lookup.want(null, state.machine === '3axis');
+    this.lookup.want(null, state.unit, state.machine === '3axis');
+    this.sheet.want(null, state.unit);
     this.draw();
   }
 
@@ -297,8 +301,11 @@ export class CalculatorApp {
     // The lookup table: a plane's, a cylinder's or a doubly curved point's (not three-axis).
     this.lookup.want(
       request !== null && request.mode !== 'three-axis' ? request : null,
+      state.unit,
       this.state.machine === '3axis',
     );
+    // The shop sheet: any valid question (its tool, posture, pattern and surface; three-axis by slope).
+    this.sheet.want(request, state.unit);
     this.draw();
     this.url.write(asked);
   }

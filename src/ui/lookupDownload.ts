@@ -2,12 +2,13 @@
  * The lookup table download (`download-table`): the exact step-over of the tool and pattern on
  * screen over a grid of scallop heights x lead angles x tilts (core/lookupTable.ts), computed by
  * the worker's `table` job on its own worker, saved as a CSV in the command line's batch format
- * (mm, full precision). The button is enabled only while the inputs on screen make a valid
+ * in the user's unit (every dimensioned column's header names it: `h_in`, `rho_deg`; full
+ * precision). The button is enabled only while the inputs on screen make a valid
  * question; the file answers the tool, pattern and surface asked for at the click (its name says
  * which), and a reply is saved only if it echoes that request.
  */
 
-import { formatInputNumber } from '../core/input/units';
+import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
 import { lookupGrid } from '../core/output/lookupTable';
 import { PLANE } from '../core/surfaces/cylinder';
 import type { RestartInfo } from '../worker/client';
@@ -16,8 +17,11 @@ import { type SolveRequest, sameTableRequest, type TableReply, type TableRequest
 import { tableClient } from '../worker/workers';
 import { THREE_AXIS_TABLE_NOTE } from './threeAxisNotes';
 
-/** The table request for the tool, pattern and surface of a solve request (or of a doubly curved point's). */
-export function tableRequestOf(request: SolveRequest | CurvedRequest): TableRequest {
+/**
+ * The table request for the tool, pattern and surface of a solve request (or of a doubly curved
+ * point's), its file in `unit` (the scallop heights on that unit's 1-2-5 series).
+ */
+export function tableRequestOf(request: SolveRequest | CurvedRequest, unit: LengthUnit): TableRequest {
   const i = request.input;
   const tool = {
     toolRadiusMm: i.toolRadiusMm,
@@ -25,36 +29,46 @@ export function tableRequestOf(request: SolveRequest | CurvedRequest): TableRequ
     pattern: i.pattern,
     surface: isCurvedRequest(request) ? PLANE : request.input.surface,
   };
-  const grid = lookupGrid(tool);
+  const grid = lookupGrid(tool, unit);
   return isCurvedRequest(request)
-    ? { tool, grid, radii: { feedRadiusMm: request.input.feedRadiusMm, crossRadiusMm: request.input.crossRadiusMm } }
-    : { tool, grid };
+    ? {
+        tool,
+        grid,
+        unit,
+        radii: { feedRadiusMm: request.input.feedRadiusMm, crossRadiusMm: request.input.crossRadiusMm },
+      }
+    : { tool, grid, unit };
 }
 
 /**
- * The file name of a table: its tool, pattern and surface, in mm:
- * `step-over-table_R3_Rcr1_one-way_plane.csv`, on a cylinder `..._one-way_Rs-30_cross.csv` (the
- * signed radius, negative for a concave cylinder, and the axis, as the CSV's columns give them).
+ * The file name of a table: its tool, pattern and surface, then its unit, lengths in that unit:
+ * `step-over-table_R3_Rcr1_one-way_plane_mm.csv`, on a cylinder `..._one-way_Rs-30_cross_mm.csv`
+ * (the signed radius, negative for a concave cylinder, and the axis, as the CSV's columns give
+ * them); in inches `step-over-table_R0.25_Rcr0.0625_one-way_plane_in.csv`.
  */
 export function tableFileName(request: TableRequest): string {
+  const unit = request.unit ?? 'mm';
+  const n = (mm: number) => formatInputNumber(fromMm(mm, unit));
   const t = request.tool;
   const s = t.surface;
   const r = request.radii;
   const surface =
     r !== undefined
-      ? `Rf${formatInputNumber(r.feedRadiusMm)}_Rc${formatInputNumber(r.crossRadiusMm)}`
+      ? `Rf${n(r.feedRadiusMm)}_Rc${n(r.crossRadiusMm)}`
       : s.kind === 'cylinder'
-        ? `Rs${formatInputNumber(s.radiusMm)}_${s.axis}`
+        ? `Rs${n(s.radiusMm)}_${s.axis}`
         : 'plane';
-  return `step-over-table_R${formatInputNumber(t.toolRadiusMm)}_Rcr${formatInputNumber(t.cornerRadiusMm)}_${t.pattern}_${surface}.csv`;
+  return `step-over-table_R${n(t.toolRadiusMm)}_Rcr${n(t.cornerRadiusMm)}_${t.pattern}_${surface}_${unitSymbol(unit)}.csv`;
 }
 
 /** What the status line says about a table saved. */
 export function tableSummary(reply: Extract<TableReply, { ok: true }>): string {
   const g = reply.request.grid;
+  const unit = reply.request.unit ?? 'mm';
   const range = (v: readonly number[]) => `${formatInputNumber(v[0] ?? 0)} to ${formatInputNumber(v.at(-1) ?? 0)}`;
+  const h = g.scallopHeightsMm.map((mm) => fromMm(mm, unit));
   return (
-    `Saved ${tableFileName(reply.request)}: ${reply.rows} rows, h ${range(g.scallopHeightsMm)} mm ` +
+    `Saved ${tableFileName(reply.request)}: ${reply.rows} rows, h ${range(h)} ${unitSymbol(unit)} ` +
     `x lead ${range(g.leadAnglesDeg)} deg x tilt ${range(g.tiltAnglesDeg)} deg; ` +
     `${reply.emptyCells} cells outside the valid domain are left empty, the reason in the error column.`
   );
@@ -63,6 +77,7 @@ export function tableSummary(reply: Extract<TableReply, { ok: true }>): string {
 /** The download button and its status line (see the module comment). */
 export class LookupDownload {
   private current: SolveRequest | CurvedRequest | null = null;
+  private unit: LengthUnit = 'mm';
   private asked: TableRequest | null = null;
   private client: ReturnType<typeof tableClient> | null = null;
 
@@ -77,9 +92,11 @@ export class LookupDownload {
   /**
    * The inputs on screen changed: the request they ask, or null (invalid, or being typed). With
    * `threeAxis` the button stays disabled and the status line says why (THREE_AXIS_TABLE_NOTE).
+   * The file is in `unit`, the user's.
    */
-  want(request: SolveRequest | CurvedRequest | null, threeAxis = false): void {
+  want(request: SolveRequest | CurvedRequest | null, unit: LengthUnit, threeAxis = false): void {
     this.current = threeAxis ? null : request;
+    this.unit = unit;
     this.button.disabled = this.current === null || this.asked !== null;
     if (this.asked !== null) return;
     if (threeAxis) this.status.textContent = THREE_AXIS_TABLE_NOTE;
@@ -88,7 +105,7 @@ export class LookupDownload {
 
   private ask(): void {
     if (this.current === null) return;
-    const request = tableRequestOf(this.current);
+    const request = tableRequestOf(this.current, this.unit);
     this.asked = request;
     this.button.disabled = true;
     this.status.textContent = 'Computing the table in the worker...';

@@ -8,6 +8,7 @@
 
 import { type FieldName, PASS_FIELDS } from '../core/input/fields';
 import { sameFields } from '../core/input/raw';
+import type { LengthUnit } from '../core/input/units';
 import type { ForwardInput, InputError, InverseInput, PassPattern } from '../core/input/validate';
 import type { Vec3 } from '../core/math/vec';
 import type { LookupGrid, LookupTable, LookupTool } from '../core/output/lookupTable';
@@ -331,6 +332,12 @@ export interface TableRequest {
    * cylinder.
    */
   readonly radii?: PrincipalRadii;
+  /**
+   * The file's unit (issue 21): its lengths in it, every dimensioned column's header naming its
+   * unit (`R_in`, `rho_deg`), the reasons worded in it. Absent: the batch layout as the command
+   * line writes it (mm and degrees, plain column names).
+   */
+  readonly unit?: LengthUnit;
 }
 
 /** The answer to `table`, echoing its request: the CSV and its counts, or why there is none. */
@@ -347,6 +354,7 @@ export function sameTableRequest(a: TableRequest | null, b: TableRequest | null)
     sameFields(a.tool, b.tool, PASS_FIELDS) &&
     a.radii?.feedRadiusMm === b.radii?.feedRadiusMm &&
     a.radii?.crossRadiusMm === b.radii?.crossRadiusMm &&
+    a.unit === b.unit &&
     same(a.grid.scallopHeightsMm, b.grid.scallopHeightsMm) &&
     same(a.grid.leadAnglesDeg, b.grid.leadAnglesDeg) &&
     same(a.grid.tiltAnglesDeg, b.grid.tiltAnglesDeg)

@@ -97,3 +97,32 @@ describe('lookup table read back by --batch', () => {
     expect(Number(pageCase(r.stdout))).not.toBe(Number(pageCase(tableOf(PLANE))));
   }, 30_000);
 });
+
+describe("the page's download read back by --batch (issue 21)", () => {
+  it('the mm file (columns named R_mm, rho_deg, ...) is answered row for row, the same numbers', async () => {
+    const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, pattern: 'one-way' as const, surface: PLANE };
+    const plain = table({ tool, grid: lookupGrid(tool) });
+    const named = table({ tool, grid: lookupGrid(tool, 'mm'), unit: 'mm' });
+    if (!plain.ok || !named.ok) throw new Error('tables');
+    expect(named.csv.split('\n')[0]).toMatch(/^R_mm,Rcr_mm,rho_deg,h_mm,tilt_deg,pattern,/);
+    const r = await run(['--batch'], named.csv);
+    expect(r.stderr).toBe('');
+    expect(r.code).toBe(0);
+    // The batch writes its own plain header, then the very same rows.
+    expect(r.stdout).toBe(plain.csv);
+    expect(r.stdout.split('\n').slice(1)).toEqual(named.csv.split('\n').slice(1));
+  }, 30_000);
+
+  it('the inch file is refused with the reason: the command line reads mm', async () => {
+    const tool = { toolRadiusMm: 6.35, cornerRadiusMm: 1.5875, pattern: 'one-way' as const, surface: PLANE };
+    const named = table({
+      tool,
+      grid: { scallopHeightsMm: [0.0254], leadAnglesDeg: [5], tiltAnglesDeg: [0] },
+      unit: 'in',
+    });
+    if (!named.ok) throw new Error('table');
+    const r = await run(['--batch'], named.csv);
+    expect(r.code).not.toBe(0);
+    expect(r.stderr).toMatch(/column R_in is in inches: the command line reads mm/);
+  }, 30_000);
+});

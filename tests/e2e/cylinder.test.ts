@@ -21,6 +21,7 @@ import {
 } from '../../src/core/index';
 import { formatInputNumber, fromMm } from '../../src/core/input/units';
 import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
+import { headerInUnit } from '../../src/core/output/lookupUnits';
 import { scallopHeightForRaMm } from '../../src/core/roughness/roughness';
 import { formatLen, formatLenUnit } from '../../src/ui/format';
 import { paintedFraction, SHOTS, STRICT_CSP, useSite } from './harness';
@@ -165,17 +166,18 @@ describe('curved surfaces on the page', () => {
     // The status says what was saved (before the fix: "No table: This tool gouges ...").
     await expect
       .poll(() => text(page, 'download-table-status'), { timeout: 15_000 })
-      .toMatch(/^Saved step-over-table_R3_Rcr1_one-way_Rs-30_cross\.csv: 780 rows/);
+      .toMatch(/^Saved step-over-table_R3_Rcr1_one-way_Rs-30_cross_mm\.csv: 780 rows/);
     const download = await downloaded;
-    expect(download.suggestedFilename()).toBe('step-over-table_R3_Rcr1_one-way_Rs-30_cross.csv');
+    expect(download.suggestedFilename()).toBe('step-over-table_R3_Rcr1_one-way_Rs-30_cross_mm.csv');
     const [head, ...rows] = parseCsv(readFileSync(await download.path(), 'utf8')).filter((r) => !r.blank);
-    expect(head?.fields.join(',')).toBe(LOOKUP_HEADER);
-    const col = (name: string) => LOOKUP_HEADER.split(',').indexOf(name);
+    const header = headerInUnit(LOOKUP_HEADER, 'mm');
+    expect(head?.fields.join(',')).toBe(header);
+    const col = (name: string) => header.split(',').indexOf(name);
     const at = rows.find((r) => r.fields.slice(2, 5).join(',') === '5,0.05,0');
     const e = exactForward(forwardInput(TOOL, 'one-way', 0.05, cyl(-30, 'cross')));
-    expect(Math.abs(Number(at?.fields[col('interval')]) - e.intervalMm)).toBeLessThanOrEqual(1e-13 * e.intervalMm);
+    expect(Math.abs(Number(at?.fields[col('interval_mm')]) - e.intervalMm)).toBeLessThanOrEqual(1e-13 * e.intervalMm);
     expect(
-      rows.every((r) => r.fields[col('surfaceRadius')] === '-30' && r.fields[col('surfaceAxis')] === 'cross'),
+      rows.every((r) => r.fields[col('surfaceRadius_mm')] === '-30' && r.fields[col('surfaceAxis')] === 'cross'),
     ).toBe(true);
     expect(await violations()).toEqual([]);
     expect(errors).toEqual([]);

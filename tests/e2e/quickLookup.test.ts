@@ -11,6 +11,7 @@ import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
 import { forwardInput, scallopHeightLimits } from '../../src/core/input/validate';
 import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
+import { headerInUnit } from '../../src/core/output/lookupUnits';
 import { exactForward } from '../../src/core/surfaces/solve';
 import { ROOT, SHOTS, useSite } from './harness';
 
@@ -195,17 +196,20 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     const downloaded = page.waitForEvent('download');
     await press(vp, button);
     const download = await downloaded;
-    expect(download.suggestedFilename()).toBe('step-over-table_R3_Rcr1_zigzag_plane.csv');
+    expect(download.suggestedFilename()).toBe('step-over-table_R3_Rcr1_zigzag_plane_mm.csv');
     const csv = readFileSync(await download.path(), 'utf8');
     const [head, ...rows] = parseCsv(csv).filter((r) => !r.blank);
-    expect(head?.fields.join(',')).toBe(LOOKUP_HEADER);
-    const col = (name: string) => LOOKUP_HEADER.split(',').indexOf(name);
+    // Every dimensioned column names its unit (issue 21).
+    const header = headerInUnit(LOOKUP_HEADER, 'mm');
+    expect(head?.fields.join(',')).toBe(header);
+    expect(header).toMatch(/^R_mm,Rcr_mm,rho_deg,h_mm,tilt_deg,/);
+    const col = (name: string) => header.split(',').indexOf(name);
     let checked = 0;
     for (const r of rows) {
       const [R, Rcr, rho, h, tilt] = r.fields.slice(0, 5).map(Number) as [number, number, number, number, number];
       const tool = { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, tiltAngleDeg: tilt };
       if (h >= scallopHeightLimits(tool).limitMm) {
-        expect(r.fields[col('interval')]).toBe('');
+        expect(r.fields[col('interval_mm')]).toBe('');
         expect(r.fields[col('error')]).not.toBe('');
         continue;
       }
@@ -213,20 +217,51 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
       const e = exactForward(forwardInput(tool, 'zigzag', h));
       const near = (got: string | undefined, want: number) =>
         expect(Math.abs(Number(got) - want)).toBeLessThanOrEqual(1e-13 * want);
-      near(r.fields[col('interval')], e.intervalMm);
-      near(r.fields[col('exact')], e.halfIntervalMm);
+      near(r.fields[col('interval_mm')], e.intervalMm);
+      near(r.fields[col('exact_mm')], e.halfIntervalMm);
       checked++;
     }
     expect(checked).toBeGreaterThan(300);
     await expect
       .poll(() => text(page, 'download-table-status'))
-      .toMatch(/^Saved step-over-table_R3_Rcr1_zigzag_plane\.csv: \d+ rows/);
+      .toMatch(/^Saved step-over-table_R3_Rcr1_zigzag_plane_mm\.csv: \d+ rows, h 0\.0002 to 2 mm /);
     // The table runs on its own worker.
     expect(await Promise.all(page.workers().map((w) => w.evaluate(() => self.name)))).toContain('path-interval-table');
     // Invalid input: nothing to tabulate.
     await typeInto(page, 'input-Rcr', '9');
     await page.keyboard.press('Enter');
     expect(await button.isDisabled()).toBe(true);
+  });
+
+  it('in inch mode the lookup table is in inches: _in in the file name and the header, the cells in inches', async () => {
+    const { page } = await open(vp, '?R=0.25&Rcr=0.0625&rho=5&h=0.0005&unit=in');
+    const button = page.getByTestId('download-table');
+    await expect.poll(() => button.isEnabled()).toBe(true);
+    const downloaded = page.waitForEvent('download');
+    await press(vp, button);
+    const download = await downloaded;
+    expect(download.suggestedFilename()).toBe('step-over-table_R0.25_Rcr0.0625_one-way_plane_in.csv');
+    const [head, ...rows] = parseCsv(readFileSync(await download.path(), 'utf8')).filter((r) => !r.blank);
+    const header = headerInUnit(LOOKUP_HEADER, 'in');
+    expect(head?.fields.join(',')).toBe(header);
+    const col = (name: string) => header.split(',').indexOf(name);
+    // The page's own case, in inches: h 0.0005 in at lead 5, tilt 0 (the inch 1-2-5 series holds it).
+    const at = rows.find(
+      (r) => [col('rho_deg'), col('h_in'), col('tilt_deg')].map((c) => r.fields[c]).join() === '5,0.0005,0',
+    );
+    expect(at?.fields[col('R_in')]).toBe('0.25');
+    const e = exactForward(
+      forwardInput({ toolRadiusMm: 6.35, cornerRadiusMm: 1.5875, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 0.0127),
+    );
+    expect(Math.abs(Number(at?.fields[col('interval_in')]) - e.intervalMm / 25.4)).toBeLessThanOrEqual(
+      1e-12 * e.intervalMm,
+    );
+    // A refused cell says its reason in inches.
+    const refused = rows.find((r) => r.fields[col('error')] !== '');
+    expect(refused?.fields[col('error')]).toMatch(/ in \(got [\d.]+\)/);
+    await expect
+      .poll(() => text(page, 'download-table-status'))
+      .toMatch(/^Saved step-over-table_R0\.25_Rcr0\.0625_one-way_plane_in\.csv: \d+ rows, h 0\.00002 to [\d.]+ in /);
   });
 
   it('touch targets are at least 24 px; a vertical swipe over the scene or the profile scrolls the page', async () => {

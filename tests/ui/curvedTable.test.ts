@@ -21,9 +21,10 @@ describe('a doubly curved point lookup table', () => {
   it('the page asks it with the radii; the file name says them; another radius is another table', () => {
     const built = buildRequest(parseUrl('?R=3&Rcr=1&rho=5&h=0.05&feedRadius=80&crossRadius=-40&unit=mm').state);
     if (!built.ok || built.request.mode !== 'curved-forward') throw new Error('valid');
-    const request = tableRequestOf(built.request);
+    const request = tableRequestOf(built.request, 'mm');
     expect(request.radii).toEqual({ feedRadiusMm: 80, crossRadiusMm: -40 });
-    expect(tableFileName(request)).toBe('step-over-table_R3_Rcr1_one-way_Rf80_Rc-40.csv');
+    expect(tableFileName(request)).toBe('step-over-table_R3_Rcr1_one-way_Rf80_Rc-40_mm.csv');
+    expect(sameTableRequest(request, { ...request, unit: 'in' })).toBe(false);
     expect(sameTableRequest(request, { ...request, radii: { feedRadiusMm: 80, crossRadiusMm: -41 } })).toBe(false);
     expect(sameTableRequest(request, { ...request, radii: undefined })).toBe(false);
     expect(sameTableRequest(request, { ...request, radii: { feedRadiusMm: 80, crossRadiusMm: -40 } })).toBe(true);

@@ -19,7 +19,9 @@ import {
   fieldOfCsvColumn,
   PASS_FIELDS,
 } from '../input/fields';
+import { describeInputError, type InputError } from '../input/inputErrors';
 import { rawOf } from '../input/raw';
+import { fromMm, type LengthUnit, toMm } from '../input/units';
 import { type RawForwardInput, scallopHeightLimits, validateForward } from '../input/validate';
 import { csvNumber, csvText, RESULT_COLUMNS, resultFields } from './csvWrite';
 
@@ -64,11 +66,15 @@ export function series125(from: number, below: number): number[] {
 }
 
 /**
- * The grid for a tool: scallop heights on the 1-2-5 series from about 1e-4 R up to the largest
- * limit over the grid's postures (below which some posture leaves a scallop; capped at R), lead
- * angles LOOKUP_LEADS_DEG, tilts LOOKUP_TILTS_DEG.
+ * The grid for a tool: scallop heights on the 1-2-5 series in `unit` (mm: 0.001, 0.002, 0.005 mm;
+ * inch: 0.0001, 0.0002, 0.0005 in; given in mm) from about 1e-4 R up to the largest limit over
+ * the grid's postures (below which some posture leaves a scallop; capped at R), lead angles
+ * LOOKUP_LEADS_DEG, tilts LOOKUP_TILTS_DEG.
  */
-export function lookupGrid(tool: Pick<LookupTool, 'toolRadiusMm' | 'cornerRadiusMm'>): LookupGrid {
+export function lookupGrid(
+  tool: Pick<LookupTool, 'toolRadiusMm' | 'cornerRadiusMm'>,
+  unit: LengthUnit = 'mm',
+): LookupGrid {
   let limit = 0;
   for (const lead of LOOKUP_LEADS_DEG)
     for (const tilt of LOOKUP_TILTS_DEG) {
@@ -77,7 +83,9 @@ export function lookupGrid(tool: Pick<LookupTool, 'toolRadiusMm' | 'cornerRadius
     }
   const top = Math.min(tool.toolRadiusMm, limit > 0 ? limit : tool.toolRadiusMm);
   return {
-    scallopHeightsMm: series125(SMALLEST_H_PER_R * tool.toolRadiusMm, top),
+    scallopHeightsMm: series125(fromMm(SMALLEST_H_PER_R * tool.toolRadiusMm, unit), fromMm(top, unit)).map((h) =>
+      toMm(h, unit),
+    ),
     leadAnglesDeg: LOOKUP_LEADS_DEG,
     tiltAnglesDeg: LOOKUP_TILTS_DEG,
   };
@@ -99,6 +107,13 @@ function inputCell(value: unknown): string {
   return typeof value === 'number' ? csvNumber(value) : csvText(String(value));
 }
 
+/** A refused cell's reason in `unit` (the cell's h, mm, as the file shows it). */
+function reasonIn(e: InputError, unit: LengthUnit, hMm: number): string {
+  if (unit === 'mm') return e.message;
+  const typed = e.field === 'h' ? csvNumber(Number(fromMm(hMm, unit).toPrecision(12))) : undefined;
+  return describeInputError(e, unit, typed === undefined ? {} : { typed });
+}
+
 /** A table: its CSV text (header, then one row per cell, tilt slowest, h fastest) and counts. */
 export interface LookupTable {
   readonly csv: string;
@@ -110,9 +125,10 @@ export interface LookupTable {
 
 /**
  * The exact step-over (and the batch's other results) of every cell of the grid, validated and
- * solved as the command line's batch validates and solves each record.
+ * solved as the command line's batch validates and solves each record; a refused cell's reason
+ * worded in `unit` (the numbers stay mm: lookupUnits.ts converts the file).
  */
-export function lookupTable(tool: LookupTool, grid: LookupGrid): LookupTable {
+export function lookupTable(tool: LookupTool, grid: LookupGrid, unit: LengthUnit = 'mm'): LookupTable {
   const lines = [LOOKUP_HEADER];
   let empty = 0;
   for (const tilt of grid.tiltAnglesDeg)
@@ -128,7 +144,7 @@ export function lookupTable(tool: LookupTool, grid: LookupGrid): LookupTable {
         if (v.ok) lines.push(`${echo},${resultFields(v.value)},`);
         else {
           empty++;
-          const reason = v.errors.map((e) => e.message).join(' ');
+          const reason = v.errors.map((e) => reasonIn(e, unit, h)).join(' ');
           lines.push(`${echo}${','.repeat(RESULT_COLUMNS.length - 1)},${csvText(reason)}`);
         }
       }

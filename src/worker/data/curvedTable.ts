@@ -11,7 +11,7 @@
  */
 
 import { CSV_REQUIRED_COLUMNS, csvColumnOf } from '../../core/input/fields';
-import { formatSignificant } from '../../core/input/units';
+import { formatSignificant, fromMm, type LengthUnit, unitSymbol } from '../../core/input/units';
 import type { PassPattern } from '../../core/input/validate';
 import { csvNumber, csvText, RESULT_COLUMNS } from '../../core/output/csvWrite';
 import type { LookupGrid, LookupTable } from '../../core/output/lookupTable';
@@ -51,12 +51,16 @@ export function badRadii(radii: PrincipalRadii): string | null {
 
 const mm = (v: number) => formatSignificant(v, { digits: 8, trimZeros: true, exponentBelow: 1e-5 });
 
-/** The table of a validated tool (R, Rcr mm), pattern and pair of curved radii over a grid. */
+/**
+ * The table of a validated tool (R, Rcr mm), pattern and pair of curved radii over a grid; a
+ * refused cell's reason worded in `unit` (the numbers stay mm: lookupUnits.ts converts the file).
+ */
 export function curvedLookupTable(
   tool: { readonly toolRadiusMm: number; readonly cornerRadiusMm: number },
   pattern: PassPattern,
   radii: PrincipalRadii,
   grid: LookupGrid,
+  unit: LengthUnit = 'mm',
 ): LookupTable {
   const lines = [CURVED_LOOKUP_HEADER];
   let empty = 0;
@@ -77,7 +81,7 @@ export function curvedLookupTable(
           reason =
             'The tool gouges this doubly curved point at this posture: the swept tool reaches inside the surface away from the contact.';
         else if (!(h < limitMm))
-          reason = `Scallop height h must be below ${mm(Math.max(0, limitMm))} mm at this point and posture (got ${h}).`;
+          reason = `Scallop height h must be below ${mm(fromMm(Math.max(0, limitMm), unit))} ${unitSymbol(unit)} at this point and posture (got ${csvNumber(Number(fromMm(h, unit).toPrecision(12)))}).`;
         if (reason !== null || solver === null) {
           empty++;
           lines.push(`${echo},${emptyResults}${csvText(reason ?? '')}`);

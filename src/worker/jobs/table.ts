@@ -10,7 +10,8 @@
 import { PASS_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
 import { validateForward } from '../../core/input/validate';
-import { lookupTable } from '../../core/output/lookupTable';
+import { type LookupTable, lookupTable } from '../../core/output/lookupTable';
+import { lookupCsvInUnit } from '../../core/output/lookupUnits';
 import { badRadii, curvedLookupTable } from '../data/curvedTable';
 import type { TableReply, TableRequest } from '../protocol';
 
@@ -50,7 +51,13 @@ export function table(request: TableRequest): TableReply {
   if (request.radii !== undefined) {
     const bad = badRadii(request.radii);
     if (bad !== null) return { ok: false, request, reason: bad };
-    return { ok: true, request, ...curvedLookupTable(t, t.pattern, request.radii, request.grid) };
+    return inUnit(request, curvedLookupTable(t, t.pattern, request.radii, request.grid, request.unit));
   }
-  return { ok: true, request, ...lookupTable(t, request.grid) };
+  return inUnit(request, lookupTable(t, request.grid, request.unit));
+}
+
+/** The reply with the table in the request's unit (its columns named with units), if it asks one. */
+function inUnit(request: TableRequest, t: LookupTable): TableReply {
+  const csv = request.unit === undefined ? t.csv : lookupCsvInUnit(t.csv, request.unit);
+  return { ok: true, request, ...t, csv };
 }

@@ -1,0 +1,248 @@
+/**
+ * The shop sheet (issue 21; button `shop-sheet`): a modal dialog with, for the tool, posture,
+ * pattern and surface on screen, the matrix of step-over by scallop height (rows) and lead angle
+ * (columns; in three-axis machining the surface slope, the step as programmed), in the user's
+ * unit (core/output/shopSheet.ts; words and files in shopSheetText.ts). The rows are an editable
+ * list of heights; "Download CSV" saves the matrix (the unit in the header and the file name);
+ * "Print" prints the sheet alone on one page (shopSheet.css). The button is enabled while the
+ * inputs on screen make a valid question. Computed on the main thread when opened or when the
+ * list changes (at most 12 x 7 cells: milliseconds on a plane, a third of a second at a doubly
+ * curved point).
+ */
+import { fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
+import { SHEET_HEIGHTS, SHEET_MARKS, type SheetCase, type ShopSheet, shopSheet } from '../core/output/shopSheet';
+import type { PageRequest } from '../worker/pageProtocol';
+import { formatDeg } from './format';
+import {
+  cellText,
+  heightsText,
+  MAX_SHEET_ROWS,
+  marksUsed,
+  NO_SCALLOP_LEGEND,
+  NO_SCALLOP_STAR,
+  parseHeights,
+  sheetCaseOf,
+  sheetCsv,
+  sheetFileName,
+  sheetTitleLines,
+  stepSymbol,
+} from './shopSheetText';
+
+/** An element with a class, optional test id and text (text only: nothing is parsed as HTML). */
+function el<K extends keyof HTMLElementTagNameMap>(
+  tag: K,
+  className = '',
+  text = '',
+  testId = '',
+): HTMLElementTagNameMap[K] {
+  const e = document.createElement(tag);
+  if (className !== '') e.className = className;
+  if (text !== '') e.textContent = text;
+  if (testId !== '') e.dataset.testid = testId;
+  return e;
+}
+
+/** Saves text as a file through a temporary link. */
+function saveText(text: string, fileName: string, type: string): void {
+  const url = URL.createObjectURL(new Blob([text], { type }));
+  const link = document.createElement('a');
+  link.href = url;
+  link.download = fileName;
+  document.body.append(link);
+  link.click();
+  link.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 10_000);
+}
+
+/** The class on <html> while the sheet is open: the print stylesheet then prints the sheet alone. */
+const OPEN_CLASS = 'shop-sheet-open';
+
+/** The button and its dialog (see the module comment). */
+export class ShopSheetPanel {
+  private case: SheetCase | null = null;
+  private unit: LengthUnit = 'mm';
+  /** The heights the user listed, in their unit (kept while the unit stays; a new unit starts from its defaults). */
+  private heights: { unit: LengthUnit; values: readonly number[] } = { unit: 'mm', values: SHEET_HEIGHTS.mm };
+  private sheet: ShopSheet | null = null;
+  private readonly dialog: HTMLDialogElement;
+  private readonly title: HTMLHeadingElement;
+  private readonly lines: HTMLDivElement;
+  private readonly table: HTMLTableElement;
+  private readonly legend: HTMLUListElement;
+  private readonly heightsInput: HTMLInputElement;
+  private readonly heightsLabel: HTMLLabelElement;
+  private readonly heightsError: HTMLParagraphElement;
+  private readonly status: HTMLParagraphElement;
+
+  constructor(private readonly button: HTMLButtonElement) {
+    button.disabled = true;
+    button.addEventListener('click', () => this.open());
+    const d = el('dialog', 'shop-sheet', '', 'shop-sheet-dialog');
+    d.setAttribute('aria-labelledby', 'shop-sheet-title');
+    this.dialog = d;
+    const page = el('div', 'sheet-page');
+    this.title = el('h2', '', '', 'shop-sheet-title');
+    this.title.id = 'shop-sheet-title';
+    this.lines = el('div', 'sheet-lines', '', 'shop-sheet-lines');
+    const scroll = el('div', 'sheet-scroll');
+    // A scrolling region is reachable by keyboard (axe: scrollable-region-focusable).
+    scroll.tabIndex = 0;
+    scroll.setAttribute('role', 'region');
+    scroll.setAttribute('aria-label', 'Step-over table');
+    this.table = el('table', 'sheet-table', '', 'shop-sheet-table');
+    scroll.append(this.table);
+    this.legend = el('ul', 'sheet-legend', '', 'shop-sheet-legend');
+    page.append(this.title, this.lines, scroll, this.legend);
+
+    const tools = el('div', 'sheet-tools');
+    const field = el('div', 'sheet-heights');
+    this.heightsLabel = el('label');
+    this.heightsLabel.htmlFor = 'shop-sheet-heights';
+    this.heightsInput = el('input', '', '', 'shop-sheet-heights');
+    this.heightsInput.id = 'shop-sheet-heights';
+    this.heightsInput.type = 'text';
+    this.heightsInput.inputMode = 'decimal';
+    this.heightsInput.autocomplete = 'off';
+    this.heightsInput.spellcheck = false;
+    this.heightsInput.setAttribute('aria-describedby', 'shop-sheet-heights-error');
+    this.heightsError = el('p', 'error', '', 'shop-sheet-heights-error');
+    this.heightsError.id = 'shop-sheet-heights-error';
+    field.append(this.heightsLabel, this.heightsInput, this.heightsError);
+    this.heightsInput.addEventListener('change', () => this.listed());
+    this.heightsInput.addEventListener('keydown', (e) => {
+      if (e.key === 'Enter') this.listed();
+    });
+    const buttons = el('div', 'sheet-buttons');
+    const csv = el('button', '', 'Download CSV', 'shop-sheet-csv');
+    csv.type = 'button';
+    csv.addEventListener('click', () => this.download());
+    const print = el('button', '', 'Print', 'shop-sheet-print');
+    print.type = 'button';
+    print.addEventListener('click', () => window.print());
+    const close = el('button', '', 'Close', 'shop-sheet-close');
+    close.type = 'button';
+    close.addEventListener('click', () => this.dialog.close());
+    buttons.append(csv, print, close);
+    this.status = el('p', 'sheet-status', '', 'shop-sheet-status');
+    this.status.setAttribute('role', 'status');
+    tools.append(field, buttons, this.status);
+    d.append(page, tools);
+    d.addEventListener('close', () => document.documentElement.classList.remove(OPEN_CLASS));
+    document.body.append(d);
+  }
+
+  /**
+   * The inputs on screen changed: the question they ask (its tool, posture, pattern and surface
+   * make the sheet), or null (invalid, or being typed), and the user's unit.
+   */
+  want(request: PageRequest | null, unit: LengthUnit): void {
+    this.case = request === null ? null : sheetCaseOf(request);
+    this.unit = unit;
+    this.button.disabled = this.case === null;
+    if (this.dialog.open && this.case !== null) this.render();
+  }
+
+  private open(): void {
+    if (this.case === null) return;
+    this.status.textContent = '';
+    this.render();
+    document.documentElement.classList.add(OPEN_CLASS);
+    this.dialog.showModal();
+  }
+
+  /** The heights in the user's unit: the listed ones, or the unit's defaults after a change of unit. */
+  private heightsInUnit(): readonly number[] {
+    if (this.heights.unit !== this.unit) this.heights = { unit: this.unit, values: SHEET_HEIGHTS[this.unit] };
+    return this.heights.values;
+  }
+
+  /** The user listed heights: the sheet again, or the list's message (the last sheet stays). */
+  private listed(): void {
+    const parsed = parseHeights(this.heightsInput.value, this.unit);
+    if (!parsed.ok) {
+      this.heightsError.textContent = parsed.message;
+      this.heightsInput.setAttribute('aria-invalid', 'true');
+      return;
+    }
+    const values = parsed.mm.map((mm) => Number(fromMm(mm, this.unit).toPrecision(12)));
+    this.heights = { unit: this.unit, values };
+    this.render();
+  }
+
+  private render(): void {
+    const c = this.case;
+    if (c === null) return;
+    const unit = this.unit;
+    const u = unitSymbol(unit);
+    const heights = this.heightsInUnit();
+    this.heightsInput.value = heightsText(heights);
+    this.heightsInput.removeAttribute('aria-invalid');
+    this.heightsError.textContent = '';
+    this.heightsLabel.textContent = `Scallop heights h (${u}), up to ${MAX_SHEET_ROWS}, separated by spaces`;
+    const parsed = parseHeights(heightsText(heights), unit);
+    const sheet = shopSheet(c, parsed.ok ? parsed.mm : [], unit);
+    this.sheet = sheet;
+    this.title.textContent = `Shop sheet: ${stepSymbol(sheet)} (${u})`;
+    const date = new Date().toISOString().slice(0, 10);
+    this.lines.replaceChildren(...sheetTitleLines(c, sheet, unit, date).map((t) => el('p', 'sheet-line', t)));
+    this.renderTable(sheet, unit);
+    this.renderLegend(sheet);
+  }
+
+  private renderTable(sheet: ShopSheet, unit: LengthUnit): void {
+    const u = unitSymbol(unit);
+    const column = sheet.columnKind === 'lead' ? 'lead' : 'slope';
+    const caption = el(
+      'caption',
+      'sr-only',
+      `${stepSymbol(sheet)} (${u}) by scallop height h (${u}, rows) and ${column} (degrees, columns)`,
+    );
+    const head = el('tr');
+    // The corner names both axes and their units, on two lines (narrow on a phone).
+    const corner = el('th', 'corner');
+    corner.scope = 'col';
+    const axis = (name: string, unitText: string, arrow: string) => {
+      const line = el('span', '', name);
+      line.append(el('span', 'unit', ` (${unitText})`), ` ${arrow}`);
+      return line;
+    };
+    corner.append(axis(column, 'deg', '\u2192'), axis('h', u, '\u2193'));
+    head.append(corner);
+    for (const deg of sheet.columnsDeg) {
+      const th = el('th', '', formatDeg(deg));
+      th.scope = 'col';
+      head.append(th);
+    }
+    const thead = el('thead');
+    thead.append(head);
+    const tbody = el('tbody');
+    sheet.scallopHeightsMm.forEach((_, i) => {
+      const tr = el('tr');
+      const th = el('th', '', heightsText([this.heights.values[i] ?? 0]));
+      th.scope = 'row';
+      tr.append(th);
+      for (const cell of sheet.cells[i] ?? []) {
+        const td = el('td', cell.ok ? '' : 'refused', cellText(cell, unit));
+        if (!cell.ok) td.title = cell.reason;
+        tr.append(td);
+      }
+      tbody.append(tr);
+    });
+    this.table.replaceChildren(caption, thead, tbody);
+  }
+
+  private renderLegend(sheet: ShopSheet): void {
+    const used = marksUsed(sheet);
+    const items = used.marks.map((m) => el('li', '', `${SHEET_MARKS[m].letter}: ${SHEET_MARKS[m].legend}.`));
+    if (used.noScallop) items.push(el('li', '', `${NO_SCALLOP_STAR} ${NO_SCALLOP_LEGEND}.`));
+    items.push(el('li', '', 'Hover a mark for its full reason; the calculator answers any single case.'));
+    this.legend.replaceChildren(...items);
+  }
+
+  private download(): void {
+    if (this.case === null || this.sheet === null) return;
+    const name = sheetFileName(this.case, this.unit);
+    saveText(sheetCsv(this.sheet, this.unit), name, 'text/csv;charset=utf-8');
+    this.status.textContent = `Saved ${name}.`;
+  }
+}

@@ -1,0 +1,208 @@
+/**
+ * The shop sheet's words and files (issue 21), pure (no DOM): the case of the question on screen,
+ * the scallop heights the user lists, the title lines (tool, posture, pattern, surface, unit), the
+ * cells as printed, and the CSV and its file name (the unit named in the header and the name).
+ * The numbers are the core's (core/output/shopSheet.ts); lengths are shown in the user's unit at
+ * the page's resolution (format.ts), the CSV keeps full precision.
+ */
+import { formatInputNumber, fromMm, type LengthUnit, toMm, unitSymbol } from '../core/input/units';
+import { csvNumber } from '../core/output/csvWrite';
+import {
+  passesOf,
+  SHEET_MARKS,
+  type SheetCase,
+  type SheetCell,
+  type SheetMark,
+  type ShopSheet,
+} from '../core/output/shopSheet';
+import { isCurvedRequest, type PageRequest } from '../worker/pageProtocol';
+import { formatDeg, formatLen } from './format';
+
+/** At most this many scallop heights (rows): the sheet fits one printed page. */
+export const MAX_SHEET_ROWS = 12;
+
+/** The sheet's case for the question on screen (its tool, posture, pattern and surface; not its h). */
+export function sheetCaseOf(request: PageRequest): SheetCase {
+  if (request.mode === 'three-axis') return { kind: 'three-axis', problem: request.input };
+  const i = request.input;
+  const tool = {
+    toolRadiusMm: i.toolRadiusMm,
+    cornerRadiusMm: i.cornerRadiusMm,
+    tiltAngleDeg: i.tiltAngleDeg,
+    pattern: i.pattern,
+  };
+  if (isCurvedRequest(request))
+    return {
+      kind: 'doubly-curved',
+      ...tool,
+      radii: { feedRadiusMm: request.input.feedRadiusMm, crossRadiusMm: request.input.crossRadiusMm },
+    };
+  return { kind: 'five-axis', ...tool, surface: request.input.surface };
+}
+
+/** A number in the user's unit as a field shows it (up to 6 significant digits). */
+function n(mm: number, unit: LengthUnit): string {
+  return formatInputNumber(fromMm(mm, unit));
+}
+
+/** The heights list as the field shows it, in `unit` (space separated). */
+export function heightsText(heights: readonly number[]): string {
+  return heights.map((h) => formatInputNumber(h)).join(' ');
+}
+
+/**
+ * The scallop heights the user lists (in `unit`, separated by spaces or semicolons; a decimal comma
+ * reads as a point), in mm, ascending, each once; or a one-line message naming the rule.
+ */
+export function parseHeights(
+  text: string,
+  unit: LengthUnit,
+): { readonly ok: true; readonly mm: number[] } | { readonly ok: false; readonly message: string } {
+  const u = unitSymbol(unit);
+  const rule = `give 1 to ${MAX_SHEET_ROWS} scallop heights above 0 ${u}, separated by spaces`;
+  const tokens = text.split(/[\s;]+/).filter((t) => t !== '');
+  if (tokens.length === 0) return { ok: false, message: `Scallop heights: ${rule}.` };
+  const values: number[] = [];
+  for (const t of tokens) {
+    const v = /^[+]?(\d+[.,]?\d*|[.,]\d+)([eE][+-]?\d+)?$/.test(t) ? Number(t.replace(',', '.')) : Number.NaN;
+    if (!(Number.isFinite(v) && v > 0))
+      return { ok: false, message: `Scallop heights: ${rule} (got "${t.length > 24 ? `${t.slice(0, 21)}...` : t}").` };
+    values.push(v);
+  }
+  const unique = [...new Set(values)].sort((a, b) => a - b);
+  if (unique.length > MAX_SHEET_ROWS) return { ok: false, message: `Scallop heights: ${rule} (got ${unique.length}).` };
+  return { ok: true, mm: unique.map((v) => toMm(v, unit)) };
+}
+
+/** What a cell gives, as the title and the CSV name it: L, Lxy or dz. */
+export function stepSymbol(sheet: ShopSheet): string {
+  return sheet.step === 'interval' ? 'L' : sheet.step === 'horizontalStep' ? 'Lxy' : 'dz';
+}
+
+/** What a cell gives, in words. */
+function stepWords(sheet: ShopSheet): string {
+  if (sheet.step === 'interval') return 'step-over L between adjacent passes, along the surface';
+  if (sheet.step === 'horizontalStep') return 'horizontal step Lxy between adjacent raster passes, as programmed';
+  return 'step-down dz between adjacent waterline levels, as programmed';
+}
+
+/** The surface of a case in words. */
+function surfaceWords(c: SheetCase, unit: LengthUnit): string {
+  const u = unitSymbol(unit);
+  if (c.kind === 'doubly-curved')
+    return `a doubly curved point, Rf ${n(c.radii.feedRadiusMm, unit)} ${u}, Rc ${n(c.radii.crossRadiusMm, unit)} ${u} (negative: concave)`;
+  if (c.kind === 'three-axis') {
+    const p = c.problem;
+    if (p.surface === 'plane') return 'a sloped plane';
+    const r = (mm: number | null) => (mm === null ? 'straight' : `${n(mm, unit)} ${u}`);
+    return `a surface of revolution, Rf ${r(p.case.feedRadiusMm)}, Rc ${r(p.case.crossRadiusMm)} (negative: concave)`;
+  }
+  const s = c.surface;
+  if (s.kind !== 'cylinder') return 'a plane';
+  const axis = s.axis === 'feed' ? 'along the feed' : 'across the feed';
+  return `a ${s.radiusMm < 0 ? 'concave' : 'convex'} cylinder, Rs ${n(Math.abs(s.radiusMm), unit)} ${u}, axis ${axis}`;
+}
+
+/**
+ * The title lines of a sheet: the tool (D and R, Rcr), the machining and posture, the pattern or
+ * strategy and the surface, what the rows, columns and cells are and their unit, and `date`.
+ */
+export function sheetTitleLines(c: SheetCase, sheet: ShopSheet, unit: LengthUnit, date: string): string[] {
+  const u = unitSymbol(unit);
+  const tool = c.kind === 'three-axis' ? c.problem.case : c;
+  const toolLine = `Tool: D ${n(2 * tool.toolRadiusMm, unit)} ${u} (R ${n(tool.toolRadiusMm, unit)} ${u}), corner radius Rcr ${n(tool.cornerRadiusMm, unit)} ${u}`;
+  let machining: string;
+  if (c.kind === 'three-axis') {
+    const p = c.problem;
+    const passes = passesOf(p);
+    const angle =
+      passes === 'raster' && p.surface === 'plane'
+        ? ` at ${formatDeg(p.case.rasterAngleDeg)} deg from the fall line`
+        : '';
+    machining = `Three-axis, the tool upright; ${passes} passes${angle}; on ${surfaceWords(c, unit)}`;
+  } else {
+    machining = `Five-axis, tilt ${formatDeg(c.tiltAngleDeg)} deg; ${c.pattern} passes; on ${surfaceWords(c, unit)}`;
+  }
+  const columns = sheet.columnKind === 'lead' ? 'lead angle rho (deg)' : 'surface slope (deg)';
+  return [
+    toolLine,
+    machining,
+    `Rows: scallop height h (${u}). Columns: ${columns}. Cells: ${stepWords(sheet)} (${u}).`,
+    `Exact solution, path-interval calculator, ${date}.`,
+  ];
+}
+
+/** The letter of a mark and the no-scallop star, as the legend lists them. */
+export const NO_SCALLOP_STAR = '*';
+export const NO_SCALLOP_LEGEND = 'no scallop: a flat end lying flat cuts flat at any step-over up to 2R';
+
+/** A cell as the sheet prints it: the step in `unit` at the page's resolution, or its mark's letter. */
+export function cellText(cell: SheetCell, unit: LengthUnit): string {
+  if (!cell.ok) return SHEET_MARKS[cell.mark].letter;
+  return `${formatLen(cell.stepMm, unit)}${cell.noScallop ? NO_SCALLOP_STAR : ''}`;
+}
+
+/** The marks a sheet uses, in the legend's order (W, G, X), and whether a cell has no scallop. */
+export function marksUsed(sheet: ShopSheet): { marks: SheetMark[]; noScallop: boolean } {
+  const used = new Set<SheetMark>();
+  let noScallop = false;
+  for (const row of sheet.cells)
+    for (const cell of row) {
+      if (!cell.ok) used.add(cell.mark);
+      else if (cell.noScallop) noScallop = true;
+    }
+  return { marks: (['wall', 'gouge', 'range'] as const).filter((m) => used.has(m)), noScallop };
+}
+
+/** The words a refused cell is written as in the CSV (no letter to look up). */
+const CSV_MARK: Readonly<Record<SheetMark, string>> = {
+  wall: 'wall: h at or above the limit',
+  gouge: 'gouges',
+  range: 'out of range',
+};
+
+/**
+ * The sheet as CSV: a header naming every unit (`h_mm`, then `L_mm_lead_5_deg` or
+ * `Lxy_in_slope_30_deg` per column), one row per scallop height; a cell is the step in `unit` in
+ * full precision, or the words of its mark. Heights given in inches are written as given (12
+ * significant digits).
+ */
+export function sheetCsv(sheet: ShopSheet, unit: LengthUnit): string {
+  const u = unitSymbol(unit);
+  const step = stepSymbol(sheet);
+  const head = [`h_${u}`, ...sheet.columnsDeg.map((d) => `${step}_${u}_${sheet.columnKind}_${csvNumber(d)}_deg`)];
+  const rows = sheet.scallopHeightsMm.map((h, i) => {
+    const cells = (sheet.cells[i] ?? []).map((c) => (c.ok ? csvNumber(fromMm(c.stepMm, unit)) : CSV_MARK[c.mark]));
+    return [csvNumber(Number(fromMm(h, unit).toPrecision(12))), ...cells].join(',');
+  });
+  return `${[head.join(','), ...rows].join('\n')}\n`;
+}
+
+/**
+ * The CSV's file name: the tool, the pattern or strategy, the surface, the posture or raster angle
+ * and the unit, lengths in the unit: `shop-sheet_R3_Rcr1_one-way_plane_tilt0_mm.csv`,
+ * `shop-sheet_R0.25_Rcr0.0625_raster_psi30_plane_in.csv`.
+ */
+export function sheetFileName(c: SheetCase, unit: LengthUnit): string {
+  const u = unitSymbol(unit);
+  const tool = c.kind === 'three-axis' ? c.problem.case : c;
+  const parts = [`R${n(tool.toolRadiusMm, unit)}`, `Rcr${n(tool.cornerRadiusMm, unit)}`];
+  if (c.kind === 'three-axis') {
+    const p = c.problem;
+    if (p.surface === 'plane')
+      parts.push(p.case.passes === 'raster' ? `raster_psi${formatDeg(p.case.rasterAngleDeg)}` : 'waterline', 'plane');
+    else {
+      const r = (mm: number | null) => (mm === null ? 'straight' : n(mm, unit));
+      parts.push('waterline', `Rf${r(p.case.feedRadiusMm)}_Rc${r(p.case.crossRadiusMm)}`);
+    }
+  } else {
+    const surface =
+      c.kind === 'doubly-curved'
+        ? `Rf${n(c.radii.feedRadiusMm, unit)}_Rc${n(c.radii.crossRadiusMm, unit)}`
+        : c.surface.kind === 'cylinder'
+          ? `Rs${n(c.surface.radiusMm, unit)}_${c.surface.axis}`
+          : 'plane';
+    parts.push(c.pattern, surface, `tilt${formatDeg(c.tiltAngleDeg)}`);
+  }
+  return `shop-sheet_${parts.join('_')}_${u}.csv`;
+}
