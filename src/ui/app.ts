@@ -216,6 +216,7 @@ export class CalculatorApp {
             root: must(root, '[data-testid="teaching"]'),
             display: { showTraceFrame: (frame) => this.scene.run('trace', (s) => s.showTraceFrame(frame)) },
             initialView: requested ?? 'profile',
+            reveal: !embed && requested !== undefined,
             onLoadCondition: (c) =>
               this.change(
                 withValues({ ...this.state, mode: 'forward', pattern: 'one-way', surface: 'plane' }, { ...c, tilt: 0 }),

@@ -41,6 +41,8 @@ import {
   type WaterlinePreset,
   waterlinePresetOf,
 } from './surfaceState';
+import { ToolChips } from './toolChips';
+import { selectOnTouchFocus } from './touchSelect';
 
 export interface FieldEvents {
   /**
@@ -131,6 +133,8 @@ function must<T extends Element>(root: ParentNode, selector: string): T {
 export class FieldsPanel {
   private readonly fields = new Map<FieldKey, FieldView>();
   private readonly preset: HTMLSelectElement;
+  /** The catalogue tools of the unit on screen, one tap each (absent from a page without them). */
+  private readonly chips: ToolChips | null;
   private readonly surfacePreset: HTMLSelectElement;
   /** The presets the surface box lists now (five-axis or waterline). */
   private presetsShown: readonly string[] = [];
@@ -175,6 +179,8 @@ export class FieldsPanel {
       const preset = PRESETS[Number(select.value)];
       if (preset) events.onPreset(preset);
     });
+    const chips = root.querySelector<HTMLElement>('[data-testid="tool-chips"]');
+    this.chips = chips === null ? null : new ToolChips(chips, events.onPreset);
   }
 
   private buildField(container: HTMLElement, key: FieldKey, events: FieldEvents): FieldView {
@@ -205,6 +211,7 @@ export class FieldsPanel {
     line.append(slider, input, unitLabel);
     row.append(labelElement, line, hint, error);
     container.append(row);
+    selectOnTouchFocus(input);
     input.addEventListener('input', () => events.onField(key, input.value, true));
     input.addEventListener('keydown', (e) => {
       if (e.key === 'Enter') events.onCommit();
@@ -311,6 +318,7 @@ export class FieldsPanel {
     const preset = presetOf(state);
     const chosen = preset === null ? 'custom' : String(PRESETS.indexOf(preset));
     if (this.preset.value !== chosen) this.preset.value = chosen;
+    this.chips?.render(state);
     // A plane has no radius and no axis: both are hidden (their values kept for the next cylinder).
     const axisSwitch = this.root.querySelector<HTMLElement>('[data-testid="surface-axis"]');
     if (axisSwitch) axisSwitch.hidden = plane || !cylinder;

@@ -13,7 +13,7 @@ import { html } from './dom';
 import { formatLen, formatLenUnit, formatSignedLen, formatSignedLenUnit } from './format';
 import type { Shown } from './freshness';
 import { curvedMeaning, OtherResults } from './resultsOther';
-import { curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
+import { CROSS_AXIS_NOTE, curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
 
 export { curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
 
@@ -32,6 +32,12 @@ function must<T extends Element>(root: ParentNode, selector: string): T {
   const found = root.querySelector<T>(selector);
   if (!found) throw new Error(`missing element ${selector}`);
   return found;
+}
+
+/** True when the reply answers a question on a cylinder whose axis runs across the feed. */
+function crossAxis(reply: OkReply | null): boolean {
+  const surface = reply?.request.input.surface;
+  return surface?.kind === 'cylinder' && surface.axis === 'cross';
 }
 
 export class ResultsPanel {
@@ -327,7 +333,8 @@ export class ResultsPanel {
       curvature === null
         ? ''
         : 'On a cylinder the procedures above are applied as on a plane (they ignore the curvature); the rows below them give the exact answer for a plane at the same input (the curvature ignored) and the usual correction 1/rho = 1/Reff + 1/Rs of each procedure with an effective radius, each beside the exact answer on the cylinder.';
-    const text = [noScallop, ...notes, reply ? lead : '', curved].filter((t) => t !== '').join(' ');
+    const across = curvature !== null && crossAxis(reply) ? CROSS_AXIS_NOTE : '';
+    const text = [noScallop, ...notes, reply ? lead : '', curved, across].filter((t) => t !== '').join(' ');
     if (this.notes.textContent !== text) this.notes.textContent = text;
   }
 

@@ -54,3 +54,12 @@ export function surfaceMeaning(surface: Surface, unit: LengthUnit): string {
     ? `On this ${side} cylinder (radius ${r}, axis along the feed: the passes run along it), L and the flank widths are arc lengths on the surface between the CC paths, and every height is measured radially, from the cylinder.`
     : `On this ${side} cylinder (radius ${r}, axis across the feed: the passes go around it and step along its axis), L and the flank widths are measured along the axis, and every height radially, from the cylinder.`;
 }
+
+/**
+ * Why, on a cylinder whose axis runs across the feed, each corrected row equals its procedure's own
+ * row: the correction combines the effective radius with the surface's radius in the section across
+ * the feed (compare.ts, approximations.ts combinedRadiusMm), and that section of such a cylinder is a
+ * straight line, so 1/Rs = 0 and rho = Reff.
+ */
+export const CROSS_AXIS_NOTE =
+  "With the cylinder's axis across the feed its section across the feed is a straight line (1/Rs = 0 there), so the correction leaves rho = Reff and each corrected row equals its procedure's row above.";

@@ -30,6 +30,11 @@ export interface TeachingOptions {
   readonly onAnswer?: () => void;
   /** The Machined surface view's simulation. */
   readonly surface: SurfaceSource;
+  /**
+   * The link asked for a view (`?view=`): once the views are built, scroll the page to them, unless
+   * the page is no longer at its top (the user scrolled, or the browser restored a position).
+   */
+  readonly reveal?: boolean;
 }
 
 export class TeachingLoader {
@@ -152,6 +157,7 @@ export class TeachingLoader {
       this.panel = new TeachingPanel(o.root, o.display, o.onLoadCondition, o.initialView, o.surface);
       this.panel.highlight(this.highlighted);
       this.draw();
+      if (o.reveal && window.scrollY === 0) o.root.scrollIntoView({ block: 'start' });
     });
   }
 }

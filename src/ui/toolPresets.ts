@@ -8,6 +8,8 @@ import type { CalculatorState } from './state';
 /** A tool preset: its name as a catalogue gives it (diameter D, corner radius), R and Rcr in mm. */
 export interface Preset {
   readonly label: string;
+  /** Its short name on a one-tap button (toolChips.ts): diameter and corner, e.g. `D6 R1`, `1/2 R.030`. */
+  readonly chip: string;
   /** The unit the catalogue sizes it in: metric tools, or inch tools (fractional diameters). */
   readonly sizedIn: 'mm' | 'in';
   readonly R: number;
@@ -15,8 +17,8 @@ export interface Preset {
 }
 
 /** An inch tool: diameter and corner radius in inches (R and Rcr kept in mm, exact: 1 in = 25.4 mm). */
-function inchTool(label: string, diameterIn: number, cornerIn: number): Preset {
-  return { label, sizedIn: 'in', R: (diameterIn * 254) / 20, Rcr: (cornerIn * 254) / 10 };
+function inchTool(label: string, chip: string, diameterIn: number, cornerIn: number): Preset {
+  return { label, chip, sizedIn: 'in', R: (diameterIn * 254) / 20, Rcr: (cornerIn * 254) / 10 };
 }
 
 /**
@@ -25,20 +27,20 @@ function inchTool(label: string, diameterIn: number, cornerIn: number): Preset {
  * (0.015, 0.030, 0.060, 0.125 in) and their ball ends.
  */
 export const PRESETS: readonly Preset[] = [
-  { label: 'D6, corner R1 (paper Tool 1)', sizedIn: 'mm', R: 3, Rcr: 1 },
-  { label: 'D12, corner R2 (paper Tool 2)', sizedIn: 'mm', R: 6, Rcr: 2 },
-  { label: 'D6, corner R0.5', sizedIn: 'mm', R: 3, Rcr: 0.5 },
-  { label: 'D10, corner R1', sizedIn: 'mm', R: 5, Rcr: 1 },
-  { label: 'D16, corner R3', sizedIn: 'mm', R: 8, Rcr: 3 },
-  inchTool('D1/4 in, corner R0.015 in', 0.25, 0.015),
-  inchTool('D1/4 in, corner R0.030 in', 0.25, 0.03),
-  inchTool('D1/4 in, ball end', 0.25, 0.125),
-  inchTool('D3/8 in, corner R0.030 in', 0.375, 0.03),
-  inchTool('D3/8 in, corner R0.060 in', 0.375, 0.06),
-  inchTool('D1/2 in, corner R0.030 in', 0.5, 0.03),
-  inchTool('D1/2 in, corner R0.060 in', 0.5, 0.06),
-  inchTool('D1/2 in, corner R0.125 in', 0.5, 0.125),
-  inchTool('D1/2 in, ball end', 0.5, 0.25),
+  { label: 'D6, corner R1 (paper Tool 1)', chip: 'D6 R1', sizedIn: 'mm', R: 3, Rcr: 1 },
+  { label: 'D12, corner R2 (paper Tool 2)', chip: 'D12 R2', sizedIn: 'mm', R: 6, Rcr: 2 },
+  { label: 'D6, corner R0.5', chip: 'D6 R0.5', sizedIn: 'mm', R: 3, Rcr: 0.5 },
+  { label: 'D10, corner R1', chip: 'D10 R1', sizedIn: 'mm', R: 5, Rcr: 1 },
+  { label: 'D16, corner R3', chip: 'D16 R3', sizedIn: 'mm', R: 8, Rcr: 3 },
+  inchTool('D1/4 in, corner R0.015 in', '1/4 R.015', 0.25, 0.015),
+  inchTool('D1/4 in, corner R0.030 in', '1/4 R.030', 0.25, 0.03),
+  inchTool('D1/4 in, ball end', '1/4 ball', 0.25, 0.125),
+  inchTool('D3/8 in, corner R0.030 in', '3/8 R.030', 0.375, 0.03),
+  inchTool('D3/8 in, corner R0.060 in', '3/8 R.060', 0.375, 0.06),
+  inchTool('D1/2 in, corner R0.030 in', '1/2 R.030', 0.5, 0.03),
+  inchTool('D1/2 in, corner R0.060 in', '1/2 R.060', 0.5, 0.06),
+  inchTool('D1/2 in, corner R0.125 in', '1/2 R.125', 0.5, 0.125),
+  inchTool('D1/2 in, ball end', '1/2 ball', 0.5, 0.25),
 ];
 
 /**

@@ -25,6 +25,16 @@ describe('tool presets in inches', () => {
     expect(new Set(inch)).toEqual(new Set(['D1/4 in', 'D3/8 in', 'D1/2 in']));
     expect(PRESETS.filter((p) => p.sizedIn === 'mm').length).toBeGreaterThanOrEqual(5);
   });
+
+  it("each has a short button name (toolChips.ts), unique, naming its label's diameter", () => {
+    const chips = PRESETS.map((p) => p.chip);
+    expect(new Set(chips).size).toBe(chips.length);
+    for (const p of PRESETS) {
+      expect(p.chip.length, p.chip).toBeLessThanOrEqual(9);
+      const diameter = p.chip.split(' ')[0] ?? '';
+      expect(p.label.startsWith(p.sizedIn === 'in' ? `D${diameter} in` : `${diameter},`), p.chip).toBe(true);
+    }
+  });
 });
 
 describe('the tool size as a diameter by default', () => {
