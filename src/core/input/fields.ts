@@ -391,6 +391,8 @@ export const FIELDS = {
   target: pageSetting('target', 'Given in forward mode', ['h', 'ra'] as const),
   view: pageSetting('view', 'Teaching view', ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'] as const),
   theme: pageSetting('theme', 'Theme', ['light', 'dark'] as const),
+  /** The projector's layout (the 3D scene and the open view fill the screen); the full page only, so no attribute. */
+  present: pageSetting('present', 'Presentation mode', ['1'] as const, false),
   // The element sets `embed` itself: no attribute.
   embed: pageSetting('embed', 'Embedded', ['1', 'true'] as const, false),
 } as const satisfies Readonly<Record<string, FieldSpec>>;
