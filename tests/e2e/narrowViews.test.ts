@@ -46,8 +46,9 @@ async function conditionCellProblems(page: Page): Promise<{ cells: number; probl
 }
 
 describe("the paper's tables on a narrow screen", () => {
-  it('at 390x844 and at 640 wide every condition cell has a size and readable text in view', async () => {
+  it('at 360, 390x844 and 640 wide every condition cell has a size and readable text in view', async () => {
     const pages: Array<[string, () => Promise<Page>]> = [
+      ['360', async () => (await site.open(`?${STATE}&view=tables`, { width: 360, height: 780 })).page],
       ['390', () => openPhone(`?${STATE}&view=tables`)],
       ['640', async () => (await site.open(`?${STATE}&view=tables`, { width: 640, height: 900 })).page],
     ];
