@@ -3,6 +3,8 @@ import './ui/style.css';
 import './ui/quickLookup.css';
 import './ui/toolShelf.css';
 import './ui/shopSheet.css';
+import './ui/present.css';
+import './ui/scrollCue.css';
 // After the stylesheet, so the printed sheet's rules win over the screen layout's.
 import './ui/print.css';
 import { CalculatorApp } from './ui/app';

@@ -285,14 +285,15 @@ describe("the page's URL takes every registry field under its parameter", () => 
         const parsed = parseUrl(search);
         expect(parsed.notices, `${id}=${value}`).toEqual([]);
         if (id === 'view') expect(parsed.view).toBe(value);
+        else if (id === 'present') expect(parsed.present).toBe(value);
         else if (id === 'embed') expect(parsed.embed).toBe(true);
         else if (id === 'theme')
           continue; // read by the theme (tests/ui/pageNames.test.ts)
         else if (value !== f.values?.[0] || id === 'surfaceAxis' || id === 'unit')
           expect(new URLSearchParams(toSearch(parsed.state)).get(f.url as string), `${id}=${value}`).toBe(value);
       }
-      // view: the page says so (app.ts); embed: anything else is not embedded; theme: tests/ui/pageNames.test.ts.
-      if (id === 'view' || id === 'embed' || id === 'theme') continue;
+      // view, present: the page says so (app.ts, present.ts); embed: anything else is not embedded; theme: tests/ui/pageNames.test.ts.
+      if (id === 'view' || id === 'present' || id === 'embed' || id === 'theme') continue;
       expect(parseUrl(`?${f.url}=zzz`).notices.join(' '), id).toContain(`${f.url}="zzz" is not`);
     }
   });
@@ -419,7 +420,10 @@ describe('the embed element takes every state the URL takes (public/embed.js, ge
     const params = new Function(`return ${literal};`)() as Record<string, string>;
     expect(Object.entries(params)).toEqual(EMBED_ATTRIBUTES.map(([a, p]) => [a, p]));
     for (const attribute of Object.keys(params)) expect(attribute).toBe(attribute.toLowerCase());
-    // Every parameter the page reads, but `embed`, which the element sets itself.
-    expect(new Set(Object.values(params))).toEqual(new Set(URL_PARAMS.filter((p) => p !== FIELDS.embed.url)));
+    // Every parameter the page reads, but `embed`, which the element sets itself, and `present`, a
+    // projector's layout of the full page (an embedded page ignores it).
+    expect(new Set(Object.values(params))).toEqual(
+      new Set(URL_PARAMS.filter((p) => p !== FIELDS.embed.url && p !== FIELDS.present.url)),
+    );
   });
 });

@@ -26,6 +26,7 @@ import { Highlighter } from './highlight';
 import { plainLengths } from './lengthFields';
 import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
+import { PresentMode, parsePresent } from './present';
 import { buildRequest, fieldMessages } from './request';
 import { ResultBar } from './resultBar';
 import { type QuestionKind, ResultsPanel } from './results';
@@ -129,7 +130,18 @@ export class CalculatorApp {
     const theme = parseTheme(window.location.search);
     startTheme(theme);
     if (theme.override) extra[FIELDS.theme.url] = theme.override;
-    this.url = new UrlState(extra, root.querySelector<HTMLAnchorElement>('[data-testid="open-full"]'));
+    // Presentation mode: the full page's only (an embed ignores it); in the URL while on.
+    const present = embed ? { on: false, notice: null } : parsePresent(parsed.present);
+    this.url = new UrlState(
+      present.on ? { ...extra, [FIELDS.present.url]: FIELDS.present.values[0] } : extra,
+      root.querySelector<HTMLAnchorElement>('[data-testid="open-full"]'),
+    );
+    this.present = new PresentMode(
+      must(root, '[data-testid="present-toggle"]'),
+      must(root, '[data-testid="present-inputs"]'),
+      { changed: (on) => this.url.setExtra(FIELDS.present.url, on ? FIELDS.present.values[0] : null) },
+    );
+    this.present.set(present.on);
     this.notice = new Notice(must(root, '[data-testid="notice"]'));
     this.results = new ResultsPanel(root);
     this.resultBar = new ResultBar(root);
@@ -236,11 +248,14 @@ export class CalculatorApp {
     if (parsed.view !== null && requested === undefined)
       notices.push(`view="${parsed.view}" is not one of ${VIEW_IDS.join(', ')}.`);
     if (theme.notice !== null) notices.push(theme.notice);
+    if (present.notice !== null) notices.push(present.notice);
     if (notices.length > 0) this.notice.show(linkNotice(notices), 0);
     this.change(this.state);
   }
 
   private readonly highlighter: Highlighter;
+  /** Presentation mode (present.ts): the scene and the open view fill the window. */
+  private readonly present: PresentMode;
   /** Saved tools and imported tool libraries. */
   private readonly shelf: ToolShelf;
   /** The 3D view's section (marked `cylinder` while the scene shows one: its legend follows). */

@@ -163,6 +163,8 @@ export interface ParsedUrl {
   readonly notices: readonly string[];
   readonly embed: boolean;
   readonly view: string | null;
+  /** `present=` as the link gives it (app.ts takes `1`, says so of anything else), or null. */
+  readonly present: string | null;
 }
 
 /**
@@ -233,6 +235,7 @@ export function parseUrl(search: string): ParsedUrl {
     notices,
     embed,
     view: params.get(param('view')),
+    present: params.get(param('present')),
   };
 }
 

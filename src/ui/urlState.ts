@@ -15,12 +15,17 @@ export const URL_SETTLE_MS = 200;
 
 export class UrlState {
   private pending: CalculatorState | null = null;
+  /** The state the URL holds or is about to hold (null before the first write). */
+  private latest: CalculatorState | null = null;
   private timer: ReturnType<typeof setTimeout> | null = null;
+  /** The page's settings beside the state (`view`, `theme`, `present`...): a copy, changed by `setExtra`. */
+  private readonly extra: Record<string, string>;
 
   constructor(
-    private readonly extra: Readonly<Record<string, string>>,
+    extra: Readonly<Record<string, string>>,
     private readonly fullLink: HTMLAnchorElement | null,
   ) {
+    this.extra = { ...extra };
     document.addEventListener('visibilitychange', () => {
       if (document.visibilityState === 'hidden') this.flush();
     });
@@ -28,9 +33,22 @@ export class UrlState {
 
   write(state: CalculatorState): void {
     this.pending = state;
+    this.latest = state;
     if (this.fullLink) this.fullLink.href = toSearch(state);
     if (this.timer !== null) clearTimeout(this.timer);
     this.timer = setTimeout(() => this.flush(), URL_SETTLE_MS);
+  }
+
+  /**
+   * Sets (or, with null, removes) a page setting of the URL, such as `present=1`, and writes the
+   * URL at once: a setting changes on a click or a key, not at every step of a drag.
+   */
+  setExtra(name: string, value: string | null): void {
+    if (value === null) delete this.extra[name];
+    else this.extra[name] = value;
+    if (this.latest === null) return;
+    this.pending = this.latest;
+    this.flush();
   }
 
   private flush(): void {

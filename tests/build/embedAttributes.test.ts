@@ -2,7 +2,8 @@
  * The `<path-interval-calculator>` element takes every state the page's URL takes: each URL
  * parameter the page actually reads (recorded while the page's readers parse links, not listed
  * here) is one the element forwards from an attribute (PARAMS in public/embed.js, generated from
- * the field registry by src/build/embedAttributes.ts), but `embed`, which the element sets itself.
+ * the field registry by src/build/embedAttributes.ts), but `embed`, which the element sets itself,
+ * and `present`, the full page's projector layout.
  * A parameter added to the page's reading, or dropped from the generation, fails here.
  */
 import { readdirSync, readFileSync } from 'node:fs';
@@ -56,13 +57,15 @@ const LINKS = [
 ];
 
 describe('the embed element takes every URL parameter the page reads', () => {
-  it("every parameter the page's readers ask for is an attribute's parameter of embed.js (but embed)", () => {
+  it("every parameter the page's readers ask for is an attribute's parameter of embed.js (but embed and present)", () => {
     const { params } = embedScriptTables();
     const forwarded = new Set(Object.values(params));
     const read = paramsRead(LINKS);
     // The recording saw the page read (not an empty pass).
     expect(read.size).toBeGreaterThan(10);
-    const notForwarded = [...read].filter((p) => p !== FIELDS.embed.url && !forwarded.has(p));
+    // `embed` (the element sets it) and `present` (the projector's layout, full page only) have no attribute.
+    const fullPageOnly = new Set<string>([FIELDS.embed.url, FIELDS.present.url]);
+    const notForwarded = [...read].filter((p) => !fullPageOnly.has(p) && !forwarded.has(p));
     expect(notForwarded).toEqual([]);
     // And the element forwards nothing the page does not read (each attribute reaches the page).
     expect([...forwarded].filter((p) => !read.has(p))).toEqual([]);

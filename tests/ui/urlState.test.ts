@@ -61,4 +61,25 @@ describe('UrlState', () => {
     vi.advanceTimersByTime(URL_SETTLE_MS);
     expect(writes).toHaveLength(1);
   });
+
+  it('a page setting (present=1) is written at once with the latest state, and removed again', () => {
+    const url = new UrlState({ view: 'chart' }, null);
+    url.setExtra('present', '1');
+    expect(writes).toEqual([]); // no state yet: nothing to write
+    url.write(withH('0.07'));
+    vi.advanceTimersByTime(URL_SETTLE_MS);
+    expect(new URLSearchParams(writes[0]).get('present')).toBe('1');
+    url.setExtra('present', null);
+    expect(writes).toHaveLength(2);
+    const params = new URLSearchParams(writes[1]);
+    expect(params.has('present')).toBe(false);
+    expect(params.get('view')).toBe('chart');
+    expect(params.get('h')).toBe('0.07');
+    // A state waiting to be written goes with the setting, once.
+    url.write(withH('0.08'));
+    url.setExtra('present', '1');
+    expect(new URLSearchParams(writes[2]).get('h')).toBe('0.08');
+    vi.advanceTimersByTime(URL_SETTLE_MS);
+    expect(writes).toHaveLength(3);
+  });
 });

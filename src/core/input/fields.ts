@@ -392,6 +392,8 @@ export const FIELDS = {
   view: pageSetting('view', 'Teaching view', ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'] as const),
   /** Light, dark, or auto (the system's colour scheme, as without it; the embed element resolves it to its host page's). */
   theme: pageSetting('theme', 'Theme', ['light', 'dark', 'auto'] as const),
+  /** The projector's layout (the 3D scene and the open view fill the screen); the full page only, so no attribute. */
+  present: pageSetting('present', 'Presentation mode', ['1'] as const, false),
   // The element sets `embed` itself: no attribute.
   embed: pageSetting('embed', 'Embedded', ['1', 'true'] as const, false),
 } as const satisfies Readonly<Record<string, FieldSpec>>;

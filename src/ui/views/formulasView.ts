@@ -7,6 +7,7 @@ import mathml from 'virtual:formula-mathml';
 import { unitSymbol } from '../../core/input/units';
 import { PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import { formatSignedLen } from '../format';
+import { ScrollCues } from '../scrollCue';
 import { html, type TeachingView, untilted, type ViewContext } from './common';
 import { formulaSlotValues } from './formulaSlots';
 import { FORMULA_TEMPLATES, slotClass } from './formulaTemplates';
@@ -15,6 +16,8 @@ export class FormulasView implements TeachingView {
   readonly id = 'formulas';
   readonly title = 'Formulas';
   readonly element = html('div', { class: 'view-formulas', 'data-testid': 'formulas' });
+  /** The equations' boxes, shaded at an edge with more of a formula beyond it (scrollCue.ts). */
+  private readonly cues = new ScrollCues();
 
   update(ctx: ViewContext): void {
     const { forward, exact, models } = ctx.data;
@@ -30,6 +33,7 @@ export class FormulasView implements TeachingView {
       models,
       unit: ctx.unit,
     });
+    this.cues.clear();
     this.element.replaceChildren();
     const tilted = !untilted(ctx);
     const surface = forward.surface;
@@ -49,12 +53,13 @@ export class FormulasView implements TeachingView {
       if (!slots) continue;
       const info = PROCEDURES[key];
       const box = html('section', { class: 'formula', 'data-procedure': key });
-      // Focusable: a wide equation scrolls sideways in a narrow embed, and keys must reach it.
+      // Focusable: a wide equation scrolls sideways on a phone or in a narrow embed, and keys must
+      // reach it; the edge with more beyond it is shaded.
       const maths = html('div', {
         class: 'maths',
         tabindex: '0',
         role: 'group',
-        'aria-label': `${info.label}: equations`,
+        'aria-label': `${info.label}: equations (a wide one scrolls sideways)`,
       });
       maths.innerHTML = mathml[key]
         .filter((_, i) => {
@@ -69,7 +74,10 @@ export class FormulasView implements TeachingView {
         tilted && info.leadOnly
           ? `${info.assumes} Lead-only model: applied with the lead angle alone, the tilt ignored.`
           : info.assumes;
-      box.append(html('h3', {}, info.label), html('p', {}, about), maths);
+      const frame = html('div', { class: 'maths-frame' });
+      frame.append(maths);
+      box.append(html('h3', {}, info.label), html('p', {}, about), frame);
+      this.cues.watch(maths, frame);
       this.element.append(box);
     }
     const missing = PROCEDURE_KEYS.filter((k) => !values[k]);

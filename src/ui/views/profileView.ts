@@ -188,8 +188,17 @@ export class ProfileView implements TeachingView {
     const changed = w !== this.plotWidthPx || (this.grownPx === null && h !== this.baseHeightPx);
     this.plotWidthPx = w;
     if (this.grownPx === null) this.baseHeightPx = h;
-    return changed;
+    // Presentation mode (present.css) asks for texts at least this high; read with the size, as
+    // entering or leaving it resizes the plot.
+    const min = Number.parseFloat(getComputedStyle(this.plot).getPropertyValue('--svg-text-min-px'));
+    const minTextPx = Number.isFinite(min) && min > 0 ? min : 0;
+    const textChanged = minTextPx !== this.minTextPx;
+    this.minTextPx = minTextPx;
+    return changed || textChanged;
   }
+
+  /** The least on-screen height of the plot's texts (px; 0: none, they are a 45th of its width). */
+  private minTextPx = 0;
 
   private legend(): HTMLElement {
     const legend = html('p', { class: 'view-legend' });
@@ -340,7 +349,8 @@ export class ProfileView implements TeachingView {
 
   /** A box is shown: texts keep their on-screen size whatever the zoom, and the scale bars follow. */
   private boxShown(b: Box): void {
-    const size = b.w / 45;
+    // A 45th of the box's width (as many pixels as a 45th of the plot's), or more to reach minTextPx.
+    const size = this.plotWidthPx > 0 ? b.w * Math.max(1 / 45, this.minTextPx / this.plotWidthPx) : b.w / 45;
     for (const t of this.layer.querySelectorAll('text')) t.setAttribute('font-size', String(size));
     if (this.ctx !== null || this.pageCtx !== null)
       drawScaleBars(this.bars, b, this.plotAspect(), this.shownK, (this.pageCtx ?? this.ctx)?.unit ?? 'mm', size);

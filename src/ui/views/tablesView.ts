@@ -5,6 +5,7 @@
 import { PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import type { PaperTableRow } from '../../core/procedures/teaching';
 import { formatLen } from '../format';
+import { ScrollCues } from '../scrollCue';
 import { html, type TeachingView, type ViewContext } from './common';
 
 type Key = 'threeD' | 'sekine' | 'redonnet' | 'bedi';
@@ -21,6 +22,8 @@ export class TablesView implements TeachingView {
   readonly element = html('div', { class: 'view-tables', 'data-testid': 'paper-tables' });
   private rows: readonly PaperTableRow[] = [];
   private readonly why: HTMLElement;
+  /** Each table's box, shaded at an edge with more of the table beyond it (a narrow phone). */
+  private readonly cues = new ScrollCues();
 
   constructor(onLoad: (c: { R: number; Rcr: number; rho: number; h: number }) => void) {
     const note = html(
@@ -103,13 +106,31 @@ export class TablesView implements TeachingView {
     return table;
   }
 
+  /**
+   * A table in a box that scrolls sideways when the screen is narrower than the table (360 px),
+   * focusable so keys reach it, its edge with more beyond it shaded (scrollCue.ts).
+   */
+  private scrolling(table: HTMLTableElement, name: string): HTMLElement {
+    const box = html('div', {
+      class: 'table-scroll',
+      tabindex: '0',
+      role: 'group',
+      'aria-label': `${name} (scrolls sideways when wider than the screen)`,
+    });
+    box.append(table);
+    const frame = html('div', { class: 'table-frame' });
+    frame.append(box);
+    this.cues.watch(box, frame);
+    return frame;
+  }
+
   /** The tables are recomputed in the worker; they are fixed conditions, so they are built once. */
   update(ctx: ViewContext): void {
     if (this.rows.length === 0) {
       this.rows = ctx.data.tables;
       this.why.after(
-        this.table('Tables 2-3: L/2 [mm] for h', 'half'),
-        this.table('Tables 4-5: h [mm] at the printed 3D L/2', 'height'),
+        this.scrolling(this.table('Tables 2-3: L/2 [mm] for h', 'half'), 'Tables 2-3'),
+        this.scrolling(this.table('Tables 4-5: h [mm] at the printed 3D L/2', 'height'), 'Tables 4-5'),
       );
     }
     this.markSelected(ctx);
