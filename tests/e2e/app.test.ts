@@ -35,10 +35,10 @@ describe('calculator page in headless Chromium', () => {
       },
     );
     const out = JSON.parse(cli.stdout);
-    expect(await text(page, 'result-exact-half')).toBe(out.exact.halfInterval.toFixed(4));
-    expect(await text(page, 'result-sekine-half')).toBe(out.sekine.halfInterval.toFixed(4));
-    expect(await text(page, 'result-redonnet-half')).toBe(out.redonnet.halfInterval.toFixed(4));
-    expect(await text(page, 'result-bedi-half')).toBe(out.bedi.halfInterval.toFixed(4));
+    expect(await text(page, 'result-exact-half')).toBe(`${out.exact.halfInterval.toFixed(4)} mm`);
+    expect(await text(page, 'result-sekine-half')).toBe(`${out.sekine.halfInterval.toFixed(4)} mm`);
+    expect(await text(page, 'result-redonnet-half')).toBe(`${out.redonnet.halfInterval.toFixed(4)} mm`);
+    expect(await text(page, 'result-bedi-half')).toBe(`${out.bedi.halfInterval.toFixed(4)} mm`);
     expect(await text(page, 'result-exact-interval')).toBe(`${out.exact.interval.toFixed(4)} mm`);
     const workers = page.workers().map((w) => w.url());
     expect(workers.some((u) => u.startsWith(site.url()) && /solver\.worker/.test(u))).toBe(true);
@@ -119,7 +119,7 @@ describe('calculator page in headless Chromium', () => {
     const expected = compareForward(
       forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5.2, tiltAngleDeg: 0 }, 'one-way', 0.05),
     );
-    await expect.poll(() => text(page, 'result-exact-half')).toBe(expected.exact.halfIntervalMm.toFixed(4));
+    await expect.poll(() => text(page, 'result-exact-half')).toBe(`${expected.exact.halfIntervalMm.toFixed(4)} mm`);
     expect(await text(page, 'result-exact-half')).not.toBe(before);
     await expect.poll(() => new URL(page.url()).searchParams.get('rho')).toBe('5.2');
     await expect.poll(() => frames(page)).toBeGreaterThan(framesBefore);
@@ -148,23 +148,23 @@ describe('calculator page in headless Chromium', () => {
     // Fixing the fields brings the results back.
     await page.getByTestId('input-Rcr').fill('1');
     await page.getByTestId('input-h').fill('0.05');
-    await expect.poll(() => text(page, 'result-exact-half')).toBe('1.4436'); // notes' exact column: 1.443592
+    await expect.poll(() => text(page, 'result-exact-half')).toBe('1.4436 mm'); // notes' exact column: 1.443592
     expect(await page.getByTestId('scene').getAttribute('class')).not.toMatch(/stale/);
     expect(errors).toEqual([]);
   });
 
   it('the URL holds the state: round trip, unit switch, and bad values fall back with a notice', async () => {
     const { page } = await open('?R=6&Rcr=2&rho=10&h=0.1&unit=mm');
-    expect(await text(page, 'result-exact-half')).toBe('2.1690'); // notes' exact column: 2.168977
+    expect(await text(page, 'result-exact-half')).toBe('2.1690 mm'); // notes' exact column: 2.168977
     const historyAtLoad = await page.evaluate(() => window.history.length);
     await page.locator('input[name="unit"][value="in"]').check();
     await expect.poll(() => new URL(page.url()).searchParams.get('unit')).toBe('in');
     const url = page.url();
     expect(new URL(url).searchParams.get('R')).toBe('0.23622');
     // 2.16898 mm = 0.08539 in, shown with 5 decimals.
-    await expect.poll(() => text(page, 'result-exact-half')).toMatch(/^0\.0853\d$/);
+    await expect.poll(() => text(page, 'result-exact-half')).toMatch(/^0\.0853\d in$/);
     const inches = await text(page, 'result-exact-half');
-    expect(Math.abs(Number(inches) * 25.4 - 2.16898)).toBeLessThan(2e-4);
+    expect(Math.abs(Number.parseFloat(inches) * 25.4 - 2.16898)).toBeLessThan(2e-4);
     const historyLength = await page.evaluate(() => window.history.length);
     const again = await site.browser().newPage();
     await again.goto(url);

@@ -69,15 +69,17 @@ describe('teaching views in headless Chromium', () => {
     const summary = page.getByTestId('chart-summary');
     await expect
       .poll(() => summary.textContent())
-      .toMatch(new RegExp(`Exact \\(3D\\) ${c.exact.intervalMm.toFixed(4)}`));
+      .toMatch(new RegExp(`Exact \\(3D\\) ${c.exact.intervalMm.toFixed(4)} mm`));
     if (c.approximations.sekine.ok)
-      expect(await summary.textContent()).toContain(`Sekine et al. ${c.approximations.sekine.intervalMm.toFixed(4)}`);
+      expect(await summary.textContent()).toContain(
+        `Sekine et al. ${c.approximations.sekine.intervalMm.toFixed(4)} mm`,
+      );
     await page.getByTestId('slider-rho').focus();
     await page.keyboard.press('ArrowRight');
     const c2 = compareForward(tool(5.1, 0.05));
     await expect
       .poll(() => summary.textContent())
-      .toMatch(new RegExp(`rho = 5\\.1 deg.*Exact \\(3D\\) ${c2.exact.intervalMm.toFixed(4)}`));
+      .toMatch(new RegExp(`rho = 5\\.1 deg.*Exact \\(3D\\) ${c2.exact.intervalMm.toFixed(4)} mm`));
     expect(await chart.locator('.chart-title').first().textContent()).toMatch(/current rho = 5\.1/);
     // The dashed current-rho marker: on the default log axis 5.1 deg sits near the middle of
     // 0.5-89 deg (log ratio 0.45); on a linear axis near the left edge (0.05).
@@ -113,7 +115,7 @@ describe('teaching views in headless Chromium', () => {
     await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('6');
     expect(await page.getByTestId('input-rho').inputValue()).toBe('10');
     expect(await page.getByTestId('input-h').inputValue()).toBe('0.05');
-    await expect.poll(() => page.getByTestId('result-exact-half').textContent()).toBe('1.5580'); // notes' exact column: 1.558019
+    await expect.poll(() => page.getByTestId('result-exact-half').textContent()).toBe('1.5580 mm'); // notes' exact column: 1.558019
   });
 
   it('stepper: steps through the trace in the scene and reaches the converged P_hp', async () => {
