@@ -6,6 +6,7 @@ import { spawnSync } from 'node:child_process';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { compareForward, compareInverse, forwardInput, inverseInput } from '../../src/core/index';
+import { formatLenUnit } from '../../src/ui/format';
 import {
   animationFrames,
   frames,
@@ -204,10 +205,12 @@ describe('calculator page in headless Chromium', () => {
     const expected = compareInverse(
       inverseInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 3),
     );
-    await expect.poll(() => text(page, 'table-exact-h')).toBe(expected.exact.cuspHeightMm.toFixed(5));
+    await expect
+      .poll(() => text(page, 'table-exact-h'))
+      .toBe(formatLenUnit(expected.exact.cuspHeightMm, 'mm', 'height'));
     const bedi = expected.approximations.bedi;
     expect(bedi.ok).toBe(true);
-    if (bedi.ok) expect(await text(page, 'result-bedi-h')).toBe(bedi.scallopHeightMm.toFixed(5));
+    if (bedi.ok) expect(await text(page, 'result-bedi-h')).toBe(formatLenUnit(bedi.scallopHeightMm, 'mm', 'height'));
     await expect.poll(() => new URL(page.url()).searchParams.get('L')).toBe('3');
     expect(new URL(page.url()).searchParams.get('mode')).toBe('inverse');
     // A step-over wider than the tool is named in terms of L, the field the user typed.
@@ -225,7 +228,7 @@ describe('calculator page in headless Chromium', () => {
     void solver.evaluate(() => (globalThis as unknown as { close(): void }).close()).catch(() => undefined);
     await closed;
     await page.getByTestId('input-h').fill('0.1');
-    await expect.poll(() => text(page, 'result-exact-half'), { timeout: 10_000 }).toBe('1.8921'); // notes: 1.892088
+    await expect.poll(() => text(page, 'result-exact-half'), { timeout: 10_000 }).toBe('1.8921 mm'); // notes: 1.892088
     expect(await page.getByTestId('notice').textContent()).toMatch(/solver was restarted/);
     const starts = await page.evaluate(() =>
       (window as unknown as { __pathInterval: { workerStarts(): number } }).__pathInterval.workerStarts(),
@@ -238,7 +241,7 @@ describe('calculator page in headless Chromium', () => {
     const halfAt = (h: number) =>
       compareForward(
         forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', h),
-      ).exact.halfIntervalMm.toFixed(4);
+      ).exact.halfIntervalMm.toFixed(4) + ' mm';
     const final = halfAt(0.08);
     // Every number the page writes into L/2 from now on, in order, with the field's value and
     // whether the results were marked stale at that moment.

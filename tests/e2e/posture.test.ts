@@ -15,6 +15,7 @@ import {
   type ToolInput,
   traceProcedure,
 } from '../../src/core/index';
+import { formatLenUnit } from '../../src/ui/format';
 import { frames, SHOTS, sceneIdle, urlWrites, useSite } from './harness';
 
 const site = useSite('docs/posture');
@@ -163,9 +164,9 @@ describe('tool posture on the page', () => {
       .poll(dims)
       .toEqual(
         expect.arrayContaining([
-          'h = 0.05000',
-          `h' = ${(z.otherCuspHeightMm ?? 0).toFixed(5)}`,
-          `L = ${z.intervalMm.toFixed(4)}`,
+          'h = 50.00 \u00b5m',
+          `h' = ${formatLenUnit(z.otherCuspHeightMm ?? 0, 'mm', 'height')}`,
+          `L = ${z.intervalMm.toFixed(4)} mm`,
         ]),
       );
   });

@@ -142,7 +142,9 @@ describe('Machined surface view in headless Chromium', () => {
         });
     });
     for (const h of ['0.01', '0.02', '0.03', '0.04', '0.035', '0.045']) await page.getByTestId('input-h').fill(h);
-    await expect.poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 }).toMatch(/exact 0\.045000 mm/);
+    await expect
+      .poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 })
+      .toMatch(/exact 45\.000 \u00b5m/);
     let n = comparisonNumbers((await line.textContent()) ?? '');
     expect(Math.abs(n.sim - n.exact)).toBeLessThanOrEqual(n.bound + 1e-6);
     const statuses = await page.evaluate(() => (window as unknown as { __statuses: string[] }).__statuses);
@@ -152,7 +154,7 @@ describe('Machined surface view in headless Chromium', () => {
     ).toBe(true);
     // Every simulation asked is answered: no late reply to an earlier input can replace this one.
     await workerIdle(page, SIMULATION_WORKER);
-    expect(await line.textContent()).toMatch(/exact 0\.045000 mm/);
+    expect(await line.textContent()).toMatch(/exact 45\.000 \u00b5m/);
     // Invalid: no number of the earlier inputs stays on screen.
     await page.getByTestId('input-h').fill('-1');
     await expect.poll(() => line.textContent()).toBe('');
@@ -164,7 +166,7 @@ describe('Machined surface view in headless Chromium', () => {
     const zz = exactForward(forwardInput({ ...TOOL, tiltAngleDeg: 4 }, 'zigzag', 0.05)).cuspHeightMm;
     await expect
       .poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 })
-      .toMatch(new RegExp(`exact ${zz.toFixed(6)} mm.*4 passes`));
+      .toMatch(new RegExp(`exact ${(1000 * zz).toFixed(3)} \u00b5m.*4 passes`));
     n = comparisonNumbers((await line.textContent()) ?? '');
     expect(Math.abs(n.sim - n.exact)).toBeLessThanOrEqual(n.bound + 1e-6);
     await page.screenshot({ path: `${SHOTS}/view-surface-zigzag.png`, fullPage: true });
@@ -175,7 +177,7 @@ describe('Machined surface view in headless Chromium', () => {
       .poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 })
       .toMatch(/Simulated cusp .* 4 passes/);
     const trace = (await page.getByTestId('surface-trace').locator('text').allTextContents()).join(' ');
-    expect(trace).toMatch(/Ra 0\.00[78]\d+ mm/);
+    expect(trace).toMatch(/Ra [78]\.\d{3} \u00b5m/);
   });
 
   it('?view=surface&embed=1 shows just that view, without horizontal scrolling at 480 px wide', async () => {

@@ -225,7 +225,7 @@ describe('numbers answer the inputs on screen', () => {
     await expect
       .poll(() => page.getByTestId('teaching').getAttribute('class'), { timeout: 10_000 })
       .not.toMatch(/stale/);
-    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain('L/2 = 1.8921');
+    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain('L/2 = 1.8921 mm');
   });
 });
 
@@ -321,7 +321,7 @@ describe('units and digits in every view', () => {
         await p.getByTestId('stepper-first').click();
         expect(await p.getByTestId('stepper-caption').textContent()).toMatch(/Rcr = 0\.03000 in\./);
       }
-      if (view === 'formulas') expect(content).toMatch(/Lengths in in, angles in degrees/);
+      if (view === 'formulas') expect(content).toMatch(/Lengths in in \(small ones in thou\), angles in degrees/);
     }
     // The paper's tables stay in the paper's mm, and say so.
     const t = (await open(`${q}&view=tables`)).page;

@@ -170,6 +170,10 @@ describe('every shown length carries its unit (1440 x 900, light)', () => {
 
     page = await openQuiet(`${MM_PLANE}&surfaceRadius=20&surfaceAxis=feed`, 'profile');
     await expectUnits(page, 'mm convex cylinder profile');
+    page = await openQuiet(`${MM_PLANE}&feedRadius=80&crossRadius=40`, 'chart');
+    await expectUnits(page, 'mm doubly curved point chart');
+    page = await openQuiet('?R=3&Rcr=1&h=0.005&unit=mm&machine=3axis&slope=30', 'chart');
+    await expectUnits(page, 'mm three-axis chart');
 
     // Inverse: tiny deviations in µm, never `+1.981e-7`.
     page = await openQuiet('?R=3&Rcr=1&rho=5&L=0.5&mode=inverse&unit=mm', 'tables');

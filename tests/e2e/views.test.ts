@@ -31,7 +31,7 @@ describe('teaching views in headless Chromium', () => {
     for (const key of ['sekine', 'redonnet', 'bedi', 'osculating', 'cornerBall'])
       expect(await view.locator(`polyline.curve-${key}`).count()).toBe(6);
     const half = exactHalfIntervalMm(tool(5, 0.05)).toFixed(4);
-    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half}`);
+    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half} mm`);
     expect(await page.getByTestId('profile-scale').textContent()).toMatch(/vertical scale exaggerated x5/);
     const home = await view.locator('svg').getAttribute('viewBox');
     await page.getByTestId('profile-cusp').click();
@@ -45,7 +45,7 @@ describe('teaching views in headless Chromium', () => {
     await page.getByTestId('slider-h').focus();
     await page.keyboard.press('ArrowRight');
     const half2 = exactHalfIntervalMm(tool(5, 0.051)).toFixed(4);
-    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half2}`);
+    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half2} mm`);
     expect(await view.locator('polygon.scallop').getAttribute('points')).not.toBe(scallopBefore);
     // A tiny scallop: "auto" exaggerates more, and says so; a fixed choice overrides it.
     await page.getByTestId('input-h').fill('0.005');
@@ -173,10 +173,10 @@ describe('teaching views in headless Chromium', () => {
     const last = sekine.locator('math').last();
     await expect
       .poll(() => last.textContent())
-      .toMatch(new RegExp(`=${String(Number(c.approximations.sekine.halfIntervalMm.toPrecision(5)))}$`));
+      .toMatch(new RegExp(`=${String(Number(c.approximations.sekine.halfIntervalMm.toPrecision(5)))} mm$`));
     expect(
       await page.getByTestId('formulas').locator('section[data-procedure="exact"] math').last().textContent(),
-    ).toMatch(/=1\.5$/);
+    ).toMatch(/=1\.5 mm$/);
   });
 
   it('hovering or selecting a procedure highlights it in the profile and the results table', async () => {
