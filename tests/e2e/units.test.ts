@@ -165,6 +165,7 @@ describe('every shown length carries its unit (1440 x 900, light)', () => {
 
     page = await openQuiet(MM_PLANE, 'formulas');
     await expectUnits(page, 'mm plane formulas');
+    await page.getByTestId('formulas').screenshot({ path: `${SHOTS}/units-formulas-mm.png` });
     page = await openQuiet(MM_PLANE, 'chart');
     await expectUnits(page, 'mm plane chart');
 
@@ -181,6 +182,10 @@ describe('every shown length carries its unit (1440 x 900, light)', () => {
     const bedi = await page.locator('.procedures tr[data-procedure="bedi"] td').allTextContents();
     expect(bedi[1]).toBe('+0.0001981 \u00b5m');
     await expectUnits(page, 'mm inverse tables');
+    // A number and its unit on one line in the results table, and still no horizontal scrolling.
+    expect(await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth)).toBe(
+      0,
+    );
     await page.screenshot({ path: `${SHOTS}/units-mm-inverse.png` });
   }, 240_000);
 
