@@ -79,8 +79,10 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
       scallopHeightMm: 0.05,
     }).intervalMm;
     const cross = page.getByTestId('chart-radius-cross');
-    await expect.poll(() => page.getByTestId('chart-radius-cross-value-concave').textContent()).toBe(exact.toFixed(4));
-    expect(await page.getByTestId('chart-radius-feed-value-convex').textContent()).toBe(exact.toFixed(4));
+    await expect
+      .poll(() => page.getByTestId('chart-radius-cross-value-concave').textContent())
+      .toBe(`${exact.toFixed(4)} mm`);
+    expect(await page.getByTestId('chart-radius-feed-value-convex').textContent()).toBe(`${exact.toFixed(4)} mm`);
     expect(await cross.locator('svg').getAttribute('aria-label')).toMatch(/log axis/);
     expect(await page.getByTestId('chart-radius-cross-gaps').textContent()).toMatch(
       /No concave L for \|Rc\| from about [\d.]+ mm to [\d.]+ mm \(Rf held convex 40 mm\): the tool gouges/,
