@@ -1,8 +1,15 @@
 /**
  * Numbers as the page shows them, on top of the core's units module: lengths in the user's unit
- * to a fixed resolution (0.1 um in mm, 10 uin in inch; heights one digit finer, the stepper's
- * convergence two finer) and never fewer than four significant digits, so a micro tool reads
- * 4.472e-5 rather than 0.0000. Never NaN, never -0: a missing value is a dash.
+ * to a fixed resolution (0.1 µm in mm, 10 µin in inch; heights one digit finer, the stepper's
+ * convergence two finer) and never fewer than four significant digits. Never NaN, never -0: a
+ * missing value is a dash.
+ *
+ * The page's one rule for a length it shows (issue 21, "Units everywhere"): every length carries
+ * its unit ({@link formatLenUnit}: mm or in, µm below 0.1 mm, thou below 0.01 in, never exponent
+ * notation), and every roughness Rz, Ra, Rq is in µm in mm and in µin in inch
+ * ({@link formatRoughness}). The micro sign is U+00B5 (`µm`, `µin`) everywhere. The bare number
+ * ({@link formatLen}) is for what is copied, where the unit is the page's (copy.ts), and for
+ * cells under a header that names the unit.
  */
 import {
   formatPercent,
@@ -12,9 +19,17 @@ import {
   NO_VALUE,
   radToDeg,
   readableLengthUnit,
+  roughnessUnit,
 } from '../core/input/units';
 
 export type Resolution = 'length' | 'height' | 'fine';
+
+/**
+ * Below this magnitude, in the unit a length or roughness is shown in, it reads as zero: a length
+ * or a deviation of 1e-10 µm (1e-13 mm) is float noise of the solvers, and plain decimals of it
+ * would run to dozens of zeros.
+ */
+const SHOWN_ZERO_BELOW = 1e-10;
 
 const DECIMALS: Readonly<Record<Resolution, Readonly<Record<LengthUnit, number>>>> = {
   length: { mm: 4, in: 5 },
@@ -50,8 +65,9 @@ export function formatSignedLen(mm: number | null, unit: LengthUnit, resolution:
 
 /**
  * A length with its unit symbol, in the unit it reads best in (readableLengthUnit: below 0.1 mm in
- * µm, below 0.01 in in thou) at the same resolution and at least four significant digits; a dash
- * alone when there is no value. `signed` puts `+` before positive values.
+ * µm, below 0.01 in in thou) at the same resolution and at least four significant digits, in plain
+ * decimals (never exponent notation: 1.981e-7 mm reads `0.1981 µm`); zero reads in the user's unit,
+ * never `-0`; a dash alone when there is no value. `signed` puts `+` before positive values.
  */
 export function formatLenUnit(
   mm: number | null,
@@ -60,10 +76,27 @@ export function formatLenUnit(
   signed = false,
 ): string {
   if (mm === null || !Number.isFinite(mm)) return NO_VALUE;
+  if (mm !== 0 && Math.abs(fromMm(mm, unit)) * 1000 < SHOWN_ZERO_BELOW)
+    return formatLenUnit(0, unit, resolution, signed);
   const shown = readableLengthUnit(mm, unit);
   const v = fromMm(mm, unit) * shown.perUserUnit;
   const decimals = Math.max(0, DECIMALS[resolution][unit] - Math.round(Math.log10(shown.perUserUnit)));
-  return `${formatSignificant(v, { digits: digitsFor(v, decimals), signed })} ${shown.symbol}`;
+  return `${formatSignificant(v, { digits: digitsFor(v, decimals), signed, exponentBelow: 0 })} ${shown.symbol}`;
+}
+
+/**
+ * A roughness (Rz, Ra, Rq, or a height compared with them) given in mm, with its symbol: in µm
+ * when the user works in mm and in µin in inch (roughnessUnit), whatever its size, at the `fine`
+ * resolution (0.001 µm, 0.1 µin) and at least four significant digits, plain decimals, never `-0`;
+ * a dash for null or a non-finite value. Used by the results' roughness rows and the Machined
+ * surface view alike, so the two read the same.
+ */
+export function formatRoughness(mm: number | null, unit: LengthUnit): string {
+  if (mm === null || !Number.isFinite(mm)) return NO_VALUE;
+  const shown = roughnessUnit(unit);
+  const v = Math.abs(mm * shown.perMm) < SHOWN_ZERO_BELOW ? 0 : mm * shown.perMm;
+  const decimals = unit === 'mm' ? 3 : 1;
+  return `${formatSignificant(v, { digits: digitsFor(v, decimals), exponentBelow: 0 })} ${shown.symbol}`;
 }
 
 /** A signed length with its unit symbol (formatLenUnit with `+` before positive values). */

@@ -1,4 +1,4 @@
-import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
+import { formatPercent, type LengthUnit, NO_VALUE } from '../core/input/units';
 import {
   APPROXIMATION_KEYS,
   CURVATURE_ROWS,
@@ -10,7 +10,7 @@ import { type CurvedReply, isSolveReply, type PageReply, type ThreeAxisReply } f
 import type { CurvatureRow, ProcedureRow, SolveMode, SolveReply } from '../worker/protocol';
 import { setCopyValue } from './copy';
 import { html } from './dom';
-import { formatLen, formatLenUnit, formatSignedLen, formatSignedLenUnit } from './format';
+import { formatLen, formatLenUnit, formatSignedLenUnit } from './format';
 import type { Shown } from './freshness';
 import { curvedMeaning, OtherResults } from './resultsOther';
 import { CROSS_AXIS_NOTE, curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
@@ -128,7 +128,7 @@ export class ResultsPanel {
       );
       this.set('result-percent-diameter', '');
       // L/2 along the surface (in the hidden five-axis details: what answers, for any reader of the page).
-      this.set('result-exact-half', t === null ? NO_VALUE : formatLen(t.answer.intervalMm / 2, unit));
+      this.set('result-exact-half', t === null ? NO_VALUE : formatLenUnit(t.answer.intervalMm / 2, unit));
       this.setMeaning('');
       this.table(t, unit, drawMode, false);
       return;
@@ -144,7 +144,7 @@ export class ResultsPanel {
     const value = (mm: number | null | undefined, resolution: 'length' | 'height' = 'length') =>
       e === null ? NO_VALUE : formatLenUnit(mm ?? null, unit, resolution);
     this.headline.textContent = forward ? value(e?.intervalMm) : value(e?.cuspHeightMm, 'height');
-    this.set('result-exact-half', e === null ? NO_VALUE : formatLen(e.halfIntervalMm, unit));
+    this.set('result-exact-half', e === null ? NO_VALUE : formatLenUnit(e.halfIntervalMm, unit));
     this.set('result-width-right', value(e?.widthRightMm));
     this.set('result-width-left', value(e?.widthLeftMm));
     this.set('result-contact-offset', e === null ? NO_VALUE : formatSignedLenUnit(e.contactOffsetMm, unit));
@@ -215,7 +215,7 @@ export class ResultsPanel {
       current ? formatLen(forward ? e.intervalMm : e.cuspHeightMm, unit, forward ? 'length' : 'height') : null,
       unit,
     );
-    this.set('result-exact-half', e === null ? NO_VALUE : formatLen(e.intervalMm / 2, unit));
+    this.set('result-exact-half', e === null ? NO_VALUE : formatLenUnit(e.intervalMm / 2, unit));
     const half = this.root.querySelector('[data-testid="result-exact-half"]');
     if (half) setCopyValue(half, current ? formatLen(e.intervalMm / 2, unit) : null, unit);
     this.set('result-width-right', value(e?.halfWidthRightMm));
@@ -275,11 +275,11 @@ export class ResultsPanel {
   }
 
   private classicTable(reply: OkReply | null, unit: LengthUnit, mode: SolveMode, leadOnly: boolean): void {
-    const u = unitSymbol(unit);
     const forward = mode === 'forward';
+    // Each length cell carries its unit (format.ts): a tiny deviation reads in µm, never 1e-7.
     const head = forward
-      ? ['Procedure', `L/2 [${u}]`, `Deviation [${u}]`, 'Deviation [%]', `Scallop it leaves [${u}]`]
-      : ['Procedure', `h [${u}]`, `Deviation [${u}]`, 'Deviation [%]'];
+      ? ['Procedure', 'L/2', 'Deviation', 'Deviation [%]', 'Scallop it leaves']
+      : ['Procedure', 'h', 'Deviation', 'Deviation [%]'];
     const headRow = html('tr');
     for (const h of head) headRow.append(html('th', { scope: 'col' }, h));
     this.thead.replaceChildren(headRow);
@@ -307,11 +307,11 @@ export class ResultsPanel {
       const none = reply === null ? NO_VALUE : 'n/a';
       cell(
         `${prefix}-${forward ? 'half' : 'h'}`,
-        row?.valueMm == null ? none : formatLen(row.valueMm, unit, resolution),
+        row?.valueMm == null ? none : formatLenUnit(row.valueMm, unit, resolution),
       );
-      cell(null, row?.deviationMm == null ? NO_VALUE : formatSignedLen(row.deviationMm, unit, resolution));
+      cell(null, row?.deviationMm == null ? NO_VALUE : formatSignedLenUnit(row.deviationMm, unit, resolution));
       cell(null, row?.deviationPercent == null ? NO_VALUE : formatPercent(row.deviationPercent));
-      if (forward) cell(`${prefix}-real-h`, formatLen(row?.realScallopMm ?? null, unit, 'height'));
+      if (forward) cell(`${prefix}-real-h`, formatLenUnit(row?.realScallopMm ?? null, unit, 'height'));
       if (row?.note) {
         const text = noteText(key, row.note, unit);
         tr.title = text;
@@ -367,11 +367,11 @@ export class ResultsPanel {
       };
       cell(
         `result-${row.key}-${forward ? 'half' : 'h'}`,
-        row.valueMm === null ? 'n/a' : formatLen(row.valueMm, unit, resolution),
+        row.valueMm === null ? 'n/a' : formatLenUnit(row.valueMm, unit, resolution),
       );
-      cell(null, row.deviationMm === null ? NO_VALUE : formatSignedLen(row.deviationMm, unit, resolution));
+      cell(null, row.deviationMm === null ? NO_VALUE : formatSignedLenUnit(row.deviationMm, unit, resolution));
       cell(null, row.deviationPercent === null ? NO_VALUE : formatPercent(row.deviationPercent));
-      if (forward) cell(`result-${row.key}-real-h`, formatLen(row.realScallopMm, unit, 'height'));
+      if (forward) cell(`result-${row.key}-real-h`, formatLenUnit(row.realScallopMm, unit, 'height'));
       if (row.note && !(row.note.kind === 'reason' && row.note.text === '')) {
         const text = curvatureNoteText(row.key, row.note, unit);
         tr.title = text;

@@ -6,14 +6,14 @@
  * Lxy or dz, copyable; then L along the surface, the cusp and the equivalent lead and tilt).
  */
 
-import { formatPercent, type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
+import { formatPercent, type LengthUnit, NO_VALUE } from '../core/input/units';
 import { CORRECTED_KEYS, CURVATURE_ROWS, correctedRowKey } from '../core/procedures/procedures';
 import type { DoublyCurvedRow } from '../core/surfaces/doublyCurved';
 import type { CurvedReply, ThreeAxisReply } from '../worker/pageProtocol';
 import type { SolveMode } from '../worker/protocol';
 import { setCopyValue } from './copy';
 import { html } from './dom';
-import { formatDeg, formatLen, formatLenUnit, formatSignedLen } from './format';
+import { formatDeg, formatLen, formatLenUnit, formatSignedLenUnit } from './format';
 
 type CurvedOk = Extract<CurvedReply, { ok: true }>;
 type ThreeAxisOk = Extract<ThreeAxisReply, { ok: true }>;
@@ -121,9 +121,9 @@ export class OtherResults {
 
   /** The doubly curved comparison rows (forward), under the table's head; the notes they add. */
   curvedTable(thead: HTMLElement, tbody: HTMLElement, reply: CurvedOk | null, unit: LengthUnit): string[] {
-    const u = unitSymbol(unit);
     const headRow = html('tr');
-    for (const h of ['Model', `L [${u}]`, `Deviation [${u}]`, 'Deviation [%]', `Scallop it leaves [${u}]`])
+    // Each length cell carries its unit (format.ts), as the plane's table.
+    for (const h of ['Model', 'L', 'Deviation', 'Deviation [%]', 'Scallop it leaves'])
       headRow.append(html('th', { scope: 'col' }, h));
     thead.replaceChildren(headRow);
     tbody.replaceChildren();
@@ -138,15 +138,15 @@ export class OtherResults {
       };
       const exactL = reply?.exact.intervalMm ?? null;
       if (row === 'exact' || row === null) {
-        cell(`result-curved-${id}-L`, row === null ? NO_VALUE : formatLen(exactL, unit));
+        cell(`result-curved-${id}-L`, row === null ? NO_VALUE : formatLenUnit(exactL, unit));
         cell(null, NO_VALUE);
         cell(null, NO_VALUE);
-        cell(null, row === null ? NO_VALUE : formatLen(reply?.exact.cuspHeightMm ?? null, unit, 'height'));
+        cell(null, row === null ? NO_VALUE : formatLenUnit(reply?.exact.cuspHeightMm ?? null, unit, 'height'));
       } else if (row.ok) {
-        cell(`result-curved-${id}-L`, formatLen(row.intervalMm, unit));
-        cell(null, formatSignedLen(row.deviationMm, unit));
+        cell(`result-curved-${id}-L`, formatLenUnit(row.intervalMm, unit));
+        cell(null, formatSignedLenUnit(row.deviationMm, unit));
         cell(null, formatPercent(row.deviationPercent));
-        cell(`result-curved-${id}-real-h`, formatLen(row.realScallopMm, unit, 'height'));
+        cell(`result-curved-${id}-real-h`, formatLenUnit(row.realScallopMm, unit, 'height'));
       } else {
         cell(`result-curved-${id}-L`, 'n/a');
         for (let i = 0; i < 3; i++) cell(null, NO_VALUE);

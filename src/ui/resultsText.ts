@@ -3,16 +3,15 @@
  * cylinder; lengths in the user's unit. Pure.
  */
 
-import { type LengthUnit, unitSymbol } from '../core/input/units';
+import type { LengthUnit } from '../core/input/units';
 import { CURVATURE_ROWS, type CurvatureRowKey, PROCEDURES, type ProcedureKey } from '../core/procedures/procedures';
 import type { Surface } from '../core/surfaces/cylinder';
 import type { ProcedureNote } from '../worker/protocol';
-import { formatLen, formatLenUnit } from './format';
+import { formatLenUnit } from './format';
 
 /** A procedure's note in words, lengths in the user's unit. */
 export function noteText(key: ProcedureKey, note: ProcedureNote, unit: LengthUnit): string {
   const label = PROCEDURES[key].shortLabel;
-  const u = unitSymbol(unit);
   switch (note.kind) {
     case 'reason':
       return note.text;
@@ -21,27 +20,26 @@ export function noteText(key: ProcedureKey, note: ProcedureNote, unit: LengthUni
       const limit =
         note.shape === 'circle' ? 'Reff' : note.quantity === 'h' ? 'its height Rlong sin(rho)' : 'its half-width Rlong';
       const where = note.quantity === 'h' ? 'above the widest point of' : 'wider than';
-      return `${label}: ${what} = ${formatLen(note.valueMm, unit, 'height')} ${u} is ${where} its ${note.shape} (${limit} = ${formatLen(note.limitMm, unit)} ${u}).`;
+      return `${label}: ${what} = ${formatLenUnit(note.valueMm, unit, 'height')} is ${where} its ${note.shape} (${limit} = ${formatLenUnit(note.limitMm, unit)}).`;
     }
     case 'wall':
-      return `${label}: its step-over L = ${formatLen(note.intervalMm, unit)} ${u} is not below the widest step-over that leaves a scallop (${formatLen(note.maxIntervalMm, unit)} ${u}): passes this far apart leave a wall.`;
+      return `${label}: its step-over L = ${formatLenUnit(note.intervalMm, unit)} is not below the widest step-over that leaves a scallop (${formatLenUnit(note.maxIntervalMm, unit)}): passes this far apart leave a wall.`;
   }
 }
 
 /** A comparison row's note in words (the plane's answer, or a procedure corrected for the curvature). */
 export function curvatureNoteText(key: CurvatureRowKey, note: ProcedureNote, unit: LengthUnit): string {
   const label = CURVATURE_ROWS[key].shortLabel;
-  const u = unitSymbol(unit);
   switch (note.kind) {
     case 'reason':
       return note.text;
     case 'beyond-model': {
       const what = note.quantity === 'h' ? 'h' : 'L/2';
       const where = note.quantity === 'h' ? 'above the widest point of' : 'wider than';
-      return `${label}: ${what} = ${formatLen(note.valueMm, unit, 'height')} ${u} is ${where} its combined circle (rho = ${formatLen(note.limitMm, unit)} ${u}).`;
+      return `${label}: ${what} = ${formatLenUnit(note.valueMm, unit, 'height')} is ${where} its combined circle (rho = ${formatLenUnit(note.limitMm, unit)}).`;
     }
     case 'wall':
-      return `${label}: its step-over L = ${formatLen(note.intervalMm, unit)} ${u} is not below the widest step-over that leaves a scallop on this cylinder (${formatLen(note.maxIntervalMm, unit)} ${u}): passes this far apart leave a wall.`;
+      return `${label}: its step-over L = ${formatLenUnit(note.intervalMm, unit)} is not below the widest step-over that leaves a scallop on this cylinder (${formatLenUnit(note.maxIntervalMm, unit)}): passes this far apart leave a wall.`;
   }
 }
 

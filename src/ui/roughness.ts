@@ -8,7 +8,7 @@
 import { formatPercent, type LengthUnit, NO_VALUE } from '../core/input/units';
 import type { PageReply } from '../worker/pageProtocol';
 import { html } from './dom';
-import { formatLenUnit } from './format';
+import { formatLenUnit, formatRoughness } from './format';
 import type { Shown } from './freshness';
 
 /** Why the rows show dashes for three-axis machining. */
@@ -55,11 +55,13 @@ export class RoughnessPanel {
     // Three-axis machining's roughness is not computed: dashes (the panel's note says so).
     const reply = shown.kind === 'current' && shown.reply.ok && 'roughness' in shown.reply ? shown.reply : null;
     const r = reply?.roughness ?? null;
+    // Roughness in µm (mm) or µin (inch), as the Machined surface view gives it (format.ts).
+    const rough = (mm: number | undefined) => (r === null || mm === undefined ? NO_VALUE : formatRoughness(mm, unit));
     const len = (mm: number | undefined) =>
       r === null || mm === undefined ? NO_VALUE : formatLenUnit(mm, unit, 'fine');
-    this.set('result-rz', len(r?.rzMm));
-    this.set('result-ra', len(r?.raMm));
-    this.set('result-rq', len(r?.rqMm));
+    this.set('result-rz', rough(r?.rzMm));
+    this.set('result-ra', rough(r?.raMm));
+    this.set('result-rq', rough(r?.rqMm));
     const fromRa = reply?.request.mode === 'ra' || reply?.request.mode === 'curved-ra';
     this.heightRow.hidden = !fromRa;
     this.set('result-ra-height', fromRa ? len(r?.scallopHeightMm) : NO_VALUE);
@@ -68,7 +70,7 @@ export class RoughnessPanel {
       ? THREE_AXIS_NOTE
       : r === null || r.ruleErrorPercent === null
         ? ''
-        : `Rule of thumb Ra ~ h/4 = ${formatLenUnit(r.ruleOfThumbRaMm, unit, 'fine')}: ${formatPercent(r.ruleErrorPercent)} % against the exact Ra.`;
+        : `Rule of thumb Ra ~ h/4 = ${formatRoughness(r.ruleOfThumbRaMm, unit)}: ${formatPercent(r.ruleErrorPercent)} % against the exact Ra.`;
     if (this.rule.textContent !== text) this.rule.textContent = text;
   }
 }

@@ -6,6 +6,7 @@ import { spawnSync } from 'node:child_process';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { compareForward, compareInverse, forwardInput, inverseInput } from '../../src/core/index';
+import { formatLenUnit } from '../../src/ui/format';
 import {
   animationFrames,
   frames,
@@ -35,10 +36,10 @@ describe('calculator page in headless Chromium', () => {
       },
     );
     const out = JSON.parse(cli.stdout);
-    expect(await text(page, 'result-exact-half')).toBe(out.exact.halfInterval.toFixed(4));
-    expect(await text(page, 'result-sekine-half')).toBe(out.sekine.halfInterval.toFixed(4));
-    expect(await text(page, 'result-redonnet-half')).toBe(out.redonnet.halfInterval.toFixed(4));
-    expect(await text(page, 'result-bedi-half')).toBe(out.bedi.halfInterval.toFixed(4));
+    expect(await text(page, 'result-exact-half')).toBe(`${out.exact.halfInterval.toFixed(4)} mm`);
+    expect(await text(page, 'result-sekine-half')).toBe(`${out.sekine.halfInterval.toFixed(4)} mm`);
+    expect(await text(page, 'result-redonnet-half')).toBe(`${out.redonnet.halfInterval.toFixed(4)} mm`);
+    expect(await text(page, 'result-bedi-half')).toBe(`${out.bedi.halfInterval.toFixed(4)} mm`);
     expect(await text(page, 'result-exact-interval')).toBe(`${out.exact.interval.toFixed(4)} mm`);
     const workers = page.workers().map((w) => w.url());
     expect(workers.some((u) => u.startsWith(site.url()) && /solver\.worker/.test(u))).toBe(true);
@@ -119,7 +120,7 @@ describe('calculator page in headless Chromium', () => {
     const expected = compareForward(
       forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5.2, tiltAngleDeg: 0 }, 'one-way', 0.05),
     );
-    await expect.poll(() => text(page, 'result-exact-half')).toBe(expected.exact.halfIntervalMm.toFixed(4));
+    await expect.poll(() => text(page, 'result-exact-half')).toBe(`${expected.exact.halfIntervalMm.toFixed(4)} mm`);
     expect(await text(page, 'result-exact-half')).not.toBe(before);
     await expect.poll(() => new URL(page.url()).searchParams.get('rho')).toBe('5.2');
     await expect.poll(() => frames(page)).toBeGreaterThan(framesBefore);
@@ -148,23 +149,23 @@ describe('calculator page in headless Chromium', () => {
     // Fixing the fields brings the results back.
     await page.getByTestId('input-Rcr').fill('1');
     await page.getByTestId('input-h').fill('0.05');
-    await expect.poll(() => text(page, 'result-exact-half')).toBe('1.4436'); // notes' exact column: 1.443592
+    await expect.poll(() => text(page, 'result-exact-half')).toBe('1.4436 mm'); // notes' exact column: 1.443592
     expect(await page.getByTestId('scene').getAttribute('class')).not.toMatch(/stale/);
     expect(errors).toEqual([]);
   });
 
   it('the URL holds the state: round trip, unit switch, and bad values fall back with a notice', async () => {
     const { page } = await open('?R=6&Rcr=2&rho=10&h=0.1&unit=mm');
-    expect(await text(page, 'result-exact-half')).toBe('2.1690'); // notes' exact column: 2.168977
+    expect(await text(page, 'result-exact-half')).toBe('2.1690 mm'); // notes' exact column: 2.168977
     const historyAtLoad = await page.evaluate(() => window.history.length);
     await page.locator('input[name="unit"][value="in"]').check();
     await expect.poll(() => new URL(page.url()).searchParams.get('unit')).toBe('in');
     const url = page.url();
     expect(new URL(url).searchParams.get('R')).toBe('0.23622');
     // 2.16898 mm = 0.08539 in, shown with 5 decimals.
-    await expect.poll(() => text(page, 'result-exact-half')).toMatch(/^0\.0853\d$/);
+    await expect.poll(() => text(page, 'result-exact-half')).toMatch(/^0\.0853\d in$/);
     const inches = await text(page, 'result-exact-half');
-    expect(Math.abs(Number(inches) * 25.4 - 2.16898)).toBeLessThan(2e-4);
+    expect(Math.abs(Number.parseFloat(inches) * 25.4 - 2.16898)).toBeLessThan(2e-4);
     const historyLength = await page.evaluate(() => window.history.length);
     const again = await site.browser().newPage();
     await again.goto(url);
@@ -204,10 +205,12 @@ describe('calculator page in headless Chromium', () => {
     const expected = compareInverse(
       inverseInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 3),
     );
-    await expect.poll(() => text(page, 'table-exact-h')).toBe(expected.exact.cuspHeightMm.toFixed(5));
+    await expect
+      .poll(() => text(page, 'table-exact-h'))
+      .toBe(formatLenUnit(expected.exact.cuspHeightMm, 'mm', 'height'));
     const bedi = expected.approximations.bedi;
     expect(bedi.ok).toBe(true);
-    if (bedi.ok) expect(await text(page, 'result-bedi-h')).toBe(bedi.scallopHeightMm.toFixed(5));
+    if (bedi.ok) expect(await text(page, 'result-bedi-h')).toBe(formatLenUnit(bedi.scallopHeightMm, 'mm', 'height'));
     await expect.poll(() => new URL(page.url()).searchParams.get('L')).toBe('3');
     expect(new URL(page.url()).searchParams.get('mode')).toBe('inverse');
     // A step-over wider than the tool is named in terms of L, the field the user typed.
@@ -225,7 +228,7 @@ describe('calculator page in headless Chromium', () => {
     void solver.evaluate(() => (globalThis as unknown as { close(): void }).close()).catch(() => undefined);
     await closed;
     await page.getByTestId('input-h').fill('0.1');
-    await expect.poll(() => text(page, 'result-exact-half'), { timeout: 10_000 }).toBe('1.8921'); // notes: 1.892088
+    await expect.poll(() => text(page, 'result-exact-half'), { timeout: 10_000 }).toBe('1.8921 mm'); // notes: 1.892088
     expect(await page.getByTestId('notice').textContent()).toMatch(/solver was restarted/);
     const starts = await page.evaluate(() =>
       (window as unknown as { __pathInterval: { workerStarts(): number } }).__pathInterval.workerStarts(),
@@ -238,7 +241,7 @@ describe('calculator page in headless Chromium', () => {
     const halfAt = (h: number) =>
       compareForward(
         forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', h),
-      ).exact.halfIntervalMm.toFixed(4);
+      ).exact.halfIntervalMm.toFixed(4) + ' mm';
     const final = halfAt(0.08);
     // Every number the page writes into L/2 from now on, in order, with the field's value and
     // whether the results were marked stale at that moment.

@@ -19,7 +19,7 @@ import {
 } from '../../src/core/surfaces/doublyCurved';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
 import { waterlineForward } from '../../src/core/threeAxis/waterlineRevolution';
-import { formatLen, formatLenUnit } from '../../src/ui/format';
+import { formatLen, formatLenUnit, formatRoughness } from '../../src/ui/format';
 import { THREE_AXIS_NOTE } from '../../src/ui/roughness';
 import { sliderRanges } from '../../src/ui/sliders';
 import { parseUrl } from '../../src/ui/state';
@@ -84,10 +84,10 @@ describe.each([
       scallopHeightMm: 0.05,
     });
     if (!c.plane.ok || !c.cylinderAlong.ok) throw new Error('rows');
-    expect(await text(page, 'result-curved-plane-L')).toBe(formatLen(c.plane.intervalMm, 'mm'));
-    expect(await text(page, 'result-curved-cylinderAlong-L')).toBe(formatLen(c.cylinderAlong.intervalMm, 'mm'));
+    expect(await text(page, 'result-curved-plane-L')).toBe(formatLenUnit(c.plane.intervalMm, 'mm'));
+    expect(await text(page, 'result-curved-cylinderAlong-L')).toBe(formatLenUnit(c.cylinderAlong.intervalMm, 'mm'));
     expect(await text(page, 'result-curved-cylinderAlong-real-h')).toBe(
-      formatLen(c.cylinderAlong.realScallopMm, 'mm', 'height'),
+      formatLenUnit(c.cylinderAlong.realScallopMm, 'mm', 'height'),
     );
     await expect.poll(() => urlWrites(page)).toBeGreaterThan(0);
     await expect.poll(() => new URL(page.url()).searchParams.get('crossRadius')).toBe('40');
@@ -172,9 +172,9 @@ describe('roughness, a target Ra and the sliders at a doubly curved point; three
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(e, 'mm'));
     const c = compareDoublyCurved({ ...TOOL, pattern: 'one-way', ...radii, scallopHeightMm: 0.05 });
     const r = doublyCurvedRoughness(doublyCurvedSolver(TOOL, radii), 'one-way', c.exact);
-    await expect.poll(() => text(page, 'result-ra')).toBe(formatLenUnit(r.raMm, 'mm', 'fine'));
-    expect(await text(page, 'result-rz')).toBe(formatLenUnit(r.rzMm, 'mm', 'fine'));
-    expect(await text(page, 'result-rq')).toBe(formatLenUnit(r.rqMm, 'mm', 'fine'));
+    await expect.poll(() => text(page, 'result-ra')).toBe(formatRoughness(r.raMm, 'mm'));
+    expect(await text(page, 'result-rz')).toBe(formatRoughness(r.rzMm, 'mm'));
+    expect(await text(page, 'result-rq')).toBe(formatRoughness(r.rqMm, 'mm'));
     // The h slider's top is this point's limit (not the plane's), as the field's message states it.
     const state = parseUrl('?R=3&Rcr=1&rho=5&h=0.05&feedRadius=80&crossRadius=-40&unit=mm').state;
     expect(await page.getByTestId('slider-h').getAttribute('max')).toBe(sliderRanges(state).h.max);

@@ -23,7 +23,7 @@ import { formatInputNumber, fromMm } from '../../src/core/input/units';
 import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
 import { headerInUnit } from '../../src/core/output/lookupUnits';
 import { scallopHeightForRaMm } from '../../src/core/roughness/roughness';
-import { formatLen, formatLenUnit } from '../../src/ui/format';
+import { formatLenUnit, formatSignedLenUnit } from '../../src/ui/format';
 import { paintedFraction, SHOTS, STRICT_CSP, useSite } from './harness';
 
 const site = useSite('docs/cylinder', { build: 'production', headers: { 'Content-Security-Policy': STRICT_CSP } });
@@ -91,13 +91,13 @@ describe('curved surfaces on the page', () => {
     // The comparison rows: the plane's answer (curvature ignored) and the corrected procedures.
     const k = compareForward(feed).curvature;
     if (k === null || !k.plane.ok || !k.corrected.redonnet.ok) throw new Error('rows apply');
-    expect(await text(page, 'result-plane-half')).toBe(formatLen(k.plane.halfIntervalMm, 'mm'));
+    expect(await text(page, 'result-plane-half')).toBe(formatLenUnit(k.plane.halfIntervalMm, 'mm'));
     expect(await text(page, 'result-redonnetCorrected-half')).toBe(
-      formatLen(k.corrected.redonnet.halfIntervalMm, 'mm'),
+      formatLenUnit(k.corrected.redonnet.halfIntervalMm, 'mm'),
     );
     expect(await page.locator('tr[data-curvature="plane"] th').textContent()).toBe('Plane, exact (curvature ignored)');
     const planeRow = await page.locator('tr[data-curvature="plane"] td').allTextContents();
-    expect(planeRow[1]).toBe(`+${formatLen(k.plane.deviationMm / 2, 'mm')}`);
+    expect(planeRow[1]).toBe(formatSignedLenUnit(k.plane.deviationMm / 2, 'mm'));
     expect(await text(page, 'surface-meaning')).toMatch(/convex cylinder .* arc lengths on the surface/);
     await expect.poll(() => new URL(page.url()).searchParams.get('surfaceRadius')).toBe('20');
     expect(new URL(page.url()).searchParams.get('surfaceAxis')).toBe('feed');
@@ -258,7 +258,9 @@ describe('curved surfaces on the page', () => {
       );
       await expect
         .poll(() => view.locator('text.dim-text').allTextContents())
-        .toEqual(expect.arrayContaining([`L = ${formatLen(e.intervalMm, 'mm')}${axis === 'feed' ? ' (arc)' : ''}`]));
+        .toEqual(
+          expect.arrayContaining([`L = ${formatLenUnit(e.intervalMm, 'mm')}${axis === 'feed' ? ' (arc)' : ''}`]),
+        );
       await view.screenshot({ path: `${SHOTS}/cylinder-profile-${axis}.png` });
       // The scene: the cusps on the h pseudo surface, the legend for a cylinder, something drawn.
       const labels = () =>
@@ -283,7 +285,7 @@ describe('curved surfaces on the page', () => {
       await page.getByRole('tab', { name: 'L against lead and tilt' }).click();
       await expect
         .poll(() => text(page, 'chart-summary'))
-        .toMatch(new RegExp(`Exact \\(3D\\) ${formatLen(e.intervalMm, 'mm').replace('.', '\\.')}.*cylinder's`));
+        .toMatch(new RegExp(`Exact \\(3D\\) ${formatLenUnit(e.intervalMm, 'mm').replace('.', '\\.')}.*cylinder's`));
       expect(await violations()).toEqual([]);
       expect(errors).toEqual([]);
     }

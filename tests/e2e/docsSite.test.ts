@@ -71,7 +71,7 @@ describe('example documentation site (MkDocs)', () => {
       await page.locator(selector).scrollIntoViewIfNeeded();
       const frame = await embedded(page, selector, drawn);
       expect(await frame.evaluate(() => document.documentElement.dataset.theme), selector).toBe(theme);
-      expect(await frame.getByTestId('result-exact-half').textContent()).toMatch(/^1\.44\d+$/);
+      expect(await frame.getByTestId('result-exact-half').textContent()).toMatch(/^1\.44\d+ mm$/);
       // The iframe follows the posted height: equal to the content, no inner scrollbar.
       await expect
         .poll(async () => (await frameHeight(page, selector)) - (await contentHeight(frame)), { timeout: 15_000 })

@@ -138,7 +138,7 @@ describe('the page ends on the answer to the inputs on screen (issue 17)', () =>
     const current = async (h: number) => {
       await expect
         .poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 })
-        .toMatch(new RegExp(`^Simulated cusp .* against exact ${h.toFixed(6)} mm`));
+        .toMatch(new RegExp(`^Simulated cusp .* against exact ${(1000 * h).toFixed(3)} \u00b5m`));
       expect(await page.getByTestId('surface-status').isVisible()).toBe(false);
       expect(await page.getByTestId('surface-view').getAttribute('class')).not.toMatch(/stale/);
     };

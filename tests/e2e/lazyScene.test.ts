@@ -19,10 +19,10 @@ describe('the 3D scene loads after the first result', () => {
     });
     await page.goto(`${site.url()}?R=3&Rcr=1&rho=5&h=0.05&unit=mm`);
     const half = page.getByTestId('result-exact-half');
-    await expect.poll(() => half.textContent()).toBe('1.4436'); // L/2 = 1.443592 mm (README's worked example)
+    await expect.poll(() => half.textContent()).toBe('1.4436 mm'); // L/2 = 1.443592 mm (README's worked example)
     expect(await page.getByTestId('scene-canvas').count()).toBe(0);
     await page.getByTestId('input-h').fill('0.02');
-    await expect.poll(() => half.textContent()).toMatch(/^0\.\d{4}$/);
+    await expect.poll(() => half.textContent()).toMatch(/^0\.\d{4} mm$/);
     expect(held.length).toBe(1);
     for (const route of held) await route.continue();
     await page.getByTestId('scene-canvas').waitFor();

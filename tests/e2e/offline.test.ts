@@ -28,7 +28,7 @@ describe('offline after the first visit', () => {
     );
     await expect
       .poll(() => page.getByTestId('result-exact-half').textContent())
-      .toBe(expected.exact.halfIntervalMm.toFixed(4));
+      .toBe(`${expected.exact.halfIntervalMm.toFixed(4)} mm`);
     // Another address of the page (another state in the query) opens offline too.
     await page.goto(`${site.url()}?R=5&Rcr=1&rho=10&h=0.02&unit=mm&view=profile`);
     await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();

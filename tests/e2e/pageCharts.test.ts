@@ -39,12 +39,12 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
       if (!r.ok) throw new Error('refused');
       return r.value.horizontalStepMm;
     };
-    expect(await page.getByTestId('chart-slope-value-step').textContent()).toBe(lxy(30).toFixed(4));
+    expect(await page.getByTestId('chart-slope-value-step').textContent()).toBe(`${lxy(30).toFixed(4)} mm`);
     const x30 = await markerX(page, 'chart-slope');
     await page.getByTestId('comparison-chart').screenshot({ path: `${SHOTS}/view-chart-slope.png` });
     await page.getByTestId('input-slope').fill('60');
     await page.getByTestId('input-slope').press('Enter');
-    await expect.poll(() => page.getByTestId('chart-slope-value-step').textContent()).toBe(lxy(60).toFixed(4));
+    await expect.poll(() => page.getByTestId('chart-slope-value-step').textContent()).toBe(`${lxy(60).toFixed(4)} mm`);
     const x60 = await markerX(page, 'chart-slope');
     // The axis runs 0 to 90 degrees: the mark moves right by a third of it.
     expect(x60).toBeGreaterThan(x30);
@@ -79,8 +79,10 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
       scallopHeightMm: 0.05,
     }).intervalMm;
     const cross = page.getByTestId('chart-radius-cross');
-    await expect.poll(() => page.getByTestId('chart-radius-cross-value-concave').textContent()).toBe(exact.toFixed(4));
-    expect(await page.getByTestId('chart-radius-feed-value-convex').textContent()).toBe(exact.toFixed(4));
+    await expect
+      .poll(() => page.getByTestId('chart-radius-cross-value-concave').textContent())
+      .toBe(`${exact.toFixed(4)} mm`);
+    expect(await page.getByTestId('chart-radius-feed-value-convex').textContent()).toBe(`${exact.toFixed(4)} mm`);
     expect(await cross.locator('svg').getAttribute('aria-label')).toMatch(/log axis/);
     expect(await page.getByTestId('chart-radius-cross-gaps').textContent()).toMatch(
       /No concave L for \|Rc\| from about [\d.]+ mm to [\d.]+ mm \(Rf held convex 40 mm\): the tool gouges/,
@@ -98,7 +100,7 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
     expect(await view.locator('polyline.curve-exact').count()).toBe(3);
     for (const key of ['plane', 'cylinderAlong', 'cylinderAcross'])
       expect(await view.locator(`polyline.comparison-mark[data-curvature="${key}"]`).count(), key).toBe(1);
-    expect(await view.locator('text.dim-text').allTextContents()).toContain(`L = ${exact.toFixed(4)} (arc)`);
+    expect(await view.locator('text.dim-text').allTextContents()).toContain(`L = ${exact.toFixed(4)} mm (arc)`);
     expect(await page.getByTestId('views-stale').isHidden()).toBe(true);
     await view.screenshot({ path: `${SHOTS}/view-profile-curved.png` });
     // The step-through does not draw this question: it says so, and hides its last picture (of other inputs).
@@ -123,7 +125,7 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
     await expect.poll(() => sentence.textContent()).toMatch(/on a plane of that slope/);
     const chart = page.getByTestId('chart-slope');
     expect(await chart.locator('.chart-title').textContent()).toMatch(/^Programmed step \[mm\] against slope/);
-    expect(await page.getByTestId('chart-slope-value-step').textContent()).toMatch(/^\d+\.\d{4}$/);
+    expect(await page.getByTestId('chart-slope-value-step').textContent()).toMatch(/^\d+\.\d{4} mm$/);
     const box = await chart.locator('svg').boundingBox();
     expect(box?.width).toBeGreaterThan(200);
     expect((box?.x ?? 0) + (box?.width ?? 0)).toBeLessThanOrEqual(phone.width + 1);

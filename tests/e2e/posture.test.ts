@@ -15,6 +15,7 @@ import {
   type ToolInput,
   traceProcedure,
 } from '../../src/core/index';
+import { formatLenUnit } from '../../src/ui/format';
 import { frames, SHOTS, sceneIdle, urlWrites, useSite } from './harness';
 
 const site = useSite('docs/posture');
@@ -36,7 +37,7 @@ describe('tool posture on the page', () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     expect(await page.getByTestId('input-tilt').inputValue()).toBe('0');
     expect(await page.locator('[data-testid="pattern-switch"] input[value="one-way"]').isChecked()).toBe(true);
-    expect(await text(page, 'result-exact-half')).toBe('1.4436');
+    expect(await text(page, 'result-exact-half')).toBe('1.4436 mm');
     expect(await text(page, 'result-width-right')).toBe('1.4436 mm');
     expect(await text(page, 'result-width-left')).toBe('1.4436 mm');
     expect(await text(page, 'result-contact-offset')).toBe('0.0000 mm');
@@ -102,8 +103,8 @@ describe('tool posture on the page', () => {
     const osc = c.approximations.osculating;
     const ball = c.approximations.cornerBall;
     if (!osc.ok || !ball.ok) throw new Error('both apply here');
-    expect(await text(page, 'result-osculating-half')).toBe(osc.halfIntervalMm.toFixed(4));
-    expect(await text(page, 'result-cornerBall-half')).toBe(ball.halfIntervalMm.toFixed(4));
+    expect(await text(page, 'result-osculating-half')).toBe(`${osc.halfIntervalMm.toFixed(4)} mm`);
+    expect(await text(page, 'result-cornerBall-half')).toBe(`${ball.halfIntervalMm.toFixed(4)} mm`);
     const label = (key: string) => page.locator(`.procedures tr[data-procedure="${key}"] th`).textContent();
     for (const key of ['sekine', 'redonnet', 'bedi']) expect(await label(key)).toMatch(/lead only$/);
     for (const key of ['exact', 'osculating', 'cornerBall']) expect(await label(key)).not.toMatch(/lead only/);
@@ -149,10 +150,10 @@ describe('tool posture on the page', () => {
       .poll(dims)
       .toEqual(
         expect.arrayContaining([
-          `wR = ${e.halfWidthRightMm.toFixed(4)}`,
-          `wL = ${e.halfWidthLeftMm.toFixed(4)}`,
-          `L = ${e.intervalMm.toFixed(4)}`,
-          `O (y0 = ${e.contactOffsetMm.toFixed(4)})`,
+          `wR = ${e.halfWidthRightMm.toFixed(4)} mm`,
+          `wL = ${e.halfWidthLeftMm.toFixed(4)} mm`,
+          `L = ${e.intervalMm.toFixed(4)} mm`,
+          `O (y0 = ${e.contactOffsetMm.toFixed(4)} mm)`,
         ]),
       );
     expect(await view.locator('polyline.curve-exact').count()).toBe(3);
@@ -163,9 +164,9 @@ describe('tool posture on the page', () => {
       .poll(dims)
       .toEqual(
         expect.arrayContaining([
-          'h = 0.05000',
-          `h' = ${(z.otherCuspHeightMm ?? 0).toFixed(5)}`,
-          `L = ${z.intervalMm.toFixed(4)}`,
+          'h = 50.00 \u00b5m',
+          `h' = ${formatLenUnit(z.otherCuspHeightMm ?? 0, 'mm', 'height')}`,
+          `L = ${z.intervalMm.toFixed(4)} mm`,
         ]),
       );
   });
@@ -180,7 +181,7 @@ describe('tool posture on the page', () => {
     expect(await page.getByTestId('chart-lead').locator('.chart-title').textContent()).toMatch(/current rho = 5\)/);
     await expect
       .poll(() => page.getByTestId('chart-summary').textContent())
-      .toMatch(new RegExp(`beta = 5 deg, L \\[mm\\]: Exact \\(3D\\) ${exact(5, 'one-way').intervalMm.toFixed(4)}`));
+      .toMatch(new RegExp(`beta = 5 deg, L: Exact \\(3D\\) ${exact(5, 'one-way').intervalMm.toFixed(4)} mm`));
     await chart.screenshot({ path: `${SHOTS}/posture-chart.png` });
   });
 
@@ -211,9 +212,9 @@ describe('tool posture on the page', () => {
     const s = shapeOfTool(tool(10));
     const five = (v: number) => String(Number(v.toPrecision(5)));
     const exactText = (await formulas.locator('section[data-procedure="exact"]').textContent()) ?? '';
-    expect(exactText).toContain(`=${five(s.b)}`); // b = Rb cos(beta) sin(rho)
+    expect(exactText).toContain(`=${five(s.b)} mm`); // b = Rb cos(beta) sin(rho)
     expect(exactText).toContain(`=${five((s.phi * 180) / Math.PI)}`);
-    expect(exactText).toContain(`=${five(s.d0)}`);
+    expect(exactText).toContain(`=${five(s.d0)} mm`);
     expect(exactText).toMatch(/2min/); // the zigzag rule, not the one-way one
     expect(exactText).not.toMatch(/wR\+wL=/);
     const osc = osculatingModel(tool(10));
@@ -221,7 +222,7 @@ describe('tool posture on the page', () => {
     expect(await formulas.locator('section[data-procedure="osculating"]').textContent()).toContain(
       five(osc.effectiveRadiusMm),
     );
-    expect(await formulas.locator('section[data-procedure="cornerBall"]').textContent()).toMatch(/Rcr=1/);
+    expect(await formulas.locator('section[data-procedure="cornerBall"]').textContent()).toMatch(/Rcr=1 mm/);
     expect(await formulas.locator('section[data-procedure="sekine"]').textContent()).toMatch(/tilt ignored/);
     await page.screenshot({ path: `${SHOTS}/posture-formulas.png`, fullPage: true });
   });

@@ -26,12 +26,15 @@ async function simulationWorkers(page: Page): Promise<number> {
 }
 
 /** The numbers of the comparison line: simulated cusp, exact cusp, difference, bound (mm). */
+/** The comparison line's four lengths, in mm (each is shown with its unit: mm, or µm when small). */
 function comparisonNumbers(line: string): { sim: number; exact: number; diff: number; bound: number } {
+  const L = '([\\d.]+) (mm|\u00b5m)';
   const m = line.match(
-    /Simulated cusp ([\d.]+) mm against exact ([\d.]+) mm: they differ by ([\d.]+) mm, within the stated resolution bound ([\d.]+) mm/,
+    new RegExp(`Simulated cusp ${L} against exact ${L}: they differ by ${L}, within the stated resolution bound ${L}`),
   );
   if (!m) throw new Error(`unexpected comparison line: ${line}`);
-  return { sim: Number(m[1]), exact: Number(m[2]), diff: Number(m[3]), bound: Number(m[4]) };
+  const mm = (i: number) => Number(m[i]) * (m[i + 1] === 'mm' ? 1 : 1e-3);
+  return { sim: mm(1), exact: mm(3), diff: mm(5), bound: mm(7) };
 }
 
 describe('target Ra and roughness in headless Chromium', () => {
@@ -101,19 +104,20 @@ describe('Machined surface view in headless Chromium', () => {
     expect(await simulationWorkers(page)).toBe(1);
     const n = comparisonNumbers((await line.textContent()) ?? '');
     const exact = exactForward(forwardInput(TOOL, 'one-way', 0.05)).cuspHeightMm;
-    expect(n.exact).toBe(Number(exact.toFixed(6)));
+    expect(n.exact).toBeCloseTo(Number(exact.toFixed(6)), 9);
     expect(Math.abs(n.sim - n.exact)).toBeLessThanOrEqual(n.bound + 1e-6);
     expect(n.bound).toBeGreaterThan(0);
     expect(await line.textContent()).toMatch(/512 x 512 cells, 5 passes/);
     const view = page.getByTestId('surface-view');
     expect(await view.getByTestId('surface-exaggeration').textContent()).toMatch(/exaggerated x\d+/);
-    expect(await view.getByTestId('surface-legend').textContent()).toMatch(/0 um.*um/);
+    expect(await view.getByTestId('surface-legend').textContent()).toMatch(/0\.000 \u00b5m.*\u00b5m/);
     const trace = view.getByTestId('surface-trace');
     expect(await trace.locator('polyline.trace-line').count()).toBe(1);
     const labels = (await trace.locator('text').allTextContents()).join(' | ');
-    expect(labels).toMatch(/Rz 0\.04\d+ mm/);
-    expect(labels).toMatch(/Ra 0\.012\d+ mm/);
-    expect(labels).toMatch(/Rq 0\.014\d+ mm/);
+    // Roughness in µm, as the results' rows give it.
+    expect(labels).toMatch(/Rz 4\d\.\d{3} \u00b5m/);
+    expect(labels).toMatch(/Ra 12\.\d{3} \u00b5m/);
+    expect(labels).toMatch(/Rq 14\.\d{3} \u00b5m/);
     // The 3D view drew the mesh: its canvas is not blank.
     const canvas = view.getByTestId('surface-canvas');
     await expect.poll(async () => (await canvas.screenshot()).length).toBeGreaterThan(3000);
@@ -138,7 +142,9 @@ describe('Machined surface view in headless Chromium', () => {
         });
     });
     for (const h of ['0.01', '0.02', '0.03', '0.04', '0.035', '0.045']) await page.getByTestId('input-h').fill(h);
-    await expect.poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 }).toMatch(/exact 0\.045000 mm/);
+    await expect
+      .poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 })
+      .toMatch(/exact 45\.000 \u00b5m/);
     let n = comparisonNumbers((await line.textContent()) ?? '');
     expect(Math.abs(n.sim - n.exact)).toBeLessThanOrEqual(n.bound + 1e-6);
     const statuses = await page.evaluate(() => (window as unknown as { __statuses: string[] }).__statuses);
@@ -148,7 +154,7 @@ describe('Machined surface view in headless Chromium', () => {
     ).toBe(true);
     // Every simulation asked is answered: no late reply to an earlier input can replace this one.
     await workerIdle(page, SIMULATION_WORKER);
-    expect(await line.textContent()).toMatch(/exact 0\.045000 mm/);
+    expect(await line.textContent()).toMatch(/exact 45\.000 \u00b5m/);
     // Invalid: no number of the earlier inputs stays on screen.
     await page.getByTestId('input-h').fill('-1');
     await expect.poll(() => line.textContent()).toBe('');
@@ -160,7 +166,7 @@ describe('Machined surface view in headless Chromium', () => {
     const zz = exactForward(forwardInput({ ...TOOL, tiltAngleDeg: 4 }, 'zigzag', 0.05)).cuspHeightMm;
     await expect
       .poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 })
-      .toMatch(new RegExp(`exact ${zz.toFixed(6)} mm.*4 passes`));
+      .toMatch(new RegExp(`exact ${(1000 * zz).toFixed(3)} \u00b5m.*4 passes`));
     n = comparisonNumbers((await line.textContent()) ?? '');
     expect(Math.abs(n.sim - n.exact)).toBeLessThanOrEqual(n.bound + 1e-6);
     await page.screenshot({ path: `${SHOTS}/view-surface-zigzag.png`, fullPage: true });
@@ -171,7 +177,7 @@ describe('Machined surface view in headless Chromium', () => {
       .poll(async () => (await line.textContent()) ?? '', { timeout: 20_000 })
       .toMatch(/Simulated cusp .* 4 passes/);
     const trace = (await page.getByTestId('surface-trace').locator('text').allTextContents()).join(' ');
-    expect(trace).toMatch(/Ra 0\.00[78]\d+ mm/);
+    expect(trace).toMatch(/Ra [78]\.\d{3} \u00b5m/);
   });
 
   it('?view=surface&embed=1 shows just that view, without horizontal scrolling at 480 px wide', async () => {

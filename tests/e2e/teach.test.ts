@@ -44,17 +44,21 @@ describe('teacher: the comparison charts', () => {
         // Legend: each procedure's value at the current lead, without hovering (the solver's numbers).
         await expect
           .poll(() => page.getByTestId('chart-lead-value-exact').textContent())
-          .toBe(c.exact.intervalMm.toFixed(4));
+          .toBe(`${c.exact.intervalMm.toFixed(4)} mm`);
         for (const key of ['sekine', 'redonnet', 'bedi', 'osculating', 'cornerBall'] as const) {
           const a = c.approximations[key];
           if (!a.ok) throw new Error(key);
-          expect(await page.getByTestId(`chart-lead-value-${key}`).textContent(), key).toBe(a.intervalMm.toFixed(4));
+          expect(await page.getByTestId(`chart-lead-value-${key}`).textContent(), key).toBe(
+            `${a.intervalMm.toFixed(4)} mm`,
+          );
           // The error chart's legend: the signed % against exact.
           expect(await page.getByTestId(`chart-error-value-${key}`).textContent(), key).toBe(
-            formatPercent(a.deviationPercent),
+            `${formatPercent(a.deviationPercent)} %`,
           );
         }
-        expect(await page.getByTestId('chart-tilt-value-exact').textContent()).toBe(c.exact.intervalMm.toFixed(4));
+        expect(await page.getByTestId('chart-tilt-value-exact').textContent()).toBe(
+          `${c.exact.intervalMm.toFixed(4)} mm`,
+        );
         expect(await page.getByTestId('chart-tilt-legend').textContent()).toMatch(/^at beta = 0 deg:/);
         // Units in every title.
         expect(await lead.locator('.chart-title').textContent()).toMatch(/^L \[mm\] against lead rho \[deg\]/);
@@ -92,10 +96,10 @@ describe('teacher: the comparison charts', () => {
   it('inside the gap the legend says n/a and points to the reason; the error unit switch changes the title', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=1&h=0.05&unit=mm&view=chart', { width: 1440, height: 900 });
     await expect.poll(() => page.getByTestId('chart-lead-value-bedi').textContent()).toBe('n/a (see below)');
-    expect(await page.getByTestId('chart-lead-value-exact').textContent()).toMatch(/^\d+\.\d{4}$/);
+    expect(await page.getByTestId('chart-lead-value-exact').textContent()).toMatch(/^\d+\.\d{4} mm$/);
     await page.getByTestId('chart-error-unit').selectOption('mm');
     await expect.poll(() => page.getByTestId('chart-error').locator('.chart-title').textContent()).toMatch(/\[mm\]$/);
-    expect(await page.getByTestId('chart-error-value-sekine').textContent()).toMatch(/^[+-]\d\.\d{4}$/);
+    expect(await page.getByTestId('chart-error-value-sekine').textContent()).toMatch(/^[+-]\d\.\d{4} mm$/);
     await page.getByTestId('comparison-chart').screenshot({ path: `${SHOTS}/teach-chart-rho1-gap.png` });
   });
 
@@ -112,13 +116,15 @@ describe('teacher: the comparison charts', () => {
         width: 1440,
         height: 900,
       });
-      await expect.poll(() => page.getByTestId('chart-error-value-bedi').textContent(), { message: unit }).toBe('0.00');
-      expect(await page.getByTestId('chart-error-value-redonnet').textContent(), unit).toBe('0.00');
-      expect(await page.getByTestId('chart-error-value-osculating').textContent(), unit).toBe('0.00');
+      await expect
+        .poll(() => page.getByTestId('chart-error-value-bedi').textContent(), { message: unit })
+        .toBe('0.00 %');
+      expect(await page.getByTestId('chart-error-value-redonnet').textContent(), unit).toBe('0.00 %');
+      expect(await page.getByTestId('chart-error-value-osculating').textContent(), unit).toBe('0.00 %');
       const sekine = c.approximations.sekine;
       if (sekine.ok) {
         expect(await page.getByTestId('chart-error-value-sekine').textContent(), unit).toBe(
-          formatPercent(sekine.deviationPercent),
+          `${formatPercent(sekine.deviationPercent)} %`,
         );
       }
       // No text of the page (its legends, ticks, results, SVG labels) reads as a negative zero.

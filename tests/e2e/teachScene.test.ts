@@ -121,7 +121,7 @@ describe('teacher: the 3D scene', () => {
         // L and L/2 are dimensioned on the scene with the solver's numbers (the exaggeration changes none).
         const arc = posture.name === 'cylinder' ? ' (arc)' : '';
         expect(texts, JSON.stringify(texts)).toContain(`L = ${whole}${arc}`);
-        expect(texts, JSON.stringify(texts)).toContain(`L/2 = ${half} mm${arc}`);
+        expect(texts, JSON.stringify(texts)).toContain(`L/2 = ${half}${arc}`);
         // The exaggeration is said on the scene.
         const badge = (await page.getByTestId('scene-exaggeration').textContent()) ?? '';
         expect(badge).toMatch(posture.name === 'cylinder' ? /^heights at true scale$/ : /^heights drawn x\d+ /);

@@ -225,7 +225,7 @@ describe('numbers answer the inputs on screen', () => {
     await expect
       .poll(() => page.getByTestId('teaching').getAttribute('class'), { timeout: 10_000 })
       .not.toMatch(/stale/);
-    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain('L/2 = 1.8921');
+    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain('L/2 = 1.8921 mm');
   });
 });
 
@@ -280,7 +280,7 @@ describe('the 3D scene keeps its contract', () => {
       'one-way',
       0.05,
     );
-    expect(await text(page, 'result-exact-half')).toBe(compareForward(big4).exact.halfIntervalMm.toFixed(4));
+    expect(await text(page, 'result-exact-half')).toBe(`${compareForward(big4).exact.halfIntervalMm.toFixed(4)} mm`);
     const big = await paintedFraction(page);
     // Same shape, 4x the size: refitted, it covers about the same part of the view.
     expect(Math.abs(big - small)).toBeLessThan(0.25 * small);
@@ -321,7 +321,7 @@ describe('units and digits in every view', () => {
         await p.getByTestId('stepper-first').click();
         expect(await p.getByTestId('stepper-caption').textContent()).toMatch(/Rcr = 0\.03000 in\./);
       }
-      if (view === 'formulas') expect(content).toMatch(/Lengths in in, angles in degrees/);
+      if (view === 'formulas') expect(content).toMatch(/Lengths in in \(small ones in thou\), angles in degrees/);
     }
     // The paper's tables stay in the paper's mm, and say so.
     const t = (await open(`${q}&view=tables`)).page;
@@ -341,17 +341,21 @@ describe('units and digits in every view', () => {
   it('a micro tool shows significant digits, in the results and the views, never 0.0000', async () => {
     const { page } = await open('?R=0.001&Rcr=0.001&rho=0&h=0.000001&unit=mm&view=profile');
     // L/2 = sqrt(2 Rcr h - h^2) = 4.4710e-5 mm.
-    expect(await text(page, 'result-exact-half')).toBe('0.00004471');
+    expect(await text(page, 'result-exact-half')).toBe('0.04471 \u00b5m');
     // With its unit, a length below 0.1 mm reads in um (format.ts): 0.00008942 mm.
     expect(await text(page, 'result-exact-interval')).toBe('0.08942 \u00b5m');
-    expect(await text(page, 'table-exact-half')).toBe('0.00004471');
-    expect(await text(page, 'table-exact-real-h')).toBe('0.000001000');
+    expect(await text(page, 'table-exact-half')).toBe('0.04471 \u00b5m');
+    expect(await text(page, 'table-exact-real-h')).toBe('0.001000 \u00b5m');
     await expect
       .poll(() => page.getByTestId('profile-view').locator('text.dim-text').allTextContents())
-      .toContain('L/2 = 0.00004471');
+      .toContain('L/2 = 0.04471 \u00b5m');
     // The other views: the same significant digits, and no length rounded to 0.0000.
     const ZERO = /(?<![\d.])0\.0000(?!\d)/;
-    const expected = { chart: 'Exact (3D) 0.00008942', stepper: 'L/2 = 0.00004471 mm', formulas: 'L/2=0.00004471' };
+    const expected = {
+      chart: 'Exact (3D) 0.08942 \u00b5m',
+      stepper: 'L/2 = 0.04471 \u00b5m',
+      formulas: 'L/2=0.04471 \u00b5m',
+    };
     for (const view of ['chart', 'stepper', 'formulas'] as const) {
       const p = (await open(`?R=0.001&Rcr=0.001&rho=0&h=0.000001&unit=mm&view=${view}`)).page;
       if (view === 'stepper') {

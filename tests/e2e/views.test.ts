@@ -31,7 +31,7 @@ describe('teaching views in headless Chromium', () => {
     for (const key of ['sekine', 'redonnet', 'bedi', 'osculating', 'cornerBall'])
       expect(await view.locator(`polyline.curve-${key}`).count()).toBe(6);
     const half = exactHalfIntervalMm(tool(5, 0.05)).toFixed(4);
-    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half}`);
+    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half} mm`);
     expect(await page.getByTestId('profile-scale').textContent()).toMatch(/vertical scale exaggerated x5/);
     const home = await view.locator('svg').getAttribute('viewBox');
     await page.getByTestId('profile-cusp').click();
@@ -45,7 +45,7 @@ describe('teaching views in headless Chromium', () => {
     await page.getByTestId('slider-h').focus();
     await page.keyboard.press('ArrowRight');
     const half2 = exactHalfIntervalMm(tool(5, 0.051)).toFixed(4);
-    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half2}`);
+    await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain(`L/2 = ${half2} mm`);
     expect(await view.locator('polygon.scallop').getAttribute('points')).not.toBe(scallopBefore);
     // A tiny scallop: "auto" exaggerates more, and says so; a fixed choice overrides it.
     await page.getByTestId('input-h').fill('0.005');
@@ -69,15 +69,17 @@ describe('teaching views in headless Chromium', () => {
     const summary = page.getByTestId('chart-summary');
     await expect
       .poll(() => summary.textContent())
-      .toMatch(new RegExp(`Exact \\(3D\\) ${c.exact.intervalMm.toFixed(4)}`));
+      .toMatch(new RegExp(`Exact \\(3D\\) ${c.exact.intervalMm.toFixed(4)} mm`));
     if (c.approximations.sekine.ok)
-      expect(await summary.textContent()).toContain(`Sekine et al. ${c.approximations.sekine.intervalMm.toFixed(4)}`);
+      expect(await summary.textContent()).toContain(
+        `Sekine et al. ${c.approximations.sekine.intervalMm.toFixed(4)} mm`,
+      );
     await page.getByTestId('slider-rho').focus();
     await page.keyboard.press('ArrowRight');
     const c2 = compareForward(tool(5.1, 0.05));
     await expect
       .poll(() => summary.textContent())
-      .toMatch(new RegExp(`rho = 5\\.1 deg.*Exact \\(3D\\) ${c2.exact.intervalMm.toFixed(4)}`));
+      .toMatch(new RegExp(`rho = 5\\.1 deg.*Exact \\(3D\\) ${c2.exact.intervalMm.toFixed(4)} mm`));
     expect(await chart.locator('.chart-title').first().textContent()).toMatch(/current rho = 5\.1/);
     // The dashed current-rho marker: on the default log axis 5.1 deg sits near the middle of
     // 0.5-89 deg (log ratio 0.45); on a linear axis near the left edge (0.05).
@@ -113,7 +115,7 @@ describe('teaching views in headless Chromium', () => {
     await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('6');
     expect(await page.getByTestId('input-rho').inputValue()).toBe('10');
     expect(await page.getByTestId('input-h').inputValue()).toBe('0.05');
-    await expect.poll(() => page.getByTestId('result-exact-half').textContent()).toBe('1.5580'); // notes' exact column: 1.558019
+    await expect.poll(() => page.getByTestId('result-exact-half').textContent()).toBe('1.5580 mm'); // notes' exact column: 1.558019
   });
 
   it('stepper: steps through the trace in the scene and reaches the converged P_hp', async () => {
@@ -171,10 +173,10 @@ describe('teaching views in headless Chromium', () => {
     const last = sekine.locator('math').last();
     await expect
       .poll(() => last.textContent())
-      .toMatch(new RegExp(`=${String(Number(c.approximations.sekine.halfIntervalMm.toPrecision(5)))}$`));
+      .toMatch(new RegExp(`=${String(Number(c.approximations.sekine.halfIntervalMm.toPrecision(5)))} mm$`));
     expect(
       await page.getByTestId('formulas').locator('section[data-procedure="exact"] math').last().textContent(),
-    ).toMatch(/=1\.5$/);
+    ).toMatch(/=1\.5 mm$/);
   });
 
   it('hovering or selecting a procedure highlights it in the profile and the results table', async () => {

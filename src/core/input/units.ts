@@ -127,10 +127,27 @@ export interface ReadableLengthUnit {
  */
 export const SUB_UNIT_BELOW: Readonly<Record<LengthUnit, number>> = { mm: 0.1, in: 0.01 };
 
+/** The micrometre's symbol, with the micro sign (U+00B5) as everywhere on the page. */
+export const MICROMETRE_SYMBOL = '\u00b5m';
+
+/** The microinch's symbol, with the micro sign (U+00B5). */
+export const MICROINCH_SYMBOL = '\u00b5in';
+
+/**
+ * The unit roughness (Rz, Ra, Rq) is given in, for a user working in `unit`: µm in mm, µin in
+ * inch (the US shop convention: surface finish callouts are in microinches). Always that unit,
+ * whatever the size, so that every roughness on a page compares at a glance.
+ */
+export function roughnessUnit(unit: LengthUnit): { readonly symbol: string; readonly perMm: number } {
+  return unit === 'mm'
+    ? { symbol: MICROMETRE_SYMBOL, perMm: 1000 }
+    : { symbol: MICROINCH_SYMBOL, perMm: 1e6 / MM_PER_INCH };
+}
+
 /** The unit a length given in mm reads best in, for a user working in `unit` (zero stays in `unit`). */
 export function readableLengthUnit(lengthMm: number, unit: LengthUnit): ReadableLengthUnit {
   const magnitude = Math.abs(fromMm(lengthMm, unit));
   if (magnitude > 0 && magnitude < SUB_UNIT_BELOW[unit])
-    return { symbol: unit === 'mm' ? '\u00b5m' : 'thou', perUserUnit: 1000 };
+    return { symbol: unit === 'mm' ? MICROMETRE_SYMBOL : 'thou', perUserUnit: 1000 };
   return { symbol: unitSymbol(unit), perUserUnit: 1 };
 }

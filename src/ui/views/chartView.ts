@@ -9,7 +9,7 @@
 import { formatSignificant, fromMm, unitSymbol } from '../../core/input/units';
 import { APPROXIMATION_KEYS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import type { Sweep, SweepGap } from '../../worker/protocol';
-import { formatDeg, formatLen, formatSignedLen, formatSignedPercent } from '../format';
+import { formatDeg, formatLenUnit, formatSignedLenUnit, formatSignedPercent } from '../format';
 import { html, type PageKind, type PageViewContext, type TeachingView, type ViewContext } from './common';
 import { type ChartGapBand, type ChartLine, lineChart } from './lineChart';
 import { RadiusCharts } from './radiusChart';
@@ -148,7 +148,8 @@ export class ChartView implements TeachingView {
     const pct = this.errorUnit.value === 'pct';
     const logX = this.rhoAxis.value === 'log';
     const leadOnly = beta !== 0;
-    const len = (v: number) => formatLen(v, ctx.unit);
+    // The legend's and the summary's values: each length with its unit (format.ts); the axes name theirs.
+    const len = (v: number) => formatLenUnit(v, ctx.unit);
     const exact = lead.values.exact;
     const errorLines = APPROXIMATION_KEYS.map((key) => ({
       key,
@@ -187,7 +188,7 @@ export class ChartView implements TeachingView {
           gaps: lead.gaps,
           xLabel: 'lead angle rho [deg]',
           yLabel: pct ? 'error [%]' : `error [${unit}]`,
-          value: pct ? formatSignedPercent : (v) => formatSignedLen(v, ctx.unit),
+          value: pct ? (v) => `${formatSignedPercent(v)} %` : (v) => formatSignedLenUnit(v, ctx.unit),
         },
       ],
       [
@@ -214,7 +215,7 @@ export class ChartView implements TeachingView {
     this.summary.textContent =
       at < 0
         ? NO_SUMMARY
-        : `At rho = ${formatDeg(rho)} deg, beta = ${formatDeg(beta)} deg, L [${unit}]: ${PROCEDURE_KEYS.map((key) => {
+        : `At rho = ${formatDeg(rho)} deg, beta = ${formatDeg(beta)} deg, L: ${PROCEDURE_KEYS.map((key) => {
             const v = tilt.values[key][at];
             return `${PROCEDURES[key].shortLabel} ${v === null || v === undefined ? 'n/a' : len(v)}`;
           }).join(', ')}.${cylinderSummary(ctx)}`;

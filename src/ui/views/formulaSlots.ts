@@ -1,9 +1,10 @@
 /**
- * The numbers that fill the formulas' slots (formulaTemplates.ts), lengths in the user's unit.
- * Pure: no DOM.
+ * The numbers that fill the formulas' slots (formulaTemplates.ts): each length with its unit, in
+ * the unit it reads best in as everywhere on the page (readableLengthUnit: mm or in, µm below
+ * 0.1 mm, thou below 0.01 in); angles in degrees (the templates put the degree sign). Pure: no DOM.
  */
 
-import { formatSignificant, fromMm, type LengthUnit, radToDeg } from '../../core/input/units';
+import { formatSignificant, fromMm, type LengthUnit, radToDeg, readableLengthUnit } from '../../core/input/units';
 import type { ProcedureKey } from '../../core/procedures/procedures';
 import type { FormulaModels } from '../../worker/protocol';
 
@@ -35,11 +36,15 @@ type Slots = Readonly<Record<string, string>>;
 export type FormulaSlots = Readonly<{ exact: Slots } & Record<Exclude<ProcedureKey, 'exact'>, Slots | null>>;
 
 /**
- * The slot values of each procedure's equations (text; lengths in `unit`, angles in degrees), or
+ * The slot values of each procedure's equations (text; lengths with their unit, angles in degrees), or
  * null for a procedure whose model does not apply. Keys match slotNames() of its templates.
  */
 export function formulaSlotValues(x: FormulaInputs): FormulaSlots {
-  const len = (mm: number | null) => formulaNumber(mm === null ? null : fromMm(mm, x.unit));
+  const len = (mm: number | null) => {
+    if (mm === null || !Number.isFinite(mm)) return formulaNumber(null);
+    const shown = readableLengthUnit(mm, x.unit);
+    return `${formulaNumber(fromMm(mm, x.unit) * shown.perUserUnit)} ${shown.symbol}`;
+  };
   const deg = (rad: number) => formulaNumber(radToDeg(rad));
   const m = x.models;
   const s = m.shape;

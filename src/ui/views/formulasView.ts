@@ -6,7 +6,7 @@
 import mathml from 'virtual:formula-mathml';
 import { unitSymbol } from '../../core/input/units';
 import { PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
-import { formatSignedLen } from '../format';
+import { formatSignedLenUnit } from '../format';
 import { ScrollCues } from '../scrollCue';
 import { html, type TeachingView, untilted, type ViewContext } from './common';
 import { formulaSlotValues } from './formulaSlots';
@@ -43,7 +43,7 @@ export class FormulasView implements TeachingView {
         html(
           'p',
           { class: 'view-note', 'data-testid': 'formulas-cylinder-note' },
-          `On a cylinder (Rs = ${formatSignedLen(surface.radiusMm, ctx.unit)} ${unitSymbol(ctx.unit)}, axis ${surface.axis === 'feed' ? 'along' : 'across'} the feed) the exact step-over is solved on the cylinder itself (the flanks' reach at the radial height h, ${surface.axis === 'feed' ? 'as angles about its axis' : 'of the tool revolved about its axis'}), not by the plane's formulas, so they are left out. The approximations below are as on a plane; the table's corrected rows put 1/rho = 1/Reff + 1/Rs into L = 2 sqrt(2 rho h - h^2).`,
+          `On a cylinder (Rs = ${formatSignedLenUnit(surface.radiusMm, ctx.unit)}, axis ${surface.axis === 'feed' ? 'along' : 'across'} the feed) the exact step-over is solved on the cylinder itself (the flanks' reach at the radial height h, ${surface.axis === 'feed' ? 'as angles about its axis' : 'of the tool revolved about its axis'}), not by the plane's formulas, so they are left out. The approximations below are as on a plane; the table's corrected rows put 1/rho = 1/Reff + 1/Rs into L = 2 sqrt(2 rho h - h^2).`,
         ),
       );
     }
@@ -94,7 +94,7 @@ export class FormulasView implements TeachingView {
       html(
         'p',
         { class: 'view-note' },
-        `Lengths in ${unitSymbol(ctx.unit)}, angles in degrees; each L/2 is at the h of the current state.`,
+        `Lengths in ${unitSymbol(ctx.unit)} (small ones in ${ctx.unit === 'mm' ? '\u00b5m' : 'thou'}), angles in degrees; each L/2 is at the h of the current state.`,
       ),
     );
   }

@@ -20,7 +20,7 @@ import type { Surface } from '../../core/surfaces/cylinder';
 import { PLANE } from '../../core/surfaces/cylinder';
 import type { CylinderCurves, ProfileCurveSet } from '../../worker/protocol';
 import type { CurvedSectionData } from '../../worker/teachProtocol';
-import { formatLen } from '../format';
+import { formatLenUnit } from '../format';
 import type { Unit } from '../state';
 import { svg, type TeachOk } from './common';
 import { type Box, homeBox, type ProfileLayout } from './profileLayout';
@@ -265,8 +265,9 @@ function drawDimensions(layer: SVGGElement, input: ProfileDrawingInput, map: Sec
   const y0 = ex.contactOffsetMm;
   /** A height `n` spacings below the surface. */
   const below = (n: number) => -(n * d) / k;
-  const f = (mm: number) => formatLen(mm, unit);
-  const fh = (mm: number) => formatLen(mm, unit, 'height');
+  // Every label a length with its unit (format.ts).
+  const f = (mm: number) => formatLenUnit(mm, unit);
+  const fh = (mm: number) => formatLenUnit(mm, unit, 'height');
   const { right, left } = ex;
   const name = (c: { heightMm: number }) => (c.heightMm >= Math.max(right.heightMm, left.heightMm) ? 'h' : "h'");
   const text = (x: number, y: number, label: string, cls = 'dim-text') => {

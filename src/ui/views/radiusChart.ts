@@ -7,7 +7,7 @@
  */
 import { fromMm, unitSymbol } from '../../core/input/units';
 import type { RadiusSweepData } from '../../worker/teachProtocol';
-import { formatLen, formatLenUnit } from '../format';
+import { formatLenUnit } from '../format';
 import type { Unit } from '../state';
 import { html } from './common';
 import { type ChartGapBand, lineChart } from './lineChart';
@@ -73,7 +73,7 @@ class RadiusFigure {
         description: `${this.title.textContent}. The values at the current radius are listed beside the chart.`,
       }),
     );
-    const len = (v: number | null) => (v === null ? 'n/a (see below)' : formatLen(v, unit));
+    const len = (v: number | null) => (v === null ? 'n/a (see below)' : formatLenUnit(v, unit));
     const item = (series: string, name: string, v: number | null) => {
       const li = html('li', { class: 'legend-item', 'data-series': series });
       li.append(

@@ -8,7 +8,7 @@
  */
 import { fromMm, unitSymbol } from '../../core/input/units';
 import type { SlopeChartData } from '../../worker/teachProtocol';
-import { formatLen, formatLenUnit } from '../format';
+import { formatLenUnit } from '../format';
 import type { Unit } from '../state';
 import { html } from './common';
 import { type ChartGapBand, type ChartLine, lineChart } from './lineChart';
@@ -107,7 +107,7 @@ export class SlopeChart {
         description: `${this.step.title.textContent}. ${this.sentence.textContent}`,
       }),
     );
-    const len = (v: number | null) => (v === null ? 'n/a' : formatLen(v, unit));
+    const len = (v: number | null) => (v === null ? 'n/a' : formatLenUnit(v, unit));
     this.step.legend.replaceChildren(
       html('li', { class: 'chart-legend-head' }, `at ${slope}:`),
       entry('step', own, len(d.currentStepMm), 'chart-slope-value-step'),
@@ -143,7 +143,7 @@ export class SlopeChart {
       entry(
         'cusp',
         `scallop of ${constant}`,
-        d.currentCuspAtConstantStepMm === null ? 'n/a' : formatLen(d.currentCuspAtConstantStepMm, unit, 'height'),
+        d.currentCuspAtConstantStepMm === null ? 'n/a' : formatLenUnit(d.currentCuspAtConstantStepMm, unit, 'height'),
         'chart-slope-value-cusp',
       ),
     );

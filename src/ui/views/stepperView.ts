@@ -5,10 +5,10 @@
  * per step written here, in the user's unit.
  */
 
-import { formatSignificant, unitSymbol } from '../../core/input/units';
+import { formatSignificant } from '../../core/input/units';
 import type { ProcedureKey } from '../../core/procedures/procedures';
 import type { TraceFrame } from '../../worker/protocol';
-import { formatLen, formatRadAsDeg } from '../format';
+import { formatLenUnit, formatRadAsDeg } from '../format';
 import { html, type TeachingView, type TeachOk, untilted, type ViewContext } from './common';
 import { DsGauge } from './dsGauge';
 import { gaugeMax, groupSteps, type Step, sceneToleranceMm } from './stepGroups';
@@ -38,9 +38,9 @@ const SAME_AS_PREVIOUS: Record<TraceFrame['phase'], string> = {
 
 function stepText(step: Step, ctx: ViewContext): string {
   const f = step.frame;
-  const u = unitSymbol(ctx.unit);
-  const fine = (mm: number) => `${formatLen(mm, ctx.unit, 'fine')} ${u}`;
-  const len = (mm: number) => `${formatLen(mm, ctx.unit)} ${u}`;
+  // Lengths with their unit, µm or thou when small (format.ts).
+  const fine = (mm: number) => formatLenUnit(mm, ctx.unit, 'fine');
+  const len = (mm: number) => formatLenUnit(mm, ctx.unit);
   const rcr = ctx.data.forward.cornerRadiusMm;
   const gamma = formatRadAsDeg(f.ringAngleRad);
   const side = f.flank === 'right' ? 'Right flank (+Y)' : 'Left flank (-Y)';
@@ -173,10 +173,9 @@ export class StepperView implements TeachingView {
     if (f.dsMm === null || rcr === 0) {
       this.gauge.show(null, ' no d_s here (search: sections between the ends of the range)');
     } else {
-      const u = unitSymbol(ctx.unit);
       this.gauge.show(
         f.dsMm / rcr,
-        ` ${formatSignificant(f.dsMm / rcr, { digits: 5 })}: d_s = ${formatLen(f.dsMm, ctx.unit, 'fine')} ${u}, Rcr = ${formatLen(rcr, ctx.unit)} ${u}`,
+        ` ${formatSignificant(f.dsMm / rcr, { digits: 5 })}: d_s = ${formatLenUnit(f.dsMm, ctx.unit, 'fine')}, Rcr = ${formatLenUnit(rcr, ctx.unit)}`,
       );
     }
     if (this.visible) this.display.showTraceFrame(f);

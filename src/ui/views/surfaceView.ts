@@ -1,6 +1,6 @@
 /**
  * Machined surface: the passes simulated on a height field (worker job `simulate`), shown in 3D
- * coloured by height with a legend in um and the vertical exaggeration stated, a profilometer
+ * coloured by height with a legend in µm (µin in inch) and the vertical exaggeration stated, a profilometer
  * trace across the passes with Rz, Ra, Rq marked, and one line comparing the simulated cusp with
  * the exact one and the simulation's stated resolution bound. It draws only a reply to the inputs
  * on screen; otherwise its numbers are hidden and it says why (updating, invalid, gave up).
@@ -8,13 +8,13 @@
  * `style-src 'self'`).
  */
 
-import { formatSignificant, unitSymbol } from '../../core/input/units';
+import { roughnessUnit } from '../../core/input/units';
 import { autoExaggeration } from '../../core/output/drawingScale';
 import type { ProcedureKey } from '../../core/procedures/procedures';
 import { HEIGHT_RAMP } from '../../render/surfaceGrid';
 import { SurfaceScene } from '../../render/surfaceMesh';
 import type { SimulateReply } from '../../worker/simulate';
-import { formatLen } from '../format';
+import { formatLenUnit, formatRoughness } from '../format';
 import type { Shown } from '../freshness';
 import type { SurfaceDisplay } from '../simulation';
 import type { Unit } from '../state';
@@ -34,16 +34,13 @@ const TRACE_W = 600;
 const TRACE_H = 190;
 const PAD = { left: 8, right: 150, top: 14, bottom: 18 };
 
-/** Micrometres for the legend (3 significant digits, no exponent for usual sizes). */
-function um(mm: number): string {
-  return `${formatSignificant(mm * 1000, { digits: 3, trimZeros: true })} um`;
-}
-
-/** The comparison line: simulated against exact cusp, and the stated bound (user's unit). */
+/**
+ * The comparison line: simulated against exact cusp, and the stated bound, each a length with its
+ * unit as the results give lengths (format.ts: µm or thou when small, never exponent notation).
+ */
 export function comparisonText(reply: SimulateOk, unit: Unit): string {
-  const u = unitSymbol(unit);
   const s = reply.simulation;
-  const fine = (mm: number) => `${formatLen(mm, unit, 'fine')} ${u}`;
+  const fine = (mm: number) => formatLenUnit(mm, unit, 'fine');
   const diff = Math.abs(s.cuspHeightMm - reply.exact.cuspHeightMm);
   const within = diff <= s.resolutionBoundMm;
   return `Simulated cusp ${fine(s.cuspHeightMm)} against exact ${fine(reply.exact.cuspHeightMm)}: they differ by ${fine(diff)}, ${within ? 'within' : 'beyond'} the stated resolution bound ${fine(s.resolutionBoundMm)} (${s.cellsAcross} x ${s.cellsAlong} cells, ${s.passes} passes).`;
@@ -135,16 +132,16 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     }
     const span = Number.isFinite(hi - lo) ? hi - lo : 0;
     const k = autoExaggeration(size, span, 0.12);
+    const colour = `colour: height above the lowest point (${roughnessUnit(unit).symbol}).`;
     this.exaggerationNote.textContent =
-      k === 1
-        ? 'Heights at true scale; colour: height above the lowest point (um).'
-        : `Heights exaggerated x${k} (vertical exaggeration); colour: height above the lowest point (um).`;
+      k === 1 ? `Heights at true scale; ${colour}` : `Heights exaggerated x${k} (vertical exaggeration); ${colour}`;
     if (this.scene && !this.element.closest('[hidden]')) this.scene.update(s, k);
-    this.drawLegend(span);
+    this.drawLegend(span, unit);
     this.drawTrace(reply, unit);
   }
 
-  private drawLegend(spanMm: number): void {
+  /** The colour ramp's legend: heights in the roughness' unit (µm, or µin in inch), as the trace's Rz. */
+  private drawLegend(spanMm: number, unit: Unit): void {
     const defs = svg('defs');
     const gradient = svg('linearGradient', { id: 'surface-ramp', x1: 0, x2: 1, y1: 0, y2: 0 });
     HEIGHT_RAMP.forEach(([r, g, b], i) => {
@@ -161,9 +158,9 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     this.legend.replaceChildren(
       defs,
       bar,
-      label(10, 'start', um(0)),
-      label(180, 'middle', um(spanMm / 2)),
-      label(350, 'end', um(spanMm)),
+      label(10, 'start', formatRoughness(0, unit)),
+      label(180, 'middle', formatRoughness(spanMm / 2, unit)),
+      label(350, 'end', formatRoughness(spanMm, unit)),
     );
   }
 
@@ -196,8 +193,8 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     const points: string[] = [];
     for (let j = 0; j < n; j++)
       points.push(`${X(t[2 * j] as number).toFixed(1)},${Z(t[2 * j + 1] as number).toFixed(1)}`);
-    const u = unitSymbol(unit);
-    const fine = (mm: number) => `${formatLen(mm, unit, 'fine')} ${u}`;
+    // Roughness as the results' rows give it (format.ts: µm in mm, µin in inch).
+    const fine = (mm: number) => formatRoughness(mm, unit);
     const r = s.roughness;
     const e = reply.exact.roughness;
     const line = (z: number, cls: string) =>

@@ -56,10 +56,11 @@ export class TablesView implements TeachingView {
     const head = html('tr');
     for (const t of [
       'Table',
-      'R',
-      'Rcr',
-      'rho',
-      what === 'half' ? 'h' : 'L/2 (3D)',
+      // Each column names its unit: the paper's conditions in mm and degrees, whatever the page's unit.
+      'R [mm]',
+      'Rcr [mm]',
+      'rho [\u00b0]',
+      what === 'half' ? 'h [mm]' : 'L/2 (3D) [mm]',
       ...KEYS.map(([, p]) => PROCEDURES[p].shortLabel),
     ]) {
       head.append(html('th', { scope: 'col' }, t));
