@@ -18,7 +18,8 @@
  *    geometry from the isometric preset, on each preset, and on each new state or size keeping the
  *    viewing direction, until the user zooms or pans (then only scaled with the tool radius);
  *    while the step-through shows a step, on what that step shows (its section, candidates and
- *    point), in a short glide unless the system asks for reduced motion;
+ *    point), moved at once (no animation, so nothing moves for a reader who asked for reduced
+ *    motion, and a step costs one frame);
  *  - the camera's near and far planes enclose what is drawn (clipPlanes.ts): the tool is seen at
  *    every radius from 0.001 to 1000 mm and however the user turns or zooms;
  *  - after a lost WebGL context is restored it draws the last state on the theme's colours
@@ -29,7 +30,6 @@
 import { AmbientLight, DirectionalLight, Group, type Object3D } from 'three';
 import type { SceneGeometry, TraceFrame } from '../worker/protocol';
 import { type CameraPreset, fitCamera, presetDirection, type Vec3 } from './cameraFit';
-import { CameraMotion } from './cameraMotion';
 import { drawnBoundingSphere } from './clipPlanes';
 import { AxesDrawable } from './drawables/axes';
 import { CuspsDrawable } from './drawables/cusps';
@@ -70,8 +70,6 @@ export interface SceneFraming {
   readonly focus: readonly number[] | null;
   /** Whether the camera still follows what is drawn (false once the user zoomed or panned). */
   readonly autoFit: boolean;
-  /** Whether a glide is under way. */
-  readonly moving: boolean;
 }
 
 export class ToolScene {
@@ -116,7 +114,6 @@ export class ToolScene {
   private autoFit = true;
   /** Whether a step of the step-through is shown (the camera then frames it). */
   private traceShown = false;
-  private readonly motion: CameraMotion;
   /** The points of the last fit (reused). */
   private readonly points: number[] = [];
 
@@ -133,17 +130,11 @@ export class ToolScene {
     });
     this.labels = new LabelLayer(container, () => this.requestRender());
     const { scene, camera, controls } = this.view;
-    this.motion = new CameraMotion(camera, controls, () => this.requestRender());
-    const redraw = controls.onChange;
-    controls.onChange = () => {
-      this.motion.stop(); // the user took the camera
-      redraw?.();
-    };
     controls.onZoomOrPan = () => {
       this.autoFit = false;
     };
     this.view.afterResize = () => {
-      if (this.fittedRadiusMm > 0 && this.autoFit) this.fitView(false);
+      if (this.fittedRadiusMm > 0 && this.autoFit) this.fitView();
     };
     this.view.afterRender = () => this.labels.layout(scene, camera, this.view.widthPx, this.view.heightPx);
     scene.add(new AmbientLight(0xffffff, 1.2));
@@ -230,7 +221,7 @@ export class ToolScene {
     const before = this.fittedRadiusMm;
     this.fittedRadiusMm = R;
     if (before === 0) this.setCamera(this.preset);
-    else if (this.autoFit) this.fitView(false);
+    else if (this.autoFit) this.fitView();
     else if (Math.abs(R - before) > 1e-12 * R) {
       const { camera, controls } = this.view;
       const offset = camera.position
@@ -245,9 +236,9 @@ export class ToolScene {
 
   /**
    * Fits the camera, looking from where it looks now, to everything drawn (or, while a step of the
-   * step-through is shown, to that step's section and points), in a glide when `glide` is true.
+   * step-through is shown, to that step's section and points).
    */
-  private fitView(glide: boolean): void {
+  private fitView(): void {
     const { camera, controls, scene } = this.view;
     scene.updateMatrixWorld();
     const focus = this.traceShown && gatherFramePoints(scene, this.points, true) > 0;
@@ -260,7 +251,10 @@ export class ToolScene {
       margin: focus ? FOCUS_MARGIN : OVERVIEW_MARGIN,
     });
     if (fitted === null) return;
-    this.motion.moveTo(fitted.position, fitted.target, camera.up.toArray(), glide);
+    camera.position.set(...fitted.position);
+    controls.target.set(...fitted.target);
+    controls.update();
+    this.requestRender();
   }
 
   /** Where the camera is and what it frames (the tests' probe). */
@@ -283,7 +277,6 @@ export class ToolScene {
       framed: all,
       focus: focused ? focus : null,
       autoFit: this.autoFit,
-      moving: this.motion.moving,
     };
   }
 
@@ -292,7 +285,7 @@ export class ToolScene {
     if (!this.trace.show(frame, this.traceSizes)) return;
     this.traceShown = frame !== null;
     // The camera moves to what the step shows (or back to the whole scene when the replay ends).
-    if (this.autoFit && this.fittedRadiusMm > 0) this.fitView(true);
+    if (this.autoFit && this.fittedRadiusMm > 0) this.fitView();
     this.requestRender();
   }
 
@@ -306,12 +299,11 @@ export class ToolScene {
     const { camera, controls } = this.view;
     const { towardsCamera, up } = presetDirection(preset);
     this.preset = preset;
-    this.motion.stop();
     camera.up.set(...up);
     camera.position.copy(controls.target).add(camera.position.clone().set(...towardsCamera));
     controls.update();
     this.autoFit = true;
-    this.fitView(false);
+    this.fitView();
     this.requestRender();
   }
 
@@ -327,7 +319,6 @@ export class ToolScene {
 
   /** Frees everything the scene made: observers, listeners, GPU resources and DOM nodes. */
   dispose(): void {
-    this.motion.stop();
     this.view.dispose();
     this.labels.dispose();
     for (const d of this.drawables) d.dispose();

@@ -73,7 +73,6 @@ async function clickView(page: Page, name: string): Promise<void> {
 async function settled(page: Page): Promise<SceneFraming> {
   await page.getByTestId('scene').scrollIntoViewIfNeeded();
   await expect.poll(async () => (await framing(page))?.framed.length ?? 0).toBeGreaterThan(0);
-  await expect.poll(async () => (await framing(page))?.moving).toBe(false);
   await sceneIdle(page);
   return (await framing(page)) as SceneFraming;
 }
@@ -204,7 +203,7 @@ describe('the surfaces read as what they are', { timeout: 90_000 }, () => {
       ['concave', 'orange'],
       ['convex', 'blue'],
     ] as const) {
-      const { page } = await open(`?R=3&Rcr=1&rho=5&h=0.05&surface=${side}&surfaceRadius=12&unit=mm`, {
+      const { page } = await open(`?R=3&Rcr=1&rho=5&h=0.05&surfaceRadius=${side === 'concave' ? -60 : 12}&unit=mm`, {
         width: 1440,
         height: 900,
       });
