@@ -50,7 +50,9 @@ export function curvatureColoursInto(
       const z = positions[3 * i + 2] as number;
       const falling = z < 0;
       // Terraces: the band's index, pale near the tangent plane, full farther from it; every other band darker (iso-lines).
-      const band = Math.min(SHADING_BANDS - 1, Math.floor((SHADING_BANDS * Math.abs(z)) / (falling ? -below : above)));
+      // (A side with no extent, as a cylinder's on its tangent line, is the first band: never 0 / 0.)
+      const range = falling ? -below : above;
+      const band = range > 0 ? Math.min(SHADING_BANDS - 1, Math.floor((SHADING_BANDS * Math.abs(z)) / range)) : 0;
       const level = (band + 1) / SHADING_BANDS;
       const hue = falling ? FALLING_RGB : RISING_RGB;
       // The normal from the grid's neighbours (central differences) against a light from above and the side.

@@ -9,12 +9,14 @@
  * {@link LabelAnchor} objects, children of what they name.
  */
 import { type Camera, Object3D, type Scene, Vector3 } from 'three';
-import { type LabelPlacement, type LabelRequest, type PixelRect, placeLabels } from './labelLayout';
+import { type LabelPlacement, type LabelRequest, leaderLine, type PixelRect, placeLabels } from './labelLayout';
 
 /**
  * A label anchored at a 3D point: an object of the scene that carries an HTML element. After each
  * frame the layer centres the outer element on the point's projection (its inline transform is set
- * through the CSSOM) and offsets the inner one, which carries the class and the text.
+ * through the CSSOM) and offsets the inner one, which carries the class and the text; a leader
+ * line (the outer element's second child) joins the point to the label's nearest edge whenever
+ * the label sits away from its point.
  */
 export class LabelAnchor extends Object3D {
   readonly element = document.createElement('div');
@@ -31,8 +33,17 @@ export class LabelAnchor extends Object3D {
     const inner = document.createElement('span');
     inner.className = `scene-label ${className}`;
     inner.textContent = text;
-    this.element.append(inner);
+    const leader = document.createElement('span');
+    leader.className = 'scene-leader';
+    leader.style.display = 'none';
+    this.element.append(inner, leader);
     this.request = { anchorXPx: 0, anchorYPx: 0, widthPx: 0, heightPx: 0, side, priority };
+    this.userData.labelAnchor = true;
+  }
+
+  /** Its text ('' while it has none: then it is not shown). */
+  labelText(): string {
+    return this.element.firstElementChild?.textContent ?? '';
   }
 
   /** Sets its text. */
@@ -154,13 +165,22 @@ export class LabelLayer {
     const placements: LabelPlacement[] = placeLabels(requests, widthPx, heightPx, obstacles);
     for (let i = 0; i < labels.length; i++) {
       const p = placements[i];
-      const inner = (labels[i] as LabelAnchor).element.firstElementChild as HTMLElement;
+      const label = labels[i] as LabelAnchor;
+      const inner = label.element.firstElementChild as HTMLElement;
+      const leader = label.element.lastElementChild as HTMLElement;
       if (!p?.visible) {
         inner.style.visibility = 'hidden';
+        leader.style.display = 'none';
         continue;
       }
       inner.style.visibility = '';
       inner.style.transform = `translate(${p.dxPx.toFixed(1)}px, ${p.dyPx.toFixed(1)}px)`;
+      const line = leaderLine(p.dxPx, p.dyPx, label.request.widthPx, label.request.heightPx);
+      leader.style.display = line === null ? 'none' : '';
+      if (line !== null) {
+        leader.style.width = `${line.lengthPx.toFixed(1)}px`;
+        leader.style.transform = `rotate(${line.angleDeg.toFixed(1)}deg)`;
+      }
     }
     const keys = [...drawn].sort().join(' ');
     if (this.container.dataset.drawn !== keys) this.container.dataset.drawn = keys;

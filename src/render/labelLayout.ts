@@ -135,3 +135,30 @@ export function placeLabels(
 
 /** A label not placed. */
 const HIDDEN: LabelPlacement = { dxPx: 0, dyPx: 0, visible: false };
+
+/** Leaders shorter than this are not drawn: the label sits at its point (px). */
+const LEADER_MIN_PX = 4;
+
+/**
+ * The leader line from a label's point to the nearest edge of its box, the box's centre `dx, dy`
+ * from the point and `widthPx` x `heightPx` in size: its length and angle (from +x, clockwise on
+ * screen, degrees), or null when the point is inside the box or the line would be too short to see.
+ */
+export function leaderLine(
+  dxPx: number,
+  dyPx: number,
+  widthPx: number,
+  heightPx: number,
+): { lengthPx: number; angleDeg: number } | null {
+  const ax = Math.abs(dxPx);
+  const ay = Math.abs(dyPx);
+  // The share of the way from the box's centre to the point that lies inside the box.
+  const inside = Math.min(
+    ax === 0 ? Number.POSITIVE_INFINITY : widthPx / 2 / ax,
+    ay === 0 ? Number.POSITIVE_INFINITY : heightPx / 2 / ay,
+  );
+  if (!(inside < 1)) return null;
+  const lengthPx = Math.hypot(dxPx, dyPx) * (1 - inside);
+  if (lengthPx < LEADER_MIN_PX) return null;
+  return { lengthPx, angleDeg: (Math.atan2(dyPx, dxPx) * 180) / Math.PI };
+}

@@ -27,6 +27,8 @@ export class OrbitController {
   readonly target = new Vector3();
   /** Called after each change the user makes (the view redraws). */
   onChange: (() => void) | null = null;
+  /** Called when the user zooms or pans (the view stops fitting its camera to what it draws). */
+  onZoomOrPan: (() => void) | null = null;
 
   private readonly pointers = new Map<number, { x: number; y: number }>();
   private readonly offset = new Vector3();
@@ -63,6 +65,7 @@ export class OrbitController {
     e.removeEventListener('contextmenu', this.onContextMenu);
     this.pointers.clear();
     this.onChange = null;
+    this.onZoomOrPan = null;
   }
 
   /**
@@ -90,6 +93,7 @@ export class OrbitController {
     if (!(factor > 0) || !Number.isFinite(factor)) return;
     this.offset.copy(this.camera.position).sub(this.target).multiplyScalar(factor);
     this.camera.position.copy(this.target).add(this.offset);
+    this.onZoomOrPan?.();
     this.changed();
   }
 
@@ -103,6 +107,7 @@ export class OrbitController {
     this.right.add(this.upOnScreen);
     this.target.add(this.right);
     this.camera.position.add(this.right);
+    this.onZoomOrPan?.();
     this.changed();
   }
 

@@ -13,8 +13,13 @@
  *  - objects are built once and updated in place; nothing is rebuilt per update, so nothing
  *    leaks (the axes are scaled, HTML labels are created once and only shown or hidden);
  *  - a frame is rendered only when something changed (view3d.ts);
- *  - the camera is fitted on the first geometry and refitted, keeping the viewing direction,
- *    whenever the tool radius changes;
+ *  - the camera is fitted (cameraFit.ts) to the tool with its shank, its sections, the passes'
+ *    paths and the labels' points, so that all are inside the view and fill it: on the first
+ *    geometry from the isometric preset, on each preset, and on each new state or size keeping the
+ *    viewing direction, until the user zooms or pans (then only scaled with the tool radius);
+ *    while the step-through shows a step, on what that step shows (its section, candidates and
+ *    point), moved at once (no animation, so nothing moves for a reader who asked for reduced
+ *    motion, and a step costs one frame);
  *  - the camera's near and far planes enclose what is drawn (clipPlanes.ts): the tool is seen at
  *    every radius from 0.001 to 1000 mm and however the user turns or zooms;
  *  - after a lost WebGL context is restored it draws the last state on the theme's colours
@@ -22,9 +27,9 @@
  *  - `dispose()` disconnects the observers and the canvas listeners and frees every GPU resource
  *    and DOM node it made.
  */
-import { AmbientLight, DirectionalLight, Group } from 'three';
+import { AmbientLight, DirectionalLight, Group, type Object3D } from 'three';
 import type { SceneGeometry, TraceFrame } from '../worker/protocol';
-import { type CameraPreset, presetCamera, rescaleCamera } from './cameraFit';
+import { type CameraPreset, fitCamera, presetDirection, type Vec3 } from './cameraFit';
 import { drawnBoundingSphere } from './clipPlanes';
 import { AxesDrawable } from './drawables/axes';
 import { CuspsDrawable } from './drawables/cusps';
@@ -35,6 +40,7 @@ import { PathsDrawable } from './drawables/paths';
 import { ToolDrawable } from './drawables/tool';
 import { ToolMarksDrawable } from './drawables/toolMarks';
 import { TraceDrawable, type TraceSizes } from './drawables/trace';
+import { gatherFramePoints } from './framePoints';
 import { heightMapFor, sceneHeightExaggeration } from './heightExaggeration';
 import { LabelAnchor, LabelLayer } from './labelLayer';
 import { View3D } from './view3d';
@@ -43,6 +49,28 @@ export type { CameraPreset } from './cameraFit';
 export type { SceneLabels } from './drawables/parts';
 
 const BACKGROUND = 0xf7f8fa;
+
+/** The share of the view's half-size kept free around the whole scene (its labels' points at the edge). */
+const OVERVIEW_MARGIN = 0.14;
+/** Around a step's section and points: the close-up keeps some of the tool around them in view. */
+const FOCUS_MARGIN = 0.45;
+
+/** Where the camera is and what it was fitted to (world mm), for the tests' probe. */
+export interface SceneFraming {
+  readonly position: Vec3;
+  readonly target: Vec3;
+  readonly up: Vec3;
+  readonly fovDeg: number;
+  readonly aspect: number;
+  /** The corners of the tool's bounding box (the tool in its posture, shank included; flat xyz). */
+  readonly toolBox: readonly number[];
+  /** Every point the camera was fitted to (flat xyz). */
+  readonly framed: readonly number[];
+  /** The step-through's close-up: the points of the step shown (flat xyz), or null when none is. */
+  readonly focus: readonly number[] | null;
+  /** Whether the camera still follows what is drawn (false once the user zoomed or panned). */
+  readonly autoFit: boolean;
+}
 
 export class ToolScene {
   private readonly view: View3D;
@@ -80,6 +108,14 @@ export class ToolScene {
   private traceSizes: TraceSizes = { map: heightMapFor(1, 0), cornerRadiusMm: 1, toolRadiusMm: 1 };
   /** Tool radius the camera was fitted to (0: not yet). */
   private fittedRadiusMm = 0;
+  /** The preset last asked (the first fit looks from it, should it be asked before any state). */
+  private preset: CameraPreset = 'iso';
+  /** The camera follows what is drawn until the user zooms or pans (a preset takes it back). */
+  private autoFit = true;
+  /** Whether a step of the step-through is shown (the camera then frames it). */
+  private traceShown = false;
+  /** The points of the last fit (reused). */
+  private readonly points: number[] = [];
 
   constructor(private readonly container: HTMLElement) {
     this.view = new View3D(container, {
@@ -93,7 +129,13 @@ export class ToolScene {
       quality: 'adaptive',
     });
     this.labels = new LabelLayer(container, () => this.requestRender());
-    const { scene, camera } = this.view;
+    const { scene, camera, controls } = this.view;
+    controls.onZoomOrPan = () => {
+      this.autoFit = false;
+    };
+    this.view.afterResize = () => {
+      if (this.fittedRadiusMm > 0 && this.autoFit) this.fitView();
+    };
     this.view.afterRender = () => this.labels.layout(scene, camera, this.view.widthPx, this.view.heightPx);
     scene.add(new AmbientLight(0xffffff, 1.2));
     const sun = new DirectionalLight(0xffffff, 1.6);
@@ -164,26 +206,87 @@ export class ToolScene {
         ? 'Every length and height is drawn at true scale.'
         : `So that the scallop can be seen, heights from the plane up to twice the scallop height are drawn ${map.factor} times taller, the tool above them at true scale. Only the drawing: every number is the solver's.`;
     drawnBoundingSphere(this.view.scene, (o) => o instanceof LabelAnchor, this.view.drawnSphere);
-    if (Math.abs(R - this.fittedRadiusMm) > 1e-12 * R) this.fit(R);
+    this.fit(R);
     // New results are drawn at once rather than on the next animation frame: the browser
     // presents the frame at its next vsync either way, and this saves up to one frame of latency.
     this.view.renderNow();
   }
 
   /**
-   * Fits the camera to a tool of radius R: the first time from the isometric preset, afterwards
-   * scaling target and distance with R so the viewing direction stays as the user left it.
+   * After a new state: the first time from the isometric preset; then, while the camera follows
+   * what is drawn, fitted again from where it looks; once the user zoomed or panned, scaled about
+   * the contact with the tool radius only (the same view of a tool that many times larger).
    */
   private fit(R: number): void {
     const before = this.fittedRadiusMm;
     this.fittedRadiusMm = R;
-    if (before === 0) this.setCamera('iso');
-    else rescaleCamera(this.view.camera, this.view.controls, R / before);
+    if (before === 0) this.setCamera(this.preset);
+    else if (this.autoFit) this.fitView();
+    else if (Math.abs(R - before) > 1e-12 * R) {
+      const { camera, controls } = this.view;
+      const offset = camera.position
+        .clone()
+        .sub(controls.target)
+        .multiplyScalar(R / before);
+      controls.target.multiplyScalar(R / before);
+      camera.position.copy(controls.target).add(offset);
+      controls.update();
+    }
+  }
+
+  /**
+   * Fits the camera, looking from where it looks now, to everything drawn (or, while a step of the
+   * step-through is shown, to that step's section and points).
+   */
+  private fitView(): void {
+    const { camera, controls, scene } = this.view;
+    scene.updateMatrixWorld();
+    const focus = this.traceShown && gatherFramePoints(scene, this.points, true) > 0;
+    const count = focus ? this.points.length / 3 : gatherFramePoints(scene, this.points, false);
+    const towards = camera.position.clone().sub(controls.target);
+    if (towards.lengthSq() === 0) towards.set(0, 0, 1);
+    const fitted = fitCamera(this.points, count, towards.toArray(), camera.up.toArray(), {
+      fovDeg: camera.fov,
+      aspect: camera.aspect,
+      margin: focus ? FOCUS_MARGIN : OVERVIEW_MARGIN,
+    });
+    if (fitted === null) return;
+    camera.position.set(...fitted.position);
+    controls.target.set(...fitted.target);
+    controls.update();
+    this.requestRender();
+  }
+
+  /** Where the camera is and what it frames (the tests' probe). */
+  framing(): SceneFraming {
+    const { camera, controls, scene } = this.view;
+    scene.updateMatrixWorld();
+    const toolBox: number[] = [];
+    gatherFramePoints(this.tool.objects[0] as Object3D, toolBox, false);
+    const all: number[] = [];
+    gatherFramePoints(scene, all, false);
+    const focus: number[] = [];
+    const focused = this.traceShown && gatherFramePoints(scene, focus, true) > 0;
+    return {
+      position: camera.position.toArray(),
+      target: controls.target.toArray(),
+      up: camera.up.toArray(),
+      fovDeg: camera.fov,
+      aspect: camera.aspect,
+      toolBox,
+      framed: all,
+      focus: focused ? focus : null,
+      autoFit: this.autoFit,
+    };
   }
 
   /** Shows one frame of the paper's procedure (section, candidates, point), or hides the replay. */
   showTraceFrame(frame: TraceFrame | null): void {
-    if (this.trace.show(frame, this.traceSizes)) this.requestRender();
+    if (!this.trace.show(frame, this.traceSizes)) return;
+    this.traceShown = frame !== null;
+    // The camera moves to what the step shows (or back to the whole scene when the replay ends).
+    if (this.autoFit && this.fittedRadiusMm > 0) this.fitView();
+    this.requestRender();
   }
 
   /** Marks the view as not answering the inputs on screen (or answering them again). */
@@ -191,8 +294,16 @@ export class ToolScene {
     this.container.classList.toggle('stale', stale);
   }
 
+  /** Looks from a preset direction (cameraFit.ts), fitted to what is drawn; the camera follows it again. */
   setCamera(preset: CameraPreset): void {
-    presetCamera(this.view.camera, this.view.controls, preset, this.fittedRadiusMm || 3);
+    const { camera, controls } = this.view;
+    const { towardsCamera, up } = presetDirection(preset);
+    this.preset = preset;
+    camera.up.set(...up);
+    camera.position.copy(controls.target).add(camera.position.clone().set(...towardsCamera));
+    controls.update();
+    this.autoFit = true;
+    this.fitView();
     this.requestRender();
   }
 

@@ -28,6 +28,7 @@ export { Vector3 } from 'three/src/math/Vector3.js';
 export { Group } from 'three/src/objects/Group.js';
 export { Line } from 'three/src/objects/Line.js';
 export { LineLoop } from 'three/src/objects/LineLoop.js';
+export { LineSegments } from 'three/src/objects/LineSegments.js';
 export { Mesh } from 'three/src/objects/Mesh.js';
 export { Points } from 'three/src/objects/Points.js';
 export { WebGLRenderer } from 'three/src/renderers/WebGLRenderer.js';

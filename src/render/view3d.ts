@@ -104,6 +104,8 @@ export class View3D {
   frames = 0;
   /** Called after each rendered frame (the page's and the tests' frame listener). */
   onFrame: (() => void) | null = null;
+  /** Called after the view takes a new size, before its frame is drawn (the owner may refit its camera). */
+  afterResize: (() => void) | null = null;
   /** Called after each render, before `onFrame`, with the frame on the canvas (the label layer). */
   afterRender: (() => void) | null = null;
   private readonly resizeObserver = new ResizeObserver(() => this.resize());
@@ -185,6 +187,7 @@ export class View3D {
     this.renderer.setSize(w, h, false);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.afterResize?.();
     this.requestRender();
   }
 
@@ -199,6 +202,7 @@ export class View3D {
     this.renderer.dispose();
     canvas.remove();
     this.afterRender = null;
+    this.afterResize = null;
     this.onFrame = null;
   }
 }

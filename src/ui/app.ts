@@ -268,6 +268,7 @@ export class CalculatorApp {
       softwareRendering: () => this.scene.softwareRendering,
       activeView: () => this.teaching?.activeView ?? null,
       workerStarts: () => this.client.started,
+      sceneFraming: () => this.scene.peek()?.framing() ?? null,
     };
   }
 

@@ -7,6 +7,7 @@
  * instead of sleeping, the calls sent to and the replies received from each named worker and the
  * writes of the URL.
  */
+import type { SceneFraming } from '../render/scene';
 import { type AppObserver, CalculatorApp } from './app';
 
 export interface Probe {
@@ -24,6 +25,8 @@ export interface Probe {
   pending(worker?: string): number;
   /** URL writes so far (history.replaceState calls: urlState.ts writes once the inputs settle). */
   urlWrites(): number;
+  /** The 3D scene's camera and what it frames (null before the scene is built). */
+  sceneFraming(): SceneFraming | null;
 }
 
 /** rpc.ts messages: a call from the page, and the worker's final answer to one (not progress). */
@@ -141,6 +144,7 @@ export function startWithProbe(root: HTMLElement): void {
     firstResultMs: () => firstResultMs,
     activeView: d.activeView,
     workerStarts: d.workerStarts,
+    sceneFraming: d.sceneFraming,
     ...workerMessages,
     urlWrites,
   };

@@ -63,6 +63,11 @@ export class SceneSlot<S extends SlotScene> {
     return this.scene?.softwareRendering ?? false;
   }
 
+  /** The scene once built, else null (read by the tests' probe). */
+  peek(): S | null {
+    return this.scene;
+  }
+
   /** True once the scene is built. */
   get ready(): boolean {
     return this.scene !== null;

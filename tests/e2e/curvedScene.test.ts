@@ -8,6 +8,7 @@
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { paintedFraction, SHOTS, sceneIdle, useSite } from './harness';
+import { hueShares } from './pixels';
 
 const site = useSite('docs/curved-scene');
 
@@ -27,31 +28,6 @@ async function open(query: string, viewport: { width: number; height: number }) 
   await page.goto(`${site.url()}?${query}`);
   await page.getByTestId('result-exact-interval').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
   return { page, errors };
-}
-
-/** Shares of the scene's pixels that are clearly blue (b > r + 40) and clearly orange (r > b + 60, g between). */
-async function hueShares(page: Page): Promise<{ blue: number; orange: number }> {
-  const png = (await page.getByTestId('scene-canvas').screenshot()).toString('base64');
-  return page.evaluate(async (b64) => {
-    const image = new Image();
-    image.src = `data:image/png;base64,${b64}`;
-    await image.decode();
-    const canvas = document.createElement('canvas');
-    canvas.width = image.width;
-    canvas.height = image.height;
-    const ctx = canvas.getContext('2d');
-    if (!ctx) return { blue: 0, orange: 0 };
-    ctx.drawImage(image, 0, 0);
-    const d = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
-    let blue = 0;
-    let orange = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      const [r, g, b] = [d[i] as number, d[i + 1] as number, d[i + 2] as number];
-      if (b > r + 40) blue++;
-      else if (r > b + 60 && g > b + 20 && g < r - 20) orange++;
-    }
-    return { blue: blue / (d.length / 4), orange: orange / (d.length / 4) };
-  }, png);
 }
 
 /** The scene's labels on screen overlap none other and lie inside the scene (as teachScene.test.ts checks). */

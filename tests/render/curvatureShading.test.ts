@@ -43,3 +43,21 @@ describe('curvature shading', () => {
     expect(patchIndices(ROWS - 1, COLUMNS - 1).length).toBe((ROWS - 1) * (COLUMNS - 1) * 6);
   });
 });
+
+describe('curvatureColoursInto on a cylinder', () => {
+  it('a convex cylinder (heights 0 along its tangent line, below it elsewhere): every colour finite, the tangent line pale', () => {
+    const rows = 5;
+    const columns = 7;
+    const positions: number[] = [];
+    for (let r = 0; r < rows; r++)
+      for (let c = 0; c < columns; c++) {
+        const y = c - 3;
+        positions.push(r, y, -(y * y) / 10);
+      }
+    const out = new Float32Array(positions.length);
+    curvatureColoursInto(out, positions, rows, columns, 0);
+    expect(out.every(Number.isFinite)).toBe(true);
+    // The tangent line (y = 0) in the palest band, lighter than the edges.
+    expect(out[3 * 3]).toBeGreaterThan(out[0] as number);
+  });
+});

@@ -6,6 +6,7 @@
 import { type Mesh, type Object3D, SphereGeometry } from 'three';
 import { circleInto } from '../../core/output/sceneMarks';
 import { type CuspGeometry, LOOP_MAX_POINTS } from '../../worker/protocol';
+import { framed } from '../framePoints';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import {
@@ -23,14 +24,14 @@ import {
 
 /** One cusp's drawing: its section circle, its P_hp and the torus / plane curves at its height. */
 class CuspMarks {
-  readonly section = legend(lineOf(SECTION_POINTS, COLOURS.section, true), 'section');
+  readonly section = framed(legend(lineOf(SECTION_POINTS, COLOURS.section, true), 'section'), 'points');
   readonly loops = [lineOf(LOOP_MAX_POINTS, COLOURS.loop, true), lineOf(LOOP_MAX_POINTS, COLOURS.loop, true)];
   /** The cusp along the feed (the scallop's ridge), at its height. */
   readonly ridge = legend(lineOf(2, COLOURS.ridge), 'ridge');
   readonly point: Mesh;
 
   constructor(dot: SphereGeometry, text: string, className: string, side: readonly [number, number]) {
-    this.point = markerOf(dot, COLOURS.pHp, 'php');
+    this.point = framed(markerOf(dot, COLOURS.pHp, 'php'), 'origin');
     this.point.add(new LabelAnchor(text, className, side, 8));
     for (const l of this.loops) legend(l, 'loop');
   }
@@ -76,7 +77,7 @@ export class CuspsDrawable implements Drawable {
 
   constructor() {
     const point = (text: string, className: string, side: readonly [number, number]) => {
-      const m = markerOf(this.dot, COLOURS.pHp, 'cusp');
+      const m = framed(markerOf(this.dot, COLOURS.pHp, 'cusp'), 'origin');
       m.add(new LabelAnchor(text, className, side, 8));
       m.visible = false;
       return m;

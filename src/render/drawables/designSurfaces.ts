@@ -2,20 +2,29 @@
  * The design surface and the h pseudo surface (the surface offset by the scallop height h): two
  * translucent patches around the contact, 2.8 R along the feed and 2 L + 2.4 R across it, whatever
  * the surface (surfaceGeometry.ts gives their points; a plane is one more surface there). Heights
- * are drawn through the state's height map. A doubly curved patch is coloured by its height above
- * the tangent plane (curvatureShading.ts: dome, bowl and saddle read at a glance); a plane and a
- * cylinder keep the material's colour.
+ * are drawn through the state's height map. A curved patch (a cylinder, a doubly curved point) is
+ * coloured by its height above the tangent plane (curvatureShading.ts: dome, bowl, saddle and the
+ * cylinder's fall read at a glance, shaded by its normal so that it reads curved); a plane keeps
+ * the material's colour. The two surfaces differ by more than colour (issue 21): the design
+ * surface is the more opaque, edged with a solid line; the h pseudo surface is faint, ruled with
+ * a grid of its own colour; each is named by a label on it.
  */
-import { BufferAttribute, BufferGeometry, DoubleSide, Mesh, MeshBasicMaterial, type Object3D } from 'three';
-import { patchIndices, surfacePatch } from '../../core/output/surfaceGeometry';
+import {
+  BufferAttribute,
+  BufferGeometry,
+  DoubleSide,
+  LineBasicMaterial,
+  LineSegments,
+  Mesh,
+  MeshBasicMaterial,
+  type Object3D,
+} from 'three';
+import { patchIndices, surfacePatch, surfacePoint } from '../../core/output/surfaceGeometry';
 import { curvatureColoursInto } from '../curvatureShading';
-import { drawHeightsInPlace } from '../heightExaggeration';
-import { legend } from '../labelLayer';
+import { drawHeightsInPlace, drawnHeightMm } from '../heightExaggeration';
+import { LabelAnchor, legend } from '../labelLayer';
+import { PATCH_CROSS, PATCH_FEED, patchLineIndices } from '../outlineIndices';
 import { COLOURS, type Drawable, type DrawState, disposeObjects } from './parts';
-
-/** The patches' grid: segments along the feed and across it. */
-const PATCH_FEED = 48;
-const PATCH_CROSS = 64;
 
 /** A curved patch's material colour: white (not themed), so that its vertex colours show as they are. */
 const CURVED_BASE = 0xffffff;
@@ -41,6 +50,17 @@ function patchMesh(color: number, opacity: number, shaded: boolean): Mesh {
   return m;
 }
 
+/** Lines over a patch's own vertices (its position buffer shared: updated with it). */
+function patchLines(patch: Mesh, color: number, opacity: number, every: number): LineSegments {
+  const g = new BufferGeometry();
+  g.setAttribute('position', patch.geometry.getAttribute('position'));
+  g.setIndex(new BufferAttribute(patchLineIndices(every), 1));
+  const lines = new LineSegments(g, new LineBasicMaterial({ color, transparent: true, opacity }));
+  lines.frustumCulled = false;
+  patch.add(lines);
+  return lines;
+}
+
 /** Writes a patch of the surface offset by `heightMm` into `mesh`'s buffer, heights drawn through the map. */
 function fillPatch(mesh: Mesh, s: DrawState, heightMm: number): void {
   const attr = mesh.geometry.getAttribute('position') as BufferAttribute;
@@ -59,20 +79,46 @@ function fillPatch(mesh: Mesh, s: DrawState, heightMm: number): void {
   mesh.geometry.computeBoundingSphere();
 }
 
+/** The h pseudo surface's grid: a line every this many rows and columns of its patch. */
+const H_GRID_EVERY = 8;
+
 export class DesignSurfacesDrawable implements Drawable {
-  private readonly design = legend(patchMesh(COLOURS.plane, 0.55, false), 'design');
-  /** A doubly curved patch: coloured by its shape, more opaque so that the colours read. */
+  private readonly design = legend(patchMesh(COLOURS.plane, 0.6, false), 'design');
+  /** A curved patch: coloured by its shape, more opaque so that the colours read. */
   private readonly curved = legend(patchMesh(CURVED_BASE, 0.85, true), 'design');
-  private readonly hSurface = legend(patchMesh(COLOURS.hPlane, 0.18, false), 'hplane');
+  private readonly hSurface = legend(patchMesh(COLOURS.hPlane, 0.14, false), 'hplane');
+  private readonly designName = new LabelAnchor('design plane', 'label-surface', [1, 1], 3);
+  private readonly hName = new LabelAnchor('h pseudo plane', 'label-hsurface', [1, -1], 3);
   readonly objects: readonly Object3D[] = [this.design, this.curved, this.hSurface];
 
+  constructor() {
+    for (const patch of [this.design, this.curved]) legend(patchLines(patch, COLOURS.centre, 0.7, 0), 'design');
+    legend(patchLines(this.hSurface, COLOURS.hPlane, 0.35, H_GRID_EVERY), 'hplane');
+    this.design.add(this.designName);
+    this.hSurface.add(this.hName);
+  }
+
   update(s: DrawState): void {
-    const kind = s.geometry.surface.kind;
-    const curved = kind === 'torus' || kind === 'revolution';
+    const surface = s.geometry.surface;
+    const curved = surface.kind !== 'plane';
     this.design.visible = !curved;
     this.curved.visible = curved;
     fillPatch(curved ? this.curved : this.design, s, 0);
     fillPatch(this.hSurface, s, s.geometry.scallopHeightMm);
+    // The names, on each surface beside the passes: the design's before this pass, the h one's after it.
+    const R = s.toolRadiusMm;
+    const L = s.intervalMm;
+    const at = (label: LabelAnchor, crossMm: number, heightMm: number) => {
+      const p = surfacePoint(surface, 0.95 * R, crossMm, heightMm);
+      label.position.set(p[0], p[1], drawnHeightMm(s.map, p[2]));
+    };
+    at(this.designName, -0.6 * L, 0);
+    at(this.hName, 0.6 * L, s.geometry.scallopHeightMm);
+    this.designName.setText(curved ? 'design surface' : 'design plane');
+    this.hName.setText(curved ? 'h pseudo surface' : 'h pseudo plane');
+    // The curved patch carries the design surface's name while it is shown.
+    const parent = curved ? this.curved : this.design;
+    if (this.designName.parent !== parent) parent.add(this.designName);
   }
 
   dispose(): void {

@@ -6,6 +6,7 @@
  */
 import type { Line, Object3D } from 'three';
 import { surfacePolylineInto } from '../../core/output/surfaceGeometry';
+import { framed } from '../framePoints';
 import { legend } from '../labelLayer';
 import { COLOURS, type Drawable, type DrawState, disposeObjects, finishLine, lineOf, positionsOf } from './parts';
 
@@ -14,7 +15,7 @@ export const PATH_SEGMENTS = 48;
 
 export class PathsDrawable implements Drawable {
   private readonly paths: readonly Line[] = [0, 1, 2].map(() =>
-    legend(lineOf(PATH_SEGMENTS + 1, COLOURS.path), 'path'),
+    framed(legend(lineOf(PATH_SEGMENTS + 1, COLOURS.path), 'path'), 'points'),
   );
   readonly objects: readonly Object3D[] = this.paths;
 

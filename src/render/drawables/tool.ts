@@ -1,12 +1,16 @@
 /**
  * The tool in its posture (a translucent body) and the neighbouring passes' tools at -L and +L
- * (wireframe ghosts, mirrored for zigzag), carried along the surface by the core's rigid motion;
+ * (mirrored for zigzag) drawn lighter, as outlines (the flat end's edge, the top of the corner,
+ * the shank's top and four lines along the shank) over a faint body, so that they do not crowd the
+ * section circles between them, carried along the surface by the core's rigid motion;
  * for three-axis machining the passes its machine view gives (one: the next pass).
  */
 import {
   BufferAttribute,
   BufferGeometry,
   DoubleSide,
+  LineBasicMaterial,
+  LineSegments,
   Mesh,
   MeshBasicMaterial,
   MeshStandardMaterial,
@@ -15,8 +19,10 @@ import {
 import { passMatrix } from '../../core/output/surfaceGeometry';
 import { toolMeshIndices } from '../../core/tool/toolMesh';
 import { TOOL_RADIAL_SEGMENTS } from '../../worker/protocol';
+import { framed } from '../framePoints';
 import { drawHeightsInPlace } from '../heightExaggeration';
 import { legend } from '../labelLayer';
+import { toolOutlineIndices } from '../outlineIndices';
 import { COLOURS, type Drawable, type DrawState, disposeObjects } from './parts';
 
 export class ToolDrawable implements Drawable {
@@ -25,6 +31,8 @@ export class ToolDrawable implements Drawable {
   private readonly geometry = new BufferGeometry();
   /** The neighbouring passes, at -L and +L. */
   private readonly neighbours: readonly [Mesh, Mesh];
+  /** Their outline: lines over the same vertices as the body. */
+  private readonly outline = new BufferGeometry();
 
   constructor() {
     this.geometry.setAttribute('position', new BufferAttribute(new Float32Array(0), 3));
@@ -41,11 +49,21 @@ export class ToolDrawable implements Drawable {
         depthWrite: false,
       }),
     );
-    const ghost = new MeshBasicMaterial({ color: COLOURS.ghost, wireframe: true, transparent: true, opacity: 0.12 });
+    this.outline.setAttribute('position', this.geometry.getAttribute('position'));
+    this.outline.setIndex(new BufferAttribute(toolOutlineIndices(TOOL_RADIAL_SEGMENTS), 1));
+    const ghost = new MeshBasicMaterial({
+      color: COLOURS.ghost,
+      transparent: true,
+      opacity: 0.06,
+      side: DoubleSide,
+      depthWrite: false,
+    });
+    const edge = new LineBasicMaterial({ color: COLOURS.ghost, transparent: true, opacity: 0.55 });
     this.neighbours = [new Mesh(this.geometry, ghost), new Mesh(this.geometry, ghost)];
+    for (const m of this.neighbours) m.add(legend(new LineSegments(this.outline, edge), 'tool'));
     // Their placement is a rigid motion from the core (passMatrix), set as the matrix itself.
     for (const m of this.neighbours) m.matrixAutoUpdate = false;
-    this.objects = [legend(tool, 'tool'), ...this.neighbours.map((m) => legend(m, 'tool'))];
+    this.objects = [framed(legend(tool, 'tool'), 'box'), ...this.neighbours.map((m) => legend(m, 'tool'))];
   }
 
   update(s: DrawState): void {
@@ -56,6 +74,7 @@ export class ToolDrawable implements Drawable {
       // A new size (a new mesh resolution): the one allocation, replacing the buffer.
       attr = new BufferAttribute(new Float32Array(source.length), 3);
       this.geometry.setAttribute('position', attr);
+      this.outline.setAttribute('position', attr);
     }
     const positions = attr.array as Float32Array;
     positions.set(source);
@@ -63,6 +82,7 @@ export class ToolDrawable implements Drawable {
     attr.needsUpdate = true;
     this.geometry.computeVertexNormals();
     this.geometry.computeBoundingSphere();
+    this.geometry.computeBoundingBox();
     // The neighbours: carried along the surface by L (turned about a cylinder's axis along the
     // feed, about m on a doubly curved patch); in the machine frame, the passes it gives.
     const given = g.machine?.passMatrices;

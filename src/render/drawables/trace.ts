@@ -6,6 +6,7 @@
 import { BufferAttribute, BufferGeometry, type Object3D, Points, PointsMaterial, SphereGeometry } from 'three';
 import { circleInto } from '../../core/output/sceneMarks';
 import type { TraceFrame } from '../../worker/protocol';
+import { framed } from '../framePoints';
 import { drawnHeightMm, type HeightMap } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import { COLOURS, disposeObjects, finishLine, lineOf, markerOf, positionsOf, SECTION_POINTS } from './parts';
@@ -21,9 +22,9 @@ export interface TraceSizes {
 }
 
 export class TraceDrawable {
-  private readonly section = legend(lineOf(SECTION_POINTS, COLOURS.trace, true), 'trace');
+  private readonly section = framed(legend(lineOf(SECTION_POINTS, COLOURS.trace, true), 'trace'), 'points', true);
   private readonly dot = new SphereGeometry(1, 16, 12);
-  private readonly marker = markerOf(this.dot, COLOURS.trace, 'trace');
+  private readonly marker = framed(markerOf(this.dot, COLOURS.trace, 'trace'), 'origin', true);
   private readonly label = new LabelAnchor('', 'label-trace', [-1, -1], 10);
   private readonly candidates: Points;
   readonly objects: readonly Object3D[];
@@ -34,12 +35,16 @@ export class TraceDrawable {
     const geometry = new BufferGeometry();
     geometry.setAttribute('position', new BufferAttribute(new Float32Array(CANDIDATE_CAPACITY * 3), 3));
     geometry.setDrawRange(0, 0);
-    this.candidates = legend(
-      new Points(
-        geometry,
-        new PointsMaterial({ color: COLOURS.trace, size: 6, sizeAttenuation: false, depthTest: false }),
+    this.candidates = framed(
+      legend(
+        new Points(
+          geometry,
+          new PointsMaterial({ color: COLOURS.trace, size: 6, sizeAttenuation: false, depthTest: false }),
+        ),
+        'trace',
       ),
-      'trace',
+      'points',
+      true,
     );
     this.candidates.frustumCulled = false;
     this.candidates.renderOrder = 12;
