@@ -14,6 +14,7 @@ import { formatLen, formatLenUnit, formatSignedLenUnit } from './format';
 import type { Shown } from './freshness';
 import { curvedMeaning, OtherResults } from './resultsOther';
 import { CROSS_AXIS_NOTE, curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
+import { ScrollCues } from './scrollCue';
 
 export { curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
 
@@ -54,6 +55,8 @@ export class ResultsPanel {
   private readonly other: OtherResults;
   private readonly classicDetails: HTMLElement;
   private readonly classicOnly: readonly HTMLElement[];
+  /** The shaded edge of the table's box while part of the table is scrolled out of it. */
+  private readonly cues = new ScrollCues();
 
   constructor(private readonly root: HTMLElement) {
     this.section = must(root, '.results');
@@ -61,6 +64,8 @@ export class ResultsPanel {
     this.headline = must(root, '[data-role="headline"]');
     this.thead = must(root, '.procedures thead');
     this.tbody = must(root, '.procedures tbody');
+    const scroll = must<HTMLElement>(root, '[data-testid="procedures-scroll"]');
+    if (scroll.parentElement) this.cues.watch(scroll, scroll.parentElement);
     this.notes = must(root, '[data-testid="table-notes"]');
     this.cuspRow = must(root, '[data-role="cusps"]');
     this.status = must(root, '[data-testid="results-status"]');
