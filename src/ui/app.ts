@@ -168,7 +168,8 @@ export class CalculatorApp {
         setThemeOverride(override);
         if (override === null) delete extra[FIELDS.theme.url];
         else extra[FIELDS.theme.url] = override;
-        this.url.write(this.state);
+        // The URL state keeps its own copy of the page settings: tell it (it writes the address at once).
+        this.url.setExtra(FIELDS.theme.url, override);
       });
       postHeightToParent(root);
     }

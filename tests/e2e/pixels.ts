@@ -45,6 +45,9 @@ export function clippedElements(page: Page): Promise<string[]> {
       const b = e.getBoundingClientRect();
       if (b.width === 0 || b.height === 0 || (b.right <= width + 0.5 && b.left >= -0.5)) continue;
       if (e instanceof SVGElement && e.ownerSVGElement) continue; // drawn inside an SVG's own viewport
+      // A 3D label's anchor is a positioning box centred on its point (which may lie outside the view,
+      // clipped by the label layer); what shows is its label, checked on its own.
+      if (e.classList.contains('scene-label-anchor')) continue;
       if (inScrollBox(e) || e.closest('.sr-only') || getComputedStyle(e).visibility === 'hidden') continue;
       out.push(
         `${e.tagName.toLowerCase()}.${e.getAttribute('class') ?? ''} [${Math.round(b.left)}, ${Math.round(b.right)}]`,

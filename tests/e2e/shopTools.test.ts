@@ -204,9 +204,13 @@ describe('tools of the shop (phone)', () => {
     const page = await open('?D=6&Rcr=1&rho=5&h=0.05&unit=mm');
     // The fallback field for a refused clipboard is not shown while the clipboard works.
     expect(await page.getByTestId('link-text').isVisible()).toBe(false);
+    const before = await text(page, 'result-exact-interval');
     await typeInto(page, 'input-Rcr', '1/32"');
     await page.keyboard.press('Enter');
     await expect.poll(() => page.getByTestId('input-Rcr').inputValue()).toBe('0.79375');
+    // The answer to the new corner radius (not the one shown before the worker replied).
+    await expect.poll(() => text(page, 'result-exact-interval')).not.toBe(before);
+    await expect.poll(() => page.locator('.results').getAttribute('aria-busy')).toBe('false');
     const answer = await text(page, 'result-exact-interval');
     await page.getByTestId('copy-link').tap();
     await expect.poll(() => text(page, 'copy-link-status')).toMatch(/Link copied/);
