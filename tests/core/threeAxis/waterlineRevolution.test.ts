@@ -265,6 +265,50 @@ describe('limits and refusals', () => {
       expect(f.errors[0]?.message).toContain('bottom');
     }
   });
+  it('a step past the vertical of a convex meridian (closed form L = (90 - alpha) Rc) is refused by the first limit met on the way, the shank below the vertical (seed 15)', () => {
+    // The next pass past the vertical is on an overhang no upright tool reaches: no pass is placed
+    // (or checked for gouging) there. The refusal is the upper pass's own gouging, or the shank,
+    // whose limit lies before the vertical (the lower contact reaches the corner's top, where the
+    // shank starts, at the vertical); just inside it the cusp is the brute force's.
+    const rand = seededRandom(15);
+    let shank = 0;
+    let brute = 0;
+    for (let i = 0; i < 400; i++) {
+      const R = 0.5 + 5 * rand();
+      const Rcr = R * (0.1 + 0.9 * rand());
+      const rc = R * (0.5 + 5 * rand());
+      const rf = (rand() < 0.5 ? 1 : -1) * R * (0.5 + 5 * rand());
+      const c: RevolutionCase = {
+        toolRadiusMm: R,
+        cornerRadiusMm: Rcr,
+        slopeDeg: 30 + 59 * rand(),
+        feedRadiusMm: rf,
+        crossRadiusMm: rc,
+      };
+      const toVertical = ((90 - c.slopeDeg) * Math.PI * rc) / 180;
+      const L = toVertical * (1.01 + 2 * rand());
+      const r = waterlineInverse(c, { field: 'interval', mm: L });
+      expect(r.ok).toBe(false);
+      if (r.ok) continue;
+      const e = r.errors[0];
+      if (e?.code === 'gouging') {
+        const upper = waterlineInverse(c, { field: 'interval', mm: 1e-6 });
+        expect(!upper.ok && upper.errors[0]?.code, JSON.stringify(c)).toBe('gouging');
+        continue;
+      }
+      shank += 1;
+      expect(e?.code).toBe('shank-cuts');
+      expect(e?.limit as number).toBeLessThan(toVertical);
+      if (brute >= 3) continue;
+      const inside = waterlineInverse(c, { field: 'interval', mm: (e?.limit as number) * (1 - 1e-6) });
+      if (!inside.ok) continue;
+      brute += 1;
+      const b = bruteWaterlineCusp({ R, Rcr }, c, inside.value.intervalMm, 8);
+      expect(Math.abs(b.polishedMm - inside.value.cuspHeightMm)).toBeLessThan(1e-9);
+    }
+    expect(shank).toBeGreaterThan(300);
+    expect(brute).toBe(3);
+  });
   it('a flat end in waterline: the side forms every cusp; alpha 90: a vertical wall; alpha 0: no step', () => {
     const flat = waterlineForward(
       { toolRadiusMm: 3, cornerRadiusMm: 0, slopeDeg: 30, feedRadiusMm: null, crossRadiusMm: null },
