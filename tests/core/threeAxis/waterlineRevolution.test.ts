@@ -324,6 +324,123 @@ describe('limits and refusals', () => {
   });
 });
 
+describe('slope 90 on a curved meridian (issue 26 point 3)', () => {
+  // A concave meridian at 90 degrees (a wall flaring out below into a fillet): the passes below are
+  // less steep, so adjacent passes touch at different slopes and leave a scallop. Answered, and
+  // continuous with the slopes just below 90; only a straight meridian is cut flat by the side.
+  it('a ball end: two circles about the meridian centre (closed form), as at 89.999 (seed 16)', () => {
+    const rand = seededRandom(16);
+    for (let i = 0; i < 100; i++) {
+      const R = 0.05 + 10 * rand();
+      // |Rc| below 2R: above it the cusp at 90 degrees is on the upper half of the ball, the shank's (last test).
+      const rc = -R * (1.05 + 0.9 * rand());
+      const rf = rand() < 0.3 ? null : (rand() < 0.5 ? 1 : -1) * R * (2 + 400 * rand());
+      const c: RevolutionCase = {
+        toolRadiusMm: R,
+        cornerRadiusMm: R,
+        slopeDeg: 90,
+        feedRadiusMm: rf,
+        crossRadiusMm: rc,
+      };
+      const h = R * (1e-6 + 0.2 * rand());
+      const f = waterlineForward(c, h);
+      if (!f.ok) {
+        expect(['gouging', 'past-surface'], JSON.stringify([c, h, f.errors])).toContain(f.errors[0]?.code);
+        continue;
+      }
+      // Ball centres on the circle of radius |Rc| - R about the meridian's centre, the cusp |Rc| - h from it.
+      const Ro = -rc - R;
+      const p = -rc - h;
+      const sp = (Ro + p + R) / 2;
+      const phi = 4 * Math.atan(Math.sqrt(((sp - Ro) * (sp - p)) / (sp * (sp - R))));
+      expect(Math.abs(f.value.intervalMm - -rc * phi)).toBeLessThan(1e-9);
+      // Tips R below the centres: dz = Ro (cos a1 - cos 90) with a1 = 90 - phi.
+      expect(Math.abs(f.value.stepDownMm - Ro * Math.sin(phi))).toBeLessThan(1e-9);
+      const near = waterlineForward({ ...c, slopeDeg: 89.999 }, h);
+      expect(near.ok && Math.abs(near.value.intervalMm - f.value.intervalMm)).toBeLessThan(1e-9);
+    }
+  });
+
+  it('a bull-nose: the brute force at 90, and L, dz and the height limit continuous from below (seed 17)', () => {
+    const rand = seededRandom(17);
+    let brute = 0;
+    let answered = 0;
+    for (let i = 0; i < 60; i++) {
+      const R = 0.5 + 5 * rand();
+      const Rcr = R * (0.6 + 0.4 * rand());
+      // R < |Rc| (a smaller fillet is gouged by the bottom's far end) and Rcr above |Rc| / 2 (below
+      // it the shank forms the cusp at 90 degrees: the last test).
+      const rc = -(1.01 * R + (2 * Rcr - 1.01 * R) * 0.95 * rand());
+      const rf = rand() < 0.3 ? null : R * (3 + 400 * rand());
+      const c: RevolutionCase = {
+        toolRadiusMm: R,
+        cornerRadiusMm: Rcr,
+        slopeDeg: 90,
+        feedRadiusMm: rf,
+        crossRadiusMm: rc,
+      };
+      const limit = waterlineHeightLimitMm(c);
+      const below = waterlineHeightLimitMm({ ...c, slopeDeg: 90 - 1e-9 });
+      expect(Math.abs(limit - below)).toBeLessThan(1e-9 * (1 + limit));
+      const h = Math.min(limit, Rcr) * (0.01 + 0.9 * rand());
+      const f = waterlineForward(c, h);
+      if (!f.ok) {
+        expect(['gouging', 'past-surface'], JSON.stringify([c, h, f.errors])).toContain(f.errors[0]?.code);
+        continue;
+      }
+      answered += 1;
+      const g = waterlineForward({ ...c, slopeDeg: 90 - 1e-9 }, h);
+      if (!g.ok) throw new Error(JSON.stringify(g.errors));
+      expect(Math.abs(g.value.intervalMm - f.value.intervalMm)).toBeLessThan(1e-9 * (1 + f.value.intervalMm));
+      expect(Math.abs(g.value.stepDownMm - f.value.stepDownMm)).toBeLessThan(1e-9 * (1 + f.value.stepDownMm));
+      if (brute >= 4) continue;
+      brute += 1;
+      const b = bruteWaterlineCusp({ R, Rcr }, c, f.value.intervalMm, 8);
+      record('slope 90, concave meridian (brute force)', Math.abs(b.polishedMm - h));
+      expect(Math.abs(b.polishedMm - h)).toBeLessThan(1e-9);
+    }
+    expect(answered).toBeGreaterThan(30);
+  });
+
+  it("the issue's case: a ball end answers at 90 what it answers at 89.999", () => {
+    const c: RevolutionCase = {
+      toolRadiusMm: 12.1518,
+      cornerRadiusMm: 12.1518,
+      slopeDeg: 90,
+      feedRadiusMm: 2272.07,
+      crossRadiusMm: -16.5317,
+    };
+    const at = waterlineForward(c, 0.00073963);
+    const near = waterlineForward({ ...c, slopeDeg: 89.999 }, 0.00073963);
+    if (!at.ok || !near.ok) throw new Error(JSON.stringify([at, near]));
+    expect(at.value.intervalMm).toBeCloseTo(0.52096, 5);
+    expect(Math.abs(at.value.intervalMm - near.value.intervalMm)).toBeLessThan(1e-12);
+    expect(Math.abs(at.value.stepDownMm - near.value.stepDownMm)).toBeLessThan(1e-5);
+  });
+
+  it('refused at 90: a straight meridian (cut flat), a convex one (an overhang below), and a small corner on a concave one (the shank forms the step)', () => {
+    const bull = { toolRadiusMm: 3, cornerRadiusMm: 1 } as const;
+    for (const rf of [null, 40, -40]) {
+      const wall = waterlineForward({ ...bull, slopeDeg: 90, feedRadiusMm: rf, crossRadiusMm: null }, 0.01);
+      expect(!wall.ok && wall.errors[0]).toMatchObject({ field: 'slope', code: 'vertical-wall' });
+    }
+    const convex = waterlineForward({ ...bull, slopeDeg: 90, feedRadiusMm: 40, crossRadiusMm: 10 }, 0.01);
+    expect(!convex.ok && convex.errors[0]).toMatchObject({ field: 'slope', code: 'past-surface', limit: 90 });
+    // Continuous with just below: the next pass fits only before the vertical, so the limit shrinks to 0.
+    const nearConvex = waterlineHeightLimitMm({ ...bull, slopeDeg: 90 - 1e-6, feedRadiusMm: 40, crossRadiusMm: 10 });
+    expect(nearConvex).toBeLessThan(1e-9);
+    // Rcr <= |Rc| / 2: the corner's cusp reaches the next pass's shank at any step.
+    const small = waterlineForward({ ...bull, slopeDeg: 90, feedRadiusMm: 40, crossRadiusMm: -10 }, 0.01);
+    expect(!small.ok && small.errors[0]).toMatchObject({ field: 'h', code: 'shank-cuts' });
+    expect(!small.ok && (small.errors[0]?.limit as number)).toBeLessThan(1e-9);
+    expect(!small.ok && small.errors[0]?.message).toMatch(/cannot be answered at this slope.*at any step/);
+    // Continuous with just below: the limit falls as the square of the distance to 90 degrees.
+    const close = waterlineHeightLimitMm({ ...bull, slopeDeg: 90 - 1e-2, feedRadiusMm: 40, crossRadiusMm: -10 });
+    const closer = waterlineHeightLimitMm({ ...bull, slopeDeg: 90 - 1e-4, feedRadiusMm: 40, crossRadiusMm: -10 });
+    expect(Math.abs(closer / close - 1e-4)).toBeLessThan(1e-6);
+  });
+});
+
 describe('the up-slope cusp for a constant step-down', () => {
   it('is the pair whose lower pass is this one; equal to the down-slope cusp on a plane, not on a curved meridian (seed 14)', () => {
     const rand = seededRandom(14);
