@@ -154,9 +154,10 @@ export function coreError(c: RevolutionCase, s: Setup, r: Core, field: ThreeAxis
       );
     }
     case 'gouge':
-      return gougeError(c, r.pass, (cc) => {
+      return gougingError(c, r.pass === 0 ? 'at this slope' : 'at the next pass (further down, at its slope)', (cc) => {
         const ss = setupOf(cc);
-        return (field === 'h' ? forwardCore(ss, got) : inverseCore(ss, { field: field as 'stepDown', mm: got })).kind;
+        const kind = field === 'h' ? forwardCore(ss, got) : inverseCore(ss, { field: field as 'stepDown', mm: got });
+        return kind.kind === 'gouge';
       });
     case 'ok':
       throw new Error('not an error');
@@ -165,11 +166,11 @@ export function coreError(c: RevolutionCase, s: Setup, r: Core, field: ThreeAxis
 
 /**
  * The gouging error: which radius to change and its smallest magnitude with the other held, found
- * by bisection (on the logarithm of the magnitude) of the whole solve's verdict.
+ * by bisection (on the logarithm of the magnitude) of `gouges`, the verdict of the whole question
+ * (one solve, or a sweep over the slopes) for a case with that radius. `which` says where it gouges
+ * ("at this slope").
  */
-function gougeError(c: RevolutionCase, pass: 0 | 1, kindOf: (c: RevolutionCase) => Core['kind']): ThreeAxisError {
-  const which = pass === 0 ? 'at this slope' : 'at the next pass (further down, at its slope)';
-  const gouges = (cc: RevolutionCase) => kindOf(cc) === 'gouge';
+export function gougingError(c: RevolutionCase, which: string, gouges: (c: RevolutionCase) => boolean): ThreeAxisError {
   const fields = [
     ['crossRadius', c.crossRadiusMm],
     ['feedRadius', c.feedRadiusMm],
