@@ -129,6 +129,8 @@ export function waterlineCuspAbove(c: RevolutionCase, stepDownMm: number): Three
   const s = setupOf(c);
   const { k, alpha0 } = s.mer;
   const scale = 1 + s.tool.rcr * k;
+  // A corner at least as round as a concave meridian (Rcr >= |Rc|) fits nowhere on it: the inverse's gouging error.
+  if (!(scale > 0)) return waterlineInverse(c, { field: 'stepDown', mm: stepDownMm });
   const maxL = k > 0 ? alpha0 / k : k < 0 ? (Math.PI / 2 - alpha0) / -k : Number.POSITIVE_INFINITY;
   const dzOf = (L: number) => scale * L * sinc((k * L) / 2) * Math.sin(alpha0 - (k * L) / 2);
   const beyond = () => {
