@@ -18,7 +18,7 @@ function faults(v: unknown, path: string, out: string[] = []): string[] {
   if (v === null) out.push(`${path} = null`);
   else if (typeof v === 'number' && (!Number.isFinite(v) || Object.is(v, -0))) out.push(`${path} = ${v}`);
   else if (typeof v === 'string' && /NaN|Infinity|undefined|null/.test(v)) out.push(`${path}: ${v}`);
-  else if (Array.isArray(v)) v.forEach((x, i) => faults(x, `${path}[${i}]`, out));
+  else if (Array.isArray(v)) for (const [i, x] of v.entries()) faults(x, `${path}[${i}]`, out);
   else if (typeof v === 'object' && v !== null) for (const [k, x] of Object.entries(v)) faults(x, `${path}.${k}`, out);
   return out;
 }
