@@ -84,7 +84,7 @@ describe('three-axis outputs are finite numbers or stated reasons', () => {
           cornerRadiusMm: Rcr,
           hMm: mm,
           passes,
-          rasterAngleDeg: 'rasterAngle' in raw ? raw.rasterAngle : 90,
+          rasterAngleDeg: ('rasterAngle' in raw ? raw.rasterAngle : undefined) ?? 90,
           feedRadiusMm: feed,
           crossRadiusMm: cross,
           count: 31,
