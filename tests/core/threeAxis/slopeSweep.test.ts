@@ -168,7 +168,7 @@ describe('no valid slope is an input error, as the single question is (issue 26 
     const pair = brutePair({ R: 3, Rcr: 2 }, c, top.intervalMm);
     for (const tip of [pair.tip0, pair.tip1])
       expect(bruteGougeDepthMm({ R: 3, Rcr: 2 }, c, tip, 200, 360)).toBeLessThan(1e-6);
-    // With Rcr = 1 (at most |Rc| / 2) the shank forms the cusp at 90 degrees, where the tool fits
+    // With Rcr = 1 (below |Rc| / 2) the shank forms the cusp at 90 degrees, where the tool fits
     // first: h's error, not gouging.
     const small = solveSweep({ ...bull, crossRadiusMm: -3 * (1 + 1e-6) });
     expect(!small.ok && small.errors[0]).toMatchObject({ field: 'h', code: 'shank-cuts' });

@@ -402,6 +402,28 @@ describe('slope 90 on a curved meridian (issue 26 point 3)', () => {
     expect(answered).toBeGreaterThan(30);
   });
 
+  it('Rcr = |Rc| / 2 exactly (round numbers: R 3, Rcr 2, Rc -4): the next corner top K1 is on the upper boundary at every L, answered as just below 90, as the brute force', () => {
+    for (const rf of [50, null, -50]) {
+      const c: RevolutionCase = {
+        toolRadiusMm: 3,
+        cornerRadiusMm: 2,
+        slopeDeg: 90,
+        feedRadiusMm: rf,
+        crossRadiusMm: -4,
+      };
+      const at = waterlineForward(c, 0.005);
+      const below = waterlineForward({ ...c, slopeDeg: 90 - 1e-9 }, 0.005);
+      if (!at.ok || !below.ok) throw new Error(JSON.stringify([at, below]));
+      expect(Math.abs(at.value.intervalMm - below.value.intervalMm)).toBeLessThan(1e-9);
+      expect(Math.abs(waterlineHeightLimitMm(c) - waterlineHeightLimitMm({ ...c, slopeDeg: 90 - 1e-9 }))).toBeLessThan(
+        1e-9,
+      );
+      if (rf !== 50) continue;
+      const b = bruteWaterlineCusp({ R: 3, Rcr: 2 }, c, at.value.intervalMm, 8);
+      expect(Math.abs(b.polishedMm - 0.005)).toBeLessThan(1e-9);
+    }
+  });
+
   it("the issue's case: a ball end answers at 90 what it answers at 89.999", () => {
     const c: RevolutionCase = {
       toolRadiusMm: 12.1518,
@@ -429,7 +451,8 @@ describe('slope 90 on a curved meridian (issue 26 point 3)', () => {
     // Continuous with just below: the next pass fits only before the vertical, so the limit shrinks to 0.
     const nearConvex = waterlineHeightLimitMm({ ...bull, slopeDeg: 90 - 1e-6, feedRadiusMm: 40, crossRadiusMm: 10 });
     expect(nearConvex).toBeLessThan(1e-9);
-    // Rcr <= |Rc| / 2: the corner's cusp reaches the next pass's shank at any step.
+    // Rcr < |Rc| / 2: the corner's cusp reaches the next pass's shank at any step (at 90 degrees the
+    // upper boundary passes above the next corner's top K1 exactly when Rcr < |Rc| / 2, whatever L).
     const small = waterlineForward({ ...bull, slopeDeg: 90, feedRadiusMm: 40, crossRadiusMm: -10 }, 0.01);
     expect(!small.ok && small.errors[0]).toMatchObject({ field: 'h', code: 'shank-cuts' });
     expect(!small.ok && (small.errors[0]?.limit as number)).toBeLessThan(1e-9);
