@@ -279,11 +279,10 @@ function rangeErrors(input: SlopeSweepInput): ThreeAxisError[] {
 function noSlopeError(input: SlopeSweepInput, verdicts: ReturnType<typeof scan>): ThreeAxisError {
   const limited = verdicts.filter((v) => v.verdict === 'limit');
   if (limited.length === 0) {
-    return gougingError(revolutionCase(input, 45), 'at every slope', (cc) =>
-      scan({ ...input, feedRadiusMm: cc.feedRadiusMm, crossRadiusMm: cc.crossRadiusMm }).every(
-        (v) => v.verdict === 'gouge',
-      ),
-    );
+    return gougingError(revolutionCase(input, 45), 'at every slope', (cc) => {
+      const other = { ...input, feedRadiusMm: cc.feedRadiusMm, crossRadiusMm: cc.crossRadiusMm };
+      return scanSlopes(other).every((a) => verdictAt(other, a) === 'gouge');
+    });
   }
   let best = limited[0] as (typeof limited)[number];
   let bestMm = Number.NEGATIVE_INFINITY;
