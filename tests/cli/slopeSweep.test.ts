@@ -96,7 +96,7 @@ describe('--slope-sweep', () => {
     }
   });
 
-  it('as a process: a table of 31 slopes, and the combinations that do not exist are one-line usage errors', async () => {
+  it('as a process: a table of 31 slopes; the combinations that do not exist are one-line usage errors (in process: one start-up is enough)', async () => {
     const r = await run(['--R', '3', '--Rcr', '1', '--h', '0.05', '--slope-sweep']);
     expect(r.code).toBe(0);
     const lines = r.stdout.split('\n');
@@ -112,13 +112,13 @@ describe('--slope-sweep', () => {
       ['--step-down', '1'],
       ['--passes', 'waterline', '--horizontal-step', '1'],
     ]) {
-      const u = await run(['--R', '3', '--Rcr', '1', '--h', '0.05', '--slope-sweep', ...args]);
+      const u = await runMain(['--R', '3', '--Rcr', '1', '--h', '0.05', '--slope-sweep', ...args]);
       expect(u.code, args.join(' ')).toBe(2);
       expect(u.stderr.trimEnd().split('\n'), args.join(' ')).toHaveLength(1);
     }
-    const noH = await run(['--R', '3', '--Rcr', '1', '--slope-sweep']);
+    const noH = await runMain(['--R', '3', '--Rcr', '1', '--slope-sweep']);
     expect(noH.stderr).toMatch(/--slope-sweep needs the scallop height --h/);
-    const wall = await run(['--R', '3', '--Rcr', '1', '--h', '5', '--slope-sweep', '--json']);
+    const wall = await runMain(['--R', '3', '--Rcr', '1', '--h', '5', '--slope-sweep', '--json']);
     expect(wall.code).toBe(2);
     expect(JSON.parse(wall.stdout).errors[0].field).toBe('h');
   }, 30_000);
