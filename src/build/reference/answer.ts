@@ -4,7 +4,7 @@
  * with a feed or cross radius a doubly curved point, else a plane or a cylinder), so the generator
  * writes it and the check (tests/build/referenceData.test.ts) solves it again the same way.
  */
-import { validateForward, validateInverse } from '../../core/input/validate.ts';
+import { type RawToolInput, validateForward, validateInverse } from '../../core/input/validate.ts';
 import { exactRoughness, validateTargetRa } from '../../core/roughness/roughness.ts';
 import { doublyCurvedForward, doublyCurvedInverse } from '../../core/surfaces/doublyCurved/solve.ts';
 import { validateDoublyCurved } from '../../core/surfaces/doublyCurved/validate.ts';
@@ -33,20 +33,29 @@ function refused(errors: readonly FirstError[]): CalculatorAnswer {
 }
 
 const cell = (row: ReferenceRow, name: string): string => row[name] ?? '';
+/** An optional input: undefined when empty (its default), as the batch reads an empty cell. */
+const optional = (row: ReferenceRow, name: string): string | undefined =>
+  cell(row, name) === '' ? undefined : cell(row, name);
+
+/** The named inputs of a row, optional ones undefined when empty. */
+function rawOf(
+  row: ReferenceRow,
+  required: readonly string[],
+  optionals: readonly string[],
+): Record<string, string | undefined> {
+  const raw: Record<string, string | undefined> = {};
+  for (const name of required) raw[name] = cell(row, name);
+  for (const name of optionals) raw[name] = optional(row, name);
+  return raw;
+}
 
 /** A three-axis row (slope given): forward (h to L) or inverse (L to the cusp height). */
 function threeAxisAnswer(row: ReferenceRow): CalculatorAnswer {
-  const raw = {
-    R: cell(row, 'R'),
-    Rcr: cell(row, 'Rcr'),
-    slope: cell(row, 'slope'),
-    passes: cell(row, 'passes'),
-    rasterAngle: cell(row, 'rasterAngle'),
-    feedRadius: cell(row, 'feedRadius'),
-    crossRadius: cell(row, 'crossRadius'),
-    rho: cell(row, 'rho'),
-    tilt: cell(row, 'tilt'),
-  };
+  const raw = rawOf(
+    row,
+    ['R', 'Rcr', 'slope', 'passes', 'rasterAngle', 'feedRadius', 'crossRadius', 'rho', 'tilt'],
+    [],
+  );
   const forward = row.mode === 'forward';
   const v = validateThreeAxis(raw, forward ? 'h' : 'interval', forward ? cell(row, 'h') : cell(row, 'interval'));
   if (!v.ok) return refused(v.errors);
@@ -57,15 +66,7 @@ function threeAxisAnswer(row: ReferenceRow): CalculatorAnswer {
 
 /** A doubly curved point (a feed or cross radius given, no slope). */
 function doublyCurvedAnswer(row: ReferenceRow): CalculatorAnswer {
-  const raw = {
-    R: cell(row, 'R'),
-    Rcr: cell(row, 'Rcr'),
-    rho: cell(row, 'rho'),
-    tilt: cell(row, 'tilt'),
-    pattern: cell(row, 'pattern'),
-    feedRadius: cell(row, 'feedRadius'),
-    crossRadius: cell(row, 'crossRadius'),
-  };
+  const raw = rawOf(row, ['R', 'Rcr', 'rho', 'feedRadius', 'crossRadius'], ['tilt', 'pattern']);
   const forward = row.mode === 'forward';
   const v = validateDoublyCurved(raw, forward ? 'h' : 'interval', forward ? cell(row, 'h') : cell(row, 'interval'));
   if (!v.ok) return refused(v.errors);
@@ -76,15 +77,7 @@ function doublyCurvedAnswer(row: ReferenceRow): CalculatorAnswer {
 
 /** A plane or a cylinder: forward, inverse, roughness or a target Ra. */
 function passAnswer(row: ReferenceRow): CalculatorAnswer {
-  const tool = {
-    R: cell(row, 'R'),
-    Rcr: cell(row, 'Rcr'),
-    rho: cell(row, 'rho'),
-    tilt: cell(row, 'tilt') === '' ? undefined : cell(row, 'tilt'),
-    pattern: cell(row, 'pattern') === '' ? undefined : cell(row, 'pattern'),
-    surfaceRadius: cell(row, 'surfaceRadius'),
-    surfaceAxis: cell(row, 'surfaceAxis') === '' ? undefined : cell(row, 'surfaceAxis'),
-  };
+  const tool = rawOf(row, ['R', 'Rcr', 'rho', 'surfaceRadius'], ['tilt', 'pattern', 'surfaceAxis']) as RawToolInput;
   if (row.mode === 'inverse') {
     const v = validateInverse({ ...tool, interval: cell(row, 'interval') });
     if (!v.ok) return refused(v.errors);

@@ -160,6 +160,8 @@ export const REFERENCE_METHODS: Readonly<Record<string, string>> = {
     'Rz over one period: the highest cusp minus the contacts, the scallop height h itself (one-way) or the higher cusp (zigzag).',
   'stated-limit':
     'Refused inputs: the limit stated by the valid domain (README, Valid inputs: R from 0.001 to 1000 mm, 0 <= Rcr <= R, rho below 90 degrees, |tilt| below 90 degrees, h and L/2 at least 1e-9 mm, |Rs| from 0.001 to 1e6 mm, slope below 90 degrees).',
+  'closed-form-limit':
+    'Refused scallop heights of waterline passes on a sloped plane: Rcr (1 - sin(slope)), where the shank starts to form the cusp (README, Three-axis machining).',
   'high-precision-limit':
     "Refused scallop heights on a plane: the 64-digit profile's flank top (its widest point) or the height where the shank starts to form the flank, whichever is lower.",
 };

@@ -33,6 +33,7 @@ interface Tally {
   refused: number;
   nonFinite: number;
   disagreeing: number;
+  referenceFailed: number;
   worstDeviationMm: number;
   worstDeviationOverBound: number;
 }
@@ -41,19 +42,23 @@ const started = performance.now();
 const rows: ReferenceRow[] = [];
 const tallies = new Map<string, Tally>();
 const problems: string[] = [];
+const notes: string[] = [];
+/** Optional: `npm run reference -- <stratum prefix> [count]` runs one stratum (not written), for a look. */
 const only = process.argv[2];
+const countOverride = process.argv[3] === undefined ? undefined : Number(process.argv[3]);
 
 STRATA.forEach((stratum, index) => {
   if (only !== undefined && !stratum.name.startsWith(only)) return;
   const t0 = performance.now();
   const rand = seededRandom(REFERENCE_SEED + index);
   const invalid = stratum.name.startsWith('invalid');
-  for (const draft of stratum.drafts(rand, stratum.count) as Iterable<Draft>) {
+  for (const draft of stratum.drafts(rand, countOverride ?? stratum.count) as Iterable<Draft>) {
     const tally = tallies.get(draft.stratum) ?? {
       rows: 0,
       refused: 0,
       nonFinite: 0,
       disagreeing: 0,
+      referenceFailed: 0,
       worstDeviationMm: 0,
       worstDeviationOverBound: 0,
     };
@@ -82,7 +87,14 @@ STRATA.forEach((stratum, index) => {
         cells.answer = csvNumber(answer.limit);
       }
     }
-    const ref = draft.reference(answerMm);
+    let ref: ReturnType<Draft['reference']>;
+    try {
+      ref = draft.reference(answerMm);
+    } catch (e) {
+      tally.referenceFailed += 1;
+      notes.push(`${draft.stratum}: reference failed (${(e as Error).message}) on ${JSON.stringify(cells)}`);
+      continue;
+    }
     if (ref !== null) {
       const R = Number(cells.R);
       const bound = ref.uncertaintyMm + calculatorToleranceMm(Number.isFinite(R) ? R : 1);
@@ -122,7 +134,7 @@ const strata = Object.fromEntries(
     name,
     {
       rows: t.rows,
-      leftOut: { refused: t.refused, nonFinite: t.nonFinite, disagreeing: t.disagreeing },
+      leftOut: { refused: t.refused, nonFinite: t.nonFinite, referenceFailed: t.referenceFailed },
       worstDeviationMm: t.worstDeviationMm,
     },
   ]),
@@ -150,10 +162,11 @@ if (only === undefined) {
 }
 for (const [name, t] of tallies)
   console.log(
-    `${name.padEnd(34)} ${String(t.rows).padStart(5)} rows  worst |answer - reference| ${t.worstDeviationMm.toExponential(2)} mm (${t.worstDeviationOverBound.toExponential(2)} of the bound)  left out: ${t.refused} refused, ${t.nonFinite} non-finite, ${t.disagreeing} disagreeing`,
+    `${name.padEnd(34)} ${String(t.rows).padStart(5)} rows  worst |answer - reference| ${t.worstDeviationMm.toExponential(2)} mm (${t.worstDeviationOverBound.toExponential(2)} of the bound)  left out: ${t.refused} refused, ${t.nonFinite} non-finite, ${t.referenceFailed} reference failed, ${t.disagreeing} disagreeing`,
   );
 console.log(
   `${rows.length} rows in ${((performance.now() - started) / 1000).toFixed(1)} s${only === undefined ? `, written to ${REFERENCE_DIR}` : ' (not written: one stratum only)'}`,
 );
+for (const p of notes) console.error(`note: ${p}`);
 for (const p of problems) console.error(p);
 if (problems.length > 0) process.exitCode = 1;

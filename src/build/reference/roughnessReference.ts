@@ -19,8 +19,8 @@
  */
 import { bruteForceProfile } from './oracles/bruteForce3d.ts';
 
-/** 16-point Gauss-Legendre nodes and weights on [-1, 1], by Newton on P_16. */
-function gaussLegendre(n: number): [number[], number[]] {
+/** n-point Gauss-Legendre nodes and weights on [-1, 1], by Newton on the Legendre polynomial P_n. */
+export function gaussLegendre(n: number): [number[], number[]] {
   const xs: number[] = [];
   const ws: number[] = [];
   for (let i = 1; i <= n; i++) {
