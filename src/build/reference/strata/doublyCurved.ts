@@ -40,7 +40,7 @@ function polishedCusp(
   let best: ReferenceValue | null = null;
   for (const tiltDeg of tilts) {
     const t = { ...tool, tiltDeg };
-    const b = bruteForceDoublyCurved(t, pattern, rf, rc, L, { spacingMm: tool.R / 60, levels: 2 });
+    const b = bruteForceDoublyCurved(t, pattern, rf, rc, L, { spacingMm: tool.R / 60, levels: 3 });
     const polished = polishDoublyCurvedCusp(t, pattern, rf, rc, L, b).polishedMm;
     if (best === null || polished > best.valueMm)
       best = {
