@@ -4,7 +4,7 @@
  * with a feed or cross radius a doubly curved point, else a plane or a cylinder), so the generator
  * writes it and the check (tests/build/referenceData.test.ts) solves it again the same way.
  */
-import { type RawToolInput, validateForward, validateInverse } from '../../core/input/validate.ts';
+import { validateForward, validateInverse } from '../../core/input/validate.ts';
 import { exactRoughness, validateTargetRa } from '../../core/roughness/roughness.ts';
 import { doublyCurvedForward, doublyCurvedInverse } from '../../core/surfaces/doublyCurved/solve.ts';
 import { validateDoublyCurved } from '../../core/surfaces/doublyCurved/validate.ts';
@@ -37,25 +37,24 @@ const cell = (row: ReferenceRow, name: string): string => row[name] ?? '';
 const optional = (row: ReferenceRow, name: string): string | undefined =>
   cell(row, name) === '' ? undefined : cell(row, name);
 
-/** The named inputs of a row, optional ones undefined when empty. */
-function rawOf(
-  row: ReferenceRow,
-  required: readonly string[],
-  optionals: readonly string[],
-): Record<string, string | undefined> {
+/** A row's inputs by name: the tool's always (as text), the others named, optional ones undefined when empty. */
+interface RawRow {
+  readonly R: string;
+  readonly Rcr: string;
+  readonly rho: string;
+  readonly [name: string]: string | undefined;
+}
+
+function rawOf(row: ReferenceRow, required: readonly string[], optionals: readonly string[]): RawRow {
   const raw: Record<string, string | undefined> = {};
   for (const name of required) raw[name] = cell(row, name);
   for (const name of optionals) raw[name] = optional(row, name);
-  return raw;
+  return { ...raw, R: cell(row, 'R'), Rcr: cell(row, 'Rcr'), rho: cell(row, 'rho') };
 }
 
 /** A three-axis row (slope given): forward (h to L) or inverse (L to the cusp height). */
 function threeAxisAnswer(row: ReferenceRow): CalculatorAnswer {
-  const raw = rawOf(
-    row,
-    ['R', 'Rcr', 'slope', 'passes', 'rasterAngle', 'feedRadius', 'crossRadius', 'rho', 'tilt'],
-    [],
-  );
+  const raw = rawOf(row, ['slope', 'passes', 'rasterAngle', 'feedRadius', 'crossRadius', 'tilt'], []);
   const forward = row.mode === 'forward';
   const v = validateThreeAxis(raw, forward ? 'h' : 'interval', forward ? cell(row, 'h') : cell(row, 'interval'));
   if (!v.ok) return refused(v.errors);
@@ -66,7 +65,7 @@ function threeAxisAnswer(row: ReferenceRow): CalculatorAnswer {
 
 /** A doubly curved point (a feed or cross radius given, no slope). */
 function doublyCurvedAnswer(row: ReferenceRow): CalculatorAnswer {
-  const raw = rawOf(row, ['R', 'Rcr', 'rho', 'feedRadius', 'crossRadius'], ['tilt', 'pattern']);
+  const raw = rawOf(row, ['feedRadius', 'crossRadius'], ['tilt', 'pattern']);
   const forward = row.mode === 'forward';
   const v = validateDoublyCurved(raw, forward ? 'h' : 'interval', forward ? cell(row, 'h') : cell(row, 'interval'));
   if (!v.ok) return refused(v.errors);
@@ -77,7 +76,7 @@ function doublyCurvedAnswer(row: ReferenceRow): CalculatorAnswer {
 
 /** A plane or a cylinder: forward, inverse, roughness or a target Ra. */
 function passAnswer(row: ReferenceRow): CalculatorAnswer {
-  const tool = rawOf(row, ['R', 'Rcr', 'rho', 'surfaceRadius'], ['tilt', 'pattern', 'surfaceAxis']) as RawToolInput;
+  const tool = rawOf(row, ['surfaceRadius'], ['tilt', 'pattern', 'surfaceAxis']);
   if (row.mode === 'inverse') {
     const v = validateInverse({ ...tool, interval: cell(row, 'interval') });
     if (!v.ok) return refused(v.errors);
