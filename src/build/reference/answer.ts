@@ -5,7 +5,7 @@
  * writes it and the check (tests/build/referenceData.test.ts) solves it again the same way.
  */
 import { validateForward, validateInverse } from '../../core/input/validate.ts';
-import { exactRoughness, validateTargetRa } from '../../core/roughness/roughness.ts';
+import { exactRoughness, scallopHeightForRaMm, validateTargetRa } from '../../core/roughness/roughness.ts';
 import { doublyCurvedForward, doublyCurvedInverse } from '../../core/surfaces/doublyCurved/solve.ts';
 import { validateDoublyCurved } from '../../core/surfaces/doublyCurved/validate.ts';
 import { exactForward, exactInverse } from '../../core/surfaces/solve.ts';
@@ -85,7 +85,8 @@ function passAnswer(row: ReferenceRow): CalculatorAnswer {
   if (row.mode === 'target-ra') {
     const v = validateTargetRa({ ...tool, ra: cell(row, 'Ra') });
     if (!v.ok) return refused(v.errors);
-    throw new Error(`row ${row.id}: target-ra rows are refused inputs only`);
+    const t = v.value;
+    return { ok: true, valueMm: scallopHeightForRaMm(t, t.pattern, t.targetRaMm, t.surface) };
   }
   const v = validateForward({ ...tool, h: cell(row, 'h') });
   if (!v.ok) return refused(v.errors);
@@ -97,7 +98,7 @@ function passAnswer(row: ReferenceRow): CalculatorAnswer {
 
 /**
  * The calculator's answer to a row (its inputs and `mode`, and `quantity` for roughness rows).
- * Throws only on a row the data set never holds (an unknown mode, a target Ra that is accepted).
+ * Throws only on a row the data set never holds (an unknown mode).
  */
 export function calculatorAnswer(row: ReferenceRow): CalculatorAnswer {
   if (!['forward', 'inverse', 'roughness', 'target-ra'].includes(cell(row, 'mode')))

@@ -39,7 +39,7 @@ export const REFERENCE_COLUMNS: readonly ReferenceColumn[] = [
     name: 'mode',
     unit: '-',
     description:
-      'forward: h given, the step-over L answered; inverse: L given, the scallop height answered; roughness: h given, Rz, Ra or Rq answered; target-ra: a target Ra given (invalid rows only); slope rows (three-axis) are forward or inverse likewise.',
+      'forward: h given, the step-over L answered; inverse: L given, the scallop height answered; roughness: h given, Rz, Ra or Rq answered; target-ra: a target Ra given, the scallop height that leaves it answered; slope rows (three-axis) are forward or inverse likewise.',
   },
   { name: 'R', unit: 'mm', description: 'Tool radius (half the diameter).' },
   { name: 'Rcr', unit: 'mm', description: 'Corner radius: R a ball end, 0 a flat end.' },
@@ -86,7 +86,11 @@ export const REFERENCE_COLUMNS: readonly ReferenceColumn[] = [
     unit: 'mm',
     description: 'Given step-over L between cutter-contact paths (inverse rows), arc length on a curved surface.',
   },
-  { name: 'Ra', unit: 'mm', description: 'Given target roughness Ra (target-ra rows).' },
+  {
+    name: 'Ra',
+    unit: 'mm',
+    description: 'Given target roughness Ra (target-ra rows), across the feed over one period.',
+  },
   {
     name: 'quantity',
     unit: '-',
@@ -156,6 +160,8 @@ export const REFERENCE_METHODS: Readonly<Record<string, string>> = {
     'Three-axis waterline: the upright tool as horizontal disks turned about the vertical axis of revolution (translated along the contour on a sloped plane), the next pass L further down the meridian; the material left in the meridian half-plane sampled (sampled, sampledBound), then polished by bisection; heights radial from the meridian centre (above the line when straight).',
   'brute-force-layer-cake':
     'Plane roughness: the tool surface sampled and polished in 3D (independent of the solver and of the 64-digit profile), its flank widths w(s) at each level s integrated by the layer-cake formulas m = (1/P) int (P - mu) ds, Ra = (2/P) int_m^H (P - mu) ds, Rq^2 = (1/P) [int_0^m 2(m - s) mu ds + int_m^H 2(s - m)(P - mu) ds], mu(s) the length of the period below s, by 16-point Gauss-Legendre in sqrt(s) on one and two panels (their difference the quadrature uncertainty, plus the widths 1e-9 R).',
+  'brute-force-layer-cake-inverse':
+    'Target Ra on a plane: the scallop height at which the brute-force-layer-cake Ra equals the target, by Illinois regula falsi over [2 Ra, the lower flank top] to 1e-13 h; uncertainty the Ra uncertainty over dRa/dh.',
   'roughness-definition':
     'Rz over one period: the highest cusp minus the contacts, the scallop height h itself (one-way) or the higher cusp (zigzag).',
   'stated-limit':

@@ -17,7 +17,7 @@
  * quadrature uncertainty (an a-posteriori estimate, exact for polynomials of degree 31 in u), plus the
  * widths' (1e-9 R each, the brute force's asserted accuracy) carried through the formulas.
  */
-import { bruteForceProfile } from './oracles/bruteForce3d.ts';
+import { type BruteForceProfile, bruteForceProfile } from './oracles/bruteForce3d.ts';
 
 /** n-point Gauss-Legendre nodes and weights on [-1, 1], by Newton on the Legendre polynomial P_n. */
 export function gaussLegendre(n: number): [number[], number[]] {
@@ -99,7 +99,16 @@ export function referenceRoughness(
   pattern: 'one-way' | 'zigzag',
   h: number,
 ): RoughnessReference {
-  const p = bruteForceProfile(R, Rcr, rhoDeg, tiltDeg);
+  return roughnessOfProfile(bruteForceProfile(R, Rcr, rhoDeg, tiltDeg), R, pattern, h);
+}
+
+/** {@link referenceRoughness} of a brute-force profile already sampled (tool radius R, mm). */
+export function roughnessOfProfile(
+  p: BruteForceProfile,
+  R: number,
+  pattern: 'one-way' | 'zigzag',
+  h: number,
+): RoughnessReference {
   const wR = (s: number) => p.widthRightWithShankMm(s);
   const wL = (s: number) => p.widthLeftWithShankMm(s);
   const rightAtH = wR(h);
@@ -150,4 +159,55 @@ function lowerTop(w: (s: number) => number, W: number, h: number): number {
     else hi = mid;
   }
   return 0.5 * (lo + hi);
+}
+
+/** The reference scallop height for a target Ra, with its uncertainty (mm). */
+export interface HeightForRaReference {
+  readonly heightMm: number;
+  readonly uncertaintyMm: number;
+}
+
+/**
+ * The scallop height (mm) whose passes leave the reference Ra `targetRaMm`: Illinois regula falsi
+ * on Ra(h) - target over [2 Ra, the lower flank top] (Ra(2 Ra) <= Ra: the profile lies between 0
+ * and h, so its mean deviation is at most h / 2), to a bracket of 1e-13 h. Its uncertainty: the
+ * reference Ra's at the root divided by dRa/dh there, plus the bracket.
+ */
+export function referenceHeightForRa(
+  R: number,
+  Rcr: number,
+  rhoDeg: number,
+  tiltDeg: number,
+  pattern: 'one-way' | 'zigzag',
+  targetRaMm: number,
+): HeightForRaReference {
+  const p = bruteForceProfile(R, Rcr, rhoDeg, tiltDeg);
+  const f = (h: number) => roughnessOfProfile(p, R, pattern, h).raMm - targetRaMm;
+  let lo = 2 * targetRaMm;
+  let hi = Math.min(p.hmaxRightMm, p.hmaxLeftMm) * (1 - 1e-9);
+  let flo = f(lo);
+  let fhi = f(hi);
+  if (!(flo <= 0 && fhi > 0)) throw new Error(`target Ra ${targetRaMm} not bracketed in [${lo}, ${hi}]`);
+  let side = 0;
+  for (let k = 0; k < 200 && hi - lo > 1e-13 * hi; k++) {
+    const x = hi - (fhi * (hi - lo)) / (fhi - flo);
+    const m = x > lo && x < hi ? x : 0.5 * (lo + hi);
+    const fm = f(m);
+    if (fm > 0) {
+      hi = m;
+      fhi = fm;
+      if (side === 1) flo /= 2;
+      side = 1;
+    } else {
+      lo = m;
+      flo = fm;
+      if (side === -1) fhi /= 2;
+      side = -1;
+    }
+  }
+  const h = 0.5 * (lo + hi);
+  const dh = 1e-6 * h;
+  const slope = (f(h + dh) - f(h - dh)) / (2 * dh);
+  const raUnc = roughnessOfProfile(p, R, pattern, h).raUncertaintyMm;
+  return { heightMm: h, uncertaintyMm: raUnc / slope + (hi - lo) };
 }

@@ -6,7 +6,7 @@ import type { Stratum } from '../draft.ts';
 import { cylinderCrossConcave, cylinderCrossConvex, cylinderFeedConcave, cylinderFeedConvex } from './cylinder.ts';
 import { doublyCurved } from './doublyCurved.ts';
 import { invalidDoublyCurved, invalidPass, invalidTargetRa, invalidThreeAxis } from './invalid.ts';
-import { planeInverse, planeLead, planePostureOneWay, planeRoughness, planeZigzag } from './plane.ts';
+import { planeInverse, planeLead, planePostureOneWay, planeRoughness, planeTargetRa, planeZigzag } from './plane.ts';
 import { threeAxisRaster, threeAxisWaterlinePlane, threeAxisWaterlineRevolution } from './threeAxis.ts';
 
 export const STRATA: readonly Stratum[] = [
@@ -27,4 +27,5 @@ export const STRATA: readonly Stratum[] = [
   invalidTargetRa,
   invalidDoublyCurved,
   invalidThreeAxis,
+  planeTargetRa,
 ];

@@ -3,11 +3,12 @@
  * roughness, against the 64-digit profile (oracles/highPrecision.ts) and, for roughness, the
  * brute-force profile integrated by the layer-cake formulas (roughnessReference.ts).
  */
-import { maxIntervalMm, scallopHeightLimits } from '../../../core/input/validate.ts';
+import { forwardInput, maxIntervalMm, scallopHeightLimits } from '../../../core/input/validate.ts';
+import { exactRoughness } from '../../../core/roughness/roughness.ts';
 import type { Draft, ReferenceValue, Stratum, ToolKind } from '../draft.ts';
 import { drawTool, logUniform, sig, signedAngle, TOOL_KINDS } from '../draft.ts';
 import { referenceProfile } from '../oracles/highPrecision.ts';
-import { referenceRoughness } from '../roughnessReference.ts';
+import { referenceHeightForRa, referenceRoughness } from '../roughnessReference.ts';
 
 const HIGH_PRECISION = 'high-precision-profile';
 
@@ -204,6 +205,42 @@ export const planeRoughness: Stratum = {
               : { valueMm: r.rqMm, uncertaintyMm: r.rqUncertaintyMm, method: 'brute-force-layer-cake' };
           },
         } satisfies Draft;
+    }
+  },
+};
+
+/**
+ * A target roughness (the `--ra` mode): Ra to the scallop height that leaves it, one-way and zigzag,
+ * with and without tilt; the reference solves the layer-cake Ra of the brute-force profile for h.
+ */
+export const planeTargetRa: Stratum = {
+  name: 'target-ra',
+  count: 45,
+  *drafts(rand, n) {
+    for (let i = 0; i < n; i++) {
+      const kind = TOOL_KINDS[i % TOOL_KINDS.length] as ToolKind;
+      const pattern = Math.floor(i / 3) % 2 === 0 ? 'one-way' : 'zigzag';
+      const tilted = Math.floor(i / 6) % 2 === 1;
+      const drawn = drawCase(
+        rand,
+        kind,
+        (r) => ({ rho: sig(1 + 60 * r(), 4), tilt: tilted ? signedAngle(r, 1, 45) : 0 }),
+        pattern,
+      );
+      if (drawn === null) continue;
+      const { c, limitMm } = drawn;
+      // A target the passes can leave: the Ra of a scallop from 1e-3 to 0.6 of the limit, 6 digits.
+      const Ra = sig(exactRoughness(forwardInput(toolInput(c), c.pattern, logUniform(rand, 1e-3, 0.6) * limitMm)).raMm);
+      yield {
+        stratum: 'target-ra',
+        mode: 'target-ra',
+        quantity: 'scallopHeight',
+        inputs: { ...inputsOf(c), Ra },
+        reference: () => {
+          const r = referenceHeightForRa(c.R, c.Rcr, c.rho, c.tilt, c.pattern, Ra);
+          return { valueMm: r.heightMm, uncertaintyMm: r.uncertaintyMm, method: 'brute-force-layer-cake-inverse' };
+        },
+      } satisfies Draft;
     }
   },
 };
