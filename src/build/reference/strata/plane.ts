@@ -166,23 +166,31 @@ export const planeInverse: Stratum = {
   },
 };
 
+/**
+ * The roughness strata's cases: the tool kinds in turn, one-way and zigzag by threes, a tilt of 1 to
+ * 45 degrees by sixes, a lead of 1 to 61 degrees (drawn lazily: each case's own draws follow it).
+ */
+function* roughnessCases(rand: () => number, n: number): Generator<{ c: PlaneCase; limitMm: number }> {
+  for (let i = 0; i < n; i++) {
+    const kind = TOOL_KINDS[i % TOOL_KINDS.length] as ToolKind;
+    const pattern = Math.floor(i / 3) % 2 === 0 ? 'one-way' : 'zigzag';
+    const tilted = Math.floor(i / 6) % 2 === 1;
+    const drawn = drawCase(
+      rand,
+      kind,
+      (r) => ({ rho: sig(1 + 60 * r(), 4), tilt: tilted ? signedAngle(r, 1, 45) : 0 }),
+      pattern,
+    );
+    if (drawn !== null) yield drawn;
+  }
+}
+
 /** Roughness: Rz, Ra and Rq of one case each, one-way and zigzag, with and without tilt. */
 export const planeRoughness: Stratum = {
   name: 'roughness',
   count: 110,
   *drafts(rand, n) {
-    for (let i = 0; i < n; i++) {
-      const kind = TOOL_KINDS[i % TOOL_KINDS.length] as ToolKind;
-      const pattern = Math.floor(i / 3) % 2 === 0 ? 'one-way' : 'zigzag';
-      const tilted = Math.floor(i / 6) % 2 === 1;
-      const drawn = drawCase(
-        rand,
-        kind,
-        (r) => ({ rho: sig(1 + 60 * r(), 4), tilt: tilted ? signedAngle(r, 1, 45) : 0 }),
-        pattern,
-      );
-      if (drawn === null) continue;
-      const { c, limitMm } = drawn;
+    for (const { c, limitMm } of roughnessCases(rand, n)) {
       // Scallops from 1e-3 to 0.6 of the limit: the brute-force widths are accurate to 1e-9 R.
       const h = sig(logUniform(rand, 1e-3, 0.6) * limitMm);
       let cached: ReturnType<typeof referenceRoughness> | null = null;
@@ -217,18 +225,7 @@ export const planeTargetRa: Stratum = {
   name: 'target-ra',
   count: 45,
   *drafts(rand, n) {
-    for (let i = 0; i < n; i++) {
-      const kind = TOOL_KINDS[i % TOOL_KINDS.length] as ToolKind;
-      const pattern = Math.floor(i / 3) % 2 === 0 ? 'one-way' : 'zigzag';
-      const tilted = Math.floor(i / 6) % 2 === 1;
-      const drawn = drawCase(
-        rand,
-        kind,
-        (r) => ({ rho: sig(1 + 60 * r(), 4), tilt: tilted ? signedAngle(r, 1, 45) : 0 }),
-        pattern,
-      );
-      if (drawn === null) continue;
-      const { c, limitMm } = drawn;
+    for (const { c, limitMm } of roughnessCases(rand, n)) {
       // A target the passes can leave: the Ra of a scallop from 1e-3 to 0.6 of the limit, 6 digits.
       const Ra = sig(exactRoughness(forwardInput(toolInput(c), c.pattern, logUniform(rand, 1e-3, 0.6) * limitMm)).raMm);
       yield {
