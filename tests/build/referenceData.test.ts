@@ -1,5 +1,5 @@
 /**
- * The published reference data set (reference/scallop-reference.csv, its JSON description, written by
+ * The published reference data set (public/reference/scallop-reference.csv, its JSON description, written by
  * `npm run reference`): the file is the one the description's SHA-256 names, with the columns it
  * lists; every row is answered again by the current calculator (the same entry the generator used,
  * src/build/reference/answer.ts) within 1e-9 mm of its `answer` (a refused row with the same error
@@ -76,8 +76,8 @@ describe('the reference data set (seed 2027)', () => {
     const pkg = JSON.parse(readFileSync(new URL('../../package.json', import.meta.url), 'utf8')) as {
       exports: Record<string, unknown>;
     };
-    expect(pkg.exports['./reference']).toBe('./reference/scallop-reference.json');
-    expect(pkg.exports['./reference/*']).toBe('./reference/*');
+    expect(pkg.exports['./reference']).toBe('./public/reference/scallop-reference.json');
+    expect(pkg.exports['./reference/*']).toBe('./public/reference/*');
   });
 
   for (const stratum of STRATA)

@@ -1,5 +1,5 @@
 /**
- * The reference data set's columns (reference/scallop-reference.csv), each with its unit and meaning:
+ * The reference data set's columns (public/reference/scallop-reference.csv), each with its unit and meaning:
  * the one list that the generator writes, the JSON description states and the check reads. Inputs
  * carry the command line's batch names (src/core/input/fields.ts), so a row reads as a batch row;
  * an empty cell is an input not given (its default: tilt 0, one-way, plane, feed, straight).

@@ -8,8 +8,8 @@ import { parseCsv } from '../../cli/csv.ts';
 import { csvField } from '../../core/output/csvWrite.ts';
 import { COLUMN_NAMES, REFERENCE_CSV, REFERENCE_JSON, type ReferenceRow } from './columns.ts';
 
-/** The package's reference/ folder (shipped as `path-interval/reference`). */
-export const REFERENCE_DIR = fileURLToPath(new URL('../../../reference/', import.meta.url));
+/** The package's public/reference/ folder (also served by the site at reference/) (shipped as `path-interval/reference`). */
+export const REFERENCE_DIR = fileURLToPath(new URL('../../../public/reference/', import.meta.url));
 export const REFERENCE_CSV_PATH = `${REFERENCE_DIR}${REFERENCE_CSV}`;
 export const REFERENCE_JSON_PATH = `${REFERENCE_DIR}${REFERENCE_JSON}`;
 

@@ -1,5 +1,5 @@
 /**
- * `npm run reference`: writes the reference data set (reference/scallop-reference.csv and its JSON
+ * `npm run reference`: writes the reference data set (public/reference/scallop-reference.csv and its JSON
  * description) from the seeded strata (strata/index.ts): each proposed row is answered by the
  * calculator (answer.ts), rows it refuses in a valid stratum or answers with a non-finite number are
  * left out and counted, then the independent reference is computed, and a row whose reference lies
