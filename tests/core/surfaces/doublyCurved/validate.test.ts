@@ -32,7 +32,7 @@ describe('validateDoublyCurved', () => {
     if (v.ok) return;
     const e = v.errors[0];
     expect(e?.code).toBe('radius-gouging');
-    if (e === undefined || e.limit === null) throw new Error('no limit');
+    if (e === undefined || e.limit === undefined) throw new Error('no limit');
     const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 10, tiltAngleDeg: 5 };
     expect(doublyCurvedGouges(tool, { feedRadiusMm: 40, crossRadiusMm: e.limit * 0.999 })).toBe(true);
     expect(doublyCurvedGouges(tool, { feedRadiusMm: 40, crossRadiusMm: e.limit * 1.001 })).toBe(false);
