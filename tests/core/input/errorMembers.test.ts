@@ -31,8 +31,7 @@ const EXAMPLES: Record<InputErrorCode, () => readonly AnyInputError[]> = {
   'not-a-pattern': () => errorsOf(validateForward({ ...TOOL, pattern: 'spiral', h: 0.01 })),
   'not-an-axis': () => errorsOf(validateForward({ ...TOOL, surfaceRadius: -30, surfaceAxis: 'up', h: 0.01 })),
   // A flat bottom without lead in a trough across the feed: any radius (no limit).
-  gouging: () =>
-    errorsOf(validateForward({ R: 3, Rcr: 1, rho: 0, h: 0.05, surfaceRadius: -30, surfaceAxis: 'cross' })),
+  gouging: () => errorsOf(validateForward({ R: 3, Rcr: 1, rho: 0, h: 0.05, surfaceRadius: -30, surfaceAxis: 'cross' })),
   // The 45-degree shank lean in a trough: at any radius (point 5), and one with a limit.
   'shank-gouging': () => [
     ...errorsOf(validateForward({ R: 3, Rcr: 1, rho: 45, h: 0.01, surfaceRadius: -0.5, surfaceAxis: 'cross' })),
