@@ -9,9 +9,13 @@ import {
   CSV_THREE_AXIS_COLUMNS,
   type CsvColumn,
   csvColumnOf,
+  fieldOfCsvColumn,
+  isLengthField,
 } from '../core/input/fields';
+import type { LengthUnit } from '../core/input/units';
 import { RESULT_COLUMNS } from '../core/output/csvWrite';
 import { unitNamedColumn } from '../core/output/lookupUnits';
+import { cut } from './args';
 import type { CsvRecord } from './csv';
 
 /**
@@ -58,6 +62,10 @@ export interface Layout {
   readonly target: InputColumn;
   /** True for a header with a `slope` column: three-axis rows ({@link THREE_AXIS_RESULT_COLUMNS}). */
   readonly threeAxis: boolean;
+  /** The run's length unit (`--unit`): of the columns that name none, and of the results. */
+  readonly unit: LengthUnit;
+  /** The unit each length column names in the header (`R_in`, `h_mm`); absent: the run's. */
+  readonly columnUnits: Readonly<Partial<Record<InputColumn, LengthUnit>>>;
 }
 
 /** The column that selects three-axis machining (a header with it needs no rho). */
@@ -94,29 +102,53 @@ export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COL
 const IGNORED_COLUMNS: readonly string[] = RESULT_COLUMNS;
 
 /**
- * The header's names with their units read (the page's lookup table names them: `R_mm`,
- * `rho_deg`): the batch column each stands for, or why the batch cannot read it (a column in
- * inches: the batch reads mm).
+ * The header's names with their units read (the page's lookup table names them: `R_mm`, `R_in`,
+ * `rho_deg`): the batch column each stands for, and the length unit it names (or none).
  */
-function plainNames(fields: readonly string[]): { names: string[]; problems: string[] } {
-  const problems: string[] = [];
+function plainNames(fields: readonly string[]): { names: string[]; units: (LengthUnit | null)[] } {
+  const units: (LengthUnit | null)[] = [];
   const names = fields.map((f) => {
     const named = unitNamedColumn(f.trim());
-    if (named.unit === 'in')
-      problems.push(`column ${f.trim()} is in inches: the command line reads mm (download the table in mm)`);
+    if (named.unit !== null) {
+      units.push(named.unit);
+      return named.column;
+    }
+    // A length input column the lookup table does not write (Ra) may name its unit too.
+    const m = /^(.+)_(mm|in)$/.exec(f.trim());
+    const field = m === null ? null : fieldOfCsvColumn(m[1] ?? '');
+    if (m !== null && field !== null && isLengthField(field)) {
+      units.push(m[2] as LengthUnit);
+      return m[1] as string;
+    }
+    units.push(null);
     return named.column;
   });
-  return { names, problems };
+  return { names, units };
+}
+
+/** The unit each input column of `index` names in the header (`units` by position). */
+function columnUnitsOf(
+  index: Readonly<Partial<Record<InputColumn, number>>>,
+  units: readonly (LengthUnit | null)[],
+): Partial<Record<InputColumn, LengthUnit>> {
+  const out: Partial<Record<InputColumn, LengthUnit>> = {};
+  for (const [column, i] of Object.entries(index) as [InputColumn, number][]) {
+    const unit = units[i];
+    if (unit !== null && unit !== undefined) out[column] = unit;
+  }
+  return out;
 }
 
 /** Reads the header record: the layout, or the reason it is not one. */
-export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | { ok: false; error: string } {
+export function parseHeader(
+  record: CsvRecord,
+  unit: LengthUnit = 'mm',
+): { ok: true; layout: Layout } | { ok: false; error: string } {
   const rule = HEADER_RULE;
   if (record.error !== null) return { ok: false, error: `${rule}; line ${record.line}: ${record.error}` };
   const plain = plainNames(record.fields);
-  if (plain.problems.length > 0) return { ok: false, error: `${rule} (${plain.problems.join('; ')})` };
   const names = plain.names;
-  if (names.includes(SLOPE_COLUMN)) return parseThreeAxisHeader(names);
+  if (names.includes(SLOPE_COLUMN)) return parseThreeAxisHeader(names, plain.units, unit);
   const index: Partial<Record<InputColumn, number>> = {};
   const ignored = new Set<string>();
   const problems: string[] = [];
@@ -131,7 +163,7 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
       return;
     }
     if (!(INPUT_COLUMNS as readonly string[]).includes(name)) {
-      problems.push(`unknown column "${name}"`);
+      problems.push(`unknown column "${cut(name)}"`);
       return;
     }
     const column = name as InputColumn;
@@ -149,11 +181,19 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
     return i === undefined ? [] : [{ name, index: i }];
   });
   const target = given[0] as InputColumn;
-  return { ok: true, layout: { width: names.length, names, echoed, index, target, threeAxis: false } };
+  const columnUnits = columnUnitsOf(index, plain.units);
+  return {
+    ok: true,
+    layout: { width: names.length, names, echoed, index, target, threeAxis: false, unit, columnUnits },
+  };
 }
 
 /** A three-axis header (it has a slope column): R, Rcr, h and slope required; no rho needed. */
-function parseThreeAxisHeader(names: readonly string[]): { ok: true; layout: Layout } | { ok: false; error: string } {
+function parseThreeAxisHeader(
+  names: readonly string[],
+  units: readonly (LengthUnit | null)[],
+  unit: LengthUnit,
+): { ok: true; layout: Layout } | { ok: false; error: string } {
   const index: Partial<Record<InputColumn, number>> = {};
   const ignored = new Set<string>();
   const problems: string[] = [];
@@ -169,7 +209,7 @@ function parseThreeAxisHeader(names: readonly string[]): { ok: true; layout: Lay
       return;
     }
     if (!(THREE_AXIS_INPUT_COLUMNS as readonly string[]).includes(name)) {
-      problems.push(`unknown column "${name}"`);
+      problems.push(`unknown column "${cut(name)}"`);
       return;
     }
     const column = name as InputColumn;
@@ -183,7 +223,11 @@ function parseThreeAxisHeader(names: readonly string[]): { ok: true; layout: Lay
     const i = index[name];
     return i === undefined ? [] : [{ name, index: i }];
   });
-  return { ok: true, layout: { width: names.length, names, echoed, index, target: H_COLUMN, threeAxis: true } };
+  const columnUnits = columnUnitsOf(index, units);
+  return {
+    ok: true,
+    layout: { width: names.length, names, echoed, index, target: H_COLUMN, threeAxis: true, unit, columnUnits },
+  };
 }
 
 /** The result columns of a layout: with a target Ra, the scallop height `h` that leaves it comes first. */
@@ -192,9 +236,33 @@ export function resultColumns(layout: Layout): readonly string[] {
   return layout.target === RA_COLUMN ? [H_COLUMN, ...RESULT_COLUMNS] : RESULT_COLUMNS;
 }
 
-/** The output header line for a layout. */
+/** Result columns that are no length: the angles of three-axis rows and the text columns. */
+const NOT_LENGTH_RESULTS: ReadonlySet<string> = new Set(['lead', 'tilt', 'note', 'error']);
+
+/** True for a result column that holds a length (in the run's unit). */
+export function isLengthResult(column: string): boolean {
+  return !NOT_LENGTH_RESULTS.has(column);
+}
+
+/** True for an input column that holds a length (the field registry's kind). */
+export function isLengthColumn(column: InputColumn): boolean {
+  const field = fieldOfCsvColumn(column);
+  return field !== null && isLengthField(field);
+}
+
+/**
+ * The output header line for a layout. In mm, the batch's names as they were; in inches every
+ * length column names its unit (`R_in`, `exact_in`, `R_mm` for a column read in mm); in mm, only a
+ * column read in inches names it.
+ */
 export function outputHeader(layout: Layout): string {
-  return `${[...layout.echoed.map((c) => c.name), ...resultColumns(layout)].join(',')}\n`;
+  const named = (column: InputColumn): string => {
+    const unit = layout.columnUnits[column] ?? layout.unit;
+    if (!isLengthColumn(column)) return column;
+    return layout.unit === 'in' || unit === 'in' ? `${column}_${unit}` : column;
+  };
+  const results = resultColumns(layout).map((c) => (layout.unit === 'in' && isLengthResult(c) ? `${c}_in` : c));
+  return `${[...layout.echoed.map((c) => named(c.name)), ...results].join(',')}\n`;
 }
 
 /** Empty fields for the result columns before `error` (numbers and `note`), each after a comma. */

@@ -128,7 +128,7 @@ export const FIELDS = {
     aliasOf: 'R',
     label: 'Tool diameter D',
     url: 'D',
-    cli: null,
+    cli: 'D',
     csv: null,
     embed: 'd',
     page: null,
