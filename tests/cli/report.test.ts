@@ -78,10 +78,12 @@ describe('table cells', () => {
   it('lengths and deviations: 7 significant digits at any magnitude, never -0', () => {
     expect(length(1.4435924129671018)).toBe('1.443592');
     expect(length(0.000336)).toBe('0.0003360000');
-    expect(length(0.0000336)).toBe('3.360000e-5');
+    // Never exponent notation (issue 26 point 10).
+    expect(length(0.0000336)).toBe('0.00003360000');
+    expect(deviation(-6.713918e-5)).toBe('-0.00006713918');
     expect(length(1234.56789)).toBe('1234.568');
     expect(length(-0)).toBe('0.000000');
-    expect(deviation(-1e-30)).toBe('-1.000000e-30');
+    expect(deviation(-1e-30)).toBe(`-0.${'0'.repeat(29)}1000000`);
     expect(deviation(0)).toBe('0.000000');
     expect(deviation(-0)).toBe('0.000000');
     expect(deviation(2.5)).toBe('+2.500000');
