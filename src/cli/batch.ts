@@ -119,7 +119,7 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
     }
   }
   const { values, typed } = recordValues(fields, layout);
-  if (layout.threeAxis) return threeAxisRow(values, layout, echo);
+  if (layout.threeAxis) return threeAxisRow(values, typed, layout, echo);
   const q: Question = { values, quantity: layout.target === RA_COLUMN ? 'ra' : 'h', half: false };
   const a = answer(q);
   if (a === null) return errorRow(echo, layout, SURFACE_TWICE);
@@ -172,9 +172,12 @@ function doublyCurvedResults(p: DoublyCurvedProblem, h: number, unit: LengthUnit
 }
 
 /** The output row of a valid-shaped three-axis record: interval, Lxy, dz, lead, tilt, note, error. */
-function threeAxisRow(values: QuestionValues, layout: Layout, echo: string): string {
+function threeAxisRow(values: QuestionValues, typed: QuestionValues, layout: Layout, echo: string): string {
   const r = answerThreeAxis(values, 'h');
-  if (!r.ok) return errorRow(echo, layout, r.errors.map((e) => threeAxisMessage(e, r.passes)).join(' '));
+  if (!r.ok) {
+    const words = r.errors.map((e) => threeAxisMessage(e, r.passes, layout.unit, typed));
+    return errorRow(echo, layout, words.join(' '));
+  }
   const a = r.answer;
   const note = a.noScallop ? 'no scallop: a flat end on a flat floor, L = 2R for any h' : '';
   const stepDown = a.stepDownMm === null ? '' : csvNumber(a.stepDownMm);

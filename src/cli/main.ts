@@ -213,10 +213,11 @@ function reportThreeAxisErrors(
   passes: string,
   json: boolean,
   unit: LengthUnit,
+  typed: Values,
 ): number {
   const worded = errors.map((e) => {
     const option = cliFlag(e.field);
-    const words = threeAxisMessage(e, passes);
+    const words = threeAxisMessage(e, passes, unit, typed);
     const message = escapeControls(words);
     io.stderr.write(errorLine(`${option}: ${words}`));
     return {
@@ -236,7 +237,7 @@ function reportThreeAxisErrors(
 function threeAxis(values: Values, quantity: ThreeAxisQuantity, json: boolean, io: Io, out: Output): number {
   const unit = unitOfText(values.unit) ?? 'mm';
   const r = answerThreeAxis(valuesInMm(values, unit), quantity);
-  if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, r.passes, json, unit);
+  if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, r.passes, json, unit, values);
   const { problem, answer: a } = r;
   if (json) writeJson(out, threeAxisJson(problem, a), unit);
   else out.write(`${threeAxisTable(problem, a, unit)}\n`);
@@ -263,7 +264,7 @@ async function run(request: Request, io: Io, out: Output): Promise<number> {
       const unit = unitOfText(request.values.unit) ?? 'mm';
       const r = sweepSlopes(valuesInMm(request.values, unit));
       const passes = request.values.passes?.trim() || 'raster';
-      if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, passes, request.json, unit);
+      if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, passes, request.json, unit, request.values);
       const step = { typed: r.typed };
       if (request.json) writeJson(out, slopeSweepJson(r.input, r.sweep, step), unit);
       else out.write(`${slopeSweepTable(r.input, r.sweep, step, unit)}\n`);

@@ -20,7 +20,7 @@ import {
 } from '../core/index';
 import { cliFlag, FIELDS, PASS_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
-import type { LengthUnit } from '../core/input/units';
+import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
 import { isNumberText } from '../core/output/csvWrite';
 import {
   type DoublyCurvedProblem,
@@ -262,26 +262,45 @@ export function answerThreeAxis(
 /**
  * A three-axis error's words: a value that is no number or is missing in the one wording of every
  * field (describeInputError's); waterline passes have no raster angle, so their messages name the
- * slope alone.
+ * slope alone. In inches, every length the message gives in mm is written in inches and the value
+ * is quoted as typed (`typed`: the options as given, before their unit was read).
  */
-export function threeAxisMessage(e: ThreeAxisInputError, passes: string): string {
-  const message =
+export function threeAxisMessage(
+  e: ThreeAxisInputError,
+  passes: string,
+  unit: LengthUnit = 'mm',
+  typed: QuestionValues = {},
+): string {
+  const option = FIELDS[e.field].cli as ValueOption;
+  const given = typed[option]?.trim();
+  const got = given === undefined ? String(e.got) : given;
+  const words =
     e.code === 'missing' || e.code === 'not-a-number'
       ? describeInputError(
           {
             field: e.field as AnyInputError['field'],
             code: e.code,
-            got: String(e.got),
+            got,
             limit: null,
             side: null,
             message: '',
           },
           'mm',
         )
-      : e.message;
+      : inUnit(e.message, unit, `(got ${String(e.got)})`, `(got ${got})`);
   return passes === 'waterline'
-    ? message
+    ? words
         .replace('at this slope and raster angle', 'at this slope')
         .replace('the slope and the raster angle set', 'the slope sets')
-    : message;
+    : words;
+}
+
+/** A message in mm written in `unit`: the value given quoted as typed, and in inches each "N mm" converted. */
+function inUnit(message: string, unit: LengthUnit, gotMm: string, gotTyped: string): string {
+  const quoted = message.replace(gotMm, gotTyped);
+  if (unit === 'mm') return quoted;
+  return quoted.replace(
+    /(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?) mm\b/g,
+    (_, n: string) => `${formatInputNumber(fromMm(Number(n), unit))} ${unitSymbol(unit)}`,
+  );
 }

@@ -63,9 +63,20 @@ export function percent(value: number | null): string {
   return value === null ? NONE : formatPercent(value, 2);
 }
 
-/** An input value as given (shortest text that reads back to the same number). */
+/**
+ * An input value as given: the shortest text that reads back to the same number, written as a
+ * plain decimal (1e-9 as 0.000000001: tables never use exponent notation).
+ */
 export function echo(value: number): string {
-  return Object.is(value, -0) ? '0' : String(value);
+  const text = Object.is(value, -0) ? '0' : String(value);
+  const m = /^(-?)(\d+)(?:\.(\d+))?e([+-]\d+)$/.exec(text);
+  if (m === null) return text;
+  const [, sign = '', whole = '', fraction = '', exponent = '0'] = m;
+  const digits = whole + fraction;
+  const point = whole.length + Number(exponent);
+  if (point <= 0) return `${sign}0.${'0'.repeat(-point)}${digits}`;
+  if (point >= digits.length) return `${sign}${digits}${'0'.repeat(point - digits.length)}`;
+  return `${sign}${digits.slice(0, point)}.${digits.slice(point)}`;
 }
 
 export interface Column {

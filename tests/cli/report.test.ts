@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { forwardJson, forwardTable, inverseJson, inverseTable } from '../../src/cli/report';
-import { deviation, length, percent, renderTable } from '../../src/cli/table';
+import { deviation, echo, length, percent, renderTable } from '../../src/cli/table';
 import {
   compareForward,
   compareInverse,
@@ -89,6 +89,11 @@ describe('table cells', () => {
     expect(deviation(2.5)).toBe('+2.500000');
     expect(percent(-0.001)).toBe('0.00');
     expect(percent(null)).toBe('-');
+    // An input echoed as given, but as a plain decimal that reads back to the same double.
+    expect(echo(1e-9)).toBe('0.000000001');
+    expect(echo(-3.5e-12)).toBe('-0.0000000000035');
+    expect(echo(1.5e22)).toBe('15000000000000000000000');
+    for (const x of [5e-324, 1.7976931348623157e308, 2.5e-5, 0.1, -0]) expect(Number(echo(x))).toBe(x === 0 ? 0 : x);
   });
 
   it('renderTable sizes each column to its widest cell', () => {

@@ -128,6 +128,20 @@ describe('--unit inch: every length in and out in inches (issue 26 point 9)', ()
     expect(e.limit).toBe(1000 / 25.4);
   });
 
+  it('three-axis errors too (their messages in mm written in inches), in the batch alike', async () => {
+    const r = await runMain(['--unit', 'inch', '--slope', '30', '--R', '50', '--Rcr', '1', '--h', '0.001']);
+    expect(r.stderr).toBe('error: --R: Tool radius R must be from 0.0000393701 in to 39.3701 in (got 50).\n');
+    const h = await runMain(['--unit', 'inch', '--slope', '30', '--R', '0.25', '--Rcr', '0.03', '--h', '0.2']);
+    expect(h.stderr).toMatch(
+      /^error: --h: Scallop height h must be below 0\.14 in at this slope and raster angle \(got 0\.2\)/,
+    );
+    const b = await runMain(['--batch', '--unit', 'inch'], 'R,Rcr,h,slope\n0.25,0.03,0.2,30\n');
+    expect(b.stdout).toContain('must be below 0.14 in at this slope and raster angle (got 0.2)');
+    expect(b.stdout.split('\n')[0]).toBe(
+      'R_in,Rcr_in,h_in,slope,interval_in,horizontalStep_in,stepDown_in,lead,tilt,note,error',
+    );
+  });
+
   it('--unit takes mm, inch (or in); another word is a usage error', async () => {
     const r = await runMain(['--R', '3', '--Rcr', '1', '--rho', '5', '--h', '0.01', '--unit', 'furlong']);
     expect(r.code).toBe(2);
