@@ -577,5 +577,5 @@ describe('command line (as a process)', () => {
     expect(ok).toBeLessThan(ROWS);
     expect(numbers).toBeGreaterThan(5 * ok);
     expect(r.stdout).not.toMatch(STACK);
-  });
+  }, 120_000);
 });
