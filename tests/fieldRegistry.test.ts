@@ -219,12 +219,14 @@ describe('the batch takes every registry column', () => {
     const [record] = parseCsv(
       [...header]
         .reverse()
-        .filter((c) => c !== 'Ra')
+        .filter((c) => c !== 'Ra' && c !== 'L')
         .join(','),
     );
     const h = record && parseHeader(record);
     if (!h?.ok) throw new Error('header');
-    expect(outputHeader(h.layout)).toBe(`${header.filter((c) => c !== 'Ra').join(',')},${RESULT_COLUMNS.join(',')}\n`);
+    expect(outputHeader(h.layout)).toBe(
+      `${header.filter((c) => c !== 'Ra' && c !== 'L').join(',')},${RESULT_COLUMNS.join(',')}\n`,
+    );
     // The page's lookup table writes the batch's header.
     expect(LOOKUP_HEADER).toBe(outputHeader(h.layout).trim());
   });
@@ -238,6 +240,7 @@ describe('the batch takes every registry column', () => {
         rho: '5',
         h: '0.05',
         Ra: '0.01',
+        L: '1',
         tilt: '0',
         pattern: 'one-way',
         surfaceRadius: '50',

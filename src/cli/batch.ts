@@ -17,17 +17,24 @@
 import { fstatSync } from 'node:fs';
 import type { Readable } from 'node:stream';
 import { StringDecoder } from 'node:string_decoder';
-import { APPROXIMATIONS, type ApproximationKey, forwardInput } from '../core/index';
+import { APPROXIMATIONS, type ApproximationKey, type ExactInverse, forwardInput } from '../core/index';
 import { FIELDS, fieldOfCsvColumn } from '../core/input/fields';
 import { fromMm, type LengthUnit } from '../core/input/units';
 import { csvNumber, emptyCellNotes, RESULT_COLUMNS, resultFields } from '../core/output/csvWrite';
-import { type DoublyCurvedProblem, doublyCurvedForward } from '../core/surfaces/doublyCurved/index';
+import {
+  type DoublyCurvedInverse,
+  type DoublyCurvedProblem,
+  doublyCurvedForward,
+  doublyCurvedInverse,
+} from '../core/surfaces/doublyCurved/index';
+import { exactInverse } from '../core/surfaces/solve';
 import type { ValueOption } from './args';
 import {
   emptyResults,
   HEADER_RULE,
   type InputColumn,
   isLengthColumn,
+  L_COLUMN,
   type Layout,
   outputHeader,
   parseHeader,
@@ -120,15 +127,19 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
   }
   const { values, typed } = recordValues(fields, layout);
   if (layout.threeAxis) return threeAxisRow(values, typed, layout, echo);
-  const q: Question = { values, quantity: layout.target === RA_COLUMN ? 'ra' : 'h', half: false };
+  const quantity = layout.target === RA_COLUMN ? 'ra' : layout.target === L_COLUMN ? 'interval' : 'h';
+  const q: Question = { values, quantity, half: false };
   const a = answer(q);
   if (a === null) return errorRow(echo, layout, SURFACE_TWICE);
   if (!a.ok) {
     const words = wordErrors(a, q, layout.unit, typed).map((w) => w.message);
     return errorRow(echo, layout, words.join(' '));
   }
-  // The batch gives no step-over (no column): a record asks for h or Ra.
-  if (a.kind === 'pass-inverse' || a.kind === 'doubly-inverse') throw new Error('a batch record asks for h or Ra');
+  if (a.kind === 'pass-inverse') return `${echo},${inverseResults(exactInverse(a.input), layout.unit)},,\n`;
+  if (a.kind === 'doubly-inverse') {
+    const e = doublyCurvedInverse({ ...a.problem, intervalMm: a.problem.valueMm });
+    return `${echo},${inverseResults(e, layout.unit)},,\n`;
+  }
   const hMm = a.kind === 'pass-forward' ? a.input.scallopHeightMm : a.scallopHeightMm;
   const h = a.targetRaMm === undefined ? '' : `${inUnit([csvNumber(hMm)], layout.unit)},`;
   if (a.kind === 'doubly-forward') {
@@ -137,6 +148,23 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
   }
   const parts = resultFields(a.input).split(',');
   return `${echo},${h}${inUnit(parts.slice(0, RESULT_NUMBERS), layout.unit)},${parts.slice(RESULT_NUMBERS).join(',')},\n`;
+}
+
+/** The results of a row given the step-over (INVERSE_RESULT_COLUMNS before `note`), in the run's unit. */
+function inverseResults(e: ExactInverse | DoublyCurvedInverse, unit: LengthUnit): string {
+  const numbers = [
+    e.cuspHeightMm,
+    e.rightCuspHeightMm,
+    e.leftCuspHeightMm,
+    e.otherCuspHeightMm,
+    e.halfWidthRightMm,
+    e.halfWidthLeftMm,
+    e.contactOffsetMm,
+  ];
+  return inUnit(
+    numbers.map((x) => (x === null ? '' : csvNumber(x))),
+    unit,
+  );
 }
 
 /** The number columns of a row's results (exact to cornerBall), before `note` and `error`. */

@@ -40,9 +40,27 @@ const INPUT_COLUMNS: readonly InputColumn[] = [
   ...RADIUS_COLUMNS,
 ];
 
-/** The scallop height's and the target roughness's columns (h, Ra). */
+/** The scallop height's, the target roughness's and the step-over's columns (h, Ra, L). */
 export const H_COLUMN = csvColumnOf('h');
 export const RA_COLUMN = csvColumnOf('ra');
+export const L_COLUMN = csvColumnOf('interval');
+
+/**
+ * Result columns of a row given the step-over L (the inverse): the exact scallop height and the
+ * cusps between right and between left flanks, the other cusp (zigzag), the flank reaches at
+ * their cusps and the contact offset; a note and the error.
+ */
+export const INVERSE_RESULT_COLUMNS = [
+  'h',
+  'rightCuspHeight',
+  'leftCuspHeight',
+  'otherCuspHeight',
+  'halfWidthRight',
+  'halfWidthLeft',
+  'contactOffset',
+  'note',
+  'error',
+];
 
 /** Column names as a message lists them: `a, b, c and d`. */
 function listed(names: readonly string[]): string {
@@ -96,7 +114,7 @@ const THREE_AXIS_INPUT_COLUMNS: readonly InputColumn[] = [
 ];
 
 /** What the header must be, as the messages say it. */
-export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN} in place of ${H_COLUMN}) in any order, optionally with ${listed([...OPTIONAL_COLUMNS, ...RADIUS_COLUMNS])} (and the output columns, which are ignored); or, for three-axis machining, R,Rcr,h,${SLOPE_COLUMN} optionally with ${listed(CSV_THREE_AXIS_COLUMNS.filter((c) => c !== SLOPE_COLUMN))}`;
+export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN}, or the step-over ${L_COLUMN}, in place of ${H_COLUMN}) in any order, optionally with ${listed([...OPTIONAL_COLUMNS, ...RADIUS_COLUMNS])} (and the output columns, which are ignored); or, for three-axis machining, R,Rcr,h,${SLOPE_COLUMN} optionally with ${listed(CSV_THREE_AXIS_COLUMNS.filter((c) => c !== SLOPE_COLUMN))}`;
 
 /** Result columns a header may hold (an output read back): ignored, computed again. */
 const IGNORED_COLUMNS: readonly string[] = RESULT_COLUMNS;
@@ -172,8 +190,9 @@ export function parseHeader(
   });
   const missing: string[] = REQUIRED_COLUMNS.filter((c) => index[c] === undefined);
   const given = TARGET_COLUMNS.filter((c) => index[c] !== undefined);
-  if (given.length === 0) missing.push(`${H_COLUMN} (or ${RA_COLUMN})`);
-  if (given.length > 1) problems.push(`give ${H_COLUMN} or ${RA_COLUMN}, not both`);
+  if (given.length === 0) missing.push(`${H_COLUMN} (or ${RA_COLUMN} or ${L_COLUMN})`);
+  if (given.length > 1)
+    problems.push(`give one of ${H_COLUMN}, ${RA_COLUMN} and ${L_COLUMN}, not ${given.join(' and ')}`);
   if (missing.length > 0) problems.unshift(`missing ${missing.join(', ')}`);
   if (problems.length > 0) return { ok: false, error: `${rule} (${problems.join('; ')})` };
   const echoed = INPUT_COLUMNS.flatMap((name) => {
@@ -204,8 +223,8 @@ function parseThreeAxisHeader(
       ignored.add(name);
       return;
     }
-    if (name === RA_COLUMN) {
-      problems.push(`three-axis rows take a scallop height ${H_COLUMN}, not ${RA_COLUMN}`);
+    if (name === RA_COLUMN || name === L_COLUMN) {
+      problems.push(`three-axis rows take a scallop height ${H_COLUMN}, not ${name}`);
       return;
     }
     if (!(THREE_AXIS_INPUT_COLUMNS as readonly string[]).includes(name)) {
@@ -233,6 +252,7 @@ function parseThreeAxisHeader(
 /** The result columns of a layout: with a target Ra, the scallop height `h` that leaves it comes first. */
 export function resultColumns(layout: Layout): readonly string[] {
   if (layout.threeAxis) return THREE_AXIS_RESULT_COLUMNS;
+  if (layout.target === L_COLUMN) return INVERSE_RESULT_COLUMNS;
   return layout.target === RA_COLUMN ? [H_COLUMN, ...RESULT_COLUMNS] : RESULT_COLUMNS;
 }
 

@@ -12,7 +12,7 @@ export const USAGE = `Usage: path-interval --R <mm> --Rcr <mm> --rho <deg> [opti
        path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --horizontal-step <mm> [--json]
        path-interval --R <mm> --Rcr <mm> --slope <deg> --passes waterline [...] --step-down <mm> [--json]
        path-interval --R <mm> --Rcr <mm> --h <mm> --slope-sweep [three-axis options] [--json]
-       path-interval --batch < cases.csv > table.csv
+       path-interval --batch [--unit mm|inch] < cases.csv > table.csv
 
 Step-over (path interval L, between adjacent cutter-contact paths) of a filleted (bull-nose)
 end mill for a scallop height h or a roughness Ra, exact for any tool posture on a plane or a
@@ -67,7 +67,7 @@ Three-axis machining (the tool upright, the surface sloped; then --rho and --til
   --slope-sweep         instead of --slope, with --h: Lxy (raster) or dz (waterline) for h at 31 slopes
                         from 0 to the largest valid, and the cusp one constant step leaves at each
                         (the flat floor's step for h, or the typed --horizontal-step / --step-down)
-  --batch               read CSV on stdin (header R,Rcr,rho and h or Ra; optional tilt, pattern,
+  --batch               read CSV on stdin (header R,Rcr,rho and h, Ra or the step-over L; optional tilt, pattern,
                         surfaceRadius, surfaceAxis, or feedRadius, crossRadius; any order; an empty field takes the default;
                         output columns are ignored, so an output or a lookup table reads back;
                         a column may name its unit, R_mm, R_in, rho_deg, as the page's tables do;
@@ -78,7 +78,9 @@ Three-axis machining (the tool upright, the surface sloped; then --rho and --til
                         write CSV: the input columns, h (with Ra), then
                         exact,sekine,redonnet,bedi (L/2 of each), interval,halfWidthRight,
                         halfWidthLeft,contactOffset,otherCuspHeight (exact), osculating,
-                        cornerBall (L/2), note, error; full precision; blank lines skipped
+                        cornerBall (L/2), note, error; with L: h,rightCuspHeight,leftCuspHeight,
+                        otherCuspHeight,halfWidthRight,halfWidthLeft,contactOffset,note,error (exact);
+                        full precision; blank lines skipped
   -h, --help            show this text
 
 Table: 7 significant digits. JSON and CSV: every digit of the double.

@@ -4,8 +4,7 @@
  * bit, and the same refusals (the batch's error column is the command line's messages), over every
  * mode: plane, posture (lead, tilt), zigzag, cylinders (given as Rs and axis, or as one principal
  * radius), doubly curved points, three-axis raster and waterline; h and Ra questions; valid and
- * refused (gouging, beyond the limits, bad text). The batch takes no step-over (no column), so the
- * step-over questions are not among them.
+ * refused (gouging, beyond the limits, bad text). h, Ra and step-over (L) questions.
  */
 import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
@@ -30,6 +29,7 @@ const OPTION: Readonly<Record<string, string>> = {
   crossRadius: '--cross-radius',
   h: '--h',
   Ra: '--ra',
+  L: '--interval',
   slope: '--slope',
   passes: '--passes',
   rasterAngle: '--raster-angle',
@@ -39,7 +39,7 @@ const text = (x: number) => String(Number(x.toPrecision(6)));
 const signed = (rand: () => number, x: number) => (rand() < 0.5 ? -x : x);
 
 /** A five-axis question over the modes, valid or not (about a third are refused). */
-function fiveAxisRow(rand: () => number, target: 'h' | 'Ra'): Row {
+function fiveAxisRow(rand: () => number, target: 'h' | 'Ra' | 'L'): Row {
   const R = logUniform(rand, 0.5, 20);
   const Rcr = pick(rand, [0, R, R * rand(), R * 0.3]);
   const rho = pick(rand, ['0', '5', text(60 * rand()), text(89 * rand())]);
@@ -56,7 +56,9 @@ function fiveAxisRow(rand: () => number, target: 'h' | 'Ra'): Row {
           'abc',
           '-1',
         ])
-      : pick(rand, [text(logUniform(rand, 1e-5, 0.05) * R), text(logUniform(rand, 1e-6, 1) * R), '0']);
+      : target === 'Ra'
+        ? pick(rand, [text(logUniform(rand, 1e-5, 0.05) * R), text(logUniform(rand, 1e-6, 1) * R), '0'])
+        : pick(rand, [text(logUniform(rand, 0.01, 1.5) * R), text(logUniform(rand, 0.001, 2.5) * R), '1/2', '-1']);
   return {
     R: pick(rand, [text(R), text(R), text(R), '5um', 'x']),
     Rcr: text(Rcr),
@@ -164,6 +166,20 @@ function fiveAxisNumbers(row: Row): (json: Json) => Record<string, unknown> {
   };
 }
 
+/** The numbers of a step-over row (the inverse), read from the JSON answer. */
+function inverseNumbers(json: Json): Record<string, unknown> {
+  const exact = json.exact as Json;
+  return {
+    h: exact.scallopHeight,
+    rightCuspHeight: exact.rightCuspHeight,
+    leftCuspHeight: exact.leftCuspHeight,
+    otherCuspHeight: exact.otherCuspHeight,
+    halfWidthRight: exact.halfWidthRight,
+    halfWidthLeft: exact.halfWidthLeft,
+    contactOffset: exact.contactOffset,
+  };
+}
+
 function threeAxisNumbers(json: Json): Record<string, unknown> {
   const exact = json.exact as Json;
   const posture = json.posture as Json;
@@ -195,6 +211,7 @@ describe('a batch row and a single question go the same way (issue 26 point 8)',
   for (const [target, seed] of [
     ['h', 2601],
     ['Ra', 2602],
+    ['L', 2604],
   ] as const) {
     it(`five-axis ${target} questions: the same numbers and refusals (seed ${seed}, 90 questions)`, async () => {
       const rand = random(seed);
@@ -204,7 +221,8 @@ describe('a batch row and a single question go the same way (issue 26 point 8)',
       const seen = { answered: 0, refused: 0 };
       const kinds = new Set<string>();
       for (const [i, row] of rows.entries()) {
-        seen[await compare(row, out[i] as Record<string, string>, fiveAxisNumbers(row))]++;
+        const read = target === 'L' ? inverseNumbers : fiveAxisNumbers(row);
+        seen[await compare(row, out[i] as Record<string, string>, read)]++;
         kinds.add(row.surfaceRadius !== '' ? 'cylinder' : `${row.feedRadius !== ''}${row.crossRadius !== ''}`);
       }
       // Both outcomes and every surface form were met.
