@@ -75,9 +75,11 @@ export { optionOf };
 function reportErrors(io: Io, out: Output, worded: readonly WordedError[], json: boolean, unit: LengthUnit): number {
   const errors = worded.map((w) => {
     io.stderr.write(errorLine(`${w.option}: ${w.message}`));
-    return errorJson(w.error, w.option, escapeControls(w.message));
+    return errorJson({ ...w.error, got: w.got }, w.option, escapeControls(w.message));
   });
-  if (json) writeJson(out, { errors: errors as unknown as JsonValue[] }, unit);
+  const list = errors as unknown as JsonValue[];
+  // In inches the errors name their unit (their limits are inches).
+  if (json) writeJson(out, unit === 'mm' ? { errors: list } : { unit: 'mm', errors: list }, unit);
   return 2;
 }
 
@@ -224,12 +226,13 @@ function reportThreeAxisErrors(
       field: e.field,
       option,
       code: e.code,
-      got: escapeControls(cut(String(e.got))),
+      // The value as typed (before its unit was read), else as the solver took it.
+      got: escapeControls(cut(typed[cliFlag(e.field).slice(2) as ValueOption]?.trim() ?? String(e.got))),
       ...(e.limit === null ? {} : { limit: e.limit }),
       message,
     };
   });
-  if (json) writeJson(out, { errors: worded }, unit);
+  if (json) writeJson(out, unit === 'mm' ? { errors: worded } : { unit: 'mm', errors: worded }, unit);
   return 2;
 }
 

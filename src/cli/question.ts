@@ -191,6 +191,8 @@ export function answer(q: Question): Answer | null {
 export interface WordedError {
   readonly error: AnyInputError;
   readonly option: string;
+  /** The value as typed (before its unit was read). */
+  readonly got: string;
   readonly message: string;
 }
 
@@ -226,7 +228,7 @@ export function wordErrors(
       ...(as === undefined ? {} : { surfaceRadiusAs: as }),
       ...(diameter ? { toolSizeAsDiameter: true } : {}),
     };
-    return { error: e, option, message: describeInputError(e, unit, options) };
+    return { error: e, option, got: text?.trim() ?? e.got, message: describeInputError(e, unit, options) };
   });
 }
 

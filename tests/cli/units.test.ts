@@ -124,8 +124,27 @@ describe('--unit inch: every length in and out in inches (issue 26 point 9)', ()
     const r = await runMain(['--R', '50', '--Rcr', '1', '--rho', '5', '--h', '0.001', '--unit', 'inch', '--json']);
     expect(r.code).toBe(2);
     expect(r.stderr).toBe('error: --R: Tool radius R must be at most 39.3701 in (got 50).\n');
-    const e = (JSON.parse(r.stdout) as { errors: Json[] }).errors[0] as Json;
+    const out = JSON.parse(r.stdout) as { unit: string; errors: Json[] };
+    const e = out.errors[0] as Json;
+    expect(out.unit).toBe('inch');
     expect(e.limit).toBe(1000 / 25.4);
+    expect(e.got).toBe('50');
+    const three = await runMain([
+      '--unit',
+      'inch',
+      '--slope',
+      '30',
+      '--R',
+      '50',
+      '--Rcr',
+      '1',
+      '--h',
+      '0.001',
+      '--json',
+    ]);
+    expect((JSON.parse(three.stdout) as { errors: Json[] }).errors[0]?.got).toBe('50');
+    const half = await runMain(['--R', '3', '--Rcr', '1', '--rho', '5', '--half-interval', '4', '--json']);
+    expect((JSON.parse(half.stdout) as { errors: Json[] }).errors[0]?.got).toBe('4');
   });
 
   it('three-axis errors too (their messages in mm written in inches), in the batch alike', async () => {
