@@ -67,19 +67,21 @@ Three-axis machining (the tool upright, the surface sloped; then --rho and --til
   --slope-sweep         instead of --slope, with --h: Lxy (raster) or dz (waterline) for h at 31 slopes
                         from 0 to the largest valid, and the cusp one constant step leaves at each
                         (the flat floor's step for h, or the typed --horizontal-step / --step-down)
-  --batch               read CSV on stdin (header R,Rcr,rho and h, Ra or the step-over L; optional tilt, pattern,
-                        surfaceRadius, surfaceAxis, or feedRadius, crossRadius; any order; an empty field takes the default;
+  --batch               read CSV on stdin (header R,Rcr,rho and h, Ra or the step-over L;
+                        optional tilt, pattern, surfaceRadius, surfaceAxis, or feedRadius,
+                        crossRadius; any order; an empty field takes the default;
                         output columns are ignored, so an output or a lookup table reads back;
                         a column may name its unit, R_mm, R_in, rho_deg, as the page's tables do;
                         with --unit inch the lengths of columns that name none are inches),
                         three-axis: a header with slope needs no rho; optional passes,
                         rasterAngle, feedRadius, crossRadius; output interval,horizontalStep,
-                        stepDown,lead,tilt,scallopHeight,note,error),
+                        stepDown,lead,tilt,note,error),
                         write CSV: the input columns, h (with Ra), then
                         exact,sekine,redonnet,bedi (L/2 of each), interval,halfWidthRight,
                         halfWidthLeft,contactOffset,otherCuspHeight (exact), osculating,
-                        cornerBall (L/2), note, error; with L: h,rightCuspHeight,leftCuspHeight,
-                        otherCuspHeight,halfWidthRight,halfWidthLeft,contactOffset,note,error (exact);
+                        cornerBall (L/2), note, error; with L (exact): h,rightCuspHeight,
+                        leftCuspHeight,otherCuspHeight,halfWidthRight,halfWidthLeft,
+                        contactOffset,note,error;
                         full precision; blank lines skipped
   -h, --help            show this text
 
