@@ -8,7 +8,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { attributesBlock, EMBED_SCRIPT, embedAttributesDrift, withAttributes } from '../src/build/embedAttributes';
-import { FLAG_OPTIONS, VALUE_OPTIONS } from '../src/cli/args';
+import { FLAG_OPTIONS, SETTING_OPTIONS, VALUE_OPTIONS } from '../src/cli/args';
 import { batchRow, HEADER_RULE, outputHeader, parseHeader, RESULT_COLUMNS } from '../src/cli/batch';
 import { parseCsv } from '../src/cli/csv';
 import { USAGE } from '../src/cli/main';
@@ -161,6 +161,8 @@ function cliCase(id: FieldId, bad: string): string[] {
   if (id === 'interval' || id === 'halfInterval' || id === 'ra' || id === 'horizontalStep' || id === 'stepDown')
     given.length = 0;
   if (id === 'surfaceAxis') base.push('--surface-radius', '50');
+  // The diameter stands in place of the radius.
+  if (id === 'D') base.splice(0, 2);
   const args = [...base, ...given];
   const flag = cliFlag(id);
   const at = args.indexOf(flag);
@@ -171,7 +173,7 @@ function cliCase(id: FieldId, bad: string): string[] {
 
 describe('the command line takes every registry field under its flag', () => {
   it('each flag feeds its own field: a bad value is named by the flag and the field label', async () => {
-    expect(withCli.map(([, f]) => f.cli)).toEqual([...VALUE_OPTIONS]);
+    expect([...withCli.map(([, f]) => f.cli), ...SETTING_OPTIONS]).toEqual([...VALUE_OPTIONS]);
     for (const [id, f] of withCli) {
       const bad = f.kind === 'enum' ? 'nope' : 'abc';
       const r = await runMain(cliCase(id, bad));
@@ -182,14 +184,14 @@ describe('the command line takes every registry field under its flag', () => {
 
   it('the help names every flag, and every flag it names is one', () => {
     const named = new Set([...USAGE.matchAll(/--([a-z][a-zA-Z-]*)/g)].map((m) => m[1]));
-    const known = new Set<string>([...CLI_OPTIONS, ...FLAG_OPTIONS]);
+    const known = new Set<string>([...CLI_OPTIONS, ...FLAG_OPTIONS, ...SETTING_OPTIONS]);
     expect([...named].filter((n) => n !== undefined && !known.has(n))).toEqual([]);
     for (const option of CLI_OPTIONS) expect(USAGE, option).toContain(`--${option} <`);
   });
 
   it('the command line sources name no flag the registry or the flag list does not have', () => {
     // `--name` is the parser's own placeholder (`--name value`, `--name=value`).
-    const known = new Set<string>([...CLI_OPTIONS, ...FLAG_OPTIONS, 'name']);
+    const known = new Set<string>([...CLI_OPTIONS, ...FLAG_OPTIONS, ...SETTING_OPTIONS, 'name']);
     for (const file of [
       'args.ts',
       'main.ts',
@@ -217,12 +219,14 @@ describe('the batch takes every registry column', () => {
     const [record] = parseCsv(
       [...header]
         .reverse()
-        .filter((c) => c !== 'Ra')
+        .filter((c) => c !== 'Ra' && c !== 'L')
         .join(','),
     );
     const h = record && parseHeader(record);
     if (!h?.ok) throw new Error('header');
-    expect(outputHeader(h.layout)).toBe(`${header.filter((c) => c !== 'Ra').join(',')},${RESULT_COLUMNS.join(',')}\n`);
+    expect(outputHeader(h.layout)).toBe(
+      `${header.filter((c) => c !== 'Ra' && c !== 'L').join(',')},${RESULT_COLUMNS.join(',')}\n`,
+    );
     // The page's lookup table writes the batch's header.
     expect(LOOKUP_HEADER).toBe(outputHeader(h.layout).trim());
   });
@@ -236,6 +240,7 @@ describe('the batch takes every registry column', () => {
         rho: '5',
         h: '0.05',
         Ra: '0.01',
+        L: '1',
         tilt: '0',
         pattern: 'one-way',
         surfaceRadius: '50',

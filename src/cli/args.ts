@@ -6,9 +6,15 @@
 import { CLI_OPTIONS, type CliOption, cliFlag, THREE_AXIS_FIELDS } from '../core/input/fields';
 import type { ThreeAxisQuantity } from '../core/threeAxis/validate';
 
-/** Options that take a value: one per field of the field registry that the command line takes. */
-export const VALUE_OPTIONS: readonly CliOption[] = CLI_OPTIONS;
-export type ValueOption = CliOption;
+/** The command line's settings that take a value but are no field: the length unit. */
+export const SETTING_OPTIONS = ['unit'] as const;
+
+/** The words `--unit` takes: every length in and out in mm or in inches. */
+export const CLI_LENGTH_UNITS = ['mm', 'inch'] as const;
+
+/** Options that take a value: one per field of the field registry that the command line takes, and the settings. */
+export type ValueOption = CliOption | (typeof SETTING_OPTIONS)[number];
+export const VALUE_OPTIONS: readonly ValueOption[] = [...CLI_OPTIONS, ...SETTING_OPTIONS];
 
 /** Options that take no value (not fields: what to do and how to write it). */
 export const FLAG_OPTIONS = ['json', 'inverse', 'simulate', 'batch', 'help', 'slope-sweep'] as const;
@@ -17,7 +23,11 @@ type FlagOption = (typeof FLAG_OPTIONS)[number];
 /** What the command line was asked to do. */
 export type Request =
   | { readonly kind: 'help' }
-  | { readonly kind: 'batch' }
+  | {
+      readonly kind: 'batch';
+      /** The settings given with --batch (only --unit). */
+      readonly values: Readonly<Partial<Record<ValueOption, string>>>;
+    }
   | {
       /** `forward`: the step-over for a scallop height (--h); `ra`: for a target roughness (--ra). */
       readonly kind: 'forward' | 'ra';
@@ -60,6 +70,14 @@ function isFlagOption(name: string): name is FlagOption {
   return (FLAG_OPTIONS as readonly string[]).includes(name);
 }
 
+/** The longest text an error echoes as given: longer text is cut, with an ellipsis. */
+export const ECHO_MAX_CHARS = 200;
+
+/** Text as an error echoes it: at most {@link ECHO_MAX_CHARS} characters, then `...`. */
+export function cut(text: string): string {
+  return text.length > ECHO_MAX_CHARS ? `${text.slice(0, ECHO_MAX_CHARS)}...` : text;
+}
+
 function usage(error: string): Request {
   return { kind: 'usage', error };
 }
@@ -82,7 +100,7 @@ export function parseArgs(args: readonly string[]): Request {
     }
     if (error !== null) continue; // keep scanning for a help request only
     if (!arg.startsWith('--') || arg === '--') {
-      error = `unexpected argument "${arg}"`;
+      error = `unexpected argument "${cut(arg)}"`;
       continue;
     }
     const eq = arg.indexOf('=');
@@ -111,18 +129,29 @@ export function parseArgs(args: readonly string[]): Request {
         values[name] = value;
         order.push(name);
       }
-    } else error = `unknown option --${name}`;
+    } else error = `unknown option --${cut(name)}`;
   }
   if (help) return { kind: 'help' };
   if (error !== null) return usage(error);
+  // An empty principal radius is straight (the batch's meaning of an empty cell): as if not given.
+  for (const name of ['feed-radius', 'cross-radius'] as const) {
+    if (values[name]?.trim() === '') delete values[name];
+  }
 
+  if (values.R !== undefined && values.D !== undefined) {
+    return usage('--R and --D do not go together: give the tool radius R or the diameter D');
+  }
+  const unit = values.unit?.trim().toLowerCase();
+  if (unit !== undefined && unit !== 'mm' && unit !== 'inch' && unit !== 'in') {
+    return usage(`--unit must be mm or inch (got "${cut(values.unit ?? '')}")`);
+  }
   if (flags.has('batch')) {
-    const other = order.find((name) => name !== 'batch');
+    const other = order.find((name) => name !== 'batch' && name !== 'unit');
     if (other === 'json') return usage('--json does not go with --batch: the batch output is CSV');
     if (other !== undefined) {
       return usage(`--${other} does not go with --batch: every case comes from the CSV on stdin`);
     }
-    return { kind: 'batch' };
+    return { kind: 'batch', values };
   }
   const json = flags.has('json');
   if (flags.has('slope-sweep')) return slopeSweepRequest(values, flags, json);

@@ -14,47 +14,50 @@
  * `error` (on one line, control characters escaped) and the run goes on.
  */
 
+import { fstatSync } from 'node:fs';
 import type { Readable } from 'node:stream';
 import { StringDecoder } from 'node:string_decoder';
+import { APPROXIMATIONS, type ApproximationKey, type ExactInverse, forwardInput } from '../core/index';
+import { FIELDS, fieldOfCsvColumn } from '../core/input/fields';
+import { fromMm, type LengthUnit } from '../core/input/units';
+import { csvNumber, emptyCellNotes, RESULT_COLUMNS, resultFields } from '../core/output/csvWrite';
 import {
-  type AnyInputError,
-  APPROXIMATIONS,
-  type ApproximationKey,
-  describeInputError,
-  forwardInput,
-  type RawToolInput,
-  scallopHeightForRaMm,
-  validateForward,
-  validateTargetRa,
-} from '../core/index';
-import { csvColumnOf, FIELDS, PASS_FIELDS } from '../core/input/fields';
-import { rawFields } from '../core/input/raw';
-import { csvNumber, RESULT_COLUMNS, resultFields } from '../core/output/csvWrite';
-import {
+  type DoublyCurvedInverse,
+  type DoublyCurvedProblem,
   doublyCurvedForward,
-  doublyCurvedHeightForRaMm,
-  validateDoublyCurved,
+  doublyCurvedInverse,
 } from '../core/surfaces/doublyCurved/index';
-import { solveThreeAxis, validateThreeAxis } from '../core/threeAxis/validate';
+import { exactInverse } from '../core/surfaces/solve';
+import type { ValueOption } from './args';
 import {
   emptyResults,
-  H_COLUMN,
+  HEADER_RULE,
   type InputColumn,
+  isLengthColumn,
+  L_COLUMN,
   type Layout,
-  OPTIONAL_COLUMNS,
   outputHeader,
   parseHeader,
   RA_COLUMN,
   REQUIRED_COLUMNS,
 } from './batchHeader';
 import { CsvReader, type CsvRecord, csvText } from './csv';
+import { lengthText } from './lengthInput';
 import { describeSystemError, errorLine, escapeControls, FLUSH_CHARS, type Output } from './output';
+import {
+  answer,
+  answerThreeAxis,
+  type Question,
+  type QuestionValues,
+  SURFACE_TWICE,
+  threeAxisMessage,
+  wordErrors,
+} from './question';
 
 /** The header's columns, rule and layout (batchHeader.ts), re-exported for the callers. */
 export {
   HEADER_RULE,
   type Layout,
-  OPTIONAL_COLUMNS,
   outputHeader,
   parseHeader,
   RADIUS_COLUMNS,
@@ -77,11 +80,27 @@ function errorRow(echo: string, layout: Layout, message: string): string {
   return `${echo}${emptyResults(layout)},${csvText(escapeControls(message))}\n`;
 }
 
-/** A field of an optional column: undefined (the default) when the column is absent or the field empty. */
-function optionalField(fields: readonly string[], index: number | undefined): string | undefined {
-  if (index === undefined) return undefined;
-  const text = fields[index] as string;
-  return text.trim() === '' ? undefined : text;
+/** The question of a record: each input column's field by its option (question.ts), lengths in mm. */
+function recordValues(fields: readonly string[], layout: Layout): { values: QuestionValues; typed: QuestionValues } {
+  const values: Partial<Record<ValueOption, string>> = {};
+  const typed: Partial<Record<ValueOption, string>> = {};
+  for (const [column, i] of Object.entries(layout.index) as [InputColumn, number][]) {
+    const field = fieldOfCsvColumn(column);
+    const option = field === null ? null : FIELDS[field].cli;
+    const text = fields[i] as string;
+    if (option === null || field === null) continue;
+    // An empty optional field takes its default, as a missing column does (a required one is "missing").
+    const required = column === layout.target || (REQUIRED_COLUMNS as readonly string[]).includes(column);
+    if (!required && text.trim() === '') continue;
+    typed[option] = text;
+    values[option] = isLengthColumn(column) ? lengthText(text, layout.columnUnits[column] ?? layout.unit) : text;
+  }
+  return { values, typed };
+}
+
+/** Length results (mm text, or empty) in the run's unit, each converted once from its double. */
+function inUnit(texts: readonly string[], unit: LengthUnit): string {
+  return texts.map((t) => (t === '' || unit === 'mm' ? t : csvNumber(fromMm(Number(t), unit)))).join(',');
 }
 
 /** The output row of one record (with its line break). */
@@ -90,7 +109,7 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
   let echo = '';
   for (let j = 0; j < layout.echoed.length; j++) {
     const c = layout.echoed[j] as { readonly index: number };
-    echo += `${j === 0 ? '' : ','}${csvText(trimSpaces(fields[c.index] ?? ''))}`;
+    echo += `${j === 0 ? '' : ','}${csvText(escapeControls(trimSpaces(fields[c.index] ?? '')))}`;
   }
   if (record.error !== null) return errorRow(echo, layout, `line ${record.line}: ${record.error}`);
   if (fields.length !== layout.width) {
@@ -106,95 +125,57 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
       return errorRow(echo, layout, `line ${record.line}: the ${c.name} field holds a line break`);
     }
   }
-  const { index } = layout;
-  if (layout.threeAxis) return threeAxisRow(fields, layout, echo);
-  // Each field from its column; an empty optional field takes its default (tilt 0, one-way, plane,
-  // feed), as a missing column does.
-  const pass = rawFields(PASS_FIELDS, (name) => {
-    const csv = FIELDS[name].csv;
-    const i = index[csv.column];
-    return csv.role === 'optional' ? optionalField(fields, i) : fields[i as number];
-  });
-  if (layout.target === RA_COLUMN) {
-    const v = validateTargetRa({ ...pass, ra: fields[index[RA_COLUMN] as number] });
-    if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
-    const p = v.value;
-    const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);
-    return `${echo},${csvNumber(h)},${resultFields(forwardInput(p, p.pattern, h, p.surface))},\n`;
+  const { values, typed } = recordValues(fields, layout);
+  if (layout.threeAxis) return threeAxisRow(values, typed, layout, echo);
+  const quantity = layout.target === RA_COLUMN ? 'ra' : layout.target === L_COLUMN ? 'interval' : 'h';
+  const q: Question = { values, quantity, half: false };
+  const a = answer(q);
+  if (a === null) return errorRow(echo, layout, SURFACE_TWICE);
+  if (!a.ok) {
+    const words = wordErrors(a, q, layout.unit, typed).map((w) => w.message);
+    return errorRow(echo, layout, words.join(' '));
   }
-  const rf = optionalField(fields, index[csvColumnOf('feedRadius')]);
-  const rc = optionalField(fields, index[csvColumnOf('crossRadius')]);
-  if (rf !== undefined || rc !== undefined) {
-    const cylinder = pass.surfaceRadius !== undefined || pass.surfaceAxis !== undefined;
-    if (cylinder) {
-      return errorRow(
-        echo,
-        layout,
-        'give the surface once: surfaceRadius with surfaceAxis (a cylinder), or feedRadius and crossRadius',
-      );
-    }
-    if (rf !== undefined && rc !== undefined) return doublyCurvedRow(pass, rf, rc, fields, layout, echo);
-    // One radius alone: the cylinder it is (the cylinder's own path, the same digits).
-    const cylinderPass = { ...pass, surfaceRadius: rf ?? rc, surfaceAxis: rf === undefined ? 'feed' : 'cross' };
-    const as = rf === undefined ? 'crossRadius' : 'feedRadius';
-    return passRow(cylinderPass, fields, layout, echo, as);
+  if (a.kind === 'pass-inverse') return `${echo},${inverseResults(exactInverse(a.input), layout.unit)},,\n`;
+  if (a.kind === 'doubly-inverse') {
+    const e = doublyCurvedInverse({ ...a.problem, intervalMm: a.problem.valueMm });
+    return `${echo},${inverseResults(e, layout.unit)},,\n`;
   }
-  return passRow(pass, fields, layout, echo);
+  const hMm = a.kind === 'pass-forward' ? a.input.scallopHeightMm : a.scallopHeightMm;
+  const h = a.targetRaMm === undefined ? '' : `${inUnit([csvNumber(hMm)], layout.unit)},`;
+  if (a.kind === 'doubly-forward') {
+    const notes = emptyCellNotes(forwardInput(a.problem, a.problem.pattern, a.scallopHeightMm)).join(' ');
+    return `${echo},${h}${doublyCurvedResults(a.problem, a.scallopHeightMm, layout.unit)},${csvText(notes)},\n`;
+  }
+  const parts = resultFields(a.input).split(',');
+  return `${echo},${h}${inUnit(parts.slice(0, RESULT_NUMBERS), layout.unit)},${parts.slice(RESULT_NUMBERS).join(',')},\n`;
 }
 
-/** The row of a plane or a cylinder (h or a target Ra). */
-function passRow(
-  pass: RawToolInput,
-  fields: readonly string[],
-  layout: Layout,
-  echo: string,
-  as?: 'feedRadius' | 'crossRadius',
-): string {
-  const { index } = layout;
-  const words = (errors: readonly AnyInputError[]) =>
-    errors.map((e) => (as === undefined ? e.message : describeInputError(e, 'mm', { surfaceRadiusAs: as }))).join(' ');
-  if (layout.target === RA_COLUMN) {
-    const v = validateTargetRa({ ...pass, ra: fields[index[RA_COLUMN] as number] });
-    if (!v.ok) return errorRow(echo, layout, words(v.errors));
-    const p = v.value;
-    const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);
-    return `${echo},${csvNumber(h)},${resultFields(forwardInput(p, p.pattern, h, p.surface))},\n`;
-  }
-  const v = validateForward({ ...pass, h: fields[index[H_COLUMN] as number] });
-  if (!v.ok) return errorRow(echo, layout, words(v.errors));
-  return `${echo},${resultFields(v.value)},\n`;
+/** The results of a row given the step-over (INVERSE_RESULT_COLUMNS before `note`), in the run's unit. */
+function inverseResults(e: ExactInverse | DoublyCurvedInverse, unit: LengthUnit): string {
+  const numbers = [
+    e.cuspHeightMm,
+    e.rightCuspHeightMm,
+    e.leftCuspHeightMm,
+    e.otherCuspHeightMm,
+    e.halfWidthRightMm,
+    e.halfWidthLeftMm,
+    e.contactOffsetMm,
+  ];
+  return inUnit(
+    numbers.map((x) => (x === null ? '' : csvNumber(x))),
+    unit,
+  );
 }
+
+/** The number columns of a row's results (exact to cornerBall), before `note` and `error`. */
+const RESULT_NUMBERS = RESULT_COLUMNS.indexOf('note');
 
 /**
- * The row of a doubly curved point: the exact answer in the result columns (exact L/2, interval,
+ * The results of a doubly curved point: the exact answer in the result columns (exact L/2, interval,
  * flank reaches, contact offset, otherCuspHeight), the paper's procedures and the others as on a
- * plane (as the cylinder rows give them: they ignore the curvature); a gouging point's message in
- * `error`.
+ * plane (as the cylinder rows give them: they ignore the curvature).
  */
-function doublyCurvedRow(
-  pass: RawToolInput,
-  rf: string,
-  rc: string,
-  fields: readonly string[],
-  layout: Layout,
-  echo: string,
-): string {
-  const { index } = layout;
-  const ra = layout.target === RA_COLUMN;
-  const quantity = ra ? 'ra' : 'h';
-  const raw = {
-    R: pass.R,
-    Rcr: pass.Rcr,
-    rho: pass.rho,
-    tilt: pass.tilt,
-    pattern: pass.pattern,
-    feedRadius: rf,
-    crossRadius: rc,
-  };
-  const v = validateDoublyCurved(raw, quantity, fields[index[ra ? RA_COLUMN : H_COLUMN] as number]);
-  if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
-  const p = v.value;
-  const h = ra ? doublyCurvedHeightForRaMm(p, p.pattern, p, p.valueMm) : p.valueMm;
+function doublyCurvedResults(p: DoublyCurvedProblem, h: number, unit: LengthUnit): string {
   const e = doublyCurvedForward({ ...p, scallopHeightMm: h });
   const plane = forwardInput(p, p.pattern, h);
   const half = (key: ApproximationKey) => {
@@ -202,31 +183,45 @@ function doublyCurvedRow(
     return r.ok ? csvNumber(r.halfIntervalMm) : '';
   };
   const other = e.otherCuspHeightMm === null ? '' : csvNumber(e.otherCuspHeightMm);
-  return (
-    `${echo},${ra ? `${csvNumber(h)},` : ''}${csvNumber(e.intervalMm / 2)},${half('sekine')},${half('redonnet')},${half('bedi')},` +
-    `${csvNumber(e.intervalMm)},${csvNumber(e.halfWidthRightMm)},${csvNumber(e.halfWidthLeftMm)},` +
-    `${csvNumber(e.contactOffsetMm)},${other},${half('osculating')},${half('cornerBall')},,\n`
-  );
+  const numbers = [
+    csvNumber(e.intervalMm / 2),
+    half('sekine'),
+    half('redonnet'),
+    half('bedi'),
+    csvNumber(e.intervalMm),
+    csvNumber(e.halfWidthRightMm),
+    csvNumber(e.halfWidthLeftMm),
+    csvNumber(e.contactOffsetMm),
+    other,
+    half('osculating'),
+    half('cornerBall'),
+  ];
+  return inUnit(numbers, unit);
 }
 
 /** The output row of a valid-shaped three-axis record: interval, Lxy, dz, lead, tilt, note, error. */
-function threeAxisRow(fields: readonly string[], layout: Layout, echo: string): string {
-  const { index } = layout;
-  const at = (column: InputColumn) => optionalField(fields, index[column]);
-  const raw = Object.fromEntries(
-    (['R', 'Rcr', 'slope', 'passes', 'rasterAngle', 'feedRadius', 'crossRadius', 'rho', 'tilt'] as const).map((id) => [
-      id,
-      at(csvColumnOf(id)),
-    ]),
-  );
-  const v = validateThreeAxis(raw, 'h', at(H_COLUMN));
-  if (!v.ok) return errorRow(echo, layout, v.errors.map((e) => e.message).join(' '));
-  const r = solveThreeAxis(v.value);
-  if (!r.ok) return errorRow(echo, layout, r.errors.map((e) => e.message).join(' '));
-  const a = r.value;
+function threeAxisRow(values: QuestionValues, typed: QuestionValues, layout: Layout, echo: string): string {
+  const r = answerThreeAxis(values, 'h');
+  if (!r.ok) {
+    const words = r.errors.map((e) => threeAxisMessage(e, r.passes, layout.unit, typed));
+    return errorRow(echo, layout, words.join(' '));
+  }
+  const a = r.answer;
   const note = a.noScallop ? 'no scallop: a flat end on a flat floor, L = 2R for any h' : '';
   const stepDown = a.stepDownMm === null ? '' : csvNumber(a.stepDownMm);
-  return `${echo},${csvNumber(a.intervalMm)},${csvNumber(a.horizontalStepMm)},${stepDown},${csvNumber(a.leadDeg)},${csvNumber(a.tiltDeg)},${csvText(note)},\n`;
+  const lengths = inUnit([csvNumber(a.intervalMm), csvNumber(a.horizontalStepMm), stepDown], layout.unit);
+  return `${echo},${lengths},${csvNumber(a.leadDeg)},${csvNumber(a.tiltDeg)},${csvText(note)},\n`;
+}
+
+/**
+ * Standard input that is a directory (`--batch < /tmp`) reads as empty on some systems: a read
+ * error (EISDIR), not an empty CSV.
+ */
+function refuseDirectory(stdin: Readable): void {
+  const fd = (stdin as Readable & { fd?: unknown }).fd;
+  if (typeof fd === 'number' && fstatSync(fd).isDirectory()) {
+    throw Object.assign(new Error('standard input is a directory'), { code: 'EISDIR' });
+  }
 }
 
 /** Stderr and stdout of a batch run. */
@@ -239,7 +234,7 @@ export interface BatchIo {
  * Streams the batch from stdin to `out`; resolves to the exit code: 0 (rows written, bad rows
  * included), 1 (stdin unreadable), 2 (no header or a wrong one). Stops reading when `out` fails.
  */
-export async function runBatch(io: BatchIo, out: Output): Promise<number> {
+export async function runBatch(io: BatchIo, out: Output, unit: LengthUnit = 'mm'): Promise<number> {
   const reader = new CsvReader();
   const decoder = new StringDecoder('utf8');
   let layout: Layout | null = null;
@@ -248,7 +243,7 @@ export async function runBatch(io: BatchIo, out: Output): Promise<number> {
     for (const record of records) {
       if (record.blank || headerError !== null) continue;
       if (layout === null) {
-        const header = parseHeader(record);
+        const header = parseHeader(record, unit);
         if (header.ok) {
           layout = header.layout;
           out.write(outputHeader(layout));
@@ -259,6 +254,7 @@ export async function runBatch(io: BatchIo, out: Output): Promise<number> {
     }
   };
   try {
+    refuseDirectory(io.stdin);
     for await (const chunk of io.stdin) {
       take(reader.push(typeof chunk === 'string' ? chunk : decoder.write(chunk as Buffer)));
       if (headerError !== null) break;
@@ -276,11 +272,7 @@ export async function runBatch(io: BatchIo, out: Output): Promise<number> {
     return 2;
   }
   if (layout === null) {
-    io.stderr.write(
-      errorLine(
-        `no CSV on stdin: expected a header line ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN}; optionally ${OPTIONAL_COLUMNS.join(', ')})`,
-      ),
-    );
+    io.stderr.write(errorLine(`no CSV on stdin: ${HEADER_RULE}`));
     return 2;
   }
   await out.flush();

@@ -9,9 +9,13 @@ import {
   CSV_THREE_AXIS_COLUMNS,
   type CsvColumn,
   csvColumnOf,
+  fieldOfCsvColumn,
+  isLengthField,
 } from '../core/input/fields';
+import type { LengthUnit } from '../core/input/units';
 import { RESULT_COLUMNS } from '../core/output/csvWrite';
 import { unitNamedColumn } from '../core/output/lookupUnits';
+import { cut } from './args';
 import type { CsvRecord } from './csv';
 
 /**
@@ -36,9 +40,27 @@ const INPUT_COLUMNS: readonly InputColumn[] = [
   ...RADIUS_COLUMNS,
 ];
 
-/** The scallop height's and the target roughness's columns (h, Ra). */
+/** The scallop height's, the target roughness's and the step-over's columns (h, Ra, L). */
 export const H_COLUMN = csvColumnOf('h');
 export const RA_COLUMN = csvColumnOf('ra');
+export const L_COLUMN = csvColumnOf('interval');
+
+/**
+ * Result columns of a row given the step-over L (the inverse): the exact scallop height and the
+ * cusps between right and between left flanks, the other cusp (zigzag), the flank reaches at
+ * their cusps and the contact offset; a note and the error.
+ */
+export const INVERSE_RESULT_COLUMNS = [
+  'h',
+  'rightCuspHeight',
+  'leftCuspHeight',
+  'otherCuspHeight',
+  'halfWidthRight',
+  'halfWidthLeft',
+  'contactOffset',
+  'note',
+  'error',
+];
 
 /** Column names as a message lists them: `a, b, c and d`. */
 function listed(names: readonly string[]): string {
@@ -58,6 +80,10 @@ export interface Layout {
   readonly target: InputColumn;
   /** True for a header with a `slope` column: three-axis rows ({@link THREE_AXIS_RESULT_COLUMNS}). */
   readonly threeAxis: boolean;
+  /** The run's length unit (`--unit`): of the columns that name none, and of the results. */
+  readonly unit: LengthUnit;
+  /** The unit each length column names in the header (`R_in`, `h_mm`); absent: the run's. */
+  readonly columnUnits: Readonly<Partial<Record<InputColumn, LengthUnit>>>;
 }
 
 /** The column that selects three-axis machining (a header with it needs no rho). */
@@ -88,35 +114,59 @@ const THREE_AXIS_INPUT_COLUMNS: readonly InputColumn[] = [
 ];
 
 /** What the header must be, as the messages say it. */
-export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN} in place of ${H_COLUMN}) in any order, optionally with ${listed([...OPTIONAL_COLUMNS, ...RADIUS_COLUMNS])} (and the output columns, which are ignored); or, for three-axis machining, R,Rcr,h,${SLOPE_COLUMN} optionally with ${listed(CSV_THREE_AXIS_COLUMNS.filter((c) => c !== SLOPE_COLUMN))}`;
+export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN}, or the step-over ${L_COLUMN}, in place of ${H_COLUMN}) in any order, optionally with ${listed([...OPTIONAL_COLUMNS, ...RADIUS_COLUMNS])} (and the output columns, which are ignored); or, for three-axis machining, R,Rcr,h,${SLOPE_COLUMN} optionally with ${listed(CSV_THREE_AXIS_COLUMNS.filter((c) => c !== SLOPE_COLUMN))}`;
 
 /** Result columns a header may hold (an output read back): ignored, computed again. */
 const IGNORED_COLUMNS: readonly string[] = RESULT_COLUMNS;
 
 /**
- * The header's names with their units read (the page's lookup table names them: `R_mm`,
- * `rho_deg`): the batch column each stands for, or why the batch cannot read it (a column in
- * inches: the batch reads mm).
+ * The header's names with their units read (the page's lookup table names them: `R_mm`, `R_in`,
+ * `rho_deg`): the batch column each stands for, and the length unit it names (or none).
  */
-function plainNames(fields: readonly string[]): { names: string[]; problems: string[] } {
-  const problems: string[] = [];
+function plainNames(fields: readonly string[]): { names: string[]; units: (LengthUnit | null)[] } {
+  const units: (LengthUnit | null)[] = [];
   const names = fields.map((f) => {
     const named = unitNamedColumn(f.trim());
-    if (named.unit === 'in')
-      problems.push(`column ${f.trim()} is in inches: the command line reads mm (download the table in mm)`);
+    if (named.unit !== null) {
+      units.push(named.unit);
+      return named.column;
+    }
+    // A length input column the lookup table does not write (Ra) may name its unit too.
+    const m = /^(.+)_(mm|in)$/.exec(f.trim());
+    const field = m === null ? null : fieldOfCsvColumn(m[1] ?? '');
+    if (m !== null && field !== null && isLengthField(field)) {
+      units.push(m[2] as LengthUnit);
+      return m[1] as string;
+    }
+    units.push(null);
     return named.column;
   });
-  return { names, problems };
+  return { names, units };
+}
+
+/** The unit each input column of `index` names in the header (`units` by position). */
+function columnUnitsOf(
+  index: Readonly<Partial<Record<InputColumn, number>>>,
+  units: readonly (LengthUnit | null)[],
+): Partial<Record<InputColumn, LengthUnit>> {
+  const out: Partial<Record<InputColumn, LengthUnit>> = {};
+  for (const [column, i] of Object.entries(index) as [InputColumn, number][]) {
+    const unit = units[i];
+    if (unit !== null && unit !== undefined) out[column] = unit;
+  }
+  return out;
 }
 
 /** Reads the header record: the layout, or the reason it is not one. */
-export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | { ok: false; error: string } {
+export function parseHeader(
+  record: CsvRecord,
+  unit: LengthUnit = 'mm',
+): { ok: true; layout: Layout } | { ok: false; error: string } {
   const rule = HEADER_RULE;
   if (record.error !== null) return { ok: false, error: `${rule}; line ${record.line}: ${record.error}` };
   const plain = plainNames(record.fields);
-  if (plain.problems.length > 0) return { ok: false, error: `${rule} (${plain.problems.join('; ')})` };
   const names = plain.names;
-  if (names.includes(SLOPE_COLUMN)) return parseThreeAxisHeader(names);
+  if (names.includes(SLOPE_COLUMN)) return parseThreeAxisHeader(names, plain.units, unit);
   const index: Partial<Record<InputColumn, number>> = {};
   const ignored = new Set<string>();
   const problems: string[] = [];
@@ -131,7 +181,7 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
       return;
     }
     if (!(INPUT_COLUMNS as readonly string[]).includes(name)) {
-      problems.push(`unknown column "${name}"`);
+      problems.push(`unknown column "${cut(name)}"`);
       return;
     }
     const column = name as InputColumn;
@@ -140,8 +190,9 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
   });
   const missing: string[] = REQUIRED_COLUMNS.filter((c) => index[c] === undefined);
   const given = TARGET_COLUMNS.filter((c) => index[c] !== undefined);
-  if (given.length === 0) missing.push(`${H_COLUMN} (or ${RA_COLUMN})`);
-  if (given.length > 1) problems.push(`give ${H_COLUMN} or ${RA_COLUMN}, not both`);
+  if (given.length === 0) missing.push(`${H_COLUMN} (or ${RA_COLUMN} or ${L_COLUMN})`);
+  if (given.length > 1)
+    problems.push(`give one of ${H_COLUMN}, ${RA_COLUMN} and ${L_COLUMN}, not ${given.join(' and ')}`);
   if (missing.length > 0) problems.unshift(`missing ${missing.join(', ')}`);
   if (problems.length > 0) return { ok: false, error: `${rule} (${problems.join('; ')})` };
   const echoed = INPUT_COLUMNS.flatMap((name) => {
@@ -149,11 +200,19 @@ export function parseHeader(record: CsvRecord): { ok: true; layout: Layout } | {
     return i === undefined ? [] : [{ name, index: i }];
   });
   const target = given[0] as InputColumn;
-  return { ok: true, layout: { width: names.length, names, echoed, index, target, threeAxis: false } };
+  const columnUnits = columnUnitsOf(index, plain.units);
+  return {
+    ok: true,
+    layout: { width: names.length, names, echoed, index, target, threeAxis: false, unit, columnUnits },
+  };
 }
 
 /** A three-axis header (it has a slope column): R, Rcr, h and slope required; no rho needed. */
-function parseThreeAxisHeader(names: readonly string[]): { ok: true; layout: Layout } | { ok: false; error: string } {
+function parseThreeAxisHeader(
+  names: readonly string[],
+  units: readonly (LengthUnit | null)[],
+  unit: LengthUnit,
+): { ok: true; layout: Layout } | { ok: false; error: string } {
   const index: Partial<Record<InputColumn, number>> = {};
   const ignored = new Set<string>();
   const problems: string[] = [];
@@ -164,12 +223,12 @@ function parseThreeAxisHeader(names: readonly string[]): { ok: true; layout: Lay
       ignored.add(name);
       return;
     }
-    if (name === RA_COLUMN) {
-      problems.push(`three-axis rows take a scallop height ${H_COLUMN}, not ${RA_COLUMN}`);
+    if (name === RA_COLUMN || name === L_COLUMN) {
+      problems.push(`three-axis rows take a scallop height ${H_COLUMN}, not ${name}`);
       return;
     }
     if (!(THREE_AXIS_INPUT_COLUMNS as readonly string[]).includes(name)) {
-      problems.push(`unknown column "${name}"`);
+      problems.push(`unknown column "${cut(name)}"`);
       return;
     }
     const column = name as InputColumn;
@@ -183,18 +242,47 @@ function parseThreeAxisHeader(names: readonly string[]): { ok: true; layout: Lay
     const i = index[name];
     return i === undefined ? [] : [{ name, index: i }];
   });
-  return { ok: true, layout: { width: names.length, names, echoed, index, target: H_COLUMN, threeAxis: true } };
+  const columnUnits = columnUnitsOf(index, units);
+  return {
+    ok: true,
+    layout: { width: names.length, names, echoed, index, target: H_COLUMN, threeAxis: true, unit, columnUnits },
+  };
 }
 
 /** The result columns of a layout: with a target Ra, the scallop height `h` that leaves it comes first. */
 export function resultColumns(layout: Layout): readonly string[] {
   if (layout.threeAxis) return THREE_AXIS_RESULT_COLUMNS;
+  if (layout.target === L_COLUMN) return INVERSE_RESULT_COLUMNS;
   return layout.target === RA_COLUMN ? [H_COLUMN, ...RESULT_COLUMNS] : RESULT_COLUMNS;
 }
 
-/** The output header line for a layout. */
+/** Result columns that are no length: the angles of three-axis rows and the text columns. */
+const NOT_LENGTH_RESULTS: ReadonlySet<string> = new Set(['lead', 'tilt', 'note', 'error']);
+
+/** True for a result column that holds a length (in the run's unit). */
+export function isLengthResult(column: string): boolean {
+  return !NOT_LENGTH_RESULTS.has(column);
+}
+
+/** True for an input column that holds a length (the field registry's kind). */
+export function isLengthColumn(column: InputColumn): boolean {
+  const field = fieldOfCsvColumn(column);
+  return field !== null && isLengthField(field);
+}
+
+/**
+ * The output header line for a layout. In mm, the batch's names as they were; in inches every
+ * length column names its unit (`R_in`, `exact_in`, `R_mm` for a column read in mm); in mm, only a
+ * column read in inches names it.
+ */
 export function outputHeader(layout: Layout): string {
-  return `${[...layout.echoed.map((c) => c.name), ...resultColumns(layout)].join(',')}\n`;
+  const named = (column: InputColumn): string => {
+    const unit = layout.columnUnits[column] ?? layout.unit;
+    if (!isLengthColumn(column)) return column;
+    return layout.unit === 'in' || unit === 'in' ? `${column}_${unit}` : column;
+  };
+  const results = resultColumns(layout).map((c) => (layout.unit === 'in' && isLengthResult(c) ? `${c}_in` : c));
+  return `${[...layout.echoed.map((c) => named(c.name)), ...results].join(',')}\n`;
 }
 
 /** Empty fields for the result columns before `error` (numbers and `note`), each after a comma. */

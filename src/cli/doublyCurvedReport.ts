@@ -8,6 +8,7 @@
  */
 
 import { CORRECTED_KEYS, PROCEDURES, type Roughness } from '../core/index';
+import type { LengthUnit } from '../core/input/units';
 import type {
   DoublyCurvedComparison,
   DoublyCurvedInverse,
@@ -15,7 +16,7 @@ import type {
   DoublyCurvedRow,
 } from '../core/surfaces/doublyCurved/index';
 import { curvatureLabel, type Extras, extrasJson, type JsonValue, roughnessLines } from './report';
-import { type Column, deviation, echo, length, NONE, percent, renderTable } from './table';
+import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
 
 type JsonObject = { [key: string]: JsonValue };
 
@@ -37,7 +38,7 @@ export function pointKind(rf: number, rc: number): string {
   return 'saddle (one convex, one concave)';
 }
 
-function caseLine(p: DoublyCurvedPass): string {
+function caseLine(p: DoublyCurvedPass, L: Lengths): string {
   const kind =
     p.cornerRadiusMm === p.toolRadiusMm
       ? 'Ball end mill'
@@ -45,10 +46,10 @@ function caseLine(p: DoublyCurvedPass): string {
         ? 'Flat end mill'
         : 'Filleted end mill';
   return (
-    `${kind} R = ${echo(p.toolRadiusMm)} mm, Rcr = ${echo(p.cornerRadiusMm)} mm; ` +
+    `${kind} R = ${L.echo(p.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(p.cornerRadiusMm)} ${L.u}; ` +
     `lead rho = ${echo(p.leadAngleDeg)} deg, tilt beta = ${echo(p.tiltAngleDeg)} deg; ${p.pattern} passes ` +
     `at a doubly curved point, ${pointKind(p.feedRadiusMm, p.crossRadiusMm)}: ` +
-    `Rf = ${echo(p.feedRadiusMm)} mm along the feed, Rc = ${echo(p.crossRadiusMm)} mm across ` +
+    `Rf = ${L.echo(p.feedRadiusMm)} ${L.u} along the feed, Rc = ${L.echo(p.crossRadiusMm)} ${L.u} across ` +
     '(heights along the normal, L along the surface)'
   );
 }
@@ -72,23 +73,25 @@ export function doublyCurvedForwardTable(
   h: number,
   c: DoublyCurvedComparison,
   extras: Extras,
+  unit: LengthUnit = 'mm',
 ): string {
+  const L = lengthsIn(unit);
   const e = c.exact;
   const target =
     extras.targetRaMm === undefined
-      ? `Scallop height h = ${echo(h)} mm`
-      : `Target roughness Ra = ${echo(extras.targetRaMm)} mm: scallop height h = ${length(h)} mm`;
+      ? `Scallop height h = ${L.echo(h)} ${L.u}`
+      : `Target roughness Ra = ${L.echo(extras.targetRaMm)} ${L.u}: scallop height h = ${L.length(h)} ${L.u}`;
   const facts: string[][] = [
-    ['L', length(e.intervalMm), 'mm', 'step-over: arc length along the surface between adjacent CC paths'],
-    ['L/2', length(e.intervalMm / 2), 'mm', 'half step-over'],
-    ['wR', length(e.halfWidthRightMm), 'mm', 'right flank (+Y) from the contact, at the cusp'],
-    ['wL', length(e.halfWidthLeftMm), 'mm', 'left flank (-Y) from the contact, at the cusp'],
-    ['y0', length(e.contactOffsetMm), 'mm', 'contact offset: the tool centre point runs -y0 (in Y) from its CC path'],
-    ['h', length(e.cuspHeightMm), 'mm', p.pattern === 'zigzag' ? 'highest cusp' : 'cusp height'],
+    ['L', L.length(e.intervalMm), L.u, 'step-over: arc length along the surface between adjacent CC paths'],
+    ['L/2', L.length(e.intervalMm / 2), L.u, 'half step-over'],
+    ['wR', L.length(e.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at the cusp'],
+    ['wL', L.length(e.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at the cusp'],
+    ['y0', L.length(e.contactOffsetMm), L.u, 'contact offset: the tool centre point runs -y0 (in Y) from its CC path'],
+    ['h', L.length(e.cuspHeightMm), L.u, p.pattern === 'zigzag' ? 'highest cusp' : 'cusp height'],
   ];
-  if (e.otherCuspHeightMm !== null) facts.push(['h2', length(e.otherCuspHeightMm), 'mm', 'other cusp, zigzag']);
+  if (e.otherCuspHeightMm !== null) facts.push(['h2', L.length(e.otherCuspHeightMm), L.u, 'other cusp, zigzag']);
   const out = [
-    caseLine(p),
+    caseLine(p, L),
     target,
     '',
     `${PROCEDURES.exact.label}:`,
@@ -97,14 +100,14 @@ export function doublyCurvedForwardTable(
   ];
   const columns: Column[] = [
     { header: 'shortcut', align: 'left' },
-    { header: 'L [mm]', align: 'right' },
-    { header: 'dev L [mm]', align: 'right' },
+    { header: `L [${L.u}]`, align: 'right' },
+    { header: `dev L [${L.u}]`, align: 'right' },
     { header: 'dev [%]', align: 'right' },
-    { header: 'real h [mm]', align: 'right' },
+    { header: `real h [${L.u}]`, align: 'right' },
     { header: 'note', align: 'left' },
   ];
   const notes: string[] = [];
-  const rows: string[][] = [[PROCEDURES.exact.label, length(e.intervalMm), NONE, NONE, length(e.cuspHeightMm)]];
+  const rows: string[][] = [[PROCEDURES.exact.label, L.length(e.intervalMm), NONE, NONE, L.length(e.cuspHeightMm)]];
   for (const [, label, r] of rowsOf(c)) {
     if (!r.ok) {
       notes.push(`[${notes.length + 1}] ${r.notApplicable}`);
@@ -112,43 +115,49 @@ export function doublyCurvedForwardTable(
     } else {
       rows.push([
         label,
-        length(r.intervalMm),
-        deviation(r.deviationMm),
+        L.length(r.intervalMm),
+        L.deviation(r.deviationMm),
         percent(r.deviationPercent),
-        r.realScallopMm === null ? 'wall' : length(r.realScallopMm),
+        r.realScallopMm === null ? 'wall' : L.length(r.realScallopMm),
       ]);
     }
   }
   out.push('What the shortcuts give at this point, beside the exact answer:', ...renderTable(columns, rows));
   out.push('', 'dev L: step-over minus the exact one; real h: the scallop that step-over really leaves here (exact).');
-  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, e.cuspHeightMm));
+  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, e.cuspHeightMm, L));
   if (notes.length > 0) out.push('', ...notes);
   return out.join('\n');
 }
 
 /** The inverse answer (step-over to cusp heights) at a doubly curved point as a table. */
-export function doublyCurvedInverseTable(p: DoublyCurvedPass, e: DoublyCurvedInverse, roughness: Roughness): string {
-  const facts: string[][] = [['h', length(e.cuspHeightMm), 'mm', 'scallop height (the highest cusp)']];
+export function doublyCurvedInverseTable(
+  p: DoublyCurvedPass,
+  e: DoublyCurvedInverse,
+  roughness: Roughness,
+  unit: LengthUnit = 'mm',
+): string {
+  const L = lengthsIn(unit);
+  const facts: string[][] = [['h', L.length(e.cuspHeightMm), L.u, 'scallop height (the highest cusp)']];
   if (e.otherCuspHeightMm !== null) {
     facts.push(
-      ['h2', length(e.otherCuspHeightMm), 'mm', 'other cusp, zigzag'],
-      ['hR', length(e.rightCuspHeightMm), 'mm', 'cusp between right flanks (wR = L/2)'],
-      ['hL', length(e.leftCuspHeightMm), 'mm', 'cusp between left flanks (wL = L/2)'],
+      ['h2', L.length(e.otherCuspHeightMm), L.u, 'other cusp, zigzag'],
+      ['hR', L.length(e.rightCuspHeightMm), L.u, 'cusp between right flanks (wR = L/2)'],
+      ['hL', L.length(e.leftCuspHeightMm), L.u, 'cusp between left flanks (wL = L/2)'],
     );
   }
   facts.push(
-    ['wR', length(e.halfWidthRightMm), 'mm', 'right flank (+Y) from the contact, at its cusp'],
-    ['wL', length(e.halfWidthLeftMm), 'mm', 'left flank (-Y) from the contact, at its cusp'],
-    ['y0', length(e.contactOffsetMm), 'mm', 'contact offset: the tool centre point runs -y0 (in Y) from its CC path'],
+    ['wR', L.length(e.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at its cusp'],
+    ['wL', L.length(e.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at its cusp'],
+    ['y0', L.length(e.contactOffsetMm), L.u, 'contact offset: the tool centre point runs -y0 (in Y) from its CC path'],
   );
   return [
-    caseLine(p),
-    `Step-over L = ${echo(e.intervalMm)} mm (L/2 = ${echo(e.intervalMm / 2)} mm) along the surface between CC paths`,
+    caseLine(p, L),
+    `Step-over L = ${L.echo(e.intervalMm)} ${L.u} (L/2 = ${L.echo(e.intervalMm / 2)} ${L.u}) along the surface between CC paths`,
     '',
     `${PROCEDURES.exact.label}:`,
     ...indent(renderTable(KEY_VALUE, facts, false)),
     '',
-    ...roughnessLines(roughness, e.cuspHeightMm),
+    ...roughnessLines(roughness, e.cuspHeightMm, L),
   ].join('\n');
 }
 

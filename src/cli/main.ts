@@ -8,51 +8,55 @@ import {
   type AnyInputError,
   compareForward,
   compareInverse,
-  type DescribeOptions,
-  describeInputError,
   exactRoughness,
   exactRoughnessAtInterval,
-  type ForwardInput,
-  forwardInput,
   type PassInput,
   SimulationTooLargeError,
-  scallopHeightForRaMm,
   simulatePasses,
-  validateForward,
-  validateInverse,
-  validateTargetRa,
 } from '../core/index';
-import { cliFlag, FIELDS, PASS_FIELDS } from '../core/input/fields';
-import { rawFields } from '../core/input/raw';
+import { cliFlag } from '../core/input/fields';
+import type { LengthUnit } from '../core/input/units';
 import {
   compareDoublyCurved,
-  type DoublyCurvedQuantity,
-  doublyCurvedHeightForRaMm,
   doublyCurvedInverse,
   doublyCurvedRoughness,
   doublyCurvedRoughnessAtInterval,
   doublyCurvedSolver,
-  validateDoublyCurved,
 } from '../core/surfaces/doublyCurved/index';
-import {
-  solveThreeAxis,
-  type ThreeAxisInputError,
-  type ThreeAxisQuantity,
-  validateThreeAxis,
-} from '../core/threeAxis/validate';
-import { parseArgs, type Request, type ValueOption } from './args';
+import type { ThreeAxisInputError, ThreeAxisQuantity } from '../core/threeAxis/validate';
+import { cut, parseArgs, type Request, type ValueOption } from './args';
 import { runBatch } from './batch';
-import { isNumberText } from './csv';
 import {
   doublyCurvedForwardJson,
   doublyCurvedForwardTable,
   doublyCurvedInverseJson,
   doublyCurvedInverseTable,
 } from './doublyCurvedReport';
+import { unitOfText, valuesInMm } from './lengthInput';
 import { describeSystemError, errorLine, escapeControls, isClosedPipe, Output } from './output';
-import { type Extras, forwardJson, forwardTable, inverseJson, inverseTable, type SimulationRun } from './report';
+import {
+  type Answer,
+  answer,
+  answerThreeAxis,
+  optionOf,
+  type Quantity,
+  SURFACE_TWICE,
+  threeAxisMessage,
+  type WordedError,
+  wordErrors,
+} from './question';
+import {
+  type Extras,
+  forwardJson,
+  forwardTable,
+  inverseJson,
+  inverseTable,
+  type JsonValue,
+  type SimulationRun,
+} from './report';
 import { sweepSlopes } from './slopeSweep';
 import { slopeSweepJson, slopeSweepTable, threeAxisJson, threeAxisTable } from './threeAxisReport';
+import { jsonInUnit } from './unitJson';
 import { USAGE } from './usage';
 
 /** The help text (usage.ts), re-exported for the callers. */
@@ -64,34 +68,18 @@ export interface Io {
   readonly stderr: Writable;
 }
 
-/** The option that gives a field, as the user types it, for messages. */
-export function optionOf(field: AnyFieldName, half: boolean): string {
-  return cliFlag(half && field === 'interval' ? 'halfInterval' : field);
-}
+/** The option that gives a field (question.ts), re-exported for the callers. */
+export { optionOf };
 
-function reportErrors(
-  io: Io,
-  out: Output,
-  errors: readonly AnyInputError[],
-  json: boolean,
-  half: { readonly typed: string } | null,
-  surfaceRadiusAs?: 'feedRadius' | 'crossRadius',
-): number {
-  const worded = errors.map((e) => {
-    const asHalf = half !== null && e.field === 'interval';
-    const options: DescribeOptions = {
-      ...(asHalf ? { intervalAsHalf: true, typed: half.typed.trim() } : {}),
-      ...(surfaceRadiusAs === undefined ? {} : { surfaceRadiusAs }),
-    };
-    const message = describeInputError(e, 'mm', options);
-    const option =
-      surfaceRadiusAs !== undefined && e.field === 'surfaceRadius'
-        ? cliFlag(surfaceRadiusAs)
-        : optionOf(e.field, asHalf);
-    io.stderr.write(errorLine(`${option}: ${message}`));
-    return errorJson(e, option, escapeControls(message));
+/** Input errors on stderr, one line each (and as JSON on stdout with --json); exit code 2. */
+function reportErrors(io: Io, out: Output, worded: readonly WordedError[], json: boolean, unit: LengthUnit): number {
+  const errors = worded.map((w) => {
+    io.stderr.write(errorLine(`${w.option}: ${w.message}`));
+    return errorJson({ ...w.error, got: w.got }, w.option, escapeControls(w.message));
   });
-  if (json) out.write(`${JSON.stringify({ errors: worded })}\n`);
+  const list = errors as unknown as JsonValue[];
+  // In inches the errors name their unit (their limits are inches).
+  if (json) writeJson(out, unit === 'mm' ? { errors: list } : { unit: 'mm', errors: list }, unit);
   return 2;
 }
 
@@ -120,7 +108,7 @@ export function errorJson(e: AnyInputError, option: string, message: string): Er
     field: e.field,
     option,
     code: e.code,
-    got: e.got,
+    got: cut(e.got),
     ...(e.limit === undefined ? {} : { limit: e.limit }),
     ...(e.side === undefined ? {} : { side: e.side }),
     ...(e.shankLean === undefined ? {} : { shankLean: e.shankLean }),
@@ -135,11 +123,6 @@ type Values = Readonly<Partial<Record<ValueOption, string>>>;
 interface Wanted {
   readonly json: boolean;
   readonly simulate: boolean;
-}
-
-/** The raw tool, posture, pattern and surface of the options (each field's option, the field registry's). */
-function passValues(values: Values) {
-  return rawFields(PASS_FIELDS, (name) => values[FIELDS[name].cli]);
 }
 
 /**
@@ -157,156 +140,110 @@ function simulate(pass: PassInput, intervalMm: number): SimulationRun {
   }
 }
 
-/** The forward answer for a valid input, with its roughness (and the simulation when asked). */
-function writeForward(input: ForwardInput, wanted: Wanted, out: Output, targetRaMm?: number): number {
-  const c = compareForward(input);
-  const extras: Extras = {
-    roughness: exactRoughness(input, c.exact),
-    ...(targetRaMm === undefined ? {} : { targetRaMm }),
-    ...(wanted.simulate ? { simulation: simulate(input, c.exact.intervalMm) } : {}),
-  };
-  out.write(wanted.json ? `${JSON.stringify(forwardJson(c, extras))}\n` : `${forwardTable(c, extras)}\n`);
-  return 0;
+/** One JSON object on its line, every length in `unit` (converted once from mm). */
+function writeJson(out: Output, value: { [key: string]: JsonValue }, unit: LengthUnit): void {
+  out.write(`${JSON.stringify(jsonInUnit(value, unit))}\n`);
 }
 
-function forward(values: Values, wanted: Wanted, io: Io, out: Output, as?: RadiusOption): number {
-  const v = validateForward({ ...passValues(values), h: values[FIELDS.h.cli] });
-  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, null, as);
-  return writeForward(v.value, wanted, out);
+/** Writes a solved question (question.ts): a table or JSON. */
+function writeAnswer(a: Extract<Answer, { ok: true }>, wanted: Wanted, out: Output, unit: LengthUnit): number {
+  const json = wanted.json;
+  switch (a.kind) {
+    case 'pass-forward': {
+      const input = a.input;
+      const c = compareForward(input);
+      const extras: Extras = {
+        roughness: exactRoughness(input, c.exact),
+        ...(a.targetRaMm === undefined ? {} : { targetRaMm: a.targetRaMm }),
+        ...(wanted.simulate ? { simulation: simulate(input, c.exact.intervalMm) } : {}),
+      };
+      if (json) writeJson(out, forwardJson(c, extras), unit);
+      else out.write(`${forwardTable(c, extras, unit)}\n`);
+      return 0;
+    }
+    case 'pass-inverse': {
+      const input = a.input;
+      const c = compareInverse(input);
+      const extras: Extras = {
+        roughness: exactRoughnessAtInterval(input, input.pattern, c.exact, input.surface),
+        ...(wanted.simulate ? { simulation: simulate(input, input.intervalMm) } : {}),
+      };
+      if (json) writeJson(out, inverseJson(c, extras), unit);
+      else out.write(`${inverseTable(c, extras, unit)}\n`);
+      return 0;
+    }
+    case 'doubly-inverse': {
+      const p = a.problem;
+      const e = doublyCurvedInverse({ ...p, intervalMm: p.valueMm });
+      const r = doublyCurvedRoughnessAtInterval(doublyCurvedSolver(p, p), p.pattern, e);
+      if (json) writeJson(out, doublyCurvedInverseJson(p, e, r), unit);
+      else out.write(`${doublyCurvedInverseTable(p, e, r, unit)}\n`);
+      return 0;
+    }
+    case 'doubly-forward': {
+      const p = a.problem;
+      const h = a.scallopHeightMm;
+      const c = compareDoublyCurved({ ...p, scallopHeightMm: h });
+      const extras: Extras = {
+        roughness: doublyCurvedRoughness(doublyCurvedSolver(p, p), p.pattern, c.exact),
+        ...(a.targetRaMm === undefined ? {} : { targetRaMm: a.targetRaMm }),
+      };
+      if (json) writeJson(out, doublyCurvedForwardJson(p, h, c, extras), unit);
+      else out.write(`${doublyCurvedForwardTable(p, h, c, extras, unit)}\n`);
+      return 0;
+    }
+  }
 }
 
-/** --ra: the scallop height that leaves the target Ra, then the forward answer for it. */
-function targetRa(values: Values, wanted: Wanted, io: Io, out: Output, as?: RadiusOption): number {
-  const v = validateTargetRa({ ...passValues(values), ra: values[FIELDS.ra.cli] });
-  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, null, as);
-  const p = v.value;
-  const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);
-  return writeForward(forwardInput(p, p.pattern, h, p.surface), wanted, out, p.targetRaMm);
-}
-
-/** The step-over as validation reads it: --interval, or 2 (L/2) from --half-interval. */
-function intervalOf(values: Values, half: boolean): unknown {
-  const typedHalf = values[FIELDS.halfInterval.cli];
-  if (!half || typedHalf === undefined) return values[FIELDS.interval.cli];
-  // L = 2 (L/2) exactly; validation messages quote L/2 as typed.
-  // An L/2 so large that 2 (L/2) overflows is beyond any tool: the largest double stands for it.
-  const text = typedHalf.trim();
-  const doubled = 2 * Number(text);
-  if (!isNumberText(text)) return typedHalf;
-  return Number.isFinite(doubled) ? doubled : Math.sign(doubled) * Number.MAX_VALUE;
-}
-
-function inverse(values: Values, wanted: Wanted, half: boolean, io: Io, out: Output, as?: RadiusOption): number {
-  const typedHalf = values[FIELDS.halfInterval.cli];
-  const v = validateInverse({ ...passValues(values), interval: intervalOf(values, half) });
-  if (!v.ok) return reportErrors(io, out, v.errors, wanted.json, half ? { typed: typedHalf ?? '' } : null, as);
-  const input = v.value;
-  const c = compareInverse(input);
-  const extras: Extras = {
-    roughness: exactRoughnessAtInterval(input, input.pattern, c.exact, input.surface),
-    ...(wanted.simulate ? { simulation: simulate(input, input.intervalMm) } : {}),
-  };
-  out.write(wanted.json ? `${JSON.stringify(inverseJson(c, extras))}\n` : `${inverseTable(c, extras)}\n`);
-  return 0;
+/** A question of a tool on a plane, a cylinder or a doubly curved point: --h, --ra or the step-over. */
+function question(request: Request & { kind: 'forward' | 'ra' | 'inverse' }, io: Io, out: Output): number {
+  const unit = unitOfText(request.values.unit) ?? 'mm';
+  const quantity: Quantity = request.kind === 'forward' ? 'h' : request.kind === 'ra' ? 'ra' : 'interval';
+  const q = { values: valuesInMm(request.values, unit), quantity, half: request.kind === 'inverse' && request.half };
+  const a = answer(q);
+  // args.ts refuses a cylinder beside the principal radii before a question is asked.
+  if (a === null) throw new Error(SURFACE_TWICE);
+  if (!a.ok) return reportErrors(io, out, wordErrors(a, q, unit, request.values), request.json, unit);
+  return writeAnswer(a, request, out, unit);
 }
 
 /** A three-axis input error as a stderr line (and JSON): named by its option, the registry's. */
-function reportThreeAxisErrors(io: Io, out: Output, errors: readonly ThreeAxisInputError[], json: boolean): number {
+function reportThreeAxisErrors(
+  io: Io,
+  out: Output,
+  errors: readonly ThreeAxisInputError[],
+  passes: string,
+  json: boolean,
+  unit: LengthUnit,
+  typed: Values,
+): number {
   const worded = errors.map((e) => {
     const option = cliFlag(e.field);
-    const message = escapeControls(e.message);
-    io.stderr.write(errorLine(`${option}: ${e.message}`));
+    const words = threeAxisMessage(e, passes, unit, typed);
+    const message = escapeControls(words);
+    io.stderr.write(errorLine(`${option}: ${words}`));
     return {
       field: e.field,
       option,
       code: e.code,
-      got: escapeControls(String(e.got)),
+      // The value as typed (before its unit was read), else as the solver took it.
+      got: escapeControls(cut(typed[cliFlag(e.field).slice(2) as ValueOption]?.trim() ?? String(e.got))),
       ...(e.limit === null ? {} : { limit: e.limit }),
       message,
     };
   });
-  if (json) out.write(`${JSON.stringify({ errors: worded })}\n`);
+  if (json) writeJson(out, unit === 'mm' ? { errors: worded } : { unit: 'mm', errors: worded }, unit);
   return 2;
 }
 
 /** --slope: three-axis machining, forward (--h) or the cusp a step leaves. */
 function threeAxis(values: Values, quantity: ThreeAxisQuantity, json: boolean, io: Io, out: Output): number {
-  const raw = Object.fromEntries(
-    (['R', 'Rcr', 'slope', 'passes', 'rasterAngle', 'feedRadius', 'crossRadius'] as const).map((id) => [
-      id,
-      values[FIELDS[id].cli],
-    ]),
-  );
-  const v = validateThreeAxis(raw, quantity, values[FIELDS[quantity].cli]);
-  if (!v.ok) return reportThreeAxisErrors(io, out, v.errors, json);
-  const r = solveThreeAxis(v.value);
-  if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, json);
-  out.write(json ? `${JSON.stringify(threeAxisJson(v.value, r.value))}\n` : `${threeAxisTable(v.value, r.value)}\n`);
-  return 0;
-}
-
-/** A principal radius's field, when one alone stands for a cylinder. */
-type RadiusOption = 'feedRadius' | 'crossRadius';
-
-/**
- * The surface the options give: the principal radii (--feed-radius, --cross-radius) both given are
- * a doubly curved point; one alone is the cylinder it is (--cross-radius Rs is --surface-radius Rs
- * --surface-axis feed, --feed-radius Rs is the axis across), answered by the cylinder's own path
- * (the same digits); neither leaves the options as they are (args.ts refuses the two forms mixed).
- */
-function surfaceForm(
-  values: Values,
-): { readonly kind: 'doubly' } | { readonly kind: 'pass'; readonly values: Values; readonly as?: RadiusOption } {
-  const rf = values[FIELDS.feedRadius.cli];
-  const rc = values[FIELDS.crossRadius.cli];
-  if (rf !== undefined && rc !== undefined) return { kind: 'doubly' };
-  if (rf === undefined && rc === undefined) return { kind: 'pass', values };
-  const rest: Partial<Record<ValueOption, string>> = { ...values };
-  delete rest[FIELDS.feedRadius.cli];
-  delete rest[FIELDS.crossRadius.cli];
-  rest[FIELDS.surfaceRadius.cli] = rf ?? rc;
-  rest[FIELDS.surfaceAxis.cli] = rf === undefined ? 'feed' : 'cross';
-  return { kind: 'pass', values: rest, as: rf === undefined ? 'crossRadius' : 'feedRadius' };
-}
-
-/** A doubly curved point (both principal radii): forward, target Ra or inverse. */
-function doublyCurved(request: Request & { kind: 'forward' | 'ra' | 'inverse' }, io: Io, out: Output): number {
-  const values = request.values;
-  const half = request.kind === 'inverse' ? request.half : false;
-  const quantity: DoublyCurvedQuantity = request.kind === 'forward' ? 'h' : request.kind === 'ra' ? 'ra' : 'interval';
-  const raw = Object.fromEntries(
-    (['R', 'Rcr', 'rho', 'tilt', 'pattern', 'feedRadius', 'crossRadius'] as const).map((id) => [
-      id,
-      values[FIELDS[id].cli],
-    ]),
-  );
-  const given = quantity === 'interval' ? intervalOf(values, half) : values[FIELDS[quantity].cli];
-  const v = validateDoublyCurved(raw as { R: unknown; Rcr: unknown; rho: unknown }, quantity, given);
-  if (!v.ok) {
-    const typedHalf = values[FIELDS.halfInterval.cli];
-    return reportErrors(io, out, v.errors, request.json, half ? { typed: typedHalf ?? '' } : null);
-  }
-  const p = v.value;
-  const solver = doublyCurvedSolver(p, p);
-  if (quantity === 'interval') {
-    const e = doublyCurvedInverse({ ...p, intervalMm: p.valueMm });
-    const r = doublyCurvedRoughnessAtInterval(solver, p.pattern, e);
-    out.write(
-      request.json ? `${JSON.stringify(doublyCurvedInverseJson(p, e, r))}\n` : `${doublyCurvedInverseTable(p, e, r)}\n`,
-    );
-    return 0;
-  }
-  const h = quantity === 'ra' ? doublyCurvedHeightForRaMm(p, p.pattern, p, p.valueMm) : p.valueMm;
-  const c = compareDoublyCurved({ ...p, scallopHeightMm: h });
-  const extras: Extras = {
-    roughness: doublyCurvedRoughness(solver, p.pattern, c.exact),
-    ...(quantity === 'ra' ? { targetRaMm: p.valueMm } : {}),
-  };
-  out.write(
-    request.json
-      ? `${JSON.stringify(doublyCurvedForwardJson(p, h, c, extras))}\n`
-      : `${doublyCurvedForwardTable(p, h, c, extras)}\n`,
-  );
+  const unit = unitOfText(values.unit) ?? 'mm';
+  const r = answerThreeAxis(valuesInMm(values, unit), quantity);
+  if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, r.passes, json, unit, values);
+  const { problem, answer: a } = r;
+  if (json) writeJson(out, threeAxisJson(problem, a), unit);
+  else out.write(`${threeAxisTable(problem, a, unit)}\n`);
   return 0;
 }
 
@@ -319,27 +256,21 @@ async function run(request: Request, io: Io, out: Output): Promise<number> {
       io.stderr.write(errorLine(`${request.error} (see path-interval --help)`));
       return 2;
     case 'batch':
-      return runBatch(io, out);
+      return runBatch(io, out, unitOfText(request.values.unit) ?? 'mm');
     case 'forward':
     case 'ra':
-    case 'inverse': {
-      const form = surfaceForm(request.values);
-      if (form.kind === 'doubly') return doublyCurved(request, io, out);
-      if (request.kind === 'forward') return forward(form.values, request, io, out, form.as);
-      if (request.kind === 'ra') return targetRa(form.values, request, io, out, form.as);
-      return inverse(form.values, request, request.kind === 'inverse' && request.half, io, out, form.as);
-    }
+    case 'inverse':
+      return question(request, io, out);
     case 'threeAxis':
       return threeAxis(request.values, request.quantity, request.json, io, out);
     case 'slopeSweep': {
-      const r = sweepSlopes(request.values);
-      if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, request.json);
+      const unit = unitOfText(request.values.unit) ?? 'mm';
+      const r = sweepSlopes(valuesInMm(request.values, unit));
+      const passes = request.values.passes?.trim() || 'raster';
+      if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, passes, request.json, unit, request.values);
       const step = { typed: r.typed };
-      out.write(
-        request.json
-          ? `${JSON.stringify(slopeSweepJson(r.input, r.sweep, step))}\n`
-          : `${slopeSweepTable(r.input, r.sweep, step)}\n`,
-      );
+      if (request.json) writeJson(out, slopeSweepJson(r.input, r.sweep, step), unit);
+      else out.write(`${slopeSweepTable(r.input, r.sweep, step, unit)}\n`);
       return 0;
     }
   }

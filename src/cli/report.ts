@@ -18,8 +18,12 @@ import {
   PROCEDURES,
   type Surface,
 } from '../core/index';
+import type { LengthUnit } from '../core/input/units';
 import { type Extras, indent, KEY_VALUE, roughnessLines, simulationLines } from './reportExtras';
-import { type Column, deviation, echo, length, NONE, percent, renderTable } from './table';
+import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
+
+/** The table's lengths in mm. */
+const MM = lengthsIn('mm');
 
 /** The extras (reportExtras.ts) and the JSON (reportJson.ts), re-exported for the callers. */
 export { type Extras, roughnessLines, ruleOfThumb, type SimulationRun } from './reportExtras';
@@ -48,21 +52,21 @@ function toolKind(input: PassInput): string {
 }
 
 /** The design surface in words: `plane`, or the cylinder with its signed radius and axis. */
-export function surfaceText(surface: Surface): string {
+export function surfaceText(surface: Surface, L: Lengths = MM): string {
   if (surface.kind === 'plane') return 'on a plane';
   const kind = surface.radiusMm > 0 ? 'convex' : 'concave';
   const axis =
     surface.axis === 'feed'
       ? 'axis along the feed (passes run along it)'
       : 'axis across the feed (passes go around it)';
-  return `on a ${kind} cylinder Rs = ${echo(surface.radiusMm)} mm, ${axis}`;
+  return `on a ${kind} cylinder Rs = ${L.echo(surface.radiusMm)} ${L.u}, ${axis}`;
 }
 
-function caseLine(input: PassInput): string {
+function caseLine(input: PassInput, L: Lengths): string {
   return (
-    `${toolKind(input)} R = ${echo(input.toolRadiusMm)} mm, Rcr = ${echo(input.cornerRadiusMm)} mm; ` +
+    `${toolKind(input)} R = ${L.echo(input.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(input.cornerRadiusMm)} ${L.u}; ` +
     `lead rho = ${echo(input.leadAngleDeg)} deg, tilt beta = ${echo(input.tiltAngleDeg)} deg; ${input.pattern} passes ` +
-    surfaceText(input.surface)
+    surfaceText(input.surface, L)
   );
 }
 
@@ -81,50 +85,51 @@ class Notes {
 }
 
 /** A row of the forward table: a step-over beside the exact one (or n/a with its reason as a note). */
-function forwardRow(label: string, r: ForwardEstimate<unknown>, warningBy: string, notes: Notes): string[] {
+function forwardRow(label: string, r: ForwardEstimate<unknown>, warningBy: string, notes: Notes, L: Lengths): string[] {
   if (!r.ok) return [label, 'n/a', 'n/a', NONE, NONE, NONE, notes.add(r.notApplicable)];
   const marker = r.warning === null ? '' : notes.add(`${warningBy}: ${r.warning}`);
   return [
     label,
-    length(r.intervalMm),
-    length(r.halfIntervalMm),
-    deviation(r.deviationMm),
+    L.length(r.intervalMm),
+    L.length(r.halfIntervalMm),
+    L.deviation(r.deviationMm),
     percent(r.deviationPercent),
-    r.realScallopMm === null ? 'wall' : length(r.realScallopMm),
+    r.realScallopMm === null ? 'wall' : L.length(r.realScallopMm),
     marker,
   ];
 }
 
 /** A row of the inverse table: a scallop height beside the exact one (or n/a with its reason as a note). */
-function inverseRow(label: string, r: InverseEstimate, notes: Notes): string[] {
+function inverseRow(label: string, r: InverseEstimate, notes: Notes, L: Lengths): string[] {
   if (!r.ok) return [label, 'n/a', NONE, NONE, notes.add(r.notApplicable)];
-  return [label, length(r.scallopHeightMm), deviation(r.deviationMm), percent(r.deviationPercent)];
+  return [label, L.length(r.scallopHeightMm), L.deviation(r.deviationMm), percent(r.deviationPercent)];
 }
 
 /** The forward answer (scallop height to step-over) as a table, with the extras that were computed. */
-export function forwardTable(c: ForwardComparison, extras: Extras = {}): string {
+export function forwardTable(c: ForwardComparison, extras: Extras = {}, unit: LengthUnit = 'mm'): string {
+  const L = lengthsIn(unit);
   const { input, exact } = c;
   const zigzag = input.pattern === 'zigzag';
   const target =
     extras.targetRaMm === undefined
-      ? `Scallop height h = ${echo(input.scallopHeightMm)} mm`
-      : `Target roughness Ra = ${echo(extras.targetRaMm)} mm: scallop height h = ${length(input.scallopHeightMm)} mm`;
-  const out = [caseLine(input), target, ''];
+      ? `Scallop height h = ${L.echo(input.scallopHeightMm)} ${L.u}`
+      : `Target roughness Ra = ${L.echo(extras.targetRaMm)} ${L.u}: scallop height h = ${L.length(input.scallopHeightMm)} ${L.u}`;
+  const out = [caseLine(input, L), target, ''];
   const facts: string[][] = [
-    ['L', length(exact.intervalMm), 'mm', 'step-over: between adjacent cutter-contact (CC) paths'],
-    ['L/2', length(exact.halfIntervalMm), 'mm', 'half step-over'],
-    ['wR', length(exact.halfWidthRightMm), 'mm', 'right flank (+Y) from the contact, at the cusp'],
-    ['wL', length(exact.halfWidthLeftMm), 'mm', 'left flank (-Y) from the contact, at the cusp'],
+    ['L', L.length(exact.intervalMm), L.u, 'step-over: between adjacent cutter-contact (CC) paths'],
+    ['L/2', L.length(exact.halfIntervalMm), L.u, 'half step-over'],
+    ['wR', L.length(exact.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at the cusp'],
+    ['wL', L.length(exact.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at the cusp'],
     [
       'y0',
-      length(exact.contactOffsetMm),
-      'mm',
+      L.length(exact.contactOffsetMm),
+      L.u,
       'contact offset: the tool centre point runs -y0 (in Y) from its CC path',
     ],
-    ['h', length(exact.cuspHeightMm), 'mm', zigzag ? 'highest cusp (between the narrower flanks)' : 'cusp height'],
+    ['h', L.length(exact.cuspHeightMm), L.u, zigzag ? 'highest cusp (between the narrower flanks)' : 'cusp height'],
   ];
   if (exact.otherCuspHeightMm !== null) {
-    facts.push(['h2', length(exact.otherCuspHeightMm), 'mm', 'other cusp (between the wider flanks), zigzag']);
+    facts.push(['h2', L.length(exact.otherCuspHeightMm), L.u, 'other cusp (between the wider flanks), zigzag']);
   }
   out.push(`${PROCEDURES.exact.label}:`, ...indent(renderTable(KEY_VALUE, facts, false)));
   if (exact.noScallop) {
@@ -137,33 +142,33 @@ export function forwardTable(c: ForwardComparison, extras: Extras = {}): string 
   const notes = new Notes();
   const columns: Column[] = [
     { header: 'procedure', align: 'left' },
-    { header: 'L [mm]', align: 'right' },
-    { header: 'L/2 [mm]', align: 'right' },
-    { header: 'dev L [mm]', align: 'right' },
+    { header: `L [${L.u}]`, align: 'right' },
+    { header: `L/2 [${L.u}]`, align: 'right' },
+    { header: `dev L [${L.u}]`, align: 'right' },
     { header: 'dev [%]', align: 'right' },
-    { header: 'real h [mm]', align: 'right' },
+    { header: `real h [${L.u}]`, align: 'right' },
     { header: 'note', align: 'left' },
   ];
   const rows: string[][] = [
     [
       PROCEDURES.exact.label,
-      length(exact.intervalMm),
-      length(exact.halfIntervalMm),
+      L.length(exact.intervalMm),
+      L.length(exact.halfIntervalMm),
       NONE,
       NONE,
-      length(exact.cuspHeightMm),
+      L.length(exact.cuspHeightMm),
     ],
   ];
   for (const key of APPROXIMATION_KEYS) {
     const label = forwardLabel(key, input.tiltAngleDeg);
-    rows.push(forwardRow(label, c.approximations[key], PROCEDURES[key].shortLabel, notes));
+    rows.push(forwardRow(label, c.approximations[key], PROCEDURES[key].shortLabel, notes, L));
   }
   out.push(...renderTable(columns, rows));
   if (c.curvature !== null) {
     const k = c.curvature;
-    const curved: string[][] = [forwardRow(curvatureLabel('plane'), k.plane, 'Plane', notes)];
+    const curved: string[][] = [forwardRow(curvatureLabel('plane'), k.plane, 'Plane', notes, L)];
     for (const key of CORRECTED_KEYS) {
-      curved.push(forwardRow(curvatureLabel(key), k.corrected[key], PROCEDURES[key].shortLabel, notes));
+      curved.push(forwardRow(curvatureLabel(key), k.corrected[key], PROCEDURES[key].shortLabel, notes, L));
     }
     out.push('', 'On the cylinder: the plane answer and the usual curvature corrections, beside the exact one:');
     out.push(...renderTable(columns, curved));
@@ -172,37 +177,38 @@ export function forwardTable(c: ForwardComparison, extras: Extras = {}): string 
   if (c.curvature !== null) {
     out.push('Above the cylinder rows: the approximations as on a plane (they ignore the curvature).');
   }
-  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exact.cuspHeightMm));
+  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exact.cuspHeightMm, L));
   if (extras.simulation !== undefined) {
-    out.push('', ...simulationLines(extras.simulation, exact.cuspHeightMm, extras.roughness));
+    out.push('', ...simulationLines(extras.simulation, exact.cuspHeightMm, extras.roughness, L));
   }
   if (notes.lines.length > 0) out.push('', ...notes.lines);
   return out.join('\n');
 }
 
 /** The inverse answer (step-over to scallop height) as a table, with the extras that were computed. */
-export function inverseTable(c: InverseComparison, extras: Extras = {}): string {
+export function inverseTable(c: InverseComparison, extras: Extras = {}, unit: LengthUnit = 'mm'): string {
+  const L = lengthsIn(unit);
   const { input, exact } = c;
   const zigzag = input.pattern === 'zigzag';
   const out = [
-    caseLine(input),
-    `Step-over L = ${echo(input.intervalMm)} mm (L/2 = ${echo(input.intervalMm / 2)} mm) between cutter-contact paths`,
+    caseLine(input, L),
+    `Step-over L = ${L.echo(input.intervalMm)} ${L.u} (L/2 = ${L.echo(input.intervalMm / 2)} ${L.u}) between cutter-contact paths`,
     '',
   ];
-  const facts: string[][] = [['h', length(exact.cuspHeightMm), 'mm', 'scallop height (the highest cusp)']];
+  const facts: string[][] = [['h', L.length(exact.cuspHeightMm), L.u, 'scallop height (the highest cusp)']];
   if (zigzag) {
     facts.push(
-      ['hR', length(exact.rightCuspHeightMm), 'mm', 'cusp between right flanks (wR = L/2)'],
-      ['hL', length(exact.leftCuspHeightMm), 'mm', 'cusp between left flanks (wL = L/2)'],
+      ['hR', L.length(exact.rightCuspHeightMm), L.u, 'cusp between right flanks (wR = L/2)'],
+      ['hL', L.length(exact.leftCuspHeightMm), L.u, 'cusp between left flanks (wL = L/2)'],
     );
   }
   facts.push(
-    ['wR', length(exact.halfWidthRightMm), 'mm', 'right flank (+Y) from the contact, at its cusp'],
-    ['wL', length(exact.halfWidthLeftMm), 'mm', 'left flank (-Y) from the contact, at its cusp'],
+    ['wR', L.length(exact.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at its cusp'],
+    ['wL', L.length(exact.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at its cusp'],
     [
       'y0',
-      length(exact.contactOffsetMm),
-      'mm',
+      L.length(exact.contactOffsetMm),
+      L.u,
       'contact offset: the tool centre point runs -y0 (in Y) from its CC path',
     ],
   );
@@ -215,20 +221,20 @@ export function inverseTable(c: InverseComparison, extras: Extras = {}): string 
   const notes = new Notes();
   const columns: Column[] = [
     { header: 'procedure', align: 'left' },
-    { header: 'h [mm]', align: 'right' },
-    { header: 'dev [mm]', align: 'right' },
+    { header: `h [${L.u}]`, align: 'right' },
+    { header: `dev [${L.u}]`, align: 'right' },
     { header: 'dev [%]', align: 'right' },
     { header: 'note', align: 'left' },
   ];
-  const rows: string[][] = [[PROCEDURES.exact.label, length(exact.cuspHeightMm), NONE, NONE]];
+  const rows: string[][] = [[PROCEDURES.exact.label, L.length(exact.cuspHeightMm), NONE, NONE]];
   for (const key of APPROXIMATION_KEYS) {
-    rows.push(inverseRow(inverseLabel(key, input.tiltAngleDeg), c.approximations[key], notes));
+    rows.push(inverseRow(inverseLabel(key, input.tiltAngleDeg), c.approximations[key], notes, L));
   }
   out.push(...renderTable(columns, rows));
   if (c.curvature !== null) {
     const k = c.curvature;
-    const curved: string[][] = [inverseRow(curvatureLabel('plane'), k.plane, notes)];
-    for (const key of CORRECTED_KEYS) curved.push(inverseRow(curvatureLabel(key), k.corrected[key], notes));
+    const curved: string[][] = [inverseRow(curvatureLabel('plane'), k.plane, notes, L)];
+    for (const key of CORRECTED_KEYS) curved.push(inverseRow(curvatureLabel(key), k.corrected[key], notes, L));
     out.push('', 'On the cylinder: the plane answer and the usual curvature corrections, beside the exact one:');
     out.push(...renderTable(columns, curved));
   }
@@ -236,9 +242,9 @@ export function inverseTable(c: InverseComparison, extras: Extras = {}): string 
   if (c.curvature !== null) {
     out.push('Above the cylinder rows: the approximations as on a plane (they ignore the curvature).');
   }
-  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exact.cuspHeightMm));
+  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exact.cuspHeightMm, L));
   if (extras.simulation !== undefined) {
-    out.push('', ...simulationLines(extras.simulation, exact.cuspHeightMm, extras.roughness));
+    out.push('', ...simulationLines(extras.simulation, exact.cuspHeightMm, extras.roughness, L));
   }
   if (notes.lines.length > 0) out.push('', ...notes.lines);
   return out.join('\n');

@@ -3,7 +3,7 @@
  * and the simulation block with its stated bounds. Lengths mm.
  */
 import { type Roughness, raRuleOfThumbMm, type SimulationResult } from '../core/index';
-import { type Column, deviation, length, percent, renderTable } from './table';
+import { type Column, type Lengths, lengthsIn, percent, renderTable } from './table';
 
 /** A simulation of the passes and its wall-clock time, or why it was not run. */
 export type SimulationRun =
@@ -30,17 +30,17 @@ export function ruleOfThumb(
 }
 
 /** Lines of the roughness block (exact Rz, Ra, Rq and the rule of thumb). */
-export function roughnessLines(r: Roughness, scallopHeightMm: number): string[] {
+export function roughnessLines(r: Roughness, scallopHeightMm: number, L: Lengths = lengthsIn('mm')): string[] {
   const thumb = ruleOfThumb(scallopHeightMm, r.raMm);
   const off =
     thumb.deviationPercent === null
-      ? `${deviation(thumb.deviationMm)} mm off`
-      : `${deviation(thumb.deviationMm)} mm (${percent(thumb.deviationPercent)} %) off the exact Ra`;
+      ? `${L.deviation(thumb.deviationMm)} ${L.u} off`
+      : `${L.deviation(thumb.deviationMm)} ${L.u} (${percent(thumb.deviationPercent)} %) off the exact Ra`;
   const facts: string[][] = [
-    ['Rz', length(r.rzMm), 'mm', 'highest peak minus deepest valley'],
-    ['Ra', length(r.raMm), 'mm', 'mean absolute deviation from the mean line'],
-    ['Rq', length(r.rqMm), 'mm', 'root mean square deviation from the mean line'],
-    ['h/4', length(thumb.raMm), 'mm', `rule of thumb Ra ~ h/4: ${off}`],
+    ['Rz', L.length(r.rzMm), L.u, 'highest peak minus deepest valley'],
+    ['Ra', L.length(r.raMm), L.u, 'mean absolute deviation from the mean line'],
+    ['Rq', L.length(r.rqMm), L.u, 'root mean square deviation from the mean line'],
+    ['h/4', L.length(thumb.raMm), L.u, `rule of thumb Ra ~ h/4: ${off}`],
   ];
   return [
     'Roughness across the feed (exact, ISO 4287 over one period of the passes):',
@@ -49,35 +49,40 @@ export function roughnessLines(r: Roughness, scallopHeightMm: number): string[] 
 }
 
 /** Lines of the simulation block: the simulated values beside the exact ones, with the stated bounds. */
-export function simulationLines(sim: SimulationRun, exactCuspMm: number, exact: Roughness | undefined): string[] {
+export function simulationLines(
+  sim: SimulationRun,
+  exactCuspMm: number,
+  exact: Roughness | undefined,
+  L: Lengths = lengthsIn('mm'),
+): string[] {
   if (!sim.ok) return [`Simulation of the passes: ${sim.notApplicable}.`];
   const s = sim.result;
   const vs = (simulated: number, exactMm: number | undefined) =>
-    exactMm === undefined ? '' : `; exact minus simulated ${deviation(exactMm - simulated)} mm`;
+    exactMm === undefined ? '' : `; exact minus simulated ${L.deviation(exactMm - simulated)} ${L.u}`;
   const facts: string[][] = [
     [
       'h',
-      length(s.cuspHeightMm),
-      'mm',
-      `highest cusp, within ${length(s.resolutionBoundMm)} mm${vs(s.cuspHeightMm, exactCuspMm)}`,
+      L.length(s.cuspHeightMm),
+      L.u,
+      `highest cusp, within ${L.length(s.resolutionBoundMm)} ${L.u}${vs(s.cuspHeightMm, exactCuspMm)}`,
     ],
     [
       'Rz',
-      length(s.roughness.rzMm),
-      'mm',
-      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.rzMm, exact?.rzMm)}`,
+      L.length(s.roughness.rzMm),
+      L.u,
+      `within ${L.length(s.roughnessBoundMm)} ${L.u}${vs(s.roughness.rzMm, exact?.rzMm)}`,
     ],
     [
       'Ra',
-      length(s.roughness.raMm),
-      'mm',
-      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.raMm, exact?.raMm)}`,
+      L.length(s.roughness.raMm),
+      L.u,
+      `within ${L.length(s.roughnessBoundMm)} ${L.u}${vs(s.roughness.raMm, exact?.raMm)}`,
     ],
     [
       'Rq',
-      length(s.roughness.rqMm),
-      'mm',
-      `within ${length(s.roughnessBoundMm)} mm${vs(s.roughness.rqMm, exact?.rqMm)}`,
+      L.length(s.roughness.rqMm),
+      L.u,
+      `within ${L.length(s.roughnessBoundMm)} ${L.u}${vs(s.roughness.rqMm, exact?.rqMm)}`,
     ],
   ];
   return [

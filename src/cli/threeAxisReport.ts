@@ -4,10 +4,12 @@
  * dz for waterline), then L along the surface and the equivalent lead and tilt at the CC point.
  * Pure; lengths mm, angles degrees.
  */
+
+import type { LengthUnit } from '../core/input/units';
 import type { SlopeSweep, SlopeSweepInput } from '../core/threeAxis/slopeSweep';
 import type { ThreeAxisAnswer, ThreeAxisProblem, ThreeAxisQuantity } from '../core/threeAxis/validate';
 import type { JsonValue } from './report';
-import { type Column, echo, length, renderTable } from './table';
+import { type Column, echo, type Lengths, length, lengthsIn, renderTable } from './table';
 
 type JsonObject = { [key: string]: JsonValue };
 
@@ -29,9 +31,9 @@ function toolKind(p: ThreeAxisProblem): string {
 }
 
 /** The case in words: the tool, upright; the surface and the passes. */
-function caseLine(p: ThreeAxisProblem): string {
+function caseLine(p: ThreeAxisProblem, L: Lengths): string {
   const c = p.case;
-  const tool = `${toolKind(p)} R = ${echo(c.toolRadiusMm)} mm, Rcr = ${echo(c.cornerRadiusMm)} mm, upright (three-axis)`;
+  const tool = `${toolKind(p)} R = ${L.echo(c.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(c.cornerRadiusMm)} ${L.u}, upright (three-axis)`;
   if (p.surface === 'plane') {
     const passes =
       p.case.passes === 'raster'
@@ -39,7 +41,7 @@ function caseLine(p: ThreeAxisProblem): string {
         : 'waterline passes (along the contour)';
     return `${tool}; plane of slope alpha = ${echo(c.slopeDeg)} deg; ${passes}`;
   }
-  const radius = (r: number | null) => (r === null ? 'straight' : `${echo(r)} mm`);
+  const radius = (r: number | null) => (r === null ? 'straight' : `${L.echo(r)} ${L.u}`);
   return (
     `${tool}; surface of revolution about a vertical axis at slope alpha = ${echo(c.slopeDeg)} deg, ` +
     `feed radius Rf ${radius(p.case.feedRadiusMm)}, cross radius Rc ${radius(p.case.crossRadiusMm)}; waterline passes`
@@ -55,12 +57,13 @@ const GIVEN: Readonly<Record<ThreeAxisQuantity, string>> = {
 };
 
 /** The three-axis answer as a table: the programmed step first, then L, lead and tilt, and h. */
-export function threeAxisTable(p: ThreeAxisProblem, a: ThreeAxisAnswer): string {
+export function threeAxisTable(p: ThreeAxisProblem, a: ThreeAxisAnswer, unit: LengthUnit = 'mm'): string {
+  const L = lengthsIn(unit);
   const facts: string[][] = [];
   const lxy = [
     'Lxy',
-    length(a.horizontalStepMm),
-    'mm',
+    L.length(a.horizontalStepMm),
+    L.u,
     p.surface === 'plane'
       ? 'horizontal step: between the vertical planes of adjacent passes'
       : 'horizontal step: between the tool axes of adjacent levels',
@@ -69,20 +72,20 @@ export function threeAxisTable(p: ThreeAxisProblem, a: ThreeAxisAnswer): string 
   else
     facts.push([
       'dz',
-      length(a.stepDownMm ?? 0),
-      'mm',
+      L.length(a.stepDownMm ?? 0),
+      L.u,
       'step-down between levels, tool tip to tool tip (as programmed)',
     ]);
-  facts.push(['L', length(a.intervalMm), 'mm', 'step-over along the surface: between adjacent cutter-contact paths']);
+  facts.push(['L', L.length(a.intervalMm), L.u, 'step-over along the surface: between adjacent cutter-contact paths']);
   if (a.passes === 'waterline') facts.push(lxy);
   facts.push(
     ['lead', angle(a.leadDeg), 'deg', 'equivalent lead rho at the CC point'],
     ['tilt', angle(a.tiltDeg), 'deg', 'equivalent tilt beta at the CC point (+: the shank leans uphill)'],
-    ['h', length(a.cuspHeightMm), 'mm', 'cusp height, along the surface normal'],
+    ['h', L.length(a.cuspHeightMm), L.u, 'cusp height, along the surface normal'],
   );
   const out = [
-    caseLine(p),
-    `${GIVEN[p.quantity]} = ${echo(p.mm)} mm`,
+    caseLine(p, L),
+    `${GIVEN[p.quantity]} = ${L.echo(p.mm)} ${L.u}`,
     '',
     'Three-axis, exact:',
     ...renderTable(KEY_VALUE, facts, false).map((l) => `  ${l}`),
@@ -123,16 +126,16 @@ export interface SweepStep {
   readonly typed: boolean;
 }
 
-function sweepCaseLine(i: SlopeSweepInput): string {
+function sweepCaseLine(i: SlopeSweepInput, L: Lengths): string {
   const kind =
     i.cornerRadiusMm === i.toolRadiusMm
       ? 'Ball end mill'
       : i.cornerRadiusMm === 0
         ? 'Flat end mill'
         : 'Filleted end mill';
-  const tool = `${kind} R = ${echo(i.toolRadiusMm)} mm, Rcr = ${echo(i.cornerRadiusMm)} mm, upright (three-axis)`;
+  const tool = `${kind} R = ${L.echo(i.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(i.cornerRadiusMm)} ${L.u}, upright (three-axis)`;
   if (i.passes === 'raster') return `${tool}; raster passes at psi = ${echo(i.rasterAngleDeg)} deg to the fall line`;
-  const radius = (r: number | null | undefined) => (r === null || r === undefined ? 'straight' : `${echo(r)} mm`);
+  const radius = (r: number | null | undefined) => (r === null || r === undefined ? 'straight' : `${L.echo(r)} ${L.u}`);
   const surface =
     (i.feedRadiusMm ?? null) === null && (i.crossRadiusMm ?? null) === null
       ? 'a plane'
@@ -141,29 +144,30 @@ function sweepCaseLine(i: SlopeSweepInput): string {
 }
 
 /** The slope sweep as a table: for each slope the step for h, L, the posture, the limit and the constant step's cusp. */
-export function slopeSweepTable(i: SlopeSweepInput, s: SlopeSweep, step: SweepStep): string {
+export function slopeSweepTable(i: SlopeSweepInput, s: SlopeSweep, step: SweepStep, unit: LengthUnit = 'mm'): string {
+  const L = lengthsIn(unit);
   const raster = i.passes === 'raster';
   const name = raster ? 'Lxy' : 'dz';
   const constant = step.typed
-    ? `the typed ${raster ? 'horizontal step' : 'step-down'} ${name} = ${echo(s.programmedStepMm)} mm`
-    : `the flat floor's step-over for h, ${name} = ${length(s.programmedStepMm)} mm`;
+    ? `the typed ${raster ? 'horizontal step' : 'step-down'} ${name} = ${L.echo(s.programmedStepMm)} ${L.u}`
+    : `the flat floor's step-over for h, ${name} = ${L.length(s.programmedStepMm)} ${L.u}`;
   const columns: Column[] = [
     { header: 'slope [deg]', align: 'right' },
-    { header: `${name} for h [mm]`, align: 'right' },
-    { header: 'L [mm]', align: 'right' },
+    { header: `${name} for h [${L.u}]`, align: 'right' },
+    { header: `L [${L.u}]`, align: 'right' },
     { header: 'lead [deg]', align: 'right' },
     { header: 'tilt [deg]', align: 'right' },
-    { header: 'h limit [mm]', align: 'right' },
-    { header: `h at ${name} = const [mm]`, align: 'right' },
+    { header: `h limit [${L.u}]`, align: 'right' },
+    { header: `h at ${name} = const [${L.u}]`, align: 'right' },
   ];
   const rows = s.points.map((p) => [
     angle(p.slopeDeg),
-    p.stepMm === null ? '-' : length(p.stepMm),
-    p.intervalMm === null ? '-' : length(p.intervalMm),
+    p.stepMm === null ? '-' : L.length(p.stepMm),
+    p.intervalMm === null ? '-' : L.length(p.intervalMm),
     angle(p.leadDeg),
     angle(p.tiltDeg),
-    Number.isFinite(p.heightLimitMm) ? length(p.heightLimitMm) : 'none',
-    p.cuspAtProgrammedStepMm !== null ? length(p.cuspAtProgrammedStepMm) : (p.programmedStepRefusal ?? '-'),
+    Number.isFinite(p.heightLimitMm) ? L.length(p.heightLimitMm) : 'none',
+    p.cuspAtProgrammedStepMm !== null ? L.length(p.cuspAtProgrammedStepMm) : (p.programmedStepRefusal ?? '-'),
   ]);
   const largest =
     s.largestSlopeDeg === 90
@@ -172,8 +176,8 @@ export function slopeSweepTable(i: SlopeSweepInput, s: SlopeSweep, step: SweepSt
         ? 'h is valid up to a vertical wall (90 deg, where the side cuts it flat)'
         : `the largest slope where h is valid: ${angle(s.largestSlopeDeg)} deg`;
   return [
-    sweepCaseLine(i),
-    `Scallop height h = ${echo(i.hMm)} mm; ${largest}`,
+    sweepCaseLine(i, L),
+    `Scallop height h = ${L.echo(i.hMm)} ${L.u}; ${largest}`,
     `Constant programmed step: ${constant}`,
     '',
     ...renderTable(columns, rows),

@@ -12,7 +12,7 @@ export const USAGE = `Usage: path-interval --R <mm> --Rcr <mm> --rho <deg> [opti
        path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --horizontal-step <mm> [--json]
        path-interval --R <mm> --Rcr <mm> --slope <deg> --passes waterline [...] --step-down <mm> [--json]
        path-interval --R <mm> --Rcr <mm> --h <mm> --slope-sweep [three-axis options] [--json]
-       path-interval --batch < cases.csv > table.csv
+       path-interval --batch [--unit mm|inch] < cases.csv > table.csv
 
 Step-over (path interval L, between adjacent cutter-contact paths) of a filleted (bull-nose)
 end mill for a scallop height h or a roughness Ra, exact for any tool posture on a plane or a
@@ -21,6 +21,7 @@ Kameya 2022; lead-only models), the osculating circle at the contact and the bal
 radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
 
   --R <mm>              tool radius (0.001 to 1000)
+  --D <mm>              instead of --R: the tool diameter D = 2R
   --Rcr <mm>            corner radius (0 <= Rcr <= R; Rcr = R is a ball end)
   --rho <deg>           lead angle, along the feed (0 <= rho < 90)
   --tilt <deg>          tilt angle, across the feed; + leans the shank to +Y (-90 < tilt < 90; default 0)
@@ -44,6 +45,10 @@ radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
   --simulate            also simulate the passes (the tool solid over a 512 x 512 height field;
                         a plane only) and show its cusp height and roughness beside the exact ones
   --json                print one JSON object instead of a table
+  --unit <u>            mm (default) or inch: every length in and out in that unit (the table,
+                        JSON and the batch; JSON names it in "unit"). Any length may be typed
+                        as the shop writes it: a fraction and a unit suffix (1/2", .030in, 5um,
+                        1 1/4 in, 0.2 thou, 12.7mm), whatever the unit
 
 Three-axis machining (the tool upright, the surface sloped; then --rho and --tilt are not given):
   --slope <deg>         slope alpha of the surface at the contact (0 to 90; 90 is a vertical wall,
@@ -62,17 +67,22 @@ Three-axis machining (the tool upright, the surface sloped; then --rho and --til
   --slope-sweep         instead of --slope, with --h: Lxy (raster) or dz (waterline) for h at 31 slopes
                         from 0 to the largest valid, and the cusp one constant step leaves at each
                         (the flat floor's step for h, or the typed --horizontal-step / --step-down)
-  --batch               read CSV on stdin (header R,Rcr,rho and h or Ra; optional tilt, pattern,
-                        surfaceRadius, surfaceAxis, or feedRadius, crossRadius; any order; an empty field takes the default;
+  --batch               read CSV on stdin (header R,Rcr,rho and h, Ra or the step-over L;
+                        optional tilt, pattern, surfaceRadius, surfaceAxis, or feedRadius,
+                        crossRadius; any order; an empty field takes the default;
                         output columns are ignored, so an output or a lookup table reads back;
-                        a column may name its unit, R_mm, rho_deg, as the page's mm table does),
+                        a column may name its unit, R_mm, R_in, rho_deg, as the page's tables do;
+                        with --unit inch the lengths of columns that name none are inches),
                         three-axis: a header with slope needs no rho; optional passes,
                         rasterAngle, feedRadius, crossRadius; output interval,horizontalStep,
-                        stepDown,lead,tilt,scallopHeight,note,error),
+                        stepDown,lead,tilt,note,error),
                         write CSV: the input columns, h (with Ra), then
                         exact,sekine,redonnet,bedi (L/2 of each), interval,halfWidthRight,
                         halfWidthLeft,contactOffset,otherCuspHeight (exact), osculating,
-                        cornerBall (L/2), note, error; full precision; blank lines skipped
+                        cornerBall (L/2), note, error; with L (exact): h,rightCuspHeight,
+                        leftCuspHeight,otherCuspHeight,halfWidthRight,halfWidthLeft,
+                        contactOffset,note,error;
+                        full precision; blank lines skipped
   -h, --help            show this text
 
 Table: 7 significant digits. JSON and CSV: every digit of the double.

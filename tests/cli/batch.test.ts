@@ -54,8 +54,8 @@ describe('batch header', () => {
 
   it.each([
     ['R,Rcr,rho,h,exact,exact', /column exact appears twice/],
-    ['R,Rcr,rho', /missing h \(or Ra\)/],
-    ['R,Rcr,rho,h,Ra', /give h or Ra, not both/],
+    ['R,Rcr,rho', /missing h \(or Ra or L\)/],
+    ['R,Rcr,rho,h,Ra', /give one of h, Ra and L, not h and Ra/],
     ['R,Rcr,Ra,surfaceradius', /missing rho; unknown column "surfaceradius"/],
     ['R,Rcr,rho,Ra,surfaceAxis,surfaceAxis', /column surfaceAxis appears twice/],
     ['R,Rcr,rho,h,tlit', /unknown column "tlit"/],
@@ -70,7 +70,9 @@ describe('batch header', () => {
     expect(h.ok).toBe(false);
     if (!h.ok) {
       expect(h.error.startsWith(`${HEADER_RULE} `) || h.error.startsWith(`${HEADER_RULE};`)).toBe(true);
-      expect(h.error).toMatch(/^the CSV header must be R,Rcr,rho,h \(or Ra in place of h\) in any order/);
+      expect(h.error).toMatch(
+        /^the CSV header must be R,Rcr,rho,h \(or Ra, or the step-over L, in place of h\) in any order/,
+      );
       expect(h.error).toMatch(message);
     }
   });

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { forwardJson, forwardTable, inverseJson, inverseTable } from '../../src/cli/report';
-import { deviation, length, percent, renderTable } from '../../src/cli/table';
+import { deviation, echo, length, percent, renderTable } from '../../src/cli/table';
 import {
   compareForward,
   compareInverse,
@@ -78,15 +78,22 @@ describe('table cells', () => {
   it('lengths and deviations: 7 significant digits at any magnitude, never -0', () => {
     expect(length(1.4435924129671018)).toBe('1.443592');
     expect(length(0.000336)).toBe('0.0003360000');
-    expect(length(0.0000336)).toBe('3.360000e-5');
+    // Never exponent notation (issue 26 point 10).
+    expect(length(0.0000336)).toBe('0.00003360000');
+    expect(deviation(-6.713918e-5)).toBe('-0.00006713918');
     expect(length(1234.56789)).toBe('1234.568');
     expect(length(-0)).toBe('0.000000');
-    expect(deviation(-1e-30)).toBe('-1.000000e-30');
+    expect(deviation(-1e-30)).toBe(`-0.${'0'.repeat(29)}1000000`);
     expect(deviation(0)).toBe('0.000000');
     expect(deviation(-0)).toBe('0.000000');
     expect(deviation(2.5)).toBe('+2.500000');
     expect(percent(-0.001)).toBe('0.00');
     expect(percent(null)).toBe('-');
+    // An input echoed as given, but as a plain decimal that reads back to the same double.
+    expect(echo(1e-9)).toBe('0.000000001');
+    expect(echo(-3.5e-12)).toBe('-0.0000000000035');
+    expect(echo(1.5e22)).toBe('15000000000000000000000');
+    for (const x of [5e-324, 1.7976931348623157e308, 2.5e-5, 0.1, -0]) expect(Number(echo(x))).toBe(x === 0 ? 0 : x);
   });
 
   it('renderTable sizes each column to its widest cell', () => {

@@ -9,7 +9,7 @@ import { lookupGrid } from '../../src/core/output/lookupTable';
 import { PLANE, type Surface } from '../../src/core/surfaces/cylinder';
 import { doublyCurvedForward } from '../../src/core/surfaces/doublyCurved';
 import { table } from '../../src/worker/jobs/table';
-import { run } from './helpers';
+import { run, runMain } from './helpers';
 
 function tableOf(surface: Surface, pattern: 'one-way' | 'zigzag' = 'one-way'): string {
   const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, pattern, surface };
@@ -113,7 +113,7 @@ describe("the page's download read back by --batch (issue 21)", () => {
     expect(r.stdout.split('\n').slice(1)).toEqual(named.csv.split('\n').slice(1));
   }, 30_000);
 
-  it('the inch file is refused with the reason: the command line reads mm', async () => {
+  it("the inch file reads back (columns R_in...): its results are the inch table's (issue 26 point 9)", async () => {
     const tool = { toolRadiusMm: 6.35, cornerRadiusMm: 1.5875, pattern: 'one-way' as const, surface: PLANE };
     const named = table({
       tool,
@@ -121,8 +121,21 @@ describe("the page's download read back by --batch (issue 21)", () => {
       unit: 'in',
     });
     if (!named.ok) throw new Error('table');
-    const r = await run(['--batch'], named.csv);
-    expect(r.code).not.toBe(0);
-    expect(r.stderr).toMatch(/column R_in is in inches: the command line reads mm/);
+    const r = await runMain(['--batch', '--unit', 'inch'], named.csv);
+    expect(r.stderr).toBe('');
+    expect(r.code).toBe(0);
+    const [head, ...rows] = parseCsv(r.stdout).map((x) => x.fields);
+    const [wantHead, ...want] = parseCsv(named.csv).map((x) => x.fields);
+    // The batch names the unit of every length column; angles are degrees without saying so.
+    expect(head).toEqual(wantHead?.map((name) => name.replace(/_deg$/, '')));
+    expect(rows.length).toBe(want.length);
+    rows.forEach((row, i) => {
+      row.forEach((text, j) => {
+        const expected = want[i]?.[j] ?? '';
+        // Inch inputs become mm once (0.001 in is 0.0254 mm to an ulp): the results agree to 1e-12.
+        if (text === '' || Number.isNaN(Number(text))) expect(text).toBe(expected);
+        else expect(Math.abs(Number(text) - Number(expected))).toBeLessThanOrEqual(1e-12 * Math.abs(Number(expected)));
+      });
+    });
   }, 30_000);
 });

@@ -259,7 +259,7 @@ describe('usage errors and invalid inputs: one line naming the constraint', () =
   it('bad values name the constraint and its limit in mm or degrees; never NaN', async () => {
     const cases: [string[], RegExp][] = [
       [[...tool, '--slope', '95', '--h', '0.01'], /^error: --slope: Slope alpha must be from 0 to 90 degrees/],
-      [[...tool, '--slope', 'abc', '--h', '0.01'], /^error: --slope: Slope alpha must be a finite number/],
+      [[...tool, '--slope', 'abc', '--h', '0.01'], /^error: --slope: Slope alpha must be a number \(got "abc"\)\.\n$/],
       [[...tool, '--slope', '90', '--h', '0.01'], /vertical wall.*no scallop/],
       [
         [...tool, '--slope', '30', '--raster-angle', '91', '--h', '0.01'],

@@ -23,13 +23,14 @@ export type CalculatorAnswer =
 interface FirstError {
   readonly code: string;
   readonly field: string;
-  readonly limit: number | null;
+  /** Absent (core input errors) or null (three-axis errors) where the fault has no limit. */
+  readonly limit?: number | null;
 }
 
 function refused(errors: readonly FirstError[]): CalculatorAnswer {
   const e = errors[0];
   if (e === undefined) throw new Error('a refused input without an error');
-  return { ok: false, code: e.code, field: e.field, limit: e.limit };
+  return { ok: false, code: e.code, field: e.field, limit: e.limit ?? null };
 }
 
 const cell = (row: ReferenceRow, name: string): string => row[name] ?? '';

@@ -128,7 +128,7 @@ export const FIELDS = {
     aliasOf: 'R',
     label: 'Tool diameter D',
     url: 'D',
-    cli: null,
+    cli: 'D',
     csv: null,
     embed: 'd',
     page: null,
@@ -252,7 +252,8 @@ export const FIELDS = {
     range: { min: 2e-9, max: null, minIncluded: true, maxIncluded: false, rule: '2e-9 mm <= L < the widest step-over' },
     url: 'L',
     cli: 'interval',
-    csv: null,
+    // `interval` is a result column of the batch (the exact step-over): its input is named as in the URL.
+    csv: { column: 'L', role: 'target' },
     embed: 'l',
     page: 'L',
   },

@@ -91,13 +91,28 @@ export function resultFields(input: ForwardInput): string {
     beyond ||= beyondWall(r, maxMm);
   }
   const noScallop = exact.noScallop ? NO_SCALLOP_NOTE : '';
-  const note = beyond ? warningNotes(input, noScallop) : noScallop;
+  const empty = APPROXIMATION_KEYS.flatMap((key) => notApplicable(half[key]));
+  const note = [beyond ? warningNotes(input, noScallop) : noScallop, ...empty].filter((n) => n !== '').join(' ');
   return (
     `${csvNumber(exact.halfIntervalMm)},${halfText(half.sekine)},${halfText(half.redonnet)},${halfText(half.bedi)},` +
     `${csvNumber(exact.intervalMm)},${csvNumber(exact.halfWidthRightMm)},${csvNumber(exact.halfWidthLeftMm)},` +
     `${csvNumber(exact.contactOffsetMm)},${exact.otherCuspHeightMm === null ? '' : csvNumber(exact.otherCuspHeightMm)},` +
     `${halfText(half.osculating)},${halfText(half.cornerBall)},${csvText(note)}`
   );
+}
+
+/** Why an approximation's cell is empty (at rho 0 the paper's models have no answer), or nothing. */
+function notApplicable(r: Approximation<HalfInterval>): string[] {
+  return r.ok ? [] : [r.notApplicable];
+}
+
+/**
+ * The notes of the approximations' empty cells of a case (each one's reason), as {@link resultFields}
+ * writes them after its warnings: for rows whose other cells are computed elsewhere (a doubly
+ * curved point's approximations are the plane's).
+ */
+export function emptyCellNotes(input: ForwardInput): string[] {
+  return APPROXIMATION_KEYS.flatMap((key) => notApplicable(APPROXIMATIONS[key].halfInterval(input)));
 }
 
 /** The warnings of every approximation, as compareForward words them, after `note`. */

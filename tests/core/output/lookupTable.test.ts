@@ -48,7 +48,9 @@ describe('lookup table', () => {
       { toolRadiusMm: 3, cornerRadiusMm: 0, pattern: 'one-way', surface: PLANE },
       { scallopHeightsMm: [0.01], leadAnglesDeg: [0], tiltAnglesDeg: [0] },
     );
-    expect(t.csv.split('\n')[1]).toMatch(/^3,0,0,0\.01,0,one-way,,,3,,,,6,3,3,0,,,,exact: a flat end without lead/);
+    expect(t.csv.split('\n')[1]).toMatch(/^3,0,0,0\.01,0,one-way,,,3,,,,6,3,3,0,,,,"exact: a flat end without lead/);
+    // The empty cells of the approximations say why (issue 26 point 10).
+    expect(t.csv.split('\n')[1]).toMatch(/Sekine et al\.: at rho = 0 .*Osculating circle: /);
   });
 
   it('names its surface in every row: empty surface columns on a plane, the signed radius and the axis on a cylinder', () => {
