@@ -102,28 +102,55 @@ function panel(w: (z: number) => number, a: number, b: number): [number, number,
 }
 
 /**
+ * The largest error (mm) in the mean line, Ra and Rq that widthIntegrals may leave where it stops
+ * at the rounding of the widths: 1e-12 mm, a thousandth of the 1e-9 mm the results promise.
+ */
+export const ROUNDOFF_FLOOR_MM = 1e-12;
+
+/** A width function that answers 0 where the given one answers no finite non-negative width. */
+function definedWidth(w: (z: number) => number): (z: number) => number {
+  return (z) => {
+    const v = w(z);
+    return v >= 0 && v < Number.POSITIVE_INFINITY ? v : 0;
+  };
+}
+
+/**
  * `[int_0^Z w dz, int_0^Z z w dz]` for a flank, in u = sqrt(z), by adaptive GK15 to a relative 1e-13
  * of the first integral.
  *
- * A panel is split in two until its error estimate meets its share of the tolerance, unless the
- * halves' estimates add up to half the panel's or more: then the estimate is the rounding of the
- * width itself, not the rule's error (halving a panel divides the rule's error by 4 at a kink of w
- * and by far more where w is smooth; rounding noise stays as large), and splitting further cannot
- * improve the integral (QUADPACK's roundoff detection, in the same spirit). The width across a
- * cylinder's axis carries the rounding of the corner centre's height (about 1e-16 of R), a relative
- * 1e-13 of a scallop of a few micrometres or less: without this test the panels ran to the cap of
- * 4000, some seconds of width solves per integral.
+ * A panel is split in two until its error estimate meets its share of the tolerance, unless it is
+ * down to the rounding of the width: the halves' estimates add up to half the panel's or more
+ * (halving divides a rule's error by 8 or more on average; rounding noise stays as large; QUADPACK's
+ * roundoff detection, in the same spirit) AND the panel's estimate is below its share of
+ * {@link ROUNDOFF_FLOOR_MM} times the flank's width (what moves the mean line, Ra and Rq by at most
+ * that). The width across a cylinder's axis carries the rounding of the corner centre's height
+ * (about 1e-16 of R), a relative 1e-13 of a scallop of a few micrometres or less: without the
+ * roundoff test the panels ran to the cap of 4000, some seconds of width solves per integral. The
+ * floor is what keeps the test from taking a rule's error for rounding: where the profile has a kink
+ * of curvature (a corner meeting a straight piece, at rho = 0 with tilt), one halving can shrink
+ * the estimate by less than 2 (the kink sits at a different place among the nodes), and stopping
+ * there lost 2.5e-8 mm^2 of a flank's area, 9.3e-9 mm of Rq (issue 26, point 4); past the floor
+ * the panels go on halving around the kink, whose error does fall, as they do for any kink.
+ *
+ * A width that is not a finite non-negative number (a solver asked below the rounding of its own
+ * heights: a doubly curved point's reach at 1e-16 mm, issue 26, point 6) is taken as 0: the
+ * profile there lies within that rounding of its contact, and its share of the integral is below
+ * the floor.
  */
-export function widthIntegrals(w: (z: number) => number, zMax: number): [number, number] {
+export function widthIntegrals(width: (z: number) => number, zMax: number): [number, number] {
   if (!(zMax > 0)) return [0, 0];
+  const w = definedWidth(width);
   const top = Math.sqrt(zMax);
   let a1 = 0;
   let a2 = 0;
-  const scale = zMax * w(zMax);
+  const widthMm = w(zMax);
+  const scale = zMax * widthMm;
   // Panels waiting to be split: [lo, hi, its error estimate].
   const todo: Array<[number, number, number]> = [];
   let evaluations = 0;
   const tolOf = (lo: number, hi: number) => Math.max(1e-13 * scale * ((hi - lo) / top), 1e-300);
+  const floorOf = (lo: number, hi: number) => ROUNDOFF_FLOOR_MM * widthMm * ((hi - lo) / top);
   // Start from 4 panels: the integrand can turn sharply where a flat face meets a corner.
   for (let i = 0; i < 4; i++) {
     const lo = (top * i) / 4;
@@ -141,7 +168,7 @@ export function widthIntegrals(w: (z: number) => number, zMax: number): [number,
     const left = panel(w, lo, mid);
     const right = panel(w, mid, hi);
     evaluations += 2;
-    const roundoff = left[2] + right[2] >= 0.5 * parentErr;
+    const roundoff = left[2] + right[2] >= 0.5 * parentErr && parentErr <= floorOf(lo, hi);
     const last = roundoff || hi - lo <= 2e-9 * top || evaluations > 4000;
     for (const [from, to, p] of [
       [lo, mid, left],
@@ -182,7 +209,7 @@ export function roughnessOfSegments(widths: WidthAt | PostureShape, segments: re
   let length = 0;
   let area = 0;
   const data = segments.map((seg) => {
-    const w = widthAt(seg.flank);
+    const w = definedWidth(widthAt(seg.flank));
     const [a1, a2] = widthIntegrals(w, seg.heightMm);
     length += seg.widthMm;
     area += seg.heightMm * seg.widthMm - a1;

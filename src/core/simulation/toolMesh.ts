@@ -46,6 +46,27 @@ function surfacePoint(p: Placement, t: number, psi: number, r: number, out: numb
 }
 
 /**
+ * The tool's profile at arc length q from the disk's centre (see meshSurface): fills `out` with the
+ * section angle psi (-pi/2 on the disk, up to 0 at the corner's equator) and the radius from the
+ * axis. The disk ends at q = Rb and the corner at Rb + pi Rcr / 2; a q past the end by rounding
+ * (the grid's last row, `(qEnd j) / n` with j = n, can be an ulp past qEnd) is the end. Without that,
+ * a flat end (Rcr = 0, no corner) put its rim at the section angle (q - Rb) / 0: every rim point
+ * NaN, no triangle at the contact, every simulated height non-finite (issue 26, point 6).
+ */
+function profileOffsets(rb: number, rcr: number): (q: number, out: [number, number]) => void {
+  return (q, out) => {
+    if (q <= rb || !(rcr > 0)) {
+      out[0] = -Math.PI / 2;
+      out[1] = Math.min(q, rb);
+      return;
+    }
+    const psi = Math.min(0, -Math.PI / 2 + (q - rb) / rcr);
+    out[0] = psi;
+    out[1] = rb + rcr * Math.cos(psi);
+  };
+}
+
+/**
  * Meshes the lower surface with triangles of edges about `l`, keeping what can reach below `zCap`,
  * into the field (inRange on a Y interval) and, when `xBand` is finite, within that distance of the
  * plane x = 0. The surface is one grid: angle t around the axis, and a profile parameter q from 0
@@ -70,14 +91,11 @@ export function meshSurface(
   const perQ = Math.max(1, Math.ceil(qEnd / (l * blocksQ)));
   const nT = blocksT * perT;
   const nQ = blocksQ * perQ;
+  const offsets = profileOffsets(rb, rcr);
+  const section: [number, number] = [0, 0];
   const point = (i: number, j: number, out: number[]) => {
-    const t = (2 * Math.PI * i) / nT;
-    const q = (qEnd * j) / nQ;
-    if (q <= rb) surfacePoint(p, t, -Math.PI / 2, q, out);
-    else {
-      const psi = -Math.PI / 2 + (q - rb) / rcr;
-      surfacePoint(p, t, psi, rb + rcr * Math.cos(psi), out);
-    }
+    offsets((qEnd * j) / nQ, section);
+    surfacePoint(p, (2 * Math.PI * i) / nT, section[0], section[1], out);
   };
   const tris: number[] = [];
   const corners = Array.from({ length: 5 }, () => [0, 0, 0]);
@@ -143,15 +161,9 @@ export function meshSurface(
       rzs[i] = st * p.v1[2] + ct * p.v2[2];
     }
     for (let j = 0; j <= nj; j++) {
-      const q = (qEnd * (j0 + j)) / nQ;
-      if (q <= rb) {
-        radials[j] = q;
-        axials[j] = -rcr;
-      } else {
-        const psi = -Math.PI / 2 + (q - rb) / rcr;
-        radials[j] = rb + rcr * Math.cos(psi);
-        axials[j] = rcr * Math.sin(psi);
-      }
+      offsets((qEnd * (j0 + j)) / nQ, section);
+      radials[j] = section[1];
+      axials[j] = rcr * Math.sin(section[0]);
     }
     const [cx, cy, cz] = p.centre;
     const [ax, ay, az] = p.axis;

@@ -22,7 +22,12 @@ import type { DoublyCurvedForward, DoublyCurvedInverse, PrincipalRadii } from '.
 
 const NONE: Roughness = { rzMm: 0, raMm: 0, rqMm: 0, meanMm: 0 };
 
-/** Each flank's reach (arc length along the equator, mm) at a radial height (mm). */
+/**
+ * Each flank's reach (arc length along the equator, mm) at a radial height (mm). Below the rounding
+ * of the radial heights (about 1e-16 mm at the CC point's disk) a reach is -Infinity, and within a
+ * few hundred times that it carries percent-level noise; roughnessOfSegments counts a non-finite
+ * width as 0 and stops its quadrature at that noise (its share of Ra and Rq is below 1e-20 mm).
+ */
 function widthsOf(solver: DoublyCurvedSolver): WidthAt {
   return (flank) => {
     const f = flank === 'right' ? solver.right : solver.left;
