@@ -28,6 +28,8 @@ describe('npm run bench', () => {
       'simulationMsMedian',
       'simulationCellsPerSecond',
       'batchRowsPerSecond',
+      'cliStartMs',
+      'nodeStartMs',
     ]) {
       expect(last[key]).toBeGreaterThan(0);
     }
