@@ -1,0 +1,75 @@
+#!/usr/bin/env node
+// `npm test`: every check, as many at once as two cores take.
+//  1. Preparation, at once: Chromium and MkDocs present (ensure-*.mjs), the compiled command line
+//     current (src/build/cliBundle.mjs --if-stale: the one CLI build of the run).
+//  2. At once: the browser tests (`vitest run --project browser`, one file at a time: the longest
+//     step and the one that waits on pages, so it runs at normal priority and its output is shown as
+//     it comes), and, niced (they take the CPU the browser tests leave; none of them measures time),
+//     the Node tests (`vitest run --project node`, files in parallel), Biome and the type checks
+//     (`tsc -b`, src/core checked once). Their output is shown when each ends.
+// Each step's time is printed at its end and in a summary; the exit code is 1 if any step failed.
+// Arguments after `--` go to both Vitest runs (e.g. `npm test -- --reporter=dot`).
+import { spawn } from 'node:child_process';
+import { loadavg } from 'node:os';
+import { fileURLToPath } from 'node:url';
+
+const ROOT = fileURLToPath(new URL('../..', import.meta.url));
+const NICE = 10;
+const vitestArgs = process.argv.slice(2);
+
+/**
+ * Runs one step (a command and its arguments); resolves to its name, exit code and seconds.
+ * `live`: its output goes straight through; otherwise it is kept and written whole at the end.
+ */
+function step(name, command, args, { live = false, niced = false } = {}) {
+  const t0 = performance.now();
+  const [cmd, argv] =
+    niced && process.platform !== 'win32' ? ['nice', ['-n', `${NICE}`, command, ...args]] : [command, args];
+  return new Promise((resolve) => {
+    const child = spawn(cmd, argv, { cwd: ROOT, stdio: live ? 'inherit' : ['ignore', 'pipe', 'pipe'] });
+    const kept = [];
+    if (!live) {
+      child.stdout.on('data', (d) => kept.push(d));
+      child.stderr.on('data', (d) => kept.push(d));
+    }
+    const end = (code) => {
+      const seconds = (performance.now() - t0) / 1000;
+      if (!live && kept.length) process.stdout.write(`\n--- ${name} ---\n${Buffer.concat(kept).toString('utf8')}`);
+      console.log(`--- ${name}: ${code === 0 ? 'ok' : `FAILED (exit ${code})`}, ${seconds.toFixed(1)} s ---`);
+      resolve({ name, code, seconds });
+    };
+    child.on('error', (e) => {
+      kept.push(Buffer.from(`${e.message}\n`));
+      end(127);
+    });
+    child.on('close', (code, signal) => end(code ?? (signal ? 128 : 1)));
+  });
+}
+
+const node = process.execPath;
+const bin = (name) => `${ROOT}node_modules/.bin/${name}`;
+const t0 = performance.now();
+const prepared = await Promise.all([
+  step('ensure chromium', node, ['tests/support/ensure-chromium.mjs'], { live: true }),
+  step('ensure mkdocs', node, ['tests/support/ensure-mkdocs.mjs'], { live: true }),
+  step('build the command line', node, ['src/build/cliBundle.mjs', '--if-stale']),
+]);
+const results = [...prepared];
+if (prepared.every((r) => r.code === 0)) {
+  results.push(
+    ...(await Promise.all([
+      step('browser tests', bin('vitest'), ['run', '--project', 'browser', ...vitestArgs], { live: true }),
+      step('node tests', bin('vitest'), ['run', '--project', 'node', ...vitestArgs], { niced: true }),
+      step('lint', bin('biome'), ['check', '.'], { niced: true }),
+      step('typecheck', 'npm', ['run', '--silent', 'typecheck'], { niced: true }),
+    ])),
+  );
+}
+console.log(
+  `\nnpm test: ${((performance.now() - t0) / 1000).toFixed(1)} s (load average ${loadavg()
+    .map((x) => x.toFixed(2))
+    .join(' ')}: other work on the machine slows every step)`,
+);
+for (const r of results)
+  console.log(`  ${r.name.padEnd(24)}${r.code === 0 ? 'ok    ' : 'FAILED'}${r.seconds.toFixed(1).padStart(8)} s`);
+process.exitCode = results.every((r) => r.code === 0) ? 0 : 1;
