@@ -19,15 +19,15 @@ const ENTRY = 'src/cli/main.ts';
 /** The compiled command line (git-ignored). */
 export const CLI_BUNDLE = `${ROOT}dist-cli/cli.mjs`;
 /** Start of the bundle's first line; the JSON after it: { startedMs, inputs } (inputs relative to the root). */
-const MARK = '// path-interval cli build ';
+export const CLI_BUILD_MARK = '// path-interval cli build ';
 /** The first line is read in one piece of at most this many bytes (the inputs' paths). */
 const HEAD_BYTES = 1 << 16;
 
 /** The build record on the bundle's first line, or null when there is no bundle (or no record). */
-function buildRecord() {
+function buildRecord(bundle) {
   let fd;
   try {
-    fd = openSync(CLI_BUNDLE, 'r');
+    fd = openSync(bundle, 'r');
   } catch {
     return null;
   }
@@ -35,8 +35,8 @@ function buildRecord() {
     const head = Buffer.alloc(HEAD_BYTES);
     const n = readSync(fd, head, 0, HEAD_BYTES, 0);
     const line = head.subarray(0, n).toString('utf8').split('\n', 1)[0] ?? '';
-    if (!line.startsWith(MARK)) return null;
-    const record = JSON.parse(line.slice(MARK.length));
+    if (!line.startsWith(CLI_BUILD_MARK)) return null;
+    const record = JSON.parse(line.slice(CLI_BUILD_MARK.length));
     return typeof record.startedMs === 'number' && Array.isArray(record.inputs) ? record : null;
   } catch {
     return null;
@@ -48,13 +48,14 @@ function buildRecord() {
 /**
  * True when the bundle exists and no source it was built from changed (or vanished) since its
  * build started. Without the sources (an installed copy that ships only the bundle) it is current.
+ * `bundle` and `root` (ending in a slash) are for the tests.
  */
-export function cliBundleIsCurrent() {
-  const record = buildRecord();
+export function cliBundleIsCurrent(bundle = CLI_BUNDLE, root = ROOT) {
+  const record = buildRecord(bundle);
   if (record === null) return false;
-  if (statSync(`${ROOT}${ENTRY}`, { throwIfNoEntry: false }) === undefined) return true;
+  if (statSync(`${root}${ENTRY}`, { throwIfNoEntry: false }) === undefined) return true;
   for (const input of record.inputs) {
-    const s = statSync(`${ROOT}${input}`, { throwIfNoEntry: false });
+    const s = statSync(`${root}${input}`, { throwIfNoEntry: false });
     if (s === undefined || s.mtimeMs >= record.startedMs) return false;
   }
   return true;
@@ -86,7 +87,7 @@ export async function buildCliBundle() {
   const inputs = Object.keys(result.metafile.inputs);
   mkdirSync(dirname(CLI_BUNDLE), { recursive: true });
   const tmp = `${CLI_BUNDLE}.${process.pid}.${Math.random().toString(36).slice(2)}.tmp`;
-  writeFileSync(tmp, `${MARK}${JSON.stringify({ startedMs, inputs })}\n${code}`);
+  writeFileSync(tmp, `${CLI_BUILD_MARK}${JSON.stringify({ startedMs, inputs })}\n${code}`);
   renameSync(tmp, CLI_BUNDLE);
 }
 
