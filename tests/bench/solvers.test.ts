@@ -33,5 +33,5 @@ describe('npm run bench', () => {
     ]) {
       expect(last[key]).toBeGreaterThan(0);
     }
-  });
+  }, 120_000);
 });
