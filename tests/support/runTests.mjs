@@ -1,12 +1,13 @@
 #!/usr/bin/env node
 // `npm test`: every check, as many at once as two cores take.
-//  1. Preparation, at once: Chromium and MkDocs present (ensure-*.mjs), the compiled command line
-//     current (src/build/cliBundle.mjs --if-stale: the one CLI build of the run).
-//  2. At once: the browser tests (`vitest run --project browser`, one file at a time: the longest
-//     step and the one that waits on pages, so it runs at normal priority and its output is shown as
-//     it comes), and, niced (they take the CPU the browser tests leave; none of them measures time),
-//     the Node tests (`vitest run --project node`, files in parallel), Biome and the type checks
-//     (`tsc -b`, src/core checked once). Their output is shown when each ends.
+// All at once, each as soon as what it needs is there:
+//  - preparation: Chromium and MkDocs present (ensure-*.mjs), the compiled command line current
+//    (src/build/cliBundle.mjs --if-stale: the one CLI build of the run);
+//  - the browser tests (`vitest run --project browser`, after the three: one file at a time, the
+//    longest step and the one that waits on pages, so at normal priority, its output shown as it comes);
+//  - niced (they take the CPU the browser tests leave; none of them measures time): the Node tests
+//    (`vitest run --project node`, after the CLI build; files in parallel), Biome, and the type checks
+//    (`tsc -b`, src/core checked once). Their output is shown when each ends.
 // Each step's time is printed at its end and in a summary; the exit code is 1 if any step failed.
 // Arguments after `--` go to both Vitest runs (e.g. `npm test -- --reporter=dot`).
 import { spawn } from 'node:child_process';
@@ -15,6 +16,7 @@ import { fileURLToPath } from 'node:url';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const NICE = 10;
+const VERDICT = (code) => (code === 0 ? 'ok     ' : code === null ? 'not run' : 'FAILED ');
 // Filters given (`npm test -- tests/cli`) may match files of one project only: the other passes empty.
 const vitestArgs = process.argv.length > 2 ? [...process.argv.slice(2), '--passWithNoTests'] : [];
 
@@ -50,27 +52,29 @@ function step(name, command, args, { live = false, niced = false } = {}) {
 const node = process.execPath;
 const bin = (name) => `${ROOT}node_modules/.bin/${name}`;
 const t0 = performance.now();
-const prepared = await Promise.all([
-  step('ensure chromium', node, ['tests/support/ensure-chromium.mjs'], { live: true }),
-  step('ensure mkdocs', node, ['tests/support/ensure-mkdocs.mjs'], { live: true }),
-  step('build the command line', node, ['src/build/cliBundle.mjs', '--if-stale']),
+/** Runs `start` once every one of `needs` has passed; otherwise the step is not run (exit code null). */
+const after = async (needs, name, start) =>
+  (await Promise.all(needs)).every((r) => r.code === 0) ? start() : { name, code: null, seconds: 0 };
+const chromium = step('ensure chromium', node, ['tests/support/ensure-chromium.mjs'], { live: true });
+const mkdocs = step('ensure mkdocs', node, ['tests/support/ensure-mkdocs.mjs'], { live: true });
+const cli = step('build the command line', node, ['src/build/cliBundle.mjs', '--if-stale']);
+const results = await Promise.all([
+  chromium,
+  mkdocs,
+  cli,
+  after([chromium, mkdocs, cli], 'browser tests', () =>
+    step('browser tests', bin('vitest'), ['run', '--project', 'browser', ...vitestArgs], { live: true }),
+  ),
+  after([cli], 'node tests', () =>
+    step('node tests', bin('vitest'), ['run', '--project', 'node', ...vitestArgs], { niced: true }),
+  ),
+  step('lint', bin('biome'), ['check', '.'], { niced: true }),
+  step('typecheck', 'npm', ['run', '--silent', 'typecheck'], { niced: true }),
 ]);
-const results = [...prepared];
-if (prepared.every((r) => r.code === 0)) {
-  results.push(
-    ...(await Promise.all([
-      step('browser tests', bin('vitest'), ['run', '--project', 'browser', ...vitestArgs], { live: true }),
-      step('node tests', bin('vitest'), ['run', '--project', 'node', ...vitestArgs], { niced: true }),
-      step('lint', bin('biome'), ['check', '.'], { niced: true }),
-      step('typecheck', 'npm', ['run', '--silent', 'typecheck'], { niced: true }),
-    ])),
-  );
-}
 console.log(
   `\nnpm test: ${((performance.now() - t0) / 1000).toFixed(1)} s (load average ${loadavg()
     .map((x) => x.toFixed(2))
     .join(' ')}: other work on the machine slows every step)`,
 );
-for (const r of results)
-  console.log(`  ${r.name.padEnd(24)}${r.code === 0 ? 'ok    ' : 'FAILED'}${r.seconds.toFixed(1).padStart(8)} s`);
+for (const r of results) console.log(`  ${r.name.padEnd(24)}${VERDICT(r.code)}${r.seconds.toFixed(1).padStart(8)} s`);
 process.exitCode = results.every((r) => r.code === 0) ? 0 : 1;
