@@ -2,7 +2,7 @@
  * The command line's start-up: the wall time of one question (`path-interval --R 3 --Rcr 1 --rho 5
  * --h 0.05 --json`) from spawning Node to its exit, median over runs; beside it Node's own start
  * (`node -e 0`), the floor under it. A warm-up run first, which builds the compiled command line
- * if it is missing or stale (src/build/cliBundle.mjs), so the runs measure the compiled one.
+ * if it is missing or stale (src/cli/bundle.mjs), so the runs measure the compiled one.
  */
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';

@@ -2,7 +2,7 @@
 import { pathToFileURL } from 'node:url';
 
 // Entry point of `npm run cli` and `npx path-interval`: runs the compiled command line,
-// dist-cli/cli.mjs (src/build/cliBundle.mjs; built by `npm ci` and `npm test`). In a checkout whose
+// dist-cli/cli.mjs (src/cli/bundle.mjs; built by `npm ci` and `npm test`). In a checkout whose
 // sources changed since that build (or without it), it is rebuilt first, silently (about 0.2 s, once);
 // where it cannot be (no esbuild, a source that does not compile), the sources run through tsx.
 // Never a stack trace: write errors are handled in main.ts; anything unexpected is one line, exit 1.
@@ -25,7 +25,7 @@ process.stderr.on('error', () => {});
 
 /** The command line's main(): compiled, rebuilt when stale, or else from the sources through tsx. */
 async function loadMain() {
-  const { CLI_BUNDLE, buildCliBundle, cliBundleIsCurrent } = await import('../build/cliBundle.mjs');
+  const { CLI_BUNDLE, buildCliBundle, cliBundleIsCurrent } = await import('./bundle.mjs');
   try {
     if (!cliBundleIsCurrent()) await buildCliBundle();
     return await import(pathToFileURL(CLI_BUNDLE).href);

@@ -2,7 +2,7 @@
 // `npm test`: every check, as many at once as two cores take.
 // All at once, each as soon as what it needs is there:
 //  - preparation: Chromium and MkDocs present (ensure-*.mjs), the compiled command line current
-//    (src/build/cliBundle.mjs --if-stale: the one CLI build of the run);
+//    (src/cli/bundle.mjs --if-stale: the one CLI build of the run);
 //  - the browser tests (`vitest run --project browser`, after the three: one file at a time, the
 //    longest step and the one that waits on pages, so at normal priority, its output shown as it comes);
 //  - niced (they take the CPU the browser tests leave; none of them measures time): the Node tests
@@ -57,7 +57,7 @@ const after = async (needs, name, start) =>
   (await Promise.all(needs)).every((r) => r.code === 0) ? start() : { name, code: null, seconds: 0 };
 const chromium = step('ensure chromium', node, ['tests/support/ensure-chromium.mjs'], { live: true });
 const mkdocs = step('ensure mkdocs', node, ['tests/support/ensure-mkdocs.mjs'], { live: true });
-const cli = step('build the command line', node, ['src/build/cliBundle.mjs', '--if-stale']);
+const cli = step('build the command line', node, ['src/cli/bundle.mjs', '--if-stale']);
 const results = await Promise.all([
   chromium,
   mkdocs,

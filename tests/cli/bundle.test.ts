@@ -1,5 +1,5 @@
 /**
- * The compiled command line's freshness (src/build/cliBundle.mjs): the launcher runs the bundle
+ * The compiled command line's freshness (src/cli/bundle.mjs): the launcher runs the bundle
  * only while no source it was built from changed or vanished since its build started, so a
  * checkout never answers with an earlier version of the code. Checked on a bundle and sources in
  * a temporary folder, their times set by hand.
@@ -8,7 +8,7 @@ import { mkdirSync, mkdtempSync, rmSync, utimesSync, writeFileSync } from 'node:
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, describe, expect, it } from 'vitest';
-import { CLI_BUILD_MARK, cliBundleIsCurrent } from '../../src/build/cliBundle.mjs';
+import { CLI_BUILD_MARK, cliBundleIsCurrent } from '../../src/cli/bundle.mjs';
 
 const root = `${mkdtempSync(join(tmpdir(), 'cli-bundle-'))}/`;
 const bundle = `${root}dist-cli/cli.mjs`;

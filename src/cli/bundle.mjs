@@ -7,8 +7,8 @@
  * The bundle's first line records when its build started and the source files it read, so the
  * launcher can tell, in a checkout whose sources changed since, that it is stale.
  *
- *   node src/build/cliBundle.mjs              build
- *   node src/build/cliBundle.mjs --if-stale   build only when missing or older than a source
+ *   node src/cli/bundle.mjs              build
+ *   node src/cli/bundle.mjs --if-stale   build only when missing or older than a source
  */
 import { closeSync, mkdirSync, openSync, readSync, renameSync, statSync, writeFileSync } from 'node:fs';
 import { dirname } from 'node:path';

@@ -1,4 +1,4 @@
-/** Types of cliBundle.mjs (plain JavaScript, so that it runs before anything is compiled). */
+/** Types of bundle.mjs (plain JavaScript, so that it runs before anything is compiled). */
 
 /** The compiled command line (git-ignored). */
 export declare const CLI_BUNDLE: string;
