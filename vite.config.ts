@@ -134,6 +134,7 @@ export default defineConfig(({ mode, command }) =>
                 name: 'node',
                 include: ['tests/**/*.test.ts'],
                 exclude: BROWSER_TESTS,
+                globalSetup: ['tests/support/cliBundleSetup.ts'],
                 // Vitest's default leaves a core free (one worker on 2 cores).
                 maxWorkers: availableParallelism(),
               },
