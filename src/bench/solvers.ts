@@ -6,6 +6,9 @@
  *   npm run bench                 readable table
  *   npm run bench -- --json       the same, and a last line holding one JSON object
  *   npm run bench -- --rounds 5   fewer rounds (quick smoke run)
+ *
+ * Also the three-axis and doubly curved solvers (threeAxis.ts, doublyCurved.ts) and the teaching
+ * views' data (teachPage.ts: teachSlopeChartMsMedian, target 500 ms; teachCurvedMsMedian, 3000 ms).
  */
 import { Readable, Writable } from 'node:stream';
 import { main } from '../cli/main';
@@ -29,6 +32,7 @@ import { PASS_FIELDS } from '../core/input/fields';
 import { rawOf } from '../core/input/raw';
 import { cliStartBench } from './cliStart';
 import { doublyCurvedBench } from './doublyCurved';
+import { teachPageBench } from './teachPage';
 import { threeAxisBench } from './threeAxis';
 
 /**
@@ -161,6 +165,9 @@ rows.push(
 const three = threeAxisBench(rounds);
 for (const [label, key, v] of three.rows) rows.push([`three-axis: ${label}`, key, v.wall]);
 
+// The teaching views' data (src/bench/teachPage.ts): the slope chart and the doubly curved views, ms per call.
+const teach = teachPageBench(Math.max(3, Math.min(rounds, 11)));
+
 // The page's default simulation: 512 x 512 cells, 5 one-way passes, the paper's Tool 1 at h = 0.05 mm.
 const simTool = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 const simInterval = exactIntervalMm(forwardInput(simTool, 'one-way', 0.05));
@@ -230,6 +237,7 @@ console.log(
 for (const [label, , v] of three.sweeps) {
   console.log(`${`three-axis sweep, ${label} (ms)`.padEnd(36)}${v.wall.toFixed(2).padStart(14)}`);
 }
+for (const [label, , ms] of teach) console.log(`${`teach: ${label} (ms)`.padEnd(36)}${ms.toFixed(1).padStart(14)}`);
 console.log(`(checksum ${sink.toExponential(3)})`);
 if (json) {
   const out: Record<string, number> = { rounds };
@@ -242,5 +250,6 @@ if (json) {
   out.targetRaCylinderCrossMsMedian = Number(targetRaCylinderCrossMsMedian.toFixed(2));
   out.targetRaCylinderCrossMsMax = Number(targetRaCylinderCrossMsMax.toFixed(2));
   for (const [, key, v] of three.sweeps) out[key] = Number(v.wall.toFixed(2));
+  for (const [, key, ms] of teach) out[key] = Number(ms.toFixed(2));
   console.log(JSON.stringify(out));
 }

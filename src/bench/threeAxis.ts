@@ -16,6 +16,7 @@ import { exactIntervalMm } from '../core/surfaces/solve';
 import {
   type RevolutionCase,
   type SlopedPlaneCase,
+  type SlopeSweepInput,
   slopedPlaneForward,
   slopedPlaneIntervalMm,
   slopeSweep,
@@ -196,25 +197,21 @@ export function threeAxisBench(rounds: number): {
     return { wall: median(wall), cpu: median(cpu) };
   }
   const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, hMm: 0.05 } as const;
+  const largest = (input: SlopeSweepInput): number => {
+    const r = slopeSweep(input);
+    return r.ok ? r.value.largestSlopeDeg : Number.NaN;
+  };
   const sweeps: Array<[string, string, { wall: number; cpu: number }]> = [
-    [
-      'raster psi 30',
-      'sweep3AxisRasterMs',
-      sweepMs(() => slopeSweep({ ...tool, passes: 'raster', rasterAngleDeg: 30 }).largestSlopeDeg),
-    ],
+    ['raster psi 30', 'sweep3AxisRasterMs', sweepMs(() => largest({ ...tool, passes: 'raster', rasterAngleDeg: 30 }))],
     [
       'waterline on the plane',
       'sweep3AxisWaterlinePlaneMs',
-      sweepMs(() => slopeSweep({ ...tool, passes: 'waterline', rasterAngleDeg: 0 }).largestSlopeDeg),
+      sweepMs(() => largest({ ...tool, passes: 'waterline', rasterAngleDeg: 0 })),
     ],
     [
       'waterline on a dome R30',
       'sweep3AxisWaterlineDomeMs',
-      sweepMs(
-        () =>
-          slopeSweep({ ...tool, passes: 'waterline', rasterAngleDeg: 0, feedRadiusMm: 30, crossRadiusMm: 30 })
-            .largestSlopeDeg,
-      ),
+      sweepMs(() => largest({ ...tool, passes: 'waterline', rasterAngleDeg: 0, feedRadiusMm: 30, crossRadiusMm: 30 })),
     ],
   ];
 

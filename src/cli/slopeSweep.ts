@@ -2,7 +2,9 @@
  * --slope-sweep (issue 20): the options to a validated slope sweep (core/threeAxis/slopeSweep.ts),
  * or the input errors. The fields are parsed as --slope parses them (threeAxis/validate.ts, with
  * the swept slope held at a placeholder), their fixed ranges checked by the three-axis solver at a
- * slope where no h limit applies, and h must be valid at some slope. Lengths mm, angles degrees.
+ * slope where no h limit applies, and the sweep's own errors (core slopeSweep: h and the step at
+ * least 1e-9 mm, h valid at some slope: gouging at every slope is the gouging error). Lengths mm,
+ * angles degrees.
  */
 import { FIELDS } from '../core/input/fields';
 import { type SlopeSweep, type SlopeSweepInput, slopeSweep } from '../core/threeAxis/slopeSweep';
@@ -56,15 +58,6 @@ export function sweepSlopes(
     if (ranges.length > 0) return { ok: false, errors: ranges };
   }
   const h = p.mm;
-  const bad = (field: 'h' | 'horizontalStep' | 'stepDown', mm: number, label: string): ThreeAxisInputError | null =>
-    mm >= 1e-9
-      ? null
-      : { field, code: 'too-small', got: mm, limit: 1e-9, message: `${label} must be at least 1e-9 mm (got ${mm}).` };
-  const tooSmall = [
-    bad('h', h, 'Scallop height h'),
-    stepField === null || stepMm === undefined ? null : bad(stepField, stepMm, FIELDS[stepField].label),
-  ].filter((e): e is ThreeAxisInputError => e !== null);
-  if (tooSmall.length > 0) return { ok: false, errors: tooSmall };
   const input: SlopeSweepInput =
     p.surface === 'plane'
       ? {
@@ -87,20 +80,8 @@ export function sweepSlopes(
           count: SLOPE_SWEEP_COUNT,
           ...(stepMm === undefined ? {} : { programmedStepMm: stepMm }),
         };
+  // The sweep's own errors: h and the step below 1e-9 mm, no slope where h is valid (gouging or h's limit).
   const sweep = slopeSweep(input);
-  if (!sweep.points.some((pt) => pt.stepMm !== null)) {
-    return {
-      ok: false,
-      errors: [
-        {
-          field: 'h',
-          code: 'flank-wall',
-          got: h,
-          limit: null,
-          message: `Scallop height h is at or above the limit at every slope (got ${h}): the flanks or the shank leave a wall, not a scallop.`,
-        },
-      ],
-    };
-  }
-  return { ok: true, input, sweep, typed: stepMm !== undefined };
+  if (!sweep.ok) return { ok: false, errors: sweep.errors };
+  return { ok: true, input, sweep: sweep.value, typed: stepMm !== undefined };
 }

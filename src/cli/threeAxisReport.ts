@@ -166,9 +166,11 @@ export function slopeSweepTable(i: SlopeSweepInput, s: SlopeSweep, step: SweepSt
     p.cuspAtProgrammedStepMm !== null ? length(p.cuspAtProgrammedStepMm) : (p.programmedStepRefusal ?? '-'),
   ]);
   const largest =
-    s.largestSlopeDeg >= 90 - 1e-6
-      ? 'h is valid up to a vertical wall (90 deg, where the side cuts it flat)'
-      : `the largest slope where h is valid: ${angle(s.largestSlopeDeg)} deg`;
+    s.largestSlopeDeg === 90
+      ? 'h is valid up to 90 deg (the concave meridian leaves a scallop on the vertical too)'
+      : s.largestSlopeDeg >= 90 - 1e-6
+        ? 'h is valid up to a vertical wall (90 deg, where the side cuts it flat)'
+        : `the largest slope where h is valid: ${angle(s.largestSlopeDeg)} deg`;
   return [
     sweepCaseLine(i),
     `Scallop height h = ${echo(i.hMm)} mm; ${largest}`,

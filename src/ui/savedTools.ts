@@ -18,7 +18,11 @@ export interface ToolStorage {
   setItem(key: string, value: string): void;
 }
 
-/** The saved tools read from `text` (the stored JSON; null when none), and a line when some could not be read. */
+/**
+ * The saved tools read from `text` (the stored JSON; null when none), newest first, and a line when
+ * some were left out: those that could not be read, and, apart from them, those beyond the
+ * {@link SAVED_TOOLS_MAX} newest readable ones kept (over the cap, not unreadable).
+ */
 export function readSavedTools(text: string | null): { tools: LibraryTool[]; problem: string | null } {
   if (text === null) return { tools: [], problem: null };
   let json: unknown;
@@ -34,22 +38,34 @@ export function readSavedTools(text: string | null): { tools: LibraryTool[]; pro
   if (!Array.isArray(list))
     return { tools: [], problem: 'The saved tools in this browser could not be read; the list starts empty.' };
   const tools: LibraryTool[] = [];
-  let dropped = 0;
-  for (const e of list.slice(0, SAVED_TOOLS_MAX)) {
+  let unreadable = 0;
+  let read = 0;
+  for (; read < list.length && tools.length < SAVED_TOOLS_MAX; read++) {
+    const e: unknown = list[read];
     const entry = typeof e === 'object' && e !== null ? (e as Record<string, unknown>) : {};
     const name = typeof entry.name === 'string' ? entry.name : '';
     const checked = checkTool(name, entry.diameterMm, entry.cornerRadiusMm, entry.flutes ?? null);
     if (checked.ok && checked.tool.name !== '') tools.push(checked.tool);
-    else dropped++;
+    else unreadable++;
   }
-  dropped += Math.max(0, list.length - SAVED_TOOLS_MAX);
-  return {
-    tools,
-    problem:
-      dropped === 0
-        ? null
-        : `${dropped} saved tool${dropped === 1 ? '' : 's'} could not be read and ${dropped === 1 ? 'was' : 'were'} left out.`,
-  };
+  const lines = [unreadableLine(unreadable), overCapLine(list.length - read, tools.length)].filter((l) => l !== '');
+  return { tools, problem: lines.length === 0 ? null : lines.join(' ') };
+}
+
+/** `n` saved tool(s), and the verb's form that goes with it. */
+const savedCount = (n: number, singular: string, plural: string) =>
+  `${n} saved tool${n === 1 ? '' : 's'} ${n === 1 ? singular : plural}`;
+
+/** The line for saved tools that could not be read ('' for none). */
+function unreadableLine(count: number): string {
+  return count === 0 ? '' : `${savedCount(count, 'could not be read and was', 'could not be read and were')} left out.`;
+}
+
+/** The line for saved tools beyond the cap ('' for none): how many were left out, how many kept. */
+function overCapLine(count: number, kept: number): string {
+  return count === 0
+    ? ''
+    : `${savedCount(count, 'was', 'were')} over the limit of ${SAVED_TOOLS_MAX} and left out (the ${kept} newest are kept).`;
 }
 
 /** The JSON the saved tools are stored as. */

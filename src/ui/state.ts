@@ -16,6 +16,7 @@ import type { PassPattern } from '../core/input/validate';
 import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
 import { choice, convertField, fieldText, formatField, isLengthField, parseField } from './fieldText';
+import { repeatedParamNotices } from './linkRepeats';
 import { type Machine, type Passes, parseMachine, threeAxisNeeded, threeAxisSearch } from './machineState';
 import { type CurvedFields, parseLinkRadii, RADIUS_PARAM, type RadiusSide, signedRadiusOf } from './surfaceState';
 
@@ -171,12 +172,13 @@ export interface ParsedUrl {
  * Reads the state from a query string (`?R=3&Rcr=1&rho=5&h=0.05&unit=mm`, plus `tilt=`,
  * `pattern=zigzag`, `surfaceRadius=&surfaceAxis=`, `mode=inverse&L=`, `target=ra&ra=`, `embed=1`). A present but invalid value, and a missing one
  * when others are given, falls back to its default with a notice (tilt and pattern have defaults
- * and are never missing). Cross-field rules are left to the calculator's own validation, which
- * shows them next to the fields.
+ * and are never missing); a parameter given more than once is read from its first value, with a
+ * notice naming the values ignored (linkRepeats.ts). Cross-field rules are left to the
+ * calculator's own validation, which shows them next to the fields.
  */
 export function parseUrl(search: string): ParsedUrl {
   const params = new URLSearchParams(search);
-  const notices: string[] = [];
+  const notices: string[] = repeatedParamNotices(params);
   const unit = choice(params, 'unit', notices, { inch: 'in' });
   const mode = choice(params, 'mode', notices);
   const pattern = choice(params, 'pattern', notices);

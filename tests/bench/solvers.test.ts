@@ -13,6 +13,7 @@ describe('npm run bench', () => {
     expect(r.status).toBe(0);
     const lines = r.stdout.trim().split('\n');
     expect(r.stdout).toMatch(/exact L \(no tilt\)\s+\d+\.\d/);
+    expect(r.stdout).toMatch(/teach: slope chart, 200 slopes \(three-axis\) \(ms\)\s+\d+\.\d/);
     const last = JSON.parse(lines[lines.length - 1] as string);
     for (const key of [
       'exactNsPerCall',
@@ -28,6 +29,8 @@ describe('npm run bench', () => {
       'simulationMsMedian',
       'simulationCellsPerSecond',
       'batchRowsPerSecond',
+      'teachSlopeChartMsMedian',
+      'teachCurvedMsMedian',
       'cliStartMs',
       'nodeStartMs',
     ]) {

@@ -72,7 +72,31 @@ describe('--slope-sweep', () => {
     expect(checked).toBeGreaterThan(5);
   });
 
-  it('a table of 31 slopes, and the combinations that do not exist are one-line usage errors', async () => {
+  it('a surface that gouges at every slope is the gouging input error, as --slope gives it (issue 26 point 2)', async () => {
+    const tool = ['--R', '3', '--Rcr', '1', '--h', '0.01', '--passes', 'waterline'];
+    for (const [radii, field] of [
+      [['--feed-radius', '-0.5', '--cross-radius', '-0.5'], 'crossRadius'],
+      [['--feed-radius', '-0.5', '--cross-radius', '-2'], 'crossRadius'],
+      [['--cross-radius', '-2'], 'crossRadius'],
+    ] as const) {
+      const r = await runMain([...tool, ...radii, '--slope-sweep', '--json']);
+      expect(r.code, radii.join(' ')).toBe(2);
+      const e = JSON.parse(r.stdout).errors;
+      expect(e).toHaveLength(1);
+      expect(e[0]).toMatchObject({ field, code: 'gouging' });
+      expect(e[0].message).toContain('at every slope');
+      const single = await runMain([...tool, ...radii, '--slope', '45', '--json']);
+      expect(single.code).toBe(2);
+      expect(JSON.parse(single.stdout).errors[0].code).toBe('gouging');
+      const table = await runMain([...tool, ...radii, '--slope-sweep']);
+      expect(table.code).toBe(2);
+      expect(table.stdout).toBe('');
+      expect(table.stderr.trimEnd().split('\n')).toHaveLength(1);
+      expect(table.stderr).toMatch(/^error: --cross-radius: Cross radius Rc .*too tight for this tool at every slope/);
+    }
+  });
+
+  it('a table of 31 slopes; the combinations that do not exist are one-line usage errors', async () => {
     const r = await run(['--R', '3', '--Rcr', '1', '--h', '0.05', '--slope-sweep']);
     expect(r.code).toBe(0);
     const lines = r.stdout.split('\n');
@@ -88,13 +112,13 @@ describe('--slope-sweep', () => {
       ['--step-down', '1'],
       ['--passes', 'waterline', '--horizontal-step', '1'],
     ]) {
-      const u = await run(['--R', '3', '--Rcr', '1', '--h', '0.05', '--slope-sweep', ...args]);
+      const u = await runMain(['--R', '3', '--Rcr', '1', '--h', '0.05', '--slope-sweep', ...args]);
       expect(u.code, args.join(' ')).toBe(2);
       expect(u.stderr.trimEnd().split('\n'), args.join(' ')).toHaveLength(1);
     }
-    const noH = await run(['--R', '3', '--Rcr', '1', '--slope-sweep']);
+    const noH = await runMain(['--R', '3', '--Rcr', '1', '--slope-sweep']);
     expect(noH.stderr).toMatch(/--slope-sweep needs the scallop height --h/);
-    const wall = await run(['--R', '3', '--Rcr', '1', '--h', '5', '--slope-sweep', '--json']);
+    const wall = await runMain(['--R', '3', '--Rcr', '1', '--h', '5', '--slope-sweep', '--json']);
     expect(wall.code).toBe(2);
     expect(JSON.parse(wall.stdout).errors[0].field).toBe('h');
   }, 30_000);

@@ -72,6 +72,40 @@ describe('saved tools', () => {
     expect(s.tools[0]?.name).toBe(`t${SAVED_TOOLS_MAX + 4}`);
   });
 
+  it('more saved tools than the cap: the newest SAVED_TOOLS_MAX kept, the rest said to be over it (not unreadable)', () => {
+    const many = (count: number) => JSON.stringify({ tools: Array.from({ length: count }, (_, i) => tool(`t${i}`)) });
+    const read = readSavedTools(many(30_000));
+    expect(read.tools).toHaveLength(SAVED_TOOLS_MAX);
+    expect(read.tools.at(-1)?.name).toBe(`t${SAVED_TOOLS_MAX - 1}`);
+    expect(read.problem).toBe('29800 saved tools were over the limit of 200 and left out (the 200 newest are kept).');
+    expect(readSavedTools(many(SAVED_TOOLS_MAX + 1)).problem).toBe(
+      '1 saved tool was over the limit of 200 and left out (the 200 newest are kept).',
+    );
+    // Exactly at the cap: all kept, nothing to say.
+    const atCap = readSavedTools(many(SAVED_TOOLS_MAX));
+    expect(atCap.tools).toHaveLength(SAVED_TOOLS_MAX);
+    expect(atCap.problem).toBeNull();
+  });
+
+  it('unreadable entries and entries over the cap are counted apart; an unreadable one does not take a kept place', () => {
+    const list = [
+      tool('bad', 6, 4),
+      null,
+      ...Array.from({ length: SAVED_TOOLS_MAX }, (_, i) => tool(`t${i}`)),
+      tool('also bad', -1),
+      ...Array.from({ length: 4 }, (_, i) => tool(`old${i}`)),
+    ];
+    const read = readSavedTools(JSON.stringify({ tools: list }));
+    expect(read.tools.map((t) => t.name)).toEqual(Array.from({ length: SAVED_TOOLS_MAX }, (_, i) => `t${i}`));
+    expect(read.problem).toBe(
+      '2 saved tools could not be read and were left out. ' +
+        '5 saved tools were over the limit of 200 and left out (the 200 newest are kept).',
+    );
+    expect(readSavedTools(JSON.stringify({ tools: [tool('ok'), 'x'] })).problem).toBe(
+      '1 saved tool could not be read and was left out.',
+    );
+  });
+
   it('a storage that throws (disabled, full) keeps the list in memory with a line', () => {
     const throwing: ToolStorage = {
       getItem: () => {

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { URL_PARAMS } from '../../src/core/input/fields';
 import { convertState, defaultState, parseUrl, toSearch } from '../../src/ui/state';
 
 describe('URL state and units', () => {
@@ -25,6 +26,44 @@ describe('URL state and units', () => {
     expect(p.notices.join(' ')).toMatch(/h is missing/);
     expect(parseUrl('').notices).toEqual([]);
     expect(parseUrl('?R=1e999').notices.join(' ')).toMatch(/not a number/);
+  });
+
+  it('a key given twice (unit=mm ... unit=inch, a second h=): the first is read and a notice names the value ignored', () => {
+    const p = parseUrl('?unit=mm&R=3&Rcr=1&rho=5&h=0.05&unit=inch&h=0.07');
+    expect(p.state.unit).toBe('mm');
+    expect(p.state.fields.h).toBe('0.05');
+    expect(p.notices).toEqual([
+      'unit is in the link 2 times; using the first, unit="mm" (unit="inch" ignored).',
+      'h is in the link 2 times; using the first, h="0.05" (h="0.07" ignored).',
+    ]);
+    // The same question without the repeats reads the same state, with nothing to say.
+    const plain = parseUrl('?unit=mm&R=3&Rcr=1&rho=5&h=0.05');
+    expect(plain.notices).toEqual([]);
+    expect(p.state).toEqual(plain.state);
+    // A repeated value equal to the first is still a repeat (the link says two things).
+    expect(parseUrl('?R=3&Rcr=1&rho=5&h=0.05&rho=5').notices).toEqual([
+      'rho is in the link 2 times; using the first, rho="5" (rho="5" ignored).',
+    ]);
+  });
+
+  it('every parameter the page reads is reported when repeated; thousands of repeats make one short notice', () => {
+    for (const name of URL_PARAMS) {
+      const notices = parseUrl(`?${name}=first&${name}=second`).notices;
+      expect(notices, name).toContain(
+        `${name} is in the link 2 times; using the first, ${name}="first" (${name}="second" ignored).`,
+      );
+      expect(
+        notices.filter((n) => n.includes('in the link 2 times')),
+        name,
+      ).toHaveLength(1);
+    }
+    const flood = parseUrl(`?R=3&Rcr=1&rho=5${'&h=0.0123456789012345678901234'.repeat(5000)}`).notices;
+    expect(flood).toEqual([
+      'h is in the link 5000 times; using the first, h="0.012345678901234567" ' +
+        '(h="0.012345678901234567", h="0.012345678901234567", h="0.012345678901234567" and 4996 more ignored).',
+    ]);
+    // Keys the page does not read are not its business.
+    expect(parseUrl('?R=3&Rcr=1&rho=5&h=0.05&utm=a&utm=b').notices).toEqual([]);
   });
 
   it('converts between mm and inch, keeps angles and invalid text as they are', () => {

@@ -49,10 +49,10 @@ export interface InputErrorOf<F extends AnyFieldName> {
   readonly code: InputErrorCode;
   /** The value as given, as text (what the user typed, or the number). */
   readonly got: string;
-  /** The bound it broke: mm for lengths, degrees for angles; null when there is none. */
-  readonly limit: number | null;
-  /** For `flank-wall` and `shank-cuts`: the side (right is +Y, the side the tool tilts to). */
-  readonly side: 'right' | 'left' | null;
+  /** The bound it broke: mm for lengths, degrees for angles; left out when there is none. */
+  readonly limit?: number;
+  /** For `flank-wall` and `shank-cuts`: the side (right is +Y, the side the tool tilts to); else left out. */
+  readonly side?: 'right' | 'left';
   /**
    * For `shank-gouging`: the cylinder's axis and the shank's lean from the surface normal seen along
    * it (degrees), which set what would help.
@@ -61,14 +61,15 @@ export interface InputErrorOf<F extends AnyFieldName> {
   /**
    * For `radius-gouging`: what this radius must be with the other held (`kind` as gouging.ts's
    * RadiusLimit: `concave-at-least`, `convex-at-most`, `not-concave`, `none`), the other radius held
-   * (signed mm, Infinity straight), and what the other radius must be with this one held.
+   * (signed mm; left out when it is straight), and what the other radius must be with this one held
+   * (its magnitude, mm, for the two bounded kinds; else left out).
    */
   readonly radiusLimit?: {
     readonly kind: 'concave-at-least' | 'convex-at-most' | 'not-concave' | 'none';
-    readonly heldMm: number;
+    readonly heldMm?: number;
     readonly other: {
       readonly kind: 'any' | 'concave-at-least' | 'convex-at-most' | 'not-concave' | 'none';
-      readonly radiusMm: number | null;
+      readonly radiusMm?: number;
     };
   };
   /** The message in mm, ready to show as it is. */
@@ -126,7 +127,8 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
   const u = unitSymbol(unit);
   const scale = half ? 0.5 : diameter && e.field === 'R' ? 2 : 1;
   const length = (mm: number) => `${formatInputNumber(fromMm(mm * scale, unit))} ${u}`;
-  const limit = e.limit === null ? '' : isLengthField(e.field) ? length(e.limit) : `${formatAngleDeg(e.limit)} degrees`;
+  const limit =
+    e.limit === undefined ? '' : isLengthField(e.field) ? length(e.limit) : `${formatAngleDeg(e.limit)} degrees`;
   const shown = options.typed ?? e.got;
   const got = `(got ${shown.length > 24 ? `${shown.slice(0, 21)}...` : shown})`;
   switch (e.code) {
@@ -159,7 +161,7 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
     case 'not-an-axis':
       return `${label} must be feed or cross ${got.replace('(got ', '(got "').replace(/\)$/, '")')}.`;
     case 'gouging':
-      return e.limit === null || !Number.isFinite(e.limit)
+      return e.limit === undefined || !Number.isFinite(e.limit)
         ? `This tool gouges a concave cylinder of any radius with this axis and posture ${got}: a flat bottom without lead reaches below the surface on both sides of the contact. Add lead or tilt, or use a ball end.`
         : options.radiusAsMagnitude === true
           ? `${label}: a concave cylinder must have a radius of at least ${length(Math.abs(e.limit))} for this tool and posture ${got}; a tighter one is gouged (the tool reaches below the surface away from the contact).`
@@ -170,7 +172,7 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
         e.shankLean?.axis === 'cross'
           ? 'Less lead would help (seen along the axis the shank leans by the lead; tilt does not matter).'
           : 'Less tilt or lead would help.';
-      if (e.limit === null || !Number.isFinite(e.limit))
+      if (e.limit === undefined || !Number.isFinite(e.limit))
         return `The shank of this tool crosses the wall of a concave cylinder of any radius with this axis and posture ${got}: seen along the cylinder's axis it leans ${lean} degrees from the surface normal, and at 45 degrees or more it meets the wall below the axis's height. ${help}`;
       const radius =
         options.radiusAsMagnitude === true
@@ -183,7 +185,7 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
         ? `${label} must be at most D/2 = ${limit} ${got}; Rcr = D/2 is a ball end mill.`
         : `${label} must not exceed the tool radius R = ${limit} ${got}; Rcr = R is a ball end mill.`;
     case 'flank-wall':
-      return e.side === null
+      return e.side === undefined
         ? `${label} must be below the profile's full height (R - Rcr) sin(rho) + Rcr = ${limit} ${got}; at or above it the tool flank leaves a wall, not a scallop.`
         : `${label} must be below ${limit}, the height of the ${e.side} flank's widest point ${got}; at or above it that flank leaves a wall, not a scallop.`;
     case 'shank-cuts':
@@ -193,7 +195,7 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
     case 'wall-only':
       return `${label} cannot be answered ${got}: in this posture the tool cuts a step at any step-over (a flank or the shank rises straight from the contact, as a tilted flat end does), so no scallop forms. Add a corner radius, or lead, or less tilt.`;
     case 'beyond-max-ra':
-      return e.limit === null || !(e.limit > 0)
+      return e.limit === undefined || !(e.limit > 0)
         ? `${label} cannot be reached ${got}: this tool in this posture leaves no scallop (a flat bottom lying on the surface), so Ra = 0 at any step-over up to its diameter.`
         : `${label} must be below ${limit} ${got}, the largest Ra this tool, posture and pattern leave on this surface; passes far enough apart to leave more leave a wall, not a scallop.`;
     case 'radius-gouging':
@@ -209,8 +211,9 @@ function radiusGougingText(e: AnyInputError, label: string, length: (mm: number)
   const me = feed ? 'Rf' : 'Rc';
   const them = feed ? 'Rc' : 'Rf';
   const r = e.radiusLimit;
-  const held = r === undefined || !Number.isFinite(r.heldMm) ? `${them} straight` : `${them} = ${length(r.heldMm)}`;
-  const mag = e.limit === null ? '' : length(Math.abs(e.limit));
+  const held =
+    r?.heldMm === undefined || !Number.isFinite(r.heldMm) ? `${them} straight` : `${them} = ${length(r.heldMm)}`;
+  const mag = e.limit === undefined ? '' : length(Math.abs(e.limit));
   let need: string;
   switch (r?.kind ?? 'none') {
     case 'concave-at-least':
@@ -229,9 +232,9 @@ function radiusGougingText(e: AnyInputError, label: string, length: (mm: number)
   const otherText =
     o === undefined
       ? ''
-      : o.kind === 'concave-at-least' && o.radiusMm !== null
+      : o.kind === 'concave-at-least' && o.radiusMm !== undefined
         ? `; or, with ${me} held, a concave ${them} of at least ${length(o.radiusMm)}`
-        : o.kind === 'convex-at-most' && o.radiusMm !== null
+        : o.kind === 'convex-at-most' && o.radiusMm !== undefined
           ? `; or, with ${me} held, a convex ${them} of at most ${length(o.radiusMm)}`
           : o.kind === 'not-concave'
             ? `; or, with ${me} held, a straight or convex ${them}`
@@ -241,7 +244,10 @@ function radiusGougingText(e: AnyInputError, label: string, length: (mm: number)
   return `${need}${otherText} (the tool reaches below the surface away from the contact).`;
 }
 
-/** An input error as data, with its message in mm. */
+/**
+ * An input error as data, with its message in mm. A limit or side that is null, undefined or not
+ * finite is left out of the object (never a null member).
+ */
 export function inputError<F extends AnyFieldName>(
   field: F,
   code: InputErrorCode,
@@ -250,9 +256,9 @@ export function inputError<F extends AnyFieldName>(
   side: 'right' | 'left' | null = null,
   shankLean?: InputErrorOf<F>['shankLean'],
 ): InputErrorOf<F> {
-  const data =
-    shankLean === undefined
-      ? { field, code, got, limit, side, message: '' }
-      : { field, code, got, limit, side, shankLean, message: '' };
+  const data: { -readonly [K in keyof InputErrorOf<F>]: InputErrorOf<F>[K] } = { field, code, got, message: '' };
+  if (limit !== null && Number.isFinite(limit)) data.limit = limit;
+  if (side !== null) data.side = side;
+  if (shankLean !== undefined) data.shankLean = shankLean;
   return { ...data, message: describeInputError(data, 'mm') };
 }

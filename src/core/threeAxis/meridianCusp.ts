@@ -27,6 +27,9 @@
 import type { Meridian, PassPair } from './meridianPasses';
 import { type MeridianTool, profileHeightMm } from './meridianTool';
 
+/** Relative tolerance (of Rcr) for the upper boundary passing through the corner top K1. */
+const K1_TOLERANCE = 1e-12;
+
 /** The cusp of a pair of passes, filled in place. */
 export interface MeridianCusp {
   /** The cusp point, mm (frame of meridianTool.ts). */
@@ -62,10 +65,12 @@ export function fillCusp(t: MeridianTool, m: Meridian, pair: PassPair, out: Meri
   const { R, rcr, rb } = t;
   const dS = pair.dS;
   const dz = pair.dz;
-  // The upper tool's boundary below the lower tool's corner top K1 = tip1 + (-R, Rcr)?
+  // The upper tool's boundary below the lower tool's corner top K1 = tip1 + (-R, Rcr)? Through K1
+  // itself (to rounding) the corner's end still forms the cusp: at 90 degrees on a concave meridian
+  // with Rcr = |Rc| / 2 the boundary passes through K1 at every L, and that is answered as just below 90.
   const gK = profileHeightMm(t, dS - R);
   out.onBottom = false;
-  if (!(rcr - dz - gK > 0)) {
+  if (!(rcr - dz - gK > -K1_TOLERANCE * rcr)) {
     out.onShank = true;
     out.s = pair.tipS1 - R;
     out.z = pair.tipZ0 + gK;

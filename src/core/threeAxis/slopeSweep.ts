@@ -7,20 +7,36 @@
  * - Raster: the sloped plane at the raster angle psi (slopedPlane.ts).
  * - Waterline: the sloped plane (the default), or a surface of revolution whose radii Rf and Rc
  *   are held at every slope (exact for a sphere, Rf = Rc; a local model otherwise).
- * - The largest valid slope is where h reaches the slope's limit (the shank's, or a flank's, or
- *   the end of the surface), found by a scan in 0.5 degree steps and bisection; 90 degrees (open:
- *   a vertical wall leaves no scallop) when h never does. Slopes `largest k / (count - 1)`, the
- *   last one a hair inside (`1e-9` relative) when the largest is a limit itself.
+ * - h is valid at a slope where the single question (`--slope`) is answered there: below the
+ *   slope's limit (the shank's, or a flank's, or the end of the surface) and, on a surface of
+ *   revolution, without gouging. The largest valid slope is found by a scan in 0.5 degree steps
+ *   and bisection; just below 90 degrees (open: a vertical wall leaves no scallop) when h never
+ *   reaches a limit, 90 itself where the meridian is concave and h is valid there. Slopes
+ *   `largest k / (count - 1)`, the last one a hair inside (`1e-9` relative) below 90.
+ * - No valid slope is an input error, as the single question's: the gouging error when the tool
+ *   gouges at every slope (naming the radius that must grow for it to fit at some slope, or "only
+ *   a straight one"), else h's, with the largest limit over the slopes.
  * - The constant step: given, or by default the flat floor's step-over for h,
  *   `Lxy0 = 2 (R - Rcr + sqrt(2 Rcr h - h^2))` (2R for a flat end), used as `Lxy` (raster) or, for
  *   waterline, typed as the step-down `dz` (a common practice to compare; on a flat floor a
  *   step-down means nothing, so the waterline sweep has no step and no cusp at slope 0).
  */
 import { flankLimits, postureShape } from '../tool/posture';
-import type { ThreeAxisErrorCode } from './errors';
-import { slopedPlaneForward, slopedPlaneInverse, type ThreeAxisPasses } from './slopedPlane';
+import {
+  checkHeight,
+  checkStep,
+  formatNumber,
+  MIN_THREE_AXIS_LENGTH_MM,
+  type ThreeAxisError,
+  type ThreeAxisErrorCode,
+  type ThreeAxisResult,
+  threeAxisError,
+} from './errors';
+import { type SlopedPlaneCase, slopedPlaneForward, slopedPlaneInverse, type ThreeAxisPasses } from './slopedPlane';
 import { slopePosture } from './slopePosture';
-import { waterlineForward, waterlineHeightLimitMm, waterlineInverse } from './waterlineRevolution';
+import { checkCase, gougingError } from './waterlineErrors';
+import { type RevolutionCase, waterlineForward, waterlineHeightLimitMm, waterlineInverse } from './waterlineRevolution';
+import { forwardCore, setupOf } from './waterlineSolve';
 
 /** Input of the slope sweep (mm, degrees). */
 export interface SlopeSweepInput {
@@ -84,6 +100,55 @@ function onRevolution(input: SlopeSweepInput): boolean {
   );
 }
 
+/** The sweep's surface of revolution at a slope (degrees). */
+function revolutionCase(input: SlopeSweepInput, slopeDeg: number): RevolutionCase {
+  return {
+    toolRadiusMm: input.toolRadiusMm,
+    cornerRadiusMm: input.cornerRadiusMm,
+    slopeDeg,
+    feedRadiusMm: input.feedRadiusMm ?? null,
+    crossRadiusMm: input.crossRadiusMm ?? null,
+  };
+}
+
+/** The sweep's sloped plane at a slope (degrees). */
+function planeCase(input: SlopeSweepInput, slopeDeg: number): SlopedPlaneCase {
+  return {
+    toolRadiusMm: input.toolRadiusMm,
+    cornerRadiusMm: input.cornerRadiusMm,
+    slopeDeg,
+    passes: input.passes,
+    rasterAngleDeg: input.rasterAngleDeg,
+  };
+}
+
+/** What h meets at one slope: an answer, gouging (a surface of revolution only), or a limit (or a refused slope). */
+type SlopeVerdict = 'ok' | 'gouge' | 'limit';
+
+/** The single question's verdict on h at a slope (without wording its error: the scan asks it often). */
+function verdictAt(input: SlopeSweepInput, slopeDeg: number): SlopeVerdict {
+  if (onRevolution(input)) {
+    const c = revolutionCase(input, slopeDeg);
+    if (checkCase(c).length > 0) return 'limit';
+    const kind = forwardCore(setupOf(c), input.hMm).kind;
+    return kind === 'ok' ? 'ok' : kind === 'gouge' ? 'gouge' : 'limit';
+  }
+  return slopeDeg < 90 && input.hMm < heightLimitAt(input, slopeDeg) ? 'ok' : 'limit';
+}
+
+/** The scan's slopes (degrees): 0.5 apart below 90 (from 0.5 for waterline), and 90 on a concave meridian. */
+function scanSlopes(input: SlopeSweepInput): number[] {
+  const out: number[] = [];
+  for (let a = input.passes === 'waterline' ? 0.5 : 0; a < 90; a += 0.5) out.push(a);
+  if (onRevolution(input) && (input.crossRadiusMm ?? 0) < 0) out.push(90);
+  return out;
+}
+
+/** The verdicts over the scan's slopes. */
+function scan(input: SlopeSweepInput): Array<{ readonly slopeDeg: number; readonly verdict: SlopeVerdict }> {
+  return scanSlopes(input).map((slopeDeg) => ({ slopeDeg, verdict: verdictAt(input, slopeDeg) }));
+}
+
 /** The height limit (mm) at a slope, for the sweep's strategy (Infinity: none, a flat end on a flat floor). */
 function heightLimitAt(input: SlopeSweepInput, slopeDeg: number): number {
   if (onRevolution(input)) return revolutionLimit(input, slopeDeg);
@@ -95,26 +160,25 @@ function heightLimitAt(input: SlopeSweepInput, slopeDeg: number): number {
 
 function revolutionLimit(input: SlopeSweepInput, slopeDeg: number): number {
   if (slopeDeg === 0) return Number.POSITIVE_INFINITY;
-  return waterlineHeightLimitMm({
-    toolRadiusMm: input.toolRadiusMm,
-    cornerRadiusMm: input.cornerRadiusMm,
-    slopeDeg,
-    feedRadiusMm: input.feedRadiusMm ?? null,
-    crossRadiusMm: input.crossRadiusMm ?? null,
-  });
+  return waterlineHeightLimitMm(revolutionCase(input, slopeDeg));
 }
 
 /**
- * The largest slope (degrees, below 90) at which `h < limit`: a scan in 0.5 degree steps for the
- * last valid one (a bowl's range starts above 0: its next pass would be past the bottom at small
- * slopes), then bisection up to the first invalid one (90 is never valid: a vertical wall). 0 when
- * no slope is valid.
+ * The largest slope (degrees) at which h is valid (the single question answered, {@link verdictAt}):
+ * 90 where that is valid (a concave meridian), else a scan in 0.5 degree steps for the last valid
+ * one (a bowl's range starts above 0: its next pass would be past the bottom at small slopes), then
+ * bisection up to the first invalid one (below 90: a vertical wall). 0 when no slope is valid.
  */
 export function largestValidSlopeDeg(input: SlopeSweepInput): number {
-  const ok = (a: number) => a < 90 && input.hMm < heightLimitAt(input, a);
+  return largestOfScan(input, scan(input));
+}
+
+function largestOfScan(input: SlopeSweepInput, verdicts: ReturnType<typeof scan>): number {
+  const ok = (a: number) => verdictAt(input, a) === 'ok';
   let last = -1;
-  for (let a = input.passes === 'waterline' ? 0.5 : 0; a < 90; a += 0.5) if (ok(a)) last = a;
+  for (const v of verdicts) if (v.verdict === 'ok') last = v.slopeDeg;
   if (last < 0) return 0;
+  if (last === 90) return 90;
   let lo = last;
   let hi = Math.min(90, last + 0.5);
   for (let i = 0; i < 60 && hi - lo > 1e-12; i++) {
@@ -160,30 +224,102 @@ export function rasterWaterlineCrossingDeg(
   return 0.5 * (lo + hi);
 }
 
-/** The sweep (see the module comment). Inputs as the solvers take them; refused slopes carry nulls. */
-export function slopeSweep(input: SlopeSweepInput): SlopeSweep {
+/**
+ * The sweep (see the module comment), or the input errors: the tool, the raster angle, the radii
+ * and h (at least 1e-9 mm) and the constant step out of their fixed ranges, or no slope at which h
+ * is valid (gouging at every slope; h at or above the limit at every slope). Refused slopes inside
+ * the range carry nulls.
+ */
+export function slopeSweep(input: SlopeSweepInput): ThreeAxisResult<SlopeSweep> {
+  const errors = rangeErrors(input);
+  if (errors.length > 0) return { ok: false, errors };
+  const verdicts = scan(input);
+  if (!verdicts.some((v) => v.verdict === 'ok')) return { ok: false, errors: [noSlopeError(input, verdicts)] };
   const count = Math.max(2, Math.round(input.count ?? 200));
   const floor = flatFloorStepMm(input.toolRadiusMm, input.cornerRadiusMm, input.hMm);
   const programmed = input.programmedStepMm ?? floor;
-  const largest = largestValidSlopeDeg(input);
+  const largest = largestOfScan(input, verdicts);
   const points: SlopeSweepPoint[] = [];
   const revolution = onRevolution(input);
   for (let i = 0; i < count; i++) {
     let a = (largest * i) / (count - 1);
-    if (i === count - 1 && a > 0) a *= 1 - 1e-9;
+    if (i === count - 1 && a > 0 && a < 90) a *= 1 - 1e-9;
     points.push(revolution ? revolutionPoint(input, a, programmed) : planePoint(input, a, programmed));
   }
-  return { points, largestSlopeDeg: largest, flatFloorStepMm: floor, programmedStepMm: programmed };
+  return {
+    ok: true,
+    value: { points, largestSlopeDeg: largest, flatFloorStepMm: floor, programmedStepMm: programmed },
+  };
+}
+
+/** The errors of the fixed ranges (tool, raster angle, radii; h and the constant step at least 1e-9 mm). */
+function rangeErrors(input: SlopeSweepInput): ThreeAxisError[] {
+  const slopeFree = (e: ThreeAxisError) => e.field !== 'slope' && e.field !== 'h';
+  let fixed: readonly ThreeAxisError[];
+  if (onRevolution(input)) fixed = checkCase(revolutionCase(input, 45));
+  else {
+    // At 45 degrees (valid for both strategies) with an h below any limit: only the ranges can fail.
+    const r = slopedPlaneForward(planeCase(input, 45), MIN_THREE_AXIS_LENGTH_MM);
+    fixed = r.ok ? [] : r.errors;
+  }
+  const step = input.programmedStepMm;
+  return [
+    ...fixed.filter(slopeFree),
+    ...checkHeight(input.hMm),
+    ...(step === undefined ? [] : checkStep(input.passes === 'waterline' ? 'stepDown' : 'horizontalStep', step)),
+  ];
+}
+
+/**
+ * The error when h is valid at no slope: gouging at every slope (the radius that must grow for the
+ * tool to fit at some slope), or h at or above the limit wherever the tool does not gouge (the
+ * largest limit over the scan, where it is; a slope's own error where that limit is below 1e-9 mm,
+ * as for a flat end in waterline passes).
+ */
+function noSlopeError(input: SlopeSweepInput, verdicts: ReturnType<typeof scan>): ThreeAxisError {
+  const limited = verdicts.filter((v) => v.verdict === 'limit');
+  if (limited.length === 0) {
+    return gougingError(revolutionCase(input, 45), 'at every slope', (cc) => {
+      const other = { ...input, feedRadiusMm: cc.feedRadiusMm, crossRadiusMm: cc.crossRadiusMm };
+      return scanSlopes(other).every((a) => verdictAt(other, a) === 'gouge');
+    });
+  }
+  let best = limited[0] as (typeof limited)[number];
+  let bestMm = Number.NEGATIVE_INFINITY;
+  for (const v of limited) {
+    const mm = heightLimitAt(input, v.slopeDeg);
+    if (mm > bestMm) {
+      best = v;
+      bestMm = mm;
+    }
+  }
+  const own = onRevolution(input)
+    ? waterlineForward(revolutionCase(input, best.slopeDeg), input.hMm)
+    : slopedPlaneForward(planeCase(input, best.slopeDeg), input.hMm);
+  const error = own.ok ? null : own.errors[0];
+  if (!(bestMm >= MIN_THREE_AXIS_LENGTH_MM)) {
+    // A flat end in waterline passes: its own error holds at every slope.
+    if (error?.code === 'wall-only') return error;
+    return threeAxisError(
+      'h',
+      error?.code ?? 'shank-cuts',
+      input.hMm,
+      bestMm,
+      `cannot be answered at any slope (got ${input.hMm}): at every slope the tool gouges or the scallop it can leave is below ${MIN_THREE_AXIS_LENGTH_MM} mm (the shank or a flank, not the corner, forms the cusp at any step).`,
+    );
+  }
+  const where = onRevolution(input) ? 'the flanks, the shank or the end of the surface' : 'the flanks or the shank';
+  return threeAxisError(
+    'h',
+    error?.code ?? 'flank-wall',
+    input.hMm,
+    bestMm,
+    `must be below ${formatNumber(bestMm)} mm to be answered at some slope (got ${input.hMm}): at every slope it is at or above the limit, where ${where} leave a wall, not a scallop (the largest limit on slopes 0.5 degrees apart: ${formatNumber(bestMm)} mm, at ${formatNumber(best.slopeDeg)} degrees).`,
+  );
 }
 
 function planePoint(input: SlopeSweepInput, slopeDeg: number, programmed: number): SlopeSweepPoint {
-  const c = {
-    toolRadiusMm: input.toolRadiusMm,
-    cornerRadiusMm: input.cornerRadiusMm,
-    slopeDeg,
-    passes: input.passes,
-    rasterAngleDeg: input.rasterAngleDeg,
-  };
+  const c = planeCase(input, slopeDeg);
   const waterlineFloor = input.passes === 'waterline' && slopeDeg === 0;
   const posture = slopePosture(slopeDeg, input.passes === 'waterline' ? 90 : input.rasterAngleDeg);
   const f = waterlineFloor
@@ -205,17 +341,13 @@ function planePoint(input: SlopeSweepInput, slopeDeg: number, programmed: number
 }
 
 function revolutionPoint(input: SlopeSweepInput, slopeDeg: number, programmed: number): SlopeSweepPoint {
-  const c = {
-    toolRadiusMm: input.toolRadiusMm,
-    cornerRadiusMm: input.cornerRadiusMm,
-    slopeDeg,
-    feedRadiusMm: input.feedRadiusMm ?? null,
-    crossRadiusMm: input.crossRadiusMm ?? null,
-  };
+  const c = revolutionCase(input, slopeDeg);
+  // At slope 0 (a dome's top, a bowl's bottom) every level is the same: dz 0 where the slopes just
+  // above it are answered (a dome), no number where they are not (a bowl: past its bottom).
   if (slopeDeg === 0)
     return {
       slopeDeg,
-      stepMm: 0,
+      stepMm: verdictAt(input, 1e-6) === 'ok' ? 0 : null,
       intervalMm: null,
       leadDeg: 0,
       tiltDeg: 0,

@@ -6,7 +6,7 @@
  * isNumberText); the ranges are the solvers' own (errors.ts, slopedPlane.ts,
  * waterlineRevolution.ts), so each message names the constraint and its limit in mm or degrees.
  * The combinations that do not exist are refused here too: a slope with a lead or a tilt (the slope
- * sets them), a raster angle with waterline passes, a feed or cross radius with raster passes, a
+ * sets them), a raster angle other than 90 degrees with waterline passes (90, the contour, is theirs), a feed or cross radius with raster passes, a
  * horizontal step with waterline passes and a step-down with raster passes.
  */
 
@@ -83,6 +83,9 @@ export interface ThreeAxisAnswer {
 
 const STRATEGIES: readonly ThreeAxisPasses[] = ['raster', 'waterline'];
 
+/** The raster angle of waterline passes (they follow the contour), degrees. */
+export const WATERLINE_RASTER_ANGLE_DEG = 90;
+
 /** Text of a raw value, trimmed; undefined when not given (absent or empty). */
 function textOf(raw: unknown): string | undefined {
   if (raw === undefined || raw === null) return undefined;
@@ -132,7 +135,7 @@ function fromSolver(errors: readonly ThreeAxisError[]): ThreeAxisInputError[] {
 
 /**
  * Validates a three-axis problem: the tool, the slope (degrees), the strategy (`raster` by
- * default), the raster angle (raster only; degrees, default 0), the signed feed and cross radii
+ * default), the raster angle (raster: degrees, default 0; waterline: 90 or none), the signed feed and cross radii
  * (waterline only; mm; either one makes the surface one of revolution), and the quantity given
  * (`h`, `interval` L along the surface, `horizontalStep` Lxy for raster, `stepDown` dz for
  * waterline; mm). Fixed ranges are checked by the solver ({@link solveThreeAxis}); this checks the
@@ -167,17 +170,21 @@ export function validateThreeAxis(
     errors.push(
       inputError('passes', 'not-a-strategy', passesText, `must be raster or waterline (got "${passesText}").`),
     );
+  // Waterline passes follow the contour, psi = 90 by definition: a raster angle of 90 (a batch's
+  // one rasterAngle column for mixed rows) or none is theirs; any other value is refused.
   const psiText = textOf(raw.rasterAngle);
-  if (passes === 'waterline' && psiText !== undefined)
+  const psiGiven = numberOf('rasterAngle', raw.rasterAngle, errors, false);
+  if (passes === 'waterline' && psiGiven !== undefined && psiGiven !== WATERLINE_RASTER_ANGLE_DEG)
     errors.push(
       inputError(
         'rasterAngle',
         'not-with',
-        psiText,
-        'is for raster passes only: waterline passes follow the contour (psi = 90 degrees).',
+        psiText ?? psiGiven,
+        `must be ${WATERLINE_RASTER_ANGLE_DEG} degrees or left empty for waterline passes (got ${psiText}): they follow the contour, psi = ${WATERLINE_RASTER_ANGLE_DEG}; other raster angles are for raster passes.`,
+        WATERLINE_RASTER_ANGLE_DEG,
       ),
     );
-  const psi = passes === 'waterline' ? 90 : (numberOf('rasterAngle', raw.rasterAngle, errors, false) ?? 0);
+  const psi = passes === 'waterline' ? WATERLINE_RASTER_ANGLE_DEG : (psiGiven ?? 0);
   let feed: number | null = null;
   let cross: number | null = null;
   for (const field of ['feedRadius', 'crossRadius'] as const) {

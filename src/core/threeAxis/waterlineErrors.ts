@@ -5,6 +5,7 @@
 import {
   checkTool,
   formatNumber,
+  MIN_THREE_AXIS_LENGTH_MM,
   THREE_AXIS_SURFACE_RADIUS_RANGE_MM,
   type ThreeAxisError,
   type ThreeAxisField,
@@ -24,7 +25,13 @@ import {
   someShankL,
 } from './waterlineSolve';
 
-/** Errors of the case's own inputs (tool, slope, radii). */
+/**
+ * Errors of the case's own inputs (tool, slope, radii). A slope of 90 degrees is answered where the
+ * meridian is concave (a wall that flares out below, as into a floor fillet: adjacent passes touch
+ * at different slopes and leave a scallop, continuous with 89.999); where it is straight (a
+ * vertical plane or cylinder wall) the side cuts it flat, and where it is convex the surface below
+ * overhangs: both refused.
+ */
 export function checkCase(c: RevolutionCase): ThreeAxisError[] {
   const errors = checkTool(c.toolRadiusMm, c.cornerRadiusMm);
   const a = c.slopeDeg;
@@ -40,7 +47,7 @@ export function checkCase(c: RevolutionCase): ThreeAxisError[] {
           : `must be above 0 and at most 90 degrees (got ${a}).`,
       ),
     );
-  else if (a === 90)
+  else if (a === 90 && c.crossRadiusMm === null)
     errors.push(
       threeAxisError(
         'slope',
@@ -48,6 +55,16 @@ export function checkCase(c: RevolutionCase): ThreeAxisError[] {
         a,
         90,
         'of 90 degrees is a vertical wall: the side of the upright tool cuts it flat, so no scallop forms at any step-down and there is no step to compute.',
+      ),
+    );
+  else if (a === 90 && c.crossRadiusMm !== null && c.crossRadiusMm > 0)
+    errors.push(
+      threeAxisError(
+        'slope',
+        'past-surface',
+        a,
+        90,
+        "must be below 90 degrees on a convex meridian (got 90): below the contact the surface turns under into an overhang, so the next pass down would lie past the vertical, out of the upright tool's reach.",
       ),
     );
   const [lo, hi] = THREE_AXIS_SURFACE_RADIUS_RANGE_MM;
@@ -80,6 +97,24 @@ const PAST_WORDS: Record<NonNullable<Setup['maxBy']>, string> = {
   axis: 'across the axis of revolution',
 };
 
+/**
+ * The shank's limit on `field` (h, dz or L; mm) as an error. A limit below the smallest length
+ * accepted (steep concave walls, whose corner is small beside the meridian: at 90 degrees the
+ * limit is 0) means that the shank forms the cusp at any step: said so, without a limit to stay below.
+ */
+function shankError(field: ThreeAxisField, got: number, limit: number): ThreeAxisError {
+  const why = "the next pass's shank (its vertical side, above the corner), not its corner,";
+  return threeAxisError(
+    field,
+    'shank-cuts',
+    got,
+    limit,
+    limit < MIN_THREE_AXIS_LENGTH_MM
+      ? `cannot be answered at this slope (got ${got}): ${why} forms the cusp at any step, leaving a step in the wall, not a scallop (the limit here is below ${MIN_THREE_AXIS_LENGTH_MM} mm).`
+      : `must be below ${formatNumber(limit)} mm at this slope (got ${got}): beyond it ${why} would form the cusp.`,
+  );
+}
+
 /** Words an unsuccessful core as the error of `field` (the quantity given: h, dz or L). */
 export function coreError(c: RevolutionCase, s: Setup, r: Core, field: ThreeAxisField, got: number): ThreeAxisError {
   const gotText = `(got ${got})`;
@@ -92,32 +127,14 @@ export function coreError(c: RevolutionCase, s: Setup, r: Core, field: ThreeAxis
         null,
         'cannot be answered with a flat end (Rcr = 0) in waterline passes: the side of the lower pass rises straight from its contact, so it cuts a step at any step-down, not a scallop. Use a corner radius.',
       );
-    case 'shank': {
-      const limit = field === 'h' ? shankHeightAt(s, r.limitL) : stepOf(s, field, r.limitL);
-      return threeAxisError(
-        field,
-        'shank-cuts',
-        got,
-        limit,
-        `must be below ${formatNumber(limit)} mm at this slope ${gotText}: beyond it the next pass's shank (its vertical side, above the corner), not its corner, would form the cusp.`,
-      );
-    }
+    case 'shank':
+      return shankError(field, got, field === 'h' ? shankHeightAt(s, r.limitL) : stepOf(s, field, r.limitL));
     case 'past': {
       const where = s.maxBy === null ? 'beyond the surface' : PAST_WORDS[s.maxBy];
       if (field === 'h') {
         // The largest h: the shank's or the end of the surface's, whichever comes first.
         const shankL = someShankL(s);
-        if (shankL !== null) {
-          const L0 = shankStartL(s, shankL);
-          const limit = shankHeightAt(s, L0);
-          return threeAxisError(
-            'h',
-            'shank-cuts',
-            got,
-            limit,
-            `must be below ${formatNumber(limit)} mm at this slope ${gotText}: beyond it the next pass's shank (its vertical side, above the corner), not its corner, would form the cusp.`,
-          );
-        }
+        if (shankL !== null) return shankError('h', got, shankHeightAt(s, shankStartL(s, shankL)));
         const limit = cuspAt(s, s.maxL * (1 - 1e-12)).heightMm;
         return threeAxisError(
           'h',
@@ -137,9 +154,10 @@ export function coreError(c: RevolutionCase, s: Setup, r: Core, field: ThreeAxis
       );
     }
     case 'gouge':
-      return gougeError(c, r.pass, (cc) => {
+      return gougingError(c, r.pass === 0 ? 'at this slope' : 'at the next pass (further down, at its slope)', (cc) => {
         const ss = setupOf(cc);
-        return (field === 'h' ? forwardCore(ss, got) : inverseCore(ss, { field: field as 'stepDown', mm: got })).kind;
+        const kind = field === 'h' ? forwardCore(ss, got) : inverseCore(ss, { field: field as 'stepDown', mm: got });
+        return kind.kind === 'gouge';
       });
     case 'ok':
       throw new Error('not an error');
@@ -148,11 +166,11 @@ export function coreError(c: RevolutionCase, s: Setup, r: Core, field: ThreeAxis
 
 /**
  * The gouging error: which radius to change and its smallest magnitude with the other held, found
- * by bisection (on the logarithm of the magnitude) of the whole solve's verdict.
+ * by bisection (on the logarithm of the magnitude) of `gouges`, the verdict of the whole question
+ * (one solve, or a sweep over the slopes) for a case with that radius. `which` says where it gouges
+ * ("at this slope").
  */
-function gougeError(c: RevolutionCase, pass: 0 | 1, kindOf: (c: RevolutionCase) => Core['kind']): ThreeAxisError {
-  const which = pass === 0 ? 'at this slope' : 'at the next pass (further down, at its slope)';
-  const gouges = (cc: RevolutionCase) => kindOf(cc) === 'gouge';
+export function gougingError(c: RevolutionCase, which: string, gouges: (c: RevolutionCase) => boolean): ThreeAxisError {
   const fields = [
     ['crossRadius', c.crossRadiusMm],
     ['feedRadius', c.feedRadiusMm],

@@ -19,7 +19,9 @@
  *   side) would form the cusp (steep walls; a flat end, Rcr = 0, at any h); a next pass beyond the
  *   usable surface (past the vertical of a convex meridian, the bottom of a concave one, or the
  *   axis); gouging of either pass (revolutionGouging.ts), naming the radius to change and the
- *   smallest magnitude that fits with the other held; a vertical wall (alpha = 90: no scallop).
+ *   smallest magnitude that fits with the other held; a vertical wall (alpha = 90 on a straight
+ *   meridian: the side cuts it flat, no scallop) and alpha = 90 on a convex one (an overhang below).
+ *   On a concave meridian alpha = 90 is answered: the passes below are less steep and leave a scallop.
  *
  * Lengths mm, angles degrees at the interface.
  *
@@ -27,7 +29,14 @@
  */
 import { radToDeg } from '../input/units';
 import { newtonRoot } from '../math/rootFinder';
-import { checkHeight, checkStep, formatNumber, type ThreeAxisResult, threeAxisError } from './errors';
+import {
+  checkHeight,
+  checkStep,
+  formatNumber,
+  MIN_THREE_AXIS_LENGTH_MM,
+  type ThreeAxisResult,
+  threeAxisError,
+} from './errors';
 import { sinc } from './meridianPasses';
 import { checkCase, coreError } from './waterlineErrors';
 import {
@@ -120,16 +129,23 @@ export function waterlineCuspAbove(c: RevolutionCase, stepDownMm: number): Three
   const s = setupOf(c);
   const { k, alpha0 } = s.mer;
   const scale = 1 + s.tool.rcr * k;
+  // A corner at least as round as a concave meridian (Rcr >= |Rc|) fits nowhere on it: the inverse's gouging error.
+  if (!(scale > 0)) return waterlineInverse(c, { field: 'stepDown', mm: stepDownMm });
   const maxL = k > 0 ? alpha0 / k : k < 0 ? (Math.PI / 2 - alpha0) / -k : Number.POSITIVE_INFINITY;
   const dzOf = (L: number) => scale * L * sinc((k * L) / 2) * Math.sin(alpha0 - (k * L) / 2);
-  const beyond = () =>
-    threeAxisError(
+  const beyond = () => {
+    const limit = dzOf(maxL);
+    const where = k > 0 ? 'the top of the convex meridian' : 'the vertical of the concave meridian';
+    return threeAxisError(
       'stepDown',
       'past-surface',
       stepDownMm,
-      Number.isFinite(maxL) ? dzOf(maxL) : null,
-      `must be below ${formatNumber(dzOf(maxL))} mm here (got ${stepDownMm}): the pass above would lie beyond ${k > 0 ? 'the top of the convex meridian' : 'the vertical of the concave meridian'}.`,
+      limit,
+      limit < MIN_THREE_AXIS_LENGTH_MM
+        ? `cannot be answered here (got ${stepDownMm}): the contact is at ${where}, so there is no pass above it.`
+        : `must be below ${formatNumber(limit)} mm here (got ${stepDownMm}): the pass above would lie beyond ${where}.`,
     );
+  };
   if (Number.isFinite(maxL) && !(dzOf(maxL) > stepDownMm)) return { ok: false, errors: [beyond()] };
   const mismatch = {
     slope: 0,

@@ -26,7 +26,10 @@ export interface RevolutionCase {
   readonly toolRadiusMm: number;
   /** Corner radius Rcr, mm, 0 <= Rcr <= R. */
   readonly cornerRadiusMm: number;
-  /** Slope alpha at the CC point, degrees, 0 < alpha <= 90 (90 is refused: a vertical wall). */
+  /**
+   * Slope alpha at the CC point, degrees, 0 < alpha <= 90 (90 only on a concave meridian: a
+   * straight one is a vertical wall, cut flat; below a convex one the surface overhangs).
+   */
   readonly slopeDeg: number;
   /**
    * Signed normal radius along the feed (the horizontal circle), mm: > 0 convex (dome, boss),

@@ -76,7 +76,7 @@ export function solveThreeAxisRequest(request: ThreeAxisRequest): ThreeAxisReply
   let crossingDeg: number | null = null;
   if (!answer.noScallop && hMm >= 1e-9) {
     try {
-      sweep = slopeSweep({
+      const swept = slopeSweep({
         toolRadiusMm: c.toolRadiusMm,
         cornerRadiusMm: c.cornerRadiusMm,
         hMm,
@@ -87,6 +87,7 @@ export function solveThreeAxisRequest(request: ThreeAxisRequest): ThreeAxisReply
         // Inverse: the step typed, held constant; forward: the flat floor's step (the sweep's default).
         ...(p.quantity === 'h' || programmed === null ? {} : { programmedStepMm: programmed }),
       });
+      sweep = swept.ok ? swept.value : null;
       crossingDeg = rasterWaterlineCrossingDeg(
         c.toolRadiusMm,
         c.cornerRadiusMm,

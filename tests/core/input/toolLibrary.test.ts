@@ -1,5 +1,6 @@
 /** A Fusion 360 tool library read into tools: good files, mixed units, what cannot be read, hostile input. */
 import { describe, expect, it } from 'vitest';
+import { FIELDS } from '../../../src/core/input/fields';
 import {
   checkTool,
   cleanToolName,
@@ -15,6 +16,15 @@ function entry(type: string, unit: string, geometry: Record<string, unknown>, de
 }
 
 const library = (data: unknown[]) => JSON.stringify({ data, version: 16 });
+
+/** The double next to `x` towards -Infinity / +Infinity (x > 0). */
+const ulpStep = (x: number, by: -1 | 1) => {
+  const bits = new BigInt64Array(new Float64Array([x]).buffer);
+  bits[0] = (bits[0] as bigint) + BigInt(by);
+  return new Float64Array(bits.buffer)[0] as number;
+};
+const nextDown = (x: number) => ulpStep(x, -1);
+const nextUp = (x: number) => ulpStep(x, 1);
 
 describe('a Fusion 360 tool library', () => {
   it('reads bull nose, ball and flat end mills in mm and inches (mixed in one file)', () => {
@@ -94,6 +104,17 @@ describe('a Fusion 360 tool library', () => {
     expect(read.problems).toEqual([`Only the first ${LIBRARY_MAX_TOOLS} of ${LIBRARY_MAX_TOOLS + 3} tools were read.`]);
   });
 
+  it('a library of exactly LIBRARY_MAX_TOOLS tools is read whole, with no line (one more gets the line)', () => {
+    const make = (count: number) =>
+      library(Array.from({ length: count }, (_, i) => entry('flat end mill', 'millimeters', { DC: 1 + (i % 10) })));
+    const atCap = parseFusionLibrary(make(LIBRARY_MAX_TOOLS));
+    expect(atCap.tools).toHaveLength(LIBRARY_MAX_TOOLS);
+    expect(atCap.problems).toEqual([]);
+    const over = parseFusionLibrary(make(LIBRARY_MAX_TOOLS + 1));
+    expect(over.tools).toHaveLength(LIBRARY_MAX_TOOLS);
+    expect(over.problems).toEqual([`Only the first ${LIBRARY_MAX_TOOLS} of ${LIBRARY_MAX_TOOLS + 1} tools were read.`]);
+  });
+
   it('hostile names are kept as plain text: markup as typed, control characters out, long names cut', () => {
     const hostile = '<img src=x onerror="alert(1)">\u0000\u001b[31m';
     const read = parseFusionLibrary(
@@ -125,5 +146,28 @@ describe('a tool checked against the calculator', () => {
     expect(checkTool('a', 6, 1, 2.5)).toMatchObject({ ok: false, field: 'flutes' });
     expect(checkTool('a', 6, 1, 0)).toMatchObject({ ok: false, field: 'flutes' });
     expect(cleanToolName('  two\n\tlines  ')).toBe('two lines');
+  });
+
+  it('D at the ends of its range: 2 x 0.001 mm and 2 x 1000 mm are tools, one ulp beyond is refused', () => {
+    const [minD, maxD] = [2 * (FIELDS.R.range.min as number), 2 * (FIELDS.R.range.max as number)];
+    expect([minD, maxD]).toEqual([0.002, 2000]);
+    for (const d of [minD, maxD]) expect(checkTool('end', d, 0, null), `D = ${d}`).toMatchObject({ ok: true });
+    // The library reads the same ends (its message names the range).
+    const ends = parseFusionLibrary(
+      library([
+        entry('flat end mill', 'millimeters', { DC: minD }, 'smallest'),
+        entry('flat end mill', 'millimeters', { DC: maxD }, 'largest'),
+      ]),
+    );
+    expect(ends.problems).toEqual([]);
+    expect(ends.tools.map((t) => t.diameterMm)).toEqual([minD, maxD]);
+    const below = nextDown(minD);
+    const above = nextUp(maxD);
+    expect(checkTool('end', below, 0, null)).toEqual({
+      ok: false,
+      field: 'D',
+      why: `must be from 0.002 to 2000 mm (got ${below} mm)`,
+    });
+    expect(checkTool('end', above, 0, null)).toMatchObject({ ok: false, field: 'D' });
   });
 });

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { gaussLegendre } from '../../../src/build/reference/roughnessReference';
 import {
   type ForwardInput,
   forwardInput,
@@ -12,29 +13,6 @@ import { cylinderSolver } from '../../../src/core/surfaces/cylinder';
 import { exactForward } from '../../../src/core/surfaces/solve';
 import { flankAtWidth, shapeOfTool } from '../../../src/core/tool/posture';
 import { seededRandom } from '../../support/bruteForce';
-
-/** n-point Gauss-Legendre nodes and weights on [-1, 1], by Newton on the Legendre polynomial P_n. */
-function gaussLegendre(n: number): [number[], number[]] {
-  const xs: number[] = [];
-  const ws: number[] = [];
-  for (let i = 1; i <= n; i++) {
-    let x = Math.cos((Math.PI * (i - 0.25)) / (n + 0.5));
-    for (let k = 0; k < 100; k++) {
-      let p0 = 1;
-      let p1 = x;
-      for (let j = 2; j <= n; j++) [p0, p1] = [p1, ((2 * j - 1) * x * p1 - (j - 1) * p0) / j];
-      const dp = (n * (x * p1 - p0)) / (x * x - 1);
-      const dx = p1 / dp;
-      x -= dx;
-      if (Math.abs(dx) < 1e-16) {
-        xs.push(x);
-        ws.push(2 / ((1 - x * x) * dp * dp));
-        break;
-      }
-    }
-  }
-  return [xs, ws];
-}
 
 /** 16-point Gauss-Legendre nodes and weights on [-1, 1], computed once. */
 const [GL16_X, GL16_W] = gaussLegendre(16);

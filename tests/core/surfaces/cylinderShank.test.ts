@@ -90,7 +90,7 @@ describe("item 10: a trough's wall and the shank", () => {
     if (v.ok) return;
     const e = v.errors[0];
     expect(e?.code).toBe('shank-gouging');
-    expect(e?.limit).toBeNull();
+    expect(e?.limit).toBeUndefined();
     expect(e?.message).toMatch(/any radius/);
     expect(e?.message).toMatch(/50\.1\d* degrees/);
     expect(e?.message).toMatch(/Less tilt or lead would help/);

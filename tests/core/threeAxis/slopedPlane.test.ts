@@ -1,7 +1,8 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import { forwardInput, inverseInput } from '../../../src/core/input/validate';
+import { slopedPlaneModel } from '../../../src/core/surfaces/models/slopedPlane';
 import { exactIntervalMm, exactInverse } from '../../../src/core/surfaces/solve';
-import { slopedPlaneForward, slopedPlaneInverse } from '../../../src/core/threeAxis/slopedPlane';
+import { slopedPlaneForward, slopedPlaneIntervalMm, slopedPlaneInverse } from '../../../src/core/threeAxis/slopedPlane';
 import { seededRandom } from '../../support/bruteForce';
 import { bruteRasterCusp } from '../../support/reference/threeAxisBruteForce';
 
@@ -139,6 +140,42 @@ describe('closed forms and the posture solver', () => {
       0.1,
     );
     expect(flat.ok && flat.value).toMatchObject({ intervalMm: 4, noScallop: true, cuspHeightMm: 0 });
+  });
+
+  it('a flat end on a flat floor steps over its diameter 2R: the fast path, forward, inverse and surface model alike, as the brute force (seed 10)', () => {
+    // The flat bottom, a disk of radius R, sweeps a strip 2R wide and leaves no scallop: adjacent
+    // strips just touch at L = 2R (the tool's diameter; the brute force finds no cusp there), and any
+    // wider step leaves a ridge of uncut floor. Any h, any raster angle.
+    const rand = seededRandom(10);
+    for (let i = 0; i < 50; i++) {
+      const R = 0.001 + 999.999 * rand() ** 3;
+      const c = {
+        toolRadiusMm: R,
+        cornerRadiusMm: 0,
+        slopeDeg: 0,
+        passes: 'raster',
+        rasterAngleDeg: 90 * rand(),
+      } as const;
+      const h = R * 10 ** (-6 + 6 * rand());
+      expect(slopedPlaneIntervalMm(c, h)).toBe(2 * R);
+      const f = slopedPlaneForward(c, h);
+      expect(f.ok && f.value).toMatchObject({ intervalMm: 2 * R, horizontalStepMm: 2 * R, noScallop: true });
+      const model = { toolRadiusMm: R, cornerRadiusMm: 0, leadAngleDeg: 0, tiltAngleDeg: 0 } as const;
+      const surface = { kind: 'slopedPlane', slopeDeg: 0, passes: 'raster', rasterAngleDeg: c.rasterAngleDeg } as const;
+      expect(slopedPlaneModel.intervalMm({ ...model, pattern: 'one-way', surface, scallopHeightMm: h })).toBe(2 * R);
+      const at = slopedPlaneInverse(c, { field: 'horizontalStep', mm: 2 * R });
+      expect(at.ok && at.value).toMatchObject({ intervalMm: 2 * R, cuspHeightMm: 0, noScallop: true });
+      const wider = slopedPlaneInverse(c, { field: 'horizontalStep', mm: 2 * R * (1 + 1e-9) });
+      expect(!wider.ok && wider.errors[0]).toMatchObject({
+        field: 'horizontalStep',
+        code: 'beyond-step',
+        limit: 2 * R,
+      });
+      if (i < 3) {
+        const b = bruteRasterCusp({ R, Rcr: 0 }, 0, c.rasterAngleDeg, 2 * R, 8);
+        expect(Math.abs(b.polishedMm)).toBeLessThan(1e-12 * R);
+      }
+    }
   });
 
   it('the inverse equals the posture solver at the same lead and tilt; Lxy and dz follow from L (seed 9)', () => {

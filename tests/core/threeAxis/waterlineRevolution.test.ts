@@ -265,6 +265,50 @@ describe('limits and refusals', () => {
       expect(f.errors[0]?.message).toContain('bottom');
     }
   });
+  it('a step past the vertical of a convex meridian (closed form L = (90 - alpha) Rc) is refused by the first limit met on the way, the shank below the vertical (seed 15)', () => {
+    // The next pass past the vertical is on an overhang no upright tool reaches: no pass is placed
+    // (or checked for gouging) there. The refusal is the upper pass's own gouging, or the shank,
+    // whose limit lies before the vertical (the lower contact reaches the corner's top, where the
+    // shank starts, at the vertical); just inside it the cusp is the brute force's.
+    const rand = seededRandom(15);
+    let shank = 0;
+    let brute = 0;
+    for (let i = 0; i < 400; i++) {
+      const R = 0.5 + 5 * rand();
+      const Rcr = R * (0.1 + 0.9 * rand());
+      const rc = R * (0.5 + 5 * rand());
+      const rf = (rand() < 0.5 ? 1 : -1) * R * (0.5 + 5 * rand());
+      const c: RevolutionCase = {
+        toolRadiusMm: R,
+        cornerRadiusMm: Rcr,
+        slopeDeg: 30 + 59 * rand(),
+        feedRadiusMm: rf,
+        crossRadiusMm: rc,
+      };
+      const toVertical = ((90 - c.slopeDeg) * Math.PI * rc) / 180;
+      const L = toVertical * (1.01 + 2 * rand());
+      const r = waterlineInverse(c, { field: 'interval', mm: L });
+      expect(r.ok).toBe(false);
+      if (r.ok) continue;
+      const e = r.errors[0];
+      if (e?.code === 'gouging') {
+        const upper = waterlineInverse(c, { field: 'interval', mm: 1e-6 });
+        expect(!upper.ok && upper.errors[0]?.code, JSON.stringify(c)).toBe('gouging');
+        continue;
+      }
+      shank += 1;
+      expect(e?.code).toBe('shank-cuts');
+      expect(e?.limit as number).toBeLessThan(toVertical);
+      if (brute >= 3) continue;
+      const inside = waterlineInverse(c, { field: 'interval', mm: (e?.limit as number) * (1 - 1e-6) });
+      if (!inside.ok) continue;
+      brute += 1;
+      const b = bruteWaterlineCusp({ R, Rcr }, c, inside.value.intervalMm, 8);
+      expect(Math.abs(b.polishedMm - inside.value.cuspHeightMm)).toBeLessThan(1e-9);
+    }
+    expect(shank).toBeGreaterThan(300);
+    expect(brute).toBe(3);
+  });
   it('a flat end in waterline: the side forms every cusp; alpha 90: a vertical wall; alpha 0: no step', () => {
     const flat = waterlineForward(
       { toolRadiusMm: 3, cornerRadiusMm: 0, slopeDeg: 30, feedRadiusMm: null, crossRadiusMm: null },
@@ -277,6 +321,146 @@ describe('limits and refusals', () => {
     expect(!floor.ok && floor.errors[0]?.code).toBe('needs-slope');
     const radius = waterlineForward({ ...bull, slopeDeg: 20, feedRadiusMm: 0, crossRadiusMm: 2e6 }, 0.01);
     expect(radius.ok ? [] : radius.errors.map((e) => e.field)).toEqual(['feedRadius', 'crossRadius']);
+  });
+});
+
+describe('slope 90 on a curved meridian (issue 26 point 3)', () => {
+  // A concave meridian at 90 degrees (a wall flaring out below into a fillet): the passes below are
+  // less steep, so adjacent passes touch at different slopes and leave a scallop. Answered, and
+  // continuous with the slopes just below 90; only a straight meridian is cut flat by the side.
+  it('a ball end: two circles about the meridian centre (closed form), as at 89.999 (seed 16)', () => {
+    const rand = seededRandom(16);
+    for (let i = 0; i < 100; i++) {
+      const R = 0.05 + 10 * rand();
+      // |Rc| below 2R: above it the cusp at 90 degrees is on the upper half of the ball, the shank's (last test).
+      const rc = -R * (1.05 + 0.9 * rand());
+      const rf = rand() < 0.3 ? null : (rand() < 0.5 ? 1 : -1) * R * (2 + 400 * rand());
+      const c: RevolutionCase = {
+        toolRadiusMm: R,
+        cornerRadiusMm: R,
+        slopeDeg: 90,
+        feedRadiusMm: rf,
+        crossRadiusMm: rc,
+      };
+      const h = R * (1e-6 + 0.2 * rand());
+      const f = waterlineForward(c, h);
+      if (!f.ok) {
+        expect(['gouging', 'past-surface'], JSON.stringify([c, h, f.errors])).toContain(f.errors[0]?.code);
+        continue;
+      }
+      // Ball centres on the circle of radius |Rc| - R about the meridian's centre, the cusp |Rc| - h from it.
+      const Ro = -rc - R;
+      const p = -rc - h;
+      const sp = (Ro + p + R) / 2;
+      const phi = 4 * Math.atan(Math.sqrt(((sp - Ro) * (sp - p)) / (sp * (sp - R))));
+      expect(Math.abs(f.value.intervalMm - -rc * phi)).toBeLessThan(1e-9);
+      // Tips R below the centres: dz = Ro (cos a1 - cos 90) with a1 = 90 - phi.
+      expect(Math.abs(f.value.stepDownMm - Ro * Math.sin(phi))).toBeLessThan(1e-9);
+      const near = waterlineForward({ ...c, slopeDeg: 89.999 }, h);
+      expect(near.ok && Math.abs(near.value.intervalMm - f.value.intervalMm)).toBeLessThan(1e-9);
+    }
+  });
+
+  it('a bull-nose: the brute force at 90, and L, dz and the height limit continuous from below (seed 17)', () => {
+    const rand = seededRandom(17);
+    let brute = 0;
+    let answered = 0;
+    for (let i = 0; i < 60; i++) {
+      const R = 0.5 + 5 * rand();
+      const Rcr = R * (0.6 + 0.4 * rand());
+      // R < |Rc| (a smaller fillet is gouged by the bottom's far end) and Rcr above |Rc| / 2 (below
+      // it the shank forms the cusp at 90 degrees: the last test).
+      const rc = -(1.01 * R + (2 * Rcr - 1.01 * R) * 0.95 * rand());
+      const rf = rand() < 0.3 ? null : R * (3 + 400 * rand());
+      const c: RevolutionCase = {
+        toolRadiusMm: R,
+        cornerRadiusMm: Rcr,
+        slopeDeg: 90,
+        feedRadiusMm: rf,
+        crossRadiusMm: rc,
+      };
+      const limit = waterlineHeightLimitMm(c);
+      const below = waterlineHeightLimitMm({ ...c, slopeDeg: 90 - 1e-9 });
+      expect(Math.abs(limit - below)).toBeLessThan(1e-9 * (1 + limit));
+      const h = Math.min(limit, Rcr) * (0.01 + 0.9 * rand());
+      const f = waterlineForward(c, h);
+      if (!f.ok) {
+        expect(['gouging', 'past-surface'], JSON.stringify([c, h, f.errors])).toContain(f.errors[0]?.code);
+        continue;
+      }
+      answered += 1;
+      const g = waterlineForward({ ...c, slopeDeg: 90 - 1e-9 }, h);
+      if (!g.ok) throw new Error(JSON.stringify(g.errors));
+      expect(Math.abs(g.value.intervalMm - f.value.intervalMm)).toBeLessThan(1e-9 * (1 + f.value.intervalMm));
+      expect(Math.abs(g.value.stepDownMm - f.value.stepDownMm)).toBeLessThan(1e-9 * (1 + f.value.stepDownMm));
+      if (brute >= 4) continue;
+      brute += 1;
+      const b = bruteWaterlineCusp({ R, Rcr }, c, f.value.intervalMm, 8);
+      record('slope 90, concave meridian (brute force)', Math.abs(b.polishedMm - h));
+      expect(Math.abs(b.polishedMm - h)).toBeLessThan(1e-9);
+    }
+    expect(answered).toBeGreaterThan(30);
+  });
+
+  it('Rcr = |Rc| / 2 exactly (round numbers: R 3, Rcr 2, Rc -4): the next corner top K1 is on the upper boundary at every L, answered as just below 90, as the brute force', () => {
+    for (const rf of [50, null, -50]) {
+      const c: RevolutionCase = {
+        toolRadiusMm: 3,
+        cornerRadiusMm: 2,
+        slopeDeg: 90,
+        feedRadiusMm: rf,
+        crossRadiusMm: -4,
+      };
+      const at = waterlineForward(c, 0.005);
+      const below = waterlineForward({ ...c, slopeDeg: 90 - 1e-9 }, 0.005);
+      if (!at.ok || !below.ok) throw new Error(JSON.stringify([at, below]));
+      expect(Math.abs(at.value.intervalMm - below.value.intervalMm)).toBeLessThan(1e-9);
+      expect(Math.abs(waterlineHeightLimitMm(c) - waterlineHeightLimitMm({ ...c, slopeDeg: 90 - 1e-9 }))).toBeLessThan(
+        1e-9,
+      );
+      if (rf !== 50) continue;
+      const b = bruteWaterlineCusp({ R: 3, Rcr: 2 }, c, at.value.intervalMm, 8);
+      expect(Math.abs(b.polishedMm - 0.005)).toBeLessThan(1e-9);
+    }
+  });
+
+  it("the issue's case: a ball end answers at 90 what it answers at 89.999", () => {
+    const c: RevolutionCase = {
+      toolRadiusMm: 12.1518,
+      cornerRadiusMm: 12.1518,
+      slopeDeg: 90,
+      feedRadiusMm: 2272.07,
+      crossRadiusMm: -16.5317,
+    };
+    const at = waterlineForward(c, 0.00073963);
+    const near = waterlineForward({ ...c, slopeDeg: 89.999 }, 0.00073963);
+    if (!at.ok || !near.ok) throw new Error(JSON.stringify([at, near]));
+    expect(at.value.intervalMm).toBeCloseTo(0.52096, 5);
+    expect(Math.abs(at.value.intervalMm - near.value.intervalMm)).toBeLessThan(1e-12);
+    expect(Math.abs(at.value.stepDownMm - near.value.stepDownMm)).toBeLessThan(1e-5);
+  });
+
+  it('refused at 90: a straight meridian (cut flat), a convex one (an overhang below), and a small corner on a concave one (the shank forms the step)', () => {
+    const bull = { toolRadiusMm: 3, cornerRadiusMm: 1 } as const;
+    for (const rf of [null, 40, -40]) {
+      const wall = waterlineForward({ ...bull, slopeDeg: 90, feedRadiusMm: rf, crossRadiusMm: null }, 0.01);
+      expect(!wall.ok && wall.errors[0]).toMatchObject({ field: 'slope', code: 'vertical-wall' });
+    }
+    const convex = waterlineForward({ ...bull, slopeDeg: 90, feedRadiusMm: 40, crossRadiusMm: 10 }, 0.01);
+    expect(!convex.ok && convex.errors[0]).toMatchObject({ field: 'slope', code: 'past-surface', limit: 90 });
+    // Continuous with just below: the next pass fits only before the vertical, so the limit shrinks to 0.
+    const nearConvex = waterlineHeightLimitMm({ ...bull, slopeDeg: 90 - 1e-6, feedRadiusMm: 40, crossRadiusMm: 10 });
+    expect(nearConvex).toBeLessThan(1e-9);
+    // Rcr < |Rc| / 2: the corner's cusp reaches the next pass's shank at any step (at 90 degrees the
+    // upper boundary passes above the next corner's top K1 exactly when Rcr < |Rc| / 2, whatever L).
+    const small = waterlineForward({ ...bull, slopeDeg: 90, feedRadiusMm: 40, crossRadiusMm: -10 }, 0.01);
+    expect(!small.ok && small.errors[0]).toMatchObject({ field: 'h', code: 'shank-cuts' });
+    expect(!small.ok && (small.errors[0]?.limit as number)).toBeLessThan(1e-9);
+    expect(!small.ok && small.errors[0]?.message).toMatch(/cannot be answered at this slope.*at any step/);
+    // Continuous with just below: the limit falls as the square of the distance to 90 degrees.
+    const close = waterlineHeightLimitMm({ ...bull, slopeDeg: 90 - 1e-2, feedRadiusMm: 40, crossRadiusMm: -10 });
+    const closer = waterlineHeightLimitMm({ ...bull, slopeDeg: 90 - 1e-4, feedRadiusMm: 40, crossRadiusMm: -10 });
+    expect(Math.abs(closer / close - 1e-4)).toBeLessThan(1e-6);
   });
 });
 

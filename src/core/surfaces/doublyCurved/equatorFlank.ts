@@ -147,7 +147,8 @@ class Flank implements EquatorFlank {
     if (this.mode === 0) {
       const gap = cz - h;
       if (gap <= 0) return u + k;
-      return gap <= k ? u + Math.sqrt((k - gap) * (k + gap)) : Number.NEGATIVE_INFINITY;
+      // As below: a disk that just touches h may miss it by a rounding.
+      return gap <= k * (1 + 1e-14) ? u + Math.sqrt(Math.max(0, (k - gap) * (k + gap))) : Number.NEGATIVE_INFINITY;
     }
     const rc = this.rc;
     const q = cz + rc;
@@ -158,8 +159,9 @@ class Flank implements EquatorFlank {
     // Convex: the tangent point from C lies within r; concave: beyond r.
     if (this.mode * (d2r2 - k * k) <= 0) return alpha + Math.asin(Math.min(1, k / d));
     const diff = d2r2 / (d + r);
-    if (!(Math.abs(diff) <= k)) return Number.NEGATIVE_INFINITY;
-    const half = Math.sqrt(((k - diff) * (k + diff)) / (4 * d * r));
+    // A disk that just touches the radius r (the contact's own at h = 0) may miss it by a rounding.
+    if (!(Math.abs(diff) <= k * (1 + 1e-14))) return Number.NEGATIVE_INFINITY;
+    const half = Math.sqrt(Math.max(0, (k - diff) * (k + diff)) / (4 * d * r));
     return alpha + 2 * Math.asin(Math.min(1, half));
   }
 

@@ -23,6 +23,12 @@
  * cancellation, so that the bound keeps its digits next to the CC point, where it tends to minus the
  * section's curvature there (the existing cylinder rule, cylinder.ts's minConcaveRadiusMm).
  *
+ * Both steps assume the contact's chord (Y = 0) keeps its lowest ball centre at the contact's own,
+ * (0, Rcr): a concave feed circle tighter than the tool along the feed breaks that (the contact's
+ * ball centre lies beyond `l`, or the far end of the chord falls below the CC point), and its swept
+ * image holds the CC point inside the disks: that gouges at any Rc (gougingBounds.ts's
+ * gougesAlongFeed; issue 26, where such points were answered with -Infinity).
+ *
  * So the admissible cross curvature is `kc >= kMin(Rf)`, a maximum over the tool. Raising either
  * curvature (more convex) lifts the swept section (zc grows with 1/Rf) or lowers the equator, so the
  * admissible set in each curvature, the other held, is a half-line `[kMin, +inf)`: a concave radius

@@ -6,9 +6,11 @@
 import type { ToolInput } from '../../domain/tool';
 import { maximise, type Objective } from '../../math/rootFinder';
 import { placeTool } from '../../tool/placement';
+import { passSection } from './passSection';
 
 /** The tool's ring, contact and shank, placed once. */
 export class ToolGeometry {
+  readonly tool: ToolInput;
   readonly rb: number;
   readonly k: number;
   readonly R: number;
@@ -20,6 +22,7 @@ export class ToolGeometry {
   readonly v2: readonly [number, number, number];
 
   constructor(tool: ToolInput) {
+    this.tool = tool;
     const p = placeTool(tool);
     this.rb = p.ringRadiusMm;
     this.k = p.cornerRadiusMm;
@@ -151,6 +154,7 @@ export class FootBound implements Objective {
  * ball reaches below the CC point.
  */
 export function endBound(g: ToolGeometry, kf: number, ring: RingBound, foot: FootBound): number {
+  if (gougesAlongFeed(g, kf)) return Number.POSITIVE_INFINITY;
   // Near the contact the bound tends to minus the section's curvature there.
   if (!(g.rb > 0)) return -1 / g.k;
   ring.kf = kf;
@@ -164,6 +168,24 @@ export function endBound(g: ToolGeometry, kf: number, ring: RingBound, foot: Foo
     for (const s of [1e-6 * g.R, -1e-6 * g.R]) if (s > foot.lo && s < foot.hi) best = Math.max(best, foot.value(s));
   }
   return best;
+}
+
+/**
+ * True when a concave feed circle is tighter than the tool along the feed: the section's lowest ball
+ * centre on the contact's chord (Y = 0) lies below the contact's own (passSection.ts: B(0) < Rcr).
+ * The chord's image runs continuously from the contact's ball centre down to it, so the disks along
+ * it hold the CC point inside: the tool reaches below the CC point at any Rc. (The bounds above
+ * measure every rise from the contact's ball centre at (0, Rcr), and take the lowest image of a
+ * chord as its worst: neither holds then. With Rcr > |Rf| the contact's ball centre lies beyond `l`
+ * and its own image falls to 2 |Rf| - Rcr; with a tool wider than the feed circle the far end of
+ * the contact's chord falls below the CC point, and on a small convex equator that end's disk can
+ * lie wholly below the circle, which the bounds would pass.) Straight and convex feeds never: every
+ * ball centre's image is then at least Rcr high.
+ */
+function gougesAlongFeed(g: ToolGeometry, kf: number): boolean {
+  if (!(kf < 0)) return false;
+  const lowest = passSection(g.tool, 1 / kf).lowestCentreMm(0);
+  return lowest < g.k - 1e-12 * g.R;
 }
 
 /** The shank's bound: its points (radius R, heights s >= 0 along the axis) up to a height cap. */

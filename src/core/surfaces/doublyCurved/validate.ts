@@ -10,7 +10,6 @@
 import {
   type AnyInputError,
   describeInputError,
-  type InputErrorCode,
   inputError,
   MAX_SURFACE_RADIUS_MM,
   MIN_LENGTH_MM,
@@ -75,17 +74,17 @@ function gougingError(tool: ToolInput, radii: PrincipalRadii, raw: RawDoublyCurv
   const mine = field === 'crossRadius' ? g.cross : g.feed;
   const other = field === 'crossRadius' ? g.feed : g.cross;
   const kind = mine.kind === 'any' ? 'none' : mine.kind;
-  const limit = mine.radiusMm === null ? null : mine.kind === 'concave-at-least' ? -mine.radiusMm : mine.radiusMm;
-  const data = {
+  const heldMm = field === 'crossRadius' ? radii.feedRadiusMm : radii.crossRadiusMm;
+  // Absent values (no limit, a straight radius held, no magnitude) are left out, never null.
+  const data: AnyInputError = {
     field,
-    code: 'radius-gouging' as InputErrorCode,
+    code: 'radius-gouging',
     got: shownOf(field === 'crossRadius' ? raw.crossRadius : raw.feedRadius),
-    limit,
-    side: null,
+    ...(mine.radiusMm === null ? {} : { limit: mine.kind === 'concave-at-least' ? -mine.radiusMm : mine.radiusMm }),
     radiusLimit: {
       kind,
-      heldMm: field === 'crossRadius' ? radii.feedRadiusMm : radii.crossRadiusMm,
-      other: { kind: other.kind, radiusMm: other.radiusMm },
+      ...(Number.isFinite(heldMm) ? { heldMm } : {}),
+      other: { kind: other.kind, ...(other.radiusMm === null ? {} : { radiusMm: other.radiusMm }) },
     },
     message: '',
   };

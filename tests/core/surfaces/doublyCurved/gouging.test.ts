@@ -49,10 +49,14 @@ describe('doubly curved gouging', () => {
     expect(tight.gouges).toBe(true);
     expect(tight.cross.kind).toBe('none');
     expect(tight.feed.kind).toBe('concave-at-least');
-    // A ball end on a dome: no radius of either kind makes it gouge; a flat bottom lying flat gouges every bowl.
+    // A ball end on a dome: across, a concave Rc of at least the ball's radius; along the feed too (a
+    // concave feed circle tighter than the ball, |Rf| < 3, holds the CC point inside the ball's swept
+    // image: issue 26 point 1), a little more for the shank. A flat bottom lying flat gouges every bowl.
     const ball = doublyCurvedGouging({ ...tool, cornerRadiusMm: 3 }, { feedRadiusMm: 40, crossRadiusMm: 40 });
-    expect([ball.gouges, ball.feed.kind, ball.cross.kind]).toEqual([false, 'any', 'concave-at-least']);
+    expect([ball.gouges, ball.feed.kind, ball.cross.kind]).toEqual([false, 'concave-at-least', 'concave-at-least']);
     expect(ball.cross.radiusMm).toBeCloseTo(3, 9);
+    expect(ball.feed.radiusMm).toBeGreaterThanOrEqual(3);
+    expect(ball.feed.radiusMm).toBeLessThan(3.05);
     const flat = doublyCurvedGouging(
       { toolRadiusMm: 5, cornerRadiusMm: 0.5, leadAngleDeg: 0, tiltAngleDeg: 0 },
       { feedRadiusMm: 40, crossRadiusMm: 40 },

@@ -12,10 +12,12 @@ import {
   type ToolInput,
 } from '../../../../src/core/input/validate';
 import type { Surface } from '../../../../src/core/surfaces/cylinder';
+import { doublyCurvedRoughnessAtInterval } from '../../../../src/core/surfaces/doublyCurved/roughness';
 import {
   doublyCurvedForward,
   doublyCurvedInverse,
   doublyCurvedLimits,
+  doublyCurvedSolver,
 } from '../../../../src/core/surfaces/doublyCurved/solve';
 import { exactForward, exactInverse } from '../../../../src/core/surfaces/solve';
 import { seededRandom } from '../../../support/bruteForce';
@@ -138,6 +140,30 @@ describe('doubly curved point: infinite radii give the existing plane and cylind
       expect(Math.abs(at(sf * 1e6, sc * 50) - cylinder)).toBeLessThan(1e-5);
       const across = at(sf * 50, I);
       expect(Math.abs(at(sf * 50, sc * 1e6) - across)).toBeLessThan(1e-5);
+    }
+  });
+
+  it('a flat bottom without lead on a dome: each flank reaches 0 at height 0, and a tiny cusp has a finite roughness (issue 26 fuzz, seed 2627)', () => {
+    // The contact's own disk touches the radius |Rc + 0| and missed it by a rounding: the reach was
+    // -Infinity at h = 0, and Ra, Rq of an --interval answer NaN (null in JSON).
+    const tool: ToolInput = {
+      toolRadiusMm: 1.0655663622423661,
+      cornerRadiusMm: 0.5818938241443307,
+      leadAngleDeg: 0,
+      tiltAngleDeg: 0,
+    };
+    for (const crossRadiusMm of [1e6, 5000, I]) {
+      const radii = { feedRadiusMm: 65.3173079543128, crossRadiusMm };
+      const solver = doublyCurvedSolver(tool, radii);
+      expect(Number.isFinite(solver.right.reachMm(0)), `Rc ${crossRadiusMm}`).toBe(true);
+      const e = doublyCurvedInverse({ ...tool, ...radii, pattern: 'one-way', intervalMm: 0.0046460868428474435 });
+      const r = doublyCurvedRoughnessAtInterval(solver, 'one-way', e);
+      expect([r.raMm, r.rqMm, r.rzMm].every(Number.isFinite), `Rc ${crossRadiusMm}`).toBe(true);
+      // The flat bottom on a convex equator rises as y^2 / (2 Rc): the cusp at L/2 (parabola: Ra = 4 h / (9 sqrt 3)).
+      if (Number.isFinite(crossRadiusMm)) {
+        expect(e.cuspHeightMm / ((0.0046460868428474435 / 2) ** 2 / (2 * crossRadiusMm)) - 1).toBeLessThan(1e-3);
+        expect(Math.abs(r.raMm / ((4 * e.cuspHeightMm) / (9 * Math.sqrt(3))) - 1)).toBeLessThan(1e-2);
+      }
     }
   });
 });
