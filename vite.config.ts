@@ -1,3 +1,4 @@
+import { availableParallelism } from 'node:os';
 import { fileURLToPath } from 'node:url';
 import { VitePWA } from 'vite-plugin-pwa';
 import { defineConfig } from 'vitest/config';
@@ -120,10 +121,12 @@ export default defineConfig(({ mode, command }) =>
           testTimeout: 30_000,
           hookTimeout: 60_000,
           environment: 'node',
-          // Two projects: `node` (pure modules, the worker's API, the CLI as a process; no site build,
-          // files in parallel) and `browser` (headless Chromium against the built sites, which its
-          // global set-up builds once; one file at a time, since a page and its workers share 2 cores).
-          // `npx vitest run --project node` runs the Node tests alone in seconds.
+          // Two projects: `node` (pure modules, the worker's API, the CLI in process; no site build,
+          // files in parallel on every core) and `browser` (headless Chromium against the built sites,
+          // which its global set-up builds once; one file at a time, since a page and its workers
+          // share 2 cores). Vitest runs a project of one file at a time after the others, so `npm test`
+          // (tests/support/runTests.mjs) runs the two as two Vitest processes at once, the Node one
+          // niced. `npx vitest run --project node` runs the Node tests alone.
           projects: [
             {
               extends: true,
@@ -131,6 +134,9 @@ export default defineConfig(({ mode, command }) =>
                 name: 'node',
                 include: ['tests/**/*.test.ts'],
                 exclude: BROWSER_TESTS,
+                globalSetup: ['tests/support/cliBundleSetup.ts'],
+                // Vitest's default leaves a core free (one worker on 2 cores).
+                maxWorkers: availableParallelism(),
               },
             },
             {

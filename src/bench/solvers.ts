@@ -1,6 +1,7 @@
 /**
  * Benchmark of the solver core: median time per call over repeated rounds; and the command line's
- * `--batch` throughput (rows per second, in process, the CSV fed in 64 kB chunks as a pipe does).
+ * `--batch` throughput (rows per second, in process, the CSV fed in 64 kB chunks as a pipe does);
+ * the command line's start-up, one answer as a process (src/bench/cliStart.ts).
  *
  *   npm run bench                 readable table
  *   npm run bench -- --json       the same, and a last line holding one JSON object
@@ -29,6 +30,7 @@ import {
 } from '../core/index';
 import { PASS_FIELDS } from '../core/input/fields';
 import { rawOf } from '../core/input/raw';
+import { cliStartBench } from './cliStart';
 import { doublyCurvedBench } from './doublyCurved';
 import { teachPageBench } from './teachPage';
 import { threeAxisBench } from './threeAxis';
@@ -213,6 +215,8 @@ for (let r = 0; r < batchRounds; r++) {
 batchRate.sort((x, y) => x - y);
 const batchRowsPerSecond = batchRate[batchRate.length >> 1] as number;
 
+const start = cliStartBench(Math.min(rounds, 11));
+
 console.log(`Solver benchmark: median of ${rounds} rounds, ${cases.length} inputs spread over the valid domain`);
 console.log(`Node ${process.version}, ${process.platform}/${process.arch}`);
 console.log('');
@@ -223,6 +227,9 @@ console.log(
 );
 console.log(
   `${'--batch, 20 000 rows (rows/s)'.padEnd(36)}${batchRowsPerSecond.toFixed(0).padStart(14)}   median of ${batchRounds} runs`,
+);
+console.log(
+  `${'command line, one answer (ms)'.padEnd(36)}${start.cliStartMs.toFixed(1).padStart(14)}   process start to exit; node -e 0: ${start.nodeStartMs.toFixed(1)} ms`,
 );
 console.log(
   `${'target Ra across a cylinder (ms)'.padEnd(36)}${targetRaCylinderCrossMsMedian.toFixed(1).padStart(14)}   median; slowest ${targetRaCylinderCrossMsMax.toFixed(1)} ms (maxRa and the solve)`,
@@ -238,6 +245,8 @@ if (json) {
   out.simulationMsMedian = Number(simulationMsMedian.toFixed(1));
   out.simulationCellsPerSecond = Math.round((simCells / simulationMsMedian) * 1000);
   out.batchRowsPerSecond = Math.round(batchRowsPerSecond);
+  out.cliStartMs = Number(start.cliStartMs.toFixed(1));
+  out.nodeStartMs = Number(start.nodeStartMs.toFixed(1));
   out.targetRaCylinderCrossMsMedian = Number(targetRaCylinderCrossMsMedian.toFixed(2));
   out.targetRaCylinderCrossMsMax = Number(targetRaCylinderCrossMsMax.toFixed(2));
   for (const [, key, v] of three.sweeps) out[key] = Number(v.wall.toFixed(2));

@@ -11,6 +11,7 @@
  *
  *   npm run bench:web              readable table
  *   npm run bench:web -- --json    and a last line holding one JSON object
+ *   ... -- --prebuilt DIR          no build: dist/ and the instrumented build in DIR as they are
  */
 import { readdirSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -151,9 +152,15 @@ const KEY_NOTE =
 const json = process.argv.includes('--json');
 const quick = process.argv.includes('--quick');
 const root = fileURLToPath(new URL('../..', import.meta.url));
-await build({ root, logLevel: 'warn' });
-const instrumented = 'test-results/site-bench';
-await build({ root, logLevel: 'warn', mode: 'e2e', build: { outDir: instrumented, emptyOutDir: true } });
+// `--prebuilt DIR`: dist/ and the instrumented build in DIR are already there (the browser tests'
+// global set-up built both), so nothing is built again.
+const prebuiltArg = process.argv.indexOf('--prebuilt');
+const prebuilt = prebuiltArg >= 0 ? process.argv[prebuiltArg + 1] : undefined;
+const instrumented = prebuilt ?? 'test-results/site-bench';
+if (prebuilt === undefined) {
+  await build({ root, logLevel: 'warn' });
+  await build({ root, logLevel: 'warn', mode: 'e2e', build: { outDir: instrumented, emptyOutDir: true } });
+}
 
 // Initial JS: the page's entry script (from index.html) and the solver worker, each with the chunks
 // it imports statically (the core they share is counted once). The 3D scene, three.js and the

@@ -1,12 +1,14 @@
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
+import { E2E_OUT_DIR } from '../e2e/globalSetup';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 
 describe('npm run bench:web', () => {
   it('runs in headless Chromium and prints the three figures, with a JSON last line', () => {
-    const r = spawnSync('npx', ['tsx', 'src/bench/web.ts', '--json', '--quick'], {
+    // The sites the browser tests' global set-up built: not built a second time.
+    const r = spawnSync('npx', ['tsx', 'src/bench/web.ts', '--json', '--quick', '--prebuilt', E2E_OUT_DIR], {
       cwd: ROOT,
       encoding: 'utf8',
       timeout: 120_000,

@@ -1,5 +1,5 @@
 /**
- * Issue 19's command line as a process: doubly curved points (--feed-radius and --cross-radius),
+ * Issue 19's command line: doubly curved points (--feed-radius and --cross-radius),
  * the cylinder shorthand (one radius alone is --surface-radius with its axis: the same digits), the
  * gouging and range errors (one line, named on the radius, in JSON too), the JSON fields and the
  * batch columns. Independent reference: a ball end on a sphere, where a pass's section in the
@@ -53,7 +53,7 @@ describe('doubly curved points on the command line', () => {
     }
   }, 30_000);
 
-  it('as a process: the table shows the exact answer, the comparison rows and the roughness; JSON echoes the radii', async () => {
+  it('the table shows the exact answer, the comparison rows and the roughness; JSON echoes the radii', async () => {
     const r = await run([...TOOL, '--h', '0.05', '--feed-radius', '40', '--cross-radius', '-80']);
     expect(r.stderr).toBe('');
     expect(r.code).toBe(0);

@@ -1,5 +1,5 @@
 /**
- * What the command line echoes of its input (issue 17), as a process: an error is one line whatever
+ * What the command line echoes of its input (issue 17): an error is one line whatever
  * the value holds (a line break, a terminal escape sequence: shown escaped, on stderr, in the JSON
  * message and in a batch row's `error`), and a JSON error leaves out what does not exist, as the
  * results do, never `null`.

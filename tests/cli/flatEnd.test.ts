@@ -1,4 +1,4 @@
-/** A flat end without lead or tilt, as a process: no scallop, L = 2R, in the table, JSON and batch alike. */
+/** A flat end without lead or tilt: no scallop, L = 2R, in the table, JSON and batch alike. */
 import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
 import { run } from './helpers';

@@ -1,6 +1,7 @@
-/** Helpers of the command-line tests: run the CLI as a process, seeded random numbers. */
+/** Helpers of the command-line tests: run the CLI in this process or as one, seeded random numbers. */
 import { spawn } from 'node:child_process';
 import { PassThrough, Readable } from 'node:stream';
+import { text } from 'node:stream/consumers';
 import { fileURLToPath } from 'node:url';
 import { expect } from 'vitest';
 import { main } from '../../src/cli/main';
@@ -13,8 +14,12 @@ export interface RunResult {
   readonly stderr: string;
 }
 
-/** Runs the command line as a separate process, as a user would, with `stdin` as its input. */
-export function run(args: readonly string[], stdin = ''): Promise<RunResult> {
+/**
+ * Runs the command line as a separate process, as a user would, with `stdin` as its input: for
+ * the few tests of the process contract (exit codes, stdout and stderr, a closed pipe, stdin).
+ * It runs the compiled command line (bin.mjs; `npm test` builds it first).
+ */
+export function runProcess(args: readonly string[], stdin = ''): Promise<RunResult> {
   return new Promise((resolve, reject) => {
     const child = spawn(process.execPath, [BIN, ...args], { stdio: ['pipe', 'pipe', 'pipe'] });
     let stdout = '';
@@ -32,24 +37,30 @@ export function run(args: readonly string[], stdin = ''): Promise<RunResult> {
   });
 }
 
+/** What a pipe hands a reader at once (Linux: 64 KiB): stdin arrives in pieces of this size. */
+const PIPE_BYTES = 1 << 16;
+
 /**
- * Runs the command line's main() in this process (for many cases: no process start-up each), with
- * the same streams a process has: stdin from `stdin`, stdout and stderr gathered.
+ * Runs the command line's main() in this process (no process start-up: most tests), with the
+ * streams a process has: stdin from `stdin` as bytes in pipe-sized pieces (so a multi-byte
+ * character may fall across two), stdout and stderr gathered. The exit code is main()'s.
  */
-export async function runMain(args: readonly string[], stdin = ''): Promise<RunResult> {
+export async function run(args: readonly string[], stdin = ''): Promise<RunResult> {
   const stdout = new PassThrough();
   const stderr = new PassThrough();
-  let out = '';
-  let err = '';
-  stdout.setEncoding('utf8').on('data', (d: string) => {
-    out += d;
-  });
-  stderr.setEncoding('utf8').on('data', (d: string) => {
-    err += d;
-  });
-  const code = await main(args, { stdin: Readable.from([stdin]), stdout, stderr });
-  return { code, stdout: out, stderr: err };
+  const out = text(stdout);
+  const err = text(stderr);
+  const bytes = Buffer.from(stdin, 'utf8');
+  const pieces: Buffer[] = [];
+  for (let at = 0; at < bytes.length; at += PIPE_BYTES) pieces.push(bytes.subarray(at, at + PIPE_BYTES));
+  const code = await main(args, { stdin: Readable.from(pieces), stdout, stderr });
+  stdout.end();
+  stderr.end();
+  return { code, stdout: await out, stderr: await err };
 }
+
+/** The same as {@link run} (its earlier name). */
+export const runMain = run;
 
 /** A seeded generator of uniform numbers in [0, 1) (mulberry32): the same seed, the same cases. */
 export function random(seed: number): () => number {

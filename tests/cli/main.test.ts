@@ -13,7 +13,7 @@ import {
 } from '../../src/core/index';
 import { PAPER_CONDITIONS } from '../../src/core/procedures/paper';
 import { exactHalfIntervalMm } from '../../src/core/surfaces/solve';
-import { BIN, checkResultFields, logUniform, pick, random, randomHeight, randomTool, run } from './helpers';
+import { BIN, checkResultFields, logUniform, pick, random, randomHeight, randomTool, run, runProcess } from './helpers';
 
 const STACK = /\n\s+at |node:internal|Error:/;
 const tool = (R: number, Rcr: number, rho: number, tilt = 0) => ({
@@ -23,9 +23,9 @@ const tool = (R: number, Rcr: number, rho: number, tilt = 0) => ({
   tiltAngleDeg: tilt,
 });
 
-describe('command line (as a process)', () => {
+describe('command line', () => {
   it('prints a readable table of every procedure with deviations', async () => {
-    const r = await run(['--R', '3', '--Rcr', '1', '--rho', '5', '--h', '0.05']);
+    const r = await runProcess(['--R', '3', '--Rcr', '1', '--rho', '5', '--h', '0.05']);
     expect(r.code).toBe(0);
     // Format changed by issues 7 and 9: L first, 7 significant digits, the deviation is L's.
     expect(r.stdout).toMatch(/Exact \(3D geometry\)\s+2\.887185\s+1\.443592/);
@@ -182,10 +182,10 @@ describe('command line (as a process)', () => {
 
   it('invalid input: each error on its own line naming the option, the text as typed; --json also on stdout', async () => {
     const [overflow, json, half, tilt] = await Promise.all([
-      run(['--R', '1e-400', '--Rcr', '1', '--rho', '5', '--h', '0.05']),
-      run(['--R', '3', '--Rcr', '4', '--rho', '95', '--h', '0.05', '--json']),
-      run(['--R', '3', '--Rcr', '1', '--rho', '5', '--half-interval', '1e308']),
-      run(['--R', '3', '--Rcr', '1', '--rho', '5', '--tilt', '90', '--pattern', 'spiral', '--h', '0.05']),
+      runProcess(['--R', '1e-400', '--Rcr', '1', '--rho', '5', '--h', '0.05']),
+      runProcess(['--R', '3', '--Rcr', '4', '--rho', '95', '--h', '0.05', '--json']),
+      runProcess(['--R', '3', '--Rcr', '1', '--rho', '5', '--half-interval', '1e308']),
+      runProcess(['--R', '3', '--Rcr', '1', '--rho', '5', '--tilt', '90', '--pattern', 'spiral', '--h', '0.05']),
     ]);
     expect(overflow.stderr).toBe('error: --R: Tool radius R must be greater than 0 mm (got 1e-400).\n');
     expect(json.code).toBe(2);
@@ -208,10 +208,10 @@ describe('command line (as a process)', () => {
 
   it('usage errors (repeated option, --json with --batch) are one line and exit 2; -h is --help', async () => {
     const [repeated, jsonBatch, help, helpLong] = await Promise.all([
-      run(['--R', '3', '--Rcr', '1', '--rho', '5', '--h', '0.05', '--h', '0.1']),
-      run(['--batch', '--json'], 'R,Rcr,rho,h\n3,1,5,0.05\n'),
-      run(['-h']),
-      run(['--help']),
+      runProcess(['--R', '3', '--Rcr', '1', '--rho', '5', '--h', '0.05', '--h', '0.1']),
+      runProcess(['--batch', '--json'], 'R,Rcr,rho,h\n3,1,5,0.05\n'),
+      runProcess(['-h']),
+      runProcess(['--help']),
     ]);
     expect(repeated).toEqual({
       code: 2,
@@ -261,7 +261,7 @@ describe('command line (as a process)', () => {
     const rows = ['h,rho,Rcr,R'];
     const h = (i: number) => (0.01 + (i % 50) * 0.001).toFixed(3);
     for (let i = 0; i < count; i++) rows.push(`${h(i)},${i % 60},1,3`);
-    const r = await run(['--batch'], rows.join('\n'));
+    const r = await runProcess(['--batch'], rows.join('\n'));
     expect(r.code).toBe(0);
     expect(r.stderr).toBe('');
     const lines = r.stdout.trim().split('\n');

@@ -82,7 +82,7 @@ const args = (t: ToolInput, pattern: PassPattern, surface: Surface): string[] =>
     : []),
 ];
 
-describe('roughness and surfaces in --json (as a process)', () => {
+describe('roughness and surfaces in --json', () => {
   const cases: readonly [ToolInput, PassPattern, Surface][] = [
     [tool(3, 1, 5), 'one-way', { kind: 'plane' }],
     [tool(3, 1, 5, 5), 'zigzag', { kind: 'plane' }],
@@ -187,7 +187,7 @@ describe('roughness and surfaces in --json (as a process)', () => {
 });
 
 describe('--ra: the step-over for a target roughness', () => {
-  it('as a process: input echoes Ra, the roughness left is the target; the table says what was solved', async () => {
+  it('input echoes Ra, the roughness left is the target; the table says what was solved', async () => {
     const [json, table] = await Promise.all([
       run(['--R', '3', '--Rcr', '1', '--rho', '5', '--ra', '0.0125', '--json']),
       run(['--R', '3', '--Rcr', '1', '--rho', '5', '--ra', '0.0125']),
@@ -271,7 +271,7 @@ describe('--ra: the step-over for a target roughness', () => {
 });
 
 describe('--simulate', () => {
-  it('as a process: the simulation agrees with the exact values within its stated bounds; the table shows it', async () => {
+  it('the simulation agrees with the exact values within its stated bounds; the table shows it', async () => {
     const [json, inverse, table] = await Promise.all([
       run(['--R', '3', '--Rcr', '1', '--rho', '5', '--h', '0.05', '--simulate', '--json']),
       run([

@@ -1,5 +1,5 @@
 /**
- * --slope-sweep (issue 20) as a process: the programmed step for h at each slope and the cusp one
+ * --slope-sweep (issue 20): the programmed step for h at each slope and the cusp one
  * constant step leaves, against the ball end's closed form (the ball's profile is a circle of radius
  * R in any posture: L = 2 sqrt(2 R h - h^2) along the surface, and a step L' leaves
  * R - sqrt(R^2 - L'^2 / 4)); with the passes along the contour (raster psi = 90) the horizontal step
@@ -96,7 +96,7 @@ describe('--slope-sweep', () => {
     }
   });
 
-  it('as a process: a table of 31 slopes; the combinations that do not exist are one-line usage errors (in process: one start-up is enough)', async () => {
+  it('a table of 31 slopes; the combinations that do not exist are one-line usage errors', async () => {
     const r = await run(['--R', '3', '--Rcr', '1', '--h', '0.05', '--slope-sweep']);
     expect(r.code).toBe(0);
     const lines = r.stdout.split('\n');

@@ -1,6 +1,6 @@
 /**
  * The page's lookup table read back by the command line (issue 17): the worker's table, fed to
- * `--batch` as a process, is answered on the same surface, row for row: the batch writes the very
+ * `--batch`, is answered on the same surface, row for row: the batch writes the very
  * same file (the same echoed inputs, the same results in full precision, the same reasons).
  */
 import { describe, expect, it } from 'vitest';

@@ -1,7 +1,6 @@
 /**
- * Issue 20's command line: three-axis machining (--slope), run as a process for the issue's
- * examples and the usage errors, and through main() for the sweeps (the same code, without a
- * process start per case). Independent references: the ball end's closed form
+ * Issue 20's command line: three-axis machining (--slope), run through main() (the same code as
+ * the process, without a process start per case). Independent references: the ball end's closed form
  * `L = 2 sqrt(2 R h - h^2)` at every slope and direction; the upright tool on a flat floor (the
  * five-axis command line at --rho 0); the horizontal step and the step-down computed here from 3D
  * vectors (the two CC paths on the sloped plane and their vertical planes); the shank's height
@@ -47,7 +46,7 @@ function stepsFromVectors(L: number, alphaDeg: number, psiDeg: number): { lxy: n
   };
 }
 
-describe('the issue examples, as a process', () => {
+describe('the issue examples', () => {
   it('--slope with --h: the table leads with the programmed step, then L along the surface, lead and tilt', async () => {
     const r = await run(['--R', '3', '--Rcr', '1', '--slope', '30', '--raster-angle', '45', '--h', '0.01']);
     expect(r.code, r.stderr).toBe(0);
@@ -246,7 +245,7 @@ describe('usage errors and invalid inputs: one line naming the constraint', () =
     ],
   ];
 
-  it('combinations that do not exist are usage errors (exit 2), as a process', async () => {
+  it('combinations that do not exist are usage errors (exit 2)', async () => {
     for (const [args, message] of usageCases) {
       const r = await run(args);
       expect(r.code, args.join(' ')).toBe(2);
