@@ -253,9 +253,8 @@ function threeAxisRequest(
   }
   const passes = values.passes?.trim();
   if (passes === 'waterline') {
-    if (values['raster-angle'] !== undefined) {
-      return usage('--raster-angle is for raster passes: waterline passes follow the contour (psi = 90)');
-    }
+    // --raster-angle with waterline: 90 (the contour, what waterline passes follow) is accepted and
+    // any other angle refused by the core's validation, as in a batch row (one rule, one message).
     if (values['horizontal-step'] !== undefined) {
       return usage('--horizontal-step is the step of raster passes: give waterline passes their --step-down <mm>');
     }

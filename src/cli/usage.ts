@@ -51,10 +51,11 @@ radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
                         1 1/4 in, 0.2 thou, 12.7mm), whatever the unit
 
 Three-axis machining (the tool upright, the surface sloped; then --rho and --tilt are not given):
-  --slope <deg>         slope alpha of the surface at the contact (0 to 90; 90 is a vertical wall,
-                        cut flat by the side: no scallop)
+  --slope <deg>         slope alpha of the surface at the contact (0 to 90; at 90 a straight wall
+                        is cut flat by the side: no scallop; a concave meridian is answered)
   --passes <p>          raster (default: parallel passes) or waterline (Z-level, along the contour)
-  --raster-angle <deg>  raster only: plan angle psi of the passes to the fall line (0 to 90; default 0)
+  --raster-angle <deg>  raster: plan angle psi of the passes to the fall line (0 to 90; default 0);
+                        waterline: 90 or absent (the contour)
   --feed-radius <mm>    waterline only: a surface of revolution about a vertical axis, signed normal
                         radius along the feed (> 0 convex: dome, boss; < 0 concave: bowl, fillet)
   --cross-radius <mm>   waterline only: signed radius of the meridian (signs as --feed-radius);

@@ -224,10 +224,6 @@ describe('usage errors and invalid inputs: one line naming the constraint', () =
   const usageCases: [string[], RegExp][] = [
     [[...tool, '--slope', '30', '--rho', '5', '--h', '0.01'], /--rho does not go with --slope/],
     [[...tool, '--slope', '30', '--tilt', '5', '--h', '0.01'], /--tilt does not go with --slope/],
-    [
-      [...tool, '--slope', '30', '--passes', 'waterline', '--raster-angle', '10', '--h', '0.01'],
-      /--raster-angle is for raster/,
-    ],
     [[...tool, '--slope', '30', '--feed-radius', '50', '--h', '0.01'], /--feed-radius is for waterline/],
     [
       [...tool, '--slope', '30', '--passes', 'raster', '--cross-radius', '50', '--h', '0.01'],
@@ -255,6 +251,24 @@ describe('usage errors and invalid inputs: one line naming the constraint', () =
     }
   });
 
+  it('waterline with --raster-angle 90 (the contour) answers as without it, as a batch row does', async () => {
+    const plain = await run([...tool, '--slope', '30', '--passes', 'waterline', '--h', '0.01', '--json']);
+    const at90 = await run([
+      ...tool,
+      '--slope',
+      '30',
+      '--passes',
+      'waterline',
+      '--raster-angle',
+      '90',
+      '--h',
+      '0.01',
+      '--json',
+    ]);
+    expect(at90.code).toBe(0);
+    expect(JSON.parse(at90.stdout).exact).toEqual(JSON.parse(plain.stdout).exact);
+  });
+
   it('bad values name the constraint and its limit in mm or degrees; never NaN', async () => {
     const cases: [string[], RegExp][] = [
       [[...tool, '--slope', '95', '--h', '0.01'], /^error: --slope: Slope alpha must be from 0 to 90 degrees/],
@@ -263,6 +277,12 @@ describe('usage errors and invalid inputs: one line naming the constraint', () =
       [
         [...tool, '--slope', '30', '--raster-angle', '91', '--h', '0.01'],
         /--raster-angle: Raster angle psi must be from 0 to 90/,
+      ],
+      [
+        // Waterline passes follow the contour (psi = 90): another raster angle is refused by the core's
+        // rule, as in a batch row (one rule for both).
+        [...tool, '--slope', '30', '--passes', 'waterline', '--raster-angle', '10', '--h', '0.01'],
+        /^error: --raster-angle: Raster angle psi must be 90 degrees or left empty for waterline passes \(got 10\)/,
       ],
       [
         [...tool, '--slope', '30', '--passes', 'spiral', '--h', '0.01'],
