@@ -13,7 +13,7 @@ import { forwardInput, scallopHeightLimits } from '../../src/core/input/validate
 import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
 import { headerInUnit } from '../../src/core/output/lookupUnits';
 import { exactForward } from '../../src/core/surfaces/solve';
-import { ROOT, SHOTS, useSite } from './harness';
+import { keepShot, ROOT, useSite } from './harness';
 
 const site = useSite('docs/quick-lookup');
 
@@ -76,9 +76,72 @@ const resultNumbers = (page: Page) =>
       .filter((t) => /\d/.test(t)),
   );
 
+/** The command line's JSON answer (asked once per question: both viewports compare to it). */
+const cliAnswers = new Map<string, { exact: { interval: number; halfInterval: number } }>();
 function cli(args: readonly string[]): { exact: { interval: number; halfInterval: number } } {
-  const r = spawnSync(process.execPath, [`${ROOT}src/cli/bin.mjs`, ...args, '--json'], { encoding: 'utf8' });
-  return JSON.parse(r.stdout);
+  const key = args.join(' ');
+  let answer = cliAnswers.get(key);
+  if (answer === undefined) {
+    const r = spawnSync(process.execPath, [`${ROOT}src/cli/bin.mjs`, ...args, '--json'], { encoding: 'utf8' });
+    answer = JSON.parse(r.stdout) as { exact: { interval: number; halfInterval: number } };
+    cliAnswers.set(key, answer);
+  }
+  return answer;
+}
+
+/** What the page shows of the typing state of the h field, as read when a keystroke landed. */
+interface TypedState {
+  readonly value: string;
+  readonly error: string;
+  readonly status: string;
+  readonly numbers: string[];
+  readonly sceneClass: string;
+  readonly typingBadge: boolean;
+  readonly staleBadge: boolean;
+  readonly labels: boolean;
+}
+
+/**
+ * Records, from now on, what the page shows after each input event of the h field (read in a
+ * microtask after the page's own handling of the event, before anything later can change it).
+ */
+async function recordTyping(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const w = window as unknown as { __typed: unknown[] };
+    w.__typed = [];
+    const field = document.querySelector('[data-testid="input-h"]') as HTMLInputElement;
+    const shown = (selector: string) => {
+      const e = document.querySelector(selector);
+      if (!e) return false;
+      const r = e.getBoundingClientRect();
+      return e.checkVisibility({ visibilityProperty: true }) && r.width > 0 && r.height > 0;
+    };
+    const textOf = (id: string) => document.querySelector(`[data-testid="${id}"]`)?.textContent?.trim() ?? '';
+    field.addEventListener('input', () =>
+      queueMicrotask(() =>
+        w.__typed.push({
+          value: field.value,
+          error: textOf('error-h'),
+          status: textOf('results-status'),
+          numbers: [...document.querySelectorAll('.results output, .results .procedures td')]
+            .map((e) => e.textContent ?? '')
+            .filter((t) => /\d/.test(t)),
+          sceneClass: document.querySelector('[data-testid="scene"]')?.getAttribute('class') ?? '',
+          typingBadge: shown('.typing-badge'),
+          staleBadge: shown('.stale-badge:not(.typing-badge)'),
+          labels: shown('.scene-labels'),
+        }),
+      ),
+    );
+  });
+}
+
+/** The recorded state when the h field last held `value` (see recordTyping). */
+async function typedState(page: Page, value: string): Promise<TypedState> {
+  const all = await page.evaluate(() => (window as unknown as { __typed: TypedState[] }).__typed);
+  const found = all.filter((s) => s.value === value).at(-1);
+  if (found === undefined) throw new Error(`the h field never held "${value}": ${JSON.stringify(all)}`);
+  return found;
 }
 
 describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
@@ -102,8 +165,11 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     await expect
       .poll(() => text(page, 'error-Rcr'))
       .toBe('Corner radius Rcr must be at most D/2 = 5 mm (got 6); Rcr = D/2 is a ball end mill.');
-    await page.screenshot({ path: `${SHOTS}/quick-lookup-diameter-${vp.name}.png`, fullPage: true });
-    // The link keeps the diameter: a reload opens the same state.
+    await keepShot(page, `quick-lookup-diameter-${vp.name}`, { fullPage: true });
+    // The link keeps the diameter: a reload opens the same state (once the address holds it: the
+    // page writes it a moment after the inputs settle, urlState.ts).
+    await expect.poll(() => new URL(page.url()).searchParams.get('Rcr')).toBe('6');
+    expect(new URL(page.url()).searchParams.get('D')).toBe('10');
     await page.reload();
     await page
       .getByTestId('error-Rcr')
@@ -115,18 +181,23 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
   it('typing: a half-typed value shows no error and no old number, a decimal comma works, a pause or Enter commits', async () => {
     const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     const before = await text(page, 'result-exact-interval');
+    // What the page shows while a text is held back is read as each keystroke lands (a later read
+    // could come after the pause, when the text has committed).
+    await recordTyping(page);
     await typeInto(page, 'input-h', '0');
     // Held back: no message, every number a dash, the status says why.
-    expect(await text(page, 'error-h')).toBe('');
-    expect(await resultNumbers(page)).toEqual([]);
-    expect(await text(page, 'results-status')).toMatch(/^Typing/);
-    expect(await page.getByTestId('scene').getAttribute('class')).toMatch(/typing/);
-    expect(await page.locator('.typing-badge').isVisible()).toBe(true);
-    expect(await page.locator('.stale-badge:not(.typing-badge)').isVisible()).toBe(false);
-    expect(await page.locator('.scene-labels').isVisible()).toBe(false);
+    const zero = await typedState(page, '0');
+    expect(zero.error).toBe('');
+    expect(zero.numbers).toEqual([]);
+    expect(zero.status).toMatch(/^Typing/);
+    expect(zero.sceneClass).toMatch(/typing/);
+    expect(zero.typingBadge).toBe(true);
+    expect(zero.staleBadge).toBe(false);
+    expect(zero.labels).toBe(false);
     await page.keyboard.type(',', { delay: 30 });
-    expect(await text(page, 'error-h')).toBe('');
-    expect(await resultNumbers(page)).toEqual([]);
+    const comma = await typedState(page, '0,');
+    expect(comma.error).toBe('');
+    expect(comma.numbers).toEqual([]);
     await page.keyboard.type('05', { delay: 30 });
     // 0,05 is 0.05: the same answer as before, at once (a valid value commits while typing).
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(before);
@@ -134,8 +205,8 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     await expect.poll(() => new URL(page.url()).searchParams.get('h')).toBe('0,05');
     // A pause on a wrong value: the message comes, still no number.
     await typeInto(page, 'input-h', '-');
-    expect(await text(page, 'error-h')).toBe('');
-    await page.screenshot({ path: `${SHOTS}/quick-lookup-typing-${vp.name}.png` });
+    expect((await typedState(page, '-')).error).toBe('');
+    await keepShot(page, `quick-lookup-typing-${vp.name}`);
     await expect.poll(() => text(page, 'error-h')).toMatch(/Scallop height h must be a number \(got "-"\)/);
     expect(await resultNumbers(page)).toEqual([]);
     expect(await text(page, 'results-status')).toBe('');
@@ -144,7 +215,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     // Enter commits at once (well before the pause).
     await typeInto(page, 'input-h', '0');
     await page.keyboard.press('Enter');
-    expect(await text(page, 'error-h')).toMatch(/must be greater than 0 mm \(got 0\)/);
+    await expect.poll(() => text(page, 'error-h')).toMatch(/must be greater than 0 mm \(got 0\)/);
   });
 
   it('a flat end without lead leaves no scallop: the page says so and gives L = 2R, as the command line', async () => {
@@ -158,7 +229,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     expect(await text(page, 'no-scallop')).toMatch(
       /^No scallop: a flat end without lead or tilt .* leaves no scallop at any step-over up to its diameter, so L = 2R = 6\.0000 mm for any h\.$/,
     );
-    await page.screenshot({ path: `${SHOTS}/quick-lookup-flat-end-${vp.name}.png` });
+    await keepShot(page, `quick-lookup-flat-end-${vp.name}`);
     // With lead it leaves a scallop again and the statement goes.
     await typeInto(page, 'input-rho', '5');
     await expect.poll(() => page.getByTestId('no-scallop').isHidden()).toBe(true);
@@ -172,8 +243,8 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     await expect.poll(() => headlineCopy.textContent()).toBe('Copied');
     expect(await text(page, 'copy-status')).toBe('Copied 2.8872 (mm).');
     expect(await page.evaluate(() => navigator.clipboard.readText())).toBe('2.8872');
-    await page.screenshot({ path: `${SHOTS}/quick-lookup-copied-${vp.name}.png` });
-    await expect.poll(() => headlineCopy.textContent(), { timeout: 3000 }).toBe('Copy');
+    await keepShot(page, `quick-lookup-copied-${vp.name}`);
+    await expect.poll(() => headlineCopy.textContent()).toBe('Copy');
     await press(vp, page.getByRole('button', { name: 'Copy L/2' }));
     await expect.poll(() => page.evaluate(() => navigator.clipboard.readText())).toBe('1.4436');
     // Same format for a small value shown in um: copied in mm.
@@ -312,12 +383,10 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
         await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
         const moved = () => page.evaluate((y) => Math.abs(window.scrollY - y), y0);
         const touchAction = await box.evaluate((e) => getComputedStyle(e).touchAction);
-        await expect
-          .poll(moved, { timeout: 3000, message: `${target} (touch-action ${touchAction})` })
-          .toBeGreaterThan(50);
+        await expect.poll(moved, { message: `${target} (touch-action ${touchAction})` }).toBeGreaterThan(50);
       }
       await cdp.detach();
-      await page.screenshot({ path: `${SHOTS}/quick-lookup-touch-${vp.name}.png` });
+      await keepShot(page, `quick-lookup-touch-${vp.name}`);
     }
   });
 });
