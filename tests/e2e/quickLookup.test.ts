@@ -7,7 +7,7 @@
 import { spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import type { BrowserContext, Page } from 'playwright-core';
-import { describe, expect, it } from 'vitest';
+import { afterEach, describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
 import { forwardInput, scallopHeightLimits } from '../../src/core/input/validate';
 import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
@@ -16,6 +16,8 @@ import { exactForward } from '../../src/core/surfaces/solve';
 import { keepShot, ROOT, useSite } from './harness';
 
 const site = useSite('docs/quick-lookup');
+/** The profile view's state: the touch test reads it, then the Copy test uses the same document. */
+const PROFILE = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile';
 
 const VIEWPORTS = [
   { name: 'phone', width: 390, height: 844, touch: true },
@@ -23,15 +25,27 @@ const VIEWPORTS = [
 ] as const;
 type Viewport = (typeof VIEWPORTS)[number];
 
-/** One context per viewport (touch on the phone; clipboard allowed) and its tab, shared by that viewport's tests. */
-const contexts = new Map<string, { context: BrowserContext; page: Page }>();
+/**
+ * One context per viewport (touch on the phone; clipboard allowed) and its tab, shared by that
+ * viewport's tests; `unchanged`: the query its document opened, while no test has changed its inputs.
+ */
+const contexts = new Map<string, { context: BrowserContext; page: Page; unchanged: string | null }>();
+afterEach((context) => {
+  // A failed test may have left its document anywhere.
+  if (context.task.result?.state === 'fail') for (const entry of contexts.values()) entry.unchanged = null;
+});
 
 /**
  * Opens the page in the viewport's context (each open a fresh document in its tab) and waits for
- * the first result.
+ * the first result. With `reuse`, a document the test before opened with this query and left
+ * unchanged (it called `keep`) serves as it is.
  */
-async function open(vp: Viewport, query: string): Promise<{ page: Page; context: BrowserContext }> {
+async function open(vp: Viewport, query: string, reuse = false): Promise<{ page: Page; context: BrowserContext }> {
   let entry = contexts.get(vp.name);
+  if (reuse && entry !== undefined && !entry.page.isClosed() && entry.unchanged === query) {
+    entry.unchanged = null;
+    return entry;
+  }
   if (entry === undefined || entry.page.isClosed()) {
     const context = await site.browser().newContext({
       viewport: { width: vp.width, height: vp.height },
@@ -40,13 +54,20 @@ async function open(vp: Viewport, query: string): Promise<{ page: Page; context:
       acceptDownloads: true,
     });
     await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
-    entry = { context, page: await context.newPage() };
+    entry = { context, page: await context.newPage(), unchanged: null };
     contexts.set(vp.name, entry);
   } else await entry.page.goto('about:blank');
+  entry.unchanged = null;
   const { context, page } = entry;
   await page.goto(`${site.url()}${query}`);
   await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
   return { page, context };
+}
+
+/** Says, at the end of a test that changed no input, that the next test may reuse its document. */
+function keep(vp: Viewport, query: string): void {
+  const entry = contexts.get(vp.name);
+  if (entry !== undefined) entry.unchanged = query;
 }
 
 /** Taps on the phone, clicks on the desktop. */
@@ -235,31 +256,6 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     await expect.poll(() => page.getByTestId('no-scallop').isHidden()).toBe(true);
   });
 
-  it('Copy gives the plain number in the unit on screen, confirms it, and is disabled without a value', async () => {
-    const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    const headlineCopy = page.locator('.big button.copy');
-    await expect.poll(() => headlineCopy.isEnabled()).toBe(true);
-    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
-    await expect.poll(() => headlineCopy.textContent()).toBe('Copied');
-    expect(await text(page, 'copy-status')).toBe('Copied 2.8872 (mm).');
-    expect(await page.evaluate(() => navigator.clipboard.readText())).toBe('2.8872');
-    await keepShot(page, `quick-lookup-copied-${vp.name}`);
-    await expect.poll(() => headlineCopy.textContent()).toBe('Copy');
-    await press(vp, page.getByRole('button', { name: 'Copy L/2' }));
-    await expect.poll(() => page.evaluate(() => navigator.clipboard.readText())).toBe('1.4436');
-    // Same format for a small value shown in um: copied in mm.
-    await typeInto(page, 'input-h', '0.000001');
-    await expect.poll(() => text(page, 'result-exact-interval')).toMatch(/ \u00b5m$/);
-    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
-    const shown = await text(page, 'result-exact-interval');
-    const copied = await page.evaluate(() => navigator.clipboard.readText());
-    expect(Number(copied) * 1000).toBeCloseTo(Number.parseFloat(shown), 3);
-    // No value (invalid input): every Copy is disabled.
-    await typeInto(page, 'input-h', 'x');
-    await page.keyboard.press('Enter');
-    for (const b of await page.locator('button.copy').all()) expect(await b.isDisabled()).toBe(true);
-  });
-
   it('downloads the lookup table from the worker; its cells are the core exact step-over', async () => {
     const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&pattern=zigzag');
     const button = page.getByTestId('download-table');
@@ -336,7 +332,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
   });
 
   it('touch targets are at least 24 px; a vertical swipe over the scene or the profile scrolls the page', async () => {
-    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
+    const { page, context } = await open(vp, PROFILE);
     const small = await page.evaluate(() => {
       const out: string[] = [];
       const targets = document.querySelectorAll<HTMLElement>(
@@ -388,5 +384,32 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
       await cdp.detach();
       await keepShot(page, `quick-lookup-touch-${vp.name}`);
     }
+    keep(vp, PROFILE);
+  });
+
+  it('Copy gives the plain number in the unit on screen, confirms it, and is disabled without a value', async () => {
+    // The touch test's page (it changed no input; its view is no concern of Copy).
+    const { page } = await open(vp, PROFILE, true);
+    const headlineCopy = page.locator('.big button.copy');
+    await expect.poll(() => headlineCopy.isEnabled()).toBe(true);
+    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
+    await expect.poll(() => headlineCopy.textContent()).toBe('Copied');
+    expect(await text(page, 'copy-status')).toBe('Copied 2.8872 (mm).');
+    expect(await page.evaluate(() => navigator.clipboard.readText())).toBe('2.8872');
+    await keepShot(page, `quick-lookup-copied-${vp.name}`);
+    await expect.poll(() => headlineCopy.textContent()).toBe('Copy');
+    await press(vp, page.getByRole('button', { name: 'Copy L/2' }));
+    await expect.poll(() => page.evaluate(() => navigator.clipboard.readText())).toBe('1.4436');
+    // Same format for a small value shown in um: copied in mm.
+    await typeInto(page, 'input-h', '0.000001');
+    await expect.poll(() => text(page, 'result-exact-interval')).toMatch(/ \u00b5m$/);
+    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
+    const shown = await text(page, 'result-exact-interval');
+    const copied = await page.evaluate(() => navigator.clipboard.readText());
+    expect(Number(copied) * 1000).toBeCloseTo(Number.parseFloat(shown), 3);
+    // No value (invalid input): every Copy is disabled.
+    await typeInto(page, 'input-h', 'x');
+    await page.keyboard.press('Enter');
+    for (const b of await page.locator('button.copy').all()) expect(await b.isDisabled()).toBe(true);
   });
 });
