@@ -69,6 +69,13 @@ function chunkOf(id: string): string | null {
 
 /** Tests that drive headless Chromium or read the built sites (dist/, test-results/site-e2e/). */
 const BROWSER_TESTS = ['tests/e2e/**/*.test.ts', 'tests/build/sharedWorker.test.ts', 'tests/bench/web.test.ts'];
+/**
+ * Browser tests that write screenshots for a person to look at (the scene gallery; its check of no
+ * page errors sceneCamera.test.ts makes on the same postures, light and dark): run by `npm run shots`
+ * (E2E_SHOTS=1, which also keeps the other tests' screenshots, tests/e2e/harness.ts keepShot), not
+ * by `npm test`.
+ */
+const SHOT_ONLY_TESTS = process.env.E2E_SHOTS ? [] : ['tests/e2e/sceneGallery.test.ts'];
 
 /**
  * `vite build --mode lib` (npm run build:lib): the solver core as a library, one ES module in
@@ -144,8 +151,11 @@ export default defineConfig(({ mode, command }) =>
               test: {
                 name: 'browser',
                 include: BROWSER_TESTS,
+                exclude: SHOT_ONLY_TESTS,
                 globalSetup: ['tests/e2e/globalSetup.ts'],
                 fileParallelism: false,
+                // A page under load answers late: every poll waits up to 15 s for its condition (not 1 s).
+                expect: { poll: { timeout: 15_000 } },
               },
             },
           ],

@@ -2,69 +2,49 @@
  * Accessibility, as axe-core (injected by the test into the instrumented build, served without a
  * CSP: the injected script is inline) sees it: zero violations on the page, in each view, in each
  * embed, light and dark. Keyboard: the view tabs take Home and End; the clickable result rows are
- * a grid's rows with aria-selected.
+ * a grid's rows with aria-selected. One load for the page (its views by their tabs) and one per
+ * embed; dark by the system's colour scheme.
  */
-import { readFileSync } from 'node:fs';
-import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { pageSettled, ROOT, SHOTS, useSite } from './harness';
+import { axeViolations } from './axe';
+import { keepShot, pageSettled, showView, useSite, viewAs } from './harness';
 
 const site = useSite('docs/a11y');
-const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
 const STATE = 'R=3&Rcr=1&rho=5&h=0.05&unit=mm';
 const VIEWS = ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'] as const;
-
-interface AxeViolation {
-  readonly id: string;
-  readonly nodes: ReadonlyArray<{ readonly target: readonly string[] }>;
-}
-
-/** axe-core's violations on the page as it is, one line each (rule, count, first targets). */
-async function violations(page: Page): Promise<string[]> {
-  await page.addScriptTag({ content: AXE });
-  const found = await page.evaluate(async () => {
-    const axe = (window as unknown as { axe: { run(): Promise<{ violations: AxeViolation[] }> } }).axe;
-    return (await axe.run()).violations;
-  });
-  return found.map(
-    (v) =>
-      `${v.id} x${v.nodes.length}: ${v.nodes
-        .slice(0, 3)
-        .map((n) => n.target.join(' '))
-        .join(', ')}`,
-  );
-}
+const THEMES = ['light', 'dark'] as const;
+const FULL = { width: 1400, height: 900 };
+const EMBED = { width: 480, height: 700 };
 
 describe('axe-core', () => {
   it('zero violations: the page in each view, and each embed, light and dark', async () => {
-    for (const theme of ['light', 'dark'] as const) {
-      const pages: Array<[string, { width: number; height: number }]> = [
-        ...VIEWS.map((v): [string, { width: number; height: number }] => [`view=${v}`, { width: 1400, height: 900 }]),
-        ...VIEWS.map((v): [string, { width: number; height: number }] => [
-          `view=${v}&embed=1`,
-          { width: 480, height: 700 },
-        ]),
-        ['embed=1', { width: 480, height: 700 }],
-      ];
-      const page = await site.browser().newPage({ colorScheme: theme });
-      for (const [query, viewport] of pages) {
-        await page.setViewportSize(viewport);
-        await page.goto(`${site.url()}?${STATE}&${query}`);
-        await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
-        const view = /view=(\w+)/.exec(query)?.[1];
-        if (view) await page.locator(`#panel-${view} > *`).first().waitFor();
+    const { page } = await site.open(`?${STATE}`, FULL);
+    for (const theme of THEMES) {
+      await viewAs(page, FULL, theme);
+      for (const view of VIEWS) {
+        await showView(page, view);
         // Every view's data drawn and the page quiet: axe reads the final page, not one half drawn.
         await pageSettled(page);
-        expect(await violations(page), `${query} ${theme}`).toEqual([]);
+        expect(await axeViolations(page), `view=${view} ${theme}`).toEqual([]);
       }
-      // A procedure highlighted (hover) keeps its contrast too.
-      await page.setViewportSize({ width: 1400, height: 900 });
-      await page.goto(`${site.url()}?${STATE}&view=formulas`);
-      await page.locator('.formula').first().waitFor();
-      await page.locator('.procedures tr[data-procedure="bedi"]').click();
-      expect(await violations(page), `selected row ${theme}`).toEqual([]);
-      await page.screenshot({ path: `${SHOTS}/a11y-formulas-${theme}.png` });
-      await page.close();
+    }
+    // A procedure highlighted (hover) keeps its contrast too.
+    await showView(page, 'formulas');
+    await page.locator('.formula').first().waitFor();
+    await page.locator('.procedures tr[data-procedure="bedi"]').click();
+    for (const theme of ['dark', 'light'] as const) {
+      await viewAs(page, FULL, theme);
+      expect(await axeViolations(page), `selected row ${theme}`).toEqual([]);
+      await keepShot(page, `a11y-formulas-${theme}`);
+    }
+    for (const query of [...VIEWS.map((v) => `view=${v}&embed=1`), 'embed=1']) {
+      const embedded = (await site.open(`?${STATE}&${query}`, EMBED)).page;
+      const view = /view=(\w+)/.exec(query)?.[1];
+      if (view) await embedded.locator(`#panel-${view} > *`).first().waitFor();
+      for (const theme of THEMES) {
+        await viewAs(embedded, EMBED, theme);
+        expect(await axeViolations(embedded), `${query} ${theme}`).toEqual([]);
+      }
     }
   }, 240_000);
 });
@@ -86,7 +66,10 @@ describe('keyboard and roles', () => {
   });
 
   it('the result rows are selectable grid rows: aria-selected follows click and Enter', async () => {
-    const { page } = await site.open(`?${STATE}&view=tables`);
+    // The page of the test before (only its tabs moved), in the tables view.
+    const { page } = await site.reuse(`?${STATE}`);
+    await showView(page, 'tables');
+    site.changed();
     expect(await page.getByTestId('procedures-table').getAttribute('role')).toBe('grid');
     const row = (key: string) => page.locator(`.procedures tr[data-procedure="${key}"]`);
     expect(await row('sekine').getAttribute('aria-selected')).toBe('false');

@@ -10,10 +10,10 @@ import { formatLenUnit } from '../../src/ui/format';
 import {
   animationFrames,
   frames,
+  keepShot,
   namedWorker,
   paintedFraction,
   ROOT,
-  SHOTS,
   SOLVER,
   useSite,
   VIEWS_WORKER,
@@ -22,12 +22,14 @@ import {
 
 const site = useSite('docs/tools/path-interval');
 const open = site.open;
+/** The plain state, on one load for the tests that read it (the last of them changes it). */
+const PLAIN = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm';
 
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
 
 describe('calculator page in headless Chromium', () => {
   it('loads from a sub-path, solves in a module worker, and shows the command line numbers', async () => {
-    const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const { page, errors } = await site.reuse(PLAIN);
     const cli = spawnSync(
       process.execPath,
       [`${ROOT}src/cli/bin.mjs`, '--R', '3', '--Rcr', '1', '--rho', '5', '--h', '0.05', '--json'],
@@ -44,7 +46,49 @@ describe('calculator page in headless Chromium', () => {
     const workers = page.workers().map((w) => w.url());
     expect(workers.some((u) => u.startsWith(site.url()) && /solver\.worker/.test(u))).toBe(true);
     expect(errors).toEqual([]);
-    await page.screenshot({ path: `${SHOTS}/calculator.png` });
+    await keepShot(page, 'calculator');
+  });
+
+  it('the mouse turns and zooms the scene (src/render/orbit.ts)', async () => {
+    // The page of the test before (it changed nothing): the camera is no input.
+    const { page } = await site.reuse(PLAIN);
+    await expect.poll(() => frames(page)).toBeGreaterThan(0);
+    const canvas = page.getByTestId('scene-canvas');
+    const box = await canvas.boundingBox();
+    if (box === null) throw new Error('no scene');
+    const before = await canvas.screenshot();
+    const framesBefore = await frames(page);
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width / 2 + 80, box.y + box.height / 2 + 10, { steps: 4 });
+    await page.mouse.up();
+    await expect.poll(() => frames(page)).toBeGreaterThan(framesBefore);
+    const turned = await canvas.screenshot();
+    expect(turned.equals(before)).toBe(false);
+    const framesTurned = await frames(page);
+    await page.mouse.wheel(0, 300);
+    await expect.poll(() => frames(page)).toBeGreaterThan(framesTurned);
+    expect((await canvas.screenshot()).equals(turned)).toBe(false);
+    // The page did not scroll under the wheel over the scene.
+    expect(await page.evaluate(() => window.scrollY)).toBe(0);
+  });
+
+  it('moving a slider by keyboard updates the numbers, the URL and the scene', async () => {
+    const { page } = await site.reuse(PLAIN);
+    site.changed();
+    const before = await text(page, 'result-exact-half');
+    const framesBefore = await frames(page);
+    await page.getByTestId('slider-rho').focus();
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(() => page.getByTestId('input-rho').inputValue()).toBe('5.2');
+    const expected = compareForward(
+      forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5.2, tiltAngleDeg: 0 }, 'one-way', 0.05),
+    );
+    await expect.poll(() => text(page, 'result-exact-half')).toBe(`${expected.exact.halfIntervalMm.toFixed(4)} mm`);
+    expect(await text(page, 'result-exact-half')).not.toBe(before);
+    await expect.poll(() => new URL(page.url()).searchParams.get('rho')).toBe('5.2');
+    await expect.poll(() => frames(page)).toBeGreaterThan(framesBefore);
   });
 
   it('draws the scene (the canvas is not blank) and renders only when something changed', async () => {
@@ -83,47 +127,7 @@ describe('calculator page in headless Chromium', () => {
       (n) => (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval.frames() > n,
       before,
     );
-    await page.screenshot({ path: `${SHOTS}/along-the-feed.png` });
-  });
-
-  it('the mouse turns and zooms the scene (src/render/orbit.ts)', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    await expect.poll(() => frames(page)).toBeGreaterThan(0);
-    const canvas = page.getByTestId('scene-canvas');
-    const box = await canvas.boundingBox();
-    if (box === null) throw new Error('no scene');
-    const before = await canvas.screenshot();
-    const framesBefore = await frames(page);
-    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-    await page.mouse.down();
-    await page.mouse.move(box.x + box.width / 2 + 80, box.y + box.height / 2 + 10, { steps: 4 });
-    await page.mouse.up();
-    await expect.poll(() => frames(page)).toBeGreaterThan(framesBefore);
-    const turned = await canvas.screenshot();
-    expect(turned.equals(before)).toBe(false);
-    const framesTurned = await frames(page);
-    await page.mouse.wheel(0, 300);
-    await expect.poll(() => frames(page)).toBeGreaterThan(framesTurned);
-    expect((await canvas.screenshot()).equals(turned)).toBe(false);
-    // The page did not scroll under the wheel over the scene.
-    expect(await page.evaluate(() => window.scrollY)).toBe(0);
-  });
-
-  it('moving a slider by keyboard updates the numbers, the URL and the scene', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    const before = await text(page, 'result-exact-half');
-    const framesBefore = await frames(page);
-    await page.getByTestId('slider-rho').focus();
-    await page.keyboard.press('ArrowRight');
-    await page.keyboard.press('ArrowRight');
-    await expect.poll(() => page.getByTestId('input-rho').inputValue()).toBe('5.2');
-    const expected = compareForward(
-      forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5.2, tiltAngleDeg: 0 }, 'one-way', 0.05),
-    );
-    await expect.poll(() => text(page, 'result-exact-half')).toBe(`${expected.exact.halfIntervalMm.toFixed(4)} mm`);
-    expect(await text(page, 'result-exact-half')).not.toBe(before);
-    await expect.poll(() => new URL(page.url()).searchParams.get('rho')).toBe('5.2');
-    await expect.poll(() => frames(page)).toBeGreaterThan(framesBefore);
+    await keepShot(page, 'along-the-feed');
   });
 
   it('invalid input shows an alert naming the constraint, dashes instead of NaN, and keeps the other values', async () => {
@@ -136,7 +140,7 @@ describe('calculator page in headless Chromium', () => {
     expect(await page.getByTestId('input-R').inputValue()).toBe('3');
     expect(await page.getByTestId('input-h').inputValue()).toBe('0.05');
     expect(await page.getByTestId('scene').getAttribute('class')).toMatch(/stale/);
-    await page.screenshot({ path: `${SHOTS}/invalid-rcr.png` });
+    await keepShot(page, 'invalid-rcr');
     await page.getByTestId('input-Rcr').fill('1');
     await page.getByTestId('input-h').fill('5');
     await expect
@@ -195,7 +199,7 @@ describe('calculator page in headless Chromium', () => {
     const href = new URL((await link.getAttribute('href')) ?? '', page.url());
     expect(href.searchParams.get('embed')).toBeNull();
     expect(href.searchParams.get('rho')).toBe('20');
-    await page.screenshot({ path: `${SHOTS}/embed-480x360.png` });
+    await keepShot(page, 'embed-480x360');
   });
 
   it('solve for scallop height: the inverse mode takes L and shows each procedure h', async () => {
@@ -228,7 +232,7 @@ describe('calculator page in headless Chromium', () => {
     void solver.evaluate(() => (globalThis as unknown as { close(): void }).close()).catch(() => undefined);
     await closed;
     await page.getByTestId('input-h').fill('0.1');
-    await expect.poll(() => text(page, 'result-exact-half'), { timeout: 10_000 }).toBe('1.8921 mm'); // notes: 1.892088
+    await expect.poll(() => text(page, 'result-exact-half')).toBe('1.8921 mm'); // notes: 1.892088
     expect(await page.getByTestId('notice').textContent()).toMatch(/solver was restarted/);
     const starts = await page.evaluate(() =>
       (window as unknown as { __pathInterval: { workerStarts(): number } }).__pathInterval.workerStarts(),
@@ -265,7 +269,7 @@ describe('calculator page in headless Chromium', () => {
     await page.getByTestId('slider-h').focus();
     for (let i = 0; i < 30; i++) await page.keyboard.press('ArrowRight');
     await expect.poll(() => page.getByTestId('input-h').inputValue()).toBe('0.08');
-    await expect.poll(() => text(page, 'result-exact-half'), { timeout: 5000 }).toBe(final);
+    await expect.poll(() => text(page, 'result-exact-half')).toBe(final);
     // Every request of the burst answered: no late reply can come after this.
     await workerIdle(page, SOLVER);
     type Seen = { text: string; h: string; stale: boolean };

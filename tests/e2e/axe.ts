@@ -1,7 +1,7 @@
 /**
  * axe-core run on a page or a frame as it is (the instrumented build is served without a CSP, so
- * the injected script runs): one line per violation (rule, count, first targets). The same run as
- * tests/e2e/a11y.test.ts's, for a frame too (an embed inside its host page).
+ * the injected script runs): one line per violation (rule, count, first targets), for a page or a
+ * frame (an embed inside its host page).
  */
 import { readFileSync } from 'node:fs';
 import type { Frame, Page } from 'playwright-core';
@@ -16,7 +16,8 @@ interface AxeViolation {
 
 /** axe-core's violations in `target` (a page or one frame), one line each. */
 export async function axeViolations(target: Page | Frame): Promise<string[]> {
-  await target.addScriptTag({ content: AXE });
+  // Once per document (axe-core is about 500 kB of script to parse).
+  if (!(await target.evaluate(() => 'axe' in window))) await target.addScriptTag({ content: AXE });
   const found = await target.evaluate(async () => {
     const axe = (window as unknown as { axe: { run(): Promise<{ violations: AxeViolation[] }> } }).axe;
     return (await axe.run()).violations;

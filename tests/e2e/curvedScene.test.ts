@@ -7,7 +7,7 @@
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { paintedFraction, SHOTS, sceneIdle, useSite } from './harness';
+import { keepShot, paintedFraction, sceneIdle, useSite } from './harness';
 import { hueShares } from './pixels';
 
 const site = useSite('docs/curved-scene');
@@ -118,9 +118,7 @@ describe('the 3D scene of doubly curved points and three-axis machining', () => 
         console.log(
           `${device} ${name}: painted ${painted.toFixed(3)}, blue ${hues.blue.toFixed(3)}, orange ${hues.orange.toFixed(3)}`,
         );
-        await page
-          .getByTestId('scene-canvas')
-          .screenshot({ path: `${SHOTS}/curved-scene-${device}-${name.replace(/ /g, '-')}.png` });
+        await keepShot(page.getByTestId('scene-canvas'), `curved-scene-${device}-${name.replace(/ /g, '-')}`);
         expect(painted).toBeGreaterThan(0.1);
         if (name === 'dome') {
           // Falling away from the tangent plane in every direction: blue, and no rising (orange) part.

@@ -24,7 +24,7 @@ import { THREE_AXIS_NOTE } from '../../src/ui/roughness';
 import { sliderRanges } from '../../src/ui/sliders';
 import { parseUrl } from '../../src/ui/state';
 import { THREE_AXIS_TABLE_NOTE } from '../../src/ui/threeAxisNotes';
-import { pageSettled, ROOT, SHOTS, urlWrites, useSite } from './harness';
+import { keepShot, pageSettled, ROOT, urlWrites, useSite } from './harness';
 
 const site = useSite('docs/curved-three-axis');
 
@@ -93,7 +93,7 @@ describe.each([
     await expect.poll(() => new URL(page.url()).searchParams.get('crossRadius')).toBe('40');
     expect(new URL(page.url()).searchParams.get('feedRadius')).toBe('80');
     expect(await fitsWidth(page)).toBe(true);
-    await page.screenshot({ path: `${SHOTS}/curved-dome-${name}.png`, fullPage: true });
+    await keepShot(page, `curved-dome-${name}`, { fullPage: true });
     expect(errors).toEqual([]);
   });
 
@@ -139,7 +139,7 @@ describe.each([
     expect(new URL(page.url()).searchParams.get('machine')).toBe('3axis');
     expect(new URL(page.url()).searchParams.has('rho')).toBe(false);
     expect(await fitsWidth(page)).toBe(true);
-    await page.screenshot({ path: `${SHOTS}/three-axis-raster-${name}.png`, fullPage: true });
+    await keepShot(page, `three-axis-raster-${name}`, { fullPage: true });
     expect(errors).toEqual([]);
   });
 

@@ -24,7 +24,7 @@ import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
 import { headerInUnit } from '../../src/core/output/lookupUnits';
 import { scallopHeightForRaMm } from '../../src/core/roughness/roughness';
 import { formatLenUnit, formatSignedLenUnit } from '../../src/ui/format';
-import { paintedFraction, SHOTS, STRICT_CSP, useSite } from './harness';
+import { keepShot, paintedFraction, STRICT_CSP, useSite } from './harness';
 
 const site = useSite('docs/cylinder', { build: 'production', headers: { 'Content-Security-Policy': STRICT_CSP } });
 
@@ -145,7 +145,7 @@ describe('curved surfaces on the page', () => {
     expect(Number(await page.getByTestId('slider-surface-radius').getAttribute('min'))).toBe(
       Math.ceil(limit / 0.1) * 0.1,
     );
-    await page.screenshot({ path: `${SHOTS}/cylinder-gouging.png` });
+    await keepShot(page, 'cylinder-gouging');
     // Wide enough again: an answer.
     await page.getByTestId('input-surface-radius').fill('25');
     const e = exactForward(forwardInput(TOOL, 'one-way', 0.05, cyl(-25, 'feed')));
@@ -261,7 +261,7 @@ describe('curved surfaces on the page', () => {
         .toEqual(
           expect.arrayContaining([`L = ${formatLenUnit(e.intervalMm, 'mm')}${axis === 'feed' ? ' (arc)' : ''}`]),
         );
-      await view.screenshot({ path: `${SHOTS}/cylinder-profile-${axis}.png` });
+      await keepShot(view, `cylinder-profile-${axis}`);
       // The scene: the cusps on the h pseudo surface, the legend for a cylinder, something drawn.
       const labels = () =>
         page
@@ -274,7 +274,7 @@ describe('curved surfaces on the page', () => {
       expect(await page.locator('.legend .cylinder-only').isVisible()).toBe(true);
       expect(await page.locator('.legend .plane-only').isVisible()).toBe(false);
       expect(await paintedFraction(page)).toBeGreaterThan(0.05);
-      await page.getByTestId('scene').screenshot({ path: `${SHOTS}/cylinder-scene-${axis}.png` });
+      await keepShot(page.getByTestId('scene'), `cylinder-scene-${axis}`);
       // The views that cannot show a cylinder say so.
       await page.getByRole('tab', { name: '3D procedure, step by step' }).click();
       await expect.poll(() => text(page, 'stepper-caption')).toMatch(/shown for a plane only/);
@@ -293,7 +293,7 @@ describe('curved surfaces on the page', () => {
 
   it('a target Ra: solved on a cylinder along the feed and across it, the step-over of the core, within the watchdog', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&target=ra&ra=0.01&unit=mm&surfaceRadius=50&surfaceAxis=feed');
-    await expect.poll(() => text(page, 'result-exact-interval'), { timeout: 10_000 }).toMatch(/\d mm$/);
+    await expect.poll(() => text(page, 'result-exact-interval')).toMatch(/\d mm$/);
     await radio(page, 'surface-axis', 'cross').check();
     // The core's answer (it once took about 3 s, beyond the worker's 3 s watchdog, and was refused).
     const surface = cyl(50, 'cross');

@@ -12,7 +12,7 @@ import type { Browser, Frame, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { launchChromium } from '../../src/bench/browser';
 import { type StaticMounts, serveStaticMounts } from '../../src/bench/staticServer';
-import { ROOT, SHOTS, siteDir } from './harness';
+import { keepShot, ROOT, siteDir } from './harness';
 
 const DOCS_OUT = `${ROOT}test-results/docs-site`;
 let browser: Browser | null = null;
@@ -80,7 +80,7 @@ describe('example documentation site (MkDocs)', () => {
     }
     // The plain iframe started at 360 px and the tables are taller: it grew.
     expect(await frameHeight(page, '#plain-frame')).toBeGreaterThan(360);
-    await page.screenshot({ path: `${SHOTS}/docs-site.png`, fullPage: true });
+    await keepShot(page, 'docs-site', { fullPage: true });
     await page.close();
   }, 90_000);
 
@@ -155,7 +155,7 @@ describe('the page and its theme="auto" embed follow the reader\'s colour scheme
     });
     const src = await page.locator(selector).getAttribute('src');
     await page.locator('#embed-auto').scrollIntoViewIfNeeded();
-    await page.screenshot({ path: `${SHOTS}/docs-site-light-page-light-embed.png` });
+    await keepShot(page, 'docs-site-light-page-light-embed');
 
     await page.emulateMedia({ colorScheme: 'dark' });
     await expect.poll(async () => (await pageLook(page)).mode).toBe('dark');
@@ -167,7 +167,7 @@ describe('the page and its theme="auto" embed follow the reader\'s colour scheme
     // The pinned embeds keep their themes on the dark page.
     const pinned = await embedded(page, '#embed-light iframe', '[data-testid="profile-view"] polygon.scallop');
     expect((await frameLook(pinned)).theme).toBe('light');
-    await page.screenshot({ path: `${SHOTS}/docs-site-dark-page-dark-embed.png` });
+    await keepShot(page, 'docs-site-dark-page-dark-embed');
     await page.close();
   }, 60_000);
 });

@@ -11,7 +11,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
 import { EMBED_ATTRIBUTES } from '../../src/core/input/fields';
 import { axeViolations } from './axe';
-import { pageSettled, ROOT, SHOTS, useSite } from './harness';
+import { keepShot, pageSettled, ROOT, showView, useSite, viewAs } from './harness';
 import { clippedElements, colourShare } from './pixels';
 
 const site = useSite('docs/embed');
@@ -38,7 +38,7 @@ describe('dark mode', () => {
     await lead.locator('svg.chart-svg').waitFor();
     await expect.poll(() => colourShare(page, lead, '#fbbf24', 40)).toBeGreaterThan(0.0005);
     expect(await colourShare(page, lead, '#b45309', 30)).toBe(0);
-    await page.screenshot({ path: `${SHOTS}/theme-dark-system-1400.png` });
+    await keepShot(page, 'theme-dark-system-1400');
     await page.emulateMedia({ colorScheme: 'light' });
     await expect.poll(() => page.evaluate(() => document.documentElement.dataset.theme)).toBe('light');
     await expect.poll(() => sceneShows(page, SCENE_BG.light)).toBeGreaterThan(0.3);
@@ -57,7 +57,7 @@ describe('dark mode', () => {
       .evaluate((e) => getComputedStyle(e).stroke);
     expect(stroke).toBe('rgb(243, 244, 246)');
     expect(new URL(dark.url()).searchParams.get('theme')).toBe('dark'); // kept while the state changes
-    await dark.screenshot({ path: `${SHOTS}/theme-dark-embed-profile-480.png` });
+    await keepShot(dark, 'theme-dark-embed-profile-480');
 
     const light = (await site.open(`?${STATE}&theme=light`, { width: 1400, height: 900 }, 'dark')).page;
     await light.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
@@ -274,7 +274,7 @@ describe('copy embed code', () => {
     await embedded.goto(src);
     await embedded.getByTestId('teaching').locator('.formula').first().waitFor();
     expect(await embedded.evaluate(() => document.documentElement.classList.contains('single-view'))).toBe(true);
-    await page.screenshot({ path: `${SHOTS}/copy-embed-confirmed.png` });
+    await keepShot(page, 'copy-embed-confirmed');
     await context.close();
   });
 
@@ -293,56 +293,53 @@ describe('copy embed code', () => {
 
 describe('every view fits', () => {
   it('each view embedded at 480 px: no horizontal scrolling, nothing cut off (light and dark)', async () => {
-    for (const theme of ['light', 'dark'] as const) {
-      const page = await site.browser().newPage({ viewport: { width: 480, height: 700 }, colorScheme: theme });
-      for (const view of VIEWS) {
-        await page.goto(`${site.url()}?${STATE}&view=${view}&embed=1`);
-        await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
-        await page.locator(`#panel-${view} > *`).first().waitFor();
-        await pageSettled(page);
+    // One load per view (an embed shows one view, no tabs); the dark scheme by emulateMedia.
+    for (const view of VIEWS) {
+      const { page } = await site.open(`?${STATE}&view=${view}&embed=1`, { width: 480, height: 700 }, 'light');
+      await page.locator(`#panel-${view} > *`).first().waitFor();
+      for (const theme of ['light', 'dark'] as const) {
+        await viewAs(page, { width: 480, height: 700 }, theme);
         const width = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
-        expect(width[0], `${view}`).toBeLessThanOrEqual(width[1] as number);
+        expect(width[0], `${view} ${theme}`).toBeLessThanOrEqual(width[1] as number);
         expect(await clippedElements(page), `${view} ${theme}`).toEqual([]);
-        await page.screenshot({ path: `${SHOTS}/embed-${view}-480-${theme}.png`, fullPage: true });
+        await keepShot(page, `embed-${view}-480-${theme}`, { fullPage: true });
+        if (theme === 'dark') continue;
+        // What was cut off before: the paper tables' Bedi column and the stepper's camera buttons.
+        if (view === 'tables') {
+          const bedi = page.locator('[data-testid="paper-half-0-bedi"]');
+          await bedi.waitFor();
+          const box = await bedi.boundingBox();
+          expect((box?.x ?? 1e9) + (box?.width ?? 0)).toBeLessThanOrEqual(480);
+        }
+        if (view === 'stepper') {
+          const top = page.locator('[data-camera="top"]');
+          await top.waitFor();
+          expect(await top.isVisible()).toBe(true);
+          const topBox = await top.boundingBox();
+          expect((topBox?.x ?? 1e9) + (topBox?.width ?? 0)).toBeLessThanOrEqual(480);
+        }
       }
-      await page.close();
     }
-    // What was cut off before: the paper tables' Bedi column and the stepper's camera buttons.
-    const page = await site.browser().newPage({ viewport: { width: 480, height: 700 } });
-    await page.goto(`${site.url()}?${STATE}&view=tables&embed=1`);
-    const bedi = page.locator('[data-testid="paper-half-0-bedi"]');
-    await bedi.waitFor();
-    const box = await bedi.boundingBox();
-    expect((box?.x ?? 1e9) + (box?.width ?? 0)).toBeLessThanOrEqual(480);
-    await page.goto(`${site.url()}?${STATE}&view=stepper&embed=1`);
-    const top = page.locator('[data-camera="top"]');
-    await top.waitFor();
-    expect(await top.isVisible()).toBe(true);
-    const topBox = await top.boundingBox();
-    expect((topBox?.x ?? 1e9) + (topBox?.width ?? 0)).toBeLessThanOrEqual(480);
-    await page.close();
   }, 120_000);
 
   it('the full page at 360, 390, 414 and 768 px: no horizontal scrolling in any view', async () => {
+    // One load; the sizes by setViewportSize, the views by their tabs.
+    const { page } = await site.open(`?${STATE}`, { width: 360, height: 780 });
     for (const [width, height] of [
       [360, 780],
       [390, 844],
       [414, 896],
       [768, 1024],
     ] as const) {
-      const page = await site.browser().newPage({ viewport: { width, height } });
+      await viewAs(page, { width, height });
       for (const view of VIEWS) {
-        await page.goto(`${site.url()}?${STATE}&view=${view}`);
-        await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
-        await page.locator(`#panel-${view} > *`).first().waitFor();
+        await showView(page, view);
         await pageSettled(page);
         const scroll = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
         expect(scroll[0], `${view} at ${width}`).toBeLessThanOrEqual(scroll[1] as number);
         expect(await clippedElements(page), `${view} at ${width}`).toEqual([]);
-        if (view === 'profile' || view === 'tables')
-          await page.screenshot({ path: `${SHOTS}/full-${view}-${width}.png`, fullPage: true });
+        if (view === 'profile' || view === 'tables') await keepShot(page, `full-${view}-${width}`, { fullPage: true });
       }
-      await page.close();
     }
   }, 180_000);
 });
@@ -427,7 +424,7 @@ describe('the theme of <path-interval-calculator>, changed without reloading the
     await expect.poll(stroke).toBe('rgb(243, 244, 246)');
     // The embedded page's own address keeps the theme in force.
     await expect.poll(() => frame.evaluate(() => new URL(location.href).searchParams.get('theme'))).toBe('dark');
-    await host.screenshot({ path: `${SHOTS}/embed-theme-attribute-dark.png` });
+    await keepShot(host, 'embed-theme-attribute-dark');
     expect(await axeViolations(frame), 'restyled dark').toEqual([]);
 
     // auto: the host page's scheme (light), then as it changes.
@@ -462,11 +459,11 @@ describe('the theme of <path-interval-calculator>, changed without reloading the
       (window as unknown as { marker: string }).marker = 'same document';
     });
     expect(await look(frame)).toEqual({ theme: 'dark', background: DARK_BG, marker: 'same document' });
-    await host.screenshot({ path: `${SHOTS}/embed-theme-auto-dark.png` });
+    await keepShot(host, 'embed-theme-auto-dark');
     await host.emulateMedia({ colorScheme: 'light' });
     await expect.poll(() => look(frame)).toEqual({ theme: 'light', background: LIGHT_BG, marker: 'same document' });
     expect(await iframe.getAttribute('src')).toBe(src);
-    await host.screenshot({ path: `${SHOTS}/embed-theme-auto-light.png` });
+    await keepShot(host, 'embed-theme-auto-light');
     expect(await axeViolations(frame), 'restyled light').toEqual([]);
     await host.close();
   });
@@ -573,7 +570,7 @@ describe('hostile attribute values of <path-interval-calculator>', () => {
     expect(notice).toMatch(/h="1e999" in the link is not a number/);
     const text = (await frame.locator('body').textContent()) ?? '';
     expect(text).not.toMatch(/NaN|Infinity|-0(?![.\d])/);
-    await host.screenshot({ path: `${SHOTS}/embed-hostile-attributes.png`, fullPage: true });
+    await keepShot(host, 'embed-hostile-attributes', { fullPage: true });
     await host.close();
   });
 });

@@ -13,7 +13,7 @@ import type { Page, Worker } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { exactForward, forwardInput, type ToolInput } from '../../src/core/index';
 import { formatLenUnit } from '../../src/ui/format';
-import { namedWorker, SHOTS, useSite } from './harness';
+import { keepShot, namedWorker, useSite } from './harness';
 
 const site = useSite('docs/freshness');
 const TOOL: ToolInput = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
@@ -128,7 +128,7 @@ describe('the page ends on the answer to the inputs on screen (issue 17)', () =>
     expect(headline(0.05)).toBe('2.8872 mm'); // the issue's figure
     await backAndForth(page, 'path-interval-solver', () => current(0.05));
     await current(0.051);
-    await page.screenshot({ path: `${SHOTS}/freshness-back-and-forth.png` });
+    await keepShot(page, 'freshness-back-and-forth');
     await page.close();
   });
 

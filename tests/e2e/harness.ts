@@ -1,11 +1,12 @@
 /** Shared set-up of the browser tests: a built site on a loopback sub-path and one Chromium. */
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import type { Browser, BrowserContext, Page, Worker } from 'playwright-core';
-import { afterAll, beforeAll, expect } from 'vitest';
+import type { Browser, BrowserContext, Locator, Page, Worker } from 'playwright-core';
+import { afterAll, afterEach, beforeAll, expect } from 'vitest';
 import { launchChromium } from '../../src/bench/browser';
 import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
 import { E2E_OUT_DIR } from './globalSetup';
+import { countLoads, reportLoads } from './loadCount';
 import { colourShare } from './pixels';
 
 export const ROOT = fileURLToPath(new URL('../..', import.meta.url));
@@ -47,6 +48,19 @@ export interface Harness {
     viewport?: { width: number; height: number },
     colorScheme?: 'light' | 'dark',
   ): Promise<{ page: Page; errors: string[] }>;
+  /**
+   * As {@link open}, but keeps the shared page's document when it was opened with this query and
+   * no test has changed its state since ({@link changed}; a failed test counts as a change): then
+   * only the viewport and the colour scheme are set ({@link viewAs}). For tests that read a state
+   * without changing its inputs, or that call `changed()` after they do.
+   */
+  reuse(
+    query: string,
+    viewport?: { width: number; height: number },
+    colorScheme?: 'light' | 'dark',
+  ): Promise<{ page: Page; errors: string[] }>;
+  /** Says that the shared page's state is no longer the one its query opened: the next reuse loads it. */
+  changed(): void;
 }
 
 /** Registers beforeAll/afterAll hooks for a test file. */
@@ -56,12 +70,19 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
   let shared: Page | null = null;
   /** Where the shared page's errors go: the latest open's list. */
   let errors: string[] = [];
+  /** The query of the shared page's document while its state is still the one the query opened. */
+  let intact: string | null = null;
   beforeAll(async () => {
     mkdirSync(SHOTS, { recursive: true });
     site = await serveStatic(siteDir(options.build ?? 'e2e'), subPath, options.headers);
     browser = await launchChromium();
+    await countLoads(browser);
+  });
+  afterEach((context) => {
+    if (context.task.result?.state === 'fail') intact = null;
   });
   afterAll(async () => {
+    reportLoads();
     await browser?.close();
     await site?.close();
   });
@@ -87,18 +108,33 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
     await shared.emulateMedia({ media: 'screen', colorScheme, reducedMotion: 'no-preference' });
     return shared;
   };
+  const open = async (
+    query: string,
+    viewport = { width: 1400, height: 900 },
+    colorScheme: 'light' | 'dark' = 'light',
+  ) => {
+    const page = await sharedPage(viewport, colorScheme);
+    intact = null;
+    // Leave the previous document first, so that nothing it logs while closing is counted here.
+    if (page.url() !== 'about:blank') await page.goto('about:blank');
+    errors = [];
+    const mine = errors;
+    await page.goto(`${need(site, 'site').url}${query}`);
+    await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+    intact = query;
+    return { page, errors: mine };
+  };
   return {
     browser: () => need(browser, 'browser'),
     url: () => need(site, 'site').url,
-    async open(query, viewport = { width: 1400, height: 900 }, colorScheme = 'light') {
-      const page = await sharedPage(viewport, colorScheme);
-      // Leave the previous document first, so that nothing it logs while closing is counted here.
-      if (page.url() !== 'about:blank') await page.goto('about:blank');
-      errors = [];
-      const mine = errors;
-      await page.goto(`${need(site, 'site').url}${query}`);
-      await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
-      return { page, errors: mine };
+    open,
+    async reuse(query, viewport = { width: 1400, height: 900 }, colorScheme = 'light') {
+      if (intact !== query || shared === null || shared.isClosed()) return open(query, viewport, colorScheme);
+      await viewAs(shared, viewport, colorScheme);
+      return { page: shared, errors };
+    },
+    changed() {
+      intact = null;
     },
   };
 }
@@ -232,4 +268,48 @@ export function usePhonePage(site: Harness): (query: string) => Promise<Page> {
     await shared.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
     return shared;
   };
+}
+
+/**
+ * True under `npm run shots` (E2E_SHOTS=1): the screenshots kept for a person to look at are
+ * written to {@link SHOTS}. `npm test` writes none of them (a screenshot a test compares is taken
+ * by that test itself, whatever this says).
+ */
+export const KEEP_SHOTS = Boolean(process.env.E2E_SHOTS);
+
+/**
+ * Keeps a screenshot of a page or an element for a person to look at, as `SHOTS/<name>.png`, under
+ * `npm run shots` only (see {@link KEEP_SHOTS}); otherwise does nothing.
+ */
+export async function keepShot(
+  target: Page | Locator,
+  name: string,
+  options: { fullPage?: boolean } = {},
+): Promise<void> {
+  if (!KEEP_SHOTS) return;
+  await target.screenshot({ path: `${SHOTS}/${name}.png`, ...options });
+}
+
+/**
+ * Shows the same document at another size and colour scheme, as a new load at them would (the
+ * page follows the system's scheme when its link names no theme): the viewport and the scheme
+ * set, the page's theme the scheme's, then the page settled (instrumented build).
+ */
+export async function viewAs(
+  page: Page,
+  viewport: { width: number; height: number },
+  colorScheme: 'light' | 'dark' = 'light',
+): Promise<void> {
+  const size = page.viewportSize();
+  if (size?.width !== viewport.width || size.height !== viewport.height) await page.setViewportSize(viewport);
+  await page.emulateMedia({ colorScheme });
+  await expect.poll(() => page.evaluate(() => document.documentElement.dataset.theme)).toBe(colorScheme);
+  await pageSettled(page);
+}
+
+/** Opens a teaching view by its tab (as a click would) and waits until its panel has content. */
+export async function showView(page: Page, view: string): Promise<void> {
+  await page.locator(`[role="tab"][data-view="${view}"]`).click();
+  await expect.poll(() => page.locator(`[role="tab"][data-view="${view}"]`).getAttribute('aria-selected')).toBe('true');
+  await page.locator(`#panel-${view} > *`).first().waitFor();
 }

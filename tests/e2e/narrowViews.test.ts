@@ -7,7 +7,7 @@
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { axeViolations } from './axe';
-import { animationFrames, PHONE, pageSettled, SHOTS, usePhonePage, useSite } from './harness';
+import { animationFrames, keepShot, PHONE, pageSettled, usePhonePage, useSite } from './harness';
 
 const site = useSite('docs/narrow-views');
 const openPhone = usePhonePage(site);
@@ -63,7 +63,7 @@ describe("the paper's tables on a narrow screen", () => {
       // The page itself does not scroll sideways.
       expect(await page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth), width).toBe(true);
       await page.getByTestId('paper-table-half').scrollIntoViewIfNeeded();
-      await page.screenshot({ path: `${SHOTS}/narrow-tables-${width}.png` });
+      await keepShot(page, `narrow-tables-${width}`);
       expect(await axeViolations(page), width).toEqual([]);
     }
   }, 120_000);
@@ -104,7 +104,7 @@ describe('formulas on a phone', () => {
       wide++;
       expect(s, `box ${i} overflows`).toMatchObject({ left: false, right: true, leftShade: false, rightShade: true });
       // The frame's own picture (a page screenshot on this emulated phone showed a stale raster).
-      if (wide <= 2) await box.locator('..').screenshot({ path: `${SHOTS}/narrow-formula-cue-${wide}.png` });
+      if (wide <= 2) await keepShot(box.locator('..'), `narrow-formula-cue-${wide}`);
       // The keyboard scrolls it (focus, arrow right); then scrolled to its end, the right shade
       // goes and the left one comes.
       await box.focus();
@@ -115,7 +115,7 @@ describe('formulas on a phone', () => {
         b.scrollLeft = b.scrollWidth;
       });
       await expect.poll(() => state(i)).toMatchObject({ left: true, right: false, leftShade: true, rightShade: false });
-      if (wide <= 2) await box.locator('..').screenshot({ path: `${SHOTS}/narrow-formula-end-${wide}.png` });
+      if (wide <= 2) await keepShot(box.locator('..'), `narrow-formula-end-${wide}`);
     }
     // At 390 px the exact procedure's formulas are wider than the screen: the cue is tested.
     expect(wide).toBeGreaterThan(0);

@@ -5,7 +5,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { compareForward, forwardInput } from '../../src/core/index';
-import { SHOTS, useSite } from './harness';
+import { keepShot, useSite } from './harness';
 
 const site = useSite('shop/offline', { build: 'production' });
 
@@ -33,7 +33,7 @@ describe('offline after the first visit', () => {
     await page.goto(`${site.url()}?R=5&Rcr=1&rho=10&h=0.02&unit=mm&view=profile`);
     await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
     await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
-    await page.screenshot({ path: `${SHOTS}/offline-390.png` });
+    await keepShot(page, 'offline-390');
     await context.close();
   }, 60_000);
 

@@ -8,7 +8,7 @@
 import { describe, expect, it } from 'vitest';
 import { doublyCurvedForward } from '../../src/core/surfaces/doublyCurved';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
-import { SHOTS, useSite } from './harness';
+import { keepShot, useSite } from './harness';
 
 const { open } = useSite('docs/views');
 
@@ -41,7 +41,7 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
     };
     expect(await page.getByTestId('chart-slope-value-step').textContent()).toBe(`${lxy(30).toFixed(4)} mm`);
     const x30 = await markerX(page, 'chart-slope');
-    await page.getByTestId('comparison-chart').screenshot({ path: `${SHOTS}/view-chart-slope.png` });
+    await keepShot(page.getByTestId('comparison-chart'), 'view-chart-slope');
     await page.getByTestId('input-slope').fill('60');
     await page.getByTestId('input-slope').press('Enter');
     await expect.poll(() => page.getByTestId('chart-slope-value-step').textContent()).toBe(`${lxy(60).toFixed(4)} mm`);
@@ -89,7 +89,7 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
     );
     expect(await cross.locator('circle.chart-point').count()).toBe(1);
     expect(await cross.locator('rect.chart-gap[data-series="concave"]').count()).toBeGreaterThan(0);
-    await page.getByTestId('comparison-chart').screenshot({ path: `${SHOTS}/view-chart-radius.png` });
+    await keepShot(page.getByTestId('comparison-chart'), 'view-chart-radius');
     // The profile: the curved section with three passes' scallops and each comparison's mark.
     await page.getByRole('tab', { name: 'Cross-feed profile' }).click();
     const view = page.getByTestId('profile-view');
@@ -102,7 +102,7 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
       expect(await view.locator(`polyline.comparison-mark[data-curvature="${key}"]`).count(), key).toBe(1);
     expect(await view.locator('text.dim-text').allTextContents()).toContain(`L = ${exact.toFixed(4)} mm (arc)`);
     expect(await page.getByTestId('views-stale').isHidden()).toBe(true);
-    await view.screenshot({ path: `${SHOTS}/view-profile-curved.png` });
+    await keepShot(view, 'view-profile-curved');
     // The step-through does not draw this question: it says so, and hides its last picture (of other inputs).
     await page.getByRole('tab', { name: /step/i }).first().click();
     await expect
@@ -129,7 +129,7 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
     const box = await chart.locator('svg').boundingBox();
     expect(box?.width).toBeGreaterThan(200);
     expect((box?.x ?? 0) + (box?.width ?? 0)).toBeLessThanOrEqual(phone.width + 1);
-    await chart.screenshot({ path: `${SHOTS}/view-chart-slope-phone.png` });
+    await keepShot(chart, 'view-chart-slope-phone');
     expect(errors).toEqual([]);
   });
 });

@@ -21,7 +21,7 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { exactForward, forwardInput } from '../../src/core/index';
 import { PRESETS } from '../../src/ui/toolPresets';
-import { pageSettled, ROOT, SHOTS, usePhonePage, useSite } from './harness';
+import { keepShot, pageSettled, ROOT, usePhonePage, useSite } from './harness';
 
 const site = useSite('docs/phone-flow');
 const open = usePhonePage(site);
@@ -160,10 +160,10 @@ describe('a step-over at the machine, on a phone', () => {
       PRESETS.filter((p) => p.sizedIn === 'mm').map((p) => p.chip),
     );
     expect(await page.locator('[data-testid="tool-chips"] button[aria-pressed="true"]').textContent()).toBe('D6 R1');
-    await page.screenshot({ path: `${SHOTS}/phone-first-screen-light.png` });
+    await keepShot(page, 'phone-first-screen-light');
     await page.emulateMedia({ colorScheme: 'dark' });
     await pageSettled(page);
-    await page.screenshot({ path: `${SHOTS}/phone-first-screen-dark.png` });
+    await keepShot(page, 'phone-first-screen-dark');
     await page.emulateMedia({ colorScheme: 'light' });
   });
 

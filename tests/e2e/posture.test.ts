@@ -16,7 +16,7 @@ import {
   traceProcedure,
 } from '../../src/core/index';
 import { formatLenUnit } from '../../src/ui/format';
-import { frames, SHOTS, sceneIdle, urlWrites, useSite } from './harness';
+import { frames, keepShot, sceneIdle, showView, urlWrites, useSite } from './harness';
 
 const site = useSite('docs/posture');
 const { open } = site;
@@ -31,6 +31,10 @@ const tool = (tilt: number, rho = 5): ToolInput => ({
 const exact = (tilt: number, pattern: PassPattern, h = 0.05) => exactForward(forwardInput(tool(tilt), pattern, h));
 const mm = (v: number) => `${v.toFixed(4)} mm`;
 const signed = (v: number) => `${v > 0 ? '+' : ''}${v.toFixed(4)} mm`;
+
+/** The states several tests read, each on one load (the views by their tabs). */
+const TILT5 = '?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm';
+const ZIGZAG10 = '?R=3&Rcr=1&rho=5&tilt=10&pattern=zigzag&h=0.05&unit=mm';
 
 describe('tool posture on the page', () => {
   it('defaults give the paper case: no tilt, one-way, nothing new in the URL, the same numbers', async () => {
@@ -94,34 +98,11 @@ describe('tool posture on the page', () => {
     expect(await text(again, 'result-exact-interval')).toBe(mm(e.intervalMm));
     expect(await again.locator('[data-testid="pattern-switch"] input[value="zigzag"]').isChecked()).toBe(true);
     await again.close();
-    await page.screenshot({ path: `${SHOTS}/posture-zigzag.png` });
-  });
-
-  it('the table: osculating circle and corner ball rows; the paper three labelled lead-only with tilt', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm');
-    const c = compareForward(forwardInput(tool(5), 'one-way', 0.05));
-    const osc = c.approximations.osculating;
-    const ball = c.approximations.cornerBall;
-    if (!osc.ok || !ball.ok) throw new Error('both apply here');
-    expect(await text(page, 'result-osculating-half')).toBe(`${osc.halfIntervalMm.toFixed(4)} mm`);
-    expect(await text(page, 'result-cornerBall-half')).toBe(`${ball.halfIntervalMm.toFixed(4)} mm`);
-    const label = (key: string) => page.locator(`.procedures tr[data-procedure="${key}"] th`).textContent();
-    for (const key of ['sekine', 'redonnet', 'bedi']) expect(await label(key)).toMatch(/lead only$/);
-    for (const key of ['exact', 'osculating', 'cornerBall']) expect(await label(key)).not.toMatch(/lead only/);
-    expect(await page.getByTestId('table-notes').textContent()).toMatch(/lead-only models/);
-    await page.getByTestId('input-tilt').fill('0');
-    await expect.poll(() => label('sekine')).toBe('Sekine et al. (Eqs. 4-8)');
-  });
-
-  it('says what the step-over means (between cutter-contact paths) and gives the tool-centre offset', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm');
-    const meaning = (await page.getByTestId('step-over-meaning').textContent()) ?? '';
-    expect(meaning).toMatch(/distance between adjacent cutter-contact \(CC\) paths/);
-    expect(meaning).toMatch(/tool centre point O instead, offset each CC path across the feed by −y0 = [-+]?\d/);
+    await keepShot(page, 'posture-zigzag');
   });
 
   it('the 3D scene: tilted tool, its axis and centre O off the contact, cusp sections on both sides, L and y0', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&tilt=10&pattern=zigzag&h=0.05&unit=mm');
+    const { page } = await site.reuse(ZIGZAG10);
     const labels = () =>
       page
         .locator('.scene-labels .scene-label')
@@ -137,11 +118,57 @@ describe('tool posture on the page', () => {
     await page.getByRole('button', { name: 'Along the feed' }).click();
     await expect.poll(() => frames(page)).toBeGreaterThan(before);
     await sceneIdle(page);
-    await page.getByTestId('scene').screenshot({ path: `${SHOTS}/posture-scene-feed.png` });
+    await keepShot(page.getByTestId('scene'), 'posture-scene-feed');
+  });
+
+  it('the formulas follow the posture: projected ellipse, rotation phi, D0, y0, osculating radius, corner ball', async () => {
+    const { page } = await site.reuse(ZIGZAG10);
+    await showView(page, 'formulas');
+    const formulas = page.getByTestId('formulas');
+    await formulas.locator('math').first().waitFor();
+    const s = shapeOfTool(tool(10));
+    const five = (v: number) => String(Number(v.toPrecision(5)));
+    const exactText = (await formulas.locator('section[data-procedure="exact"]').textContent()) ?? '';
+    expect(exactText).toContain(`=${five(s.b)} mm`); // b = Rb cos(beta) sin(rho)
+    expect(exactText).toContain(`=${five((s.phi * 180) / Math.PI)}`);
+    expect(exactText).toContain(`=${five(s.d0)} mm`);
+    expect(exactText).toMatch(/2min/); // the zigzag rule, not the one-way one
+    expect(exactText).not.toMatch(/wR\+wL=/);
+    const osc = osculatingModel(tool(10));
+    if (!osc.ok) throw new Error('applies');
+    expect(await formulas.locator('section[data-procedure="osculating"]').textContent()).toContain(
+      five(osc.effectiveRadiusMm),
+    );
+    expect(await formulas.locator('section[data-procedure="cornerBall"]').textContent()).toMatch(/Rcr=1 mm/);
+    expect(await formulas.locator('section[data-procedure="sekine"]').textContent()).toMatch(/tilt ignored/);
+    await keepShot(page, 'posture-formulas', { fullPage: true });
+  });
+
+  it('says what the step-over means (between cutter-contact paths) and gives the tool-centre offset', async () => {
+    const { page } = await site.reuse(TILT5);
+    const meaning = (await page.getByTestId('step-over-meaning').textContent()) ?? '';
+    expect(meaning).toMatch(/distance between adjacent cutter-contact \(CC\) paths/);
+    expect(meaning).toMatch(/tool centre point O instead, offset each CC path across the feed by −y0 = [-+]?\d/);
+  });
+
+  it('the chart of L against tilt at the current lead, beside L against lead', async () => {
+    const { page } = await site.reuse(TILT5);
+    await showView(page, 'chart');
+    const chart = page.getByTestId('comparison-chart');
+    await page.getByTestId('chart-tilt').locator('svg.chart-svg').waitFor();
+    expect(await page.getByTestId('chart-tilt').locator('.chart-title').textContent()).toMatch(
+      /L \[mm\] against tilt beta \[deg\] .*current beta = 5\)/,
+    );
+    expect(await page.getByTestId('chart-lead').locator('.chart-title').textContent()).toMatch(/current rho = 5\)/);
+    await expect
+      .poll(() => page.getByTestId('chart-summary').textContent())
+      .toMatch(new RegExp(`beta = 5 deg, L: Exact \\(3D\\) ${exact(5, 'one-way').intervalMm.toFixed(4)} mm`));
+    await keepShot(chart, 'posture-chart');
   });
 
   it('the profile: three passes, both cusps, wR and wL labelled, O at -y0; zigzag: both cusp heights', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=profile');
+    const { page } = await site.reuse(TILT5);
+    await showView(page, 'profile');
     const view = page.getByTestId('profile-view');
     await view.locator('polygon.scallop').waitFor();
     const e = exact(5, 'one-way');
@@ -157,7 +184,8 @@ describe('tool posture on the page', () => {
         ]),
       );
     expect(await view.locator('polyline.curve-exact').count()).toBe(3);
-    await page.screenshot({ path: `${SHOTS}/posture-profile.png` });
+    await keepShot(page, 'posture-profile');
+    site.changed();
     await page.locator('[data-testid="pattern-switch"] input[value="zigzag"]').check();
     const z = exact(5, 'zigzag');
     await expect
@@ -171,18 +199,21 @@ describe('tool posture on the page', () => {
       );
   });
 
-  it('the chart of L against tilt at the current lead, beside L against lead', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=chart');
-    const chart = page.getByTestId('comparison-chart');
-    await page.getByTestId('chart-tilt').locator('svg.chart-svg').waitFor();
-    expect(await page.getByTestId('chart-tilt').locator('.chart-title').textContent()).toMatch(
-      /L \[mm\] against tilt beta \[deg\] .*current beta = 5\)/,
-    );
-    expect(await page.getByTestId('chart-lead').locator('.chart-title').textContent()).toMatch(/current rho = 5\)/);
-    await expect
-      .poll(() => page.getByTestId('chart-summary').textContent())
-      .toMatch(new RegExp(`beta = 5 deg, L: Exact \\(3D\\) ${exact(5, 'one-way').intervalMm.toFixed(4)} mm`));
-    await chart.screenshot({ path: `${SHOTS}/posture-chart.png` });
+  it('the table: osculating circle and corner ball rows; the paper three labelled lead-only with tilt', async () => {
+    const { page } = await site.reuse(TILT5);
+    const c = compareForward(forwardInput(tool(5), 'one-way', 0.05));
+    const osc = c.approximations.osculating;
+    const ball = c.approximations.cornerBall;
+    if (!osc.ok || !ball.ok) throw new Error('both apply here');
+    expect(await text(page, 'result-osculating-half')).toBe(`${osc.halfIntervalMm.toFixed(4)} mm`);
+    expect(await text(page, 'result-cornerBall-half')).toBe(`${ball.halfIntervalMm.toFixed(4)} mm`);
+    const label = (key: string) => page.locator(`.procedures tr[data-procedure="${key}"] th`).textContent();
+    for (const key of ['sekine', 'redonnet', 'bedi']) expect(await label(key)).toMatch(/lead only$/);
+    for (const key of ['exact', 'osculating', 'cornerBall']) expect(await label(key)).not.toMatch(/lead only/);
+    expect(await page.getByTestId('table-notes').textContent()).toMatch(/lead-only models/);
+    site.changed();
+    await page.getByTestId('input-tilt').fill('0');
+    await expect.poll(() => label('sekine')).toBe('Sekine et al. (Eqs. 4-8)');
   });
 
   it('the stepper runs the procedure on both flanks and ends on both widths', async () => {
@@ -203,27 +234,5 @@ describe('tool posture on the page', () => {
     // Somewhere along the way: the left flank's own steps.
     await page.getByTestId('stepper-back').click();
     await expect.poll(() => caption.textContent()).toMatch(/^Step \d+ of \d+\. Left flank \(-Y\) converged: wL = /);
-  });
-
-  it('the formulas follow the posture: projected ellipse, rotation phi, D0, y0, osculating radius, corner ball', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&tilt=10&pattern=zigzag&h=0.05&unit=mm&view=formulas');
-    const formulas = page.getByTestId('formulas');
-    await formulas.locator('math').first().waitFor();
-    const s = shapeOfTool(tool(10));
-    const five = (v: number) => String(Number(v.toPrecision(5)));
-    const exactText = (await formulas.locator('section[data-procedure="exact"]').textContent()) ?? '';
-    expect(exactText).toContain(`=${five(s.b)} mm`); // b = Rb cos(beta) sin(rho)
-    expect(exactText).toContain(`=${five((s.phi * 180) / Math.PI)}`);
-    expect(exactText).toContain(`=${five(s.d0)} mm`);
-    expect(exactText).toMatch(/2min/); // the zigzag rule, not the one-way one
-    expect(exactText).not.toMatch(/wR\+wL=/);
-    const osc = osculatingModel(tool(10));
-    if (!osc.ok) throw new Error('applies');
-    expect(await formulas.locator('section[data-procedure="osculating"]').textContent()).toContain(
-      five(osc.effectiveRadiusMm),
-    );
-    expect(await formulas.locator('section[data-procedure="cornerBall"]').textContent()).toMatch(/Rcr=1 mm/);
-    expect(await formulas.locator('section[data-procedure="sekine"]').textContent()).toMatch(/tilt ignored/);
-    await page.screenshot({ path: `${SHOTS}/posture-formulas.png`, fullPage: true });
   });
 });

@@ -9,7 +9,7 @@
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { axeViolations } from './axe';
-import { pageSettled, SHOTS, sceneIdle, useSite } from './harness';
+import { keepShot, pageSettled, sceneIdle, useSite } from './harness';
 
 const site = useSite('docs/present');
 const STATE = 'R=3&Rcr=1&rho=5&h=0.05&unit=mm';
@@ -106,7 +106,7 @@ describe('presentation mode', () => {
         await page.locator('#panel-profile svg').first().waitFor();
         await sceneIdle(page);
         await pageSettled(page);
-        await page.screenshot({ path: `${SHOTS}/present-${viewport.width}-${theme}.png` });
+        await keepShot(page, `present-${viewport.width}-${theme}`);
         await expectPresenting(page, label);
         expect(await axeViolations(page), label).toEqual([]);
         expect(errors, label).toEqual([]);
@@ -120,7 +120,7 @@ describe('presentation mode', () => {
       await page.locator(`#panel-${view} > *`).first().waitFor();
       await pageSettled(page);
       expect(await smallTexts(page), view).toEqual([]);
-      await page.screenshot({ path: `${SHOTS}/present-view-${view}.png` });
+      await keepShot(page, `present-view-${view}`);
     }
     expect(await axeViolations(page), 'formulas').toEqual([]);
   }, 120_000);
@@ -152,7 +152,7 @@ describe('presentation mode', () => {
       await pageSettled(page);
       expect(await layout(page), label).toEqual(before);
       await expect.poll(async () => (await canvasFit(page)).bufferFollows).toBe(true);
-      await page.screenshot({ path: `${SHOTS}/present-left-${viewport.width}.png` });
+      await keepShot(page, `present-left-${viewport.width}`);
 
       // Again, by the keyboard: the inputs open over the teaching view and the answer follows a new h.
       await toggle.press('Enter');
@@ -168,7 +168,7 @@ describe('presentation mode', () => {
       expect(await page.getByTestId('result-exact-interval').isVisible()).toBe(true);
       await pageSettled(page);
       expect(await smallTexts(page), `${label} inputs open`).toEqual([]);
-      await page.screenshot({ path: `${SHOTS}/present-inputs-${viewport.width}.png` });
+      await keepShot(page, `present-inputs-${viewport.width}`);
       expect(await axeViolations(page), `${label} inputs open`).toEqual([]);
 
       // Escape: first the inputs close (focus back on their button), then presentation ends.

@@ -3,7 +3,7 @@
  * results table and the profile, without sliders, buttons or the 3D canvas.
  */
 import { describe, expect, it } from 'vitest';
-import { SHOTS, useSite } from './harness';
+import { keepShot, useSite } from './harness';
 
 const site = useSite('shop/print');
 
@@ -36,7 +36,7 @@ describe('print', () => {
       expect(await page.locator('[data-testid="pattern-switch"] label:visible').allTextContents()).toEqual([' zigzag']);
       // Printed on white: the text is dark whatever the screen's theme.
       expect(await page.evaluate(() => getComputedStyle(document.documentElement).color)).toBe('rgb(29, 35, 48)');
-      await page.screenshot({ path: `${SHOTS}/print-${theme}.png`, fullPage: true });
+      await keepShot(page, `print-${theme}`, { fullPage: true });
       const pdf = await page.pdf({ format: 'A4', printBackground: false });
       expect(pdfPages(pdf)).toBe(1);
       await page.close();

@@ -6,7 +6,7 @@
  * span it (on a cylinder the drawing shrank to a narrow strip).
  */
 import { describe, expect, it } from 'vitest';
-import { SHOTS, useSite } from './harness';
+import { keepShot, useSite } from './harness';
 
 const { open } = useSite('docs/profile-surface');
 
@@ -38,7 +38,7 @@ describe('the profile over any surface', () => {
       const plot = await view.locator('svg.profile-svg').boundingBox();
       const scallop = await page.getByTestId('profile-scallop').boundingBox();
       if (!plot || !scallop) throw new Error('no profile');
-      await view.screenshot({ path: `${SHOTS}/profile-surface-x100-${name.replaceAll(/[ ,]+/g, '-')}.png` });
+      await keepShot(view, `profile-surface-x100-${name.replaceAll(/[ ,]+/g, '-')}`);
       // A third of the width at least: on a convex cylinder the exaggerated heights, drawn radially,
       // fan out over the passes (a plane's reach half of it, teachScene.test.ts).
       expect(scallop.width / plot.width, 'the scallops span the plot').toBeGreaterThan(0.3);

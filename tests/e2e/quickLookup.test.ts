@@ -7,15 +7,17 @@
 import { spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import type { BrowserContext, Page } from 'playwright-core';
-import { describe, expect, it } from 'vitest';
+import { afterEach, describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
 import { forwardInput, scallopHeightLimits } from '../../src/core/input/validate';
 import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
 import { headerInUnit } from '../../src/core/output/lookupUnits';
 import { exactForward } from '../../src/core/surfaces/solve';
-import { ROOT, SHOTS, useSite } from './harness';
+import { keepShot, ROOT, useSite } from './harness';
 
 const site = useSite('docs/quick-lookup');
+/** The profile view's state: the touch test reads it, then the Copy test uses the same document. */
+const PROFILE = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile';
 
 const VIEWPORTS = [
   { name: 'phone', width: 390, height: 844, touch: true },
@@ -23,15 +25,27 @@ const VIEWPORTS = [
 ] as const;
 type Viewport = (typeof VIEWPORTS)[number];
 
-/** One context per viewport (touch on the phone; clipboard allowed) and its tab, shared by that viewport's tests. */
-const contexts = new Map<string, { context: BrowserContext; page: Page }>();
+/**
+ * One context per viewport (touch on the phone; clipboard allowed) and its tab, shared by that
+ * viewport's tests; `unchanged`: the query its document opened, while no test has changed its inputs.
+ */
+const contexts = new Map<string, { context: BrowserContext; page: Page; unchanged: string | null }>();
+afterEach((context) => {
+  // A failed test may have left its document anywhere.
+  if (context.task.result?.state === 'fail') for (const entry of contexts.values()) entry.unchanged = null;
+});
 
 /**
  * Opens the page in the viewport's context (each open a fresh document in its tab) and waits for
- * the first result.
+ * the first result. With `reuse`, a document the test before opened with this query and left
+ * unchanged (it called `keep`) serves as it is.
  */
-async function open(vp: Viewport, query: string): Promise<{ page: Page; context: BrowserContext }> {
+async function open(vp: Viewport, query: string, reuse = false): Promise<{ page: Page; context: BrowserContext }> {
   let entry = contexts.get(vp.name);
+  if (reuse && entry !== undefined && !entry.page.isClosed() && entry.unchanged === query) {
+    entry.unchanged = null;
+    return entry;
+  }
   if (entry === undefined || entry.page.isClosed()) {
     const context = await site.browser().newContext({
       viewport: { width: vp.width, height: vp.height },
@@ -40,13 +54,20 @@ async function open(vp: Viewport, query: string): Promise<{ page: Page; context:
       acceptDownloads: true,
     });
     await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
-    entry = { context, page: await context.newPage() };
+    entry = { context, page: await context.newPage(), unchanged: null };
     contexts.set(vp.name, entry);
   } else await entry.page.goto('about:blank');
+  entry.unchanged = null;
   const { context, page } = entry;
   await page.goto(`${site.url()}${query}`);
   await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
   return { page, context };
+}
+
+/** Says, at the end of a test that changed no input, that the next test may reuse its document. */
+function keep(vp: Viewport, query: string): void {
+  const entry = contexts.get(vp.name);
+  if (entry !== undefined) entry.unchanged = query;
 }
 
 /** Taps on the phone, clicks on the desktop. */
@@ -76,9 +97,72 @@ const resultNumbers = (page: Page) =>
       .filter((t) => /\d/.test(t)),
   );
 
+/** The command line's JSON answer (asked once per question: both viewports compare to it). */
+const cliAnswers = new Map<string, { exact: { interval: number; halfInterval: number } }>();
 function cli(args: readonly string[]): { exact: { interval: number; halfInterval: number } } {
-  const r = spawnSync(process.execPath, [`${ROOT}src/cli/bin.mjs`, ...args, '--json'], { encoding: 'utf8' });
-  return JSON.parse(r.stdout);
+  const key = args.join(' ');
+  let answer = cliAnswers.get(key);
+  if (answer === undefined) {
+    const r = spawnSync(process.execPath, [`${ROOT}src/cli/bin.mjs`, ...args, '--json'], { encoding: 'utf8' });
+    answer = JSON.parse(r.stdout) as { exact: { interval: number; halfInterval: number } };
+    cliAnswers.set(key, answer);
+  }
+  return answer;
+}
+
+/** What the page shows of the typing state of the h field, as read when a keystroke landed. */
+interface TypedState {
+  readonly value: string;
+  readonly error: string;
+  readonly status: string;
+  readonly numbers: string[];
+  readonly sceneClass: string;
+  readonly typingBadge: boolean;
+  readonly staleBadge: boolean;
+  readonly labels: boolean;
+}
+
+/**
+ * Records, from now on, what the page shows after each input event of the h field (read in a
+ * microtask after the page's own handling of the event, before anything later can change it).
+ */
+async function recordTyping(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const w = window as unknown as { __typed: unknown[] };
+    w.__typed = [];
+    const field = document.querySelector('[data-testid="input-h"]') as HTMLInputElement;
+    const shown = (selector: string) => {
+      const e = document.querySelector(selector);
+      if (!e) return false;
+      const r = e.getBoundingClientRect();
+      return e.checkVisibility({ visibilityProperty: true }) && r.width > 0 && r.height > 0;
+    };
+    const textOf = (id: string) => document.querySelector(`[data-testid="${id}"]`)?.textContent?.trim() ?? '';
+    field.addEventListener('input', () =>
+      queueMicrotask(() =>
+        w.__typed.push({
+          value: field.value,
+          error: textOf('error-h'),
+          status: textOf('results-status'),
+          numbers: [...document.querySelectorAll('.results output, .results .procedures td')]
+            .map((e) => e.textContent ?? '')
+            .filter((t) => /\d/.test(t)),
+          sceneClass: document.querySelector('[data-testid="scene"]')?.getAttribute('class') ?? '',
+          typingBadge: shown('.typing-badge'),
+          staleBadge: shown('.stale-badge:not(.typing-badge)'),
+          labels: shown('.scene-labels'),
+        }),
+      ),
+    );
+  });
+}
+
+/** The recorded state when the h field last held `value` (see recordTyping). */
+async function typedState(page: Page, value: string): Promise<TypedState> {
+  const all = await page.evaluate(() => (window as unknown as { __typed: TypedState[] }).__typed);
+  const found = all.filter((s) => s.value === value).at(-1);
+  if (found === undefined) throw new Error(`the h field never held "${value}": ${JSON.stringify(all)}`);
+  return found;
 }
 
 describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
@@ -102,8 +186,11 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     await expect
       .poll(() => text(page, 'error-Rcr'))
       .toBe('Corner radius Rcr must be at most D/2 = 5 mm (got 6); Rcr = D/2 is a ball end mill.');
-    await page.screenshot({ path: `${SHOTS}/quick-lookup-diameter-${vp.name}.png`, fullPage: true });
-    // The link keeps the diameter: a reload opens the same state.
+    await keepShot(page, `quick-lookup-diameter-${vp.name}`, { fullPage: true });
+    // The link keeps the diameter: a reload opens the same state (once the address holds it: the
+    // page writes it a moment after the inputs settle, urlState.ts).
+    await expect.poll(() => new URL(page.url()).searchParams.get('Rcr')).toBe('6');
+    expect(new URL(page.url()).searchParams.get('D')).toBe('10');
     await page.reload();
     await page
       .getByTestId('error-Rcr')
@@ -115,18 +202,23 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
   it('typing: a half-typed value shows no error and no old number, a decimal comma works, a pause or Enter commits', async () => {
     const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     const before = await text(page, 'result-exact-interval');
+    // What the page shows while a text is held back is read as each keystroke lands (a later read
+    // could come after the pause, when the text has committed).
+    await recordTyping(page);
     await typeInto(page, 'input-h', '0');
     // Held back: no message, every number a dash, the status says why.
-    expect(await text(page, 'error-h')).toBe('');
-    expect(await resultNumbers(page)).toEqual([]);
-    expect(await text(page, 'results-status')).toMatch(/^Typing/);
-    expect(await page.getByTestId('scene').getAttribute('class')).toMatch(/typing/);
-    expect(await page.locator('.typing-badge').isVisible()).toBe(true);
-    expect(await page.locator('.stale-badge:not(.typing-badge)').isVisible()).toBe(false);
-    expect(await page.locator('.scene-labels').isVisible()).toBe(false);
+    const zero = await typedState(page, '0');
+    expect(zero.error).toBe('');
+    expect(zero.numbers).toEqual([]);
+    expect(zero.status).toMatch(/^Typing/);
+    expect(zero.sceneClass).toMatch(/typing/);
+    expect(zero.typingBadge).toBe(true);
+    expect(zero.staleBadge).toBe(false);
+    expect(zero.labels).toBe(false);
     await page.keyboard.type(',', { delay: 30 });
-    expect(await text(page, 'error-h')).toBe('');
-    expect(await resultNumbers(page)).toEqual([]);
+    const comma = await typedState(page, '0,');
+    expect(comma.error).toBe('');
+    expect(comma.numbers).toEqual([]);
     await page.keyboard.type('05', { delay: 30 });
     // 0,05 is 0.05: the same answer as before, at once (a valid value commits while typing).
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(before);
@@ -134,8 +226,8 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     await expect.poll(() => new URL(page.url()).searchParams.get('h')).toBe('0,05');
     // A pause on a wrong value: the message comes, still no number.
     await typeInto(page, 'input-h', '-');
-    expect(await text(page, 'error-h')).toBe('');
-    await page.screenshot({ path: `${SHOTS}/quick-lookup-typing-${vp.name}.png` });
+    expect((await typedState(page, '-')).error).toBe('');
+    await keepShot(page, `quick-lookup-typing-${vp.name}`);
     await expect.poll(() => text(page, 'error-h')).toMatch(/Scallop height h must be a number \(got "-"\)/);
     expect(await resultNumbers(page)).toEqual([]);
     expect(await text(page, 'results-status')).toBe('');
@@ -144,7 +236,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     // Enter commits at once (well before the pause).
     await typeInto(page, 'input-h', '0');
     await page.keyboard.press('Enter');
-    expect(await text(page, 'error-h')).toMatch(/must be greater than 0 mm \(got 0\)/);
+    await expect.poll(() => text(page, 'error-h')).toMatch(/must be greater than 0 mm \(got 0\)/);
   });
 
   it('a flat end without lead leaves no scallop: the page says so and gives L = 2R, as the command line', async () => {
@@ -158,35 +250,10 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     expect(await text(page, 'no-scallop')).toMatch(
       /^No scallop: a flat end without lead or tilt .* leaves no scallop at any step-over up to its diameter, so L = 2R = 6\.0000 mm for any h\.$/,
     );
-    await page.screenshot({ path: `${SHOTS}/quick-lookup-flat-end-${vp.name}.png` });
+    await keepShot(page, `quick-lookup-flat-end-${vp.name}`);
     // With lead it leaves a scallop again and the statement goes.
     await typeInto(page, 'input-rho', '5');
     await expect.poll(() => page.getByTestId('no-scallop').isHidden()).toBe(true);
-  });
-
-  it('Copy gives the plain number in the unit on screen, confirms it, and is disabled without a value', async () => {
-    const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
-    const headlineCopy = page.locator('.big button.copy');
-    await expect.poll(() => headlineCopy.isEnabled()).toBe(true);
-    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
-    await expect.poll(() => headlineCopy.textContent()).toBe('Copied');
-    expect(await text(page, 'copy-status')).toBe('Copied 2.8872 (mm).');
-    expect(await page.evaluate(() => navigator.clipboard.readText())).toBe('2.8872');
-    await page.screenshot({ path: `${SHOTS}/quick-lookup-copied-${vp.name}.png` });
-    await expect.poll(() => headlineCopy.textContent(), { timeout: 3000 }).toBe('Copy');
-    await press(vp, page.getByRole('button', { name: 'Copy L/2' }));
-    await expect.poll(() => page.evaluate(() => navigator.clipboard.readText())).toBe('1.4436');
-    // Same format for a small value shown in um: copied in mm.
-    await typeInto(page, 'input-h', '0.000001');
-    await expect.poll(() => text(page, 'result-exact-interval')).toMatch(/ \u00b5m$/);
-    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
-    const shown = await text(page, 'result-exact-interval');
-    const copied = await page.evaluate(() => navigator.clipboard.readText());
-    expect(Number(copied) * 1000).toBeCloseTo(Number.parseFloat(shown), 3);
-    // No value (invalid input): every Copy is disabled.
-    await typeInto(page, 'input-h', 'x');
-    await page.keyboard.press('Enter');
-    for (const b of await page.locator('button.copy').all()) expect(await b.isDisabled()).toBe(true);
   });
 
   it('downloads the lookup table from the worker; its cells are the core exact step-over', async () => {
@@ -265,7 +332,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
   });
 
   it('touch targets are at least 24 px; a vertical swipe over the scene or the profile scrolls the page', async () => {
-    const { page, context } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
+    const { page, context } = await open(vp, PROFILE);
     const small = await page.evaluate(() => {
       const out: string[] = [];
       const targets = document.querySelectorAll<HTMLElement>(
@@ -312,12 +379,37 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
         await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
         const moved = () => page.evaluate((y) => Math.abs(window.scrollY - y), y0);
         const touchAction = await box.evaluate((e) => getComputedStyle(e).touchAction);
-        await expect
-          .poll(moved, { timeout: 3000, message: `${target} (touch-action ${touchAction})` })
-          .toBeGreaterThan(50);
+        await expect.poll(moved, { message: `${target} (touch-action ${touchAction})` }).toBeGreaterThan(50);
       }
       await cdp.detach();
-      await page.screenshot({ path: `${SHOTS}/quick-lookup-touch-${vp.name}.png` });
+      await keepShot(page, `quick-lookup-touch-${vp.name}`);
     }
+    keep(vp, PROFILE);
+  });
+
+  it('Copy gives the plain number in the unit on screen, confirms it, and is disabled without a value', async () => {
+    // The touch test's page (it changed no input; its view is no concern of Copy).
+    const { page } = await open(vp, PROFILE, true);
+    const headlineCopy = page.locator('.big button.copy');
+    await expect.poll(() => headlineCopy.isEnabled()).toBe(true);
+    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
+    await expect.poll(() => headlineCopy.textContent()).toBe('Copied');
+    expect(await text(page, 'copy-status')).toBe('Copied 2.8872 (mm).');
+    expect(await page.evaluate(() => navigator.clipboard.readText())).toBe('2.8872');
+    await keepShot(page, `quick-lookup-copied-${vp.name}`);
+    await expect.poll(() => headlineCopy.textContent()).toBe('Copy');
+    await press(vp, page.getByRole('button', { name: 'Copy L/2' }));
+    await expect.poll(() => page.evaluate(() => navigator.clipboard.readText())).toBe('1.4436');
+    // Same format for a small value shown in um: copied in mm.
+    await typeInto(page, 'input-h', '0.000001');
+    await expect.poll(() => text(page, 'result-exact-interval')).toMatch(/ \u00b5m$/);
+    await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
+    const shown = await text(page, 'result-exact-interval');
+    const copied = await page.evaluate(() => navigator.clipboard.readText());
+    expect(Number(copied) * 1000).toBeCloseTo(Number.parseFloat(shown), 3);
+    // No value (invalid input): every Copy is disabled.
+    await typeInto(page, 'input-h', 'x');
+    await page.keyboard.press('Enter');
+    for (const b of await page.locator('button.copy').all()) expect(await b.isDisabled()).toBe(true);
   });
 });

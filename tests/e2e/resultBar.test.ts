@@ -7,7 +7,7 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { pageSettled, ROOT, SHOTS, usePhonePage, useSite } from './harness';
+import { keepShot, pageSettled, ROOT, usePhonePage, useSite } from './harness';
 
 const site = useSite('docs/result-bar');
 const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
@@ -45,7 +45,7 @@ describe('result bar on a phone', () => {
     expect(first).toMatch(/\d mm$/);
     expect(await text(page, 'result-bar-value')).toBe(first);
     expect(await bar.getAttribute('data-mark')).toBe('');
-    await page.screenshot({ path: `${SHOTS}/result-bar-phone.png` });
+    await keepShot(page, 'result-bar-phone');
 
     // A new h: the bar follows the results.
     await retype(page, '0.01');

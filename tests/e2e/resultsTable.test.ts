@@ -8,7 +8,7 @@
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { axeViolations } from './axe';
-import { pageSettled, SHOTS, useSite } from './harness';
+import { keepShot, pageSettled, useSite } from './harness';
 
 const site = useSite('docs/results-table');
 
@@ -55,7 +55,7 @@ describe('the procedures table beside the 3D scene', () => {
         await expect.poll(async () => (await measure(page)).cueRight, { message: query }).toBe(m.overflowPx > 1);
         expect(m.tabIndex).toBe(0);
         if (viewport.width === 1280 && query.includes('unit=in')) {
-          await page.screenshot({ path: `${SHOTS}/results-table-1280-inch.png` });
+          await keepShot(page, 'results-table-1280-inch');
           expect(await axeViolations(page)).toEqual([]);
         }
       }

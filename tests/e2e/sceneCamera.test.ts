@@ -10,10 +10,11 @@ import type { Page } from 'playwright-core';
 import { PerspectiveCamera, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import type { SceneFraming } from '../../src/render/scene';
-import { frames, SHOTS, sceneIdle, useSite } from './harness';
+import { frames, keepShot, sceneIdle, showView, useSite, viewAs } from './harness';
 import { hueShares } from './pixels';
 
-const { open } = useSite('docs/scene-camera');
+const site = useSite('docs/scene-camera');
+const { open } = site;
 
 /** The least share of the view's limiting dimension that what the camera frames must fill. */
 const FILL_MIN = 0.6;
@@ -77,14 +78,19 @@ async function settled(page: Page): Promise<SceneFraming> {
   return (await framing(page)) as SceneFraming;
 }
 
+/** The projector's sizes; the second in the dark theme (the page's errors then checked in both, as the gallery's were). */
+const SIZES = [
+  { name: '1920x1080', width: 1920, height: 1080, theme: 'light' },
+  { name: '1440x900', width: 1440, height: 900, theme: 'dark' },
+] as const;
+
 describe('the camera frames the whole tool and fills the view', { timeout: 90_000 }, () => {
-  for (const vp of [
-    { name: '1920x1080', width: 1920, height: 1080 },
-    { name: '1440x900', width: 1440, height: 900 },
-  ]) {
-    for (const [k, [posture, query]] of POSTURES.entries()) {
-      it(`${vp.name}, ${posture}: in every preset view the tool's box is inside and the view is filled`, async () => {
-        const { page, errors } = await open(`?${query}&unit=mm`, vp);
+  for (const [k, [posture, query]] of POSTURES.entries()) {
+    it(`${posture}, at ${SIZES.map((s) => s.name).join(' and ')}: in every preset view the tool's box is inside and the view is filled`, async () => {
+      // One load; the second size by setViewportSize (the scene refits to its new box).
+      const { page, errors } = await open(`?${query}&unit=mm`, SIZES[0], SIZES[0].theme);
+      for (const vp of SIZES) {
+        await viewAs(page, vp, vp.theme);
         await settled(page);
         for (const [tag, name] of VIEWS) {
           await clickView(page, name);
@@ -100,11 +106,11 @@ describe('the camera frames the whole tool and fills the view', { timeout: 90_00
           for (const [x, y] of all) expect(Math.max(Math.abs(x), Math.abs(y)), where).toBeLessThanOrEqual(1.0001);
           expect(fill(all), `${where}: the view is not filled`).toBeGreaterThanOrEqual(FILL_MIN);
           if (k === 0 || k === 4 || k === 6)
-            await page.getByTestId('scene').screenshot({ path: `${SHOTS}/scene-camera-${vp.name}-${k}-${tag}.png` });
+            await keepShot(page.getByTestId('scene'), `scene-camera-${vp.name}-${k}-${tag}`);
         }
-        expect(errors).toEqual([]);
-      });
-    }
+      }
+      expect(errors).toEqual([]);
+    });
   }
 
   it('Top: +Y up the screen (P_hp R above the path, P_hp L below), X to the right, the Y axis named', async () => {
@@ -124,7 +130,7 @@ describe('the camera frames the whole tool and fills the view', { timeout: 90_00
     expect((await at('P_hp L')).y).toBeGreaterThan(cc.y);
     expect((await at('Y')).y).toBeLessThan(cc.y);
     expect((await at('X (feed)')).x).toBeGreaterThan(cc.x);
-    await page.getByTestId('scene').screenshot({ path: `${SHOTS}/scene-camera-top-labels.png` });
+    await keepShot(page.getByTestId('scene'), 'scene-camera-top-labels');
   });
 
   it('a zoom is kept (the camera stops following) until a preset view is chosen again', async () => {
@@ -151,11 +157,14 @@ describe('the camera frames the whole tool and fills the view', { timeout: 90_00
 describe("the step-through's camera moves to what each step shows", { timeout: 180_000 }, () => {
   for (const reducedMotion of ['no-preference', 'reduce'] as const) {
     it(`each step's section and points are framed, the target moving with them (motion: ${reducedMotion})`, async () => {
-      const { page, errors } = await open('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=stepper', {
+      // Both motions on one load: the step-through from its first step again, the motion emulated.
+      const { page, errors } = await site.reuse('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=stepper', {
         width: 1440,
         height: 900,
       });
       await page.emulateMedia({ reducedMotion });
+      await showView(page, 'stepper');
+      await page.getByTestId('stepper-first').click();
       const counter = page.getByTestId('stepper-counter');
       await expect.poll(() => counter.textContent()).toMatch(/step 1 of \d+/);
       const total = Number(/of (\d+)/.exec((await counter.textContent()) ?? '')?.[1]);
@@ -180,9 +189,7 @@ describe("the step-through's camera moves to what each step shows", { timeout: 1
         expect(Math.abs(Math.max(...ys) + Math.min(...ys)) / 2, `step ${k}: centred up`).toBeLessThan(0.05);
         targets.push(f.target.map((v) => v.toFixed(4)).join());
         if (k === 1 || k === total)
-          await page
-            .getByTestId('scene')
-            .screenshot({ path: `${SHOTS}/scene-camera-step-${k === 1 ? 'first' : 'last'}-${reducedMotion}.png` });
+          await keepShot(page.getByTestId('scene'), `scene-camera-step-${k === 1 ? 'first' : 'last'}-${reducedMotion}`);
       }
       // The target follows the steps (the sections move along the ring, then to the other flank).
       expect(new Set(targets).size).toBeGreaterThanOrEqual(3);
@@ -208,7 +215,7 @@ describe('the surfaces read as what they are', { timeout: 90_000 }, () => {
         height: 900,
       });
       await settled(page);
-      await page.getByTestId('scene').screenshot({ path: `${SHOTS}/scene-camera-cylinder-${side}.png` });
+      await keepShot(page.getByTestId('scene'), `scene-camera-cylinder-${side}`);
       const shares = await hueShares(page);
       console.log(`${side} cylinder: ${JSON.stringify(shares)}`);
       expect(shares[hue], `${side}: ${JSON.stringify(shares)}`).toBeGreaterThan(0.01);

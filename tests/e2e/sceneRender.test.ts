@@ -7,7 +7,7 @@
  */
 import type { Locator, Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { paintedFraction, SHOTS, useSite } from './harness';
+import { keepShot, paintedFraction, useSite } from './harness';
 import { colourShare } from './pixels';
 
 const site = useSite('docs/scene-render');
@@ -118,7 +118,7 @@ describe('the 3D scene at the limits of the tool radius', () => {
       measured ??= referenceFraction();
       const reference = await measured;
       expect(reference).toBeGreaterThan(0.1);
-      await page.getByTestId('scene-canvas').screenshot({ path: `${SHOTS}/scene-${query.split('&')[0]}.png` });
+      await keepShot(page.getByTestId('scene-canvas'), `scene-${query.split('&')[0]}`);
       // Same layout, another shape (Rcr/R 0.2 or 0.5 against 1/3): fitted, about as much of the view.
       expect(painted).toBeGreaterThan(0.5 * reference);
       // Its labels are placed (none hidden behind the camera or beyond the far plane).
@@ -181,7 +181,7 @@ describe('a lost WebGL context', () => {
       const drawn = await surface.screenshot();
       await loseAndRestore(page, 'surface-canvas');
       await expect.poll(async () => differingShare(page, drawn, await surface.screenshot())).toBeLessThan(0.01);
-      await page.screenshot({ path: `${SHOTS}/context-restored-${theme}.png` });
+      await keepShot(page, `context-restored-${theme}`);
     });
   }
 });

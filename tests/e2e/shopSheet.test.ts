@@ -14,11 +14,12 @@ import { PLANE, type Surface } from '../../src/core/surfaces/cylinder';
 import { exactForward } from '../../src/core/surfaces/solve';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
 import { formatLen } from '../../src/ui/format';
-import { ROOT, SHOTS, useSite } from './harness';
+import { axeViolations } from './axe';
+import { keepShot, useSite, viewAs } from './harness';
 
 const site = useSite('shop/sheet');
-const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
 
+const PLAIN = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm';
 const DESKTOP = { name: 'desktop', width: 1440, height: 900, touch: false } as const;
 const PHONE = { name: 'phone', width: 390, height: 844, touch: true } as const;
 type Viewport = typeof DESKTOP | typeof PHONE;
@@ -49,6 +50,23 @@ async function open(vp: Viewport, theme: 'light' | 'dark', query: string): Promi
   return { page, errors };
 }
 
+/** Per viewport, the page of the plain mm state that the light and dark tests share (the sheet closed after each). */
+const plainPages = new Map<string, { page: Page; errors: string[] }>();
+
+/**
+ * The plain mm state in `vp`'s context, in `theme`: loaded once per viewport, the second theme by
+ * the system's colour scheme on the same document.
+ */
+async function openPlain(vp: Viewport, theme: 'light' | 'dark'): Promise<{ page: Page; errors: string[] }> {
+  let found = plainPages.get(vp.name);
+  if (found === undefined || found.page.isClosed()) {
+    found = await open(vp, theme, PLAIN);
+    plainPages.set(vp.name, found);
+  }
+  await viewAs(found.page, vp, theme);
+  return found;
+}
+
 /** Taps on the phone, clicks on the desktop. */
 async function press(vp: Viewport, page: Page, testId: string): Promise<void> {
   const target = page.getByTestId(testId);
@@ -71,20 +89,6 @@ const tableText = (page: Page) =>
     .evaluate((t) =>
       [...(t as HTMLTableElement).rows].map((r) => [...r.cells].map((c) => (c.textContent ?? '').trim())),
     );
-
-interface AxeViolation {
-  readonly id: string;
-  readonly nodes: ReadonlyArray<{ readonly target: readonly string[] }>;
-}
-
-async function violations(page: Page): Promise<string[]> {
-  await page.addScriptTag({ content: AXE });
-  const found = await page.evaluate(async () => {
-    const axe = (window as unknown as { axe: { run(): Promise<{ violations: AxeViolation[] }> } }).axe;
-    return (await axe.run()).violations;
-  });
-  return found.map((v) => `${v.id} x${v.nodes.length}: ${v.nodes[0]?.target.join(' ')}`);
-}
 
 /** Downloads the sheet's CSV: its suggested file name and text. */
 async function downloadCsv(vp: Viewport, page: Page): Promise<{ name: string; csv: string }> {
@@ -111,7 +115,7 @@ describe('shop sheet', () => {
   for (const vp of [DESKTOP, PHONE])
     for (const theme of ['light', 'dark'] as const)
       it(`mm, a plane (${vp.name}, ${theme}): the core's L by h x lead, the title lines, the CSV, axe`, async () => {
-        const { page, errors } = await open(vp, theme, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+        const { page, errors } = await openPlain(vp, theme);
         await openSheet(vp, page);
         expect(await page.getByTestId('shop-sheet-title').textContent()).toBe('Shop sheet: L (mm)');
         const lines = await page.getByTestId('shop-sheet-lines').locator('p').allTextContents();
@@ -131,12 +135,12 @@ describe('shop sheet', () => {
         // The sheet fits the viewport's width (the table scrolls inside it on a phone).
         const box = await page.getByTestId('shop-sheet-dialog').boundingBox();
         expect((box?.x ?? -1) >= 0 && (box?.x ?? 0) + (box?.width ?? 0) <= vp.width).toBe(true);
-        await page.screenshot({ path: `${SHOTS}/shop-sheet-mm-${vp.name}-${theme}.png` });
+        await keepShot(page, `shop-sheet-mm-${vp.name}-${theme}`);
         // Seven lead columns without scrolling sideways, on the phone too.
         expect(await page.locator('.sheet-scroll').evaluate((e) => [e.scrollWidth, e.clientWidth])).toSatisfy(
           ([scroll, client]: number[]) => (scroll ?? 1) <= (client ?? 0),
         );
-        expect(await violations(page), `${vp.name} ${theme}`).toEqual([]);
+        expect(await axeViolations(page), `${vp.name} ${theme}`).toEqual([]);
         const { name, csv } = await downloadCsv(vp, page);
         expect(name).toBe('shop-sheet_R3_Rcr1_one-way_plane_tilt0_mm.csv');
         const lines2 = csv.trim().split('\n');
@@ -149,7 +153,9 @@ describe('shop sheet', () => {
         // Closed with its button: the page is back, the sheet's class gone.
         await press(vp, page, 'shop-sheet-close');
         await page.getByTestId('shop-sheet-dialog').waitFor({ state: 'hidden' });
-        expect(await page.evaluate(() => document.documentElement.classList.contains('shop-sheet-open'))).toBe(false);
+        await expect
+          .poll(() => page.evaluate(() => document.documentElement.classList.contains('shop-sheet-open')))
+          .toBe(false);
         expect(errors).toEqual([]);
       }, 90_000);
 
@@ -178,7 +184,7 @@ describe('shop sheet', () => {
     // The last good sheet stays; no NaN anywhere.
     expect((await tableText(page)).length).toBe(4);
     expect(await page.getByTestId('shop-sheet-dialog').textContent()).not.toMatch(/NaN|Infinity/);
-    await page.screenshot({ path: `${SHOTS}/shop-sheet-heights-desktop.png` });
+    await keepShot(page, 'shop-sheet-heights-desktop');
   }, 90_000);
 
   for (const vp of [DESKTOP, PHONE])
@@ -202,8 +208,8 @@ describe('shop sheet', () => {
       const cyl: Surface = { kind: 'cylinder', radiusMm: -31.75, axis: 'cross' };
       expect(rows[3]?.[3]).toBe(formatLen(coreL(5, 0.0005 * 25.4, cyl, 3.175, 0.79375), 'in'));
       expect(await page.getByTestId('shop-sheet-legend').textContent()).toMatch(/G: the tool gouges the surface/);
-      await page.screenshot({ path: `${SHOTS}/shop-sheet-inch-${vp.name}-dark.png` });
-      expect(await violations(page)).toEqual([]);
+      await keepShot(page, `shop-sheet-inch-${vp.name}-dark`);
+      expect(await axeViolations(page)).toEqual([]);
       const { name, csv } = await downloadCsv(vp, page);
       expect(name).toBe('shop-sheet_R0.125_Rcr0.03125_one-way_Rs-1.25_cross_tilt0_in.csv');
       const [head, ...body] = csv.trim().split('\n');
@@ -236,8 +242,8 @@ describe('shop sheet', () => {
       );
       if (!r.ok) throw new Error('core');
       expect(rows[4]?.[4]).toBe(formatLen(r.value.horizontalStepMm, 'mm'));
-      await page.screenshot({ path: `${SHOTS}/shop-sheet-3axis-${vp.name}.png` });
-      expect(await violations(page)).toEqual([]);
+      await keepShot(page, `shop-sheet-3axis-${vp.name}`);
+      expect(await axeViolations(page)).toEqual([]);
       const { name, csv } = await downloadCsv(vp, page);
       expect(name).toBe('shop-sheet_R3_Rcr1_raster_psi0_plane_mm.csv');
       expect(csv.split('\n')[0]).toBe(`h_mm,${slopes.map((s) => `Lxy_mm_slope_${s}_deg`).join(',')}`);
@@ -276,7 +282,7 @@ describe('shop sheet', () => {
       const bottom = await page.getByTestId('shop-sheet-legend').evaluate((e) => e.getBoundingClientRect().bottom);
       expect(bottom).toBeLessThanOrEqual(size.height);
       expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(size.width);
-      await page.screenshot({ path: `${SHOTS}/shop-sheet-print-${format}.png`, fullPage: true });
+      await keepShot(page, `shop-sheet-print-${format}`, { fullPage: true });
       const pdf = await page.pdf({ format, printBackground: false });
       expect(pdfPages(pdf)).toBe(1);
       await page.emulateMedia({ media: 'screen' });

@@ -8,7 +8,7 @@ import { spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { pageSettled, ROOT, SHOTS, usePhonePage, useSite } from './harness';
+import { keepShot, pageSettled, ROOT, usePhonePage, useSite } from './harness';
 
 const site = useSite('docs/shop-tools');
 
@@ -61,7 +61,7 @@ describe('numbers typed as people write them (phone)', () => {
     await page.keyboard.press('Enter');
     await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('0.5');
     await expect.poll(() => new URL(page.url()).searchParams.get('D')).toBe('0.5');
-    await page.screenshot({ path: `${SHOTS}/shop-fraction-inch-phone.png` });
+    await keepShot(page, 'shop-fraction-inch-phone');
 
     const mm = await open('?D=6&Rcr=1&rho=5&h=0.05&unit=mm');
     const wantMm = cliInterval(6.35, 1, 0.05);
@@ -157,12 +157,12 @@ describe('tools of the shop (phone)', () => {
     });
     await expect.poll(() => status.textContent()).toMatch(/"notes\.txt": 0 tools read\.The file is not JSON/);
     expect(await list.locator('option').count()).toBe(4);
-    await page.screenshot({ path: `${SHOTS}/shop-library-phone.png`, fullPage: true });
+    await keepShot(page, 'shop-library-phone', { fullPage: true });
     // The open shelf, its lists and its messages pass axe, light and dark.
     expect(await violations(page)).toEqual([]);
     await page.emulateMedia({ colorScheme: 'dark' });
     expect(await violations(page)).toEqual([]);
-    await page.screenshot({ path: `${SHOTS}/shop-library-phone-dark.png` });
+    await keepShot(page, 'shop-library-phone-dark');
     await page.emulateMedia({ colorScheme: 'light' });
     // Dropped on the shelf, as from a file manager: the same import.
     await page.evaluate((json) => {

@@ -9,7 +9,7 @@ import { exactForward, forwardInput } from '../../src/core/index';
 import { formatInputNumber, fromMm, toMm } from '../../src/core/input/units';
 import { forwardOfRaTarget, validateRaTarget } from '../../src/core/roughness/raTarget';
 import { exactRoughness, maxRaMm } from '../../src/core/roughness/roughness';
-import { animationFrames, SHOTS, SOLVER, useSite, VIEWS_WORKER, workerIdle } from './harness';
+import { animationFrames, keepShot, SOLVER, useSite, VIEWS_WORKER, workerIdle } from './harness';
 
 const { open } = useSite('docs/surface');
 
@@ -64,7 +64,7 @@ describe('target Ra and roughness in headless Chromium', () => {
     await page.keyboard.press('ArrowRight');
     await expect.poll(() => text(page, 'result-ra')).toBe('10.100 \u00b5m');
     expect(errors).toEqual([]);
-    await page.screenshot({ path: `${SHOTS}/target-ra.png` });
+    await keepShot(page, 'target-ra');
   });
 
   it('an Ra above the maximum shows the message naming the limit (in the unit on screen) and dashes', async () => {
@@ -78,7 +78,7 @@ describe('target Ra and roughness in headless Chromium', () => {
     for (const id of ['result-ra', 'result-rz', 'result-rq', 'result-exact-interval'])
       expect(await text(page, id), id).toBe('\u2014');
     expect(await text(page, 'result-ra-rule')).toBe('');
-    await page.screenshot({ path: `${SHOTS}/target-ra-beyond-max.png` });
+    await keepShot(page, 'target-ra-beyond-max');
     await page.locator('input[name="unit"][value="in"]').check();
     // The fields as converted on screen (R = 0.11811 in, Rcr = 0.0393701 in): the limit answers them.
     const inch = (mm: number) => toMm(Number(formatInputNumber(fromMm(mm, 'in'))), 'in');
@@ -122,7 +122,7 @@ describe('Machined surface view in headless Chromium', () => {
     const canvas = view.getByTestId('surface-canvas');
     await expect.poll(async () => (await canvas.screenshot()).length).toBeGreaterThan(3000);
     expect(errors).toEqual([]);
-    await page.screenshot({ path: `${SHOTS}/view-surface.png`, fullPage: true });
+    await keepShot(page, 'view-surface', { fullPage: true });
   });
 
   it('a burst of inputs ends on the latest; invalid input hides the numbers; zigzag and target Ra', async () => {
@@ -169,7 +169,7 @@ describe('Machined surface view in headless Chromium', () => {
       .toMatch(new RegExp(`exact ${(1000 * zz).toFixed(3)} \u00b5m.*4 passes`));
     n = comparisonNumbers((await line.textContent()) ?? '');
     expect(Math.abs(n.sim - n.exact)).toBeLessThanOrEqual(n.bound + 1e-6);
-    await page.screenshot({ path: `${SHOTS}/view-surface-zigzag.png`, fullPage: true });
+    await keepShot(page, 'view-surface-zigzag', { fullPage: true });
     await page.locator('input[name="target"][value="ra"]').check();
     await page.getByTestId('input-ra').fill('0.008');
     await expect.poll(() => text(page, 'result-ra')).toBe('8.000 \u00b5m');
@@ -193,6 +193,6 @@ describe('Machined surface view in headless Chromium', () => {
       document.documentElement.clientWidth,
     ]);
     expect(scroll).toBeLessThanOrEqual(client as number);
-    await page.screenshot({ path: `${SHOTS}/embed-surface.png` });
+    await keepShot(page, 'embed-surface');
   });
 });

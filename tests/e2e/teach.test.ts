@@ -1,7 +1,8 @@
 /**
  * The teacher's page (issue 10): the comparison charts and the step-through, driven as a teacher
- * would at 1440 x 900 (projector) and 390 x 844 (phone), in the light and the dark theme.
- * Screenshots are kept in test-results/screenshots/.
+ * would at 1440 x 900 (projector) and 390 x 844 (phone), in the light and the dark theme (one load
+ * for the four: the sizes by setViewportSize, the theme by the system's scheme). Screenshots are kept
+ * in test-results/screenshots/ under `npm run shots`.
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
@@ -11,7 +12,7 @@ import { forwardInput } from '../../src/core/input/validate';
 import { stepOverSweep } from '../../src/core/procedures/teaching';
 import { groupSteps, sceneToleranceMm } from '../../src/ui/views/stepGroups';
 import { traceFrames } from '../../src/worker/api';
-import { SHOTS, useSite } from './harness';
+import { keepShot, useSite } from './harness';
 
 const site = useSite('docs/teach');
 const { open } = site;
@@ -25,6 +26,10 @@ const THEMES = ['light', 'dark'] as const;
 /** The exact curve's colour in each theme (procedures.ts). */
 const EXACT_STROKE = { light: 'rgb(17, 24, 39)', dark: 'rgb(243, 244, 246)' };
 
+/** The chart's and the step-through's pages, each shared by the tests that only read them. */
+const CHART = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=chart';
+const STEPPER = '?R=3&Rcr=1&rho=5&h=0.1&unit=mm&view=stepper';
+
 async function noHorizontalScroll(page: Page): Promise<void> {
   const { scroll, client } = await page.evaluate(() => ({
     scroll: document.documentElement.scrollWidth,
@@ -37,7 +42,7 @@ describe('teacher: the comparison charts', () => {
   for (const vp of VIEWPORTS) {
     for (const theme of THEMES) {
       it(`${vp.name} ${theme}: tall plots, units in the titles, legend values at the current lead and tilt, the reason where Bedi has no answer`, async () => {
-        const { page, errors } = await open(`?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=chart&theme=${theme}`, vp);
+        const { page, errors } = await site.reuse(CHART, vp, theme);
         const chart = page.getByTestId('comparison-chart');
         const c = compareForward(forwardInput(TOOL1, 'one-way', 0.05));
         const lead = page.getByTestId('chart-lead');
@@ -87,11 +92,28 @@ describe('teacher: the comparison charts', () => {
           await lead.locator('.chart-line[data-procedure="exact"]').evaluate((e) => getComputedStyle(e).stroke),
         ).toBe(EXACT_STROKE[theme]);
         await noHorizontalScroll(page);
-        await chart.screenshot({ path: `${SHOTS}/teach-chart-${vp.name}-${theme}.png` });
+        await keepShot(chart, `teach-chart-${vp.name}-${theme}`);
         expect(errors).toEqual([]);
       });
     }
   }
+
+  it('highlighting a procedure in the results emphasises its line and dims the others', async () => {
+    const { page } = await site.reuse(CHART, { width: 1440, height: 900 });
+    const lead = page.getByTestId('chart-lead');
+    await lead.locator('.chart-line[data-procedure="bedi"]').waitFor();
+    await page.locator('.procedures tr[data-procedure="bedi"]').hover();
+    await expect
+      .poll(() => lead.locator('.chart-line[data-procedure="bedi"]').getAttribute('class'))
+      .toMatch(/chart-focus/);
+    expect(await lead.locator('.chart-line[data-procedure="exact"]').getAttribute('class')).toMatch(/chart-dim/);
+    const width = (key: string) =>
+      lead
+        .locator(`.chart-line[data-procedure="${key}"]`)
+        .evaluate((e) => Number.parseFloat(getComputedStyle(e).strokeWidth));
+    expect(await width('bedi')).toBeGreaterThan(await width('sekine'));
+    await keepShot(page.getByTestId('comparison-chart'), 'teach-chart-highlight-bedi');
+  });
 
   it('inside the gap the legend says n/a and points to the reason; the error unit switch changes the title', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=1&h=0.05&unit=mm&view=chart', { width: 1440, height: 900 });
@@ -100,7 +122,7 @@ describe('teacher: the comparison charts', () => {
     await page.getByTestId('chart-error-unit').selectOption('mm');
     await expect.poll(() => page.getByTestId('chart-error').locator('.chart-title').textContent()).toMatch(/\[mm\]$/);
     expect(await page.getByTestId('chart-error-value-sekine').textContent()).toMatch(/^[+-]\d\.\d{4} mm$/);
-    await page.getByTestId('comparison-chart').screenshot({ path: `${SHOTS}/teach-chart-rho1-gap.png` });
+    await keepShot(page.getByTestId('comparison-chart'), 'teach-chart-rho1-gap');
   });
 
   it('an error that rounds to zero reads 0.00 in the legend, never -0.00 or +0.00 (mm and inch; issue 17)', async () => {
@@ -142,23 +164,6 @@ describe('teacher: the comparison charts', () => {
       expect(errors).toEqual([]);
     }
   });
-
-  it('highlighting a procedure in the results emphasises its line and dims the others', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=chart', { width: 1440, height: 900 });
-    const lead = page.getByTestId('chart-lead');
-    await lead.locator('.chart-line[data-procedure="bedi"]').waitFor();
-    await page.locator('.procedures tr[data-procedure="bedi"]').hover();
-    await expect
-      .poll(() => lead.locator('.chart-line[data-procedure="bedi"]').getAttribute('class'))
-      .toMatch(/chart-focus/);
-    expect(await lead.locator('.chart-line[data-procedure="exact"]').getAttribute('class')).toMatch(/chart-dim/);
-    const width = (key: string) =>
-      lead
-        .locator(`.chart-line[data-procedure="${key}"]`)
-        .evaluate((e) => Number.parseFloat(getComputedStyle(e).strokeWidth));
-    expect(await width('bedi')).toBeGreaterThan(await width('sekine'));
-    await page.getByTestId('comparison-chart').screenshot({ path: `${SHOTS}/teach-chart-highlight-bedi.png` });
-  });
 });
 
 describe('teacher: the step-through', () => {
@@ -170,9 +175,11 @@ describe('teacher: the step-through', () => {
   for (const vp of VIEWPORTS) {
     for (const theme of THEMES) {
       it(`${vp.name} ${theme}: one numbering, alike frames merged or explained, an honest d_s / Rcr gauge`, async () => {
-        const { page, errors } = await open(`?R=3&Rcr=1&rho=5&h=0.1&unit=mm&view=stepper&theme=${theme}`, vp);
+        const { page, errors } = await site.reuse(STEPPER, vp, theme);
         const caption = page.getByTestId('stepper-caption');
         const counter = page.getByTestId('stepper-counter');
+        // From the first step (a test before on this page may have stepped on).
+        await page.getByTestId('stepper-first').click();
         await expect.poll(() => caption.textContent()).toMatch(/^Step 1 of \d+\. Right flank/);
         // One numbering: the caption's step is the counter's, and the paper's are boxes of its Figure 1.
         expect(total).toBeLessThan(frames.length);
@@ -210,7 +217,7 @@ describe('teacher: the step-through', () => {
         // The search has no d_s: the gauge says so instead of showing a bar.
         expect(await page.getByTestId('stepper-ds-text').textContent()).toMatch(/no d_s here/);
         expect(await gauge.locator('.ds-bar').getAttribute('width')).toBe('0.00');
-        await page.screenshot({ path: `${SHOTS}/teach-stepper-merged-${vp.name}-${theme}.png` });
+        await keepShot(page, `teach-stepper-merged-${vp.name}-${theme}`);
         // The flank's convergence looks like its last search pass: explained.
         await page.getByTestId('stepper-last').click();
         await expect
@@ -221,7 +228,7 @@ describe('teacher: the step-through', () => {
           .poll(() => caption.textContent())
           .toMatch(/Left flank \(-Y\) converged: .*the search has stopped moving/);
         await noHorizontalScroll(page);
-        await page.screenshot({ path: `${SHOTS}/teach-stepper-${vp.name}-${theme}.png` });
+        await keepShot(page, `teach-stepper-${vp.name}-${theme}`);
         expect(errors).toEqual([]);
       });
     }
@@ -232,7 +239,7 @@ describe('teacher: the step-through', () => {
     // every timer due within a stretch of time instead of the test waiting it out.
     const page = await site.browser().newPage({ viewport: { width: 1440, height: 900 } });
     await page.clock.install();
-    await page.goto(`${site.url()}?R=3&Rcr=1&rho=5&h=0.1&unit=mm&view=stepper`);
+    await page.goto(`${site.url()}${STEPPER}`);
     const counter = page.getByTestId('stepper-counter');
     const note = page.getByTestId('stepper-motion-note');
     await expect.poll(() => counter.textContent()).toBe(`step 1 of ${total}`);
@@ -245,13 +252,13 @@ describe('teacher: the step-through', () => {
     // Every timer of the next 2.1 s fires: an animation (700 ms a step) would move on 3 steps.
     await page.clock.runFor(2100);
     expect(await counter.textContent()).toBe(`step 2 of ${total}`);
-    await page.screenshot({ path: `${SHOTS}/teach-stepper-reduced-motion.png` });
+    await keepShot(page, 'teach-stepper-reduced-motion');
     // Back to full motion: Play animates again.
     await page.emulateMedia({ reducedMotion: 'no-preference' });
     await expect.poll(() => note.isVisible()).toBe(false);
     await page.getByTestId('stepper-play').click();
     await page.clock.runFor(2100);
-    await expect.poll(() => counter.textContent(), { timeout: 6000 }).toMatch(/^step [4-9]/);
+    await expect.poll(() => counter.textContent()).toMatch(/^step [4-9]/);
     await page.close();
   });
 });

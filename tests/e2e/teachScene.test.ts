@@ -5,16 +5,22 @@
  * scene, L and L/2 are dimensioned, every element drawn has its legend entry; the profile has a
  * scale bar in the user's unit, stays readable exaggerated, shows its whole legend and keeps its
  * labels' size when zoomed; at 1440 x 900 the scene fills its column beside the teaching views.
- * Screenshots are kept in test-results/screenshots/.
+ * Screenshots are kept in test-results/screenshots/ under `npm run shots`. One load per posture or
+ * state: the sizes by setViewportSize, light and dark by the system's scheme, the views by their tabs.
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { exactForward } from '../../src/core/index';
 import { forwardInput } from '../../src/core/input/validate';
 import { formatLenUnit } from '../../src/ui/format';
-import { animationFrames, frames, SHOTS, sceneIdle, useSite } from './harness';
+import { animationFrames, frames, keepShot, sceneIdle, showView, useSite, viewAs } from './harness';
 
-const { open } = useSite('docs/teach-scene');
+const site = useSite('docs/teach-scene');
+const { open } = site;
+
+/** The plain posture (R 3, Rcr 1, lead 5, h 0.05 mm) in the profile view: read by several tests on one load. */
+const PLAIN_PROFILE = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile';
+const WIDE = { width: 1440, height: 900 };
 
 const VIEWPORTS = [
   { name: 'phone', width: 390, height: 844 },
@@ -44,20 +50,23 @@ interface Box {
 
 /** The scene's visible labels (and the exaggeration badge) with their boxes on screen, and the scene's box. */
 async function sceneLabels(page: Page): Promise<{ labels: Box[]; scene: Box }> {
-  return page.evaluate(() => {
-    const box = (e: Element, text: string) => {
+  return page.evaluate(labelsInPage);
+}
+
+/** In the page: what sceneLabels returns (self-contained, so that a walk in the page can call it too). */
+function labelsInPage(): { labels: Box[]; scene: Box } {
+  const box = (e: Element, text: string) => {
+    const r = e.getBoundingClientRect();
+    return { text, left: r.left, top: r.top, right: r.right, bottom: r.bottom };
+  };
+  const sceneEl = document.querySelector('[data-testid="scene"]') as HTMLElement;
+  const labels = [...sceneEl.querySelectorAll<HTMLElement>('.scene-label, .scene-scale')]
+    .filter((e) => {
       const r = e.getBoundingClientRect();
-      return { text, left: r.left, top: r.top, right: r.right, bottom: r.bottom };
-    };
-    const sceneEl = document.querySelector('[data-testid="scene"]') as HTMLElement;
-    const labels = [...sceneEl.querySelectorAll<HTMLElement>('.scene-label, .scene-scale')]
-      .filter((e) => {
-        const r = e.getBoundingClientRect();
-        return e.checkVisibility({ visibilityProperty: true }) && r.width > 0 && r.height > 0;
-      })
-      .map((e) => box(e, e.textContent ?? ''));
-    return { labels, scene: box(sceneEl, 'scene') };
-  });
+      return e.checkVisibility({ visibilityProperty: true }) && r.width > 0 && r.height > 0;
+    })
+    .map((e) => box(e, e.textContent ?? ''));
+  return { labels, scene: box(sceneEl, 'scene') };
 }
 
 /** No two labels intersect, and each lies within the scene's box. */
@@ -106,37 +115,65 @@ async function drawnAfter(page: Page, act: () => Promise<void>): Promise<void> {
   await sceneIdle(page);
 }
 
+/**
+ * In the page: `steps` times, clicks the step-through's Forward button and waits until 3 animation
+ * frames in a row pass without the 3D scene drawing (as sceneIdle: what the step asked is drawn),
+ * then reads the step counter and the scene's labels (`read`, labelsInPage). The whole walk is one
+ * call: its time is the page's drawing, not a round trip per step.
+ */
+async function walkForward(
+  read: () => { labels: Box[]; scene: Box },
+  steps: number,
+): Promise<Array<{ counter: string; found: { labels: Box[]; scene: Box } }>> {
+  const probe = (window as unknown as { __pathInterval: { frames(): number } }).__pathInterval;
+  const forward = document.querySelector('[data-testid="stepper-forward"]') as HTMLButtonElement;
+  const out: Array<{ counter: string; found: { labels: Box[]; scene: Box } }> = [];
+  for (let k = 0; k < steps; k++) {
+    forward.click();
+    let last = probe.frames();
+    for (let still = 0; still < 3; ) {
+      await new Promise((r) => requestAnimationFrame(r));
+      const now = probe.frames();
+      still = now === last ? still + 1 : 0;
+      last = now;
+    }
+    out.push({ counter: document.querySelector('[data-testid="stepper-counter"]')?.textContent ?? '', found: read() });
+  }
+  return out;
+}
+
 describe('teacher: the 3D scene', () => {
-  for (const [i, vp] of VIEWPORTS.entries()) {
-    for (const [j, posture] of POSTURES.entries()) {
-      const theme = (i + j) % 2 === 0 ? 'light' : 'dark';
-      it(`${vp.name} ${theme} ${posture.name}: labels clear of each other and inside the scene, L and L/2 drawn, the exaggeration said, a legend entry for every element`, async () => {
-        const { page, errors } = await open(`?${posture.query}&unit=mm&theme=${theme}`, vp);
+  for (const [j, posture] of POSTURES.entries()) {
+    const themes = VIEWPORTS.map((_, i) => ((i + j) % 2 === 0 ? 'light' : 'dark'));
+    it(`${posture.name} at ${VIEWPORTS.map((vp, i) => `${vp.name} ${themes[i]}`).join(', ')}: labels clear of each other and inside the scene, L and L/2 drawn, the exaggeration said, a legend entry for every element`, async () => {
+      const { page, errors } = await open(`?${posture.query}&unit=mm`, VIEWPORTS[0], themes[0]);
+      for (const [i, vp] of VIEWPORTS.entries()) {
+        const theme = themes[i] ?? 'light';
+        const where = `${vp.name} ${theme} ${posture.name}`;
+        await viewAs(page, vp, theme);
         await sceneReady(page);
         const found = await sceneLabels(page);
         const texts = found.labels.map((l) => l.text);
-        expectClear(found, `${vp.name} ${posture.name}`);
+        expectClear(found, where);
         const half = (await page.getByTestId('result-exact-half').textContent())?.trim() ?? '';
         const whole = (await page.getByTestId('result-exact-interval').textContent())?.trim() ?? '';
         // L and L/2 are dimensioned on the scene with the solver's numbers (the exaggeration changes none).
         const arc = posture.name === 'cylinder' ? ' (arc)' : '';
-        expect(texts, JSON.stringify(texts)).toContain(`L = ${whole}${arc}`);
-        expect(texts, JSON.stringify(texts)).toContain(`L/2 = ${half}${arc}`);
+        expect(texts, `${where}: ${JSON.stringify(texts)}`).toContain(`L = ${whole}${arc}`);
+        expect(texts, `${where}: ${JSON.stringify(texts)}`).toContain(`L/2 = ${half}${arc}`);
         // The exaggeration is said on the scene.
         const badge = (await page.getByTestId('scene-exaggeration').textContent()) ?? '';
-        expect(badge).toMatch(posture.name === 'cylinder' ? /^heights at true scale$/ : /^heights drawn x\d+ /);
-        const drawn = await expectLegendFor(page, `${vp.name} ${posture.name}`);
-        expect(drawn).toEqual(
+        expect(badge, where).toMatch(posture.name === 'cylinder' ? /^heights at true scale$/ : /^heights drawn x\d+ /);
+        const drawn = await expectLegendFor(page, where);
+        expect(drawn, where).toEqual(
           expect.arrayContaining(
             posture.name === 'cylinder' ? ['tool', 'path', 'hplane', 'cusp'] : ['tool', 'path', 'hplane', 'dimension'],
           ),
         );
-        await page
-          .getByTestId('scene')
-          .screenshot({ path: `${SHOTS}/teach-scene-${posture.name}-${vp.name}-${theme}.png` });
-        expect(errors).toEqual([]);
-      });
-    }
+        await keepShot(page.getByTestId('scene'), `teach-scene-${posture.name}-${vp.name}-${theme}`);
+      }
+      expect(errors).toEqual([]);
+    });
   }
 
   it('the labels stay clear when the camera moves (along the feed, top)', async () => {
@@ -148,45 +185,32 @@ describe('teacher: the 3D scene', () => {
     }
   });
 
-  it('the heights are exaggerated only when the scallop is too low to see, and only the drawing changes', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm', { width: 1440, height: 900 });
-    await sceneReady(page);
-    // 0.12 R = 0.36 mm: the largest 1-2-5 factor that keeps 5 h below it is 5.
-    expect(await page.getByTestId('scene-exaggeration').textContent()).toBe(
-      'heights drawn x5 (up to 2h above the plane)',
-    );
-    const e = exactForward(
-      forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 0.05),
-    );
-    const texts = (await sceneLabels(page)).labels.map((l) => l.text);
-    expect(texts).toContain(`L = ${formatLenUnit(e.intervalMm, 'mm')}`);
-    expect(texts).toContain(`L/2 = ${formatLenUnit(e.intervalMm / 2, 'mm')}`);
-    // A scallop tall enough to be seen: true scale.
-    const field = page.getByTestId('input-h');
-    await field.fill('0.5');
-    await field.press('Enter');
-    await expect.poll(() => page.getByTestId('scene-exaggeration').textContent()).toBe('heights at true scale');
-  });
-
   it('step-through: single contact and best P_hp[i] clear of the other labels, and the trace in the legend', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=stepper', { width: 1440, height: 900 });
+    const { page } = await site.reuse(PLAIN_PROFILE, WIDE);
+    await showView(page, 'stepper');
     await sceneReady(page);
     const counter = page.getByTestId('stepper-counter');
+    await page.getByTestId('stepper-first').click();
     await expect.poll(() => counter.textContent()).toMatch(/step 1 of \d+/);
     const total = Number(/of (\d+)/.exec((await counter.textContent()) ?? '')?.[1]);
     const seen = new Set<string>();
-    for (let k = 1; k < total; k++) {
-      await page.getByTestId('stepper-forward').click();
-      await expect.poll(() => counter.textContent()).toMatch(new RegExp(`step ${k + 1} of`));
-      await sceneIdle(page);
-      const found = await sceneLabels(page);
+    const walked: Array<{ counter: string; found: { labels: Box[]; scene: Box } }> = await page.evaluate(
+      `(${walkForward})(${labelsInPage}, ${total - 1})`,
+    );
+    expect(walked).toHaveLength(total - 1);
+    for (const [i, { counter: shown, found }] of walked.entries()) {
+      const k = i + 2;
+      expect(shown, `step ${k}`).toMatch(new RegExp(`^step ${k} of`));
       for (const l of found.labels) seen.add(l.text);
-      expectClear(found, `step ${k + 1}`);
+      expectClear(found, `step ${k}`);
     }
     expect([...seen]).toEqual(expect.arrayContaining(['single contact', 'best P_hp[i]']));
     expect(await expectLegendFor(page, 'step-through')).toContain('trace');
-    await page.getByTestId('scene').screenshot({ path: `${SHOTS}/teach-scene-stepper.png` });
-  });
+    await keepShot(page.getByTestId('scene'), 'teach-scene-stepper');
+    await showView(page, 'profile');
+    // The runner's guard against a hang, not a speed limit: each of the ~30 steps is a frame of the
+    // scene drawn in software (0.1-1.8 s each measured under a load of 20 on 2 cores).
+  }, 180_000);
 });
 
 /** The profile's box and the boxes of its texts, on screen. */
@@ -204,12 +228,52 @@ async function profileTexts(page: Page): Promise<{ svg: Box; texts: Box[] }> {
   });
 }
 
+/** The profile's legend: on the phone (the shared page) and in two embeds (pages of their own). */
+const LEGEND_CASES = [
+  { name: 'phone', query: PLAIN_PROFILE, vp: { width: 390, height: 844 } },
+  { name: 'embed', query: '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile&embed=1', vp: { width: 480, height: 360 } },
+  {
+    name: 'embed-dark-tilt',
+    query: '?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=profile&embed=1&theme=dark',
+    vp: { width: 480, height: 360 },
+  },
+] as const;
+
+/** Registers the test that the profile's legend shows whole in case `c`. */
+function itShowsTheWholeLegend(c: (typeof LEGEND_CASES)[number]): void {
+  it(`${c.name}: the whole legend visible, no entry clipped`, async () => {
+    const { page } = c.name === 'phone' ? await site.reuse(c.query, c.vp) : await open(c.query, c.vp);
+    const view = page.getByTestId('profile-view');
+    await view.locator('polyline.curve-exact').first().waitFor({ state: 'attached' });
+    const legend = view.locator('.view-legend');
+    if (c.name === 'phone') await legend.scrollIntoViewIfNeeded();
+    const boxes = await legend.locator('.legend-item').evaluateAll((els) =>
+      els
+        .filter((e) => !(e as HTMLElement).hidden)
+        .map((e) => {
+          const r = e.getBoundingClientRect();
+          return { text: e.textContent, left: r.left, right: r.right, top: r.top, bottom: r.bottom };
+        }),
+    );
+    expect(boxes.length).toBeGreaterThanOrEqual(7);
+    const vw = c.vp.width;
+    const vh = c.vp.height;
+    for (const b of boxes) {
+      expect(b.left >= 0 && b.right <= vw, `${b.text} cut off at the side`).toBe(true);
+      expect(b.top >= 0 && b.bottom <= vh, `${b.text} below the frame`).toBe(true);
+    }
+    await keepShot(page, `teach-profile-legend-${c.name}`);
+  });
+}
+
 describe('teacher: the cross-feed profile', () => {
   for (const [i, vp] of VIEWPORTS.entries()) {
     const theme = i % 2 === 0 ? 'dark' : 'light';
     it(`${vp.name} ${theme}: a scale bar in the user's unit, the note on the exact L, x100 readable`, async () => {
-      const { page } = await open(`?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile&theme=${theme}`, vp);
+      const { page } = await site.reuse(PLAIN_PROFILE, vp, theme);
       const view = page.getByTestId('profile-view');
+      // The exaggeration as the link opens it (a test before may have chosen x100).
+      await page.getByTestId('profile-exaggeration').selectOption('auto');
       await view.locator('polyline.curve-exact').first().waitFor({ state: 'attached' });
       await view.scrollIntoViewIfNeeded();
       expect(await page.getByTestId('profile-approx-note').textContent()).toMatch(
@@ -231,19 +295,13 @@ describe('teacher: the cross-feed profile', () => {
       // Every label within the plot.
       const { svg, texts } = await profileTexts(page);
       for (const t of texts) expect(t.right <= svg.right + 1 && t.left >= svg.left - 1, t.text).toBe(true);
-      await view.screenshot({ path: `${SHOTS}/teach-profile-x100-${vp.name}-${theme}.png` });
+      await keepShot(view, `teach-profile-x100-${vp.name}-${theme}`);
     });
   }
 
-  it('the scale bar in inches (thou for small lengths)', async () => {
-    const { page } = await open('?R=0.125&Rcr=0.04&rho=5&h=0.002&unit=in&view=profile', { width: 1440, height: 900 });
-    await page.getByTestId('profile-view').locator('polyline.curve-exact').first().waitFor({ state: 'attached' });
-    await expect.poll(() => page.getByTestId('profile-scale-bar-x').textContent()).toMatch(/^\d+(\.\d+)? (in|thou)$/);
-    expect(await page.getByTestId('profile-scale-bar-z').textContent()).toMatch(/ (in|thou) high/);
-  });
-
   it('labels keep their size on screen when zooming in and out', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile', { width: 1440, height: 900 });
+    const { page } = await site.reuse(PLAIN_PROFILE, WIDE);
+    await page.getByTestId('profile-exaggeration').selectOption('auto');
     const view = page.getByTestId('profile-view');
     await view.locator('text.dim-text').first().waitFor({ state: 'attached' });
     const label = view.locator('text.dim-text', { hasText: /^L = / });
@@ -269,44 +327,13 @@ describe('teacher: the cross-feed profile', () => {
     expect(Math.abs((await size()) - before)).toBeLessThan(1);
   });
 
-  for (const c of [
-    { name: 'phone', query: '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile', vp: { width: 390, height: 844 } },
-    { name: 'embed', query: '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile&embed=1', vp: { width: 480, height: 360 } },
-    {
-      name: 'embed-dark-tilt',
-      query: '?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=profile&embed=1&theme=dark',
-      vp: { width: 480, height: 360 },
-    },
-  ]) {
-    it(`${c.name}: the whole legend visible, no entry clipped`, async () => {
-      const { page } = await open(c.query, c.vp);
-      const view = page.getByTestId('profile-view');
-      await view.locator('polyline.curve-exact').first().waitFor({ state: 'attached' });
-      const legend = view.locator('.view-legend');
-      if (c.name === 'phone') await legend.scrollIntoViewIfNeeded();
-      const boxes = await legend.locator('.legend-item').evaluateAll((els) =>
-        els
-          .filter((e) => !(e as HTMLElement).hidden)
-          .map((e) => {
-            const r = e.getBoundingClientRect();
-            return { text: e.textContent, left: r.left, right: r.right, top: r.top, bottom: r.bottom };
-          }),
-      );
-      expect(boxes.length).toBeGreaterThanOrEqual(7);
-      const vw = c.vp.width;
-      const vh = c.vp.height;
-      for (const b of boxes) {
-        expect(b.left >= 0 && b.right <= vw, `${b.text} cut off at the side`).toBe(true);
-        expect(b.top >= 0 && b.bottom <= vh, `${b.text} below the frame`).toBe(true);
-      }
-      await page.screenshot({ path: `${SHOTS}/teach-profile-legend-${c.name}.png` });
-    });
-  }
+  for (const c of LEGEND_CASES.slice(0, 1)) itShowsTheWholeLegend(c);
 });
 
 describe('teacher: the wide layout', () => {
   it('1440 x 900: the scene fills its column beside the teaching views, no empty half', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile', { width: 1440, height: 900 });
+    const { page } = await site.reuse(PLAIN_PROFILE, WIDE);
+    await page.evaluate(() => window.scrollTo(0, 0));
     await sceneReady(page);
     await page.getByTestId('teaching').scrollIntoViewIfNeeded();
     await animationFrames(page, 2);
@@ -321,16 +348,52 @@ describe('teacher: the wide layout', () => {
     // The scene takes most of the screen's height, and its column (scene, camera, legend) most of it.
     expect(scene.height).toBeGreaterThan(0.6 * 900);
     expect(scene.y + view.height).toBeGreaterThan(0.9 * 900);
-    await page.screenshot({ path: `${SHOTS}/teach-wide-layout.png` });
+    await keepShot(page, 'teach-wide-layout');
+  });
+});
+
+describe('teacher: the 3D scene, last on the shared page (it changes h)', () => {
+  it('the heights are exaggerated only when the scallop is too low to see, and only the drawing changes', async () => {
+    const { page } = await site.reuse(PLAIN_PROFILE, WIDE);
+    await sceneReady(page);
+    // 0.12 R = 0.36 mm: the largest 1-2-5 factor that keeps 5 h below it is 5.
+    expect(await page.getByTestId('scene-exaggeration').textContent()).toBe(
+      'heights drawn x5 (up to 2h above the plane)',
+    );
+    const e = exactForward(
+      forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', 0.05),
+    );
+    const texts = (await sceneLabels(page)).labels.map((l) => l.text);
+    expect(texts).toContain(`L = ${formatLenUnit(e.intervalMm, 'mm')}`);
+    expect(texts).toContain(`L/2 = ${formatLenUnit(e.intervalMm / 2, 'mm')}`);
+    // A scallop tall enough to be seen: true scale.
+    const field = page.getByTestId('input-h');
+    site.changed();
+    await field.fill('0.5');
+    await field.press('Enter');
+    await expect.poll(() => page.getByTestId('scene-exaggeration').textContent()).toBe('heights at true scale');
+  });
+});
+
+describe('teacher: the cross-feed profile, on pages of their own', () => {
+  it('the scale bar in inches (thou for small lengths)', async () => {
+    const { page } = await open('?R=0.125&Rcr=0.04&rho=5&h=0.002&unit=in&view=profile', { width: 1440, height: 900 });
+    await page.getByTestId('profile-view').locator('polyline.curve-exact').first().waitFor({ state: 'attached' });
+    await expect.poll(() => page.getByTestId('profile-scale-bar-x').textContent()).toMatch(/^\d+(\.\d+)? (in|thou)$/);
+    expect(await page.getByTestId('profile-scale-bar-z').textContent()).toMatch(/ (in|thou) high/);
   });
 
+  for (const c of LEGEND_CASES.slice(1)) itShowsTheWholeLegend(c);
+});
+
+describe('teacher: the wide layout, tilted', () => {
   for (const vp of [
     { width: 360, height: 740 },
     { width: 414, height: 896 },
     { width: 768, height: 1024 },
   ]) {
     it(`${vp.width} px: no horizontal scrolling with the scene's legend and the profile's scale bar`, async () => {
-      const { page } = await open('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=profile', vp);
+      const { page } = await site.reuse('?R=3&Rcr=1&rho=5&tilt=5&h=0.05&unit=mm&view=profile', vp);
       await sceneReady(page);
       const { scroll, client } = await page.evaluate(() => ({
         scroll: document.documentElement.scrollWidth,

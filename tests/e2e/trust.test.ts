@@ -10,12 +10,13 @@ import { describe, expect, it } from 'vitest';
 import { compareForward, forwardInput } from '../../src/core/index';
 import {
   frames,
+  keepShot,
   namedWorker,
   paintedFraction,
   replies,
-  SHOTS,
   SOLVER,
   sceneIdle,
+  showView,
   siteDir,
   useSite,
   VIEWS_WORKER,
@@ -174,7 +175,7 @@ describe('numbers answer the inputs on screen', () => {
     expect(await page.getByTestId('teaching').getAttribute('class')).toMatch(/stale/);
     expect(await page.getByTestId('views-stale').textContent()).toMatch(/Out of date: the inputs are invalid/);
     expect(await page.getByTestId('table-notes').textContent()).toBe('');
-    await page.screenshot({ path: `${SHOTS}/trust-invalid.png` });
+    await keepShot(page, 'trust-invalid');
   });
 
   it('after the solver gives up (3 restarts) the last result stays marked stale and the page says so', async () => {
@@ -203,7 +204,7 @@ describe('numbers answer the inputs on screen', () => {
     expect(await page.locator('section.results').getAttribute('class')).toMatch(/stale/);
     expect(await page.getByTestId('results-status').textContent()).toMatch(/Out of date: the solver gave up/);
     expect(await page.getByTestId('scene').getAttribute('class')).toMatch(/stale/);
-    await page.screenshot({ path: `${SHOTS}/trust-gave-up.png` });
+    await keepShot(page, 'trust-gave-up');
     await page.close();
   });
 
@@ -219,12 +220,8 @@ describe('numbers answer the inputs on screen', () => {
     await closed;
     await page.getByTestId('input-h').fill('0.1');
     // No further input: the restarted worker answers the repeated request and the views follow.
-    await expect
-      .poll(() => page.getByTestId('notice').textContent(), { timeout: 10_000 })
-      .toMatch(/teaching views' solver was restarted/);
-    await expect
-      .poll(() => page.getByTestId('teaching').getAttribute('class'), { timeout: 10_000 })
-      .not.toMatch(/stale/);
+    await expect.poll(() => page.getByTestId('notice').textContent()).toMatch(/teaching views' solver was restarted/);
+    await expect.poll(() => page.getByTestId('teaching').getAttribute('class')).not.toMatch(/stale/);
     await expect.poll(() => view.locator('text.dim-text').allTextContents()).toContain('L/2 = 1.8921 mm');
   });
 });
@@ -287,21 +284,25 @@ describe('the 3D scene keeps its contract', () => {
   });
 });
 
+/** The inch state the unit tests read (one load for the results and every view). */
+const INCH = '?R=0.25&Rcr=0.03&rho=5&h=0.002&unit=in';
+
 describe('units and digits in every view', () => {
   const views = ['profile', 'chart', 'stepper', 'formulas'] as const;
   /** Float noise: a run of 9s or of 0s followed by a digit, e.g. 0.7619999999999999 or 0.30000000000000004. */
   const NOISE = /\d\.\d*(9{6,}|0{6,}[1-9])/;
 
   it('inch mode shows inches with no float noise in the results and in every view', async () => {
-    const q = '?R=0.25&Rcr=0.03&rho=5&h=0.002&unit=in';
-    const { page } = await open(q);
+    // One load; the views by their tabs.
+    const { page } = await site.reuse(INCH);
     const results = (await page.locator('section.results').textContent()) ?? '';
     expect(results).toMatch(/ in\b/);
     expect(results).not.toMatch(/\bmm\b/);
     expect(results).not.toMatch(NOISE);
     expect(await text(page, 'result-exact-interval')).toMatch(/^0\.\d{5,} in$/);
     for (const view of views) {
-      const p = (await open(`${q}&view=${view}`)).page;
+      const p = page;
+      await showView(p, view);
       const panel = p.locator(`#panel-${view}`);
       const ready = {
         profile: p.getByTestId('profile-view').locator('polygon.scallop'),
@@ -324,7 +325,8 @@ describe('units and digits in every view', () => {
       if (view === 'formulas') expect(content).toMatch(/Lengths in in \(small ones in thou\), angles in degrees/);
     }
     // The paper's tables stay in the paper's mm, and say so.
-    const t = (await open(`${q}&view=tables`)).page;
+    const t = page;
+    await showView(t, 'tables');
     await t.getByTestId('paper-tables').locator('table').first().waitFor();
     expect(await t.getByTestId('paper-tables').textContent()).toMatch(
       /in mm as the paper prints them \(in either unit\)/,
@@ -332,7 +334,8 @@ describe('units and digits in every view', () => {
   });
 
   it('slider arrow keys step in the user unit: R = 0.25 in becomes 0.251 in', async () => {
-    const { page } = await open('?R=0.25&Rcr=0.03&rho=5&h=0.002&unit=in');
+    const { page } = await site.reuse(INCH);
+    site.changed();
     await page.getByTestId('slider-R').focus();
     await page.keyboard.press('ArrowRight');
     await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('0.251');
@@ -357,7 +360,8 @@ describe('units and digits in every view', () => {
       formulas: 'L/2=0.04471 \u00b5m',
     };
     for (const view of ['chart', 'stepper', 'formulas'] as const) {
-      const p = (await open(`?R=0.001&Rcr=0.001&rho=0&h=0.000001&unit=mm&view=${view}`)).page;
+      const p = page;
+      await showView(p, view);
       if (view === 'stepper') {
         await p.getByTestId('stepper-caption').filter({ hasText: /flank/ }).waitFor();
         await p.getByTestId('stepper-last').click();

@@ -9,13 +9,12 @@
  * be followed by a length unit, or be one of the dimensionless quantities listed in DIMENSIONLESS
  * (angles, percentages, counts), or sit in a table column whose header names its unit.
  */
-import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { pageSettled, ROOT, SHOTS, useSite } from './harness';
+import { axeViolations } from './axe';
+import { keepShot, pageSettled, showView, useSite } from './harness';
 
 const site = useSite('docs/units');
-const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
 const VIEWPORT = { width: 1440, height: 900 };
 
 /** A length unit right after a number (with or without a space). */
@@ -111,10 +110,13 @@ function shownTexts(page: Page): Promise<Shown[]> {
 
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
 
-/** Opens a state with a view shown, waits until the page is quiet (every view and worker done). */
+/**
+ * Shows a state with a view, waits until the page is quiet (every view and worker done). One load
+ * per state (these tests change no input): its views by their tabs.
+ */
 async function openQuiet(query: string, view: string): Promise<Page> {
-  const { page, errors } = await site.open(`${query}&view=${view}`, VIEWPORT, 'light');
-  await page.locator(`#panel-${view} > *`).first().waitFor();
+  const { page, errors } = await site.reuse(query, VIEWPORT, 'light');
+  await showView(page, view);
   if (view === 'surface')
     await page
       .getByTestId('surface-comparison')
@@ -161,11 +163,11 @@ describe('every shown length carries its unit (1440 x 900, light)', () => {
       expect.arrayContaining(['h = 5.000 \u00b5m', 'L/2 = 0.4861 mm', 'L = 0.9723 mm']),
     );
     await expectUnits(page, 'mm plane profile');
-    await page.screenshot({ path: `${SHOTS}/units-mm.png` });
+    await keepShot(page, 'units-mm');
 
     page = await openQuiet(MM_PLANE, 'formulas');
     await expectUnits(page, 'mm plane formulas');
-    await page.getByTestId('formulas').screenshot({ path: `${SHOTS}/units-formulas-mm.png` });
+    await keepShot(page.getByTestId('formulas'), 'units-formulas-mm');
     page = await openQuiet(MM_PLANE, 'chart');
     await expectUnits(page, 'mm plane chart');
 
@@ -186,7 +188,7 @@ describe('every shown length carries its unit (1440 x 900, light)', () => {
     expect(await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth)).toBe(
       0,
     );
-    await page.screenshot({ path: `${SHOTS}/units-mm-inverse.png` });
+    await keepShot(page, 'units-mm-inverse');
   }, 240_000);
 
   it('inch: plane with the profile and the formulas; cylinder; inverse', async () => {
@@ -194,7 +196,7 @@ describe('every shown length carries its unit (1440 x 900, light)', () => {
     expect(await text(page, 'result-exact-half')).toBe('0.02003 in');
     expect(await text(page, 'result-rz')).toBe('200.0 \u00b5in');
     await expectUnits(page, 'inch plane profile');
-    await page.screenshot({ path: `${SHOTS}/units-in.png` });
+    await keepShot(page, 'units-in');
 
     page = await openQuiet(IN_PLANE, 'formulas');
     await expectUnits(page, 'inch plane formulas');
@@ -230,14 +232,9 @@ describe('the results and the Machined surface view agree on roughness', () => {
       expect(await text(page, 'surface-legend')).toMatch(new RegExp(`${symbol}.*${symbol}.*${symbol}`));
       expect(await text(page, 'surface-exaggeration')).toContain(`(${symbol})`);
       await expectUnits(page, `${unit} surface`);
-      await page.screenshot({ path: `${SHOTS}/units-surface-${unit}.png`, fullPage: true });
+      await keepShot(page, `units-surface-${unit}`, { fullPage: true });
       if (unit === 'in') {
-        await page.addScriptTag({ content: AXE });
-        const violations = await page.evaluate(async () => {
-          const axe = (window as unknown as { axe: { run(): Promise<{ violations: Array<{ id: string }> }> } }).axe;
-          return (await axe.run()).violations.map((v) => v.id);
-        });
-        expect(violations).toEqual([]);
+        expect(await axeViolations(page)).toEqual([]);
       }
     }, 120_000);
 });

@@ -6,7 +6,7 @@
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { FIELDS } from '../../src/core/input/fields';
-import { PHONE, pageSettled, SHOTS, useSite } from './harness';
+import { keepShot, PHONE, pageSettled, useSite } from './harness';
 
 const { open } = useSite('docs/view-link');
 
@@ -34,7 +34,7 @@ describe('?view= scrolls to the view it opens', () => {
         expect(await page.locator(tab).getAttribute('aria-selected')).toBe('true');
         expect(await inViewport(page, tab), `${view} at ${name}`).toBe(true);
         expect(await page.evaluate(() => window.scrollY)).toBeGreaterThan(0);
-        if (view === 'profile') await page.screenshot({ path: `${SHOTS}/view-link-${name}.png` });
+        if (view === 'profile') await keepShot(page, `view-link-${name}`);
         expect(errors).toEqual([]);
       }
       // No view asked: the page opens at its top.

@@ -7,9 +7,12 @@ import { compareForward, exactHalfIntervalMm, exactScallopHeightMm, traceProcedu
 import { autoExaggeration } from '../../src/core/output/drawingScale';
 import { sekineModel } from '../../src/core/procedures/approximations';
 import { PAPER_CONDITIONS } from '../../src/core/procedures/paper';
-import { SHOTS, useSite } from './harness';
+import { keepShot, showView, useSite } from './harness';
 
-const { open } = useSite('docs/views');
+const site = useSite('docs/views');
+const { open } = site;
+/** The plain state, read on one load by the formulas and the highlighting tests (their views by tabs). */
+const PLAIN = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm';
 
 const tool = (rho: number, h: number) => ({
   toolRadiusMm: 3,
@@ -37,7 +40,7 @@ describe('teaching views in headless Chromium', () => {
     await page.getByTestId('profile-cusp').click();
     const zoomed = await view.locator('svg').getAttribute('viewBox');
     expect(zoomed).not.toBe(home);
-    await page.screenshot({ path: `${SHOTS}/view-profile-cusp.png` });
+    await keepShot(page, 'view-profile-cusp');
     await page.getByTestId('profile-reset').click();
     expect(await view.locator('svg').getAttribute('viewBox')).toBe(home);
     // Follows a slider change.
@@ -93,7 +96,7 @@ describe('teaching views in headless Chromium', () => {
     await expect.poll(markerAt).toBeGreaterThan(0.35);
     await page.getByTestId('chart-rho-axis').selectOption('linear');
     await expect.poll(markerAt).toBeLessThan(0.2);
-    await page.screenshot({ path: `${SHOTS}/view-chart.png` });
+    await keepShot(page, 'view-chart');
   });
 
   it('tables: printed and recomputed values of Tables 2-5, the 3D deviations highlighted, a click loads a condition', async () => {
@@ -110,7 +113,7 @@ describe('teaching views in headless Chromium', () => {
     expect(await page.getByTestId('paper-height-1-sekine').locator('.printed').textContent()).toBe(
       c.printedHeight.sekine.toFixed(3),
     );
-    await page.screenshot({ path: `${SHOTS}/view-tables.png` });
+    await keepShot(page, 'view-tables');
     await tables.locator('tr[data-condition="6"]').first().click();
     await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('6');
     expect(await page.getByTestId('input-rho').inputValue()).toBe('10');
@@ -138,18 +141,17 @@ describe('teaching views in headless Chromium', () => {
     expect(await caption.textContent()).toContain(
       `exact solver gives ${exactHalfIntervalMm(tool(5, 0.1)).toFixed(6)} mm`,
     );
-    await page.screenshot({ path: `${SHOTS}/view-stepper-converged.png` });
+    await keepShot(page, 'view-stepper-converged');
     // Play runs through the steps by itself.
     await page.getByTestId('stepper-first').click();
     await page.getByTestId('stepper-play').click();
-    await expect
-      .poll(() => page.getByTestId('stepper-counter').textContent(), { timeout: 5000 })
-      .toMatch(/^step [3-9]/);
+    await expect.poll(() => page.getByTestId('stepper-counter').textContent()).toMatch(/^step [3-9]/);
     await page.getByTestId('stepper-play').click();
   });
 
   it('formulas: typeset equations with the current numbers substituted', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=formulas');
+    const { page } = await site.reuse(PLAIN);
+    await showView(page, 'formulas');
     const formulas = page.getByTestId('formulas');
     await formulas.locator('math').first().waitFor();
     expect(await formulas.locator('math').count()).toBeGreaterThan(8);
@@ -160,7 +162,23 @@ describe('teaching views in headless Chromium', () => {
     );
     expect(await formulas.textContent()).toMatch(/osculating circle/i);
     expect(await formulas.textContent()).not.toMatch(/NaN|\{\{|\\/);
-    await page.screenshot({ path: `${SHOTS}/view-formulas.png`, fullPage: true });
+    await keepShot(page, 'view-formulas', { fullPage: true });
+  });
+
+  it('hovering or selecting a procedure highlights it in the profile and the results table', async () => {
+    const { page } = await site.reuse(PLAIN);
+    await showView(page, 'profile');
+    await page.getByTestId('profile-view').locator('polyline.curve-bedi').first().waitFor();
+    await page.locator('.procedures tr[data-procedure="bedi"]').hover();
+    await expect.poll(() => page.locator('polyline.curve-sekine').first().getAttribute('class')).toMatch(/dimmed/);
+    expect(await page.locator('polyline.curve-bedi').first().getAttribute('class')).not.toMatch(/dimmed/);
+    expect(await page.locator('.procedures tr[data-procedure="bedi"]').getAttribute('class')).toMatch(/emph/);
+    // Selecting (click) keeps the highlight when the pointer leaves.
+    await page.locator('.procedures tr[data-procedure="redonnet"]').click();
+    await page.getByTestId('input-R').hover();
+    await expect.poll(() => page.locator('polyline.curve-bedi').first().getAttribute('class')).toMatch(/dimmed/);
+    expect(await page.locator('polyline.curve-redonnet').first().getAttribute('class')).not.toMatch(/dimmed/);
+    expect(await page.locator('.procedures tr[data-procedure="redonnet"]').getAttribute('class')).toMatch(/selected/);
   });
 
   it('formulas in inverse mode give each procedure its L/2 at the solved h, not the height', async () => {
@@ -179,21 +197,6 @@ describe('teaching views in headless Chromium', () => {
     ).toMatch(/=1\.5 mm$/);
   });
 
-  it('hovering or selecting a procedure highlights it in the profile and the results table', async () => {
-    const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
-    await page.getByTestId('profile-view').locator('polyline.curve-bedi').first().waitFor();
-    await page.locator('.procedures tr[data-procedure="bedi"]').hover();
-    await expect.poll(() => page.locator('polyline.curve-sekine').first().getAttribute('class')).toMatch(/dimmed/);
-    expect(await page.locator('polyline.curve-bedi').first().getAttribute('class')).not.toMatch(/dimmed/);
-    expect(await page.locator('.procedures tr[data-procedure="bedi"]').getAttribute('class')).toMatch(/emph/);
-    // Selecting (click) keeps the highlight when the pointer leaves.
-    await page.locator('.procedures tr[data-procedure="redonnet"]').click();
-    await page.getByTestId('input-R').hover();
-    await expect.poll(() => page.locator('polyline.curve-bedi').first().getAttribute('class')).toMatch(/dimmed/);
-    expect(await page.locator('polyline.curve-redonnet').first().getAttribute('class')).not.toMatch(/dimmed/);
-    expect(await page.locator('.procedures tr[data-procedure="redonnet"]').getAttribute('class')).toMatch(/selected/);
-  });
-
   it('?view=profile&embed=1 shows just that view, without horizontal scrolling at 480x360', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&embed=1&view=profile', { width: 480, height: 360 });
     await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
@@ -204,6 +207,6 @@ describe('teaching views in headless Chromium', () => {
       document.documentElement.clientWidth,
     ]);
     expect(scroll).toBeLessThanOrEqual(client as number);
-    await page.screenshot({ path: `${SHOTS}/embed-profile.png` });
+    await keepShot(page, 'embed-profile');
   });
 });
