@@ -35,7 +35,8 @@ import {
   doublyCurvedHeightForRaMm,
   validateDoublyCurved,
 } from '../core/surfaces/doublyCurved/index';
-import { solveThreeAxis, validateThreeAxis } from '../core/threeAxis/validate';
+import { solveThreeAxis } from '../core/threeAxis/solve';
+import { validateThreeAxis } from '../core/threeAxis/validate';
 import {
   emptyResults,
   H_COLUMN,

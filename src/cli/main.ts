@@ -34,12 +34,8 @@ import {
   doublyCurvedSolver,
   validateDoublyCurved,
 } from '../core/surfaces/doublyCurved/index';
-import {
-  solveThreeAxis,
-  type ThreeAxisInputError,
-  type ThreeAxisQuantity,
-  validateThreeAxis,
-} from '../core/threeAxis/validate';
+import { solveThreeAxis } from '../core/threeAxis/solve';
+import { type ThreeAxisInputError, type ThreeAxisQuantity, validateThreeAxis } from '../core/threeAxis/validate';
 import { parseArgs, type Request, type ValueOption } from './args';
 import { runBatch } from './batch';
 import { isNumberText } from './csv';
