@@ -6,6 +6,7 @@ import { embedAttributesPlugin } from './src/build/embedAttributes.ts';
 import { formulaMathmlPlugin } from './src/build/formulaMathml.ts';
 import { shaderWhitespacePlugin } from './src/build/shaderWhitespace.ts';
 import { sharedWorkerPlugin } from './src/build/sharedWorker.ts';
+import { staticClosure } from './src/build/staticGraph.ts';
 
 /**
  * The installable web app: a Workbox service worker (vite-plugin-pwa, generateSW) precaches the
@@ -18,6 +19,9 @@ import { sharedWorkerPlugin } from './src/build/sharedWorker.ts';
 function pwa(mode: string) {
   return VitePWA({
     disable: mode === 'e2e',
+    // Workbox's minified runtime whatever NODE_ENV says (Vitest sets it to `test`, which would make
+    // the tests' build ship the 129 kB development runtime instead of the 15 kB one).
+    mode: 'production',
     registerType: 'autoUpdate',
     injectRegister: 'script',
     includeAssets: ['embed.js', 'icon-192.png', 'icon-512.png', 'icon-maskable-512.png'],
@@ -51,24 +55,70 @@ function pwa(mode: string) {
 }
 
 /**
- * Two named chunks: `three` (three.js and the two 3D views' shared helpers, the WebGL view, the
- * orbit controller and the clipping planes, loaded with the 3D views after the first result) and
- * `core` (the pure modules that the page, its views and the solver worker all load: one copy,
- * cached once). Fewer, larger chunks also compress better against the 200 kB gzip budget than the
- * small shared chunks Rollup would make. The core's modules that only one lazy view uses (the 3D
- * scene's marks, the profile's section) go with that view instead of delaying the first result.
+ * The first result loads the page's entry and the solver worker, each with what it imports
+ * statically (src/build/staticGraph.ts reads that from the sources: FIRST_RESULT); everything else
+ * loads on first use, through dynamic imports (the doubly curved and three-axis solvers in the
+ * worker, the teaching views, the shop sheet, the tool shelf, the lookup table, the 3D scene).
+ * Two named chunks gather the later code: `three` (three.js and the 3D views' shared helpers, the
+ * WebGL view, the orbit controller and the clipping planes, loaded after the first result), and
+ * `later` (the core's and the worker's modules the first result does not need: loaded by whichever
+ * first use comes first, then cached), since a few larger chunks compress better against the
+ * 200 kB gzip budget than the many small shared chunks Rolldown would make; and `core`, the core
+ * modules of the first result, one chunk that page and worker share (the core shipped once).
  */
-const VIEW_ONLY_CORE = /\/src\/core\/output\/(sceneMarks|sectionProfile)\./;
+const SRC = fileURLToPath(new URL('./src/', import.meta.url));
+const FIRST_RESULT = new Set([
+  ...staticClosure(`${SRC}main.ts`, SRC).keys(),
+  ...staticClosure(`${SRC}worker/solver.worker.ts`, SRC).keys(),
+]);
+const THREE_CHUNK = /\/node_modules\/three\/|\/src\/render\/(orbit|clipPlanes|view3d)\./;
 
-function chunkOf(id: string): string | null {
-  if (id.includes('/node_modules/three/') || /\/src\/render\/(orbit|clipPlanes|view3d)/.test(id)) return 'three';
-  if (VIEW_ONLY_CORE.test(id)) return null;
-  if (/\/src\/(core\/|worker\/(rpc|protocol))/.test(id)) return 'core';
-  return null;
+/** The path under src/ of a module id (null outside src/). */
+const fileOf = (id: string): string | null => (id.startsWith(SRC) ? id.slice(SRC.length) : null);
+
+/** A core module or a worker's data builder that the first result does not load (the `later` chunk). */
+function later(id: string): boolean {
+  const file = fileOf(id);
+  return file !== null && /^(core|worker\/data)\//.test(file) && !FIRST_RESULT.has(file);
+}
+
+/**
+ * The worker's part of the first result (a plane's or a cylinder's answer: jobs/solve.ts, its data)
+ * apart from its entry (the `solve` chunk), so that the later chunks, which import some of it,
+ * never import the worker's own script, which must never run on the page.
+ */
+function firstJob(id: string): boolean {
+  const file = fileOf(id);
+  return file !== null && /^worker\/(jobs|data)\//.test(file) && FIRST_RESULT.has(file);
+}
+
+/**
+ * A worker job that the first result does not load (the `jobs` chunk). Only the worker imports
+ * these: the jobs chunk imports the worker's own script, which must never run on the page.
+ */
+function laterJobs(id: string): boolean {
+  const file = fileOf(id);
+  return file !== null && /^worker\/(jobs\/|simulate\.)/.test(file) && !FIRST_RESULT.has(file);
+}
+
+/** A core module (or the worker's protocol) that the first result loads: one `core` chunk for page and worker. */
+function core(id: string): boolean {
+  const file = fileOf(id);
+  return file !== null && /^(core\/|worker\/(rpc|protocol|pageProtocol)\.)/.test(file) && FIRST_RESULT.has(file);
+}
+
+/** The page's parts loaded on first use but the views and the scene: the shop sheet, the tool shelf, the table's grid, the sliders' limits. */
+function tools(id: string): boolean {
+  return /\/src\/ui\/(shopSheet|shopSheetText|toolShelf|savedTools|tableRequest|questionLimits)\.ts$/.test(id);
 }
 
 /** Tests that drive headless Chromium or read the built sites (dist/, test-results/site-e2e/). */
-const BROWSER_TESTS = ['tests/e2e/**/*.test.ts', 'tests/build/sharedWorker.test.ts', 'tests/bench/web.test.ts'];
+const BROWSER_TESTS = [
+  'tests/e2e/**/*.test.ts',
+  'tests/build/sharedWorker.test.ts',
+  'tests/build/jsBudget.test.ts',
+  'tests/bench/web.test.ts',
+];
 /**
  * Browser tests that write screenshots for a person to look at (the scene gallery; its check of no
  * page errors sceneCamera.test.ts makes on the same postures, light and dark): run by `npm run shots`
@@ -121,8 +171,26 @@ export default defineConfig(({ mode, command }) =>
         build: {
           chunkSizeWarningLimit: 700,
           // Every browser the page supports has module preload; the polyfill would only add bytes.
-          modulePreload: { polyfill: false },
-          rollupOptions: { output: { manualChunks: chunkOf } },
+          // The solver worker's dynamic imports preload nothing: a worker has no document to add
+          // preload links to (Vite's helper then touches no DOM), and the worker loads its jobs itself.
+          modulePreload: {
+            polyfill: false,
+            resolveDependencies: (_file, deps, { hostId }) => (/solver\.worker/.test(hostId) ? [] : deps),
+          },
+          rolldownOptions: {
+            output: {
+              codeSplitting: {
+                groups: [
+                  { name: 'three', test: THREE_CHUNK, includeDependenciesRecursively: false },
+                  { name: 'core', test: core, includeDependenciesRecursively: false },
+                  { name: 'solve', test: firstJob, includeDependenciesRecursively: false },
+                  { name: 'later', test: later, includeDependenciesRecursively: false },
+                  { name: 'jobs', test: laterJobs, includeDependenciesRecursively: false },
+                  { name: 'tools', test: tools, includeDependenciesRecursively: false },
+                ],
+              },
+            },
+          },
         },
         test: {
           testTimeout: 30_000,

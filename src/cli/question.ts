@@ -27,8 +27,8 @@ import {
   doublyCurvedHeightForRaMm,
   validateDoublyCurved,
 } from '../core/surfaces/doublyCurved/index';
+import { solveThreeAxis } from '../core/threeAxis/solve';
 import {
-  solveThreeAxis,
   type ThreeAxisAnswer,
   type ThreeAxisInputError,
   type ThreeAxisProblem,

@@ -8,7 +8,8 @@
  */
 import { FIELDS } from '../core/input/fields';
 import { type SlopeSweep, type SlopeSweepInput, slopeSweep } from '../core/threeAxis/slopeSweep';
-import { solveThreeAxis, type ThreeAxisInputError, validateThreeAxis } from '../core/threeAxis/validate';
+import { solveThreeAxis } from '../core/threeAxis/solve';
+import { type ThreeAxisInputError, validateThreeAxis } from '../core/threeAxis/validate';
 import type { ValueOption } from './args';
 
 /** Slopes in a sweep on the command line: 0 to the largest valid, 31 of them (3 degrees apart up to 90). */

@@ -23,17 +23,18 @@ import { listenForHostTheme } from './embedTheme';
 import { FieldsPanel } from './fields';
 import { FreshJob } from './freshness';
 import { Highlighter } from './highlight';
+import { LazyShopSheet } from './lazyShopSheet';
+import { LazyToolShelf } from './lazyToolShelf';
 import { plainLengths } from './lengthFields';
 import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
 import { PresentMode, parsePresent } from './present';
-import { buildRequest, fieldMessages } from './request';
+import { type BuiltRequest, buildRequest, stateMessages } from './request';
 import { ResultBar } from './resultBar';
 import { type QuestionKind, ResultsPanel } from './results';
 import { RoughnessPanel } from './roughness';
 import { sceneOfReply } from './sceneLabels';
 import { SceneSlot } from './sceneSlot';
-import { ShopSheetPanel } from './shopSheet';
 import { SimulationLoader } from './simulation';
 import {
   type CalculatorState,
@@ -54,7 +55,6 @@ import { withCurvedPreset } from './surfaceState';
 import { TeachingLoader } from './teaching';
 import { onThemeChange, setThemeOverride, startTheme } from './theme';
 import { parseTheme } from './themeChoice';
-import { ToolShelf } from './toolShelf';
 import { TypingGate } from './typing';
 import { UrlState } from './urlState';
 import type { ViewId } from './views/panel';
@@ -92,14 +92,18 @@ export class CalculatorApp {
   private readonly scene: SceneSlot<ToolScene>;
   private readonly sceneBox: HTMLElement;
   private readonly lookup: LookupDownload;
-  private readonly sheet: ShopSheetPanel;
+  private readonly sheet: LazyShopSheet;
   private readonly teaching: TeachingLoader | null;
   private readonly roughness: RoughnessPanel;
   private readonly simulation: SimulationLoader;
   private readonly client = solveClient({
     onReply: (reply) => {
       this.notice.clear('results');
-      if (this.fresh.receive(reply)) this.draw();
+      if (!this.fresh.receive(reply)) return;
+      // A refusal only the worker finds (a doubly curved point's gouging, a three-axis limit): its
+      // messages go on the fields and the parts beyond the results let the question go.
+      if (!reply.ok) this.follow();
+      this.draw();
     },
     onRestart: (info) => this.restarted('results', info),
   });
@@ -109,6 +113,8 @@ export class CalculatorApp {
   private readonly typing = new TypingGate(() => this.change(this.state));
   /** The field messages of the last committed state (kept while typing, so none flashes). */
   private messages: ReadonlyMap<FieldKey, string> = new Map();
+  /** The last committed state's request, or its errors (built once per change). */
+  private built: BuiltRequest = { ok: false, errors: [] };
   /** The reply and unit the scene shows. */
   private sceneDrawn: { reply: PageReply; unit: Unit } | null = null;
 
@@ -154,7 +160,7 @@ export class CalculatorApp {
       must(root, '[data-testid="download-table"]'),
       must(root, '[data-testid="download-table-status"]'),
     );
-    this.sheet = new ShopSheetPanel(must(root, '[data-testid="shop-sheet"]'));
+    this.sheet = new LazyShopSheet(must(root, '[data-testid="shop-sheet"]'));
     const sceneBox = must<HTMLElement>(root, '.scene');
     this.sceneBox = sceneBox;
     this.scene = new SceneSlot(() => import('../render/scene').then(({ ToolScene }) => new ToolScene(sceneBox)));
@@ -208,7 +214,7 @@ export class CalculatorApp {
       onSurfaceAxis: (surfaceAxis) => this.change({ ...this.state, surfaceAxis }),
       onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
     });
-    this.shelf = new ToolShelf(must(root, '[data-testid="tool-shelf"]'), {
+    this.shelf = new LazyToolShelf(must(root, '[data-testid="tool-shelf"]'), {
       onTool: (t) => this.change(withValues(this.state, { R: t.diameterMm / 2, Rcr: t.cornerRadiusMm })),
       current: () => {
         const plain = plainLengths(this.state);
@@ -258,7 +264,7 @@ export class CalculatorApp {
   /** Presentation mode (present.ts): the scene and the open view fill the window. */
   private readonly present: PresentMode;
   /** Saved tools and imported tool libraries. */
-  private readonly shelf: ToolShelf;
+  private readonly shelf: LazyToolShelf;
   /** The 3D view's section (marked `cylinder` while the scene shows one: its legend follows). */
   private readonly sceneSection: HTMLElement;
 
@@ -280,9 +286,10 @@ export class CalculatorApp {
    * typed field's own, which is cleared.
    */
   private edit(key: FieldKey, state: CalculatorState, typing: boolean): void {
-    if (!typing || buildRequest(plainLengths(state)).ok) {
+    const built = buildRequest(plainLengths(state));
+    if (!typing || built.ok) {
       this.typing.release();
-      this.change(state);
+      this.change(state, built);
       return;
     }
     this.typing.hold();
@@ -298,17 +305,32 @@ export class CalculatorApp {
     this.draw();
   }
 
-  /** The one way the state changes: ask the solver first, then draw the fields, write the URL. */
-  private change(state: CalculatorState): void {
+  /**
+   * The one way the state changes: ask the solver first, then draw the fields, write the URL.
+   * `built` is the state's request when the caller built it already (one build per input).
+   */
+  private change(state: CalculatorState, built: BuiltRequest = buildRequest(plainLengths(state))): void {
     this.typing.release();
     this.state = state;
-    // The question and the link read written lengths (1/2", 12.7 mm) as plain numbers.
-    const asked = plainLengths(state);
-    const built = buildRequest(asked);
-    const request = built.ok ? built.request : null;
+    this.built = built;
     // Asked (unless answered already) before any drawing, so the worker solves while the page draws.
-    this.fresh.want(request);
-    this.messages = built.ok ? new Map<FieldKey, string>() : fieldMessages(asked, built.errors);
+    this.fresh.want(built.ok ? built.request : null);
+    this.follow();
+    this.draw();
+    // The question and the link read written lengths (1/2", 12.7 mm) as plain numbers.
+    this.url.write(plainLengths(state));
+  }
+
+  /**
+   * The fields' messages and the parts beyond the results, from the state's request and the reply
+   * to it: a request the worker refused is no question for them (its messages are on the fields).
+   */
+  private follow(): void {
+    const state = this.state;
+    const shown = this.fresh.shown;
+    const reply = shown.kind === 'current' ? shown.reply : null;
+    const request = this.built.ok && reply?.ok !== false ? this.built.request : null;
+    this.messages = stateMessages(plainLengths(state), this.built, reply);
     this.fields.render(state, this.messages);
     this.shelf.render(state.unit);
     // The simulation and the table answer a plane's or a cylinder's question (five-axis); the views
@@ -324,8 +346,6 @@ export class CalculatorApp {
     );
     // The shop sheet: any valid question (its tool, posture, pattern and surface; three-axis by slope).
     this.sheet.want(request, state.unit);
-    this.draw();
-    this.url.write(asked);
   }
 
   /** Draws the results and the scene from what answers the inputs on screen. */

@@ -2,8 +2,9 @@
  * The page's question at a doubly curved point (issue 19): the two radii's fields (magnitudes, with
  * their sides) become signed radii in mm; with both straight the question is the plane's, with one
  * straight the cylinder's (so those answers stay exactly what they were), with both curved a doubly
- * curved request, validated here (the tool and posture as validate.ts does, then this point's own
- * checks, worker/data/curvedCheck.ts) with every message in the user's unit on its field. Pure.
+ * curved request, validated here as validate.ts does the tool and posture; this point's own checks
+ * (gouging, the flank and shank limits: worker/data/curvedCheck.ts) run once, in the worker, whose
+ * refusal describeCurvedError words. Every message in the user's unit on its field. Pure.
  */
 import { FIELDS, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
@@ -15,7 +16,6 @@ import {
   MIN_LENGTH_MM,
   validatePassAnd,
 } from '../core/input/validate';
-import { curvedErrors } from '../worker/data/curvedCheck';
 import type { CurvedError } from '../worker/pageProtocol';
 import type { BuiltRequest, PageFieldError } from './request';
 import { type CalculatorState, type FieldKey, fieldInMm, parseField, type Unit } from './state';
@@ -148,9 +148,6 @@ export function buildCurvedRequest(state: CalculatorState): BuiltRequest | null 
   if (errors.length > 0 || v.pass === null || v.value === undefined || typeof rf !== 'number' || typeof rc !== 'number')
     return { ok: false, errors };
   const radii = { feedRadiusMm: rf, crossRadiusMm: rc };
-  const question = field === 'h' ? { h: v.value } : field === 'ra' ? { ra: v.value } : { interval: v.value };
-  const checks = curvedErrors(v.pass, radii, state.pattern, question);
-  if (checks.length > 0) return { ok: false, errors: checks.map((e) => describeCurvedError(e, state)) };
   const tool = {
     toolRadiusMm: v.pass.toolRadiusMm,
     cornerRadiusMm: v.pass.cornerRadiusMm,

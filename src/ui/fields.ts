@@ -10,6 +10,7 @@ import type { PassPattern } from '../core/input/validate';
 import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
 import { html } from './dom';
+import { LazyQuestionLimits } from './lazyQuestionLimits';
 import type { Machine, Passes } from './machineState';
 import { dragEarly } from './sliderDrag';
 import { sliderRanges } from './sliders';
@@ -139,6 +140,12 @@ export class FieldsPanel {
   /** The presets the surface box lists now (five-axis or waterline). */
   private presetsShown: readonly string[] = [];
   private readonly sides = new Map<RadiusKey, HTMLSelectElement>();
+  /** The last state drawn, with its messages (drawn again once the sliders' limits have loaded). */
+  private drawn: { state: CalculatorState; messages: ReadonlyMap<FieldKey, string> } | null = null;
+  /** A doubly curved point's and three-axis machining's slider limits, loaded on the first such state. */
+  private readonly limits = new LazyQuestionLimits(() => {
+    if (this.drawn !== null) this.render(this.drawn.state, this.drawn.messages);
+  });
 
   constructor(
     private readonly root: HTMLElement,
@@ -250,7 +257,8 @@ export class FieldsPanel {
 
   /** Draws a state: values, visibility by mode, unit labels, slider ranges and the messages. */
   render(state: CalculatorState, messages: ReadonlyMap<FieldKey, string>): void {
-    const ranges = sliderRanges(state);
+    this.drawn = { state, messages };
+    const ranges = sliderRanges(state, this.limits.for(state));
     const forward = state.mode === 'forward';
     const five = state.machine === '5axis';
     const plane = state.surface === 'plane';

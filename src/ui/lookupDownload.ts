@@ -9,36 +9,11 @@
  */
 
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
-import { lookupGrid } from '../core/output/lookupTable';
-import { PLANE } from '../core/surfaces/cylinder';
 import type { RestartInfo } from '../worker/client';
-import { type CurvedRequest, isCurvedRequest } from '../worker/pageProtocol';
+import type { CurvedRequest } from '../worker/pageProtocol';
 import { type SolveRequest, sameTableRequest, type TableReply, type TableRequest } from '../worker/protocol';
 import { tableClient } from '../worker/workers';
 import { THREE_AXIS_TABLE_NOTE } from './threeAxisNotes';
-
-/**
- * The table request for the tool, pattern and surface of a solve request (or of a doubly curved
- * point's), its file in `unit` (the scallop heights on that unit's 1-2-5 series).
- */
-export function tableRequestOf(request: SolveRequest | CurvedRequest, unit: LengthUnit): TableRequest {
-  const i = request.input;
-  const tool = {
-    toolRadiusMm: i.toolRadiusMm,
-    cornerRadiusMm: i.cornerRadiusMm,
-    pattern: i.pattern,
-    surface: isCurvedRequest(request) ? PLANE : request.input.surface,
-  };
-  const grid = lookupGrid(tool, unit);
-  return isCurvedRequest(request)
-    ? {
-        tool,
-        grid,
-        unit,
-        radii: { feedRadiusMm: request.input.feedRadiusMm, crossRadiusMm: request.input.crossRadiusMm },
-      }
-    : { tool, grid, unit };
-}
 
 /**
  * The file name of a table: its tool, pattern and surface, then its unit, lengths in that unit:
@@ -79,6 +54,8 @@ export class LookupDownload {
   private current: SolveRequest | CurvedRequest | null = null;
   private unit: LengthUnit = 'mm';
   private asked: TableRequest | null = null;
+  /** The first click waits for the grid's code (tableRequest.ts): the button stays disabled meanwhile. */
+  private loadingGrid = false;
   private client: ReturnType<typeof tableClient> | null = null;
 
   constructor(
@@ -86,7 +63,7 @@ export class LookupDownload {
     private readonly status: HTMLElement,
   ) {
     button.disabled = true;
-    button.addEventListener('click', () => this.ask());
+    button.addEventListener('click', () => void this.ask());
   }
 
   /**
@@ -97,18 +74,23 @@ export class LookupDownload {
   want(request: SolveRequest | CurvedRequest | null, unit: LengthUnit, threeAxis = false): void {
     this.current = threeAxis ? null : request;
     this.unit = unit;
-    this.button.disabled = this.current === null || this.asked !== null;
-    if (this.asked !== null) return;
+    this.button.disabled = this.current === null || this.asked !== null || this.loadingGrid;
+    if (this.asked !== null || this.loadingGrid) return;
     if (threeAxis) this.status.textContent = THREE_AXIS_TABLE_NOTE;
     else if (this.status.textContent === THREE_AXIS_TABLE_NOTE) this.status.textContent = '';
   }
 
-  private ask(): void {
-    if (this.current === null) return;
-    const request = tableRequestOf(this.current, this.unit);
-    this.asked = request;
+  private async ask(): Promise<void> {
+    if (this.current === null || this.asked !== null || this.loadingGrid) return;
+    const current = this.current;
     this.button.disabled = true;
     this.status.textContent = 'Computing the table in the worker...';
+    // The grid's code loads on the first click (not with the first result).
+    this.loadingGrid = true;
+    const { tableRequestOf } = await import('./tableRequest');
+    this.loadingGrid = false;
+    const request = tableRequestOf(current, this.unit);
+    this.asked = request;
     this.client ??= tableClient({
       onReply: (reply) => this.received(reply),
       onRestart: (info) => this.restarted(info),

@@ -82,3 +82,9 @@ export function threeAxisLimits(state: CalculatorState): QuestionLimits | null {
   if (shape.flatOnPlane && shape.rcr === 0) return null;
   return { hMm: flankLimits(shape).limitMm, intervalMm: null, raMm: null };
 }
+
+/** A question's limits for the sliders: a doubly curved point's or three-axis machining's (null for any other). */
+export type QuestionLimitsOf = (state: CalculatorState, tool: ToolInput) => QuestionLimits | null;
+
+/** The limits of the question on screen beyond a plane's or a cylinder's (sliders.ts's `limitsOf`). */
+export const questionLimitsOf: QuestionLimitsOf = (state, tool) => curvedLimits(state, tool) ?? threeAxisLimits(state);

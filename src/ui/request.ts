@@ -14,11 +14,18 @@ import {
   validateInverse,
 } from '../core/input/validate';
 import { validateRaTarget } from '../core/roughness/raTarget';
-import type { PageRequest } from '../worker/pageProtocol';
-import { buildCurvedRequest, cylinderState, renameRadius } from './curvedRequest';
+import {
+  type CurvedReply,
+  isCurvedRequest,
+  isSolveReply,
+  type PageReply,
+  type PageRequest,
+  type ThreeAxisReply,
+} from '../worker/pageProtocol';
+import { buildCurvedRequest, cylinderState, describeCurvedError, renameRadius } from './curvedRequest';
 import { type CalculatorState, type FieldKey, fieldInMm, parseField, sizeIsDiameter } from './state';
 import type { RadiusKey } from './surfaceState';
-import { buildThreeAxisRequest } from './threeAxisRequest';
+import { buildThreeAxisRequest, threeAxisFieldErrors } from './threeAxisRequest';
 
 /** A message the page words itself (a doubly curved point's, three-axis machining's), on its field. */
 export interface PageFieldError {
@@ -33,6 +40,8 @@ export type BuiltRequest =
 /**
  * The request the state asks, or why it cannot be asked: three-axis machining's, a doubly curved
  * point's (with a straight radius, the cylinder's or the plane's), or the plane's or cylinder's.
+ * Validation only, once per change: a doubly curved point's and three-axis machining's checks that
+ * need a solver run in the worker, which refuses such a request in its reply (replyErrors).
  */
 export function buildRequest(state: CalculatorState): BuiltRequest {
   if (state.machine === '3axis') return buildThreeAxisRequest(state);
@@ -148,4 +157,33 @@ export function fieldMessages(
     );
   }
   return out;
+}
+
+/**
+ * The errors of a refused reply (none for an answer) as the page shows them, on their fields in the
+ * user's unit: a doubly curved point's own checks (describeCurvedError) and three-axis machining's
+ * solver refusals (threeAxisFieldErrors), which only the worker finds; the tool's and posture's
+ * validation errors as they are.
+ */
+export function replyErrors(state: CalculatorState, reply: PageReply): Array<InputError | PageFieldError> {
+  if (reply.ok || isSolveReply(reply)) return reply.ok ? [] : [...reply.errors];
+  if (isCurvedRequest(reply.request))
+    return (reply as Extract<CurvedReply, { ok: false }>).errors.map((e) =>
+      'got' in e ? e : describeCurvedError(e, state),
+    );
+  return threeAxisFieldErrors((reply as Extract<ThreeAxisReply, { ok: false }>).errors, state);
+}
+
+/**
+ * Each field's message for a state: its own errors (buildRequest's), or, once the worker refused
+ * the request it asks, that reply's (replyErrors); none while it is valid and not refused.
+ * @param reply The reply to the state's request, or null while none came.
+ */
+export function stateMessages(
+  state: CalculatorState,
+  built: BuiltRequest,
+  reply: PageReply | null,
+): Map<FieldKey, string> {
+  if (!built.ok) return fieldMessages(state, built.errors);
+  return reply === null || reply.ok ? new Map() : fieldMessages(state, replyErrors(state, reply));
 }

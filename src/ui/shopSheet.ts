@@ -142,7 +142,8 @@ export class ShopSheetPanel {
     if (this.dialog.open && this.case !== null) this.render();
   }
 
-  private open(): void {
+  /** Opens the dialog on the sheet of the inputs on screen (nothing while they make no question). */
+  open(): void {
     if (this.case === null) return;
     this.status.textContent = '';
     this.render();

@@ -19,7 +19,7 @@ import {
 import { maxRaCachedMm } from '../core/roughness/raTarget';
 import { minConcaveRadiusMm, PLANE, type Surface } from '../core/surfaces/cylinder';
 import { cylinderState } from './curvedRequest';
-import { curvedLimits, threeAxisLimits } from './questionLimits';
+import type { QuestionLimitsOf } from './questionLimits';
 import { type CalculatorState, type FieldKey, formatField, parseField, radiusField, sizeIsDiameter } from './state';
 
 export interface SliderRange {
@@ -108,8 +108,16 @@ function snap(value: number, step: number, min: number): number {
   return Math.max(min + step, Math.floor(value / step + 1e-9) * step);
 }
 
-/** Every slider's range and step for a state, as the strings a range input takes. */
-export function sliderRanges(state: CalculatorState): Readonly<Record<FieldKey, SliderRange>> {
+/**
+ * Every slider's range and step for a state, as the strings a range input takes.
+ * @param limitsOf A doubly curved point's and three-axis machining's limits (questionLimits.ts's
+ *   questionLimitsOf, which the page loads on the first such question); null: the plane's or the
+ *   cylinder's ranges stand in.
+ */
+export function sliderRanges(
+  state: CalculatorState,
+  limitsOf: QuestionLimitsOf | null = null,
+): Readonly<Record<FieldKey, SliderRange>> {
   const u = state.unit;
   const step = STEPS[u];
   const tool = rangeTool(state);
@@ -119,7 +127,7 @@ export function sliderRanges(state: CalculatorState): Readonly<Record<FieldKey, 
   // A concave cylinder's slider starts at the gouging limit (Infinity: no concave fits; then from 1 step).
   const concaveMin = classic?.surface === 'concave' ? minConcaveRadiusMm(tool, classic.surfaceAxis) : 0;
   const surface = classic === null ? PLANE : rangeSurface(classic, concaveMin);
-  const question = curvedLimits(state, tool) ?? threeAxisLimits(state);
+  const question = limitsOf?.(state, tool) ?? null;
   const hLimit = question?.hMm ?? scallopHeightLimits(tool, surface).limitMm;
   const lMax = question?.intervalMm ?? maxIntervalMm(tool, state.pattern, surface);
   const raMax = () => question?.raMm ?? maxRaCachedMm({ ...tool, pattern: state.pattern, surface });

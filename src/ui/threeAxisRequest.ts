@@ -1,9 +1,10 @@
 /**
  * The page's three-axis question (issue 20): the tool, the slope, the pass strategy, the raster
  * angle (raster) or the surface's radii (waterline), and h forward or the programmed step inverse
- * (Lxy for raster, dz for waterline), validated and solved as the command line does (core
- * validateThreeAxis, solveThreeAxis: a few microseconds on a plane, tens on a surface of revolution)
- * so that every refusal shows on its field, in the user's unit. Pure.
+ * (Lxy for raster, dz for waterline), validated as the command line does (core validateThreeAxis).
+ * The page does not solve it: the worker does, once (jobs/threeAxis.ts), and the refusals only a
+ * solver finds (ranges, the vertical wall, the flank and shank limits) come back in its reply, put
+ * on their fields by threeAxisFieldErrors. Every message in the user's unit. Pure.
  */
 import { FIELDS } from '../core/input/fields';
 import { formatInputNumber, fromMm, unitSymbol } from '../core/input/units';
@@ -14,7 +15,6 @@ import {
   type ThreeAxisQuantity,
   validateThreeAxis,
 } from '../core/threeAxis/validate';
-import { checkThreeAxis } from '../worker/jobs/threeAxis';
 import { radiusMm } from './curvedRequest';
 import { programmedStepKey } from './machineState';
 import type { BuiltRequest, PageFieldError } from './request';
@@ -62,6 +62,11 @@ function onField(e: ThreeAxisInputError, state: CalculatorState): PageFieldError
   return { key, message: inUnit(e.message, state, key) };
 }
 
+/** Three-axis errors (the validation's, or the worker's reply's) on their page fields, in the user's unit. */
+export function threeAxisFieldErrors(errors: readonly ThreeAxisInputError[], state: CalculatorState): PageFieldError[] {
+  return errors.flatMap((e) => onField(e, state) ?? []);
+}
+
 /**
  * A three-axis state's raw inputs (mm and degrees, by the core's field names): the tool, slope,
  * passes, the raster angle (raster) or the radii (waterline; straight: none). A radius field's own
@@ -89,7 +94,7 @@ export function threeAxisRaw(state: CalculatorState, errors: PageFieldError[]): 
   };
 }
 
-/** The request of a three-axis state, or why it cannot be asked (each message on its field). */
+/** The request of a three-axis state, or why it cannot be asked (each message on its field); not solved here. */
 export function buildThreeAxisRequest(state: CalculatorState): BuiltRequest {
   const own: PageFieldError[] = [];
   const forward = state.mode === 'forward';
@@ -103,10 +108,8 @@ export function buildThreeAxisRequest(state: CalculatorState): BuiltRequest {
   const quantity: ThreeAxisQuantity = forward ? 'h' : state.passes === 'waterline' ? 'stepDown' : 'horizontalStep';
   const value = fieldInMm(state, forward ? 'h' : stepKey);
   const v = validateThreeAxis(raw, quantity, value);
-  const solved = v.ok && own.length === 0 ? checkThreeAxis(v.value) : null;
-  const errors = [...(v.ok ? [] : v.errors), ...(solved !== null && !solved.ok ? solved.errors : [])];
   // The page's own messages first (a field shows the first message that names it).
-  const all = [...own, ...errors.flatMap((e) => onField(e, state) ?? [])];
-  if (!v.ok || all.length > 0 || solved === null || !solved.ok) return { ok: false, errors: all };
+  const all = [...own, ...threeAxisFieldErrors(v.ok ? [] : v.errors, state)];
+  if (!v.ok || all.length > 0) return { ok: false, errors: all };
   return { ok: true, request: { mode: 'three-axis', input: v.value } };
 }

@@ -160,7 +160,8 @@ export class ToolShelf {
     this.say([this.saved.problem ?? `Saved "${checked.tool.name}" in this browser.`]);
   }
 
-  private async importFile(file: File): Promise<void> {
+  /** Reads a Fusion 360 library file and lists its tools (the status says what was read and what not). */
+  async importFile(file: File): Promise<void> {
     if (file.size > LIBRARY_MAX_CHARS)
       return this.say([`"${file.name}" is over ${LIBRARY_MAX_CHARS / 1e6} MB: not a tool library.`]);
     let text: string;

@@ -14,35 +14,9 @@ import { revalidate } from './jobs/revalidate';
 import { solve } from './jobs/solve';
 import { table } from './jobs/table';
 import { teach } from './jobs/teach';
-import type { SceneGeometry, SolveReply, TeachReply } from './protocol';
+import { sceneTransferables, transferables } from './transferables';
 
-export { revalidate, sceneGeometry, solve, table, teach, traceFrames };
-
-/** Buffers of a scene's geometry that can be transferred instead of copied (added to `out`). */
-export function sceneTransferables(g: SceneGeometry | null, out: Set<ArrayBuffer> = new Set()): Set<ArrayBuffer> {
-  if (g === null) return out;
-  out.add(g.toolPositions.buffer as ArrayBuffer);
-  for (const cusp of [g.right, g.left]) for (const l of cusp?.loops ?? []) out.add(l.buffer as ArrayBuffer);
-  if (g.machine !== null) out.add(g.machine.step.points.buffer as ArrayBuffer);
-  return out;
-}
-
-/** Buffers of a reply that can be transferred instead of copied (each listed once). */
-export function transferables(reply: SolveReply | TeachReply): ArrayBuffer[] {
-  if (!reply.ok) return [];
-  const out = new Set<ArrayBuffer>();
-  if ('scene' in reply) sceneTransferables(reply.scene, out);
-  else {
-    const c = reply.curves;
-    for (const curve of [c.profile, c.ringEllipse, ...Object.values(c.approximations)])
-      if (curve) out.add(curve.buffer as ArrayBuffer);
-    if (reply.cylinder !== null) {
-      out.add(reply.cylinder.passProfile.buffer as ArrayBuffer);
-      out.add(reply.cylinder.ringEllipse.buffer as ArrayBuffer);
-    }
-  }
-  return [...out];
-}
+export { revalidate, sceneGeometry, sceneTransferables, solve, table, teach, traceFrames, transferables };
 
 /** The worker's API object; its type is what the page sees through rpc.ts. */
 export const solverApi = { solve, teach, table };

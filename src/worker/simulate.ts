@@ -10,7 +10,7 @@ import { compareForward, compareInverse } from '../core/procedures/compare';
 import { forwardOfRaTarget } from '../core/roughness/raTarget';
 import { exactRoughness, exactRoughnessAtInterval, type Roughness } from '../core/roughness/roughness';
 import { type SimulationResult, startSimulation } from '../core/simulation/simulation';
-import { revalidate } from './api';
+import { revalidate } from './jobs/revalidate';
 import type { InputError, SolveRequest } from './protocol';
 
 /** Cells of the page's simulation across and along the feed (the default, 512 x 512). */

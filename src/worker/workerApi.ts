@@ -1,42 +1,54 @@
 /**
  * The solver worker's API: one function per job, the large arrays of a reply marked for transfer.
  * Exposed by solver.worker.ts; its type is what the page's clients call (rpc.ts `Remote`).
+ *
+ * Only a plane's or a cylinder's answer is in the worker's first script (jobs/solve.ts: the first
+ * result needs no more); the doubly curved and three-axis solvers (jobs/page.ts), the teaching
+ * views' data, the lookup table and the simulation load here when first asked (dynamic imports,
+ * each once; the module cache keeps them).
  */
-import { sceneTransferables, transferables } from './api';
-import { solvePage } from './jobs/page';
-import { table } from './jobs/table';
-import { teachPage } from './jobs/teachPage';
+import { solve } from './jobs/solve';
 import { isSolveReply, isSolveRequest, type PageReply, type PageRequest } from './pageProtocol';
 import type { SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
 import { transfer } from './rpc';
-import { type SimulateReply, SimulationRunner, simulationTransferables } from './simulate';
+import type { SimulateReply, SimulationRunner } from './simulate';
 import type { PageTeachReply } from './teachProtocol';
+import { sceneTransferables, transferables } from './transferables';
 
-/** A newer `simulate` or `cancelSimulation` stops the running simulation between steps. */
-const simulations = new SimulationRunner();
+/** A newer `simulate` or `cancelSimulation` stops the running simulation between steps (one runner, made on first use). */
+let simulations: Promise<SimulationRunner> | null = null;
+const runner = (): Promise<SimulationRunner> =>
+  (simulations ??= import('./simulate').then(({ SimulationRunner }) => new SimulationRunner()));
 
 export const workerApi = {
-  solve(request: PageRequest): PageReply {
-    const reply = solvePage(request);
+  async solve(request: PageRequest): Promise<PageReply> {
+    if (isSolveRequest(request)) {
+      const reply = solve(request);
+      return transfer(reply, transferables(reply));
+    }
+    // A doubly curved or three-axis question: its solvers load now (once), then its scene's arrays.
+    const reply = (await import('./jobs/page')).solvePage(request);
     if (isSolveReply(reply)) return transfer(reply, transferables(reply));
-    // A doubly curved or three-axis answer: its scene's arrays.
     return reply.ok ? transfer(reply, [...sceneTransferables(reply.scene)]) : reply;
   },
   /** The teaching views' data: a plane's or a cylinder's (its arrays transferred), a doubly curved point's, three-axis'. */
-  teach(request: PageRequest): PageTeachReply {
-    const reply = teachPage(request);
+  async teach(request: PageRequest): Promise<PageTeachReply> {
+    const reply = (await import('./jobs/teachPage')).teachPage(request);
     return isSolveRequest(reply.request) ? transfer(reply, transferables(reply as TeachReply)) : reply;
   },
   /** The lookup table for the page's download (a string: nothing to transfer). */
-  table(request: TableRequest): TableReply {
-    return table(request);
+  async table(request: TableRequest): Promise<TableReply> {
+    return (await import('./jobs/table')).table(request);
   },
   async simulate(request: SolveRequest, onProgress?: (fraction: number) => void): Promise<SimulateReply> {
-    const reply = await simulations.run(request, onProgress);
+    const r = await runner();
+    const reply = await r.run(request, onProgress);
+    const { simulationTransferables } = await import('./simulate');
     return transfer(reply, simulationTransferables(reply));
   },
   cancelSimulation(): void {
-    simulations.cancel();
+    // After any simulate call already waiting for the runner (promise callbacks run in order).
+    void runner().then((r) => r.cancel());
   },
 };
 

@@ -37,8 +37,17 @@ describe('the built solver worker', () => {
     const work = importClosure([worker as string], scripts, read);
     for (const name of work) {
       const code = read(name);
+      // Vite's preload helper wraps every dynamic import; it touches the DOM only to preload an
+      // import's dependencies, and the worker's list none (vite.config.ts resolveDependencies).
+      if (name.startsWith('preload-helper-')) continue;
       expect(code, name).not.toMatch(/\bdocument\.|\bwindow\.|WebGLRenderer/);
       for (const imported of staticImports(code)) expect(imported, name).not.toMatch(/^(three|index|panel|scene)-/);
     }
+    expect(read(worker as string)).not.toMatch(/__vite__mapDeps/);
+  });
+
+  it("is imported by no chunk: its own script never runs on the page (the later chunks import its jobs' chunk)", () => {
+    for (const name of scripts) expect(staticImports(read(name)), name).not.toContain(worker);
+    expect(scripts.filter((n) => read(n).includes(`import("./${worker}")`))).toEqual([]);
   });
 });

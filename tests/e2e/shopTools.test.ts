@@ -192,11 +192,12 @@ describe('tools of the shop (phone)', () => {
     await saved.selectOption({ label });
     await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('0.393701');
     expect(await page.getByTestId('input-Rcr').inputValue()).toBe('0.0590551');
-    // Corrupt storage: the page still opens, says so, and the list starts empty.
+    // Corrupt storage: the page still opens; the shelf (loaded when first opened) says so, and the list starts empty.
     await page.evaluate(() => localStorage.setItem('path-interval.saved-tools.v1', '{not json'));
     await page.reload();
     await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
-    expect(await text(page, 'tool-library-status')).toMatch(/could not be read \(not JSON\)/);
+    await page.locator('[data-testid="tool-shelf"] summary').tap();
+    await expect.poll(() => text(page, 'tool-library-status')).toMatch(/could not be read \(not JSON\)/);
     expect(await saved.locator('option').allTextContents()).toEqual(['no saved tools yet']);
   });
 

@@ -13,19 +13,20 @@ import {
   doublyCurvedLimits,
   doublyCurvedRadiusLimit,
 } from '../../src/core/surfaces/doublyCurved';
-import { buildRequest, fieldMessages } from '../../src/ui/request';
+import { buildRequest } from '../../src/ui/request';
 import { type CalculatorState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';
 import { CURVED_PRESETS, curvedPresetOf, withCurvedPreset } from '../../src/ui/surfaceState';
 import { solvePage } from '../../src/worker/jobs/page';
+import { answeredMessages } from '../support/pageAnswer';
 
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 const BASE = '?R=3&Rcr=1&rho=5&h=0.05';
 
 /** Every message a state's errors give, as one text. */
 function messagesOf(state: CalculatorState): Map<string, string> {
-  const built = buildRequest(state);
-  if (built.ok) throw new Error(`valid: ${toSearch(state)}`);
-  return fieldMessages(state, built.errors);
+  const messages = answeredMessages(state);
+  if (messages.size === 0) throw new Error(`valid: ${toSearch(state)}`);
+  return messages;
 }
 
 /** No message may show NaN, Infinity or -0 of its own (the text typed, quoted as "got", is the user's). */

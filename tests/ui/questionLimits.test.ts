@@ -6,18 +6,20 @@
  */
 import { describe, expect, it } from 'vitest';
 import { doublyCurvedLimits } from '../../src/core/surfaces/doublyCurved';
+import { questionLimitsOf } from '../../src/ui/questionLimits';
 import { buildRequest } from '../../src/ui/request';
 import { sliderRanges } from '../../src/ui/sliders';
 import { type CalculatorState, type FieldKey, parseUrl, withField } from '../../src/ui/state';
+import { answered } from '../support/pageAnswer';
 
 /** The slider's top is answered and 0.2 % (and a step) above it is refused (the top is 0.999 of the limit, snapped). */
 function expectTopIsTheLimit(state: CalculatorState, key: FieldKey): void {
-  const range = sliderRanges(state)[key];
+  const range = sliderRanges(state, questionLimitsOf)[key];
   const top = Number(range.max);
   const step = Number(range.step);
-  expect(buildRequest(withField(state, key, range.max)).ok, `${key} = ${range.max}`).toBe(true);
+  expect(answered(withField(state, key, range.max)), `${key} = ${range.max}`).toBe(true);
   const above = String(top / 0.998 + step);
-  expect(buildRequest(withField(state, key, above)).ok, `${key} = ${above}`).toBe(false);
+  expect(answered(withField(state, key, above)), `${key} = ${above}`).toBe(false);
 }
 
 describe('the sliders at a doubly curved point and in three-axis machining', () => {
@@ -34,22 +36,26 @@ describe('the sliders at a doubly curved point and in three-axis machining', () 
       crossRadiusMm: 40,
     }).limitMm;
     expect(limit).toBeLessThan(2);
-    expect(Number(sliderRanges(dome).h.max)).toBeLessThan(limit);
-    expect(sliderRanges(dome).h.max).not.toBe(sliderRanges(plane).h.max);
+    expect(Number(sliderRanges(dome, questionLimitsOf).h.max)).toBeLessThan(limit);
+    expect(sliderRanges(dome, questionLimitsOf).h.max).not.toBe(sliderRanges(plane, questionLimitsOf).h.max);
     expectTopIsTheLimit(dome, 'h');
     const inverse = { ...withField(dome, 'L', '1'), mode: 'inverse' as const };
-    expect(sliderRanges(inverse).L.max).not.toBe(sliderRanges({ ...plane, mode: 'inverse' }).L.max);
+    expect(sliderRanges(inverse, questionLimitsOf).L.max).not.toBe(
+      sliderRanges({ ...plane, mode: 'inverse' }, questionLimitsOf).L.max,
+    );
     expectTopIsTheLimit(inverse, 'L');
     const ra = { ...withField(dome, 'ra', '0.001'), target: 'ra' as const };
-    expect(sliderRanges(ra).ra.max).not.toBe(sliderRanges({ ...plane, target: 'ra' }).ra.max);
+    expect(sliderRanges(ra, questionLimitsOf).ra.max).not.toBe(
+      sliderRanges({ ...plane, target: 'ra' }, questionLimitsOf).ra.max,
+    );
     expectTopIsTheLimit(ra, 'ra');
   });
 
   it('a straight radius: the cylinder the point is (not the hidden cylinder field)', () => {
     const across = parseUrl('?R=3&Rcr=1&rho=5&feedRadius=20&h=0.05&unit=mm').state;
     const cylinder = parseUrl('?R=3&Rcr=1&rho=5&surfaceRadius=20&surfaceAxis=cross&h=0.05&unit=mm').state;
-    expect(sliderRanges({ ...across, mode: 'inverse' }).L.max).toBe(
-      sliderRanges({ ...cylinder, mode: 'inverse' }).L.max,
+    expect(sliderRanges({ ...across, mode: 'inverse' }, questionLimitsOf).L.max).toBe(
+      sliderRanges({ ...cylinder, mode: 'inverse' }, questionLimitsOf).L.max,
     );
   });
 

@@ -8,17 +8,18 @@ import { describe, expect, it } from 'vitest';
 import { formatInputNumber, fromMm, toMm } from '../../src/core/input/units';
 import { slopedPlaneForward, slopedPlaneInverse } from '../../src/core/threeAxis/slopedPlane';
 import { waterlineForward, waterlineInverse } from '../../src/core/threeAxis/waterlineRevolution';
-import { buildRequest, fieldMessages } from '../../src/ui/request';
+import { buildRequest } from '../../src/ui/request';
 import { type CalculatorState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';
 import { WATERLINE_PRESETS, waterlinePresetOf, withCurvedPreset } from '../../src/ui/surfaceState';
 import { solvePage } from '../../src/worker/jobs/page';
+import { answeredMessages } from '../support/pageAnswer';
 
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1 };
 
 function messagesOf(state: CalculatorState): Map<string, string> {
-  const built = buildRequest(state);
-  if (built.ok) throw new Error(`valid: ${toSearch(state)}`);
-  return fieldMessages(state, built.errors);
+  const messages = answeredMessages(state);
+  if (messages.size === 0) throw new Error(`valid: ${toSearch(state)}`);
+  return messages;
 }
 
 /** The answer the worker gives for a state (it must be valid). */

@@ -9,7 +9,8 @@ import { exactRoughness, scallopHeightForRaMm, validateTargetRa } from '../../co
 import { doublyCurvedForward, doublyCurvedInverse } from '../../core/surfaces/doublyCurved/solve.ts';
 import { validateDoublyCurved } from '../../core/surfaces/doublyCurved/validate.ts';
 import { exactForward, exactInverse } from '../../core/surfaces/solve.ts';
-import { solveThreeAxis, validateThreeAxis } from '../../core/threeAxis/validate.ts';
+import { solveThreeAxis } from '../../core/threeAxis/solve.ts';
+import { validateThreeAxis } from '../../core/threeAxis/validate.ts';
 import type { ReferenceRow } from './columns.ts';
 
 /** The quantities a row asks. */

@@ -92,6 +92,11 @@ export type Parsed = { ok: true; value: number; shown: string } | { ok: false; c
 /** A strict decimal number: optional sign, digits with an optional point, optional exponent. */
 const NUMBER_PATTERN = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
 
+/** True for text that reads as a number as validation reads it (a strict decimal; see NUMBER_PATTERN). */
+export function isNumberText(text: string): boolean {
+  return NUMBER_PATTERN.test(text);
+}
+
 /** Parses a number as validation does: a strict decimal text or a finite number; else the error code. */
 export function parseNumber(raw: unknown): Parsed {
   if (raw === undefined || raw === null) return { ok: false, code: 'missing', shown: '' };

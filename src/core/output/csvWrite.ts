@@ -7,19 +7,14 @@
  */
 
 import type { ForwardInput } from '../domain/pass';
-import { maxIntervalMm } from '../input/validate';
+import { isNumberText, maxIntervalMm } from '../input/validate';
 import type { Approximation, HalfInterval } from '../procedures/approximations';
 import { compareForward } from '../procedures/compare';
 import { APPROXIMATION_KEYS, APPROXIMATIONS, type ApproximationKey, PROCEDURES } from '../procedures/procedures';
 import { exactForward } from '../surfaces/solve';
 
-/** A plain decimal number as the validation accepts it (sign, digits, point, exponent). */
-const NUMBER_TEXT = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
-
-/** True for text that reads as a number. */
-export function isNumberText(text: string): boolean {
-  return NUMBER_TEXT.test(text);
-}
+/** Text that reads as a number: validation's own test (re-exported for the command line's CSV). */
+export { isNumberText };
 
 /** One output field, quoted when it holds a comma, a quote or a line break (RFC 4180). */
 export function csvField(text: string): string {

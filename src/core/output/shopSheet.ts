@@ -23,7 +23,8 @@ import {
   type PrincipalRadii,
 } from '../surfaces/doublyCurved/index';
 import { exactForward } from '../surfaces/solve';
-import { solveThreeAxis, type ThreeAxisProblem } from '../threeAxis/validate';
+import { solveThreeAxis } from '../threeAxis/solve';
+import type { ThreeAxisProblem } from '../threeAxis/validate';
 
 /**
  * Why a cell has no step-over:

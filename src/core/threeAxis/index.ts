@@ -11,5 +11,6 @@ export * from './revolutionGouging';
 export * from './slopedPlane';
 export * from './slopePosture';
 export * from './slopeSweep';
+export * from './solve';
 export * from './validate';
 export * from './waterlineRevolution';

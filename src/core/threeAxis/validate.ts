@@ -1,9 +1,9 @@
 /**
  * Validation of the three-axis inputs (issue 20) as the command line and the batch give them (text
- * by the field registry's names), and one entry that solves the validated case: a sloped plane
- * (raster, or waterline without radii) or a surface of revolution (waterline with a feed or cross
- * radius). Text is read as validate.ts reads it (the same strict decimal numbers, csvWrite's
- * isNumberText); the ranges are the solvers' own (errors.ts, slopedPlane.ts,
+ * by the field registry's names) into a validated case: a sloped plane (raster, or waterline
+ * without radii) or a surface of revolution (waterline with a feed or cross radius), which
+ * solve.ts's solveThreeAxis solves (apart, so that validating loads no solver). Text is read as
+ * input/validate.ts reads it (the same strict decimal numbers, its isNumberText); the ranges are the solvers' own (errors.ts, slopedPlane.ts,
  * waterlineRevolution.ts), so each message names the constraint and its limit in mm or degrees.
  * The combinations that do not exist are refused here too: a slope with a lead or a tilt (the slope
  * sets them), a raster angle other than 90 degrees with waterline passes (90, the contour, is theirs), a feed or cross radius with raster passes, a
@@ -11,10 +11,10 @@
  */
 
 import { FIELDS } from '../input/fields';
-import { isNumberText } from '../output/csvWrite';
-import type { ThreeAxisError, ThreeAxisErrorCode, ThreeAxisField } from './errors';
-import { type SlopedPlaneCase, slopedPlaneForward, slopedPlaneInverse, type ThreeAxisPasses } from './slopedPlane';
-import { type RevolutionCase, waterlineForward, waterlineInverse } from './waterlineRevolution';
+import { isNumberText } from '../input/validate';
+import type { ThreeAxisErrorCode, ThreeAxisField } from './errors';
+import type { SlopedPlaneCase, ThreeAxisPasses } from './slopedPlane';
+import type { RevolutionCase } from './waterlineRevolution';
 
 /** The fields a three-axis input error can name (the solvers' fields, the strategy, and a lead or tilt given with a slope). */
 export type ThreeAxisInputField = ThreeAxisField | 'passes' | 'rho' | 'tilt';
@@ -126,11 +126,6 @@ function numberOf(
     return undefined;
   }
   return value;
-}
-
-/** The solvers' errors as input errors (same fields, codes and messages). */
-function fromSolver(errors: readonly ThreeAxisError[]): ThreeAxisInputError[] {
-  return errors.map((e) => ({ field: e.field, code: e.code, got: e.got, limit: e.limit, message: e.message }));
 }
 
 /**
@@ -255,55 +250,6 @@ export function validateThreeAxis(
       case: { toolRadiusMm: R, cornerRadiusMm: Rcr, slopeDeg: slope, passes: passes ?? 'raster', rasterAngleDeg: psi },
       quantity,
       mm,
-    },
-  };
-}
-
-/**
- * Solves a validated three-axis problem: forward (h to L, Lxy, dz) or inverse (a step to the cusp
- * height it leaves), with the equivalent lead and tilt. Errors are the solvers' (ranges, the
- * vertical wall, the shank and flank limits with the height, the surface's end, gouging).
- */
-export function solveThreeAxis(
-  p: ThreeAxisProblem,
-): { ok: true; value: ThreeAxisAnswer } | { ok: false; errors: readonly ThreeAxisInputError[] } {
-  if (p.surface === 'plane') {
-    const r =
-      p.quantity === 'h'
-        ? slopedPlaneForward(p.case, p.mm)
-        : slopedPlaneInverse(p.case, { field: p.quantity, mm: p.mm });
-    if (!r.ok) return { ok: false, errors: fromSolver(r.errors) };
-    const a = r.value;
-    return {
-      ok: true,
-      value: {
-        passes: p.case.passes,
-        intervalMm: a.intervalMm,
-        horizontalStepMm: a.horizontalStepMm,
-        stepDownMm: a.stepDownMm,
-        cuspHeightMm: a.cuspHeightMm,
-        leadDeg: a.leadDeg,
-        tiltDeg: a.tiltDeg,
-        noScallop: a.noScallop,
-      },
-    };
-  }
-  if (p.quantity === 'horizontalStep') throw new Error('validateThreeAxis refuses a horizontal step with waterline');
-  const r =
-    p.quantity === 'h' ? waterlineForward(p.case, p.mm) : waterlineInverse(p.case, { field: p.quantity, mm: p.mm });
-  if (!r.ok) return { ok: false, errors: fromSolver(r.errors) };
-  const a = r.value;
-  return {
-    ok: true,
-    value: {
-      passes: 'waterline',
-      intervalMm: a.intervalMm,
-      horizontalStepMm: a.radialStepMm,
-      stepDownMm: a.stepDownMm,
-      cuspHeightMm: a.cuspHeightMm,
-      leadDeg: a.leadDeg,
-      tiltDeg: a.tiltDeg,
-      noScallop: false,
     },
   };
 }

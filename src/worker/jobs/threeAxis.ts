@@ -6,9 +6,9 @@
  * error reply, never an exception.
  */
 import { rasterWaterlineCrossingDeg, slopeSweep } from '../../core/threeAxis/slopeSweep';
+import { solveThreeAxis } from '../../core/threeAxis/solve';
 import {
   type RawThreeAxisInput,
-  solveThreeAxis,
   type ThreeAxisInputError,
   type ThreeAxisProblem,
   validateThreeAxis,
@@ -35,8 +35,8 @@ export function rawOfThreeAxis(p: ThreeAxisProblem): RawThreeAxisInput {
 }
 
 /**
- * The problem validated and solved, or its errors: the page builds its request so (and shows the
- * errors on the fields), the worker solves it so again.
+ * The problem validated again and solved, or its errors (the page validates its request and shows
+ * these, the solver's refusals, from the reply on their fields).
  */
 export function checkThreeAxis(
   p: ThreeAxisProblem,

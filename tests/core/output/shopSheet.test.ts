@@ -9,7 +9,8 @@ import { SHEET_HEIGHTS, type SheetCase, type ShopSheet, shopSheet } from '../../
 import { PLANE, type Surface } from '../../../src/core/surfaces/cylinder';
 import { doublyCurvedForward, doublyCurvedInverse } from '../../../src/core/surfaces/doublyCurved';
 import { exactForward, exactInverse } from '../../../src/core/surfaces/solve';
-import { solveThreeAxis, type ThreeAxisProblem, validateThreeAxis } from '../../../src/core/threeAxis/validate';
+import { solveThreeAxis } from '../../../src/core/threeAxis/solve';
+import { type ThreeAxisProblem, validateThreeAxis } from '../../../src/core/threeAxis/validate';
 
 const MM = [...SHEET_HEIGHTS.mm];
 

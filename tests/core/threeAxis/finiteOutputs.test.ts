@@ -9,7 +9,8 @@
  */
 import { describe, expect, it } from 'vitest';
 import { slopeSweep } from '../../../src/core/threeAxis/slopeSweep';
-import { solveThreeAxis, validateThreeAxis } from '../../../src/core/threeAxis/validate';
+import { solveThreeAxis } from '../../../src/core/threeAxis/solve';
+import { validateThreeAxis } from '../../../src/core/threeAxis/validate';
 import { waterlineCuspAbove } from '../../../src/core/threeAxis/waterlineRevolution';
 import { seededRandom } from '../../support/bruteForce';
 

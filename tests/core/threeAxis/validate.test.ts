@@ -5,7 +5,8 @@
  * without the column; any other angle on a waterline row is refused, naming 90.
  */
 import { describe, expect, it } from 'vitest';
-import { solveThreeAxis, validateThreeAxis } from '../../../src/core/threeAxis/validate';
+import { solveThreeAxis } from '../../../src/core/threeAxis/solve';
+import { validateThreeAxis } from '../../../src/core/threeAxis/validate';
 import { runMain } from '../../cli/helpers';
 
 const waterline = { R: '3', Rcr: '1', slope: '40', passes: 'waterline' } as const;

@@ -1,0 +1,30 @@
+/**
+ * The JavaScript budget of the production build (dist/, built by the browser tests' global
+ * set-up), counted as `npm run bench:web` counts it (src/bench/chunks.ts jsSizes): every .js file
+ * the build emits, each gzip -9, summed; and the first result's, the page's scripts and the solver
+ * worker's with what they import statically. Issue 27 point 2 asks at most 60 kB to the first
+ * result (met) and at most 200 kB in all: not met yet (three.js alone is 126 kB), so the total is
+ * held where it stands, a ratchet to lower as it shrinks.
+ */
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { describe, expect, it } from 'vitest';
+import { jsSizes } from '../../src/bench/chunks';
+import { gzip9, siteFiles } from '../../src/bench/siteFiles';
+
+const DIST = fileURLToPath(new URL('../../dist', import.meta.url));
+const KB = 1024;
+
+describe('the JavaScript budget of the built site', () => {
+  const sizes = jsSizes(siteFiles(DIST), readFileSync(`${DIST}/index.html`, 'utf8'), gzip9);
+
+  it('the first result (page and worker, their static imports) is at most 60 kB gzip', () => {
+    expect(sizes.firstResult.some((p) => p.startsWith('assets/index-'))).toBe(true);
+    expect(sizes.firstResult.some((p) => p.startsWith('assets/solver.worker-'))).toBe(true);
+    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(60);
+  });
+
+  it('all of it, every .js file, is at most 260 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(260);
+  });
+});
