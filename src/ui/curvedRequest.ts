@@ -17,7 +17,7 @@ import {
   validatePassAnd,
 } from '../core/input/validate';
 import type { CurvedError } from '../worker/pageProtocol';
-import type { BuiltRequest, PageFieldError } from './request';
+import type { BuiltRequest, PageFieldError } from './requestTypes';
 import { type CalculatorState, type FieldKey, fieldInMm, parseField, type Unit } from './state';
 import { type RadiusKey, sideOf } from './surfaceState';
 

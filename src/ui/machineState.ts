@@ -6,17 +6,12 @@
  * `feedRadius=&crossRadius=`); in inverse mode the programmed step `Lxy=` (raster) or `dz=`
  * (waterline). Pure (no DOM).
  */
-import type { ThreeAxisPasses } from '../core/threeAxis/slopedPlane';
 import type { SolveMode } from '../worker/protocol';
 import { choice } from './fieldText';
-import type { CalculatorState, FieldKey, Target } from './state';
+import type { CalculatorState, FieldKey, Machine, Passes, Target } from './stateTypes';
 import { RADIUS_PARAM, signedRadiusOf } from './surfaceState';
 
-/** The machine: five-axis (lead and tilt given) or three-axis (the tool upright). */
-export type Machine = '5axis' | '3axis';
-
-/** Three-axis pass strategy: raster (parallel passes) or waterline (Z-level). */
-export type Passes = ThreeAxisPasses;
+export type { Machine, Passes } from './stateTypes';
 
 /** The machine and the pass strategy of a link (defaults: five-axis, raster), notices for other words. */
 export function parseMachine(params: URLSearchParams, notices: string[]): { machine: Machine; passes: Passes } {

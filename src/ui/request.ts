@@ -23,19 +23,12 @@ import {
   type ThreeAxisReply,
 } from '../worker/pageProtocol';
 import { buildCurvedRequest, cylinderState, describeCurvedError, renameRadius } from './curvedRequest';
+import type { BuiltRequest, PageFieldError } from './requestTypes';
 import { type CalculatorState, type FieldKey, fieldInMm, parseField, sizeIsDiameter } from './state';
 import type { RadiusKey } from './surfaceState';
 import { buildThreeAxisRequest, threeAxisFieldErrors } from './threeAxisRequest';
 
-/** A message the page words itself (a doubly curved point's, three-axis machining's), on its field. */
-export interface PageFieldError {
-  readonly key: FieldKey;
-  readonly message: string;
-}
-
-export type BuiltRequest =
-  | { readonly ok: true; readonly request: PageRequest }
-  | { readonly ok: false; readonly errors: readonly (InputError | PageFieldError)[] };
+export type { BuiltRequest, PageFieldError };
 
 /**
  * The request the state asks, or why it cannot be asked: three-axis machining's, a doubly curved

@@ -17,7 +17,7 @@ import {
 } from '../core/threeAxis/validate';
 import { radiusMm } from './curvedRequest';
 import { programmedStepKey } from './machineState';
-import type { BuiltRequest, PageFieldError } from './request';
+import type { BuiltRequest, PageFieldError } from './requestTypes';
 import { type CalculatorState, type FieldKey, fieldInMm } from './state';
 
 /** The page field of each field a three-axis error names (null: a switch, or a field the page does not give). */

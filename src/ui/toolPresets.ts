@@ -3,7 +3,7 @@
  * hold. Pure; re-exported by state.ts.
  */
 import { fieldText, formatField, parseField } from './fieldText';
-import type { CalculatorState } from './state';
+import type { CalculatorState } from './stateTypes';
 
 /** A tool preset: its name as a catalogue gives it (diameter D, corner radius), R and Rcr in mm. */
 export interface Preset {

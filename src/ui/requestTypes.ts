@@ -1,0 +1,17 @@
+/**
+ * What building a page request yields, a leaf: request.ts (the plane's and cylinder's, and the
+ * dispatch), curvedRequest.ts and threeAxisRequest.ts all return it, so none imports another for it.
+ */
+import type { InputError } from '../core/input/validate';
+import type { PageRequest } from '../worker/pageProtocol';
+import type { FieldKey } from './stateTypes';
+
+/** A message the page words itself (a doubly curved point's, three-axis machining's), on its field. */
+export interface PageFieldError {
+  readonly key: FieldKey;
+  readonly message: string;
+}
+
+export type BuiltRequest =
+  | { readonly ok: true; readonly request: PageRequest }
+  | { readonly ok: false; readonly errors: readonly (InputError | PageFieldError)[] };
