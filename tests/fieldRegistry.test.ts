@@ -43,11 +43,10 @@ import {
   MIN_LENGTH_MM,
   MIN_SURFACE_RADIUS_MM,
   MIN_TOOL_RADIUS_MM,
-  validateForward,
-  validateInverse,
 } from '../src/core/input/validate';
 import { LOOKUP_HEADER } from '../src/core/output/lookupTable';
 import { validateRaTarget } from '../src/core/roughness/raTarget';
+import { validateForward, validateInverse } from '../src/core/surfaces/validate';
 import { buildRequest, fieldMessages } from '../src/ui/request';
 import {
   defaultState,

@@ -12,7 +12,7 @@
  *                                                   |Rf|, |Rc| in {10, 50, 200} mm, dome, bowl, saddle)
  */
 import { pathToFileURL } from 'node:url';
-import { compareDoublyCurved, type DoublyCurvedRow } from '../core/surfaces/doublyCurved/compare';
+import { compareDoublyCurved, type DoublyCurvedRow } from '../core/procedures/compareDoublyCurved';
 import { doublyCurvedGouging } from '../core/surfaces/doublyCurved/gouging';
 import { doublyCurvedForward, doublyCurvedIntervalMm, doublyCurvedLimits } from '../core/surfaces/doublyCurved/solve';
 import type { DoublyCurvedForwardInput } from '../core/surfaces/doublyCurved/types';

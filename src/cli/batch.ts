@@ -21,9 +21,9 @@ import { APPROXIMATIONS, type ApproximationKey, type ExactInverse, forwardInput 
 import { FIELDS, fieldOfCsvColumn } from '../core/input/fields';
 import { fromMm, type LengthUnit } from '../core/input/units';
 import { csvNumber, emptyCellNotes, RESULT_COLUMNS, resultFields } from '../core/output/csvWrite';
+import type { DoublyCurvedProblem } from '../core/roughness/doublyCurvedValidate';
 import {
   type DoublyCurvedInverse,
-  type DoublyCurvedProblem,
   doublyCurvedForward,
   doublyCurvedInverse,
 } from '../core/surfaces/doublyCurved/index';

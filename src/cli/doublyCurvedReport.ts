@@ -9,12 +9,8 @@
 
 import { CORRECTED_KEYS, PROCEDURES, type Roughness } from '../core/index';
 import type { LengthUnit } from '../core/input/units';
-import type {
-  DoublyCurvedComparison,
-  DoublyCurvedInverse,
-  DoublyCurvedPass,
-  DoublyCurvedRow,
-} from '../core/surfaces/doublyCurved/index';
+import type { DoublyCurvedComparison, DoublyCurvedRow } from '../core/procedures/compareDoublyCurved';
+import type { DoublyCurvedInverse, DoublyCurvedPass } from '../core/surfaces/doublyCurved/index';
 import { curvatureLabel, type Extras, extrasJson, type JsonValue, roughnessLines } from './report';
 import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
 

@@ -16,13 +16,9 @@ import {
 } from '../core/index';
 import { cliFlag } from '../core/input/fields';
 import type { LengthUnit } from '../core/input/units';
-import {
-  compareDoublyCurved,
-  doublyCurvedInverse,
-  doublyCurvedRoughness,
-  doublyCurvedRoughnessAtInterval,
-  doublyCurvedSolver,
-} from '../core/surfaces/doublyCurved/index';
+import { compareDoublyCurved } from '../core/procedures/compareDoublyCurved';
+import { doublyCurvedRoughness, doublyCurvedRoughnessAtInterval } from '../core/roughness/doublyCurved';
+import { doublyCurvedInverse, doublyCurvedSolver } from '../core/surfaces/doublyCurved/index';
 import type { ThreeAxisInputError, ThreeAxisQuantity } from '../core/threeAxis/validate';
 import { cut, parseArgs, type Request, type ValueOption } from './args';
 import { runBatch } from './batch';

@@ -22,11 +22,8 @@ import { cliFlag, FIELDS, PASS_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
 import { isNumberText } from '../core/output/csvWrite';
-import {
-  type DoublyCurvedProblem,
-  doublyCurvedHeightForRaMm,
-  validateDoublyCurved,
-} from '../core/surfaces/doublyCurved/index';
+import { doublyCurvedHeightForRaMm } from '../core/roughness/doublyCurved';
+import { type DoublyCurvedProblem, validateDoublyCurved } from '../core/roughness/doublyCurvedValidate';
 import { solveThreeAxis } from '../core/threeAxis/solve';
 import {
   type ThreeAxisAnswer,

@@ -17,6 +17,8 @@ export * from './surfaces/exact';
 export * from './surfaces/registry';
 export * from './surfaces/solve';
 export * from './surfaces/surface';
+export * from './surfaces/validate';
 export * from './tool/placement';
 export * from './tool/posture';
+export * from './tool/profile';
 export * from './tool/stepOverRule';

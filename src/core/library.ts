@@ -28,15 +28,7 @@ export type {
   ToolInput,
   Validation,
 } from './input/validate';
-export {
-  describeInputError,
-  forwardInput,
-  inverseInput,
-  maxIntervalMm,
-  scallopHeightLimits,
-  validateForward,
-  validateInverse,
-} from './input/validate';
+export { describeInputError, forwardInput, inverseInput } from './input/validate';
 export type { ForwardComparison, InverseComparison } from './procedures/compare';
 export { compareForward, compareInverse, solveForwardRaw, solveInverseRaw } from './procedures/compare';
 export type { ApproximationKey, ProcedureInfo, ProcedureKey } from './procedures/procedures';
@@ -51,3 +43,4 @@ export {
 export type { CylinderSurface, Surface, SurfaceAxis } from './surfaces/cylinder';
 export type { ExactForward, ExactInverse } from './surfaces/solve';
 export { exactForward, exactInverse } from './surfaces/solve';
+export { maxIntervalMm, scallopHeightLimits, validateForward, validateInverse } from './surfaces/validate';

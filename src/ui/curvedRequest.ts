@@ -9,13 +9,8 @@
 import { FIELDS, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
 import { formatInputNumber, fromMm, toMm, unitSymbol } from '../core/input/units';
-import {
-  describeInputError,
-  type InputError,
-  inputError,
-  MIN_LENGTH_MM,
-  validatePassAnd,
-} from '../core/input/validate';
+import { describeInputError, type InputError, inputError, MIN_LENGTH_MM } from '../core/input/validate';
+import { validatePassAnd } from '../core/surfaces/validate';
 import type { CurvedError } from '../worker/pageProtocol';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
 import { type CalculatorState, type FieldKey, fieldInMm, parseField, type Unit } from './state';

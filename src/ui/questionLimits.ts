@@ -9,12 +9,8 @@
  */
 
 import type { PassPattern, ToolInput } from '../core/input/validate';
-import {
-  doublyCurvedMaxIntervalMm,
-  doublyCurvedMaxRaMm,
-  doublyCurvedSolver,
-  type PrincipalRadii,
-} from '../core/surfaces/doublyCurved';
+import { doublyCurvedMaxRaMm } from '../core/roughness/doublyCurved';
+import { doublyCurvedMaxIntervalMm, doublyCurvedSolver, type PrincipalRadii } from '../core/surfaces/doublyCurved';
 import { effectiveRasterAngleDeg, slopePosture, validateThreeAxis, waterlineHeightLimitMm } from '../core/threeAxis';
 import { flankLimits } from '../core/tool/posture';
 import { postureShape } from '../core/tool/postureShape';

@@ -6,14 +6,9 @@
 
 import { type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
-import {
-  describeInputError,
-  type InputError,
-  inputError,
-  validateForward,
-  validateInverse,
-} from '../core/input/validate';
+import { describeInputError, type InputError, inputError } from '../core/input/validate';
 import { validateRaTarget } from '../core/roughness/raTarget';
+import { validateForward, validateInverse } from '../core/surfaces/validate';
 import {
   type CurvedReply,
   isCurvedRequest,

@@ -7,8 +7,8 @@
  */
 
 import { formatPercent, type LengthUnit, NO_VALUE } from '../core/input/units';
+import type { DoublyCurvedRow } from '../core/procedures/compareDoublyCurved';
 import { CORRECTED_KEYS, CURVATURE_ROWS, correctedRowKey } from '../core/procedures/procedures';
-import type { DoublyCurvedRow } from '../core/surfaces/doublyCurved';
 import type { CurvedReply, ThreeAxisReply } from '../worker/pageProtocol';
 import type { SolveMode } from '../worker/protocol';
 import { setCopyValue } from './copy';

@@ -12,12 +12,11 @@ import {
   MAX_TOOL_RADIUS_MM,
   MIN_SURFACE_RADIUS_MM,
   MIN_TOOL_RADIUS_MM,
-  maxIntervalMm,
-  scallopHeightLimits,
   type ToolInput,
 } from '../core/input/validate';
 import { maxRaCachedMm } from '../core/roughness/raTarget';
 import { minConcaveRadiusMm, PLANE, type Surface } from '../core/surfaces/cylinder';
+import { maxIntervalMm, scallopHeightLimits } from '../core/surfaces/validate';
 import { cylinderState } from './curvedRequest';
 import type { QuestionLimitsOf } from './questionLimits';
 import { type CalculatorState, type FieldKey, formatField, parseField, radiusField, sizeIsDiameter } from './state';

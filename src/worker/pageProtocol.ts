@@ -7,8 +7,9 @@
  */
 
 import type { InputError } from '../core/input/validate';
+import type { DoublyCurvedComparison } from '../core/procedures/compareDoublyCurved';
 import type { RoughnessSummary } from '../core/roughness/raTarget';
-import type { DoublyCurvedComparison, DoublyCurvedLimits, RadiusLimit } from '../core/surfaces/doublyCurved';
+import type { DoublyCurvedLimits, RadiusLimit } from '../core/surfaces/doublyCurved';
 import type {
   DoublyCurvedForwardInput,
   DoublyCurvedInverseInput,

@@ -28,7 +28,7 @@ const CURVED_JOB = [
   'worker/jobs/curved.ts',
   'worker/data/curvedCheck.ts',
   'worker/data/curvedScene.ts',
-  'core/surfaces/doublyCurved/roughness.ts',
+  'core/roughness/doublyCurved.ts',
 ];
 
 /** The files of `closure` that `files` name, each with the chain of imports that loads it. */

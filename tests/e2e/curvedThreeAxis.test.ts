@@ -9,14 +9,9 @@ import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { formatInputNumber } from '../../src/core/input/units';
-import {
-  compareDoublyCurved,
-  doublyCurvedForward,
-  doublyCurvedHeightForRaMm,
-  doublyCurvedRadiusLimit,
-  doublyCurvedRoughness,
-  doublyCurvedSolver,
-} from '../../src/core/surfaces/doublyCurved';
+import { compareDoublyCurved } from '../../src/core/procedures/compareDoublyCurved';
+import { doublyCurvedHeightForRaMm, doublyCurvedRoughness } from '../../src/core/roughness/doublyCurved';
+import { doublyCurvedForward, doublyCurvedRadiusLimit, doublyCurvedSolver } from '../../src/core/surfaces/doublyCurved';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
 import { waterlineForward } from '../../src/core/threeAxis/waterlineRevolution';
 import { formatLen, formatLenUnit, formatRoughness } from '../../src/ui/format';

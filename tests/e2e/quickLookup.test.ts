@@ -9,10 +9,11 @@ import { readFileSync } from 'node:fs';
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterEach, describe, expect, it } from 'vitest';
 import { parseCsv } from '../../src/cli/csv';
-import { forwardInput, scallopHeightLimits } from '../../src/core/input/validate';
+import { forwardInput } from '../../src/core/input/validate';
 import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
 import { headerInUnit } from '../../src/core/output/lookupUnits';
 import { exactForward } from '../../src/core/surfaces/solve';
+import { scallopHeightLimits } from '../../src/core/surfaces/validate';
 import { keepShot, ROOT, useSite } from './harness';
 
 const site = useSite('docs/quick-lookup');

@@ -5,16 +5,15 @@
  * largest is said on its field with that limit. Pure: no DOM.
  */
 import { describe, expect, it } from 'vitest';
-import { exactRoughness } from '../../src/core/roughness/roughness';
+import { compareDoublyCurved } from '../../src/core/procedures/compareDoublyCurved';
 import {
-  compareDoublyCurved,
   doublyCurvedHeightForRaMm,
-  doublyCurvedInverse,
   doublyCurvedMaxRaMm,
   doublyCurvedRoughness,
   doublyCurvedRoughnessAtInterval,
-  doublyCurvedSolver,
-} from '../../src/core/surfaces/doublyCurved';
+} from '../../src/core/roughness/doublyCurved';
+import { exactRoughness } from '../../src/core/roughness/roughness';
+import { doublyCurvedInverse, doublyCurvedSolver } from '../../src/core/surfaces/doublyCurved';
 import { buildRequest } from '../../src/ui/request';
 import { parseUrl, withField } from '../../src/ui/state';
 import { solvePage } from '../../src/worker/jobs/page';

@@ -4,11 +4,12 @@
  * with a feed or cross radius a doubly curved point, else a plane or a cylinder), so the generator
  * writes it and the check (tests/build/referenceData.test.ts) solves it again the same way.
  */
-import { validateForward, validateInverse } from '../../core/input/validate.ts';
+
+import { validateDoublyCurved } from '../../core/roughness/doublyCurvedValidate.ts';
 import { exactRoughness, scallopHeightForRaMm, validateTargetRa } from '../../core/roughness/roughness.ts';
 import { doublyCurvedForward, doublyCurvedInverse } from '../../core/surfaces/doublyCurved/solve.ts';
-import { validateDoublyCurved } from '../../core/surfaces/doublyCurved/validate.ts';
 import { exactForward, exactInverse } from '../../core/surfaces/solve.ts';
+import { validateForward, validateInverse } from '../../core/surfaces/validate.ts';
 import { solveThreeAxis } from '../../core/threeAxis/solve.ts';
 import { validateThreeAxis } from '../../core/threeAxis/validate.ts';
 import type { ReferenceRow } from './columns.ts';

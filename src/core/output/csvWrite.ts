@@ -7,11 +7,12 @@
  */
 
 import type { ForwardInput } from '../domain/pass';
-import { isNumberText, maxIntervalMm } from '../input/validate';
+import { isNumberText } from '../input/validate';
 import type { Approximation, HalfInterval } from '../procedures/approximations';
 import { compareForward } from '../procedures/compare';
 import { APPROXIMATION_KEYS, APPROXIMATIONS, type ApproximationKey, PROCEDURES } from '../procedures/procedures';
 import { exactForward } from '../surfaces/solve';
+import { maxIntervalMm } from '../surfaces/validate';
 
 /** Text that reads as a number: validation's own test (re-exported for the command line's CSV). */
 export { isNumberText };

@@ -22,7 +22,8 @@ import {
 import { describeInputError, type InputError } from '../input/inputErrors';
 import { rawOf } from '../input/raw';
 import { fromMm, type LengthUnit, toMm } from '../input/units';
-import { type RawForwardInput, scallopHeightLimits, validateForward } from '../input/validate';
+import type { RawForwardInput } from '../input/validate';
+import { scallopHeightLimits, validateForward } from '../surfaces/validate';
 import { csvNumber, csvText, RESULT_COLUMNS, resultFields } from './csvWrite';
 
 /** The grid of a table: scallop heights (mm), lead angles and tilts (degrees), each ascending. */

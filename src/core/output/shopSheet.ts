@@ -15,7 +15,6 @@ import { PASS_FIELDS } from '../input/fields';
 import { describeInputError } from '../input/inputErrors';
 import { rawOf } from '../input/raw';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../input/units';
-import { validateForward } from '../input/validate';
 import {
   doublyCurvedGouges,
   doublyCurvedSolver,
@@ -23,6 +22,7 @@ import {
   type PrincipalRadii,
 } from '../surfaces/doublyCurved/index';
 import { exactForward } from '../surfaces/solve';
+import { validateForward } from '../surfaces/validate';
 import { solveThreeAxis } from '../threeAxis/solve';
 import type { ThreeAxisProblem } from '../threeAxis/validate';
 

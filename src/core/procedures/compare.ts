@@ -12,14 +12,12 @@ import { formatSignificant } from '../input/units';
 import {
   forwardInput,
   inverseInput,
-  maxIntervalMm,
   type RawForwardInput,
   type RawInverseInput,
   type Validation,
-  validateForward,
-  validateInverse,
 } from '../input/validate';
 import { type ExactForward, type ExactInverse, exactForward, exactInverse } from '../surfaces/solve';
+import { maxIntervalMm, validateForward, validateInverse } from '../surfaces/validate';
 import { type Approximation, combinedRadiusMm, type HalfInterval, type ScallopHeight } from './approximations';
 import {
   APPROXIMATION_KEYS,

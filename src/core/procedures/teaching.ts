@@ -6,11 +6,12 @@
 import type { InverseInput } from '../domain/pass';
 import { PLANE, type Surface } from '../domain/surface';
 import type { PassPattern, ToolInput } from '../domain/tool';
-import { forwardInput, inverseInput, leavesNoScallop, scallopHeightLimits } from '../input/validate';
-import { profilePolyline } from '../output/geometry';
+import { forwardInput, inverseInput } from '../input/validate';
 import { surfaceModel } from '../surfaces/registry';
 import { exactIntervalMm, exactScallopHeightMm } from '../surfaces/solve';
+import { leavesNoScallop, scallopHeightLimits } from '../surfaces/validate';
 import { shapeOfTool } from '../tool/posture';
+import { profilePolyline } from '../tool/profile';
 import { compareForward } from './compare';
 import { PAPER_CONDITIONS, type PaperCondition, type ProcedureValues } from './paper';
 import {

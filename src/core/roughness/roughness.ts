@@ -31,13 +31,12 @@ import {
   inputError,
   MIN_LENGTH_MM,
   type RawToolInput,
-  scallopHeightLimits,
   type Validation,
-  validatePassAnd,
 } from '../input/validate';
 import type { CylinderSolver } from '../surfaces/cylinder';
 import { type SurfaceDescriptor, surfaceModel } from '../surfaces/registry';
 import { type ExactForward, type ExactInverse, exactForward } from '../surfaces/solve';
+import { scallopHeightLimits, validatePassAnd } from '../surfaces/validate';
 import { type Flank, flankWidthMm, type PostureShape } from '../tool/posture';
 
 /** Roughness across the feed, mm. */

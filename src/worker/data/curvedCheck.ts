@@ -8,11 +8,11 @@
  */
 
 import type { PassPattern, ToolInput } from '../../core/input/validate';
+import { doublyCurvedMaxRaMm } from '../../core/roughness/doublyCurved';
 import {
   doublyCurvedGouges,
   doublyCurvedGouging,
   doublyCurvedMaxIntervalMm,
-  doublyCurvedMaxRaMm,
   doublyCurvedSolver,
   MAX_PRINCIPAL_RADIUS_MM,
   MIN_PRINCIPAL_RADIUS_MM,

@@ -7,10 +7,9 @@
  * corrected procedures' step-overs put the next pass (core compareDoublyCurved). Mm.
  */
 import type { PassPattern, ToolInput } from '../../core/input/validate';
+import { compareDoublyCurved, type DoublyCurvedRow } from '../../core/procedures/compareDoublyCurved';
 import { CORRECTED_KEYS, correctedRowKey } from '../../core/procedures/procedures';
 import {
-  compareDoublyCurved,
-  type DoublyCurvedRow,
   type DoublyCurvedSolver,
   doublyCurvedMaxIntervalMm,
   doublyCurvedSolver,

@@ -4,8 +4,9 @@
  * comparison. Mm.
  */
 
-import { type ForwardInput, type InverseInput, maxIntervalMm } from '../../core/input/validate';
+import type { ForwardInput, InverseInput } from '../../core/input/validate';
 import type { compareForward, compareInverse } from '../../core/procedures/compare';
+import { maxIntervalMm } from '../../core/surfaces/validate';
 import type { Cusp, ExactSummary } from '../protocol';
 
 /** The exact answer of a forward comparison: on zigzag passes, the cusps at L/2 either side. */

@@ -8,17 +8,16 @@
 
 import { TOOL_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
-import { type InputError, inputError, MIN_LENGTH_MM, validatePassAnd } from '../../core/input/validate';
-import { roughnessSummary } from '../../core/roughness/raTarget';
+import { type InputError, inputError, MIN_LENGTH_MM } from '../../core/input/validate';
+import { compareDoublyCurved } from '../../core/procedures/compareDoublyCurved';
 import {
-  compareDoublyCurved,
   doublyCurvedHeightForRaMm,
-  doublyCurvedMaxIntervalMm,
   doublyCurvedRoughness,
   doublyCurvedRoughnessAtInterval,
-  doublyCurvedSolver,
-  inverseWith,
-} from '../../core/surfaces/doublyCurved';
+} from '../../core/roughness/doublyCurved';
+import { roughnessSummary } from '../../core/roughness/raTarget';
+import { doublyCurvedMaxIntervalMm, doublyCurvedSolver, inverseWith } from '../../core/surfaces/doublyCurved';
+import { validatePassAnd } from '../../core/surfaces/validate';
 import { curvedErrors } from '../data/curvedCheck';
 import { curvedSceneGeometry } from '../data/curvedScene';
 import type { CurvedError, CurvedReply, CurvedRequest, CurvedSummary } from '../pageProtocol';

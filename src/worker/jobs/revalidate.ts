@@ -5,8 +5,9 @@
  */
 import { PASS_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
-import { type InputError, validateForward, validateInverse } from '../../core/input/validate';
+import type { InputError } from '../../core/input/validate';
 import { validateRaTarget } from '../../core/roughness/raTarget';
+import { validateForward, validateInverse } from '../../core/surfaces/validate';
 import { QUESTION_FIELD, type SolveRequest } from '../protocol';
 
 /** The request's input validated again, or its errors (null when it is valid). */

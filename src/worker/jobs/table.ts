@@ -9,9 +9,9 @@
 
 import { PASS_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
-import { validateForward } from '../../core/input/validate';
 import { type LookupTable, lookupTable } from '../../core/output/lookupTable';
 import { lookupCsvInUnit } from '../../core/output/lookupUnits';
+import { validateForward } from '../../core/surfaces/validate';
 import { badRadii, curvedLookupTable } from '../data/curvedTable';
 import type { TableReply, TableRequest } from '../protocol';
 

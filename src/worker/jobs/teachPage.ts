@@ -5,7 +5,8 @@
  * one gets an error reply, never an exception. The reply echoes its request.
  */
 import { MIN_LENGTH_MM } from '../../core/input/validate';
-import { doublyCurvedHeightForRaMm, doublyCurvedSolver, inverseWith } from '../../core/surfaces/doublyCurved';
+import { doublyCurvedHeightForRaMm } from '../../core/roughness/doublyCurved';
+import { doublyCurvedSolver, inverseWith } from '../../core/surfaces/doublyCurved';
 import { curvedSection } from '../data/curvedSection';
 import { radiusSweep } from '../data/radiusSweep';
 import { slopeChart } from '../data/slopeChart';

@@ -5,14 +5,10 @@
  * a new code cannot be added without an example here.
  */
 import { describe, expect, it } from 'vitest';
-import {
-  type AnyInputError,
-  type InputErrorCode,
-  validateForward,
-  validateInverse,
-} from '../../../src/core/input/validate';
+import type { AnyInputError, InputErrorCode } from '../../../src/core/input/validate';
+import { validateDoublyCurved } from '../../../src/core/roughness/doublyCurvedValidate';
 import { validateTargetRa } from '../../../src/core/roughness/roughness';
-import { validateDoublyCurved } from '../../../src/core/surfaces/doublyCurved/validate';
+import { validateForward, validateInverse } from '../../../src/core/surfaces/validate';
 import { everyNumberFinite } from '../../support/finite';
 
 const TOOL = { R: 3, Rcr: 1, rho: 5 };

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { scallopHeightLimits, validateForward, validateInverse } from '../../../src/core/input/validate';
 import { solveForwardRaw } from '../../../src/core/procedures/compare';
+import { scallopHeightLimits, validateForward, validateInverse } from '../../../src/core/surfaces/validate';
 
 const good = { R: 3, Rcr: 1, rho: 5, h: 0.05 };
 

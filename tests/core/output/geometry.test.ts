@@ -1,8 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { forwardInput, scallopHeightLimits, type ToolInput } from '../../../src/core/input/validate';
+import { forwardInput, type ToolInput } from '../../../src/core/input/validate';
 import { passGeometry } from '../../../src/core/output/geometry';
 import { traceProcedure } from '../../../src/core/procedures/trace';
 import { exactForward } from '../../../src/core/surfaces/solve';
+import { scallopHeightLimits } from '../../../src/core/surfaces/validate';
 import { type Placement, placeTool } from '../../../src/core/tool/placement';
 import { seededRandom } from '../../support/bruteForce';
 

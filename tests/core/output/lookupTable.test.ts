@@ -1,10 +1,11 @@
 /** The lookup table: its grid and its CSV, checked cell by cell against the core's own solver. */
 import { describe, expect, it } from 'vitest';
 import { parseCsv } from '../../../src/cli/csv';
-import { forwardInput, scallopHeightLimits, validateForward } from '../../../src/core/input/validate';
+import { forwardInput } from '../../../src/core/input/validate';
 import { LOOKUP_HEADER, lookupGrid, lookupTable, series125 } from '../../../src/core/output/lookupTable';
 import { PLANE } from '../../../src/core/surfaces/cylinder';
 import { exactForward } from '../../../src/core/surfaces/solve';
+import { scallopHeightLimits, validateForward } from '../../../src/core/surfaces/validate';
 
 describe('lookup table', () => {
   it('the scallop heights follow the 1-2-5 series from about 1e-4 R up to the largest limit', () => {

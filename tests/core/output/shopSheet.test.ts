@@ -4,11 +4,12 @@
  * Refused cells carry a mark and a reason in the user's unit; no cell is NaN.
  */
 import { describe, expect, it } from 'vitest';
-import { forwardInput, inverseInput, scallopHeightLimits } from '../../../src/core/input/validate';
+import { forwardInput, inverseInput } from '../../../src/core/input/validate';
 import { SHEET_HEIGHTS, type SheetCase, type ShopSheet, shopSheet } from '../../../src/core/output/shopSheet';
 import { PLANE, type Surface } from '../../../src/core/surfaces/cylinder';
 import { doublyCurvedForward, doublyCurvedInverse } from '../../../src/core/surfaces/doublyCurved';
 import { exactForward, exactInverse } from '../../../src/core/surfaces/solve';
+import { scallopHeightLimits } from '../../../src/core/surfaces/validate';
 import { solveThreeAxis } from '../../../src/core/threeAxis/solve';
 import { type ThreeAxisProblem, validateThreeAxis } from '../../../src/core/threeAxis/validate';
 

@@ -7,13 +7,12 @@
 import { describe, expect, it } from 'vitest';
 import type { DoublyCurvedSurface } from '../../../src/core/domain/surface';
 import type { PassPattern, ToolInput } from '../../../src/core/domain/tool';
+import { forwardInput, inverseInput, MIN_LENGTH_MM } from '../../../src/core/input/validate';
 import {
-  forwardInput,
-  inverseInput,
-  MIN_LENGTH_MM,
-  maxIntervalMm,
-  scallopHeightLimits,
-} from '../../../src/core/input/validate';
+  doublyCurvedHeightForRaMm,
+  doublyCurvedMaxRaMm,
+  doublyCurvedRoughnessAtInterval,
+} from '../../../src/core/roughness/doublyCurved';
 import {
   exactRoughness,
   exactRoughnessAtInterval,
@@ -21,14 +20,10 @@ import {
   scallopHeightForRaMm,
 } from '../../../src/core/roughness/roughness';
 import { SimulationTooLargeError, simulatePasses } from '../../../src/core/simulation/simulation';
-import {
-  doublyCurvedHeightForRaMm,
-  doublyCurvedMaxRaMm,
-  doublyCurvedRoughnessAtInterval,
-} from '../../../src/core/surfaces/doublyCurved/roughness';
 import { doublyCurvedSolver, forwardWith, inverseWith } from '../../../src/core/surfaces/doublyCurved/solve';
 import { surfaceModel } from '../../../src/core/surfaces/registry';
 import { exactForward, exactInverse } from '../../../src/core/surfaces/solve';
+import { maxIntervalMm, scallopHeightLimits } from '../../../src/core/surfaces/validate';
 import { seededRandom } from '../../support/bruteForce';
 import { everyNumberFinite } from '../../support/finite';
 

@@ -1,16 +1,10 @@
 import { describe, expect, it } from 'vitest';
 import { gaussLegendre } from '../../../src/build/reference/roughnessReference';
-import {
-  type ForwardInput,
-  forwardInput,
-  type PassPattern,
-  scallopHeightLimits,
-  type ToolInput,
-  validateForward,
-} from '../../../src/core/input/validate';
+import { type ForwardInput, forwardInput, type PassPattern, type ToolInput } from '../../../src/core/input/validate';
 import { exactRoughness, maxRaMm, raRuleOfThumbMm, scallopHeightForRaMm } from '../../../src/core/roughness/roughness';
 import { cylinderSolver } from '../../../src/core/surfaces/cylinder';
 import { exactForward } from '../../../src/core/surfaces/solve';
+import { scallopHeightLimits, validateForward } from '../../../src/core/surfaces/validate';
 import { flankAtWidth, shapeOfTool } from '../../../src/core/tool/posture';
 import { seededRandom } from '../../support/bruteForce';
 

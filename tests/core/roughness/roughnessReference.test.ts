@@ -11,9 +11,10 @@
 import { describe, expect, it } from 'vitest';
 import { PLANE, type Surface } from '../../../src/core/domain/surface';
 import type { PassPattern, ToolInput } from '../../../src/core/domain/tool';
-import { forwardInput, MIN_LENGTH_MM, scallopHeightLimits } from '../../../src/core/input/validate';
+import { forwardInput, MIN_LENGTH_MM } from '../../../src/core/input/validate';
 import { exactRoughness } from '../../../src/core/roughness/roughness';
 import { surfaceModel } from '../../../src/core/surfaces/registry';
+import { scallopHeightLimits } from '../../../src/core/surfaces/validate';
 import { seededRandom } from '../../support/bruteForce';
 import { type RoughnessReferenceCase, referenceRoughness } from '../../support/reference/roughnessReference';
 

@@ -1,8 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { forwardInput, type PassPattern, scallopHeightLimits, type ToolInput } from '../../../src/core/input/validate';
+import { forwardInput, type PassPattern, type ToolInput } from '../../../src/core/input/validate';
 import { exactRoughness } from '../../../src/core/roughness/roughness';
 import { simulatePasses, startSimulation } from '../../../src/core/simulation/simulation';
 import { exactForward } from '../../../src/core/surfaces/solve';
+import { scallopHeightLimits } from '../../../src/core/surfaces/validate';
 import { seededRandom } from '../../support/bruteForce';
 
 /**

@@ -1,15 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import {
-  forwardInput,
-  inverseInput,
-  type PassPattern,
-  scallopHeightLimits,
-  type ToolInput,
-  validateForward,
-} from '../../../src/core/input/validate';
+import { forwardInput, inverseInput, type PassPattern, type ToolInput } from '../../../src/core/input/validate';
 import { compareForward } from '../../../src/core/procedures/compare';
 import { type CylinderSurface, minConcaveRadiusMm } from '../../../src/core/surfaces/cylinder';
 import { exactForward, exactInverse } from '../../../src/core/surfaces/solve';
+import { scallopHeightLimits, validateForward } from '../../../src/core/surfaces/validate';
 import { seededRandom } from '../../support/bruteForce';
 import { bruteForceCylinder } from '../../support/cylinderBruteForce';
 

@@ -6,8 +6,8 @@
  * (tests/support/cylinderBruteForce.ts).
  */
 import { describe, expect, it } from 'vitest';
-import { validateForward, validateInverse } from '../../../src/core/input/validate';
 import { concaveFit, cylinderSolver } from '../../../src/core/surfaces/cylinder';
+import { validateForward, validateInverse } from '../../../src/core/surfaces/validate';
 import { seededRandom } from '../../support/bruteForce';
 import { concaveOverreach } from '../../support/cylinderBruteForce';
 import { checkCase, cyl, referenceIntervalMm, tool } from '../../support/cylinderChecks';

@@ -1,5 +1,4 @@
 import { describe, expect, it } from 'vitest';
-import { validateForward, validateInverse } from '../../../src/core/input/validate';
 import {
   bediHalfInterval,
   cornerBallHalfInterval,
@@ -8,6 +7,7 @@ import {
   sekineHalfInterval,
 } from '../../../src/core/procedures/approximations';
 import { exactForward, exactInverse } from '../../../src/core/surfaces/solve';
+import { validateForward, validateInverse } from '../../../src/core/surfaces/validate';
 import { seededRandom } from '../../support/bruteForce';
 import { everyNumberFinite } from '../../support/finite';
 

@@ -5,16 +5,16 @@
  * profile, the brute-force 3D tool and the polished cylinder brute force), never from the solver.
  */
 import { describe, expect, it } from 'vitest';
+import { forwardInput } from '../../../src/core/input/validate';
+import { stepOverSweep } from '../../../src/core/procedures/teaching';
+import { cylinderSolver } from '../../../src/core/surfaces/cylinder';
+import { exactForward, exactIntervalMm } from '../../../src/core/surfaces/solve';
 import {
-  forwardInput,
   maxIntervalMm,
   scallopHeightLimits,
   validateForward,
   validateInverse,
-} from '../../../src/core/input/validate';
-import { stepOverSweep } from '../../../src/core/procedures/teaching';
-import { cylinderSolver } from '../../../src/core/surfaces/cylinder';
-import { exactForward, exactIntervalMm } from '../../../src/core/surfaces/solve';
+} from '../../../src/core/surfaces/validate';
 import { flankLimits, shapeOfTool } from '../../../src/core/tool/posture';
 import { stepOverFromReaches } from '../../../src/core/tool/stepOverRule';
 import { cyl, referenceIntervalMm, TOL_MM, tool } from '../../support/cylinderChecks';

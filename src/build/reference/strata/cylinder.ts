@@ -3,7 +3,7 @@
  * without tilt, against the polished reach of the real tool on the cylinder (oracles/cylinderReach.ts).
  */
 import type { SurfaceAxis } from '../../../core/domain/surface.ts';
-import { scallopHeightLimits, validateForward } from '../../../core/input/validate.ts';
+import { scallopHeightLimits, validateForward } from '../../../core/surfaces/validate.ts';
 import type { Draft, Stratum, ToolKind } from '../draft.ts';
 import { drawTool, logUniform, sig, signedAngle, TOOL_KINDS } from '../draft.ts';
 import { cylinderReach } from '../oracles/cylinderReach.ts';

@@ -3,8 +3,9 @@
  * roughness, against the 64-digit profile (oracles/highPrecision.ts) and, for roughness, the
  * brute-force profile integrated by the layer-cake formulas (roughnessReference.ts).
  */
-import { forwardInput, maxIntervalMm, scallopHeightLimits } from '../../../core/input/validate.ts';
+import { forwardInput } from '../../../core/input/validate.ts';
 import { exactRoughness } from '../../../core/roughness/roughness.ts';
+import { maxIntervalMm, scallopHeightLimits } from '../../../core/surfaces/validate.ts';
 import type { Draft, ReferenceValue, Stratum, ToolKind } from '../draft.ts';
 import { drawTool, logUniform, sig, signedAngle, TOOL_KINDS } from '../draft.ts';
 import { referenceProfile } from '../oracles/highPrecision.ts';

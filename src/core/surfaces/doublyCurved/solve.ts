@@ -205,3 +205,14 @@ function oneWayCuspMm(solver: DoublyCurvedSolver, L: number): number {
 export function doublyCurvedLimits(pass: ToolInput & PrincipalRadii): DoublyCurvedLimits {
   return doublyCurvedSolver(pass, pass).limits();
 }
+
+/**
+ * The widest step-over (mm) that leaves a scallop at a doubly curved point: the flanks' reaches at
+ * the limit height (one-way their sum, zigzag twice the smaller).
+ */
+export function doublyCurvedMaxIntervalMm(solver: DoublyCurvedSolver, pattern: DoublyCurvedPass['pattern']): number {
+  const h = solver.limits().limitMm;
+  const right = solver.right.reachMm(h);
+  const left = solver.symmetric ? right : solver.left.reachMm(h);
+  return pattern === 'one-way' ? right + left : 2 * Math.min(right, left);
+}

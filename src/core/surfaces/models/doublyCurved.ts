@@ -20,9 +20,8 @@ import {
   type PostureShape,
   shapeOfTool,
 } from '../../tool/posture';
-import { doublyCurvedMaxIntervalMm } from '../doublyCurved/compare';
 import { doublyCurvedGouges } from '../doublyCurved/gouging';
-import { doublyCurvedSolver, forwardWith, inverseWith } from '../doublyCurved/solve';
+import { doublyCurvedMaxIntervalMm, doublyCurvedSolver, forwardWith, inverseWith } from '../doublyCurved/solve';
 import type { ExactForward, ExactInverse, SurfaceFit, SurfaceModel } from '../surface';
 import { cylinderModel } from './cylinder';
 import { planeModel } from './plane';

@@ -2,7 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import { forwardInput, type ToolInput } from '../../../../src/core/input/validate';
 import { compareForward } from '../../../../src/core/procedures/compare';
-import { compareDoublyCurved } from '../../../../src/core/surfaces/doublyCurved/compare';
+import { compareDoublyCurved } from '../../../../src/core/procedures/compareDoublyCurved';
 import { doublyCurvedForward, doublyCurvedInverse } from '../../../../src/core/surfaces/doublyCurved/solve';
 
 const I = Number.POSITIVE_INFINITY;

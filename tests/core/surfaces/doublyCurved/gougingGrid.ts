@@ -15,11 +15,9 @@
  * Not only where gouging was expected: every point is checked. Lengths mm (tool radius 1 mm).
  */
 import { expect } from 'vitest';
-import {
-  compareDoublyCurved,
-  doublyCurvedInverse,
-  validateDoublyCurved,
-} from '../../../../src/core/surfaces/doublyCurved/index';
+import { compareDoublyCurved } from '../../../../src/core/procedures/compareDoublyCurved';
+import { validateDoublyCurved } from '../../../../src/core/roughness/doublyCurvedValidate';
+import { doublyCurvedInverse } from '../../../../src/core/surfaces/doublyCurved/index';
 import { everyNumberFinite } from '../../../support/finite';
 import { sampledLowestRadialHeightMm } from '../../../support/reference/doublyCurvedGougingSampled';
 

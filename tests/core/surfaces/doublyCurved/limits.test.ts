@@ -4,15 +4,9 @@
  * radii approach those answers.
  */
 import { describe, expect, it } from 'vitest';
-import {
-  forwardInput,
-  inverseInput,
-  type PassPattern,
-  scallopHeightLimits,
-  type ToolInput,
-} from '../../../../src/core/input/validate';
+import { forwardInput, inverseInput, type PassPattern, type ToolInput } from '../../../../src/core/input/validate';
+import { doublyCurvedRoughnessAtInterval } from '../../../../src/core/roughness/doublyCurved';
 import type { Surface } from '../../../../src/core/surfaces/cylinder';
-import { doublyCurvedRoughnessAtInterval } from '../../../../src/core/surfaces/doublyCurved/roughness';
 import {
   doublyCurvedForward,
   doublyCurvedInverse,
@@ -20,6 +14,7 @@ import {
   doublyCurvedSolver,
 } from '../../../../src/core/surfaces/doublyCurved/solve';
 import { exactForward, exactInverse } from '../../../../src/core/surfaces/solve';
+import { scallopHeightLimits } from '../../../../src/core/surfaces/validate';
 import { seededRandom } from '../../../support/bruteForce';
 
 const I = Number.POSITIVE_INFINITY;

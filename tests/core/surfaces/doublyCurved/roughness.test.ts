@@ -8,13 +8,13 @@
  */
 import { describe, expect, it } from 'vitest';
 import { forwardInput, type PassPattern } from '../../../../src/core/input/validate';
-import { exactRoughness, scallopHeightForRaMm } from '../../../../src/core/roughness/roughness';
 import {
   doublyCurvedHeightForRaMm,
   doublyCurvedMaxRaMm,
   doublyCurvedRoughness,
   doublyCurvedRoughnessAtInterval,
-} from '../../../../src/core/surfaces/doublyCurved/roughness';
+} from '../../../../src/core/roughness/doublyCurved';
+import { exactRoughness, scallopHeightForRaMm } from '../../../../src/core/roughness/roughness';
 import { doublyCurvedSolver, forwardWith, inverseWith } from '../../../../src/core/surfaces/doublyCurved/solve';
 
 const I = Number.POSITIVE_INFINITY;

@@ -4,10 +4,11 @@
  * cusp alone; above it, it cuts the cusp down).
  */
 import { describe, expect, it } from 'vitest';
-import { scallopHeightLimits, type ToolInput } from '../../../../src/core/input/validate';
+import type { ToolInput } from '../../../../src/core/input/validate';
 import type { Surface } from '../../../../src/core/surfaces/cylinder';
 import { shankCutHeights } from '../../../../src/core/surfaces/doublyCurved/shankLimit';
 import { doublyCurvedForward, doublyCurvedLimits } from '../../../../src/core/surfaces/doublyCurved/solve';
+import { scallopHeightLimits } from '../../../../src/core/surfaces/validate';
 import { seededRandom } from '../../../support/bruteForce';
 import { bruteForceDoublyCurved } from '../../../support/reference/doublyCurvedBruteForce';
 

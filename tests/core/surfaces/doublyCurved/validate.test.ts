@@ -3,11 +3,12 @@
  * gouging in the user's unit (mm and inch), the quantity's limits from the point's own solver.
  */
 import { describe, expect, it } from 'vitest';
-import { describeInputError, MIN_LENGTH_MM, validateForward } from '../../../../src/core/input/validate';
+import { describeInputError, MIN_LENGTH_MM } from '../../../../src/core/input/validate';
+import { validateDoublyCurved } from '../../../../src/core/roughness/doublyCurvedValidate';
 import { doublyCurvedGouges } from '../../../../src/core/surfaces/doublyCurved/gouging';
 import { limitOf } from '../../../../src/core/surfaces/doublyCurved/radiusLimitSearch';
 import { doublyCurvedLimits } from '../../../../src/core/surfaces/doublyCurved/solve';
-import { validateDoublyCurved } from '../../../../src/core/surfaces/doublyCurved/validate';
+import { validateForward } from '../../../../src/core/surfaces/validate';
 
 const TOOL = { R: '3', Rcr: '1', rho: '10', tilt: '5' };
 

@@ -8,10 +8,17 @@
  * signed deviation from the exact step-over and the scallop its own step-over really leaves here
  * (the exact inverse), or null where passes that far apart leave a wall. Lengths mm.
  */
-import { combinedRadiusMm } from '../../procedures/approximations';
-import { APPROXIMATIONS, CORRECTED_KEYS, type CorrectedKey } from '../../procedures/procedures';
-import { type DoublyCurvedSolver, doublyCurvedSolver, forwardWith, inverseWith } from './solve';
-import type { DoublyCurvedForward, DoublyCurvedForwardInput, DoublyCurvedPass } from './types';
+
+import {
+  type DoublyCurvedSolver,
+  doublyCurvedMaxIntervalMm,
+  doublyCurvedSolver,
+  forwardWith,
+  inverseWith,
+} from '../surfaces/doublyCurved/solve';
+import type { DoublyCurvedForward, DoublyCurvedForwardInput, DoublyCurvedPass } from '../surfaces/doublyCurved/types';
+import { combinedRadiusMm } from './approximations';
+import { APPROXIMATIONS, CORRECTED_KEYS, type CorrectedKey } from './procedures';
 
 /** One shortcut's step-over beside the exact one. */
 export type DoublyCurvedRow =
@@ -39,17 +46,6 @@ export interface DoublyCurvedComparison {
   readonly cylinderAcross: DoublyCurvedRow;
   /** The usual correction of each procedure with an effective radius, combined with Rc. */
   readonly corrected: { readonly [K in CorrectedKey]: DoublyCurvedRow & { readonly combinedRadiusMm?: number } };
-}
-
-/**
- * The widest step-over (mm) that leaves a scallop at a doubly curved point: the flanks' reaches at
- * the limit height (one-way their sum, zigzag twice the smaller).
- */
-export function doublyCurvedMaxIntervalMm(solver: DoublyCurvedSolver, pattern: DoublyCurvedPass['pattern']): number {
-  const h = solver.limits().limitMm;
-  const right = solver.right.reachMm(h);
-  const left = solver.symmetric ? right : solver.left.reachMm(h);
-  return pattern === 'one-way' ? right + left : 2 * Math.min(right, left);
 }
 
 function row(

@@ -9,16 +9,10 @@
  * along the feed, Rc infinite the one across (the tests check those limits). Lengths mm.
  */
 
-import type { PassPattern, ToolInput } from '../../input/validate';
-import {
-  type FlankSegment,
-  heightForRaMm,
-  type Roughness,
-  roughnessOfSegments,
-  type WidthAt,
-} from '../../roughness/roughness';
-import { type DoublyCurvedSolver, doublyCurvedSolver, forwardWith } from './solve';
-import type { DoublyCurvedForward, DoublyCurvedInverse, PrincipalRadii } from './types';
+import type { PassPattern, ToolInput } from '../input/validate';
+import { type DoublyCurvedSolver, doublyCurvedSolver, forwardWith } from '../surfaces/doublyCurved/solve';
+import type { DoublyCurvedForward, DoublyCurvedInverse, PrincipalRadii } from '../surfaces/doublyCurved/types';
+import { type FlankSegment, heightForRaMm, type Roughness, roughnessOfSegments, type WidthAt } from './roughness';
 
 const NONE: Roughness = { rzMm: 0, raMm: 0, rqMm: 0, meanMm: 0 };
 

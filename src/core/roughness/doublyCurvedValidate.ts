@@ -19,13 +19,12 @@ import {
   type RawToolInput,
   type ToolInput,
   type Validation,
-  validatePassAnd,
-} from '../../input/validate';
-import { doublyCurvedMaxIntervalMm } from './compare';
-import { doublyCurvedGouges, doublyCurvedGouging, type RadiusLimit } from './gouging';
-import { doublyCurvedMaxRaMm } from './roughness';
-import { doublyCurvedSolver } from './solve';
-import type { DoublyCurvedPass, PrincipalRadii } from './types';
+} from '../input/validate';
+import { doublyCurvedGouges, doublyCurvedGouging, type RadiusLimit } from '../surfaces/doublyCurved/gouging';
+import { doublyCurvedMaxIntervalMm, doublyCurvedSolver } from '../surfaces/doublyCurved/solve';
+import type { DoublyCurvedPass, PrincipalRadii } from '../surfaces/doublyCurved/types';
+import { validatePassAnd } from '../surfaces/validate';
+import { doublyCurvedMaxRaMm } from './doublyCurved';
 
 /** The quantity a doubly curved problem is given: a scallop height, a step-over, or a target Ra. */
 export type DoublyCurvedQuantity = 'h' | 'interval' | 'ra';
