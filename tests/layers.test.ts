@@ -2,6 +2,28 @@
  * The import graph's layers, read from the source: pure math (`core`) at the bottom, then the
  * worker boundary, the three.js rendering and the UI, with no edge going back down-up. The command
  * line sits on the core; the build plugins and benchmarks are tools that nothing imports.
+ *
+ * Inside the core, its folders in this order (CORE_ORDER); a core file imports its own folder and
+ * earlier ones only:
+ *
+ *   math < domain < input < tool < threeAxis < surfaces < roughness < procedures < simulation < output
+ *
+ * - math: the root finder and vectors; domain: the data types (tool, pass, surface descriptors);
+ * - input: units, the field registry, limits, error wording, the strict reading of a number;
+ * - tool: the tool in its posture (flanks, placement, profile, the step-over rule);
+ * - threeAxis: the posture a slope gives and the three-axis solvers, which need the tool only;
+ * - surfaces: the surface models, their registry (which wraps the sloped plane of threeAxis) and
+ *   the rules that ask them (surfaces/validate.ts);
+ * - roughness: Ra, Rz, Rq of the solved scallops, and the questions given an Ra;
+ * - procedures: the paper's approximations and their comparison with the exact answer;
+ * - simulation: the brute-force measurement of a pass pattern;
+ * - output: what the page, the CLI and the shop sheet show (tables, CSV, geometry).
+ * The core's root files (index.ts, library.ts: barrels) stand above every folder; none imports them.
+ *
+ * No import circle anywhere in src/: among static imports and re-exports, type imports included
+ * (a circle of types alone still ties the files together). A dynamic `import()` loads later, on
+ * first use, so it is left out of the circle check (a lazily loaded module may import back what
+ * loads it); it counts for the layers and the core's order like any other import.
  */
 import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { dirname, join, relative, resolve } from 'node:path';
@@ -23,13 +45,25 @@ function sourceFiles(dir: string): string[] {
   });
 }
 
-/** Every module specifier of a file: static imports and re-exports, and dynamic `import()` (not in comments). */
-function specifiers(source: string): string[] {
-  const out: string[] = [];
+interface Import {
+  readonly spec: string;
+  /** True for a dynamic `import()`, loaded on first use. */
+  readonly dynamic: boolean;
+}
+
+/** Every import of a file: static imports and re-exports, and dynamic `import()` (not in comments). */
+function imports(source: string): Import[] {
+  const out: Import[] = [];
   const code = source.replace(/\/\*[\s\S]*?\*\//g, '').replace(/^\s*\/\/.*$/gm, '');
-  const re = /(?:\bfrom\s*|\bimport\s*\(\s*|^\s*import\s+)['"]([^'"]+)['"]/gm;
-  for (let m = re.exec(code); m !== null; m = re.exec(code)) out.push(m[1] as string);
+  const re = /(\bfrom\s*|\bimport\s*\(\s*|^\s*import\s+)['"]([^'"]+)['"]/gm;
+  for (let m = re.exec(code); m !== null; m = re.exec(code))
+    out.push({ spec: m[2] as string, dynamic: (m[1] as string).includes('(') });
   return out;
+}
+
+/** Every module specifier of a file (see imports). */
+function specifiers(source: string): string[] {
+  return imports(source).map((i) => i.spec);
 }
 
 function layerOf(file: string): string {
@@ -66,19 +100,59 @@ function resolveFile(from: string, spec: string): string | null {
   return null;
 }
 
-/** The import graph of the files under `dir` (type imports included), by path relative to SRC. */
-function fileGraph(dir: string): Map<string, string[]> {
+/**
+ * The import graph of the files under `dir` (type imports and re-exports included), by path relative
+ * to SRC; dynamic `import()` only when `dynamic` is set.
+ */
+function fileGraph(dir: string, dynamic: boolean): Map<string, string[]> {
   const graph = new Map<string, string[]>();
   for (const file of sourceFiles(dir)) {
     const targets: string[] = [];
-    for (const spec of specifiers(readFileSync(file, 'utf8'))) {
-      if (!spec.startsWith('.')) continue;
-      const target = resolveFile(file, spec);
+    for (const i of imports(readFileSync(file, 'utf8'))) {
+      if (!i.spec.startsWith('.') || (i.dynamic && !dynamic)) continue;
+      const target = resolveFile(file, i.spec);
       if (target?.startsWith(dir)) targets.push(relative(SRC, target));
     }
     graph.set(relative(SRC, file), targets);
   }
   return graph;
+}
+
+/** The core's folders, lowest first: a core file may import its own folder and earlier ones only. */
+const CORE_ORDER = [
+  'math',
+  'domain',
+  'input',
+  'tool',
+  'threeAxis',
+  'surfaces',
+  'roughness',
+  'procedures',
+  'simulation',
+  'output',
+] as const;
+
+/** Rank of a core file's folder in CORE_ORDER; the root files (index.ts, library.ts) above all; -1 for an unknown folder. */
+function coreRank(path: string): number {
+  const parts = path.split(/[\\/]/);
+  if (parts.length === 2) return CORE_ORDER.length;
+  return (CORE_ORDER as readonly string[]).indexOf(parts[1] as string);
+}
+
+/**
+ * The imports inside the core that climb against CORE_ORDER (or leave or enter a folder it does not
+ * name), each as `file -> target`.
+ */
+function backArrows(graph: ReadonlyMap<string, readonly string[]>): string[] {
+  const bad: string[] = [];
+  for (const [file, targets] of graph) {
+    const from = coreRank(file);
+    for (const target of targets) {
+      const to = coreRank(target);
+      if (from < 0 || to < 0 || to > from) bad.push(`${file} -> ${target}`);
+    }
+  }
+  return bad;
 }
 
 /**
@@ -190,9 +264,32 @@ describe('layers of src/', () => {
     ).toEqual([]);
   });
 
-  it('has no import cycle inside the core, type imports included (the domain types live in core/domain/)', () => {
-    const core = fileGraph(join(SRC, 'core'));
-    expect(core.size).toBeGreaterThan(50);
-    expect(cycles(core)).toEqual([]);
+  it('has no import circle anywhere in src/ (static imports, type imports included)', () => {
+    const graph = fileGraph(SRC, false);
+    expect(graph.size).toBeGreaterThan(250);
+    expect(cycles(graph)).toEqual([]);
+  });
+
+  it('finds a back arrow against the core order when there is one (the checker itself)', () => {
+    const graph = new Map([
+      ['core/input/validate.ts', ['core/domain/tool.ts', 'core/surfaces/registry.ts']],
+      ['core/surfaces/registry.ts', ['core/input/validate.ts', 'core/surfaces/surface.ts']],
+      ['core/index.ts', ['core/output/csvWrite.ts']],
+      ['core/output/csvWrite.ts', ['core/index.ts']],
+      ['core/newFolder/x.ts', ['core/math/vec.ts']],
+    ]);
+    expect(backArrows(graph)).toEqual([
+      'core/input/validate.ts -> core/surfaces/registry.ts',
+      'core/output/csvWrite.ts -> core/index.ts',
+      'core/newFolder/x.ts -> core/math/vec.ts',
+    ]);
+  });
+
+  it('names every folder of the core in its order, and each folder imports only its own and earlier ones', () => {
+    const folders = readdirSync(join(SRC, 'core'), { withFileTypes: true })
+      .filter((e) => e.isDirectory())
+      .map((e) => e.name);
+    expect([...folders].sort()).toEqual([...CORE_ORDER].sort());
+    expect(backArrows(fileGraph(join(SRC, 'core'), true))).toEqual([]);
   });
 });
