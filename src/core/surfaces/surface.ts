@@ -33,21 +33,48 @@ import type { SurfaceAxis, SurfaceDescriptorBase } from '../domain/surface';
 import type { PassPattern, ToolInput } from '../domain/tool';
 import type { Flank, FlankLimits, FlankPoint } from '../tool/posture';
 
-/** The exact answer of the forward problem (scallop height to step-over), mm. */
-export interface ExactForward {
+/**
+ * The forward answer (scallop height to step-over) every surface gives, mm. Widths and the
+ * step-over are measured along the surface as the pass motion is: a width on the plane, an arc
+ * length about the axis on a cylinder or along the equator at a doubly curved point.
+ */
+export interface ForwardAnswer {
   /** Step-over L between adjacent cutter-contact paths. */
   readonly intervalMm: number;
-  /** L / 2. */
-  readonly halfIntervalMm: number;
-  /** Widths of the right and left flank at the scallop height, from the contact (wR, wL). */
+  /**
+   * How far the right (+Y) and left flank reach at the scallop height, from the contact (wR, wL).
+   * One-way `L = wR + wL`, zigzag `L = 2 min(wR, wL)`.
+   */
   readonly halfWidthRightMm: number;
   readonly halfWidthLeftMm: number;
   /** Contact offset y0: Y of the contact point minus Y of the tool centre point O. */
   readonly contactOffsetMm: number;
   /** Height of the highest cusp the passes leave: h (0 when no scallop forms at all). */
   readonly cuspHeightMm: number;
+  /** Zigzag: the height of the other, lower (or equal) cusp; null for one-way passes. */
+  readonly otherCuspHeightMm: number | null;
+}
+
+/** The inverse answer (step-over to scallop height) every surface gives, mm; measured as ForwardAnswer. */
+export interface InverseAnswer {
+  readonly intervalMm: number;
+  /** Height of the highest cusp the passes leave (the scallop height); 0 on a flat bottom. */
+  readonly cuspHeightMm: number;
   /** Zigzag: the height of the other, lower cusp; null for one-way passes. */
   readonly otherCuspHeightMm: number | null;
+  /** Heights of the cusps formed by right flanks and by left flanks (equal for one-way). */
+  readonly rightCuspHeightMm: number;
+  readonly leftCuspHeightMm: number;
+  /** Reaches of the right and left flank at their cusps, from the contact. */
+  readonly halfWidthRightMm: number;
+  readonly halfWidthLeftMm: number;
+  readonly contactOffsetMm: number;
+}
+
+/** The exact answer of the forward problem (scallop height to step-over) of a surface model, mm. */
+export interface ExactForward extends ForwardAnswer {
+  /** L / 2. */
+  readonly halfIntervalMm: number;
   /**
    * True when the tool leaves no scallop at any step-over up to `intervalMm`: a flat end with
    * neither lead nor tilt (its bottom face lies on the plane and has no corner to curve up).
@@ -62,20 +89,8 @@ export interface ExactForward {
   readonly left: FlankPoint;
 }
 
-/** The exact answer of the inverse problem (step-over to scallop height), mm. */
-export interface ExactInverse {
-  readonly intervalMm: number;
-  /** Height of the highest cusp the passes leave (the scallop height); 0 on a flat bottom. */
-  readonly cuspHeightMm: number;
-  /** Zigzag: the height of the other, lower cusp; null for one-way passes. */
-  readonly otherCuspHeightMm: number | null;
-  /** Heights of the cusps formed by right flanks and by left flanks (equal for one-way). */
-  readonly rightCuspHeightMm: number;
-  readonly leftCuspHeightMm: number;
-  /** Widths of the right and left flank at their cusps, from the contact. */
-  readonly halfWidthRightMm: number;
-  readonly halfWidthLeftMm: number;
-  readonly contactOffsetMm: number;
+/** The exact answer of the inverse problem (step-over to scallop height) of a surface model, mm. */
+export interface ExactInverse extends InverseAnswer {
   readonly right: FlankPoint;
   readonly left: FlankPoint;
 }

@@ -6,7 +6,10 @@
  * as in posture-and-surfaces.md: X feed, Y cross-feed, Z the surface normal out of the material, the
  * CC point at the origin. Lengths mm, angles of the posture degrees (as `ToolInput`).
  */
+import type { DoublyCurvedSurface } from '../../domain/surface';
 import type { PassPattern, ToolInput } from '../../domain/tool';
+import type { FlankLimits } from '../../tool/posture';
+import type { ForwardAnswer, InverseAnswer } from '../surface';
 
 /**
  * Smallest |radius| accepted for `Rf` and `Rc`, mm (the notes: `|R| >= 0.001 mm`). Source:
@@ -20,16 +23,13 @@ export const MIN_PRINCIPAL_RADIUS_MM = 0.001;
  */
 export const MAX_PRINCIPAL_RADIUS_MM = 1e6;
 
-/** The two signed principal radii of the design surface at the CC point. */
-export interface PrincipalRadii {
-  /**
-   * Signed radius along the feed `Rf`, mm: > 0 convex (centre of curvature below, in the material),
-   * < 0 concave, `Infinity` (either sign) straight. Valid: `|Rf| >= 0.001` or infinite.
-   */
-  readonly feedRadiusMm: number;
-  /** Signed radius across the feed `Rc`, mm; same conventions as `feedRadiusMm`. */
-  readonly crossRadiusMm: number;
-}
+/**
+ * The two signed principal radii of the design surface at the CC point: the doubly curved surface
+ * descriptor (domain/surface.ts) without its kind. `feedRadiusMm` is `Rf` along the feed,
+ * `crossRadiusMm` is `Rc` across it: > 0 convex (centre of curvature below, in the material), < 0
+ * concave, `Infinity` (either sign) straight. Valid: `|R| >= 0.001` or infinite.
+ */
+export type PrincipalRadii = Omit<DoublyCurvedSurface, 'kind'>;
 
 /** Tool, posture, pass pattern and the doubly curved point. */
 export interface DoublyCurvedPass extends ToolInput, PrincipalRadii {
@@ -46,50 +46,19 @@ export interface DoublyCurvedInverseInput extends DoublyCurvedPass {
   readonly intervalMm: number;
 }
 
-/** The forward answer, mm. */
-export interface DoublyCurvedForward {
-  /** Step-over `L`: arc length along the equator between adjacent CC paths (width along Y when `Rc` is infinite). */
-  readonly intervalMm: number;
-  /**
-   * How far the right (+Y) and left flank reach at the scallop height, from the CC point, as arc
-   * length along the equator (`|Rc|` times the polar angle about `m`; a width along Y when `Rc` is
-   * infinite). One-way `L = wR + wL`, zigzag `L = 2 min(wR, wL)`.
-   */
-  readonly halfWidthRightMm: number;
-  readonly halfWidthLeftMm: number;
-  /** Contact offset `y0`: Y of the CC point minus Y of the tool centre point O (as on the plane). */
-  readonly contactOffsetMm: number;
-  /** The highest cusp, radial: `h`. */
-  readonly cuspHeightMm: number;
-  /** Zigzag: the other (lower or equal) cusp's radial height; null for one-way. */
-  readonly otherCuspHeightMm: number | null;
-}
+/**
+ * The forward answer, mm: the shape every surface gives (surface.ts's ForwardAnswer). Widths and L
+ * are arc lengths along the equator (`|Rc|` times the polar angle about `m`; widths along Y when
+ * `Rc` is infinite); the cusp heights are radial.
+ */
+export type DoublyCurvedForward = ForwardAnswer;
 
-/** The inverse answer, mm. */
-export interface DoublyCurvedInverse {
-  readonly intervalMm: number;
-  /** Radial height of the highest cusp (the scallop height). */
-  readonly cuspHeightMm: number;
-  /** Zigzag: the other cusp's radial height; null for one-way. */
-  readonly otherCuspHeightMm: number | null;
-  /** Heights of the cusps formed by two right flanks and by two left flanks (equal for one-way). */
-  readonly rightCuspHeightMm: number;
-  readonly leftCuspHeightMm: number;
-  /** Reaches of the two flanks at their cusps (arc length along the equator). */
-  readonly halfWidthRightMm: number;
-  readonly halfWidthLeftMm: number;
-  readonly contactOffsetMm: number;
-}
+/** The inverse answer, mm (surface.ts's InverseAnswer; measured as DoublyCurvedForward). */
+export type DoublyCurvedInverse = InverseAnswer;
 
-/** Where a flank stops being a scallop flank, radial heights in mm (as posture.ts's FlankLimits). */
-export interface DoublyCurvedLimits {
-  /** Radial height of each flank's top: its widest point seen from `m` (a wall beyond it). */
-  readonly topRightMm: number;
-  readonly topLeftMm: number;
-  /** Radial height at which the shank starts to form the flank, or null where it never does. */
-  readonly shankRightMm: number | null;
-  readonly shankLeftMm: number | null;
-  /** The binding limit: scallop heights must stay below it. */
-  readonly limitMm: number;
-  readonly limitBy: 'right-flank' | 'left-flank' | 'shank-right' | 'shank-left';
-}
+/**
+ * Where a flank stops being a scallop flank, radial heights in mm: posture.ts's FlankLimits, with
+ * each flank's top its widest point seen from `m` and the shank's height where it starts to form
+ * the flank.
+ */
+export type DoublyCurvedLimits = FlankLimits;
