@@ -14,7 +14,6 @@ import {
   isCurvedRequest,
   isSolveReply,
   type PageReply,
-  type PageRequest,
   type ThreeAxisReply,
 } from '../worker/pageProtocol';
 import { buildCurvedRequest, cylinderState, describeCurvedError, renameRadius } from './curvedRequest';
