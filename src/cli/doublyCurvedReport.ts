@@ -1,7 +1,7 @@
 /**
  * A doubly curved point's answer (issue 19: signed principal radii Rf along the feed, Rc across) as
  * a table for the terminal or as a JSON object: the exact answer, then (forward) the comparison rows
- * of core/doublyCurved/compare.ts: the plane's answer, each cylinder's (one radius ignored) and the
+ * of core/procedures/compareDoublyCurved.ts: the plane's answer, each cylinder's (one radius ignored) and the
  * usual correction 1/rho = 1/Reff + 1/Rc of each procedure with an effective radius, each with its
  * deviation from the exact step-over and the scallop its L really leaves; the roughness. Pure;
  * lengths mm, angles degrees.

@@ -123,7 +123,7 @@ export type CurvedReply =
       readonly comparison: Omit<DoublyCurvedComparison, 'exact' | 'maxIntervalMm'> | null;
       /**
        * Rz, Ra, Rq along the normal of the surface left at the exact step-over (core
-       * doublyCurved/roughness.ts), beside the rule of thumb; its scallopHeightMm is the h a target
+       * roughness/doublyCurved.ts), beside the rule of thumb; its scallopHeightMm is the h a target
        * Ra comes to.
        */
       readonly roughness: RoughnessSummary;

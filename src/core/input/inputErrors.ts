@@ -10,7 +10,7 @@ import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol 
 
 /**
  * Every field an error can name: the registry's tool, pass and quantity fields, and the two
- * principal radii of a doubly curved point (core/doublyCurved/validate.ts; the registry files them
+ * principal radii of a doubly curved point (core/roughness/doublyCurvedValidate.ts; the registry files them
  * under three-axis machining, where waterline passes take them too).
  */
 export type AnyFieldName = FieldName | 'feedRadius' | 'crossRadius';

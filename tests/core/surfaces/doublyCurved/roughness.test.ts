@@ -1,5 +1,5 @@
 /**
- * Roughness at a doubly curved point (core/doublyCurved/roughness.ts) against independent
+ * Roughness at a doubly curved point (core/roughness/doublyCurved.ts) against independent
  * references: a ball end on a sphere, whose pass section in the cross-feed plane is the ball's own
  * disk (the swept ball is a torus about l, cut by its meridian plane), sampled here along the arc
  * and averaged by a fine midpoint rule (no integration by parts, no flank solver); the cylinder

@@ -1,5 +1,5 @@
 /**
- * Validation of a doubly curved point (core/doublyCurved/validate.ts): the radii's range and
+ * Validation of a doubly curved point (core/roughness/doublyCurvedValidate.ts): the radii's range and
  * gouging in the user's unit (mm and inch), the quantity's limits from the point's own solver.
  */
 import { describe, expect, it } from 'vitest';
