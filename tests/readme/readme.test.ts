@@ -176,7 +176,11 @@ function repeatedSentences(text: string, minWords = 12): string[] {
   const prose = text.replace(/```[\s\S]*?```/g, ' ').replace(/^\|.*$/gm, ' ');
   const seen = new Map<string, number>();
   for (const raw of prose.split(/(?<=[.;:!?])\s+|\n\s*\n/)) {
-    const sentence = raw.replace(/^[-\s]+/, '').replace(/\s+/g, ' ').trim().toLowerCase();
+    const sentence = raw
+      .replace(/^[-\s]+/, '')
+      .replace(/\s+/g, ' ')
+      .trim()
+      .toLowerCase();
     if (sentence.split(' ').length < minWords) continue;
     seen.set(sentence, (seen.get(sentence) ?? 0) + 1);
   }
