@@ -127,6 +127,16 @@ describe('README opening', () => {
     );
     expect(existsSync(`${ROOT}tests/e2e/readmeScreenshot.test.ts`)).toBe(true);
   });
+
+  it('says that the screenshots for a person to look at are kept only by npm run shots, as the script does', () => {
+    const shots = blocks(README).find((b) => b.text.startsWith('**Screenshots.**'))?.text ?? '';
+    const script: string = JSON.parse(read('package.json')).scripts.shots;
+    expect(shots).toContain('`npm run shots`');
+    expect(shots).toContain(`\`${script}\``);
+    expect(shots).toContain('test-results/screenshots/');
+    expect(script).toMatch(/^E2E_SHOTS=1 /);
+    expect(read('tests/e2e/harness.ts')).toMatch(/KEEP_SHOTS = Boolean\(process\.env\.E2E_SHOTS\)/);
+  });
 });
 
 describe('README links', () => {
