@@ -163,26 +163,18 @@ export function forwardTable(c: ForwardComparison, extras: Extras = {}, unit: Le
     const label = forwardLabel(key, input.tiltAngleDeg);
     rows.push(forwardRow(label, c.approximations[key], PROCEDURES[key].shortLabel, notes, L));
   }
-  out.push(...renderTable(columns, rows));
-  if (c.curvature !== null) {
-    const k = c.curvature;
-    const curved: string[][] = [forwardRow(curvatureLabel('plane'), k.plane, 'Plane', notes, L)];
-    for (const key of CORRECTED_KEYS) {
-      curved.push(forwardRow(curvatureLabel(key), k.corrected[key], PROCEDURES[key].shortLabel, notes, L));
-    }
-    out.push('', 'On the cylinder: the plane answer and the usual curvature corrections, beside the exact one:');
-    out.push(...renderTable(columns, curved));
-  }
-  out.push('', 'dev L: step-over minus the exact one; real h: the scallop that step-over really leaves (exact).');
-  if (c.curvature !== null) {
-    out.push('Above the cylinder rows: the approximations as on a plane (they ignore the curvature).');
-  }
-  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exact.cuspHeightMm, L));
-  if (extras.simulation !== undefined) {
-    out.push('', ...simulationLines(extras.simulation, exact.cuspHeightMm, extras.roughness, L));
-  }
-  if (notes.lines.length > 0) out.push('', ...notes.lines);
-  return out.join('\n');
+  const k = c.curvature;
+  const curved =
+    k === null
+      ? null
+      : [
+          forwardRow(curvatureLabel('plane'), k.plane, 'Plane', notes, L),
+          ...CORRECTED_KEYS.map((key) =>
+            forwardRow(curvatureLabel(key), k.corrected[key], PROCEDURES[key].shortLabel, notes, L),
+          ),
+        ];
+  const devLine = 'dev L: step-over minus the exact one; real h: the scallop that step-over really leaves (exact).';
+  return tablesAndExtras(out, columns, rows, curved, devLine, extras, exact.cuspHeightMm, notes, L);
 }
 
 /** The inverse answer (step-over to scallop height) as a table, with the extras that were computed. */
@@ -230,21 +222,54 @@ export function inverseTable(c: InverseComparison, extras: Extras = {}, unit: Le
   for (const key of APPROXIMATION_KEYS) {
     rows.push(inverseRow(inverseLabel(key, input.tiltAngleDeg), c.approximations[key], notes, L));
   }
+  const k = c.curvature;
+  const curved =
+    k === null
+      ? null
+      : [
+          inverseRow(curvatureLabel('plane'), k.plane, notes, L),
+          ...CORRECTED_KEYS.map((key) => inverseRow(curvatureLabel(key), k.corrected[key], notes, L)),
+        ];
+  return tablesAndExtras(
+    out,
+    columns,
+    rows,
+    curved,
+    'dev: scallop height minus the exact one.',
+    extras,
+    exact.cuspHeightMm,
+    notes,
+    L,
+  );
+}
+
+/**
+ * The end of both directions' reports: the table of the procedures, the cylinder's rows beneath it
+ * (when there are any), the line saying what dev means, the extras and the notes; all joined.
+ */
+function tablesAndExtras(
+  out: string[],
+  columns: Column[],
+  rows: string[][],
+  curved: string[][] | null,
+  devLine: string,
+  extras: Extras,
+  exactCuspHeightMm: number,
+  notes: Notes,
+  L: Lengths,
+): string {
   out.push(...renderTable(columns, rows));
-  if (c.curvature !== null) {
-    const k = c.curvature;
-    const curved: string[][] = [inverseRow(curvatureLabel('plane'), k.plane, notes, L)];
-    for (const key of CORRECTED_KEYS) curved.push(inverseRow(curvatureLabel(key), k.corrected[key], notes, L));
+  if (curved !== null) {
     out.push('', 'On the cylinder: the plane answer and the usual curvature corrections, beside the exact one:');
     out.push(...renderTable(columns, curved));
   }
-  out.push('', 'dev: scallop height minus the exact one.');
-  if (c.curvature !== null) {
+  out.push('', devLine);
+  if (curved !== null) {
     out.push('Above the cylinder rows: the approximations as on a plane (they ignore the curvature).');
   }
-  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exact.cuspHeightMm, L));
+  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exactCuspHeightMm, L));
   if (extras.simulation !== undefined) {
-    out.push('', ...simulationLines(extras.simulation, exact.cuspHeightMm, extras.roughness, L));
+    out.push('', ...simulationLines(extras.simulation, exactCuspHeightMm, extras.roughness, L));
   }
   if (notes.lines.length > 0) out.push('', ...notes.lines);
   return out.join('\n');
