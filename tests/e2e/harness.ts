@@ -331,3 +331,23 @@ export async function loseAndRestore(page: Page, testId: string): Promise<void> 
     await restored;
   }, testId);
 }
+
+/** Clears the focused field and types `text` with the keyboard, key by key (`delayMs` apart). */
+export async function retype(page: Page, text: string, delayMs = 30): Promise<void> {
+  await page.keyboard.press('ControlOrMeta+A');
+  await page.keyboard.press('Backspace');
+  await page.keyboard.type(text, { delay: delayMs });
+}
+
+/** Scrolls a field into view, focuses it (a click, or a tap on a touch page) and retypes it. */
+export async function typeInto(
+  page: Page,
+  testId: string,
+  text: string,
+  { tap = false, delayMs = 30 }: { tap?: boolean; delayMs?: number } = {},
+): Promise<void> {
+  const input = page.getByTestId(testId);
+  await input.scrollIntoViewIfNeeded();
+  await (tap ? input.tap() : input.click());
+  await retype(page, text, delayMs);
+}
