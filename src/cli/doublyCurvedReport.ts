@@ -15,21 +15,9 @@ import type {
   DoublyCurvedPass,
   DoublyCurvedRow,
 } from '../core/surfaces/doublyCurved/index';
-import { curvatureLabel, type Extras, extrasJson, type JsonValue, roughnessLines } from './report';
+import { curvatureLabel, type Extras, extrasJson, type JsonObject, type JsonValue, roughnessLines } from './report';
+import { indent, KEY_VALUE } from './reportExtras';
 import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
-
-type JsonObject = { [key: string]: JsonValue };
-
-const KEY_VALUE: readonly Column[] = [
-  { header: '', align: 'left' },
-  { header: '', align: 'right' },
-  { header: '', align: 'left' },
-  { header: '', align: 'left' },
-];
-
-function indent(lines: readonly string[]): string[] {
-  return lines.map((l) => `  ${l}`);
-}
 
 /** The kind of point from the signs of its radii. */
 export function pointKind(rf: number, rc: number): string {

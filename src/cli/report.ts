@@ -27,7 +27,7 @@ const MM = lengthsIn('mm');
 
 /** The extras (reportExtras.ts) and the JSON (reportJson.ts), re-exported for the callers. */
 export { type Extras, roughnessLines, ruleOfThumb, type SimulationRun } from './reportExtras';
-export { extrasJson, forwardJson, inverseJson, type JsonValue } from './reportJson';
+export { extrasJson, forwardJson, inverseJson, type JsonObject, type JsonValue } from './reportJson';
 
 /** The paper's procedures: their inverse is named by its equation. */
 const PAPER_KEYS: readonly ApproximationKey[] = ['sekine', 'redonnet', 'bedi'];

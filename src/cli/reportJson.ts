@@ -18,7 +18,8 @@ import { type Extras, ruleOfThumb } from './reportExtras';
 
 /** JSON data: numbers are always finite; a value that does not exist is left out, never null. */
 export type JsonValue = number | string | boolean | JsonValue[] | { [key: string]: JsonValue };
-type JsonObject = { [key: string]: JsonValue };
+/** A JSON object of {@link JsonValue}s. */
+export type JsonObject = { [key: string]: JsonValue };
 
 /** The tool, posture, pattern and surface as validation reads them (a plane has no surface fields: left out). */
 function toolJson(input: PassInput): JsonObject {

@@ -8,17 +8,9 @@
 import type { LengthUnit } from '../core/input/units';
 import type { SlopeSweep, SlopeSweepInput } from '../core/threeAxis/slopeSweep';
 import type { ThreeAxisAnswer, ThreeAxisProblem, ThreeAxisQuantity } from '../core/threeAxis/validate';
-import type { JsonValue } from './report';
+import type { JsonObject, JsonValue } from './report';
+import { KEY_VALUE } from './reportExtras';
 import { type Column, echo, type Lengths, length, lengthsIn, renderTable } from './table';
-
-type JsonObject = { [key: string]: JsonValue };
-
-const KEY_VALUE: readonly Column[] = [
-  { header: '', align: 'left' },
-  { header: '', align: 'right' },
-  { header: '', align: 'left' },
-  { header: '', align: 'left' },
-];
 
 /** An angle (degrees) for the table: 7 significant digits, never -0. */
 function angle(deg: number): string {
