@@ -17,7 +17,7 @@
 
 import type { ToolInput } from '../../domain/tool';
 import { bracketedRoot, type Objective } from '../../math/rootFinder';
-import { contactOffsetMm, shapeOfTool } from '../../tool/posture';
+import { contactOffsetMm, flankLimitsOf, shapeOfTool } from '../../tool/posture';
 import { type EquatorFlank, equatorFlank } from './equatorFlank';
 import { passSection } from './passSection';
 import { shankCutHeights } from './shankLimit';
@@ -75,13 +75,7 @@ export function limitsOf(
   shankRightMm: number | null,
   shankLeftMm: number | null,
 ): DoublyCurvedLimits {
-  const candidates: Array<[number, DoublyCurvedLimits['limitBy']]> = [];
-  if (shankRightMm !== null) candidates.push([shankRightMm, 'shank-right']);
-  if (shankLeftMm !== null) candidates.push([shankLeftMm, 'shank-left']);
-  candidates.push([topRightMm, 'right-flank'], [topLeftMm, 'left-flank']);
-  let best = candidates[0] as [number, DoublyCurvedLimits['limitBy']];
-  for (const c of candidates) if (c[0] < best[0]) best = c;
-  return { topRightMm, topLeftMm, shankRightMm, shankLeftMm, limitMm: best[0], limitBy: best[1] };
+  return flankLimitsOf(topRightMm, topLeftMm, shankRightMm, shankLeftMm);
 }
 
 /**
