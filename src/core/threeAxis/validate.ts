@@ -13,7 +13,7 @@
 import { FIELDS } from '../input/fields';
 import { isNumberText } from '../input/validate';
 import type { ThreeAxisErrorCode, ThreeAxisField } from './errors';
-import type { SlopedPlaneCase, ThreeAxisPasses } from './slopedPlane';
+import type { SlopedPlaneAnswer, SlopedPlaneCase, ThreeAxisPasses } from './slopedPlane';
 import type { RevolutionCase } from './waterlineRevolution';
 
 /** The fields a three-axis input error can name (the solvers' fields, the strategy, and a lead or tilt given with a slope). */
@@ -63,22 +63,12 @@ export type ThreeAxisProblem =
       readonly mm: number;
     };
 
-/** The answer of a three-axis problem, whichever surface. */
-export interface ThreeAxisAnswer {
+/**
+ * The answer of a three-axis problem, whichever surface: the sloped plane's fields (on a surface of
+ * revolution Lxy is the horizontal distance between the tool axes) but its height limit, and the passes.
+ */
+export interface ThreeAxisAnswer extends Omit<SlopedPlaneAnswer, 'heightLimitMm'> {
   readonly passes: ThreeAxisPasses;
-  /** L along the surface between adjacent CC paths, mm. */
-  readonly intervalMm: number;
-  /** Lxy: horizontal distance between the passes' vertical planes (plane) or the tool axes (revolution), mm. */
-  readonly horizontalStepMm: number;
-  /** dz between adjacent levels (waterline), mm; null for raster. */
-  readonly stepDownMm: number | null;
-  /** Cusp height along the surface normal, mm (0: no scallop). */
-  readonly cuspHeightMm: number;
-  /** The equivalent posture at the CC point, degrees. */
-  readonly leadDeg: number;
-  readonly tiltDeg: number;
-  /** True when no scallop forms (a flat end on a flat floor: L = 2R). */
-  readonly noScallop: boolean;
 }
 
 const STRATEGIES: readonly ThreeAxisPasses[] = ['raster', 'waterline'];
