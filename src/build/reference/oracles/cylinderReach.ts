@@ -61,34 +61,19 @@ export interface CylinderReachReference {
 
 type Vec = [number, number, number];
 
-const GOLDEN = (Math.sqrt(5) - 1) / 2;
-
 /** Golden-section maximum of f on [a, b]; returns the best value and argument seen. */
 function golden(f: (x: number) => number, a0: number, b0: number, iterations = 90): { x: number; v: number } {
-  let a = a0;
-  let b = b0;
-  let c = b - GOLDEN * (b - a);
-  let d = a + GOLDEN * (b - a);
-  let fc = f(c);
-  let fd = f(d);
-  let best = { x: c, v: fc };
-  for (let i = 0; i < iterations && b - a > 1e-17 * (Math.abs(a) + Math.abs(b)); i++) {
-    if (fc >= fd) {
-      b = d;
-      d = c;
-      fd = fc;
-      c = b - GOLDEN * (b - a);
-      fc = f(c);
-      if (fc > best.v) best = { x: c, v: fc };
-    } else {
-      a = c;
-      c = d;
-      fc = fd;
-      d = a + GOLDEN * (b - a);
-      fd = f(d);
-      if (fd > best.v) best = { x: d, v: fd };
-    }
-  }
+  // The best value seen: f at the first c, then at each new point (the first d only at the end).
+  let best = { x: Number.NaN, v: Number.NaN };
+  let asked = 0;
+  const negated = (x: number): number => {
+    const v = f(x);
+    if (asked === 0 || (asked > 1 && v > best.v)) best = { x, v };
+    asked++;
+    return -v;
+  };
+  const bracket = goldenSection(negated, a0, b0, iterations, 1e-17, 0);
+  const [d, fd] = [bracket.d, -bracket.fd];
   if (fd > best.v) best = { x: d, v: fd };
   return best;
 }
