@@ -16,7 +16,7 @@ import type {
   DoublyCurvedRow,
 } from '../core/surfaces/doublyCurved/index';
 import { curvatureLabel, type Extras, extrasJson, type JsonObject, type JsonValue, roughnessLines } from './report';
-import { indent, KEY_VALUE } from './reportExtras';
+import { flankFacts, indent, KEY_VALUE, toolKind } from './reportExtras';
 import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
 
 /** The kind of point from the signs of its radii. */
@@ -27,12 +27,7 @@ export function pointKind(rf: number, rc: number): string {
 }
 
 function caseLine(p: DoublyCurvedPass, L: Lengths): string {
-  const kind =
-    p.cornerRadiusMm === p.toolRadiusMm
-      ? 'Ball end mill'
-      : p.cornerRadiusMm === 0
-        ? 'Flat end mill'
-        : 'Filleted end mill';
+  const kind = toolKind(p.toolRadiusMm, p.cornerRadiusMm);
   return (
     `${kind} R = ${L.echo(p.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(p.cornerRadiusMm)} ${L.u}; ` +
     `lead rho = ${echo(p.leadAngleDeg)} deg, tilt beta = ${echo(p.tiltAngleDeg)} deg; ${p.pattern} passes ` +
@@ -72,9 +67,7 @@ export function doublyCurvedForwardTable(
   const facts: string[][] = [
     ['L', L.length(e.intervalMm), L.u, 'step-over: arc length along the surface between adjacent CC paths'],
     ['L/2', L.length(e.intervalMm / 2), L.u, 'half step-over'],
-    ['wR', L.length(e.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at the cusp'],
-    ['wL', L.length(e.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at the cusp'],
-    ['y0', L.length(e.contactOffsetMm), L.u, 'contact offset: the tool centre point runs -y0 (in Y) from its CC path'],
+    ...flankFacts(e, L, 'the cusp'),
     ['h', L.length(e.cuspHeightMm), L.u, p.pattern === 'zigzag' ? 'highest cusp' : 'cusp height'],
   ];
   if (e.otherCuspHeightMm !== null) facts.push(['h2', L.length(e.otherCuspHeightMm), L.u, 'other cusp, zigzag']);
@@ -133,11 +126,7 @@ export function doublyCurvedInverseTable(
       ['hL', L.length(e.leftCuspHeightMm), L.u, 'cusp between left flanks (wL = L/2)'],
     );
   }
-  facts.push(
-    ['wR', L.length(e.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at its cusp'],
-    ['wL', L.length(e.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at its cusp'],
-    ['y0', L.length(e.contactOffsetMm), L.u, 'contact offset: the tool centre point runs -y0 (in Y) from its CC path'],
-  );
+  facts.push(...flankFacts(e, L, 'its cusp'));
   return [
     caseLine(p, L),
     `Step-over L = ${L.echo(e.intervalMm)} ${L.u} (L/2 = ${L.echo(e.intervalMm / 2)} ${L.u}) along the surface between CC paths`,

@@ -19,7 +19,7 @@ import {
   type Surface,
 } from '../core/index';
 import type { LengthUnit } from '../core/input/units';
-import { type Extras, indent, KEY_VALUE, roughnessLines, simulationLines } from './reportExtras';
+import { type Extras, flankFacts, indent, KEY_VALUE, roughnessLines, simulationLines, toolKind } from './reportExtras';
 import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
 
 /** The table's lengths in mm. */
@@ -45,12 +45,6 @@ export function inverseLabel(key: ApproximationKey, tiltDeg: number): string {
   return p.leadOnly && tiltDeg !== 0 ? `${base}, lead only` : base;
 }
 
-function toolKind(input: PassInput): string {
-  if (input.cornerRadiusMm === input.toolRadiusMm) return 'Ball end mill';
-  if (input.cornerRadiusMm === 0) return 'Flat end mill';
-  return 'Filleted end mill';
-}
-
 /** The design surface in words: `plane`, or the cylinder with its signed radius and axis. */
 export function surfaceText(surface: Surface, L: Lengths = MM): string {
   if (surface.kind === 'plane') return 'on a plane';
@@ -64,7 +58,7 @@ export function surfaceText(surface: Surface, L: Lengths = MM): string {
 
 function caseLine(input: PassInput, L: Lengths): string {
   return (
-    `${toolKind(input)} R = ${L.echo(input.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(input.cornerRadiusMm)} ${L.u}; ` +
+    `${toolKind(input.toolRadiusMm, input.cornerRadiusMm)} R = ${L.echo(input.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(input.cornerRadiusMm)} ${L.u}; ` +
     `lead rho = ${echo(input.leadAngleDeg)} deg, tilt beta = ${echo(input.tiltAngleDeg)} deg; ${input.pattern} passes ` +
     surfaceText(input.surface, L)
   );
@@ -118,14 +112,7 @@ export function forwardTable(c: ForwardComparison, extras: Extras = {}, unit: Le
   const facts: string[][] = [
     ['L', L.length(exact.intervalMm), L.u, 'step-over: between adjacent cutter-contact (CC) paths'],
     ['L/2', L.length(exact.halfIntervalMm), L.u, 'half step-over'],
-    ['wR', L.length(exact.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at the cusp'],
-    ['wL', L.length(exact.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at the cusp'],
-    [
-      'y0',
-      L.length(exact.contactOffsetMm),
-      L.u,
-      'contact offset: the tool centre point runs -y0 (in Y) from its CC path',
-    ],
+    ...flankFacts(exact, L, 'the cusp'),
     ['h', L.length(exact.cuspHeightMm), L.u, zigzag ? 'highest cusp (between the narrower flanks)' : 'cusp height'],
   ];
   if (exact.otherCuspHeightMm !== null) {
@@ -194,16 +181,7 @@ export function inverseTable(c: InverseComparison, extras: Extras = {}, unit: Le
       ['hL', L.length(exact.leftCuspHeightMm), L.u, 'cusp between left flanks (wL = L/2)'],
     );
   }
-  facts.push(
-    ['wR', L.length(exact.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at its cusp'],
-    ['wL', L.length(exact.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at its cusp'],
-    [
-      'y0',
-      L.length(exact.contactOffsetMm),
-      L.u,
-      'contact offset: the tool centre point runs -y0 (in Y) from its CC path',
-    ],
-  );
+  facts.push(...flankFacts(exact, L, 'its cusp'));
   out.push(`${PROCEDURES.exact.label}:`, ...indent(renderTable(KEY_VALUE, facts, false)));
   if (exact.cuspHeightMm === 0) {
     out.push('  No scallop: the flat bottom lying on the plane covers this step-over.');
