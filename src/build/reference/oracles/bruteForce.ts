@@ -68,4 +68,4 @@ export function bruteForceHalfIntervalMm(R: number, Rcr: number, rhoDeg: number,
 }
 
 /** Small seeded PRNG (mulberry32) so that a failing random case can be replayed from its seed. */
-export { seededRandom } from '../../../core/math/seededRandom.ts';
+export { seededRandom } from '../../../core/math/seededRandom';

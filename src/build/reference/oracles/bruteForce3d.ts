@@ -33,6 +33,7 @@
  * error of 1e-16 R / h in h: do not use it there. Cost: about 10-15 ms to sample (390k
  * points), well under 1 ms per width.
  */
+import { goldenSection } from './goldenSection';
 
 type Vec3 = readonly [number, number, number];
 

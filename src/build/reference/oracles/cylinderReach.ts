@@ -31,6 +31,7 @@
  * insensitive to its argument; at a crossing the bisection is run to the last bit); measured
  * against closed forms in tests/support/reference.test.ts. Cost: about 10-40 ms per reach.
  */
+import { goldenSection } from './goldenSection';
 
 export interface CylinderReachTool {
   readonly toolRadiusMm: number;

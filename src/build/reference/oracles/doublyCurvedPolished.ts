@@ -45,7 +45,7 @@ import {
   type ToolSample,
   toolGeometry,
 } from './doublyCurvedBruteForce';
-import { goldenSection } from './goldenSection.ts';
+import { goldenSection } from './goldenSection';
 
 /** The tool and posture (mm, degrees), as bruteForceDoublyCurved takes it. */
 export interface PolishTool {

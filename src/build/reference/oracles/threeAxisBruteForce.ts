@@ -42,6 +42,7 @@
  * stage: the crossing of the two tools' lowest points by bisection, each column evaluated to
  * about 1e-13 mm.
  */
+import { goldenSection } from './goldenSection';
 
 /** The tool (mm). */
 export interface BruteTool {
