@@ -15,8 +15,9 @@ import type {
   DoublyCurvedPass,
   DoublyCurvedRow,
 } from '../core/surfaces/doublyCurved/index';
-import { curvatureLabel, type Extras, extrasJson, type JsonObject, type JsonValue, roughnessLines } from './report';
+import { curvatureLabel, type Extras, extrasJson, type JsonObject, roughnessLines } from './report';
 import { flankFacts, indent, KEY_VALUE, toolKind } from './reportExtras';
+import { inverseExactJson } from './reportJson';
 import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
 
 /** The kind of point from the signs of its radii. */
@@ -195,17 +196,7 @@ export function doublyCurvedForwardJson(
 
 /** The inverse answer at a doubly curved point as JSON. */
 export function doublyCurvedInverseJson(p: DoublyCurvedPass, e: DoublyCurvedInverse, roughness: Roughness): JsonObject {
-  const exact: JsonObject = {
-    scallopHeight: e.cuspHeightMm,
-    rightCuspHeight: e.rightCuspHeightMm,
-    leftCuspHeight: e.leftCuspHeightMm,
-  };
-  if (e.otherCuspHeightMm !== null) exact.otherCuspHeight = e.otherCuspHeightMm;
-  exact.interval = e.intervalMm;
-  exact.halfInterval = e.intervalMm / 2;
-  exact.halfWidthRight = e.halfWidthRightMm;
-  exact.halfWidthLeft = e.halfWidthLeftMm;
-  exact.contactOffset = e.contactOffsetMm;
+  const exact = inverseExactJson(e);
   return {
     unit: 'mm',
     input: { ...inputJson(p), interval: e.intervalMm, halfInterval: e.intervalMm / 2 },
