@@ -71,6 +71,18 @@ export interface ThreeAxisAnswer extends Omit<SlopedPlaneAnswer, 'heightLimitMm'
   readonly passes: ThreeAxisPasses;
 }
 
+/** The programmed steps that belong to one kind of passes: refused with the other, and why. */
+const STEP_NOT_WITH = {
+  horizontalStep: {
+    passes: 'waterline',
+    why: 'is the step of raster passes: waterline passes are programmed by their step-down dz.',
+  },
+  stepDown: {
+    passes: 'raster',
+    why: 'is the step of waterline passes: raster passes are programmed by their horizontal step Lxy.',
+  },
+} as const satisfies Record<'horizontalStep' | 'stepDown', { passes: ThreeAxisPasses; why: string }>;
+
 const STRATEGIES: readonly ThreeAxisPasses[] = ['raster', 'waterline'];
 
 /** The raster angle of waterline passes (they follow the contour), degrees. */
@@ -200,24 +212,9 @@ export function validateThreeAxis(
     else if (field === 'feedRadius') feed = value;
     else cross = value;
   }
-  if (quantity === 'horizontalStep' && passes === 'waterline')
-    errors.push(
-      inputError(
-        'horizontalStep',
-        'not-with',
-        textOf(rawValue) ?? '',
-        'is the step of raster passes: waterline passes are programmed by their step-down dz.',
-      ),
-    );
-  if (quantity === 'stepDown' && passes === 'raster')
-    errors.push(
-      inputError(
-        'stepDown',
-        'not-with',
-        textOf(rawValue) ?? '',
-        'is the step of waterline passes: raster passes are programmed by their horizontal step Lxy.',
-      ),
-    );
+  const wrongStep = quantity === 'horizontalStep' || quantity === 'stepDown' ? STEP_NOT_WITH[quantity] : null;
+  if (wrongStep !== null && passes === wrongStep.passes)
+    errors.push(inputError(quantity, 'not-with', textOf(rawValue) ?? '', wrongStep.why));
   const mm = numberOf(quantity, rawValue, errors, true);
   if (errors.length > 0 || R === undefined || Rcr === undefined || slope === undefined || mm === undefined)
     return { ok: false, errors };
