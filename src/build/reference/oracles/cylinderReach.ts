@@ -119,17 +119,19 @@ export function cylinderReach(
     out[2] = c * e1[2] + s * e2[2];
   };
   const r: Vec = [0, 0, 0];
+  /** The point at `radius` from the tool axis towards ring angle t, `axial` up the axis from O. */
+  const ringPoint = (t: number, radius: number, axial: number, out: Vec) => {
+    radial(t, r);
+    out[0] = O[0] + radius * r[0] + axial * a[0];
+    out[1] = O[1] + radius * r[1] + axial * a[1];
+    out[2] = O[2] + radius * r[2] + axial * a[2];
+  };
   const torus = (psiTop: number): Patch => ({
     name: 'torus',
     v0: -Math.PI / 2,
     v1: psiTop,
     at(t, psi, out) {
-      radial(t, r);
-      const c = rb + rcr * Math.cos(psi);
-      const s = rcr * Math.sin(psi);
-      out[0] = O[0] + c * r[0] + s * a[0];
-      out[1] = O[1] + c * r[1] + s * a[1];
-      out[2] = O[2] + c * r[2] + s * a[2];
+      ringPoint(t, rb + rcr * Math.cos(psi), rcr * Math.sin(psi), out);
     },
   });
   const disk = (axial: number, name: string): Patch => ({
@@ -137,10 +139,7 @@ export function cylinderReach(
     v0: 0,
     v1: rb,
     at(t, s, out) {
-      radial(t, r);
-      out[0] = O[0] + s * r[0] + axial * a[0];
-      out[1] = O[1] + s * r[1] + axial * a[1];
-      out[2] = O[2] + s * r[2] + axial * a[2];
+      ringPoint(t, s, axial, out);
     },
   });
   const shank: Patch = {
@@ -148,10 +147,7 @@ export function cylinderReach(
     v0: 0,
     v1: shankLength,
     at(t, u, out) {
-      radial(t, r);
-      out[0] = O[0] + R * r[0] + u * a[0];
-      out[1] = O[1] + R * r[1] + u * a[1];
-      out[2] = O[2] + R * r[2] + u * a[2];
+      ringPoint(t, R, u, out);
     },
   };
   const endPatches: Patch[] = [torus(Math.PI / 2), disk(-rcr, 'bottom'), disk(rcr, 'top')];
