@@ -67,7 +67,7 @@ export function toolInputs(
   rho: number,
   tilt: number,
   pattern: 'one-way' | 'zigzag',
-): Record<string, number | string> {
+) {
   return {
     R,
     Rcr,
