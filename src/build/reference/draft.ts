@@ -61,13 +61,7 @@ export function signedAngle(rand: () => number, lo: number, hi: number): number 
 }
 
 /** A row's tool and posture inputs, tilt and pattern left empty at their defaults (0, one-way), as a user would. */
-export function toolInputs(
-  R: number,
-  Rcr: number,
-  rho: number,
-  tilt: number,
-  pattern: 'one-way' | 'zigzag',
-) {
+export function toolInputs(R: number, Rcr: number, rho: number, tilt: number, pattern: 'one-way' | 'zigzag') {
   return {
     R,
     Rcr,
