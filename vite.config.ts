@@ -210,6 +210,9 @@ export default defineConfig(({ mode, command }) =>
                 include: ['tests/**/*.test.ts'],
                 exclude: BROWSER_TESTS,
                 globalSetup: ['tests/support/cliBundleSetup.ts'],
+                // npm test runs these niced beside the browser tests on 2 cores, so a test gets a share of
+                // a core: a timeout here only guards against a hang (speed is measured by the benches).
+                testTimeout: 180_000,
                 // Vitest's default leaves a core free (one worker on 2 cores).
                 maxWorkers: availableParallelism(),
               },

@@ -12,6 +12,7 @@
  *                                                   |Rf|, |Rc| in {10, 50, 200} mm, dome, bowl, saddle)
  */
 import { pathToFileURL } from 'node:url';
+import { seededRandom } from '../core/math/seededRandom';
 import { compareDoublyCurved, type DoublyCurvedRow } from '../core/procedures/compareDoublyCurved';
 import { doublyCurvedGouging } from '../core/surfaces/doublyCurved/gouging';
 import { doublyCurvedForward, doublyCurvedIntervalMm, doublyCurvedLimits } from '../core/surfaces/doublyCurved/solve';
@@ -19,14 +20,7 @@ import type { DoublyCurvedForwardInput } from '../core/surfaces/doublyCurved/typ
 
 /** Deterministic inputs (mulberry32, seed 19): the radii 3 to 30 tool radii, both signs. */
 function inputs(count: number): DoublyCurvedForwardInput[] {
-  let a = 19;
-  const rand = () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
+  const rand = seededRandom(19);
   const out: DoublyCurvedForwardInput[] = [];
   while (out.length < count) {
     const R = 0.5 + 12 * rand();

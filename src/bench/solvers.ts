@@ -30,6 +30,7 @@ import {
 } from '../core/index';
 import { PASS_FIELDS } from '../core/input/fields';
 import { rawOf } from '../core/input/raw';
+import { seededRandom } from '../core/math/seededRandom';
 import { cliStartBench } from './cliStart';
 import { doublyCurvedBench } from './doublyCurved';
 import { teachPageBench } from './teachPage';
@@ -40,14 +41,7 @@ import { threeAxisBench } from './threeAxis';
  * from -60 to 60 degrees and both pass patterns.
  */
 function inputs(count: number, tilt: boolean): ForwardInput[] {
-  let a = 1;
-  const rand = () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
+  const rand = seededRandom(1);
   const out: ForwardInput[] = [];
   for (let i = 0; i < count; i++) {
     const R = 0.5 + 12 * rand();

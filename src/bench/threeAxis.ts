@@ -12,6 +12,7 @@
  */
 import { pathToFileURL } from 'node:url';
 import { type ForwardInput, forwardInput } from '../core/input/validate';
+import { seededRandom } from '../core/math/seededRandom';
 import { exactIntervalMm } from '../core/surfaces/solve';
 import {
   type RevolutionCase,
@@ -23,17 +24,8 @@ import {
   waterlineForward,
 } from '../core/threeAxis/index';
 
-/** mulberry32, seed 1: the same inputs on every run. */
-function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+/** mulberry32: the same inputs on every run. */
+const random = seededRandom;
 
 interface Timed<T> {
   readonly input: T;

@@ -157,6 +157,23 @@ function columnUnitsOf(
   return out;
 }
 
+/** Puts column `name` (one of `known`) at `i` in `index`, or says why not: unknown, or given twice. */
+function placeColumn(
+  index: Partial<Record<InputColumn, number>>,
+  name: string,
+  i: number,
+  known: readonly string[],
+  problems: string[],
+): void {
+  if (!known.includes(name)) {
+    problems.push(`unknown column "${cut(name)}"`);
+    return;
+  }
+  const column = name as InputColumn;
+  if (index[column] !== undefined) problems.push(`column ${name} appears twice`);
+  else index[column] = i;
+}
+
 /** Reads the header record: the layout, or the reason it is not one. */
 export function parseHeader(
   record: CsvRecord,
@@ -180,13 +197,7 @@ export function parseHeader(
       problems.push(`column ${name} is for three-axis rows: add a ${SLOPE_COLUMN} column`);
       return;
     }
-    if (!(INPUT_COLUMNS as readonly string[]).includes(name)) {
-      problems.push(`unknown column "${cut(name)}"`);
-      return;
-    }
-    const column = name as InputColumn;
-    if (index[column] !== undefined) problems.push(`column ${name} appears twice`);
-    else index[column] = i;
+    placeColumn(index, name, i, INPUT_COLUMNS, problems);
   });
   const missing: string[] = REQUIRED_COLUMNS.filter((c) => index[c] === undefined);
   const given = TARGET_COLUMNS.filter((c) => index[c] !== undefined);
@@ -227,13 +238,7 @@ function parseThreeAxisHeader(
       problems.push(`three-axis rows take a scallop height ${H_COLUMN}, not ${name}`);
       return;
     }
-    if (!(THREE_AXIS_INPUT_COLUMNS as readonly string[]).includes(name)) {
-      problems.push(`unknown column "${cut(name)}"`);
-      return;
-    }
-    const column = name as InputColumn;
-    if (index[column] !== undefined) problems.push(`column ${name} appears twice`);
-    else index[column] = i;
+    placeColumn(index, name, i, THREE_AXIS_INPUT_COLUMNS, problems);
   });
   const missing = [...THREE_AXIS_ECHOED.slice(0, 4)].filter((c) => index[c] === undefined);
   if (missing.length > 0) problems.unshift(`missing ${missing.join(', ')}`);

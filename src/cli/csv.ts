@@ -112,12 +112,7 @@ export class CsvReader {
           } else if (c === 10 || c === 13) {
             flushRun(i);
             out.push(this.endRecord());
-            if (c === 13) {
-              if (i + 1 < n) {
-                if (text.charCodeAt(i + 1) === 10) i++;
-              } else this.pendingCr = true;
-            }
-            this.line++;
+            i = this.lineBreakEnd(text, i, c);
             runStart = i + 1;
           } else if (c === 34 /* " */) {
             flushRun(i);
@@ -166,12 +161,7 @@ export class CsvReader {
             runStart = i + 1;
           } else if (c === 10 || c === 13) {
             out.push(this.endRecord());
-            if (c === 13) {
-              if (i + 1 < n) {
-                if (text.charCodeAt(i + 1) === 10) i++;
-              } else this.pendingCr = true;
-            }
-            this.line++;
+            i = this.lineBreakEnd(text, i, c);
             runStart = i + 1;
           } else if (c !== 32 && c !== 9) {
             this.fail('text after the closing quote of a field');
@@ -202,6 +192,18 @@ export class CsvReader {
     if (!this.oversized) this.fields.push(this.field);
     this.field = '';
     this.state = State.FieldStart;
+  }
+
+  /**
+   * After a record ended at the line break `c` (CR or LF) at `i`: counts the line and returns the
+   * break's last index (a CR LF pair is one break; a CR last in the chunk waits for the next one).
+   */
+  private lineBreakEnd(text: string, i: number, c: number): number {
+    this.line++;
+    if (c !== 13) return i;
+    if (i + 1 < text.length) return text.charCodeAt(i + 1) === 10 ? i + 1 : i;
+    this.pendingCr = true;
+    return i;
   }
 
   private endRecord(): CsvRecord {

@@ -11,21 +11,10 @@ import { CORRECTED_KEYS, PROCEDURES, type Roughness } from '../core/index';
 import type { LengthUnit } from '../core/input/units';
 import type { DoublyCurvedComparison, DoublyCurvedRow } from '../core/procedures/compareDoublyCurved';
 import type { DoublyCurvedInverse, DoublyCurvedPass } from '../core/surfaces/doublyCurved/index';
-import { curvatureLabel, type Extras, extrasJson, type JsonValue, roughnessLines } from './report';
+import { curvatureLabel, type Extras, extrasJson, type JsonObject, roughnessLines } from './report';
+import { flankFacts, indent, KEY_VALUE, toolKind } from './reportExtras';
+import { inverseExactJson } from './reportJson';
 import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
-
-type JsonObject = { [key: string]: JsonValue };
-
-const KEY_VALUE: readonly Column[] = [
-  { header: '', align: 'left' },
-  { header: '', align: 'right' },
-  { header: '', align: 'left' },
-  { header: '', align: 'left' },
-];
-
-function indent(lines: readonly string[]): string[] {
-  return lines.map((l) => `  ${l}`);
-}
 
 /** The kind of point from the signs of its radii. */
 export function pointKind(rf: number, rc: number): string {
@@ -35,12 +24,7 @@ export function pointKind(rf: number, rc: number): string {
 }
 
 function caseLine(p: DoublyCurvedPass, L: Lengths): string {
-  const kind =
-    p.cornerRadiusMm === p.toolRadiusMm
-      ? 'Ball end mill'
-      : p.cornerRadiusMm === 0
-        ? 'Flat end mill'
-        : 'Filleted end mill';
+  const kind = toolKind(p.toolRadiusMm, p.cornerRadiusMm);
   return (
     `${kind} R = ${L.echo(p.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(p.cornerRadiusMm)} ${L.u}; ` +
     `lead rho = ${echo(p.leadAngleDeg)} deg, tilt beta = ${echo(p.tiltAngleDeg)} deg; ${p.pattern} passes ` +
@@ -80,9 +64,7 @@ export function doublyCurvedForwardTable(
   const facts: string[][] = [
     ['L', L.length(e.intervalMm), L.u, 'step-over: arc length along the surface between adjacent CC paths'],
     ['L/2', L.length(e.intervalMm / 2), L.u, 'half step-over'],
-    ['wR', L.length(e.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at the cusp'],
-    ['wL', L.length(e.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at the cusp'],
-    ['y0', L.length(e.contactOffsetMm), L.u, 'contact offset: the tool centre point runs -y0 (in Y) from its CC path'],
+    ...flankFacts(e, L, 'the cusp'),
     ['h', L.length(e.cuspHeightMm), L.u, p.pattern === 'zigzag' ? 'highest cusp' : 'cusp height'],
   ];
   if (e.otherCuspHeightMm !== null) facts.push(['h2', L.length(e.otherCuspHeightMm), L.u, 'other cusp, zigzag']);
@@ -141,11 +123,7 @@ export function doublyCurvedInverseTable(
       ['hL', L.length(e.leftCuspHeightMm), L.u, 'cusp between left flanks (wL = L/2)'],
     );
   }
-  facts.push(
-    ['wR', L.length(e.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at its cusp'],
-    ['wL', L.length(e.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at its cusp'],
-    ['y0', L.length(e.contactOffsetMm), L.u, 'contact offset: the tool centre point runs -y0 (in Y) from its CC path'],
-  );
+  facts.push(...flankFacts(e, L, 'its cusp'));
   return [
     caseLine(p, L),
     `Step-over L = ${L.echo(e.intervalMm)} ${L.u} (L/2 = ${L.echo(e.intervalMm / 2)} ${L.u}) along the surface between CC paths`,
@@ -214,17 +192,7 @@ export function doublyCurvedForwardJson(
 
 /** The inverse answer at a doubly curved point as JSON. */
 export function doublyCurvedInverseJson(p: DoublyCurvedPass, e: DoublyCurvedInverse, roughness: Roughness): JsonObject {
-  const exact: JsonObject = {
-    scallopHeight: e.cuspHeightMm,
-    rightCuspHeight: e.rightCuspHeightMm,
-    leftCuspHeight: e.leftCuspHeightMm,
-  };
-  if (e.otherCuspHeightMm !== null) exact.otherCuspHeight = e.otherCuspHeightMm;
-  exact.interval = e.intervalMm;
-  exact.halfInterval = e.intervalMm / 2;
-  exact.halfWidthRight = e.halfWidthRightMm;
-  exact.halfWidthLeft = e.halfWidthLeftMm;
-  exact.contactOffset = e.contactOffsetMm;
+  const exact = inverseExactJson(e);
   return {
     unit: 'mm',
     input: { ...inputJson(p), interval: e.intervalMm, halfInterval: e.intervalMm / 2 },

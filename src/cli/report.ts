@@ -19,7 +19,7 @@ import {
   type Surface,
 } from '../core/index';
 import type { LengthUnit } from '../core/input/units';
-import { type Extras, indent, KEY_VALUE, roughnessLines, simulationLines } from './reportExtras';
+import { type Extras, flankFacts, indent, KEY_VALUE, roughnessLines, simulationLines, toolKind } from './reportExtras';
 import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
 
 /** The table's lengths in mm. */
@@ -27,7 +27,7 @@ const MM = lengthsIn('mm');
 
 /** The extras (reportExtras.ts) and the JSON (reportJson.ts), re-exported for the callers. */
 export { type Extras, roughnessLines, ruleOfThumb, type SimulationRun } from './reportExtras';
-export { extrasJson, forwardJson, inverseJson, type JsonValue } from './reportJson';
+export { extrasJson, forwardJson, inverseJson, type JsonObject, type JsonValue } from './reportJson';
 
 /** The paper's procedures: their inverse is named by its equation. */
 const PAPER_KEYS: readonly ApproximationKey[] = ['sekine', 'redonnet', 'bedi'];
@@ -45,12 +45,6 @@ export function inverseLabel(key: ApproximationKey, tiltDeg: number): string {
   return p.leadOnly && tiltDeg !== 0 ? `${base}, lead only` : base;
 }
 
-function toolKind(input: PassInput): string {
-  if (input.cornerRadiusMm === input.toolRadiusMm) return 'Ball end mill';
-  if (input.cornerRadiusMm === 0) return 'Flat end mill';
-  return 'Filleted end mill';
-}
-
 /** The design surface in words: `plane`, or the cylinder with its signed radius and axis. */
 export function surfaceText(surface: Surface, L: Lengths = MM): string {
   if (surface.kind === 'plane') return 'on a plane';
@@ -64,7 +58,7 @@ export function surfaceText(surface: Surface, L: Lengths = MM): string {
 
 function caseLine(input: PassInput, L: Lengths): string {
   return (
-    `${toolKind(input)} R = ${L.echo(input.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(input.cornerRadiusMm)} ${L.u}; ` +
+    `${toolKind(input.toolRadiusMm, input.cornerRadiusMm)} R = ${L.echo(input.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(input.cornerRadiusMm)} ${L.u}; ` +
     `lead rho = ${echo(input.leadAngleDeg)} deg, tilt beta = ${echo(input.tiltAngleDeg)} deg; ${input.pattern} passes ` +
     surfaceText(input.surface, L)
   );
@@ -118,14 +112,7 @@ export function forwardTable(c: ForwardComparison, extras: Extras = {}, unit: Le
   const facts: string[][] = [
     ['L', L.length(exact.intervalMm), L.u, 'step-over: between adjacent cutter-contact (CC) paths'],
     ['L/2', L.length(exact.halfIntervalMm), L.u, 'half step-over'],
-    ['wR', L.length(exact.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at the cusp'],
-    ['wL', L.length(exact.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at the cusp'],
-    [
-      'y0',
-      L.length(exact.contactOffsetMm),
-      L.u,
-      'contact offset: the tool centre point runs -y0 (in Y) from its CC path',
-    ],
+    ...flankFacts(exact, L, 'the cusp'),
     ['h', L.length(exact.cuspHeightMm), L.u, zigzag ? 'highest cusp (between the narrower flanks)' : 'cusp height'],
   ];
   if (exact.otherCuspHeightMm !== null) {
@@ -163,26 +150,18 @@ export function forwardTable(c: ForwardComparison, extras: Extras = {}, unit: Le
     const label = forwardLabel(key, input.tiltAngleDeg);
     rows.push(forwardRow(label, c.approximations[key], PROCEDURES[key].shortLabel, notes, L));
   }
-  out.push(...renderTable(columns, rows));
-  if (c.curvature !== null) {
-    const k = c.curvature;
-    const curved: string[][] = [forwardRow(curvatureLabel('plane'), k.plane, 'Plane', notes, L)];
-    for (const key of CORRECTED_KEYS) {
-      curved.push(forwardRow(curvatureLabel(key), k.corrected[key], PROCEDURES[key].shortLabel, notes, L));
-    }
-    out.push('', 'On the cylinder: the plane answer and the usual curvature corrections, beside the exact one:');
-    out.push(...renderTable(columns, curved));
-  }
-  out.push('', 'dev L: step-over minus the exact one; real h: the scallop that step-over really leaves (exact).');
-  if (c.curvature !== null) {
-    out.push('Above the cylinder rows: the approximations as on a plane (they ignore the curvature).');
-  }
-  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exact.cuspHeightMm, L));
-  if (extras.simulation !== undefined) {
-    out.push('', ...simulationLines(extras.simulation, exact.cuspHeightMm, extras.roughness, L));
-  }
-  if (notes.lines.length > 0) out.push('', ...notes.lines);
-  return out.join('\n');
+  const k = c.curvature;
+  const curved =
+    k === null
+      ? null
+      : [
+          forwardRow(curvatureLabel('plane'), k.plane, 'Plane', notes, L),
+          ...CORRECTED_KEYS.map((key) =>
+            forwardRow(curvatureLabel(key), k.corrected[key], PROCEDURES[key].shortLabel, notes, L),
+          ),
+        ];
+  const devLine = 'dev L: step-over minus the exact one; real h: the scallop that step-over really leaves (exact).';
+  return tablesAndExtras(out, columns, rows, curved, devLine, extras, exact.cuspHeightMm, notes, L);
 }
 
 /** The inverse answer (step-over to scallop height) as a table, with the extras that were computed. */
@@ -202,16 +181,7 @@ export function inverseTable(c: InverseComparison, extras: Extras = {}, unit: Le
       ['hL', L.length(exact.leftCuspHeightMm), L.u, 'cusp between left flanks (wL = L/2)'],
     );
   }
-  facts.push(
-    ['wR', L.length(exact.halfWidthRightMm), L.u, 'right flank (+Y) from the contact, at its cusp'],
-    ['wL', L.length(exact.halfWidthLeftMm), L.u, 'left flank (-Y) from the contact, at its cusp'],
-    [
-      'y0',
-      L.length(exact.contactOffsetMm),
-      L.u,
-      'contact offset: the tool centre point runs -y0 (in Y) from its CC path',
-    ],
-  );
+  facts.push(...flankFacts(exact, L, 'its cusp'));
   out.push(`${PROCEDURES.exact.label}:`, ...indent(renderTable(KEY_VALUE, facts, false)));
   if (exact.cuspHeightMm === 0) {
     out.push('  No scallop: the flat bottom lying on the plane covers this step-over.');
@@ -230,21 +200,54 @@ export function inverseTable(c: InverseComparison, extras: Extras = {}, unit: Le
   for (const key of APPROXIMATION_KEYS) {
     rows.push(inverseRow(inverseLabel(key, input.tiltAngleDeg), c.approximations[key], notes, L));
   }
+  const k = c.curvature;
+  const curved =
+    k === null
+      ? null
+      : [
+          inverseRow(curvatureLabel('plane'), k.plane, notes, L),
+          ...CORRECTED_KEYS.map((key) => inverseRow(curvatureLabel(key), k.corrected[key], notes, L)),
+        ];
+  return tablesAndExtras(
+    out,
+    columns,
+    rows,
+    curved,
+    'dev: scallop height minus the exact one.',
+    extras,
+    exact.cuspHeightMm,
+    notes,
+    L,
+  );
+}
+
+/**
+ * The end of both directions' reports: the table of the procedures, the cylinder's rows beneath it
+ * (when there are any), the line saying what dev means, the extras and the notes; all joined.
+ */
+function tablesAndExtras(
+  out: string[],
+  columns: Column[],
+  rows: string[][],
+  curved: string[][] | null,
+  devLine: string,
+  extras: Extras,
+  exactCuspHeightMm: number,
+  notes: Notes,
+  L: Lengths,
+): string {
   out.push(...renderTable(columns, rows));
-  if (c.curvature !== null) {
-    const k = c.curvature;
-    const curved: string[][] = [inverseRow(curvatureLabel('plane'), k.plane, notes, L)];
-    for (const key of CORRECTED_KEYS) curved.push(inverseRow(curvatureLabel(key), k.corrected[key], notes, L));
+  if (curved !== null) {
     out.push('', 'On the cylinder: the plane answer and the usual curvature corrections, beside the exact one:');
     out.push(...renderTable(columns, curved));
   }
-  out.push('', 'dev: scallop height minus the exact one.');
-  if (c.curvature !== null) {
+  out.push('', devLine);
+  if (curved !== null) {
     out.push('Above the cylinder rows: the approximations as on a plane (they ignore the curvature).');
   }
-  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exact.cuspHeightMm, L));
+  if (extras.roughness !== undefined) out.push('', ...roughnessLines(extras.roughness, exactCuspHeightMm, L));
   if (extras.simulation !== undefined) {
-    out.push('', ...simulationLines(extras.simulation, exact.cuspHeightMm, extras.roughness, L));
+    out.push('', ...simulationLines(extras.simulation, exactCuspHeightMm, extras.roughness, L));
   }
   if (notes.lines.length > 0) out.push('', ...notes.lines);
   return out.join('\n');

@@ -104,3 +104,23 @@ export const KEY_VALUE: readonly Column[] = [
 export function indent(lines: readonly string[]): string[] {
   return lines.map((l) => `  ${l}`);
 }
+
+/** The tool's kind, by its corner radius: ball (Rcr = R), flat (Rcr = 0) or filleted. */
+export function toolKind(toolRadiusMm: number, cornerRadiusMm: number): string {
+  if (cornerRadiusMm === toolRadiusMm) return 'Ball end mill';
+  if (cornerRadiusMm === 0) return 'Flat end mill';
+  return 'Filleted end mill';
+}
+
+/** The flanks' widths and the contact offset as fact rows; `cusp` says which cusp ('the cusp', 'its cusp'). */
+export function flankFacts(
+  e: { readonly halfWidthRightMm: number; readonly halfWidthLeftMm: number; readonly contactOffsetMm: number },
+  L: Lengths,
+  cusp: string,
+): string[][] {
+  return [
+    ['wR', L.length(e.halfWidthRightMm), L.u, `right flank (+Y) from the contact, at ${cusp}`],
+    ['wL', L.length(e.halfWidthLeftMm), L.u, `left flank (-Y) from the contact, at ${cusp}`],
+    ['y0', L.length(e.contactOffsetMm), L.u, 'contact offset: the tool centre point runs -y0 (in Y) from its CC path'],
+  ];
+}

@@ -18,7 +18,8 @@ import { type Extras, ruleOfThumb } from './reportExtras';
 
 /** JSON data: numbers are always finite; a value that does not exist is left out, never null. */
 export type JsonValue = number | string | boolean | JsonValue[] | { [key: string]: JsonValue };
-type JsonObject = { [key: string]: JsonValue };
+/** A JSON object of {@link JsonValue}s. */
+export type JsonObject = { [key: string]: JsonValue };
 
 /** The tool, posture, pattern and surface as validation reads them (a plane has no surface fields: left out). */
 function toolJson(input: PassInput): JsonObject {
@@ -129,20 +130,35 @@ function inverseEstimateJson(r: InverseEstimate): JsonObject {
   return out;
 }
 
+/** The exact inverse answer's fields (cusp heights, step-over, flank widths, contact offset), in the documented order. */
+export function inverseExactJson(e: {
+  readonly cuspHeightMm: number;
+  readonly rightCuspHeightMm: number;
+  readonly leftCuspHeightMm: number;
+  readonly otherCuspHeightMm: number | null;
+  readonly intervalMm: number;
+  readonly halfWidthRightMm: number;
+  readonly halfWidthLeftMm: number;
+  readonly contactOffsetMm: number;
+}): JsonObject {
+  const out: JsonObject = {
+    scallopHeight: e.cuspHeightMm,
+    rightCuspHeight: e.rightCuspHeightMm,
+    leftCuspHeight: e.leftCuspHeightMm,
+  };
+  if (e.otherCuspHeightMm !== null) out.otherCuspHeight = e.otherCuspHeightMm;
+  out.interval = e.intervalMm;
+  out.halfInterval = e.intervalMm / 2;
+  out.halfWidthRight = e.halfWidthRightMm;
+  out.halfWidthLeft = e.halfWidthLeftMm;
+  out.contactOffset = e.contactOffsetMm;
+  return out;
+}
+
 /** The inverse comparison as the documented JSON object (lengths mm, angles degrees). */
 export function inverseJson(c: InverseComparison, extras: Extras = {}): JsonObject {
   const { exact } = c;
-  const exactOut: JsonObject = {
-    scallopHeight: exact.cuspHeightMm,
-    rightCuspHeight: exact.rightCuspHeightMm,
-    leftCuspHeight: exact.leftCuspHeightMm,
-  };
-  if (exact.otherCuspHeightMm !== null) exactOut.otherCuspHeight = exact.otherCuspHeightMm;
-  exactOut.interval = exact.intervalMm;
-  exactOut.halfInterval = exact.intervalMm / 2;
-  exactOut.halfWidthRight = exact.halfWidthRightMm;
-  exactOut.halfWidthLeft = exact.halfWidthLeftMm;
-  exactOut.contactOffset = exact.contactOffsetMm;
+  const exactOut = inverseExactJson(exact);
   const out: JsonObject = {
     unit: 'mm',
     input: { ...toolJson(c.input), interval: c.input.intervalMm, halfInterval: c.input.intervalMm / 2 },

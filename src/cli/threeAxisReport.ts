@@ -8,32 +8,19 @@
 import type { LengthUnit } from '../core/input/units';
 import type { SlopeSweep, SlopeSweepInput } from '../core/threeAxis/slopeSweep';
 import type { ThreeAxisAnswer, ThreeAxisProblem, ThreeAxisQuantity } from '../core/threeAxis/validate';
-import type { JsonValue } from './report';
+import type { JsonObject, JsonValue } from './report';
+import { KEY_VALUE, toolKind } from './reportExtras';
 import { type Column, echo, type Lengths, length, lengthsIn, renderTable } from './table';
-
-type JsonObject = { [key: string]: JsonValue };
-
-const KEY_VALUE: readonly Column[] = [
-  { header: '', align: 'left' },
-  { header: '', align: 'right' },
-  { header: '', align: 'left' },
-  { header: '', align: 'left' },
-];
 
 /** An angle (degrees) for the table: 7 significant digits, never -0. */
 function angle(deg: number): string {
   return length(deg === 0 ? 0 : deg);
 }
 
-function toolKind(p: ThreeAxisProblem): string {
-  const { toolRadiusMm: R, cornerRadiusMm: Rcr } = p.case;
-  return Rcr === R ? 'Ball end mill' : Rcr === 0 ? 'Flat end mill' : 'Filleted end mill';
-}
-
 /** The case in words: the tool, upright; the surface and the passes. */
 function caseLine(p: ThreeAxisProblem, L: Lengths): string {
   const c = p.case;
-  const tool = `${toolKind(p)} R = ${L.echo(c.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(c.cornerRadiusMm)} ${L.u}, upright (three-axis)`;
+  const tool = `${toolKind(c.toolRadiusMm, c.cornerRadiusMm)} R = ${L.echo(c.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(c.cornerRadiusMm)} ${L.u}, upright (three-axis)`;
   if (p.surface === 'plane') {
     const passes =
       p.case.passes === 'raster'
@@ -127,12 +114,7 @@ export interface SweepStep {
 }
 
 function sweepCaseLine(i: SlopeSweepInput, L: Lengths): string {
-  const kind =
-    i.cornerRadiusMm === i.toolRadiusMm
-      ? 'Ball end mill'
-      : i.cornerRadiusMm === 0
-        ? 'Flat end mill'
-        : 'Filleted end mill';
+  const kind = toolKind(i.toolRadiusMm, i.cornerRadiusMm);
   const tool = `${kind} R = ${L.echo(i.toolRadiusMm)} ${L.u}, Rcr = ${L.echo(i.cornerRadiusMm)} ${L.u}, upright (three-axis)`;
   if (i.passes === 'raster') return `${tool}; raster passes at psi = ${echo(i.rasterAngleDeg)} deg to the fall line`;
   const radius = (r: number | null | undefined) => (r === null || r === undefined ? 'straight' : `${L.echo(r)} ${L.u}`);

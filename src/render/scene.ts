@@ -27,7 +27,7 @@
  *  - `dispose()` disconnects the observers and the canvas listeners and frees every GPU resource
  *    and DOM node it made.
  */
-import { AmbientLight, DirectionalLight, Group, type Object3D } from 'three';
+import { Group, type Object3D } from 'three';
 import type { SceneGeometry, TraceFrame } from '../worker/protocol';
 import { type CameraPreset, fitCamera, presetDirection, type Vec3 } from './cameraFit';
 import { drawnBoundingSphere } from './clipPlanes';
@@ -43,7 +43,7 @@ import { TraceDrawable, type TraceSizes } from './drawables/trace';
 import { gatherFramePoints } from './framePoints';
 import { heightMapFor, sceneHeightExaggeration } from './heightExaggeration';
 import { LabelAnchor, LabelLayer } from './labelLayer';
-import { View3D } from './view3d';
+import { ViewedScene } from './view3d';
 
 export type { CameraPreset } from './cameraFit';
 export type { SceneLabels } from './drawables/parts';
@@ -72,8 +72,7 @@ export interface SceneFraming {
   readonly autoFit: boolean;
 }
 
-export class ToolScene {
-  private readonly view: View3D;
+export class ToolScene extends ViewedScene {
   private readonly labels: LabelLayer;
   /**
    * The parts, built in this order: the lines and dots drawn over everything are drawn in the
@@ -118,7 +117,7 @@ export class ToolScene {
   private readonly points: number[] = [];
 
   constructor(private readonly container: HTMLElement) {
-    this.view = new View3D(container, {
+    super(container, {
       testId: 'scene-canvas',
       ariaLabel: '3D view of the tool in its posture, its neighbouring passes and the cusp sections',
       fovDeg: 40,
@@ -127,6 +126,7 @@ export class ToolScene {
       backgroundProperty: '--scene-bg',
       themed: THEMED_COLOURS,
       quality: 'adaptive',
+      lights: { ambient: 1.2, sun: 1.6, sunFrom: [3, -4, 6] },
     });
     this.labels = new LabelLayer(container, () => this.requestRender());
     const { scene, camera, controls } = this.view;
@@ -137,10 +137,6 @@ export class ToolScene {
       if (this.fittedRadiusMm > 0 && this.autoFit) this.fitView();
     };
     this.view.afterRender = () => this.labels.layout(scene, camera, this.view.widthPx, this.view.heightPx);
-    scene.add(new AmbientLight(0xffffff, 1.2));
-    const sun = new DirectionalLight(0xffffff, 1.6);
-    sun.position.set(3, -4, 6);
-    scene.add(sun);
     for (const d of this.drawables) this.world.add(...d.objects);
     this.world.matrixAutoUpdate = false;
     scene.add(this.world);
@@ -152,11 +148,6 @@ export class ToolScene {
     for (const badge of container.querySelectorAll<HTMLElement>('.stale-badge, .scene-scale'))
       this.labels.watchBadge(badge);
     this.view.resize();
-  }
-
-  /** Frames rendered so far. */
-  get frames(): number {
-    return this.view.frames;
   }
 
   /** Called after each rendered frame. */
@@ -307,19 +298,9 @@ export class ToolScene {
     this.requestRender();
   }
 
-  /** Takes the scene's colours from the stylesheet's current theme (on start and each change) and redraws. */
-  applyTheme(): void {
-    this.view.applyTheme();
-  }
-
-  /** Renders on the next animation frame (several requests in one frame render once). */
-  requestRender(): void {
-    this.view.requestRender();
-  }
-
   /** Frees everything the scene made: observers, listeners, GPU resources and DOM nodes. */
-  dispose(): void {
-    this.view.dispose();
+  override dispose(): void {
+    super.dispose();
     this.labels.dispose();
     for (const d of this.drawables) d.dispose();
     this.trace.dispose();

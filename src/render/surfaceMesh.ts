@@ -6,28 +6,19 @@
  * WebGL context is restored it takes the theme's background again and draws its last surface
  * without any input.
  */
-import {
-  AmbientLight,
-  BufferAttribute,
-  BufferGeometry,
-  DirectionalLight,
-  DoubleSide,
-  Mesh,
-  MeshLambertMaterial,
-} from 'three';
+import { BufferAttribute, BufferGeometry, DoubleSide, Mesh, MeshLambertMaterial } from 'three';
 import { type HeightField, type SurfaceGrid, surfaceGrid } from './surfaceGrid';
-import { View3D } from './view3d';
+import { ViewedScene } from './view3d';
 
 const SURFACE_BACKGROUND = 0xf4f6f9;
 
 /** One small WebGL view of the simulated surface. */
-export class SurfaceScene {
-  private readonly view: View3D;
+export class SurfaceScene extends ViewedScene {
   private readonly geometry = new BufferGeometry();
   private readonly mesh = new Mesh(this.geometry, new MeshLambertMaterial({ vertexColors: true, side: DoubleSide }));
 
   constructor(container: HTMLElement) {
-    this.view = new View3D(container, {
+    super(container, {
       testId: 'surface-canvas',
       ariaLabel: '3D view of the simulated machined surface, coloured by height',
       fovDeg: 35,
@@ -35,18 +26,9 @@ export class SurfaceScene {
       background: SURFACE_BACKGROUND,
       backgroundProperty: '--surface-bg',
       quality: 'cheap',
+      lights: { ambient: 1.4, sun: 1.5, sunFrom: [2, -3, 5] },
     });
-    const { scene } = this.view;
-    scene.add(new AmbientLight(0xffffff, 1.4));
-    const sun = new DirectionalLight(0xffffff, 1.5);
-    sun.position.set(2, -3, 5);
-    scene.add(sun);
-    scene.add(this.mesh);
-  }
-
-  /** Frames drawn (tests read it through the view). */
-  get frames(): number {
-    return this.view.frames;
+    this.view.scene.add(this.mesh);
   }
 
   /** Shows a height field, heights times `exaggeration`. */
@@ -69,18 +51,9 @@ export class SurfaceScene {
     return g;
   }
 
-  /** Takes the background from the stylesheet's current theme (`--surface-bg`) and redraws. */
-  applyTheme(): void {
-    this.view.applyTheme();
-  }
-
-  requestRender(): void {
-    this.view.requestRender();
-  }
-
   /** Frees the view and the surface's GPU resources. */
-  dispose(): void {
-    this.view.dispose();
+  override dispose(): void {
+    super.dispose();
     this.geometry.dispose();
     this.mesh.material.dispose();
   }

@@ -17,7 +17,17 @@
  *  - `dispose()` disconnects the resize observer and the canvas listeners, frees the renderer and
  *    removes the canvas (the owner frees what it drew).
  */
-import { Color, type Material, type Mesh, PerspectiveCamera, Scene, Sphere, WebGLRenderer } from 'three';
+import {
+  AmbientLight,
+  Color,
+  DirectionalLight,
+  type Material,
+  type Mesh,
+  PerspectiveCamera,
+  Scene,
+  Sphere,
+  WebGLRenderer,
+} from 'three';
 import { fitClipPlanes } from './clipPlanes';
 import { OrbitController } from './orbit';
 
@@ -39,6 +49,12 @@ export interface View3DOptions {
    * rasteriser; `cheap`: neither, on any device.
    */
   readonly quality: 'adaptive' | 'cheap';
+  /** The white lights, added first: an ambient one and a sun shining from `sunFrom` (intensities). */
+  readonly lights: {
+    readonly ambient: number;
+    readonly sun: number;
+    readonly sunFrom: readonly [number, number, number];
+  };
 }
 
 /**
@@ -148,6 +164,11 @@ export class View3D {
     canvas.style.touchAction = 'pan-y';
     this.controls.onChange = () => this.requestRender();
     this.resizeObserver.observe(container);
+    const { ambient, sun, sunFrom } = options.lights;
+    this.scene.add(new AmbientLight(0xffffff, ambient));
+    const sunLight = new DirectionalLight(0xffffff, sun);
+    sunLight.position.set(...sunFrom);
+    this.scene.add(sunLight);
   }
 
   /** Takes the colours from the stylesheet's current theme (on start and each change) and redraws. */
@@ -204,5 +225,34 @@ export class View3D {
     this.afterRender = null;
     this.afterResize = null;
     this.onFrame = null;
+  }
+}
+
+/** What owns one {@link View3D} (the page's two 3D views): frames, theme, render requests and disposal go to the view. */
+export class ViewedScene {
+  protected readonly view: View3D;
+
+  constructor(container: HTMLElement, options: View3DOptions) {
+    this.view = new View3D(container, options);
+  }
+
+  /** Frames rendered so far (tests read it). */
+  get frames(): number {
+    return this.view.frames;
+  }
+
+  /** Takes the colours from the stylesheet's current theme (on start and each change) and redraws. */
+  applyTheme(): void {
+    this.view.applyTheme();
+  }
+
+  /** Renders on the next animation frame (several requests in one frame render once). */
+  requestRender(): void {
+    this.view.requestRender();
+  }
+
+  /** Frees the view; an owner frees what it drew, then calls this. */
+  dispose(): void {
+    this.view.dispose();
   }
 }

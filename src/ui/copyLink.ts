@@ -5,6 +5,55 @@
  */
 import { html } from './dom';
 
+/** What a copy button says: on success, when the clipboard is refused, and for how long (null: until the next). */
+export interface CopyWords {
+  readonly copied: string;
+  readonly refused: string;
+  readonly clearAfterMs: number | null;
+}
+
+/**
+ * Wires a copy button: on click it copies `text()` and says so in `status` (a live region); if the
+ * clipboard is refused, the text is shown in `fallback` (a read-only field placed after `status`), selected.
+ */
+export function wireClipboardCopy(
+  button: HTMLButtonElement,
+  status: HTMLElement,
+  fallback: HTMLInputElement | HTMLTextAreaElement,
+  text: () => string,
+  words: CopyWords,
+): void {
+  fallback.hidden = true;
+  status.after(fallback);
+  let timer: ReturnType<typeof setTimeout> | null = null;
+  const say = (message: string): void => {
+    status.textContent = message;
+    if (words.clearAfterMs === null) return;
+    if (timer !== null) clearTimeout(timer);
+    timer = setTimeout(() => {
+      status.textContent = '';
+    }, words.clearAfterMs);
+  };
+  button.addEventListener('click', () => {
+    const value = text();
+    fallback.value = value;
+    const refused = (): void => {
+      fallback.hidden = false;
+      fallback.select();
+      say(words.refused);
+    };
+    const clipboard = navigator.clipboard;
+    if (!clipboard) {
+      refused();
+      return;
+    }
+    clipboard.writeText(value).then(() => {
+      fallback.hidden = true;
+      say(words.copied);
+    }, refused);
+  });
+}
+
 /**
  * Wires the button: on click it copies `link()` and says so in `status` (a live region); if the
  * clipboard is refused, the link is shown in a read-only field, selected.
@@ -17,24 +66,9 @@ export function wireCopyLink(button: HTMLButtonElement, status: HTMLElement, lin
     'aria-label': 'Link to this state',
     'data-testid': 'link-text',
   });
-  fallback.hidden = true;
-  status.after(fallback);
-  button.addEventListener('click', () => {
-    const text = link();
-    fallback.value = text;
-    const refused = (): void => {
-      fallback.hidden = false;
-      fallback.select();
-      status.textContent = 'Copying was refused by the browser: the link is selected below, copy it by hand.';
-    };
-    const clipboard = navigator.clipboard;
-    if (!clipboard) {
-      refused();
-      return;
-    }
-    clipboard.writeText(text).then(() => {
-      fallback.hidden = true;
-      status.textContent = 'Link copied: it opens this calculator with these inputs.';
-    }, refused);
+  wireClipboardCopy(button, status, fallback, link, {
+    copied: 'Link copied: it opens this calculator with these inputs.',
+    refused: 'Copying was refused by the browser: the link is selected below, copy it by hand.',
+    clearAfterMs: null,
   });
 }

@@ -5,6 +5,7 @@
  * and says so; where the clipboard is refused it shows the code selected, to copy by hand.
  */
 import { embedAttributeOfParam } from '../core/input/fields';
+import { wireClipboardCopy } from './copyLink';
 import { html } from './dom';
 
 function escapeAttribute(text: string): string {
@@ -46,32 +47,9 @@ export function wireCopyEmbed(button: HTMLButtonElement, status: HTMLElement, co
     'aria-label': 'Embed code',
     'data-testid': 'embed-code',
   });
-  fallback.hidden = true;
-  status.after(fallback);
-  let timer: ReturnType<typeof setTimeout> | null = null;
-  const say = (text: string): void => {
-    status.textContent = text;
-    if (timer !== null) clearTimeout(timer);
-    timer = setTimeout(() => {
-      status.textContent = '';
-    }, 4000);
-  };
-  button.addEventListener('click', () => {
-    const text = code();
-    fallback.value = text;
-    const clipboard = navigator.clipboard;
-    const refused = (): void => {
-      fallback.hidden = false;
-      fallback.select();
-      say('Copying was refused by the browser: the embed code is selected below, copy it with Ctrl+C.');
-    };
-    if (!clipboard) {
-      refused();
-      return;
-    }
-    clipboard.writeText(text).then(() => {
-      fallback.hidden = true;
-      say('Embed code copied: an iframe and the <path-interval-calculator> element.');
-    }, refused);
+  wireClipboardCopy(button, status, fallback, code, {
+    copied: 'Embed code copied: an iframe and the <path-interval-calculator> element.',
+    refused: 'Copying was refused by the browser: the embed code is selected below, copy it with Ctrl+C.',
+    clearAfterMs: 4000,
   });
 }

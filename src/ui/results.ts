@@ -180,20 +180,28 @@ export class ResultsPanel {
         : '',
     );
     must<HTMLElement>(this.root, '[data-testid="no-scallop"]').hidden = !flat;
-    const zigzag = (ok?.request.input.pattern ?? null) === 'zigzag';
+    this.cuspsAndShare((ok?.request.input.pattern ?? null) === 'zigzag', e, value, ok?.request.input.toolRadiusMm);
+    const leadOnly = (ok ? ok.request.input.tiltAngleDeg : (tiltDeg ?? 0)) !== 0;
+    this.setMeaning(ok ? surfaceMeaning(ok.request.input.surface, unit) : '');
+    this.table(ok, unit, drawMode, leadOnly);
+  }
+
+  /** The zigzag's two cusp heights (dashes otherwise) and L as a share of the tool diameter (R mm). */
+  private cuspsAndShare(
+    zigzag: boolean,
+    e: { readonly cuspHeightMm: number; readonly otherCuspHeightMm: number | null; readonly intervalMm: number } | null,
+    value: (mm: number | null | undefined, resolution: 'length' | 'height') => string,
+    R: number | undefined,
+  ): void {
     this.cuspRow.hidden = !zigzag;
     this.set('result-cusp-height', zigzag ? value(e?.cuspHeightMm, 'height') : NO_VALUE);
     this.set('result-other-cusp-height', zigzag ? value(e?.otherCuspHeightMm, 'height') : NO_VALUE);
-    const R = ok?.request.input.toolRadiusMm;
     this.set(
       'result-percent-diameter',
       e === null || R === undefined
         ? ''
         : `L = ${formatPercent((100 * e.intervalMm) / (2 * R), 1).replace(/^\+/, '')} % of the tool diameter`,
     );
-    const leadOnly = (ok ? ok.request.input.tiltAngleDeg : (tiltDeg ?? 0)) !== 0;
-    this.setMeaning(ok ? surfaceMeaning(ok.request.input.surface, unit) : '');
-    this.table(ok, unit, drawMode, leadOnly);
   }
 
   private setMeaning(text: string): void {
@@ -235,17 +243,7 @@ export class ResultsPanel {
     if (centre) setCopyValue(centre, current ? formatLen(-e.contactOffsetMm, unit) : null, unit);
     this.set('no-scallop', '');
     must<HTMLElement>(this.root, '[data-testid="no-scallop"]').hidden = true;
-    const zigzag = e?.pattern === 'zigzag';
-    this.cuspRow.hidden = !zigzag;
-    this.set('result-cusp-height', zigzag ? value(e?.cuspHeightMm, 'height') : NO_VALUE);
-    this.set('result-other-cusp-height', zigzag ? value(e?.otherCuspHeightMm, 'height') : NO_VALUE);
-    const R = reply?.request.input.toolRadiusMm;
-    this.set(
-      'result-percent-diameter',
-      e === null || R === undefined
-        ? ''
-        : `L = ${formatPercent((100 * e.intervalMm) / (2 * R), 1).replace(/^\+/, '')} % of the tool diameter`,
-    );
+    this.cuspsAndShare(e?.pattern === 'zigzag', e, value, reply?.request.input.toolRadiusMm);
     this.setMeaning(reply === null ? '' : curvedMeaning(reply, unit));
     this.table(reply, unit, forward ? 'forward' : 'inverse', false);
   }

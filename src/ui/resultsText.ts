@@ -9,38 +9,46 @@ import type { Surface } from '../core/surfaces/cylinder';
 import type { ProcedureNote } from '../worker/protocol';
 import { formatLenUnit } from './format';
 
-/** A procedure's note in words, lengths in the user's unit. */
-export function noteText(key: ProcedureKey, note: ProcedureNote, unit: LengthUnit): string {
-  const label = PROCEDURES[key].shortLabel;
+/** A note that a row's answer lies beyond its model (a circle or an ellipse, and its limit). */
+type BeyondModelNote = Extract<ProcedureNote, { kind: 'beyond-model' }>;
+
+/**
+ * A row's note in words, lengths in the user's unit: `model` names the model the value lies beyond
+ * and opens the bracket of its limit; `scallopWhere` ends the wall's phrase.
+ */
+function noteWords(
+  label: string,
+  note: ProcedureNote,
+  unit: LengthUnit,
+  model: (note: BeyondModelNote) => string,
+  scallopWhere: string,
+): string {
   switch (note.kind) {
     case 'reason':
       return note.text;
     case 'beyond-model': {
       const what = note.quantity === 'h' ? 'h' : 'L/2';
-      const limit =
-        note.shape === 'circle' ? 'Reff' : note.quantity === 'h' ? 'its height Rlong sin(rho)' : 'its half-width Rlong';
       const where = note.quantity === 'h' ? 'above the widest point of' : 'wider than';
-      return `${label}: ${what} = ${formatLenUnit(note.valueMm, unit, 'height')} is ${where} its ${note.shape} (${limit} = ${formatLenUnit(note.limitMm, unit)}).`;
+      return `${label}: ${what} = ${formatLenUnit(note.valueMm, unit, 'height')} is ${where} its ${model(note)} = ${formatLenUnit(note.limitMm, unit)}).`;
     }
     case 'wall':
-      return `${label}: its step-over L = ${formatLenUnit(note.intervalMm, unit)} is not below the widest step-over that leaves a scallop (${formatLenUnit(note.maxIntervalMm, unit)}): passes this far apart leave a wall.`;
+      return `${label}: its step-over L = ${formatLenUnit(note.intervalMm, unit)} is not below the widest step-over that leaves a scallop${scallopWhere} (${formatLenUnit(note.maxIntervalMm, unit)}): passes this far apart leave a wall.`;
   }
+}
+
+/** A procedure's note in words, lengths in the user's unit. */
+export function noteText(key: ProcedureKey, note: ProcedureNote, unit: LengthUnit): string {
+  const model = (n: BeyondModelNote): string => {
+    const limit =
+      n.shape === 'circle' ? 'Reff' : n.quantity === 'h' ? 'its height Rlong sin(rho)' : 'its half-width Rlong';
+    return `${n.shape} (${limit}`;
+  };
+  return noteWords(PROCEDURES[key].shortLabel, note, unit, model, '');
 }
 
 /** A comparison row's note in words (the plane's answer, or a procedure corrected for the curvature). */
 export function curvatureNoteText(key: CurvatureRowKey, note: ProcedureNote, unit: LengthUnit): string {
-  const label = CURVATURE_ROWS[key].shortLabel;
-  switch (note.kind) {
-    case 'reason':
-      return note.text;
-    case 'beyond-model': {
-      const what = note.quantity === 'h' ? 'h' : 'L/2';
-      const where = note.quantity === 'h' ? 'above the widest point of' : 'wider than';
-      return `${label}: ${what} = ${formatLenUnit(note.valueMm, unit, 'height')} is ${where} its combined circle (rho = ${formatLenUnit(note.limitMm, unit)}).`;
-    }
-    case 'wall':
-      return `${label}: its step-over L = ${formatLenUnit(note.intervalMm, unit)} is not below the widest step-over that leaves a scallop on this cylinder (${formatLenUnit(note.maxIntervalMm, unit)}): passes this far apart leave a wall.`;
-  }
+  return noteWords(CURVATURE_ROWS[key].shortLabel, note, unit, () => 'combined circle (rho', ' on this cylinder');
 }
 
 /** What L and the heights mean on the surface of a request, in words (empty on a plane). */

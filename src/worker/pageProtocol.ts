@@ -11,6 +11,7 @@ import type { DoublyCurvedComparison } from '../core/procedures/compareDoublyCur
 import type { RoughnessSummary } from '../core/roughness/raTarget';
 import type { DoublyCurvedLimits, RadiusLimit } from '../core/surfaces/doublyCurved';
 import type {
+  DoublyCurvedForward,
   DoublyCurvedForwardInput,
   DoublyCurvedInverseInput,
   DoublyCurvedPass,
@@ -94,16 +95,9 @@ export type CurvedError =
   | { readonly field: 'interval'; readonly code: 'beyond-max'; readonly maxMm: number }
   | { readonly field: 'ra'; readonly code: 'beyond-max-ra'; readonly maxMm: number };
 
-/** The exact answer at a doubly curved point (mm; reaches and L arc lengths along the equator). */
-export interface CurvedSummary {
+/** The exact answer at a doubly curved point (mm; reaches and L arc lengths along the equator): the forward answer's fields, and these. */
+export interface CurvedSummary extends DoublyCurvedForward {
   readonly pattern: DoublyCurvedPass['pattern'];
-  readonly intervalMm: number;
-  readonly halfWidthRightMm: number;
-  readonly halfWidthLeftMm: number;
-  readonly contactOffsetMm: number;
-  /** The highest cusp (radial), and zigzag's other one (null for one-way). */
-  readonly cuspHeightMm: number;
-  readonly otherCuspHeightMm: number | null;
   /** The widest step-over that leaves a scallop here. */
   readonly maxIntervalMm: number;
   /** The flank and shank limits (radial heights). */

@@ -4,7 +4,7 @@
  * apart in the browser's tools (and to tests, through WorkerGlobalScope.name).
  */
 import solverWorkerUrl from 'virtual:solver-worker-url';
-import { JobClient, type RestartInfo } from './client';
+import { JobClient, type JobClientOptions, type RestartInfo } from './client';
 import { type PageReply, type PageRequest, samePageRequest } from './pageProtocol';
 import { sameTableRequest, type TableReply, type TableRequest } from './protocol';
 import type { PageTeachReply } from './teachProtocol';
@@ -52,12 +52,7 @@ export function solveClient(events: JobEvents<PageRequest, PageReply>): JobClien
 
 /** The `teach` job on its own worker. */
 export function teachClient(events: JobEvents<PageRequest, PageTeachReply>): JobClient<PageRequest, PageTeachReply> {
-  return new JobClient({
-    createWorker: createViewsWorker,
-    call: (api, r) => api.teach(r),
-    same: samePageRequest,
-    ...events,
-  });
+  return jobClient(createViewsWorker, (api, r) => api.teach(r), samePageRequest, events);
 }
 
 /** The worker for `table`, started on the first download: the lookup table never delays the results. */
@@ -67,15 +62,20 @@ export function createTableWorker(): Worker {
 
 /** The `table` job on its own worker. */
 export function tableClient(events: JobEvents<TableRequest, TableReply>): JobClient<TableRequest, TableReply> {
-  return new JobClient({
-    createWorker: createTableWorker,
-    call: (api, r) => api.table(r),
-    same: sameTableRequest,
-    ...events,
-  });
+  return jobClient(createTableWorker, (api, r) => api.table(r), sameTableRequest, events);
 }
 
 /** A solver worker (the module worker built from solver.worker.ts), named for the browser's tools. */
 export function startSolverWorker(name: string): Worker {
   return new Worker(solverWorkerUrl, { type: 'module', name });
+}
+
+/** A job's client on its own worker, with no watchdog. */
+function jobClient<Req, Rep>(
+  createWorker: JobClientOptions<Req, Rep>['createWorker'],
+  call: JobClientOptions<Req, Rep>['call'],
+  same: JobClientOptions<Req, Rep>['same'],
+  events: JobEvents<Req, Rep>,
+): JobClient<Req, Rep> {
+  return new JobClient({ createWorker, call, same, ...events });
 }

@@ -51,7 +51,7 @@ describe('doubly curved points on the command line', () => {
         expect(Math.abs(i.exact.scallopHeight - ballOnSphereH(2, rs, 0.9)), `${rs} ${pattern}`).toBeLessThan(1e-9);
       }
     }
-  }, 30_000);
+  });
 
   it('the table shows the exact answer, the comparison rows and the roughness; JSON echoes the radii', async () => {
     const r = await run([...TOOL, '--h', '0.05', '--feed-radius', '40', '--cross-radius', '-80']);
@@ -110,7 +110,7 @@ describe('doubly curved points on the command line', () => {
     ]);
     expect((z as { exact: { otherCuspHeight: number } }).exact.otherCuspHeight).toBeLessThan(0.05);
     expect(out.roughness.Ra).toBeGreaterThan(0);
-  }, 30_000);
+  });
 
   it('one radius alone is the cylinder shorthand: the very same digits as --surface-radius with its axis', async () => {
     for (const extra of [
@@ -141,7 +141,7 @@ describe('doubly curved points on the command line', () => {
     // Omitted: the plane, as before.
     const p = await runMain([...TOOL, '--h', '0.05', '--json']);
     expect(JSON.parse(p.stdout).input.feedRadius).toBeUndefined();
-  }, 60_000);
+  });
 
   it('gouging: one line naming the radius and its limit with the other held; JSON carries it; "at any radius" where none helps', async () => {
     const r = await run([...TOOL, '--h', '0.05', '--feed-radius', '40', '--cross-radius', '-8']);
@@ -209,7 +209,7 @@ describe('doubly curved points on the command line', () => {
     const en = JSON.parse(none.stdout).errors[0];
     expect(en.field).toBe('feedRadius');
     expect(en.message).toMatch(/no Rc helps with Rf held/);
-  }, 30_000);
+  });
 
   it('range errors and usage errors: one line each, exit 2', async () => {
     const r = await run([...TOOL, '--h', '0.05', '--feed-radius', '40', '--cross-radius', '0']);
@@ -229,7 +229,7 @@ describe('doubly curved points on the command line', () => {
       expect(u.stderr.trimEnd().split('\n'), args.join(' ')).toHaveLength(1);
       expect(u.stderr).toMatch(/see path-interval --help/);
     }
-  }, 30_000);
+  });
 
   it('--ra at a doubly curved point: the h found leaves that Ra (the inverse at its L gives it back)', async () => {
     const args = [...TOOL, '--feed-radius', '-60', '--cross-radius', '25'];
@@ -242,7 +242,7 @@ describe('doubly curved points on the command line', () => {
     expect(Math.abs(f.roughness.Ra - 0.004)).toBeLessThan(1e-12);
     const i = (await json([...args, '--interval', String(f.exact.interval)])) as { roughness: { Ra: number } };
     expect(Math.abs(i.roughness.Ra - 0.004)).toBeLessThan(1e-9);
-  }, 30_000);
+  });
 
   it('--batch: feedRadius and crossRadius columns, interval and otherCuspHeight out, gouging in error; reads back to itself', async () => {
     const csv = [
@@ -282,5 +282,5 @@ describe('doubly curved points on the command line', () => {
     expect(back.stdout).toBe(r.stdout);
     const mixed = await run(['--batch'], 'R,Rcr,rho,h,surfaceRadius,feedRadius\n3,1,10,0.05,50,40\n');
     expect(mixed.stdout).toMatch(/give the surface once/);
-  }, 30_000);
+  });
 });

@@ -5,6 +5,7 @@ import { text } from 'node:stream/consumers';
 import { fileURLToPath } from 'node:url';
 import { expect } from 'vitest';
 import { main } from '../../src/cli/main';
+import { seededRandom } from '../../src/core/math/seededRandom';
 
 export const BIN = fileURLToPath(new URL('../../src/cli/bin.mjs', import.meta.url));
 
@@ -62,17 +63,8 @@ export async function run(args: readonly string[], stdin = ''): Promise<RunResul
 /** The same as {@link run} (its earlier name). */
 export const runMain = run;
 
-/** A seeded generator of uniform numbers in [0, 1) (mulberry32): the same seed, the same cases. */
-export function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+/** A seeded generator of uniform numbers in [0, 1) (mulberry32, core/math/seededRandom.ts): the same seed, the same cases. */
+export const random = seededRandom;
 
 /** One item of a list, at random. */
 export function pick<T>(rand: () => number, items: readonly T[]): T {

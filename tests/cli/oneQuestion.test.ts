@@ -200,7 +200,9 @@ describe('a batch row and a single question go the same way (issue 26 point 8)',
     ];
     const columns = ['R', 'Rcr', 'rho', 'Ra', 'feedRadius', 'crossRadius'];
     const out = await batch(columns, rows);
-    expect(out[0]?.h).toBe('0.04144891401229874');
+    // The single question's answer as the issue quotes it (h 0.04144891 mm; the plane's was 0.03995808):
+    // the row must give the doubly curved point's, digit for digit the single question's (compare below).
+    expect(Number(out[0]?.h)).toBeCloseTo(0.04144891, 8);
     expect(Number(out[0]?.interval)).toBeCloseTo(2.91761, 5);
     expect(out[1]?.error).toMatch(/gouges/);
     for (const [i, row] of rows.entries()) {
@@ -229,7 +231,7 @@ describe('a batch row and a single question go the same way (issue 26 point 8)',
       expect(seen.answered).toBeGreaterThan(15);
       expect(seen.refused).toBeGreaterThan(10);
       expect(kinds.size).toBe(5);
-    }, 60_000);
+    });
   }
 
   it('three-axis raster and waterline questions: the same numbers and refusals (seed 2603, 90 questions)', async () => {
@@ -242,5 +244,5 @@ describe('a batch row and a single question go the same way (issue 26 point 8)',
     }
     expect(seen.answered).toBeGreaterThan(15);
     expect(seen.refused).toBeGreaterThan(10);
-  }, 60_000);
+  });
 });

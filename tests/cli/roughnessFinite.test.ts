@@ -36,5 +36,5 @@ describe('roughness and simulation JSON at tiny scallops (issue 26, point 6)', (
     const json = JSON.parse(r.stdout);
     expect(nullPaths(json)).toEqual([]);
     expect(json.simulation.cuspHeight).toBeGreaterThan(0);
-  }, 60_000);
+  });
 });

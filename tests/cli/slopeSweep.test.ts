@@ -121,5 +121,5 @@ describe('--slope-sweep', () => {
     const wall = await runMain(['--R', '3', '--Rcr', '1', '--h', '5', '--slope-sweep', '--json']);
     expect(wall.code).toBe(2);
     expect(JSON.parse(wall.stdout).errors[0].field).toBe('h');
-  }, 30_000);
+  });
 });

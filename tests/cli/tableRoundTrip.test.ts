@@ -40,7 +40,7 @@ describe('lookup table read back by --batch', () => {
     expect(L.toFixed(4)).toBe('3.0381');
     expect(L).not.toBe(Number(pageCase(tableOf(PLANE))));
     expect(r.stdout).toMatch(/This tool gouges a concave cylinder of any radius/);
-  }, 30_000);
+  });
 
   it('a convex cylinder along the feed (zigzag) and a plane: the same file back', async () => {
     for (const surface of [{ kind: 'cylinder', radiusMm: 12.5, axis: 'feed' } as const, PLANE]) {
@@ -49,7 +49,7 @@ describe('lookup table read back by --batch', () => {
       expect(r.code, JSON.stringify(surface)).toBe(0);
       expect(r.stdout, JSON.stringify(surface)).toBe(csv);
     }
-  }, 30_000);
+  });
 
   it('a doubly curved point (a saddle): its feedRadius and crossRadius columns read back, the same answers', async () => {
     const tool = { toolRadiusMm: 3, cornerRadiusMm: 1, pattern: 'one-way' as const, surface: PLANE };
@@ -95,7 +95,7 @@ describe('lookup table read back by --batch', () => {
     });
     expect(Number(pageCase(r.stdout))).toBe(exact.intervalMm);
     expect(Number(pageCase(r.stdout))).not.toBe(Number(pageCase(tableOf(PLANE))));
-  }, 30_000);
+  });
 });
 
 describe("the page's download read back by --batch (issue 21)", () => {
@@ -111,7 +111,7 @@ describe("the page's download read back by --batch (issue 21)", () => {
     // The batch writes its own plain header, then the very same rows.
     expect(r.stdout).toBe(plain.csv);
     expect(r.stdout.split('\n').slice(1)).toEqual(named.csv.split('\n').slice(1));
-  }, 30_000);
+  });
 
   it("the inch file reads back (columns R_in...): its results are the inch table's (issue 26 point 9)", async () => {
     const tool = { toolRadiusMm: 6.35, cornerRadiusMm: 1.5875, pattern: 'one-way' as const, surface: PLANE };
@@ -137,5 +137,5 @@ describe("the page's download read back by --batch (issue 21)", () => {
         else expect(Math.abs(Number(text) - Number(expected))).toBeLessThanOrEqual(1e-12 * Math.abs(Number(expected)));
       });
     });
-  }, 30_000);
+  });
 });

@@ -93,7 +93,7 @@ describe('--unit inch: every length in and out in inches (issue 26 point 9)', ()
         if (member !== undefined) expect(input[member], `${member}: ${label}`).toBe(inches);
       }
     }
-  }, 60_000);
+  });
 
   it('every number the JSON holds is named a length or not (the unit converts exactly the lengths)', async () => {
     const seen = new Set<string>();
@@ -103,7 +103,7 @@ describe('--unit inch: every length in and out in inches (issue 26 point 9)', ()
     const unnamed = [...seen].filter((k) => !LENGTH_MEMBERS.has(k) && !OTHER_NUMBER_MEMBERS.has(k) && k !== 'limit');
     expect(unnamed).toEqual([]);
     expect([...LENGTH_MEMBERS].filter((k) => OTHER_NUMBER_MEMBERS.has(k))).toEqual([]);
-  }, 60_000);
+  });
 
   it('the table speaks inches: the case, the facts, the columns; the numbers the mm ones / 25.4', async () => {
     const r = await runMain(['--R', '0.25', '--Rcr', '0.03', '--rho', '5', '--h', '0.0004', '--unit', 'inch']);

@@ -64,7 +64,7 @@ export { mm };
     });
     expect(r.stdout + r.stderr).toBe('');
     expect(r.status).toBe(0);
-  }, 60_000);
+  });
 
   it('documents every function it exports (JSDoc where the function is declared)', () => {
     const entry = read('src/core/library.ts');

@@ -7,7 +7,7 @@
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { keepShot, paintedFraction, sceneIdle, useSite } from './harness';
+import { keepShot, loseAndRestore, paintedFraction, sceneIdle, useSite } from './harness';
 import { hueShares } from './pixels';
 
 const site = useSite('docs/curved-scene');
@@ -163,20 +163,7 @@ describe('the 3D scene switched between machines and after a lost WebGL context'
     expect(await paintedFraction(page)).toBeGreaterThan(0.1);
     const frames = () => page.evaluate(() => (window as unknown as Probe).__pathInterval.frames());
     const before = await frames();
-    await page.evaluate(async () => {
-      const canvas = document.querySelector('[data-testid="scene-canvas"]') as HTMLCanvasElement;
-      const lose = canvas.getContext('webgl2')?.getExtension('WEBGL_lose_context');
-      if (!lose) throw new Error('no WEBGL_lose_context');
-      const event = (type: string) => new Promise((resolve) => canvas.addEventListener(type, resolve, { once: true }));
-      const lost = event('webglcontextlost');
-      lose.loseContext();
-      await lost;
-      // Chromium allows the restore once the loss event's dispatch is over (the next task).
-      await new Promise((resolve) => setTimeout(resolve, 0));
-      const restored = event('webglcontextrestored');
-      lose.restoreContext();
-      await restored;
-    });
+    await loseAndRestore(page, 'scene-canvas');
     await expect.poll(frames).toBeGreaterThan(before);
     await sceneIdle(page);
     expect(await paintedFraction(page)).toBeGreaterThan(0.1);

@@ -313,3 +313,41 @@ export async function showView(page: Page, view: string): Promise<void> {
   await expect.poll(() => page.locator(`[role="tab"][data-view="${view}"]`).getAttribute('aria-selected')).toBe('true');
   await page.locator(`#panel-${view} > *`).first().waitFor();
 }
+
+/** Loses the WebGL context of a canvas (WEBGL_lose_context) and restores it once the loss has been reported. */
+export async function loseAndRestore(page: Page, testId: string): Promise<void> {
+  await page.evaluate(async (id) => {
+    const canvas = document.querySelector(`[data-testid="${id}"]`) as HTMLCanvasElement;
+    const lose = canvas.getContext('webgl2')?.getExtension('WEBGL_lose_context');
+    if (!lose) throw new Error('no WEBGL_lose_context');
+    const event = (type: string) => new Promise((resolve) => canvas.addEventListener(type, resolve, { once: true }));
+    const lost = event('webglcontextlost');
+    lose.loseContext();
+    await lost;
+    // Chromium allows the restore once the loss event's dispatch is over (the next task).
+    await new Promise((resolve) => setTimeout(resolve, 0));
+    const restored = event('webglcontextrestored');
+    lose.restoreContext();
+    await restored;
+  }, testId);
+}
+
+/** Clears the focused field and types `text` with the keyboard, key by key (`delayMs` apart). */
+export async function retype(page: Page, text: string, delayMs = 30): Promise<void> {
+  await page.keyboard.press('ControlOrMeta+A');
+  await page.keyboard.press('Backspace');
+  await page.keyboard.type(text, { delay: delayMs });
+}
+
+/** Scrolls a field into view, focuses it (a click, or a tap on a touch page) and retypes it. */
+export async function typeInto(
+  page: Page,
+  testId: string,
+  text: string,
+  { tap = false, delayMs = 30 }: { tap?: boolean; delayMs?: number } = {},
+): Promise<void> {
+  const input = page.getByTestId(testId);
+  await input.scrollIntoViewIfNeeded();
+  await (tap ? input.tap() : input.click());
+  await retype(page, text, delayMs);
+}

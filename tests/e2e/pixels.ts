@@ -1,32 +1,96 @@
-/** Reading colours from what the user sees (screenshots), for the theme tests. */
+/** Reading colours from what the user sees (screenshots), for the theme and picture tests. */
 import type { Locator, Page } from 'playwright-core';
+
+/** What to count over decoded PNG images, in the browser: the one place that decodes them (no PNG library). */
+export type PixelCount =
+  /** Pixels within `tolerance` (sum of the r, g, b differences) of the colour `hex` (#rrggbb), in the first image. */
+  | { readonly kind: 'colour'; readonly hex: string; readonly tolerance: number }
+  /** Clearly blue (b > r + 40) and clearly orange (r > b + 60, g between) pixels, in the first image. */
+  | { readonly kind: 'hues' }
+  /** Pixels of the first image whose first `channels` channel differences from the second's sum to more than `tolerance`. */
+  | { readonly kind: 'difference'; readonly channels: 3 | 4; readonly tolerance: number };
+
+/** Each image's size, and the counts a {@link PixelCount} asks for (none for a difference of two sizes). */
+export interface PixelCounts {
+  readonly sizes: readonly { readonly width: number; readonly height: number }[];
+  readonly counts: readonly number[];
+}
+
+/**
+ * Decodes PNG images in `page` (drawn on a canvas; its document is not changed) and counts pixels.
+ *
+ * @param page any open page.
+ * @param pngs the images' bytes (one, or two for a difference).
+ * @param count what to count.
+ * @returns the images' sizes and the counts, in the order `count` names them.
+ */
+export function countPixels(page: Page, pngs: readonly Buffer[], count: PixelCount): Promise<PixelCounts> {
+  return page.evaluate(
+    async ({ images, what }) => {
+      const decode = async (b64: string) => {
+        const image = new Image();
+        image.src = `data:image/png;base64,${b64}`;
+        await image.decode();
+        const canvas = document.createElement('canvas');
+        canvas.width = image.width;
+        canvas.height = image.height;
+        const ctx = canvas.getContext('2d');
+        if (!ctx) throw new Error('no 2D canvas');
+        ctx.drawImage(image, 0, 0);
+        return {
+          width: image.width,
+          height: image.height,
+          data: ctx.getImageData(0, 0, image.width, image.height).data,
+        };
+      };
+      const decoded = await Promise.all(images.map(decode));
+      const sizes = decoded.map(({ width, height }) => ({ width, height }));
+      const d = (decoded[0] as (typeof decoded)[number]).data;
+      if (what.kind === 'colour') {
+        const want = [1, 3, 5].map((i) => Number.parseInt(what.hex.slice(i, i + 2), 16));
+        let hits = 0;
+        for (let i = 0; i < d.length; i += 4) {
+          let sum = 0;
+          for (let c = 0; c < 3; c++) sum += Math.abs((d[i + c] as number) - (want[c] as number));
+          if (sum <= what.tolerance) hits++;
+        }
+        return { sizes, counts: [hits] };
+      }
+      if (what.kind === 'hues') {
+        let blue = 0;
+        let orange = 0;
+        for (let i = 0; i < d.length; i += 4) {
+          const [r, g, b] = [d[i] as number, d[i + 1] as number, d[i + 2] as number];
+          if (b > r + 40) blue++;
+          else if (r > b + 60 && g > b + 20 && g < r - 20) orange++;
+        }
+        return { sizes, counts: [blue, orange] };
+      }
+      const e = (decoded[1] as (typeof decoded)[number]).data;
+      if (d.length !== e.length || sizes[0]?.width !== sizes[1]?.width) return { sizes, counts: [] };
+      let changed = 0;
+      for (let i = 0; i < d.length; i += 4) {
+        let sum = 0;
+        for (let c = 0; c < what.channels; c++) sum += Math.abs((d[i + c] as number) - (e[i + c] as number));
+        if (sum > what.tolerance) changed++;
+      }
+      return { sizes, counts: [changed] };
+    },
+    { images: pngs.map((png) => png.toString('base64')), what: count },
+  );
+}
+
+/** The number of pixels of an image of `size`. */
+const pixelsOf = (size: { width: number; height: number } | undefined): number => (size ? size.width * size.height : 0);
 
 /** Fraction of an element's on-screen pixels within `tolerance` (sum of channel differences) of `rgb`. */
 export async function colourShare(page: Page, element: Locator, rgb: string, tolerance = 30): Promise<number> {
-  const png = (await element.screenshot()).toString('base64');
-  return page.evaluate(
-    async ({ b64, hex, tol }) => {
-      const want = [1, 3, 5].map((i) => Number.parseInt(hex.slice(i, i + 2), 16));
-      const image = new Image();
-      image.src = `data:image/png;base64,${b64}`;
-      await image.decode();
-      const canvas = document.createElement('canvas');
-      canvas.width = image.width;
-      canvas.height = image.height;
-      const ctx = canvas.getContext('2d');
-      if (!ctx) return 0;
-      ctx.drawImage(image, 0, 0);
-      const data = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
-      let hits = 0;
-      for (let i = 0; i < data.length; i += 4) {
-        let d = 0;
-        for (let c = 0; c < 3; c++) d += Math.abs((data[i + c] as number) - (want[c] as number));
-        if (d <= tol) hits++;
-      }
-      return hits / (data.length / 4);
-    },
-    { b64: png, hex: rgb, tol: tolerance },
-  );
+  const { sizes, counts } = await countPixels(page, [await element.screenshot()], {
+    kind: 'colour',
+    hex: rgb,
+    tolerance,
+  });
+  return (counts[0] as number) / pixelsOf(sizes[0]);
 }
 
 /** The widest visible element's overflow: elements outside [0, innerWidth] that no scroll box holds. */
@@ -59,25 +123,9 @@ export function clippedElements(page: Page): Promise<string[]> {
 
 /** Shares of the scene's pixels that are clearly blue (b > r + 40) and clearly orange (r > b + 60, g between). */
 export async function hueShares(page: Page): Promise<{ blue: number; orange: number }> {
-  const png = (await page.getByTestId('scene-canvas').screenshot()).toString('base64');
-  return page.evaluate(async (b64) => {
-    const image = new Image();
-    image.src = `data:image/png;base64,${b64}`;
-    await image.decode();
-    const canvas = document.createElement('canvas');
-    canvas.width = image.width;
-    canvas.height = image.height;
-    const ctx = canvas.getContext('2d');
-    if (!ctx) return { blue: 0, orange: 0 };
-    ctx.drawImage(image, 0, 0);
-    const d = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
-    let blue = 0;
-    let orange = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      const [r, g, b] = [d[i] as number, d[i + 1] as number, d[i + 2] as number];
-      if (b > r + 40) blue++;
-      else if (r > b + 60 && g > b + 20 && g < r - 20) orange++;
-    }
-    return { blue: blue / (d.length / 4), orange: orange / (d.length / 4) };
-  }, png);
+  const { sizes, counts } = await countPixels(page, [await page.getByTestId('scene-canvas').screenshot()], {
+    kind: 'hues',
+  });
+  const pixels = pixelsOf(sizes[0]);
+  return { blue: (counts[0] as number) / pixels, orange: (counts[1] as number) / pixels };
 }

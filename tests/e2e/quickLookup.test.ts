@@ -14,7 +14,7 @@ import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
 import { headerInUnit } from '../../src/core/output/lookupUnits';
 import { exactForward } from '../../src/core/surfaces/solve';
 import { scallopHeightLimits } from '../../src/core/surfaces/validate';
-import { keepShot, ROOT, useSite } from './harness';
+import { keepShot, ROOT, typeInto, useSite } from './harness';
 
 const site = useSite('docs/quick-lookup');
 /** The profile view's state: the touch test reads it, then the Copy test uses the same document. */
@@ -76,16 +76,6 @@ async function press(vp: Viewport, target: ReturnType<Page['getByTestId']>): Pro
   await target.scrollIntoViewIfNeeded();
   if (vp.touch) await target.tap();
   else await target.click();
-}
-
-/** Clears a field and types into it with the keyboard, key by key. */
-async function typeInto(page: Page, testId: string, text: string): Promise<void> {
-  const input = page.getByTestId(testId);
-  await input.scrollIntoViewIfNeeded();
-  await input.click();
-  await page.keyboard.press('ControlOrMeta+A');
-  await page.keyboard.press('Backspace');
-  await page.keyboard.type(text, { delay: 30 });
 }
 
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';

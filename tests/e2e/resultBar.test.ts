@@ -7,7 +7,7 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { keepShot, pageSettled, ROOT, usePhonePage, useSite } from './harness';
+import { keepShot, pageSettled, ROOT, retype, usePhonePage, useSite } from './harness';
 
 const site = useSite('docs/result-bar');
 const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
@@ -22,13 +22,6 @@ const inViewport = (page: Page, id: string) =>
     const r = e.getBoundingClientRect();
     return r.height > 0 && r.top >= 0 && r.bottom <= window.innerHeight && r.left >= 0 && r.right <= window.innerWidth;
   });
-
-/** Clears the focused field and types, key by key. */
-async function retype(page: Page, value: string): Promise<void> {
-  await page.keyboard.press('ControlOrMeta+A');
-  await page.keyboard.press('Backspace');
-  await page.keyboard.type(value, { delay: 30 });
-}
 
 describe('result bar on a phone', () => {
   it('keeps the headline in view while h has focus, follows the results, dashes when invalid, copies', async () => {

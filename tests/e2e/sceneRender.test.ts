@@ -7,8 +7,9 @@
  */
 import type { Locator, Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { keepShot, paintedFraction, useSite } from './harness';
+import { keepShot, loseAndRestore, paintedFraction, useSite } from './harness';
 import { colourShare } from './pixels';
+import { pngDifference } from './pngDifference';
 
 const site = useSite('docs/scene-render');
 
@@ -18,55 +19,6 @@ const frames = (page: Page) => page.evaluate(() => (window as unknown as Probe).
 /** The backgrounds per theme (--scene-bg and --surface-bg in src/ui/theme.css). */
 const SCENE_BG = { light: '#f7f8fa', dark: '#12161f' } as const;
 const SURFACE_BG = { light: '#f4f6f9', dark: '#171c26' } as const;
-
-/** Loses the WebGL context of a canvas (WEBGL_lose_context) and restores it once the loss has been reported. */
-async function loseAndRestore(page: Page, testId: string): Promise<void> {
-  await page.evaluate(async (id) => {
-    const canvas = document.querySelector(`[data-testid="${id}"]`) as HTMLCanvasElement;
-    const lose = canvas.getContext('webgl2')?.getExtension('WEBGL_lose_context');
-    if (!lose) throw new Error('no WEBGL_lose_context');
-    const event = (type: string) => new Promise((resolve) => canvas.addEventListener(type, resolve, { once: true }));
-    const lost = event('webglcontextlost');
-    lose.loseContext();
-    await lost;
-    // Chromium allows the restore once the loss event's dispatch is over (the next task).
-    await new Promise((resolve) => setTimeout(resolve, 0));
-    const restored = event('webglcontextrestored');
-    lose.restoreContext();
-    await restored;
-  }, testId);
-}
-
-/** Fraction of pixels of two same-sized PNG screenshots that differ by more than `tolerance` (sum over r, g, b). */
-async function differingShare(page: Page, a: Buffer, b: Buffer, tolerance = 30): Promise<number> {
-  return page.evaluate(
-    async ({ first, second, tol }) => {
-      const pixels = async (b64: string) => {
-        const image = new Image();
-        image.src = `data:image/png;base64,${b64}`;
-        await image.decode();
-        const canvas = document.createElement('canvas');
-        canvas.width = image.width;
-        canvas.height = image.height;
-        const ctx = canvas.getContext('2d');
-        if (!ctx) throw new Error('no 2d context');
-        ctx.drawImage(image, 0, 0);
-        return ctx.getImageData(0, 0, canvas.width, canvas.height).data;
-      };
-      const p = await pixels(first);
-      const q = await pixels(second);
-      if (p.length !== q.length) return 1;
-      let differing = 0;
-      for (let i = 0; i < p.length; i += 4) {
-        let d = 0;
-        for (let c = 0; c < 3; c++) d += Math.abs((p[i + c] as number) - (q[i + c] as number));
-        if (d > tol) differing++;
-      }
-      return differing / (p.length / 4);
-    },
-    { first: a.toString('base64'), second: b.toString('base64'), tol: tolerance },
-  );
-}
 
 /** Waits until the 3D scene has drawn and stopped drawing (no frame for 3 animation frames). */
 async function settled(page: Page): Promise<void> {
@@ -180,7 +132,9 @@ describe('a lost WebGL context', () => {
       await expect.poll(async () => 1 - (await colourShare(page, surface, SURFACE_BG[theme], 12))).toBeGreaterThan(0.2);
       const drawn = await surface.screenshot();
       await loseAndRestore(page, 'surface-canvas');
-      await expect.poll(async () => differingShare(page, drawn, await surface.screenshot())).toBeLessThan(0.01);
+      await expect
+        .poll(async () => (await pngDifference(page, drawn, await surface.screenshot(), 30, 3)).changedShare)
+        .toBeLessThan(0.01);
       await keepShot(page, `context-restored-${theme}`);
     });
   }

@@ -8,21 +8,14 @@ import { spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { keepShot, pageSettled, ROOT, usePhonePage, useSite } from './harness';
+import { keepShot, pageSettled, ROOT, typeInto, usePhonePage, useSite } from './harness';
 
 const site = useSite('docs/shop-tools');
 
 const open = usePhonePage(site);
 
-/** Clears a field and types into it with the keyboard, key by key. */
-async function typeInto(page: Page, testId: string, text: string): Promise<void> {
-  const input = page.getByTestId(testId);
-  await input.scrollIntoViewIfNeeded();
-  await input.tap();
-  await page.keyboard.press('ControlOrMeta+A');
-  await page.keyboard.press('Backspace');
-  await page.keyboard.type(text, { delay: 20 });
-}
+/** A field on the phone: tapped, then typed key by key 20 ms apart. */
+const PHONE_TYPING = { tap: true, delayMs: 20 } as const;
 
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent())?.trim() ?? '';
 
@@ -53,7 +46,7 @@ describe('numbers typed as people write them (phone)', () => {
   it('1/2" in inch mode is answered as D = 0.5 in; 12.7 mm and 1/2" in mm mode as D = 12.7 mm', async () => {
     const page = await open('?D=0.25&Rcr=0.03&rho=5&h=0.002&unit=in');
     const want = cliInterval(6.35, 0.762, 0.0508) / 25.4;
-    await typeInto(page, 'input-R', '1/2"');
+    await typeInto(page, 'input-R', '1/2"', PHONE_TYPING);
     // Answered while the text is still as typed (the field keeps it until it is committed).
     await expect.poll(() => headline(page)).toBeCloseTo(want, 4);
     expect(await page.getByTestId('input-R').inputValue()).toBe('1/2"');
@@ -65,12 +58,12 @@ describe('numbers typed as people write them (phone)', () => {
 
     const mm = await open('?D=6&Rcr=1&rho=5&h=0.05&unit=mm');
     const wantMm = cliInterval(6.35, 1, 0.05);
-    await typeInto(mm, 'input-R', '12.7 mm');
+    await typeInto(mm, 'input-R', '12.7 mm', PHONE_TYPING);
     await expect.poll(() => text(mm, 'result-exact-interval')).toBe(`${wantMm.toFixed(4)} mm`);
     await mm.keyboard.press('Enter');
     await expect.poll(() => mm.getByTestId('input-R').inputValue()).toBe('12.7');
-    await typeInto(mm, 'input-R', '1/4"');
-    await typeInto(mm, 'input-h', '50 um');
+    await typeInto(mm, 'input-R', '1/4"', PHONE_TYPING);
+    await typeInto(mm, 'input-h', '50 um', PHONE_TYPING);
     await mm.keyboard.press('Enter');
     await expect.poll(() => mm.getByTestId('input-h').inputValue()).toBe('0.05');
     expect(await mm.getByTestId('input-R').inputValue()).toBe('6.35');
@@ -80,7 +73,7 @@ describe('numbers typed as people write them (phone)', () => {
 
   it('anything else gets the usual message, never NaN', async () => {
     const page = await open('?D=6&Rcr=1&rho=5&h=0.05&unit=mm');
-    await typeInto(page, 'input-Rcr', '1/0');
+    await typeInto(page, 'input-Rcr', '1/0', PHONE_TYPING);
     await page.keyboard.press('Enter');
     await expect.poll(() => text(page, 'error-Rcr')).toMatch(/must be a number/);
     expect(await page.getByTestId('input-Rcr').inputValue()).toBe('1/0');
@@ -206,7 +199,7 @@ describe('tools of the shop (phone)', () => {
     // The fallback field for a refused clipboard is not shown while the clipboard works.
     expect(await page.getByTestId('link-text').isVisible()).toBe(false);
     const before = await text(page, 'result-exact-interval');
-    await typeInto(page, 'input-Rcr', '1/32"');
+    await typeInto(page, 'input-Rcr', '1/32"', PHONE_TYPING);
     await page.keyboard.press('Enter');
     await expect.poll(() => page.getByTestId('input-Rcr').inputValue()).toBe('0.79375');
     // The answer to the new corner radius (not the one shown before the worker replied).

@@ -1,8 +1,10 @@
 /**
  * The README opens with what a newcomer needs, in this order: the title, one sentence of what the
  * calculator answers, a screenshot of the page (a committed PNG that exists), the two commands, a
- * short walk-through and a glossary with its sketch; the reference follows. Every local file and
- * anchor the README links to exists.
+ * short walk-through and a glossary with its sketch; the reference follows, opened by a contents list
+ * that matches its headings. Every local file and anchor the README links to exists. The README
+ * refers to no issue (a heading or line says what is, not which issue asked for it) and states no
+ * long sentence twice (a fact has one place; others link to it).
  */
 import { existsSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -125,6 +127,16 @@ describe('README opening', () => {
     );
     expect(existsSync(`${ROOT}tests/e2e/readmeScreenshot.test.ts`)).toBe(true);
   });
+
+  it('says that the screenshots for a person to look at are kept only by npm run shots, as the script does', () => {
+    const shots = blocks(README).find((b) => b.text.startsWith('**Screenshots.**'))?.text ?? '';
+    const script: string = JSON.parse(read('package.json')).scripts.shots;
+    expect(shots).toContain('`npm run shots`');
+    expect(shots).toContain(`\`${script}\``);
+    expect(shots).toContain('test-results/screenshots/');
+    expect(script).toMatch(/^E2E_SHOTS=1 /);
+    expect(read('tests/e2e/harness.ts')).toMatch(/KEEP_SHOTS = Boolean\(process\.env\.E2E_SHOTS\)/);
+  });
 });
 
 describe('README links', () => {
@@ -137,5 +149,68 @@ describe('README links', () => {
       if (target.startsWith('#')) expect(anchors, target).toContain(target.slice(1));
       else expect(existsSync(`${ROOT}${target}`), target).toBe(true);
     }
+  });
+});
+
+/** The `##` and `###` headings after `## Reference`, in order, as their titles. */
+function referenceHeadings(text: string): string[] {
+  const start = text.search(/^## Reference$/m);
+  if (start < 0) throw new Error('README has no "## Reference"');
+  const body = text.slice(start).replace(/```[\s\S]*?```/g, '');
+  return [...body.matchAll(/^#{2,3} (.+)$/gm)].map((m) => m[1] as string).slice(1);
+}
+
+/** The contents list under `## Reference`: each `[title](#anchor)` link of its list items, in order. */
+function contents(text: string): Array<{ readonly title: string; readonly anchor: string }> {
+  const start = text.search(/^## Reference$/m);
+  const next = text.indexOf('\n## ', start + 3);
+  const list = text
+    .slice(start, next < 0 ? undefined : next)
+    .split('\n')
+    .filter((l) => /^\s*- /.test(l));
+  return list.flatMap((l) =>
+    [...l.matchAll(/\[([^\]]+)\]\(#([^)]+)\)/g)].map((m) => ({ title: m[1] as string, anchor: m[2] as string })),
+  );
+}
+
+/** Lines (1-based, with their text) that mention an issue: "issue 21", "(issue-17)", "the issues". */
+function issueLines(text: string): string[] {
+  return text
+    .split('\n')
+    .map((line, i) => `${i + 1}: ${line}`)
+    .filter((l) => /\bissues?\b/i.test(l));
+}
+
+/** Sentences of at least `minWords` words that occur more than once (whitespace and case ignored). */
+function repeatedSentences(text: string, minWords = 12): string[] {
+  const prose = text.replace(/```[\s\S]*?```/g, ' ').replace(/^\|.*$/gm, ' ');
+  const seen = new Map<string, number>();
+  for (const raw of prose.split(/(?<=[.;:!?])\s+|\n\s*\n/)) {
+    const sentence = raw
+      .replace(/^[-\s]+/, '')
+      .replace(/\s+/g, ' ')
+      .trim()
+      .toLowerCase();
+    if (sentence.split(' ').length < minWords) continue;
+    seen.set(sentence, (seen.get(sentence) ?? 0) + 1);
+  }
+  return [...seen].filter(([, n]) => n > 1).map(([s]) => s);
+}
+
+describe('README reference', () => {
+  it('opens with a contents list that names every heading of the reference, in order, and nothing else', () => {
+    const headings = referenceHeadings(README);
+    expect(headings.length).toBeGreaterThan(10);
+    const listed = contents(README);
+    expect(listed.map((c) => c.title)).toEqual(headings);
+    expect(listed.map((c) => c.anchor)).toEqual(headings.map(slug));
+  });
+
+  it('refers to no issue, in a heading or anywhere else', () => {
+    expect(issueLines(README)).toEqual([]);
+  });
+
+  it('states no long sentence twice (one place for each fact)', () => {
+    expect(repeatedSentences(README)).toEqual([]);
   });
 });

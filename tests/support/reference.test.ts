@@ -7,6 +7,7 @@
  */
 import Decimal from 'decimal.js';
 import { describe, expect, it } from 'vitest';
+import { seededRandom } from '../../src/core/math/seededRandom';
 import { bruteForceProfile } from './reference/bruteForce3d';
 import { cylinderReach } from './reference/cylinderReach';
 import { HighPrecisionProfile, referenceProfile } from './reference/highPrecision';
@@ -23,16 +24,7 @@ function axis(rhoDeg: number, betaDeg: number): { ax: number; ay: number; az: nu
 }
 
 /** Mulberry32: a small seeded generator, so that every random case can be replayed. */
-function seeded(seed: number): () => number {
-  let s = seed >>> 0;
-  return () => {
-    s = (s + 0x6d2b79f5) >>> 0;
-    let t = s;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+const seeded = seededRandom;
 
 /** Closed forms are evaluated in 40 digits: in doubles, angles near 90 degrees cost up to 1e-11. */
 const X = Decimal.clone({ precision: 40 });

@@ -59,3 +59,14 @@ export function drawTool(rand: () => number, kind: ToolKind, rLo: number, rHi: n
 export function signedAngle(rand: () => number, lo: number, hi: number): number {
   return sig((rand() < 0.5 ? -1 : 1) * (lo + (hi - lo) * rand()), 4);
 }
+
+/** A row's tool and posture inputs, tilt and pattern left empty at their defaults (0, one-way), as a user would. */
+export function toolInputs(R: number, Rcr: number, rho: number, tilt: number, pattern: 'one-way' | 'zigzag') {
+  return {
+    R,
+    Rcr,
+    rho,
+    ...(tilt === 0 ? {} : { tilt }),
+    ...(pattern === 'one-way' ? {} : { pattern }),
+  };
+}

@@ -9,7 +9,7 @@
  */
 
 import { fromMm, type LengthUnit } from '../input/units';
-import { csvNumber } from './csvWrite';
+import { csvNumber, RESULT_COLUMNS } from './csvWrite';
 
 /** Input columns that hold a length (mm in the batch layout): rounded to 12 digits when converted. */
 const INPUT_LENGTH_COLUMNS: ReadonlySet<string> = new Set([
@@ -21,20 +21,10 @@ const INPUT_LENGTH_COLUMNS: ReadonlySet<string> = new Set([
   'crossRadius',
 ]);
 
-/** Result columns that hold a length (full precision). */
-const RESULT_LENGTH_COLUMNS: ReadonlySet<string> = new Set([
-  'exact',
-  'sekine',
-  'redonnet',
-  'bedi',
-  'interval',
-  'halfWidthRight',
-  'halfWidthLeft',
-  'contactOffset',
-  'otherCuspHeight',
-  'osculating',
-  'cornerBall',
-]);
+/** Result columns that hold a length (full precision): every result column but the text ones. */
+const RESULT_LENGTH_COLUMNS: ReadonlySet<string> = new Set(
+  RESULT_COLUMNS.filter((column) => column !== 'note' && column !== 'error'),
+);
 
 /** Columns that hold an angle in degrees. */
 const ANGLE_COLUMNS: ReadonlySet<string> = new Set(['rho', 'tilt']);

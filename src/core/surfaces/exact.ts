@@ -28,7 +28,7 @@ import {
   type PostureShape,
   shapeOfTool,
 } from '../tool/posture';
-import { stepOverFromReaches } from '../tool/stepOverRule';
+import { cuspsAtHalfInterval, oneWayCusps, stepOverFromReaches } from '../tool/stepOverRule';
 import type { CongruentPasses, ExactForward, ExactInverse } from './surface';
 
 /** The answers' types, defined with the surface interface (surface.ts); re-exported for the callers. */
@@ -147,35 +147,13 @@ export function planeInverse(input: AnyInverse): ExactInverse {
     // Each cusp is where a flank is L/2 from its contact (one-way without tilt is symmetric).
     const right = flankAtWidth(s, 'right', L / 2);
     const left = input.tiltAngleDeg === 0 ? right : flankAtWidth(s, 'left', L / 2);
-    const top = Math.max(right.heightMm, left.heightMm);
-    return {
-      intervalMm: L,
-      cuspHeightMm: top,
-      otherCuspHeightMm: input.pattern === 'zigzag' ? Math.min(right.heightMm, left.heightMm) : null,
-      rightCuspHeightMm: right.heightMm,
-      leftCuspHeightMm: left.heightMm,
-      halfWidthRightMm: L / 2,
-      halfWidthLeftMm: L / 2,
-      contactOffsetMm: y0,
-      right,
-      left,
-    };
+    const cusps = cuspsAtHalfInterval(L, right.heightMm, left.heightMm, input.pattern === 'zigzag', y0);
+    return { ...cusps, right, left };
   }
   const z = oneWayCuspHeightMm(s, L, flankLimits(s).limitMm);
   const right = flankAtHeight(s, 'right', z);
   const left = flankAtHeight(s, 'left', z);
-  return {
-    intervalMm: L,
-    cuspHeightMm: z,
-    otherCuspHeightMm: null,
-    rightCuspHeightMm: z,
-    leftCuspHeightMm: z,
-    halfWidthRightMm: right.widthMm,
-    halfWidthLeftMm: left.widthMm,
-    contactOffsetMm: y0,
-    right,
-    left,
-  };
+  return { ...oneWayCusps(L, z, right.widthMm, left.widthMm, y0), right, left };
 }
 
 /**
@@ -230,18 +208,8 @@ export function congruentInverse(input: AnyInverse, c: CongruentPasses): ExactIn
     // Without tilt the flanks are mirror images (on both axes): each cusp is at half the reach.
     const hR = Math.max(0, c.heightAt('right', reach / 2));
     const hL = input.tiltAngleDeg === 0 ? hR : Math.max(0, c.heightAt('left', reach / 2));
-    return {
-      intervalMm: L,
-      cuspHeightMm: Math.max(hR, hL),
-      otherCuspHeightMm: input.pattern === 'zigzag' ? Math.min(hR, hL) : null,
-      rightCuspHeightMm: hR,
-      leftCuspHeightMm: hL,
-      halfWidthRightMm: L / 2,
-      halfWidthLeftMm: L / 2,
-      contactOffsetMm: contactOffsetMm(s),
-      right: plane('right', hR),
-      left: plane('left', hL),
-    };
+    const cusps = cuspsAtHalfInterval(L, hR, hL, input.pattern === 'zigzag', contactOffsetMm(s));
+    return { ...cusps, right: plane('right', hR), left: plane('left', hL) };
   }
   // One-way with tilt (or across the axis): the cusp height z where the two reaches add up to L.
   const limit = c.limits().limitMm;
@@ -252,16 +220,7 @@ export function congruentInverse(input: AnyInverse, c: CongruentPasses): ExactIn
   // The flat faces already cover L (a flat bottom lying on the cylinder): no scallop. Past the
   // limit (no sign change) the bracket's top.
   const z = (fLo >= 0 ? 0 : fHi <= 0 ? hi : bracketedRoot(f, 0, hi, fLo, fHi, 1e-16)) ** 2;
-  return {
-    intervalMm: L,
-    cuspHeightMm: z,
-    otherCuspHeightMm: null,
-    rightCuspHeightMm: z,
-    leftCuspHeightMm: z,
-    halfWidthRightMm: c.intervalFromReach(c.reach('right', z)),
-    halfWidthLeftMm: c.intervalFromReach(c.reach('left', z)),
-    contactOffsetMm: contactOffsetMm(s),
-    right: plane('right', z),
-    left: plane('left', z),
-  };
+  const wR = c.intervalFromReach(c.reach('right', z));
+  const wL = c.intervalFromReach(c.reach('left', z));
+  return { ...oneWayCusps(L, z, wR, wL, contactOffsetMm(s)), right: plane('right', z), left: plane('left', z) };
 }

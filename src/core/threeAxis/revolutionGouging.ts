@@ -106,21 +106,38 @@ function maxDistance(
     take(b, cap);
   }
   for (const e of [ts - t.rb, ts + t.rb]) if (e >= a && e <= b) take(e, tz);
-  if (t.rcr > 0) {
-    for (const sign of [-1, 1]) {
-      const cs = ts + sign * t.rb;
-      const cz = tz + t.rcr;
-      const ds = cs - qs;
-      const dz = cz - qz;
-      const d = Math.sqrt(ds * ds + dz * dz);
-      if (!(d > 0)) continue;
-      // The farthest point of that corner's circle from q, if it lies on the lower quarter in range.
-      const ps = cs + (t.rcr * ds) / d;
-      const pz = cz + (t.rcr * dz) / d;
-      if (sign * (ps - cs) >= 0 && pz <= cz && ps >= a && ps <= b && pz <= cap) take(ps, pz);
-    }
-  }
+  cornerExtremes(t, ts, tz, qs, qz, a, b, cap, true, take);
   return best;
+}
+
+/**
+ * Hands `take` the point of each corner circle farthest from q (or nearest to it), where it lies on
+ * the circle's lower quarter, within `a <= s <= b` and at most `cap` high.
+ */
+function cornerExtremes(
+  t: MeridianTool,
+  ts: number,
+  tz: number,
+  qs: number,
+  qz: number,
+  a: number,
+  b: number,
+  cap: number,
+  farthest: boolean,
+  take: (s: number, z: number) => void,
+): void {
+  if (!(t.rcr > 0)) return;
+  for (const sign of [-1, 1]) {
+    const cs = ts + sign * t.rb;
+    const cz = tz + t.rcr;
+    const ds = farthest ? cs - qs : qs - cs;
+    const dz = farthest ? cz - qz : qz - cz;
+    const d = Math.sqrt(ds * ds + dz * dz);
+    if (!(d > 0)) continue;
+    const ps = cs + (t.rcr * ds) / d;
+    const pz = cz + (t.rcr * dz) / d;
+    if (sign * (ps - cs) >= 0 && pz <= cz && ps >= a && ps <= b && pz <= cap) take(ps, pz);
+  }
 }
 
 /** Smallest distance (mm) from (qs, qz) to the tool region with tip (ts, tz), clipped to `sLo <= s <= sHi`. */
@@ -154,19 +171,7 @@ function minDistance(
   const fb = Math.min(b, ts + t.rb);
   if (fa <= fb) take(Math.min(fb, Math.max(fa, qs)), tz);
   for (const e of [ts - t.R, ts + t.R]) if (e >= a && e <= b) take(e, tz + t.rcr);
-  if (t.rcr > 0) {
-    for (const sign of [-1, 1]) {
-      const cs = ts + sign * t.rb;
-      const cz = tz + t.rcr;
-      const ds = qs - cs;
-      const dz = qz - cz;
-      const d = Math.sqrt(ds * ds + dz * dz);
-      if (!(d > 0)) continue;
-      const ps = cs + (t.rcr * ds) / d;
-      const pz = cz + (t.rcr * dz) / d;
-      if (sign * (ps - cs) >= 0 && pz <= cz && ps >= a && ps <= b) take(ps, pz);
-    }
-  }
+  cornerExtremes(t, ts, tz, qs, qz, a, b, Number.POSITIVE_INFINITY, false, take);
   return best;
 }
 

@@ -13,7 +13,7 @@
 import { FIELDS } from '../input/fields';
 import { isNumberText } from '../input/validate';
 import type { ThreeAxisErrorCode, ThreeAxisField } from './errors';
-import type { SlopedPlaneCase, ThreeAxisPasses } from './slopedPlane';
+import type { SlopedPlaneAnswer, SlopedPlaneCase, ThreeAxisPasses } from './slopedPlane';
 import type { RevolutionCase } from './waterlineRevolution';
 
 /** The fields a three-axis input error can name (the solvers' fields, the strategy, and a lead or tilt given with a slope). */
@@ -63,23 +63,25 @@ export type ThreeAxisProblem =
       readonly mm: number;
     };
 
-/** The answer of a three-axis problem, whichever surface. */
-export interface ThreeAxisAnswer {
+/**
+ * The answer of a three-axis problem, whichever surface: the sloped plane's fields (on a surface of
+ * revolution Lxy is the horizontal distance between the tool axes) but its height limit, and the passes.
+ */
+export interface ThreeAxisAnswer extends Omit<SlopedPlaneAnswer, 'heightLimitMm'> {
   readonly passes: ThreeAxisPasses;
-  /** L along the surface between adjacent CC paths, mm. */
-  readonly intervalMm: number;
-  /** Lxy: horizontal distance between the passes' vertical planes (plane) or the tool axes (revolution), mm. */
-  readonly horizontalStepMm: number;
-  /** dz between adjacent levels (waterline), mm; null for raster. */
-  readonly stepDownMm: number | null;
-  /** Cusp height along the surface normal, mm (0: no scallop). */
-  readonly cuspHeightMm: number;
-  /** The equivalent posture at the CC point, degrees. */
-  readonly leadDeg: number;
-  readonly tiltDeg: number;
-  /** True when no scallop forms (a flat end on a flat floor: L = 2R). */
-  readonly noScallop: boolean;
 }
+
+/** The programmed steps that belong to one kind of passes: refused with the other, and why. */
+const STEP_NOT_WITH = {
+  horizontalStep: {
+    passes: 'waterline',
+    why: 'is the step of raster passes: waterline passes are programmed by their step-down dz.',
+  },
+  stepDown: {
+    passes: 'raster',
+    why: 'is the step of waterline passes: raster passes are programmed by their horizontal step Lxy.',
+  },
+} as const satisfies Record<'horizontalStep' | 'stepDown', { passes: ThreeAxisPasses; why: string }>;
 
 const STRATEGIES: readonly ThreeAxisPasses[] = ['raster', 'waterline'];
 
@@ -210,24 +212,9 @@ export function validateThreeAxis(
     else if (field === 'feedRadius') feed = value;
     else cross = value;
   }
-  if (quantity === 'horizontalStep' && passes === 'waterline')
-    errors.push(
-      inputError(
-        'horizontalStep',
-        'not-with',
-        textOf(rawValue) ?? '',
-        'is the step of raster passes: waterline passes are programmed by their step-down dz.',
-      ),
-    );
-  if (quantity === 'stepDown' && passes === 'raster')
-    errors.push(
-      inputError(
-        'stepDown',
-        'not-with',
-        textOf(rawValue) ?? '',
-        'is the step of waterline passes: raster passes are programmed by their horizontal step Lxy.',
-      ),
-    );
+  const wrongStep = quantity === 'horizontalStep' || quantity === 'stepDown' ? STEP_NOT_WITH[quantity] : null;
+  if (wrongStep !== null && passes === wrongStep.passes)
+    errors.push(inputError(quantity, 'not-with', textOf(rawValue) ?? '', wrongStep.why));
   const mm = numberOf(quantity, rawValue, errors, true);
   if (errors.length > 0 || R === undefined || Rcr === undefined || slope === undefined || mm === undefined)
     return { ok: false, errors };

@@ -102,8 +102,21 @@ export function flankLimits(s: PostureShape): FlankLimits {
   const topLeftMm = flankTopMm(s, -1);
   const shankRightMm = shankTopMm(s, 1);
   const shankLeftMm = shankTopMm(s, -1);
-  // The shank first: on the side the tool leans to it binds before (or with) that flank's top,
-  // and a tie is better explained by the shank.
+  return flankLimitsOf(topRightMm, topLeftMm, shankRightMm, shankLeftMm);
+}
+
+/**
+ * The flank and shank limits from the heights of the flanks' tops and of the shank's start (null
+ * where it never cuts): the least binds. The shank first: on the side the tool leans to it binds
+ * before (or with) that flank's top, and a tie is better explained by the shank. The one rule of
+ * the plane's, the cylinder's and the doubly curved point's limits.
+ */
+export function flankLimitsOf(
+  topRightMm: number,
+  topLeftMm: number,
+  shankRightMm: number | null,
+  shankLeftMm: number | null,
+): FlankLimits {
   const candidates: Array<[number, FlankLimits['limitBy']]> = [];
   if (shankRightMm !== null) candidates.push([shankRightMm, 'shank-right']);
   if (shankLeftMm !== null) candidates.push([shankLeftMm, 'shank-left']);

@@ -22,3 +22,39 @@ import type { PassPattern } from '../domain/tool';
 export function stepOverFromReaches(pattern: PassPattern, rightReach: number, leftReach: number): number {
   return pattern === 'one-way' ? rightReach + leftReach : 2 * Math.min(rightReach, leftReach);
 }
+
+/**
+ * The cusps and flank widths of an inverse answer (mm, every surface's, before its own extras) for
+ * passes `L` apart whose cusps stand where each flank reaches L/2 (zigzag, or one-way without
+ * tilt): the scallop height is the higher cusp, zigzag's other cusp the lower one.
+ *
+ * @param hR height of the right flank's cusp, mm; `hL` the left's.
+ * @param zigzag whether the passes alternate (then both cusps stand).
+ * @param contactOffsetMm the contact offset y0.
+ */
+export function cuspsAtHalfInterval(L: number, hR: number, hL: number, zigzag: boolean, contactOffsetMm: number) {
+  return {
+    intervalMm: L,
+    cuspHeightMm: Math.max(hR, hL),
+    otherCuspHeightMm: zigzag ? Math.min(hR, hL) : null,
+    rightCuspHeightMm: hR,
+    leftCuspHeightMm: hL,
+    halfWidthRightMm: L / 2,
+    halfWidthLeftMm: L / 2,
+    contactOffsetMm,
+  };
+}
+
+/** One-way passes `L` apart whose one cusp stands at height `z` (mm), the flanks `wR` and `wL` wide there. */
+export function oneWayCusps(L: number, z: number, wR: number, wL: number, contactOffsetMm: number) {
+  return {
+    intervalMm: L,
+    cuspHeightMm: z,
+    otherCuspHeightMm: null,
+    rightCuspHeightMm: z,
+    leftCuspHeightMm: z,
+    halfWidthRightMm: wR,
+    halfWidthLeftMm: wL,
+    contactOffsetMm,
+  };
+}

@@ -68,13 +68,4 @@ export function bruteForceHalfIntervalMm(R: number, Rcr: number, rhoDeg: number,
 }
 
 /** Small seeded PRNG (mulberry32) so that a failing random case can be replayed from its seed. */
-export function seededRandom(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+export { seededRandom } from '../../../core/math/seededRandom';

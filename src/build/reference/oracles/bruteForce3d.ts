@@ -33,6 +33,7 @@
  * error of 1e-16 R / h in h: do not use it there. Cost: about 10-15 ms to sample (390k
  * points), well under 1 ms per width.
  */
+import { goldenSection } from './goldenSection';
 
 type Vec3 = readonly [number, number, number];
 
@@ -85,31 +86,10 @@ const cross = (p: Vec3, q: Vec3): Vec3 => [
   p[0] * q[1] - p[1] * q[0],
 ];
 
-const GOLDEN = (Math.sqrt(5) - 1) / 2;
-
 /** Maximum of f on [a, b] by golden section (f unimodal there, or monotone). */
 function goldenMax(f: (x: number) => number, a0: number, b0: number): { x: number; value: number } {
-  let a = a0;
-  let b = b0;
-  let c = b - GOLDEN * (b - a);
-  let d = a + GOLDEN * (b - a);
-  let fc = f(c);
-  let fd = f(d);
-  for (let i = 0; i < 200 && b - a > 1e-15 * (Math.abs(a) + Math.abs(b)) + 1e-300; i++) {
-    if (fc >= fd) {
-      b = d;
-      d = c;
-      fd = fc;
-      c = b - GOLDEN * (b - a);
-      fc = f(c);
-    } else {
-      a = c;
-      c = d;
-      fc = fd;
-      d = a + GOLDEN * (b - a);
-      fd = f(d);
-    }
-  }
+  const bracket = goldenSection((x) => -f(x), a0, b0, 200, 1e-15, 1e-300);
+  const [c, d, fc, fd] = [bracket.c, bracket.d, -bracket.fc, -bracket.fd];
   const candidates: [number, number][] = [
     [a0, f(a0)],
     [b0, f(b0)],

@@ -31,6 +31,7 @@
  * insensitive to its argument; at a crossing the bisection is run to the last bit); measured
  * against closed forms in tests/support/reference.test.ts. Cost: about 10-40 ms per reach.
  */
+import { goldenSection } from './goldenSection';
 
 export interface CylinderReachTool {
   readonly toolRadiusMm: number;
@@ -61,34 +62,19 @@ export interface CylinderReachReference {
 
 type Vec = [number, number, number];
 
-const GOLDEN = (Math.sqrt(5) - 1) / 2;
-
 /** Golden-section maximum of f on [a, b]; returns the best value and argument seen. */
 function golden(f: (x: number) => number, a0: number, b0: number, iterations = 90): { x: number; v: number } {
-  let a = a0;
-  let b = b0;
-  let c = b - GOLDEN * (b - a);
-  let d = a + GOLDEN * (b - a);
-  let fc = f(c);
-  let fd = f(d);
-  let best = { x: c, v: fc };
-  for (let i = 0; i < iterations && b - a > 1e-17 * (Math.abs(a) + Math.abs(b)); i++) {
-    if (fc >= fd) {
-      b = d;
-      d = c;
-      fd = fc;
-      c = b - GOLDEN * (b - a);
-      fc = f(c);
-      if (fc > best.v) best = { x: c, v: fc };
-    } else {
-      a = c;
-      c = d;
-      fc = fd;
-      d = a + GOLDEN * (b - a);
-      fd = f(d);
-      if (fd > best.v) best = { x: d, v: fd };
-    }
-  }
+  // The best value seen: f at the first c, then at each new point (the first d only at the end).
+  let best = { x: Number.NaN, v: Number.NaN };
+  let asked = 0;
+  const negated = (x: number): number => {
+    const v = f(x);
+    if (asked === 0 || (asked > 1 && v > best.v)) best = { x, v };
+    asked++;
+    return -v;
+  };
+  const bracket = goldenSection(negated, a0, b0, iterations, 1e-17, 0);
+  const [d, fd] = [bracket.d, -bracket.fd];
   if (fd > best.v) best = { x: d, v: fd };
   return best;
 }
@@ -133,17 +119,19 @@ export function cylinderReach(
     out[2] = c * e1[2] + s * e2[2];
   };
   const r: Vec = [0, 0, 0];
+  /** The point at `radius` from the tool axis towards ring angle t, `axial` up the axis from O. */
+  const ringPoint = (t: number, radius: number, axial: number, out: Vec) => {
+    radial(t, r);
+    out[0] = O[0] + radius * r[0] + axial * a[0];
+    out[1] = O[1] + radius * r[1] + axial * a[1];
+    out[2] = O[2] + radius * r[2] + axial * a[2];
+  };
   const torus = (psiTop: number): Patch => ({
     name: 'torus',
     v0: -Math.PI / 2,
     v1: psiTop,
     at(t, psi, out) {
-      radial(t, r);
-      const c = rb + rcr * Math.cos(psi);
-      const s = rcr * Math.sin(psi);
-      out[0] = O[0] + c * r[0] + s * a[0];
-      out[1] = O[1] + c * r[1] + s * a[1];
-      out[2] = O[2] + c * r[2] + s * a[2];
+      ringPoint(t, rb + rcr * Math.cos(psi), rcr * Math.sin(psi), out);
     },
   });
   const disk = (axial: number, name: string): Patch => ({
@@ -151,10 +139,7 @@ export function cylinderReach(
     v0: 0,
     v1: rb,
     at(t, s, out) {
-      radial(t, r);
-      out[0] = O[0] + s * r[0] + axial * a[0];
-      out[1] = O[1] + s * r[1] + axial * a[1];
-      out[2] = O[2] + s * r[2] + axial * a[2];
+      ringPoint(t, s, axial, out);
     },
   });
   const shank: Patch = {
@@ -162,10 +147,7 @@ export function cylinderReach(
     v0: 0,
     v1: shankLength,
     at(t, u, out) {
-      radial(t, r);
-      out[0] = O[0] + R * r[0] + u * a[0];
-      out[1] = O[1] + R * r[1] + u * a[1];
-      out[2] = O[2] + R * r[2] + u * a[2];
+      ringPoint(t, R, u, out);
     },
   };
   const endPatches: Patch[] = [torus(Math.PI / 2), disk(-rcr, 'bottom'), disk(rcr, 'top')];

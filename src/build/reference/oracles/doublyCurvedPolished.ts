@@ -45,6 +45,7 @@ import {
   type ToolSample,
   toolGeometry,
 } from './doublyCurvedBruteForce';
+import { goldenSection } from './goldenSection';
 
 /** The tool and posture (mm, degrees), as bruteForceDoublyCurved takes it. */
 export interface PolishTool {
@@ -70,8 +71,6 @@ interface ColumnPoint {
   u: number;
   H: number;
 }
-
-const GOLD = (Math.sqrt(5) - 1) / 2;
 
 /** One pass's map from tool-surface parameters (t, u) to the section's (s, H), see the module comment. */
 class PassMap {
@@ -269,27 +268,7 @@ function localColumn(map: PassMap, target: number, start: ColumnPoint, half: num
   };
   let centre = start.t;
   for (let round = 0; round < 6; round++) {
-    let a = centre - half;
-    let b = centre + half;
-    let c = b - GOLD * (b - a);
-    let d = a + GOLD * (b - a);
-    let fc = f(c);
-    let fd = f(d);
-    for (let i = 0; i < 200 && b - a > 2e-16 * (Math.abs(a) + Math.abs(b)) + 1e-300; i++) {
-      if (fc <= fd) {
-        b = d;
-        d = c;
-        fd = fc;
-        c = b - GOLD * (b - a);
-        fc = f(c);
-      } else {
-        a = c;
-        c = d;
-        fc = fd;
-        d = a + GOLD * (b - a);
-        fd = f(d);
-      }
-    }
+    goldenSection(f, centre - half, centre + half, 200, 2e-16, 1e-300);
     const found = best as ColumnPoint | null;
     if (found === null) return null;
     // Re-centre while the least sits within 10% of the bracket's ends (the minimiser moved with s).

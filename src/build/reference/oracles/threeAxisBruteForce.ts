@@ -42,6 +42,7 @@
  * stage: the crossing of the two tools' lowest points by bisection, each column evaluated to
  * about 1e-13 mm.
  */
+import { goldenSection } from './goldenSection';
 
 /** The tool (mm). */
 export interface BruteTool {
@@ -51,31 +52,9 @@ export interface BruteTool {
 
 type V3 = readonly [number, number, number];
 
-const GOLD = (Math.sqrt(5) - 1) / 2;
-
 /** Minimum of f on [a, b] by golden section (f unimodal there), value and argument. */
 function goldenMin(f: (x: number) => number, a0: number, b0: number, iters = 90): { x: number; v: number } {
-  let a = a0;
-  let b = b0;
-  let c = b - GOLD * (b - a);
-  let d = a + GOLD * (b - a);
-  let fc = f(c);
-  let fd = f(d);
-  for (let i = 0; i < iters && b - a > 1e-16 * (Math.abs(a) + Math.abs(b)) + 1e-300; i++) {
-    if (fc <= fd) {
-      b = d;
-      d = c;
-      fd = fc;
-      c = b - GOLD * (b - a);
-      fc = f(c);
-    } else {
-      a = c;
-      c = d;
-      fc = fd;
-      d = a + GOLD * (b - a);
-      fd = f(d);
-    }
-  }
+  const { c, d, fc } = goldenSection(f, a0, b0, iters, 1e-16, 1e-300);
   let best = { x: c, v: fc };
   for (const x of [a0, b0, d]) {
     const v = f(x);

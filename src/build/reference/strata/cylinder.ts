@@ -5,7 +5,7 @@
 import type { SurfaceAxis } from '../../../core/domain/surface.ts';
 import { scallopHeightLimits, validateForward } from '../../../core/surfaces/validate.ts';
 import type { Draft, Stratum, ToolKind } from '../draft.ts';
-import { drawTool, logUniform, sig, signedAngle, TOOL_KINDS } from '../draft.ts';
+import { drawTool, logUniform, sig, signedAngle, TOOL_KINDS, toolInputs } from '../draft.ts';
 import { cylinderReach } from '../oracles/cylinderReach.ts';
 
 function cylinderStratum(axis: SurfaceAxis, convex: boolean, count: number): Stratum {
@@ -30,11 +30,7 @@ function cylinderStratum(axis: SurfaceAxis, convex: boolean, count: number): Str
           if (!(limit >= 1e-6)) continue;
           const h = sig(limit * 0.9 * 10 ** (-4 * rand() ** 1.5));
           const inputs = {
-            R,
-            Rcr,
-            rho,
-            ...(tilt === 0 ? {} : { tilt }),
-            ...(pattern === 'one-way' ? {} : { pattern }),
+            ...toolInputs(R, Rcr, rho, tilt, pattern),
             surfaceRadius: rs,
             surfaceAxis: axis,
             h,

@@ -7,7 +7,7 @@
 import { doublyCurvedGouges } from '../../../core/surfaces/doublyCurved/gouging.ts';
 import { doublyCurvedForward, doublyCurvedLimits } from '../../../core/surfaces/doublyCurved/solve.ts';
 import type { Draft, ReferenceValue, Stratum, ToolKind } from '../draft.ts';
-import { drawTool, logUniform, sig, signedAngle, TOOL_KINDS } from '../draft.ts';
+import { drawTool, logUniform, sig, signedAngle, TOOL_KINDS, toolInputs } from '../draft.ts';
 import { bruteForceDoublyCurved } from '../oracles/doublyCurvedBruteForce.ts';
 import { polishDoublyCurvedCusp } from '../oracles/doublyCurvedPolished.ts';
 
@@ -81,11 +81,7 @@ export const doublyCurved: Stratum = {
           mode: 'inverse',
           quantity: 'scallopHeight',
           inputs: {
-            R,
-            Rcr,
-            rho,
-            ...(tilt === 0 ? {} : { tilt }),
-            ...(pattern === 'one-way' ? {} : { pattern }),
+            ...toolInputs(R, Rcr, rho, tilt, pattern),
             feedRadius: rf,
             crossRadius: rc,
             interval: L,

@@ -7,7 +7,7 @@ import { forwardInput } from '../../../core/input/validate.ts';
 import { exactRoughness } from '../../../core/roughness/roughness.ts';
 import { maxIntervalMm, scallopHeightLimits } from '../../../core/surfaces/validate.ts';
 import type { Draft, ReferenceValue, Stratum, ToolKind } from '../draft.ts';
-import { drawTool, logUniform, sig, signedAngle, TOOL_KINDS } from '../draft.ts';
+import { drawTool, logUniform, sig, signedAngle, TOOL_KINDS, toolInputs } from '../draft.ts';
 import { referenceProfile } from '../oracles/highPrecision.ts';
 import { referenceHeightForRa, referenceRoughness } from '../roughnessReference.ts';
 
@@ -31,13 +31,7 @@ const toolInput = (c: PlaneCase) => ({
 
 /** The row's inputs for a plane case (tilt and pattern left empty at their defaults, as a user would). */
 function inputsOf(c: PlaneCase): Record<string, number | string> {
-  return {
-    R: c.R,
-    Rcr: c.Rcr,
-    rho: c.rho,
-    ...(c.tilt === 0 ? {} : { tilt: c.tilt }),
-    ...(c.pattern === 'one-way' ? {} : { pattern: c.pattern }),
-  };
+  return toolInputs(c.R, c.Rcr, c.rho, c.tilt, c.pattern);
 }
 
 /** A lead in [0, 89.9) degrees: exactly 0 one time in ten, steep ones one time in ten. */

@@ -3,7 +3,7 @@
  * module comment). Lengths mm, angles radians.
  */
 import { bracketedRoot, goldenMinimum, MAX_ITERATIONS, newSearchEnd } from '../../math/rootFinder';
-import { evalSection, type FlankLimits, newSection, type PostureShape } from '../../tool/posture';
+import { evalSection, type FlankLimits, flankLimitsOf, newSection, type PostureShape } from '../../tool/posture';
 import { planeTop, radialHeightOf } from './feedProfile';
 import { stadiumLimit, stadiumOf } from './stadium';
 
@@ -145,11 +145,5 @@ export function limitsOf(
   const topLeftMm = Math.max(0, topLeft);
   const shankRightMm = shankRight === null ? null : Math.max(0, shankRight);
   const shankLeftMm = shankLeft === null ? null : Math.max(0, shankLeft);
-  const candidates: Array<[number, FlankLimits['limitBy']]> = [];
-  if (shankRightMm !== null) candidates.push([shankRightMm, 'shank-right']);
-  if (shankLeftMm !== null) candidates.push([shankLeftMm, 'shank-left']);
-  candidates.push([topRightMm, 'right-flank'], [topLeftMm, 'left-flank']);
-  let best = candidates[0] as [number, FlankLimits['limitBy']];
-  for (const c of candidates) if (c[0] < best[0]) best = c;
-  return { topRightMm, topLeftMm, shankRightMm, shankLeftMm, limitMm: best[0], limitBy: best[1] };
+  return flankLimitsOf(topRightMm, topLeftMm, shankRightMm, shankLeftMm);
 }

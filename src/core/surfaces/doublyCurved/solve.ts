@@ -17,7 +17,8 @@
 
 import type { ToolInput } from '../../domain/tool';
 import { bracketedRoot, type Objective } from '../../math/rootFinder';
-import { contactOffsetMm, shapeOfTool } from '../../tool/posture';
+import { contactOffsetMm, flankLimitsOf, shapeOfTool } from '../../tool/posture';
+import { cuspsAtHalfInterval, oneWayCusps } from '../../tool/stepOverRule';
 import { type EquatorFlank, equatorFlank } from './equatorFlank';
 import { passSection } from './passSection';
 import { shankCutHeights } from './shankLimit';
@@ -75,13 +76,7 @@ export function limitsOf(
   shankRightMm: number | null,
   shankLeftMm: number | null,
 ): DoublyCurvedLimits {
-  const candidates: Array<[number, DoublyCurvedLimits['limitBy']]> = [];
-  if (shankRightMm !== null) candidates.push([shankRightMm, 'shank-right']);
-  if (shankLeftMm !== null) candidates.push([shankLeftMm, 'shank-left']);
-  candidates.push([topRightMm, 'right-flank'], [topLeftMm, 'left-flank']);
-  let best = candidates[0] as [number, DoublyCurvedLimits['limitBy']];
-  for (const c of candidates) if (c[0] < best[0]) best = c;
-  return { topRightMm, topLeftMm, shankRightMm, shankLeftMm, limitMm: best[0], limitBy: best[1] };
+  return flankLimitsOf(topRightMm, topLeftMm, shankRightMm, shankLeftMm);
 }
 
 /**
@@ -151,28 +146,10 @@ export function inverseWith(
   if (pattern === 'zigzag' || solver.symmetric) {
     const hR = Math.max(0, solver.right.heightAtMm(L / 2));
     const hL = solver.symmetric ? hR : Math.max(0, solver.left.heightAtMm(L / 2));
-    return {
-      intervalMm: L,
-      cuspHeightMm: Math.max(hR, hL),
-      otherCuspHeightMm: pattern === 'zigzag' ? Math.min(hR, hL) : null,
-      rightCuspHeightMm: hR,
-      leftCuspHeightMm: hL,
-      halfWidthRightMm: L / 2,
-      halfWidthLeftMm: L / 2,
-      contactOffsetMm: solver.contactOffsetMm,
-    };
+    return cuspsAtHalfInterval(L, hR, hL, pattern === 'zigzag', solver.contactOffsetMm);
   }
   const z = oneWayCuspMm(solver, L);
-  return {
-    intervalMm: L,
-    cuspHeightMm: z,
-    otherCuspHeightMm: null,
-    rightCuspHeightMm: z,
-    leftCuspHeightMm: z,
-    halfWidthRightMm: solver.right.reachMm(z),
-    halfWidthLeftMm: solver.left.reachMm(z),
-    contactOffsetMm: solver.contactOffsetMm,
-  };
+  return oneWayCusps(L, z, solver.right.reachMm(z), solver.left.reachMm(z), solver.contactOffsetMm);
 }
 
 /** `wR(u^2) + wL(u^2) - L`: the one-way cusp's mismatch at height u^2 (u in sqrt(mm)). */
