@@ -20,7 +20,7 @@ import { StringDecoder } from 'node:string_decoder';
 import { APPROXIMATIONS, type ApproximationKey, type ExactInverse, forwardInput } from '../core/index';
 import { FIELDS, fieldOfCsvColumn } from '../core/input/fields';
 import { fromMm, type LengthUnit } from '../core/input/units';
-import { csvNumber, emptyCellNotes, RESULT_COLUMNS, resultFields } from '../core/output/csvWrite';
+import { csvNumber, emptyCellNotes, type LengthText, RESULT_COLUMNS, resultFields } from '../core/output/csvWrite';
 import {
   type DoublyCurvedInverse,
   type DoublyCurvedProblem,
@@ -41,7 +41,7 @@ import {
   RA_COLUMN,
   REQUIRED_COLUMNS,
 } from './batchHeader';
-import { CsvReader, type CsvRecord, csvText } from './csv';
+import { CsvReader, type CsvRecord, csvText, isNumberText } from './csv';
 import { lengthText } from './lengthInput';
 import { describeSystemError, errorLine, escapeControls, FLUSH_CHARS, type Output } from './output';
 import {
@@ -75,25 +75,83 @@ function trimSpaces(text: string): string {
   return text.replace(/^[ \t]+|[ \t]+$/g, '');
 }
 
+/**
+ * True for a field the echo writes as it is: printable ASCII without a comma or a quote, not
+ * starting with a space, a tab or a character a spreadsheet may read as a formula (`=+-@`), not
+ * ending with a space or a tab. trimSpaces, escapeControls and csvText leave such a field alone,
+ * so it needs none of them (the plain numbers of most records).
+ */
+function echoedAsIs(text: string): boolean {
+  const n = text.length;
+  if (n === 0) return true;
+  const first = text.charCodeAt(0);
+  if (first === 61 /* = */ || first === 43 /* + */ || first === 45 /* - */ || first === 64 /* @ */) return false;
+  if (first === 32 || text.charCodeAt(n - 1) === 32) return false;
+  for (let i = 0; i < n; i++) {
+    const c = text.charCodeAt(i);
+    if (c < 33 || c > 126 || c === 34 /* " */ || c === 44 /* , */) return false;
+  }
+  return true;
+}
+
+/** A field as the echo writes it: spaces around dropped, control characters escaped, quoted for CSV. */
+function echoText(text: string): string {
+  return echoedAsIs(text) ? text : csvText(escapeControls(trimSpaces(text)));
+}
+
 /** A row with no results: its message in `error`, on one line (control characters escaped, as on stderr). */
 function errorRow(echo: string, layout: Layout, message: string): string {
   return `${echo}${emptyResults(layout)},${csvText(escapeControls(message))}\n`;
+}
+
+/** How a layout's input columns become a question: each column's option, whether it is required, its unit. */
+interface ColumnPlan {
+  readonly index: number;
+  readonly option: ValueOption;
+  /** An empty field of a column not required takes its default, as a missing column does. */
+  readonly required: boolean;
+  /** The unit of a length column (its own or the run's); null for a column that is no length. */
+  readonly unit: LengthUnit | null;
+}
+
+/** The plan of each input column of `layout`, in the layout's index order (the fields' order of a question). */
+function columnPlans(layout: Layout): readonly ColumnPlan[] {
+  const plans: ColumnPlan[] = [];
+  for (const [column, i] of Object.entries(layout.index) as [InputColumn, number][]) {
+    const field = fieldOfCsvColumn(column);
+    const option = field === null ? null : FIELDS[field].cli;
+    if (option === null || field === null) continue;
+    const required = column === layout.target || (REQUIRED_COLUMNS as readonly string[]).includes(column);
+    const unit = isLengthColumn(column) ? (layout.columnUnits[column] ?? layout.unit) : null;
+    plans.push({ index: i, option: option as ValueOption, required, unit });
+  }
+  return plans;
+}
+
+/** The plans of the last layout asked (a run has one layout: they are made once). */
+let planned: { readonly layout: Layout; readonly plans: readonly ColumnPlan[] } | null = null;
+
+function plansOf(layout: Layout): readonly ColumnPlan[] {
+  if (planned === null || planned.layout !== layout) planned = { layout, plans: columnPlans(layout) };
+  return planned.plans;
+}
+
+/** A length field's text in mm: a plain decimal in mm is handed on as typed (lengthText's rule, without parsing). */
+function lengthField(text: string, unit: LengthUnit): string {
+  return unit === 'mm' && isNumberText(text) ? text : lengthText(text, unit);
 }
 
 /** The question of a record: each input column's field by its option (question.ts), lengths in mm. */
 function recordValues(fields: readonly string[], layout: Layout): { values: QuestionValues; typed: QuestionValues } {
   const values: Partial<Record<ValueOption, string>> = {};
   const typed: Partial<Record<ValueOption, string>> = {};
-  for (const [column, i] of Object.entries(layout.index) as [InputColumn, number][]) {
-    const field = fieldOfCsvColumn(column);
-    const option = field === null ? null : FIELDS[field].cli;
-    const text = fields[i] as string;
-    if (option === null || field === null) continue;
-    // An empty optional field takes its default, as a missing column does (a required one is "missing").
-    const required = column === layout.target || (REQUIRED_COLUMNS as readonly string[]).includes(column);
-    if (!required && text.trim() === '') continue;
-    typed[option] = text;
-    values[option] = isLengthColumn(column) ? lengthText(text, layout.columnUnits[column] ?? layout.unit) : text;
+  const plans = plansOf(layout);
+  for (let j = 0; j < plans.length; j++) {
+    const plan = plans[j] as ColumnPlan;
+    const text = fields[plan.index] as string;
+    if (!plan.required && text.trim() === '') continue;
+    typed[plan.option] = text;
+    values[plan.option] = plan.unit === null ? text : lengthField(text, plan.unit);
   }
   return { values, typed };
 }
@@ -109,7 +167,7 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
   let echo = '';
   for (let j = 0; j < layout.echoed.length; j++) {
     const c = layout.echoed[j] as { readonly index: number };
-    echo += `${j === 0 ? '' : ','}${csvText(escapeControls(trimSpaces(fields[c.index] ?? '')))}`;
+    echo += `${j === 0 ? '' : ','}${echoText(fields[c.index] ?? '')}`;
   }
   if (record.error !== null) return errorRow(echo, layout, `line ${record.line}: ${record.error}`);
   if (fields.length !== layout.width) {
@@ -141,13 +199,23 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
     return `${echo},${inverseResults(e, layout.unit)},,\n`;
   }
   const hMm = a.kind === 'pass-forward' ? a.input.scallopHeightMm : a.scallopHeightMm;
-  const h = a.targetRaMm === undefined ? '' : `${inUnit([csvNumber(hMm)], layout.unit)},`;
+  const length = lengthWriter(layout.unit);
+  const h = a.targetRaMm === undefined ? '' : `${length(hMm)},`;
   if (a.kind === 'doubly-forward') {
     const notes = emptyCellNotes(forwardInput(a.problem, a.problem.pattern, a.scallopHeightMm)).join(' ');
     return `${echo},${h}${doublyCurvedResults(a.problem, a.scallopHeightMm, layout.unit)},${csvText(notes)},\n`;
   }
-  const parts = resultFields(a.input).split(',');
-  return `${echo},${h}${inUnit(parts.slice(0, RESULT_NUMBERS), layout.unit)},${parts.slice(RESULT_NUMBERS).join(',')},\n`;
+  return `${echo},${h}${resultFields(a.input, length)},\n`;
+}
+
+/** A length result's text in the run's unit (from its double, as csvNumber writes it). */
+function inchText(lengthMm: number): string {
+  return csvNumber(fromMm(lengthMm, 'in'));
+}
+
+/** The writer of length results in `unit`. */
+function lengthWriter(unit: LengthUnit): LengthText {
+  return unit === 'mm' ? csvNumber : inchText;
 }
 
 /** The results of a row given the step-over (INVERSE_RESULT_COLUMNS before `note`), in the run's unit. */
@@ -166,9 +234,6 @@ function inverseResults(e: ExactInverse | DoublyCurvedInverse, unit: LengthUnit)
     unit,
   );
 }
-
-/** The number columns of a row's results (exact to cornerBall), before `note` and `error`. */
-const RESULT_NUMBERS = RESULT_COLUMNS.indexOf('note');
 
 /**
  * The results of a doubly curved point: the exact answer in the result columns (exact L/2, interval,

@@ -104,10 +104,11 @@ function surfaceForm(
   | { readonly kind: 'both' } {
   const rf = given(values, FIELDS.feedRadius.cli);
   const rc = given(values, FIELDS.crossRadius.cli);
+  // Neither radius: the values as they are (a pass reads no radius; no copy for every batch row).
+  if (rf === undefined && rc === undefined) return { kind: 'pass', values };
   const rest: Partial<Record<ValueOption, string>> = { ...values };
   delete rest[FIELDS.feedRadius.cli];
   delete rest[FIELDS.crossRadius.cli];
-  if (rf === undefined && rc === undefined) return { kind: 'pass', values: rest };
   const cylinder =
     given(values, FIELDS.surfaceRadius.cli) !== undefined || given(values, FIELDS.surfaceAxis.cli) !== undefined;
   if (cylinder) return { kind: 'both' };
