@@ -141,19 +141,20 @@ function lengthField(text: string, unit: LengthUnit): string {
   return unit === 'mm' && isNumberText(text) ? text : lengthText(text, unit);
 }
 
-/** The question of a record: each input column's field by its option (question.ts), lengths in mm. */
-function recordValues(fields: readonly string[], layout: Layout): { values: QuestionValues; typed: QuestionValues } {
+/**
+ * The question of a record: each input column's field by its option (question.ts), lengths in mm;
+ * with `asTyped`, each field as typed (before its unit was read: for the messages of a refused row).
+ */
+function recordValues(fields: readonly string[], layout: Layout, asTyped = false): QuestionValues {
   const values: Partial<Record<ValueOption, string>> = {};
-  const typed: Partial<Record<ValueOption, string>> = {};
   const plans = plansOf(layout);
   for (let j = 0; j < plans.length; j++) {
     const plan = plans[j] as ColumnPlan;
     const text = fields[plan.index] as string;
     if (!plan.required && text.trim() === '') continue;
-    typed[plan.option] = text;
-    values[plan.option] = plan.unit === null ? text : lengthField(text, plan.unit);
+    values[plan.option] = asTyped || plan.unit === null ? text : lengthField(text, plan.unit);
   }
-  return { values, typed };
+  return values;
 }
 
 /** Length results (mm text, or empty) in the run's unit, each converted once from its double. */
@@ -183,14 +184,14 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
       return errorRow(echo, layout, `line ${record.line}: the ${c.name} field holds a line break`);
     }
   }
-  const { values, typed } = recordValues(fields, layout);
-  if (layout.threeAxis) return threeAxisRow(values, typed, layout, echo);
+  const values = recordValues(fields, layout);
+  if (layout.threeAxis) return threeAxisRow(values, fields, layout, echo);
   const quantity = layout.target === RA_COLUMN ? 'ra' : layout.target === L_COLUMN ? 'interval' : 'h';
   const q: Question = { values, quantity, half: false };
   const a = answer(q);
   if (a === null) return errorRow(echo, layout, SURFACE_TWICE);
   if (!a.ok) {
-    const words = wordErrors(a, q, layout.unit, typed).map((w) => w.message);
+    const words = wordErrors(a, q, layout.unit, recordValues(fields, layout, true)).map((w) => w.message);
     return errorRow(echo, layout, words.join(' '));
   }
   if (a.kind === 'pass-inverse') return `${echo},${inverseResults(exactInverse(a.input), layout.unit)},,\n`;
@@ -265,9 +266,10 @@ function doublyCurvedResults(p: DoublyCurvedProblem, h: number, unit: LengthUnit
 }
 
 /** The output row of a valid-shaped three-axis record: interval, Lxy, dz, lead, tilt, note, error. */
-function threeAxisRow(values: QuestionValues, typed: QuestionValues, layout: Layout, echo: string): string {
+function threeAxisRow(values: QuestionValues, fields: readonly string[], layout: Layout, echo: string): string {
   const r = answerThreeAxis(values, 'h');
   if (!r.ok) {
+    const typed = recordValues(fields, layout, true);
     const words = r.errors.map((e) => threeAxisMessage(e, r.passes, layout.unit, typed));
     return errorRow(echo, layout, words.join(' '));
   }
