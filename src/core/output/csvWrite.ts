@@ -120,19 +120,19 @@ export function resultFields(input: ForwardInput, length: LengthText = csvNumber
   // The same double is the same text: without tilt both reaches are L/2, and the osculating
   // circle is Redonnet's.
   const same = (x: number, as: number, text: string) => (x === as ? text : length(x));
-  const redonnet = halfText(halves[REDONNET] as Approximation<HalfInterval>, length);
-  const osculating = halves[OSCULATING] as Approximation<HalfInterval>;
-  const redonnetHalf = halves[REDONNET] as Approximation<HalfInterval>;
+  const at = (i: number) => halves[i] as Approximation<HalfInterval>;
+  const redonnet = at(REDONNET);
+  const osculating = at(OSCULATING);
+  const redonnetText = halfText(redonnet, length);
   const osculatingText =
-    osculating.ok && redonnetHalf.ok && osculating.halfIntervalMm === redonnetHalf.halfIntervalMm
-      ? redonnet
+    osculating.ok && redonnet.ok && osculating.halfIntervalMm === redonnet.halfIntervalMm
+      ? redonnetText
       : halfText(osculating, length);
   return (
-    `${halfText0},${halfText(halves[SEKINE] as Approximation<HalfInterval>, length)},${redonnet},` +
-    `${halfText(halves[BEDI] as Approximation<HalfInterval>, length)},` +
+    `${halfText0},${halfText(at(SEKINE), length)},${redonnetText},${halfText(at(BEDI), length)},` +
     `${length(exact.intervalMm)},${same(exact.halfWidthRightMm, half, halfText0)},${same(exact.halfWidthLeftMm, half, halfText0)},` +
     `${length(exact.contactOffsetMm)},${exact.otherCuspHeightMm === null ? '' : length(exact.otherCuspHeightMm)},` +
-    `${osculatingText},${halfText(halves[CORNER_BALL] as Approximation<HalfInterval>, length)},${csvText(note)}`
+    `${osculatingText},${halfText(at(CORNER_BALL), length)},${csvText(note)}`
   );
 }
 
