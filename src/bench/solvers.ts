@@ -1,6 +1,6 @@
 /**
  * Benchmark of the solver core: median time per call over repeated rounds; and the command line's
- * `--batch` throughput on 200,000-row files (rows per second, in process, src/bench/batch.ts);
+ * `--batch` throughput on 200,000-row files (rows per second, as a process, src/bench/batch.ts);
  * the command line's start-up, one answer as a process (src/bench/cliStart.ts).
  *
  *   npm run bench                 readable table
@@ -184,7 +184,7 @@ const simulationMsMedian = simMs[simMs.length >> 1] as number;
 
 // `--batch` on the 200,000-row files (src/bench/batch.ts): median of a few runs, rows per second.
 const batchRuns = Math.min(rounds, 3);
-const { batchRowsPerSecond, batchVariedRowsPerSecond } = await batchBench(batchRuns);
+const { batchRowsPerSecond, batchVariedRowsPerSecond } = batchBench(batchRuns);
 
 const start = cliStartBench(Math.min(rounds, 11));
 
