@@ -1,6 +1,6 @@
 /**
  * Benchmark of the solver core: median time per call over repeated rounds; and the command line's
- * `--batch` throughput (rows per second, in process, the CSV fed in 64 kB chunks as a pipe does);
+ * `--batch` throughput on 200,000-row files (rows per second, as a process, src/bench/batch.ts);
  * the command line's start-up, one answer as a process (src/bench/cliStart.ts).
  *
  *   npm run bench                 readable table
@@ -10,8 +10,6 @@
  * Also the three-axis and doubly curved solvers (threeAxis.ts, doublyCurved.ts) and the teaching
  * views' data (teachPage.ts: teachSlopeChartMsMedian, target 500 ms; teachCurvedMsMedian, 3000 ms).
  */
-import { Readable, Writable } from 'node:stream';
-import { main } from '../cli/main';
 import {
   bediHalfInterval,
   exactIntervalMm,
@@ -31,6 +29,7 @@ import {
 import { PASS_FIELDS } from '../core/input/fields';
 import { rawOf } from '../core/input/raw';
 import { seededRandom } from '../core/math/seededRandom';
+import { BATCH_ROWS, batchBench } from './batch';
 import { cliStartBench } from './cliStart';
 import { doublyCurvedBench } from './doublyCurved';
 import { teachPageBench } from './teachPage';
@@ -177,37 +176,9 @@ for (let r = 0; r < Math.max(5, rounds); r++) {
 simMs.sort((x, y) => x - y);
 const simulationMsMedian = simMs[simMs.length >> 1] as number;
 
-/**
- * `--batch` throughput in rows per second: the median over `batchRounds` runs of main() on
- * `batchRows` rows (h 0.010 to 0.059 mm, lead 0 to 59 degrees, R 3 and Rcr 1 mm, the header in
- * another column order), stdin in 64 kB chunks, stdout counted and dropped.
- */
-const batchRows = 20_000;
-const batchRounds = Math.min(rounds, 5);
-const batchCsv = ['h,rho,Rcr,R'];
-for (let i = 0; i < batchRows; i++) batchCsv.push(`${(0.01 + (i % 50) * 0.001).toFixed(3)},${i % 60},1,3`);
-const batchText = `${batchCsv.join('\n')}\n`;
-const batchChunks: string[] = [];
-for (let at = 0; at < batchText.length; at += 65_536) batchChunks.push(batchText.slice(at, at + 65_536));
-const batchRate: number[] = [];
-for (let r = 0; r < batchRounds; r++) {
-  let bytes = 0;
-  const drop = () =>
-    new Writable({
-      write(chunk: Buffer | string, _encoding, done) {
-        bytes += chunk.length;
-        done();
-      },
-    });
-  const t0 = process.hrtime.bigint();
-  const code = await main(['--batch'], { stdin: Readable.from(batchChunks), stdout: drop(), stderr: drop() });
-  const seconds = Number(process.hrtime.bigint() - t0) / 1e9;
-  if (code !== 0 || bytes === 0) throw new Error(`--batch failed in the benchmark (exit ${code})`);
-  batchRate.push(batchRows / seconds);
-  sink += bytes;
-}
-batchRate.sort((x, y) => x - y);
-const batchRowsPerSecond = batchRate[batchRate.length >> 1] as number;
+// `--batch` on the 200,000-row files (src/bench/batch.ts): median of a few runs, rows per second.
+const batchRuns = Math.min(rounds, 3);
+const { batchRowsPerSecond, batchVariedRowsPerSecond } = batchBench(batchRuns);
 
 const start = cliStartBench(Math.min(rounds, 11));
 
@@ -220,7 +191,10 @@ console.log(
   `${'simulation 512 x 512, 5 passes (ms)'.padEnd(36)}${simulationMsMedian.toFixed(1).padStart(14)}   ${((simCells / simulationMsMedian) * 1000).toExponential(2)} cells/s`,
 );
 console.log(
-  `${'--batch, 20 000 rows (rows/s)'.padEnd(36)}${batchRowsPerSecond.toFixed(0).padStart(14)}   median of ${batchRounds} runs`,
+  `${'--batch, plane rows (rows/s)'.padEnd(36)}${batchRowsPerSecond.toFixed(0).padStart(14)}   ${BATCH_ROWS} rows, median of ${batchRuns} runs`,
+);
+console.log(
+  `${'--batch, varied plane rows (rows/s)'.padEnd(36)}${batchVariedRowsPerSecond.toFixed(0).padStart(14)}   a new tool on every row`,
 );
 console.log(
   `${'command line, one answer (ms)'.padEnd(36)}${start.cliStartMs.toFixed(1).padStart(14)}   process start to exit; node -e 0: ${start.nodeStartMs.toFixed(1)} ms`,
@@ -239,6 +213,7 @@ if (json) {
   out.simulationMsMedian = Number(simulationMsMedian.toFixed(1));
   out.simulationCellsPerSecond = Math.round((simCells / simulationMsMedian) * 1000);
   out.batchRowsPerSecond = Math.round(batchRowsPerSecond);
+  out.batchVariedRowsPerSecond = Math.round(batchVariedRowsPerSecond);
   out.cliStartMs = Number(start.cliStartMs.toFixed(1));
   out.nodeStartMs = Number(start.nodeStartMs.toFixed(1));
   out.targetRaCylinderCrossMsMedian = Number(targetRaCylinderCrossMsMedian.toFixed(2));

@@ -20,7 +20,7 @@ import { StringDecoder } from 'node:string_decoder';
 import { APPROXIMATIONS, type ApproximationKey, type ExactInverse, forwardInput } from '../core/index';
 import { FIELDS, fieldOfCsvColumn } from '../core/input/fields';
 import { fromMm, type LengthUnit } from '../core/input/units';
-import { csvNumber, emptyCellNotes, RESULT_COLUMNS, resultFields } from '../core/output/csvWrite';
+import { csvNumber, emptyCellNotes, type LengthText, RESULT_COLUMNS, resultFields } from '../core/output/csvWrite';
 import type { DoublyCurvedProblem } from '../core/roughness/doublyCurvedValidate';
 import {
   type DoublyCurvedInverse,
@@ -41,7 +41,7 @@ import {
   RA_COLUMN,
   REQUIRED_COLUMNS,
 } from './batchHeader';
-import { CsvReader, type CsvRecord, csvText } from './csv';
+import { CsvReader, type CsvRecord, csvText, isNumberText } from './csv';
 import { lengthText } from './lengthInput';
 import { describeSystemError, errorLine, escapeControls, FLUSH_CHARS, type Output } from './output';
 import {
@@ -75,27 +75,86 @@ function trimSpaces(text: string): string {
   return text.replace(/^[ \t]+|[ \t]+$/g, '');
 }
 
+/**
+ * True for a field the echo writes as it is: printable ASCII without a comma or a quote, not
+ * starting with a space, a tab or a character a spreadsheet may read as a formula (`=+-@`), not
+ * ending with a space or a tab. trimSpaces, escapeControls and csvText leave such a field alone,
+ * so it needs none of them (the plain numbers of most records).
+ */
+function echoedAsIs(text: string): boolean {
+  const n = text.length;
+  if (n === 0) return true;
+  const first = text.charCodeAt(0);
+  if (first === 61 /* = */ || first === 43 /* + */ || first === 45 /* - */ || first === 64 /* @ */) return false;
+  if (first === 32 || text.charCodeAt(n - 1) === 32) return false;
+  for (let i = 0; i < n; i++) {
+    const c = text.charCodeAt(i);
+    if (c < 33 || c > 126 || c === 34 /* " */ || c === 44 /* , */) return false;
+  }
+  return true;
+}
+
+/** A field as the echo writes it: spaces around dropped, control characters escaped, quoted for CSV. */
+function echoText(text: string): string {
+  return echoedAsIs(text) ? text : csvText(escapeControls(trimSpaces(text)));
+}
+
 /** A row with no results: its message in `error`, on one line (control characters escaped, as on stderr). */
 function errorRow(echo: string, layout: Layout, message: string): string {
   return `${echo}${emptyResults(layout)},${csvText(escapeControls(message))}\n`;
 }
 
-/** The question of a record: each input column's field by its option (question.ts), lengths in mm. */
-function recordValues(fields: readonly string[], layout: Layout): { values: QuestionValues; typed: QuestionValues } {
-  const values: Partial<Record<ValueOption, string>> = {};
-  const typed: Partial<Record<ValueOption, string>> = {};
+/** How a layout's input columns become a question: each column's option, whether it is required, its unit. */
+interface ColumnPlan {
+  readonly index: number;
+  readonly option: ValueOption;
+  /** An empty field of a column not required takes its default, as a missing column does. */
+  readonly required: boolean;
+  /** The unit of a length column (its own or the run's); null for a column that is no length. */
+  readonly unit: LengthUnit | null;
+}
+
+/** The plan of each input column of `layout`, in the layout's index order (the fields' order of a question). */
+function columnPlans(layout: Layout): readonly ColumnPlan[] {
+  const plans: ColumnPlan[] = [];
   for (const [column, i] of Object.entries(layout.index) as [InputColumn, number][]) {
     const field = fieldOfCsvColumn(column);
     const option = field === null ? null : FIELDS[field].cli;
-    const text = fields[i] as string;
     if (option === null || field === null) continue;
-    // An empty optional field takes its default, as a missing column does (a required one is "missing").
     const required = column === layout.target || (REQUIRED_COLUMNS as readonly string[]).includes(column);
-    if (!required && text.trim() === '') continue;
-    typed[option] = text;
-    values[option] = isLengthColumn(column) ? lengthText(text, layout.columnUnits[column] ?? layout.unit) : text;
+    const unit = isLengthColumn(column) ? (layout.columnUnits[column] ?? layout.unit) : null;
+    plans.push({ index: i, option: option as ValueOption, required, unit });
   }
-  return { values, typed };
+  return plans;
+}
+
+/** The plans of the last layout asked (a run has one layout: they are made once). */
+let planned: { readonly layout: Layout; readonly plans: readonly ColumnPlan[] } | null = null;
+
+function plansOf(layout: Layout): readonly ColumnPlan[] {
+  if (planned === null || planned.layout !== layout) planned = { layout, plans: columnPlans(layout) };
+  return planned.plans;
+}
+
+/** A length field's text in mm: a plain decimal in mm is handed on as typed (lengthText's rule, without parsing). */
+function lengthField(text: string, unit: LengthUnit): string {
+  return unit === 'mm' && isNumberText(text) ? text : lengthText(text, unit);
+}
+
+/**
+ * The question of a record: each input column's field by its option (question.ts), lengths in mm;
+ * with `asTyped`, each field as typed (before its unit was read: for the messages of a refused row).
+ */
+function recordValues(fields: readonly string[], layout: Layout, asTyped = false): QuestionValues {
+  const values: Partial<Record<ValueOption, string>> = {};
+  const plans = plansOf(layout);
+  for (let j = 0; j < plans.length; j++) {
+    const plan = plans[j] as ColumnPlan;
+    const text = fields[plan.index] as string;
+    if (!plan.required && text.trim() === '') continue;
+    values[plan.option] = asTyped || plan.unit === null ? text : lengthField(text, plan.unit);
+  }
+  return values;
 }
 
 /** Length results (mm text, or empty) in the run's unit, each converted once from its double. */
@@ -109,7 +168,7 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
   let echo = '';
   for (let j = 0; j < layout.echoed.length; j++) {
     const c = layout.echoed[j] as { readonly index: number };
-    echo += `${j === 0 ? '' : ','}${csvText(escapeControls(trimSpaces(fields[c.index] ?? '')))}`;
+    echo += `${j === 0 ? '' : ','}${echoText(fields[c.index] ?? '')}`;
   }
   if (record.error !== null) return errorRow(echo, layout, `line ${record.line}: ${record.error}`);
   if (fields.length !== layout.width) {
@@ -125,14 +184,14 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
       return errorRow(echo, layout, `line ${record.line}: the ${c.name} field holds a line break`);
     }
   }
-  const { values, typed } = recordValues(fields, layout);
-  if (layout.threeAxis) return threeAxisRow(values, typed, layout, echo);
+  const values = recordValues(fields, layout);
+  if (layout.threeAxis) return threeAxisRow(values, fields, layout, echo);
   const quantity = layout.target === RA_COLUMN ? 'ra' : layout.target === L_COLUMN ? 'interval' : 'h';
   const q: Question = { values, quantity, half: false };
   const a = answer(q);
   if (a === null) return errorRow(echo, layout, SURFACE_TWICE);
   if (!a.ok) {
-    const words = wordErrors(a, q, layout.unit, typed).map((w) => w.message);
+    const words = wordErrors(a, q, layout.unit, recordValues(fields, layout, true)).map((w) => w.message);
     return errorRow(echo, layout, words.join(' '));
   }
   if (a.kind === 'pass-inverse') return `${echo},${inverseResults(exactInverse(a.input), layout.unit)},,\n`;
@@ -141,13 +200,23 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
     return `${echo},${inverseResults(e, layout.unit)},,\n`;
   }
   const hMm = a.kind === 'pass-forward' ? a.input.scallopHeightMm : a.scallopHeightMm;
-  const h = a.targetRaMm === undefined ? '' : `${inUnit([csvNumber(hMm)], layout.unit)},`;
+  const length = lengthWriter(layout.unit);
+  const h = a.targetRaMm === undefined ? '' : `${length(hMm)},`;
   if (a.kind === 'doubly-forward') {
     const notes = emptyCellNotes(forwardInput(a.problem, a.problem.pattern, a.scallopHeightMm)).join(' ');
     return `${echo},${h}${doublyCurvedResults(a.problem, a.scallopHeightMm, layout.unit)},${csvText(notes)},\n`;
   }
-  const parts = resultFields(a.input).split(',');
-  return `${echo},${h}${inUnit(parts.slice(0, RESULT_NUMBERS), layout.unit)},${parts.slice(RESULT_NUMBERS).join(',')},\n`;
+  return `${echo},${h}${resultFields(a.input, length)},\n`;
+}
+
+/** A length result's text in the run's unit (from its double, as csvNumber writes it). */
+function inchText(lengthMm: number): string {
+  return csvNumber(fromMm(lengthMm, 'in'));
+}
+
+/** The writer of length results in `unit`. */
+function lengthWriter(unit: LengthUnit): LengthText {
+  return unit === 'mm' ? csvNumber : inchText;
 }
 
 /** The results of a row given the step-over (INVERSE_RESULT_COLUMNS before `note`), in the run's unit. */
@@ -166,9 +235,6 @@ function inverseResults(e: ExactInverse | DoublyCurvedInverse, unit: LengthUnit)
     unit,
   );
 }
-
-/** The number columns of a row's results (exact to cornerBall), before `note` and `error`. */
-const RESULT_NUMBERS = RESULT_COLUMNS.indexOf('note');
 
 /**
  * The results of a doubly curved point: the exact answer in the result columns (exact L/2, interval,
@@ -200,9 +266,10 @@ function doublyCurvedResults(p: DoublyCurvedProblem, h: number, unit: LengthUnit
 }
 
 /** The output row of a valid-shaped three-axis record: interval, Lxy, dz, lead, tilt, note, error. */
-function threeAxisRow(values: QuestionValues, typed: QuestionValues, layout: Layout, echo: string): string {
+function threeAxisRow(values: QuestionValues, fields: readonly string[], layout: Layout, echo: string): string {
   const r = answerThreeAxis(values, 'h');
   if (!r.ok) {
+    const typed = recordValues(fields, layout, true);
     const words = r.errors.map((e) => threeAxisMessage(e, r.passes, layout.unit, typed));
     return errorRow(echo, layout, words.join(' '));
   }
@@ -223,6 +290,9 @@ function refuseDirectory(stdin: Readable): void {
     throw Object.assign(new Error('standard input is a directory'), { code: 'EISDIR' });
   }
 }
+
+/** Characters of stdin handed to the CSV reader at a time (see runBatch). */
+const READ_PIECE_CHARS = 4096;
 
 /** Stderr and stdout of a batch run. */
 export interface BatchIo {
@@ -256,10 +326,14 @@ export async function runBatch(io: BatchIo, out: Output, unit: LengthUnit = 'mm'
   try {
     refuseDirectory(io.stdin);
     for await (const chunk of io.stdin) {
-      take(reader.push(typeof chunk === 'string' ? chunk : decoder.write(chunk as Buffer)));
-      if (headerError !== null) break;
-      if (out.pending >= FLUSH_CHARS) await out.flush();
-      if (out.error !== null) break;
+      const text = typeof chunk === 'string' ? chunk : decoder.write(chunk as Buffer);
+      // Read and written in small pieces: few records and rows are alive at a time (a pipe's
+      // 64 kB hold about 3,000 records), so they die young, where garbage is cheap.
+      for (let at = 0; at < text.length && headerError === null && out.error === null; at += READ_PIECE_CHARS) {
+        take(reader.push(text.slice(at, at + READ_PIECE_CHARS)));
+        if (out.pending >= FLUSH_CHARS) await out.flush();
+      }
+      if (headerError !== null || out.error !== null) break;
     }
     if (headerError === null && out.error === null) take([...reader.push(decoder.end()), ...reader.end()]);
   } catch (e) {

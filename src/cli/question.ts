@@ -18,8 +18,8 @@ import {
   validateInverse,
   validateTargetRa,
 } from '../core/index';
-import { cliFlag, FIELDS, PASS_FIELDS } from '../core/input/fields';
-import { rawFields } from '../core/input/raw';
+import { cliFlag, FIELDS, PASS_FIELDS, type PassFieldName } from '../core/input/fields';
+import { type RawFields, rawFields } from '../core/input/raw';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
 import { isNumberText } from '../core/output/csvWrite';
 import { doublyCurvedHeightForRaMm } from '../core/roughness/doublyCurved';
@@ -101,10 +101,11 @@ function surfaceForm(
   | { readonly kind: 'both' } {
   const rf = given(values, FIELDS.feedRadius.cli);
   const rc = given(values, FIELDS.crossRadius.cli);
+  // Neither radius: the values as they are (a pass reads no radius; no copy for every batch row).
+  if (rf === undefined && rc === undefined) return { kind: 'pass', values };
   const rest: Partial<Record<ValueOption, string>> = { ...values };
   delete rest[FIELDS.feedRadius.cli];
   delete rest[FIELDS.crossRadius.cli];
-  if (rf === undefined && rc === undefined) return { kind: 'pass', values: rest };
   const cylinder =
     given(values, FIELDS.surfaceRadius.cli) !== undefined || given(values, FIELDS.surfaceAxis.cli) !== undefined;
   if (cylinder) return { kind: 'both' };
@@ -144,17 +145,30 @@ function doublyCurved(values: QuestionValues, quantity: Quantity, half: boolean)
   return { ok: true, kind: 'doubly-forward', problem: p, scallopHeightMm: h, targetRaMm: p.valueMm };
 }
 
+/**
+ * The raw pass fields of the values (blank ones absent) and the quantity's `value` under `key`, in
+ * one object built key by key (a spread copy is slow to make and to read in V8).
+ */
+function rawPass<K extends 'h' | 'ra' | 'interval'>(
+  values: QuestionValues,
+  key: K,
+  value: unknown,
+): RawFields<PassFieldName> & Readonly<Record<K, unknown>> {
+  const raw = rawFields(PASS_FIELDS, (name) => given(values, FIELDS[name].cli)) as Record<string, unknown>;
+  raw[key] = value;
+  return raw as RawFields<PassFieldName> & Readonly<Record<K, unknown>>;
+}
+
 /** A plane or a cylinder. */
 function onPass(values: QuestionValues, quantity: Quantity, half: boolean, as?: RadiusOption): Answer {
-  const pass = rawFields(PASS_FIELDS, (name) => given(values, FIELDS[name].cli));
   const failed = (errors: readonly AnyInputError[]): Answer =>
     as === undefined ? { ok: false, errors } : { ok: false, errors, as };
   if (quantity === 'h') {
-    const v = validateForward({ ...pass, h: values[FIELDS.h.cli] });
+    const v = validateForward(rawPass(values, 'h', values[FIELDS.h.cli]));
     return v.ok ? { ok: true, kind: 'pass-forward', input: v.value } : failed(v.errors);
   }
   if (quantity === 'ra') {
-    const v = validateTargetRa({ ...pass, ra: values[FIELDS.ra.cli] });
+    const v = validateTargetRa(rawPass(values, 'ra', values[FIELDS.ra.cli]));
     if (!v.ok) return failed(v.errors);
     const p = v.value;
     const h = scallopHeightForRaMm(p, p.pattern, p.targetRaMm, p.surface);
@@ -165,7 +179,7 @@ function onPass(values: QuestionValues, quantity: Quantity, half: boolean, as?: 
       targetRaMm: p.targetRaMm,
     };
   }
-  const v = validateInverse({ ...pass, interval: intervalOf(values, half) });
+  const v = validateInverse(rawPass(values, 'interval', intervalOf(values, half)));
   return v.ok ? { ok: true, kind: 'pass-inverse', input: v.value } : failed(v.errors);
 }
 

@@ -29,6 +29,7 @@ describe('npm run bench', () => {
       'simulationMsMedian',
       'simulationCellsPerSecond',
       'batchRowsPerSecond',
+      'batchVariedRowsPerSecond',
       'teachSlopeChartMsMedian',
       'teachCurvedMsMedian',
       'cliStartMs',

@@ -97,6 +97,8 @@ describe('batch rows', () => {
   it('echoed text that a spreadsheet would evaluate gets a leading quote; numbers are echoed as typed', () => {
     const r = row(layout, '=1+2,-1,@x,+5,-3e0,=zigzag');
     expect(r.slice(0, 6)).toEqual(["'=1+2", '-1', "'@x", '+5', '-3e0', "'=zigzag"]);
+    // A sign before text that is no number is a formula too.
+    expect(row(layout, '-x,+y,3,-h,+1e,-zigzag').slice(0, 6)).toEqual(["'-x", "'+y", '3', "'-h", "'+1e", "'-zigzag"]);
     expect(r).toHaveLength(width);
     expect(r[width - 1]).toMatch(/Tool radius R must be a number/);
   });

@@ -58,8 +58,22 @@ export function csvNumber(value: number): string {
   return value === 0 ? '0' : String(value);
 }
 
-function halfText(r: Approximation<HalfInterval>): string {
-  return r.ok ? csvNumber(r.halfIntervalMm) : '';
+/** A length result as a CSV field: its text in the table's unit (csvNumber of the mm value by default). */
+export type LengthText = (lengthMm: number) => string;
+
+function halfText(r: Approximation<HalfInterval>, length: LengthText): string {
+  return r.ok ? length(r.halfIntervalMm) : '';
+}
+
+/**
+ * Below this step-over (mm) no approximation can be at or beyond the wall on a plane without
+ * tilt: there the widest step-over (maxIntervalMm) is 2R (the flanks reach R at the height limit),
+ * which its solver gives within 1e-9 mm (measured: within 5e-16 relative); the margin here is a
+ * thousand times that. A row at or above it gets maxIntervalMm computed, as every other row.
+ */
+function surelyBelowWallMm(input: ForwardInput): number {
+  if (input.tiltAngleDeg !== 0 || input.surface.kind !== 'plane') return 0;
+  return 2 * input.toolRadiusMm * (1 - 1e-9) - 1e-6;
 }
 
 /** compareForward's warning condition: a step-over at or beyond the widest that leaves a scallop. */
@@ -70,32 +84,65 @@ function beyondWall(r: Approximation<HalfInterval>, maxMm: number): boolean {
 const NO_SCALLOP_NOTE =
   'exact: a flat end without lead or tilt leaves no scallop at any step-over up to its diameter (L = 2R).';
 
+/** The approximations of a row, in APPROXIMATION_KEYS order (filled and read within one call). */
+const halves: Approximation<HalfInterval>[] = [];
+
 /**
- * The results of a valid case: the result fields up to `note`, joined (no `error`). Calls the
- * core's functions one by one, not compareForward, which also solves the scallop each
- * approximation really leaves (not written here) and is about 5 times slower; compareForward only
- * words the warnings, on the rare rows that have one.
+ * The results of a valid case: the result fields up to `note`, joined (no `error`); each length
+ * written by `length` (in mm by default; the batch's inch runs convert). Calls the core's
+ * functions one by one, not compareForward, which also solves the scallop each approximation
+ * really leaves (not written here) and is about 5 times slower; compareForward only words the
+ * warnings, on the rare rows that have one. The widest step-over (for those warnings) is solved
+ * only where an approximation may reach it ({@link surelyBelowWallMm}).
  */
-export function resultFields(input: ForwardInput): string {
+export function resultFields(input: ForwardInput, length: LengthText = csvNumber): string {
   const exact = exactForward(input);
-  const maxMm = maxIntervalMm(input, input.pattern, input.surface);
-  const half = {} as Record<ApproximationKey, Approximation<HalfInterval>>;
+  const surelyBelow = surelyBelowWallMm(input);
+  let maxMm = Number.NaN;
   let beyond = false;
-  for (const key of APPROXIMATION_KEYS) {
-    const r = APPROXIMATIONS[key].halfInterval(input);
-    half[key] = r;
-    beyond ||= beyondWall(r, maxMm);
+  let allOk = true;
+  for (let i = 0; i < APPROXIMATION_KEYS.length; i++) {
+    const r = APPROXIMATIONS[APPROXIMATION_KEYS[i] as ApproximationKey].halfInterval(input);
+    halves[i] = r;
+    if (!r.ok) allOk = false;
+    else if (!beyond && !(2 * r.halfIntervalMm < surelyBelow)) {
+      if (Number.isNaN(maxMm)) maxMm = maxIntervalMm(input, input.pattern, input.surface);
+      beyond = beyondWall(r, maxMm);
+    }
   }
   const noScallop = exact.noScallop ? NO_SCALLOP_NOTE : '';
-  const empty = APPROXIMATION_KEYS.flatMap((key) => notApplicable(half[key]));
-  const note = [beyond ? warningNotes(input, noScallop) : noScallop, ...empty].filter((n) => n !== '').join(' ');
+  let note = beyond ? warningNotes(input, noScallop) : noScallop;
+  if (!allOk) {
+    const empty = halves.flatMap((r) => notApplicable(r));
+    note = [note, ...empty].filter((n) => n !== '').join(' ');
+  }
+  const half = exact.halfIntervalMm;
+  const halfText0 = length(half);
+  // The same double is the same text: without tilt both reaches are L/2, and the osculating
+  // circle is Redonnet's.
+  const same = (x: number, as: number, text: string) => (x === as ? text : length(x));
+  const at = (i: number) => halves[i] as Approximation<HalfInterval>;
+  const redonnet = at(REDONNET);
+  const osculating = at(OSCULATING);
+  const redonnetText = halfText(redonnet, length);
+  const osculatingText =
+    osculating.ok && redonnet.ok && osculating.halfIntervalMm === redonnet.halfIntervalMm
+      ? redonnetText
+      : halfText(osculating, length);
   return (
-    `${csvNumber(exact.halfIntervalMm)},${halfText(half.sekine)},${halfText(half.redonnet)},${halfText(half.bedi)},` +
-    `${csvNumber(exact.intervalMm)},${csvNumber(exact.halfWidthRightMm)},${csvNumber(exact.halfWidthLeftMm)},` +
-    `${csvNumber(exact.contactOffsetMm)},${exact.otherCuspHeightMm === null ? '' : csvNumber(exact.otherCuspHeightMm)},` +
-    `${halfText(half.osculating)},${halfText(half.cornerBall)},${csvText(note)}`
+    `${halfText0},${halfText(at(SEKINE), length)},${redonnetText},${halfText(at(BEDI), length)},` +
+    `${length(exact.intervalMm)},${same(exact.halfWidthRightMm, half, halfText0)},${same(exact.halfWidthLeftMm, half, halfText0)},` +
+    `${length(exact.contactOffsetMm)},${exact.otherCuspHeightMm === null ? '' : length(exact.otherCuspHeightMm)},` +
+    `${osculatingText},${halfText(at(CORNER_BALL), length)},${csvText(note)}`
   );
 }
+
+/** Where each approximation is in APPROXIMATION_KEYS (its columns' order differs). */
+const SEKINE = APPROXIMATION_KEYS.indexOf('sekine');
+const REDONNET = APPROXIMATION_KEYS.indexOf('redonnet');
+const BEDI = APPROXIMATION_KEYS.indexOf('bedi');
+const OSCULATING = APPROXIMATION_KEYS.indexOf('osculating');
+const CORNER_BALL = APPROXIMATION_KEYS.indexOf('cornerBall');
 
 /** Why an approximation's cell is empty (at rho 0 the paper's models have no answer), or nothing. */
 function notApplicable(r: Approximation<HalfInterval>): string[] {
