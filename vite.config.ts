@@ -198,10 +198,9 @@ export default defineConfig(({ mode, command }) =>
           environment: 'node',
           // Two projects: `node` (pure modules, the worker's API, the CLI in process; no site build,
           // files in parallel on every core) and `browser` (headless Chromium against the built sites,
-          // which its global set-up builds once; one file at a time, since a page and its workers
-          // share 2 cores). Vitest runs a project of one file at a time after the others, so `npm test`
-          // (tests/support/runTests.mjs) runs the two as two Vitest processes at once, the Node one
-          // niced. `npx vitest run --project node` runs the Node tests alone.
+          // which its global set-up builds once; two files at a time, each with its own Chromium).
+          // `npm test` (tests/support/runTests.mjs) runs the two as two Vitest processes at once, the
+          // Node one niced. `npx vitest run --project node` runs the Node tests alone.
           projects: [
             {
               extends: true,
@@ -224,7 +223,9 @@ export default defineConfig(({ mode, command }) =>
                 include: BROWSER_TESTS,
                 exclude: SHOT_ONLY_TESTS,
                 globalSetup: ['tests/e2e/globalSetup.ts'],
-                fileParallelism: false,
+                // Two files at a time: a browser test mostly waits (debounces, replies, frames, polls);
+                // one file at a time left the 2 cores two-thirds idle (8 CPU-minutes in a 12-minute run).
+                maxWorkers: 2,
                 // A page under load answers late: every poll waits up to 15 s for its condition (not 1 s).
                 expect: { poll: { timeout: 15_000 } },
               },

@@ -3,7 +3,7 @@
 // All at once, each as soon as what it needs is there:
 //  - preparation: Chromium and MkDocs present (ensure-*.mjs), the compiled command line current
 //    (src/cli/bundle.mjs --if-stale: the one CLI build of the run);
-//  - the browser tests (`vitest run --project browser`, after the three: one file at a time, the
+//  - the browser tests (`vitest run --project browser`, after the three: two files at a time, the
 //    longest step and the one that waits on pages, so at normal priority, its output shown as it comes);
 //  - niced (they take the CPU the browser tests leave; none of them measures time): the Node tests
 //    (`vitest run --project node`, after the CLI build; files in parallel), Biome, and the type checks
