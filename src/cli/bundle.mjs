@@ -80,6 +80,9 @@ export async function buildCliBundle() {
     metafile: true,
     logLevel: 'silent',
     legalComments: 'none',
+    // Minified (names kept): about half the bytes for Node to read and parse at every start.
+    minify: true,
+    keepNames: true,
     outfile: CLI_BUNDLE,
   });
   const code = result.outputFiles?.[0]?.text;
