@@ -28,11 +28,14 @@ import { LazyToolShelf } from './lazyToolShelf';
 import { plainLengths } from './lengthFields';
 import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
+import { browserStorage, readPreferences, withPreferences, writePreferences } from './preferences';
 import { PresentMode, parsePresent } from './present';
+import { questionWords } from './questionWords';
 import { type BuiltRequest, buildRequest, stateMessages } from './request';
 import { ResultBar } from './resultBar';
 import { type QuestionKind, ResultsPanel } from './results';
 import { RoughnessPanel } from './roughness';
+import type { ToolStorage } from './savedTools';
 import { sceneOfReply } from './sceneLabels';
 import { SceneSlot } from './sceneSlot';
 import { SimulationLoader } from './simulation';
@@ -115,6 +118,8 @@ export class CalculatorApp {
   private messages: ReadonlyMap<FieldKey, string> = new Map();
   /** The last committed state's request, or its errors (built once per change). */
   private built: BuiltRequest = { ok: false, errors: [] };
+  /** Where the machine and unit are remembered (preferences.ts); null in an embed or without storage. */
+  private readonly storage: ToolStorage | null;
   /** The reply and unit the scene shows. */
   private sceneDrawn: { reply: PageReply; unit: Unit } | null = null;
 
@@ -124,8 +129,10 @@ export class CalculatorApp {
   ) {
     applyProcedureColours(document.documentElement);
     const parsed = parseUrl(window.location.search);
-    this.state = parsed.state;
     const embed = parsed.embed;
+    // A bare visit starts on the machine and unit chosen last time; a link or an embed as it says.
+    this.storage = embed ? null : browserStorage();
+    this.state = withPreferences(parsed.state, window.location.search, readPreferences(this.storage));
     const requested = VIEW_IDS.find((v) => v === parsed.view);
     document.documentElement.classList.toggle('embed', embed);
     document.documentElement.classList.toggle('single-view', embed && requested !== undefined);
@@ -250,7 +257,7 @@ export class CalculatorApp {
       button.addEventListener('click', () =>
         this.scene.run('camera', (s) => s.setCamera(button.dataset.camera as CameraPreset)),
       );
-    wireCopyButtons(root, must(root, '[data-testid="copy-status"]'));
+    wireCopyButtons(root, must(root, '[data-testid="copy-status"]'), () => questionWords(this.state));
     const notices = [...parsed.notices];
     if (parsed.view !== null && requested === undefined)
       notices.push(`view="${parsed.view}" is not one of ${VIEW_IDS.join(', ')}.`);
@@ -319,6 +326,7 @@ export class CalculatorApp {
     this.draw();
     // The question and the link read written lengths (1/2", 12.7 mm) as plain numbers.
     this.url.write(plainLengths(state));
+    writePreferences(this.storage, state);
   }
 
   /**

@@ -24,8 +24,12 @@ export function setCopyValue(output: Element, text: string | null, unit: LengthU
   if (button) button.disabled = false;
 }
 
-/** Wires every `button.copy` under `root` to the `data-copy` of the output beside it. */
-export function wireCopyButtons(root: ParentNode, live: HTMLElement): void {
+/**
+ * Wires every `button.copy` under `root` to the `data-copy` of the output beside it. `question`
+ * gives the question the copied answer answers in words (questionWords.ts), named in the
+ * confirmation ("Copied 1.9236 (mm): 5-axis, lead 5°, tilt 0°, one-way, plane.").
+ */
+export function wireCopyButtons(root: ParentNode, live: HTMLElement, question: () => string | null = () => null): void {
   for (const button of root.querySelectorAll<HTMLButtonElement>('button.copy')) {
     const label = button.textContent ?? 'Copy';
     button.disabled = true;
@@ -35,10 +39,11 @@ export function wireCopyButtons(root: ParentNode, live: HTMLElement): void {
       const text = output?.dataset.copy;
       if (!text) return;
       const unit = output?.dataset.copyUnit ?? '';
+      const asked = question();
       const done = (ok: boolean) => {
         button.textContent = ok ? 'Copied' : 'Copy failed';
         live.textContent = ok
-          ? `Copied ${text} (${unit}).`
+          ? `Copied ${text} (${unit})${asked ? `: ${asked}` : ''}.`
           : `Could not copy: select the value and copy it by hand (${text} ${unit}).`;
         if (timer !== null) clearTimeout(timer);
         timer = setTimeout(() => {

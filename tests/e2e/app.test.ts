@@ -288,4 +288,39 @@ describe('calculator page in headless Chromium', () => {
     expect(current.length).toBeGreaterThan(0);
     for (const s of current) expect(s.text, `h = ${s.h}`).toBe(halfAt(Number(s.h)));
   });
+
+  it('the machine is the first choice, beside the unit, remembered for the next bare visit; a link keeps its meaning', async () => {
+    // A context of its own: its storage is the user's, kept across its loads.
+    const context = await site.browser().newContext({ viewport: { width: 1280, height: 800 } });
+    try {
+      const page = await context.newPage();
+      const checked = (name: string) => page.locator(`input[name="${name}"]:checked`).getAttribute('value');
+      const ready = () =>
+        page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+      await page.goto(site.url());
+      await ready();
+      // First visit: the teacher's default, five-axis in mm.
+      expect([await checked('machine'), await checked('unit')]).toEqual(['5axis', 'mm']);
+      // The machine switch comes first in the form, in the same row as the unit.
+      const [machineBox, unitBox] = await Promise.all(
+        ['machine-switch', 'unit-switch'].map((id) => page.getByTestId(id).boundingBox()),
+      );
+      if (machineBox === null || unitBox === null) throw new Error('no switches');
+      expect(Math.abs(machineBox.y - unitBox.y)).toBeLessThan(machineBox.height);
+      expect(machineBox.x).toBeLessThan(unitBox.x);
+      await page.getByTestId('machine-switch').getByText('3-axis').click();
+      await page.getByTestId('unit-switch').getByText('inch').click();
+      await expect.poll(() => page.evaluate(() => window.location.search)).toMatch(/machine=3axis.*unit=in/);
+      // The next bare visit starts where the shop left.
+      await page.goto(site.url());
+      await ready();
+      expect([await checked('machine'), await checked('unit')]).toEqual(['3axis', 'in']);
+      // A shared five-axis link (no machine=, no unit=) still means five-axis in mm.
+      await page.goto(`${site.url()}${PLAIN}`);
+      await ready();
+      expect([await checked('machine'), await checked('unit')]).toEqual(['5axis', 'mm']);
+    } finally {
+      await context.close();
+    }
+  });
 });

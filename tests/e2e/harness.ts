@@ -5,6 +5,7 @@ import type { Browser, BrowserContext, Locator, Page, Worker } from 'playwright-
 import { afterAll, afterEach, beforeAll, expect } from 'vitest';
 import { launchChromium } from '../../src/bench/browser';
 import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
+import { PREFERENCES_KEY } from '../../src/ui/preferences';
 import { E2E_OUT_DIR } from './globalSetup';
 import { countLoads, reportLoads } from './loadCount';
 import { colourShare } from './pixels';
@@ -63,6 +64,20 @@ export interface Harness {
   changed(): void;
 }
 
+/**
+ * Makes every load of a page (or of a context's pages) a first visit: no machine or unit remembered
+ * from an earlier test's choice (src/ui/preferences.ts; its own test takes a context of its own).
+ */
+export async function forgetPreferences(target: Page | BrowserContext): Promise<void> {
+  await target.addInitScript((key) => {
+    try {
+      localStorage.removeItem(key);
+    } catch {
+      // No storage: nothing remembered.
+    }
+  }, PREFERENCES_KEY);
+}
+
 /** Registers beforeAll/afterAll hooks for a test file. */
 export function useSite(subPath: string, options: SiteOptions = {}): Harness {
   let browser: Browser | null = null;
@@ -96,6 +111,7 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
   ): Promise<Page> => {
     if (shared === null || shared.isClosed()) {
       const page = await need(browser, 'browser').newPage({ viewport, colorScheme });
+      await forgetPreferences(page);
       page.on('pageerror', (e) => errors.push(e.message));
       page.on('console', (m) => {
         if (m.type() === 'error') errors.push(m.text());
@@ -261,6 +277,7 @@ export function usePhonePage(site: Harness): (query: string) => Promise<Page> {
   return async (query: string) => {
     if (context === null) {
       context = await site.browser().newContext({ viewport: PHONE, hasTouch: true, isMobile: true });
+      await forgetPreferences(context);
       await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
     }
     shared ??= await context.newPage();

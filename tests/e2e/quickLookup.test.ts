@@ -385,7 +385,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     await expect.poll(() => headlineCopy.isEnabled()).toBe(true);
     await press(vp, page.getByRole('button', { name: 'Copy the headline value' }));
     await expect.poll(() => headlineCopy.textContent()).toBe('Copied');
-    expect(await text(page, 'copy-status')).toBe('Copied 2.8872 (mm).');
+    expect(await text(page, 'copy-status')).toBe('Copied 2.8872 (mm): 5-axis, lead 5°, tilt 0°, one-way, plane.');
     expect(await page.evaluate(() => navigator.clipboard.readText())).toBe('2.8872');
     await keepShot(page, `quick-lookup-copied-${vp.name}`);
     await expect.poll(() => headlineCopy.textContent()).toBe('Copy');

@@ -1,0 +1,88 @@
+/**
+ * The page's remembered choices (issue 28, point 1): the machine (five-axis or three-axis) and the
+ * unit, kept in the browser's localStorage across visits, as the saved tools are. A bare visit (an
+ * address that asks no question of its own) starts from them; a link that gives the calculator any
+ * value, and an embed, show what they say (a link without `machine=` is a five-axis link, without
+ * `unit=` a millimetre one), so the preferences never change what a shared link means. Whatever the
+ * storage holds is read as untrusted: only the known words count. A storage that throws (disabled,
+ * private mode, full) is as if empty. Pure apart from the storage handed in.
+ */
+import type { ToolStorage } from './savedTools';
+import { defaultState, withSize } from './state';
+import type { CalculatorState, Machine, Unit } from './stateTypes';
+
+/** The storage key (versioned: a later form gets another key). */
+export const PREFERENCES_KEY = 'path-interval.preferences.v1';
+
+/** The remembered choices; null where none was made (or the stored value is not one). */
+export interface PagePreferences {
+  readonly machine: Machine | null;
+  readonly unit: Unit | null;
+}
+
+const NONE: PagePreferences = { machine: null, unit: null };
+
+/** The address parameters that set the page, not the question: they leave a visit "bare". */
+const PAGE_SETTING_PARAMS: ReadonlySet<string> = new Set(['theme', 'present', 'view']);
+
+/** The remembered choices in `storage` (null: no storage), or none. */
+export function readPreferences(storage: ToolStorage | null): PagePreferences {
+  let text: string | null = null;
+  try {
+    text = storage?.getItem(PREFERENCES_KEY) ?? null;
+  } catch {
+    return NONE;
+  }
+  if (text === null) return NONE;
+  let json: unknown;
+  try {
+    json = JSON.parse(text);
+  } catch {
+    return NONE;
+  }
+  if (typeof json !== 'object' || json === null) return NONE;
+  const o = json as Record<string, unknown>;
+  return {
+    machine: o.machine === '5axis' || o.machine === '3axis' ? o.machine : null,
+    unit: o.unit === 'mm' || o.unit === 'in' ? o.unit : null,
+  };
+}
+
+/** Remembers the state's machine and unit; false when the storage refused (the page goes on). */
+export function writePreferences(storage: ToolStorage | null, state: CalculatorState): boolean {
+  if (storage === null) return false;
+  try {
+    storage.setItem(PREFERENCES_KEY, JSON.stringify({ machine: state.machine, unit: state.unit }));
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+/** True when the address asks nothing of the calculator (no parameter beyond the page settings). */
+export function isBareVisit(search: string): boolean {
+  for (const key of new URLSearchParams(search).keys()) if (!PAGE_SETTING_PARAMS.has(key)) return false;
+  return true;
+}
+
+/**
+ * The state a visit starts from: on a bare visit (whose parsed state is the default one), the
+ * remembered unit's own defaults on the remembered machine; otherwise the parsed state as is.
+ */
+export function withPreferences(state: CalculatorState, search: string, prefs: PagePreferences): CalculatorState {
+  if (!isBareVisit(search)) return state;
+  const inUnit =
+    prefs.unit === null || prefs.unit === state.unit
+      ? state
+      : withSize(defaultState(prefs.unit, state.mode), state.size ?? 'R');
+  return prefs.machine === null ? inUnit : { ...inUnit, machine: prefs.machine };
+}
+
+/** The browser's localStorage, or null where there is none or reading it throws (disabled storage). */
+export function browserStorage(): ToolStorage | null {
+  try {
+    return typeof window === 'undefined' ? null : window.localStorage;
+  } catch {
+    return null;
+  }
+}

@@ -1,0 +1,72 @@
+/**
+ * The question an answer answers, in words (issue 28, point 1): the machine first, then what sets
+ * the posture, the pass pattern and the surface, e.g. "5-axis, lead 5°, tilt 0°, one-way, plane",
+ * "3-axis, flat floor", "3-axis, slope 30°, raster 30°", "3-axis, waterline, slope 30°, bowl".
+ * Shown next to every step-over the page gives (the headline, the result bar, Copy's confirmation,
+ * the shop sheet, the lookup table's file name), so that a shop never takes a five-axis answer for
+ * its three-axis machine. Numbers as the user gave them, in the page's unit; pure (no DOM).
+ */
+import { unitSymbol } from '../core/input/units';
+import { parseField } from './fieldText';
+import type { CalculatorState, FieldKey } from './stateTypes';
+import { sideOf } from './surfaceState';
+
+/** A field's number as given (a finite number, never "-0"), or "?" when it is not one. */
+function given(state: CalculatorState, key: FieldKey): string {
+  const n = parseField(state.fields[key]);
+  if (n === null || !Number.isFinite(n)) return '?';
+  return String(n); // String(-0) is "0"
+}
+
+/** A length field with the page's unit symbol: "50 mm". */
+function length(state: CalculatorState, key: FieldKey): string {
+  return `${given(state, key)} ${unitSymbol(state.unit)}`;
+}
+
+/** The doubly curved point (or the surface of revolution) by its two radii and their sides. */
+function curvedWords(state: CalculatorState): string {
+  const radius = (key: 'Rf' | 'Rc', name: string): string => {
+    const side = sideOf(state, key);
+    return side === 'straight' ? `${name} straight` : `${name} ${side} ${length(state, key)}`;
+  };
+  return `${radius('Rf', 'along the feed')}, ${radius('Rc', 'across')}`;
+}
+
+/** The five-axis design surface in words. */
+function surfaceWords(state: CalculatorState): string {
+  switch (state.surface) {
+    case 'plane':
+      return 'plane';
+    case 'convex':
+    case 'concave':
+      return `${state.surface} cylinder ${length(state, 'Rs')} ${state.surfaceAxis === 'feed' ? 'along' : 'across'} the feed`;
+    case 'curved':
+      return `curved point: ${curvedWords(state)}`;
+  }
+}
+
+/**
+ * The question of a page state in words (see the module comment). Three-axis: the slope and the
+ * raster angle (a slope of 0 is the flat floor, where the raster angle does not matter), or the
+ * waterline passes with the slope and, on a surface of revolution, its radii.
+ */
+export function questionWords(state: CalculatorState): string {
+  if (state.machine === '3axis') {
+    const slope = parseField(state.fields.slope);
+    if (state.passes === 'waterline') {
+      const curved = state.feedSide !== 'straight' || state.crossSide !== 'straight';
+      return `3-axis, waterline, slope ${given(state, 'slope')}°${curved ? `, ${curvedWords(state)}` : ''}`;
+    }
+    if (slope === 0) return '3-axis, flat floor';
+    return `3-axis, slope ${given(state, 'slope')}°, raster ${given(state, 'psi')}°`;
+  }
+  return `5-axis, lead ${given(state, 'rho')}°, tilt ${given(state, 'tilt')}°, ${state.pattern}, ${surfaceWords(state)}`;
+}
+
+/** The question as a file-name part: "5-axis_lead5_tilt0" style, letters, digits, dots and dashes only. */
+export function questionFileTag(state: CalculatorState): string {
+  return questionWords(state)
+    .replace(/°/g, '')
+    .replace(/[^A-Za-z0-9.-]+/g, '_')
+    .replace(/^_+|_+$/g, '');
+}

@@ -1,0 +1,75 @@
+/**
+ * Issue 28, point 1: the machine (and the unit) remembered across visits; a bare visit starts from
+ * them, a link and an embed never change meaning; the storage is untrusted and may throw.
+ */
+import fc from 'fast-check';
+import { describe, expect, it } from 'vitest';
+import {
+  isBareVisit,
+  PREFERENCES_KEY,
+  readPreferences,
+  withPreferences,
+  writePreferences,
+} from '../../src/ui/preferences';
+import type { ToolStorage } from '../../src/ui/savedTools';
+import { defaultState, parseUrl } from '../../src/ui/state';
+
+function memory(): ToolStorage & { map: Map<string, string> } {
+  const map = new Map<string, string>();
+  return { map, getItem: (k) => map.get(k) ?? null, setItem: (k, v) => void map.set(k, v) };
+}
+const throwing: ToolStorage = {
+  getItem: () => {
+    throw new Error('denied');
+  },
+  setItem: () => {
+    throw new Error('full');
+  },
+};
+
+describe('page preferences', () => {
+  it('a shop that chose three-axis in inches starts there on its next bare visit', () => {
+    const storage = memory();
+    expect(writePreferences(storage, { ...defaultState('in'), machine: '3axis' })).toBe(true);
+    const prefs = readPreferences(storage);
+    expect(prefs).toEqual({ machine: '3axis', unit: 'in' });
+    const start = withPreferences(parseUrl('').state, '', prefs);
+    expect(start.machine).toBe('3axis');
+    expect(start.unit).toBe('in');
+    expect(start.fields).toEqual(parseUrl('?unit=in').state.fields);
+    // Page settings alone keep a visit bare.
+    expect(withPreferences(parseUrl('?theme=dark').state, '?theme=dark', prefs).machine).toBe('3axis');
+  });
+
+  it('a link keeps its meaning: a five-axis link (no machine=) stays five-axis, in its own unit', () => {
+    const prefs = { machine: '3axis', unit: 'in' } as const;
+    const search = '?R=3&Rcr=1&rho=5&h=0.05';
+    const s = withPreferences(parseUrl(search).state, search, prefs);
+    expect(s.machine).toBe('5axis');
+    expect(s.unit).toBe('mm');
+    for (const q of ['?embed=1', '?machine=5axis', '?unit=mm', '?view=profile&embed=1'])
+      expect(isBareVisit(q)).toBe(false);
+  });
+
+  it('a first visit keeps the teacher default (five-axis, mm)', () => {
+    const s = withPreferences(parseUrl('').state, '', readPreferences(memory()));
+    expect([s.machine, s.unit]).toEqual(['5axis', 'mm']);
+    expect(s).toEqual(parseUrl('').state);
+  });
+
+  it('hostile or broken storage: only the known words count; a throwing storage is empty (seed 2801)', () => {
+    expect(readPreferences(throwing)).toEqual({ machine: null, unit: null });
+    expect(writePreferences(throwing, defaultState())).toBe(false);
+    expect(readPreferences(null)).toEqual({ machine: null, unit: null });
+    fc.assert(
+      fc.property(fc.oneof(fc.string(), fc.json()), (text) => {
+        const storage = memory();
+        storage.map.set(PREFERENCES_KEY, text);
+        const p = readPreferences(storage);
+        expect([null, '5axis', '3axis']).toContain(p.machine);
+        expect([null, 'mm', 'in']).toContain(p.unit);
+      }),
+      { seed: 2801, numRuns: 300 },
+    );
+  });
+});
