@@ -17,9 +17,10 @@ import { THREE_AXIS_TABLE_NOTE } from './threeAxisNotes';
 
 /**
  * The file name of a table: its tool, pattern and surface, then its unit, lengths in that unit:
- * `step-over-table_R3_Rcr1_one-way_plane_mm.csv`, on a cylinder `..._one-way_Rs-30_cross_mm.csv`
+ * `step-over-table_5-axis_R3_Rcr1_one-way_plane_mm.csv` (the machine first: the grid spans the
+ * five-axis lead and tilt), on a cylinder `..._one-way_Rs-30_cross_mm.csv`
  * (the signed radius, negative for a concave cylinder, and the axis, as the CSV's columns give
- * them); in inches `step-over-table_R0.25_Rcr0.0625_one-way_plane_in.csv`.
+ * them); in inches `step-over-table_5-axis_R0.25_Rcr0.0625_one-way_plane_in.csv`.
  */
 export function tableFileName(request: TableRequest): string {
   const unit = request.unit ?? 'mm';
@@ -33,7 +34,7 @@ export function tableFileName(request: TableRequest): string {
       : s.kind === 'cylinder'
         ? `Rs${n(s.radiusMm)}_${s.axis}`
         : 'plane';
-  return `step-over-table_R${n(t.toolRadiusMm)}_Rcr${n(t.cornerRadiusMm)}_${t.pattern}_${surface}_${unitSymbol(unit)}.csv`;
+  return `step-over-table_5-axis_R${n(t.toolRadiusMm)}_Rcr${n(t.cornerRadiusMm)}_${t.pattern}_${surface}_${unitSymbol(unit)}.csv`;
 }
 
 /** What the status line says about a table saved. */

@@ -166,9 +166,9 @@ describe('curved surfaces on the page', () => {
     // The status says what was saved (before the fix: "No table: This tool gouges ...").
     await expect
       .poll(() => text(page, 'download-table-status'), { timeout: 15_000 })
-      .toMatch(/^Saved step-over-table_R3_Rcr1_one-way_Rs-30_cross_mm\.csv: 780 rows/);
+      .toMatch(/^Saved step-over-table_5-axis_R3_Rcr1_one-way_Rs-30_cross_mm\.csv: 780 rows/);
     const download = await downloaded;
-    expect(download.suggestedFilename()).toBe('step-over-table_R3_Rcr1_one-way_Rs-30_cross_mm.csv');
+    expect(download.suggestedFilename()).toBe('step-over-table_5-axis_R3_Rcr1_one-way_Rs-30_cross_mm.csv');
     const [head, ...rows] = parseCsv(readFileSync(await download.path(), 'utf8')).filter((r) => !r.blank);
     const header = headerInUnit(LOOKUP_HEADER, 'mm');
     expect(head?.fields.join(',')).toBe(header);

@@ -254,7 +254,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     const downloaded = page.waitForEvent('download');
     await press(vp, button);
     const download = await downloaded;
-    expect(download.suggestedFilename()).toBe('step-over-table_R3_Rcr1_zigzag_plane_mm.csv');
+    expect(download.suggestedFilename()).toBe('step-over-table_5-axis_R3_Rcr1_zigzag_plane_mm.csv');
     const csv = readFileSync(await download.path(), 'utf8');
     const [head, ...rows] = parseCsv(csv).filter((r) => !r.blank);
     // Every dimensioned column names its unit (issue 21).
@@ -282,7 +282,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     expect(checked).toBeGreaterThan(300);
     await expect
       .poll(() => text(page, 'download-table-status'))
-      .toMatch(/^Saved step-over-table_R3_Rcr1_zigzag_plane_mm\.csv: \d+ rows, h 0\.0002 to 2 mm /);
+      .toMatch(/^Saved step-over-table_5-axis_R3_Rcr1_zigzag_plane_mm\.csv: \d+ rows, h 0\.0002 to 2 mm /);
     // The table runs on its own worker.
     expect(await Promise.all(page.workers().map((w) => w.evaluate(() => self.name)))).toContain('path-interval-table');
     // Invalid input: nothing to tabulate.
@@ -298,7 +298,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     const downloaded = page.waitForEvent('download');
     await press(vp, button);
     const download = await downloaded;
-    expect(download.suggestedFilename()).toBe('step-over-table_R0.25_Rcr0.0625_one-way_plane_in.csv');
+    expect(download.suggestedFilename()).toBe('step-over-table_5-axis_R0.25_Rcr0.0625_one-way_plane_in.csv');
     const [head, ...rows] = parseCsv(readFileSync(await download.path(), 'utf8')).filter((r) => !r.blank);
     const header = headerInUnit(LOOKUP_HEADER, 'in');
     expect(head?.fields.join(',')).toBe(header);
@@ -319,7 +319,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     expect(refused?.fields[col('error')]).toMatch(/ in \(got [\d.]+\)/);
     await expect
       .poll(() => text(page, 'download-table-status'))
-      .toMatch(/^Saved step-over-table_R0\.25_Rcr0\.0625_one-way_plane_in\.csv: \d+ rows, h 0\.00002 to [\d.]+ in /);
+      .toMatch(/^Saved step-over-table_5-axis_R0\.25_Rcr0\.0625_one-way_plane_in\.csv: \d+ rows, h 0\.00002 to [\d.]+ in /);
   });
 
   it('touch targets are at least 24 px; a vertical swipe over the scene or the profile scrolls the page', async () => {

@@ -24,7 +24,7 @@ describe('a doubly curved point lookup table', () => {
     if (!built.ok || built.request.mode !== 'curved-forward') throw new Error('valid');
     const request = tableRequestOf(built.request, 'mm');
     expect(request.radii).toEqual({ feedRadiusMm: 80, crossRadiusMm: -40 });
-    expect(tableFileName(request)).toBe('step-over-table_R3_Rcr1_one-way_Rf80_Rc-40_mm.csv');
+    expect(tableFileName(request)).toBe('step-over-table_5-axis_R3_Rcr1_one-way_Rf80_Rc-40_mm.csv');
     expect(sameTableRequest(request, { ...request, unit: 'in' })).toBe(false);
     expect(sameTableRequest(request, { ...request, radii: { feedRadiusMm: 80, crossRadiusMm: -41 } })).toBe(false);
     expect(sameTableRequest(request, { ...request, radii: undefined })).toBe(false);

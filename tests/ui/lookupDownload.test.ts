@@ -10,7 +10,7 @@ const grid = lookupGrid(base);
 describe('lookup table file name', () => {
   it('names the surface: a plane, or the cylinder by its signed radius and axis (as the CSV columns)', () => {
     expect(tableFileName({ tool: { ...base, surface: PLANE }, grid, unit: 'mm' })).toBe(
-      'step-over-table_R3_Rcr1_one-way_plane_mm.csv',
+      'step-over-table_5-axis_R3_Rcr1_one-way_plane_mm.csv',
     );
     expect(
       tableFileName({
@@ -18,19 +18,19 @@ describe('lookup table file name', () => {
         grid,
         unit: 'mm',
       }),
-    ).toBe('step-over-table_R3_Rcr1_zigzag_Rs-30_cross_mm.csv');
+    ).toBe('step-over-table_5-axis_R3_Rcr1_zigzag_Rs-30_cross_mm.csv');
     expect(
       tableFileName({
         tool: { ...base, surface: { kind: 'cylinder', radiusMm: 12.5, axis: 'feed' } },
         grid,
         unit: 'mm',
       }),
-    ).toBe('step-over-table_R3_Rcr1_one-way_Rs12.5_feed_mm.csv');
+    ).toBe('step-over-table_5-axis_R3_Rcr1_one-way_Rs12.5_feed_mm.csv');
   });
 
   it('in inch mode names inches: the lengths of the name in inches, the file ends _in', () => {
     const tool = { toolRadiusMm: 6.35, cornerRadiusMm: 1.5875, pattern: 'one-way' as const, surface: PLANE };
     const request = { tool, grid: lookupGrid(tool, 'in'), unit: 'in' as const };
-    expect(tableFileName(request)).toBe('step-over-table_R0.25_Rcr0.0625_one-way_plane_in.csv');
+    expect(tableFileName(request)).toBe('step-over-table_5-axis_R0.25_Rcr0.0625_one-way_plane_in.csv');
   });
 });
