@@ -14,8 +14,17 @@
  * run in the host page or in no origin of the calculator's, so it is refused with a console
  * warning naming `src`, and nothing is loaded.
  * `title` is the iframe's accessible name. The other attributes only ever become query parameters
- * (encoded), never an address. The page posts { type: 'path-interval:resize', height } whenever its content
- * changes height; only messages from the iframe's own window and origin are taken.
+ * (encoded), never an address.
+ *
+ * Height: the element reserves its height before the frame loads, and keeps it, so the host page
+ * never jumps (issue 28): `height` in CSS pixels ("640" or "640px", 120 to 20000) when given, else
+ * the view's own aspect (VIEW_SIZES: the element's width over the view's aspect, between the view's
+ * least and greatest height), recomputed only when the element's width changes. What does not fit
+ * scrolls inside the frame. `height="auto"` instead takes the height of the content, as the page
+ * posts it ({ type: 'path-interval:resize', height } whenever its content changes height; only
+ * messages from the iframe's own window and origin are taken): no scrolling inside, but the host
+ * page moves when the content grows. Either way the element fires a `path-interval:resize` event
+ * with the posted height. The frame loads lazily (loading="lazy": when the reader scrolls near it).
  *
  * `theme`: light, dark or auto (THEMES). auto is the host page's prefers-color-scheme, and follows
  * it as it changes. Once the page has started (its first height message), a change of theme, of
@@ -57,6 +66,24 @@
   // END GENERATED
   const MIN_HEIGHT = 80;
   const MAX_HEIGHT = 20000;
+  /** The least `height` attribute taken (CSS px): a compact result card. */
+  const MIN_RESERVED = 120;
+  /**
+   * Each view's own size: its aspect (width over height) between a least and a greatest height
+   * (CSS px), so that its content fits from about 640 to 1100 px wide (measured on the built page,
+   * R 3, Rcr 1, lead 5, h 0.05: taller content scrolls inside the frame); '' is the whole
+   * calculator (no `view`: one column below 1000 px), `result` the compact card.
+   */
+  const VIEW_SIZES = {
+    '': { aspect: 0.7, min: 1240, max: 1240 },
+    profile: { aspect: 2.15, min: 450, max: 560 },
+    chart: { aspect: 0.74, min: 1440, max: 1600 },
+    tables: { aspect: 1, min: 680, max: 680 },
+    stepper: { aspect: 1, min: 640, max: 640 },
+    formulas: { aspect: 1, min: 1010, max: 1010 },
+    surface: { aspect: 1, min: 600, max: 600 },
+    result: { aspect: 4, min: 130, max: 130 },
+  };
   const THEME_MESSAGE = 'path-interval:theme';
   const THEME_PARAM = PARAMS.theme;
   const script = document.currentScript;
@@ -91,6 +118,30 @@
     return isAbsolute(text) ? null : url;
   }
 
+  /**
+   * The height the `height` attribute asks: a number of CSS px (a trailing "px" allowed) clamped to
+   * MIN_RESERVED..MAX_HEIGHT, 'auto', or null when absent or not a number (then the view's own).
+   */
+  function askedHeight(text) {
+    if (text === null) return null;
+    const trimmed = text.trim().toLowerCase();
+    if (trimmed === 'auto') return 'auto';
+    const match = /^(\d+(?:\.\d+)?)(?:px)?$/.exec(trimmed);
+    if (!match) {
+      console.warn(
+        `<path-interval-calculator>: height=${JSON.stringify(text)} is not a number of CSS pixels or auto; the view's own height is kept.`,
+      );
+      return null;
+    }
+    return Math.round(Math.min(MAX_HEIGHT, Math.max(MIN_RESERVED, Number(match[1]))));
+  }
+
+  /** The height a view reserves at `widthPx` wide: its aspect, between its least and greatest height. */
+  function viewHeight(view, widthPx) {
+    const size = VIEW_SIZES[view ?? ''] ?? VIEW_SIZES[''];
+    return Math.round(Math.min(size.max, Math.max(size.min, widthPx / size.aspect)));
+  }
+
   /** `href` without its theme parameter: two addresses that differ only in their theme show the same state. */
   function withoutTheme(href) {
     const url = new URL(href);
@@ -100,7 +151,27 @@
 
   class PathIntervalCalculator extends HTMLElement {
     static get observedAttributes() {
-      return [...Object.keys(PARAMS), 'src', 'title'];
+      return [...Object.keys(PARAMS), 'src', 'title', 'height'];
+    }
+
+    /** The `height` attribute as askedHeight reads it. */
+    heightMode() {
+      return askedHeight(this.getAttribute('height'));
+    }
+
+    /**
+     * Sets the frame's height before and after it loads: the `height` attribute's, else the view's
+     * own at the element's width; with height="auto", the content's once posted (until then the
+     * view's own). Only a new width or a new attribute changes it.
+     */
+    reserve() {
+      if (!this.frame) return;
+      const mode = this.heightMode();
+      const width = this.getBoundingClientRect().width;
+      if (mode === 'auto' && this.contentHeight !== null) return;
+      const height = typeof mode === 'number' ? mode : viewHeight(this.getAttribute('view'), width);
+      this.reservedForWidth = width;
+      this.frame.style.height = `${height}px`;
     }
 
     constructor() {
@@ -119,9 +190,19 @@
         const height = Number(data.height);
         if (!Number.isFinite(height)) return;
         this.ready = true;
-        frame.style.height = `${Math.round(Math.min(MAX_HEIGHT, Math.max(MIN_HEIGHT, height)))}px`;
+        this.contentHeight = height;
+        if (this.heightMode() === 'auto')
+          frame.style.height = `${Math.round(Math.min(MAX_HEIGHT, Math.max(MIN_HEIGHT, height)))}px`;
         this.dispatchEvent(new CustomEvent('path-interval:resize', { detail: { height } }));
       };
+      /** The content height the page last posted (used with height="auto"), or null. */
+      this.contentHeight = null;
+      /** The element's width its reserved height was computed for. */
+      this.reservedForWidth = -1;
+      this.onWidth = () => {
+        if (this.getBoundingClientRect().width !== this.reservedForWidth) this.reserve();
+      };
+      this.widthObserver = typeof ResizeObserver === 'function' ? new ResizeObserver(this.onWidth) : null;
       this.onScheme = () => {
         if (this.getAttribute('theme') === 'auto' && this.frame) this.load();
       };
@@ -160,20 +241,28 @@
         this.frame = document.createElement('iframe');
         this.frame.style.border = '0';
         this.frame.style.width = '100%';
-        this.frame.style.height = '360px';
         this.frame.style.display = 'block';
+        // Loaded when the reader scrolls near it; its height is reserved before (reserve()).
+        this.frame.loading = 'lazy';
+        // The card's and the page's Copy buttons write to the clipboard from the frame.
+        this.frame.allow = 'clipboard-write';
         this.append(this.frame);
       }
+      this.widthObserver?.observe(this);
+      this.reserve();
       this.load();
     }
 
     disconnectedCallback() {
       window.removeEventListener('message', this.onMessage);
       scheme?.removeEventListener('change', this.onScheme);
+      this.widthObserver?.disconnect();
     }
 
-    attributeChangedCallback() {
-      if (this.frame) this.load();
+    attributeChangedCallback(name) {
+      if (!this.frame) return;
+      if (name === 'height' || name === 'view') this.reserve();
+      if (name !== 'height') this.load();
     }
 
     load() {
@@ -206,6 +295,8 @@
       this.origin = url.origin;
       this.shown = url.href;
       this.ready = false;
+      this.contentHeight = null;
+      this.reserve();
       this.frame.src = url.href;
     }
   }

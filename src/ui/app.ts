@@ -17,6 +17,7 @@ import { solveClient } from '../worker/workers';
 import { applyProcedureColours } from './colours';
 import { wireCopyButtons } from './copy';
 import { wireCopyLink } from './copyLink';
+import { RESULT_VIEW, startResultCard } from './embedCard';
 import { embedCode, wireCopyEmbed } from './embedCode';
 import { postHeightToParent } from './embedResize';
 import { listenForHostTheme } from './embedTheme';
@@ -91,6 +92,8 @@ export class CalculatorApp {
   private readonly results: ResultsPanel;
   /** The headline kept in view on a phone while a field has focus (resultBar.ts). */
   private readonly resultBar: ResultBar;
+  /** Embedded with view=result: the compact card (embedCard.ts), which loads no 3D scene. */
+  private readonly resultCard: boolean;
   /** The 3D scene, built after the first result (its code and WebGL context load then). */
   private readonly scene: SceneSlot<ToolScene>;
   private readonly sceneBox: HTMLElement;
@@ -134,10 +137,12 @@ export class CalculatorApp {
     this.storage = embed ? null : browserStorage();
     this.state = withPreferences(parsed.state, window.location.search, readPreferences(this.storage));
     const requested = VIEW_IDS.find((v) => v === parsed.view);
+    const extra: Record<string, string> = {};
     document.documentElement.classList.toggle('embed', embed);
     document.documentElement.classList.toggle('single-view', embed && requested !== undefined);
     document.documentElement.dataset.view = requested ?? '';
-    const extra: Record<string, string> = {};
+    this.resultCard = startResultCard(root, embed && parsed.view === RESULT_VIEW, this.state);
+    if (this.resultCard) extra[FIELDS.view.url] = RESULT_VIEW;
     if (embed) extra[FIELDS.embed.url] = '1';
     if (requested) extra[FIELDS.view.url] = requested;
     const theme = parseTheme(window.location.search);
@@ -259,7 +264,7 @@ export class CalculatorApp {
       );
     wireCopyButtons(root, must(root, '[data-testid="copy-status"]'), () => questionWords(this.state));
     const notices = [...parsed.notices];
-    if (parsed.view !== null && requested === undefined)
+    if (parsed.view !== null && requested === undefined && !this.resultCard)
       notices.push(`view="${parsed.view}" is not one of ${VIEW_IDS.join(', ')}.`);
     if (theme.notice !== null) notices.push(theme.notice);
     if (present.notice !== null) notices.push(present.notice);
@@ -370,7 +375,7 @@ export class CalculatorApp {
     this.roughness.render(shown, this.state.unit);
     this.highlighter.markRows();
     // The first answer (or the first error) is on screen: now the scene may take its time to load.
-    if (shown.kind !== 'pending') this.scene.load();
+    if (shown.kind !== 'pending' && !this.resultCard) this.scene.load();
     const scene = shown.kind === 'current' ? sceneOfReply(shown.reply, this.state.unit) : null;
     if (shown.kind !== 'current' || scene === null) {
       this.scene.run('stale', (s) => s.setStale(true));

@@ -1,8 +1,9 @@
 /**
  * "Copy embed code": the HTML a documentation page needs to embed the calculator in its current
  * state and view, as a plain iframe and as the <path-interval-calculator> custom element
- * (public/embed.js, which sizes the iframe to its content). The button copies it to the clipboard
- * and says so; where the clipboard is refused it shows the code selected, to copy by hand.
+ * (public/embed.js, which reserves the view's height and loads the frame when scrolled to). The
+ * button copies it to the clipboard and says so; where the clipboard is refused it shows the code
+ * selected, to copy by hand.
  */
 import { embedAttributeOfParam } from '../core/input/fields';
 import { wireClipboardCopy } from './copyLink';
@@ -29,7 +30,7 @@ export function embedCode(pageUrl: string, search: string): string {
     '<!-- Path interval calculator: a plain iframe (fixed height) -->',
     `<iframe src="${escapeAttribute(src)}" width="100%" height="480" style="border:0" title="Path interval calculator"></iframe>`,
     '',
-    '<!-- Or the custom element, which sizes itself to its content -->',
+    '<!-- Or the custom element: it keeps the height of its view (or height="640") and loads when scrolled to -->',
     `<script src="${escapeAttribute(script)}" defer></script>`,
     `<path-interval-calculator ${attributes}></path-interval-calculator>`,
   ].join('\n');

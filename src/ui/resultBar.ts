@@ -1,12 +1,15 @@
 /**
- * The result bar (issue 21): on a phone the results panel lies below the inputs, so while a field
- * has focus the answer would be off screen. A compact bar fixed at the bottom of a narrow viewport
- * (style.css, shown while an input or select of the inputs has focus) mirrors the results panel's
+ * The result bar (issues 21 and 28): on a phone the results panel lies below the inputs, so the
+ * answer is off screen while a field has focus and after (Enter, a tap elsewhere). A compact bar
+ * fixed at the bottom of a narrow viewport (resultBar.css: shown while a result exists, and while a
+ * field of the inputs has focus), kept above the on-screen keyboard (the visual viewport's bottom
+ * edge, {@link followVisualViewport}), mirrors the results panel's
  * headline: its label, its text (in the user's unit, a dash when there is no answer) and the value
  * its Copy button copies, with a mark while that value is stale or the field is being typed. It
  * computes nothing: it copies what ResultsPanel.render just drew, so it never shows a number the
  * panel does not show for the inputs on screen.
  */
+import './resultBar.css';
 
 function must<T extends Element>(root: ParentNode, selector: string): T {
   const found = root.querySelector<T>(selector);
@@ -39,6 +42,7 @@ export class ResultBar {
     this.mark = must(bar, '[data-role="bar-mark"]');
     // A press on the bar keeps the focus in the field (the bar stays, and so does a phone's keyboard).
     bar.addEventListener('mousedown', (event) => event.preventDefault());
+    followVisualViewport(document.documentElement);
   }
 
   /**
@@ -60,6 +64,7 @@ export class ResultBar {
       this.value.dataset.copyUnit = this.headline.dataset.copyUnit ?? '';
     }
     this.copyButton.disabled = copy === undefined;
+    this.bar.toggleAttribute('data-has-result', copy !== undefined);
     this.copyButton.setAttribute('aria-label', `Copy ${this.headlineLabel.textContent ?? 'the headline value'}`);
     const stale = this.section.classList.contains('stale') || this.section.getAttribute('aria-busy') === 'true';
     const mark: ResultBarMark = typing ? 'typing' : stale ? 'stale' : '';
@@ -67,4 +72,22 @@ export class ResultBar {
     setText(this.mark, mark === 'typing' ? 'typing' : mark === 'stale' ? 'out of date' : '');
     this.mark.hidden = mark === '';
   }
+}
+
+/**
+ * Keeps the result bar (fixed to the layout viewport's bottom) on the visual viewport's bottom edge:
+ * the top of a phone's on-screen keyboard, which shrinks the visual viewport and not the layout
+ * one. Sets `--keyboard-inset` on `target` (the root element: the bar and the page's scroll padding
+ * read it; CSS px, 0 when the two bottoms meet) on each resize and scroll of the visual viewport;
+ * does nothing where the browser has none.
+ */
+export function followVisualViewport(target: HTMLElement, viewport = window.visualViewport): void {
+  if (!viewport) return;
+  const follow = (): void => {
+    const insetPx = Math.max(0, Math.round(window.innerHeight - viewport.height - viewport.offsetTop));
+    target.style.setProperty('--keyboard-inset', `${insetPx}px`);
+  };
+  viewport.addEventListener('resize', follow);
+  viewport.addEventListener('scroll', follow);
+  follow();
 }

@@ -2,9 +2,11 @@
  * The example documentation site (tests/docs-site/, MkDocs, installed by the project's own
  * tests/support/ensure-mkdocs.mjs) is built, served at /docs/ beside the calculator's production
  * build at /calculator/ on one server, and opened as a reader would: the embeds (the custom
- * element following the page, light and dark, a plain iframe with the README's listener) render,
- * take the height of their content, and ignore a resize message from another origin or another
- * window; the page follows the reader's colour scheme (color_mode: auto), and its theme="auto"
+ * element following the page, light and dark, the result card, a plain iframe with the README's
+ * listener) render; each element keeps the height it reserved before it loaded (height="auto" and
+ * the plain iframe take the height of their content) and ignores a resize message from another
+ * origin or another window; the site loads nothing from outside its server (MkDocs' theme would
+ * fetch highlight.js from a CDN: off in mkdocs.yml); the page follows the reader's colour scheme (color_mode: auto), and its theme="auto"
  * embed with it, in place: a light embed on a light page, a dark one on a dark page.
  */
 import { execFileSync } from 'node:child_process';
@@ -12,7 +14,7 @@ import type { Browser, Frame, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { launchChromium } from '../../src/bench/browser';
 import { type StaticMounts, serveStaticMounts } from '../../src/bench/staticServer';
-import { keepShot, ROOT, siteDir } from './harness';
+import { animationFrames, keepShot, ROOT, siteDir } from './harness';
 
 const DOCS_OUT = `${ROOT}test-results/docs-site`;
 let browser: Browser | null = null;
@@ -36,9 +38,14 @@ afterAll(async () => {
   await server?.close();
 });
 
+/** Every address the last opened docs page (and its frames) asked for. */
+let requested: string[] = [];
+
 async function openDocs(colorScheme: 'light' | 'dark' = 'light'): Promise<Page> {
   if (!browser || !server) throw new Error('not started');
   const page = await browser.newPage({ viewport: { width: 1100, height: 900 }, colorScheme });
+  requested = [];
+  page.on('request', (r) => requested.push(r.url()));
   await page.goto(`${server.urls[0]}index.html`);
   return page;
 }
@@ -58,28 +65,45 @@ const contentHeight = (frame: Frame) =>
   frame.locator('#app').evaluate((e) => Math.ceil(e.getBoundingClientRect().height));
 
 describe('example documentation site (MkDocs)', () => {
-  it('embeds render in light and dark and each iframe takes the height of its content', async () => {
+  it('embeds render in light and dark, keep their reserved heights (height="auto" and the plain iframe: their content\'s), nothing loads from outside', async () => {
     const page = await openDocs();
     expect(await page.locator('h1').first().textContent()).toMatch(/Step-over of a bull-nose end mill/);
     const cases: Array<[string, string, 'light' | 'dark']> = [
+      ['#embed-card iframe', '[data-testid="card-summary"]', 'light'],
       ['#embed-auto iframe', '[data-testid="profile-view"] polygon.scallop', 'light'],
       ['#embed-light iframe', '[data-testid="profile-view"] polygon.scallop', 'light'],
       ['#embed-dark iframe', '.formula', 'dark'],
       ['#plain-frame', '[data-testid="paper-table-half"] tr[data-condition]', 'dark'],
     ];
+    // The elements' heights before they load (reserved), to compare with after.
+    const reserved = new Map<string, number>();
+    for (const [selector] of cases) reserved.set(selector, await frameHeight(page, selector));
     for (const [selector, drawn, theme] of cases) {
       await page.locator(selector).scrollIntoViewIfNeeded();
       const frame = await embedded(page, selector, drawn);
       expect(await frame.evaluate(() => document.documentElement.dataset.theme), selector).toBe(theme);
       expect(await frame.getByTestId('result-exact-half').textContent()).toMatch(/^1\.44\d+ mm$/);
-      // The iframe follows the posted height: equal to the content, no inner scrollbar.
-      await expect
-        .poll(async () => (await frameHeight(page, selector)) - (await contentHeight(frame)), { timeout: 15_000 })
-        .toBe(0);
-      expect(await frame.evaluate(() => document.documentElement.scrollHeight <= window.innerHeight)).toBe(true);
+      expect(await frame.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth), selector).toBe(
+        true,
+      );
+      if (selector === '#plain-frame' || selector === '#embed-light iframe') {
+        // The plain iframe (the README's listener) and height="auto": the height of the content, no inner scrollbar.
+        await expect
+          .poll(async () => (await frameHeight(page, selector)) - (await contentHeight(frame)), { timeout: 15_000 })
+          .toBe(0);
+        expect(await frame.evaluate(() => document.documentElement.scrollHeight <= window.innerHeight)).toBe(true);
+      } else {
+        // The element keeps the height it reserved before loading (the page did not move).
+        await animationFrames(page);
+        expect(await frameHeight(page, selector), selector).toBe(reserved.get(selector));
+      }
     }
     // The plain iframe started at 360 px and the tables are taller: it grew.
     expect(await frameHeight(page, '#plain-frame')).toBeGreaterThan(360);
+    // Nothing came from outside the server (no CDN highlighter, no font).
+    const origin = new URL(server?.urls[0] ?? '').origin;
+    expect(requested.filter((u) => !u.startsWith(`${origin}/`) && !/^(data|blob|about):/.test(u))).toEqual([]);
+    expect(requested.length).toBeGreaterThan(10);
     await keepShot(page, 'docs-site', { fullPage: true });
     await page.close();
   }, 90_000);
@@ -141,9 +165,6 @@ describe('the page and its theme="auto" embed follow the reader\'s colour scheme
     const page = await openDocs('light');
     const selector = '#embed-auto iframe';
     const frame = await embedded(page, selector, '[data-testid="profile-view"] polygon.scallop');
-    await expect
-      .poll(async () => (await frameHeight(page, selector)) - (await contentHeight(frame)), { timeout: 15_000 })
-      .toBe(0);
     expect(await pageLook(page)).toEqual({ mode: 'light', background: 'rgb(255, 255, 255)' });
     await frame.evaluate(() => {
       (window as unknown as { marker: string }).marker = 'same document';

@@ -2,7 +2,10 @@
  * The technical writer's embedding, driven as a documentation page would: light and dark (system
  * and `theme=`), the height posted to the host, the "Copy embed code" button, and every view
  * fitting its 480 px embed and the full page fitting phones and tablets (no sideways scrolling,
- * nothing cut off).
+ * nothing cut off). Issue 28: the element reserves its height before its frame loads (lazily, when
+ * scrolled to) and keeps it, the height recorded before and after each scrolls into view; the whole
+ * calculator in an 860 px column stands in one column with a scene at least 300 px tall; the
+ * compact `view=result` card.
  */
 
 import { mkdirSync, writeFileSync } from 'node:fs';
@@ -11,7 +14,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
 import { EMBED_ATTRIBUTES } from '../../src/core/input/fields';
 import { axeViolations } from './axe';
-import { keepShot, pageSettled, ROOT, showView, useSite, viewAs } from './harness';
+import { animationFrames, keepShot, pageSettled, ROOT, showView, useSite, viewAs } from './harness';
 import { clippedElements, colourShare } from './pixels';
 
 const site = useSite('docs/embed');
@@ -174,6 +177,8 @@ describe('the custom element <path-interval-calculator>', () => {
           el.id = `calc-${i}`;
           el.setAttribute('src', src);
           el.setAttribute('view', 'formulas');
+          // Short, so that all seven stand in the window: the frames load lazily, when in view.
+          el.setAttribute('height', '120');
           el.addEventListener('path-interval:resize', () => w.resized.push(el.id));
           document.body.append(el);
         }
@@ -573,4 +578,135 @@ describe('hostile attribute values of <path-interval-calculator>', () => {
     await keepShot(host, 'embed-hostile-attributes', { fullPage: true });
     await host.close();
   });
+});
+
+describe('<path-interval-calculator> below the fold: its height reserved, no jump', () => {
+  /** The embeds, in order down an 860 px column, far below the fold: [id, attributes, what it draws]. */
+  const EMBEDS = [
+    ['e-profile', 'view="profile"', PROFILE],
+    ['e-tables', 'view="tables"', '[data-testid="paper-table-half"] tr[data-condition]'],
+    ['e-card', 'view="result"', '[data-testid="card-summary"]'],
+    ['e-full', '', '[data-testid="scene-canvas"]'],
+    ['e-sized', 'view="formulas" height="500"', '.formula'],
+  ] as const;
+  const TOOL = 'r="3" rcr="1" rho="5" h="0.05" unit="mm" theme="light"';
+
+  it('loads each lazily when scrolled to, its height the same before and after; the full calculator in one column; the result card', async () => {
+    const host = await hostPage('light', '<style>main { width: 860px; margin: 0 auto; }</style>');
+    await host.waitForFunction(() => customElements.get('path-interval-calculator') !== undefined);
+    // Every address a frame navigates to, from before the elements exist.
+    const navigated: string[] = [];
+    host.on('request', (r) => {
+      if (r.isNavigationRequest() && r.frame() !== host.mainFrame()) navigated.push(r.url());
+    });
+    // The column: 4000 px of text before each element; each element counts its started pages.
+    await host.evaluate(
+      ({ embeds, tool }) => {
+        const w = window as unknown as { started: Record<string, number> };
+        w.started = {};
+        const main = document.querySelector('main') as HTMLElement;
+        for (const [id, attributes] of embeds) {
+          main.insertAdjacentHTML(
+            'beforeend',
+            `<div style="height:4000px">Text of the host page.</div><path-interval-calculator id="${id}" ${attributes} ${tool}></path-interval-calculator>`,
+          );
+          document.getElementById(id)?.addEventListener('path-interval:resize', () => {
+            w.started[id] = (w.started[id] ?? 0) + 1;
+          });
+        }
+        main.insertAdjacentHTML('beforeend', '<div style="height:4000px">The end of the page.</div>');
+      },
+      { embeds: EMBEDS.map(([id, attributes]): [string, string] => [id, attributes]), tool: TOOL },
+    );
+    const loaded = async (id: string) =>
+      navigated.includes((await host.locator(`#${id} iframe`).getAttribute('src')) ?? 'none');
+    const started = (id: string) =>
+      host.evaluate((i) => (window as unknown as { started: Record<string, number> }).started[i] ?? 0, id);
+    const box = (id: string) =>
+      host.locator(`#${id}`).evaluate((e) => {
+        const r = e.getBoundingClientRect();
+        return { top: Math.round(r.top), height: Math.round(r.height), width: Math.round(r.width) };
+      });
+    const before: Record<string, number> = {};
+    for (const [id] of EMBEDS) {
+      before[id] = (await box(id)).height;
+    }
+    expect(before['e-sized']).toBe(500);
+    expect(await loaded('e-profile'), 'e-profile loaded before it was scrolled to').toBe(false);
+    expect(Math.min(...Object.values(before))).toBeGreaterThanOrEqual(120);
+
+    for (const [index, [id, , drawn]] of EMBEDS.entries()) {
+      await host.locator(`#${id}`).evaluate((e) => e.scrollIntoView({ block: 'start' }));
+      const top = (await box(id)).top;
+      await expect.poll(() => started(id), { timeout: 20_000, message: id }).toBeGreaterThan(0);
+      const frame = await (await host.locator(`#${id} iframe`).elementHandle())?.contentFrame();
+      if (!frame) throw new Error(`no frame in #${id}`);
+      await frame.locator(drawn).first().waitFor({ timeout: 20_000 });
+      await animationFrames(host);
+      // Loaded and drawn: the same height (within 3 px) and the same place on screen.
+      const after = await box(id);
+      expect(
+        Math.abs(after.height - (before[id] as number)),
+        `${id}: ${before[id]} -> ${after.height}`,
+      ).toBeLessThanOrEqual(3);
+      expect(Math.abs(after.top - top), `${id} moved`).toBeLessThanOrEqual(3);
+      // Loaded once scrolled to; the embeds further down have not loaded (lazily: the next is 4000 px below).
+      expect(await loaded(id), `${id} loaded`).toBe(true);
+      const next = EMBEDS[index + 1];
+      if (next) expect(await loaded(next[0]), `${next[0]} loaded early`).toBe(false);
+      const inside = await frame.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth);
+      expect(inside, `${id}: no sideways scrolling`).toBe(true);
+      // The view's own height fits its content at 860 px (no scrolling inside); a given height
+      // smaller than the content scrolls inside instead.
+      const fits = await frame.evaluate(() => document.documentElement.scrollHeight <= window.innerHeight + 1);
+      expect(fits, `${id}: content within its reserved height`).toBe(id !== 'e-sized');
+
+      if (id === 'e-full') {
+        // The whole calculator at 860 px: inputs, results and scene in one column, the scene >= 300 px tall.
+        const parts = await frame.evaluate(() =>
+          ['.controls', '.results', '.view', '[data-testid="scene-canvas"]'].map((s) => {
+            const r = (document.querySelector(s) as HTMLElement).getBoundingClientRect();
+            return {
+              s,
+              left: Math.round(r.left),
+              top: Math.round(r.top),
+              width: Math.round(r.width),
+              height: Math.round(r.height),
+            };
+          }),
+        );
+        const [controls, results, view, canvas] = parts as [
+          (typeof parts)[0],
+          (typeof parts)[0],
+          (typeof parts)[0],
+          (typeof parts)[0],
+        ];
+        expect(results.top, 'results below the inputs').toBeGreaterThanOrEqual(controls.top + controls.height - 1);
+        expect(view.top, 'scene below the results').toBeGreaterThanOrEqual(results.top + results.height - 1);
+        for (const p of parts) expect(p.width, `${p.s} spans the column`).toBeGreaterThan(780);
+        expect(canvas.height).toBeGreaterThanOrEqual(300);
+        await host.locator('#e-full').evaluate((e) => e.scrollIntoView({ block: 'start' }));
+        await keepShot(host, 'embed-full-860-top');
+        await frame.locator('.view').evaluate((e) => e.scrollIntoView({ block: 'end' }));
+        await keepShot(host, 'embed-full-860-scene');
+      }
+      if (id === 'e-card') {
+        // The card: the inputs in a line, the answer, Copy; no inputs panel, no views, no scene loaded.
+        expect(await frame.getByTestId('card-summary').textContent()).toBe(
+          'R 3 mm, Rcr 1 mm, lead 5°, tilt 0°, one-way, plane, h 0.05 mm',
+        );
+        await expect.poll(() => frame.getByTestId('result-exact-interval').textContent()).toMatch(/^2\.887\d* mm$/);
+        const copy = frame.locator('.headline .big button.copy');
+        expect(await copy.isVisible()).toBe(true);
+        await expect.poll(() => copy.isEnabled()).toBe(true);
+        for (const hidden of ['.controls', '.teaching', '.view', '.procedures'])
+          expect(await frame.locator(hidden).isVisible(), hidden).toBe(false);
+        expect(await frame.locator('canvas').count()).toBe(0);
+        expect(await frame.evaluate(() => document.documentElement.scrollHeight <= window.innerHeight)).toBe(true);
+        expect(await frame.getByTestId('notice').isVisible()).toBe(false);
+        await keepShot(host.locator('#e-card'), 'embed-result-card');
+      }
+    }
+    await host.close();
+  }, 120_000);
 });

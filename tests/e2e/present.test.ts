@@ -5,11 +5,14 @@
  * the 3D scene's canvas over half the window and its drawing buffer following its new size, no
  * header, no page scrolling; the Inputs button opens the inputs over the view; Escape closes them,
  * then leaves, the URL drops present=1 and the layout is as before; axe finds nothing.
+ * Issue 28: a presenter's clicker (its key presses: ArrowRight/Left, PageDown/Up, Space, Home/End)
+ * drives the step-through wherever focus is, a text field keeping its keys; the paper's tables are
+ * whole at 1920 wide; the scrolled Inputs panel's text never lies under its buttons.
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { axeViolations } from './axe';
-import { keepShot, pageSettled, sceneIdle, useSite } from './harness';
+import { animationFrames, keepShot, pageSettled, sceneIdle, useSite, viewAs } from './harness';
 
 const site = useSite('docs/present');
 const STATE = 'R=3&Rcr=1&rho=5&h=0.05&unit=mm';
@@ -185,6 +188,113 @@ describe('presentation mode', () => {
       expect(errors, label).toEqual([]);
     }
   }, 180_000);
+
+  it("a clicker's keys step the step-through wherever focus is; a text field keeps them", async () => {
+    const { page, errors } = await site.open(`?${STATE}&present=1`, VIEWPORTS[0]);
+    await page.locator('#panel-profile svg').first().waitFor();
+    const counter = page.getByTestId('stepper-counter');
+    const step = async () => Number(/step (\d+) of/.exec((await counter.textContent()) ?? '')?.[1] ?? Number.NaN);
+    // No focus: the first press opens the step-through (at its first step), the next ones step.
+    expect(await page.evaluate(() => document.activeElement === document.body)).toBe(true);
+    await page.keyboard.press('ArrowRight');
+    await expect
+      .poll(() => page.locator('[role="tab"][data-view="stepper"]').getAttribute('aria-selected'))
+      .toBe('true');
+    await expect.poll(step).toBe(1);
+    const total = Number(/of (\d+)/.exec((await counter.textContent()) ?? '')?.[1]);
+    expect(total).toBeGreaterThan(5);
+    for (const [key, expected] of [
+      ['ArrowRight', 2],
+      ['PageDown', 3],
+      ['Space', 4],
+      ['ArrowLeft', 3],
+      ['PageUp', 2],
+      ['End', total],
+      ['Home', 1],
+      ['Shift+Space', 1],
+    ] as const) {
+      await page.keyboard.press(key);
+      await expect.poll(step, { message: key }).toBe(expected);
+    }
+    // Focus on a button (Space would press it: here, leave presentation mode) and on a tab (the
+    // arrows would switch tabs): the clicker's keys still step.
+    await page.getByTestId('present-toggle').focus();
+    await page.keyboard.press('Space');
+    await expect.poll(step).toBe(2);
+    expect(await page.evaluate(() => document.documentElement.classList.contains('present'))).toBe(true);
+    await page.locator('[role="tab"][data-view="stepper"]').focus();
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(step).toBe(3);
+    expect(await page.locator('[role="tab"][data-view="stepper"]').getAttribute('aria-selected')).toBe('true');
+    // A text field keeps its keys: the caret moves, the step does not.
+    await page.getByTestId('present-inputs').click();
+    const h = page.getByTestId('input-h');
+    await h.focus();
+    await page.keyboard.press('End');
+    const caret = () => h.evaluate((e: HTMLInputElement) => e.selectionStart);
+    expect(await caret()).toBe((await h.inputValue()).length);
+    await page.keyboard.press('Home');
+    expect(await caret()).toBe(0);
+    await page.keyboard.press('ArrowRight');
+    expect(await caret()).toBe(1);
+    expect(await step()).toBe(3);
+    await page.keyboard.press('Escape');
+    await expect.poll(() => page.locator('.controls').isVisible()).toBe(false);
+    // Back on the Inputs button, outside the panel: the clicker steps again.
+    await page.keyboard.press('PageDown');
+    await expect.poll(step).toBe(4);
+    expect(errors).toEqual([]);
+  });
+
+  it("the paper's tables whole at 1920 wide; the scrolled Inputs panel's text clear of its buttons", async () => {
+    const { page } = await site.open(`?${STATE}&present=1&view=tables`, VIEWPORTS[0]);
+    await page.locator('[data-testid="paper-table-half"] tr[data-condition]').first().waitFor();
+    await pageSettled(page);
+    const cut = () =>
+      page.evaluate(() =>
+        [...document.querySelectorAll<HTMLElement>('#panel-tables .table-scroll, #panel-tables table')].flatMap((e) => {
+          const r = e.getBoundingClientRect();
+          return e.scrollWidth > e.clientWidth + 1 || r.right > window.innerWidth
+            ? [`${e.tagName} ${e.scrollWidth}/${e.clientWidth} right ${Math.round(r.right)}`]
+            : [];
+        }),
+      );
+    expect(await cut()).toEqual([]);
+    await keepShot(page, 'present-tables-1920');
+
+    // A 1280 x 720 projector: the opened Inputs panel scrolls; half way down no text lies under a button.
+    await viewAs(page, { width: 1280, height: 720 });
+    await page.getByTestId('present-inputs').click();
+    const controls = page.locator('.controls');
+    await expect.poll(() => controls.isVisible()).toBe(true);
+    const scrolled = await controls.evaluate((e) => {
+      e.scrollTop = (e.scrollHeight - e.clientHeight) / 2;
+      return e.scrollTop;
+    });
+    expect(scrolled).toBeGreaterThan(100);
+    await animationFrames(page);
+    const covered = await page.evaluate(() => {
+      const buttons = [...document.querySelectorAll('.present-tools button')].map((b) => b.getBoundingClientRect());
+      const panel = document.querySelector('.controls') as HTMLElement;
+      const box = panel.getBoundingClientRect();
+      const out: string[] = [];
+      const walker = document.createTreeWalker(panel, NodeFilter.SHOW_TEXT);
+      for (let n = walker.nextNode(); n !== null; n = walker.nextNode()) {
+        if ((n.textContent ?? '').trim() === '') continue;
+        const range = document.createRange();
+        range.selectNodeContents(n);
+        for (const r of range.getClientRects()) {
+          if (r.bottom <= box.top || r.top >= box.bottom) continue; // scrolled out of the panel's box
+          for (const b of buttons)
+            if (r.left < b.right && r.right > b.left && r.top < b.bottom && r.bottom > b.top)
+              out.push(`${(n.textContent ?? '').trim().slice(0, 30)} at ${Math.round(r.top)}`);
+        }
+      }
+      return out;
+    });
+    expect(covered).toEqual([]);
+    await keepShot(page, 'present-inputs-scrolled-1280');
+  });
 
   it('present= with another word: a notice naming it, and the normal page', async () => {
     const { page } = await site.open(`?${STATE}&present=yes`, VIEWPORTS[1]);

@@ -3,6 +3,10 @@
  * at the bottom of the screen, the same text as the results panel's headline (it mirrors, it does
  * not compute), a dash when the input is invalid, marked while typing, with a Copy button that
  * copies the headline's value; three-axis shows the programmed step; axe finds nothing on it.
+ * Issue 28: once no field has focus (Enter, then a tap elsewhere) the headline lies below the fold,
+ * and the bar stays while a result exists, its label whole (never cut with an ellipsis), on the
+ * top edge of the on-screen keyboard (a visual viewport shorter than the window, emulated in the
+ * page: its height and offset set, its resize event dispatched, as a phone's keyboard does).
  */
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
@@ -23,11 +27,44 @@ const inViewport = (page: Page, id: string) =>
     return r.height > 0 && r.top >= 0 && r.bottom <= window.innerHeight && r.left >= 0 && r.right <= window.innerWidth;
   });
 
+/** True when the result bar's Copy button can be pressed. */
+const copyEnabled = (page: Page) => page.getByTestId('result-bar').getByRole('button').isEnabled();
+
+/**
+ * The lines of `selector`'s text that are not wholly inside it and the bar (each as "top text"):
+ * cut by an ellipsis, an overflow or the bar's edge. Empty when every character is shown.
+ */
+const cut = (page: Page, selector: string) =>
+  page.locator(selector).evaluate((e) => {
+    const out: string[] = [];
+    if (e.scrollWidth > e.clientWidth + 1) out.push(`scrollWidth ${e.scrollWidth} > ${e.clientWidth}`);
+    const bar = (e.closest('[data-testid="result-bar"]') as HTMLElement).getBoundingClientRect();
+    const range = document.createRange();
+    range.selectNodeContents(e);
+    for (const r of range.getClientRects())
+      if (r.left < bar.left - 0.5 || r.right > bar.right + 0.5 || r.top < bar.top - 0.5 || r.bottom > bar.bottom + 0.5)
+        out.push(`${Math.round(r.top)} ${Math.round(r.left)}-${Math.round(r.right)}`);
+    return out;
+  });
+
+/**
+ * Emulates a phone's on-screen keyboard `heightPx` high (0: closed): the visual viewport as the
+ * browser then reports it (shorter by that much, not scrolled) and its resize event.
+ */
+const keyboard = (page: Page, heightPx: number) =>
+  page.evaluate((px) => {
+    const viewport = window.visualViewport as VisualViewport;
+    Object.defineProperty(viewport, 'height', { configurable: true, get: () => window.innerHeight - px });
+    Object.defineProperty(viewport, 'offsetTop', { configurable: true, get: () => 0 });
+    viewport.dispatchEvent(new Event('resize'));
+  }, heightPx);
+
 describe('result bar on a phone', () => {
   it('keeps the headline in view while h has focus, follows the results, dashes when invalid, copies', async () => {
     const page = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     const bar = page.getByTestId('result-bar');
-    expect(await bar.isVisible()).toBe(false);
+    // A result exists: the bar shows it before any field has focus (issue 28).
+    await expect.poll(() => bar.isVisible()).toBe(true);
     const h = page.getByTestId('input-h');
     await h.scrollIntoViewIfNeeded();
     await h.tap();
@@ -70,7 +107,7 @@ describe('result bar on a phone', () => {
     expect(await copy.isDisabled()).toBe(true);
     expect(await bar.isVisible()).toBe(true);
 
-    // Focus leaves the inputs: the bar goes.
+    // Focus leaves the inputs with no result: the bar goes (it stays only while a result exists).
     await page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
     await expect.poll(() => bar.isVisible()).toBe(false);
   });
@@ -100,6 +137,50 @@ describe('result bar on a phone', () => {
       );
     });
     expect(violations).toEqual([]);
+  });
+
+  it('after Enter and a tap elsewhere: the bar stays with the answer, its label whole, above the keyboard', async () => {
+    const page = await open('?R=3&Rcr=1&machine=3axis&slope=30&h=0.05&unit=mm');
+    await page.getByTestId('result-programmed-step').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+    const bar = page.getByTestId('result-bar');
+    const h = page.getByTestId('input-h');
+    await h.scrollIntoViewIfNeeded();
+    await h.tap();
+    const first = await text(page, 'result-programmed-step');
+    await retype(page, '0.01');
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, 'result-programmed-step')).not.toBe(first);
+    await expect.poll(() => page.locator('.results').getAttribute('aria-busy')).toBe('false');
+    // A tap elsewhere (the page's heading, no control): no field has focus any more.
+    await page.locator('.chrome h1').scrollIntoViewIfNeeded();
+    await page.locator('.chrome h1').tap();
+    await expect.poll(() => page.evaluate(() => document.activeElement === document.body)).toBe(true);
+    // The headline itself lies below the fold: the bar is what keeps the answer in view.
+    const headlineTop = await page.getByTestId('result-programmed-step').evaluate((e) => e.getBoundingClientRect().top);
+    expect(headlineTop).toBeGreaterThan(844);
+    await expect.poll(() => bar.isVisible()).toBe(true);
+    expect(await inViewport(page, 'result-bar')).toBe(true);
+    const step = await text(page, 'result-programmed-step');
+    expect(await text(page, 'result-bar-value')).toBe(step);
+    expect(await copyEnabled(page)).toBe(true);
+    // The label is whole: its text is the headline's, and no line of it is cut or hidden.
+    const label = page.locator('[data-testid="result-bar"] .bar-label');
+    expect(await label.textContent()).toBe(await page.locator('[data-role="headline-label"]').textContent());
+    expect(await label.textContent()).toMatch(/^Horizontal step Lxy \(as programmed\)$/);
+    expect(await cut(page, '[data-testid="result-bar"] .bar-label')).toEqual([]);
+    expect(await cut(page, '[data-testid="result-bar"] .bar-value')).toEqual([]);
+    await keepShot(page, 'result-bar-phone-no-focus');
+
+    // The on-screen keyboard: the visual viewport 300 px shorter than the window. The bar's bottom
+    // edge moves onto its top edge, and back when it closes.
+    const barBottom = () => bar.evaluate((e) => Math.round(e.getBoundingClientRect().bottom));
+    expect(await barBottom()).toBe(844);
+    await keyboard(page, 300);
+    await expect.poll(barBottom).toBe(544);
+    expect(await bar.isVisible()).toBe(true);
+    await keepShot(page, 'result-bar-phone-keyboard');
+    await keyboard(page, 0);
+    await expect.poll(barBottom).toBe(844);
   });
 
   it('stays out of an embed and of print', async () => {

@@ -9,6 +9,7 @@ import { formatSignificant } from '../../core/input/units';
 import type { ProcedureKey } from '../../core/procedures/procedures';
 import type { TraceFrame } from '../../worker/protocol';
 import { formatLenUnit, formatRadAsDeg } from '../format';
+import { STEP_EVENT, type StepAction } from '../present';
 import { html, type TeachingView, type TeachOk, untilted, type ViewContext } from './common';
 import { DsGauge } from './dsGauge';
 import { gaugeMax, groupSteps, type Step, sceneToleranceMm } from './stepGroups';
@@ -125,6 +126,14 @@ export class StepperView implements TeachingView {
       this.play.textContent = this.reducedMotion.matches ? 'Play (one step)' : 'Play';
       if (this.reducedMotion.matches) this.pause();
     };
+    // A presenter's clicker (present.ts): one step per press, the playback paused.
+    document.addEventListener(STEP_EVENT, (e) => {
+      if (!this.visible) return;
+      const action = (e as CustomEvent<StepAction>).detail;
+      this.pause();
+      const last = this.steps.length - 1;
+      this.go(action === 'first' ? 0 : action === 'last' ? last : action === 'back' ? this.index - 1 : this.index + 1);
+    });
     this.reducedMotion.addEventListener('change', motion);
     motion();
     controls.append(first, back, this.play, forward, last, this.counter);
