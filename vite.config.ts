@@ -1,58 +1,38 @@
 import { availableParallelism } from 'node:os';
 import { fileURLToPath } from 'node:url';
-import { VitePWA } from 'vite-plugin-pwa';
 import { defineConfig } from 'vitest/config';
 import { embedAttributesPlugin } from './src/build/embedAttributes.ts';
 import { formulaMathmlPlugin } from './src/build/formulaMathml.ts';
+import { serviceWorkerPlugin } from './src/build/serviceWorker.ts';
 import { shaderWhitespacePlugin } from './src/build/shaderWhitespace.ts';
 import { sharedWorkerPlugin } from './src/build/sharedWorker.ts';
 import { staticClosure } from './src/build/staticGraph.ts';
 
 /**
- * The installable web app: a Workbox service worker (vite-plugin-pwa, generateSW) precaches the
- * whole site, so after the first visit the calculator works offline. `autoUpdate`: a deployed new
- * version is fetched in the background and takes over on the next load (nothing to click).
- * Registered by a separate file (registerSW.js), not an inline script, so the strict CSP holds.
+ * The installable web app: a small service worker (src/build/serviceWorker.ts, generated into sw.js
+ * with the site's files and their revisions) precaches the whole site, so after the first visit the
+ * calculator works offline; a deployed new version is fetched in the background and takes over on
+ * the next load (nothing to click). src/main.ts registers it (not inside a cross-origin frame).
  * The instrumented e2e build leaves it out (tests there intercept worker scripts, which a service
  * worker would answer first); the offline test runs against the production build.
  */
-function pwa(mode: string) {
-  return VitePWA({
-    disable: mode === 'e2e',
-    // Workbox's minified runtime whatever NODE_ENV says (Vitest sets it to `test`, which would make
-    // the tests' build ship the 129 kB development runtime instead of the 15 kB one).
-    mode: 'production',
-    registerType: 'autoUpdate',
-    injectRegister: 'script',
-    includeAssets: ['embed.js', 'icon-192.png', 'icon-512.png', 'icon-maskable-512.png'],
-    manifest: {
-      name: 'Step-over of a filleted end mill',
-      short_name: 'Step-over',
-      description:
-        'Exact path interval (step-over) of an inclined filleted (bull-nose) end mill for a chosen scallop height, beside the published approximations.',
-      start_url: './',
-      scope: './',
-      display: 'standalone',
-      theme_color: '#1d4ed8',
-      background_color: '#ffffff',
-      icons: [
-        { src: 'icon-192.png', sizes: '192x192', type: 'image/png' },
-        { src: 'icon-512.png', sizes: '512x512', type: 'image/png' },
-        { src: 'icon-maskable-512.png', sizes: '512x512', type: 'image/png', purpose: 'maskable' },
-      ],
-    },
-    workbox: {
-      globPatterns: ['**/*.{js,css,html,png,svg,webmanifest}'],
-      // Every address of the page (its state is in the query) opens the cached page offline.
-      navigateFallback: 'index.html',
-      cleanupOutdatedCaches: true,
-      // A new version takes over at once, and the first visit's page is controlled (offline at once).
-      skipWaiting: true,
-      clientsClaim: true,
-      maximumFileSizeToCacheInBytes: 4 * 1024 * 1024,
-    },
-  });
-}
+const WEB_APP_MANIFEST = {
+  name: 'Step-over of a filleted end mill',
+  short_name: 'Step-over',
+  description:
+    'Exact path interval (step-over) of an inclined filleted (bull-nose) end mill for a chosen scallop height, beside the published approximations.',
+  start_url: './',
+  scope: './',
+  display: 'standalone',
+  theme_color: '#1d4ed8',
+  background_color: '#ffffff',
+  lang: 'en',
+  icons: [
+    { src: 'icon-192.png', sizes: '192x192', type: 'image/png' },
+    { src: 'icon-512.png', sizes: '512x512', type: 'image/png' },
+    { src: 'icon-maskable-512.png', sizes: '512x512', type: 'image/png', purpose: 'maskable' },
+  ],
+};
 
 /**
  * The first result loads the page's entry and the solver worker, each with what it imports
@@ -164,7 +144,7 @@ export default defineConfig(({ mode, command }) =>
           sharedWorkerPlugin(),
           embedAttributesPlugin(),
           shaderWhitespacePlugin(),
-          pwa(mode),
+          serviceWorkerPlugin({ manifest: WEB_APP_MANIFEST, disable: mode === 'e2e' }),
         ],
         // three.js alone is about 560 kB raw (130 kB gzip) in its chunk; the benchmark tracks the gzip
         // size against its 200 kB budget, so Rollup's generic 500 kB warning is raised.
