@@ -1,0 +1,352 @@
+/**
+ * Build step: three.js without what this page cannot reach. The site builds three.js from its
+ * sources through src/render/threeParts.ts (the classes the page uses); the renderer still imports
+ * every material's shaders (ShaderChunk holds them all, looked up by name at run time), WebXR, the
+ * shadow maps and the environment maps' PMREM generator, and its shaders carry the code of every
+ * feature behind preprocessor switches. Each removal here holds only while a check of the page's
+ * sources proves its feature unreachable ({@link FEATURES}); a feature the sources may use is kept
+ * whole, and the build says which.
+ *
+ *  - Shaders: only the chunks that the materials threeParts.ts exports (through WebGLPrograms'
+ *    table of shader ids and ShaderLib) and the renderer itself include, transitively; and in
+ *    them, the blocks that only a dead switch opens (src/build/glslDeadBlocks.ts).
+ *  - Modules replaced by small stand-ins: WebXRManager (never enabled), WebGLShadowMap (never
+ *    enabled: nothing casts a shadow), WebGLEnvironments (no texture exists, so no environment map
+ *    and no PMREM), WebGLMorphtargets (no geometry has morph attributes). A stand-in reached after
+ *    all throws, naming itself.
+ */
+import { readdirSync, readFileSync, statSync } from 'node:fs';
+import { join } from 'node:path';
+import type { Plugin } from 'vite';
+import { dropDeadBlocks } from './glslDeadBlocks.ts';
+import { compactGlsl, glslTemplates, stripGlslComments } from './shaderWhitespace.ts';
+
+/**
+ * A feature of three.js the page may not use: the proof (`unused`, given the exported class names
+ * and the page's sources) and the preprocessor switches that only it turns on (WebGLProgram.js's
+ * prefixes: each `#define` there depends on a material, geometry, scene or renderer property
+ * that the feature alone sets). `modules`: three's modules it replaces by a stand-in.
+ */
+interface Feature {
+  readonly name: string;
+  unused(exports: ReadonlySet<string>, sources: string): boolean;
+  readonly macros: readonly string[];
+  readonly modules?: readonly string[];
+}
+
+const exportsNone = (exports: ReadonlySet<string>, pattern: RegExp) => ![...exports].some((e) => pattern.test(e));
+
+export const FEATURES: readonly Feature[] = [
+  {
+    // No texture can exist: no texture class, loader or render target is exported, and the page
+    // imports three only through threeParts.ts (checked in threeTrimPlugin). So no material map,
+    // no environment (scene.environment, envMap) and no PMREM.
+    name: 'textures and environment maps',
+    unused: (exports, sources) =>
+      exportsNone(exports, /Texture|Loader|RenderTarget|CubeCamera|PMREM/) &&
+      !/\b(envMap|environment)\s*[:=]/.test(sources),
+    macros: [
+      ...['MAP', 'ALPHAMAP', 'AOMAP', 'LIGHTMAP', 'BUMPMAP', 'NORMALMAP', 'DISPLACEMENTMAP', 'EMISSIVEMAP'].map(
+        (m) => `USE_${m}`,
+      ),
+      ...['METALNESSMAP', 'ROUGHNESSMAP', 'SPECULARMAP', 'GRADIENTMAP', 'MATCAP', 'ENVMAP', 'POINTS_UV'].map(
+        (m) => `USE_${m}`,
+      ),
+      'USE_NORMALMAP_OBJECTSPACE',
+      'USE_NORMALMAP_TANGENTSPACE',
+      'USE_PACKED_NORMALMAP',
+      'USE_UV1',
+      'USE_UV2',
+      'USE_UV3',
+      'ENVMAP_TYPE_CUBE',
+      'ENVMAP_TYPE_CUBE_UV',
+      'ENVMAP_MODE_REFRACTION',
+      'ENVMAP_BLENDING_MULTIPLY',
+      'ENVMAP_BLENDING_MIX',
+      'ENVMAP_BLENDING_ADD',
+      'DECODE_VIDEO_TEXTURE',
+      'DECODE_VIDEO_TEXTURE_EMISSIVE',
+    ],
+    modules: ['renderers/webgl/WebGLEnvironments.js'],
+  },
+  {
+    // MeshPhysicalMaterial's switches: its class is not exported and no source sets one of its
+    // properties on another material (WebGLPrograms tests `material.clearcoat > 0` and the like).
+    name: 'physical-only material features',
+    unused: (exports, sources) =>
+      !exports.has('MeshPhysicalMaterial') &&
+      !/\b(clearcoat|sheen|iridescence|transmission|thickness|anisotropy|dispersion|retroreflectivity|diffuseRoughness|specularIntensity|specularColor|attenuation)\w*\s*[:=]/.test(
+        sources,
+      ),
+    macros: [
+      'PHYSICAL',
+      ...['CLEARCOAT', 'CLEARCOATMAP', 'CLEARCOAT_NORMALMAP', 'CLEARCOAT_ROUGHNESSMAP', 'SHEEN', 'SHEEN_COLORMAP'].map(
+        (m) => `USE_${m}`,
+      ),
+      ...['SHEEN_ROUGHNESSMAP', 'IRIDESCENCE', 'IRIDESCENCEMAP', 'IRIDESCENCE_THICKNESSMAP', 'TRANSMISSION'].map(
+        (m) => `USE_${m}`,
+      ),
+      ...['TRANSMISSIONMAP', 'THICKNESSMAP', 'ANISOTROPY', 'ANISOTROPYMAP', 'DISPERSION', 'DIFFUSE_ROUGHNESS'].map(
+        (m) => `USE_${m}`,
+      ),
+      ...['DIFFUSE_ROUGHNESSMAP', 'RETROREFLECTION', 'SPECULAR_COLORMAP', 'SPECULAR_INTENSITYMAP'].map(
+        (m) => `USE_${m}`,
+      ),
+    ],
+  },
+  {
+    // Tangents need a normal map or anisotropy (both dead when textures and physical features are).
+    name: 'tangents',
+    unused: (exports, sources) =>
+      (FEATURES[0] as Feature).unused(exports, sources) && (FEATURES[1] as Feature).unused(exports, sources),
+    macros: ['USE_TANGENT'],
+  },
+  {
+    name: 'shadow maps',
+    unused: (_exports, sources) => !/\b(shadowMap|castShadow|receiveShadow)\b/.test(sources),
+    macros: [
+      'USE_SHADOWMAP',
+      'SHADOWMAP_TYPE_PCF',
+      'SHADOWMAP_TYPE_PCF_SOFT',
+      'SHADOWMAP_TYPE_VSM',
+      'SHADOWMAP_TYPE_BASIC',
+    ],
+    modules: ['renderers/webgl/WebGLShadowMap.js'],
+  },
+  {
+    name: 'WebXR',
+    unused: (_exports, sources) => !/\.xr\b|\bXRSession\b|\bWebXR/.test(sources),
+    macros: [],
+    modules: ['renderers/webxr/WebXRManager.js'],
+  },
+  {
+    name: 'morph targets',
+    unused: (_exports, sources) => !/\bmorph(Attributes|TargetInfluences|TargetDictionary|Targets)\b/.test(sources),
+    macros: ['USE_MORPHTARGETS', 'USE_MORPHNORMALS', 'USE_MORPHCOLORS', 'USE_INSTANCING_MORPH'],
+    modules: ['renderers/webgl/WebGLMorphtargets.js'],
+  },
+  {
+    name: 'skinning, instancing and batching',
+    unused: (exports) => exportsNone(exports, /^(SkinnedMesh|Skeleton|Bone|InstancedMesh|BatchedMesh)$/),
+    macros: ['USE_SKINNING', 'USE_INSTANCING', 'USE_INSTANCING_COLOR', 'USE_BATCHING', 'USE_BATCHING_COLOR'],
+  },
+  {
+    name: 'fog',
+    unused: (exports, sources) => exportsNone(exports, /^Fog/) && !/\.fog\s*=/.test(sources),
+    macros: ['USE_FOG', 'FOG_EXP2'],
+  },
+  {
+    name: 'logarithmic and reversed depth buffers',
+    unused: (_exports, sources) => !/\b(logarithmicDepthBuffer|reversedDepthBuffer)\b/.test(sources),
+    macros: ['USE_LOGARITHMIC_DEPTH_BUFFER', 'USE_REVERSED_DEPTH_BUFFER'],
+  },
+  {
+    name: 'light probes',
+    unused: (exports) => exportsNone(exports, /LightProbe/),
+    macros: ['USE_LIGHT_PROBES'],
+  },
+];
+
+/** A stand-in module's code: a class or factory whose reached methods throw, naming `what`. */
+const unreachable = (what: string) => `throw new Error("three.js trimmed: ${what} is not in this build")`;
+
+/** The stand-ins, by module path under three/src/ (the API WebGLRenderer and WebGLBackground call). */
+const STAND_INS: Readonly<Record<string, string>> = {
+  'renderers/webxr/WebXRManager.js': `export class WebXRManager {
+  constructor() { this.enabled = false; this.isPresenting = false; this.cameraAutoUpdate = true; }
+  addEventListener() {} removeEventListener() {} setAnimationLoop() {} dispose() {}
+  getEnvironmentBlendMode() { return undefined; } hasDepthSensing() { return false; }
+  getDepthSensingMesh() { return null; }
+  updateCamera() { ${unreachable('WebXR')} } getCamera() { ${unreachable('WebXR')} }
+}`,
+  'renderers/webgl/WebGLShadowMap.js': `import { PCFShadowMap } from '../../constants.js';
+export function WebGLShadowMap() {
+  this.enabled = false; this.autoUpdate = true; this.needsUpdate = false; this.type = PCFShadowMap;
+  this.render = function () { if (this.enabled) ${unreachable('the shadow map')}; };
+}`,
+  'renderers/webgl/WebGLEnvironments.js': `export function WebGLEnvironments() {
+  return { get(texture) { if (texture === null || texture === undefined) return null; ${unreachable('an environment map')}; }, dispose() {} };
+}`,
+  'renderers/webgl/WebGLMorphtargets.js': `export function WebGLMorphtargets() {
+  return { update() { ${unreachable('morph targets')}; } };
+}`,
+};
+
+/** Materials' shader ids (WebGLPrograms.js `shaderIDs`: material type -> ShaderLib entry). */
+export function shaderIds(webGLPrograms: string): Map<string, string> {
+  const table = /const shaderIDs = \{([^}]*)\}/.exec(webGLPrograms)?.[1];
+  if (table === undefined) throw new Error('threeTrim: no shaderIDs table in WebGLPrograms.js');
+  return new Map([...table.matchAll(/(\w+): '(\w+)'/g)].map((m) => [m[1] as string, m[2] as string]));
+}
+
+/** Each ShaderLib entry's shader chunk names (ShaderLib.js `name: { ... vertexShader: ShaderChunk.x ... }`). */
+export function shaderLibChunks(shaderLib: string): Map<string, string[]> {
+  const out = new Map<string, string[]>();
+  const blocks = shaderLib.split(/\n\t(\w+): \{\n|\nShaderLib\.(\w+) = \{\n/);
+  for (let i = 1; i < blocks.length; i += 3) {
+    const name = (blocks[i] ?? blocks[i + 1]) as string;
+    const body = blocks[i + 2] as string;
+    out.set(
+      name,
+      [...body.matchAll(/ShaderChunk\.(\w+)/g)].map((m) => m[1] as string),
+    );
+  }
+  return out;
+}
+
+/** The ShaderChunk entries: name -> [module file under shaders/, export ('default', 'vertex', 'fragment')]. */
+export function shaderChunkEntries(shaderChunk: string): Map<string, [string, string]> {
+  const modules = new Map<string, string>();
+  for (const m of shaderChunk.matchAll(/^import (?:\* as )?(\w+) from '\.\/([\w/]+\.glsl\.js)';$/gm))
+    modules.set(m[1] as string, m[2] as string);
+  const out = new Map<string, [string, string]>();
+  for (const m of shaderChunk.matchAll(/^\t(\w+): (\w+)(?:\.(vertex|fragment))?,?$/gm)) {
+    const file = modules.get(m[2] as string);
+    if (file === undefined) throw new Error(`threeTrim: ShaderChunk.${m[1]} has no import`);
+    out.set(m[1] as string, [file, m[3] ?? 'default']);
+  }
+  return out;
+}
+
+/** The chunks reached from `roots` through `#include <name>` (in the given, already trimmed, texts). */
+export function includeClosure(roots: Iterable<string>, chunks: ReadonlyMap<string, string>): Set<string> {
+  const reached = new Set<string>();
+  const visit = (name: string) => {
+    if (reached.has(name)) return;
+    const glsl = chunks.get(name);
+    if (glsl === undefined) throw new Error(`threeTrim: #include <${name}> names no chunk`);
+    reached.add(name);
+    for (const m of glsl.matchAll(/^[ \t]*#include +<(\w+)>/gm)) visit(m[1] as string);
+  };
+  for (const r of roots) visit(r);
+  return reached;
+}
+
+/** ShaderChunk.js with only the `keep` entries and their imports. */
+export function trimShaderChunk(source: string, keep: ReadonlySet<string>): string {
+  const entries = shaderChunkEntries(source);
+  const usedModules = new Set([...keep].map((name) => entries.get(name)?.[0]));
+  return source
+    .split('\n')
+    .filter((line) => {
+      const entry = /^\t(\w+): \w+(?:\.\w+)?,?$/.exec(line);
+      if (entry !== null) return keep.has(entry[1] as string);
+      const imported = /^import (?:\* as )?\w+ from '\.\/([\w/]+\.glsl\.js)';$/.exec(line);
+      return imported === null || usedModules.has(imported[1] as string);
+    })
+    .join('\n');
+}
+
+/** The page's TypeScript sources (not the build tools and benchmarks), concatenated. */
+export function pageSources(src: string): string {
+  const texts: string[] = [];
+  const walk = (dir: string) => {
+    for (const name of readdirSync(dir)) {
+      const path = join(dir, name);
+      if (statSync(path).isDirectory()) {
+        if (!/^(build|bench|cli)$/.test(name) || dir !== src) walk(path);
+      } else if (path.endsWith('.ts')) texts.push(readFileSync(path, 'utf8'));
+    }
+  };
+  walk(src);
+  return texts.join('\n');
+}
+
+export interface TrimPlan {
+  /** Features proven unused (their switches dead, their modules replaced). */
+  readonly removed: readonly string[];
+  /** Features the sources may use: kept whole. */
+  readonly kept: readonly string[];
+  readonly dead: ReadonlySet<string>;
+  readonly standIns: ReadonlyMap<string, string>;
+  /** The ShaderChunk entries kept. */
+  readonly chunks: ReadonlySet<string>;
+}
+
+/**
+ * What to remove, from three's sources (`three`: its src/ folder), the exported class names of
+ * threeParts.ts (`parts`: its text) and the page's sources (`sources`).
+ */
+export function trimPlan(three: string, parts: string, sources: string): TrimPlan {
+  const exported = new Set(
+    [...parts.matchAll(/export \{ (\w+) \} from 'three\/src\/[\w/]+\.js';/g)].map((m) => m[1] as string),
+  );
+  if (exported.size === 0) throw new Error('threeTrim: threeParts.ts exports nothing from three/src');
+  const removed = FEATURES.filter((f) => f.unused(exported, sources));
+  const dead = new Set(removed.flatMap((f) => f.macros));
+  const read = (path: string) => readFileSync(join(three, path), 'utf8');
+  const entries = shaderChunkEntries(read('renderers/shaders/ShaderChunk.js'));
+  const texts = new Map<string, string>();
+  const fileTemplates = new Map<string, Record<string, string>>();
+  for (const [name, [file, exportName]] of entries) {
+    let templates = fileTemplates.get(file);
+    if (templates === undefined) {
+      const found = glslTemplates(read(`renderers/shaders/${file}`));
+      templates =
+        found.length === 1 ? { default: found[0] as string } : { vertex: found[0] ?? '', fragment: found[1] ?? '' };
+      fileTemplates.set(file, templates);
+    }
+    texts.set(name, dropDeadBlocks(compactGlsl(stripGlslComments(templates[exportName] ?? '')), dead));
+  }
+  // A dead switch must never be defined by a shader itself (only by the renderer's prefixes).
+  for (const [name, glsl] of texts)
+    for (const m of glsl.matchAll(/^\s*#\s*define\s+(\w+)/gm))
+      if (dead.has(m[1] as string)) throw new Error(`threeTrim: ShaderChunk.${name} defines ${m[1]}`);
+  const ids = shaderIds(read('renderers/webgl/WebGLPrograms.js'));
+  const lib = shaderLibChunks(read('renderers/shaders/ShaderLib.js'));
+  const roots = new Set<string>();
+  for (const material of exported) {
+    const id = ids.get(material);
+    if (id !== undefined) for (const chunk of lib.get(id) ?? []) roots.add(chunk);
+  }
+  // The renderer's own chunks (WebGLProgram.js: ShaderChunk[ 'name' ]).
+  for (const m of read('renderers/webgl/WebGLProgram.js').matchAll(/ShaderChunk\[ '(\w+)' \]/g))
+    roots.add(m[1] as string);
+  const standIns = new Map(removed.flatMap((f) => (f.modules ?? []).map((m) => [m, STAND_INS[m] as string])));
+  return {
+    removed: removed.map((f) => f.name),
+    kept: FEATURES.filter((f) => !removed.includes(f)).map((f) => f.name),
+    dead,
+    standIns,
+    chunks: includeClosure(roots, texts),
+  };
+}
+
+const THREE_SRC = /\/node_modules\/three\/src\/(.+)$/;
+
+/**
+ * Vite plugin applying {@link trimPlan} in the build: `three` is three's src/ folder, `parts` the
+ * path of threeParts.ts, `src` the page's source folder. Runs after the shader whitespace plugin.
+ */
+export function threeTrimPlugin(options: { three: string; parts: string; src: string }): Plugin {
+  let plan: TrimPlan | null = null;
+  return {
+    name: 'three-trim',
+    apply: 'build',
+    buildStart() {
+      const sources = pageSources(options.src);
+      // Only threeParts.ts may import three's modules (so its exports are every class the page has).
+      if (/(from|import\()\s*['"]three\//.test(sources.replace(readFileSync(options.parts, 'utf8'), '')))
+        throw new Error('threeTrim: a page source imports three/... directly; import it through threeParts.ts');
+      plan = trimPlan(options.three, readFileSync(options.parts, 'utf8'), sources);
+      if (plan.kept.length > 0) this.info(`three.js kept whole (the sources may use them): ${plan.kept.join('; ')}`);
+    },
+    load(id) {
+      const path = THREE_SRC.exec(id)?.[1];
+      return path === undefined ? null : (plan?.standIns.get(path) ?? null);
+    },
+    transform(code, id) {
+      const path = THREE_SRC.exec(id)?.[1];
+      if (path === undefined || plan === null) return null;
+      if (path === 'renderers/shaders/ShaderChunk.js') return { code: trimShaderChunk(code, plan.chunks), map: null };
+      if (/^renderers\/shaders\/.*\.glsl\.js$/.test(path)) {
+        const dead = plan.dead;
+        return {
+          code: code.replace(/`([^`]*)`/g, (_, glsl: string) => `\`${dropDeadBlocks(glsl, dead)}\``),
+          map: null,
+        };
+      }
+      return null;
+    },
+  };
+}
