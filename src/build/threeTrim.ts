@@ -10,6 +10,7 @@
  *  - Shaders: only the chunks that the materials threeParts.ts exports (through WebGLPrograms'
  *    table of shader ids and ShaderLib) and the renderer itself include, transitively; and in
  *    them, the blocks that only a dead switch opens (src/build/glslDeadBlocks.ts).
+ *  - WebGLBackground without its texture backgrounds (a colour or none is drawn as before).
  *  - Modules replaced by small stand-ins: WebXRManager (never enabled), WebGLShadowMap (never
  *    enabled: nothing casts a shadow), WebGLEnvironments (no texture exists, so no environment map
  *    and no PMREM), WebGLMorphtargets (no geometry has morph attributes). A stand-in reached after
@@ -32,6 +33,8 @@ interface Feature {
   unused(exports: ReadonlySet<string>, sources: string): boolean;
   readonly macros: readonly string[];
   readonly modules?: readonly string[];
+  /** three's modules of which a part only it reaches is cut ({@link REWRITES}). */
+  readonly rewrites?: readonly string[];
 }
 
 const exportsNone = (exports: ReadonlySet<string>, pattern: RegExp) => ![...exports].some((e) => pattern.test(e));
@@ -68,6 +71,7 @@ export const FEATURES: readonly Feature[] = [
       'DECODE_VIDEO_TEXTURE_EMISSIVE',
     ],
     modules: ['renderers/webgl/WebGLEnvironments.js'],
+    rewrites: ['renderers/webgl/WebGLBackground.js'],
   },
   {
     // MeshPhysicalMaterial's switches: its class is not exported and no source sets one of its
@@ -172,6 +176,32 @@ export function WebGLShadowMap() {
 }`,
 };
 
+/**
+ * `code` with the text from `from` up to (not including) `to` replaced by `by`; throws when either
+ * marker is missing (a three.js upgrade that moved the code fails the build instead of shipping it).
+ */
+function cut(code: string, from: string, to: string, by: string, file: string): string {
+  const start = code.indexOf(from);
+  const end = code.indexOf(to, start);
+  if (start < 0 || end < 0) throw new Error(`threeTrim: ${file} no longer has ${JSON.stringify(from)}`);
+  return code.slice(0, start) + by + code.slice(end);
+}
+
+/**
+ * Parts of modules cut, by module path under three/src/: WebGLBackground's texture backgrounds
+ * (the cube and plane meshes with their shaders; a colour or no background is unchanged).
+ */
+const REWRITES: Readonly<Record<string, (code: string) => string>> = {
+  'renderers/webgl/WebGLBackground.js': (code) =>
+    cut(
+      code,
+      '\tfunction addToRenderList( renderList, scene ) {',
+      '\tfunction setClear( color, alpha ) {',
+      `\tfunction addToRenderList( renderList, scene ) {\n\t\tconst background = getBackground( scene );\n\t\tif ( background && background.isTexture ) ${unreachable('a texture background')};\n\t}\n\n`,
+      'WebGLBackground.js',
+    ),
+};
+
 /** Materials' shader ids (WebGLPrograms.js `shaderIDs`: material type -> ShaderLib entry). */
 export function shaderIds(webGLPrograms: string): Map<string, string> {
   const table = /const shaderIDs = \{([^}]*)\}/.exec(webGLPrograms)?.[1];
@@ -259,6 +289,8 @@ export interface TrimPlan {
   readonly kept: readonly string[];
   readonly dead: ReadonlySet<string>;
   readonly standIns: ReadonlyMap<string, string>;
+  /** Modules of which a part is cut. */
+  readonly rewrites: ReadonlySet<string>;
   /** The ShaderChunk entries kept. */
   readonly chunks: ReadonlySet<string>;
 }
@@ -308,11 +340,21 @@ export function trimPlan(three: string, parts: string, sources: string): TrimPla
     kept: FEATURES.filter((f) => !removed.includes(f)).map((f) => f.name),
     dead,
     standIns,
+    rewrites: new Set(removed.flatMap((f) => f.rewrites ?? [])),
     chunks: includeClosure(roots, texts),
   };
 }
 
 const THREE_SRC = /\/node_modules\/three\/src\/(.+)$/;
+
+/** A three.js module's code (`path` under three/src/) as the plan trims it; null when unchanged. */
+export function trimModule(path: string, code: string, plan: TrimPlan): string | null {
+  if (plan.rewrites.has(path)) return (REWRITES[path] as (code: string) => string)(code);
+  if (path === 'renderers/shaders/ShaderChunk.js') return trimShaderChunk(code, plan.chunks);
+  if (/^renderers\/shaders\/.*\.glsl\.js$/.test(path))
+    return code.replace(/`([^`]*)`/g, (_, glsl: string) => `\`${dropDeadBlocks(glsl, plan.dead)}\``);
+  return null;
+}
 
 /**
  * Vite plugin applying {@link trimPlan} in the build: `three` is three's src/ folder, `parts` the
@@ -338,15 +380,8 @@ export function threeTrimPlugin(options: { three: string; parts: string; src: st
     transform(code, id) {
       const path = THREE_SRC.exec(id)?.[1];
       if (path === undefined || plan === null) return null;
-      if (path === 'renderers/shaders/ShaderChunk.js') return { code: trimShaderChunk(code, plan.chunks), map: null };
-      if (/^renderers\/shaders\/.*\.glsl\.js$/.test(path)) {
-        const dead = plan.dead;
-        return {
-          code: code.replace(/`([^`]*)`/g, (_, glsl: string) => `\`${dropDeadBlocks(glsl, dead)}\``),
-          map: null,
-        };
-      }
-      return null;
+      const trimmed = trimModule(path, code, plan);
+      return trimmed === null ? null : { code: trimmed, map: null };
     },
   };
 }

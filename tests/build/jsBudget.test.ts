@@ -4,7 +4,7 @@
  * the build emits, each gzip -9, summed; and the first result's, the page's scripts and the solver
  * worker's with what they import statically. Issue 27 point 2 asks at most 60 kB to the first
  * result (met) and at most 200 kB in all: not met yet (three.js, trimmed by src/build/threeTrim.ts,
- * is still 101 kB; the page's and the core's own code about 120 kB), so the total is held where it
+ * is still 100 kB; the page's and the core's own code about 120 kB), so the total is held where it
  * stands, a ratchet to lower as it shrinks. kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -31,7 +31,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 226 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(226);
+  it('all of it, every .js file, is at most 225 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(225);
   });
 });

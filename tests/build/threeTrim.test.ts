@@ -9,7 +9,7 @@ import { fileURLToPath } from 'node:url';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { dropDeadBlocks, knownCondition } from '../../src/build/glslDeadBlocks';
-import { pageSources, trimPlan } from '../../src/build/threeTrim';
+import { pageSources, trimModule, trimPlan } from '../../src/build/threeTrim';
 
 const DEAD = new Set(['D1', 'D2']);
 const LIVE = ['L1', 'L2'] as const;
@@ -172,5 +172,17 @@ describe('threeTrim: what the page cannot reach', () => {
     expect(trimPlan(three, phong, sources).chunks.has('meshphong_frag')).toBe(true);
     const textured = `${parts}\nexport { CanvasTexture } from 'three/src/textures/CanvasTexture.js';`;
     expect(trimPlan(three, textured, sources).dead.has('USE_MAP')).toBe(false);
+  });
+
+  it("cuts WebGLBackground's texture backgrounds and keeps its colour clear; keeps it whole when a texture can exist", () => {
+    const path = 'renderers/webgl/WebGLBackground.js';
+    const original = readFileSync(`${three}${path}`, 'utf8');
+    const cut = trimModule(path, original, trimPlan(three, parts, sources)) as string;
+    expect(original).toContain('new BoxGeometry(');
+    expect(cut).not.toMatch(/new BoxGeometry\(|new PlaneGeometry\(|ShaderLib\.background/);
+    expect(cut).toContain('function setClear( color, alpha )');
+    expect(cut).toContain('a texture background is not in this build');
+    const textured = `${parts}\nexport { CanvasTexture } from 'three/src/textures/CanvasTexture.js';`;
+    expect(trimModule(path, original, trimPlan(three, textured, sources))).toBeNull();
   });
 });
