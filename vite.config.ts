@@ -1,58 +1,39 @@
 import { availableParallelism } from 'node:os';
 import { fileURLToPath } from 'node:url';
-import { VitePWA } from 'vite-plugin-pwa';
 import { defineConfig } from 'vitest/config';
 import { embedAttributesPlugin } from './src/build/embedAttributes.ts';
 import { formulaMathmlPlugin } from './src/build/formulaMathml.ts';
+import { serviceWorkerPlugin } from './src/build/serviceWorker.ts';
 import { shaderWhitespacePlugin } from './src/build/shaderWhitespace.ts';
 import { sharedWorkerPlugin } from './src/build/sharedWorker.ts';
 import { staticClosure } from './src/build/staticGraph.ts';
+import { threeTrimPlugin } from './src/build/threeTrim.ts';
 
 /**
- * The installable web app: a Workbox service worker (vite-plugin-pwa, generateSW) precaches the
- * whole site, so after the first visit the calculator works offline. `autoUpdate`: a deployed new
- * version is fetched in the background and takes over on the next load (nothing to click).
- * Registered by a separate file (registerSW.js), not an inline script, so the strict CSP holds.
+ * The installable web app: a small service worker (src/build/serviceWorker.ts, generated into sw.js
+ * with the site's files and their revisions) precaches the whole site, so after the first visit the
+ * calculator works offline; a deployed new version is fetched in the background and takes over on
+ * the next load (nothing to click). src/main.ts registers it (not inside a cross-origin frame).
  * The instrumented e2e build leaves it out (tests there intercept worker scripts, which a service
  * worker would answer first); the offline test runs against the production build.
  */
-function pwa(mode: string) {
-  return VitePWA({
-    disable: mode === 'e2e',
-    // Workbox's minified runtime whatever NODE_ENV says (Vitest sets it to `test`, which would make
-    // the tests' build ship the 129 kB development runtime instead of the 15 kB one).
-    mode: 'production',
-    registerType: 'autoUpdate',
-    injectRegister: 'script',
-    includeAssets: ['embed.js', 'icon-192.png', 'icon-512.png', 'icon-maskable-512.png'],
-    manifest: {
-      name: 'Step-over of a filleted end mill',
-      short_name: 'Step-over',
-      description:
-        'Exact path interval (step-over) of an inclined filleted (bull-nose) end mill for a chosen scallop height, beside the published approximations.',
-      start_url: './',
-      scope: './',
-      display: 'standalone',
-      theme_color: '#1d4ed8',
-      background_color: '#ffffff',
-      icons: [
-        { src: 'icon-192.png', sizes: '192x192', type: 'image/png' },
-        { src: 'icon-512.png', sizes: '512x512', type: 'image/png' },
-        { src: 'icon-maskable-512.png', sizes: '512x512', type: 'image/png', purpose: 'maskable' },
-      ],
-    },
-    workbox: {
-      globPatterns: ['**/*.{js,css,html,png,svg,webmanifest}'],
-      // Every address of the page (its state is in the query) opens the cached page offline.
-      navigateFallback: 'index.html',
-      cleanupOutdatedCaches: true,
-      // A new version takes over at once, and the first visit's page is controlled (offline at once).
-      skipWaiting: true,
-      clientsClaim: true,
-      maximumFileSizeToCacheInBytes: 4 * 1024 * 1024,
-    },
-  });
-}
+const WEB_APP_MANIFEST = {
+  name: 'Step-over of a filleted end mill',
+  short_name: 'Step-over',
+  description:
+    'Exact path interval (step-over) of an inclined filleted (bull-nose) end mill for a chosen scallop height, beside the published approximations.',
+  start_url: './',
+  scope: './',
+  display: 'standalone',
+  theme_color: '#1d4ed8',
+  background_color: '#ffffff',
+  lang: 'en',
+  icons: [
+    { src: 'icon-192.png', sizes: '192x192', type: 'image/png' },
+    { src: 'icon-512.png', sizes: '512x512', type: 'image/png' },
+    { src: 'icon-maskable-512.png', sizes: '512x512', type: 'image/png', purpose: 'maskable' },
+  ],
+};
 
 /**
  * The first result loads the page's entry and the solver worker, each with what it imports
@@ -157,18 +138,28 @@ export default defineConfig(({ mode, command }) =>
         base: './',
         resolve: command === 'build' ? { alias: THREE_FROM_SOURCES } : {},
         // The formulas view's MathML is typeset here, at build time, so no TeX engine is shipped.
-        // three.js's shaders ship without comments and indentation (src/build/shaderWhitespace.ts).
+        // three.js's shaders ship without comments and indentation (src/build/shaderWhitespace.ts), and
+        // three.js without what the page cannot reach (src/build/threeTrim.ts: shaders of unused
+        // materials and features, WebXR, shadow maps, environment maps, morph targets).
         // public/embed.js's attributes must be the field registry's (src/build/embedAttributes.ts).
         plugins: [
           formulaMathmlPlugin(),
           sharedWorkerPlugin(),
           embedAttributesPlugin(),
           shaderWhitespacePlugin(),
-          pwa(mode),
+          threeTrimPlugin({
+            three: fileURLToPath(new URL('./node_modules/three/src/', import.meta.url)),
+            parts: THREE_FROM_SOURCES[0]?.replacement ?? '',
+            src: SRC,
+          }),
+          serviceWorkerPlugin({ manifest: WEB_APP_MANIFEST, disable: mode === 'e2e' }),
         ],
-        // three.js alone is about 560 kB raw (130 kB gzip) in its chunk; the benchmark tracks the gzip
+        // three.js is about 390 kB raw (101 kB gzip) in its chunk; the benchmark tracks the gzip
         // size against its 200 kB budget, so Rollup's generic 500 kB warning is raised.
         build: {
+          // Vite 8's default minifier (Oxc) is kept: on this site it ships the fewest gzip bytes of those
+          // tried (terser with 2 passes +0.7 kB and 48 s, with 3 passes and unsafe options +0.2 kB and
+          // 92 s; esbuild +6.7 kB; Oxc with more iterations or a later target: no change), in 4 s.
           chunkSizeWarningLimit: 700,
           // Every browser the page supports has module preload; the polyfill would only add bytes.
           // The solver worker's dynamic imports preload nothing: a worker has no document to add

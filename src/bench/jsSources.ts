@@ -5,14 +5,17 @@
  * times that source's text gzipped alone over the sum of all its sources' texts gzipped alone (gzip
  * is not additive; the estimate ranks, the chunk totals are exact). "(unmapped)" is text the map
  * names no source for: three.js's shader strings, Rolldown's helpers and cross-chunk imports.
+ * Every .js file the build emits is listed (as bench:web counts them, src/bench/chunks.ts): a file
+ * with no source map (the service worker, embed.js, a helper chunk Vite writes without one) counts
+ * whole as "(no source map)".
  *
  *   npm run bench:js-sources            top 12 sources per chunk
  *   npm run bench:js-sources -- --top 40
  */
-import { readdirSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { gzipSync } from 'node:zlib';
 import { build } from 'vite';
+import { siteFiles } from './siteFiles';
 
 const BASE64 = 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/';
 
@@ -69,6 +72,17 @@ export function textBySource(code: string, map: { mappings: string; sources: str
   return out;
 }
 
+/** Source map v3, the fields read here. */
+interface SourceMap {
+  mappings: string;
+  sources: string[];
+}
+
+/** A chunk's text by source file ({@link textBySource}); all of it "(no source map)" when it has no map. */
+export function chunkSources(code: string, map: SourceMap | null): Map<string, string> {
+  return map === null ? new Map([['(no source map)', code]]) : textBySource(code, map);
+}
+
 const gzip = (text: string | Buffer) => gzipSync(text, { level: 9 }).length;
 const kB = (bytes: number) => (bytes / 1024).toFixed(1);
 
@@ -78,18 +92,19 @@ if (process.argv[1] === fileURLToPath(import.meta.url)) {
   const root = fileURLToPath(new URL('../..', import.meta.url));
   const outDir = `${root}test-results/js-sources`;
   await build({ root, logLevel: 'warn', build: { outDir, emptyOutDir: true, sourcemap: true } });
-  const assets = `${outDir}/assets`;
+  const files = siteFiles(outDir);
+  const text = (path: string) => new TextDecoder().decode(files.get(path));
   let total = 0;
-  for (const name of readdirSync(assets).filter((n) => n.endsWith('.js'))) {
+  for (const name of [...files.keys()].filter((p) => p.endsWith('.js')).sort()) {
     // Without the map's comment, so that the sizes are those of the production build (no maps).
-    const code = readFileSync(`${assets}/${name}`, 'utf8').replace(/\n\/\/# sourceMappingURL=\S+\s*$/, '\n');
+    const code = text(name).replace(/\n\/\/# sourceMappingURL=\S+\s*$/, '\n');
     const chunkGzip = gzip(code);
     total += chunkGzip;
-    const map = JSON.parse(readFileSync(`${assets}/${name}.map`, 'utf8')) as { mappings: string; sources: string[] };
-    const parts = [...textBySource(code, map)].map(([source, text]) => ({
+    const map = files.has(`${name}.map`) ? (JSON.parse(text(`${name}.map`)) as SourceMap) : null;
+    const parts = [...chunkSources(code, map)].map(([source, part]) => ({
       source: source.replace(/^(\.\.\/)+/, '').replace(root.replace(/^\//, ''), ''),
-      raw: text.length,
-      alone: gzip(text),
+      raw: part.length,
+      alone: gzip(part),
     }));
     const aloneSum = parts.reduce((sum, p) => sum + p.alone, 0);
     console.log(`\n${name}: ${kB(chunkGzip)} kB gzip, ${kB(code.length)} kB raw`);
@@ -98,5 +113,5 @@ if (process.argv[1] === fileURLToPath(import.meta.url)) {
         `  ~${kB((chunkGzip * p.alone) / aloneSum).padStart(6)} kB gzip ${kB(p.raw).padStart(7)} kB raw  ${p.source}`,
       );
   }
-  console.log(`\nall chunks: ${kB(total)} kB gzip`);
+  console.log(`\nevery .js file: ${kB(total)} kB gzip`);
 }

@@ -31,6 +31,11 @@ export function compactGlsl(glsl: string): string {
 const THREE_SHADER_FILE = /\/node_modules\/three\/src\/renderers\/shaders\/.*\.glsl\.js$/;
 const GLSL_TEMPLATE = /\/\* glsl \*\/`([^`]*)`/g;
 
+/** The GLSL of each `/* glsl *\/` template of a three.js shader source file, as written (with comments). */
+export function glslTemplates(source: string): string[] {
+  return [...source.matchAll(GLSL_TEMPLATE)].map((m) => m[1] as string);
+}
+
 /** `glsl` without its comments (GLSL has no strings, so `//` and `/*` always open one). */
 export function stripGlslComments(glsl: string): string {
   return glsl.replace(/\/\*[\s\S]*?\*\//g, ' ').replace(/\/\/[^\n]*/g, '');

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { decodeMappings, textBySource } from '../../src/bench/jsSources';
+import { chunkSources, decodeMappings, textBySource } from '../../src/bench/jsSources';
 
 // Segments worked out by hand from the Base64 VLQ of the Source Map v3 spec: A = 0, C = +1,
 // D = -1, E = +2, gB = 32 + 1 * 32 = +16 (continuation bit 32, sign in the lowest bit).
@@ -19,5 +19,11 @@ describe('bench:js-sources attribution', () => {
   it("gives each segment's text, up to the next segment, to its source; text before any to (unmapped)", () => {
     const parts = textBySource('0123456789abcdefXYZ\nab cd', { mappings: MAPPINGS, sources: ['a.ts', 'b.ts'] });
     expect(Object.fromEntries(parts)).toEqual({ 'a.ts': '0123456789abcdef cd\n', 'b.ts': 'XYZ\n', '(unmapped)': 'ab' });
+  });
+
+  it('counts a chunk without a source map whole, as "(no source map)" (it crashed on one)', () => {
+    expect(Object.fromEntries(chunkSources('self.a=1;\nb()', null))).toEqual({ '(no source map)': 'self.a=1;\nb()' });
+    const mapped = chunkSources('0123456789abcdefXYZ\nab cd', { mappings: MAPPINGS, sources: ['a.ts', 'b.ts'] });
+    expect(mapped.get('b.ts')).toBe('XYZ\n');
   });
 });

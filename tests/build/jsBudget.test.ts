@@ -3,8 +3,9 @@
  * set-up), counted as `npm run bench:web` counts it (src/bench/chunks.ts jsSizes): every .js file
  * the build emits, each gzip -9, summed; and the first result's, the page's scripts and the solver
  * worker's with what they import statically. Issue 27 point 2 asks at most 60 kB to the first
- * result (met) and at most 200 kB in all: not met yet (three.js alone is 126 kB), so the total is
- * held where it stands, a ratchet to lower as it shrinks.
+ * result (met) and at most 200 kB in all: not met yet (three.js, trimmed by src/build/threeTrim.ts,
+ * is still 100 kB; the page's and the core's own code about 120 kB), so the total is held where it
+ * stands, a ratchet to lower as it shrinks. kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -24,7 +25,13 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(60);
   });
 
-  it('all of it, every .js file, is at most 260 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(260);
+  it('counts every .js file the build emits: the chunks, the service worker and embed.js', () => {
+    const emitted = [...siteFiles(DIST).keys()].filter((p) => p.endsWith('.js'));
+    expect(emitted).toEqual(expect.arrayContaining(['sw.js', 'embed.js']));
+    expect(sizes.files).toBe(emitted.length);
+  });
+
+  it('all of it, every .js file, is at most 225 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(225);
   });
 });
