@@ -5,7 +5,7 @@
  * manifest (manifest.webmanifest) is emitted and index.html links it. The page registers sw.js
  * itself (src/main.ts), never inside a cross-origin frame.
  *
- * What the worker does (as Workbox's generateSW did, with skipWaiting, clientsClaim,
+ * What the worker does (as Workbox's generateSW with skipWaiting, clientsClaim,
  * cleanupOutdatedCaches and navigateFallback index.html did):
  *  - install: fetches every listed file past the HTTP cache into a cache named after the list's
  *    revisions, and takes over at once (a deployed new version is used on the next load);
