@@ -206,6 +206,7 @@ export class ProfileView implements TeachingView {
     this.fontFamily = style.fontFamily;
     const min = Number.parseFloat(style.getPropertyValue('--svg-text-min-px'));
     const minTextPx = Math.max(MIN_TEXT_PX, Number.isFinite(min) ? min : 0);
+    this.fixedHeight = style.getPropertyValue('--profile-fixed-height').trim() === '1';
     const textChanged = minTextPx !== this.minTextPx;
     this.minTextPx = minTextPx;
     return changed || textChanged;
@@ -213,6 +214,8 @@ export class ProfileView implements TeachingView {
 
   /** The least on-screen height of the plot's texts (px; else they are a 60th of its width). */
   private minTextPx = MIN_TEXT_PX;
+  /** True in a frame of a fixed height: the plot keeps the stylesheet's height (no growth). */
+  private fixedHeight = false;
   /** The plot's font (its labels are measured in it). */
   private fontFamily = 'sans-serif';
 
@@ -345,13 +348,13 @@ export class ProfileView implements TeachingView {
     this.shownK = k;
     this.cuspAt = { x: drawn.cuspX, y: drawn.cuspY, widthMm: Math.abs(ex.right.yMm) };
     // A strong exaggeration: the plot grows (up to its limit) rather than the drawing shrinking to a strip.
-    // The labels take their height in pixels whatever the drawing's scale: the plot may grow by it too.
+    // The labels take their height in pixels whatever the drawing's scale: the plot may grow by it
+    // too; not at all in a frame of a fixed height (an embedded view: profile.css), where the legend
+    // below it would leave the frame.
     const labelsPx = (LABELS_DEPTH + 1.6) * this.textSize({ x: 0, y: 0, w: 0, h: 1 }, 1 / room.widthPx);
-    const grown = grownHeightPx(
-      { ...room, maxHeightPx: room.maxHeightPx + labelsPx },
-      drawn.home,
-      this.plotWidthPx > 0,
-    );
+    const grown = this.fixedHeight
+      ? null
+      : grownHeightPx({ ...room, maxHeightPx: room.maxHeightPx + labelsPx }, drawn.home, this.plotWidthPx > 0);
     if (grown !== this.grownPx) {
       this.grownPx = grown;
       this.plot.style.height = grown === null ? '' : `${grown}px`;
