@@ -9,7 +9,7 @@
  * list changes (at most 12 x 7 cells: milliseconds on a plane, a third of a second at a doubly
  * curved point).
  */
-import { fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
+import { fromMm, type LengthUnit, toMm, unitSymbol } from '../core/input/units';
 import { SHEET_HEIGHTS, SHEET_MARKS, type SheetCase, type ShopSheet, shopSheet } from '../core/output/shopSheet';
 import type { PageRequest } from '../worker/pageProtocol';
 import { formatDeg } from './format';
@@ -20,10 +20,12 @@ import {
   marksUsed,
   NO_SCALLOP_LEGEND,
   NO_SCALLOP_STAR,
+  ownHeightMm,
   parseHeights,
   sheetCaseOf,
   sheetCsv,
   sheetFileName,
+  sheetRows,
   sheetTitleLines,
   stepSymbol,
 } from './shopSheetText';
@@ -61,6 +63,8 @@ const OPEN_CLASS = 'shop-sheet-open';
 export class ShopSheetPanel {
   private case: SheetCase | null = null;
   private unit: LengthUnit = 'mm';
+  /** The scallop height the question on screen gives (mm; a row of the sheet), or null. */
+  private ownMm: number | null = null;
   /** The heights the user listed, in their unit (kept while the unit stays; a new unit starts from its defaults). */
   private heights: { unit: LengthUnit; values: readonly number[] } = { unit: 'mm', values: SHEET_HEIGHTS.mm };
   private sheet: ShopSheet | null = null;
@@ -69,6 +73,8 @@ export class ShopSheetPanel {
   private readonly lines: HTMLDivElement;
   private readonly table: HTMLTableElement;
   private readonly legend: HTMLUListElement;
+  /** The full reason of the mark last tapped or clicked (a touch screen has no hover). */
+  private readonly reason: HTMLParagraphElement;
   private readonly heightsInput: HTMLInputElement;
   private readonly heightsLabel: HTMLLabelElement;
   private readonly heightsError: HTMLParagraphElement;
@@ -91,8 +97,11 @@ export class ShopSheetPanel {
     scroll.setAttribute('aria-label', 'Step-over table');
     this.table = el('table', 'sheet-table', '', 'shop-sheet-table');
     scroll.append(this.table);
+    this.reason = el('p', 'sheet-reason', '', 'shop-sheet-reason');
+    this.reason.setAttribute('role', 'status');
+    this.reason.hidden = true;
     this.legend = el('ul', 'sheet-legend', '', 'shop-sheet-legend');
-    page.append(this.title, this.lines, scroll, this.legend);
+    page.append(this.title, this.lines, scroll, this.reason, this.legend);
 
     const tools = el('div', 'sheet-tools');
     const field = el('div', 'sheet-heights');
@@ -137,6 +146,7 @@ export class ShopSheetPanel {
    */
   want(request: PageRequest | null, unit: LengthUnit): void {
     this.case = request === null ? null : sheetCaseOf(request);
+    this.ownMm = request === null ? null : ownHeightMm(request);
     this.unit = unit;
     this.button.disabled = this.case === null;
     if (this.dialog.open && this.case !== null) this.render();
@@ -179,18 +189,28 @@ export class ShopSheetPanel {
     this.heightsInput.value = heightsText(heights);
     this.heightsInput.removeAttribute('aria-invalid');
     this.heightsError.textContent = '';
-    this.heightsLabel.textContent = `Scallop heights h (${u}), up to ${MAX_SHEET_ROWS}, separated by spaces`;
-    const parsed = parseHeights(heightsText(heights), unit);
-    const sheet = shopSheet(c, parsed.ok ? parsed.mm : [], unit);
+    this.heightsLabel.textContent = `Scallop heights h (${u}), up to ${MAX_SHEET_ROWS}, separated by spaces (your h is added)`;
+    const rows = sheetRows(heights, this.ownMm, unit);
+    const sheet = shopSheet(
+      c,
+      rows.values.map((v) => toMm(v, unit)),
+      unit,
+    );
     this.sheet = sheet;
     this.title.textContent = `Shop sheet: ${stepSymbol(sheet)} (${u})`;
     const date = new Date().toISOString().slice(0, 10);
     this.lines.replaceChildren(...sheetTitleLines(c, sheet, unit, date).map((t) => el('p', 'sheet-line', t)));
-    this.renderTable(sheet, unit);
-    this.renderLegend(sheet);
+    this.renderTable(sheet, unit, rows);
+    this.renderLegend(sheet, rows.own, u);
+    this.reason.hidden = true;
+    this.reason.textContent = '';
   }
 
-  private renderTable(sheet: ShopSheet, unit: LengthUnit): void {
+  private renderTable(
+    sheet: ShopSheet,
+    unit: LengthUnit,
+    rows: { values: readonly number[]; own: number | null },
+  ): void {
     const u = unitSymbol(unit);
     const column = sheet.columnKind === 'lead' ? 'lead' : 'slope';
     const caption = el(
@@ -218,25 +238,46 @@ export class ShopSheetPanel {
     thead.append(head);
     const tbody = el('tbody');
     sheet.scallopHeightsMm.forEach((_, i) => {
-      const tr = el('tr');
-      const th = el('th', '', heightsText([this.heights.values[i] ?? 0]));
+      const value = rows.values[i] ?? 0;
+      const own = value === rows.own;
+      const tr = el('tr', own ? 'own-h' : '', '', own ? 'shop-sheet-own-row' : '');
+      const th = el('th', '', heightsText([value]));
       th.scope = 'row';
+      if (own) th.append(el('span', 'sr-only', ' (your h)'));
       tr.append(th);
-      for (const cell of sheet.cells[i] ?? []) {
-        const td = el('td', cell.ok ? '' : 'refused', cellText(cell, unit));
-        if (!cell.ok) td.title = cell.reason;
+      (sheet.cells[i] ?? []).forEach((cell, j) => {
+        const td = el('td', cell.ok ? '' : 'refused', cell.ok ? cellText(cell, unit) : '');
+        if (!cell.ok) {
+          // Hover shows the title; a tap or a click (a button: keyboard too) writes the reason below the table.
+          td.title = cell.reason;
+          const mark = el('button', 'mark', cellText(cell, unit));
+          mark.type = 'button';
+          const where = `h ${heightsText([value])} ${unitSymbol(unit)}, ${sheet.columnKind} ${formatDeg(sheet.columnsDeg[j] ?? 0)} deg`;
+          mark.setAttribute('aria-label', `${cellText(cell, unit)} at ${where}: show the reason`);
+          mark.addEventListener('click', () => {
+            this.reason.hidden = false;
+            this.reason.textContent = `${cellText(cell, unit)} at ${where}: ${cell.reason}`;
+          });
+          td.append(mark);
+        }
         tr.append(td);
-      }
+      });
       tbody.append(tr);
     });
     this.table.replaceChildren(caption, thead, tbody);
   }
 
-  private renderLegend(sheet: ShopSheet): void {
+  private renderLegend(sheet: ShopSheet, own: number | null, u: string): void {
     const used = marksUsed(sheet);
     const items = used.marks.map((m) => el('li', '', `${SHEET_MARKS[m].letter}: ${SHEET_MARKS[m].legend}.`));
     if (used.noScallop) items.push(el('li', '', `${NO_SCALLOP_STAR} ${NO_SCALLOP_LEGEND}.`));
-    items.push(el('li', '', 'Hover a mark for its full reason; the calculator answers any single case.'));
+    if (own !== null) items.push(el('li', '', `Bold row: your scallop height h = ${heightsText([own])} ${u}.`));
+    // How to read a mark's reason: on screen only, worded for the pointer (shopSheet.css shows one).
+    if (used.marks.length > 0)
+      items.push(
+        el('li', 'hint-hover', 'Hover or click a mark for its full reason; the calculator answers any single case.'),
+        el('li', 'hint-touch', 'Tap a mark for its full reason; the calculator answers any single case.'),
+      );
     this.legend.replaceChildren(...items);
   }
 

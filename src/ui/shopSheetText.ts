@@ -5,7 +5,7 @@
  * The numbers are the core's (core/output/shopSheet.ts); lengths are shown in the user's unit at
  * the page's resolution (format.ts), the CSV keeps full precision.
  */
-import { formatInputNumber, fromMm, type LengthUnit, toMm, unitSymbol } from '../core/input/units';
+import { formatInputNumber, formatSignificant, fromMm, type LengthUnit, toMm, unitSymbol } from '../core/input/units';
 import { csvNumber } from '../core/output/csvWrite';
 import {
   passesOf,
@@ -38,6 +38,30 @@ export function sheetCaseOf(request: PageRequest): SheetCase {
       radii: { feedRadiusMm: request.input.feedRadiusMm, crossRadiusMm: request.input.crossRadiusMm },
     };
   return { kind: 'five-axis', ...tool, surface: request.input.surface };
+}
+
+/**
+ * The scallop height the question on screen gives (mm): the row the sheet adds for it (issue 28
+ * point 10); null when the question gives a step-over or a target Ra instead.
+ */
+export function ownHeightMm(request: PageRequest): number | null {
+  if (request.mode === 'three-axis') return request.input.quantity === 'h' ? request.input.mm : null;
+  if (request.mode === 'forward' || request.mode === 'curved-forward') return request.input.scallopHeightMm;
+  return null;
+}
+
+/**
+ * The sheet's rows: the listed heights (in the user's unit) and the user's own `h` among them,
+ * ascending, each once (compared at 12 significant digits); the own one's value in the unit, or null.
+ */
+export function sheetRows(
+  listed: readonly number[],
+  ownMm: number | null,
+  unit: LengthUnit,
+): { readonly values: number[]; readonly own: number | null } {
+  const own = ownMm === null ? null : Number(fromMm(ownMm, unit).toPrecision(12));
+  const values = [...new Set(own === null ? listed : [...listed, own])].sort((a, b) => a - b);
+  return { values, own };
 }
 
 /** A number in the user's unit as a field shows it (up to 6 significant digits). */
@@ -136,10 +160,24 @@ export function sheetTitleLines(c: SheetCase, sheet: ShopSheet, unit: LengthUnit
 export const NO_SCALLOP_STAR = '*';
 export const NO_SCALLOP_LEGEND = 'no scallop: a flat end lying flat cuts flat at any step-over up to 2R';
 
-/** A cell as the sheet prints it: the step in `unit` at the page's resolution, or its mark's letter. */
+/**
+ * The significant digits of every inch cell: one count for the whole sheet, so that a column reads
+ * alike from 0.0004266 to 0.4449 (at the page's fixed 10 µin resolution a step-down of 0.0004266
+ * sat beside 0.01054 and 0.44489). 4 digits: 1 part in 1000 to 10000, far finer than a CAM step.
+ */
+export const INCH_CELL_DIGITS = 4;
+
+/**
+ * A cell as the sheet prints it, or its mark's letter: in mm the step at the page's resolution
+ * (format.ts, 0.1 µm); in inch to {@link INCH_CELL_DIGITS} significant digits.
+ */
 export function cellText(cell: SheetCell, unit: LengthUnit): string {
   if (!cell.ok) return SHEET_MARKS[cell.mark].letter;
-  return `${formatLen(cell.stepMm, unit)}${cell.noScallop ? NO_SCALLOP_STAR : ''}`;
+  const value =
+    unit === 'in'
+      ? formatSignificant(fromMm(cell.stepMm, unit), { digits: INCH_CELL_DIGITS, exponentBelow: 0 })
+      : formatLen(cell.stepMm, unit);
+  return `${value}${cell.noScallop ? NO_SCALLOP_STAR : ''}`;
 }
 
 /** The marks a sheet uses, in the legend's order (W, G, X), and whether a cell has no scallop. */

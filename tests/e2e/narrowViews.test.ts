@@ -2,7 +2,8 @@
  * The teaching views on a narrow screen (issue 21): the paper's tables keep their condition columns
  * (Table, R, Rcr, rho, h or L/2) readable at 390 x 844 and at 640 wide, and every formula box on a
  * phone either fits or shades the edge with more of it, the shade going once scrolled to the end;
- * axe finds nothing.
+ * axe finds nothing. Saved tools with long names (issue 28 point 5) never widen the page, swept over
+ * every width from 320 to 1920 on one page.
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
@@ -121,5 +122,101 @@ describe('formulas on a phone', () => {
     expect(wide).toBeGreaterThan(0);
     expect(page.viewportSize()).toEqual(PHONE);
     expect(await axeViolations(page)).toEqual([]);
+  }, 120_000);
+});
+
+/** A saved tool's name as a shop writes it (issue 28 point 5), and the longest a name may be, unbroken. */
+const SHOP_NAME = 'Harvey 33531-C3 1/2 3FL corner radius .030 AlTiN';
+const LONGEST_NAME = `HARVEY-33531-C3-${'X'.repeat(80 - 16)}`;
+
+/**
+ * The widths swept: 320 to 1920 every 80 px, the tablet's 820 and the phone's 390, and both sides of
+ * each of the stylesheet's width breakpoints (where the columns change).
+ */
+const SWEPT_WIDTHS = [
+  ...new Set([
+    ...Array.from({ length: 21 }, (_, i) => 320 + 80 * i),
+    390,
+    820,
+    ...[420, 480, 640, 700, 1000].flatMap((w) => [w, w + 1]),
+  ]),
+].sort((a, b) => a - b);
+
+/**
+ * At the page's present width: the page's scroll width beyond the window, and for each named element a
+ * problem when, scrolled into view (its own scroll box too, as a finger would), it is not wholly inside
+ * the window and inside every box that clips it.
+ */
+async function overflowProblems(page: Page, width: number): Promise<string[]> {
+  return page.evaluate((w) => {
+    const problems: string[] = [];
+    const doc = document.documentElement;
+    if (doc.scrollWidth > window.innerWidth) problems.push(`${w}: the page is ${doc.scrollWidth} px wide`);
+    const headline = document.querySelector('[data-testid="result-exact-interval"]');
+    const named: Array<[string, Element | null | undefined]> = [
+      ['headline', headline],
+      ['headline Copy', headline?.parentElement?.querySelector('button.copy')],
+      [
+        '"Scallop it leaves"',
+        [...document.querySelectorAll('[data-testid="procedures-table"] th')].find(
+          (th) => th.textContent === 'Scallop it leaves',
+        ),
+      ],
+      ['saved tools', document.querySelector('[data-testid="saved-tools"]')],
+      ['tool name', document.querySelector('[data-testid="tool-name"]')],
+    ];
+    for (const [name, e] of named) {
+      if (!e) {
+        problems.push(`${w}: no ${name}`);
+        continue;
+      }
+      e.scrollIntoView({ block: 'nearest', inline: 'nearest' });
+      // A control's box; a text's own box (a table cell's borders may overhang its scroll box by a pixel).
+      const range = document.createRange();
+      range.selectNodeContents(e);
+      const r = /^(BUTTON|SELECT|INPUT)$/.test(e.tagName) ? e.getBoundingClientRect() : range.getBoundingClientRect();
+      if (r.width <= 0) problems.push(`${w}: ${name} has no width`);
+      if (r.left < -0.5 || r.right > window.innerWidth + 0.5)
+        problems.push(`${w}: ${name} spans ${r.left.toFixed(0)}..${r.right.toFixed(0)} of ${window.innerWidth}`);
+      for (let p = e.parentElement; p !== null && p !== doc; p = p.parentElement) {
+        if (getComputedStyle(p).overflowX === 'visible') continue;
+        const c = p.getBoundingClientRect();
+        if (r.left < c.left - 0.5 || r.right > c.right + 0.5)
+          problems.push(
+            `${w}: ${name} cut by ${p.className || p.tagName} (${r.left.toFixed(0)}..${r.right.toFixed(0)} in ${c.left.toFixed(0)}..${c.right.toFixed(0)})`,
+          );
+      }
+    }
+    window.scrollTo(0, 0);
+    return problems;
+  }, width);
+}
+
+describe('saved tools with long names (issue 28 point 5)', () => {
+  it('names up to 80 characters never widen the page: every width from 320 to 1920, the headline, its Copy and the table inside', async () => {
+    const { page, errors } = await site.open(`?${STATE}`, { width: 820, height: 1180 });
+    // As the shop does: open My tools, name the tool, save it; the longest name too; then pick the longest.
+    await page.locator('[data-testid="tool-shelf"] summary').click();
+    for (const name of [LONGEST_NAME, SHOP_NAME]) {
+      await page.getByTestId('tool-name').fill(name);
+      await page.getByTestId('save-tool').click();
+      await expect
+        .poll(() => page.getByTestId('tool-library-status').textContent())
+        .toBe(`Saved "${name}" in this browser.`);
+    }
+    // Newest first: the longest name is the second.
+    await page.getByTestId('saved-tools').selectOption('1');
+    await expect.poll(() => page.getByTestId('tool-library-status').textContent()).toContain(LONGEST_NAME);
+    await pageSettled(page);
+    await keepShot(page, 'long-tool-name-820');
+    const problems: string[] = [];
+    for (const width of SWEPT_WIDTHS) {
+      await page.setViewportSize({ width, height: 900 });
+      await animationFrames(page);
+      problems.push(...(await overflowProblems(page, width)));
+    }
+    expect(problems).toEqual([]);
+    expect(errors).toEqual([]);
+    site.changed();
   }, 120_000);
 });

@@ -14,6 +14,7 @@ import { PLANE, type Surface } from '../../src/core/surfaces/cylinder';
 import { exactForward } from '../../src/core/surfaces/solve';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
 import { formatLen } from '../../src/ui/format';
+import { cellText } from '../../src/ui/shopSheetText';
 import { axeViolations } from './axe';
 import { keepShot, useSite, viewAs } from './harness';
 
@@ -82,13 +83,17 @@ async function openSheet(vp: Viewport, page: Page): Promise<void> {
   await page.getByTestId('shop-sheet-dialog').waitFor({ state: 'visible' });
 }
 
-/** The table as text: the header row, then each row (its h first). */
+/** The table as the eye reads it: the header row, then each row (its h first); screen-reader-only words left out. */
 const tableText = (page: Page) =>
-  page
-    .getByTestId('shop-sheet-table')
-    .evaluate((t) =>
-      [...(t as HTMLTableElement).rows].map((r) => [...r.cells].map((c) => (c.textContent ?? '').trim())),
-    );
+  page.getByTestId('shop-sheet-table').evaluate((t) =>
+    [...(t as HTMLTableElement).rows].map((r) =>
+      [...r.cells].map((c) => {
+        const seen = c.cloneNode(true) as HTMLElement;
+        for (const hidden of seen.querySelectorAll('.sr-only')) hidden.remove();
+        return (seen.textContent ?? '').trim();
+      }),
+    ),
+  );
 
 /** Downloads the sheet's CSV: its suggested file name and text. */
 async function downloadCsv(vp: Viewport, page: Page): Promise<{ name: string; csv: string }> {
@@ -206,7 +211,9 @@ describe('shop sheet', () => {
       // A flat bottom lying flat (lead 0) gouges a concave cylinder: G; the others on the cylinder, in inches.
       expect(rows.slice(1).map((r) => r[1])).toEqual(Array(6).fill('G'));
       const cyl: Surface = { kind: 'cylinder', radiusMm: -31.75, axis: 'cross' };
-      expect(rows[3]?.[3]).toBe(formatLen(coreL(5, 0.0005 * 25.4, cyl, 3.175, 0.79375), 'in'));
+      expect(rows[3]?.[3]).toBe(
+        cellText({ ok: true, stepMm: coreL(5, 0.0005 * 25.4, cyl, 3.175, 0.79375), noScallop: false }, 'in'),
+      );
       expect(await page.getByTestId('shop-sheet-legend').textContent()).toMatch(/G: the tool gouges the surface/);
       await keepShot(page, `shop-sheet-inch-${vp.name}-dark`);
       expect(await axeViolations(page)).toEqual([]);
@@ -287,4 +294,111 @@ describe('shop sheet', () => {
       expect(pdfPages(pdf)).toBe(1);
       await page.emulateMedia({ media: 'screen' });
     }, 90_000);
+
+  it("phone, the three-axis inch job: the heights fixed while 60 and 75 scroll into view, the user's h a row, one digit count, a tap shows a mark's reason", async () => {
+    const { page, errors } = await open(
+      PHONE,
+      'light',
+      '?R=0.25&Rcr=0.03&machine=3axis&slope=30&rasterAngle=30&h=0.0004&unit=in',
+    );
+    await openSheet(PHONE, page);
+    // A height past the tool's limits, so that the sheet has marks.
+    const field = page.getByTestId('shop-sheet-heights');
+    await field.fill('0.0001 0.0002 0.0005 0.001 0.002 0.005 0.3');
+    await field.press('Enter');
+    await expect.poll(async () => (await tableText(page)).length).toBe(9);
+    const rows = await tableText(page);
+    const slopes = ['0', '10', '20', '30', '45', '60', '75'];
+    expect(rows[0]?.slice(1)).toEqual(slopes);
+    // The user's own h (0.0004 in, not in the list) is a row, bold, named for a screen reader.
+    expect(rows.slice(1).map((r) => r[0])).toEqual([
+      '0.0001',
+      '0.0002',
+      '0.0004',
+      '0.0005',
+      '0.001',
+      '0.002',
+      '0.005',
+      '0.3',
+    ]);
+    const own = page.getByTestId('shop-sheet-own-row');
+    expect(await own.locator('th').textContent()).toBe('0.0004 (your h)');
+    expect(
+      await own
+        .locator('td')
+        .first()
+        .evaluate((td) => getComputedStyle(td).fontWeight),
+    ).toBe('700');
+    const r = slopedPlaneForward(
+      { toolRadiusMm: 6.35, cornerRadiusMm: 0.762, slopeDeg: 30, passes: 'raster', rasterAngleDeg: 30 },
+      0.0004 * 25.4,
+    );
+    if (!r.ok) throw new Error('core');
+    const ownL = r.value.horizontalStepMm / 25.4;
+    expect(Number(rows[3]?.[4])).toBeCloseTo(ownL, 5);
+    expect(rows[3]?.[4]).toBe(cellText({ ok: true, stepMm: r.value.horizontalStepMm, noScallop: false }, 'in'));
+    // Every inch cell to one count of significant digits (4): 0.01245 beside 0.4449, not 0.44489.
+    const numbers = rows.slice(1).flatMap((row) => row.slice(1).filter((c) => /\d/.test(c)));
+    expect(numbers.length).toBeGreaterThan(40);
+    for (const c of numbers) expect(c.replace('.', '').replace(/^0+/, '').length, c).toBe(4);
+    // At 390 and 320 wide: the box scrolls; 60 and 75 scrolled into view (a swipe) are whole, in the
+    // box and the window, right of the heights' column, which stays at the box's left.
+    for (const width of [390, 320]) {
+      await page.setViewportSize({ width, height: 844 });
+      const box = page.locator('.sheet-scroll');
+      for (const slope of ['60', '75']) {
+        const th = page
+          .getByTestId('shop-sheet-table')
+          .locator('thead th')
+          .nth(slopes.indexOf(slope) + 1);
+        await th.scrollIntoViewIfNeeded();
+        const problems = await box.evaluate((b, column) => {
+          const out: string[] = [];
+          const frame = b.getBoundingClientRect();
+          const inner = { left: frame.left + b.clientLeft, right: frame.left + b.clientLeft + b.clientWidth };
+          for (const tr of b.querySelectorAll('tr')) {
+            const head = (tr as HTMLTableRowElement).cells[0]?.getBoundingClientRect();
+            const cell = (tr as HTMLTableRowElement).cells[column]?.getBoundingClientRect();
+            if (!head || !cell) {
+              out.push('missing cell');
+              continue;
+            }
+            const name = (tr as HTMLTableRowElement).cells[0]?.textContent;
+            if (Math.abs(head.left - inner.left) > 1)
+              out.push(`${name}: first column at ${head.left}, box at ${inner.left}`);
+            if (cell.left < head.right - 0.5) out.push(`${name}: under the first column`);
+            if (cell.right > inner.right + 0.5 || cell.right > window.innerWidth)
+              out.push(`${name}: cut at ${cell.right}`);
+          }
+          return out;
+        }, slopes.indexOf(slope) + 1);
+        expect(problems, `${width} px, slope ${slope}`).toEqual([]);
+      }
+      expect(await box.evaluate((b) => b.scrollLeft), `${width} px scrolled`).toBeGreaterThan(0);
+      await keepShot(page, `shop-sheet-3axis-inch-phone-${width}`);
+    }
+    // A touch screen cannot hover: the legend says tap; a tap on a mark writes its full reason.
+    const legend = page.getByTestId('shop-sheet-legend');
+    expect(await legend.locator('.hint-hover').isVisible()).toBe(false);
+    expect(await legend.locator('.hint-touch').isVisible()).toBe(true);
+    const reason = page.getByTestId('shop-sheet-reason');
+    expect(await reason.isVisible()).toBe(false);
+    const mark = page.getByTestId('shop-sheet-table').locator('td.refused button').last();
+    const title = await mark.evaluate((b) => (b.parentElement as HTMLElement).title);
+    expect(title).toMatch(/\S/);
+    await mark.scrollIntoViewIfNeeded();
+    await mark.tap();
+    await expect.poll(() => reason.textContent()).toMatch(/^[WGX] at h 0\.3 in, slope \d+ deg: /);
+    expect((await reason.textContent())?.endsWith(title)).toBe(true);
+    expect(await reason.isVisible()).toBe(true);
+    expect(await axeViolations(page)).toEqual([]);
+    // Printed: neither hint nor the tapped reason; the heights' column is a plain column.
+    await page.emulateMedia({ media: 'print' });
+    expect(await legend.locator('.hint-hover').isVisible()).toBe(false);
+    expect(await legend.locator('.hint-touch').isVisible()).toBe(false);
+    expect(await reason.isVisible()).toBe(false);
+    expect(await own.locator('th').evaluate((th) => getComputedStyle(th).position)).toBe('static');
+    await page.emulateMedia({ media: 'screen' });
+    expect(errors).toEqual([]);
+  }, 90_000);
 });

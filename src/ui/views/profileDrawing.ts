@@ -23,7 +23,9 @@ import type { CurvedSectionData } from '../../worker/teachProtocol';
 import { formatLenUnit } from '../format';
 import type { Unit } from '../state';
 import { svg, type TeachOk } from './common';
+import { addLabel } from './profileLabels';
 import { type Box, homeBox, type ProfileLayout } from './profileLayout';
+import { SCALE_ROOM } from './profileScaleBars';
 
 /** What is drawn: one pass's profile on a surface (the worker's data, in surface coordinates). */
 export interface ProfileSection {
@@ -82,7 +84,28 @@ export interface ProfileDrawingInput {
   readonly untilted: boolean;
   readonly unit: Unit;
   readonly layout: ProfileLayout;
+  /**
+   * The labels' height in display units at the home box (the view's text size there): the rows of
+   * labels below the surface are spaced by it.
+   */
+  readonly labelSize: number;
 }
+
+/**
+ * Below the surface, where no curve runs, the labels' rows (depths in label heights, display units
+ * down from the surface): the cusp heights' baseline (each label beside a leader from its dimension),
+ * the flanks' widths or L/2 and their dimension line, L and its line; then the scale bars' room (the
+ * view draws them at the bottom of the box shown). The home box reaches {@link LABELS_DEPTH} down.
+ */
+const ROWS = {
+  heightsLeader: 0.3,
+  heightsText: 1.25,
+  widthsLine: 1.9,
+  widthsText: 3.15,
+  intervalLine: 4.1,
+  intervalText: 5.35,
+} as const;
+export const LABELS_DEPTH = 5.75 + SCALE_ROOM;
 
 /** What a drawing leaves to the view. */
 export interface ProfileDrawn {
@@ -132,6 +155,9 @@ export function drawProfile(
     fromSurfaceSection(surface, sMm, k * hr, xy);
     return [xy[0], -xy[1]];
   };
+  // The highest point of the profiles drawn (display y, up negative; the faint ring ellipse may run
+  // out of the plot): the label above the drawing goes above it.
+  let curvesTopY = Number.POSITIVE_INFINITY;
   const pt = (sMm: number, hr: number) => {
     fromSurfaceSection(surface, sMm, k * hr, xy);
     return `${xy[0]},${-xy[1]}`;
@@ -178,6 +204,7 @@ export function drawProfile(
   }
   const curve = (key: ProcedureKey, points: string) => {
     const line = add('polyline', { points, class: `curve curve-${key}`, 'data-procedure': key });
+    for (const p of (line as SVGPolylineElement).points) curvesTopY = Math.min(curvesTopY, p.y);
     const list = curves.get(key) ?? [];
     list.push(line);
     curves.set(key, list);
@@ -218,7 +245,7 @@ export function drawProfile(
     if (row.intervalMm === null || !(row.intervalMm < toMm)) continue;
     const sMm = row.intervalMm;
     add('polyline', {
-      points: [pt(sMm, -0.15 * top), pt(sMm, 0.6 * top)].join(' '),
+      points: [pt(sMm, 0), pt(sMm, 0.6 * top)].join(' '),
       class: 'curve comparison-mark',
       'data-curvature': row.key,
     });
@@ -237,66 +264,94 @@ export function drawProfile(
       });
     }
   }
-  drawDimensions(layer, input, { at, pt, along, segments });
-  // Home: everything drawn (the outer passes, the band and the dimensions below the surface).
+  // Home: everything drawn (the outer passes, the band, the labels below the surface and above it).
   let minX = Number.POSITIVE_INFINITY;
   let maxX = Number.NEGATIVE_INFINITY;
   let minY = Number.POSITIVE_INFINITY;
   let maxY = Number.NEGATIVE_INFINITY;
-  for (const sMm of [fromMm, toMm, 0, -L, L, (fromMm + toMm) / 2]) {
-    for (const hr of [top, -(5 * d) / k, 0]) {
-      const [x, y] = at(sMm, hr);
-      minX = Math.min(minX, x);
-      maxX = Math.max(maxX, x);
-      minY = Math.min(minY, y);
-      maxY = Math.max(maxY, y);
-    }
-  }
+  const reach = (x: number, y: number) => {
+    minX = Math.min(minX, x);
+    maxX = Math.max(maxX, x);
+    minY = Math.min(minY, y);
+    maxY = Math.max(maxY, y);
+  };
+  for (const sMm of [fromMm, toMm, 0, -L, L, (fromMm + toMm) / 2]) for (const hr of [top, 0]) reach(...at(sMm, hr));
+  const labels = drawDimensions(layer, input, { at, pt, along, segments }, Math.min(minY, curvesTopY));
+  reach(minX, Math.min(minY, labels.topY));
+  reach(minX, labels.bottomY);
   const [cuspX, cuspY] = at(ex.right.yMm, ex.right.heightMm);
   return { home: homeBox(minX, maxX, minY, maxY, d), cuspX, cuspY };
 }
 
-/** Cusp heights (radially), the flanks' widths to their cusps and L (along the surface below it), and the tool centre O. */
-function drawDimensions(layer: SVGGElement, input: ProfileDrawingInput, map: SectionMap): void {
-  const { at, pt, along, segments } = map;
-  const { exact: ex, unit, section } = input;
-  const { k, topMm: top, d } = input.layout;
+/**
+ * Cusp heights (radially, each labelled below the surface at the end of a leader), the flanks'
+ * widths to their cusps and L (along the surface, below it) and the tool centre O (labelled above the
+ * band, whose top is at `bandTopY`). The labels below stand in rows ({@link ROWS}) under the lowest
+ * point of the surface beneath them, so that a curved section never runs through a text; each
+ * dimension line is the surface's own shape moved down to its row, its text under it. Returns how
+ * high and how low the labels reach (display y).
+ */
+function drawDimensions(
+  layer: SVGGElement,
+  input: ProfileDrawingInput,
+  map: SectionMap,
+  bandTopY: number,
+): { readonly topY: number; readonly bottomY: number } {
+  const { at, pt, segments } = map;
+  const { exact: ex, unit, section, labelSize: t } = input;
+  const { topMm: top, d, fromMm, toMm } = input.layout;
   const L = ex.intervalMm;
   const y0 = ex.contactOffsetMm;
-  /** A height `n` spacings below the surface. */
-  const below = (n: number) => -(n * d) / k;
   // Every label a length with its unit (format.ts).
   const f = (mm: number) => formatLenUnit(mm, unit);
   const fh = (mm: number) => formatLenUnit(mm, unit, 'height');
   const { right, left } = ex;
   const name = (c: { heightMm: number }) => (c.heightMm >= Math.max(right.heightMm, left.heightMm) ? 'h' : "h'");
-  const text = (x: number, y: number, label: string, cls = 'dim-text') => {
-    const t = svg('text', { x, y, class: cls });
-    t.textContent = label;
-    layer.append(t);
+  /** The surface's lowest point on screen (largest y) from `from` to `to` (mm along it). */
+  const lowest = (from: number, to: number) => {
+    let y = Number.NEGATIVE_INFINITY;
+    const n = segments(48);
+    for (let i = 0; i <= n; i++) y = Math.max(y, at(from + ((to - from) * i) / n, 0)[1]);
+    return y;
   };
-  const radial = (sMm: number, hr: number, label: string) => {
+  // Under the labels: from the left cusp to L, with room for their texts either side.
+  const ground = lowest(Math.max(fromMm, Math.min(0, left.yMm) - 8 * t), Math.min(toMm, L + 8 * t));
+  const rowY = (n: number) => ground + n * t;
+  // A cusp's height: its dimension from the surface up, a leader from the surface down to its label's
+  // row, the label beside the leader (outwards: right of the right cusp, left of the left one).
+  const radial = (sMm: number, hr: number, label: string, side: 1 | -1) => {
     const [a, b] = at(sMm, 0);
     const [c, e] = at(sMm, hr);
     layer.append(svg('line', { x1: a, y1: b, x2: c, y2: e, class: 'dim' }));
-    text((a + c) / 2 + d / 2, (b + e) / 2, label);
+    layer.append(svg('line', { x1: a, y1: b, x2: a, y2: rowY(ROWS.heightsLeader), class: 'dim leader' }));
+    addLabel(layer, a + side * 0.3 * t, rowY(ROWS.heightsText), label, {
+      align: side > 0 ? 'start' : 'end',
+      row: 'heights',
+    });
   };
-  const arcDim = (from: number, to: number, level: number, label: string) => {
-    layer.append(
-      svg('polyline', { points: along(from, to, () => below(level), segments(48)).join(' '), class: 'dim' }),
-    );
-    const [mx, my] = at((from + to) / 2, below(level));
-    text(mx, my - d / 3, label);
+  const dimension = (from: number, to: number, line: number, text: number, row: string, label: string) => {
+    const shift = rowY(line) - lowest(from, to);
+    const n = segments(48);
+    const points: string[] = [];
+    for (let i = 0; i <= n; i++) {
+      const [x, y] = at(from + ((to - from) * i) / n, 0);
+      points.push(`${x},${y + shift}`);
+    }
+    layer.append(svg('polyline', { points: points.join(' '), class: 'dim' }));
+    addLabel(layer, at((from + to) / 2, 0)[0], rowY(text), label, { row });
   };
-  radial(right.yMm, right.heightMm, `${name(right)} = ${fh(right.heightMm)}`);
-  if (!input.untilted) radial(left.yMm, left.heightMm, `${name(left)} = ${fh(left.heightMm)}`);
-  if (input.untilted || ex.pattern === 'zigzag') arcDim(0, L / 2, 2, `L/2 = ${f(L / 2)}`);
+  radial(right.yMm, right.heightMm, `${name(right)} = ${fh(right.heightMm)}`, 1);
+  if (!input.untilted) radial(left.yMm, left.heightMm, `${name(left)} = ${fh(left.heightMm)}`, -1);
+  const { widthsLine, widthsText, intervalLine, intervalText } = ROWS;
+  if (input.untilted || ex.pattern === 'zigzag')
+    dimension(0, L / 2, widthsLine, widthsText, 'widths', `L/2 = ${f(L / 2)}`);
   else {
-    arcDim(0, right.yMm, 2, `wR = ${f(right.yMm)}`);
-    arcDim(left.yMm, 0, 2, `wL = ${f(-left.yMm)}`);
+    dimension(0, right.yMm, widthsLine, widthsText, 'widths', `wR = ${f(right.yMm)}`);
+    dimension(left.yMm, 0, widthsLine, widthsText, 'widths', `wL = ${f(-left.yMm)}`);
   }
   const arc = Number.isFinite(sectionRadiusMm(section.surface)) ? ' (arc)' : '';
-  arcDim(0, L, 4, `L = ${f(L)}${arc}`);
+  dimension(0, L, intervalLine, intervalText, 'interval', `L = ${f(L)}${arc}`);
+  let topY = Number.POSITIVE_INFINITY;
   if (y0 !== 0) {
     // The tool centre O: -y0 across the feed in the contact's tangent plane.
     const n = segments(8);
@@ -307,7 +362,13 @@ function drawDimensions(layer: SVGGElement, input: ProfileDrawingInput, map: Sec
     for (let i = 0; i + 1 < onSurface.length; i += 2)
       parts.push(pt(onSurface[i] as number, onSurface[i + 1] as number));
     layer.append(svg('polyline', { points: parts.join(' '), class: 'centre-line' }));
-    const [ox, oy] = at(onSurface[onSurface.length - 2] as number, onSurface[onSurface.length - 1] as number);
-    text(ox + d / 3, oy + d, `O (y0 = ${f(y0)})`, 'dim-text centre-text');
+    const [ox] = at(onSurface[onSurface.length - 2] as number, onSurface[onSurface.length - 1] as number);
+    // Above the band drawn (every curve ends at its top), on its halo.
+    addLabel(layer, ox + d / 3, bandTopY - 0.45 * t, `O (y0 = ${f(y0)})`, {
+      align: 'start',
+      cls: 'dim-text centre-text',
+    });
+    topY = bandTopY - 1.6 * t;
   }
+  return { topY, bottomY: rowY(LABELS_DEPTH) };
 }

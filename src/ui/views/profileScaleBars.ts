@@ -6,12 +6,15 @@
 import { scaleBar } from '../../core/output/drawingScale';
 import type { Unit } from '../state';
 import { svg } from './common';
+import { addLabel } from './profileLabels';
 import type { Box } from './profileLayout';
 
 /**
  * Draws the bars into `group` (emptied first) for the box `b` shown in a plot of height over width
  * `aspect` (the viewBox is fitted into the plot keeping its aspect, so one of its sides has room to
- * spare), heights exaggerated `k` times, texts `fontSize` high (display units).
+ * spare), heights exaggerated `k` times, texts `fontSize` high (display units). They stand in the
+ * bottom {@link SCALE_ROOM} text heights of what is shown, the room the drawing leaves below its
+ * labels (profileDrawing.ts LABELS_DEPTH); the texts are labels (profileLabels.ts), placed with the others.
  */
 export function drawScaleBars(
   group: SVGGElement,
@@ -25,14 +28,8 @@ export function drawScaleBars(
   const w = Math.max(b.w, b.h / aspect);
   const h = Math.max(b.h, b.w * aspect);
   const x0 = b.x + b.w / 2 - w / 2 + 0.03 * w;
-  const yBase = b.y + b.h / 2 + h / 2 - 0.05 * h;
-  const tick = 0.012 * w;
-  const text = (x: number, y: number, label: string, testId: string, anchor = 'start') => {
-    const t = svg('text', { x, y, class: 'dim-text scale-text', 'data-testid': testId, 'text-anchor': anchor });
-    t.setAttribute('font-size', String(fontSize));
-    t.textContent = label;
-    group.append(t);
-  };
+  const yBase = b.y + b.h / 2 + h / 2 - 0.5 * fontSize;
+  const tick = 0.4 * fontSize;
   const across = scaleBar(0.2 * w, unit);
   if (across !== null) {
     const x1 = x0 + across.lengthMm;
@@ -42,12 +39,18 @@ export function drawScaleBars(
         class: 'scale-line',
       }),
     );
-    text(x0, yBase - 1.6 * tick, across.text, 'profile-scale-bar-x');
+    addLabel(group, x0, yBase - tick - 0.3 * fontSize, across.text, {
+      align: 'start',
+      cls: 'dim-text scale-text',
+      testId: 'profile-scale-bar-x',
+    });
   }
   if (k === 1) return;
-  const up = scaleBar((0.25 * h) / k, unit);
+  // No taller than the room (less a margin), so that it stays below the labels above it.
+  const up = scaleBar(Math.min(0.25 * h, (SCALE_ROOM - 1) * fontSize) / k, unit);
   if (up === null) return;
-  const x = x0 + 0.3 * w;
+  // Right of the bar across and of its text (at most about 4.5 text heights long), whatever their size.
+  const x = Math.max(x0 + 0.3 * w, x0 + Math.max(across?.lengthMm ?? 0, 4.5 * fontSize) + fontSize);
   const y1 = yBase - k * up.lengthMm;
   group.append(
     svg('polyline', {
@@ -55,5 +58,12 @@ export function drawScaleBars(
       class: 'scale-line',
     }),
   );
-  text(x + tick, yBase - (k * up.lengthMm) / 2, `${up.text} high (drawn x${k})`, 'profile-scale-bar-z');
+  addLabel(group, x + tick, yBase - 0.1 * fontSize, `${up.text} high (drawn x${k})`, {
+    align: 'start',
+    cls: 'dim-text scale-text',
+    testId: 'profile-scale-bar-z',
+  });
 }
+
+/** The text heights at the bottom of the box shown that the bars take. */
+export const SCALE_ROOM = 2.6;

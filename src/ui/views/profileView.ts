@@ -38,10 +38,15 @@ import {
   type ViewContext,
 } from './common';
 import { radiusWords } from './pageChartText';
-import { curvedProfileSection, drawProfile, type ProfileSection, profileSection } from './profileDrawing';
+import { curvedProfileSection, drawProfile, LABELS_DEPTH, type ProfileSection, profileSection } from './profileDrawing';
+import { placeLabels } from './profileLabels';
 import { type Box, grownHeightPx, type PlotRoom, profileLayout } from './profileLayout';
 import { PanZoom } from './profilePanZoom';
+import './profile.css';
 import { drawScaleBars } from './profileScaleBars';
+
+/** The least on-screen height of the plot's texts (CSS px; presentation mode asks for more). */
+const MIN_TEXT_PX = 12;
 
 /** How the view words a surface: the plot's label, the note above it, and the exaggeration's. */
 interface SurfaceWords {
@@ -168,6 +173,8 @@ export class ProfileView implements TeachingView {
   /** The plot's width as last laid out (px; 0 before it is), and its height as the stylesheet sets it. */
   private plotWidthPx = 0;
   private baseHeightPx = 0;
+  /** The plot's height as laid out (px; the stylesheet's, the grown one, or what a flex column gives). */
+  private shownHeightPx = 0;
   /** The height the plot was grown to for an exaggerated drawing (px), or null. */
   private grownPx: number | null = null;
   /**
@@ -178,7 +185,11 @@ export class ProfileView implements TeachingView {
   private readonly plotObserver = new ResizeObserver(() => {
     // Only a new width or a new stylesheet height calls for a new drawing: the plot's own growth
     // (grownPx, set by the drawing) does not.
+    const shownHeightPx = this.shownHeightPx;
     if (this.readPlotSize() && this.plotWidthPx > 0) this.redraw();
+    // Grown (or not: presentation mode's plot takes the height its column leaves): the labels
+    // follow the height the plot has.
+    else if (this.shownHeightPx !== shownHeightPx) this.panZoom.show(this.panZoom.box);
   });
 
   /** Reads the plot's laid-out size; true when its width or its stylesheet height changed. */
@@ -187,18 +198,26 @@ export class ProfileView implements TeachingView {
     const h = this.plot.clientHeight;
     const changed = w !== this.plotWidthPx || (this.grownPx === null && h !== this.baseHeightPx);
     this.plotWidthPx = w;
+    this.shownHeightPx = h;
     if (this.grownPx === null) this.baseHeightPx = h;
     // Presentation mode (present.css) asks for texts at least this high; read with the size, as
     // entering or leaving it resizes the plot.
-    const min = Number.parseFloat(getComputedStyle(this.plot).getPropertyValue('--svg-text-min-px'));
-    const minTextPx = Number.isFinite(min) && min > 0 ? min : 0;
+    const style = getComputedStyle(this.plot);
+    this.fontFamily = style.fontFamily;
+    const min = Number.parseFloat(style.getPropertyValue('--svg-text-min-px'));
+    const minTextPx = Math.max(MIN_TEXT_PX, Number.isFinite(min) ? min : 0);
+    this.fixedHeight = style.getPropertyValue('--profile-fixed-height').trim() === '1';
     const textChanged = minTextPx !== this.minTextPx;
     this.minTextPx = minTextPx;
     return changed || textChanged;
   }
 
-  /** The least on-screen height of the plot's texts (px; 0: none, they are a 45th of its width). */
-  private minTextPx = 0;
+  /** The least on-screen height of the plot's texts (px; else they are a 60th of its width). */
+  private minTextPx = MIN_TEXT_PX;
+  /** True in a frame of a fixed height: the plot keeps the stylesheet's height (no growth). */
+  private fixedHeight = false;
+  /** The plot's font (its labels are measured in it). */
+  private fontFamily = 'sans-serif';
 
   private legend(): HTMLElement {
     const legend = html('p', { class: 'view-legend' });
@@ -299,18 +318,43 @@ export class ProfileView implements TeachingView {
       room,
     });
     const { k } = layout;
-    const drawn = drawProfile(this.layer, this.curves, {
-      section,
-      exact: ex,
-      approximations: input.approximations,
-      untilted: input.untilted,
-      unit,
-      layout,
-    });
+    const drawing = (labelSize: number) =>
+      drawProfile(this.layer, this.curves, {
+        section,
+        exact: ex,
+        approximations: input.approximations,
+        untilted: input.untilted,
+        unit,
+        layout,
+        labelSize,
+      });
+    // The labels' rows are spaced by their size at home, which depends on the home box they make
+    // taller (its height grows linearly with the size: h0 + c size). Drawn for the width's share;
+    // when home then comes out too tall for it, drawn again for the size that fits itself.
+    const aspect = this.plotAspect();
+    const guess = this.textSize({ x: 0, y: 0, w: layout.toMm - layout.fromMm, h: 0 }, aspect);
+    let drawn = drawing(guess);
+    const needed = this.textSize(drawn.home, aspect);
+    if (needed > 1.01 * guess) {
+      const first = drawn.home.h;
+      drawn = drawing(needed);
+      const c = (drawn.home.h - first) / (needed - guess);
+      const h0 = first - c * guess;
+      const px = this.textSize({ x: 0, y: 0, w: 0, h: 1 }, aspect);
+      // size = px (h0 + c size): the size that fits its own home (the plot too short for any: the last).
+      const fits = 1 - c * px > 0.2 ? (1.01 * px * h0) / (1 - c * px) : needed;
+      drawn = drawing(Math.max(guess, fits));
+    }
     this.shownK = k;
     this.cuspAt = { x: drawn.cuspX, y: drawn.cuspY, widthMm: Math.abs(ex.right.yMm) };
     // A strong exaggeration: the plot grows (up to its limit) rather than the drawing shrinking to a strip.
-    const grown = grownHeightPx(room, drawn.home, this.plotWidthPx > 0);
+    // The labels take their height in pixels whatever the drawing's scale: the plot may grow by it
+    // too; not at all in a frame of a fixed height (an embedded view: profile.css), where the legend
+    // below it would leave the frame.
+    const labelsPx = (LABELS_DEPTH + 1.6) * this.textSize({ x: 0, y: 0, w: 0, h: 1 }, 1 / room.widthPx);
+    const grown = this.fixedHeight
+      ? null
+      : grownHeightPx({ ...room, maxHeightPx: room.maxHeightPx + labelsPx }, drawn.home, this.plotWidthPx > 0);
     if (grown !== this.grownPx) {
       this.grownPx = grown;
       this.plot.style.height = grown === null ? '' : `${grown}px`;
@@ -347,14 +391,29 @@ export class ProfileView implements TeachingView {
     this.panZoom.zoomTo(this.cuspAt.x, this.cuspAt.y, Math.max(0.05 * this.cuspAt.widthMm, 0.002));
   }
 
+  /**
+   * The texts' height in display units for a box shown in a plot of height over width `aspect`: a
+   * 60th of the plot's width in pixels, or more to reach minTextPx; the viewBox is fitted into the
+   * plot keeping its aspect, so a pixel is the larger of the box's width and height shares.
+   */
+  private textSize(b: Box, aspect: number): number {
+    const widthPx = this.plotWidthPx || 800;
+    const unitsPerPx = Math.max(b.w / widthPx, b.h / (aspect * widthPx));
+    return unitsPerPx * Math.max(widthPx / 60, this.minTextPx);
+  }
+
   /** A box is shown: texts keep their on-screen size whatever the zoom, and the scale bars follow. */
   private boxShown(b: Box): void {
-    // A 45th of the box's width (as many pixels as a 45th of the plot's), or more to reach minTextPx.
-    const size = this.plotWidthPx > 0 ? b.w * Math.max(1 / 45, this.minTextPx / this.plotWidthPx) : b.w / 45;
-    for (const t of this.layer.querySelectorAll('text')) t.setAttribute('font-size', String(size));
+    const aspect = this.plotAspect();
+    const size = this.textSize(b, aspect);
     if (this.ctx !== null || this.pageCtx !== null)
-      drawScaleBars(this.bars, b, this.plotAspect(), this.shownK, (this.pageCtx ?? this.ctx)?.unit ?? 'mm', size);
+      drawScaleBars(this.bars, b, aspect, this.shownK, (this.pageCtx ?? this.ctx)?.unit ?? 'mm', size);
     else this.bars.replaceChildren();
+    // The viewBox is fitted into the plot keeping its aspect: what is shown is b and the spare room
+    // on one of its sides.
+    const w = Math.max(b.w, b.h / aspect);
+    const h = Math.max(b.h, b.w * aspect);
+    placeLabels(this.plot, { x: b.x + (b.w - w) / 2, y: b.y + (b.h - h) / 2, w, h }, size, this.fontFamily);
   }
 
   /**
@@ -378,7 +437,7 @@ export class ProfileView implements TeachingView {
   /** Height over width of the plot on screen (0.4 while it is not laid out). */
   private plotAspect(): number {
     const w = this.plotWidthPx;
-    const h = this.grownPx ?? this.baseHeightPx;
+    const h = this.shownHeightPx;
     return w > 0 && h > 0 ? h / w : 0.4;
   }
 }
