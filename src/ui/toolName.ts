@@ -47,6 +47,14 @@ export function setShownToolName(name: string | null): void {
   shown = name;
 }
 
+/**
+ * The title line that names the tool shown with the answer, for a printed or saved sheet (the shop
+ * sheet puts it before its own title lines): `Tool name: ...` as text, or none.
+ */
+export function shownToolNameLines(): string[] {
+  return shown === null ? [] : [`Tool name: ${shown}`];
+}
+
 /** A length of a tool in `unit`, as a catalogue writes it (the fewest digits that give it: 0.5 in, 12.7 mm). */
 export function toolLength(mm: number, unit: LengthUnit): string {
   return `${fieldText('R', mm, unit)} ${unitSymbol(unit)}`;

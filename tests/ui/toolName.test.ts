@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { checkTool, type LibraryTool, TOOL_NAME_MAX_CHARS } from '../../src/core/input/toolLibrary';
 import { readSavedTools, savedToolsText } from '../../src/ui/savedTools';
 import { convertState, defaultState, parseUrl, toSearch, withField, withSize, withValues } from '../../src/ui/state';
-import { TOOL_NAME_PARAM, toolLabel } from '../../src/ui/toolName';
+import { setShownToolName, shownToolName, shownToolNameLines, TOOL_NAME_PARAM, toolLabel } from '../../src/ui/toolName';
 
 const inchTool: LibraryTool = {
   name: 'Harvey 1/2 R.030',
@@ -81,5 +81,15 @@ describe("the tool's name in the state and the link", () => {
     expect([...(p.state.toolName ?? '')].some((c) => c < ' ' || c === '\u202e')).toBe(false);
     expect(parseUrl('?D=6&Rcr=1&rho=5&h=0.05&tool=%20%00%E2%80%AE').state.toolName).toBeUndefined();
     expect(checkTool(p.state.toolName ?? '', 6, 1, null).ok).toBe(true);
+  });
+});
+
+describe('the name for the shop sheet', () => {
+  it('is the one the results show, as a title line, or none', () => {
+    setShownToolName(inchTool.name);
+    expect(shownToolName()).toBe(inchTool.name);
+    expect(shownToolNameLines()).toEqual([`Tool name: ${inchTool.name}`]);
+    setShownToolName(null);
+    expect(shownToolNameLines()).toEqual([]);
   });
 });
