@@ -4,13 +4,15 @@
  * core/input/toolLibrary.ts cleanToolName) and for the views that show it beside the answer (the
  * results' headline, the shop sheet: {@link shownToolName}). Shown only as text, never as HTML.
  */
-import { cleanToolName, type LibraryTool } from '../core/input/toolLibrary';
+import { urlParamOf } from '../core/input/fields';
+import type { LibraryTool } from '../core/input/toolLibrary';
+import { cleanToolName } from '../core/input/toolNameText';
 import { type LengthUnit, unitSymbol } from '../core/input/units';
 import { fieldText } from './fieldText';
 import type { CalculatorState } from './stateTypes';
 
-/** The link's parameter for the tool's name. */
-export const TOOL_NAME_PARAM = 'tool';
+/** The link's parameter for the tool's name (the field registry's). */
+export const TOOL_NAME_PARAM = urlParamOf('tool');
 
 /** The tool's name a link gives (cleaned, at most 80 characters), or undefined when none or empty. */
 export function toolNameOfLink(params: URLSearchParams): string | undefined {

@@ -5,7 +5,10 @@
  * are kept. Names are kept as plain text (whoever shows them shows them as text, never as HTML).
  */
 import { FIELDS } from './fields';
+import { cleanToolName, TOOL_NAME_MAX_CHARS } from './toolNameText';
 import { type LengthUnit, MM_PER_INCH } from './units';
+
+export { cleanToolName, TOOL_NAME_MAX_CHARS };
 
 /** A tool of a library or of the browser's saved tools; lengths in mm. */
 export interface LibraryTool {
@@ -24,9 +27,6 @@ export interface LibraryTool {
   readonly flutes: number | null;
 }
 
-/** A tool name's longest kept form (longer names are cut, with an ellipsis). */
-export const TOOL_NAME_MAX_CHARS = 80;
-
 /** The largest library file read, in characters (a Fusion library of a few thousand tools is a few MB). */
 export const LIBRARY_MAX_CHARS = 20_000_000;
 
@@ -40,34 +40,6 @@ export interface LibraryRead {
 }
 
 const R_RANGE = FIELDS.R.range;
-
-/**
- * Characters a name never keeps: control characters (C0, DEL, C1) and the invisible ones that
- * reorder or hide text (bidirectional overrides and isolates, zero-width spaces and joiners, the
- * byte order mark), which could make a name read as another.
- */
-function hidden(c: string): boolean {
-  const code = c.codePointAt(0) ?? 0;
-  return (
-    code < 0x20 ||
-    (code >= 0x7f && code <= 0x9f) ||
-    (code >= 0x200b && code <= 0x200f) ||
-    (code >= 0x202a && code <= 0x202e) ||
-    (code >= 0x2060 && code <= 0x2069) ||
-    code === 0xfeff
-  );
-}
-
-/**
- * A name as kept (a library's, a saved tool's, a link's): plain text, hidden and control
- * characters made spaces, spaces collapsed, cut at {@link TOOL_NAME_MAX_CHARS} (with an ellipsis).
- */
-export function cleanToolName(name: string): string {
-  // Only the start is read: a name of megabytes is cut long before its end.
-  const start = Array.from(name.slice(0, 4 * TOOL_NAME_MAX_CHARS), (c) => (hidden(c) ? ' ' : c));
-  const t = start.join('').replace(/\s+/g, ' ').trim();
-  return t.length > TOOL_NAME_MAX_CHARS ? `${t.slice(0, TOOL_NAME_MAX_CHARS - 1)}\u2026` : t;
-}
 
 /**
  * Checks a tool: D within twice the tool radius's limits (0.002 to 2000 mm), the corner radius from
