@@ -4,7 +4,11 @@
  * words a switch of the link takes. Pure; re-exported by state.ts.
  */
 import { FIELDS, fieldOfPageKey, isLengthField as isLength, type PageFieldKey, urlParamOf } from '../core/input/fields';
-import { formatSignificant, fromMm, type LengthUnit, toMm } from '../core/input/units';
+import { fromMm, type LengthUnit, toMm } from '../core/input/units';
+import { fieldDigits, formatField } from './format';
+
+export { formatField };
+
 import type { CalculatorState, TypedText } from './stateTypes';
 import { defaultFieldText } from './unitDefaults';
 
@@ -15,33 +19,6 @@ const param = urlParamOf;
 /** True for the fields that hold a length (converted with the unit); angles are degrees. */
 export function isLengthField(key: FieldKey): boolean {
   return isLength(fieldOfPageKey(key));
-}
-
-/**
- * Two numbers closer than this, relative to their size, are the same number written twice: the
- * float noise of a conversion or of a sum (1e-16 to 1e-14) lies far below it, and a typed value
- * (at most 11 significant digits) differs from every other value of as many digits by far more.
- */
-const SAME_NUMBER = 1e-12;
-
-/** A number with `digits` significant digits as a field writes it (no trailing zeros, no exponent for usual sizes). */
-function fieldDigits(value: number, digits: number): string {
-  return formatSignificant(value, { digits, trimZeros: true, exponentBelow: 1e-5 });
-}
-
-/**
- * Formats a number for a field: the fewest significant digits that give the number itself (within
- * float noise, {@link SAME_NUMBER}), so `0.762` not `0.7619999999999999` and `0.5` not `0.500000`,
- * and nothing is lost (a tool's 0.1181102362205 in stays that); no exponent for usual sizes. Empty
- * for a non-finite value.
- */
-export function formatField(value: number): string {
-  if (!Number.isFinite(value)) return '';
-  for (let digits = 1; digits < 17; digits++) {
-    const text = fieldDigits(value, digits);
-    if (Math.abs(Number(text) - value) <= SAME_NUMBER * Math.abs(value)) return text;
-  }
-  return fieldDigits(value, 17);
 }
 
 /**

@@ -8,8 +8,8 @@
  * its unit ({@link formatLenUnit}: mm or in, µm below 0.1 mm, thou below 0.01 in, never exponent
  * notation), and every roughness Rz, Ra, Rq is in µm in mm and in µin in inch
  * ({@link formatRoughness}, at the heights' resolution); every computed angle has two decimals
- * ({@link formatAngle}); a field's number is fieldText.ts formatField's (the fewest digits that give
- * it). The micro sign is U+00B5 (`µm`, `µin`) everywhere. The bare number
+ * ({@link formatAngle}); a field's number has the fewest digits that give it ({@link formatField},
+ * which fieldText.ts's conversions use). The micro sign is U+00B5 (`µm`, `µin`) everywhere. The bare number
  * ({@link formatLen}) is for what is copied, where the unit is the page's (copy.ts), and for
  * cells under a header that names the unit.
  */
@@ -142,6 +142,33 @@ export function formatAngle(deg: number | null): string {
 /** An angle given in radians, in degrees as {@link formatAngle} gives it (captions of the step-through). */
 export function formatRadAsDeg(rad: number): string {
   return formatAngle(radToDeg(rad));
+}
+
+/**
+ * Two numbers closer than this, relative to their size, are the same number written twice: the
+ * float noise of a conversion or of a sum (1e-16 to 1e-14) lies far below it, and a typed value
+ * (at most 11 significant digits) differs from every other value of as many digits by far more.
+ */
+const SAME_NUMBER = 1e-12;
+
+/** A number with `digits` significant digits as a field writes it (no trailing zeros, no exponent for usual sizes). */
+export function fieldDigits(value: number, digits: number): string {
+  return formatSignificant(value, { digits, trimZeros: true, exponentBelow: 1e-5 });
+}
+
+/**
+ * Formats a number for a field: the fewest significant digits that give the number itself (within
+ * float noise, {@link SAME_NUMBER}), so `0.762` not `0.7619999999999999` and `0.5` not `0.500000`,
+ * and nothing is lost (a tool's 0.1181102362205 in stays that); no exponent for usual sizes. Empty
+ * for a non-finite value.
+ */
+export function formatField(value: number): string {
+  if (!Number.isFinite(value)) return '';
+  for (let digits = 1; digits < 17; digits++) {
+    const text = fieldDigits(value, digits);
+    if (Math.abs(Number(text) - value) <= SAME_NUMBER * Math.abs(value)) return text;
+  }
+  return fieldDigits(value, 17);
 }
 
 export { NO_VALUE };
