@@ -227,7 +227,9 @@ export class CalculatorApp {
       onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
     });
     this.shelf = new LazyToolShelf(must(root, '[data-testid="tool-shelf"]'), {
-      onTool: (t) => this.change(withValues(this.state, { R: t.diameterMm / 2, Rcr: t.cornerRadiusMm })),
+      onTool: (t) =>
+        this.change({ ...withValues(this.state, { R: t.diameterMm / 2, Rcr: t.cornerRadiusMm }), toolName: t.name }),
+      onUnit: (unit) => this.change(convertState(plainLengths(this.state), unit)),
       current: () => {
         const plain = plainLengths(this.state);
         const r = fieldInMm(plain, 'R');
@@ -370,6 +372,7 @@ export class CalculatorApp {
       kind: this.kind(),
       passes: this.state.passes,
     });
+    this.results.showToolName(this.state.toolName ?? null);
     this.resultBar.render(typing);
     this.sceneBox.classList.toggle('typing', typing);
     this.roughness.render(shown, this.state.unit);

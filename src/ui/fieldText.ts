@@ -4,7 +4,13 @@
  * words a switch of the link takes. Pure; re-exported by state.ts.
  */
 import { FIELDS, fieldOfPageKey, isLengthField as isLength, type PageFieldKey, urlParamOf } from '../core/input/fields';
-import { formatInputNumber, fromMm, type LengthUnit, toMm } from '../core/input/units';
+import { fromMm, type LengthUnit, toMm } from '../core/input/units';
+import { fieldDigits, formatField } from './format';
+
+export { formatField };
+
+import type { CalculatorState, TypedText } from './stateTypes';
+import { defaultFieldText } from './unitDefaults';
 
 type FieldKey = PageFieldKey;
 type Unit = LengthUnit;
@@ -15,9 +21,19 @@ export function isLengthField(key: FieldKey): boolean {
   return isLength(fieldOfPageKey(key));
 }
 
-/** Formats a number for a field: up to 6 significant digits, no float noise, no exponent for usual sizes. */
-export function formatField(value: number): string {
-  return Number.isFinite(value) ? formatInputNumber(value) : '';
+/**
+ * A length typed in `from` as the text of a field in `to`: the fewest significant digits whose
+ * conversion back gives exactly what was typed (as {@link formatField} writes it), so switching
+ * mm -> in -> mm gives back `3.5`, and 25.4 mm reads `1`.
+ */
+export function convertLength(value: number, from: Unit, to: Unit): string {
+  const converted = fromMm(toMm(value, from), to);
+  for (let digits = 1; digits < 17; digits++) {
+    const text = fieldDigits(converted, digits);
+    // Compared as numbers: the text converted back, as a field writes it, is the very number given.
+    if (Number(formatField(fromMm(toMm(Number(text), to), from))) === value) return text;
+  }
+  return fieldDigits(converted, 17);
 }
 
 const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
@@ -40,17 +56,52 @@ export function parseField(text: string): number | null {
   return Number.isFinite(v) ? v : null;
 }
 
-/** A value in mm or degrees as the text of a field in `unit`. */
+/** A value in mm or degrees as the text of a field in `unit` (a length converted without loss: {@link convertLength}). */
 export function fieldText(key: FieldKey, valueMm: number, unit: Unit): string {
-  return formatField(isLengthField(key) ? fromMm(valueMm, unit) : valueMm);
+  if (!Number.isFinite(valueMm)) return '';
+  return isLengthField(key) ? convertLength(valueMm, 'mm', unit) : formatField(valueMm);
 }
 
-/** Converts one field's text between units (angles unchanged, invalid text kept as is). */
+/** Converts one field's text between units (angles unchanged, invalid text kept as is; {@link convertLength}). */
 export function convertField(key: FieldKey, text: string, from: Unit, to: Unit): string {
   if (from === to || !isLengthField(key)) return text;
   const v = parseField(text);
   if (v === null) return text;
-  return formatField(fromMm(toMm(v, from), to));
+  return convertLength(v, from, to);
+}
+
+/**
+ * The fields of `state` in `to`, and the texts they were converted from:
+ * - a length field that still holds its default (as the page gave it, not set by the user:
+ *   `state.edited` leaves it out) becomes `to`'s own default (unitDefaults.ts: h 0.05 mm reads
+ *   0.002 in, not 0.0019685);
+ * - a field converted before and not changed since, switched back to the unit it was typed in,
+ *   reads exactly as it was typed (`3.50` stays `3.50`: `state.typed` keeps it);
+ * - every other length converts without loss ({@link convertField}), and its text is kept;
+ * - angles and invalid text stay as they are.
+ */
+export function convertFields(
+  state: Pick<CalculatorState, 'fields' | 'unit' | 'size' | 'edited' | 'typed'>,
+  to: Unit,
+): Pick<CalculatorState, 'fields' | 'typed'> {
+  const from = state.unit;
+  const fields = { ...state.fields };
+  if (from === to) return { fields, typed: state.typed };
+  const typed: Partial<Record<FieldKey, TypedText>> = { ...state.typed };
+  const size = state.size ?? 'R';
+  for (const key of Object.keys(fields) as FieldKey[]) {
+    const text = fields[key];
+    if (!isLengthField(key)) continue;
+    const before = typed[key];
+    if (before !== undefined && before.unit === to && before.shown === text) fields[key] = before.text;
+    else if (!(state.edited ?? []).includes(key) && text.trim() === defaultFieldText(key, from, size))
+      fields[key] = defaultFieldText(key, to, size);
+    else {
+      fields[key] = convertField(key, text, from, to);
+      if (fields[key] !== text) typed[key] = { unit: from, text, shown: fields[key] };
+    }
+  }
+  return { fields, typed: Object.keys(typed).length > 0 ? typed : state.typed };
 }
 
 /** The words a switch of the link takes (the field registry's values; the first is the default). */

@@ -7,7 +7,9 @@
  * The page's one rule for a length it shows (issue 21, "Units everywhere"): every length carries
  * its unit ({@link formatLenUnit}: mm or in, µm below 0.1 mm, thou below 0.01 in, never exponent
  * notation), and every roughness Rz, Ra, Rq is in µm in mm and in µin in inch
- * ({@link formatRoughness}). The micro sign is U+00B5 (`µm`, `µin`) everywhere. The bare number
+ * ({@link formatRoughness}, at the heights' resolution); every computed angle has two decimals
+ * ({@link formatAngle}); a field's number has the fewest digits that give it ({@link formatField},
+ * which fieldText.ts's conversions use). The micro sign is U+00B5 (`µm`, `µin`) everywhere. The bare number
  * ({@link formatLen}) is for what is copied, where the unit is the page's (copy.ts), and for
  * cells under a header that names the unit.
  */
@@ -86,16 +88,17 @@ export function formatLenUnit(
 
 /**
  * A roughness (Rz, Ra, Rq, or a height compared with them) given in mm, with its symbol: in µm
- * when the user works in mm and in µin in inch (roughnessUnit), whatever its size, at the `fine`
- * resolution (0.001 µm, 0.1 µin) and at least four significant digits, plain decimals, never `-0`;
- * a dash for null or a non-finite value. Used by the results' roughness rows and the Machined
- * surface view alike, so the two read the same.
+ * when the user works in mm and in µin in inch (roughnessUnit), whatever its size, at the
+ * resolution of every height on the page (`height`: 0.01 µm, 1 µin), so Rz of a 0.05 mm scallop
+ * reads `50.00 µm` as the scallop itself does in the table; at least four significant digits,
+ * plain decimals, never `-0`; a dash for null or a non-finite value. Used by the results'
+ * roughness rows and the Machined surface view alike.
  */
 export function formatRoughness(mm: number | null, unit: LengthUnit): string {
   if (mm === null || !Number.isFinite(mm)) return NO_VALUE;
   const shown = roughnessUnit(unit);
   const v = Math.abs(mm * shown.perMm) < SHOWN_ZERO_BELOW ? 0 : mm * shown.perMm;
-  const decimals = unit === 'mm' ? 3 : 1;
+  const decimals = Math.max(0, DECIMALS.height[unit] - Math.round(Math.log10(shown.perMm / fromMm(1, unit))));
   return `${formatSignificant(v, { digits: digitsFor(v, decimals), exponentBelow: 0 })} ${shown.symbol}`;
 }
 
@@ -113,15 +116,59 @@ export function formatSignedPercent(percent: number | null): string {
   return percent === null ? NO_VALUE : formatPercent(percent, 2);
 }
 
-/** An angle in degrees for captions: up to 6 significant digits, no trailing zeros. */
+/**
+ * An angle the user gave, echoed in a caption or a title (`rho = 5`, a sheet's 30 column): as its
+ * field writes it (up to 6 significant digits, no trailing zeros). A computed angle is
+ * {@link formatAngle}'s.
+ */
 export function formatDeg(deg: number): string {
   return formatSignificant(deg, { digits: 6, trimZeros: true, exponentBelow: 1e-4 });
 }
 
-/** An angle given in radians, in degrees with two decimals (captions of the step-through). */
+/** The decimals of every computed angle the page shows (0.01 deg). */
+export const ANGLE_DECIMALS = 2;
+
+/**
+ * A computed angle (the equivalent lead and tilt, the step-through's gamma) with its symbol: always
+ * {@link ANGLE_DECIMALS} decimals, so angles side by side read alike (`27.31 deg` beside
+ * `12.92 deg`); never `-0.00`; a dash for null or a non-finite value.
+ */
+export function formatAngle(deg: number | null): string {
+  if (deg === null || !Number.isFinite(deg)) return NO_VALUE;
+  const text = Math.abs(deg).toFixed(ANGLE_DECIMALS);
+  return `${deg < 0 && !/^[0.]+$/.test(text) ? '-' : ''}${text} deg`;
+}
+
+/** An angle given in radians, in degrees as {@link formatAngle} gives it (captions of the step-through). */
 export function formatRadAsDeg(rad: number): string {
-  const deg = radToDeg(rad);
-  return `${formatSignificant(deg, { digits: Math.max(3, digitsFor(deg, 2)) })} deg`;
+  return formatAngle(radToDeg(rad));
+}
+
+/**
+ * Two numbers closer than this, relative to their size, are the same number written twice: the
+ * float noise of a conversion or of a sum (1e-16 to 1e-14) lies far below it, and a typed value
+ * (at most 11 significant digits) differs from every other value of as many digits by far more.
+ */
+const SAME_NUMBER = 1e-12;
+
+/** A number with `digits` significant digits as a field writes it (no trailing zeros, no exponent for usual sizes). */
+export function fieldDigits(value: number, digits: number): string {
+  return formatSignificant(value, { digits, trimZeros: true, exponentBelow: 1e-5 });
+}
+
+/**
+ * Formats a number for a field: the fewest significant digits that give the number itself (within
+ * float noise, {@link SAME_NUMBER}), so `0.762` not `0.7619999999999999` and `0.5` not `0.500000`,
+ * and nothing is lost (a tool's 0.1181102362205 in stays that); no exponent for usual sizes. Empty
+ * for a non-finite value.
+ */
+export function formatField(value: number): string {
+  if (!Number.isFinite(value)) return '';
+  for (let digits = 1; digits < 17; digits++) {
+    const text = fieldDigits(value, digits);
+    if (Math.abs(Number(text) - value) <= SAME_NUMBER * Math.abs(value)) return text;
+  }
+  return fieldDigits(value, 17);
 }
 
 export { NO_VALUE };

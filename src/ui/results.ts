@@ -15,6 +15,7 @@ import type { Shown } from './freshness';
 import { curvedMeaning, OtherResults } from './resultsOther';
 import { CROSS_AXIS_NOTE, curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
 import { ScrollCues } from './scrollCue';
+import { setShownToolName } from './toolName';
 
 export { curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
 
@@ -57,6 +58,8 @@ export class ResultsPanel {
   private readonly classicOnly: readonly HTMLElement[];
   /** The shaded edge of the table's box while part of the table is scrolled out of it. */
   private readonly cues = new ScrollCues();
+  /** The name of the tool the inputs hold, under the headline (hidden without one). */
+  private readonly toolName: HTMLElement;
 
   constructor(private readonly root: HTMLElement) {
     this.section = must(root, '.results');
@@ -76,6 +79,23 @@ export class ResultsPanel {
     this.other = new OtherResults(root);
     this.classicDetails = must(root, '.results .details[data-role="classic"]');
     this.classicOnly = [...root.querySelectorAll<HTMLElement>('[data-role="not-three-axis"]')];
+    this.toolName = html('p', { class: 'tool-name', 'data-testid': 'result-tool-name' });
+    this.toolName.hidden = true;
+    // A long name wraps rather than widening the column (set from script: the page's CSP has no inline styles).
+    this.toolName.style.overflowWrap = 'anywhere';
+    this.toolName.style.margin = '0.25em 0 0';
+    must(root, '.headline .big').after(this.toolName);
+  }
+
+  /**
+   * Names the tool the inputs hold (a saved or library tool) under the headline, as text; hidden
+   * for none. The shop sheet reads the same name (toolName.ts shownToolName).
+   */
+  showToolName(name: string | null): void {
+    setShownToolName(name);
+    const text = name === null ? '' : `Tool: ${name}`;
+    if (this.toolName.textContent !== text) this.toolName.textContent = text;
+    this.toolName.hidden = name === null;
   }
 
   private set(testId: string, text: string): void {

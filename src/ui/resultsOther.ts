@@ -13,7 +13,7 @@ import type { CurvedReply, ThreeAxisReply } from '../worker/pageProtocol';
 import type { SolveMode } from '../worker/protocol';
 import { setCopyValue } from './copy';
 import { html } from './dom';
-import { formatDeg, formatLen, formatLenUnit, formatSignedLenUnit } from './format';
+import { formatAngle, formatLen, formatLenUnit, formatSignedLenUnit } from './format';
 
 type CurvedOk = Extract<CurvedReply, { ok: true }>;
 type ThreeAxisOk = Extract<ThreeAxisReply, { ok: true }>;
@@ -21,11 +21,6 @@ type ThreeAxisOk = Extract<ThreeAxisReply, { ok: true }>;
 /** The test ids of the three-axis block while it is on screen (elsewhere neutral ones: ids stay unique). */
 const STEP_ID = 'result-programmed-step';
 const INTERVAL_ID = 'result-exact-interval';
-
-/** An angle in degrees with its symbol (never -0). */
-function deg(value: number): string {
-  return `${formatDeg(value + 0)} deg`;
-}
 
 function must<T extends Element>(root: ParentNode, selector: string): T {
   const found = root.querySelector<T>(selector);
@@ -115,8 +110,8 @@ export class OtherResults {
     this.interval.textContent = text(a?.intervalMm ?? null);
     copy(this.interval, a?.intervalMm ?? null);
     this.cusp.textContent = text(a?.cuspHeightMm ?? null, 'height');
-    this.lead.textContent = a === null ? NO_VALUE : deg(a.leadDeg);
-    this.tilt.textContent = a === null ? NO_VALUE : deg(a.tiltDeg);
+    this.lead.textContent = formatAngle(a?.leadDeg ?? null);
+    this.tilt.textContent = formatAngle(a?.tiltDeg ?? null);
   }
 
   /** The doubly curved comparison rows (forward), under the table's head; the notes they add. */

@@ -58,7 +58,7 @@ export class RoughnessPanel {
     // Roughness in µm (mm) or µin (inch), as the Machined surface view gives it (format.ts).
     const rough = (mm: number | undefined) => (r === null || mm === undefined ? NO_VALUE : formatRoughness(mm, unit));
     const len = (mm: number | undefined) =>
-      r === null || mm === undefined ? NO_VALUE : formatLenUnit(mm, unit, 'fine');
+      r === null || mm === undefined ? NO_VALUE : formatLenUnit(mm, unit, 'height');
     this.set('result-rz', rough(r?.rzMm));
     this.set('result-ra', rough(r?.raMm));
     this.set('result-rq', rough(r?.rqMm));

@@ -1,5 +1,5 @@
 /**
- * The tools a shop saves in its browser (name, D, corner radius, flutes), kept in localStorage as
+ * The tools a shop saves in its browser (name, unit, D, corner radius, flutes), kept in localStorage as
  * JSON. Whatever the storage holds is checked as a tool library is (toolLibrary.ts): a corrupt or
  * hostile entry is dropped with a line saying so, a storage that throws (disabled, private mode,
  * full) leaves the list in memory with a line saying so, and nothing else is lost.
@@ -44,7 +44,9 @@ export function readSavedTools(text: string | null): { tools: LibraryTool[]; pro
     const e: unknown = list[read];
     const entry = typeof e === 'object' && e !== null ? (e as Record<string, unknown>) : {};
     const name = typeof entry.name === 'string' ? entry.name : '';
-    const checked = checkTool(name, entry.diameterMm, entry.cornerRadiusMm, entry.flutes ?? null);
+    // Tools saved before units were kept have none: they were saved in mm, as the page then listed them.
+    const unit = entry.unit === 'in' ? 'in' : 'mm';
+    const checked = checkTool(name, entry.diameterMm, entry.cornerRadiusMm, entry.flutes ?? null, unit);
     if (checked.ok && checked.tool.name !== '') tools.push(checked.tool);
     else unreadable++;
   }

@@ -7,11 +7,13 @@ import { FIELDS, type FieldId, fieldOfPageKey, PAGE_FIELD_KEYS, urlParamOf } fro
 import { toMm } from '../core/input/units';
 import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
-import { choice, convertField, fieldText, formatField, isLengthField, parseField } from './fieldText';
+import { choice, convertFields, fieldText, formatField, isLengthField, parseField } from './fieldText';
 import { repeatedParamNotices } from './linkRepeats';
 import { parseMachine, threeAxisNeeded, threeAxisSearch } from './machineState';
 import type { CalculatorState, FieldKey, SurfaceKind, Target, ToolSize, Unit } from './stateTypes';
 import { parseLinkRadii, RADIUS_PARAM, signedRadiusOf } from './surfaceState';
+import { dropToolName, toolNameOfLink, writeToolName } from './toolName';
+import { DEFAULT_FIELDS_MM } from './unitDefaults';
 
 export { choice, convertField, fieldText, formatField, isLengthField, parseField, withDecimalPoint } from './fieldText';
 export { PRESETS, type Preset, presetOf } from './toolPresets';
@@ -23,23 +25,7 @@ export function sizeIsDiameter(state: CalculatorState): boolean {
   return state.size === 'D';
 }
 
-/** Defaults in mm: the paper's Tool 1, condition 1 (L is its exact step-over, rounded), no tilt. */
-export const DEFAULT_FIELDS_MM: Readonly<Record<FieldKey, string>> = {
-  R: '3',
-  Rcr: '1',
-  rho: '5',
-  tilt: '0',
-  h: '0.05',
-  L: '2.9',
-  ra: '0.0125',
-  Rs: '50',
-  slope: '30',
-  psi: '0',
-  Rf: '80',
-  Rc: '40',
-  Lxy: '2.5',
-  dz: '1',
-};
+export { DEFAULT_FIELDS_IN, DEFAULT_FIELDS_MM } from './unitDefaults';
 
 /** The page's text fields, in the form's order (the field registry's). */
 export const FIELD_KEYS: readonly FieldKey[] = PAGE_FIELD_KEYS;
@@ -77,10 +63,19 @@ export function withSize(state: CalculatorState, size: ToolSize): CalculatorStat
   return { ...state, size, fields: { ...state.fields, R } };
 }
 
+/**
+ * The state in unit `to`: untouched defaults become `to`'s own defaults, the values the user set
+ * (typed, a preset or a tool: `edited`) convert without loss, and back as typed (fieldText.ts convertFields).
+ */
 export function convertState(state: CalculatorState, to: Unit): CalculatorState {
-  const fields = { ...state.fields };
-  for (const key of FIELD_KEYS) fields[key] = convertField(key, state.fields[key], state.unit, to);
-  return { ...state, unit: to, fields };
+  return { ...state, unit: to, ...convertFields(state, to) };
+}
+
+/** The keys of `state.edited` with `keys` added (the same array when nothing is new). */
+function editedWith(state: CalculatorState, keys: readonly FieldKey[]): readonly FieldKey[] {
+  const before = state.edited ?? [];
+  const added = keys.filter((k) => !before.includes(k));
+  return added.length === 0 ? before : [...before, ...added];
 }
 
 export function defaultState(unit: Unit = 'mm', mode: SolveMode = 'forward'): CalculatorState {
@@ -102,7 +97,7 @@ export function defaultState(unit: Unit = 'mm', mode: SolveMode = 'forward'): Ca
 
 /** A state with one field's text replaced. */
 export function withField(state: CalculatorState, key: FieldKey, text: string): CalculatorState {
-  return { ...state, fields: { ...state.fields, [key]: text } };
+  return dropToolName({ ...state, fields: { ...state.fields, [key]: text }, edited: editedWith(state, [key]) }, [key]);
 }
 
 /** A state with fields set from values in mm and degrees (presets, the paper's conditions). */
@@ -115,7 +110,8 @@ export function withValues(
     const v = values[key];
     if (v !== undefined) fields[key] = fieldText(key, key === 'R' && sizeIsDiameter(state) ? 2 * v : v, state.unit);
   }
-  return { ...state, fields };
+  const set = FIELD_KEYS.filter((k) => values[k] !== undefined);
+  return dropToolName({ ...state, fields, edited: editedWith(state, set) }, set);
 }
 
 export interface ParsedUrl {
@@ -176,6 +172,7 @@ export function parseUrl(search: string): ParsedUrl {
       notices.push(`${name}="${text.slice(0, 20)}" in the link is not a number; using the default ${defaults[key]}.`);
     else fields[key] = text.trim();
   }
+  const toolName = toolNameOfLink(params);
   const embedText = params.get(param('embed'));
   const embed = embedText !== null && (FIELDS.embed.values as readonly string[]).includes(embedText);
   const state: CalculatorState = {
@@ -190,6 +187,7 @@ export function parseUrl(search: string): ParsedUrl {
     machine,
     passes,
     fields,
+    ...(toolName === undefined ? {} : { toolName }),
   };
   return {
     state:
@@ -269,6 +267,7 @@ export function toSearch(state: CalculatorState, extra: Readonly<Record<string, 
   const set = (id: FieldId, value: string) => params.set(param(id), value);
   set(sizeIsDiameter(state) ? 'D' : 'R', state.fields.R);
   set('Rcr', state.fields.Rcr);
+  writeToolName(params, state);
   if (state.machine === '3axis') {
     for (const [name, value] of threeAxisSearch(state)) params.set(name, value);
     for (const [k, v] of Object.entries(extra)) params.set(k, v);

@@ -27,6 +27,13 @@ export type Machine = '5axis' | '3axis';
 /** Three-axis pass strategy: raster (parallel passes) or waterline (Z-level). */
 export type Passes = ThreeAxisPasses;
 
+/** A length field's text as typed in `unit`, and the text a unit switch made of it (`shown`). */
+export interface TypedText {
+  readonly unit: Unit;
+  readonly text: string;
+  readonly shown: string;
+}
+
 export interface CalculatorState extends CurvedFields {
   readonly unit: Unit;
   readonly mode: SolveMode;
@@ -47,4 +54,13 @@ export interface CalculatorState extends CurvedFields {
   readonly fields: Readonly<Record<FieldKey, string>>;
   /** The tool size field: radius R (default, also when missing) or diameter D. */
   readonly size?: ToolSize;
+  /**
+   * The fields the user set on this page (typed, a preset, a tool): a unit switch converts them
+   * without loss, while the others, still at their defaults, become the new unit's defaults.
+   */
+  readonly edited?: readonly FieldKey[];
+  /** What each length field converted by a unit switch was typed as (a switch back restores it exactly). */
+  readonly typed?: Readonly<Partial<Record<FieldKey, TypedText>>>;
+  /** The name of the tool the tool fields hold (a saved or library tool), plain text; dropped when D or Rcr is edited. */
+  readonly toolName?: string;
 }

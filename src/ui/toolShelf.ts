@@ -1,17 +1,23 @@
 /**
  * The shop's own tools on the page: saved tools kept in the browser (savedTools.ts) and a Fusion
  * 360 tool library imported through a file picker or dropped on the shelf (core/input/toolLibrary.ts);
- * choosing one fills the tool fields. Names are shown as text (textContent), never as HTML.
+ * choosing one fills the tool fields and names the answer; each tool is listed in its own unit, and
+ * one in another unit than the page's offers that unit in one tap. Names are shown as text
+ * (textContent), never as HTML.
  */
 import { checkTool, LIBRARY_MAX_CHARS, type LibraryTool, parseFusionLibrary } from '../core/input/toolLibrary';
-import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
+import { type LengthUnit, unitSymbol } from '../core/input/units';
 import { html } from './dom';
+import { fieldText } from './fieldText';
 import { SavedTools, type ToolStorage } from './savedTools';
+import { toolLabel, toolLength } from './toolName';
 
 /** What the shelf asks of the page. */
 export interface ToolShelfEvents {
-  /** A tool was chosen: fill the tool fields with its D and corner radius (mm). */
+  /** A tool was chosen: fill the tool fields with its D and corner radius (mm), and keep its name. */
   readonly onTool: (tool: LibraryTool) => void;
+  /** The user took the unit a chosen tool is sized in (the one-tap offer after choosing it). */
+  readonly onUnit: (unit: LengthUnit) => void;
   /** The tool the fields hold now: D and corner radius in mm (text when a field is not a number). */
   readonly current: () => { readonly diameterMm: number | string; readonly cornerRadiusMm: number | string };
 }
@@ -26,13 +32,6 @@ function browserStorage(): ToolStorage | null {
   } catch {
     return null;
   }
-}
-
-/** A tool as an option's text: its name, D and corner radius in the page's unit, flutes. */
-export function toolLabel(tool: LibraryTool, unit: LengthUnit): string {
-  const len = (mm: number) => `${formatInputNumber(fromMm(mm, unit))} ${unitSymbol(unit)}`;
-  const flutes = tool.flutes === null ? '' : `, ${tool.flutes} flutes`;
-  return `${tool.name}: D ${len(tool.diameterMm)}, corner R ${len(tool.cornerRadiusMm)}${flutes}`;
 }
 
 /** The saved tools' list, the save and delete controls, and the library import with its list. */
@@ -125,13 +124,16 @@ export class ToolShelf {
     if (this.saved.problem !== null) this.say([this.saved.problem]);
   }
 
-  /** Draws the lists' labels in the page's unit (only when it changed). */
+  /** The page's unit (a tool is listed in its own; a new tool is saved in this one). */
   render(unit: LengthUnit): void {
     if (unit === this.unit) return;
     this.unit = unit;
-    this.drawSaved();
-    this.drawLibrary();
+    // The offer to switch to a chosen tool's unit is taken or moot.
+    this.offer?.remove();
+    this.offer = null;
   }
+
+  private offer: HTMLButtonElement | null = null;
 
   private choose(tools: readonly LibraryTool[], list: HTMLSelectElement): void {
     const tool = tools[Number(list.value)];
@@ -140,16 +142,25 @@ export class ToolShelf {
     this.name.value = tool.name;
     this.flutes.value = tool.flutes === null ? '' : String(tool.flutes);
     this.say([`Filled D and the corner radius of "${tool.name}".`]);
+    if (tool.unit === this.unit) return;
+    // One tap to the unit the tool is sized in (the fields then read its own numbers: 0.5, 0.03).
+    const word = tool.unit === 'in' ? 'inch' : 'mm';
+    const offer = html('button', { type: 'button', 'data-testid': 'tool-unit-offer' }, `Work in ${word}`);
+    offer.title = `"${tool.name}" is sized in ${word}: show every number in ${word}.`;
+    offer.addEventListener('click', () => this.events.onUnit(tool.unit));
+    this.status.append(html('p', {}, `This tool is sized in ${word} (D ${toolLength(tool.diameterMm, tool.unit)}). `));
+    this.status.lastElementChild?.append(offer);
+    this.offer = offer;
   }
 
   private saveCurrent(): void {
     const { diameterMm, cornerRadiusMm } = this.events.current();
     const flutesText = this.flutes.value.trim();
     const flutes = flutesText === '' ? null : Number(flutesText);
-    const d = typeof diameterMm === 'number' ? `D${formatInputNumber(fromMm(diameterMm, this.unit))}` : 'tool';
-    const r = typeof cornerRadiusMm === 'number' ? ` R${formatInputNumber(fromMm(cornerRadiusMm, this.unit))}` : '';
+    const d = typeof diameterMm === 'number' ? `D${fieldText('R', diameterMm, this.unit)}` : 'tool';
+    const r = typeof cornerRadiusMm === 'number' ? ` R${fieldText('R', cornerRadiusMm, this.unit)}` : '';
     const name = this.name.value.trim() || `${d}${r} ${unitSymbol(this.unit)}`;
-    const checked = checkTool(name, diameterMm, cornerRadiusMm, flutes);
+    const checked = checkTool(name, diameterMm, cornerRadiusMm, flutes, this.unit);
     if (!checked.ok) {
       this.say([`Not saved: the tool's ${checked.field} ${checked.why}.`]);
       return;
@@ -195,7 +206,7 @@ export class ToolShelf {
   private fill(list: HTMLSelectElement, tools: readonly LibraryTool[], prompt: string): void {
     list.replaceChildren(html('option', { value: '' }, prompt));
     tools.forEach((t, i) => {
-      list.append(html('option', { value: String(i) }, toolLabel(t, this.unit)));
+      list.append(html('option', { value: String(i) }, toolLabel(t)));
     });
   }
 

@@ -165,7 +165,8 @@ describe('calculator page in headless Chromium', () => {
     await page.locator('input[name="unit"][value="in"]').check();
     await expect.poll(() => new URL(page.url()).searchParams.get('unit')).toBe('in');
     const url = page.url();
-    expect(new URL(url).searchParams.get('R')).toBe('0.23622');
+    // R = 6 mm from the link (not the default): converted without loss (issue 28 point 11).
+    expect(new URL(url).searchParams.get('R')).toBe('0.236220472441');
     // 2.16898 mm = 0.08539 in, shown with 5 decimals.
     await expect.poll(() => text(page, 'result-exact-half')).toMatch(/^0\.0853\d in$/);
     const inches = await text(page, 'result-exact-half');
@@ -175,7 +176,7 @@ describe('calculator page in headless Chromium', () => {
     await again.goto(url);
     await again.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();
     expect(await text(again, 'result-exact-half')).toBe(inches);
-    expect(await again.getByTestId('input-R').inputValue()).toBe('0.23622');
+    expect(await again.getByTestId('input-R').inputValue()).toBe('0.236220472441');
     expect(historyLength).toBe(historyAtLoad); // replaceState: no history entries added
     await again.goto(`${site.url()}?R=abc&Rcr=1&rho=5`);
     await again.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor();

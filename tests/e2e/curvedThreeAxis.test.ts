@@ -125,8 +125,9 @@ describe.each([
     expect(await page.getByTestId('result-programmed-step').getAttribute('data-copy')).toBe(formatLen(step, 'mm'));
     // L along the surface and the equivalent posture follow it.
     expect(await text(page, 'result-exact-interval')).toMatch(/\d/);
-    expect(await text(page, 'result-equivalent-lead')).toBe('30 deg');
-    expect(await text(page, 'result-equivalent-tilt')).toBe('0 deg');
+    // Computed angles with two decimals each (format.ts formatAngle, issue 28 point 11).
+    expect(await text(page, 'result-equivalent-lead')).toBe('30.00 deg');
+    expect(await text(page, 'result-equivalent-tilt')).toBe('0.00 deg');
     // Nor are the five-axis ones (flank widths, the surface kind) in three-axis machining.
     expect(await page.getByTestId('result-width-right').isVisible()).toBe(false);
     expect(await page.getByTestId('surface-kind').isVisible()).toBe(false);
@@ -182,7 +183,7 @@ describe('roughness, a target Ra and the sliders at a doubly curved point; three
     const h = doublyCurvedHeightForRaMm(TOOL, 'one-way', radii, 0.004);
     const L = compareDoublyCurved({ ...TOOL, pattern: 'one-way', ...radii, scallopHeightMm: h }).exact.intervalMm;
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(L, 'mm'));
-    expect(await text(page, 'result-ra-height')).toBe(formatLenUnit(h, 'mm', 'fine'));
+    expect(await text(page, 'result-ra-height')).toBe(formatLenUnit(h, 'mm', 'height'));
     expect(await text(page, 'error-ra')).toBe('');
     // Above the largest Ra at this point: said on the field, no answer.
     await page.getByTestId('input-ra').fill('5');

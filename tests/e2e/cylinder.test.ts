@@ -300,7 +300,7 @@ describe('curved surfaces on the page', () => {
     const h = scallopHeightForRaMm(TOOL, 'one-way', 0.01, surface);
     const e = exactForward(forwardInput(TOOL, 'one-way', h, surface));
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(e.intervalMm, 'mm'));
-    expect(await text(page, 'result-ra-height')).toBe(formatLenUnit(h, 'mm', 'fine'));
+    expect(await text(page, 'result-ra-height')).toBe(formatLenUnit(h, 'mm', 'height'));
     expect(await text(page, 'error-ra')).toBe('');
     // No worker was restarted on the way (a restart says so in the notice).
     expect(await text(page, 'notice')).toBe('');

@@ -136,7 +136,8 @@ describe('tools of the shop (phone)', () => {
       '<img src=x onerror="window.__pwned=1">: D 8 mm, corner R 0 mm',
     );
     expect(await page.evaluate(() => (window as unknown as { __pwned?: number }).__pwned)).toBeUndefined();
-    await list.selectOption({ label: '1/4 ball: D 6.35 mm, corner R 3.175 mm, 2 flutes' });
+    // An inch tool is listed in inches (its own unit), on a page in mm.
+    await list.selectOption({ label: '1/4 ball: D 0.25 in, corner R 0.125 in, 2 flutes' });
     await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('6.35');
     expect(await page.getByTestId('input-Rcr').inputValue()).toBe('3.175');
     await expect
@@ -180,11 +181,12 @@ describe('tools of the shop (phone)', () => {
     await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
     await page.locator('[data-testid="tool-shelf"] summary').tap();
     const saved = page.getByTestId('saved-tools');
-    const label = 'Shop D10 R1.5: D 0.393701 in, corner R 0.0590551 in, 4 flutes';
+    // Saved in mm, listed in mm on an inch page; chosen, it fills the inch fields without loss.
+    const label = 'Shop D10 R1.5: D 10 mm, corner R 1.5 mm, 4 flutes';
     await expect.poll(() => saved.locator('option').allTextContents()).toContain(label);
     await saved.selectOption({ label });
-    await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('0.393701');
-    expect(await page.getByTestId('input-Rcr').inputValue()).toBe('0.0590551');
+    await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('0.3937007874016');
+    expect(await page.getByTestId('input-Rcr').inputValue()).toBe('0.0590551181102');
     // Corrupt storage: the page still opens; the shelf (loaded when first opened) says so, and the list starts empty.
     await page.evaluate(() => localStorage.setItem('path-interval.saved-tools.v1', '{not json'));
     await page.reload();
@@ -216,5 +218,76 @@ describe('tools of the shop (phone)', () => {
     await expect.poll(() => text(again, 'result-exact-interval')).toBe(answer);
     expect(await again.getByTestId('input-R').inputValue()).toBe('6');
     expect(await again.getByTestId('input-Rcr').inputValue()).toBe('0.79375');
+  });
+});
+
+/** A library of one inch tool with a realistic name (Fusion 360's export). */
+const INCH_TOOL = 'Harvey 33531-C3 1/2 3FL corner radius .030 AlTiN';
+const INCH_LIBRARY = JSON.stringify({
+  data: [
+    { type: 'bull nose end mill', unit: 'inches', description: INCH_TOOL, geometry: { DC: 0.5, RE: 0.03, NOF: 3 } },
+  ],
+});
+
+describe('an inch tool from a library, on a page in mm (phone; issue 28 point 3)', () => {
+  it('is listed in inch, offers inch in one tap, and its name goes with the answer and the link', async () => {
+    // A fresh page: the paper's tool and h, in mm.
+    const page = await open('');
+    await page.locator('[data-testid="tool-shelf"] summary').tap();
+    await page.getByTestId('tool-library-import').setInputFiles({
+      name: 'harvey.json',
+      mimeType: 'application/json',
+      buffer: Buffer.from(INCH_LIBRARY),
+    });
+    const list = page.getByTestId('library-tools');
+    const label = `${INCH_TOOL}: D 0.5 in, corner R 0.03 in, 3 flutes`;
+    await expect.poll(() => list.locator('option').allTextContents()).toContain(label);
+    await list.selectOption({ label });
+    // Chosen: the exact lengths in mm, the tool named with the answer, inch offered.
+    await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('12.7');
+    expect(await page.getByTestId('input-Rcr').inputValue()).toBe('0.762');
+    await expect.poll(() => text(page, 'result-tool-name')).toBe(`Tool: ${INCH_TOOL}`);
+    const offer = page.getByTestId('tool-unit-offer');
+    expect(await offer.textContent()).toBe('Work in inch');
+    await keepShot(page, 'shop-inch-tool-offer-phone', { fullPage: true });
+    // One tap: the page in inch, the tool's own numbers, h the inch default, the answer in inch.
+    await offer.tap();
+    await expect.poll(() => page.getByTestId('input-R').inputValue()).toBe('0.5');
+    expect(await page.locator('input[name="unit"][value="in"]').isChecked()).toBe(true);
+    expect(await page.getByTestId('input-Rcr').inputValue()).toBe('0.03');
+    expect(await page.getByTestId('input-h').inputValue()).toBe('0.002');
+    const want = cliInterval(6.35, 0.762, 0.0508) / 25.4;
+    await expect.poll(() => headline(page)).toBeCloseTo(want, 5);
+    expect(await text(page, 'result-exact-interval')).toMatch(/ in$/);
+    expect(await text(page, 'result-tool-name')).toBe(`Tool: ${INCH_TOOL}`);
+    expect(await offer.count()).toBe(0);
+    // Copy link carries the name; the link opens with it.
+    await page.getByTestId('copy-link').tap();
+    await expect.poll(() => text(page, 'copy-link-status')).toMatch(/Link copied/);
+    const link = await page.evaluate(() => navigator.clipboard.readText());
+    expect(new URL(link).searchParams.get('tool')).toBe(INCH_TOOL);
+    const again = await open(new URL(link).search);
+    await expect.poll(() => text(again, 'result-tool-name')).toBe(`Tool: ${INCH_TOOL}`);
+    expect(await again.getByTestId('input-R').inputValue()).toBe('0.5');
+    await expect.poll(() => headline(again)).toBeCloseTo(want, 5);
+    // Another D: not that tool any more, its name goes.
+    await typeInto(again, 'input-R', '0.375', PHONE_TYPING);
+    await again.keyboard.press('Enter');
+    await expect.poll(() => again.getByTestId('result-tool-name').isVisible()).toBe(false);
+    await expect.poll(() => new URL(again.url()).searchParams.has('tool')).toBe(false);
+  });
+
+  it('a hostile name in a link is shown as text, cut to 80 characters', async () => {
+    const hostile = `<img src=x onerror="window.__pwned=1">\u202e${'W'.repeat(200)}`;
+    const page = await open(`?D=0.5&Rcr=0.03&rho=5&h=0.002&unit=in&tool=${encodeURIComponent(hostile)}`);
+    const shown = await text(page, 'result-tool-name');
+    expect(shown.startsWith('Tool: <img src=x onerror="window.__pwned=1"> WWW')).toBe(true);
+    expect(shown).toHaveLength('Tool: '.length + 80);
+    expect(await page.locator('.results img').count()).toBe(0);
+    expect(await page.evaluate(() => (window as unknown as { __pwned?: number }).__pwned)).toBeUndefined();
+    // No horizontal overflow from the long name on the phone.
+    expect(await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth)).toBe(
+      0,
+    );
   });
 });

@@ -41,11 +41,12 @@ describe('target Ra and roughness in headless Chromium', () => {
   it('switching the target to Ra and typing one: result-ra reads the typed Ra, L is the core answer', async () => {
     const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     // The target h: Rz, Ra, Rq of the surface at the exact step-over, and the rule of thumb.
-    await expect.poll(() => text(page, 'result-ra')).toBe('12.417 \u00b5m');
-    expect(await text(page, 'result-rz')).toBe('50.000 \u00b5m');
+    // Roughness at the resolution of every height, 0.01 µm (issue 28 point 11): Rz as the table's 50.00 µm.
+    await expect.poll(() => text(page, 'result-ra')).toBe('12.42 \u00b5m');
+    expect(await text(page, 'result-rz')).toBe('50.00 \u00b5m');
     const ra = exactRoughness(forwardInput(TOOL, 'one-way', 0.05)).raMm;
     expect(await text(page, 'result-ra-rule')).toBe(
-      `Rule of thumb Ra ~ h/4 = 12.500 \u00b5m: +${((100 * (0.0125 - ra)) / ra).toFixed(2)} % against the exact Ra.`,
+      `Rule of thumb Ra ~ h/4 = 12.50 \u00b5m: +${((100 * (0.0125 - ra)) / ra).toFixed(2)} % against the exact Ra.`,
     );
     expect(await page.getByTestId('input-ra').isVisible()).toBe(false);
     await page.locator('input[name="target"][value="ra"]').check();
@@ -56,20 +57,20 @@ describe('target Ra and roughness in headless Chromium', () => {
     const f = forwardOfRaTarget(v.value);
     const L = exactForward(f).intervalMm;
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(`${L.toFixed(4)} mm`);
-    expect(await text(page, 'result-ra')).toBe('10.000 \u00b5m');
-    expect(await text(page, 'result-ra-height')).toBe(`${(1000 * f.scallopHeightMm).toFixed(3)} \u00b5m`);
+    expect(await text(page, 'result-ra')).toBe('10.00 \u00b5m');
+    expect(await text(page, 'result-ra-height')).toBe(`${(1000 * f.scallopHeightMm).toFixed(2)} \u00b5m`);
     await expect.poll(() => page.url()).toMatch(/target=ra&ra=0\.01&/);
     // The slider moves the Ra by one step and the result follows.
     await page.getByTestId('slider-ra').focus();
     await page.keyboard.press('ArrowRight');
-    await expect.poll(() => text(page, 'result-ra')).toBe('10.100 \u00b5m');
+    await expect.poll(() => text(page, 'result-ra')).toBe('10.10 \u00b5m');
     expect(errors).toEqual([]);
     await keepShot(page, 'target-ra');
   });
 
   it('an Ra above the maximum shows the message naming the limit (in the unit on screen) and dashes', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&target=ra&ra=0.01&unit=mm');
-    await expect.poll(() => text(page, 'result-ra')).toBe('10.000 \u00b5m');
+    await expect.poll(() => text(page, 'result-ra')).toBe('10.00 \u00b5m');
     await page.getByTestId('input-ra').fill('0.5');
     const max = maxRaMm(TOOL, 'one-way');
     await expect
@@ -80,12 +81,12 @@ describe('target Ra and roughness in headless Chromium', () => {
     expect(await text(page, 'result-ra-rule')).toBe('');
     await keepShot(page, 'target-ra-beyond-max');
     await page.locator('input[name="unit"][value="in"]').check();
-    // The fields as converted on screen (R = 0.11811 in, Rcr = 0.0393701 in): the limit answers them.
-    const inch = (mm: number) => toMm(Number(formatInputNumber(fromMm(mm, 'in'))), 'in');
-    const maxInch = maxRaMm({ ...TOOL, toolRadiusMm: inch(3), cornerRadiusMm: inch(1) }, 'one-way');
+    // The tool of the link is the page's default (R 3, Rcr 1): in inch the inch default tool (R 0.125 in,
+    // Rcr 0.03 in); the Ra typed converts without loss (issue 28 point 11). The limit answers them.
+    const maxInch = maxRaMm({ ...TOOL, toolRadiusMm: toMm(0.125, 'in'), cornerRadiusMm: toMm(0.03, 'in') }, 'one-way');
     await expect
       .poll(() => text(page, 'error-ra'))
-      .toContain(`must be below ${formatInputNumber(fromMm(maxInch, 'in'))} in (got 0.019685)`);
+      .toContain(`must be below ${formatInputNumber(fromMm(maxInch, 'in'))} in (got 0.01968503937008)`);
   });
 });
 
@@ -110,14 +111,14 @@ describe('Machined surface view in headless Chromium', () => {
     expect(await line.textContent()).toMatch(/512 x 512 cells, 5 passes/);
     const view = page.getByTestId('surface-view');
     expect(await view.getByTestId('surface-exaggeration').textContent()).toMatch(/exaggerated x\d+/);
-    expect(await view.getByTestId('surface-legend').textContent()).toMatch(/0\.000 \u00b5m.*\u00b5m/);
+    expect(await view.getByTestId('surface-legend').textContent()).toMatch(/0\.00 \u00b5m.*\u00b5m/);
     const trace = view.getByTestId('surface-trace');
     expect(await trace.locator('polyline.trace-line').count()).toBe(1);
     const labels = (await trace.locator('text').allTextContents()).join(' | ');
-    // Roughness in µm, as the results' rows give it.
-    expect(labels).toMatch(/Rz 4\d\.\d{3} \u00b5m/);
-    expect(labels).toMatch(/Ra 12\.\d{3} \u00b5m/);
-    expect(labels).toMatch(/Rq 14\.\d{3} \u00b5m/);
+    // Roughness in µm, as the results' rows give it (0.01 µm, as every height).
+    expect(labels).toMatch(/Rz 4\d\.\d{2} \u00b5m/);
+    expect(labels).toMatch(/Ra 12\.\d{2} \u00b5m/);
+    expect(labels).toMatch(/Rq 14\.\d{2} \u00b5m/);
     // The 3D view drew the mesh: its canvas is not blank.
     const canvas = view.getByTestId('surface-canvas');
     await expect.poll(async () => (await canvas.screenshot()).length).toBeGreaterThan(3000);

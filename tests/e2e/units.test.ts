@@ -12,7 +12,7 @@
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { axeViolations } from './axe';
-import { keepShot, pageSettled, showView, useSite } from './harness';
+import { keepShot, pageSettled, showView, typeInto, useSite } from './harness';
 
 const site = useSite('docs/units');
 const VIEWPORT = { width: 1440, height: 900 };
@@ -237,4 +237,62 @@ describe('the results and the Machined surface view agree on roughness', () => {
         expect(await axeViolations(page)).toEqual([]);
       }
     }, 120_000);
+});
+
+/** Shown text that is not a number the page may show: NaN, Infinity, or a negative zero. */
+const NOT_A_NUMBER = /NaN|Infinity|(?<![\d.])-0(?:\.0+)?(?![\d.])/;
+
+describe('one rule for each kind of number, and the unit switch (issue 28 point 11; 1440 x 900, light)', () => {
+  it('computed angles side by side with two decimals each (three-axis raster)', async () => {
+    const { page, errors } = await site.open(
+      '?D=6&Rcr=1&h=0.005&unit=mm&machine=3axis&slope=30&rasterAngle=30',
+      VIEWPORT,
+      'light',
+    );
+    const angle = /^\d{1,2}\.\d{2} deg$/;
+    await expect.poll(() => text(page, 'result-equivalent-lead')).toMatch(angle);
+    expect(await text(page, 'result-equivalent-tilt')).toMatch(angle);
+    expect(await page.locator('.results').textContent()).not.toMatch(NOT_A_NUMBER);
+    expect(errors).toEqual([]);
+  }, 60_000);
+
+  it('Rz reads as the scallop in the table; mm -> inch gives the round defaults, and an edited h comes back as typed', async () => {
+    const { page, errors } = await site.open('', VIEWPORT, 'light');
+    const field = (id: string) => page.getByTestId(`input-${id}`).inputValue();
+    const unit = (u: 'mm' | 'in') => page.locator(`input[name="unit"][value="${u}"]`).check();
+    await expect.poll(() => text(page, 'result-rz')).toBe('50.00 \u00b5m');
+    expect(await text(page, 'table-exact-real-h')).toBe('50.00 \u00b5m');
+    // Untouched defaults: the inch page's own, never 0.23622 / 0.0393701 / 0.0019685 / 3.14961.
+    await unit('in');
+    await expect.poll(() => field('R')).toBe('0.25');
+    expect([await field('Rcr'), await field('h'), await field('feed-radius'), await field('cross-radius')]).toEqual([
+      '0.03',
+      '0.002',
+      '3',
+      '1.5',
+    ]);
+    await expect.poll(() => text(page, 'result-rz')).toBe('2000 \u00b5in');
+    await expect.poll(() => text(page, 'table-exact-real-h')).toBe('2.000 thou');
+    expect(await page.locator('.results').textContent()).not.toMatch(NOT_A_NUMBER);
+    await keepShot(page, 'units-switch-inch-defaults');
+    // And back: the mm defaults.
+    await unit('mm');
+    await expect.poll(() => field('R')).toBe('6');
+    expect([await field('Rcr'), await field('h')]).toEqual(['1', '0.05']);
+    // An edited h: converted without loss, back exactly as typed (to its last zero).
+    await typeInto(page, 'input-h', '0.01230');
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, 'result-rz')).toBe('12.30 \u00b5m');
+    await unit('in');
+    await expect.poll(() => field('R')).toBe('0.25');
+    const inch = Number(await field('h'));
+    expect(Math.abs(inch * 25.4 - 0.0123)).toBeLessThan(1e-12 * 0.0123);
+    await expect.poll(() => text(page, 'result-rz')).toBe('484.3 \u00b5in');
+    await unit('mm');
+    await expect.poll(() => field('h')).toBe('0.01230');
+    await expect.poll(() => text(page, 'result-rz')).toBe('12.30 \u00b5m');
+    expect(await page.locator('.results').textContent()).not.toMatch(NOT_A_NUMBER);
+    expect(errors).toEqual([]);
+    site.changed();
+  }, 90_000);
 });

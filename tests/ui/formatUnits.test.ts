@@ -50,7 +50,7 @@ describe('roughness reads in µm in mm and in µin in inch, whatever its size', 
     expect(roughnessUnit('mm')).toEqual({ symbol: '\u00b5m', perMm: 1000 });
     expect(formatRoughness(0.005, 'mm')).toBe('5.000 \u00b5m');
     expect(formatRoughness(0.00128, 'mm')).toBe('1.280 \u00b5m');
-    expect(formatRoughness(0.3, 'mm')).toBe('300.000 \u00b5m');
+    expect(formatRoughness(0.3, 'mm')).toBe('300.00 \u00b5m');
     expect(formatRoughness(3.358e-7, 'mm')).toBe('0.0003358 \u00b5m');
   });
 
@@ -61,8 +61,8 @@ describe('roughness reads in µm in mm and in µin in inch, whatever its size', 
   });
 
   it('zero, negative zero, null and non-finite values', () => {
-    expect(formatRoughness(0, 'mm')).toBe('0.000 \u00b5m');
-    expect(formatRoughness(-0, 'in')).toBe('0.0 \u00b5in');
+    expect(formatRoughness(0, 'mm')).toBe('0.00 \u00b5m');
+    expect(formatRoughness(-0, 'in')).toBe('0 \u00b5in');
     expect(formatRoughness(-1e-40, 'mm')).not.toMatch(/^-/);
     expect(formatRoughness(null, 'mm')).toBe('\u2014');
     expect(formatRoughness(Number.NaN, 'in')).toBe('\u2014');

@@ -76,7 +76,8 @@ describe('tool size as catalogues give it', () => {
   it('presets are named by diameter and corner radius; an edit away from them is "custom"', () => {
     expect(presetOf(defaultState())?.label).toBe('D6, corner R1 (paper Tool 1)');
     expect(presetOf(withSize(defaultState(), 'D'))?.label).toBe('D6, corner R1 (paper Tool 1)');
-    expect(presetOf(defaultState('in'))?.label).toBe('D6, corner R1 (paper Tool 1)');
+    // The inch page's own default tool (unitDefaults.ts), not the paper's converted.
+    expect(presetOf(defaultState('in'))?.label).toBe('D1/4 in, corner R0.030 in');
     expect(presetOf(withField(defaultState(), 'Rcr', '1.1'))).toBeNull();
     const d10 = withValues(withSize(defaultState(), 'D'), { R: 5, Rcr: 1 });
     expect(d10.fields.R).toBe('10');

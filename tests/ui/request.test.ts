@@ -57,12 +57,13 @@ describe('requests from the fields', () => {
     );
   });
 
-  it('a unit switch keeps the question (to 6 significant digits) and the field texts free of float noise', () => {
-    const inch = convertState(defaultState(), 'in');
-    expect(inch.fields.Rcr).toBe('0.0393701');
-    const a = buildRequest(defaultState());
+  it('a unit switch keeps an edited question (to 1e-12) and the field texts free of float noise', () => {
+    const edited = withField(defaultState(), 'Rcr', '1');
+    const inch = convertState(edited, 'in');
+    expect(inch.fields.Rcr).toBe('0.03937007874016');
+    const a = buildRequest(edited);
     const b = buildRequest(inch);
     if (!a.ok || !b.ok || a.request.mode !== 'forward' || b.request.mode !== 'forward') throw new Error('valid');
-    expect(Math.abs(b.request.input.toolRadiusMm - a.request.input.toolRadiusMm)).toBeLessThan(1e-4);
+    expect(Math.abs(b.request.input.cornerRadiusMm - a.request.input.cornerRadiusMm)).toBeLessThan(1e-12);
   });
 });

@@ -10,6 +10,7 @@ import {
 
 const tool = (name: string, diameterMm = 6, cornerRadiusMm = 1, flutes: number | null = 4) => ({
   name,
+  unit: 'mm' as const,
   diameterMm,
   cornerRadiusMm,
   flutes,

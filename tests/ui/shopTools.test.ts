@@ -45,7 +45,7 @@ describe('the tool size as a diameter by default', () => {
     expect(fresh.notices).toEqual([]);
     const inch = parseUrl('?unit=in');
     expect(inch.state.size).toBe('D');
-    expect(inch.state.fields.R).toBe('0.23622');
+    expect(inch.state.fields.R).toBe('0.25'); // the inch page's default tool, D 1/4 in
     expect(toSearch(fresh.state)).toMatch(/^\?D=6&/);
   });
 

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { URL_PARAMS } from '../../src/core/input/fields';
-import { convertState, defaultState, parseUrl, toSearch } from '../../src/ui/state';
+import { convertState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';
 
 describe('URL state and units', () => {
   it('round-trips a state through the query string', () => {
@@ -67,11 +67,11 @@ describe('URL state and units', () => {
   });
 
   it('converts between mm and inch, keeps angles and invalid text as they are', () => {
-    const inch = convertState({ ...defaultState(), fields: { ...defaultState().fields, h: 'x' } }, 'in');
-    expect(inch.fields.R).toBe('0.11811');
+    const inch = convertState(withField(withField(defaultState(), 'h', 'x'), 'R', '3'), 'in');
+    expect(inch.fields.R).toBe('0.1181102362205');
     expect(inch.fields.rho).toBe('5');
     expect(inch.fields.h).toBe('x');
-    expect(Number(convertState(inch, 'mm').fields.R)).toBeCloseTo(3, 4);
+    expect(convertState(inch, 'mm').fields.R).toBe('3');
   });
 });
 
@@ -101,6 +101,6 @@ describe('URL state of the posture', () => {
   it('angles are not converted by a unit switch', () => {
     const inch = convertState(parseUrl('?R=3&Rcr=1&rho=5&tilt=7&h=0.05').state, 'in');
     expect(inch.fields.tilt).toBe('7');
-    expect(inch.fields.h).toBe('0.0019685');
+    expect(inch.fields.h).toBe('0.002'); // the default h, as the inch page's own default
   });
 });

@@ -62,12 +62,13 @@ describe('surface in the state and the URL', () => {
   });
 
   it('inch mode converts the radius like the other lengths', () => {
-    const s = convertState({ ...defaultState(), surface: 'concave' }, 'in');
-    expect(s.fields.Rs).toBe('1.9685');
-    expect(new URLSearchParams(toSearch(s)).get('surfaceRadius')).toBe('-1.9685');
-    // Back to mm: 6 significant digits of the inch text, as every length field.
-    const back = convertState(s, 'mm');
-    expect(Math.abs(Number(back.fields.Rs) - 50)).toBeLessThan(1e-3);
+    // The default radius becomes the inch default; an edited one converts without loss.
+    expect(convertState({ ...defaultState(), surface: 'concave' }, 'in').fields.Rs).toBe('2');
+    const s = convertState(withField({ ...defaultState(), surface: 'concave' }, 'Rs', '50'), 'in');
+    expect(s.fields.Rs).toBe('1.968503937008');
+    expect(new URLSearchParams(toSearch(s)).get('surfaceRadius')).toBe('-1.968503937008');
+    // Back to mm: what was typed.
+    expect(convertState(s, 'mm').fields.Rs).toBe('50');
   });
 });
 

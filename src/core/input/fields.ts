@@ -16,8 +16,11 @@
  * posture's limits) are validate.ts's; `range` records the fixed bounds that the rules apply.
  */
 
-/** How a field is measured: a length (mm inside), an angle (degrees), or one word of a list. */
-export type FieldKind = 'length' | 'angle' | 'enum';
+/**
+ * How a field is measured: a length (mm inside), an angle (degrees), one word of a list, or a
+ * name (plain text, cleaned as hostile: a tool's name).
+ */
+export type FieldKind = 'length' | 'angle' | 'enum' | 'text';
 
 /**
  * What a field is:
@@ -397,6 +400,22 @@ export const FIELDS = {
   present: pageSetting('present', 'Presentation mode', ['1'] as const, false),
   // The element sets `embed` itself: no attribute.
   embed: pageSetting('embed', 'Embedded', ['1', 'true'] as const, false),
+  /**
+   * The name of the saved or library tool the fields hold (issue 28 point 3), named with the answer
+   * and carried by Copy link; read as hostile text (src/ui/toolName.ts). The full page's only.
+   */
+  tool: {
+    short: 'tool',
+    core: null,
+    kind: 'text',
+    group: 'page',
+    label: 'Tool name',
+    url: 'tool',
+    cli: null,
+    csv: null,
+    embed: null,
+    page: null,
+  },
 } as const satisfies Readonly<Record<string, FieldSpec>>;
 
 type Fields = typeof FIELDS;

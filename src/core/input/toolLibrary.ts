@@ -5,10 +5,18 @@
  * are kept. Names are kept as plain text (whoever shows them shows them as text, never as HTML).
  */
 import { FIELDS } from './fields';
-import { MM_PER_INCH } from './units';
+import { cleanToolName, TOOL_NAME_MAX_CHARS } from './toolNameText';
+import { type LengthUnit, MM_PER_INCH } from './units';
+
+export { cleanToolName, TOOL_NAME_MAX_CHARS };
 
 /** A tool of a library or of the browser's saved tools; lengths in mm. */
 export interface LibraryTool {
+  /**
+   * The unit the tool is sized in (its library's `unit`: inches or millimeters; a saved tool, the
+   * page's unit when it was saved): the tool is listed in it, and the page offers it on choosing.
+   */
+  readonly unit: LengthUnit;
   /** The name the shop gives it (at most {@link TOOL_NAME_MAX_CHARS} characters, plain text). */
   readonly name: string;
   /** Cutting diameter D in mm, 2 * R within the tool radius's limits. */
@@ -18,9 +26,6 @@ export interface LibraryTool {
   /** Number of flutes (1 to 99), or null when not given. */
   readonly flutes: number | null;
 }
-
-/** A tool name's longest kept form (longer names are cut, with an ellipsis). */
-export const TOOL_NAME_MAX_CHARS = 80;
 
 /** The largest library file read, in characters (a Fusion library of a few thousand tools is a few MB). */
 export const LIBRARY_MAX_CHARS = 20_000_000;
@@ -36,23 +41,17 @@ export interface LibraryRead {
 
 const R_RANGE = FIELDS.R.range;
 
-/** A name as kept: control characters removed, spaces collapsed, cut at {@link TOOL_NAME_MAX_CHARS}. */
-export function cleanToolName(name: string): string {
-  // Only the start is read: a name of megabytes is cut long before its end.
-  const start = Array.from(name.slice(0, 4 * TOOL_NAME_MAX_CHARS), (c) => (c < ' ' || c === '\u007f' ? ' ' : c));
-  const t = start.join('').replace(/\s+/g, ' ').trim();
-  return t.length > TOOL_NAME_MAX_CHARS ? `${t.slice(0, TOOL_NAME_MAX_CHARS - 1)}\u2026` : t;
-}
-
 /**
  * Checks a tool: D within twice the tool radius's limits (0.002 to 2000 mm), the corner radius from
- * 0 to D/2, flutes a whole number 1 to 99 or null. The tool, or the field at fault and why.
+ * 0 to D/2, flutes a whole number 1 to 99 or null. The tool (sized in `unit`), or the field at
+ * fault and why.
  */
 export function checkTool(
   name: string,
   diameterMm: unknown,
   cornerRadiusMm: unknown,
   flutes: unknown,
+  unit: LengthUnit = 'mm',
 ): { ok: true; tool: LibraryTool } | { ok: false; field: 'D' | 'corner radius' | 'flutes'; why: string } {
   const minD = 2 * (R_RANGE.min ?? 0);
   const maxD = 2 * (R_RANGE.max ?? Number.POSITIVE_INFINITY);
@@ -73,7 +72,7 @@ export function checkTool(
     };
   if (flutes !== null && (typeof flutes !== 'number' || !Number.isInteger(flutes) || flutes < 1 || flutes > 99))
     return { ok: false, field: 'flutes', why: 'must be a whole number from 1 to 99' };
-  return { ok: true, tool: { name: cleanToolName(name), diameterMm, cornerRadiusMm: corner, flutes } };
+  return { ok: true, tool: { name: cleanToolName(name), unit, diameterMm, cornerRadiusMm: corner, flutes } };
 }
 
 /** The Fusion 360 tool types read, and the corner radius each has when its geometry leaves RE out. */
@@ -85,6 +84,9 @@ const END_MILLS: Readonly<Record<string, 'RE' | 'flat' | 'ball'>> = {
 
 /** Tenths of a mm per unit: whole factors, so 0.375 in is exactly 9.525 mm (0.375 * 25.4 is not). */
 const TENTH_MM_PER_UNIT: Readonly<Record<string, number>> = { millimeters: 10, inches: MM_PER_INCH * 10 };
+
+/** The page's unit of a library's `unit`. */
+const UNIT_OF: Readonly<Record<string, LengthUnit>> = { millimeters: 'mm', inches: 'in' };
 
 function isRecord(v: unknown): v is Record<string, unknown> {
   return typeof v === 'object' && v !== null && !Array.isArray(v);
@@ -112,12 +114,14 @@ function readEntry(entry: unknown, index: number): LibraryTool | string {
   const name = nameOf(entry, index);
   const at = `Tool ${index + 1} "${name}"`;
   const type = typeof entry.type === 'string' ? entry.type.toLowerCase() : '';
-  const shape = END_MILLS[type];
+  const shape = Object.hasOwn(END_MILLS, type) ? END_MILLS[type] : undefined;
   if (shape === undefined)
     return `${at}: type "${cleanToolName(String(entry.type ?? ''))}" is not a flat, bull nose or ball end mill; skipped.`;
   const unit = typeof entry.unit === 'string' ? entry.unit.toLowerCase() : '';
-  const tenthsPerUnit = TENTH_MM_PER_UNIT[unit];
-  if (tenthsPerUnit === undefined)
+  // Own keys only: a unit such as "constructor" is not one.
+  const tenthsPerUnit = Object.hasOwn(TENTH_MM_PER_UNIT, unit) ? TENTH_MM_PER_UNIT[unit] : undefined;
+  const sizedIn = Object.hasOwn(UNIT_OF, unit) ? UNIT_OF[unit] : undefined;
+  if (tenthsPerUnit === undefined || sizedIn === undefined)
     return `${at}: unit "${cleanToolName(String(entry.unit ?? ''))}" is not millimeters or inches.`;
   if (!isRecord(entry.geometry)) return `${at}: geometry is missing.`;
   const dc = lengthMm(entry.geometry, 'DC', tenthsPerUnit);
@@ -127,7 +131,7 @@ function readEntry(entry: unknown, index: number): LibraryTool | string {
   if (corner === null) return `${at}: geometry.RE (the corner radius) is missing.`;
   const nof = entry.geometry.NOF;
   const flutes = typeof nof === 'number' && Number.isInteger(nof) && nof >= 1 && nof <= 99 ? nof : null;
-  const checked = checkTool(name, dc, corner, flutes);
+  const checked = checkTool(name, dc, corner, flutes, sizedIn);
   if (checked.ok) return checked.tool;
   const field = checked.field === 'D' ? 'geometry.DC (the diameter)' : 'geometry.RE (the corner radius)';
   return `${at}: ${field} ${checked.why}.`;
@@ -136,7 +140,8 @@ function readEntry(entry: unknown, index: number): LibraryTool | string {
 /**
  * Reads a Fusion 360 tool library (its JSON export: `{ "data": [ { "type": "bull nose end mill",
  * "unit": "millimeters" | "inches", "description": ..., "geometry": { "DC": D, "RE": corner
- * radius, "NOF": flutes } }, ... ] }`). Flat, bull nose and ball end mills are read (a flat end
+ * radius, "NOF": flutes } }, ... ] }`), each tool in its own unit (kept as the tool's `unit`, the
+ * lengths in mm). Flat, bull nose and ball end mills are read (a flat end
  * without RE has 0, a ball end without RE has D/2); every other type (drills, chamfer mills,
  * holders...) and every tool that cannot be read gets one line naming the tool and the field, the
  * rest are kept. A file that is not JSON, not such a library, or over {@link LIBRARY_MAX_CHARS}

@@ -39,11 +39,11 @@ describe('a Fusion 360 tool library', () => {
     );
     expect(read.problems).toEqual([]);
     expect(read.tools).toEqual([
-      { name: 'D10 R1 bull', diameterMm: 10, cornerRadiusMm: 1, flutes: 4 },
-      { name: 'ball end mill tool', diameterMm: 6, cornerRadiusMm: 3, flutes: 2 },
-      { name: '1/4 ball', diameterMm: 6.35, cornerRadiusMm: 3.175, flutes: null },
-      { name: '1/2 flat', diameterMm: 12.7, cornerRadiusMm: 0, flutes: 3 },
-      { name: '3/8 x .030', diameterMm: 9.525, cornerRadiusMm: 0.762, flutes: null },
+      { name: 'D10 R1 bull', unit: 'mm', diameterMm: 10, cornerRadiusMm: 1, flutes: 4 },
+      { name: 'ball end mill tool', unit: 'mm', diameterMm: 6, cornerRadiusMm: 3, flutes: 2 },
+      { name: '1/4 ball', unit: 'in', diameterMm: 6.35, cornerRadiusMm: 3.175, flutes: null },
+      { name: '1/2 flat', unit: 'in', diameterMm: 12.7, cornerRadiusMm: 0, flutes: 3 },
+      { name: '3/8 x .030', unit: 'in', diameterMm: 9.525, cornerRadiusMm: 0.762, flutes: null },
     ]);
   });
 
@@ -135,7 +135,7 @@ describe('a tool checked against the calculator', () => {
   it('D within twice the tool radius limits, corner 0 to D/2, flutes 1 to 99', () => {
     expect(checkTool('a', 6, 1, 4)).toEqual({
       ok: true,
-      tool: { name: 'a', diameterMm: 6, cornerRadiusMm: 1, flutes: 4 },
+      tool: { name: 'a', unit: 'mm', diameterMm: 6, cornerRadiusMm: 1, flutes: 4 },
     });
     expect(checkTool('a', 6, 3, null).ok).toBe(true);
     expect(checkTool('a', 6, 3.0001, null)).toMatchObject({ ok: false, field: 'corner radius' });
