@@ -373,6 +373,7 @@ export class CalculatorApp {
       passes: this.state.passes,
     });
     this.results.showToolName(this.state.toolName ?? null);
+    this.results.showQuestion(shown.kind === 'current' && shown.reply.ok && !typing ? questionWords(this.state) : null);
     this.resultBar.render(typing);
     this.sceneBox.classList.toggle('typing', typing);
     this.roughness.render(shown, this.state.unit);

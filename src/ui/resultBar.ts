@@ -25,6 +25,8 @@ export class ResultBar {
   private readonly headlineLabel: HTMLElement;
   private readonly headline: HTMLOutputElement;
   private readonly label: HTMLElement;
+  private readonly headlineQuestion: HTMLElement;
+  private readonly question: HTMLElement;
   private readonly value: HTMLOutputElement;
   private readonly copyButton: HTMLButtonElement;
   private readonly mark: HTMLElement;
@@ -37,6 +39,8 @@ export class ResultBar {
     this.headlineLabel = must(root, '[data-role="headline-label"]');
     this.headline = must(root, '[data-role="headline"]');
     this.label = must(bar, '[data-role="bar-label"]');
+    this.headlineQuestion = must(root, '[data-role="headline-question"]');
+    this.question = must(bar, '[data-role="bar-question"]');
     this.value = must(bar, 'output');
     this.copyButton = must(bar, 'button.copy');
     this.mark = must(bar, '[data-role="bar-mark"]');
@@ -55,6 +59,9 @@ export class ResultBar {
     };
     setText(this.label, this.headlineLabel.textContent ?? '');
     setText(this.value, this.headline.textContent ?? '');
+    // The question the answer answers, under its label (hidden as the headline's is).
+    setText(this.question, this.headlineQuestion.hidden ? '' : (this.headlineQuestion.textContent ?? ''));
+    this.question.hidden = this.headlineQuestion.hidden;
     const copy = this.headline.dataset.copy;
     if (copy === undefined) {
       delete this.value.dataset.copy;

@@ -60,6 +60,8 @@ export class ResultsPanel {
   private readonly cues = new ScrollCues();
   /** The name of the tool the inputs hold, under the headline (hidden without one). */
   private readonly toolName: HTMLElement;
+  /** The question the headline answers, in words, right under it (questionWords.ts; hidden without a current answer). */
+  private readonly question: HTMLElement;
 
   constructor(private readonly root: HTMLElement) {
     this.section = must(root, '.results');
@@ -84,7 +86,19 @@ export class ResultsPanel {
     // A long name wraps rather than widening the column (set from script: the page's CSP has no inline styles).
     this.toolName.style.overflowWrap = 'anywhere';
     this.toolName.style.margin = '0.25em 0 0';
-    must(root, '.headline .big').after(this.toolName);
+    this.question = must(root, '[data-role="headline-question"]');
+    this.question.after(this.toolName);
+  }
+
+  /**
+   * Names the question the headline's number answers (issue 28: "5-axis, lead 5°, tilt 0°, one-way,
+   * plane", "3-axis, slope 30°, raster 30°"), or hides the line (null: no current answer, so
+   * that the words never describe a number that is out of date or a dash).
+   */
+  showQuestion(words: string | null): void {
+    const text = words ?? '';
+    if (this.question.textContent !== text) this.question.textContent = text;
+    this.question.hidden = words === null;
   }
 
   /**

@@ -9,6 +9,7 @@
  * list changes (at most 12 x 7 cells: milliseconds on a plane, a third of a second at a doubly
  * curved point).
  */
+
 import { fromMm, type LengthUnit, toMm, unitSymbol } from '../core/input/units';
 import { SHEET_HEIGHTS, SHEET_MARKS, type SheetCase, type ShopSheet, shopSheet } from '../core/output/shopSheet';
 import type { PageRequest } from '../worker/pageProtocol';
@@ -29,6 +30,7 @@ import {
   sheetTitleLines,
   stepSymbol,
 } from './shopSheetText';
+import { shownToolNameLines } from './toolName';
 
 /** An element with a class, optional test id and text (text only: nothing is parsed as HTML). */
 function el<K extends keyof HTMLElementTagNameMap>(
@@ -199,7 +201,9 @@ export class ShopSheetPanel {
     this.sheet = sheet;
     this.title.textContent = `Shop sheet: ${stepSymbol(sheet)} (${u})`;
     const date = new Date().toISOString().slice(0, 10);
-    this.lines.replaceChildren(...sheetTitleLines(c, sheet, unit, date).map((t) => el('p', 'sheet-line', t)));
+    this.lines.replaceChildren(
+      ...[...shownToolNameLines(), ...sheetTitleLines(c, sheet, unit, date)].map((t) => el('p', 'sheet-line', t)),
+    );
     this.renderTable(sheet, unit, rows);
     this.renderLegend(sheet, rows.own, u);
     this.reason.hidden = true;

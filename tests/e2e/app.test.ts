@@ -306,7 +306,7 @@ describe('calculator page in headless Chromium', () => {
       const [machineBox, unitBox] = await Promise.all(
         ['machine-switch', 'unit-switch'].map((id) => page.getByTestId(id).boundingBox()),
       );
-      if (machineBox === null || unitBox === null) throw new Error('no switches');
+      if (!machineBox || !unitBox) throw new Error('no switches');
       expect(Math.abs(machineBox.y - unitBox.y)).toBeLessThan(machineBox.height);
       expect(machineBox.x).toBeLessThan(unitBox.x);
       await page.getByTestId('machine-switch').getByText('3-axis').click();
@@ -316,10 +316,21 @@ describe('calculator page in headless Chromium', () => {
       await page.goto(site.url());
       await ready();
       expect([await checked('machine'), await checked('unit')]).toEqual(['3axis', 'in']);
+      // Every answer names its question: under the headline, and in the result bar that mirrors it.
+      const question = () => page.getByTestId('headline-question').textContent();
+      await expect.poll(question).toBe('3-axis, slope 30°, raster 0°');
+      expect(await page.getByTestId('result-bar-question').textContent()).toBe('3-axis, slope 30°, raster 0°');
       // A shared five-axis link (no machine=, no unit=) still means five-axis in mm.
       await page.goto(`${site.url()}${PLAIN}`);
       await ready();
       expect([await checked('machine'), await checked('unit')]).toEqual(['5axis', 'mm']);
+      await expect.poll(question).toBe('5-axis, lead 5°, tilt 0°, one-way, plane');
+      // An invalid input: no answer, so no words (they never stand beside a dash or an old number).
+      await page.getByTestId('input-h').fill('-1');
+      await page.getByTestId('input-h').press('Enter');
+      const hiddenAttr = (id: string) => page.getByTestId(id).evaluate((e) => (e as HTMLElement).hidden);
+      await expect.poll(() => hiddenAttr('headline-question')).toBe(true);
+      expect(await hiddenAttr('result-bar-question')).toBe(true);
     } finally {
       await context.close();
     }
