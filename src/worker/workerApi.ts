@@ -10,15 +10,21 @@
 import { solve } from './jobs/solve';
 import { isSolveReply, isSolveRequest, type PageReply, type PageRequest } from './pageProtocol';
 import type { SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
-import { transfer } from './rpc';
+import { lazyModule, transfer } from './rpc';
 import type { SimulateReply, SimulationRunner } from './simulate';
 import type { PageTeachReply } from './teachProtocol';
 import { sceneTransferables, transferables } from './transferables';
 
+/** The jobs' modules beyond the first script, each imported on first use (the page's watchdog told: rpc.ts lazyModule). */
+const pageJob = lazyModule(() => import('./jobs/page'));
+const teachJob = lazyModule(() => import('./jobs/teachPage'));
+const tableJob = lazyModule(() => import('./jobs/table'));
+const simulation = lazyModule(() => import('./simulate'));
+
 /** A newer `simulate` or `cancelSimulation` stops the running simulation between steps (one runner, made on first use). */
 let simulations: Promise<SimulationRunner> | null = null;
 const runner = (): Promise<SimulationRunner> =>
-  (simulations ??= import('./simulate').then(({ SimulationRunner }) => new SimulationRunner()));
+  (simulations ??= simulation().then(({ SimulationRunner }) => new SimulationRunner()));
 
 export const workerApi = {
   async solve(request: PageRequest): Promise<PageReply> {
@@ -27,23 +33,23 @@ export const workerApi = {
       return transfer(reply, transferables(reply));
     }
     // A doubly curved or three-axis question: its solvers load now (once), then its scene's arrays.
-    const reply = (await import('./jobs/page')).solvePage(request);
+    const reply = (await pageJob()).solvePage(request);
     if (isSolveReply(reply)) return transfer(reply, transferables(reply));
     return reply.ok ? transfer(reply, [...sceneTransferables(reply.scene)]) : reply;
   },
   /** The teaching views' data: a plane's or a cylinder's (its arrays transferred), a doubly curved point's, three-axis'. */
   async teach(request: PageRequest): Promise<PageTeachReply> {
-    const reply = (await import('./jobs/teachPage')).teachPage(request);
+    const reply = (await teachJob()).teachPage(request);
     return isSolveRequest(reply.request) ? transfer(reply, transferables(reply as TeachReply)) : reply;
   },
   /** The lookup table for the page's download (a string: nothing to transfer). */
   async table(request: TableRequest): Promise<TableReply> {
-    return (await import('./jobs/table')).table(request);
+    return (await tableJob()).table(request);
   },
   async simulate(request: SolveRequest, onProgress?: (fraction: number) => void): Promise<SimulateReply> {
     const r = await runner();
     const reply = await r.run(request, onProgress);
-    const { simulationTransferables } = await import('./simulate');
+    const { simulationTransferables } = await simulation();
     return transfer(reply, simulationTransferables(reply));
   },
   cancelSimulation(): void {
