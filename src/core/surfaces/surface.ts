@@ -18,15 +18,17 @@
  * `CongruentPasses`, the flanks' reach and its conversion to a step-over; congruentPasses.ts builds
  * the model from it. Lengths mm.
  *
- * Registered: the plane, the cylinders, the doubly curved point (models/*), and the three-axis
- * sloped plane, a surface that supplies the posture (models/slopedPlane.ts). Not yet: the three-axis
- * waterline passes on a surface of revolution (threeAxis/waterlineRevolution.ts), whose two adjacent
- * passes are not congruent. Its step-over, cusp height and height limit fit `intervalMm`, `forward`,
- * `inverse` and `limits().limitMm` as they are (waterlineIntervalMm, waterlineForward,
- * waterlineInverse, waterlineHeightLimitMm); what does not is the per-flank part of the answers
- * (ExactForward's flank widths and points, FlankLimits' per-side tops and `flankWidths`), which
- * only congruent passes define. Registering it means making those parts optional (or per model)
- * rather than inventing them; its programmed steps (dz) stay its own, as the sloped plane's do.
+ * Registered: the plane, the cylinders and the doubly curved point (models/*). A machine mode is
+ * not a surface: it supplies the tool's posture over these models (mode.ts, modes.ts; the sloped
+ * plane is the plane under the three-axis mode), and question.ts answers any registered mode over
+ * any registered surface it has a posture on. Not yet a model: the three-axis waterline passes on a
+ * surface of revolution (threeAxis/waterlineRevolution.ts), whose two adjacent passes are not
+ * congruent. Its step-over, cusp height and height limit fit `intervalMm`, `forward`, `inverse` and
+ * `limits().limitMm` as they are (waterlineIntervalMm, waterlineForward, waterlineInverse,
+ * waterlineHeightLimitMm); what does not is the per-flank part of the answers (ExactForward's flank
+ * widths and points, FlankLimits' per-side tops and `flankWidths`), which only congruent passes
+ * define. Registering it means making those parts optional (or per model) rather than inventing
+ * them; its programmed steps (dz) stay its own, as the sloped plane's do.
  */
 import type { ForwardInput, InverseInput } from '../domain/pass';
 import type { SurfaceAxis, SurfaceDescriptorBase } from '../domain/surface';

@@ -1,0 +1,42 @@
+/**
+ * A machine mode (issue 27 point 3): not a surface, but what supplies the tool's posture at the
+ * cutter-contact point over a surface model (surface.ts). Five-axis takes the lead and tilt as
+ * given; three-axis keeps the tool upright and derives them from the slope and the raster angle
+ * (modes/threeAxis.ts). One module per mode under modes/, one line in modes.ts's registry, beside
+ * the registry of surfaces (registry.ts): a question is a tool, a mode, a surface, a pattern and a
+ * target (question.ts), validated once. Types only. Angles degrees.
+ */
+import type { PassPattern } from '../domain/tool';
+
+/** What every machine mode descriptor has: its kind, the key of its mode in modes.ts. */
+export interface ModeDescriptorBase {
+  readonly kind: string;
+}
+
+/** The tool's posture for one question: lead and tilt at the contact (degrees), and the pattern its passes make. */
+export interface Posture {
+  readonly leadAngleDeg: number;
+  readonly tiltAngleDeg: number;
+  /** The pattern the passes make: three-axis passes are one-way whichever way they feed. */
+  readonly pattern: PassPattern;
+}
+
+/** One of a mode's own parameters refused: its name and one line naming the constraint. */
+export interface ModeError {
+  readonly parameter: string;
+  readonly message: string;
+}
+
+/** A machine mode: the posture it supplies, on the surfaces it supplies one for. */
+export interface MachineMode<M extends ModeDescriptorBase> {
+  /** The descriptor kind it answers (the registry's key). */
+  readonly kind: M['kind'];
+  /** The surface kinds it has a posture on; null: every registered surface. */
+  readonly surfaceKinds: readonly string[] | null;
+  /** Its own parameters' errors (ranges), one line each; empty when they are valid. */
+  check(mode: M): readonly ModeError[];
+  /** The posture for a checked descriptor and the pattern asked. */
+  posture(mode: M, pattern: PassPattern): Posture;
+  /** One line naming the constraint, for a surface kind it has no posture on. */
+  refusal(surfaceKind: string): string;
+}

@@ -1,0 +1,152 @@
+/**
+ * Machine modes as posture suppliers (issue 27 point 3): five-axis gives the surface model its own
+ * lead and tilt, to the last digit of the solvers' entry; three-axis gives the plane the upright
+ * tool's posture over the slope, to 1e-9 mm of the sloped plane's own solver; a mode on a surface it
+ * has no posture for is refused in one line naming the constraint.
+ */
+import { describe, expect, it } from 'vitest';
+import { answerQuestion, type Question, validateQuestion } from '../../../src/core/surfaces/question';
+import { exactForward, exactInverse } from '../../../src/core/surfaces/solve';
+import { scallopHeightLimits } from '../../../src/core/surfaces/validate';
+import { slopedPlaneForward, slopedPlaneInverse } from '../../../src/core/threeAxis/slopedPlane';
+import { seededRandom } from '../../support/bruteForce';
+
+function answered(q: Question) {
+  const v = validateQuestion(q);
+  if (!v.ok) throw new Error(JSON.stringify(v.errors));
+  return answerQuestion(v.value);
+}
+
+describe('five-axis: the given posture over every product surface', () => {
+  it('equals exactForward and exactInverse on the plane, cylinders and doubly curved points (seed 31)', () => {
+    const rand = seededRandom(31);
+    let compared = 0;
+    for (let i = 0; i < 300; i++) {
+      const R = 0.5 + 10 * rand();
+      const tool = {
+        toolRadiusMm: R,
+        cornerRadiusMm: R * rand(),
+        leadAngleDeg: 60 * rand(),
+        tiltAngleDeg: 40 * rand() - 20,
+      };
+      const pick = Math.floor(3 * rand());
+      const radius = (rand() < 0.5 ? 1 : -1) * (20 + 500 * rand());
+      const surface =
+        pick === 0
+          ? ({ kind: 'plane' } as const)
+          : pick === 1
+            ? ({ kind: 'cylinder', radiusMm: Math.abs(radius), axis: rand() < 0.5 ? 'feed' : 'cross' } as const)
+            : ({ kind: 'doublyCurved', feedRadiusMm: Math.abs(radius), crossRadiusMm: 30 + 300 * rand() } as const);
+      const pattern = rand() < 0.5 ? 'one-way' : 'zigzag';
+      const h = scallopHeightLimits(tool, surface).limitMm * (0.01 + 0.5 * rand());
+      const q = {
+        tool: { toolRadiusMm: tool.toolRadiusMm, cornerRadiusMm: tool.cornerRadiusMm },
+        mode: { kind: 'fiveAxis', leadAngleDeg: tool.leadAngleDeg, tiltAngleDeg: tool.tiltAngleDeg },
+        surface,
+        pattern,
+      } as const;
+      const v = validateQuestion({ ...q, target: { quantity: 'h', mm: h } });
+      if (!v.ok) continue;
+      const f = answerQuestion(v.value);
+      const e = exactForward({ ...tool, pattern, surface, scallopHeightMm: h });
+      expect(f.intervalMm).toBe(e.intervalMm);
+      expect(f.cuspHeightMm).toBe(e.cuspHeightMm);
+      const L = e.intervalMm * 0.9;
+      const inv = answered({ ...q, target: { quantity: 'interval', mm: L } });
+      expect(inv.cuspHeightMm).toBe(exactInverse({ ...tool, pattern, surface, intervalMm: L }).cuspHeightMm);
+      compared++;
+    }
+    expect(compared).toBeGreaterThan(200);
+  });
+});
+
+describe('three-axis: the upright posture over the plane', () => {
+  it('equals the sloped plane solver within 1e-9 mm, forward and inverse, raster and waterline (seed 32)', () => {
+    const rand = seededRandom(32);
+    let compared = 0;
+    for (let i = 0; i < 300; i++) {
+      const R = 0.5 + 10 * rand();
+      const Rcr = R * (0.05 + 0.95 * rand());
+      const waterline = rand() < 0.4;
+      const slopeDeg = waterline ? 0.5 + 85 * rand() : 85 * rand();
+      const c = {
+        toolRadiusMm: R,
+        cornerRadiusMm: Rcr,
+        slopeDeg,
+        passes: waterline ? 'waterline' : 'raster',
+        rasterAngleDeg: 90 * rand(),
+      } as const;
+      const probe = slopedPlaneForward(c, 1e-7);
+      if (!probe.ok || probe.value.noScallop) continue;
+      const h = Math.min(probe.value.heightLimitMm, Rcr) * (0.01 + 0.9 * rand());
+      const own = slopedPlaneForward(c, h);
+      if (!own.ok) continue;
+      const q = {
+        tool: { toolRadiusMm: R, cornerRadiusMm: Rcr },
+        mode: { kind: 'threeAxis', slopeDeg, passes: c.passes, rasterAngleDeg: c.rasterAngleDeg },
+        surface: { kind: 'plane' },
+        pattern: 'zigzag', // three-axis passes are one-way whichever way they feed
+      } as const;
+      const f = answered({ ...q, target: { quantity: 'h', mm: h } });
+      expect(f.posture.pattern).toBe('one-way');
+      expect(Math.abs(f.intervalMm - own.value.intervalMm)).toBeLessThan(1e-9 * Math.max(1, R));
+      const L = own.value.intervalMm * 0.8;
+      const back = slopedPlaneInverse(c, { field: 'interval', mm: L });
+      const inv = answered({ ...q, target: { quantity: 'interval', mm: L } });
+      expect(back.ok && Math.abs(inv.cuspHeightMm - back.value.cuspHeightMm)).toBeLessThan(1e-9 * Math.max(1, R));
+      compared++;
+    }
+    expect(compared).toBeGreaterThan(150);
+  });
+
+  it('is refused on a cylinder and a doubly curved point, in one line naming the constraint', () => {
+    for (const surface of [
+      { kind: 'cylinder', radiusMm: 50, axis: 'feed' },
+      { kind: 'doublyCurved', feedRadiusMm: 50, crossRadiusMm: 80 },
+    ]) {
+      const v = validateQuestion({
+        tool: { toolRadiusMm: 5, cornerRadiusMm: 1 },
+        mode: { kind: 'threeAxis', slopeDeg: 30, passes: 'raster', rasterAngleDeg: 0 },
+        surface,
+        pattern: 'one-way',
+        target: { quantity: 'h', mm: 0.01 },
+      });
+      expect(v.ok).toBe(false);
+      const e = !v.ok ? v.errors : [];
+      expect(e).toHaveLength(1);
+      expect(e[0]?.field).toBe('surface');
+      expect(e[0]?.message).toMatch(/^Three-axis machining is answered on a sloped plane .*not on a surface of kind/);
+      expect(e[0]?.message).not.toMatch(/\n|NaN|Infinity/);
+    }
+  });
+
+  it('refuses its own parameters and the target beyond the limits, each in one line', () => {
+    const base = {
+      tool: { toolRadiusMm: 5, cornerRadiusMm: 1 },
+      surface: { kind: 'plane' },
+      pattern: 'one-way',
+    } as const;
+    const wall = validateQuestion({
+      ...base,
+      mode: { kind: 'threeAxis', slopeDeg: 90, passes: 'raster', rasterAngleDeg: 0 },
+      target: { quantity: 'h', mm: 0.01 },
+    });
+    expect(!wall.ok && wall.errors.map((e) => e.field)).toEqual(['slope']);
+    const flat = validateQuestion({
+      ...base,
+      mode: { kind: 'threeAxis', slopeDeg: 0, passes: 'waterline', rasterAngleDeg: 0 },
+      target: { quantity: 'h', mm: 0.01 },
+    });
+    expect(!flat.ok && flat.errors[0]?.message).toBe('Slope must be above 0 degrees for waterline passes (got 0).');
+    const high = validateQuestion({
+      ...base,
+      mode: { kind: 'threeAxis', slopeDeg: 30, passes: 'raster', rasterAngleDeg: 0 },
+      target: { quantity: 'h', mm: 4 },
+    });
+    expect(!high.ok && high.errors[0]?.message).toMatch(
+      /^Scallop height h must be below \d+(\.\d+)? mm here \(got 4\)/,
+    );
+    const unknown = validateQuestion({ ...base, mode: { kind: 'fourAxis' }, target: { quantity: 'h', mm: 0.01 } });
+    expect(!unknown.ok && unknown.errors[0]?.message).toBe('No machine mode of kind "fourAxis" is registered.');
+  });
+});
