@@ -8,7 +8,15 @@
  * each once; the module cache keeps them).
  */
 import { solve } from './jobs/solve';
-import { isSolveReply, isSolveRequest, type PageReply, type PageRequest } from './pageProtocol';
+import {
+  isSolveReply,
+  isSolveRequest,
+  type PageReply,
+  type PageRequest,
+  type QuestionReply,
+  type SolverReplyOf,
+  type SolverRequest,
+} from './pageProtocol';
 import type { SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
 import { lazyModule, transfer } from './rpc';
 import type { SimulateReply, SimulationRunner } from './simulate';
@@ -21,21 +29,30 @@ const teachJob = lazyModule(() => import('./jobs/teachPage'));
 const tableJob = lazyModule(() => import('./jobs/table'));
 const simulation = lazyModule(() => import('./simulate'));
 
+/** Answers any question; the plane's and cylinders' at once, the others' solvers loaded on first use. */
+async function solveAny(request: SolverRequest): Promise<PageReply | QuestionReply> {
+  if (isSolveRequest(request)) {
+    const reply = solve(request);
+    return transfer(reply, transferables(reply));
+  }
+  // A doubly curved, three-axis or registry question: its solvers load now (once), then its scene's arrays.
+  const reply = (await pageJob()).solvePage(request);
+  if (isSolveReply(reply)) return transfer(reply, transferables(reply));
+  return reply.ok && 'scene' in reply ? transfer(reply, [...sceneTransferables(reply.scene)]) : reply;
+}
+
 /** A newer `simulate` or `cancelSimulation` stops the running simulation between steps (one runner, made on first use). */
 let simulations: Promise<SimulationRunner> | null = null;
 const runner = (): Promise<SimulationRunner> =>
   (simulations ??= simulation().then(({ SimulationRunner }) => new SimulationRunner()));
 
 export const workerApi = {
-  async solve(request: PageRequest): Promise<PageReply> {
-    if (isSolveRequest(request)) {
-      const reply = solve(request);
-      return transfer(reply, transferables(reply));
-    }
-    // A doubly curved or three-axis question: its solvers load now (once), then its scene's arrays.
-    const reply = (await pageJob()).solvePage(request);
-    if (isSolveReply(reply)) return transfer(reply, transferables(reply));
-    return reply.ok ? transfer(reply, [...sceneTransferables(reply.scene)]) : reply;
+  /**
+   * The one `solve` job: any question (a page's, or one over the registries of modes and surfaces);
+   * the reply's kind follows the request's (SolverReplyOf).
+   */
+  async solve<R extends SolverRequest>(request: R): Promise<SolverReplyOf<R>> {
+    return (await solveAny(request)) as SolverReplyOf<R>;
   },
   /** The teaching views' data: a plane's or a cylinder's (its arrays transferred), a doubly curved point's, three-axis'. */
   async teach(request: PageRequest): Promise<PageTeachReply> {
