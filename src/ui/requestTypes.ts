@@ -12,6 +12,7 @@ export interface PageFieldError {
   readonly message: string;
 }
 
-export type BuiltRequest =
-  | { readonly ok: true; readonly request: PageRequest }
+/** A built request (the page's, PageRequest; or another kind R: questionRequest.ts's) or its errors. */
+export type BuiltRequest<R = PageRequest> =
+  | { readonly ok: true; readonly request: R }
   | { readonly ok: false; readonly errors: readonly (InputError | PageFieldError)[] };

@@ -2,16 +2,21 @@
  * The registries' promise, "one module and one line" (issue 27 point 3): a throwaway surface
  * (tests/support/throwaway/drumSurface.ts) and a throwaway machine mode (fixedLeadMode.ts), each one
  * module and one registry line (registerSurfaceModel, registerMode: from this test), are validated
- * and answered by the core's one question (surfaces/question.ts) and by the worker's one `solve`
- * job (workerApi.ts: the lazily loaded page job) with no other change; a combination the mode has
+ * and answered by the core's one question (surfaces/question.ts), the page's builder of such a
+ * question (ui/questionRequest.ts, from the state's fields in mm and in inches), the command line's
+ * reader (cli/question.ts answerRegistryQuestion) and the worker's one `solve` job (workerApi.ts:
+ * the lazily loaded page job) with no other change; a combination the mode has
  * no posture for is refused in its one line; removing them leaves both registries and every answer
  * as before.
  */
 import { afterEach, describe, expect, it } from 'vitest';
+import { answerRegistryQuestion } from '../../src/cli/question';
 import { modeKinds, registerMode } from '../../src/core/surfaces/modes';
 import { type Question, validateQuestion } from '../../src/core/surfaces/question';
 import { registerSurfaceModel, surfaceKinds } from '../../src/core/surfaces/registry';
 import { exactForward, exactInverse } from '../../src/core/surfaces/solve';
+import { buildQuestionRequest } from '../../src/ui/questionRequest';
+import { type CalculatorState, defaultState } from '../../src/ui/state';
 import type { QuestionReply, QuestionRequest } from '../../src/worker/pageProtocol';
 import { workerApi } from '../../src/worker/workerApi';
 import { DRUM_AS_CYLINDER, drumModel } from '../support/throwaway/drumSurface';
@@ -44,6 +49,16 @@ afterEach(() => {
   removers = [];
 });
 
+const KINDS = { mode: 'throwawayFixedLead', surface: 'throwawayDrum' };
+
+/** The page's state of the drum question: R 5, Rcr 1.5, lead 12, zigzag, h 0.01 mm (or in inches). */
+function pageState(unit: 'mm' | 'in', fields: Partial<CalculatorState['fields']> = {}): CalculatorState {
+  const s = defaultState(unit);
+  const inch = (mm: number) => String(mm / 25.4);
+  const lengths = unit === 'mm' ? { R: '5', Rcr: '1.5', h: '0.01' } : { R: inch(5), Rcr: inch(1.5), h: inch(0.01) };
+  return { ...s, size: 'R', pattern: 'zigzag', fields: { ...s.fields, ...lengths, rho: '12', ...fields } };
+}
+
 describe('a throwaway surface and mode: one module and one line each', () => {
   it('unregistered, they are refused by validation and the worker, each in one line naming it', async () => {
     const v = validateQuestion(drumQuestion({ quantity: 'h', mm: 0.01 }));
@@ -53,6 +68,13 @@ describe('a throwaway surface and mode: one module and one line each', () => {
     ]);
     const reply = await ask(drumQuestion({ quantity: 'h', mm: 0.01 }));
     expect(reply.ok).toBe(false);
+    const built = buildQuestionRequest(pageState('mm'), KINDS);
+    expect(!built.ok && built.errors.map((e) => e.message)).toEqual([
+      'No machine mode of kind "throwawayFixedLead" is registered.',
+      'No surface model of kind "throwawayDrum" is registered.',
+    ]);
+    const cli = answerRegistryQuestion({ R: '5', Rcr: '1.5', h: '0.01' }, KINDS, 'h');
+    expect(cli.ok).toBe(false);
   });
 
   it('registered, validation and the worker job answer them: the cylinder R100 at lead 12, tilt 0, both ways', async () => {
@@ -75,6 +97,21 @@ describe('a throwaway surface and mode: one module and one line each', () => {
     expect(inverse.answer.cuspHeightMm).toBe(
       exactInverse({ ...tool, pattern: 'zigzag', surface: DRUM_AS_CYLINDER, intervalMm: L }).cuspHeightMm,
     );
+
+    // The page's builder, in mm and in inches, asks the worker the same question (its request answered alike).
+    for (const unit of ['mm', 'in'] as const) {
+      const built = buildQuestionRequest(pageState(unit), KINDS);
+      if (!built.ok) throw new Error(JSON.stringify(built.errors));
+      const reply = (await workerApi.solve(built.request)) as QuestionReply;
+      expect(reply.ok && Math.abs(reply.answer.intervalMm - own.intervalMm)).toBeLessThan(1e-12 * own.intervalMm);
+    }
+    const pageSteep = buildQuestionRequest(pageState('mm', { rho: '45' }), KINDS);
+    expect(!pageSteep.ok && pageSteep.errors).toEqual([
+      { key: 'rho', message: 'Lead angle must be from 0 to 30 degrees on this head (got 45).' },
+    ]);
+    // The command line's reader (options by the field registry's names, lengths in mm).
+    const cli = answerRegistryQuestion({ R: '5', Rcr: '1.5', rho: '12', pattern: 'zigzag', h: '0.01' }, KINDS, 'h');
+    expect(cli.ok && cli.answer.intervalMm).toBe(own.intervalMm);
 
     // The mode's own parameters, its refusal on a surface it has no posture for, and the drum's limits.
     const steep = await ask(drumQuestion({ quantity: 'h', mm: h }, 45));

@@ -7,6 +7,19 @@
  * target (question.ts), validated once. Types only. Angles degrees.
  */
 import type { PassPattern } from '../domain/tool';
+import type { FieldId } from '../input/fields';
+
+/**
+ * A number a mode's or a surface's descriptor takes from the user: the descriptor's property and the
+ * field of the field registry (input/fields.ts) that gives it, so that the page's and the command
+ * line's builders read it with no code of their own (lengths in the user's unit, converted to mm).
+ */
+export interface QuestionParameter {
+  /** The descriptor's property (leadAngleDeg, slopeDeg, radiusMm...). */
+  readonly name: string;
+  /** The field that gives it. */
+  readonly field: FieldId;
+}
 
 /** What every machine mode descriptor has: its kind, the key of its mode in modes.ts. */
 export interface ModeDescriptorBase {
@@ -31,6 +44,11 @@ export interface ModeError {
 export interface MachineMode<M extends ModeDescriptorBase> {
   /** The descriptor kind it answers (the registry's key). */
   readonly kind: M['kind'];
+  /**
+   * The numbers its descriptor takes from the user, for the builders of a question over the
+   * registries (ui/questionRequest.ts); the product's modes are built by the page's own switches.
+   */
+  readonly parameters?: readonly QuestionParameter[];
   /** The surface kinds it has a posture on; null: every registered surface. */
   readonly surfaceKinds: readonly string[] | null;
   /** Its own parameters' errors (ranges), one line each; empty when they are valid. */

@@ -34,6 +34,7 @@ import type { ForwardInput, InverseInput } from '../domain/pass';
 import type { SurfaceAxis, SurfaceDescriptorBase } from '../domain/surface';
 import type { PassPattern, ToolInput } from '../domain/tool';
 import type { Flank, FlankLimits, FlankPoint } from '../tool/posture';
+import type { QuestionParameter } from './mode';
 
 /**
  * The forward answer (scallop height to step-over) every surface gives, mm. Widths and the
@@ -120,6 +121,11 @@ export const FITS: SurfaceFit = { gouges: false };
 export interface SurfaceModel<S extends SurfaceDescriptorBase> {
   /** The descriptor kind it answers (the registry's key). */
   readonly kind: S['kind'];
+  /**
+   * The numbers its descriptor takes from the user (mode.ts's QuestionParameter), for the builders
+   * of a question over the registries; the product's surfaces are built by the page's own switches.
+   */
+  readonly parameters?: readonly QuestionParameter[];
   /** Exact step-over L (mm) for a scallop height: the fast path of `forward`. @param input validated. */
   intervalMm(input: ForwardInput<S>): number;
   /** Exact forward answer: step-over, flank widths, contact offset and cusp heights (mm). @param input validated. */

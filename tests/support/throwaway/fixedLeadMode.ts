@@ -12,6 +12,7 @@ export interface FixedLeadMode {
 
 export const fixedLeadMode: MachineMode<FixedLeadMode> = {
   kind: 'throwawayFixedLead',
+  parameters: [{ name: 'leadAngleDeg', field: 'rho' }],
   surfaceKinds: ['plane', 'throwawayDrum'],
   check: (m) =>
     m.leadAngleDeg >= 0 && m.leadAngleDeg <= 30
