@@ -1,12 +1,13 @@
 /**
  * What building a page request yields, a leaf: request.ts (the plane's and cylinder's, and the
- * dispatch), curvedRequest.ts and threeAxisRequest.ts all return it, so none imports another for it.
+ * dispatch), each mode's and surface's own builder and questionRequest.ts return it, so none imports
+ * another for it.
  */
 import type { InputError } from '../core/input/validate';
 import type { PageRequest } from '../worker/pageProtocol';
 import type { FieldKey } from './stateTypes';
 
-/** A message the page words itself (a doubly curved point's, three-axis machining's), on its field. */
+/** A message the page words itself (a doubly curved point's, an upright tool's), on its field. */
 export interface PageFieldError {
   readonly key: FieldKey;
   readonly message: string;

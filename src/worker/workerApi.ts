@@ -3,7 +3,7 @@
  * Exposed by solver.worker.ts; its type is what the page's clients call (rpc.ts `Remote`).
  *
  * Only a plane's or a cylinder's answer is in the worker's first script (jobs/solve.ts: the first
- * result needs no more); the doubly curved and three-axis solvers (jobs/page.ts), the teaching
+ * result needs no more); every other surface's and mode's solvers (jobs/page.ts), the teaching
  * views' data, the lookup table and the simulation load here when first asked (dynamic imports,
  * each once; the module cache keeps them).
  */
@@ -35,7 +35,7 @@ async function solveAny(request: SolverRequest): Promise<PageReply | QuestionRep
     const reply = solve(request);
     return transfer(reply, transferables(reply));
   }
-  // A doubly curved, three-axis or registry question: its solvers load now (once), then its scene's arrays.
+  // Any other surface or mode: its solvers load now (once), then its scene's arrays.
   const reply = (await pageJob()).solvePage(request);
   if (isSolveReply(reply)) return transfer(reply, transferables(reply));
   return reply.ok && 'scene' in reply ? transfer(reply, [...sceneTransferables(reply.scene)]) : reply;
@@ -54,7 +54,7 @@ export const workerApi = {
   async solve<R extends SolverRequest>(request: R): Promise<SolverReplyOf<R>> {
     return (await solveAny(request)) as SolverReplyOf<R>;
   },
-  /** The teaching views' data: a plane's or a cylinder's (its arrays transferred), a doubly curved point's, three-axis'. */
+  /** The teaching views' data: a plane's or a cylinder's (its arrays transferred), any other surface's or mode's. */
   async teach(request: PageRequest): Promise<PageTeachReply> {
     const reply = (await teachJob()).teachPage(request);
     return isSolveRequest(reply.request) ? transfer(reply, transferables(reply as TeachReply)) : reply;

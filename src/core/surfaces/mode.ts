@@ -1,8 +1,8 @@
 /**
  * A machine mode (issue 27 point 3): not a surface, but what supplies the tool's posture at the
  * cutter-contact point over a surface model (surface.ts). Five-axis takes the lead and tilt as
- * given; three-axis keeps the tool upright and derives them from the slope and the raster angle
- * (modes/threeAxis.ts). One module per mode under modes/, one line in modes.ts's registry, beside
+ * given; a mode that keeps the tool upright derives them from the slope and the raster angle
+ * (modes/). One module per mode under modes/, one line in modes.ts's registry, beside
  * the registry of surfaces (registry.ts): a question is a tool, a mode, a surface, a pattern and a
  * target (question.ts), validated once. Types only. Angles degrees.
  */
@@ -30,7 +30,7 @@ export interface ModeDescriptorBase {
 export interface Posture {
   readonly leadAngleDeg: number;
   readonly tiltAngleDeg: number;
-  /** The pattern the passes make: three-axis passes are one-way whichever way they feed. */
+  /** The pattern the passes make: an upright tool's passes are one-way whichever way they feed. */
   readonly pattern: PassPattern;
 }
 

@@ -4,7 +4,7 @@
  * line in MODELS (or, for a surface that is not the product's, registerSurfaceModel); the solvers'
  * entry (solve.ts) and the validation find it here by the descriptor's `kind`, so no caller switches
  * on it. Machine modes, which supply the posture over these models, have their own registry beside
- * this one (modes.ts): a sloped plane is the plane under the three-axis mode, not a surface.
+ * this one (modes.ts): a sloped plane is the plane under the upright tool's mode, not a surface.
  */
 import type { ForwardInput } from '../domain/pass';
 import type { CylinderSurface, PlaneSurface, SurfaceDescriptorBase } from '../domain/surface';

@@ -9,7 +9,7 @@
  *   point), `leavesNoScallop` (a flat face lying on the surface);
  * - the pass motion and the next pass, folded into the general `forward` (scallop height to
  *   step-over) and `inverse` (step-over to cusp heights), with the fast `intervalMm` and the widest
- *   step-over `maxIntervalMm`: a surface whose adjacent passes are not congruent (three-axis
+ *   step-over `maxIntervalMm`: a surface whose adjacent passes are not congruent (upright
  *   waterline passes on a surface of revolution) implements these directly;
  * - gouging: `fit`, whether the tool reaches below the surface away from the contact.
  *
@@ -20,9 +20,9 @@
  *
  * Registered: the plane, the cylinders and the doubly curved point (models/*). A machine mode is
  * not a surface: it supplies the tool's posture over these models (mode.ts, modes.ts; the sloped
- * plane is the plane under the three-axis mode), and question.ts answers any registered mode over
- * any registered surface it has a posture on. Not yet a model: the three-axis waterline passes on a
- * surface of revolution (threeAxis/waterlineRevolution.ts), whose two adjacent passes are not
+ * plane is the plane under the upright tool's mode), and question.ts answers any registered mode over
+ * any registered surface it has a posture on. Not yet a model: the upright tool's waterline passes on a
+ * surface of revolution (its mode's waterlineRevolution.ts), whose two adjacent passes are not
  * congruent. Its step-over, cusp height and height limit fit `intervalMm`, `forward`, `inverse` and
  * `limits().limitMm` as they are (waterlineIntervalMm, waterlineForward, waterlineInverse,
  * waterlineHeightLimitMm); what does not is the per-flank part of the answers (ExactForward's flank
