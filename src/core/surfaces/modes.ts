@@ -5,7 +5,7 @@
  * (question.ts) finds the mode here by the descriptor's `kind`, so no caller switches on it.
  */
 import type { SurfaceDescriptorBase } from '../domain/surface';
-import type { MachineMode, ModeDescriptorBase, Posture } from './mode';
+import type { MachineMode, ModeDescriptorBase, OwnAnswer, Posture } from './mode';
 import { fiveAxisMode } from './modes/fiveAxis';
 import { threeAxisMode } from './modes/threeAxis';
 
@@ -45,9 +45,18 @@ export function registerMode<M extends ModeDescriptorBase>(mode: MachineMode<M>)
   };
 }
 
-/** True when the mode supplies a posture on this surface. */
-export function hasPostureOn(mode: MachineMode<ModeDescriptorBase>, surface: SurfaceDescriptorBase): boolean {
+/** True when the mode supplies a posture on this surface (a surface model answers at it). */
+export function postureOn(mode: MachineMode<ModeDescriptorBase>, surface: SurfaceDescriptorBase): boolean {
   return mode.surfaceKinds === null || mode.surfaceKinds.includes(surface.kind);
 }
 
-export type { MachineMode, ModeDescriptorBase, Posture };
+/** The mode's own answer on this surface for this descriptor (passes not congruent), or null. */
+export function ownAnswerOn(
+  mode: MachineMode<ModeDescriptorBase>,
+  descriptor: ModeDescriptorBase,
+  surface: SurfaceDescriptorBase,
+): OwnAnswer<ModeDescriptorBase> | null {
+  return mode.ownAnswers?.find((a) => a.surfaceKind === surface.kind && a.applies(descriptor)) ?? null;
+}
+
+export type { MachineMode, ModeDescriptorBase, OwnAnswer, Posture };

@@ -3,28 +3,17 @@
  * posture supplier), a surface (registry.ts: the model), a pass pattern and a target (a scallop
  * height, or a step-over), validated once (validateQuestion) and answered by the surface's model
  * at the mode's posture (answerQuestion). Any registered mode over any registered surface it has a
- * posture on is answered here with no other change; a mode on a surface it has no posture for is
- * refused with the mode's own one-line message. Never throws for any numeric input. Lengths mm,
+ * posture on is answered here with no other change; where a mode's passes on a surface are not
+ * congruent, its own answer (mode.ts OwnAnswer), with the per-flank parts null; a mode on a surface
+ * it has neither for is refused with the mode's own one-line message. Never throws for any numeric input. Lengths mm,
  * angles degrees.
  */
 import type { SurfaceDescriptorBase } from '../domain/surface';
 import type { PassPattern, ToolInput } from '../domain/tool';
 import { MAX_TOOL_RADIUS_MM, MIN_LENGTH_MM, MIN_TOOL_RADIUS_MM } from '../input/limits';
-import type { ModeDescriptorBase, Posture } from './mode';
-import { findMode, hasPostureOn } from './modes';
+import type { ModeDescriptorBase, Posture, QuestionAnswer, QuestionError, QuestionTarget, QuestionTool } from './mode';
+import { findMode, ownAnswerOn, postureOn } from './modes';
 import { findSurfaceModel } from './registry';
-
-/** The tool's radii, mm. */
-export interface QuestionTool {
-  readonly toolRadiusMm: number;
-  readonly cornerRadiusMm: number;
-}
-
-/** What is given: a scallop height h (forward) or a step-over L (inverse), mm. */
-export interface QuestionTarget {
-  readonly quantity: 'h' | 'interval';
-  readonly mm: number;
-}
 
 /** A question: tool + mode + surface + pattern + target. */
 export interface Question<
@@ -38,30 +27,13 @@ export interface Question<
   readonly target: QuestionTarget;
 }
 
-/** A refused part of a question: what it names (R, Rcr, a mode parameter, surface, h, interval) and one line. */
-export interface QuestionError {
-  readonly field: string;
-  readonly message: string;
-}
-
-/** A validated question and the posture its mode supplies. */
+/**
+ * A validated question and the posture its mode supplies; where the mode answers itself (its own
+ * solver validates by solving), the answer found then, so that it is not solved twice.
+ */
 export interface ValidQuestion extends Question {
   readonly posture: Posture;
-}
-
-/** The answer of a question (mm), measured as the surface measures (surface.ts's ForwardAnswer). */
-export interface QuestionAnswer {
-  readonly intervalMm: number;
-  readonly cuspHeightMm: number;
-  readonly otherCuspHeightMm: number | null;
-  readonly halfWidthRightMm: number;
-  readonly halfWidthLeftMm: number;
-  readonly contactOffsetMm: number;
-  /** The posture the mode supplied (degrees) and the pattern the passes make. */
-  readonly posture: Posture;
-  /** The widest step-over that still leaves a scallop, and the highest scallop the tool can leave. */
-  readonly maxIntervalMm: number;
-  readonly heightLimitMm: number;
+  readonly answered?: QuestionAnswer;
 }
 
 /** A number for a message: 6 significant digits, no exponent noise. */
@@ -155,10 +127,16 @@ export function validateQuestion<M extends ModeDescriptorBase, S extends Surface
   if (q.pattern !== 'one-way' && q.pattern !== 'zigzag')
     errors.push({ field: 'pattern', message: `Pass pattern must be one-way or zigzag (got ${String(q.pattern)}).` });
   if (mode === null || model === null) return { ok: false, errors };
-  errors.push(...mode.check(q.mode).map((e) => ({ field: e.parameter, message: e.message })));
-  if (!hasPostureOn(mode, q.surface)) errors.push({ field: 'surface', message: mode.refusal(q.surface.kind) });
+  errors.push(...mode.check(q.mode, q.surface).map((e) => ({ field: e.parameter, message: e.message })));
+  const own = ownAnswerOn(mode, q.mode, q.surface);
+  if (own === null && !postureOn(mode, q.surface))
+    errors.push({ field: 'surface', message: mode.refusal(q.surface.kind) });
   if (errors.length > 0) return { ok: false, errors };
   const posture = mode.posture(q.mode, q.pattern);
+  if (own !== null) {
+    const answered = own.answer(q.tool, q.mode, q.surface, q.target);
+    return answered.ok ? { ok: true, value: { ...q, posture, answered: answered.value } } : answered;
+  }
   const tool = posturedTool(q.tool, posture);
   const fit = model.fit(tool, q.surface);
   if (fit.gouges)
@@ -179,8 +157,9 @@ export function validateQuestion<M extends ModeDescriptorBase, S extends Surface
   return { ok: true, value: { ...q, posture } };
 }
 
-/** Answers a validated question: the surface's model at the mode's posture. */
+/** Answers a validated question: the surface's model at the mode's posture (or the mode's own answer, found by the validation). */
 export function answerQuestion(q: ValidQuestion): QuestionAnswer {
+  if (q.answered !== undefined) return q.answered;
   const model = findSurfaceModel(q.surface.kind);
   if (model === null) throw new Error(`no surface model registered for kind "${q.surface.kind}"`);
   const tool = posturedTool(q.tool, q.posture);
@@ -202,3 +181,5 @@ export function answerQuestion(q: ValidQuestion): QuestionAnswer {
     heightLimitMm: model.limits(tool, q.surface).limitMm,
   };
 }
+
+export type { QuestionAnswer, QuestionError, QuestionTarget, QuestionTool };

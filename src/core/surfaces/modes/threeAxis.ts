@@ -4,13 +4,17 @@
  * waterline passes) give its lead and tilt at the CC point in closed form (threeAxis/slopePosture.ts),
  * over the plane's model: the sloped plane is the plane at that posture, not a surface of its own.
  * Feeding down the slope is the same upright tool on the same line, so zigzag passes leave what
- * one-way passes leave: the pattern is one-way. Waterline passes on a surface of revolution are
- * not congruent (surface.ts): threeAxis/waterlineRevolution.ts answers them; the programmed steps
- * (Lxy, dz) stay threeAxis/slopedPlane.ts's. Angles degrees.
+ * one-way passes leave: the pattern is one-way. Waterline passes on a surface of revolution (a
+ * doubly curved point: Rf the horizontal circle's normal radius, Rc the meridian's) are not
+ * congruent (surface.ts): the mode answers them itself (mode.ts OwnAnswer) by
+ * threeAxis/waterlineRevolution.ts, without per-flank parts. The programmed steps (Lxy, dz) stay
+ * threeAxis/slopedPlane.ts's and waterlineRevolution.ts's. Angles degrees.
  */
+import type { DoublyCurvedSurface, SurfaceDescriptorBase } from '../../domain/surface';
 import type { ThreeAxisPasses } from '../../threeAxis/slopedPlane';
 import { slopePosture } from '../../threeAxis/slopePosture';
-import type { MachineMode, ModeError } from '../mode';
+import { waterlineForward, waterlineHeightLimitMm, waterlineInverse } from '../../threeAxis/waterlineRevolution';
+import type { MachineMode, ModeError, OwnAnswer } from '../mode';
 
 /** The upright tool over a slope `slopeDeg` (0 <= alpha < 90), with raster or waterline passes. */
 export interface ThreeAxisMode {
@@ -21,9 +25,18 @@ export interface ThreeAxisMode {
   readonly rasterAngleDeg: number;
 }
 
-function check(mode: ThreeAxisMode): ModeError[] {
+/** A surface of revolution (waterline): its own solver takes the slope up to 90 (a concave meridian's). */
+const onRevolution = (mode: ThreeAxisMode, surface: SurfaceDescriptorBase) =>
+  mode.passes === 'waterline' && surface.kind === 'doublyCurved';
+
+function check(mode: ThreeAxisMode, surface: SurfaceDescriptorBase): ModeError[] {
   const out: ModeError[] = [];
   const a = mode.slopeDeg;
+  if (onRevolution(mode, surface)) {
+    if (!(a > 0 && a <= 90))
+      out.push({ parameter: 'slope', message: `Slope must be above 0 and at most 90 degrees (got ${a}).` });
+    return out;
+  }
   if (!(a >= 0 && a < 90))
     out.push({
       parameter: 'slope',
@@ -43,12 +56,51 @@ function posture(mode: ThreeAxisMode) {
   return { leadAngleDeg: p.leadDeg, tiltAngleDeg: p.tiltDeg, pattern: 'one-way' as const };
 }
 
-/** The three-axis mode: a posture on the plane (the sloped plane). */
+/** A straight principal radius (infinite) as the revolution solver takes it (null). */
+const radius = (r: number): number | null => (Number.isFinite(r) ? r : null);
+
+/** Waterline passes on a surface of revolution: not congruent, answered by their own solver. */
+const waterlineOnRevolution: OwnAnswer<ThreeAxisMode> = {
+  surfaceKind: 'doublyCurved',
+  applies: (mode) => mode.passes === 'waterline',
+  answer: (tool, mode, surface, target) => {
+    const s = surface as DoublyCurvedSurface;
+    const c = {
+      ...tool,
+      slopeDeg: mode.slopeDeg,
+      feedRadiusMm: radius(s.feedRadiusMm),
+      crossRadiusMm: radius(s.crossRadiusMm),
+    };
+    const r =
+      target.quantity === 'h'
+        ? waterlineForward(c, target.mm)
+        : waterlineInverse(c, { field: 'interval', mm: target.mm });
+    if (!r.ok) return { ok: false, errors: r.errors.map((e) => ({ field: e.field, message: e.message })) };
+    const a = r.value;
+    return {
+      ok: true,
+      value: {
+        intervalMm: a.intervalMm,
+        cuspHeightMm: a.cuspHeightMm,
+        otherCuspHeightMm: null,
+        halfWidthRightMm: null,
+        halfWidthLeftMm: null,
+        contactOffsetMm: null,
+        posture: { leadAngleDeg: a.leadDeg, tiltAngleDeg: a.tiltDeg, pattern: 'one-way' },
+        maxIntervalMm: null,
+        heightLimitMm: waterlineHeightLimitMm(c),
+      },
+    };
+  },
+};
+
+/** The three-axis mode: a posture on the plane (the sloped plane); its own answer for waterline passes on a surface of revolution. */
 export const threeAxisMode: MachineMode<ThreeAxisMode> = {
   kind: 'threeAxis',
   surfaceKinds: ['plane'],
   check,
   posture,
+  ownAnswers: [waterlineOnRevolution],
   refusal: (kind) =>
-    `Three-axis machining is answered on a sloped plane (or, waterline, a surface of revolution), not on a surface of kind "${kind}": the upright tool's posture is known there only.`,
+    `Three-axis machining is answered on a sloped plane, or with waterline passes on a surface of revolution, not here (a surface of kind "${kind}"): the upright tool's posture is known there only.`,
 };
