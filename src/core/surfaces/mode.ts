@@ -4,7 +4,7 @@
  * given; a mode that keeps the tool upright derives them from the slope and the raster angle
  * (modes/). One module per mode under modes/, one line in modes.ts's registry, beside
  * the registry of surfaces (registry.ts): a question is a tool, a mode, a surface, a pattern and a
- * target (question.ts), validated once. Types only. Angles degrees.
+ * target (question.ts), validated once. Types, and how a refused number is quoted. Angles degrees.
  */
 import type { SurfaceDescriptorBase } from '../domain/surface';
 import type { PassPattern } from '../domain/tool';
@@ -20,6 +20,12 @@ export interface QuestionParameter {
   readonly name: string;
   /** The field that gives it. */
   readonly field: FieldId;
+}
+
+/** A number as a refusal quotes it: `(got ...)` never shows NaN or Infinity (said in words instead). */
+export function shownNumber(x: unknown): string {
+  if (typeof x !== 'number') return `"${String(x).slice(0, 24)}"`;
+  return Number.isFinite(x) ? String(x) : 'no finite number';
 }
 
 /** What every machine mode descriptor has: its kind, the key of its mode in modes.ts. */

@@ -5,13 +5,21 @@
  * at the mode's posture (answerQuestion). Any registered mode over any registered surface it has a
  * posture on is answered here with no other change; where a mode's passes on a surface are not
  * congruent, its own answer (mode.ts OwnAnswer), with the per-flank parts null; a mode on a surface
- * it has neither for is refused with the mode's own one-line message. Never throws for any numeric input. Lengths mm,
- * angles degrees.
+ * it has neither for is refused with the mode's own one-line message. Never throws for any numeric
+ * input. Lengths mm, angles degrees.
  */
 import type { SurfaceDescriptorBase } from '../domain/surface';
 import type { PassPattern, ToolInput } from '../domain/tool';
 import { MAX_TOOL_RADIUS_MM, MIN_LENGTH_MM, MIN_TOOL_RADIUS_MM } from '../input/limits';
-import type { ModeDescriptorBase, Posture, QuestionAnswer, QuestionError, QuestionTarget, QuestionTool } from './mode';
+import {
+  type ModeDescriptorBase,
+  type Posture,
+  type QuestionAnswer,
+  type QuestionError,
+  type QuestionTarget,
+  type QuestionTool,
+  shownNumber,
+} from './mode';
 import { findMode, ownAnswerOn, postureOn } from './modes';
 import { findSurfaceModel } from './registry';
 
@@ -58,10 +66,13 @@ function toolErrors(tool: QuestionTool): QuestionError[] {
   if (!(R >= MIN_TOOL_RADIUS_MM && R <= MAX_TOOL_RADIUS_MM))
     out.push({
       field: 'R',
-      message: `Tool radius R must be from ${MIN_TOOL_RADIUS_MM} mm to ${MAX_TOOL_RADIUS_MM} mm (got ${R}).`,
+      message: `Tool radius R must be from ${MIN_TOOL_RADIUS_MM} mm to ${MAX_TOOL_RADIUS_MM} mm (got ${shownNumber(R)}).`,
     });
   if (!(Rcr >= 0 && (out.length > 0 || Rcr <= R)))
-    out.push({ field: 'Rcr', message: `Corner radius Rcr must be from 0 to the tool radius R (got ${Rcr}).` });
+    out.push({
+      field: 'Rcr',
+      message: `Corner radius Rcr must be from 0 to the tool radius R (got ${shownNumber(Rcr)}).`,
+    });
   return out;
 }
 
@@ -72,7 +83,8 @@ function targetErrors(q: Question, tool: ToolInput, pattern: PassPattern): Quest
   const { quantity, mm } = q.target;
   const min = quantity === 'h' ? MIN_LENGTH_MM : 2 * MIN_LENGTH_MM;
   const name = quantity === 'h' ? 'Scallop height h' : 'Step-over L';
-  if (!(mm >= min)) return [{ field: quantity, message: `${name} must be at least ${min} mm (got ${mm}).` }];
+  if (!(mm >= min))
+    return [{ field: quantity, message: `${name} must be at least ${min} mm (got ${shownNumber(mm)}).` }];
   const noScallop = model.leavesNoScallop(tool, q.surface);
   const limit = model.limits(tool, q.surface).limitMm;
   if (quantity === 'h') {
@@ -86,7 +98,7 @@ function targetErrors(q: Question, tool: ToolInput, pattern: PassPattern): Quest
       : [
           {
             field: 'h',
-            message: `${name} must be below ${num(limit)} mm here (got ${mm}): above it a flank or the shank leaves a wall.`,
+            message: `${name} must be below ${num(limit)} mm here (got ${shownNumber(mm)}): above it a flank or the shank leaves a wall.`,
           },
         ];
   }
@@ -103,7 +115,7 @@ function targetErrors(q: Question, tool: ToolInput, pattern: PassPattern): Quest
     : [
         {
           field: 'interval',
-          message: `${name} must be below ${num(max)} mm here (got ${mm}): passes this far apart leave a wall.`,
+          message: `${name} must be below ${num(max)} mm here (got ${shownNumber(mm)}): passes this far apart leave a wall.`,
         },
       ];
 }
@@ -125,7 +137,10 @@ export function validateQuestion<M extends ModeDescriptorBase, S extends Surface
   if (model === null)
     errors.push({ field: 'surface', message: `No surface model of kind "${q.surface.kind}" is registered.` });
   if (q.pattern !== 'one-way' && q.pattern !== 'zigzag')
-    errors.push({ field: 'pattern', message: `Pass pattern must be one-way or zigzag (got ${String(q.pattern)}).` });
+    errors.push({
+      field: 'pattern',
+      message: `Pass pattern must be one-way or zigzag (got ${shownNumber(q.pattern)}).`,
+    });
   if (mode === null || model === null) return { ok: false, errors };
   errors.push(...mode.check(q.mode, q.surface).map((e) => ({ field: e.parameter, message: e.message })));
   const own = ownAnswerOn(mode, q.mode, q.surface);

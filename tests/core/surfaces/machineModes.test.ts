@@ -204,6 +204,17 @@ describe('three-axis: the upright posture over the plane', () => {
     expect(!high.ok && high.errors[0]?.message).toMatch(
       /^Scallop height h must be below \d+(\.\d+)? mm here \(got 4\)/,
     );
+    const nonFinite = validateQuestion({
+      ...base,
+      tool: { toolRadiusMm: Number.NaN, cornerRadiusMm: 1 },
+      mode: { kind: 'fiveAxis', leadAngleDeg: Number.POSITIVE_INFINITY, tiltAngleDeg: 0 },
+      target: { quantity: 'h', mm: 0.01 },
+    });
+    const words = !nonFinite.ok ? nonFinite.errors.map((e) => e.message) : [];
+    expect(words).toEqual([
+      'Tool radius R must be from 0.001 mm to 1000 mm (got no finite number).',
+      'Lead angle must be from 0 to below 90 degrees (got no finite number).',
+    ]);
     const unknown = validateQuestion({ ...base, mode: { kind: 'fourAxis' }, target: { quantity: 'h', mm: 0.01 } });
     expect(!unknown.ok && unknown.errors[0]?.message).toBe('No machine mode of kind "fourAxis" is registered.');
   });

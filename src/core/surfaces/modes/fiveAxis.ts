@@ -2,7 +2,7 @@
  * Five-axis machining as a machine mode (mode.ts): the lead and tilt are given, on every registered
  * surface; the pattern is the one asked. Angles degrees.
  */
-import type { MachineMode, ModeError } from '../mode';
+import { type MachineMode, type ModeError, shownNumber } from '../mode';
 
 /** The tool held at a given lead `rho` (0 <= rho < 90) and tilt (-90 < tilt < 90), degrees. */
 export interface FiveAxisMode {
@@ -15,9 +15,12 @@ function check(mode: FiveAxisMode): ModeError[] {
   const out: ModeError[] = [];
   const { leadAngleDeg: rho, tiltAngleDeg: tilt } = mode;
   if (!(rho >= 0 && rho < 90))
-    out.push({ parameter: 'rho', message: `Lead angle must be from 0 to below 90 degrees (got ${rho}).` });
+    out.push({ parameter: 'rho', message: `Lead angle must be from 0 to below 90 degrees (got ${shownNumber(rho)}).` });
   if (!(tilt > -90 && tilt < 90))
-    out.push({ parameter: 'tilt', message: `Tilt angle must be between -90 and 90 degrees (got ${tilt}).` });
+    out.push({
+      parameter: 'tilt',
+      message: `Tilt angle must be between -90 and 90 degrees (got ${shownNumber(tilt)}).`,
+    });
   return out;
 }
 

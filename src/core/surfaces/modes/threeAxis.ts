@@ -14,7 +14,7 @@ import type { DoublyCurvedSurface, SurfaceDescriptorBase } from '../../domain/su
 import type { ThreeAxisPasses } from '../../threeAxis/slopedPlane';
 import { slopePosture } from '../../threeAxis/slopePosture';
 import { waterlineForward, waterlineHeightLimitMm, waterlineInverse } from '../../threeAxis/waterlineRevolution';
-import type { MachineMode, ModeError, OwnAnswer } from '../mode';
+import { type MachineMode, type ModeError, type OwnAnswer, shownNumber } from '../mode';
 
 /** The upright tool over a slope `slopeDeg` (0 <= alpha < 90), with raster or waterline passes. */
 export interface ThreeAxisMode {
@@ -34,19 +34,25 @@ function check(mode: ThreeAxisMode, surface: SurfaceDescriptorBase): ModeError[]
   const a = mode.slopeDeg;
   if (onRevolution(mode, surface)) {
     if (!(a > 0 && a <= 90))
-      out.push({ parameter: 'slope', message: `Slope must be above 0 and at most 90 degrees (got ${a}).` });
+      out.push({
+        parameter: 'slope',
+        message: `Slope must be above 0 and at most 90 degrees (got ${shownNumber(a)}).`,
+      });
     return out;
   }
   if (!(a >= 0 && a < 90))
     out.push({
       parameter: 'slope',
-      message: `Slope must be from 0 to below 90 degrees (got ${a}): a vertical wall is cut flat by the side of the tool.`,
+      message: `Slope must be from 0 to below 90 degrees (got ${shownNumber(a)}): a vertical wall is cut flat by the side of the tool.`,
     });
   else if (mode.passes === 'waterline' && a === 0)
     out.push({ parameter: 'slope', message: 'Slope must be above 0 degrees for waterline passes (got 0).' });
   const psi = mode.rasterAngleDeg;
   if (mode.passes === 'raster' && !(psi >= 0 && psi <= 90))
-    out.push({ parameter: 'rasterAngle', message: `Raster angle must be from 0 to 90 degrees (got ${psi}).` });
+    out.push({
+      parameter: 'rasterAngle',
+      message: `Raster angle must be from 0 to 90 degrees (got ${shownNumber(psi)}).`,
+    });
   return out;
 }
 
