@@ -13,10 +13,11 @@
  * Replies carry their request, so the page checks them again against the inputs on screen; this
  * client only keeps the worker from doing work nobody waits for.
  *
- * Loading is not a stall (issue 28): the watchdog counts only while the worker can answer, from
- * its `ready` (its first module graph loaded, rpc.ts expose) and outside a lazily imported job
- * module's load (rpc.ts lazyModule); a load gets LOAD_WATCHDOG_MS of its own, so that a worker whose
- * script never arrives is still restarted.
+ * Loading is not a stall (issue 28): the watchdog counts only while the worker can answer: for the
+ * client's first worker from its `ready` (its first module graph loaded, rpc.ts expose), and for
+ * every worker outside a lazily imported job module's load (rpc.ts lazyModule, which the worker
+ * announces); a load gets LOAD_WATCHDOG_MS of its own, so that a worker whose script never arrives
+ * is still restarted. A restarted worker's script is cached: its load counts as answering time.
  */
 import { type Endpoint, isLoadMessage, type Remote, wrap } from './rpc';
 import type { WorkerApi } from './workerApi';
@@ -121,7 +122,10 @@ export class JobClient<Req, Rep> {
       if (this.worker === worker && isLoadMessage(e.data)) this.loaded(e.data);
     });
     this.worker = worker;
-    this.ready = false;
+    // Only the first worker's script load is not counted (a newcomer's first page, a dev server
+    // compiling modules): a restarted worker's script is cached, and one that never says it is
+    // ready is as stuck as one that never answers.
+    this.ready = this.started > 0;
     this.loads = 0;
     this.remote = wrap<WorkerApi>(worker);
     this.started++;

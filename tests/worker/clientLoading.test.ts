@@ -1,8 +1,9 @@
 /**
  * The worker client's watchdog does not count loading as a stall (issue 28, point 12): a worker
  * whose first script is still loading, or a job whose lazily imported module is still loading, is
- * not restarted as "the solver stopped answering"; once loaded, a stall still is, and a load that
- * never ends is restarted after the load limit. The client's timers are Vitest's fake ones (time
+ * not restarted as "the solver stopped answering"; once loaded, a stall still is, a load that never
+ * ends is restarted after the load limit, and a restarted worker (its script cached) that never
+ * says it is ready is restarted as stuck. The client's timers are Vitest's fake ones (time
  * advanced by the test); the worker is a real rpc.ts endpoint on a MessageChannel.
  */
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
@@ -116,6 +117,38 @@ describe('the watchdog does not count loading as a stall', () => {
     vi.advanceTimersByTime(WATCHDOG_MS + 1);
     await until(() => restarts.length === 1);
     expect(restarts[0]?.reason).toBe('the solver stopped answering');
+    c.dispose();
+  });
+
+  it("a restarted worker's script load counts (cached): one that never says ready is restarted as stuck", async () => {
+    const first = new LoadingWorker({ solve: () => new Promise<number>(() => {}) });
+    first.load();
+    const later: LoadingWorker[] = [];
+    const restarts: RestartInfo[] = [];
+    const c = new JobClient<number, number>({
+      createWorker: () => {
+        if (later.length === 0 && restarts.length === 0) {
+          later.push(first);
+          return first;
+        }
+        const w = new LoadingWorker({ solve: async (r) => r }); // never exposed: never ready
+        later.push(w);
+        return w;
+      },
+      call: (api, r) => (api as unknown as { solve(r: number): Promise<number> }).solve(r),
+      same: (a, b) => a === b,
+      onReply: () => {},
+      onRestart: (info) => restarts.push(info),
+      watchdogMs: WATCHDOG_MS,
+      loadWatchdogMs: LOAD_WATCHDOG_MS,
+    });
+    c.request(1);
+    await flush(); // the first worker is ready, and its call hangs
+    vi.advanceTimersByTime(WATCHDOG_MS + 1);
+    await until(() => restarts.length === 1);
+    vi.advanceTimersByTime(WATCHDOG_MS + 1); // the restarted worker never says ready
+    await until(() => restarts.length === 2);
+    expect(restarts.map((r) => r.reason)).toEqual(['the solver stopped answering', 'the solver stopped answering']);
     c.dispose();
   });
 
