@@ -195,7 +195,18 @@ describe('three-axis: the upright posture over the plane', () => {
       mode: { kind: 'threeAxis', slopeDeg: 0, passes: 'waterline', rasterAngleDeg: 0 },
       target: { quantity: 'h', mm: 0.01 },
     });
-    expect(!flat.ok && flat.errors[0]?.message).toBe('Slope must be above 0 degrees for waterline passes (got 0).');
+    // The sloped plane solver's own words (threeAxis/slopedPlane.ts slopeErrors: one place for the rule).
+    expect(!flat.ok && flat.errors[0]?.message).toBe(
+      'Slope alpha must be above 0 degrees for waterline passes: on a flat floor every level is the same, so there is no step-down.',
+    );
+    const nanSlope = validateQuestion({
+      ...base,
+      mode: { kind: 'threeAxis', slopeDeg: Number.NaN, passes: 'raster', rasterAngleDeg: 0 },
+      target: { quantity: 'h', mm: 0.01 },
+    });
+    expect(!nanSlope.ok && nanSlope.errors[0]?.message).toBe(
+      'Slope must be a number of degrees (got no finite number).',
+    );
     const high = validateQuestion({
       ...base,
       mode: { kind: 'threeAxis', slopeDeg: 30, passes: 'raster', rasterAngleDeg: 0 },

@@ -11,7 +11,7 @@
  * threeAxis/slopedPlane.ts's and waterlineRevolution.ts's. Angles degrees.
  */
 import type { DoublyCurvedSurface, SurfaceDescriptorBase } from '../../domain/surface';
-import type { ThreeAxisPasses } from '../../threeAxis/slopedPlane';
+import { slopeErrors, type ThreeAxisPasses } from '../../threeAxis/slopedPlane';
 import { slopePosture } from '../../threeAxis/slopePosture';
 import { waterlineForward, waterlineHeightLimitMm, waterlineInverse } from '../../threeAxis/waterlineRevolution';
 import { type MachineMode, type ModeError, type OwnAnswer, shownNumber } from '../mode';
@@ -25,35 +25,20 @@ export interface ThreeAxisMode {
   readonly rasterAngleDeg: number;
 }
 
-/** A surface of revolution (waterline): its own solver takes the slope up to 90 (a concave meridian's). */
-const onRevolution = (mode: ThreeAxisMode, surface: SurfaceDescriptorBase) =>
-  mode.passes === 'waterline' && surface.kind === 'doublyCurved';
-
+/**
+ * The slope's and raster angle's errors on the sloped plane, in the plane solver's own words
+ * (threeAxis/slopedPlane.ts slopeErrors); on a surface of revolution the waterline solver checks
+ * them itself (its own answer).
+ */
 function check(mode: ThreeAxisMode, surface: SurfaceDescriptorBase): ModeError[] {
-  const out: ModeError[] = [];
-  const a = mode.slopeDeg;
-  if (onRevolution(mode, surface)) {
-    if (!(a > 0 && a <= 90))
-      out.push({
-        parameter: 'slope',
-        message: `Slope must be above 0 and at most 90 degrees (got ${shownNumber(a)}).`,
-      });
-    return out;
-  }
-  if (!(a >= 0 && a < 90))
-    out.push({
-      parameter: 'slope',
-      message: `Slope must be from 0 to below 90 degrees (got ${shownNumber(a)}): a vertical wall is cut flat by the side of the tool.`,
-    });
-  else if (mode.passes === 'waterline' && a === 0)
-    out.push({ parameter: 'slope', message: 'Slope must be above 0 degrees for waterline passes (got 0).' });
-  const psi = mode.rasterAngleDeg;
-  if (mode.passes === 'raster' && !(psi >= 0 && psi <= 90))
-    out.push({
-      parameter: 'rasterAngle',
-      message: `Raster angle must be from 0 to 90 degrees (got ${shownNumber(psi)}).`,
-    });
-  return out;
+  if (mode.passes === 'waterline' && surface.kind === 'doublyCurved') return [];
+  const finite = (['slopeDeg', 'rasterAngleDeg'] as const).filter((k) => !Number.isFinite(mode[k]));
+  if (finite.length > 0)
+    return finite.map((k) => ({
+      parameter: k === 'slopeDeg' ? 'slope' : 'rasterAngle',
+      message: `${k === 'slopeDeg' ? 'Slope' : 'Raster angle'} must be a number of degrees (got ${shownNumber(mode[k])}).`,
+    }));
+  return slopeErrors(mode).map((e) => ({ parameter: e.field, message: e.message }));
 }
 
 /** The upright tool's lead and tilt (degrees) over the slope, one-way. */
