@@ -6,6 +6,8 @@
  * scallop height that leaves it, or a step-over). The callers only write the answer (a table, JSON
  * or a CSV row). Three-axis questions (a slope) likewise. Pure.
  */
+
+import type { PassPattern } from '../core/domain/tool';
 import {
   type AnyInputError,
   type DescribeOptions,
@@ -24,6 +26,16 @@ import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/
 import { isNumberText } from '../core/output/csvWrite';
 import { doublyCurvedHeightForRaMm } from '../core/roughness/doublyCurved';
 import { type DoublyCurvedProblem, validateDoublyCurved } from '../core/roughness/doublyCurvedValidate';
+import type { QuestionParameter } from '../core/surfaces/mode';
+import { findMode } from '../core/surfaces/modes';
+import {
+  answerQuestion,
+  type QuestionAnswer,
+  type QuestionError,
+  type ValidQuestion,
+  validateQuestion,
+} from '../core/surfaces/question';
+import { findSurfaceModel } from '../core/surfaces/registry';
 import { solveThreeAxis } from '../core/threeAxis/solve';
 import {
   type ThreeAxisAnswer,
@@ -314,4 +326,49 @@ function inUnit(message: string, unit: LengthUnit, gotMm: string, gotTyped: stri
     /(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?) mm\b/g,
     (_, n: string) => `${formatInputNumber(fromMm(Number(n), unit))} ${unitSymbol(unit)}`,
   );
+}
+
+/**
+ * A question over the registries (core surfaces/question.ts: a registered machine mode over a
+ * registered surface) from the command line's values: the tool, the mode's and the surface's
+ * parameters (each read from its field's option, mode.ts's QuestionParameter), the pattern and h or
+ * L, validated once and answered; or the errors, each naming its option, in one line.
+ */
+export function answerRegistryQuestion(
+  values: QuestionValues,
+  kinds: { readonly mode: string; readonly surface: string },
+  quantity: 'h' | 'interval',
+):
+  | { readonly ok: true; readonly question: ValidQuestion; readonly answer: QuestionAnswer }
+  | { readonly ok: false; readonly errors: readonly QuestionError[] } {
+  const mode = findMode(kinds.mode);
+  const model = findSurfaceModel(kinds.surface);
+  const errors: QuestionError[] = [];
+  const number = (p: QuestionParameter): number => {
+    const option = FIELDS[p.field].cli as ValueOption;
+    const text = given(values, option)?.trim();
+    if (text !== undefined && isNumberText(text)) return Number(text);
+    errors.push({
+      field: p.name,
+      message: `--${option} must be a number (got ${text === undefined ? 'nothing' : `"${text.slice(0, 24)}"`}).`,
+    });
+    return Number.NaN;
+  };
+  const of = (ps: readonly QuestionParameter[] | undefined) =>
+    Object.fromEntries((ps ?? []).map((p) => [p.name, number(p)]));
+  const tool = {
+    toolRadiusMm: number({ name: 'R', field: 'R' }),
+    cornerRadiusMm: number({ name: 'Rcr', field: 'Rcr' }),
+  };
+  const target = { quantity, mm: number({ name: quantity, field: quantity }) };
+  const question = {
+    tool,
+    mode: { kind: kinds.mode, ...of(mode?.parameters) },
+    surface: { kind: kinds.surface, ...of(model?.parameters) },
+    pattern: (given(values, FIELDS.pattern.cli as ValueOption)?.trim() ?? 'one-way') as PassPattern,
+    target,
+  };
+  if (errors.length > 0) return { ok: false, errors };
+  const v = validateQuestion(question);
+  return v.ok ? { ok: true, question: v.value, answer: answerQuestion(v.value) } : v;
 }

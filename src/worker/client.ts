@@ -12,8 +12,14 @@
  *
  * Replies carry their request, so the page checks them again against the inputs on screen; this
  * client only keeps the worker from doing work nobody waits for.
+ *
+ * Loading is not a stall (issue 28): the watchdog counts only while the worker can answer: for the
+ * client's first worker from its `ready` (its first module graph loaded, rpc.ts expose), and for
+ * every worker outside a lazily imported job module's load (rpc.ts lazyModule, which the worker
+ * announces); a load gets LOAD_WATCHDOG_MS of its own, so that a worker whose script never arrives
+ * is still restarted. A restarted worker's script is cached: its load counts as answering time.
  */
-import { type Endpoint, type Remote, wrap } from './rpc';
+import { type Endpoint, isLoadMessage, type Remote, wrap } from './rpc';
 import type { WorkerApi } from './workerApi';
 
 /** What the client needs of a worker: a message endpoint that reports errors and can be terminated. */
@@ -44,10 +50,14 @@ export interface JobClientOptions<Req, Rep> {
   readonly onRestart: (info: RestartInfo<Req>) => void;
   /** No answer within this time means the worker is dead or stuck (ms). */
   readonly watchdogMs?: number;
+  /** The longest a load may take (LOAD_WATCHDOG_MS; a stand-in in tests), ms. */
+  readonly loadWatchdogMs?: number;
 }
 
 /** No answer within this time means the worker is dead or stuck. */
 export const WATCHDOG_MS = 3000;
+/** A worker still loading (its first script, or a job's module) after this long is restarted (ms). */
+export const LOAD_WATCHDOG_MS = 30000;
 /** A request that kills every new worker is not repeated forever. */
 export const MAX_CONSECUTIVE_RESTARTS = 3;
 
@@ -60,6 +70,10 @@ export class JobClient<Req, Rep> {
   /** The latest request's reply is still to come (neither delivered nor given up on). */
   private awaiting = false;
   private watchdog: ReturnType<typeof setTimeout> | null = null;
+  /** The current worker has said it is ready (its first module graph loaded). */
+  private ready = false;
+  /** Lazily imported modules the current worker is loading now. */
+  private loads = 0;
   private consecutiveRestarts = 0;
   /** Number of workers started so far (1 after the first request). */
   started = 0;
@@ -104,7 +118,15 @@ export class JobClient<Req, Rep> {
       const message = (e as { message?: string }).message;
       if (this.worker === worker) this.restart(`the solver failed (${message || 'worker error'})`);
     });
+    worker.addEventListener('message', (e) => {
+      if (this.worker === worker && isLoadMessage(e.data)) this.loaded(e.data);
+    });
     this.worker = worker;
+    // Only the first worker's script load is not counted (a newcomer's first page, a dev server
+    // compiling modules): a restarted worker's script is cached, and one that never says it is
+    // ready is as stuck as one that never answers.
+    this.ready = this.started > 0;
+    this.loads = 0;
     this.remote = wrap<WorkerApi>(worker);
     this.started++;
     return this.remote;
@@ -162,11 +184,23 @@ export class JobClient<Req, Rep> {
     this.options.onRestart({ reason, gaveUp, request: latest?.request ?? null });
   }
 
+  /** The worker's word on its loading: the watchdog counts again once it is ready and nothing loads. */
+  private loaded(m: { readonly rpc: 'ready' } | { readonly rpc: 'loading'; readonly on: boolean }): void {
+    if (m.rpc === 'ready') this.ready = true;
+    else this.loads = Math.max(0, this.loads + (m.on ? 1 : -1));
+    if (this.inFlight !== null) this.startWatchdog();
+  }
+
+  /**
+   * Arms the watchdog for the call in flight: the stall limit while the worker can answer, the load
+   * limit while it loads (its first script, or a job's module).
+   */
   private startWatchdog(): void {
     this.stopWatchdog();
+    const loading = !this.ready || this.loads > 0;
     this.watchdog = setTimeout(
-      () => this.restart('the solver stopped answering'),
-      this.options.watchdogMs ?? WATCHDOG_MS,
+      () => this.restart(loading ? 'the solver did not load' : 'the solver stopped answering'),
+      loading ? (this.options.loadWatchdogMs ?? LOAD_WATCHDOG_MS) : (this.options.watchdogMs ?? WATCHDOG_MS),
     );
   }
 

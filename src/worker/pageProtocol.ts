@@ -16,6 +16,7 @@ import type {
   DoublyCurvedInverseInput,
   DoublyCurvedPass,
 } from '../core/surfaces/doublyCurved/types';
+import type { Question, QuestionAnswer, QuestionError } from '../core/surfaces/question';
 import type { SlopeSweep } from '../core/threeAxis/slopeSweep';
 import type { ThreeAxisAnswer, ThreeAxisInputError, ThreeAxisProblem } from '../core/threeAxis/validate';
 import type { WaterlineGeometry } from '../core/threeAxis/waterlineRevolution';
@@ -49,8 +50,35 @@ export interface ThreeAxisRequest {
 /** Every question the page's `solve` job takes. */
 export type PageRequest = SolveRequest | CurvedRequest | ThreeAxisRequest;
 
+/**
+ * A question over the registries (core surfaces/question.ts): any registered machine mode over any
+ * registered surface it has a posture on, answered by the surface's model at the mode's posture.
+ * The product's own combinations keep their requests above (their replies carry the views' parts);
+ * a mode or surface registered beside them is asked this way, with no other change.
+ */
+export interface QuestionRequest {
+  readonly mode: 'question';
+  readonly input: Question;
+}
+
+/** The answer to a QuestionRequest (the worker validates the question again: it trusts no caller). */
+export type QuestionReply =
+  | { readonly ok: true; readonly request: QuestionRequest; readonly answer: QuestionAnswer; readonly solveMs: number }
+  | { readonly ok: false; readonly request: QuestionRequest; readonly errors: readonly QuestionError[] };
+
+/** Every question the worker's one `solve` job takes: the page's, and any over the registries. */
+export type SolverRequest = PageRequest | QuestionRequest;
+
+/** The reply of the `solve` job to a request of type R. */
+export type SolverReplyOf<R extends SolverRequest> = R extends QuestionRequest ? QuestionReply : PageReply;
+
+/** True for a question over the registries. */
+export function isQuestionRequest(request: SolverRequest): request is QuestionRequest {
+  return request.mode === 'question';
+}
+
 /** True for a plane's or a cylinder's question (protocol.ts's SolveRequest: the teaching views, the table...). */
-export function isSolveRequest(request: PageRequest): request is SolveRequest {
+export function isSolveRequest(request: SolverRequest): request is SolveRequest {
   return request.mode === 'forward' || request.mode === 'inverse' || request.mode === 'ra';
 }
 
@@ -166,6 +194,6 @@ export type ThreeAxisReply =
 export type PageReply = SolveReply | CurvedReply | ThreeAxisReply;
 
 /** True for a plane's or a cylinder's answer. */
-export function isSolveReply(reply: PageReply): reply is SolveReply {
+export function isSolveReply(reply: PageReply | QuestionReply): reply is SolveReply {
   return isSolveRequest(reply.request);
 }

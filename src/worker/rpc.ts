@@ -33,6 +33,49 @@ type ReplyMessage =
   | { readonly rpc: 'error'; readonly id: number; readonly message: string }
   | { readonly rpc: 'progress'; readonly id: number; readonly value: unknown };
 
+/**
+ * What the worker says of its own loading, outside any call (client.ts's watchdog reads it): `ready`
+ * once its first module graph is loaded and it answers; `loading` while a lazily imported module of
+ * a job loads (`on` true when it starts, false when it is in).
+ */
+export type LoadMessage = { readonly rpc: 'ready' } | { readonly rpc: 'loading'; readonly on: boolean };
+
+/** True for a LoadMessage. */
+export function isLoadMessage(data: unknown): data is LoadMessage {
+  const rpc = (data as { rpc?: unknown } | null)?.rpc;
+  return rpc === 'ready' || rpc === 'loading';
+}
+
+/** The endpoint `expose` answers on (one per worker), told of lazy loads (lazyModule). */
+let exposedOn: Endpoint | null = null;
+
+/**
+ * A module loaded on first use (a dynamic import), once: the endpoint is told while it loads, so
+ * that the page's watchdog does not count the load as a stall. Later calls get the loaded module.
+ */
+export function lazyModule<M>(load: () => Promise<M>): () => Promise<M> {
+  let loaded: Promise<M> | null = null;
+  return () => {
+    if (loaded !== null) return loaded;
+    const endpoint = exposedOn;
+    endpoint?.postMessage({ rpc: 'loading', on: true } satisfies LoadMessage, []);
+    const done = () => endpoint?.postMessage({ rpc: 'loading', on: false } satisfies LoadMessage, []);
+    const pending = load().then(
+      (module) => {
+        done();
+        return module;
+      },
+      (error: unknown) => {
+        done();
+        loaded = null; // a failed load is tried again on the next call
+        throw error;
+      },
+    );
+    loaded = pending;
+    return pending;
+  };
+}
+
 /** Any function of the exposed object (its arguments are plain data, and maybe a last callback). */
 type Method = (...args: never[]) => unknown;
 
@@ -71,6 +114,9 @@ export function expose(api: Readonly<Record<string, Method>>, endpoint: Endpoint
     }
   });
   endpoint.start?.();
+  exposedOn = endpoint;
+  // Exposed: the module graph that got here is loaded (the watchdog starts counting now).
+  endpoint.postMessage({ rpc: 'ready' } satisfies LoadMessage, []);
 }
 
 /** Calls the functions exposed on `endpoint` (the page's side). */

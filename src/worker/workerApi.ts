@@ -3,47 +3,70 @@
  * Exposed by solver.worker.ts; its type is what the page's clients call (rpc.ts `Remote`).
  *
  * Only a plane's or a cylinder's answer is in the worker's first script (jobs/solve.ts: the first
- * result needs no more); the doubly curved and three-axis solvers (jobs/page.ts), the teaching
+ * result needs no more); every other surface's and mode's solvers (jobs/page.ts), the teaching
  * views' data, the lookup table and the simulation load here when first asked (dynamic imports,
  * each once; the module cache keeps them).
  */
 import { solve } from './jobs/solve';
-import { isSolveReply, isSolveRequest, type PageReply, type PageRequest } from './pageProtocol';
+import {
+  isSolveReply,
+  isSolveRequest,
+  type PageReply,
+  type PageRequest,
+  type QuestionReply,
+  type SolverReplyOf,
+  type SolverRequest,
+} from './pageProtocol';
 import type { SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
-import { transfer } from './rpc';
+import { lazyModule, transfer } from './rpc';
 import type { SimulateReply, SimulationRunner } from './simulate';
 import type { PageTeachReply } from './teachProtocol';
 import { sceneTransferables, transferables } from './transferables';
 
+/** The jobs' modules beyond the first script, each imported on first use (the page's watchdog told: rpc.ts lazyModule). */
+const pageJob = lazyModule(() => import('./jobs/page'));
+const teachJob = lazyModule(() => import('./jobs/teachPage'));
+const tableJob = lazyModule(() => import('./jobs/table'));
+const simulation = lazyModule(() => import('./simulate'));
+
+/** Answers any question; the plane's and cylinders' at once, the others' solvers loaded on first use. */
+async function solveAny(request: SolverRequest): Promise<PageReply | QuestionReply> {
+  if (isSolveRequest(request)) {
+    const reply = solve(request);
+    return transfer(reply, transferables(reply));
+  }
+  // Any other surface or mode: its solvers load now (once), then its scene's arrays.
+  const reply = (await pageJob()).solvePage(request);
+  if (isSolveReply(reply)) return transfer(reply, transferables(reply));
+  return reply.ok && 'scene' in reply ? transfer(reply, [...sceneTransferables(reply.scene)]) : reply;
+}
+
 /** A newer `simulate` or `cancelSimulation` stops the running simulation between steps (one runner, made on first use). */
 let simulations: Promise<SimulationRunner> | null = null;
 const runner = (): Promise<SimulationRunner> =>
-  (simulations ??= import('./simulate').then(({ SimulationRunner }) => new SimulationRunner()));
+  (simulations ??= simulation().then(({ SimulationRunner }) => new SimulationRunner()));
 
 export const workerApi = {
-  async solve(request: PageRequest): Promise<PageReply> {
-    if (isSolveRequest(request)) {
-      const reply = solve(request);
-      return transfer(reply, transferables(reply));
-    }
-    // A doubly curved or three-axis question: its solvers load now (once), then its scene's arrays.
-    const reply = (await import('./jobs/page')).solvePage(request);
-    if (isSolveReply(reply)) return transfer(reply, transferables(reply));
-    return reply.ok ? transfer(reply, [...sceneTransferables(reply.scene)]) : reply;
+  /**
+   * The one `solve` job: any question (a page's, or one over the registries of modes and surfaces);
+   * the reply's kind follows the request's (SolverReplyOf).
+   */
+  async solve<R extends SolverRequest>(request: R): Promise<SolverReplyOf<R>> {
+    return (await solveAny(request)) as SolverReplyOf<R>;
   },
-  /** The teaching views' data: a plane's or a cylinder's (its arrays transferred), a doubly curved point's, three-axis'. */
+  /** The teaching views' data: a plane's or a cylinder's (its arrays transferred), any other surface's or mode's. */
   async teach(request: PageRequest): Promise<PageTeachReply> {
-    const reply = (await import('./jobs/teachPage')).teachPage(request);
+    const reply = (await teachJob()).teachPage(request);
     return isSolveRequest(reply.request) ? transfer(reply, transferables(reply as TeachReply)) : reply;
   },
   /** The lookup table for the page's download (a string: nothing to transfer). */
   async table(request: TableRequest): Promise<TableReply> {
-    return (await import('./jobs/table')).table(request);
+    return (await tableJob()).table(request);
   },
   async simulate(request: SolveRequest, onProgress?: (fraction: number) => void): Promise<SimulateReply> {
     const r = await runner();
     const reply = await r.run(request, onProgress);
-    const { simulationTransferables } = await import('./simulate');
+    const { simulationTransferables } = await simulation();
     return transfer(reply, simulationTransferables(reply));
   },
   cancelSimulation(): void {

@@ -40,7 +40,8 @@ function solverWatchdogMs(): number | undefined {
 export function solveClient(events: JobEvents<PageRequest, PageReply>): JobClient<PageRequest, PageReply> {
   return new JobClient({
     createWorker: createSolverWorker,
-    call: (api, r) => api.solve(r),
+    // A page's request gets a page's reply (SolverReplyOf; the remote's type loses the generic).
+    call: (api, r) => api.solve(r) as Promise<PageReply>,
     same: samePageRequest,
     ...events,
     // A getter: the client reads it at each request.

@@ -1,19 +1,20 @@
 /**
  * The surface registry: each kind of surface descriptor (domain/surface.ts) mapped to its model
  * (surface.ts's SurfaceModel, one module under models/). Adding a surface is one new module and one
- * line in MODELS; the solvers' entry (solve.ts) and the validation find it here by the descriptor's
- * `kind`, so no caller switches on it.
+ * line in MODELS (or, for a surface that is not the product's, registerSurfaceModel); the solvers'
+ * entry (solve.ts) and the validation find it here by the descriptor's `kind`, so no caller switches
+ * on it. Machine modes, which supply the posture over these models, have their own registry beside
+ * this one (modes.ts): a sloped plane is the plane under the upright tool's mode, not a surface.
  */
 import type { ForwardInput } from '../domain/pass';
 import type { CylinderSurface, PlaneSurface, SurfaceDescriptorBase } from '../domain/surface';
 import { cylinderModel } from './models/cylinder';
 import { doublyCurvedModel } from './models/doublyCurved';
 import { planeModel } from './models/plane';
-import { slopedPlaneModel } from './models/slopedPlane';
 import type { SurfaceModel } from './surface';
 
 /** Every registered surface model. */
-const MODELS = [planeModel, cylinderModel, doublyCurvedModel, slopedPlaneModel] as const;
+const MODELS = [planeModel, cylinderModel, doublyCurvedModel] as const;
 
 type DescriptorOf<M> = M extends SurfaceModel<infer S> ? S : never;
 
@@ -23,8 +24,38 @@ export type SurfaceDescriptor = DescriptorOf<(typeof MODELS)[number]>;
 /** The registered kinds, in registration order. */
 export const SURFACE_KINDS: readonly SurfaceDescriptor['kind'][] = MODELS.map((m) => m.kind);
 
-/** The models as an array of one type (a short scan by kind beats a keyed lookup on the solvers' fast paths). */
-const LIST: readonly SurfaceModel<SurfaceDescriptorBase>[] = MODELS;
+/**
+ * The models as an array of one type (a short scan by kind beats a keyed lookup on the solvers' fast
+ * paths): the product's, then any registerSurfaceModel added.
+ */
+const LIST: SurfaceModel<SurfaceDescriptorBase>[] = [...MODELS];
+
+/** The registered kinds now (the product's and any registered since). */
+export function surfaceKinds(): readonly string[] {
+  return LIST.map((m) => m.kind);
+}
+
+/** The model of a descriptor kind, or null when none is registered (validation's question). */
+export function findSurfaceModel(kind: string): SurfaceModel<SurfaceDescriptorBase> | null {
+  for (let i = 0; i < LIST.length; i++)
+    if (LIST[i]?.kind === kind) return LIST[i] as SurfaceModel<SurfaceDescriptorBase>;
+  return null;
+}
+
+/**
+ * Registers a further surface model (one not in MODELS: a plug-in's, a test's); returns the
+ * function that removes it again. A kind already registered is refused (throws: a programming error).
+ */
+export function registerSurfaceModel<S extends SurfaceDescriptorBase>(model: SurfaceModel<S>): () => void {
+  if (findSurfaceModel(model.kind) !== null)
+    throw new Error(`a surface model of kind "${model.kind}" is registered already`);
+  const entry = model as unknown as SurfaceModel<SurfaceDescriptorBase>;
+  LIST.push(entry);
+  return () => {
+    const i = LIST.indexOf(entry);
+    if (i >= 0) LIST.splice(i, 1);
+  };
+}
 
 /**
  * The model of a surface descriptor. Throws on an unregistered kind: descriptors come from

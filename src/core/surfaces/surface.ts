@@ -9,7 +9,7 @@
  *   point), `leavesNoScallop` (a flat face lying on the surface);
  * - the pass motion and the next pass, folded into the general `forward` (scallop height to
  *   step-over) and `inverse` (step-over to cusp heights), with the fast `intervalMm` and the widest
- *   step-over `maxIntervalMm`: a surface whose adjacent passes are not congruent (three-axis
+ *   step-over `maxIntervalMm`: a surface whose adjacent passes are not congruent (upright
  *   waterline passes on a surface of revolution) implements these directly;
  * - gouging: `fit`, whether the tool reaches below the surface away from the contact.
  *
@@ -18,20 +18,23 @@
  * `CongruentPasses`, the flanks' reach and its conversion to a step-over; congruentPasses.ts builds
  * the model from it. Lengths mm.
  *
- * Registered: the plane, the cylinders, the doubly curved point (models/*), and the three-axis
- * sloped plane, a surface that supplies the posture (models/slopedPlane.ts). Not yet: the three-axis
- * waterline passes on a surface of revolution (threeAxis/waterlineRevolution.ts), whose two adjacent
- * passes are not congruent. Its step-over, cusp height and height limit fit `intervalMm`, `forward`,
- * `inverse` and `limits().limitMm` as they are (waterlineIntervalMm, waterlineForward,
- * waterlineInverse, waterlineHeightLimitMm); what does not is the per-flank part of the answers
- * (ExactForward's flank widths and points, FlankLimits' per-side tops and `flankWidths`), which
- * only congruent passes define. Registering it means making those parts optional (or per model)
- * rather than inventing them; its programmed steps (dz) stay its own, as the sloped plane's do.
+ * Registered: the plane, the cylinders and the doubly curved point (models/*). A machine mode is
+ * not a surface: it supplies the tool's posture over these models (mode.ts, modes.ts; the sloped
+ * plane is the plane under the upright tool's mode), and question.ts answers any registered mode over
+ * any registered surface it has a posture on. Not yet a model: the upright tool's waterline passes on a
+ * surface of revolution (its mode's waterlineRevolution.ts), whose two adjacent passes are not
+ * congruent. Its step-over, cusp height and height limit fit `intervalMm`, `forward`, `inverse` and
+ * `limits().limitMm` as they are (waterlineIntervalMm, waterlineForward, waterlineInverse,
+ * waterlineHeightLimitMm); what does not is the per-flank part of the answers (ExactForward's flank
+ * widths and points, FlankLimits' per-side tops and `flankWidths`), which only congruent passes
+ * define. Registering it means making those parts optional (or per model) rather than inventing
+ * them; its programmed steps (dz) stay its own, as the sloped plane's do.
  */
 import type { ForwardInput, InverseInput } from '../domain/pass';
 import type { SurfaceAxis, SurfaceDescriptorBase } from '../domain/surface';
 import type { PassPattern, ToolInput } from '../domain/tool';
 import type { Flank, FlankLimits, FlankPoint } from '../tool/posture';
+import type { QuestionParameter } from './mode';
 
 /**
  * The forward answer (scallop height to step-over) every surface gives, mm. Widths and the
@@ -118,6 +121,11 @@ export const FITS: SurfaceFit = { gouges: false };
 export interface SurfaceModel<S extends SurfaceDescriptorBase> {
   /** The descriptor kind it answers (the registry's key). */
   readonly kind: S['kind'];
+  /**
+   * The numbers its descriptor takes from the user (mode.ts's QuestionParameter), for the builders
+   * of a question over the registries; the product's surfaces are built by the page's own switches.
+   */
+  readonly parameters?: readonly QuestionParameter[];
   /** Exact step-over L (mm) for a scallop height: the fast path of `forward`. @param input validated. */
   intervalMm(input: ForwardInput<S>): number;
   /** Exact forward answer: step-over, flank widths, contact offset and cusp heights (mm). @param input validated. */

@@ -79,7 +79,16 @@ export function effectiveRasterAngleDeg(c: SlopedPlaneCase): number {
 
 /** Errors of the tool, slope and raster angle; the posture when they are valid. */
 function checkCase(c: SlopedPlaneCase): { errors: ThreeAxisError[]; posture: SlopePosture | null } {
-  const errors = checkTool(c.toolRadiusMm, c.cornerRadiusMm);
+  const errors = [...checkTool(c.toolRadiusMm, c.cornerRadiusMm), ...slopeErrors(c)];
+  return { errors, posture: errors.length === 0 ? slopePosture(c.slopeDeg, effectiveRasterAngleDeg(c)) : null };
+}
+
+/**
+ * Errors of the slope (0 to 90; 90 a vertical wall; 0 for waterline passes) and the raster angle
+ * (0 to 90) on a sloped plane: the rule the three-axis mode's check gives too (surfaces/modes).
+ */
+export function slopeErrors(c: Pick<SlopedPlaneCase, 'slopeDeg' | 'passes' | 'rasterAngleDeg'>): ThreeAxisError[] {
+  const errors: ThreeAxisError[] = [];
   const a = c.slopeDeg;
   if (!(a >= 0 && a <= 90))
     errors.push(threeAxisError('slope', 'out-of-range', a, null, `must be from 0 to 90 degrees (got ${a}).`));
@@ -113,7 +122,7 @@ function checkCase(c: SlopedPlaneCase): { errors: ThreeAxisError[]; posture: Slo
         `must be from 0 to 90 degrees from the fall line (got ${c.rasterAngleDeg}).`,
       ),
     );
-  return { errors, posture: errors.length === 0 ? slopePosture(a, effectiveRasterAngleDeg(c)) : null };
+  return errors;
 }
 
 /** The posture shape (posture.ts) of the upright tool on the slope. */

@@ -1,15 +1,21 @@
 /**
- * The page's `solve` job for every question it asks: a plane's or a cylinder's (jobs/solve.ts), a
- * doubly curved point's (jobs/curved.ts) or three-axis machining's (jobs/threeAxis.ts). The reply
- * echoes its request.
+ * The worker's one `solve` job for every question: a plane's or a cylinder's (jobs/solve.ts), a
+ * doubly curved point's (jobs/curved.ts), three-axis machining's (jobs/threeAxis.ts), and any other
+ * registered machine mode over a registered surface (jobs/question.ts). The reply echoes its request.
  */
-import { isSolveRequest, type PageReply, type PageRequest } from '../pageProtocol';
+import { isQuestionRequest, isSolveRequest, type SolverReplyOf, type SolverRequest } from '../pageProtocol';
 import { solveCurved } from './curved';
+import { solveQuestion } from './question';
 import { solve } from './solve';
 import { solveThreeAxisRequest } from './threeAxis';
 
-/** Solves any of the page's questions. Never throws for any numeric input. */
-export function solvePage(request: PageRequest): PageReply {
+/** Solves any question. Never throws for any numeric input. */
+export function solvePage<R extends SolverRequest>(r: R): SolverReplyOf<R> {
+  return answer(r) as SolverReplyOf<R>;
+}
+
+function answer(request: SolverRequest): SolverReplyOf<SolverRequest> {
+  if (isQuestionRequest(request)) return solveQuestion(request);
   if (isSolveRequest(request)) return solve(request);
   if (request.mode === 'three-axis') return solveThreeAxisRequest(request);
   return solveCurved(request);

@@ -9,6 +9,7 @@ import { describe, expect, it } from 'vitest';
 import type { ForwardInput, InverseInput } from '../../../src/core/domain/pass';
 import type { PassPattern, ToolInput } from '../../../src/core/domain/tool';
 import { doublyCurvedForward, doublyCurvedInverse } from '../../../src/core/surfaces/doublyCurved/solve';
+import { answerQuestion, validateQuestion } from '../../../src/core/surfaces/question';
 import { SURFACE_KINDS, type SurfaceDescriptor, surfaceModel } from '../../../src/core/surfaces/registry';
 import { exactForward, exactIntervalMm, exactInverse } from '../../../src/core/surfaces/solve';
 import { slopedPlaneIntervalMm } from '../../../src/core/threeAxis/slopedPlane';
@@ -26,8 +27,6 @@ const SAMPLES: readonly SurfaceDescriptor[] = [
   { kind: 'doublyCurved', feedRadiusMm: 30, crossRadiusMm: 50 },
   { kind: 'doublyCurved', feedRadiusMm: -90, crossRadiusMm: -70 },
   { kind: 'doublyCurved', feedRadiusMm: 40, crossRadiusMm: -200 },
-  { kind: 'slopedPlane', slopeDeg: 25, passes: 'raster', rasterAngleDeg: 30 },
-  { kind: 'slopedPlane', slopeDeg: 40, passes: 'waterline', rasterAngleDeg: 0 },
 ];
 
 const TOOLS: readonly ToolInput[] = [
@@ -193,26 +192,37 @@ describe('surface registry: every registered model keeps the contract', () => {
     }
   });
 
-  it('a sloped plane (a surface that supplies the posture) answers as threeAxis/slopedPlane.ts does', () => {
+  it('a sloped plane is the plane under the three-axis mode (a posture supplier), as threeAxis/slopedPlane.ts answers', () => {
+    expect(SURFACE_KINDS).not.toContain('slopedPlane');
     for (const [slopeDeg, passes, rasterAngleDeg] of [
       [25, 'raster', 30],
       [40, 'waterline', 0],
       [0, 'raster', 0],
     ] as const) {
-      const surface: SurfaceDescriptor = { kind: 'slopedPlane', slopeDeg, passes, rasterAngleDeg };
+      const mode = { kind: 'threeAxis', slopeDeg, passes, rasterAngleDeg } as const;
       for (const tool of TOOLS) {
-        const c = {
-          toolRadiusMm: tool.toolRadiusMm,
-          cornerRadiusMm: tool.cornerRadiusMm,
-          slopeDeg,
-          passes,
-          rasterAngleDeg,
-        };
-        const h = 0.3 * surfaceModel(surface).limits(tool, surface).limitMm;
+        const radii = { toolRadiusMm: tool.toolRadiusMm, cornerRadiusMm: tool.cornerRadiusMm };
+        const c = { ...radii, slopeDeg, passes, rasterAngleDeg };
+        const probe = validateQuestion({
+          tool: radii,
+          mode,
+          surface: { kind: 'plane' },
+          pattern: 'one-way',
+          target: { quantity: 'h', mm: 1e-6 },
+        });
+        if (!probe.ok) throw new Error(JSON.stringify(probe.errors));
+        const h = 0.3 * answerQuestion(probe.value).heightLimitMm;
         const own = slopedPlaneIntervalMm(c, h);
         for (const pattern of PATTERNS) {
-          const L = exactIntervalMm(forwardOf(tool, pattern, surface, h));
-          expect(Math.abs(L - own), `${name(surface)} ${pattern}`).toBeLessThan(1e-12 * own);
+          const v = validateQuestion({
+            tool: radii,
+            mode,
+            surface: { kind: 'plane' },
+            pattern,
+            target: { quantity: 'h', mm: h },
+          });
+          const L = v.ok ? answerQuestion(v.value).intervalMm : Number.NaN;
+          expect(Math.abs(L - own), `${slopeDeg} ${passes} ${pattern}`).toBeLessThan(1e-12 * own);
         }
       }
     }

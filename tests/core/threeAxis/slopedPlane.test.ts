@@ -1,6 +1,6 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import { forwardInput, inverseInput } from '../../../src/core/input/validate';
-import { slopedPlaneModel } from '../../../src/core/surfaces/models/slopedPlane';
+import { answerQuestion, validateQuestion } from '../../../src/core/surfaces/question';
 import { exactIntervalMm, exactInverse } from '../../../src/core/surfaces/solve';
 import { slopedPlaneForward, slopedPlaneIntervalMm, slopedPlaneInverse } from '../../../src/core/threeAxis/slopedPlane';
 import { seededRandom } from '../../support/bruteForce';
@@ -160,9 +160,16 @@ describe('closed forms and the posture solver', () => {
       expect(slopedPlaneIntervalMm(c, h)).toBe(2 * R);
       const f = slopedPlaneForward(c, h);
       expect(f.ok && f.value).toMatchObject({ intervalMm: 2 * R, horizontalStepMm: 2 * R, noScallop: true });
-      const model = { toolRadiusMm: R, cornerRadiusMm: 0, leadAngleDeg: 0, tiltAngleDeg: 0 } as const;
-      const surface = { kind: 'slopedPlane', slopeDeg: 0, passes: 'raster', rasterAngleDeg: c.rasterAngleDeg } as const;
-      expect(slopedPlaneModel.intervalMm({ ...model, pattern: 'one-way', surface, scallopHeightMm: h })).toBe(2 * R);
+      // The plane under the three-axis mode (the posture supplier) answers the same.
+      const mode = { kind: 'threeAxis', slopeDeg: 0, passes: 'raster', rasterAngleDeg: c.rasterAngleDeg } as const;
+      const q = validateQuestion({
+        tool: { toolRadiusMm: R, cornerRadiusMm: 0 },
+        mode,
+        surface: { kind: 'plane' },
+        pattern: 'zigzag',
+        target: { quantity: 'h', mm: h },
+      });
+      expect(q.ok && answerQuestion(q.value).intervalMm).toBe(2 * R);
       const at = slopedPlaneInverse(c, { field: 'horizontalStep', mm: 2 * R });
       expect(at.ok && at.value).toMatchObject({ intervalMm: 2 * R, cuspHeightMm: 0, noScallop: true });
       const wider = slopedPlaneInverse(c, { field: 'horizontalStep', mm: 2 * R * (1 + 1e-9) });
