@@ -27,7 +27,7 @@
  *  - `dispose()` disconnects the observers and the canvas listeners and frees every GPU resource
  *    and DOM node it made.
  */
-import { Group, type Object3D } from 'three';
+import { Color, Group, type Object3D } from 'three';
 import type { SceneGeometry, TraceFrame } from '../worker/protocol';
 import { type CameraPreset, fitCamera, presetDirection, type Vec3 } from './cameraFit';
 import { drawnBoundingSphere } from './clipPlanes';
@@ -40,6 +40,7 @@ import { PathsDrawable } from './drawables/paths';
 import { ToolDrawable } from './drawables/tool';
 import { ToolMarksDrawable } from './drawables/toolMarks';
 import { TraceDrawable, type TraceSizes } from './drawables/trace';
+import { setLineScreen } from './fatLines';
 import { gatherFramePoints } from './framePoints';
 import { heightMapFor, sceneHeightExaggeration } from './heightExaggeration';
 import { LabelAnchor, LabelLayer } from './labelLayer';
@@ -113,6 +114,8 @@ export class ToolScene extends ViewedScene {
   private autoFit = true;
   /** Whether a step of the step-through is shown (the camera then frames it). */
   private traceShown = false;
+  /** The background's colour, read before each frame for the lines' halos (reused). */
+  private readonly background = new Color();
   /** The points of the last fit (reused). */
   private readonly points: number[] = [];
 
@@ -135,6 +138,18 @@ export class ToolScene extends ViewedScene {
     };
     this.view.afterResize = () => {
       if (this.fittedRadiusMm > 0 && this.autoFit) this.fitView();
+    };
+    // The lines' widths are in CSS px: each frame is drawn for the drawing buffer's size.
+    this.view.beforeRender = () => {
+      const { renderer } = this.view;
+      const ratio = renderer.getPixelRatio();
+      renderer.getClearColor(this.background);
+      setLineScreen(
+        Math.floor(this.view.widthPx * ratio),
+        Math.floor(this.view.heightPx * ratio),
+        ratio,
+        this.background,
+      );
     };
     this.view.afterRender = () => this.labels.layout(scene, camera, this.view.widthPx, this.view.heightPx);
     for (const d of this.drawables) this.world.add(...d.objects);
