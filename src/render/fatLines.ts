@@ -88,11 +88,17 @@ export class FatLineMaterial extends ShaderMaterial {
       },
       vertexShader: VERTEX,
       fragmentShader: FRAGMENT,
-      transparent: opacity < 1,
+      // Over everything: drawn with the translucent surfaces' pass, after them (its render order), not under them.
+      transparent: opacity < 1 || options.overlay === true,
       depthTest: !options.overlay,
       depthWrite: false,
     });
     this.color = colour.value;
+  }
+
+  /** The line's width (CSS px; a halo's includes its halo). */
+  get widthPx(): number {
+    return (this.uniforms.widthPx as Uniform<number>).value;
   }
 }
 
@@ -109,6 +115,8 @@ export type FatLineKind = 'strip' | 'loop' | 'pairs';
 export class FatLine extends Mesh<BufferGeometry, FatLineMaterial> {
   /** Its points (flat xyz), written in place by its owner, then {@link finish}ed. */
   readonly points: Float32Array;
+  /** How many of its points are drawn (the last {@link finish}). */
+  drawnPoints = 0;
   private readonly kind: FatLineKind;
 
   constructor(capacity: number, material: FatLineMaterial, kind: FatLineKind = 'strip') {
@@ -137,6 +145,7 @@ export class FatLine extends Mesh<BufferGeometry, FatLineMaterial> {
    */
   finish(count: number, map?: HeightMap): void {
     const n = Math.min(count, this.points.length / 3);
+    this.drawnPoints = n;
     if (map !== undefined) drawHeightsInPlace(map, this.points, n);
     const position = this.geometry.getAttribute('position') as BufferAttribute;
     const other = this.geometry.getAttribute('other') as BufferAttribute;

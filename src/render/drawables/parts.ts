@@ -154,7 +154,8 @@ export function writeLine(line: FatLine, points: ArrayLike<number>, count: numbe
  * everything, that labels keep clear of, with its legend entry.
  */
 export function markerOf(dot: SphereGeometry, color: number, key: string): Mesh {
-  const m = legend(new Mesh(dot, new MeshBasicMaterial({ color, depthTest: false })), key);
+  // Transparent (at full opacity): drawn after the translucent surfaces, not under them.
+  const m = legend(new Mesh(dot, new MeshBasicMaterial({ color, depthTest: false, transparent: true })), key);
   m.renderOrder = 11;
   m.userData.marker = true;
   return m;

@@ -30,6 +30,8 @@ export const SHANK_TOP_R = 1.5;
 const HOLDER_TOP_R = 1.75;
 /** The holder's radius (x R). */
 const HOLDER_RADIUS_R = 1.2;
+/** The share of its own colour the tool gives off: its side away from the light still stands out of a dark background. */
+const SELF_LIGHT = 0.35;
 /** Segments around the holder. */
 const HOLDER_SEGMENTS = 48;
 
@@ -60,6 +62,9 @@ export class ToolDrawable implements Drawable {
     'pairs',
   );
 
+  /** The tool's and the holder's materials (lit, and a share of their own colour given off). */
+  private readonly bodies: readonly MeshStandardMaterial[];
+
   constructor() {
     this.geometry.setAttribute('position', new BufferAttribute(new Float32Array(0), 3));
     this.geometry.setIndex(new BufferAttribute(toolMeshIndices(TOOL_RADIAL_SEGMENTS), 1));
@@ -81,6 +86,8 @@ export class ToolDrawable implements Drawable {
     );
     holder.add(legend(this.holderEdges, 'tool'));
     tool.add(holder);
+    this.bodies = [tool.material, holder.material as MeshStandardMaterial];
+    this.matchTheme();
     const ghost = new MeshBasicMaterial({
       color: COLOURS.ghost,
       transparent: true,
@@ -147,6 +154,11 @@ export class ToolDrawable implements Drawable {
       m.matrix.fromArray(motion as number[]);
       m.matrixWorldNeedsUpdate = true;
     });
+  }
+
+  /** After the theme's colours are taken: each body gives off a share of its (new) colour. */
+  matchTheme(): void {
+    for (const m of this.bodies) m.emissive.copy(m.color).multiplyScalar(SELF_LIGHT);
   }
 
   /** The holder's collar about the tool axis, from the shank's top up, and its edge rings. */
