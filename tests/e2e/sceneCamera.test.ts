@@ -192,6 +192,8 @@ describe("the step-through's camera moves to what each step shows", { timeout: 1
         expect(Math.abs(Math.max(...xs) + Math.min(...xs)) / 2, `step ${k}: centred across`).toBeLessThan(0.05);
         expect(Math.abs(Math.max(...ys) + Math.min(...ys)) / 2, `step ${k}: centred up`).toBeLessThan(0.05);
         targets.push(f.target.map((v) => v.toFixed(4)).join());
+        // The close-up's labels inside the canvas, its lines legible over the tool (issue 28, point 7).
+        if (k === 1) await expectLegible(page, `step 1 (${reducedMotion})`, { tool: false });
         if (k === 1 || k === total)
           await keepShot(page.getByTestId('scene'), `scene-camera-step-${k === 1 ? 'first' : 'last'}-${reducedMotion}`);
       }
