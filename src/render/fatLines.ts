@@ -42,7 +42,7 @@ export function setLineScreen(
 }
 
 /** The halo each side of a line drawn over everything (CSS px). */
-export const HALO_PX = 1;
+export const HALO_PX = 1.5;
 
 const VERTEX = `
 attribute vec3 other;

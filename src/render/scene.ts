@@ -135,7 +135,7 @@ export class ToolScene extends ViewedScene {
       backgroundProperty: '--scene-bg',
       themed: THEMED_COLOURS,
       quality: 'adaptive',
-      lights: { ambient: 1.2, sun: 1.6, sunFrom: [3, -4, 6] },
+      lights: { ambient: 0.8, sun: 1.2, sunFrom: [3, -4, 6] },
     });
     this.labels = new LabelLayer(container, () => this.requestRender());
     const { scene, camera, controls } = this.view;

@@ -36,7 +36,7 @@ const median = (xs: readonly number[]): number => {
 
 /** What {@link measureScene} found. */
 export interface SceneMeasure {
-  /** The least contrast of the tool's shank and holder against the background (pixels sampled on them). */
+  /** The contrast of the tool's shank and holder against the background: the 20th percentile of the pixels sampled on them. */
   readonly toolContrast: number;
   /** Per line key (legend): samples read, the median contrast of the line's core against what is beside it, its median width (px). */
   readonly lines: Readonly<Record<string, { samples: number; contrast: number; widthPx: number }>>;
@@ -53,17 +53,22 @@ export async function measureScene(page: Page): Promise<SceneMeasure> {
   if (f === null || f.tool === null) throw new Error('no scene state');
   const canvas = page.getByTestId('scene-canvas');
   const png = await canvas.screenshot();
-  const { labels, box } = await page.evaluate(() => {
+  const { labels, badges, box } = await page.evaluate(() => {
     const rect = (e: Element) => {
       const r = e.getBoundingClientRect();
       return { text: e.textContent ?? '', left: r.left, top: r.top, right: r.right, bottom: r.bottom };
     };
     const c = document.querySelector('[data-testid="scene-canvas"]') as HTMLElement;
-    const shown = [...document.querySelectorAll('[data-testid="scene"] .scene-label')].filter((e) => {
-      const r = e.getBoundingClientRect();
-      return e.checkVisibility({ visibilityProperty: true }) && r.width > 0 && r.height > 0;
-    });
-    return { labels: shown.map(rect), box: rect(c) };
+    const shown = (selector: string) =>
+      [...document.querySelectorAll(`[data-testid="scene"] ${selector}`)].filter((e) => {
+        const r = e.getBoundingClientRect();
+        return e.checkVisibility({ visibilityProperty: true }) && r.width > 0 && r.height > 0;
+      });
+    return {
+      labels: shown('.scene-label').map(rect),
+      badges: shown('.scene-scale, .stale-badge').map(rect),
+      box: rect(c),
+    };
   });
   const labelsOutside = labels
     .filter(
@@ -84,6 +89,16 @@ export async function measureScene(page: Page): Promise<SceneMeasure> {
     const q = p.clone().project(camera);
     return [((q.x + 1) / 2) * width, ((1 - q.y) / 2) * height];
   };
+  // What covers the canvas: the labels and the badges.
+  const covers = [...labels, ...badges];
+  const nearLabel = ([x, y]: [number, number]) =>
+    covers.some(
+      (l) =>
+        x + box.left > l.left - 6 &&
+        x + box.left < l.right + 6 &&
+        y + box.top > l.top - 6 &&
+        y + box.top < l.bottom + 6,
+    );
   // Samples on the shank and the holder: across the axis, square to the line of sight.
   const { centre, axis, radiusMm: R } = f.tool;
   const o = new Vector3(...centre);
@@ -93,27 +108,19 @@ export async function measureScene(page: Page): Promise<SceneMeasure> {
   if (across.length() < 0.2) across = new Vector3(1, 0, 0).applyQuaternion(camera.quaternion);
   across.normalize();
   const toolPoints: Array<[number, number]> = [];
-  for (const t of [0.95, 1.15, 1.35, 1.62])
-    for (const u of [-0.45, 0.45])
-      toolPoints.push(
-        toPx(
-          o
-            .clone()
-            .addScaledVector(a, t * R)
-            .addScaledVector(across, u * R),
-        ),
+  for (let t = 0.8; t < 1.72; t += 0.1)
+    for (const u of [-0.6, -0.42, -0.25, 0.25, 0.42, 0.6]) {
+      const p = toPx(
+        o
+          .clone()
+          .addScaledVector(a, t * R)
+          .addScaledVector(across, u * R),
       );
+      if (!nearLabel(p)) toolPoints.push(p);
+    }
   // Samples across each line, away from the labels and the canvas's edges.
   const OFFSETS = 12;
   const lineSamples: Array<{ key: string; widthPx: number; at: [number, number]; n: [number, number] }> = [];
-  const nearLabel = ([x, y]: [number, number]) =>
-    labels.some(
-      (l) =>
-        x + box.left > l.left - 6 &&
-        x + box.left < l.right + 6 &&
-        y + box.top > l.top - 6 &&
-        y + box.top < l.bottom + 6,
-    );
   for (const line of f.lines) {
     const pts: Array<[number, number]> = [];
     for (let i = 0; i < line.points.length; i += 3)
@@ -158,7 +165,13 @@ export async function measureScene(page: Page): Promise<SceneMeasure> {
     { b64: png.toString('base64'), at: requests },
   );
   const background = colours[0] as number[];
-  const toolContrast = Math.min(...colours.slice(1, 1 + toolPoints.length).map((c) => contrastRatio(c, background)));
+  if (toolPoints.length < 10) throw new Error('the tool is covered by labels: no place to measure it');
+  // The tool's pixels: a fifth of them may be crossed by the marks drawn over it (their halos).
+  const toolContrasts = colours
+    .slice(1, 1 + toolPoints.length)
+    .map((c) => contrastRatio(c, background))
+    .sort((x, y) => x - y);
+  const toolContrast = toolContrasts[Math.floor(0.2 * toolContrasts.length)] as number;
   const perKey: Record<string, { contrast: number[]; width: number[] }> = {};
   let next = 1 + toolPoints.length;
   for (const s of lineSamples) {
@@ -175,15 +188,20 @@ export async function measureScene(page: Page): Promise<SceneMeasure> {
     while (lo > 0 && like(across[lo - 1])) lo--;
     let hi = OFFSETS;
     while (hi < 2 * OFFSETS && like(across[hi + 1])) hi++;
-    // What lies beside the core, one pixel past its edge each side.
-    const left = across[Math.max(0, lo - 1)] as number[];
-    const right = across[Math.min(2 * OFFSETS, hi + 1)] as number[];
+    // What lies beside the core each side: of the two pixels past its edge (the first may blend the
+    // two where the view is antialiased), the one that differs most from it.
+    const beside = (edge: number, step: 1 | -1) =>
+      Math.max(
+        ...[1, 2].map((d) =>
+          contrastRatio(core, across[Math.min(2 * OFFSETS, Math.max(0, edge + step * d))] as number[]),
+        ),
+      );
+    const left = beside(lo, -1);
+    const right = beside(hi, 1);
     const entry = perKey[s.key] ?? { contrast: [], width: [] };
     perKey[s.key] = entry;
-    entry.contrast.push(Math.min(contrastRatio(core, left), contrastRatio(core, right)));
+    entry.contrast.push(Math.min(left, right));
     entry.width.push(hi - lo + 1);
-    if (process.env.DEBUG_CONTRAST && s.key === 'path')
-      console.log(s.at.map(Math.round), core, left, right, hi - lo + 1);
   }
   const lines: Record<string, { samples: number; contrast: number; widthPx: number }> = {};
   for (const [key, v] of Object.entries(perKey))

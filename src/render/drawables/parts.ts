@@ -63,7 +63,7 @@ export const COLOURS = {
   pHp: 0xd6336c,
   trace: 0x7c3aed,
   path: 0x1b7f3b,
-  tool: 0x5f6f84,
+  tool: 0x4b5a6e,
   holder: 0x2b3442,
   ghost: 0x6c7a89,
   plane: 0xc9ced6,

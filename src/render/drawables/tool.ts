@@ -70,7 +70,7 @@ export class ToolDrawable implements Drawable {
     this.geometry.setIndex(new BufferAttribute(toolMeshIndices(TOOL_RADIAL_SEGMENTS), 1));
     const tool = new Mesh(
       this.geometry,
-      new MeshStandardMaterial({ color: COLOURS.tool, metalness: 0.25, roughness: 0.5, side: DoubleSide }),
+      new MeshStandardMaterial({ color: COLOURS.tool, metalness: 0.1, roughness: 0.7, side: DoubleSide }),
     );
     this.holder.setAttribute('position', new BufferAttribute(new Float32Array(4 * (HOLDER_SEGMENTS + 1) * 3), 3));
     this.holder.setIndex(new BufferAttribute(holderIndices(), 1));
@@ -78,7 +78,7 @@ export class ToolDrawable implements Drawable {
       legend(
         new Mesh(
           this.holder,
-          new MeshStandardMaterial({ color: COLOURS.holder, metalness: 0.2, roughness: 0.6, side: DoubleSide }),
+          new MeshStandardMaterial({ color: COLOURS.holder, metalness: 0.1, roughness: 0.7, side: DoubleSide }),
         ),
         'tool',
       ),
