@@ -209,7 +209,9 @@ export class ToolDrawable implements Drawable {
     this.holderEdges.finish(e / 3);
     attr.needsUpdate = true;
     this.holder.computeVertexNormals();
+    // The camera is fitted to its box (framePoints.ts): kept with its points.
     this.holder.computeBoundingSphere();
+    this.holder.computeBoundingBox();
   }
 
   dispose(): void {
