@@ -7,12 +7,12 @@
  * each step shows. The camera is read through the e2e probe and projected here with three.js.
  */
 import type { Page } from 'playwright-core';
-import { PerspectiveCamera, Vector3 } from 'three';
+import { Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import type { SceneFraming } from '../../src/render/scene';
 import { frames, keepShot, sceneIdle, showView, useSite, viewAs } from './harness';
 import { hueShares } from './pixels';
-import { expectLegible } from './sceneContrast';
+import { cameraOf, expectLegible, framing } from './sceneContrast';
 
 const site = useSite('docs/scene-camera');
 const { open } = site;
@@ -36,19 +36,9 @@ const VIEWS = [
   ['top', 'Top'],
 ] as const;
 
-const framing = (page: Page): Promise<SceneFraming | null> =>
-  page.evaluate(() =>
-    (window as unknown as { __pathInterval: { sceneFraming(): SceneFraming | null } }).__pathInterval.sceneFraming(),
-  );
-
 /** Projects flat xyz points through the probe's camera: normalised device coordinates (-1 to 1 across). */
 function project(f: SceneFraming, xyz: readonly number[]): Array<[number, number]> {
-  const camera = new PerspectiveCamera(f.fovDeg, f.aspect, 1e-3, 1e6);
-  camera.up.set(...f.up);
-  camera.position.set(...f.position);
-  camera.lookAt(new Vector3(...f.target));
-  camera.updateMatrixWorld();
-  camera.updateProjectionMatrix();
+  const camera = cameraOf(f);
   const out: Array<[number, number]> = [];
   for (let i = 0; i < xyz.length; i += 3) {
     const p = new Vector3(xyz[i], xyz[i + 1], xyz[i + 2]).project(camera);

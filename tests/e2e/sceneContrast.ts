@@ -8,8 +8,21 @@ import type { Page } from 'playwright-core';
 import { PerspectiveCamera, Vector3 } from 'three';
 import { expect } from 'vitest';
 import type { SceneFraming } from '../../src/render/scene';
+import { countPixels } from './pixels';
 
-const framing = (page: Page): Promise<SceneFraming | null> =>
+/** The probe's camera as a three.js camera (to project points as the scene does). */
+export function cameraOf(f: SceneFraming): PerspectiveCamera {
+  const camera = new PerspectiveCamera(f.fovDeg, f.aspect, 1e-3, 1e6);
+  camera.up.set(...f.up);
+  camera.position.set(...f.position);
+  camera.lookAt(new Vector3(...f.target));
+  camera.updateMatrixWorld();
+  camera.updateProjectionMatrix();
+  return camera;
+}
+
+/** The scene's camera and what it draws, from the e2e probe. */
+export const framing = (page: Page): Promise<SceneFraming | null> =>
   page.evaluate(() =>
     (window as unknown as { __pathInterval: { sceneFraming(): SceneFraming | null } }).__pathInterval.sceneFraming(),
   );
@@ -77,12 +90,7 @@ export async function measureScene(page: Page): Promise<SceneMeasure> {
     )
     .map((l) => l.text);
 
-  const camera = new PerspectiveCamera(f.fovDeg, f.aspect, 1e-3, 1e6);
-  camera.up.set(...f.up);
-  camera.position.set(...f.position);
-  camera.lookAt(new Vector3(...f.target));
-  camera.updateMatrixWorld();
-  camera.updateProjectionMatrix();
+  const camera = cameraOf(f);
   const width = box.right - box.left;
   const height = box.bottom - box.top;
   const toPx = (p: Vector3): [number, number] => {
@@ -142,28 +150,8 @@ export async function measureScene(page: Page): Promise<SceneMeasure> {
   const requests: Array<[number, number]> = [[width - 6, 6], ...toolPoints];
   for (const s of lineSamples)
     for (let k = -OFFSETS; k <= OFFSETS; k++) requests.push([s.at[0] + k * s.n[0], s.at[1] + k * s.n[1]]);
-  const colours = await page.evaluate(
-    async ({ b64, at }) => {
-      const image = new Image();
-      image.src = `data:image/png;base64,${b64}`;
-      await image.decode();
-      const c = document.createElement('canvas');
-      c.width = image.width;
-      c.height = image.height;
-      const ctx = c.getContext('2d');
-      if (!ctx) throw new Error('no 2D canvas');
-      ctx.drawImage(image, 0, 0);
-      const d = ctx.getImageData(0, 0, image.width, image.height).data;
-      return at.map(([x, y]) => {
-        const i =
-          4 *
-          (Math.min(image.height - 1, Math.max(0, Math.round(y))) * image.width +
-            Math.min(image.width - 1, Math.max(0, Math.round(x))));
-        return [d[i] as number, d[i + 1] as number, d[i + 2] as number];
-      });
-    },
-    { b64: png.toString('base64'), at: requests },
-  );
+  const { counts } = await countPixels(page, [png], { kind: 'at', points: requests });
+  const colours = requests.map((_, i) => counts.slice(3 * i, 3 * i + 3));
   const background = colours[0] as number[];
   if (toolPoints.length < 10) throw new Error('the tool is covered by labels: no place to measure it');
   // The tool's pixels: a fifth of them may be crossed by the marks drawn over it (their halos).
