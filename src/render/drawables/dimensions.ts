@@ -8,6 +8,7 @@
 import type { Object3D } from 'three';
 import { dimensionPointCount, surfaceDimensionInto } from '../../core/output/sceneMarks';
 import { surfacePoint } from '../../core/output/surfaceGeometry';
+import { presetDirection } from '../cameraFit';
 import type { FatLine } from '../fatLines';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
@@ -22,6 +23,23 @@ import {
   writeLine,
 } from './parts';
 import { PATH_SEGMENTS } from './paths';
+
+/** The direction towards the isometric camera (world). */
+const TOWARDS_VIEWER = presetDirection('iso').towardsCamera;
+
+/**
+ * The ends of the drawn passes along the feed (x = fromMm, toMm), the one nearer the isometric
+ * camera first: the feed turned into the world by `frame` (column-major 4 x 4; none: the identity).
+ */
+export function nearerEndFirst(
+  fromMm: number,
+  toMm: number,
+  frame: readonly number[] | undefined,
+): readonly [number, number] {
+  const [fx, fy, fz] = frame === undefined ? [1, 0, 0] : [frame[0] ?? 1, frame[1] ?? 0, frame[2] ?? 0];
+  const towards = fx * TOWARDS_VIEWER[0] + fy * TOWARDS_VIEWER[1] + fz * TOWARDS_VIEWER[2];
+  return towards * (toMm - fromMm) >= 0 ? [toMm, fromMm] : [fromMm, toMm];
+}
 
 export class DimensionsDrawable implements Drawable {
   private readonly interval = legend(lineOf(dimensionPointCount(PATH_SEGMENTS), COLOURS.dimension), 'dimension');
@@ -55,12 +73,13 @@ export class DimensionsDrawable implements Drawable {
         line,
         surfaceDimensionInto(positionsOf(line), 0, surface, xMm, lengthMm, tick, arrowMm, PATH_SEGMENTS),
       );
-    // L between this pass's path and the next, ahead of the tool (the end nearer the isometric
-    // camera); L/2 at the other end.
-    dimension(this.interval, s.toMm, L);
-    dimension(this.half, s.fromMm, L / 2);
-    this.intervalLabel.position.fromArray(surfacePoint(surface, s.toMm, L / 2, 0));
-    this.halfLabel.position.fromArray(surfacePoint(surface, s.fromMm, L / 4, tick));
+    // L between this pass's path and the next at the end of the passes nearer the isometric
+    // camera (in front of the tool, clear of it); L/2 at the other end.
+    const [nearMm, farMm] = nearerEndFirst(s.fromMm, s.toMm, g.machine?.frameMatrix);
+    dimension(this.interval, nearMm, L);
+    dimension(this.half, farMm, L / 2);
+    this.intervalLabel.position.fromArray(surfacePoint(surface, nearMm, L / 2, 0));
+    this.halfLabel.position.fromArray(surfacePoint(surface, farMm, L / 4, tick));
     this.intervalLabel.setText(s.labels.interval);
     this.halfLabel.setText(s.labels.halfInterval);
     // y0: from the foot of O's drop to the contact, across the feed.
