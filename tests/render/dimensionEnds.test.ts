@@ -1,10 +1,10 @@
 /**
- * Where the step-over's dimension L is drawn (render/drawables/dimensions.ts): at the end of the
+ * Where the step-over's dimension L is drawn (render/drawables/dimensions.ts, render/cameraFit.ts nearerEndFirst): at the end of the
  * drawn passes nearer the isometric camera, in front of the tool, whichever way the machine frame
  * turns the feed; L/2 at the other end.
  */
 import { describe, expect, it } from 'vitest';
-import { nearerEndFirst } from '../../src/render/drawables/dimensions';
+import { nearerEndFirst } from '../../src/render/cameraFit';
 
 /** A column-major 4 x 4 turning the local feed (x) into `feed` (world). */
 const turning = (feed: readonly [number, number, number]) => [...feed, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];

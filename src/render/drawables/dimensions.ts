@@ -8,7 +8,7 @@
 import type { Object3D } from 'three';
 import { dimensionPointCount, surfaceDimensionInto } from '../../core/output/sceneMarks';
 import { surfacePoint } from '../../core/output/surfaceGeometry';
-import { presetDirection } from '../cameraFit';
+import { nearerEndFirst } from '../cameraFit';
 import type { FatLine } from '../fatLines';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
@@ -23,23 +23,6 @@ import {
   writeLine,
 } from './parts';
 import { PATH_SEGMENTS } from './paths';
-
-/** The direction towards the isometric camera (world). */
-const TOWARDS_VIEWER = presetDirection('iso').towardsCamera;
-
-/**
- * The ends of the drawn passes along the feed (x = fromMm, toMm), the one nearer the isometric
- * camera first: the feed turned into the world by `frame` (column-major 4 x 4; none: the identity).
- */
-export function nearerEndFirst(
-  fromMm: number,
-  toMm: number,
-  frame: readonly number[] | undefined,
-): readonly [number, number] {
-  const [fx, fy, fz] = frame === undefined ? [1, 0, 0] : [frame[0] ?? 1, frame[1] ?? 0, frame[2] ?? 0];
-  const towards = fx * TOWARDS_VIEWER[0] + fy * TOWARDS_VIEWER[1] + fz * TOWARDS_VIEWER[2];
-  return towards * (toMm - fromMm) >= 0 ? [toMm, fromMm] : [fromMm, toMm];
-}
 
 export class DimensionsDrawable implements Drawable {
   private readonly interval = legend(lineOf(dimensionPointCount(PATH_SEGMENTS), COLOURS.dimension), 'dimension');

@@ -197,10 +197,10 @@ export class ToolDrawable implements Drawable {
       }
     }
     drawHeightsInPlace(s.map, p, attr.count);
-    // The edges: the holder line (the collar's foot) and its top, segment by segment.
-    for (const r of [1, 2])
+    // The edges: the holder line (the collar's foot, row 1) and its top (row 2), segment by segment.
+    for (let r = 1; r <= 2; r++)
       for (let j = 0; j < HOLDER_SEGMENTS; j++)
-        for (const q of [j, j + 1]) {
+        for (let q = j; q <= j + 1; q++) {
           const i = 3 * (r * (HOLDER_SEGMENTS + 1) + q);
           edges[e++] = p[i] as number;
           edges[e++] = p[i + 1] as number;
