@@ -31,6 +31,23 @@ export function presetDirection(preset: CameraPreset): PresetDirection {
   return { towardsCamera: [0.75 / n, -0.85 / n, 0.6 / n], up: [0, 0, 1] };
 }
 
+/** The direction towards the isometric camera (world). */
+const TOWARDS_VIEWER = presetDirection('iso').towardsCamera;
+
+/**
+ * The ends of the drawn passes along the feed (x = fromMm, toMm), the one nearer the isometric
+ * camera first: the feed turned into the world by `frame` (column-major 4 x 4; none: the identity).
+ */
+export function nearerEndFirst(
+  fromMm: number,
+  toMm: number,
+  frame: readonly number[] | undefined,
+): readonly [number, number] {
+  const [fx, fy, fz] = frame === undefined ? [1, 0, 0] : [frame[0] ?? 1, frame[1] ?? 0, frame[2] ?? 0];
+  const towards = fx * TOWARDS_VIEWER[0] + fy * TOWARDS_VIEWER[1] + fz * TOWARDS_VIEWER[2];
+  return towards * (toMm - fromMm) >= 0 ? [toMm, fromMm] : [fromMm, toMm];
+}
+
 /** Where the camera goes: its position and the point it looks at (mm); the distance between them. */
 export interface CameraFit {
   readonly position: Vec3;

@@ -27,7 +27,7 @@
  *  - `dispose()` disconnects the observers and the canvas listeners and frees every GPU resource
  *    and DOM node it made.
  */
-import { Group, type Object3D } from 'three';
+import { Color, Group, type Object3D, Vector3 } from 'three';
 import type { SceneGeometry, TraceFrame } from '../worker/protocol';
 import { type CameraPreset, fitCamera, presetDirection, type Vec3 } from './cameraFit';
 import { drawnBoundingSphere } from './clipPlanes';
@@ -40,8 +40,9 @@ import { PathsDrawable } from './drawables/paths';
 import { ToolDrawable } from './drawables/tool';
 import { ToolMarksDrawable } from './drawables/toolMarks';
 import { TraceDrawable, type TraceSizes } from './drawables/trace';
+import { FatLine, setLineScreen } from './fatLines';
 import { gatherFramePoints } from './framePoints';
-import { heightMapFor, sceneHeightExaggeration } from './heightExaggeration';
+import { drawnHeightMm, heightMapFor, sceneHeightExaggeration } from './heightExaggeration';
 import { LabelAnchor, LabelLayer } from './labelLayer';
 import { ViewedScene } from './view3d';
 
@@ -70,6 +71,10 @@ export interface SceneFraming {
   readonly focus: readonly number[] | null;
   /** Whether the camera still follows what is drawn (false once the user zoomed or panned). */
   readonly autoFit: boolean;
+  /** The tool: its centre O, its axis up the shank (world) and its radius (mm); null before a state. */
+  readonly tool: { readonly centre: Vec3; readonly axis: Vec3; readonly radiusMm: number } | null;
+  /** The lines drawn over everything, shown now: their legend key, width (CSS px) and points (world, flat xyz). */
+  readonly lines: ReadonlyArray<{ readonly key: string; readonly widthPx: number; readonly points: readonly number[] }>;
 }
 
 export class ToolScene extends ViewedScene {
@@ -105,6 +110,8 @@ export class ToolScene extends ViewedScene {
   private readonly scaleBadge = document.createElement('div');
   /** What the step-through draws with: the last state's sizes (a unit tool before any). */
   private traceSizes: TraceSizes = { map: heightMapFor(1, 0), cornerRadiusMm: 1, toolRadiusMm: 1 };
+  /** The last state drawn (null before any): the tests' probe reads its tool. */
+  private lastGeometry: SceneGeometry | null = null;
   /** Tool radius the camera was fitted to (0: not yet). */
   private fittedRadiusMm = 0;
   /** The preset last asked (the first fit looks from it, should it be asked before any state). */
@@ -113,6 +120,8 @@ export class ToolScene extends ViewedScene {
   private autoFit = true;
   /** Whether a step of the step-through is shown (the camera then frames it). */
   private traceShown = false;
+  /** The background's colour, read before each frame for the lines' halos (reused). */
+  private readonly background = new Color();
   /** The points of the last fit (reused). */
   private readonly points: number[] = [];
 
@@ -126,7 +135,7 @@ export class ToolScene extends ViewedScene {
       backgroundProperty: '--scene-bg',
       themed: THEMED_COLOURS,
       quality: 'adaptive',
-      lights: { ambient: 1.2, sun: 1.6, sunFrom: [3, -4, 6] },
+      lights: { ambient: 0.8, sun: 1.2, sunFrom: [3, -4, 6] },
     });
     this.labels = new LabelLayer(container, () => this.requestRender());
     const { scene, camera, controls } = this.view;
@@ -135,6 +144,18 @@ export class ToolScene extends ViewedScene {
     };
     this.view.afterResize = () => {
       if (this.fittedRadiusMm > 0 && this.autoFit) this.fitView();
+    };
+    // The lines' widths are in CSS px: each frame is drawn for the drawing buffer's size.
+    this.view.beforeRender = () => {
+      const { renderer } = this.view;
+      const ratio = renderer.getPixelRatio();
+      renderer.getClearColor(this.background);
+      setLineScreen(
+        Math.floor(this.view.widthPx * ratio),
+        Math.floor(this.view.heightPx * ratio),
+        ratio,
+        this.background,
+      );
     };
     this.view.afterRender = () => this.labels.layout(scene, camera, this.view.widthPx, this.view.heightPx);
     for (const d of this.drawables) this.world.add(...d.objects);
@@ -187,6 +208,7 @@ export class ToolScene extends ViewedScene {
       toMm: 1.3 * R,
     };
     for (const d of this.drawables) d.update(state);
+    this.lastGeometry = g;
     this.traceSizes = { map, cornerRadiusMm: g.cornerRadiusMm, toolRadiusMm: R };
     const badge = this.scaleBadge;
     badge.hidden = false;
@@ -258,7 +280,38 @@ export class ToolScene extends ViewedScene {
     gatherFramePoints(scene, all, false);
     const focus: number[] = [];
     const focused = this.traceShown && gatherFramePoints(scene, focus, true) > 0;
+    const lines: Array<{ key: string; widthPx: number; points: number[] }> = [];
+    const at = new Vector3();
+    scene.traverseVisible((o) => {
+      if (!(o instanceof FatLine) || o.material.depthTest || typeof o.userData.legend !== 'string') return;
+      const points: number[] = [];
+      for (let i = 0; i < o.drawnPoints; i++)
+        points.push(
+          ...at
+            .fromArray(o.points, 3 * i)
+            .applyMatrix4(o.matrixWorld)
+            .toArray(),
+        );
+      lines.push({ key: o.userData.legend, widthPx: o.material.widthPx, points });
+    });
+    const g = this.lastGeometry;
+    const tool =
+      g === null
+        ? null
+        : {
+            centre: at
+              .set(g.toolCentre[0], g.toolCentre[1], drawnHeightMm(this.traceSizes.map, g.toolCentre[2]))
+              .applyMatrix4(this.world.matrix)
+              .toArray(),
+            axis: at
+              .set(...g.toolAxis)
+              .transformDirection(this.world.matrix)
+              .toArray(),
+            radiusMm: g.toolRadiusMm,
+          };
     return {
+      tool,
+      lines,
       position: camera.position.toArray(),
       target: controls.target.toArray(),
       up: camera.up.toArray(),
@@ -278,6 +331,12 @@ export class ToolScene extends ViewedScene {
     // The camera moves to what the step shows (or back to the whole scene when the replay ends).
     if (this.autoFit && this.fittedRadiusMm > 0) this.fitView();
     this.requestRender();
+  }
+
+  /** Takes the colours from the stylesheet's current theme (on start and each change) and redraws. */
+  override applyTheme(): void {
+    super.applyTheme();
+    this.tool.matchTheme();
   }
 
   /** Marks the view as not answering the inputs on screen (or answering them again). */

@@ -122,6 +122,8 @@ export class View3D {
   onFrame: (() => void) | null = null;
   /** Called after the view takes a new size, before its frame is drawn (the owner may refit its camera). */
   afterResize: (() => void) | null = null;
+  /** Called before each render (the owner sets what its materials read of the screen). */
+  beforeRender: (() => void) | null = null;
   /** Called after each render, before `onFrame`, with the frame on the canvas (the label layer). */
   afterRender: (() => void) | null = null;
   private readonly resizeObserver = new ResizeObserver(() => this.resize());
@@ -193,6 +195,7 @@ export class View3D {
     if (this.contextLost) return; // drawn again on webglcontextrestored
     // The near and far planes from the drawing's size and the camera's place (after any refit or move).
     fitClipPlanes(this.camera, this.drawnSphere);
+    this.beforeRender?.();
     this.renderer.render(this.scene, this.camera);
     this.afterRender?.();
     this.frames++;
@@ -223,6 +226,7 @@ export class View3D {
     this.renderer.dispose();
     canvas.remove();
     this.afterRender = null;
+    this.beforeRender = null;
     this.afterResize = null;
     this.onFrame = null;
   }

@@ -9,6 +9,7 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { keepShot, loseAndRestore, paintedFraction, sceneIdle, useSite } from './harness';
 import { hueShares } from './pixels';
+import { expectLegible } from './sceneContrast';
 
 const site = useSite('docs/curved-scene');
 
@@ -134,6 +135,18 @@ describe('the 3D scene of doubly curved points and three-axis machining', () => 
         if (step === null) expect(await stepLabel.isVisible()).toBe(false);
         else await expect.poll(async () => (await stepLabel.textContent()) ?? '').toMatch(step);
         await expectLabelsClear(page, `${device} ${name}`);
+        // Legible on a projector, light and dark (issue 28, point 7): the same page in the dark theme.
+        if (name === 'dome' || name === 'raster on a sloped plane') {
+          await expectLegible(page, `${device} ${name} light`);
+          const before = await page.evaluate(() => (window as unknown as Probe).__pathInterval.frames());
+          await page.emulateMedia({ colorScheme: 'dark' });
+          await expect
+            .poll(() => page.evaluate(() => (window as unknown as Probe).__pathInterval.frames()))
+            .toBeGreaterThan(before);
+          await sceneIdle(page);
+          await keepShot(page.getByTestId('scene-canvas'), `curved-scene-${device}-${name.replace(/ /g, '-')}-dark`);
+          await expectLegible(page, `${device} ${name} dark`);
+        }
         expect(errors).toEqual([]);
         await page.close();
       });

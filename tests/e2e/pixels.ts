@@ -7,6 +7,8 @@ export type PixelCount =
   | { readonly kind: 'colour'; readonly hex: string; readonly tolerance: number }
   /** Clearly blue (b > r + 40) and clearly orange (r > b + 60, g between) pixels, in the first image. */
   | { readonly kind: 'hues' }
+  /** The r, g, b of the first image at each point (x, y in pixels, rounded and clamped to the image), flat. */
+  | { readonly kind: 'at'; readonly points: ReadonlyArray<readonly [number, number]> }
   /** Pixels of the first image whose first `channels` channel differences from the second's sum to more than `tolerance`. */
   | { readonly kind: 'difference'; readonly channels: 3 | 4; readonly tolerance: number };
 
@@ -55,6 +57,18 @@ export function countPixels(page: Page, pngs: readonly Buffer[], count: PixelCou
           if (sum <= what.tolerance) hits++;
         }
         return { sizes, counts: [hits] };
+      }
+      if (what.kind === 'at') {
+        const { width, height } = decoded[0] as (typeof decoded)[number];
+        const rgb: number[] = [];
+        for (const [x, y] of what.points) {
+          const i =
+            4 *
+            (Math.min(height - 1, Math.max(0, Math.round(y))) * width +
+              Math.min(width - 1, Math.max(0, Math.round(x))));
+          rgb.push(d[i] as number, d[i + 1] as number, d[i + 2] as number);
+        }
+        return { sizes, counts: rgb };
       }
       if (what.kind === 'hues') {
         let blue = 0;

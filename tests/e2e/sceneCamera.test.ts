@@ -7,11 +7,12 @@
  * each step shows. The camera is read through the e2e probe and projected here with three.js.
  */
 import type { Page } from 'playwright-core';
-import { PerspectiveCamera, Vector3 } from 'three';
+import { Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import type { SceneFraming } from '../../src/render/scene';
 import { frames, keepShot, sceneIdle, showView, useSite, viewAs } from './harness';
 import { hueShares } from './pixels';
+import { cameraOf, expectLegible, framing } from './sceneContrast';
 
 const site = useSite('docs/scene-camera');
 const { open } = site;
@@ -35,19 +36,9 @@ const VIEWS = [
   ['top', 'Top'],
 ] as const;
 
-const framing = (page: Page): Promise<SceneFraming | null> =>
-  page.evaluate(() =>
-    (window as unknown as { __pathInterval: { sceneFraming(): SceneFraming | null } }).__pathInterval.sceneFraming(),
-  );
-
 /** Projects flat xyz points through the probe's camera: normalised device coordinates (-1 to 1 across). */
 function project(f: SceneFraming, xyz: readonly number[]): Array<[number, number]> {
-  const camera = new PerspectiveCamera(f.fovDeg, f.aspect, 1e-3, 1e6);
-  camera.up.set(...f.up);
-  camera.position.set(...f.position);
-  camera.lookAt(new Vector3(...f.target));
-  camera.updateMatrixWorld();
-  camera.updateProjectionMatrix();
+  const camera = cameraOf(f);
   const out: Array<[number, number]> = [];
   for (let i = 0; i < xyz.length; i += 3) {
     const p = new Vector3(xyz[i], xyz[i + 1], xyz[i + 2]).project(camera);
@@ -97,7 +88,8 @@ describe('the camera frames the whole tool and fills the view', { timeout: 90_00
           const f = await settled(page);
           const where = `${vp.name} ${posture} ${name}`;
           const box = project(f, f.toolBox);
-          expect(box.length, where).toBe(8);
+          // The tool's box and its holder's.
+          expect(box.length, where).toBe(16);
           for (const [x, y] of box) {
             expect(Math.abs(x), `${where}: a corner of the tool's box is outside the view`).toBeLessThanOrEqual(1);
             expect(Math.abs(y), `${where}: a corner of the tool's box is outside the view`).toBeLessThanOrEqual(1);
@@ -107,6 +99,8 @@ describe('the camera frames the whole tool and fills the view', { timeout: 90_00
           expect(fill(all), `${where}: the view is not filled`).toBeGreaterThanOrEqual(FILL_MIN);
           if (k === 0 || k === 4 || k === 6)
             await keepShot(page.getByTestId('scene'), `scene-camera-${vp.name}-${k}-${tag}`);
+          // Legible on a projector (issue 28, point 7): measured on the plane and the dome, light and dark.
+          if ((k === 0 || k === 6) && tag === 'iso') await expectLegible(page, where);
         }
       }
       expect(errors).toEqual([]);
@@ -188,6 +182,8 @@ describe("the step-through's camera moves to what each step shows", { timeout: 1
         expect(Math.abs(Math.max(...xs) + Math.min(...xs)) / 2, `step ${k}: centred across`).toBeLessThan(0.05);
         expect(Math.abs(Math.max(...ys) + Math.min(...ys)) / 2, `step ${k}: centred up`).toBeLessThan(0.05);
         targets.push(f.target.map((v) => v.toFixed(4)).join());
+        // The close-up's labels inside the canvas, its lines legible over the tool (issue 28, point 7).
+        if (k === 1) await expectLegible(page, `step 1 (${reducedMotion})`, { tool: false });
         if (k === 1 || k === total)
           await keepShot(page.getByTestId('scene'), `scene-camera-step-${k === 1 ? 'first' : 'last'}-${reducedMotion}`);
       }

@@ -1,7 +1,8 @@
 /** The axes X (feed), Y and Z: unit arrows built once, scaled with the tool (1.6 R). */
-import { BufferGeometry, Group, Line, LineBasicMaterial, type Object3D, Vector3 } from 'three';
+import { Group, type Object3D, Vector3 } from 'three';
+import { FatLine, FatLineMaterial } from '../fatLines';
 import { LabelAnchor, legend } from '../labelLayer';
-import { COLOURS, type Drawable, type DrawState, disposeObjects } from './parts';
+import { COLOURS, type Drawable, type DrawState, disposeObjects, MARK_LINE_PX } from './parts';
 
 /** Two unit vectors perpendicular to the unit vector `d` and to each other. */
 function perpendiculars(d: Vector3): [Vector3, Vector3] {
@@ -22,18 +23,16 @@ export class AxesDrawable implements Drawable {
     for (const [dir, color, text] of specs) {
       // A shaft and a head of two crossed strokes, 0.12 long (drawn lines: no cone geometry).
       const [u, v] = perpendiculars(dir);
-      const arrow = new Group();
       const at = (k: number, w: Vector3 | null, s: number) => {
         const p = dir.clone().multiplyScalar(k);
         return w === null ? p : p.addScaledVector(w, s);
       };
-      const strokes = [
-        [at(0, null, 0), at(1, null, 0)],
-        [at(0.88, u, 0.045), at(1, null, 0), at(0.88, u, -0.045)],
-        [at(0.88, v, 0.045), at(1, null, 0), at(0.88, v, -0.045)],
-      ];
-      const material = new LineBasicMaterial({ color });
-      for (const points of strokes) arrow.add(new Line(new BufferGeometry().setFromPoints(points), material));
+      const tip = at(1, null, 0);
+      const strokes = [at(0, null, 0), tip, at(0.88, u, 0.045), tip, at(0.88, u, -0.045), tip];
+      strokes.push(at(0.88, v, 0.045), tip, at(0.88, v, -0.045), tip);
+      const arrow = new FatLine(strokes.length, new FatLineMaterial(color, MARK_LINE_PX), 'pairs');
+      for (const [i, p] of strokes.entries()) p.toArray(arrow.points, 3 * i);
+      arrow.finish(strokes.length);
       const tag = new LabelAnchor(text, 'label-axis', [0, 0], 2);
       tag.position.copy(dir).multiplyScalar(1.08);
       arrow.add(tag);

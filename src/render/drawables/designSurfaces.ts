@@ -12,28 +12,38 @@
 import {
   BufferAttribute,
   BufferGeometry,
+  DataTexture,
   DoubleSide,
-  LineBasicMaterial,
-  LineSegments,
   Mesh,
   MeshBasicMaterial,
   type Object3D,
 } from 'three';
 import { patchIndices, surfacePatch, surfacePoint } from '../../core/output/surfaceGeometry';
-import { curvatureColoursInto } from '../curvatureShading';
+import { BAND_TEXELS, bandStripRgba, curvatureBandsInto } from '../curvatureShading';
+import { FatLine, FatLineMaterial } from '../fatLines';
 import { drawHeightsInPlace, drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import { PATCH_CROSS, PATCH_FEED, patchLineIndices } from '../outlineIndices';
-import { COLOURS, type Drawable, type DrawState, disposeObjects } from './parts';
+import { COLOURS, type Drawable, type DrawState, disposeObjects, THIN_LINE_PX } from './parts';
 
 /** A curved patch's material colour: white (not themed), so that its vertex colours show as they are. */
 const CURVED_BASE = 0xffffff;
+
+/** The bands' colours, read at the nearest texel (sharp band edges along the iso-height lines). */
+function bandStrip(): DataTexture {
+  const strip = new DataTexture(bandStripRgba(), BAND_TEXELS, 1);
+  strip.needsUpdate = true;
+  return strip;
+}
 
 function patchMesh(color: number, opacity: number, shaded: boolean): Mesh {
   const g = new BufferGeometry();
   const vertices = (PATCH_FEED + 1) * (PATCH_CROSS + 1) * 3;
   g.setAttribute('position', new BufferAttribute(new Float32Array(vertices), 3));
-  if (shaded) g.setAttribute('color', new BufferAttribute(new Float32Array(vertices).fill(1), 3));
+  if (shaded) {
+    g.setAttribute('color', new BufferAttribute(new Float32Array(vertices).fill(1), 3));
+    g.setAttribute('uv', new BufferAttribute(new Float32Array((vertices / 3) * 2).fill(0.5), 2));
+  }
   g.setIndex(new BufferAttribute(patchIndices(PATCH_FEED, PATCH_CROSS), 1));
   const m = new Mesh(
     g,
@@ -44,19 +54,18 @@ function patchMesh(color: number, opacity: number, shaded: boolean): Mesh {
       opacity,
       depthWrite: false,
       vertexColors: shaded,
+      map: shaded ? bandStrip() : null,
     }),
   );
   m.frustumCulled = false;
   return m;
 }
 
-/** Lines over a patch's own vertices (its position buffer shared: updated with it). */
-function patchLines(patch: Mesh, color: number, opacity: number, every: number): LineSegments {
-  const g = new BufferGeometry();
-  g.setAttribute('position', patch.geometry.getAttribute('position'));
-  g.setIndex(new BufferAttribute(patchLineIndices(every), 1));
-  const lines = new LineSegments(g, new LineBasicMaterial({ color, transparent: true, opacity }));
-  lines.frustumCulled = false;
+/** Lines over a patch's own vertices (its edge, and a grid with `every` > 0), written with the patch. */
+function patchLines(patch: Mesh, color: number, opacity: number, every: number): FatLine {
+  const pairs = patchLineIndices(every);
+  const lines = new FatLine(pairs.length, new FatLineMaterial(color, THIN_LINE_PX, { opacity }), 'pairs');
+  lines.userData.pairs = pairs;
   patch.add(lines);
   return lines;
 }
@@ -71,10 +80,14 @@ function fillPatch(mesh: Mesh, s: DrawState, heightMm: number): void {
   drawHeightsInPlace(s.map, points, attr.count);
   attr.needsUpdate = true;
   const colours = mesh.geometry.getAttribute('color') as BufferAttribute | undefined;
-  if (colours !== undefined) {
-    curvatureColoursInto(colours.array, points, PATCH_FEED + 1, PATCH_CROSS + 1, 0);
+  const uv = mesh.geometry.getAttribute('uv') as BufferAttribute | undefined;
+  if (colours !== undefined && uv !== undefined) {
+    curvatureBandsInto(uv.array, colours.array, points, PATCH_FEED + 1, PATCH_CROSS + 1, 0);
     colours.needsUpdate = true;
+    uv.needsUpdate = true;
   }
+  for (const child of mesh.children)
+    if (child instanceof FatLine) child.finishPairs(points, child.userData.pairs as Uint32Array);
   // Kept for three.js's back-to-front sorting of the translucent objects.
   mesh.geometry.computeBoundingSphere();
 }

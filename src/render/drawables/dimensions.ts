@@ -5,9 +5,11 @@
  * contact, across the feed. For three-axis machining, the step as programmed (the machine view's
  * `Lxy` horizontal or `dz` vertical dimension, core machineGeometry.ts).
  */
-import type { Line, Object3D } from 'three';
+import type { Object3D } from 'three';
 import { dimensionPointCount, surfaceDimensionInto } from '../../core/output/sceneMarks';
 import { surfacePoint } from '../../core/output/surfaceGeometry';
+import { nearerEndFirst } from '../cameraFit';
+import type { FatLine } from '../fatLines';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import {
@@ -26,7 +28,8 @@ export class DimensionsDrawable implements Drawable {
   private readonly interval = legend(lineOf(dimensionPointCount(PATH_SEGMENTS), COLOURS.dimension), 'dimension');
   private readonly half = legend(lineOf(dimensionPointCount(PATH_SEGMENTS), COLOURS.dimension), 'dimension');
   private readonly offset = legend(lineOf(4, COLOURS.dimension), 'offset');
-  private readonly intervalLabel = new LabelAnchor('L', 'label-dim', [0, -1], 6);
+  /** On its dimension line, as a drawing's dimension reads (the answer: placed before the other labels but the step-through's). */
+  private readonly intervalLabel = new LabelAnchor('L', 'label-dim', [0, 0], 9.5);
   private readonly halfLabel = new LabelAnchor('L/2', 'label-dim label-half', [0, -1], 6);
   private readonly offsetLabel = new LabelAnchor('y0', 'label-offset', [0, 1], 5);
   /** Three-axis: the programmed step (up to 16 points: two extension lines, a line, two arrowheads). */
@@ -48,15 +51,18 @@ export class DimensionsDrawable implements Drawable {
     const L = s.intervalMm;
     const tick = 0.08 * R;
     const arrowMm = Math.min(0.07 * R, 0.25 * L);
-    const dimension = (line: Line, xMm: number, lengthMm: number) =>
+    const dimension = (line: FatLine, xMm: number, lengthMm: number) =>
       finishLine(
         line,
         surfaceDimensionInto(positionsOf(line), 0, surface, xMm, lengthMm, tick, arrowMm, PATH_SEGMENTS),
       );
-    dimension(this.interval, s.fromMm, L);
-    dimension(this.half, s.toMm, L / 2);
-    this.intervalLabel.position.fromArray(surfacePoint(surface, s.fromMm, L / 2, tick));
-    this.halfLabel.position.fromArray(surfacePoint(surface, s.toMm, L / 4, tick));
+    // L between this pass's path and the next at the end of the passes nearer the isometric
+    // camera (in front of the tool, clear of it); L/2 at the other end.
+    const [nearMm, farMm] = nearerEndFirst(s.fromMm, s.toMm, g.machine?.frameMatrix);
+    dimension(this.interval, nearMm, L);
+    dimension(this.half, farMm, L / 2);
+    this.intervalLabel.position.fromArray(surfacePoint(surface, nearMm, L / 2, 0));
+    this.halfLabel.position.fromArray(surfacePoint(surface, farMm, L / 4, tick));
     this.intervalLabel.setText(s.labels.interval);
     this.halfLabel.setText(s.labels.halfInterval);
     // y0: from the foot of O's drop to the contact, across the feed.

@@ -5,11 +5,8 @@
  * builds its objects once, updates them in place from a {@link DrawState}, and frees them.
  */
 import {
-  BufferAttribute,
-  BufferGeometry,
-  Line,
-  LineBasicMaterial,
-  LineLoop,
+  type BufferAttribute,
+  type BufferGeometry,
   type Material,
   Mesh,
   MeshBasicMaterial,
@@ -17,6 +14,7 @@ import {
   type SphereGeometry,
 } from 'three';
 import type { SceneGeometry } from '../../worker/protocol';
+import { FatLine, FatLineMaterial } from '../fatLines';
 import { drawHeightsInPlace, type HeightMap } from '../heightExaggeration';
 import { legend } from '../labelLayer';
 
@@ -56,7 +54,7 @@ export interface Drawable {
 }
 
 export const COLOURS = {
-  section: 0xff7a00,
+  section: 0xc2410c,
   loop: 0xd6336c,
   axis: 0x444444,
   dimension: 0x111111,
@@ -65,13 +63,14 @@ export const COLOURS = {
   pHp: 0xd6336c,
   trace: 0x7c3aed,
   path: 0x1b7f3b,
-  tool: 0xb8c7d9,
+  tool: 0x4b5a6e,
+  holder: 0x2b3442,
   ghost: 0x6c7a89,
   plane: 0xc9ced6,
   hPlane: 0x2f80ed,
   ridge: 0xb4235a,
   x: 0xd62828,
-  y: 0x2a9d8f,
+  y: 0x0f766e,
   z: 0x1d4ed8,
 } as const;
 
@@ -88,6 +87,7 @@ export const THEMED_COLOURS: ReadonlyMap<number, string> = new Map([
   [COLOURS.centre, '--scene-centre'],
   [COLOURS.trace, '--scene-trace'],
   [COLOURS.tool, '--scene-tool'],
+  [COLOURS.holder, '--scene-holder'],
   [COLOURS.ghost, '--scene-ghost'],
   [COLOURS.plane, '--scene-plane'],
   [COLOURS.hPlane, '--scene-hplane'],
@@ -100,28 +100,40 @@ export const THEMED_COLOURS: ReadonlyMap<number, string> = new Map([
 /** Points of a circle drawn as a section (a cusp's, the traced one). */
 export const SECTION_POINTS = 96;
 
-/** A line of up to `capacity` points drawn over everything (no depth test), empty until written. */
-export function lineOf(capacity: number, color: number, loop = false): Line {
-  const geometry = new BufferGeometry();
-  geometry.setAttribute('position', new BufferAttribute(new Float32Array(capacity * 3), 3));
-  geometry.setDrawRange(0, 0);
-  const material = new LineBasicMaterial({ color, depthTest: false });
-  const line = loop ? new LineLoop(geometry, material) : new Line(geometry, material);
+/**
+ * The width of the scene's lines (CSS px; a projector's reader at the back of a room): the marks of
+ * the answer (paths, dimensions, sections, axes) and the thinner ones (outlines, grids).
+ */
+export const MARK_LINE_PX = 3;
+export const THIN_LINE_PX = 2;
+
+/** A line of up to `capacity` points, `widthPx` wide, drawn over everything (no depth test) on a halo, empty until written. */
+export function lineOf(capacity: number, color: number, loop = false, widthPx = MARK_LINE_PX): FatLine {
+  const line = new FatLine(capacity, new FatLineMaterial(color, widthPx, { overlay: true }), loop ? 'loop' : 'strip');
   line.renderOrder = 10;
-  line.frustumCulled = false;
+  // Its halo (the background's colour, a pixel wider each side), drawn before every such line.
+  const halo = new Mesh(line.geometry, new FatLineMaterial('halo', widthPx, { overlay: true }));
+  halo.frustumCulled = false;
+  halo.renderOrder = 9;
+  line.add(halo);
   return line;
 }
 
-/** The vertex buffer of a line (or points) object, to be written in place. */
-export function positionsOf(object: { geometry: BufferGeometry }): Float32Array {
+/** The points of a line (written in place, then {@link finishLine}d), or the vertex buffer of a points object. */
+export function positionsOf(object: FatLine | { geometry: BufferGeometry }): Float32Array {
+  if (object instanceof FatLine) return object.points;
   return (object.geometry.getAttribute('position') as BufferAttribute).array as Float32Array;
 }
 
 /**
- * Marks the first `count` points of a line (or points) object's buffer as written: drawn from the
- * next frame on. With `map`, their heights are first drawn through it (in place).
+ * Marks the first `count` points of a line (or points) object as written: drawn from the next
+ * frame on. With `map`, their heights are first drawn through it (in place).
  */
-export function finishLine(object: { geometry: BufferGeometry }, count: number, map?: HeightMap): void {
+export function finishLine(object: FatLine | { geometry: BufferGeometry }, count: number, map?: HeightMap): void {
+  if (object instanceof FatLine) {
+    object.finish(count, map);
+    return;
+  }
   const attr = object.geometry.getAttribute('position') as BufferAttribute;
   const n = Math.min(count, attr.count);
   if (map !== undefined) drawHeightsInPlace(map, attr.array as Float32Array, n);
@@ -129,12 +141,12 @@ export function finishLine(object: { geometry: BufferGeometry }, count: number, 
   object.geometry.setDrawRange(0, n);
 }
 
-/** Writes `count` points (flat xyz) into a line's buffer (as many as it holds), heights drawn through `map`. */
-export function writeLine(line: Line, points: ArrayLike<number>, count: number, map?: HeightMap): void {
-  const arr = positionsOf(line);
+/** Writes `count` points (flat xyz) into a line (as many as it holds), heights drawn through `map`. */
+export function writeLine(line: FatLine, points: ArrayLike<number>, count: number, map?: HeightMap): void {
+  const arr = line.points;
   const n = Math.min(count, arr.length / 3);
   for (let i = 0; i < n * 3; i++) arr[i] = points[i] as number;
-  finishLine(line, n, map);
+  line.finish(n, map);
 }
 
 /**
@@ -142,13 +154,14 @@ export function writeLine(line: Line, points: ArrayLike<number>, count: number, 
  * everything, that labels keep clear of, with its legend entry.
  */
 export function markerOf(dot: SphereGeometry, color: number, key: string): Mesh {
-  const m = legend(new Mesh(dot, new MeshBasicMaterial({ color, depthTest: false })), key);
+  // Transparent (at full opacity): drawn after the translucent surfaces, not under them.
+  const m = legend(new Mesh(dot, new MeshBasicMaterial({ color, depthTest: false, transparent: true })), key);
   m.renderOrder = 11;
   m.userData.marker = true;
   return m;
 }
 
-/** Frees the geometries and materials of `objects` and of their descendants (each once). */
+/** Frees the geometries, materials and textures of `objects` and of their descendants (each once). */
 export function disposeObjects(objects: readonly Object3D[]): void {
   const geometries = new Set<BufferGeometry>();
   const materials = new Set<Material>();
@@ -161,5 +174,8 @@ export function disposeObjects(objects: readonly Object3D[]): void {
       else if (m) materials.add(m);
     });
   for (const g of geometries) g.dispose();
-  for (const m of materials) m.dispose();
+  for (const m of materials) {
+    (m as Material & { map?: { dispose(): void } | null }).map?.dispose();
+    m.dispose();
+  }
 }

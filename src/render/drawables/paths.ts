@@ -4,8 +4,9 @@
  * curved patch, a level circle on a surface of revolution); for three-axis machining the passes its
  * machine view draws.
  */
-import type { Line, Object3D } from 'three';
+import type { Object3D } from 'three';
 import { surfacePolylineInto } from '../../core/output/surfaceGeometry';
+import type { FatLine } from '../fatLines';
 import { framed } from '../framePoints';
 import { legend } from '../labelLayer';
 import { COLOURS, type Drawable, type DrawState, disposeObjects, finishLine, lineOf, positionsOf } from './parts';
@@ -14,7 +15,7 @@ import { COLOURS, type Drawable, type DrawState, disposeObjects, finishLine, lin
 export const PATH_SEGMENTS = 48;
 
 export class PathsDrawable implements Drawable {
-  private readonly paths: readonly Line[] = [0, 1, 2].map(() =>
+  private readonly paths: readonly FatLine[] = [0, 1, 2].map(() =>
     framed(legend(lineOf(PATH_SEGMENTS + 1, COLOURS.path), 'path'), 'points'),
   );
   readonly objects: readonly Object3D[] = this.paths;

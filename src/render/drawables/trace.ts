@@ -39,7 +39,13 @@ export class TraceDrawable {
       legend(
         new Points(
           geometry,
-          new PointsMaterial({ color: COLOURS.trace, size: 6, sizeAttenuation: false, depthTest: false }),
+          new PointsMaterial({
+            color: COLOURS.trace,
+            size: 6,
+            sizeAttenuation: false,
+            depthTest: false,
+            transparent: true,
+          }),
         ),
         'trace',
       ),
