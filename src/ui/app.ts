@@ -14,6 +14,7 @@ import type { RestartInfo } from '../worker/client';
 import { isSolveRequest, type PageReply, type PageRequest } from '../worker/pageProtocol';
 import type { SolveMode } from '../worker/protocol';
 import { solveClient } from '../worker/workers';
+import { browserStorage } from './browserStorage';
 import { applyProcedureColours } from './colours';
 import { wireCopyButtons } from './copy';
 import { wireCopyLink } from './copyLink';
@@ -29,7 +30,7 @@ import { LazyToolShelf } from './lazyToolShelf';
 import { plainLengths } from './lengthFields';
 import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
-import { browserStorage, readPreferences, withPreferences, writePreferences } from './preferences';
+import { readPreferences, withPreferences, writePreferences } from './preferences';
 import { PresentMode, parsePresent } from './present';
 import { questionWords } from './questionWords';
 import { type BuiltRequest, buildRequest, stateMessages } from './request';
@@ -135,7 +136,7 @@ export class CalculatorApp {
     const embed = parsed.embed;
     // A bare visit starts on the machine and unit chosen last time; a link or an embed as it says.
     this.storage = embed ? null : browserStorage();
-    this.state = withPreferences(parsed.state, window.location.search, readPreferences(this.storage));
+    this.state = withPreferences(parsed.state, parsed.bare, readPreferences(this.storage));
     const requested = VIEW_IDS.find((v) => v === parsed.view);
     const extra: Record<string, string> = {};
     document.documentElement.classList.toggle('embed', embed);

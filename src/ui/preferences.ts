@@ -22,9 +22,6 @@ export interface PagePreferences {
 
 const NONE: PagePreferences = { machine: null, unit: null };
 
-/** The address parameters that set the page, not the question: they leave a visit "bare". */
-const PAGE_SETTING_PARAMS: ReadonlySet<string> = new Set(['theme', 'present', 'view']);
-
 /** The remembered choices in `storage` (null: no storage), or none. */
 export function readPreferences(storage: ToolStorage | null): PagePreferences {
   let text: string | null = null;
@@ -59,30 +56,15 @@ export function writePreferences(storage: ToolStorage | null, state: CalculatorS
   }
 }
 
-/** True when the address asks nothing of the calculator (no parameter beyond the page settings). */
-export function isBareVisit(search: string): boolean {
-  for (const key of new URLSearchParams(search).keys()) if (!PAGE_SETTING_PARAMS.has(key)) return false;
-  return true;
-}
-
 /**
- * The state a visit starts from: on a bare visit (whose parsed state is the default one), the
+ * The state a visit starts from: on a bare visit (parseUrl's `bare`: its state is the default one), the
  * remembered unit's own defaults on the remembered machine; otherwise the parsed state as is.
  */
-export function withPreferences(state: CalculatorState, search: string, prefs: PagePreferences): CalculatorState {
-  if (!isBareVisit(search)) return state;
+export function withPreferences(state: CalculatorState, bare: boolean, prefs: PagePreferences): CalculatorState {
+  if (!bare) return state;
   const inUnit =
     prefs.unit === null || prefs.unit === state.unit
       ? state
       : withSize(defaultState(prefs.unit, state.mode), state.size ?? 'R');
   return prefs.machine === null ? inUnit : { ...inUnit, machine: prefs.machine };
-}
-
-/** The browser's localStorage, or null where there is none or reading it throws (disabled storage). */
-export function browserStorage(): ToolStorage | null {
-  try {
-    return typeof window === 'undefined' ? null : window.localStorage;
-  } catch {
-    return null;
-  }
 }

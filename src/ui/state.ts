@@ -122,6 +122,17 @@ export interface ParsedUrl {
   readonly view: string | null;
   /** `present=` as the link gives it (app.ts takes `1`, says so of anything else), or null. */
   readonly present: string | null;
+  /** True when the address asks nothing of the calculator (preferences.ts: a bare visit). */
+  readonly bare: boolean;
+}
+
+/** The address parameters that set the page, not the question: they leave a visit "bare". */
+const PAGE_SETTING_PARAMS: ReadonlySet<string> = new Set(['theme', 'present', 'view']);
+
+/** True when the address asks nothing of the calculator (no parameter beyond the page settings). */
+export function isBareVisit(search: string): boolean {
+  for (const key of new URLSearchParams(search).keys()) if (!PAGE_SETTING_PARAMS.has(key)) return false;
+  return true;
 }
 
 /**
@@ -196,6 +207,7 @@ export function parseUrl(search: string): ParsedUrl {
     embed,
     view: params.get(param('view')),
     present: params.get(param('present')),
+    bare: isBareVisit(search),
   };
 }
 

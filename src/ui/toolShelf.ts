@@ -5,8 +5,10 @@
  * one in another unit than the page's offers that unit in one tap. Names are shown as text
  * (textContent), never as HTML.
  */
+
 import { checkTool, LIBRARY_MAX_CHARS, type LibraryTool, parseFusionLibrary } from '../core/input/toolLibrary';
 import { type LengthUnit, unitSymbol } from '../core/input/units';
+import { browserStorage } from './browserStorage';
 import { html } from './dom';
 import { fieldText } from './fieldText';
 import { SavedTools, type ToolStorage } from './savedTools';
@@ -24,15 +26,6 @@ export interface ToolShelfEvents {
 
 /** The most problem lines listed after an import (the rest counted). */
 const PROBLEMS_SHOWN = 8;
-
-/** The browser's localStorage, or null where reading it throws (disabled storage). */
-function browserStorage(): ToolStorage | null {
-  try {
-    return window.localStorage;
-  } catch {
-    return null;
-  }
-}
 
 /** The saved tools' list, the save and delete controls, and the library import with its list. */
 export class ToolShelf {

@@ -4,15 +4,9 @@
  */
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import {
-  isBareVisit,
-  PREFERENCES_KEY,
-  readPreferences,
-  withPreferences,
-  writePreferences,
-} from '../../src/ui/preferences';
+import { PREFERENCES_KEY, readPreferences, withPreferences, writePreferences } from '../../src/ui/preferences';
 import type { ToolStorage } from '../../src/ui/savedTools';
-import { defaultState, parseUrl } from '../../src/ui/state';
+import { defaultState, isBareVisit, parseUrl } from '../../src/ui/state';
 
 function memory(): ToolStorage & { map: Map<string, string> } {
   const map = new Map<string, string>();
@@ -33,18 +27,18 @@ describe('page preferences', () => {
     expect(writePreferences(storage, { ...defaultState('in'), machine: '3axis' })).toBe(true);
     const prefs = readPreferences(storage);
     expect(prefs).toEqual({ machine: '3axis', unit: 'in' });
-    const start = withPreferences(parseUrl('').state, '', prefs);
+    const start = withPreferences(parseUrl('').state, true, prefs);
     expect(start.machine).toBe('3axis');
     expect(start.unit).toBe('in');
     expect(start.fields).toEqual(parseUrl('?unit=in').state.fields);
     // Page settings alone keep a visit bare.
-    expect(withPreferences(parseUrl('?theme=dark').state, '?theme=dark', prefs).machine).toBe('3axis');
+    expect(withPreferences(parseUrl('?theme=dark').state, parseUrl('?theme=dark').bare, prefs).machine).toBe('3axis');
   });
 
   it('a link keeps its meaning: a five-axis link (no machine=) stays five-axis, in its own unit', () => {
     const prefs = { machine: '3axis', unit: 'in' } as const;
     const search = '?R=3&Rcr=1&rho=5&h=0.05';
-    const s = withPreferences(parseUrl(search).state, search, prefs);
+    const s = withPreferences(parseUrl(search).state, parseUrl(search).bare, prefs);
     expect(s.machine).toBe('5axis');
     expect(s.unit).toBe('mm');
     for (const q of ['?embed=1', '?machine=5axis', '?unit=mm', '?view=profile&embed=1'])
@@ -52,7 +46,7 @@ describe('page preferences', () => {
   });
 
   it('a first visit keeps the teacher default (five-axis, mm)', () => {
-    const s = withPreferences(parseUrl('').state, '', readPreferences(memory()));
+    const s = withPreferences(parseUrl('').state, parseUrl('').bare, readPreferences(memory()));
     expect([s.machine, s.unit]).toEqual(['5axis', 'mm']);
     expect(s).toEqual(parseUrl('').state);
   });
