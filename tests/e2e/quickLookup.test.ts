@@ -319,7 +319,9 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
     expect(refused?.fields[col('error')]).toMatch(/ in \(got [\d.]+\)/);
     await expect
       .poll(() => text(page, 'download-table-status'))
-      .toMatch(/^Saved step-over-table_5-axis_R0\.25_Rcr0\.0625_one-way_plane_in\.csv: \d+ rows, h 0\.00002 to [\d.]+ in /);
+      .toMatch(
+        /^Saved step-over-table_5-axis_R0\.25_Rcr0\.0625_one-way_plane_in\.csv: \d+ rows, h 0\.00002 to [\d.]+ in /,
+      );
   });
 
   it('touch targets are at least 24 px; a vertical swipe over the scene or the profile scrolls the page', async () => {
