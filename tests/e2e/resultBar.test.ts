@@ -123,7 +123,11 @@ describe('result bar on a phone', () => {
     const step = await text(page, 'result-programmed-step');
     expect(step).toMatch(/\d mm$/);
     expect(await text(page, 'result-bar-value')).toBe(step);
-    expect(await page.locator('[data-testid="result-bar"] .bar-label').textContent()).toMatch(/\(as programmed\)$/);
+    expect(await page.locator('[data-testid="result-bar"] [data-role="bar-label"]').textContent()).toMatch(
+      /\(as programmed\)$/,
+    );
+    // The question the answer answers, under the label (questionWords.ts).
+    expect(await text(page, 'result-bar-question')).toMatch(/^3-axis, /);
     await pageSettled(page);
     await page.addScriptTag({ content: AXE });
     const violations = await page.evaluate(async () => {
@@ -164,7 +168,7 @@ describe('result bar on a phone', () => {
     expect(await text(page, 'result-bar-value')).toBe(step);
     expect(await copyEnabled(page)).toBe(true);
     // The label is whole: its text is the headline's, and no line of it is cut or hidden.
-    const label = page.locator('[data-testid="result-bar"] .bar-label');
+    const label = page.locator('[data-testid="result-bar"] [data-role="bar-label"]');
     expect(await label.textContent()).toBe(await page.locator('[data-role="headline-label"]').textContent());
     expect(await label.textContent()).toMatch(/^Horizontal step Lxy \(as programmed\)$/);
     expect(await cut(page, '[data-testid="result-bar"] .bar-label')).toEqual([]);
