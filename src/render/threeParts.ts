@@ -30,4 +30,3 @@ export { Mesh } from 'three/src/objects/Mesh.js';
 export { Points } from 'three/src/objects/Points.js';
 export { WebGLRenderer } from 'three/src/renderers/WebGLRenderer.js';
 export { Scene } from 'three/src/scenes/Scene.js';
-export { DataTexture } from 'three/src/textures/DataTexture.js';

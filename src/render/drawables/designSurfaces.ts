@@ -9,53 +9,31 @@
  * surface is the more opaque, edged with a solid line; the h pseudo surface is faint, ruled with
  * a grid of its own colour; each is named by a label on it.
  */
-import {
-  BufferAttribute,
-  BufferGeometry,
-  DataTexture,
-  DoubleSide,
-  Mesh,
-  MeshBasicMaterial,
-  type Object3D,
-} from 'three';
+import { BufferAttribute, BufferGeometry, DoubleSide, Mesh, MeshBasicMaterial, type Object3D } from 'three';
 import { patchIndices, surfacePatch, surfacePoint } from '../../core/output/surfaceGeometry';
-import { BAND_TEXELS, bandStripRgba, curvatureBandsInto } from '../curvatureShading';
+import { BandMaterial } from '../bandMaterial';
+import { curvatureBandsInto } from '../curvatureShading';
 import { FatLine, FatLineMaterial } from '../fatLines';
 import { drawHeightsInPlace, drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import { PATCH_CROSS, PATCH_FEED, patchLineIndices } from '../outlineIndices';
 import { COLOURS, type Drawable, type DrawState, disposeObjects, THIN_LINE_PX } from './parts';
 
-/** A curved patch's material colour: white (not themed), so that its vertex colours show as they are. */
-const CURVED_BASE = 0xffffff;
-
-/** The bands' colours, read at the nearest texel (sharp band edges along the iso-height lines). */
-function bandStrip(): DataTexture {
-  const strip = new DataTexture(bandStripRgba(), BAND_TEXELS, 1);
-  strip.needsUpdate = true;
-  return strip;
-}
-
 function patchMesh(color: number, opacity: number, shaded: boolean): Mesh {
   const g = new BufferGeometry();
   const vertices = (PATCH_FEED + 1) * (PATCH_CROSS + 1) * 3;
   g.setAttribute('position', new BufferAttribute(new Float32Array(vertices), 3));
   if (shaded) {
-    g.setAttribute('color', new BufferAttribute(new Float32Array(vertices).fill(1), 3));
-    g.setAttribute('uv', new BufferAttribute(new Float32Array((vertices / 3) * 2).fill(0.5), 2));
+    // The band material's: each vertex's shade and its coordinate along the band strip (bandMaterial.ts).
+    g.setAttribute('shade', new BufferAttribute(new Float32Array(vertices).fill(1), 3));
+    g.setAttribute('band', new BufferAttribute(new Float32Array((vertices / 3) * 2).fill(0.5), 2));
   }
   g.setIndex(new BufferAttribute(patchIndices(PATCH_FEED, PATCH_CROSS), 1));
   const m = new Mesh(
     g,
-    new MeshBasicMaterial({
-      color,
-      side: DoubleSide,
-      transparent: true,
-      opacity,
-      depthWrite: false,
-      vertexColors: shaded,
-      map: shaded ? bandStrip() : null,
-    }),
+    shaded
+      ? new BandMaterial(opacity)
+      : new MeshBasicMaterial({ color, side: DoubleSide, transparent: true, opacity, depthWrite: false }),
   );
   m.frustumCulled = false;
   return m;
@@ -79,8 +57,8 @@ function fillPatch(mesh: Mesh, s: DrawState, heightMm: number): void {
   surfacePatch(s.geometry.surface, heightMm, feedHalfMm, crossHalfMm, PATCH_FEED, PATCH_CROSS, points);
   drawHeightsInPlace(s.map, points, attr.count);
   attr.needsUpdate = true;
-  const colours = mesh.geometry.getAttribute('color') as BufferAttribute | undefined;
-  const uv = mesh.geometry.getAttribute('uv') as BufferAttribute | undefined;
+  const colours = mesh.geometry.getAttribute('shade') as BufferAttribute | undefined;
+  const uv = mesh.geometry.getAttribute('band') as BufferAttribute | undefined;
   if (colours !== undefined && uv !== undefined) {
     curvatureBandsInto(uv.array, colours.array, points, PATCH_FEED + 1, PATCH_CROSS + 1, 0);
     colours.needsUpdate = true;
@@ -98,7 +76,7 @@ const H_GRID_EVERY = 8;
 export class DesignSurfacesDrawable implements Drawable {
   private readonly design = legend(patchMesh(COLOURS.plane, 0.6, false), 'design');
   /** A curved patch: coloured by its shape, more opaque so that the colours read. */
-  private readonly curved = legend(patchMesh(CURVED_BASE, 0.85, true), 'design');
+  private readonly curved = legend(patchMesh(0xffffff, 0.85, true), 'design');
   private readonly hSurface = legend(patchMesh(COLOURS.hPlane, 0.14, false), 'hplane');
   private readonly designName = new LabelAnchor('design plane', 'label-surface', [1, 1], 3);
   private readonly hName = new LabelAnchor('h pseudo plane', 'label-hsurface', [1, -1], 3);
