@@ -129,8 +129,10 @@ describe('example documentation site (MkDocs)', () => {
     // they set is laid out.
     await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
     expect(await frameHeight(page, selector)).toBe(before);
-    // The same message from the iframe's window and origin is taken (the check is not blind).
-    await page.locator(selector).evaluate((f) => {
+    // The same message from the iframe's window and origin is taken (the check is not blind): the
+    // listener sets the height while the message is dispatched (read at once: the frame's own
+    // content posts its real height again as soon as it lays out at the new size).
+    const taken = await page.locator(selector).evaluate((f) => {
       const source = (f as HTMLIFrameElement).contentWindow;
       const data = { type: 'path-interval:resize', height: 2345 };
       window.dispatchEvent(
@@ -140,8 +142,9 @@ describe('example documentation site (MkDocs)', () => {
           source,
         }),
       );
+      return (f as HTMLIFrameElement).style.height;
     });
-    await expect.poll(() => frameHeight(page, selector)).toBe(2345);
+    expect(taken).toBe('2345px');
     await page.close();
   }, 60_000);
 });
