@@ -13,10 +13,11 @@ import { compareDoublyCurved } from '../../src/core/procedures/compareDoublyCurv
 import { doublyCurvedHeightForRaMm, doublyCurvedRoughness } from '../../src/core/roughness/doublyCurved';
 import { doublyCurvedForward, doublyCurvedRadiusLimit, doublyCurvedSolver } from '../../src/core/surfaces/doublyCurved';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
+import { slopedPlaneRoughness } from '../../src/core/threeAxis/slopedPlaneRoughness';
 import { waterlineForward } from '../../src/core/threeAxis/waterlineRevolution';
 import { formatLen, formatLenUnit, formatRoughness } from '../../src/ui/format';
 import { questionLimitsOf } from '../../src/ui/questionLimits';
-import { THREE_AXIS_NOTE } from '../../src/ui/roughness';
+import { REVOLUTION_NOTE } from '../../src/ui/roughness';
 import { sliderRanges } from '../../src/ui/sliders';
 import { parseUrl } from '../../src/ui/state';
 import { THREE_AXIS_TABLE_NOTE } from '../../src/ui/threeAxisNotes';
@@ -161,7 +162,7 @@ describe.each([
   });
 });
 
-describe('roughness, a target Ra and the sliders at a doubly curved point; three-axis roughness', () => {
+describe('roughness, a target Ra and the sliders at a doubly curved point; three-axis roughness and table', () => {
   it('a saddle: Rz, Ra, Rq of the core; a target Ra typed answers the core h and L; the h slider stops at this point', async () => {
     const { page, errors } = await site.open('?R=3&Rcr=1&rho=5&h=0.05&feedRadius=80&crossRadius=-40&unit=mm', DESKTOP);
     const radii = { feedRadiusMm: 80, crossRadiusMm: -40 };
@@ -192,11 +193,38 @@ describe('roughness, a target Ra and the sliders at a doubly curved point; three
     expect(errors).toEqual([]);
   });
 
-  it('three-axis: the roughness rows are dashes and say why; the lookup table is not offered, said', async () => {
+  it('three-axis: Rz, Ra, Rq on the sloped plane are the plane roughness at its posture; a surface of revolution says why none', async () => {
+    const { page, errors } = await site.open(
+      '?machine=3axis&R=3&Rcr=1&slope=30&rasterAngle=30&h=0.01&unit=mm',
+      DESKTOP,
+    );
+    const rough = (passes: 'raster' | 'waterline') =>
+      slopedPlaneRoughness({ toolRadiusMm: 3, cornerRadiusMm: 1, slopeDeg: 30, passes, rasterAngleDeg: 30 }, 0.01);
+    const raster = rough('raster');
+    await expect.poll(() => text(page, 'result-ra')).toBe(formatRoughness(raster.raMm, 'mm'));
+    expect(await text(page, 'result-rz')).toBe(formatRoughness(raster.rzMm, 'mm'));
+    expect(await text(page, 'result-rq')).toBe(formatRoughness(raster.rqMm, 'mm'));
+    expect(await text(page, 'result-ra-rule')).toMatch(
+      /^Rule of thumb Ra ~ h\/4 = 2\.500 µm: -?[\d.]+ % against the exact Ra\.$/,
+    );
+    // Waterline on the plane: the posture of raster angle 90, its own roughness.
+    await radio(page, 'passes-switch', 'waterline').check();
+    const waterline = rough('waterline');
+    expect(waterline.raMm).not.toBeCloseTo(raster.raMm, 7);
+    await expect.poll(() => text(page, 'result-ra')).toBe(formatRoughness(waterline.raMm, 'mm'));
+    expect(await text(page, 'result-rz')).toBe(formatRoughness(waterline.rzMm, 'mm'));
+    // A surface of revolution: dashes, and the one line that says why.
+    await page.getByTestId('surface-preset').selectOption('dome');
+    await expect.poll(() => text(page, 'result-ra-rule')).toBe(REVOLUTION_NOTE);
+    expect(await text(page, 'result-ra')).toBe(DASH);
+    expect(await text(page, 'result-rz')).toBe(DASH);
+    expect(await text(page, 'result-programmed-step')).toMatch(/\d/);
+    expect(errors).toEqual([]);
+  });
+
+  it('three-axis: the lookup table is not offered, said', async () => {
     const { page, errors } = await site.open('?R=3&Rcr=1&machine=3axis&slope=30&h=0.05&unit=mm', DESKTOP);
     await expect.poll(() => text(page, 'result-programmed-step')).toBe(formatLenUnit(rasterStep(30), 'mm'));
-    await expect.poll(() => text(page, 'result-ra-rule')).toBe(THREE_AXIS_NOTE);
-    expect(await text(page, 'result-ra')).toBe(DASH);
     // The lookup table is not offered here: the status line says so, and what answers it instead.
     expect(await page.getByTestId('download-table').isEnabled()).toBe(false);
     expect(await text(page, 'download-table-status')).toBe(THREE_AXIS_TABLE_NOTE);
