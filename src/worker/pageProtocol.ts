@@ -186,7 +186,7 @@ export type ThreeAxisReply =
       readonly crossingDeg: number | null;
       /**
        * On a sloped plane, Rz, Ra, Rq of the one-way passes (the plane's at the equivalent lead and
-       * tilt, core slopedPlaneRoughness) beside the rule of thumb; null on a surface of revolution
+       * tilt, core roughness/slopedPlane.ts) beside the rule of thumb; null on a surface of revolution
        * (waterline passes there are not congruent: no period to measure over).
        */
       readonly roughness: RoughnessSummary | null;

@@ -11,11 +11,12 @@ import { describe, expect, it } from 'vitest';
 import { formatInputNumber } from '../../src/core/input/units';
 import { compareDoublyCurved } from '../../src/core/procedures/compareDoublyCurved';
 import { doublyCurvedHeightForRaMm, doublyCurvedRoughness } from '../../src/core/roughness/doublyCurved';
+import { slopedPlaneRoughness } from '../../src/core/roughness/slopedPlane';
 import { doublyCurvedForward, doublyCurvedRadiusLimit, doublyCurvedSolver } from '../../src/core/surfaces/doublyCurved';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
-import { slopedPlaneRoughness } from '../../src/core/threeAxis/slopedPlaneRoughness';
+import { slopePosture } from '../../src/core/threeAxis/slopePosture';
 import { waterlineForward } from '../../src/core/threeAxis/waterlineRevolution';
-import { formatLen, formatLenUnit, formatRoughness } from '../../src/ui/format';
+import { formatAngle, formatLen, formatLenUnit, formatRoughness } from '../../src/ui/format';
 import { questionLimitsOf } from '../../src/ui/questionLimits';
 import { REVOLUTION_NOTE } from '../../src/ui/roughness';
 import { sliderRanges } from '../../src/ui/sliders';
@@ -219,6 +220,81 @@ describe('roughness, a target Ra and the sliders at a doubly curved point; three
     expect(await text(page, 'result-ra')).toBe(DASH);
     expect(await text(page, 'result-rz')).toBe(DASH);
     expect(await text(page, 'result-programmed-step')).toMatch(/\d/);
+    expect(errors).toEqual([]);
+  });
+
+  it('three-axis views: the plane at the equivalent posture (profile, formulas, machined surface), the tab named for its chart, neutral notes only', async () => {
+    const { page, errors } = await site.open(
+      '?machine=3axis&R=3&Rcr=1&slope=30&rasterAngle=30&h=0.01&unit=mm',
+      DESKTOP,
+    );
+    const step = slopedPlaneForward(
+      { toolRadiusMm: 3, cornerRadiusMm: 1, slopeDeg: 30, passes: 'raster', rasterAngleDeg: 30 },
+      0.01,
+    );
+    if (!step.ok) throw new Error('core refused');
+    const posture = slopePosture(30, 30);
+    const lead = formatAngle(posture.leadDeg);
+    const tilt = formatAngle(posture.tiltDeg);
+    await expect
+      .poll(() => text(page, 'result-programmed-step'))
+      .toBe(formatLenUnit(step.value.horizontalStepMm, 'mm'));
+    const views = page.locator('.teaching');
+    await views.scrollIntoViewIfNeeded();
+    // The Profile (the default tab): the plane's cross-pass profile at the posture, its L the answer's L.
+    const profile = page.getByTestId('profile-view');
+    await expect.poll(() => profile.textContent()).toContain(`L = ${formatLenUnit(step.value.intervalMm, 'mm')}`);
+    expect(await profile.isVisible()).toBe(true);
+    const note = page.getByTestId('views-page-note');
+    expect(await note.textContent()).toBe(
+      `The upright tool over slope 30°, raster 30° is the tool at lead ${lead}, tilt ${tilt} on a plane, one-way: drawn in the plane's own frame (lengths along it, h along its normal).`,
+    );
+    expect(await page.getByTestId('views-stale').isVisible()).toBe(false);
+    // A neutral line, not an error's colours: the note's colour is the page's muted text, not --bad.
+    const colours = await note.evaluate((e) => {
+      const bad = getComputedStyle(document.documentElement).getPropertyValue('--bad').trim();
+      const probe = document.createElement('span');
+      probe.style.color = bad;
+      document.body.append(probe);
+      const badRgb = getComputedStyle(probe).color;
+      probe.remove();
+      return { note: getComputedStyle(e).color, bad: badRgb, border: getComputedStyle(e).borderTopStyle };
+    });
+    expect(colours.note).not.toBe(colours.bad);
+    expect(colours.border).toBe('none');
+    await keepShot(views, 'three-axis-profile-desktop');
+    // The chart's tab is named for what it draws.
+    const chartTab = page.locator('#tab-chart');
+    expect(await chartTab.textContent()).toBe('Step against slope');
+    // Formulas: the posture from slope and raster angle first, then the plane's.
+    await page.locator('#tab-formulas').click();
+    const posed = page.getByTestId('formulas-posture');
+    await expect.poll(() => posed.textContent()).toContain(`rho = ${lead}`);
+    expect(await posed.textContent()).toContain(`beta = ${tilt}`);
+    expect(await posed.textContent()).toContain(`Lxy / L = ${posture.horizontalStepPerInterval.toFixed(6)}`);
+    expect(await page.locator('[data-testid="formulas"] section.formula[data-procedure="exact"]').count()).toBe(1);
+    await keepShot(views, 'three-axis-formulas-desktop');
+    // Machined surface: the plane at the posture simulated, its cusp against the exact one.
+    await page.locator('#tab-surface').click();
+    await expect
+      .poll(() => text(page, 'surface-comparison'), { timeout: 30_000 })
+      .toMatch(/^Simulated cusp [\d.]+ µm against exact 10\.000 µm/);
+    await keepShot(views, 'three-axis-surface-desktop');
+    // Waterline on a dome: the chart draws it; the profile says neutrally why it draws nothing.
+    await radio(page, 'passes-switch', 'waterline').check();
+    await page.getByTestId('surface-preset').selectOption('dome');
+    await page.locator('#tab-profile').click();
+    await expect
+      .poll(() => note.textContent())
+      .toMatch(/^Waterline passes on a surface of revolution \(slope 30°, waterline\)/);
+    expect(await profile.isVisible()).toBe(false);
+    expect(await page.getByTestId('views-stale').isVisible()).toBe(false);
+    expect(await chartTab.textContent()).toBe('Step against slope');
+    await keepShot(views, 'three-axis-revolution-profile-desktop');
+    // Back to five-axis: the chart's own name again, no note.
+    await radio(page, 'machine-switch', '5axis').check();
+    await expect.poll(() => chartTab.textContent()).toBe('L against lead and tilt');
+    expect(await note.isVisible()).toBe(false);
     expect(errors).toEqual([]);
   });
 

@@ -9,7 +9,6 @@ export * from './meridianPasses';
 export * from './meridianTool';
 export * from './revolutionGouging';
 export * from './slopedPlane';
-export * from './slopedPlaneRoughness';
 export * from './slopePosture';
 export * from './slopeSweep';
 export * from './solve';

@@ -6,7 +6,7 @@
  * error reply, never an exception.
  */
 import { roughnessSummary } from '../../core/roughness/raTarget';
-import { slopedPlaneRoughness } from '../../core/threeAxis/slopedPlaneRoughness';
+import { slopedPlaneRoughness } from '../../core/roughness/slopedPlane';
 import { rasterWaterlineCrossingDeg, slopeSweep } from '../../core/threeAxis/slopeSweep';
 import { solveThreeAxis } from '../../core/threeAxis/solve';
 import {

@@ -1,14 +1,14 @@
 /**
  * Roughness of a sloped plane machined three-axis (raster at any raster angle, waterline = raster
- * angle 90): the upright tool is the tool at the slope's lead and tilt on a plane (slopePosture.ts),
+ * angle 90): the upright tool is the tool at the slope's lead and tilt on a plane (threeAxis/slopePosture.ts),
  * and its passes are congruent (one-way: the same upright tool whichever way it feeds), so Rz, Ra
- * and Rq are the plane's at that posture (roughness/roughness.ts), heights along the plane's normal,
+ * and Rq are the plane's at that posture (roughness.ts), heights along the plane's normal,
  * measured along the plane across the passes. Lengths mm, angles degrees.
  */
-import { type Roughness, roughnessOfSegments } from '../roughness/roughness';
+import { effectiveRasterAngleDeg, type SlopedPlaneCase } from '../threeAxis/slopedPlane';
+import { slopePosture } from '../threeAxis/slopePosture';
 import { flankWidthMm, postureShape } from '../tool/posture';
-import { effectiveRasterAngleDeg, type SlopedPlaneCase } from './slopedPlane';
-import { slopePosture } from './slopePosture';
+import { type Roughness, roughnessOfSegments } from './roughness';
 
 /**
  * Rz, Ra, Rq (mm) of the surface one-way passes leave on the sloped plane with cusps `cuspHeightMm`
