@@ -317,7 +317,7 @@ export class CalculatorApp {
     this.fields.render(state, kept);
     this.teaching?.want(null, state.unit, true);
     this.simulation.want(null, state.unit);
-    this.lookup.want(null, state.unit, state.machine === '3axis');
+    this.lookup.want(null, state.unit);
     this.sheet.want(null, state.unit);
     this.draw();
   }
@@ -362,12 +362,8 @@ export class CalculatorApp {
           : null;
     this.teaching?.want(request, state.unit, false, this.kind() === 'classic' ? null : ELSEWHERE);
     this.simulation.want(classic, state.unit);
-    // The lookup table: a plane's, a cylinder's or a doubly curved point's (not three-axis).
-    this.lookup.want(
-      request !== null && request.mode !== 'three-axis' ? request : null,
-      state.unit,
-      this.state.machine === '3axis',
-    );
+    // The lookup table: a plane's, a cylinder's, a doubly curved point's or three-axis machining's.
+    this.lookup.want(request, state.unit);
     // The shop sheet: any valid question (its tool, posture, pattern and surface; three-axis by slope).
     this.sheet.want(request, state.unit);
   }

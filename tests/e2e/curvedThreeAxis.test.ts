@@ -8,6 +8,7 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
+import { parseCsv } from '../../src/cli/csv';
 import { formatInputNumber } from '../../src/core/input/units';
 import { compareDoublyCurved } from '../../src/core/procedures/compareDoublyCurved';
 import { doublyCurvedHeightForRaMm, doublyCurvedRoughness } from '../../src/core/roughness/doublyCurved';
@@ -21,7 +22,7 @@ import { questionLimitsOf } from '../../src/ui/questionLimits';
 import { REVOLUTION_NOTE } from '../../src/ui/roughness';
 import { sliderRanges } from '../../src/ui/sliders';
 import { parseUrl } from '../../src/ui/state';
-import { THREE_AXIS_TABLE_NOTE } from '../../src/ui/threeAxisNotes';
+import { run } from '../cli/helpers';
 import { keepShot, pageSettled, ROOT, urlWrites, useSite } from './harness';
 
 const site = useSite('docs/curved-three-axis');
@@ -54,6 +55,17 @@ function rasterStep(slopeDeg: number, h = 0.05): number {
 /** No horizontal scrolling: the page fits its viewport's width. */
 async function fitsWidth(page: Page): Promise<boolean> {
   return page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth);
+}
+
+/** The issue's three-axis job (raster at 30 degrees over a 30 degree slope, h 0.01 mm) opened, and the core's answer. */
+async function openRaster30() {
+  const { page, errors } = await site.open('?machine=3axis&R=3&Rcr=1&slope=30&rasterAngle=30&h=0.01&unit=mm', DESKTOP);
+  const step = slopedPlaneForward(
+    { toolRadiusMm: 3, cornerRadiusMm: 1, slopeDeg: 30, passes: 'raster', rasterAngleDeg: 30 },
+    0.01,
+  );
+  if (!step.ok) throw new Error('core refused');
+  return { page, errors, step };
 }
 
 describe.each([
@@ -133,7 +145,6 @@ describe.each([
     // Nor are the five-axis ones (flank widths, the surface kind) in three-axis machining.
     expect(await page.getByTestId('result-width-right').isVisible()).toBe(false);
     expect(await page.getByTestId('surface-kind').isVisible()).toBe(false);
-    expect(await page.getByTestId('download-table').isEnabled()).toBe(false);
     await expect.poll(() => new URL(page.url()).searchParams.get('slope')).toBe('30');
     expect(new URL(page.url()).searchParams.get('machine')).toBe('3axis');
     expect(new URL(page.url()).searchParams.has('rho')).toBe(false);
@@ -224,15 +235,7 @@ describe('roughness, a target Ra and the sliders at a doubly curved point; three
   });
 
   it('three-axis views: the plane at the equivalent posture (profile, formulas, machined surface), the tab named for its chart, neutral notes only', async () => {
-    const { page, errors } = await site.open(
-      '?machine=3axis&R=3&Rcr=1&slope=30&rasterAngle=30&h=0.01&unit=mm',
-      DESKTOP,
-    );
-    const step = slopedPlaneForward(
-      { toolRadiusMm: 3, cornerRadiusMm: 1, slopeDeg: 30, passes: 'raster', rasterAngleDeg: 30 },
-      0.01,
-    );
-    if (!step.ok) throw new Error('core refused');
+    const { page, errors, step } = await openRaster30();
     const posture = slopePosture(30, 30);
     const lead = formatAngle(posture.leadDeg);
     const tilt = formatAngle(posture.tiltDeg);
@@ -298,15 +301,50 @@ describe('roughness, a target Ra and the sliders at a doubly curved point; three
     expect(errors).toEqual([]);
   });
 
-  it('three-axis: the lookup table is not offered, said', async () => {
-    const { page, errors } = await site.open('?R=3&Rcr=1&machine=3axis&slope=30&h=0.05&unit=mm', DESKTOP);
-    await expect.poll(() => text(page, 'result-programmed-step')).toBe(formatLenUnit(rasterStep(30), 'mm'));
-    // The lookup table is not offered here: the status line says so, and what answers it instead.
-    expect(await page.getByTestId('download-table').isEnabled()).toBe(false);
-    expect(await text(page, 'download-table-status')).toBe(THREE_AXIS_TABLE_NOTE);
-    await radio(page, 'machine-switch', '5axis').check();
-    await expect.poll(() => page.getByTestId('download-table').isEnabled()).toBe(true);
-    expect(await text(page, 'download-table-status')).toBe('');
+  it('three-axis: the lookup table (slope x h, the programmed step) downloads and reads back through --batch', async () => {
+    const { page, errors, step: core } = await openRaster30();
+    await expect
+      .poll(() => text(page, 'result-programmed-step'))
+      .toBe(formatLenUnit(core.value.horizontalStepMm, 'mm'));
+    const button = page.getByTestId('download-table');
+    await expect.poll(() => button.isEnabled()).toBe(true);
+    const downloaded = page.waitForEvent('download');
+    await button.click();
+    const name = 'step-over-table_3-axis_R3_Rcr1_raster30_plane_mm.csv';
+    await expect
+      .poll(() => text(page, 'download-table-status'), { timeout: 15_000 })
+      .toMatch(
+        new RegExp(
+          `^Saved ${name.replaceAll('.', '\\.')}: \\d+ rows, h [\\d.]+ to [\\d.]+ mm x slope 0 to 85 deg, the programmed step \\(Lxy\\)`,
+        ),
+      );
+    const download = await downloaded;
+    expect(download.suggestedFilename()).toBe(name);
+    const csv = readFileSync(await download.path(), 'utf8');
+    const [head, ...rows] = parseCsv(csv).filter((r) => !r.blank);
+    const col = (c: string) => head?.fields.indexOf(c) ?? -1;
+    // The question on screen is a row of the table: its Lxy is the answer's.
+    const at = rows.find((r) => r.fields[col('slope_deg')] === '30' && r.fields[col('h_mm')] === '0.01');
+    const lxy = Number(at?.fields[col('horizontalStep_mm')]);
+    expect(Math.abs(lxy - core.value.horizontalStepMm)).toBeLessThanOrEqual(1e-12 * lxy);
+    // Read back by the command line (in process): the same rows, the same numbers (to the last
+    // digits: the browser's sine may round apart from Node's by an ulp).
+    const back = await run(['--batch'], csv);
+    expect(back.code).toBe(0);
+    const again = parseCsv(back.stdout)
+      .filter((r) => !r.blank)
+      .slice(1);
+    expect(again.length).toBe(rows.length);
+    rows.forEach((r, k) => {
+      r.fields.forEach((field, c) => {
+        const other = again[k]?.fields[c] ?? '';
+        if (field === '' || Number.isNaN(Number(field))) expect(other, `${k} ${c}`).toBe(field);
+        else
+          expect(Math.abs(Number(other) - Number(field)), `${k} ${c}`).toBeLessThanOrEqual(
+            1e-13 * Math.abs(Number(field)),
+          );
+      });
+    });
     expect(errors).toEqual([]);
   });
 });

@@ -30,7 +30,8 @@ describe('roughness at a doubly curved point, on the page', () => {
       const built = buildRequest(parseUrl(`${URL}&h=0.02&pattern=${pattern}`).state);
       if (!built.ok) throw new Error('valid');
       const reply = solvePage(built.request);
-      if (!reply.ok || !('roughness' in reply) || reply.roughness === null || !('comparison' in reply)) throw new Error('answered');
+      if (!reply.ok || !('roughness' in reply) || reply.roughness === null || !('comparison' in reply))
+        throw new Error('answered');
       const c = compareDoublyCurved({ ...TOOL, ...RADII, pattern, scallopHeightMm: 0.02 });
       const r = doublyCurvedRoughness(doublyCurvedSolver(TOOL, RADII), pattern, c.exact);
       expect(reply.roughness).toMatchObject({ rzMm: r.rzMm, raMm: r.raMm, rqMm: r.rqMm, scallopHeightMm: 0.02 });
@@ -57,7 +58,8 @@ describe('roughness at a doubly curved point, on the page', () => {
     if (!built.ok || built.request.mode !== 'curved-ra') throw new Error('valid');
     expect(built.request.input.targetRaMm).toBe(0.004);
     const reply = solvePage(built.request);
-    if (!reply.ok || !('roughness' in reply) || reply.roughness === null || !('comparison' in reply)) throw new Error('answered');
+    if (!reply.ok || !('roughness' in reply) || reply.roughness === null || !('comparison' in reply))
+      throw new Error('answered');
     const h = doublyCurvedHeightForRaMm(TOOL, 'one-way', RADII, 0.004);
     expect(reply.roughness.scallopHeightMm).toBe(h);
     expect(reply.exact.cuspHeightMm).toBe(h);
