@@ -86,7 +86,14 @@ describe('three-axis lookup table read back by --batch', () => {
     const mine = rowsOf(reply.csv);
     const theirs = rowsOf(back.stdout);
     expect(theirs.length).toBe(mine.length);
+    expect(
+      mine.filter((r) =>
+        /must be below [\d.]+ in at this slope and raster angle \(got [\d.]+\)/.test(r.get('error') ?? ''),
+      ).length,
+    ).toBeGreaterThan(0);
     mine.forEach((row, i) => {
+      // The reasons too, worded in inches as the batch words them.
+      expect(theirs[i]?.get('error'), `${i} error`).toBe(row.get('error'));
       for (const column of ['h', 'slope', 'interval', 'horizontalStep', 'lead', 'tilt']) {
         const a = row.get(column) ?? '';
         const b = theirs[i]?.get(column) ?? '';

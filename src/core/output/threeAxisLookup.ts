@@ -6,11 +6,12 @@
  * crossRadius on a surface of revolution), then interval (L along the surface), horizontalStep,
  * stepDown, lead, tilt, note, error. Fed back to `--batch`, each row is answered again with the same
  * numbers. A cell outside the valid domain keeps its inputs, leaves the results empty and gives the
- * core's reason in `error`. Pure; mm and degrees (lookupUnits.ts converts the file).
+ * reason in `error`, worded in the file's unit as the batch words it. Pure; mm and degrees (lookupUnits.ts converts the file).
  */
 import { csvColumnOf } from '../input/fields';
 import { fromMm, type LengthUnit, toMm } from '../input/units';
 import { scallopHeightLimits } from '../surfaces/validate';
+import { threeAxisMessageInUnit } from '../threeAxis/errors';
 import type { ThreeAxisPasses } from '../threeAxis/slopedPlane';
 import { slopePosture } from '../threeAxis/slopePosture';
 import { solveThreeAxis } from '../threeAxis/solve';
@@ -74,7 +75,11 @@ function inputColumns(c: ThreeAxisLookupCase): string[] {
 export const THREE_AXIS_LOOKUP_RESULTS = ['interval', 'horizontalStep', 'stepDown', 'lead', 'tilt', 'note', 'error'];
 
 /** The programmed step of each grid cell and the batch's other three-axis results (see the module comment). */
-export function threeAxisLookupTable(c: ThreeAxisLookupCase, grid: ThreeAxisLookupGrid): LookupTable {
+export function threeAxisLookupTable(
+  c: ThreeAxisLookupCase,
+  grid: ThreeAxisLookupGrid,
+  unit: LengthUnit = 'mm',
+): LookupTable {
   const lines = [[...inputColumns(c), ...THREE_AXIS_LOOKUP_RESULTS].join(',')];
   let empty = 0;
   const n = (v: number | null) => (v === null ? '' : csvNumber(v));
@@ -95,13 +100,11 @@ export function threeAxisLookupTable(c: ThreeAxisLookupCase, grid: ThreeAxisLook
       const r = v.ok ? solveThreeAxis(v.value) : v;
       if (!r.ok) {
         empty++;
-        const words = r.errors.map((e) => e.message).join(' ');
-        const reason =
-          c.passes === 'waterline'
-            ? words
-                .replace('at this slope and raster angle', 'at this slope')
-                .replace('the slope and the raster angle set', 'the slope sets')
-            : words;
+        // Worded as the batch words the row read back from the file in `unit` (the h as written there).
+        const typedH = csvNumber(Number(fromMm(h, unit).toPrecision(12)));
+        const reason = r.errors
+          .map((e) => threeAxisMessageInUnit(e, c.passes, unit, e.field === 'h' ? typedH : String(e.got)))
+          .join(' ');
         lines.push([...echo, '', '', '', '', '', '', csvText(reason)].join(','));
         continue;
       }

@@ -71,7 +71,7 @@ function threeAxisTable(request: TableRequest, spec: NonNullable<TableRequest['t
       return { ok: false, request, reason: `the grid's ${name} are out of range.` };
   }
   // Each cell is validated and solved as the batch does (its tool and strategy with it).
-  return inUnit(request, threeAxisLookupTable(spec.case, g));
+  return inUnit(request, threeAxisLookupTable(spec.case, g, request.unit));
 }
 
 /** The reply with the table in the request's unit (its columns named with units), if it asks one. */
