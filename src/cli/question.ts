@@ -22,7 +22,7 @@ import {
 } from '../core/index';
 import { cliFlag, FIELDS, PASS_FIELDS, type PassFieldName } from '../core/input/fields';
 import { type RawFields, rawFields } from '../core/input/raw';
-import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
+import type { LengthUnit } from '../core/input/units';
 import { isNumberText } from '../core/output/csvWrite';
 import { doublyCurvedHeightForRaMm } from '../core/roughness/doublyCurved';
 import { type DoublyCurvedProblem, validateDoublyCurved } from '../core/roughness/doublyCurvedValidate';
@@ -36,6 +36,7 @@ import {
   validateQuestion,
 } from '../core/surfaces/question';
 import { findSurfaceModel } from '../core/surfaces/registry';
+import { threeAxisMessageInUnit } from '../core/threeAxis/errors';
 import { solveThreeAxis } from '../core/threeAxis/solve';
 import {
   type ThreeAxisAnswer,
@@ -299,33 +300,19 @@ export function threeAxisMessage(
   const option = FIELDS[e.field].cli as ValueOption;
   const given = typed[option]?.trim();
   const got = given === undefined ? String(e.got) : given;
-  const words =
-    e.code === 'missing' || e.code === 'not-a-number'
-      ? describeInputError(
-          {
-            field: e.field as AnyInputError['field'],
-            code: e.code,
-            got,
-            message: '',
-          },
-          'mm',
-        )
-      : inUnit(e.message, unit, `(got ${String(e.got)})`, `(got ${got})`);
-  return passes === 'waterline'
-    ? words
-        .replace('at this slope and raster angle', 'at this slope')
-        .replace('the slope and the raster angle set', 'the slope sets')
-    : words;
-}
-
-/** A message in mm written in `unit`: the value given quoted as typed, and in inches each "N mm" converted. */
-function inUnit(message: string, unit: LengthUnit, gotMm: string, gotTyped: string): string {
-  const quoted = message.replace(gotMm, gotTyped);
-  if (unit === 'mm') return quoted;
-  return quoted.replace(
-    /(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?) mm\b/g,
-    (_, n: string) => `${formatInputNumber(fromMm(Number(n), unit))} ${unitSymbol(unit)}`,
-  );
+  if (e.code === 'missing' || e.code === 'not-a-number') {
+    const words = describeInputError(
+      {
+        field: e.field as AnyInputError['field'],
+        code: e.code,
+        got,
+        message: '',
+      },
+      'mm',
+    );
+    return threeAxisMessageInUnit({ message: words, got: null }, passes, 'mm', got);
+  }
+  return threeAxisMessageInUnit(e, passes, unit, got);
 }
 
 /**

@@ -11,7 +11,8 @@ import type { PassPattern } from '../core/input/validate';
 import type { ProcedureKey } from '../core/procedures/procedures';
 import type { CameraPreset, ToolScene } from '../render/scene';
 import type { RestartInfo } from '../worker/client';
-import { isSolveRequest, type PageReply, type PageRequest } from '../worker/pageProtocol';
+import { equivalentPlaneRequest } from '../worker/equivalentPlane';
+import { isSolveRequest, type PageReply, type PageRequest, type ThreeAxisReply } from '../worker/pageProtocol';
 import type { SolveMode } from '../worker/protocol';
 import { solveClient } from '../worker/workers';
 import { browserStorage } from './browserStorage';
@@ -108,8 +109,9 @@ export class CalculatorApp {
       this.notice.clear('results');
       if (!this.fresh.receive(reply)) return;
       // A refusal only the worker finds (a doubly curved point's gouging, a three-axis limit): its
-      // messages go on the fields and the parts beyond the results let the question go.
-      if (!reply.ok) this.follow();
+      // messages go on the fields and the parts beyond the results let the question go. A
+      // three-axis answer on a sloped plane gives the simulation its plane question (follow).
+      if (!reply.ok || reply.request.mode === 'three-axis') this.follow();
       this.draw();
     },
     onRestart: (info) => this.restarted('results', info),
@@ -315,7 +317,7 @@ export class CalculatorApp {
     this.fields.render(state, kept);
     this.teaching?.want(null, state.unit, true);
     this.simulation.want(null, state.unit);
-    this.lookup.want(null, state.unit, state.machine === '3axis');
+    this.lookup.want(null, state.unit);
     this.sheet.want(null, state.unit);
     this.draw();
   }
@@ -351,15 +353,17 @@ export class CalculatorApp {
     this.shelf.render(state.unit);
     // The simulation and the table answer a plane's or a cylinder's question (five-axis); the views
     // draw any (those that do not draw a doubly curved or three-axis question say so).
-    const classic = request !== null && isSolveRequest(request) ? request : null;
+    // A sloped plane machined three-axis is simulated as the plane at its equivalent posture.
+    const classic =
+      request !== null && isSolveRequest(request)
+        ? request
+        : reply?.ok && reply.request.mode === 'three-axis'
+          ? equivalentPlaneRequest(reply as ThreeAxisReply)
+          : null;
     this.teaching?.want(request, state.unit, false, this.kind() === 'classic' ? null : ELSEWHERE);
     this.simulation.want(classic, state.unit);
-    // The lookup table: a plane's, a cylinder's or a doubly curved point's (not three-axis).
-    this.lookup.want(
-      request !== null && request.mode !== 'three-axis' ? request : null,
-      state.unit,
-      this.state.machine === '3axis',
-    );
+    // The lookup table: a plane's, a cylinder's, a doubly curved point's or three-axis machining's.
+    this.lookup.want(request, state.unit);
     // The shop sheet: any valid question (its tool, posture, pattern and surface; three-axis by slope).
     this.sheet.want(request, state.unit);
   }

@@ -1,6 +1,7 @@
 /**
  * The roughness results: Rz, Ra, Rq of the surface left at the exact step-over (from the solve
- * reply: a plane's, a cylinder's, or a doubly curved point's, heights along the normal there), the
+ * reply: a plane's, a cylinder's, a doubly curved point's, heights along the normal there, or a
+ * sloped plane's machined three-axis, the plane's at the equivalent lead and tilt), the
  * scallop height they come from when the target is Ra, and the rule of thumb
  * Ra ~ h/4 with its error. Drawn from the same Shown as the other results (dashes when invalid
  * or while no reply answers the inputs on screen; never a number for other inputs).
@@ -11,9 +12,12 @@ import { html } from './dom';
 import { formatLenUnit, formatRoughness } from './format';
 import type { Shown } from './freshness';
 
-/** Why the rows show dashes for three-axis machining. */
-export const THREE_AXIS_NOTE =
-  'Rz, Ra and Rq are not computed for three-axis machining: the scallop height h is the answer there.';
+/**
+ * Why the rows show dashes for waterline passes on a surface of revolution (on a sloped plane the
+ * rows are the plane's roughness at the equivalent lead and tilt).
+ */
+export const REVOLUTION_NOTE =
+  'Rz, Ra and Rq are not given here: waterline passes on a surface of revolution change their spacing from level to level, so the profile has no period to measure them over; the scallop height h is the answer.';
 
 /** The roughness rows under the results (see the module comment). */
 export class RoughnessPanel {
@@ -52,7 +56,7 @@ export class RoughnessPanel {
 
   render(shown: Shown<PageReply>, unit: LengthUnit): void {
     // Only a reply to the inputs on screen: a stale one would show numbers for other inputs.
-    // Three-axis machining's roughness is not computed: dashes (the panel's note says so).
+    // Waterline on a surface of revolution has none: dashes, and the note says why.
     const reply = shown.kind === 'current' && shown.reply.ok && 'roughness' in shown.reply ? shown.reply : null;
     const r = reply?.roughness ?? null;
     // Roughness in µm (mm) or µin (inch), as the Machined surface view gives it (format.ts).
@@ -65,9 +69,9 @@ export class RoughnessPanel {
     const fromRa = reply?.request.mode === 'ra' || reply?.request.mode === 'curved-ra';
     this.heightRow.hidden = !fromRa;
     this.set('result-ra-height', fromRa ? len(r?.scallopHeightMm) : NO_VALUE);
-    const threeAxis = shown.kind === 'current' && shown.reply.request.mode === 'three-axis';
-    const text = threeAxis
-      ? THREE_AXIS_NOTE
+    const revolution = reply !== null && reply.request.mode === 'three-axis' && r === null;
+    const text = revolution
+      ? REVOLUTION_NOTE
       : r === null || r.ruleErrorPercent === null
         ? ''
         : `Rule of thumb Ra ~ h/4 = ${formatRoughness(r.ruleOfThumbRaMm, unit)}: ${formatPercent(r.ruleErrorPercent)} % against the exact Ra.`;

@@ -184,6 +184,12 @@ export type ThreeAxisReply =
        * null where they do not cross or without a scallop.
        */
       readonly crossingDeg: number | null;
+      /**
+       * On a sloped plane, Rz, Ra, Rq of the one-way passes (the plane's at the equivalent lead and
+       * tilt, core roughness/slopedPlane.ts) beside the rule of thumb; null on a surface of revolution
+       * (waterline passes there are not congruent: no period to measure over).
+       */
+      readonly roughness: RoughnessSummary | null;
       /** What the 3D scene draws (worker/data/curvedScene.ts); null where nothing is (no scallop). */
       readonly scene: SceneGeometry | null;
       readonly solveMs: number;

@@ -13,6 +13,7 @@ import type { ForwardInput, InputError, InverseInput, PassPattern } from '../cor
 import type { Vec3 } from '../core/math/vec';
 import type { LookupGrid, LookupTable, LookupTool } from '../core/output/lookupTable';
 import type { DrawnSurface } from '../core/output/surfaceGeometry';
+import type { ThreeAxisLookupCase } from '../core/output/threeAxisLookup';
 import type { ApproximationKey, CurvatureRowKey, ForwardModels, ProcedureKey } from '../core/procedures/procedures';
 import type { SweepGap } from '../core/procedures/sweepGaps';
 import type { PaperTableRow } from '../core/procedures/teaching';
@@ -338,6 +339,12 @@ export interface TableRequest {
    * line writes it (mm and degrees, plain column names).
    */
   readonly unit?: LengthUnit;
+  /**
+   * Three-axis machining (issue 28): the table is the programmed step over slopes x the grid's
+   * scallop heights (core/output/threeAxisLookup.ts) for this tool and strategy; the tool's pattern
+   * and surface and the grid's leads and tilts are then placeholders (one-way, a plane, none).
+   */
+  readonly threeAxis?: { readonly case: ThreeAxisLookupCase; readonly slopesDeg: readonly number[] };
 }
 
 /** The answer to `table`, echoing its request: the CSV and its counts, or why there is none. */
@@ -355,6 +362,7 @@ export function sameTableRequest(a: TableRequest | null, b: TableRequest | null)
     a.radii?.feedRadiusMm === b.radii?.feedRadiusMm &&
     a.radii?.crossRadiusMm === b.radii?.crossRadiusMm &&
     a.unit === b.unit &&
+    JSON.stringify(a.threeAxis ?? null) === JSON.stringify(b.threeAxis ?? null) &&
     same(a.grid.scallopHeightsMm, b.grid.scallopHeightsMm) &&
     same(a.grid.leadAnglesDeg, b.grid.leadAnglesDeg) &&
     same(a.grid.tiltAnglesDeg, b.grid.tiltAnglesDeg)

@@ -57,7 +57,17 @@ export interface SlopeChartData {
 
 /** The three-axis teaching reply. */
 export type ThreeAxisTeachReply =
-  | { readonly ok: true; readonly request: ThreeAxisRequest; readonly slope: SlopeChartData }
+  | {
+      readonly ok: true;
+      readonly request: ThreeAxisRequest;
+      readonly slope: SlopeChartData;
+      /**
+       * On a sloped plane, the teaching data of the plane at the equivalent lead and tilt, one-way, at
+       * the answer's cusp (equivalentPlane.ts): what the profile, formulas and step-through draw; null
+       * on a surface of revolution or where that plane question is refused.
+       */
+      readonly plane: Extract<TeachReply, { ok: true }> | null;
+    }
   | {
       readonly ok: false;
       readonly request: ThreeAxisRequest;

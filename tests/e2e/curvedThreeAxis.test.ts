@@ -8,18 +8,21 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
+import { parseCsv } from '../../src/cli/csv';
 import { formatInputNumber } from '../../src/core/input/units';
 import { compareDoublyCurved } from '../../src/core/procedures/compareDoublyCurved';
 import { doublyCurvedHeightForRaMm, doublyCurvedRoughness } from '../../src/core/roughness/doublyCurved';
+import { slopedPlaneRoughness } from '../../src/core/roughness/slopedPlane';
 import { doublyCurvedForward, doublyCurvedRadiusLimit, doublyCurvedSolver } from '../../src/core/surfaces/doublyCurved';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
+import { slopePosture } from '../../src/core/threeAxis/slopePosture';
 import { waterlineForward } from '../../src/core/threeAxis/waterlineRevolution';
-import { formatLen, formatLenUnit, formatRoughness } from '../../src/ui/format';
+import { formatAngle, formatLen, formatLenUnit, formatRoughness } from '../../src/ui/format';
 import { questionLimitsOf } from '../../src/ui/questionLimits';
-import { THREE_AXIS_NOTE } from '../../src/ui/roughness';
+import { REVOLUTION_NOTE } from '../../src/ui/roughness';
 import { sliderRanges } from '../../src/ui/sliders';
 import { parseUrl } from '../../src/ui/state';
-import { THREE_AXIS_TABLE_NOTE } from '../../src/ui/threeAxisNotes';
+import { run } from '../cli/helpers';
 import { keepShot, pageSettled, ROOT, urlWrites, useSite } from './harness';
 
 const site = useSite('docs/curved-three-axis');
@@ -52,6 +55,17 @@ function rasterStep(slopeDeg: number, h = 0.05): number {
 /** No horizontal scrolling: the page fits its viewport's width. */
 async function fitsWidth(page: Page): Promise<boolean> {
   return page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth);
+}
+
+/** The issue's three-axis job (raster at 30 degrees over a 30 degree slope, h 0.01 mm) opened, and the core's answer. */
+async function openRaster30() {
+  const { page, errors } = await site.open('?machine=3axis&R=3&Rcr=1&slope=30&rasterAngle=30&h=0.01&unit=mm', DESKTOP);
+  const step = slopedPlaneForward(
+    { toolRadiusMm: 3, cornerRadiusMm: 1, slopeDeg: 30, passes: 'raster', rasterAngleDeg: 30 },
+    0.01,
+  );
+  if (!step.ok) throw new Error('core refused');
+  return { page, errors, step };
 }
 
 describe.each([
@@ -131,7 +145,6 @@ describe.each([
     // Nor are the five-axis ones (flank widths, the surface kind) in three-axis machining.
     expect(await page.getByTestId('result-width-right').isVisible()).toBe(false);
     expect(await page.getByTestId('surface-kind').isVisible()).toBe(false);
-    expect(await page.getByTestId('download-table').isEnabled()).toBe(false);
     await expect.poll(() => new URL(page.url()).searchParams.get('slope')).toBe('30');
     expect(new URL(page.url()).searchParams.get('machine')).toBe('3axis');
     expect(new URL(page.url()).searchParams.has('rho')).toBe(false);
@@ -161,7 +174,7 @@ describe.each([
   });
 });
 
-describe('roughness, a target Ra and the sliders at a doubly curved point; three-axis roughness', () => {
+describe('roughness, a target Ra and the sliders at a doubly curved point; three-axis roughness and table', () => {
   it('a saddle: Rz, Ra, Rq of the core; a target Ra typed answers the core h and L; the h slider stops at this point', async () => {
     const { page, errors } = await site.open('?R=3&Rcr=1&rho=5&h=0.05&feedRadius=80&crossRadius=-40&unit=mm', DESKTOP);
     const radii = { feedRadiusMm: 80, crossRadiusMm: -40 };
@@ -192,17 +205,146 @@ describe('roughness, a target Ra and the sliders at a doubly curved point; three
     expect(errors).toEqual([]);
   });
 
-  it('three-axis: the roughness rows are dashes and say why; the lookup table is not offered, said', async () => {
-    const { page, errors } = await site.open('?R=3&Rcr=1&machine=3axis&slope=30&h=0.05&unit=mm', DESKTOP);
-    await expect.poll(() => text(page, 'result-programmed-step')).toBe(formatLenUnit(rasterStep(30), 'mm'));
-    await expect.poll(() => text(page, 'result-ra-rule')).toBe(THREE_AXIS_NOTE);
+  it('three-axis: Rz, Ra, Rq on the sloped plane are the plane roughness at its posture; a surface of revolution says why none', async () => {
+    const { page, errors } = await site.open(
+      '?machine=3axis&R=3&Rcr=1&slope=30&rasterAngle=30&h=0.01&unit=mm',
+      DESKTOP,
+    );
+    const rough = (passes: 'raster' | 'waterline') =>
+      slopedPlaneRoughness({ toolRadiusMm: 3, cornerRadiusMm: 1, slopeDeg: 30, passes, rasterAngleDeg: 30 }, 0.01);
+    const raster = rough('raster');
+    await expect.poll(() => text(page, 'result-ra')).toBe(formatRoughness(raster.raMm, 'mm'));
+    expect(await text(page, 'result-rz')).toBe(formatRoughness(raster.rzMm, 'mm'));
+    expect(await text(page, 'result-rq')).toBe(formatRoughness(raster.rqMm, 'mm'));
+    expect(await text(page, 'result-ra-rule')).toMatch(
+      /^Rule of thumb Ra ~ h\/4 = 2\.500 µm: -?[\d.]+ % against the exact Ra\.$/,
+    );
+    // Waterline on the plane: the posture of raster angle 90, its own roughness.
+    await radio(page, 'passes-switch', 'waterline').check();
+    const waterline = rough('waterline');
+    expect(waterline.raMm).not.toBeCloseTo(raster.raMm, 7);
+    await expect.poll(() => text(page, 'result-ra')).toBe(formatRoughness(waterline.raMm, 'mm'));
+    expect(await text(page, 'result-rz')).toBe(formatRoughness(waterline.rzMm, 'mm'));
+    // A surface of revolution: dashes, and the one line that says why.
+    await page.getByTestId('surface-preset').selectOption('dome');
+    await expect.poll(() => text(page, 'result-ra-rule')).toBe(REVOLUTION_NOTE);
     expect(await text(page, 'result-ra')).toBe(DASH);
-    // The lookup table is not offered here: the status line says so, and what answers it instead.
-    expect(await page.getByTestId('download-table').isEnabled()).toBe(false);
-    expect(await text(page, 'download-table-status')).toBe(THREE_AXIS_TABLE_NOTE);
+    expect(await text(page, 'result-rz')).toBe(DASH);
+    expect(await text(page, 'result-programmed-step')).toMatch(/\d/);
+    expect(errors).toEqual([]);
+  });
+
+  it('three-axis views: the plane at the equivalent posture (profile, formulas, machined surface), the tab named for its chart, neutral notes only', async () => {
+    const { page, errors, step } = await openRaster30();
+    const posture = slopePosture(30, 30);
+    const lead = formatAngle(posture.leadDeg);
+    const tilt = formatAngle(posture.tiltDeg);
+    await expect
+      .poll(() => text(page, 'result-programmed-step'))
+      .toBe(formatLenUnit(step.value.horizontalStepMm, 'mm'));
+    const views = page.locator('.teaching');
+    await views.scrollIntoViewIfNeeded();
+    // The Profile (the default tab): the plane's cross-pass profile at the posture, its L the answer's L.
+    const profile = page.getByTestId('profile-view');
+    await expect.poll(() => profile.textContent()).toContain(`L = ${formatLenUnit(step.value.intervalMm, 'mm')}`);
+    expect(await profile.isVisible()).toBe(true);
+    const note = page.getByTestId('views-page-note');
+    expect(await note.textContent()).toBe(
+      `The upright tool over slope 30°, raster 30° is the tool at lead ${lead}, tilt ${tilt} on a plane, one-way: drawn in the plane's own frame (lengths along it, h along its normal).`,
+    );
+    expect(await page.getByTestId('views-stale').isVisible()).toBe(false);
+    // A neutral line, not an error's colours: the note's colour is the page's muted text, not --bad.
+    const colours = await note.evaluate((e) => {
+      const bad = getComputedStyle(document.documentElement).getPropertyValue('--bad').trim();
+      const probe = document.createElement('span');
+      probe.style.color = bad;
+      document.body.append(probe);
+      const badRgb = getComputedStyle(probe).color;
+      probe.remove();
+      return { note: getComputedStyle(e).color, bad: badRgb, border: getComputedStyle(e).borderTopStyle };
+    });
+    expect(colours.note).not.toBe(colours.bad);
+    expect(colours.border).toBe('none');
+    await keepShot(views, 'three-axis-profile-desktop');
+    // The chart's tab is named for what it draws.
+    const chartTab = page.locator('#tab-chart');
+    expect(await chartTab.textContent()).toBe('Step against slope');
+    // Formulas: the posture from slope and raster angle first, then the plane's.
+    await page.locator('#tab-formulas').click();
+    const posed = page.getByTestId('formulas-posture');
+    await expect.poll(() => posed.textContent()).toContain(`rho = ${lead}`);
+    expect(await posed.textContent()).toContain(`beta = ${tilt}`);
+    expect(await posed.textContent()).toContain(`Lxy / L = ${posture.horizontalStepPerInterval.toFixed(6)}`);
+    expect(await page.locator('[data-testid="formulas"] section.formula[data-procedure="exact"]').count()).toBe(1);
+    await keepShot(views, 'three-axis-formulas-desktop');
+    // Machined surface: the plane at the posture simulated, its cusp against the exact one.
+    await page.locator('#tab-surface').click();
+    await expect
+      .poll(() => text(page, 'surface-comparison'), { timeout: 30_000 })
+      .toMatch(/^Simulated cusp [\d.]+ µm against exact 10\.000 µm/);
+    await keepShot(views, 'three-axis-surface-desktop');
+    // Waterline on a dome: the chart draws it; the profile says neutrally why it draws nothing.
+    await radio(page, 'passes-switch', 'waterline').check();
+    await page.getByTestId('surface-preset').selectOption('dome');
+    await page.locator('#tab-profile').click();
+    await expect
+      .poll(() => note.textContent())
+      .toMatch(/^Waterline passes on a surface of revolution \(slope 30°, waterline\)/);
+    expect(await profile.isVisible()).toBe(false);
+    expect(await page.getByTestId('views-stale').isVisible()).toBe(false);
+    expect(await chartTab.textContent()).toBe('Step against slope');
+    await keepShot(views, 'three-axis-revolution-profile-desktop');
+    // Back to five-axis: the chart's own name again, no note.
     await radio(page, 'machine-switch', '5axis').check();
-    await expect.poll(() => page.getByTestId('download-table').isEnabled()).toBe(true);
-    expect(await text(page, 'download-table-status')).toBe('');
+    await expect.poll(() => chartTab.textContent()).toBe('L against lead and tilt');
+    expect(await note.isVisible()).toBe(false);
+    expect(errors).toEqual([]);
+  });
+
+  it('three-axis: the lookup table (slope x h, the programmed step) downloads and reads back through --batch', async () => {
+    const { page, errors, step: core } = await openRaster30();
+    await expect
+      .poll(() => text(page, 'result-programmed-step'))
+      .toBe(formatLenUnit(core.value.horizontalStepMm, 'mm'));
+    const button = page.getByTestId('download-table');
+    await expect.poll(() => button.isEnabled()).toBe(true);
+    const downloaded = page.waitForEvent('download');
+    await button.click();
+    const name = 'step-over-table_3-axis_R3_Rcr1_raster30_plane_mm.csv';
+    await expect
+      .poll(() => text(page, 'download-table-status'), { timeout: 15_000 })
+      .toMatch(
+        new RegExp(
+          `^Saved ${name.replaceAll('.', '\\.')}: \\d+ rows, h [\\d.]+ to [\\d.]+ mm x slope 0 to 85 deg, the programmed step \\(Lxy\\)`,
+        ),
+      );
+    const download = await downloaded;
+    expect(download.suggestedFilename()).toBe(name);
+    const csv = readFileSync(await download.path(), 'utf8');
+    const [head, ...rows] = parseCsv(csv).filter((r) => !r.blank);
+    const col = (c: string) => head?.fields.indexOf(c) ?? -1;
+    // The question on screen is a row of the table: its Lxy is the answer's.
+    const at = rows.find((r) => r.fields[col('slope_deg')] === '30' && r.fields[col('h_mm')] === '0.01');
+    const lxy = Number(at?.fields[col('horizontalStep_mm')]);
+    expect(Math.abs(lxy - core.value.horizontalStepMm)).toBeLessThanOrEqual(1e-12 * lxy);
+    // Read back by the command line (in process): the same rows, the same numbers (to the last
+    // digits: the browser's sine may round apart from Node's by an ulp).
+    const back = await run(['--batch'], csv);
+    expect(back.code).toBe(0);
+    const again = parseCsv(back.stdout)
+      .filter((r) => !r.blank)
+      .slice(1);
+    expect(again.length).toBe(rows.length);
+    rows.forEach((r, k) => {
+      r.fields.forEach((field, c) => {
+        const other = again[k]?.fields[c] ?? '';
+        if (field === '' || Number.isNaN(Number(field))) expect(other, `${k} ${c}`).toBe(field);
+        else
+          expect(Math.abs(Number(other) - Number(field)), `${k} ${c}`).toBeLessThanOrEqual(
+            1e-13 * Math.abs(Number(field)),
+          );
+      });
+    });
     expect(errors).toEqual([]);
   });
 });

@@ -22,12 +22,15 @@ const INPUT_LENGTH_COLUMNS: ReadonlySet<string> = new Set([
 ]);
 
 /** Result columns that hold a length (full precision): every result column but the text ones. */
-const RESULT_LENGTH_COLUMNS: ReadonlySet<string> = new Set(
-  RESULT_COLUMNS.filter((column) => column !== 'note' && column !== 'error'),
-);
+const RESULT_LENGTH_COLUMNS: ReadonlySet<string> = new Set([
+  ...RESULT_COLUMNS.filter((column) => column !== 'note' && column !== 'error'),
+  // Three-axis rows' programmed steps (threeAxisLookup.ts; their `interval` is the batch's too).
+  'horizontalStep',
+  'stepDown',
+]);
 
-/** Columns that hold an angle in degrees. */
-const ANGLE_COLUMNS: ReadonlySet<string> = new Set(['rho', 'tilt']);
+/** Columns that hold an angle in degrees (three-axis rows: the slope, the raster angle, the equivalent lead and tilt). */
+const ANGLE_COLUMNS: ReadonlySet<string> = new Set(['rho', 'tilt', 'slope', 'rasterAngle', 'lead']);
 
 /** The unit suffix of a batch column (`_mm`, `_in`, `_deg`), or '' for a word or text column. */
 export function columnUnitSuffix(column: string, unit: LengthUnit): string {

@@ -4,7 +4,7 @@
  * page can word them in the user's unit later. Never thrown: every solver returns either an
  * answer or one of these.
  */
-import { formatSignificant } from '../input/units';
+import { formatInputNumber, formatSignificant, fromMm, type LengthUnit, unitSymbol } from '../input/units';
 
 /** The inputs a three-axis error can name. */
 export type ThreeAxisField =
@@ -153,4 +153,30 @@ export function checkStep(field: ThreeAxisField, stepMm: number): ThreeAxisError
       ),
     ];
   return [];
+}
+
+/**
+ * A three-axis solver's message (in mm) in the user's words: the value given quoted as typed
+ * (`typed`, as written, in place of the mm number), every "N mm" in `unit`; for waterline passes
+ * (they have no raster angle) the slope named alone. The command line's and the lookup table's one wording.
+ */
+export function threeAxisMessageInUnit(
+  e: { readonly message: string; readonly got: unknown },
+  passes: string,
+  unit: LengthUnit,
+  typed: string,
+): string {
+  const quoted = e.message.replace(`(got ${String(e.got)})`, `(got ${typed})`);
+  const words =
+    unit === 'mm'
+      ? quoted
+      : quoted.replace(
+          /(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?) mm\b/g,
+          (_, n: string) => `${formatInputNumber(fromMm(Number(n), unit))} ${unitSymbol(unit)}`,
+        );
+  return passes === 'waterline'
+    ? words
+        .replace('at this slope and raster angle', 'at this slope')
+        .replace('the slope and the raster angle set', 'the slope sets')
+    : words;
 }

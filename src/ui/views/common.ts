@@ -37,6 +37,11 @@ export interface TeachingView {
   readonly pageKinds?: readonly PageKind[];
   /** Draws a page question's data of one of its pageKinds. */
   updatePage?(ctx: PageViewContext): void;
+  /**
+   * Draws a sloped plane machined three-axis as the plane at its equivalent posture (`equivalent`),
+   * with the page question beside it (the formulas add the posture's); update(equivalent) when absent.
+   */
+  updateEquivalent?(equivalent: ViewContext, page: PageViewContext): void;
   /** Emphasises one procedure (or none). */
   highlight(key: ProcedureKey | null): void;
   /** Called when the view is shown or hidden (charts size themselves when shown). */

@@ -8,9 +8,10 @@ import { unitSymbol } from '../../core/input/units';
 import { PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import { formatSignedLenUnit } from '../format';
 import { ScrollCues } from '../scrollCue';
-import { html, type TeachingView, untilted, type ViewContext } from './common';
+import { html, type PageViewContext, type TeachingView, untilted, type ViewContext } from './common';
 import { formulaSlotValues } from './formulaSlots';
 import { FORMULA_TEMPLATES, slotClass } from './formulaTemplates';
+import { postureFormulaLines } from './threeAxisViewText';
 
 export class FormulasView implements TeachingView {
   readonly id = 'formulas';
@@ -97,6 +98,29 @@ export class FormulasView implements TeachingView {
         `Lengths in ${unitSymbol(ctx.unit)} (small ones in ${ctx.unit === 'mm' ? '\u00b5m' : 'thou'}), angles in degrees; each L/2 is at the h of the current state.`,
       ),
     );
+  }
+
+  /**
+   * A sloped plane machined three-axis: first the formulas that take the slope and raster angle to
+   * the equivalent lead and tilt and L to the programmed step, then the plane's at that posture.
+   */
+  updateEquivalent(equivalent: ViewContext, page: PageViewContext): void {
+    this.update(equivalent);
+    if (page.kind !== 'three-axis') return;
+    const box = html('section', { class: 'formula', 'data-testid': 'formulas-posture' });
+    const list = html('ul', { class: 'posture-formulas' });
+    for (const line of postureFormulaLines(page.data))
+      list.append(html('li', {}, `${line.label}: ${line.formula}, so ${line.value}`));
+    box.append(
+      html('h3', {}, 'Posture from the slope (three-axis)'),
+      html(
+        'p',
+        {},
+        "The upright tool on the sloped plane is the tool at this lead and tilt on a plane; the formulas below are the plane's at that posture.",
+      ),
+      list,
+    );
+    this.element.prepend(box);
   }
 
   highlight(key: ProcedureKey | null): void {

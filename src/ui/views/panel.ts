@@ -10,6 +10,7 @@ import { ProfileView } from './profileView';
 import { StepperView, type TraceDisplay } from './stepperView';
 import { type SurfaceSource, SurfaceView } from './surfaceView';
 import { TablesView } from './tablesView';
+import { chartTitle, threeAxisViewNote } from './threeAxisViewText';
 
 export type { ViewId };
 
@@ -19,6 +20,10 @@ export class TeachingPanel {
   private readonly ids: ViewId[];
   private readonly staleNote = html('p', { class: 'views-stale', 'data-testid': 'views-stale', role: 'status' });
   private readonly message = html('p', { class: 'view-note views-message', 'data-testid': 'views-message' });
+  /** What a view shows for a three-axis question, in one neutral line (threeAxisViewText.ts). */
+  private readonly pageNote = html('p', { class: 'view-note views-page-note', 'data-testid': 'views-page-note' });
+  /** A three-axis question on a sloped plane: the plane at the equivalent posture, drawn by the views that draw planes. */
+  private equivalent: ViewContext | null = null;
   private active: ViewId;
   private ctx: ViewContext | null = null;
   /** A doubly curved or three-axis reply to the inputs on screen, or null (the views show ctx's). */
@@ -75,7 +80,8 @@ export class TeachingPanel {
     }
     this.staleNote.hidden = true;
     this.message.hidden = true;
-    root.append(list, this.staleNote, this.message, panels);
+    this.pageNote.hidden = true;
+    root.append(list, this.staleNote, this.message, this.pageNote, panels);
     this.show(initial);
   }
 
@@ -117,20 +123,50 @@ export class TeachingPanel {
     this.showStale();
   }
 
-  /** True when the view draws the page question on screen (none is: every view draws ctx). */
+  /** True when the view draws the page question itself (pageKinds). */
+  private drawsPage(view: TeachingView): boolean {
+    return this.pageCtx !== null && (view.pageKinds?.includes(this.pageCtx.kind) ?? false);
+  }
+
+  /**
+   * True when the view draws the question on screen: any plane's or cylinder's; a page question of
+   * its pageKinds; a sloped plane machined three-axis as the plane at its equivalent posture.
+   */
   private draws(view: TeachingView): boolean {
-    return this.pageCtx === null || (view.pageKinds?.includes(this.pageCtx.kind) ?? false);
+    return this.pageCtx === null || this.drawsPage(view) || this.equivalent !== null;
   }
 
   private updateView(view: TeachingView): void {
-    if (this.pageCtx !== null && this.draws(view)) view.updatePage?.(this.pageCtx);
-    else if (this.ctx !== null) view.update(this.ctx);
+    if (this.drawsPage(view) && this.pageCtx !== null) view.updatePage?.(this.pageCtx);
+    else if (this.pageCtx !== null && this.equivalent !== null) {
+      if (view.updateEquivalent) view.updateEquivalent(this.equivalent, this.pageCtx);
+      else view.update(this.equivalent);
+    } else if (this.ctx !== null) view.update(this.ctx);
+  }
+
+  /** The tab names follow what the views draw (the chart's: the five-axis sweeps, the slope's, the radii's). */
+  private nameTabs(): void {
+    const tab = this.tabs.get('chart');
+    const name = chartTitle(this.pageCtx?.kind ?? null);
+    if (tab && tab.textContent !== name) tab.textContent = name;
+  }
+
+  /** The neutral line over the visible view for a three-axis question (what it shows), or none. */
+  private showPageNote(): void {
+    const text =
+      this.pageCtx?.kind === 'three-axis' && this.staleText === null
+        ? threeAxisViewNote(this.active, this.pageCtx.data)
+        : null;
+    this.pageNote.hidden = text === null;
+    if (this.pageNote.textContent !== (text ?? '')) this.pageNote.textContent = text ?? '';
   }
 
   /** Data that answers the inputs on screen: only the visible view redraws now; the others when shown. */
   update(ctx: ViewContext): void {
     this.ctx = ctx;
     this.pageCtx = null;
+    this.equivalent = null;
+    this.nameTabs();
     this.showStale();
     this.message.hidden = true;
     this.root.classList.remove('no-data');
@@ -147,10 +183,13 @@ export class TeachingPanel {
    */
   updatePage(ctx: PageViewContext, elsewhere: string): void {
     this.pageCtx = ctx;
+    this.equivalent =
+      ctx.kind === 'three-axis' && ctx.data.plane !== null ? { data: ctx.data.plane, unit: ctx.unit } : null;
     this.elsewhere = elsewhere;
     this.message.hidden = true;
     this.root.classList.remove('no-data');
-    for (const view of this.views) if (view.id === this.active && this.draws(view)) view.updatePage?.(ctx);
+    this.nameTabs();
+    for (const view of this.views) if (view.id === this.active || view.id === 'tables') this.updateView(view);
     this.showStale();
     this.highlight(this.highlighted);
   }
@@ -168,11 +207,14 @@ export class TeachingPanel {
   private showStale(): void {
     const active = this.views.find((v) => v.id === this.active);
     const elsewhere = active !== undefined && !this.draws(active);
-    const text = this.staleText ?? (elsewhere ? this.elsewhere : null);
+    // A three-axis question's views say what they show in the neutral line (showPageNote), not here.
+    const neutral = this.pageCtx?.kind === 'three-axis';
+    const text = this.staleText ?? (elsewhere && !neutral ? this.elsewhere : null);
     this.root.classList.toggle('stale', text !== null);
     this.root.classList.toggle('elsewhere', this.staleText === null && elsewhere);
     this.staleNote.hidden = text === null;
     if (this.staleNote.textContent !== (text ?? '')) this.staleNote.textContent = text ?? '';
+    this.showPageNote();
   }
 
   /** A valid state with nothing to draw (no scallop): said in words instead of the views. */

@@ -11,6 +11,7 @@ import { PASS_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
 import { type LookupTable, lookupTable } from '../../core/output/lookupTable';
 import { lookupCsvInUnit } from '../../core/output/lookupUnits';
+import { threeAxisLookupTable } from '../../core/output/threeAxisLookup';
 import { validateForward } from '../../core/surfaces/validate';
 import { badRadii, curvedLookupTable } from '../data/curvedTable';
 import type { TableReply, TableRequest } from '../protocol';
@@ -46,6 +47,7 @@ export function table(request: TableRequest): TableReply {
   // bottom lying flat gouges every concave cylinder, while most of the grid's postures cut it.
   const toolErrors = tool.ok ? [] : tool.errors.filter((e) => e.field !== 'h' && e.code !== 'gouging');
   if (toolErrors.length > 0) return { ok: false, request, reason: toolErrors.map((e) => e.message).join(' ') };
+  if (request.threeAxis !== undefined) return threeAxisTable(request, request.threeAxis);
   const grid = badGrid(request);
   if (grid !== null) return { ok: false, request, reason: grid };
   if (request.radii !== undefined) {
@@ -54,6 +56,22 @@ export function table(request: TableRequest): TableReply {
     return inUnit(request, curvedLookupTable(t, t.pattern, request.radii, request.grid, request.unit));
   }
   return inUnit(request, lookupTable(t, request.grid, request.unit));
+}
+
+/** A three-axis table (slopes x scallop heights), or why the grid cannot be tabulated. */
+function threeAxisTable(request: TableRequest, spec: NonNullable<TableRequest['threeAxis']>): TableReply {
+  const g = { scallopHeightsMm: request.grid.scallopHeightsMm, slopesDeg: spec.slopesDeg };
+  for (const [name, values, inRange] of [
+    ['scallop heights', g.scallopHeightsMm, (v: number) => v > 0],
+    ['slopes', g.slopesDeg, (v: number) => v >= 0 && v < 90],
+  ] as const) {
+    if (values.length === 0 || values.length > MAX_GRID_AXIS)
+      return { ok: false, request, reason: `the grid needs 1 to ${MAX_GRID_AXIS} ${name} (got ${values.length}).` };
+    if (!values.every((v) => Number.isFinite(v) && inRange(v)))
+      return { ok: false, request, reason: `the grid's ${name} are out of range.` };
+  }
+  // Each cell is validated and solved as the batch does (its tool and strategy with it).
+  return inUnit(request, threeAxisLookupTable(spec.case, g, request.unit));
 }
 
 /** The reply with the table in the request's unit (its columns named with units), if it asks one. */

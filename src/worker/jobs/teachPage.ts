@@ -10,6 +10,7 @@ import { doublyCurvedSolver, inverseWith } from '../../core/surfaces/doublyCurve
 import { curvedSection } from '../data/curvedSection';
 import { radiusSweep } from '../data/radiusSweep';
 import { slopeChart } from '../data/slopeChart';
+import { equivalentPlaneRequest } from '../equivalentPlane';
 import { type CurvedRequest, isSolveRequest, type PageRequest, type ThreeAxisRequest } from '../pageProtocol';
 import type { CurvedTeachReply, PageTeachReply, ThreeAxisTeachReply } from '../teachProtocol';
 import { revalidateCurved } from './curved';
@@ -18,12 +19,15 @@ import { solveThreeAxisRequest } from './threeAxis';
 
 const NO_SCALLOP = 'No scallop: these passes leave none, so there is nothing to chart.';
 
-/** The chart "step against slope" for a three-axis request. */
+/** The chart "step against slope" for a three-axis request; on a sloped plane the plane's views at the equivalent posture. */
 export function teachThreeAxis(request: ThreeAxisRequest): ThreeAxisTeachReply {
   const reply = solveThreeAxisRequest(request);
   if (!reply.ok) return { ok: false, request, reason: null };
   const slope = slopeChart(reply);
-  return slope === null ? { ok: false, request, reason: NO_SCALLOP } : { ok: true, request, slope };
+  if (slope === null) return { ok: false, request, reason: NO_SCALLOP };
+  const equivalent = equivalentPlaneRequest(reply);
+  const taught = equivalent === null ? null : teach(equivalent);
+  return { ok: true, request, slope, plane: taught?.ok ? taught : null };
 }
 
 /** The doubly curved point's chart and profile (in inverse mode at the solved h, for a target Ra at its h). */

@@ -5,6 +5,8 @@
  * request is validated again from its numbers (core validateThreeAxis): a bad request gets a typed
  * error reply, never an exception.
  */
+import { roughnessSummary } from '../../core/roughness/raTarget';
+import { slopedPlaneRoughness } from '../../core/roughness/slopedPlane';
 import { rasterWaterlineCrossingDeg, slopeSweep } from '../../core/threeAxis/slopeSweep';
 import { solveThreeAxis } from '../../core/threeAxis/solve';
 import {
@@ -106,6 +108,7 @@ export function solveThreeAxisRequest(request: ThreeAxisRequest): ThreeAxisReply
     waterline,
     sweep,
     crossingDeg,
+    roughness: p.surface === 'plane' ? roughnessSummary(slopedPlaneRoughness(p.case, hMm), hMm) : null,
     scene: threeAxisSceneGeometry(p, answer, waterline?.geometry ?? null),
     solveMs: performance.now() - t0,
   };
