@@ -126,6 +126,8 @@ export class CalculatorApp {
   private built: BuiltRequest = { ok: false, errors: [] };
   /** Where the machine and unit are remembered (preferences.ts); null in an embed or without storage. */
   private readonly storage: ToolStorage | null;
+  /** The question's words of the number on screen (questionWords.ts), or null beside a dash. */
+  private answeredWords: string | null = null;
   /** The reply and unit the scene shows. */
   private sceneDrawn: { reply: PageReply; unit: Unit } | null = null;
 
@@ -378,7 +380,13 @@ export class CalculatorApp {
       passes: this.state.passes,
     });
     this.results.showToolName(this.state.toolName ?? null);
-    this.results.showQuestion(shown.kind === 'current' && shown.reply.ok && !typing ? questionWords(this.state) : null);
+    // The words of the question whose number is on screen: the current answer's, or, while a new
+    // one is on its way (the old numbers shown, marked out of date), the old answer's; none
+    // beside a dash (typing, invalid, refused).
+    if (typing || shown.kind === 'invalid' || (shown.kind === 'current' && !shown.reply.ok)) this.answeredWords = null;
+    else if (shown.kind === 'current') this.answeredWords = questionWords(this.state);
+    else if (shown.last === null || !shown.last.ok) this.answeredWords = null;
+    this.results.showQuestion(this.answeredWords);
     this.resultBar.render(typing);
     this.sceneBox.classList.toggle('typing', typing);
     this.roughness.render(shown, this.state.unit);

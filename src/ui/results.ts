@@ -92,8 +92,9 @@ export class ResultsPanel {
 
   /**
    * Names the question the headline's number answers (issue 28: "5-axis, lead 5°, tilt 0°, one-way,
-   * plane", "3-axis, slope 30°, raster 30°"), or hides the line (null: no current answer, so
-   * that the words never describe a number that is out of date or a dash).
+   * plane", "3-axis, slope 30°, raster 30°"), or hides the line (null: a dash, no number to
+   * name). While a new answer is on its way the old number keeps its own words (both marked out of
+   * date with the panel), so a drag does not make the line come and go.
    */
   showQuestion(words: string | null): void {
     const text = words ?? '';
