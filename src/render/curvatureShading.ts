@@ -7,8 +7,8 @@
  * normal so that its relief reads too. A flat patch (a plane) is left white: the material's own
  * colour, as before.
  *
- * The bands are drawn from a strip of colours ({@link bandStripRgba}, a texture read at the nearest
- * texel) at a coordinate interpolated across each triangle ({@link curvatureBandsInto}): their
+ * The bands are drawn from a strip of colours ({@link bandStripRgba}, read per pixel at its nearest
+ * entry by bandMaterial.ts) at a coordinate interpolated across each triangle ({@link curvatureBandsInto}): their
  * edges follow the iso-height lines inside the triangles, not the grid's cells (a colour per vertex
  * drew them as stairs). {@link curvatureColoursInto} gives the same colour at the vertices.
  */

@@ -1,10 +1,10 @@
 /**
  * The question an answer answers, in words (issue 28, point 1): the machine first, then what sets
  * the posture, the pass pattern and the surface, e.g. "5-axis, lead 5°, tilt 0°, one-way, plane",
- * "3-axis, flat floor", "3-axis, slope 30°, raster 30°", "3-axis, waterline, slope 30°, bowl".
- * Shown next to every step-over the page gives (the headline, the result bar, Copy's confirmation,
- * the shop sheet, the lookup table's file name), so that a shop never takes a five-axis answer for
- * its three-axis machine. Numbers as the user gave them, in the page's unit; pure (no DOM).
+ * "3-axis, flat floor", "3-axis, slope 30°, raster 30°", "3-axis, waterline, slope 30°, along the
+ * feed concave 80 mm, across concave 40 mm". Shown under the headline, in the result bar and in
+ * Copy's confirmation (the shop sheet's lines and the lookup table's file name name the machine
+ * their own way), so that a shop never takes a five-axis answer for its three-axis machine. Numbers as the user gave them, in the page's unit; pure (no DOM).
  */
 import { unitSymbol } from '../core/input/units';
 import { parseField } from './fieldText';
@@ -61,12 +61,4 @@ export function questionWords(state: CalculatorState): string {
     return `3-axis, slope ${given(state, 'slope')}°, raster ${given(state, 'psi')}°`;
   }
   return `5-axis, lead ${given(state, 'rho')}°, tilt ${given(state, 'tilt')}°, ${state.pattern}, ${surfaceWords(state)}`;
-}
-
-/** The question as a file-name part: "5-axis_lead5_tilt0" style, letters, digits, dots and dashes only. */
-export function questionFileTag(state: CalculatorState): string {
-  return questionWords(state)
-    .replace(/°/g, '')
-    .replace(/[^A-Za-z0-9.-]+/g, '_')
-    .replace(/^_+|_+$/g, '');
 }

@@ -3,7 +3,7 @@
  * read back against the state they describe (each part from its own field), not against the code.
  */
 import { describe, expect, it } from 'vitest';
-import { questionFileTag, questionWords } from '../../src/ui/questionWords';
+import { questionWords } from '../../src/ui/questionWords';
 import { type CalculatorState, defaultState, parseUrl, withField } from '../../src/ui/state';
 
 const withMachine = (s: CalculatorState, patch: Partial<CalculatorState>): CalculatorState => ({ ...s, ...patch });
@@ -47,14 +47,6 @@ describe('questionWords', () => {
   it('a link carries the machine into the words (a three-axis link is never named five-axis)', () => {
     const parsed = parseUrl('?machine=3axis&slope=30&rasterAngle=30&R=6.35&Rcr=0.762&h=0.01&unit=mm');
     expect(questionWords(parsed.state)).toBe('3-axis, slope 30°, raster 30°');
-  });
-
-  it('the file tag keeps letters, digits, dots and dashes only', () => {
-    const hostile = withField(defaultState(), 'rho', '5');
-    expect(questionFileTag(hostile)).toBe('5-axis_lead_5_tilt_0_one-way_plane');
-    expect(questionFileTag(withMachine(defaultState(), { machine: '3axis', passes: 'raster' }))).toBe(
-      '3-axis_slope_30_raster_0',
-    );
   });
 
   it('a field that is not a number is "?", never NaN or Infinity', () => {
