@@ -126,8 +126,6 @@ export class CalculatorApp {
   private built: BuiltRequest = { ok: false, errors: [] };
   /** Where the machine and unit are remembered (preferences.ts); null in an embed or without storage. */
   private readonly storage: ToolStorage | null;
-  /** The machine and unit last remembered there (so that a drag does not write storage at every step). */
-  private preferencesWritten: string | null = null;
   /** The question's words of the number on screen (questionWords.ts), or null beside a dash. */
   private answeredWords: string | null = null;
   /** The reply and unit the scene shows. */
@@ -340,10 +338,7 @@ export class CalculatorApp {
     this.draw();
     // The question and the link read written lengths (1/2", 12.7 mm) as plain numbers.
     this.url.write(plainLengths(state));
-    // Written when the machine or the unit differs from what was written (not on every keystroke or drag step).
-    const preferences = `${state.machine} ${state.unit}`;
-    if (preferences !== this.preferencesWritten && writePreferences(this.storage, state))
-      this.preferencesWritten = preferences;
+    writePreferences(this.storage, state);
   }
 
   /**
