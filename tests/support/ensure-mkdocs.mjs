@@ -15,7 +15,7 @@ import { fileURLToPath } from 'node:url';
 
 export const MKDOCS_VERSION = '1.6.1';
 /** The cache folder outside the clone: one MkDocs per machine and version, shared by every clone. */
-const cacheDir =
+export const cacheDir =
   process.env.PATH_INTERVAL_CACHE || join(process.env.XDG_CACHE_HOME || join(homedir(), '.cache'), 'path-interval');
 const venv = join(cacheDir, `mkdocs-${MKDOCS_VERSION}-venv`);
 const target = join(cacheDir, `mkdocs-${MKDOCS_VERSION}-target`);
@@ -40,7 +40,8 @@ function installedVersion(cmd) {
   }
 }
 
-function hasPython() {
+/** Whether python3 with venv and ensurepip runs here. */
+export function hasPython() {
   try {
     execFileSync('python3', ['--version'], { stdio: 'ignore' });
     execFileSync('python3', ['-c', 'import venv, ensurepip'], { stdio: 'ignore' });
@@ -50,11 +51,12 @@ function hasPython() {
   }
 }
 
-function aptInstallPython() {
+/** Installs Debian's python3, python3-venv and pip when running as root (as on CI); `purpose` names what needs it. */
+export function aptInstallPython(purpose = 'MkDocs') {
   const isRoot = typeof process.getuid === 'function' && process.getuid() === 0;
   if (!isRoot) return;
   const env = { ...process.env, DEBIAN_FRONTEND: 'noninteractive' };
-  console.log("Python 3 with venv not found: installing Debian's python3 and python3-venv for MkDocs...");
+  console.log(`Python 3 with venv not found: installing Debian's python3 and python3-venv for ${purpose}...`);
   execFileSync('apt-get', ['update'], { stdio: 'inherit', env });
   execFileSync('apt-get', ['install', '-y', '--no-install-recommends', 'python3', 'python3-venv', 'python3-pip'], {
     stdio: 'inherit',

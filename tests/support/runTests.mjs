@@ -58,6 +58,7 @@ const after = async (needs, name, start) =>
 const chromium = step('ensure chromium', node, ['tests/support/ensure-chromium.mjs'], { live: true });
 const mkdocs = step('ensure mkdocs', node, ['tests/support/ensure-mkdocs.mjs'], { live: true });
 const cli = step('build the command line', node, ['src/cli/bundle.mjs', '--if-stale']);
+const x3pReaders = step('ensure x3p readers', node, ['tests/support/ensure-python-x3p.mjs'], { live: true });
 const results = await Promise.all([
   chromium,
   mkdocs,
@@ -65,7 +66,8 @@ const results = await Promise.all([
   after([chromium, mkdocs, cli], 'browser tests', () =>
     step('browser tests', bin('vitest'), ['run', '--project', 'browser', ...vitestArgs], { live: true }),
   ),
-  after([cli], 'node tests', () =>
+  x3pReaders,
+  after([cli, x3pReaders], 'node tests', () =>
     step('node tests', bin('vitest'), ['run', '--project', 'node', ...vitestArgs], { niced: true }),
   ),
   step('lint', bin('biome'), ['check', '.'], { niced: true }),
