@@ -52,11 +52,11 @@ export interface X3pMetadata {
 }
 
 /** The revision written: ISO 25178-72:2017/Amd 1:2020, where `x = offset + (u - 1) * increment`. */
-export const X3P_REVISION = 'ISO25178-72:2017/DAM1';
+const X3P_REVISION = 'ISO25178-72:2017/DAM1';
 /** The binary heights' path in the zip (the standard's recommended name). */
-export const X3P_DATA_PATH = 'bindata/data.bin';
+const X3P_DATA_PATH = 'bindata/data.bin';
 /** The checksum file's path in the zip. */
-export const X3P_CHECKSUM_PATH = 'md5checksum.hex';
+const X3P_CHECKSUM_PATH = 'md5checksum.hex';
 
 const MM_PER_M = 1000;
 
@@ -69,12 +69,13 @@ const MM_PER_M = 1000;
  */
 export function x3pBytes(grid: HeightGrid, metadata: X3pMetadata = {}): Uint8Array {
   checkGrid(grid);
+  const date = metadata.date ?? new Date();
+  if (!Number.isFinite(date.getTime())) throw new RangeError('x3p date: not a valid date');
   const count = grid.nx * grid.ny;
   const data = new Uint8Array(count * 8);
   const view = new DataView(data.buffer);
   for (let k = 0; k < count; k++) view.setFloat64(k * 8, (grid.heightsMm[k] as number) / MM_PER_M, true);
-  const mainXml = strToU8(x3pMainXml(grid, metadata, md5Hex(data)));
-  const date = metadata.date ?? new Date();
+  const mainXml = strToU8(x3pMainXml(grid, { ...metadata, date }, md5Hex(data)));
   return zipSync(
     {
       'main.xml': mainXml,
@@ -90,13 +91,12 @@ export function x3pBytes(grid: HeightGrid, metadata: X3pMetadata = {}): Uint8Arr
  * The text of `main.xml` for `grid`, whose binary heights have the MD5 `dataMd5`.
  *
  * @param grid the grid (only its size, spacing and origin are read here).
- * @param metadata as for {@link x3pBytes}.
+ * @param metadata as for {@link x3pBytes}, with the date.
  * @param dataMd5 the MD5 (hex) of `bindata/data.bin`.
  * @returns the XML document.
  */
-export function x3pMainXml(grid: HeightGrid, metadata: X3pMetadata, dataMd5: string): string {
-  const date = metadata.date ?? new Date();
-  if (!Number.isFinite(date.getTime())) throw new RangeError('x3p date: not a valid date');
+function x3pMainXml(grid: HeightGrid, metadata: X3pMetadata & { date: Date }, dataMd5: string): string {
+  const { date } = metadata;
   const software = xmlToken(metadata.softwareName ?? 'path-interval', 'software name');
   const axis = (name: string, type: 'I' | 'A', increment: number, offset: number) =>
     `      <${name}>\n        <AxisType>${type}</AxisType>\n        <DataType>D</DataType>\n` +
@@ -200,10 +200,9 @@ function xmlToken(text: string, field: string): string {
     .trim();
 }
 
-/** A zip time (the DOS format holds 1980..2099): the date itself when it fits, else the nearest end. */
+/** A zip time (the DOS format holds 1980..2099, in local time): the date itself when it fits, else the nearest end. */
 function zipTime(date: Date): Date {
-  const t = date.getTime();
   const first = new Date(1980, 0, 1).getTime();
   const last = new Date(2099, 11, 31).getTime();
-  return new Date(Number.isFinite(t) ? Math.min(Math.max(t, first), last) : first);
+  return new Date(Math.min(Math.max(date.getTime(), first), last));
 }

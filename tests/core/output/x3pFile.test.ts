@@ -123,6 +123,15 @@ describe('x3pBytes: main.xml', () => {
     expect(xml).toContain('<Comment>a &lt;tool&gt; &amp; "feed" \'marks\'\nsecond line</Comment>');
   });
 
+  it("a date outside the zip format's 1980..2099 is written as it is in main.xml (the zip time clamped)", () => {
+    for (const date of [new Date(Date.UTC(1970, 0, 1)), new Date(Date.UTC(2150, 5, 1, 12))]) {
+      const files = unzipSync(x3pBytes(smallGrid(), { date }));
+      expect(element(strFromU8(files['main.xml'] as Uint8Array), 'Date')).toBe(
+        date.toISOString().replace('Z', '+00:00'),
+      );
+    }
+  });
+
   it('leaves out Creator and Comment when not given', () => {
     const xml = strFromU8(unzipSync(x3pBytes(smallGrid(), { date: DATE }))['main.xml'] as Uint8Array);
     expect(xml).not.toContain('<Creator>');
