@@ -6,11 +6,11 @@
 // by every clone and reused by the next run), falling back to `pip install --target` when
 // `python3 -m venv` is unavailable and installing Debian's Python first when it is missing and we run
 // as root (as on CI). Prints nothing when it is already there.
-// The lightest set that reads the files and computes surfalize's height parameters: the two readers
-// without their declared dependencies (`--no-deps`: surfalize's would add matplotlib, scipy, pandas
-// and more, some 400 MB), then only what reading needs (numpy, defusedxml for x3pio; python-dateutil,
-// chardet and pillow, which surfalize's file readers import). x3p_read.py stubs the rest of
-// surfalize's imports with modules that raise when used.
+// The lightest set that reads the files and computes surfalize's height parameters, every package
+// pinned and installed with `--no-deps`: the two readers, and only what reading needs (surfalize's
+// declared dependencies would add matplotlib, scipy, pandas and more: 465 MB against 130 MB, and
+// 2 s more to import). x3p_read.py stubs the rest of surfalize's imports with modules that raise
+// when used.
 //   node tests/support/ensure-python-x3p.mjs          install if missing
 //   node tests/support/ensure-python-x3p.mjs --json   also print how to run Python with the readers
 //                                                     ({python, env}) as the last line (for the tests)
@@ -21,17 +21,22 @@ import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { aptInstallPython, cacheDir, hasPython } from './ensure-mkdocs.mjs';
 
-/** The readers, installed without their declared dependencies. */
-export const X3P_READERS = ['x3pio==2.0.0', 'surfalize==0.19.2'];
-/** What the readers need to read a file and compute its height parameters (with their own dependencies). */
-export const X3P_READER_NEEDS = [
+/**
+ * The readers and exactly what reading a file and computing its height parameters needs (numpy and
+ * defusedxml for x3pio; python-dateutil with tzdata, chardet and pillow, which surfalize's file
+ * readers import), all pinned and installed with `--no-deps`.
+ */
+export const X3P_PACKAGES = [
+  'x3pio==2.0.0',
+  'surfalize==0.19.2',
   'numpy==2.4.6',
   'defusedxml==0.7.1',
   'python-dateutil==4.0.0',
+  'tzdata==2026.6',
   'chardet==7.7.0',
   'pillow==13.0.0',
 ];
-const spec = [...X3P_READERS, ...X3P_READER_NEEDS].join(' ');
+const spec = X3P_PACKAGES.join(' ');
 const name = `python-x3p-${createHash('sha256').update(spec).digest('hex').slice(0, 12)}`;
 const venv = join(cacheDir, `${name}-venv`);
 const target = join(cacheDir, `${name}-target`);
@@ -49,30 +54,55 @@ export function pythonX3pCommand() {
   return null;
 }
 
-/** Installs the readers when missing (about 10 s from an empty cache; see the report of the commit); returns how to run them. */
+/** Installs the readers when missing (pip downloads some 20 MB); returns how to run them. */
 export function ensurePythonX3p() {
   const existing = pythonX3pCommand();
   if (existing) return existing;
   const run = (cmd, args) => execFileSync(cmd, args, { stdio: 'inherit' });
   if (!hasPython()) aptInstallPython('the x3p readers');
-  console.log(`The x3p readers (${X3P_READERS.join(', ')}) not found: installing them with pip...`);
+  console.log(`The x3p readers (${X3P_PACKAGES.slice(0, 2).join(', ')}) not found: installing them with pip...`);
   const t0 = performance.now();
-  const pip = ['--disable-pip-version-check', '-q'];
+  // No bytecode compiled at install (Python compiles what it imports, once); pins only, no resolver.
+  const pipInstall = [
+    'install',
+    '--disable-pip-version-check',
+    '--root-user-action=ignore',
+    '-q',
+    '--no-compile',
+    '--no-deps',
+  ];
   // Built beside its final place and renamed into it whole, so a run that stops half-way leaves nothing that looks ready.
   const building = `${venv}.building-${process.pid}`;
-  rmSync(building, { recursive: true, force: true });
-  let installed = venv;
-  try {
-    run('python3', ['-m', 'venv', building]);
-    const venvPython = join(building, 'bin', 'python');
-    run(venvPython, ['-m', 'pip', 'install', ...pip, ...X3P_READER_NEEDS]);
-    run(venvPython, ['-m', 'pip', 'install', ...pip, '--no-deps', ...X3P_READERS]);
-  } catch {
+  const venvPython = join(building, 'bin', 'python');
+  // The first way that works: a venv without its own pip, filled by Python's pip (fast: creating a venv
+  // with pip takes most of the time); a venv with its own pip (where Python has no pip, as Debian's
+  // python3-venv without python3-pip); `pip --target` (where venv is missing).
+  const ways = [
+    {
+      dir: venv,
+      create: () => run('python3', ['-m', 'venv', '--without-pip', building]),
+      pip: ['python3', '-m', 'pip', '--python', venvPython, ...pipInstall],
+    },
+    {
+      dir: venv,
+      create: () => run('python3', ['-m', 'venv', building]),
+      pip: [venvPython, '-m', 'pip', ...pipInstall],
+    },
+    { dir: target, create: () => {}, pip: ['python3', '-m', 'pip', ...pipInstall, '--target', building] },
+  ];
+  let installed = null;
+  for (const way of ways) {
     rmSync(building, { recursive: true, force: true });
-    installed = target;
-    run('python3', ['-m', 'pip', 'install', ...pip, '--target', building, ...X3P_READER_NEEDS]);
-    run('python3', ['-m', 'pip', 'install', ...pip, '--no-deps', '--target', building, ...X3P_READERS]);
+    try {
+      way.create();
+      run(way.pip[0], [...way.pip.slice(1), ...X3P_PACKAGES]);
+      installed = way.dir;
+      break;
+    } catch (error) {
+      console.log(`(that way failed: ${error.message.split('\n')[0]}; trying the next)`);
+    }
   }
+  if (!installed) throw new Error('pip could not install them in a venv nor with --target');
   writeFileSync(join(building, READY), spec);
   rmSync(installed, { recursive: true, force: true });
   renameSync(building, installed);

@@ -94,6 +94,8 @@ function float64s(path: string): Float64Array {
 describe('x3p files read by x3pio and surfalize', () => {
   it('the pinned readers ran, surfalize with only its plotting and fitting imports stubbed', () => {
     expect(report.versions).toEqual(VERSIONS);
+    for (const name of report.stubbed)
+      expect(['matplotlib', 'mpl_toolkits', 'scipy', 'pandas', 'tqdm']).toContain(name);
     expect(report.files.map((f) => f.path)).toEqual(paths);
   });
 
