@@ -24,6 +24,8 @@ const ENSURE = fileURLToPath(new URL('../../support/ensure-python-x3p.mjs', impo
 const READ = fileURLToPath(new URL('../../support/x3p_read.py', import.meta.url));
 const DATE = new Date(Date.UTC(2026, 11, 7, 6, 45, 0, 500));
 const COMMENT = 'flutes 4, fz 0.08 mm <along> & "across"';
+/** Not ASCII: main.xml is UTF-8. */
+const CREATOR = 'Jörg Müller – Werkstatt 3 (µm)';
 /** The versions ensure-python-x3p.mjs pins. */
 const VERSIONS = { x3pio: '2.0.0', surfalize: '0.19.2' };
 
@@ -73,7 +75,7 @@ beforeAll(() => {
   const lines = execFileSync(process.execPath, [ENSURE, '--json'], { encoding: 'utf8' }).trim().split('\n');
   const python = JSON.parse(lines[lines.length - 1] as string) as { python: string; env: Record<string, string> };
   GRID_CASES.forEach((c, n) => {
-    writeFileSync(paths[n] as string, x3pBytes(gridOf(c), { date: DATE, creator: 'x3p test', comment: COMMENT }));
+    writeFileSync(paths[n] as string, x3pBytes(gridOf(c), { date: DATE, creator: CREATOR, comment: COMMENT }));
   });
   const out = execFileSync(python.python, [READ, ...paths], {
     encoding: 'utf8',
@@ -138,11 +140,11 @@ describe('x3p files read by x3pio and surfalize', () => {
         expect(mismatches).toBe(0);
       });
 
-      it('x3pio: the metadata (date, creator, comment, a computed surface)', () => {
+      it('x3pio: the metadata (date, creator in UTF-8, comment with markup characters, a computed surface)', () => {
         const x = entry().x3pio;
         expect(new Date(x.date).getTime()).toBe(DATE.getTime());
         expect([x.creator, x.comment, x.probingType, x.instrumentModel]).toEqual([
-          'x3p test',
+          CREATOR,
           COMMENT,
           'Software',
           'path-interval',
