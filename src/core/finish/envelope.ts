@@ -225,12 +225,15 @@ export function passEventMinMm(m: ToothModel, row: PassRow, xLocalMm: number, be
   return best;
 }
 
-/** Which passes can reach global y, with their local coordinates (see toothModel.ts). */
+/**
+ * Which passes can reach global y, with their local coordinates (see toothModel.ts): `x_local =
+ * sign (x - shift)`.
+ */
 export function passesAt(
   m: ToothModel,
   xMm: number,
   yMm: number,
-  visit: (xLocal: number, yLocal: number) => void,
+  visit: (xLocal: number, yLocal: number, sign: 1 | -1, shiftMm: number) => void,
 ): void {
   const L = m.input.intervalMm;
   const reach = Math.max(m.reachRightMm, m.reachLeftMm);
@@ -243,7 +246,7 @@ export function passesAt(
     const yLocal = odd ? j * L - yMm : yMm - j * L;
     if (!(yLocal < m.reachRightMm && yLocal > -m.reachLeftMm)) continue;
     const xShifted = xMm - j * shift;
-    visit(odd ? -xShifted : xShifted, yLocal);
+    visit(odd ? -xShifted : xShifted, yLocal, odd ? -1 : 1, j * shift);
   }
 }
 
