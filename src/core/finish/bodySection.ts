@@ -33,6 +33,8 @@ export class SectionPoint {
   speed = 0;
   /** dw/dalpha, mm. */
   dw = 0;
+  /** dpsi/dalpha, the angle's actual rate (radians per radian). */
+  dpsi = 0;
 }
 
 /** Scratch of the distance evaluation (read right after the call). */
@@ -201,6 +203,7 @@ export class BodySection {
       out.psi = 0;
       out.speed = Number.POSITIVE_INFINITY;
       out.dw = 0;
+      out.dpsi = 0;
       return;
     }
     const t = this.rayRoot(cw0, cz0, cw, cz, tb);
@@ -215,6 +218,13 @@ export class BodySection {
     const gp = -ev.gw * cz + ev.gz * cw;
     const dt = gd > 0 ? (-t * gp) / gd : 0;
     out.speed = Math.sqrt(t * t + dt * dt);
-    out.dw = dt * cw - t * cz;
+    const vw = dt * cw - t * cz;
+    const vz = dt * cz + t * cw;
+    out.dw = vw;
+    // dpsi/dalpha = (c1 v.u2 - c2 v.u1) / rho^2 with v = (vw, 0, vz).
+    const u1 = this.m.u1;
+    const u2 = this.m.u2;
+    const rho2 = ev.rho * ev.rho;
+    out.dpsi = rho2 > 0 ? (ev.c1 * (vw * u2[0] + vz * u2[2]) - ev.c2 * (vw * u1[0] + vz * u1[2])) / rho2 : 0;
   }
 }

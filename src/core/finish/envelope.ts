@@ -22,7 +22,7 @@
  * Phi cannot reach a level and come back. A point of the curve on the axis is the tip, which lies on
  * every tooth's edge: always an event. The point's height is the least over the passes that reach it.
  */
-import { bracketedRoot, type Objective } from '../math/rootFinder';
+import { NewtonState, newtonStart, newtonStep, type Objective } from '../math/rootFinder';
 import { flankAtWidth } from '../tool/posture';
 import { BodySection, SectionPoint } from './bodySection';
 import type { ToothModel } from './toothModel';
@@ -44,6 +44,12 @@ export class PassRow {
   readonly cw: number;
   readonly cz: number;
   readonly bottom = new SectionPoint();
+  /**
+   * Polar angle of the tool's tip (the centre of the flat bottom, on the axis) when the plane passes
+   * through it, else NaN: there psi jumps by pi, and the tip, on every tooth's edge, is an event.
+   */
+  readonly tipAlpha: number;
+  readonly tipZ: number;
 
   constructor(m: ToothModel, yMm: number) {
     this.section = new BodySection(m, yMm);
@@ -67,6 +73,15 @@ export class PassRow {
     this.cw = wStar;
     this.cz = zStar + 0.5 * Math.min(chord, m.toolRadiusMm);
     if (this.reaches) this.section.pointAt(this.cw, this.cz, -Math.PI / 2, this.bottom);
+    const a = m.axis;
+    const rcr = m.cornerRadiusMm;
+    const tipGap = this.section.yRel + rcr * a[1];
+    const tipW = -rcr * a[0];
+    this.tipZ = m.centreZMm - rcr * a[2];
+    this.tipAlpha =
+      this.reaches && Math.abs(tipGap) <= 1e-14 * m.toolRadiusMm
+        ? Math.atan2(this.tipZ - this.cz, tipW - this.cw)
+        : Number.NaN;
   }
 }
 
@@ -99,6 +114,7 @@ class LevelObjective implements Objective {
 }
 
 const objective = new LevelObjective();
+const newton = new NewtonState();
 const p0 = new SectionPoint();
 const p1 = new SectionPoint();
 
@@ -126,7 +142,12 @@ export function passEventMinMm(m: ToothModel, row: PassRow, xLocalMm: number, be
   const bottom = row.bottom;
   if (bottom.rho <= 1e-12 * scale) return Math.min(best, bottom.z);
   for (let dir = 1; dir >= -1; dir -= 2) {
-    const alphaEnd = dir > 0 ? Math.PI / 2 : -1.5 * Math.PI;
+    let tip = row.tipAlpha;
+    if (tip > Math.PI / 2) tip -= 2 * Math.PI;
+    const tipAhead = dir > 0 ? tip >= -Math.PI / 2 : tip < -Math.PI / 2;
+    // Walk to the top, or to the tip when the plane passes through it (an event there).
+    const alphaEnd = tipAhead ? tip : dir > 0 ? Math.PI / 2 : -1.5 * Math.PI;
+    const throughTip = !Number.isNaN(row.tipAlpha);
     let alpha = -Math.PI / 2;
     copyPoint(bottom, p0);
     let theta = p0.psi;
@@ -134,12 +155,13 @@ export function passEventMinMm(m: ToothModel, row: PassRow, xLocalMm: number, be
     if (distToInt(level) <= LEVEL_TOL) return Math.min(best, p0.z);
     let grow = MAX_STEP_RAD;
     for (let iter = 0; iter < 4000; iter++) {
-      if (p0.rho <= 1e-12 * scale) {
+      if (p0.rho <= 1e-12 * scale && !throughTip) {
         best = Math.min(best, p0.z);
         break;
       }
       const s0 = p0.speed;
-      let delta = Math.min(MAX_STEP_RAD, grow, (0.5 * pitch) / (1.5 * s0 * (omega + 1 / p0.rho)));
+      const rate0 = throughTip ? Math.abs(p0.dpsi) + 1e-3 : s0 / p0.rho;
+      let delta = Math.min(MAX_STEP_RAD, grow, (0.5 * pitch) / (1.5 * (s0 * omega + rate0)));
       let final = false;
       let alpha1 = alpha;
       let speed = 0;
@@ -155,11 +177,19 @@ export function passEventMinMm(m: ToothModel, row: PassRow, xLocalMm: number, be
           delta = Math.abs(alphaEnd - alpha);
           final = true;
         }
-        row.section.pointAt(row.cw, row.cz, alpha1, p1);
+        // At the tip psi is undefined: its limit just before it.
+        const at = final && tipAhead ? alpha1 - dir * 1e-12 : alpha1;
+        row.section.pointAt(row.cw, row.cz, at, p1);
         if (!Number.isFinite(p1.t)) break;
         speed = 1.25 * Math.max(s0, p1.speed);
         rhoLo = Math.min(p0.rho, p1.rho) - speed * delta;
-        psiRate = rhoLo > 0 ? speed / rhoLo : Number.POSITIVE_INFINITY;
+        // Through the tip the curve crosses the axis transversally: psi is smooth on either side
+        // (its rate bounded by the curvature), and jumps by pi only at the tip itself.
+        psiRate = throughTip
+          ? 2 * Math.max(Math.abs(p0.dpsi), Math.abs(p1.dpsi)) + 1e-3
+          : rhoLo > 0
+            ? speed / rhoLo
+            : Number.POSITIVE_INFINITY;
         bound = speed * omega + psiRate;
         if (bound * delta <= 0.5 * pitch || delta <= 1e-15) break;
         delta = Math.min(0.5 * delta, (0.45 * pitch) / bound);
@@ -182,7 +212,24 @@ export function passEventMinMm(m: ToothModel, row: PassRow, xLocalMm: number, be
           objective.pitch = pitch;
           objective.n = n;
           if (monotone) {
-            alphaEvent = bracketedRoot(objective, alpha, alpha1, level - n, level1 - n, 1e-16);
+            // Safeguarded Newton on the level: its slope (dpsi - omega dw) / pitch is at hand.
+            const lo = dir > 0 ? alpha : alpha1;
+            const hi = dir > 0 ? alpha1 : alpha;
+            const gHi = (dir > 0 ? level1 : level) - n;
+            const gLo = (dir > 0 ? level : level1) - n;
+            newtonStart(newton, lo, hi, lo + ((hi - lo) * gLo) / (gLo - gHi));
+            for (let k = 0; k < 60 && !newton.done; k++) {
+              const g = objective.value(newton.x);
+              const slope = (objective.p.dpsi - omega * objective.p.dw) / pitch;
+              newtonStep(newton, g, slope, gHi > 0, 1e-15);
+            }
+            alphaEvent = newton.x;
+            // Stopped on a step below 1e-15 of alpha: the last point evaluated is the event's to
+            // within ~1e-14 mm.
+            if (newton.done) {
+              best = Math.min(best, objective.p.z);
+              break;
+            }
           } else {
             // Not provably monotone: bisect on the sign change (a crossing within this short step).
             let lo = alpha;
@@ -214,6 +261,10 @@ export function passEventMinMm(m: ToothModel, row: PassRow, xLocalMm: number, be
           grow = (0.8 * gap) / bound;
           continue;
         }
+      }
+      if (final && tipAhead) {
+        best = Math.min(best, row.tipZ);
+        break;
       }
       alpha = alpha1;
       copyPoint(p1, p0);
