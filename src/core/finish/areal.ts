@@ -34,6 +34,8 @@ export interface ArealParameters {
 
 const ROW_RULE = gaussLegendre(20);
 const PANEL_RULE = gaussLegendre(10);
+/** Relative agreement of a y panel with its halves at which it is accepted. */
+const Y_TOL = 1e-9;
 
 /** The breakpoints of a line over one feed period from x0: valleys, crests and crossings of passes. */
 function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
@@ -43,10 +45,7 @@ function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
   const n = row.passes.length;
   for (let i = 0; i < n; i++) {
     if (!(row.passes[i] as RowEnvelope['passes'][number]).row.reaches) continue;
-    const v = row.valleyXMm(i);
-    const end = newSearchEnd();
-    maximise({ value: (x) => row.passHeightAt(i, x) }, v, v + P, 16, 1e-13 * P, end);
-    breaks.push(into(v), into(end.x));
+    breaks.push(into(row.valleyXMm(i)), into(row.crestXMm(i)));
   }
   breaks.sort((a, b) => a - b);
   if (n > 1) {
@@ -88,16 +87,23 @@ function lowestPass(row: RowEnvelope, x: number): number {
   return index;
 }
 
+/** The highest point of the line at y over one feed period (mm). */
+function lineMax(m: ToothModel, y: number): number {
+  const row = new RowEnvelope(m, y);
+  const x0 = row.passes.length > 0 ? row.valleyXMm(0) : 0;
+  let max = Number.NEGATIVE_INFINITY;
+  for (const x of lineBreaks(m, row, x0)) max = Math.max(max, row.heightAt(x));
+  return max;
+}
+
 /**
  * Integrals over one feed period of the line at y: [s, |s - m|, (s - m)^2, (s - m)^3, (s - m)^4] (mm^k
  * times mm), and the line's maximum. With `mean` NaN only the first is meaningful.
  */
-function lineIntegrals(m: ToothModel, y: number, mean: number): { sums: number[]; max: number } {
+function lineIntegrals(m: ToothModel, y: number, mean: number): number[] {
   const row = new RowEnvelope(m, y);
   const x0 = row.passes.length > 0 ? row.valleyXMm(0) : 0;
   const breaks = lineBreaks(m, row, x0);
-  let max = Number.NEGATIVE_INFINITY;
-  for (const x of breaks) max = Math.max(max, row.heightAt(x));
   const sums = [0, 0, 0, 0, 0];
   const addPiece = (a: number, b: number) => {
     const c = 0.5 * (a + b);
@@ -141,7 +147,7 @@ function lineIntegrals(m: ToothModel, y: number, mean: number): { sums: number[]
     cuts.push(b);
     for (let c = 0; c + 1 < cuts.length; c++) addPiece(cuts[c] as number, cuts[c + 1] as number);
   }
-  return { sums, max };
+  return sums;
 }
 
 /** Adaptive integral over y in [a, b] of the line integrals (see the module comment). */
@@ -151,14 +157,14 @@ function integrateY(m: ToothModel, a: number, b: number, mean: number, key: numb
     const r = 0.5 * (hi - lo);
     const out = [0, 0, 0, 0, 0];
     for (let k = 0; k < PANEL_RULE.nodes.length; k++) {
-      const { sums } = lineIntegrals(m, c + r * (PANEL_RULE.nodes[k] as number), mean);
+      const sums = lineIntegrals(m, c + r * (PANEL_RULE.nodes[k] as number), mean);
       const w = r * (PANEL_RULE.weights[k] as number);
       for (let i = 0; i < 5; i++) out[i] = (out[i] as number) + w * (sums[i] as number);
     }
     return out;
   };
   const total = [0, 0, 0, 0, 0];
-  const initial = 8;
+  const initial = 4;
   const whole: Array<[number, number, number[]]> = [];
   for (let i = 0; i < initial; i++) {
     const lo = a + ((b - a) * i) / initial;
@@ -174,7 +180,7 @@ function integrateY(m: ToothModel, a: number, b: number, mean: number, key: numb
     const right = panel(mid, hi);
     evaluations++;
     const err = Math.abs((left[key] as number) + (right[key] as number) - (v[key] as number));
-    if (err <= 1e-10 * scale * ((hi - lo) / (b - a)) || hi - lo <= 1e-9 * (b - a) || evaluations > 400) {
+    if (err <= Y_TOL * scale * ((hi - lo) / (b - a)) || hi - lo <= 1e-9 * (b - a) || evaluations > 400) {
       for (let i = 0; i < 5; i++) total[i] = (total[i] as number) + (left[i] as number) + (right[i] as number);
     } else {
       whole.push([lo, mid, left], [mid, hi, right]);
@@ -195,7 +201,7 @@ export function arealParameters(m: ToothModel): ArealParameters {
   const sq = Math.sqrt(Math.max(0, (sums[2] as number) / area));
   const low = new RowEnvelope(m, 0).floorMm;
   const end = newSearchEnd();
-  const high = maximise({ value: (y) => lineIntegrals(m, y, Number.NaN).max }, 0, height, 64, 1e-12 * height, end);
+  const high = maximise({ value: (y) => lineMax(m, y) }, 0, height, 24, 1e-12 * height, end);
   const sp = high - mean;
   const sv = mean - low;
   return {

@@ -134,144 +134,164 @@ function copyPoint(from: SectionPoint, to: SectionPoint): void {
  */
 export function passEventMinMm(m: ToothModel, row: PassRow, xLocalMm: number, best: number): number {
   if (!row.reaches || row.zStar >= best) return best;
+  const beta = levelsOffset(m, xLocalMm);
+  if (row.bottom.rho <= 1e-12 * m.toolRadiusMm) return Math.min(best, row.bottom.z);
+  const right = sideEventMm(m, row, beta, 1, best);
+  return sideEventMm(m, row, beta, -1, right);
+}
+
+/** The first event on each side of the lowest point (right: w increasing), unpruned, mm. */
+export function passSideEventsMm(m: ToothModel, row: PassRow, xLocalMm: number): [number, number] {
+  if (!row.reaches) return [Number.POSITIVE_INFINITY, Number.POSITIVE_INFINITY];
+  const beta = levelsOffset(m, xLocalMm);
+  if (row.bottom.rho <= 1e-12 * m.toolRadiusMm) return [row.bottom.z, row.bottom.z];
+  return [
+    sideEventMm(m, row, beta, 1, Number.POSITIVE_INFINITY),
+    sideEventMm(m, row, beta, -1, Number.POSITIVE_INFINITY),
+  ];
+}
+
+/** The levels -omega x + j pitch, as an offset reduced to (-pitch, 0] (omega x can be large). */
+function levelsOffset(m: ToothModel, xLocalMm: number): number {
+  const pitch = m.toothPitchRad;
+  return -((((m.omegaRadPerMm * xLocalMm) % pitch) + pitch) % pitch);
+}
+
+/** The first event walking from the lowest point in direction `dir`, or `best` when none is lower. */
+function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, best: number): number {
   const omega = m.omegaRadPerMm;
   const pitch = m.toothPitchRad;
   const scale = m.toolRadiusMm;
-  // The levels -omega x + j pitch, reduced to [0, pitch) (omega x can be large).
-  const beta = -((((omega * xLocalMm) % pitch) + pitch) % pitch);
   const bottom = row.bottom;
-  if (bottom.rho <= 1e-12 * scale) return Math.min(best, bottom.z);
-  for (let dir = 1; dir >= -1; dir -= 2) {
-    let tip = row.tipAlpha;
-    if (tip > Math.PI / 2) tip -= 2 * Math.PI;
-    const tipAhead = dir > 0 ? tip >= -Math.PI / 2 : tip < -Math.PI / 2;
-    // Walk to the top, or to the tip when the plane passes through it (an event there).
-    const alphaEnd = tipAhead ? tip : dir > 0 ? Math.PI / 2 : -1.5 * Math.PI;
-    const throughTip = !Number.isNaN(row.tipAlpha);
-    let alpha = -Math.PI / 2;
-    copyPoint(bottom, p0);
-    let theta = p0.psi;
-    let level = (theta - omega * p0.w - beta) / pitch;
-    if (distToInt(level) <= LEVEL_TOL) return Math.min(best, p0.z);
-    let grow = MAX_STEP_RAD;
-    for (let iter = 0; iter < 4000; iter++) {
-      if (p0.rho <= 1e-12 * scale && !throughTip) {
-        best = Math.min(best, p0.z);
-        break;
+  let tip = row.tipAlpha;
+  if (tip > Math.PI / 2) tip -= 2 * Math.PI;
+  const tipAhead = dir > 0 ? tip >= -Math.PI / 2 : tip < -Math.PI / 2;
+  // Walk to the top, or to the tip when the plane passes through it (an event there).
+  const alphaEnd = tipAhead ? tip : dir > 0 ? Math.PI / 2 : -1.5 * Math.PI;
+  const throughTip = !Number.isNaN(row.tipAlpha);
+  let alpha = -Math.PI / 2;
+  copyPoint(bottom, p0);
+  let theta = p0.psi;
+  let level = (theta - omega * p0.w - beta) / pitch;
+  if (distToInt(level) <= LEVEL_TOL) return Math.min(best, p0.z);
+  let grow = MAX_STEP_RAD;
+  for (let iter = 0; iter < 4000; iter++) {
+    if (p0.rho <= 1e-12 * scale && !throughTip) {
+      best = Math.min(best, p0.z);
+      break;
+    }
+    const s0 = p0.speed;
+    const rate0 = throughTip ? Math.abs(p0.dpsi) + 1e-3 : s0 / p0.rho;
+    let delta = Math.min(MAX_STEP_RAD, grow, (0.5 * pitch) / (1.5 * (s0 * omega + rate0)));
+    let final = false;
+    let alpha1 = alpha;
+    let speed = 0;
+    let rhoLo = 0;
+    let psiRate = 0;
+    let bound = 0;
+    // Shrink the step until the rate bound over it holds (at most half a pitch of Phi).
+    for (let k = 0; k < 200; k++) {
+      final = false;
+      alpha1 = alpha + dir * delta;
+      if (dir * (alpha1 - alphaEnd) >= 0) {
+        alpha1 = alphaEnd;
+        delta = Math.abs(alphaEnd - alpha);
+        final = true;
       }
-      const s0 = p0.speed;
-      const rate0 = throughTip ? Math.abs(p0.dpsi) + 1e-3 : s0 / p0.rho;
-      let delta = Math.min(MAX_STEP_RAD, grow, (0.5 * pitch) / (1.5 * (s0 * omega + rate0)));
-      let final = false;
-      let alpha1 = alpha;
-      let speed = 0;
-      let rhoLo = 0;
-      let psiRate = 0;
-      let bound = 0;
-      // Shrink the step until the rate bound over it holds (at most half a pitch of Phi).
-      for (let k = 0; k < 200; k++) {
-        final = false;
-        alpha1 = alpha + dir * delta;
-        if (dir * (alpha1 - alphaEnd) >= 0) {
-          alpha1 = alphaEnd;
-          delta = Math.abs(alphaEnd - alpha);
-          final = true;
-        }
-        // At the tip psi is undefined: its limit just before it.
-        const at = final && tipAhead ? alpha1 - dir * 1e-12 : alpha1;
-        row.section.pointAt(row.cw, row.cz, at, p1);
-        if (!Number.isFinite(p1.t)) break;
-        speed = 1.25 * Math.max(s0, p1.speed);
-        rhoLo = Math.min(p0.rho, p1.rho) - speed * delta;
-        // Through the tip the curve crosses the axis transversally: psi is smooth on either side
-        // (its rate bounded by the curvature), and jumps by pi only at the tip itself.
-        psiRate = throughTip
-          ? 2 * Math.max(Math.abs(p0.dpsi), Math.abs(p1.dpsi)) + 1e-3
-          : rhoLo > 0
-            ? speed / rhoLo
-            : Number.POSITIVE_INFINITY;
-        bound = speed * omega + psiRate;
-        if (bound * delta <= 0.5 * pitch || delta <= 1e-15) break;
-        delta = Math.min(0.5 * delta, (0.45 * pitch) / bound);
-      }
+      // At the tip psi is undefined: its limit just before it.
+      const at = final && tipAhead ? alpha1 - dir * 1e-12 : alpha1;
+      row.section.pointAt(row.cw, row.cz, at, p1);
       if (!Number.isFinite(p1.t)) break;
-      grow = 4 * delta;
-      const theta1 = theta + wrap(p1.psi - p0.psi);
-      const level1 = (theta1 - omega * p1.w - beta) / pitch;
-      const monotone = p0.dw * p1.dw > 0 && 0.5 * omega * Math.min(Math.abs(p0.dw), Math.abs(p1.dw)) > psiRate;
-      const n = Math.floor(Math.max(level, level1));
-      const crossed = Math.floor(level) !== Math.floor(level1) || distToInt(level1) <= LEVEL_TOL;
-      if (crossed) {
-        let alphaEvent = alpha1;
-        if (distToInt(level1) > LEVEL_TOL) {
-          objective.row = row;
-          objective.psi0 = p0.psi;
-          objective.theta0 = theta;
-          objective.omega = omega;
-          objective.beta = beta;
-          objective.pitch = pitch;
-          objective.n = n;
-          if (monotone) {
-            // Safeguarded Newton on the level: its slope (dpsi - omega dw) / pitch is at hand.
-            const lo = dir > 0 ? alpha : alpha1;
-            const hi = dir > 0 ? alpha1 : alpha;
-            const gHi = (dir > 0 ? level1 : level) - n;
-            const gLo = (dir > 0 ? level : level1) - n;
-            newtonStart(newton, lo, hi, lo + ((hi - lo) * gLo) / (gLo - gHi));
-            for (let k = 0; k < 60 && !newton.done; k++) {
-              const g = objective.value(newton.x);
-              const slope = (objective.p.dpsi - omega * objective.p.dw) / pitch;
-              newtonStep(newton, g, slope, gHi > 0, 1e-15);
-            }
-            alphaEvent = newton.x;
-            // Stopped on a step below 1e-15 of alpha: the last point evaluated is the event's to
-            // within ~1e-14 mm.
-            if (newton.done) {
-              best = Math.min(best, objective.p.z);
-              break;
-            }
-          } else {
-            // Not provably monotone: bisect on the sign change (a crossing within this short step).
-            let lo = alpha;
-            let hi = alpha1;
-            const fLo = level - n;
-            for (let k = 0; k < 200 && Math.abs(hi - lo) > 1e-16 * Math.max(1, Math.abs(lo)); k++) {
-              const mid = 0.5 * (lo + hi);
-              const f = objective.value(mid);
-              if (f === 0) {
-                lo = mid;
-                hi = mid;
-              } else if (f > 0 === fLo > 0) lo = mid;
-              else hi = mid;
-            }
-            alphaEvent = 0.5 * (lo + hi);
+      speed = 1.25 * Math.max(s0, p1.speed);
+      rhoLo = Math.min(p0.rho, p1.rho) - speed * delta;
+      // Through the tip the curve crosses the axis transversally: psi is smooth on either side
+      // (its rate bounded by the curvature), and jumps by pi only at the tip itself.
+      psiRate = throughTip
+        ? 2 * Math.max(Math.abs(p0.dpsi), Math.abs(p1.dpsi)) + 1e-3
+        : rhoLo > 0
+          ? speed / rhoLo
+          : Number.POSITIVE_INFINITY;
+      bound = speed * omega + psiRate;
+      if (bound * delta <= 0.5 * pitch || delta <= 1e-15) break;
+      delta = Math.min(0.5 * delta, (0.45 * pitch) / bound);
+    }
+    if (!Number.isFinite(p1.t)) break;
+    grow = 4 * delta;
+    const theta1 = theta + wrap(p1.psi - p0.psi);
+    const level1 = (theta1 - omega * p1.w - beta) / pitch;
+    const monotone = p0.dw * p1.dw > 0 && 0.5 * omega * Math.min(Math.abs(p0.dw), Math.abs(p1.dw)) > psiRate;
+    const n = Math.floor(Math.max(level, level1));
+    const crossed = Math.floor(level) !== Math.floor(level1) || distToInt(level1) <= LEVEL_TOL;
+    if (crossed) {
+      let alphaEvent = alpha1;
+      if (distToInt(level1) > LEVEL_TOL) {
+        objective.row = row;
+        objective.psi0 = p0.psi;
+        objective.theta0 = theta;
+        objective.omega = omega;
+        objective.beta = beta;
+        objective.pitch = pitch;
+        objective.n = n;
+        if (monotone) {
+          // Safeguarded Newton on the level: its slope (dpsi - omega dw) / pitch is at hand.
+          const lo = dir > 0 ? alpha : alpha1;
+          const hi = dir > 0 ? alpha1 : alpha;
+          const gHi = (dir > 0 ? level1 : level) - n;
+          const gLo = (dir > 0 ? level : level1) - n;
+          newtonStart(newton, lo, hi, lo + ((hi - lo) * gLo) / (gLo - gHi));
+          for (let k = 0; k < 60 && !newton.done; k++) {
+            const g = objective.value(newton.x);
+            const slope = (objective.p.dpsi - omega * objective.p.dw) / pitch;
+            newtonStep(newton, g, slope, gHi > 0, 1e-15);
           }
-        }
-        row.section.pointAt(row.cw, row.cz, alphaEvent, objective.p);
-        best = Math.min(best, objective.p.z);
-        break;
-      }
-      if (!monotone) {
-        const gap = distToInt(level) * pitch;
-        if (bound * delta >= 0.9 * gap) {
-          if (gap <= LEVEL_TOL * pitch || delta <= 1e-15) {
-            best = Math.min(best, p0.z);
+          alphaEvent = newton.x;
+          // Stopped on a step below 1e-15 of alpha: the last point evaluated is the event's to
+          // within ~1e-14 mm.
+          if (newton.done) {
+            best = Math.min(best, objective.p.z);
             break;
           }
-          grow = (0.8 * gap) / bound;
-          continue;
+        } else {
+          // Not provably monotone: bisect on the sign change (a crossing within this short step).
+          let lo = alpha;
+          let hi = alpha1;
+          const fLo = level - n;
+          for (let k = 0; k < 200 && Math.abs(hi - lo) > 1e-16 * Math.max(1, Math.abs(lo)); k++) {
+            const mid = 0.5 * (lo + hi);
+            const f = objective.value(mid);
+            if (f === 0) {
+              lo = mid;
+              hi = mid;
+            } else if (f > 0 === fLo > 0) lo = mid;
+            else hi = mid;
+          }
+          alphaEvent = 0.5 * (lo + hi);
         }
       }
-      if (final && tipAhead) {
-        best = Math.min(best, row.tipZ);
-        break;
-      }
-      alpha = alpha1;
-      copyPoint(p1, p0);
-      theta = theta1;
-      level = level1;
-      if (p0.z >= best || final) break;
+      row.section.pointAt(row.cw, row.cz, alphaEvent, objective.p);
+      best = Math.min(best, objective.p.z);
+      break;
     }
+    if (!monotone) {
+      const gap = distToInt(level) * pitch;
+      if (bound * delta >= 0.9 * gap) {
+        if (gap <= LEVEL_TOL * pitch || delta <= 1e-15) {
+          best = Math.min(best, p0.z);
+          break;
+        }
+        grow = (0.8 * gap) / bound;
+        continue;
+      }
+    }
+    if (final && tipAhead) {
+      best = Math.min(best, row.tipZ);
+      break;
+    }
+    alpha = alpha1;
+    copyPoint(p1, p0);
+    theta = theta1;
+    level = level1;
+    if (p0.z >= best || final) break;
   }
   return best;
 }

@@ -36,10 +36,14 @@ export function lineExtremes(m: ToothModel, row: RowEnvelope): { low: number; hi
   const P = m.feedPeriodMm;
   if (row.passes.length === 0) return { low: Number.POSITIVE_INFINITY, high: Number.POSITIVE_INFINITY, highX: 0 };
   const x0 = row.valleyXMm(0);
+  const low = Math.min(row.floorMm, row.heightAt(x0));
+  if (row.passes.length === 1) {
+    const x = row.crestXMm(0);
+    return { low, high: row.heightAt(x), highX: x };
+  }
   const f: Objective = { value: (x) => row.heightAt(x) };
   const end = newSearchEnd();
   const high = maximise(f, x0, x0 + P, 48, 1e-13 * P + 1e-15, end);
-  const low = Math.min(row.floorMm, row.heightAt(x0));
   return { low, high, highX: end.x };
 }
 

@@ -4,7 +4,8 @@
  * search each. Also where each pass leaves its valleys along the line: an event at the section's
  * lowest point, where the bottom's level `(Phi_b + omega x) / pitch` is a whole number. Lengths mm.
  */
-import { PassRow, passEventMinMm, passesAt } from './envelope';
+import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
+import { PassRow, passEventMinMm, passesAt, passSideEventsMm } from './envelope';
 import type { ToothModel } from './toothModel';
 
 /** One pass on the line: its row and how global x maps to its local x (`sign (x - shift)`). */
@@ -59,5 +60,32 @@ export class RowEnvelope {
     // Local x where (phiB + omega x) / pitch is a whole number (the one nearest 0).
     const xLocal = (-phiB - m.toothPitchRad * Math.round(-phiB / m.toothPitchRad)) / m.omegaRadPerMm;
     return p.shiftMm + p.sign * xLocal;
+  }
+
+  /**
+   * The global x of pass `index`'s crest in the period after its valley `valleyXMm(index)`: where the
+   * first events on either side of the section's lowest point are equally high (the right one rises
+   * and the left one falls as x runs over the period), by the shared bracketed root finder; the
+   * shared maximiser where that difference does not change sign (a pass that never meets its
+   * levels on one side).
+   */
+  crestXMm(index: number): number {
+    const p = this.passes[index] as PassOnLine;
+    const P = this.m.feedPeriodMm;
+    const v = this.valleyXMm(index);
+    const f = {
+      value: (x: number) => {
+        const [r, l] = passSideEventsMm(this.m, p.row, p.sign * (x - p.shiftMm));
+        return p.sign * (r - l);
+      },
+    };
+    const a = v + 1e-9 * P;
+    const b = v + P - 1e-9 * P;
+    const fa = f.value(a);
+    const fb = f.value(b);
+    if (fa < 0 && fb > 0 && Number.isFinite(fa) && Number.isFinite(fb)) return bracketedRoot(f, a, b, fa, fb, 1e-15);
+    const end = newSearchEnd();
+    maximise({ value: (x) => this.passHeightAt(index, x) }, v, v + P, 16, 1e-13 * P, end);
+    return end.x;
   }
 }
