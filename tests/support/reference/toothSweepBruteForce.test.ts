@@ -10,6 +10,7 @@ import {
   bruteArealParameters,
   bruteEnvelopeHeightMm,
   bruteFeedMarkHeightMm,
+  certifiedEnvelopeHeightMm,
   type ToothSweepParams,
 } from './toothSweepBruteForce';
 
@@ -63,6 +64,47 @@ describe('toothSweepBruteForce', () => {
       expect(fine.boundMm).toBeGreaterThan(0);
       expect(fine.boundMm).toBeLessThan(coarse.boundMm / 4);
       expect(mid.boundMm).toBeLessThan(coarse.boundMm / 1.5);
+    }
+  });
+
+  it('branch and bound certifies the refined height to 1e-9 mm over the strata: ball, flat, bull-nose, lead 0 and not, tilt, zigzag, runout (seed 41)', () => {
+    const r = rng(41);
+    const between = (lo: number, hi: number): number => lo + (hi - lo) * r();
+    const strata: ((R: number) => Partial<ToothSweepParams>)[] = [
+      (R) => ({ cornerRadiusMm: R, leadRad: 0 }),
+      (R) => ({ cornerRadiusMm: R, leadRad: between(5, 20) * DEG, tiltRad: between(-15, 15) * DEG }),
+      () => ({ cornerRadiusMm: 0, leadRad: between(2, 10) * DEG }),
+      () => ({ cornerRadiusMm: 0, leadRad: between(2, 10) * DEG, tiltRad: between(-10, 10) * DEG, pattern: 'zigzag' }),
+      (R) => ({ cornerRadiusMm: between(0.2, 0.5) * R, leadRad: 0, tiltRad: between(3, 12) * DEG }),
+      (R) => ({
+        cornerRadiusMm: between(0.2, 0.5) * R,
+        leadRad: between(2, 15) * DEG,
+        pattern: 'zigzag',
+        runoutMm: between(0.002, 0.01),
+        runoutPhaseRad: between(0, 2 * Math.PI),
+        passPhase: r(),
+      }),
+    ];
+    for (const stratum of strata) {
+      const R = between(2, 5);
+      const p: ToothSweepParams = {
+        ...base,
+        radiusMm: R,
+        stepOverMm: between(0.2, 0.6) * R,
+        flutes: 1 + Math.floor(r() * 4),
+        fzMm: between(0.01, 0.15),
+        ...stratum(R),
+      };
+      for (let n = 0; n < 2; n++) {
+        const x = r() * p.flutes * p.fzMm;
+        const y = between(-0.5, 1.5) * p.stepOverMm;
+        const refined = height(p, x, y, 50);
+        const c = certifiedEnvelopeHeightMm(p, x, y, 1e-9);
+        expect(c.complete).toBe(true);
+        expect(c.boundMm).toBeLessThanOrEqual(1e-9);
+        expect(refined).toBeGreaterThanOrEqual(c.lowerBoundMm - 1e-12);
+        expect(refined).toBeLessThanOrEqual(c.heightMm + 1e-9);
+      }
     }
   });
 

@@ -576,6 +576,122 @@ export function refineAt(sc: SweepScatter, x: number, y: number): BruteHeight {
   };
 }
 
+/** What the branch and bound of `certifyAt` did. */
+export interface Certificate {
+  /** Rigorous lower bound of the envelope over the query (mm). */
+  lowerBoundMm: number;
+  /** The lowest real edge point over the query found (mm): an upper bound, to the Newton error. */
+  heightMm: number;
+  /** heightMm - lowerBoundMm. */
+  boundMm: number;
+  /** Rectangles evaluated, and whether every one was resolved (false: the budget ran out). */
+  evaluations: number;
+  complete: boolean;
+}
+
+/**
+ * Certify the envelope height at (x, y) to `tolMm` by branch and bound over rectangles of
+ * (pass, tooth, rotation phi, arc length s), starting from a known real edge point over the
+ * query at height `upperMm` (from `refineAt`). Every point of a rectangle with centre c and
+ * half-widths (hphi, hs) lies within lphi hphi + hs of P(c) (|dP/dphi| <= z fz / 2 pi + e + R,
+ * |dP/ds| = 1) and its height within lzphi hphi + hs of z(c) (|dz/dphi| <= (e + R) sqrt(1 - az^2)).
+ * A rectangle is dropped when its xy ball misses the query or its lowest possible height is at
+ * least upper - tol; otherwise it is halved along its longer side (in mm). A rectangle still
+ * open when small gets a Newton solve from its centre, which may lower the upper bound. The
+ * lower bound is the lowest bound of the rectangles dropped on their height (at least
+ * upper - tol), or lower where the budget of evaluations ran out (then `complete` is false).
+ */
+export function certifyAt(
+  m: SweepModel,
+  x: number,
+  y: number,
+  upperMm: number,
+  tolMm: number,
+  budget = 2_000_000,
+): Certificate {
+  const p = m.params;
+  const out = new Float64Array(9);
+  let upper = upperMm;
+  let openLower = Number.POSITIVE_INFINITY;
+  let droppedLower = Number.POSITIVE_INFINITY;
+  let evaluations = 0;
+  // stack of rectangles: pass, tooth, phi centre, s centre, phi half, s half
+  const stack: number[] = [];
+  const reachY = Math.abs(m.oy) + m.reachXy;
+  const L = p.stepOverMm;
+  for (let j = Math.floor((y - reachY) / L) - 1; j <= Math.ceil((y + reachY) / L) + 1; j++) {
+    const pl = passPlacement(m, j);
+    const lx = pl.mirror ? pl.dx - x : x - pl.dx;
+    const ly = pl.mirror ? pl.dy - y : y - pl.dy;
+    if (Math.abs(ly - m.oy) > m.reachXy) continue;
+    const phi0 = (lx - m.reachXy) / m.feedPerRad;
+    const phi1 = (lx + m.reachXy) / m.feedPerRad;
+    const nRoot = Math.max(1, Math.ceil((phi1 - phi0) / (Math.PI / 4)));
+    const hphi = (phi1 - phi0) / nRoot / 2;
+    for (let k = 0; k < p.flutes; k++) {
+      for (let i = 0; i < nRoot; i++) stack.push(j, k, phi0 + (2 * i + 1) * hphi, m.sMax / 2, hphi, m.sMax / 2);
+    }
+  }
+  while (stack.length > 0) {
+    const hs = stack.pop() as number;
+    const hphi = stack.pop() as number;
+    const sc = stack.pop() as number;
+    const phic = stack.pop() as number;
+    const k = stack.pop() as number;
+    const j = stack.pop() as number;
+    if (evaluations >= budget) {
+      openLower = Math.min(openLower, Number.NEGATIVE_INFINITY);
+      break;
+    }
+    evaluations++;
+    edgePoint(m, j, k, phic, sc, out);
+    const rxy = m.lphi * hphi + hs;
+    if (Math.hypot((out[0] as number) - x, (out[1] as number) - y) > rxy) continue;
+    const lb = (out[2] as number) - (m.lzphi * hphi + hs);
+    if (lb >= upper - tolMm) {
+      droppedLower = Math.min(droppedLower, lb);
+      continue;
+    }
+    if (rxy < 1e-4) {
+      const sol = solveOver(m, j, k, phic, sc, x, y);
+      if (sol !== null && sol[0] < upper) upper = sol[0];
+      if (lb >= upper - tolMm) {
+        droppedLower = Math.min(droppedLower, lb);
+        continue;
+      }
+    }
+    if (rxy < 1e-13 * (1 + Math.abs(x) + Math.abs(y))) {
+      openLower = Math.min(openLower, lb);
+      continue;
+    }
+    if (m.lphi * hphi >= hs) {
+      stack.push(j, k, phic - hphi / 2, sc, hphi / 2, hs, j, k, phic + hphi / 2, sc, hphi / 2, hs);
+    } else {
+      stack.push(j, k, phic, sc - hs / 2, hphi, hs / 2, j, k, phic, sc + hs / 2, hphi, hs / 2);
+    }
+  }
+  const complete = openLower === Number.POSITIVE_INFINITY || openLower > Number.NEGATIVE_INFINITY;
+  // every rectangle dropped on its height had lb >= the upper bound of its time minus tol
+  const lower = Math.min(upper, droppedLower, openLower);
+  return { lowerBoundMm: lower, heightMm: upper, boundMm: upper - lower, evaluations, complete };
+}
+
+/**
+ * The envelope height at (x, y) certified to `tolMm`: refined from a scatter at `density`, then
+ * bracketed by branch and bound (`certifyAt`). The envelope lies in [lowerBoundMm, heightMm].
+ */
+export function certifiedEnvelopeHeightMm(
+  params: ToothSweepParams,
+  xMm: number,
+  yMm: number,
+  tolMm: number,
+  density = 50,
+): Certificate {
+  const sc = scatterSweep(params, around(xMm, yMm, 0.5 / density), density);
+  const r = refineAt(sc, xMm, yMm);
+  return certifyAt(sc.model, xMm, yMm, r.heightMm, tolMm);
+}
+
 /** A window of half-width `halfMm` about (x, y). */
 const around = (x: number, y: number, halfMm: number): Window => ({
   x0: x - halfMm,
