@@ -84,7 +84,7 @@ describe('validateFinish', () => {
   it('reports every bad field at once and words lengths in the user unit', () => {
     const e = errorsOf({ flutes: 0, fz: 0, runout: -1, passPhase: 2 });
     expect(e.map((x) => x[0])).toEqual(['flutes', 'fz', 'runout', 'passPhase']);
-    expect(describeFinishError({ field: 'fz', code: 'too-large', got: '0.2', limit: 25.4 * 0.125 }, 'inch')).toBe(
+    expect(describeFinishError({ field: 'fz', code: 'too-large', got: '0.2', limit: 25.4 * 0.125 }, 'in')).toBe(
       'Feed per tooth fz must be at most the tool radius R = 0.125 in (got 0.2).',
     );
   });
