@@ -2,6 +2,7 @@
  * Pure solver core: no DOM, no three.js. Runs unchanged in Node, a Web Worker and tests.
  */
 
+export * from './finish/index';
 export * from './input/units';
 export * from './input/validate';
 export * from './output/geometry';

@@ -1,0 +1,217 @@
+/**
+ * The areal parameters of the surface the teeth leave over one period cell (shared/notes/
+ * surface-finish.md, "What is reported"): Sa, Sq, Sz, Sp, Sv, Ssk, Sku about the cell's integral mean
+ * height m, on the primary surface (the design plane the reference). Lengths mm.
+ *
+ * Integration. Along a line y = const the surface is piecewise smooth: each pass's height is smooth
+ * between its valley (an event at the section's lowest point) and its crest (where the first events
+ * on either side are equally high), and the line's height, the least of the passes', has kinks where
+ * two passes cross; |s - m| has kinks where s crosses m. Those points are found (the crests by the
+ * shared maximiser, the crossings by its bracketed root finder) and each smooth piece is integrated
+ * by a 20-point Gauss-Legendre rule. The line integrals are integrated over y by adaptive 10-point
+ * Gauss-Legendre panels, halved until a panel and its halves agree to a relative 1e-10 of the whole.
+ * The lowest point is the continuous contact on the CC path (no runout); the highest is the largest
+ * line maximum over y (the shared maximiser over the cell's width).
+ */
+import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
+import { RUNOUT_NOT_YET } from './feedMarks';
+import { gaussLegendre } from './gaussLegendre';
+import { RowEnvelope } from './rowEnvelope';
+import type { ToothModel } from './toothModel';
+
+/** The areal parameters (ISO 25178-2 names), mm except the dimensionless Ssk and Sku. */
+export interface ArealParameters {
+  readonly saMm: number;
+  readonly sqMm: number;
+  readonly szMm: number;
+  readonly spMm: number;
+  readonly svMm: number;
+  readonly ssk: number;
+  readonly sku: number;
+  /** The cell's mean height m above the design plane, mm. */
+  readonly meanMm: number;
+}
+
+const ROW_RULE = gaussLegendre(20);
+const PANEL_RULE = gaussLegendre(10);
+/** Relative agreement of a y panel with its halves at which it is accepted. */
+const Y_TOL = 1e-9;
+
+/** The breakpoints of a line over one feed period from x0: valleys, crests and crossings of passes. */
+function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
+  const P = m.feedPeriodMm;
+  const into = (x: number) => x0 + ((((x - x0) % P) + P) % P);
+  const breaks = [x0, x0 + P];
+  const n = row.passes.length;
+  for (let i = 0; i < n; i++) {
+    if (!(row.passes[i] as RowEnvelope['passes'][number]).row.reaches) continue;
+    breaks.push(into(row.valleyXMm(i)), into(row.crestXMm(i)));
+  }
+  breaks.sort((a, b) => a - b);
+  if (n > 1) {
+    // Where the lowest pass changes between samples of a piece, the crossing of the two.
+    const pieces = breaks.slice();
+    for (let k = 0; k + 1 < pieces.length; k++) {
+      const a = pieces[k] as number;
+      const b = pieces[k + 1] as number;
+      if (!(b - a > 1e-14 * P)) continue;
+      let prevX = a;
+      let prevLow = lowestPass(row, a + 1e-12 * (b - a));
+      for (let s = 1; s <= 8; s++) {
+        const x = s === 8 ? b - 1e-12 * (b - a) : a + ((b - a) * s) / 8;
+        const low = lowestPass(row, x);
+        if (low !== prevLow && low >= 0 && prevLow >= 0) {
+          const f = { value: (t: number) => row.passHeightAt(prevLow, t) - row.passHeightAt(low, t) };
+          breaks.push(bracketedRoot(f, prevX, x, f.value(prevX), f.value(x), 1e-15));
+        }
+        prevX = x;
+        prevLow = low;
+      }
+    }
+    breaks.sort((a, b) => a - b);
+  }
+  return breaks;
+}
+
+/** Index of the pass lowest at x on the line, -1 when none reaches. */
+function lowestPass(row: RowEnvelope, x: number): number {
+  let best = Number.POSITIVE_INFINITY;
+  let index = -1;
+  for (let i = 0; i < row.passes.length; i++) {
+    const h = row.passHeightAt(i, x);
+    if (h < best) {
+      best = h;
+      index = i;
+    }
+  }
+  return index;
+}
+
+/** The highest point of the line at y over one feed period (mm). */
+function lineMax(m: ToothModel, y: number): number {
+  const row = new RowEnvelope(m, y);
+  const x0 = row.passes.length > 0 ? row.valleyXMm(0) : 0;
+  let max = Number.NEGATIVE_INFINITY;
+  for (const x of lineBreaks(m, row, x0)) max = Math.max(max, row.heightAt(x));
+  return max;
+}
+
+/**
+ * Integrals over one feed period of the line at y: [s, |s - m|, (s - m)^2, (s - m)^3, (s - m)^4] (mm^k
+ * times mm), and the line's maximum. With `mean` NaN only the first is meaningful.
+ */
+function lineIntegrals(m: ToothModel, y: number, mean: number): number[] {
+  const row = new RowEnvelope(m, y);
+  const x0 = row.passes.length > 0 ? row.valleyXMm(0) : 0;
+  const breaks = lineBreaks(m, row, x0);
+  const sums = [0, 0, 0, 0, 0];
+  const addPiece = (a: number, b: number) => {
+    const c = 0.5 * (a + b);
+    const r = 0.5 * (b - a);
+    for (let k = 0; k < ROW_RULE.nodes.length; k++) {
+      const s = row.heightAt(c + r * (ROW_RULE.nodes[k] as number));
+      const w = r * (ROW_RULE.weights[k] as number);
+      sums[0] = (sums[0] as number) + w * s;
+      if (!Number.isNaN(mean)) {
+        const d = s - mean;
+        const d2 = d * d;
+        sums[1] = (sums[1] as number) + w * Math.abs(d);
+        sums[2] = (sums[2] as number) + w * d2;
+        sums[3] = (sums[3] as number) + w * d2 * d;
+        sums[4] = (sums[4] as number) + w * d2 * d2;
+      }
+    }
+  };
+  for (let k = 0; k + 1 < breaks.length; k++) {
+    const a = breaks[k] as number;
+    const b = breaks[k + 1] as number;
+    if (!(b > a)) continue;
+    if (Number.isNaN(mean)) {
+      addPiece(a, b);
+      continue;
+    }
+    // Split where s crosses the mean (|s - m| has a kink there).
+    const cuts = [a];
+    let prevX = a;
+    let prevD = row.heightAt(a) - mean;
+    for (let s = 1; s <= 8; s++) {
+      const x = a + ((b - a) * s) / 8;
+      const d = row.heightAt(x) - mean;
+      if (d > 0 !== prevD > 0 && d !== 0 && prevD !== 0) {
+        const f = { value: (t: number) => row.heightAt(t) - mean };
+        cuts.push(bracketedRoot(f, prevX, x, prevD, d, 1e-15));
+      }
+      prevX = x;
+      prevD = d;
+    }
+    cuts.push(b);
+    for (let c = 0; c + 1 < cuts.length; c++) addPiece(cuts[c] as number, cuts[c + 1] as number);
+  }
+  return sums;
+}
+
+/** Adaptive integral over y in [a, b] of the line integrals (see the module comment). */
+function integrateY(m: ToothModel, a: number, b: number, mean: number, key: number): number[] {
+  const panel = (lo: number, hi: number) => {
+    const c = 0.5 * (lo + hi);
+    const r = 0.5 * (hi - lo);
+    const out = [0, 0, 0, 0, 0];
+    for (let k = 0; k < PANEL_RULE.nodes.length; k++) {
+      const sums = lineIntegrals(m, c + r * (PANEL_RULE.nodes[k] as number), mean);
+      const w = r * (PANEL_RULE.weights[k] as number);
+      for (let i = 0; i < 5; i++) out[i] = (out[i] as number) + w * (sums[i] as number);
+    }
+    return out;
+  };
+  const total = [0, 0, 0, 0, 0];
+  const initial = 4;
+  const whole: Array<[number, number, number[]]> = [];
+  for (let i = 0; i < initial; i++) {
+    const lo = a + ((b - a) * i) / initial;
+    const hi = a + ((b - a) * (i + 1)) / initial;
+    whole.push([lo, hi, panel(lo, hi)]);
+  }
+  const scale = Math.abs(whole.reduce((s, p) => s + (p[2][key] as number), 0)) + 1e-300;
+  let evaluations = 0;
+  while (whole.length > 0) {
+    const [lo, hi, v] = whole.pop() as [number, number, number[]];
+    const mid = 0.5 * (lo + hi);
+    const left = panel(lo, mid);
+    const right = panel(mid, hi);
+    evaluations++;
+    const err = Math.abs((left[key] as number) + (right[key] as number) - (v[key] as number));
+    if (err <= Y_TOL * scale * ((hi - lo) / (b - a)) || hi - lo <= 1e-9 * (b - a) || evaluations > 400) {
+      for (let i = 0; i < 5; i++) total[i] = (total[i] as number) + (left[i] as number) + (right[i] as number);
+    } else {
+      whole.push([lo, mid, left], [mid, hi, right]);
+    }
+  }
+  return total;
+}
+
+/** The areal parameters of a prepared model over one period cell (see the module comment). */
+export function arealParameters(m: ToothModel): ArealParameters {
+  if (m.input.finish.runoutMm > 0) throw new Error(RUNOUT_NOT_YET);
+  const width = m.feedPeriodMm;
+  const height = m.crossPeriodMm;
+  const area = width * height;
+  const mean = (integrateY(m, 0, height, Number.NaN, 0)[0] as number) / area;
+  const sums = integrateY(m, 0, height, mean, 2);
+  const sa = (sums[1] as number) / area;
+  const sq = Math.sqrt(Math.max(0, (sums[2] as number) / area));
+  const low = new RowEnvelope(m, 0).floorMm;
+  const end = newSearchEnd();
+  const high = maximise({ value: (y) => lineMax(m, y) }, 0, height, 24, 1e-12 * height, end);
+  const sp = high - mean;
+  const sv = mean - low;
+  return {
+    saMm: sa,
+    sqMm: sq,
+    szMm: sp + sv,
+    spMm: sp,
+    svMm: sv,
+    ssk: sq > 0 ? (sums[3] as number) / area / (sq * sq * sq) : 0,
+    sku: sq > 0 ? (sums[4] as number) / area / (sq * sq * sq * sq) : 0,
+    meanMm: mean,
+  };
+}

@@ -1,0 +1,337 @@
+/**
+ * The height s(x, y) of the surface the teeth leave (shared/notes/surface-finish.md): the lower
+ * envelope in Z of every position of every tooth's edge, over all time and all passes. Lengths mm.
+ *
+ * Derivation. Fix a pass and a point (x, y) in its local frame (toothModel.ts). At spindle position u
+ * the vertical line through the point meets the body of revolution where the section curve of the
+ * plane y (bodySection.ts) lies, at w = x - u: a boundary point at angle psi about the axis. Tooth k's
+ * edge is the body's meridian at angle theta_k(u) = -omega u + 2 pi k / z, so tooth k cuts the point
+ * at that height exactly when psi = theta_k(u) (mod 2 pi). With u = x - w this reads
+ *
+ *     Phi(w) := psi - omega w  =  -omega x  (mod 2 pi / z):
+ *
+ * the events are the points of the section curve where the continuous function Phi crosses one of
+ * the levels `-omega x + j 2 pi / z`. The curve is convex, so its height rises monotonically from its
+ * lowest point (the continuous model's contact at this y, z = p(y)) in both directions up to its top;
+ * the envelope of this pass is therefore the lower of the first events met walking from the lowest
+ * point in each direction. Walking uses a bound on Phi's rate along the curve: the point moves at
+ * speed |dP/dalpha| (alpha the polar angle of bodySection.ts), so |dw/dalpha| <= |dP/dalpha| and
+ * |dpsi/dalpha| <= |dP/dalpha| / rho (rho its distance from the axis). Where Phi is provably monotone
+ * on a step a level crossed is found by the shared bracketed root finder; elsewhere (near the axis,
+ * where psi turns fast, and near the curve's vertical tangents) the steps are kept short enough that
+ * Phi cannot reach a level and come back. A point of the curve on the axis is the tip, which lies on
+ * every tooth's edge: always an event. The point's height is the least over the passes that reach it.
+ */
+import { NewtonState, newtonStart, newtonStep, type Objective } from '../math/rootFinder';
+import { flankAtWidth } from '../tool/posture';
+import { BodySection, SectionPoint } from './bodySection';
+import type { ToothModel } from './toothModel';
+
+/** Largest polar step, radians. */
+const MAX_STEP_RAD = 0.2;
+/** Levels within this fraction of the pitch count as met (an edge within ~1e-13 rad of the point). */
+const LEVEL_TOL = 1e-13;
+
+/** The section of one pass at one y, prepared for every x of a row. */
+export class PassRow {
+  readonly section: BodySection;
+  /** False when the pass does not reach this y (beyond the end's silhouette). */
+  readonly reaches: boolean;
+  /** Lowest point of the section (the continuous model's contact at this y): w, z. */
+  readonly wStar: number;
+  readonly zStar: number;
+  /** Interior point C of the polar parametrisation. */
+  readonly cw: number;
+  readonly cz: number;
+  readonly bottom = new SectionPoint();
+  /**
+   * Polar angle of the tool's tip (the centre of the flat bottom, on the axis) when the plane passes
+   * through it, else NaN: there psi jumps by pi, and the tip, on every tooth's edge, is an event.
+   */
+  readonly tipAlpha: number;
+  readonly tipZ: number;
+
+  constructor(m: ToothModel, yMm: number) {
+    this.section = new BodySection(m, yMm);
+    const s = m.shape;
+    const flank = yMm >= 0 ? 'right' : 'left';
+    const width = Math.abs(yMm);
+    const reach = flank === 'right' ? m.reachRightMm : m.reachLeftMm;
+    let wStar = 0;
+    if (width < reach && !(s.a === 0 || s.flatOnPlane)) {
+      const p = flankAtWidth(s, flank, width);
+      const t = Math.atan2(s.sinT0, s.cosT0) + (flank === 'right' ? 1 : -1) * p.ringOffsetRad;
+      wStar = m.ringRadiusMm * Math.sqrt(Math.max(0, 1 - m.axis[0] * m.axis[0])) * Math.cos(t);
+    }
+    const below = -1e-3 * m.toolRadiusMm - 2 * m.input.finish.runoutMm - 1e-9;
+    const zStar = width < reach ? this.section.entryZ(wStar, below) : Number.NaN;
+    const zUp = Number.isFinite(zStar) ? this.section.exitZ(wStar, zStar) : Number.NaN;
+    const chord = zUp - zStar;
+    this.reaches = chord > 1e-12 * m.toolRadiusMm;
+    this.wStar = wStar;
+    this.zStar = this.reaches ? zStar : Number.POSITIVE_INFINITY;
+    this.cw = wStar;
+    this.cz = zStar + 0.5 * Math.min(chord, m.toolRadiusMm);
+    if (this.reaches) this.section.pointAt(this.cw, this.cz, -Math.PI / 2, this.bottom);
+    const a = m.axis;
+    const rcr = m.cornerRadiusMm;
+    const tipGap = this.section.yRel + rcr * a[1];
+    const tipW = -rcr * a[0];
+    this.tipZ = m.centreZMm - rcr * a[2];
+    this.tipAlpha =
+      this.reaches && Math.abs(tipGap) <= 1e-14 * m.toolRadiusMm
+        ? Math.atan2(this.tipZ - this.cz, tipW - this.cw)
+        : Number.NaN;
+  }
+}
+
+/** Wraps an angle difference into (-pi, pi]. */
+function wrap(d: number): number {
+  return d - 2 * Math.PI * Math.round(d / (2 * Math.PI));
+}
+
+/** Distance of m from the nearest integer. */
+function distToInt(m: number): number {
+  return Math.abs(m - Math.round(m));
+}
+
+/** The level index function along a step: (psi unwrapped from psi0 - omega w - beta) / pitch - n. */
+class LevelObjective implements Objective {
+  row!: PassRow;
+  psi0 = 0;
+  theta0 = 0;
+  omega = 0;
+  beta = 0;
+  pitch = 0;
+  n = 0;
+  readonly p = new SectionPoint();
+  value(alpha: number): number {
+    const row = this.row;
+    row.section.pointAt(row.cw, row.cz, alpha, this.p);
+    const theta = this.theta0 + wrap(this.p.psi - this.psi0);
+    return (theta - this.omega * this.p.w - this.beta) / this.pitch - this.n;
+  }
+}
+
+const objective = new LevelObjective();
+const newton = new NewtonState();
+const p0 = new SectionPoint();
+const p1 = new SectionPoint();
+
+function copyPoint(from: SectionPoint, to: SectionPoint): void {
+  to.t = from.t;
+  to.w = from.w;
+  to.z = from.z;
+  to.rho = from.rho;
+  to.psi = from.psi;
+  to.speed = from.speed;
+  to.dw = from.dw;
+}
+
+/**
+ * The lowest tooth event of one pass at local x on the row, or `best` when none is lower (mm).
+ * `best` prunes: walking stops where the curve rises to it.
+ */
+export function passEventMinMm(m: ToothModel, row: PassRow, xLocalMm: number, best: number): number {
+  if (!row.reaches || row.zStar >= best) return best;
+  const beta = levelsOffset(m, xLocalMm);
+  if (row.bottom.rho <= 1e-12 * m.toolRadiusMm) return Math.min(best, row.bottom.z);
+  const right = sideEventMm(m, row, beta, 1, best);
+  return sideEventMm(m, row, beta, -1, right);
+}
+
+/** The first event on each side of the lowest point (right: w increasing), unpruned, mm. */
+export function passSideEventsMm(m: ToothModel, row: PassRow, xLocalMm: number): [number, number] {
+  if (!row.reaches) return [Number.POSITIVE_INFINITY, Number.POSITIVE_INFINITY];
+  const beta = levelsOffset(m, xLocalMm);
+  if (row.bottom.rho <= 1e-12 * m.toolRadiusMm) return [row.bottom.z, row.bottom.z];
+  return [
+    sideEventMm(m, row, beta, 1, Number.POSITIVE_INFINITY),
+    sideEventMm(m, row, beta, -1, Number.POSITIVE_INFINITY),
+  ];
+}
+
+/** The levels -omega x + j pitch, as an offset reduced to (-pitch, 0] (omega x can be large). */
+function levelsOffset(m: ToothModel, xLocalMm: number): number {
+  const pitch = m.toothPitchRad;
+  return -((((m.omegaRadPerMm * xLocalMm) % pitch) + pitch) % pitch);
+}
+
+/** The first event walking from the lowest point in direction `dir`, or `best` when none is lower. */
+function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, best: number): number {
+  const omega = m.omegaRadPerMm;
+  const pitch = m.toothPitchRad;
+  const scale = m.toolRadiusMm;
+  const bottom = row.bottom;
+  let tip = row.tipAlpha;
+  if (tip > Math.PI / 2) tip -= 2 * Math.PI;
+  const tipAhead = dir > 0 ? tip >= -Math.PI / 2 : tip < -Math.PI / 2;
+  // Walk to the top, or to the tip when the plane passes through it (an event there).
+  const alphaEnd = tipAhead ? tip : dir > 0 ? Math.PI / 2 : -1.5 * Math.PI;
+  const throughTip = !Number.isNaN(row.tipAlpha);
+  let alpha = -Math.PI / 2;
+  copyPoint(bottom, p0);
+  let theta = p0.psi;
+  let level = (theta - omega * p0.w - beta) / pitch;
+  if (distToInt(level) <= LEVEL_TOL) return Math.min(best, p0.z);
+  let grow = MAX_STEP_RAD;
+  for (let iter = 0; iter < 4000; iter++) {
+    if (p0.rho <= 1e-12 * scale && !throughTip) {
+      best = Math.min(best, p0.z);
+      break;
+    }
+    const s0 = p0.speed;
+    const rate0 = throughTip ? Math.abs(p0.dpsi) + 1e-3 : s0 / p0.rho;
+    let delta = Math.min(MAX_STEP_RAD, grow, (0.5 * pitch) / (1.5 * (s0 * omega + rate0)));
+    let final = false;
+    let alpha1 = alpha;
+    let speed = 0;
+    let rhoLo = 0;
+    let psiRate = 0;
+    let bound = 0;
+    // Shrink the step until the rate bound over it holds (at most half a pitch of Phi).
+    for (let k = 0; k < 200; k++) {
+      final = false;
+      alpha1 = alpha + dir * delta;
+      if (dir * (alpha1 - alphaEnd) >= 0) {
+        alpha1 = alphaEnd;
+        delta = Math.abs(alphaEnd - alpha);
+        final = true;
+      }
+      // At the tip psi is undefined: its limit just before it.
+      const at = final && tipAhead ? alpha1 - dir * 1e-12 : alpha1;
+      row.section.pointAt(row.cw, row.cz, at, p1);
+      if (!Number.isFinite(p1.t)) break;
+      speed = 1.25 * Math.max(s0, p1.speed);
+      rhoLo = Math.min(p0.rho, p1.rho) - speed * delta;
+      // Through the tip the curve crosses the axis transversally: psi is smooth on either side
+      // (its rate bounded by the curvature), and jumps by pi only at the tip itself.
+      psiRate = throughTip
+        ? 2 * Math.max(Math.abs(p0.dpsi), Math.abs(p1.dpsi)) + 1e-3
+        : rhoLo > 0
+          ? speed / rhoLo
+          : Number.POSITIVE_INFINITY;
+      bound = speed * omega + psiRate;
+      if (bound * delta <= 0.5 * pitch || delta <= 1e-15) break;
+      delta = Math.min(0.5 * delta, (0.45 * pitch) / bound);
+    }
+    if (!Number.isFinite(p1.t)) break;
+    grow = 4 * delta;
+    const theta1 = theta + wrap(p1.psi - p0.psi);
+    const level1 = (theta1 - omega * p1.w - beta) / pitch;
+    const monotone = p0.dw * p1.dw > 0 && 0.5 * omega * Math.min(Math.abs(p0.dw), Math.abs(p1.dw)) > psiRate;
+    const n = Math.floor(Math.max(level, level1));
+    const crossed = Math.floor(level) !== Math.floor(level1) || distToInt(level1) <= LEVEL_TOL;
+    if (crossed) {
+      let alphaEvent = alpha1;
+      if (distToInt(level1) > LEVEL_TOL) {
+        objective.row = row;
+        objective.psi0 = p0.psi;
+        objective.theta0 = theta;
+        objective.omega = omega;
+        objective.beta = beta;
+        objective.pitch = pitch;
+        objective.n = n;
+        if (monotone) {
+          // Safeguarded Newton on the level: its slope (dpsi - omega dw) / pitch is at hand.
+          const lo = dir > 0 ? alpha : alpha1;
+          const hi = dir > 0 ? alpha1 : alpha;
+          const gHi = (dir > 0 ? level1 : level) - n;
+          const gLo = (dir > 0 ? level : level1) - n;
+          newtonStart(newton, lo, hi, lo + ((hi - lo) * gLo) / (gLo - gHi));
+          for (let k = 0; k < 60 && !newton.done; k++) {
+            const g = objective.value(newton.x);
+            const slope = (objective.p.dpsi - omega * objective.p.dw) / pitch;
+            newtonStep(newton, g, slope, gHi > 0, 1e-15);
+          }
+          alphaEvent = newton.x;
+          // Stopped on a step below 1e-15 of alpha: the last point evaluated is the event's to
+          // within ~1e-14 mm.
+          if (newton.done) {
+            best = Math.min(best, objective.p.z);
+            break;
+          }
+        } else {
+          // Not provably monotone: bisect on the sign change (a crossing within this short step).
+          let lo = alpha;
+          let hi = alpha1;
+          const fLo = level - n;
+          for (let k = 0; k < 200 && Math.abs(hi - lo) > 1e-16 * Math.max(1, Math.abs(lo)); k++) {
+            const mid = 0.5 * (lo + hi);
+            const f = objective.value(mid);
+            if (f === 0) {
+              lo = mid;
+              hi = mid;
+            } else if (f > 0 === fLo > 0) lo = mid;
+            else hi = mid;
+          }
+          alphaEvent = 0.5 * (lo + hi);
+        }
+      }
+      row.section.pointAt(row.cw, row.cz, alphaEvent, objective.p);
+      best = Math.min(best, objective.p.z);
+      break;
+    }
+    if (!monotone) {
+      const gap = distToInt(level) * pitch;
+      if (bound * delta >= 0.9 * gap) {
+        if (gap <= LEVEL_TOL * pitch || delta <= 1e-15) {
+          best = Math.min(best, p0.z);
+          break;
+        }
+        grow = (0.8 * gap) / bound;
+        continue;
+      }
+    }
+    if (final && tipAhead) {
+      best = Math.min(best, row.tipZ);
+      break;
+    }
+    alpha = alpha1;
+    copyPoint(p1, p0);
+    theta = theta1;
+    level = level1;
+    if (p0.z >= best || final) break;
+  }
+  return best;
+}
+
+/**
+ * Which passes can reach global y, with their local coordinates (see toothModel.ts): `x_local =
+ * sign (x - shift)`.
+ */
+export function passesAt(
+  m: ToothModel,
+  xMm: number,
+  yMm: number,
+  visit: (xLocal: number, yLocal: number, sign: 1 | -1, shiftMm: number) => void,
+): void {
+  const L = m.input.intervalMm;
+  const reach = Math.max(m.reachRightMm, m.reachLeftMm);
+  const shift = m.input.finish.passPhase * m.feedPeriodMm;
+  const zigzag = m.input.pattern === 'zigzag';
+  const jLo = Math.floor((yMm - reach) / L) - 1;
+  const jHi = Math.ceil((yMm + reach) / L) + 1;
+  for (let j = jLo; j <= jHi; j++) {
+    const odd = zigzag && (j & 1) !== 0;
+    const yLocal = odd ? j * L - yMm : yMm - j * L;
+    if (!(yLocal < m.reachRightMm && yLocal > -m.reachLeftMm)) continue;
+    const xShifted = xMm - j * shift;
+    visit(odd ? -xShifted : xShifted, yLocal, odd ? -1 : 1, j * shift);
+  }
+}
+
+/**
+ * The height s(x, y) (mm above the design plane) of the surface the teeth leave at global (x, y):
+ * the least event over every pass that reaches the point (Infinity where none does).
+ */
+export function envelopeHeightMm(m: ToothModel, xMm: number, yMm: number): number {
+  const rows: Array<[number, PassRow]> = [];
+  passesAt(m, xMm, yMm, (xl, yl) => {
+    rows.push([xl, new PassRow(m, yl)]);
+  });
+  rows.sort((p, q) => p[1].zStar - q[1].zStar);
+  let best = Number.POSITIVE_INFINITY;
+  for (const [xl, row] of rows) best = passEventMinMm(m, row, xl, best);
+  return best;
+}

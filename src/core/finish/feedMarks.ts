@@ -1,0 +1,106 @@
+/**
+ * The feed marks along the CC path (shared/notes/surface-finish.md, "What is reported"): their height
+ * `hf` (highest minus lowest height of the surface left along y = y_cc over one period) and period,
+ * and the balanced feed `fz*` at which `hf` equals the scallop `h` of the step-over. Lengths mm.
+ *
+ * Without runout the lowest height along the line is the continuous contact (z = 0 on the CC path):
+ * as x runs over a period the tooth events sweep the section curve, and at the valleys one sits at its
+ * lowest point (rowEnvelope.ts). The highest is the crest between two valleys, where the first events
+ * on either side of the contact are equally high: the maximum over one period from the valley, by the
+ * shared maximiser (a scan, then Brent's method, whose golden steps handle the crest's kink).
+ */
+import type { PassPattern, ToolInput } from '../domain/tool';
+import { inverseInput } from '../input/validate';
+import { bracketedRoot, maximise, newSearchEnd, type Objective } from '../math/rootFinder';
+import { planeInverse } from '../surfaces/exact';
+import type { FinishInput } from './finishInput';
+import { maxFeedPerToothMm } from './finishInput';
+import { RowEnvelope } from './rowEnvelope';
+import { type ToothModel, toothModel } from './toothModel';
+
+/** The feed marks along the CC path. */
+export interface FeedMarks {
+  /** Highest minus lowest height along the CC path over one period, mm (>= 0). */
+  readonly heightMm: number;
+  /** The period along the feed: fz, or z fz with runout, mm. */
+  readonly periodMm: number;
+  /** Lowest and highest height along the CC path, mm above the design plane. */
+  readonly lowMm: number;
+  readonly highMm: number;
+  /** Global x of the highest point (a crest) in [valley, valley + period). */
+  readonly crestXMm: number;
+}
+
+/** The extremes of the surface along a line y = const over one feed period (mm). */
+export function lineExtremes(m: ToothModel, row: RowEnvelope): { low: number; high: number; highX: number } {
+  const P = m.feedPeriodMm;
+  if (row.passes.length === 0) return { low: Number.POSITIVE_INFINITY, high: Number.POSITIVE_INFINITY, highX: 0 };
+  const x0 = row.valleyXMm(0);
+  const low = Math.min(row.floorMm, row.heightAt(x0));
+  if (row.passes.length === 1) {
+    const x = row.crestXMm(0);
+    return { low, high: row.heightAt(x), highX: x };
+  }
+  const f: Objective = { value: (x) => row.heightAt(x) };
+  const end = newSearchEnd();
+  const high = maximise(f, x0, x0 + P, 48, 1e-13 * P + 1e-15, end);
+  return { low, high, highX: end.x };
+}
+
+/** The feed marks of a prepared model along pass 0's CC path (y = 0). */
+export function feedMarks(m: ToothModel): FeedMarks {
+  if (m.input.finish.runoutMm > 0) throw new Error(RUNOUT_NOT_YET);
+  const row = new RowEnvelope(m, 0);
+  const { low, high, highX } = lineExtremes(m, row);
+  return { heightMm: Math.max(0, high - low), periodMm: m.feedPeriodMm, lowMm: low, highMm: high, crestXMm: highX };
+}
+
+/** The refusal while runout is not computed (the model validates it; the solver does not take it yet). */
+export const RUNOUT_NOT_YET = 'Feed marks with runout are not computed yet: give runout 0 (the teeth cut equally).';
+
+/** The balanced feed: fz* or why there is none. */
+export type BalancedFeed =
+  | { readonly ok: true; readonly feedPerToothMm: number; readonly scallopHeightMm: number }
+  | { readonly ok: false; readonly reason: 'no-scallop' | 'marks-below-scallop'; readonly scallopHeightMm: number };
+
+/**
+ * The feed per tooth fz* (mm) at which the feed marks along the CC path are as tall as the scallop
+ * of the step-over `intervalMm` (planeInverse's cusp height h): the root of `sqrt(hf(fz)) - sqrt(h)`
+ * (nearly linear in fz, as hf grows like fz^2) by the shared bracketed root finder, from the ball's
+ * shop estimate `sqrt(8 R h)`. No answer when the step-over leaves no scallop, or when the marks stay
+ * below h for every fz up to its limit R (a ball end at lead 0 drags its tip along the CC path:
+ * hf = 0 there at any feed).
+ * @param finish the finish inputs; its fz is ignored.
+ */
+export function balancedFeed(
+  tool: ToolInput,
+  pattern: PassPattern,
+  intervalMm: number,
+  finish: FinishInput,
+): BalancedFeed {
+  const h = planeInverse(inverseInput(tool, pattern, intervalMm)).cuspHeightMm;
+  if (!(h > 0)) return { ok: false, reason: 'no-scallop', scallopHeightMm: 0 };
+  const root = Math.sqrt(h);
+  const g = (fz: number) =>
+    Math.sqrt(
+      feedMarks(toothModel({ tool, pattern, intervalMm, finish: { ...finish, feedPerToothMm: fz } })).heightMm,
+    ) - root;
+  const fzMax = maxFeedPerToothMm(tool.toolRadiusMm);
+  let lo = Math.min(fzMax, Math.sqrt(8 * tool.toolRadiusMm * h)) / 2;
+  let gLo = g(lo);
+  while (gLo > 0 && lo > 1e-6) {
+    lo /= 4;
+    gLo = g(lo);
+  }
+  let hi = Math.min(fzMax, lo * 4);
+  let gHi = g(hi);
+  while (gHi < 0 && hi < fzMax) {
+    lo = hi;
+    gLo = gHi;
+    hi = Math.min(fzMax, hi * 4);
+    gHi = g(hi);
+  }
+  if (gHi < 0) return { ok: false, reason: 'marks-below-scallop', scallopHeightMm: h };
+  const fz = bracketedRoot({ value: g }, lo, hi, gLo, gHi, 1e-13);
+  return { ok: true, feedPerToothMm: fz, scallopHeightMm: h };
+}

@@ -1,0 +1,205 @@
+/**
+ * The inputs of the surface the teeth leave (shared/notes/surface-finish.md, "The kinematic model"):
+ * the number of teeth, the feed per tooth, the radial runout with its phase and the pass phase, their
+ * limits, and their validation with one-line messages in the style of input/inputErrors.ts (the
+ * constraint and its limit, in the user's unit). Lengths mm, angles degrees.
+ */
+
+import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../input/units';
+import { parseNumber } from '../input/validate';
+
+/** A validated finish input. */
+export interface FinishInput {
+  /** Number of teeth (flutes) `z`: an integer, 1 <= z <= {@link MAX_FLUTES}. */
+  readonly flutes: number;
+  /** Feed per tooth `fz` along the pass, mm: {@link MIN_FEED_PER_TOOTH_MM} <= fz <= the tool radius R. */
+  readonly feedPerToothMm: number;
+  /** Radial runout `e`, mm: 0 <= e <= {@link maxRunoutMm} (0: the teeth cut equally). */
+  readonly runoutMm: number;
+  /** Runout phase `phi_e`: angle of the offset from tooth 0's half-plane, degrees, any finite value. */
+  readonly runoutPhaseDeg: number;
+  /** Pass phase `q` in [0, 1): pass j is shifted along the feed by `j q` feed periods. */
+  readonly passPhase: number;
+}
+
+/** Raw values as they come from a form, a URL or a CSV cell (mm and degrees); missing optional ones are 0. */
+export interface RawFinishInput {
+  readonly flutes: unknown;
+  readonly fz: unknown;
+  readonly runout?: unknown;
+  readonly runoutPhase?: unknown;
+  readonly passPhase?: unknown;
+}
+
+/** The finish fields an error can name. */
+export type FinishField = 'flutes' | 'fz' | 'runout' | 'runoutPhase' | 'passPhase';
+
+/** Why a finish field was rejected. */
+export type FinishErrorCode =
+  | 'missing'
+  | 'not-a-number'
+  | 'not-finite'
+  | 'not-an-integer'
+  | 'not-positive'
+  | 'negative'
+  | 'too-small'
+  | 'too-large'
+  | 'out-of-range';
+
+/** One rejected finish field, as data, with its message in mm. */
+export interface FinishError {
+  readonly field: FinishField;
+  readonly code: FinishErrorCode;
+  /** The value as given, as text. */
+  readonly got: string;
+  /** The bound it broke (mm for lengths, a count for flutes); left out when there is none. */
+  readonly limit?: number;
+  readonly message: string;
+}
+
+/**
+ * Largest number of teeth accepted. Solid end mills have up to about 20 flutes; 64 leaves room for
+ * indexable and special cutters while keeping the per-point work (one search per tooth) bounded.
+ */
+export const MAX_FLUTES = 64;
+
+/**
+ * Smallest feed per tooth accepted, mm (1 nm): the feed marks it leaves (about fz^2 / (8 R)) are far
+ * below anything measurable, and the tooth angles `2 pi w / (z fz)` stay well inside double range.
+ */
+export const MIN_FEED_PER_TOOTH_MM = 1e-6;
+
+/**
+ * Largest feed per tooth accepted: the tool radius R. Beyond it one tooth's bite is wider than half
+ * the tool, the marks would rise towards the corner's top and the period cell would leave the region
+ * where the tool's end (not its shank) cuts; real finishing feeds are a few percent of R.
+ */
+export function maxFeedPerToothMm(toolRadiusMm: number): number {
+  return toolRadiusMm;
+}
+
+/**
+ * Largest radial runout accepted, mm: a tenth of the tool radius. Measured runout of a held end mill
+ * is a few micrometres to some hundredths of a millimetre; a tenth of R is already a broken set-up.
+ */
+export function maxRunoutMm(toolRadiusMm: number): number {
+  return toolRadiusMm / 10;
+}
+
+const LABELS: Record<FinishField, string> = {
+  flutes: 'Flutes z',
+  fz: 'Feed per tooth fz',
+  runout: 'Runout e',
+  runoutPhase: 'Runout phase',
+  passPhase: 'Pass phase q',
+};
+
+/** Whether a finish field is a length (converted to the user's unit in messages). */
+function isLength(field: FinishField): boolean {
+  return field === 'fz' || field === 'runout';
+}
+
+/** The message of a finish error in `unit` (lengths converted; angles in degrees; counts as they are). */
+export function describeFinishError(e: Omit<FinishError, 'message'>, unit: LengthUnit): string {
+  const label = LABELS[e.field];
+  const u = unitSymbol(unit);
+  const value = (v: number) =>
+    isLength(e.field) ? `${formatInputNumber(fromMm(v, unit))} ${u}` : formatInputNumber(v);
+  const limit = e.limit === undefined ? '' : value(e.limit);
+  const shown = e.got.length > 24 ? `${e.got.slice(0, 21)}...` : e.got;
+  const got = `(got ${shown})`;
+  switch (e.code) {
+    case 'missing':
+      return `${label} is missing: enter a number.`;
+    case 'not-a-number':
+      return `${label} must be a number (got "${shown}").`;
+    case 'not-finite':
+      return `${label} must be a finite number ${got}.`;
+    case 'not-an-integer':
+      return `${label} must be a whole number of teeth from 1 to ${MAX_FLUTES} ${got}.`;
+    case 'not-positive':
+      return `${label} must be greater than 0 ${isLength(e.field) ? `${u} ` : ''}${got}.`;
+    case 'negative':
+      return `${label} must be 0 ${u} or more ${got}.`;
+    case 'too-small':
+      return `${label} must be at least ${limit} ${got}.`;
+    case 'too-large':
+      return e.field === 'fz'
+        ? `${label} must be at most the tool radius R = ${limit} ${got}.`
+        : e.field === 'runout'
+          ? `${label} must be at most R/10 = ${limit} ${got}.`
+          : `${label} must be at most ${limit} ${got}.`;
+    case 'out-of-range':
+      return `${label} must be at least 0 and below 1 (a fraction of the feed period) ${got}.`;
+  }
+}
+
+/** A finish error as data, with its message in mm. */
+export function finishError(field: FinishField, code: FinishErrorCode, got: string, limit?: number): FinishError {
+  const data = limit === undefined || !Number.isFinite(limit) ? { field, code, got } : { field, code, got, limit };
+  return { ...data, message: describeFinishError(data, 'mm') };
+}
+
+/** Either the validated finish or its errors (at most one per field). */
+export type FinishValidation =
+  | { readonly ok: true; readonly value: FinishInput }
+  | { readonly ok: false; readonly errors: readonly FinishError[] };
+
+/**
+ * Validates the finish inputs for a tool of radius `toolRadiusMm` (mm, already validated): flutes an
+ * integer in [1, MAX_FLUTES]; fz in [MIN_FEED_PER_TOOTH_MM, R]; runout in [0, R/10] (missing: 0);
+ * runout phase any finite number of degrees (missing: 0); pass phase in [0, 1) (missing: 0).
+ */
+export function validateFinish(raw: RawFinishInput, toolRadiusMm: number): FinishValidation {
+  const errors: FinishError[] = [];
+  const num = (field: FinishField, value: unknown, optional: boolean): { v: number; shown: string } | null => {
+    if (optional && (value === undefined || value === null || (typeof value === 'string' && value.trim() === '')))
+      return { v: 0, shown: '0' };
+    const p = parseNumber(value);
+    if (!p.ok) {
+      errors.push(
+        finishError(
+          field,
+          p.code === 'missing' ? 'missing' : p.code === 'not-finite' ? 'not-finite' : 'not-a-number',
+          p.shown,
+        ),
+      );
+      return null;
+    }
+    return { v: p.value, shown: p.shown };
+  };
+  const z = num('flutes', raw.flutes, false);
+  if (z !== null) {
+    if (!Number.isInteger(z.v) || z.v < 1 || z.v > MAX_FLUTES)
+      errors.push(finishError('flutes', 'not-an-integer', z.shown));
+  }
+  const fz = num('fz', raw.fz, false);
+  if (fz !== null) {
+    if (!(fz.v > 0)) errors.push(finishError('fz', 'not-positive', fz.shown));
+    else if (fz.v < MIN_FEED_PER_TOOTH_MM) errors.push(finishError('fz', 'too-small', fz.shown, MIN_FEED_PER_TOOTH_MM));
+    else if (fz.v > maxFeedPerToothMm(toolRadiusMm))
+      errors.push(finishError('fz', 'too-large', fz.shown, maxFeedPerToothMm(toolRadiusMm)));
+  }
+  const e = num('runout', raw.runout, true);
+  if (e !== null) {
+    if (e.v < 0) errors.push(finishError('runout', 'negative', e.shown));
+    else if (e.v > maxRunoutMm(toolRadiusMm))
+      errors.push(finishError('runout', 'too-large', e.shown, maxRunoutMm(toolRadiusMm)));
+  }
+  const phi = num('runoutPhase', raw.runoutPhase, true);
+  const q = num('passPhase', raw.passPhase, true);
+  if (q !== null && !(q.v >= 0 && q.v < 1)) errors.push(finishError('passPhase', 'out-of-range', q.shown));
+  if (errors.length > 0 || z === null || fz === null || e === null || phi === null || q === null)
+    return { ok: false, errors };
+  return {
+    ok: true,
+    value: {
+      flutes: z.v,
+      feedPerToothMm: fz.v,
+      runoutMm: e.v,
+      // 0 - (-0) would print -0 nowhere, but keep the phase free of -0 all the same.
+      runoutPhaseDeg: phi.v === 0 ? 0 : phi.v,
+      passPhase: q.v === 0 ? 0 : q.v,
+    },
+  };
+}

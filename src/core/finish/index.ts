@@ -1,0 +1,69 @@
+/**
+ * The surface the teeth leave (issue 29, shared/notes/surface-finish.md): feed marks, the balanced
+ * feed, the areal parameters, the height at any point and the areal map, on a plane at any lead and
+ * tilt, one-way and zigzag (and so the three-axis sloped plane, in the posture its slope gives).
+ *
+ * Typical use (lengths mm):
+ *
+ *     const v = validateFinish(raw, tool.toolRadiusMm);           // flutes, fz, runout, phases
+ *     const r = finishReport(tool, 'one-way', intervalMm, v.value);
+ *     r.feedMarks.height; r.feedMarks.period; r.feedMarks.balancedFz; r.areal.Sa ...
+ */
+import type { PassPattern, ToolInput } from '../domain/tool';
+import { arealParameters } from './areal';
+import { balancedFeed, feedMarks } from './feedMarks';
+import type { FinishInput } from './finishInput';
+import { toothModel } from './toothModel';
+
+export * from './areal';
+export * from './arealMap';
+export { envelopeHeightMm } from './envelope';
+export * from './feedMarks';
+export * from './finishInput';
+export * from './finishScope';
+export * from './toothModel';
+
+/** The finish a pass leaves, as the command line's JSON reports it (mm; Ssk, Sku dimensionless). */
+export interface FinishReport {
+  readonly feedMarks: {
+    /** hf along the CC path. */
+    readonly height: number;
+    /** Feed period: fz, or z fz with runout. */
+    readonly period: number;
+    /** fz* (hf = h), or null where there is none (no scallop, or marks below it at every fz). */
+    readonly balancedFz: number | null;
+  };
+  readonly areal: {
+    readonly Sa: number;
+    readonly Sq: number;
+    readonly Sz: number;
+    readonly Sp: number;
+    readonly Sv: number;
+    readonly Ssk: number;
+    readonly Sku: number;
+  };
+}
+
+/**
+ * The feed marks, balanced feed and areal parameters of passes `intervalMm` apart on a plane (tool
+ * and posture validated, L valid for them, finish validated). Throws RUNOUT_NOT_YET with runout > 0.
+ */
+export function finishReport(
+  tool: ToolInput,
+  pattern: PassPattern,
+  intervalMm: number,
+  finish: FinishInput,
+): FinishReport {
+  const m = toothModel({ tool, pattern, intervalMm, finish });
+  const marks = feedMarks(m);
+  const balanced = balancedFeed(tool, pattern, intervalMm, finish);
+  const a = arealParameters(m);
+  return {
+    feedMarks: {
+      height: marks.heightMm,
+      period: marks.periodMm,
+      balancedFz: balanced.ok ? balanced.feedPerToothMm : null,
+    },
+    areal: { Sa: a.saMm, Sq: a.sqMm, Sz: a.szMm, Sp: a.spMm, Sv: a.svMm, Ssk: a.ssk, Sku: a.sku },
+  };
+}

@@ -1,0 +1,91 @@
+/**
+ * The surface the teeth leave along one line y = const of the global frame: every pass that reaches
+ * the line, with its section prepared once (envelope.ts's PassRow), so that many x cost one event
+ * search each. Also where each pass leaves its valleys along the line: an event at the section's
+ * lowest point, where the bottom's level `(Phi_b + omega x) / pitch` is a whole number. Lengths mm.
+ */
+import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
+import { PassRow, passEventMinMm, passesAt, passSideEventsMm } from './envelope';
+import type { ToothModel } from './toothModel';
+
+/** One pass on the line: its row and how global x maps to its local x (`sign (x - shift)`). */
+interface PassOnLine {
+  readonly row: PassRow;
+  readonly sign: 1 | -1;
+  readonly shiftMm: number;
+}
+
+/** The passes that reach a line y = const, ordered by their lowest point (nearest CC path first). */
+export class RowEnvelope {
+  readonly m: ToothModel;
+  readonly yMm: number;
+  readonly passes: readonly PassOnLine[];
+  /** Lowest point of the continuous surface on this line (the least of the passes' contacts), mm. */
+  readonly floorMm: number;
+
+  constructor(m: ToothModel, yMm: number) {
+    this.m = m;
+    this.yMm = yMm;
+    const list: PassOnLine[] = [];
+    passesAt(m, 0, yMm, (_x, yLocal, sign, shiftMm) => {
+      list.push({ row: new PassRow(m, yLocal), sign, shiftMm });
+    });
+    list.sort((p, q) => p.row.zStar - q.row.zStar);
+    this.passes = list;
+    this.floorMm = list.length > 0 ? (list[0] as PassOnLine).row.zStar : Number.POSITIVE_INFINITY;
+  }
+
+  /** s(x, y) on this line, mm (Infinity where no pass reaches). */
+  heightAt(xMm: number): number {
+    let best = Number.POSITIVE_INFINITY;
+    for (const p of this.passes) best = passEventMinMm(this.m, p.row, p.sign * (xMm - p.shiftMm), best);
+    return best;
+  }
+
+  /** The height of one pass alone at x (mm). */
+  passHeightAt(index: number, xMm: number): number {
+    const p = this.passes[index] as PassOnLine;
+    return passEventMinMm(this.m, p.row, p.sign * (xMm - p.shiftMm), Number.POSITIVE_INFINITY);
+  }
+
+  /**
+   * A global x where pass `index` leaves a valley on this line (an event at its section's lowest
+   * point); the others are `fz` apart. Without runout the valleys are the line's lowest points.
+   */
+  valleyXMm(index: number): number {
+    const p = this.passes[index] as PassOnLine;
+    const m = this.m;
+    const b = p.row.bottom;
+    const phiB = b.psi - m.omegaRadPerMm * b.w;
+    // Local x where (phiB + omega x) / pitch is a whole number (the one nearest 0).
+    const xLocal = (-phiB - m.toothPitchRad * Math.round(-phiB / m.toothPitchRad)) / m.omegaRadPerMm;
+    return p.shiftMm + p.sign * xLocal;
+  }
+
+  /**
+   * The global x of pass `index`'s crest in the period after its valley `valleyXMm(index)`: where the
+   * first events on either side of the section's lowest point are equally high (the right one rises
+   * and the left one falls as x runs over the period), by the shared bracketed root finder; the
+   * shared maximiser where that difference does not change sign (a pass that never meets its
+   * levels on one side).
+   */
+  crestXMm(index: number): number {
+    const p = this.passes[index] as PassOnLine;
+    const P = this.m.feedPeriodMm;
+    const v = this.valleyXMm(index);
+    const f = {
+      value: (x: number) => {
+        const [r, l] = passSideEventsMm(this.m, p.row, p.sign * (x - p.shiftMm));
+        return p.sign * (r - l);
+      },
+    };
+    const a = v + 1e-9 * P;
+    const b = v + P - 1e-9 * P;
+    const fa = f.value(a);
+    const fb = f.value(b);
+    if (fa < 0 && fb > 0 && Number.isFinite(fa) && Number.isFinite(fb)) return bracketedRoot(f, a, b, fa, fb, 1e-15);
+    const end = newSearchEnd();
+    maximise({ value: (x) => this.passHeightAt(index, x) }, v, v + P, 16, 1e-13 * P, end);
+    return end.x;
+  }
+}

@@ -1,0 +1,114 @@
+/**
+ * The envelope s(x, y) (src/core/finish/envelope.ts) against the independent tooth-sweep brute force
+ * (tests/support/reference/toothSweepBruteForce.ts: edges sampled in rotation and arc length,
+ * scattered onto a grid, refined by Newton, with a rigorous bracket). Stratified random over ball,
+ * flat and bull-nose; lead 0, small and general; tilt 0 and of both signs; one-way and zigzag;
+ * 1 to 5 flutes; pass phase. Only postures and step-overs the continuous model accepts (a scallop
+ * height below the flank and shank limits: validateForward). No runout (not computed yet).
+ */
+import { describe, expect, it } from 'vitest';
+import { envelopeHeightMm, toothModel } from '../../../src/core/finish/index';
+import { seededRandom } from '../../../src/core/math/seededRandom';
+import { planeIntervalMm } from '../../../src/core/surfaces/exact';
+import { scallopHeightLimits, validateForward } from '../../../src/core/surfaces/validate';
+import { bruteEnvelopeHeightMm, type ToothSweepParams } from '../../support/reference/toothSweepBruteForce';
+
+const DEG = Math.PI / 180;
+type Kind = 'ball' | 'flat' | 'bull';
+
+interface Case {
+  readonly label: string;
+  readonly tool: { toolRadiusMm: number; cornerRadiusMm: number; leadAngleDeg: number; tiltAngleDeg: number };
+  readonly pattern: 'one-way' | 'zigzag';
+  readonly intervalMm: number;
+  readonly flutes: number;
+  readonly fzMm: number;
+  readonly passPhase: number;
+}
+
+/** One case per stratum (kind x lead class x tilt class x pattern), drawn from `seed`. */
+function cases(seed: number): Case[] {
+  const r = seededRandom(seed);
+  const out: Case[] = [];
+  const kinds: Kind[] = ['ball', 'flat', 'bull'];
+  const leads = ['zero', 'small', 'general'] as const;
+  const tilts = ['none', 'plus', 'minus'] as const;
+  let n = 0;
+  for (const kind of kinds) {
+    for (const lead of leads) {
+      const tilt = tilts[n % 3] as (typeof tilts)[number];
+      const pattern = n % 2 === 0 ? 'one-way' : 'zigzag';
+      n++;
+      // A flat end at lead 0 cuts a step (tilted) or leaves no scallop (upright): no flank to test.
+      if (kind === 'flat' && lead === 'zero') continue;
+      for (let attempt = 0; attempt < 50; attempt++) {
+        const R = 1 + 5 * r();
+        const Rcr = kind === 'ball' ? R : kind === 'flat' ? 0 : R * (0.1 + 0.7 * r());
+        const rho = lead === 'zero' ? 0 : lead === 'small' ? 0.05 + 1.5 * r() : 3 + 30 * r();
+        const beta = tilt === 'none' ? 0 : (tilt === 'plus' ? 1 : -1) * (1 + 25 * r());
+        const raw = { R, Rcr, rho, tilt: beta, pattern, h: 1 };
+        const limits = validateForward({ ...raw, h: 1e-3 });
+        if (!limits.ok) continue;
+        const hMax = scallopHeightLimits(limits.value, limits.value.surface).limitMm;
+        const v = validateForward({ ...raw, h: hMax * (0.02 + 0.5 * r()) });
+        if (!v.ok) continue;
+        out.push({
+          label: `${kind} lead ${lead} tilt ${tilt} ${pattern}`,
+          tool: { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, tiltAngleDeg: beta },
+          pattern,
+          intervalMm: planeIntervalMm(v.value),
+          flutes: 1 + Math.floor(5 * r()),
+          fzMm: 0.01 + 0.15 * r(),
+          passPhase: r() < 0.5 ? 0 : r(),
+        });
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+function bruteParams(c: Case): ToothSweepParams {
+  return {
+    radiusMm: c.tool.toolRadiusMm,
+    cornerRadiusMm: c.tool.cornerRadiusMm,
+    leadRad: c.tool.leadAngleDeg * DEG,
+    tiltRad: c.tool.tiltAngleDeg * DEG,
+    pattern: c.pattern,
+    stepOverMm: c.intervalMm,
+    flutes: c.flutes,
+    fzMm: c.fzMm,
+    runoutMm: 0,
+    runoutPhaseRad: 0,
+    passPhase: c.passPhase,
+  };
+}
+
+describe('envelope height against the tooth-sweep brute force', () => {
+  it('agrees within 1e-9 mm over the strata, inside the brute force bracket (seed 2901)', () => {
+    const r = seededRandom(2902);
+    let worst = 0;
+    for (const c of cases(2901)) {
+      const m = toothModel({
+        tool: c.tool,
+        pattern: c.pattern,
+        intervalMm: c.intervalMm,
+        finish: { flutes: c.flutes, feedPerToothMm: c.fzMm, runoutMm: 0, runoutPhaseDeg: 0, passPhase: c.passPhase },
+      });
+      // A point of the period cell (every third on the CC path y = 0, where hf is measured); with
+      // zigzag also one on the reversed pass's CC path (y = L).
+      const ys = [r() < 1 / 3 ? 0 : r() * m.crossPeriodMm];
+      if (c.pattern === 'zigzag') ys.push(c.intervalMm * (1 + 0.2 * (r() - 0.5)));
+      for (const y of ys) {
+        const x = r() * 2 * m.feedPeriodMm;
+        const mine = envelopeHeightMm(m, x, y);
+        const brute = bruteEnvelopeHeightMm(bruteParams(c), x, y, 80);
+        const err = Math.abs(mine - brute.heightMm);
+        worst = Math.max(worst, err);
+        expect(err, `${c.label} at (${x}, ${y}): ${mine} vs ${brute.heightMm}`).toBeLessThan(1e-9);
+        expect(mine).toBeGreaterThanOrEqual(brute.lowerBoundMm - 1e-9);
+      }
+    }
+    expect(worst).toBeLessThan(1e-9);
+  });
+});
