@@ -3,11 +3,15 @@
  * Pure (no I/O). Values are kept as typed, so `--rho -5` reaches validation and its message.
  */
 
-import { CLI_OPTIONS, type CliOption, cliFlag, THREE_AXIS_FIELDS } from '../core/input/fields';
+import { CLI_OPTIONS, type CliOption, cliFlag, FINISH_FIELD_IDS, THREE_AXIS_FIELDS } from '../core/input/fields';
 import type { ThreeAxisQuantity } from '../core/threeAxis/validate';
+import { readPair, X3P_DEFAULT_SIZE, X3P_MAX_CELLS, X3P_MAX_POINTS } from './x3pOption';
 
-/** The command line's settings that take a value but are no field: the length unit. */
-export const SETTING_OPTIONS = ['unit'] as const;
+/**
+ * The command line's settings that take a value but are no field: the length unit, and the x3p
+ * file of the surface the teeth leave (its path, its grid's points and its period cells).
+ */
+export const SETTING_OPTIONS = ['unit', 'x3p', 'x3p-size', 'x3p-cells'] as const;
 
 /** The words `--unit` takes: every length in and out in mm or in inches. */
 export const CLI_LENGTH_UNITS = ['mm', 'inch'] as const;
@@ -154,6 +158,8 @@ export function parseArgs(args: readonly string[]): Request {
     return { kind: 'batch', values };
   }
   const json = flags.has('json');
+  const teeth = finishUsage(values, flags);
+  if (teeth !== null) return usage(teeth);
   if (flags.has('slope-sweep')) return slopeSweepRequest(values, flags, json);
   if (values.slope !== undefined) return threeAxisRequest(values, flags, json);
   // The principal radii are also a five-axis surface (a doubly curved point): not three-axis only.
@@ -212,6 +218,42 @@ export function parseArgs(args: readonly string[]): Request {
   if (flags.has('inverse') || hasInterval || hasHalf) return { kind: 'inverse', json, simulate, values, half: hasHalf };
   return { kind: hasRa ? 'ra' : 'forward', json, simulate, values };
 }
+
+/**
+ * The finish options (issue 29: --flutes, --fz, --runout, --runout-phase, --pass-phase; the field
+ * registry's finish fields): the feed marks need both the teeth and their feed; the slope sweep does
+ * not take them (it answers step-overs only). Null when they are fine (or not given).
+ */
+function finishUsage(
+  values: Readonly<Partial<Record<ValueOption, string>>>,
+  flags: ReadonlySet<string>,
+): string | null {
+  const given = FINISH_OPTIONS.filter((o) => values[o] !== undefined);
+  if (given.length === 0) {
+    const x3p = (['x3p', 'x3p-size', 'x3p-cells'] as const).find((o) => values[o] !== undefined);
+    return x3p === undefined
+      ? null
+      : `--${x3p} needs --flutes <N> and --fz <mm>: the file holds the surface the teeth leave`;
+  }
+  if (values.x3p === undefined) {
+    const grid = (['x3p-size', 'x3p-cells'] as const).find((o) => values[o] !== undefined);
+    if (grid !== undefined) return `--${grid} needs --x3p <file>: it sets the grid of the file written`;
+  } else if (values.x3p.trim() === '') return '--x3p needs the path of the file to write';
+  const size = readPair('x3p-size', values['x3p-size'], X3P_DEFAULT_SIZE, X3P_MAX_POINTS);
+  if (!size.ok) return size.error;
+  const cells = readPair('x3p-cells', values['x3p-cells'], [1, 1], X3P_MAX_CELLS);
+  if (!cells.ok) return cells.error;
+  const missing = (['flutes', 'fz'] as const).filter((o) => values[o] === undefined);
+  if (missing.length > 0) {
+    return `--${given[0]} needs ${missing.map((o) => (o === 'flutes' ? '--flutes <N>' : '--fz <mm>')).join(' and ')}: the feed marks need the number of teeth and the feed per tooth`;
+  }
+  if (flags.has('slope-sweep'))
+    return `--${given[0]} does not go with --slope-sweep: the sweep answers the step-over only`;
+  return null;
+}
+
+/** The finish fields' options, in the registry's order. */
+const FINISH_OPTIONS: readonly ValueOption[] = FINISH_FIELD_IDS.map((id) => cliFlag(id).slice(2) as ValueOption);
 
 /** Each three-axis field's option (the field registry's). */
 const FIELD_OPTION = Object.fromEntries(THREE_AXIS_FIELDS.map((id) => [id, cliFlag(id).slice(2)])) as Record<

@@ -27,7 +27,7 @@ import {
   doublyCurvedForward,
   doublyCurvedInverse,
 } from '../core/surfaces/doublyCurved/index';
-import { exactInverse } from '../core/surfaces/solve';
+import { exactForward, exactInverse } from '../core/surfaces/solve';
 import type { ValueOption } from './args';
 import {
   emptyResults,
@@ -42,9 +42,11 @@ import {
   REQUIRED_COLUMNS,
 } from './batchHeader';
 import { CsvReader, type CsvRecord, csvText, isNumberText } from './csv';
+import { finishCells } from './finish';
 import { lengthText } from './lengthInput';
 import { describeSystemError, errorLine, escapeControls, FLUSH_CHARS, type Output } from './output';
 import {
+  type Answer,
   answer,
   answerThreeAxis,
   type Question,
@@ -194,19 +196,42 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
     const words = wordErrors(a, q, layout.unit, recordValues(fields, layout, true)).map((w) => w.message);
     return errorRow(echo, layout, words.join(' '));
   }
-  if (a.kind === 'pass-inverse') return `${echo},${inverseResults(exactInverse(a.input), layout.unit)},,\n`;
+  // The finish's cells (none without finish columns; empty without teeth), or the row's error.
+  let teeth = '';
+  if (layout.finish) {
+    const cells =
+      a.kind === 'pass-forward' || a.kind === 'pass-inverse'
+        ? finishCells(
+            values,
+            a.input,
+            a.input.pattern,
+            passInterval(a),
+            a.input.surface.kind,
+            layout.unit,
+            recordValues(fields, layout, true),
+          )
+        : finishCells(values, null, 'one-way', 0, 'doublyCurved', layout.unit);
+    if (!cells.ok) return errorRow(echo, layout, cells.message);
+    teeth = cells.text;
+  }
+  if (a.kind === 'pass-inverse') return `${echo},${inverseResults(exactInverse(a.input), layout.unit)},${teeth},\n`;
   if (a.kind === 'doubly-inverse') {
     const e = doublyCurvedInverse({ ...a.problem, intervalMm: a.problem.valueMm });
-    return `${echo},${inverseResults(e, layout.unit)},,\n`;
+    return `${echo},${inverseResults(e, layout.unit)},${teeth},\n`;
   }
   const hMm = a.kind === 'pass-forward' ? a.input.scallopHeightMm : a.scallopHeightMm;
   const length = lengthWriter(layout.unit);
   const h = a.targetRaMm === undefined ? '' : `${length(hMm)},`;
   if (a.kind === 'doubly-forward') {
     const notes = emptyCellNotes(forwardInput(a.problem, a.problem.pattern, a.scallopHeightMm)).join(' ');
-    return `${echo},${h}${doublyCurvedResults(a.problem, a.scallopHeightMm, layout.unit)},${csvText(notes)},\n`;
+    return `${echo},${h}${doublyCurvedResults(a.problem, a.scallopHeightMm, layout.unit)},${csvText(notes)}${teeth},\n`;
   }
-  return `${echo},${h}${resultFields(a.input, length)},\n`;
+  return `${echo},${h}${resultFields(a.input, length)}${teeth},\n`;
+}
+
+/** The step-over of a plane or cylinder row: the exact one for h (or Ra), the given one for L. */
+function passInterval(a: Extract<Answer, { kind: 'pass-forward' | 'pass-inverse' }>): number {
+  return a.kind === 'pass-inverse' ? a.input.intervalMm : exactForward(a.input).intervalMm;
 }
 
 /** A length result's text in the run's unit (from its double, as csvNumber writes it). */
@@ -274,10 +299,33 @@ function threeAxisRow(values: QuestionValues, fields: readonly string[], layout:
     return errorRow(echo, layout, words.join(' '));
   }
   const a = r.answer;
+  let teeth = '';
+  if (layout.finish) {
+    // The sloped plane is a plane in the posture the slope gives; every pass fed the same way.
+    const c = r.problem.case;
+    const tool = {
+      toolRadiusMm: c.toolRadiusMm,
+      cornerRadiusMm: c.cornerRadiusMm,
+      leadAngleDeg: a.leadDeg,
+      tiltAngleDeg: a.tiltDeg,
+    };
+    const kind = r.problem.surface === 'plane' ? 'slopedPlane' : 'waterlineRevolution';
+    const cells = finishCells(
+      values,
+      tool,
+      'one-way',
+      a.intervalMm,
+      kind,
+      layout.unit,
+      recordValues(fields, layout, true),
+    );
+    if (!cells.ok) return errorRow(echo, layout, cells.message);
+    teeth = cells.text;
+  }
   const note = a.noScallop ? 'no scallop: a flat end on a flat floor, L = 2R for any h' : '';
   const stepDown = a.stepDownMm === null ? '' : csvNumber(a.stepDownMm);
   const lengths = inUnit([csvNumber(a.intervalMm), csvNumber(a.horizontalStepMm), stepDown], layout.unit);
-  return `${echo},${lengths},${csvNumber(a.leadDeg)},${csvNumber(a.tiltDeg)},${csvText(note)},\n`;
+  return `${echo},${lengths},${csvNumber(a.leadDeg)},${csvNumber(a.tiltDeg)},${csvText(note)}${teeth},\n`;
 }
 
 /**

@@ -3,6 +3,7 @@
  * rule a header must follow, and the layout a header gives (where each column is, what is echoed).
  */
 import {
+  CSV_FINISH_COLUMNS,
   CSV_OPTIONAL_COLUMNS,
   CSV_REQUIRED_COLUMNS,
   CSV_TARGET_COLUMNS,
@@ -38,6 +39,26 @@ const INPUT_COLUMNS: readonly InputColumn[] = [
   ...TARGET_COLUMNS,
   ...OPTIONAL_COLUMNS,
   ...RADIUS_COLUMNS,
+  ...CSV_FINISH_COLUMNS,
+];
+
+/**
+ * The finish's result columns (issue 29), written when the header has a finish column (flutes, fz,
+ * runout, runoutPhase, passPhase): the feed-mark height along the CC path, its period, the balanced
+ * feed fz*, and the areal parameters over one period cell; before `error`. Empty where a row gives
+ * no teeth (flutes and fz empty) or where there is none (no balanced feed).
+ */
+export const FINISH_RESULT_COLUMNS = [
+  'feedMarkHeight',
+  'feedPeriod',
+  'balancedFz',
+  'Sa',
+  'Sq',
+  'Sz',
+  'Sp',
+  'Sv',
+  'Ssk',
+  'Sku',
 ];
 
 /** The scallop height's, the target roughness's and the step-over's columns (h, Ra, L). */
@@ -80,6 +101,8 @@ export interface Layout {
   readonly target: InputColumn;
   /** True for a header with a `slope` column: three-axis rows ({@link THREE_AXIS_RESULT_COLUMNS}). */
   readonly threeAxis: boolean;
+  /** True for a header with a finish column: the {@link FINISH_RESULT_COLUMNS} are written. */
+  readonly finish: boolean;
   /** The run's length unit (`--unit`): of the columns that name none, and of the results. */
   readonly unit: LengthUnit;
   /** The unit each length column names in the header (`R_in`, `h_mm`); absent: the run's. */
@@ -106,6 +129,7 @@ const THREE_AXIS_ECHOED: readonly InputColumn[] = [
   ...REQUIRED_COLUMNS.filter((c) => c !== csvColumnOf('rho')),
   H_COLUMN,
   ...CSV_THREE_AXIS_COLUMNS,
+  ...CSV_FINISH_COLUMNS,
 ];
 const THREE_AXIS_INPUT_COLUMNS: readonly InputColumn[] = [
   ...THREE_AXIS_ECHOED,
@@ -117,7 +141,12 @@ const THREE_AXIS_INPUT_COLUMNS: readonly InputColumn[] = [
 export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN}, or the step-over ${L_COLUMN}, in place of ${H_COLUMN}) in any order, optionally with ${listed([...OPTIONAL_COLUMNS, ...RADIUS_COLUMNS])} (and the output columns, which are ignored); or, for three-axis machining, R,Rcr,h,${SLOPE_COLUMN} optionally with ${listed(CSV_THREE_AXIS_COLUMNS.filter((c) => c !== SLOPE_COLUMN))}`;
 
 /** Result columns a header may hold (an output read back): ignored, computed again. */
-const IGNORED_COLUMNS: readonly string[] = RESULT_COLUMNS;
+const IGNORED_COLUMNS: readonly string[] = [...RESULT_COLUMNS, ...FINISH_RESULT_COLUMNS];
+
+/** True when a header's columns include a finish column. */
+function hasFinish(index: Readonly<Partial<Record<InputColumn, number>>>): boolean {
+  return CSV_FINISH_COLUMNS.some((c) => index[c] !== undefined);
+}
 
 /**
  * The header's names with their units read (the page's lookup table names them: `R_mm`, `R_in`,
@@ -214,7 +243,17 @@ export function parseHeader(
   const columnUnits = columnUnitsOf(index, plain.units);
   return {
     ok: true,
-    layout: { width: names.length, names, echoed, index, target, threeAxis: false, unit, columnUnits },
+    layout: {
+      width: names.length,
+      names,
+      echoed,
+      index,
+      target,
+      threeAxis: false,
+      finish: hasFinish(index),
+      unit,
+      columnUnits,
+    },
   };
 }
 
@@ -229,7 +268,10 @@ function parseThreeAxisHeader(
   const problems: string[] = [];
   const tiltIsResult = names.includes('lead');
   names.forEach((name, i) => {
-    if (THREE_AXIS_RESULT_COLUMNS.includes(name) && (name !== 'tilt' || tiltIsResult)) {
+    if (
+      (THREE_AXIS_RESULT_COLUMNS.includes(name) && (name !== 'tilt' || tiltIsResult)) ||
+      FINISH_RESULT_COLUMNS.includes(name)
+    ) {
       if (ignored.has(name)) problems.push(`column ${name} appears twice`);
       ignored.add(name);
       return;
@@ -250,19 +292,35 @@ function parseThreeAxisHeader(
   const columnUnits = columnUnitsOf(index, units);
   return {
     ok: true,
-    layout: { width: names.length, names, echoed, index, target: H_COLUMN, threeAxis: true, unit, columnUnits },
+    layout: {
+      width: names.length,
+      names,
+      echoed,
+      index,
+      target: H_COLUMN,
+      threeAxis: true,
+      finish: hasFinish(index),
+      unit,
+      columnUnits,
+    },
   };
 }
 
 /** The result columns of a layout: with a target Ra, the scallop height `h` that leaves it comes first. */
 export function resultColumns(layout: Layout): readonly string[] {
-  if (layout.threeAxis) return THREE_AXIS_RESULT_COLUMNS;
-  if (layout.target === L_COLUMN) return INVERSE_RESULT_COLUMNS;
-  return layout.target === RA_COLUMN ? [H_COLUMN, ...RESULT_COLUMNS] : RESULT_COLUMNS;
+  const base = layout.threeAxis
+    ? THREE_AXIS_RESULT_COLUMNS
+    : layout.target === L_COLUMN
+      ? INVERSE_RESULT_COLUMNS
+      : layout.target === RA_COLUMN
+        ? [H_COLUMN, ...RESULT_COLUMNS]
+        : RESULT_COLUMNS;
+  // The finish's columns go before `error`, which stays last.
+  return layout.finish ? [...base.slice(0, -1), ...FINISH_RESULT_COLUMNS, 'error'] : base;
 }
 
 /** Result columns that are no length: the angles of three-axis rows and the text columns. */
-const NOT_LENGTH_RESULTS: ReadonlySet<string> = new Set(['lead', 'tilt', 'note', 'error']);
+const NOT_LENGTH_RESULTS: ReadonlySet<string> = new Set(['lead', 'tilt', 'note', 'error', 'Ssk', 'Sku']);
 
 /** True for a result column that holds a length (in the run's unit). */
 export function isLengthResult(column: string): boolean {

@@ -2,6 +2,7 @@
  * Command line: quick lookup, JSON for scripts, the inverse, and CSV batch lookup tables.
  * All lengths in mm and angles in degrees, as at the solver core's public edge.
  */
+import { writeFileSync } from 'node:fs';
 import type { Readable, Writable } from 'node:stream';
 import {
   type AnyFieldName,
@@ -11,8 +12,10 @@ import {
   exactRoughness,
   exactRoughnessAtInterval,
   type PassInput,
+  type PassPattern,
   SimulationTooLargeError,
   simulatePasses,
+  type ToolInput,
 } from '../core/index';
 import { cliFlag } from '../core/input/fields';
 import type { LengthUnit } from '../core/input/units';
@@ -28,6 +31,18 @@ import {
   doublyCurvedInverseJson,
   doublyCurvedInverseTable,
 } from './doublyCurvedReport';
+import {
+  type FinishError,
+  type FinishRun,
+  finishErrorOption,
+  finishErrorWords,
+  finishJson,
+  finishLines,
+  finishOf,
+  finishRequested,
+  finishScopeRefusal,
+  THREE_AXIS_FINISH_NOTE,
+} from './finish';
 import { unitOfText, valuesInMm } from './lengthInput';
 import { describeSystemError, errorLine, escapeControls, isClosedPipe, Output } from './output';
 import {
@@ -51,9 +66,11 @@ import {
   type SimulationRun,
 } from './report';
 import { sweepSlopes } from './slopeSweep';
+import { lengthsIn } from './table';
 import { slopeSweepJson, slopeSweepTable, threeAxisJson, threeAxisTable } from './threeAxisReport';
 import { jsonInUnit } from './unitJson';
 import { USAGE } from './usage';
+import { X3P_DEFAULT_SIZE, x3pOfFinish } from './x3pOption';
 
 /** The help text (usage.ts), re-exported for the callers. */
 export { USAGE };
@@ -115,10 +132,82 @@ export function errorJson(e: AnyInputError, option: string, message: string): Er
 
 type Values = Readonly<Partial<Record<ValueOption, string>>>;
 
-/** What the options ask besides the answer: the output form and a simulation. */
+/** What the options ask besides the answer: the output form and a simulation; the options as typed. */
 interface Wanted {
   readonly json: boolean;
   readonly simulate: boolean;
+  readonly typed: Values;
+}
+
+/**
+ * With --x3p: the areal surface of a computed finish written to the file (args.ts checked the grid
+ * options); the finish with its file named, or 1 when the file cannot be written (said on stderr).
+ */
+function withX3p(
+  run: Extract<FinishRun, { ok: true }>,
+  tool: ToolInput,
+  pattern: PassPattern,
+  intervalMm: number,
+  values: Values,
+  io: Io,
+): NonNullable<Extras['finish']> | number {
+  const file = values.x3p;
+  if (file === undefined) return run;
+  const pair = (text: string | undefined, fallback: readonly [number, number]) =>
+    (text?.split(/[,x]/i).map(Number) as unknown as readonly [number, number] | undefined) ?? fallback;
+  const f = run.input;
+  const comment =
+    `Surface left by ${f.flutes} straight teeth (M3), fz ${f.feedPerToothMm} mm, runout ${f.runoutMm} mm at ${f.runoutPhaseDeg} deg, ` +
+    `pass phase ${f.passPhase}: R ${tool.toolRadiusMm} mm, Rcr ${tool.cornerRadiusMm} mm, lead ${tool.leadAngleDeg} deg, ` +
+    `tilt ${tool.tiltAngleDeg} deg, ${pattern}, step-over ${intervalMm} mm, on a plane (path-interval)`;
+  const { bytes, facts } = x3pOfFinish(
+    tool,
+    pattern,
+    intervalMm,
+    f,
+    pair(values['x3p-size'], X3P_DEFAULT_SIZE),
+    pair(values['x3p-cells'], [1, 1]),
+    comment,
+  );
+  try {
+    writeFileSync(file, bytes);
+  } catch (e) {
+    io.stderr.write(errorLine(`cannot write the x3p file ${escapeControls(cut(file))}: ${describeSystemError(e)}`));
+    return 1;
+  }
+  return { ...run, x3p: { file, facts } };
+}
+
+/** The refusal of the finish options on a doubly curved point. */
+function doublyScope(): FinishError {
+  return finishScopeRefusal('doublyCurved');
+}
+
+/** Finish input errors on stderr, one line each named by its option (and as JSON with --json); exit code 2. */
+function reportFinishErrors(
+  io: Io,
+  out: Output,
+  errors: readonly FinishError[],
+  json: boolean,
+  unit: LengthUnit,
+  typed: Values,
+): number {
+  const worded = errors.map((e) => {
+    const option = finishErrorOption(e);
+    const words = finishErrorWords(e, unit, typed);
+    io.stderr.write(errorLine(`${option}: ${words}`));
+    const given = typed[option.slice(2) as ValueOption]?.trim();
+    return {
+      field: e.field,
+      option,
+      code: e.code,
+      got: escapeControls(cut(given ?? e.got)),
+      ...(e.limit === undefined ? {} : { limit: e.limit }),
+      message: escapeControls(words),
+    };
+  });
+  if (json) writeJson(out, unit === 'mm' ? { errors: worded } : { unit: 'mm', errors: worded }, unit);
+  return 2;
 }
 
 /**
@@ -141,17 +230,35 @@ function writeJson(out: Output, value: { [key: string]: JsonValue }, unit: Lengt
   out.write(`${JSON.stringify(jsonInUnit(value, unit))}\n`);
 }
 
-/** Writes a solved question (question.ts): a table or JSON. */
-function writeAnswer(a: Extract<Answer, { ok: true }>, wanted: Wanted, out: Output, unit: LengthUnit): number {
+/** Writes a solved question (question.ts): a table or JSON; with the finish options, their errors (exit 2). */
+function writeAnswer(
+  a: Extract<Answer, { ok: true }>,
+  wanted: Wanted,
+  io: Io,
+  out: Output,
+  unit: LengthUnit,
+  values: Values,
+): number {
   const json = wanted.json;
+  /** The finish's extras (none without its options), or its errors reported (a number: the exit code). */
+  const finish = (input: PassInput, intervalMm: number, surfaceKind: string): Extras | number => {
+    if (!finishRequested(values)) return {};
+    const run = finishOf(values, input, input.pattern, intervalMm, surfaceKind);
+    if (!run.ok) return reportFinishErrors(io, out, run.errors, json, unit, wanted.typed);
+    const written = withX3p(run, input, input.pattern, intervalMm, values, io);
+    return typeof written === 'number' ? written : { finish: written };
+  };
   switch (a.kind) {
     case 'pass-forward': {
       const input = a.input;
       const c = compareForward(input);
+      const teeth = finish(input, c.exact.intervalMm, input.surface.kind);
+      if (typeof teeth === 'number') return teeth;
       const extras: Extras = {
         roughness: exactRoughness(input, c.exact),
         ...(a.targetRaMm === undefined ? {} : { targetRaMm: a.targetRaMm }),
         ...(wanted.simulate ? { simulation: simulate(input, c.exact.intervalMm) } : {}),
+        ...teeth,
       };
       if (json) writeJson(out, forwardJson(c, extras), unit);
       else out.write(`${forwardTable(c, extras, unit)}\n`);
@@ -160,15 +267,19 @@ function writeAnswer(a: Extract<Answer, { ok: true }>, wanted: Wanted, out: Outp
     case 'pass-inverse': {
       const input = a.input;
       const c = compareInverse(input);
+      const teeth = finish(input, input.intervalMm, input.surface.kind);
+      if (typeof teeth === 'number') return teeth;
       const extras: Extras = {
         roughness: exactRoughnessAtInterval(input, input.pattern, c.exact, input.surface),
         ...(wanted.simulate ? { simulation: simulate(input, input.intervalMm) } : {}),
+        ...teeth,
       };
       if (json) writeJson(out, inverseJson(c, extras), unit);
       else out.write(`${inverseTable(c, extras, unit)}\n`);
       return 0;
     }
     case 'doubly-inverse': {
+      if (finishRequested(values)) return reportFinishErrors(io, out, [doublyScope()], json, unit, wanted.typed);
       const p = a.problem;
       const e = doublyCurvedInverse({ ...p, intervalMm: p.valueMm });
       const r = doublyCurvedRoughnessAtInterval(doublyCurvedSolver(p, p), p.pattern, e);
@@ -177,6 +288,7 @@ function writeAnswer(a: Extract<Answer, { ok: true }>, wanted: Wanted, out: Outp
       return 0;
     }
     case 'doubly-forward': {
+      if (finishRequested(values)) return reportFinishErrors(io, out, [doublyScope()], json, unit, wanted.typed);
       const p = a.problem;
       const h = a.scallopHeightMm;
       const c = compareDoublyCurved({ ...p, scallopHeightMm: h });
@@ -200,7 +312,7 @@ function question(request: Request & { kind: 'forward' | 'ra' | 'inverse' }, io:
   // args.ts refuses a cylinder beside the principal radii before a question is asked.
   if (a === null) throw new Error(SURFACE_TWICE);
   if (!a.ok) return reportErrors(io, out, wordErrors(a, q, unit, request.values), request.json, unit);
-  return writeAnswer(a, request, out, unit);
+  return writeAnswer(a, { ...request, typed: request.values }, io, out, unit, q.values);
 }
 
 /** A three-axis input error as a stderr line (and JSON): named by its option, the registry's. */
@@ -238,8 +350,32 @@ function threeAxis(values: Values, quantity: ThreeAxisQuantity, json: boolean, i
   const r = answerThreeAxis(valuesInMm(values, unit), quantity);
   if (!r.ok) return reportThreeAxisErrors(io, out, r.errors, r.passes, json, unit, values);
   const { problem, answer: a } = r;
-  if (json) writeJson(out, threeAxisJson(problem, a), unit);
-  else out.write(`${threeAxisTable(problem, a, unit)}\n`);
+  let teeth: Extras['finish'];
+  if (finishRequested(values)) {
+    // The sloped plane is a plane in the posture the slope gives; every pass fed the same way.
+    const tool: ToolInput = {
+      toolRadiusMm: problem.case.toolRadiusMm,
+      cornerRadiusMm: problem.case.cornerRadiusMm,
+      leadAngleDeg: a.leadDeg,
+      tiltAngleDeg: a.tiltDeg,
+    };
+    const kind = problem.surface === 'plane' ? 'slopedPlane' : 'waterlineRevolution';
+    const mm = valuesInMm(values, unit);
+    const run = finishOf(mm, tool, 'one-way', a.intervalMm, kind);
+    if (!run.ok) return reportFinishErrors(io, out, run.errors, json, unit, values);
+    const written = withX3p(run, tool, 'one-way', a.intervalMm, mm, io);
+    if (typeof written === 'number') return written;
+    teeth = written;
+  }
+  if (json)
+    writeJson(out, { ...threeAxisJson(problem, a), ...(teeth ? finishJson(teeth.report, teeth.x3p) : {}) }, unit);
+  else {
+    const finish =
+      teeth === undefined
+        ? ''
+        : `\n\n${[...finishLines(teeth, a.cuspHeightMm, lengthsIn(unit)), '', THREE_AXIS_FINISH_NOTE].join('\n')}`;
+    out.write(`${threeAxisTable(problem, a, unit)}${finish}\n`);
+  }
   return 0;
 }
 

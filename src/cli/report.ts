@@ -19,6 +19,7 @@ import {
   type Surface,
 } from '../core/index';
 import type { LengthUnit } from '../core/input/units';
+import { finishLines } from './finish';
 import { type Extras, flankFacts, indent, KEY_VALUE, roughnessLines, simulationLines, toolKind } from './reportExtras';
 import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
 
@@ -249,6 +250,7 @@ function tablesAndExtras(
   if (extras.simulation !== undefined) {
     out.push('', ...simulationLines(extras.simulation, exactCuspHeightMm, extras.roughness, L));
   }
+  if (extras.finish !== undefined) out.push('', ...finishLines(extras.finish, exactCuspHeightMm, L));
   if (notes.lines.length > 0) out.push('', ...notes.lines);
   return out.join('\n');
 }

@@ -2,8 +2,10 @@
  * The extras of a case's report (report.ts): the roughness block with the rule of thumb beside it,
  * and the simulation block with its stated bounds. Lengths mm.
  */
+import type { FinishInput, FinishReport } from '../core/finish/index';
 import { type Roughness, raRuleOfThumbMm, type SimulationResult } from '../core/index';
 import { type Column, type Lengths, lengthsIn, percent, renderTable } from './table';
+import type { X3pFacts } from './x3pOption';
 
 /** A simulation of the passes and its wall-clock time, or why it was not run. */
 export type SimulationRun =
@@ -17,6 +19,13 @@ export interface Extras {
   /** The target Ra (mm) the scallop height was solved for (--ra). */
   readonly targetRaMm?: number;
   readonly simulation?: SimulationRun;
+  /** The surface the teeth leave (--flutes, --fz: feed marks and areal parameters). */
+  readonly finish?: {
+    readonly input: FinishInput;
+    readonly report: FinishReport;
+    /** The x3p file written (--x3p): its path and grid. */
+    readonly x3p?: { readonly file: string; readonly facts: X3pFacts };
+  };
 }
 
 /** The rule of thumb Ra ~ h/4 beside the exact Ra: its value and its error (null % when Ra = 0). */

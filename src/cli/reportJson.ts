@@ -14,6 +14,7 @@ import {
 } from '../core/index';
 import { PASS_FIELDS } from '../core/input/fields';
 import { rawOf } from '../core/input/raw';
+import { finishJson } from './finish';
 import { type Extras, ruleOfThumb } from './reportExtras';
 
 /** JSON data: numbers are always finite; a value that does not exist is left out, never null. */
@@ -41,6 +42,7 @@ export function extrasJson(extras: Extras, scallopHeightMm: number): JsonObject 
     if (thumb.deviationPercent !== null) rule.deviationPercent = thumb.deviationPercent;
     out.raRuleOfThumb = rule;
   }
+  if (extras.finish !== undefined) Object.assign(out, finishJson(extras.finish.report, extras.finish.x3p));
   const sim = extras.simulation;
   if (sim !== undefined && !sim.ok) out.simulation = { notApplicable: sim.notApplicable };
   else if (sim !== undefined) {

@@ -54,6 +54,17 @@ export const LENGTH_MEMBERS: ReadonlySet<string> = new Set([
   'cuspAtProgrammedStep',
   'heldMm',
   'radiusMm',
+  // The surface the teeth leave (feedMarks, areal).
+  'height',
+  'period',
+  'balancedFz',
+  'Sa',
+  'Sq',
+  'Sz',
+  'Sp',
+  'Sv',
+  'dx',
+  'dy',
 ]);
 
 /** Members that hold a number that is no length (angles in degrees, percentages, counts, times). */
@@ -71,6 +82,12 @@ export const OTHER_NUMBER_MEMBERS: ReadonlySet<string> = new Set([
   'ms',
   'cellsAcross',
   'cellsAlong',
+  'Ssk',
+  'Sku',
+  'nx',
+  'ny',
+  'cellsX',
+  'cellsY',
 ]);
 
 function convert(value: JsonValue, unit: LengthUnit, isLength: boolean, input = false): JsonValue {

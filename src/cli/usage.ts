@@ -45,6 +45,13 @@ radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
   --simulate            also simulate the passes (the tool solid over a 512 x 512 height field;
                         a plane only) and show its cusp height and roughness beside the exact ones
   --json                print one JSON object instead of a table
+  --flutes <N>          the surface the teeth leave (a plane, any lead and tilt): N straight teeth,
+  --fz <mm>             each advancing fz (M3); adds the feed-mark height hf along the CC path, its
+                        period, the balanced feed fz* (hf = h) and the areal parameters Sa, Sq, Sz,
+                        Sp, Sv, Ssk, Sku over one period cell (JSON: feedMarks, areal)
+  --runout <mm>         with --flutes and --fz: radial runout e (default 0; at most R/10)
+  --runout-phase <deg>  its direction from tooth 0's half-plane (default 0)
+  --pass-phase <q>      each pass shifted along the feed by q (0 <= q < 1) of the feed period
   --unit <u>            mm (default) or inch: every length in and out in that unit (the table,
                         JSON and the batch; JSON names it in "unit"). Any length may be typed
                         as the shop writes it: a fraction and a unit suffix (1/2", .030in, 5um,

@@ -44,7 +44,9 @@ export type FinishErrorCode =
   | 'negative'
   | 'too-small'
   | 'too-large'
-  | 'out-of-range';
+  | 'out-of-range'
+  /** The surface is one where feed marks are not computed yet (finishScope.ts words it). */
+  | 'not-computed-here';
 
 /** One rejected finish field, as data, with its message in mm. */
 export interface FinishError {
@@ -131,6 +133,8 @@ export function describeFinishError(e: Omit<FinishError, 'message'>, unit: Lengt
           : `${label} must be at most ${limit} ${got}.`;
     case 'out-of-range':
       return `${label} must be at least 0 and below 1 (a fraction of the feed period) ${got}.`;
+    case 'not-computed-here':
+      return 'Feed marks are not computed on this surface yet: only on a plane (any lead and tilt, one-way or zigzag) and the three-axis sloped plane.';
   }
 }
 

@@ -17,10 +17,11 @@
  */
 
 /**
- * How a field is measured: a length (mm inside), an angle (degrees), one word of a list, or a
- * name (plain text, cleaned as hostile: a tool's name).
+ * How a field is measured: a length (mm inside), an angle (degrees), one word of a list, a
+ * name (plain text, cleaned as hostile: a tool's name), or a plain number without a unit (a count
+ * of teeth, a fraction of a period).
  */
-export type FieldKind = 'length' | 'angle' | 'enum' | 'text';
+export type FieldKind = 'length' | 'angle' | 'enum' | 'text' | 'number';
 
 /**
  * What a field is:
@@ -30,9 +31,11 @@ export type FieldKind = 'length' | 'angle' | 'enum' | 'text';
  * - `alias`: another form of a field (the diameter D of R, the half step-over L/2 of L);
  * - `threeAxis`: three-axis machining (issue 20: the tool upright, the surface sloped), its
  *   surface, passes and programmed steps; validated by core/threeAxis/validate.ts;
+ * - `finish`: the teeth and their feed (issue 29: the surface the teeth leave, feed marks and areal
+ *   parameters); validated by core/finish/finishInput.ts;
  * - `page`: a setting of the page only (unit, mode, view...), in its URL and embed element.
  */
-export type FieldGroup = 'tool' | 'pass' | 'quantity' | 'alias' | 'threeAxis' | 'page';
+export type FieldGroup = 'tool' | 'pass' | 'quantity' | 'alias' | 'threeAxis' | 'finish' | 'page';
 
 /** The fixed bounds of a number (mm or degrees); null where another field or the posture sets it. */
 export interface FieldRange {
@@ -47,11 +50,12 @@ export interface FieldRange {
 
 /**
  * A column of the batch's CSV: required (R, Rcr, rho), the target (h or Ra), optional (a default
- * when absent or empty), or three-axis (a header with `slope` selects three-axis machining).
+ * when absent or empty), three-axis (a header with `slope` selects three-axis machining), or finish
+ * (the teeth and their feed: a row with flutes and fz gets its feed marks and areal parameters).
  */
 export interface CsvColumnSpec {
   readonly column: string;
-  readonly role: 'required' | 'target' | 'optional' | 'threeAxis';
+  readonly role: 'required' | 'target' | 'optional' | 'threeAxis' | 'finish';
 }
 
 /** Everything the registry says of one field. */
@@ -388,6 +392,78 @@ export const FIELDS = {
     embed: 'dz',
     page: 'dz',
   },
+  /** The surface the teeth leave (issue 29; shared/notes/surface-finish.md): the number of teeth. */
+  flutes: {
+    short: 'z',
+    core: 'flutes',
+    kind: 'number',
+    group: 'finish',
+    label: 'Flutes z',
+    range: { min: 1, max: 64, minIncluded: true, maxIncluded: true, rule: 'a whole number of teeth, 1 <= z <= 64' },
+    url: null,
+    cli: 'flutes',
+    csv: { column: 'flutes', role: 'finish' },
+    embed: null,
+    page: null,
+  },
+  fz: {
+    short: 'fz',
+    core: 'feedPerToothMm',
+    kind: 'length',
+    group: 'finish',
+    label: 'Feed per tooth fz',
+    range: { min: 1e-6, max: null, minIncluded: true, maxIncluded: true, rule: '1e-6 mm <= fz <= R' },
+    url: null,
+    cli: 'fz',
+    csv: { column: 'fz', role: 'finish' },
+    embed: null,
+    page: null,
+  },
+  runout: {
+    short: 'e',
+    core: 'runoutMm',
+    kind: 'length',
+    group: 'finish',
+    label: 'Runout e',
+    range: { min: 0, max: null, minIncluded: true, maxIncluded: true, rule: '0 <= e <= R/10 (default 0)' },
+    url: null,
+    cli: 'runout',
+    csv: { column: 'runout', role: 'finish' },
+    embed: null,
+    page: null,
+  },
+  runoutPhase: {
+    short: 'phi_e',
+    core: 'runoutPhaseDeg',
+    kind: 'angle',
+    group: 'finish',
+    label: 'Runout phase',
+    range: {
+      min: null,
+      max: null,
+      minIncluded: true,
+      maxIncluded: true,
+      rule: 'any finite angle in degrees from tooth 0 (default 0)',
+    },
+    url: null,
+    cli: 'runout-phase',
+    csv: { column: 'runoutPhase', role: 'finish' },
+    embed: null,
+    page: null,
+  },
+  passPhase: {
+    short: 'q',
+    core: 'passPhase',
+    kind: 'number',
+    group: 'finish',
+    label: 'Pass phase q',
+    range: { min: 0, max: 1, minIncluded: true, maxIncluded: false, rule: '0 <= q < 1 of the feed period (default 0)' },
+    url: null,
+    cli: 'pass-phase',
+    csv: { column: 'passPhase', role: 'finish' },
+    embed: null,
+    page: null,
+  },
   unit: pageSetting('unit', 'Unit', ['mm', 'in'] as const),
   /** The machine: five-axis (lead and tilt given) or three-axis (the tool upright, the slope sets them; issue 20). */
   machine: pageSetting('machine', 'Machine', ['5axis', '3axis'] as const),
@@ -512,6 +588,10 @@ export const CSV_TARGET_COLUMNS = csvColumns('target');
 export const CSV_OPTIONAL_COLUMNS = csvColumns('optional');
 /** The batch's three-axis columns (slope, passes, rasterAngle, feedRadius, crossRadius), in the order they are echoed. */
 export const CSV_THREE_AXIS_COLUMNS = csvColumns('threeAxis');
+/** The finish fields (issue 29): the teeth and their feed, in the registry's order. */
+export const FINISH_FIELD_IDS: readonly FieldId[] = idsWhere((s) => s.group === 'finish');
+/** The optional finish columns (issue 29): a row with flutes and fz gets feed marks and areal parameters. */
+export const CSV_FINISH_COLUMNS = csvColumns('finish');
 
 /** The three-axis fields (slope, passes, raster angle, the surface's radii, the programmed steps), in order. */
 export type ThreeAxisFieldName = { [K in FieldId]: Fields[K]['group'] extends 'threeAxis' ? K : never }[FieldId];
