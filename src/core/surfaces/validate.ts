@@ -36,6 +36,7 @@ import {
 } from '../input/validate';
 import type { FlankLimits } from '../tool/posture';
 import { leavesNoScallop } from './models/plane';
+import { leadAngleInRange, tiltAngleInRange } from './modes/fiveAxis';
 import { type SurfaceDescriptor, surfaceModel } from './registry';
 
 type Collected = {
@@ -72,8 +73,9 @@ function checkTool(c: Collected): void {
     if (Rcr < 0) reject(c, 'Rcr', 'negative');
     else if (c.values.R !== undefined && Rcr > c.values.R) reject(c, 'Rcr', 'corner-exceeds-radius', c.values.R);
   }
-  if (rho !== undefined && !(rho >= 0 && rho < 90)) reject(c, 'rho', 'out-of-range');
-  if (tilt !== undefined && !(tilt > -90 && tilt < 90)) reject(c, 'tilt', 'out-of-range');
+  // The posture's angle rules are the five-axis mode's (one place).
+  if (rho !== undefined && !leadAngleInRange(rho)) reject(c, 'rho', 'out-of-range');
+  if (tilt !== undefined && !tiltAngleInRange(tilt)) reject(c, 'tilt', 'out-of-range');
 }
 
 function checkPattern(raw: unknown, errors: InputError[]): PassPattern | null {
