@@ -5,20 +5,9 @@
  * the bounds, just inside and outside them, and at stratified random angles (seed 2727).
  */
 import { describe, expect, it } from 'vitest';
+import { seededRandom } from '../../../src/core/math/seededRandom';
 import { validateQuestion } from '../../../src/core/surfaces/question';
 import { validateForward } from '../../../src/core/surfaces/validate';
-
-/** A small deterministic generator (mulberry32). */
-function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 const accepts = {
   validate: (rho: number, tilt: number) => {
@@ -57,7 +46,7 @@ describe('five-axis angle ranges: one rule for the validation and the mode (seed
   });
 
   it('stratified random angles from -180 to 180 degrees: both agree (seed 2727)', () => {
-    const next = random(2727);
+    const next = seededRandom(2727);
     for (let i = 0; i < 400; i++) {
       // Ten strata across [-180, 180) for each angle.
       const rho = -180 + 36 * (i % 10) + 36 * next();
