@@ -5,9 +5,13 @@
 
 import { CLI_OPTIONS, type CliOption, cliFlag, THREE_AXIS_FIELDS } from '../core/input/fields';
 import type { ThreeAxisQuantity } from '../core/threeAxis/validate';
+import { type RegistryKinds, registryKinds } from './registryOptions';
 
-/** The command line's settings that take a value but are no field: the length unit. */
-export const SETTING_OPTIONS = ['unit'] as const;
+/**
+ * The command line's settings that take a value but are no field: the length unit, and the machine
+ * mode and surface kind named from their registries (registryOptions.ts).
+ */
+export const SETTING_OPTIONS = ['unit', 'machine', 'surface'] as const;
 
 /** The words `--unit` takes: every length in and out in mm or in inches. */
 export const CLI_LENGTH_UNITS = ['mm', 'inch'] as const;
@@ -59,6 +63,17 @@ export type Request =
       readonly kind: 'slopeSweep';
       readonly json: boolean;
       readonly values: Readonly<Partial<Record<ValueOption, string>>>;
+    }
+  | {
+      /**
+       * --machine or --surface naming a registered mode or surface the product's own paths do not
+       * answer: the one question over the registries (core surfaces/question.ts), given --h or --interval.
+       */
+      readonly kind: 'question';
+      readonly json: boolean;
+      readonly values: Readonly<Partial<Record<ValueOption, string>>>;
+      readonly kinds: RegistryKinds;
+      readonly quantity: 'h' | 'interval';
     }
   | { readonly kind: 'usage'; readonly error: string };
 
@@ -154,6 +169,15 @@ export function parseArgs(args: readonly string[]): Request {
     return { kind: 'batch', values };
   }
   const json = flags.has('json');
+  // --machine and --surface: a registered mode and surface; the product's must match the other options.
+  const named = registryKinds(values, flags);
+  if (typeof named === 'string') return usage(named);
+  if (named !== null) {
+    const quantity = (['h', 'interval'] as const).filter((q) => values[q] !== undefined);
+    if (quantity.length !== 1)
+      return usage(`--machine ${named.modeName} over --surface ${named.surface} takes --h <mm> or --interval <mm>`);
+    return { kind: 'question', json, values, kinds: named, quantity: quantity[0] ?? 'h' };
+  }
   if (flags.has('slope-sweep')) return slopeSweepRequest(values, flags, json);
   if (values.slope !== undefined) return threeAxisRequest(values, flags, json);
   // The principal radii are also a five-axis surface (a doubly curved point): not three-axis only.

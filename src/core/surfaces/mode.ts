@@ -110,9 +110,11 @@ export interface OwnAnswer<M extends ModeDescriptorBase> {
 export interface MachineMode<M extends ModeDescriptorBase> {
   /** The descriptor kind it answers (the registry's key). */
   readonly kind: M['kind'];
+  /** The word a user names it by (the command line's `--machine 5-axis`); its kind when absent. */
+  readonly name?: string;
   /**
    * The numbers its descriptor takes from the user, for the builders of a question over the
-   * registries (ui/questionRequest.ts); the product's modes are built by the page's own switches.
+   * registries (ui/questionRequest.ts, the command line's --machine): the fields that give them.
    */
   readonly parameters?: readonly QuestionParameter[];
   /** The surface kinds it has a posture on; null: every registered surface. */

@@ -48,6 +48,11 @@ function check(mode: FiveAxisMode): ModeError[] {
 /** The five-axis mode. */
 export const fiveAxisMode: MachineMode<FiveAxisMode> = {
   kind: 'fiveAxis',
+  name: '5-axis',
+  parameters: [
+    { name: 'leadAngleDeg', field: 'rho' },
+    { name: 'tiltAngleDeg', field: 'tilt' },
+  ],
   surfaceKinds: null,
   check,
   posture: (mode, pattern) => ({ leadAngleDeg: mode.leadAngleDeg, tiltAngleDeg: mode.tiltAngleDeg, pattern }),
