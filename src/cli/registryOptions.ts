@@ -1,14 +1,15 @@
 /**
  * The command line's `--machine <mode>` and `--surface <kind>` (issue 27 point 3): a machine mode
  * named from the mode registry (core surfaces/modes.ts: `5-axis`, `3-axis` and any mode registered
- * since) and a surface kind from the surface registry (surfaces/registry.ts: `plane`, `cylinder`,
+ * since, by its name or kind) and a surface kind from the surface registry (surfaces/registry.ts: `plane`, `cylinder`,
  * `doublyCurved`, ...). Both are optional and every older option keeps its meaning: the product's
  * modes and surfaces only name what the other options give (three-axis is `--slope`, a cylinder
  * `--surface-radius`, a doubly curved point both principal radii), and a mismatch is a usage error
  * in one line; a registered mode or surface the product's own paths do not answer is asked as the
  * one question over the registries (cli/question.ts answerRegistryQuestion). Pure.
  */
-import { findModeByName, modeName, modeNames, PRODUCT_MODE_KINDS } from '../core/surfaces/modes';
+import type { MachineMode, ModeDescriptorBase } from '../core/surfaces/mode';
+import { findMode, modeKinds, productModeKinds } from '../core/surfaces/modes';
 import { findSurfaceModel, SURFACE_KINDS, surfaceKinds } from '../core/surfaces/registry';
 
 /** The mode and surface a question over the registries is asked of. */
@@ -20,6 +21,25 @@ export interface RegistryKinds {
 }
 
 type Values = Readonly<Partial<Record<string, string>>>;
+
+/** The words the product's modes are named by (mode.ts `name` for any other, else its kind). */
+const PRODUCT_MODE_NAMES: Readonly<Record<string, string>> = { fiveAxis: '5-axis', threeAxis: '3-axis' };
+
+/** The word a user names a mode of this kind by. */
+export function modeName(kind: string): string {
+  return PRODUCT_MODE_NAMES[kind] ?? findMode(kind)?.name ?? kind;
+}
+
+/** The registered modes' names, in registration order (what `--machine` takes). */
+export function modeNames(): readonly string[] {
+  return modeKinds().map(modeName);
+}
+
+/** The mode a user names (by its name, or its kind), or null when none is registered. */
+function findModeByName(name: string): MachineMode<ModeDescriptorBase> | null {
+  const kind = modeKinds().find((k) => modeName(k) === name) ?? name;
+  return findMode(kind);
+}
 
 /** A name as a usage error quotes it (a kind is short: longer text is cut). */
 function quoted(text: string): string {
@@ -59,12 +79,12 @@ export function registryKinds(values: Values, flags: ReadonlySet<string>): Regis
     return `--machine must be one of ${modeNames().join(', ')} (got ${quoted(machine)})`;
   if (surface !== undefined && findSurfaceModel(surface) === null)
     return `--surface must be one of ${surfaceKinds().join(', ')} (got ${quoted(surface)})`;
-  const productMode = mode === null || (PRODUCT_MODE_KINDS as readonly string[]).includes(mode.kind);
+  const productMode = mode === null || (productModeKinds() as readonly string[]).includes(mode.kind);
   const productSurface = surface === undefined || (SURFACE_KINDS as readonly string[]).includes(surface);
   if (!productMode || !productSurface)
     return {
       mode: mode?.kind ?? 'fiveAxis',
-      modeName: mode === null ? '5-axis' : modeName(mode),
+      modeName: modeName(mode?.kind ?? 'fiveAxis'),
       surface: surface ?? 'plane',
     };
   const threeAxis = values.slope !== undefined || flags.has('slope-sweep');

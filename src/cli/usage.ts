@@ -3,8 +3,8 @@
  * It names each option as the field registry does (tests/fieldRegistry.test.ts checks it).
  */
 
-import { modeNames } from '../core/surfaces/modes';
 import { SURFACE_KINDS } from '../core/surfaces/registry';
+import { modeNames } from './registryOptions';
 
 /** The help text of the command line. */
 export const USAGE = `Usage: path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --h <mm> [--json] [--simulate]

@@ -110,7 +110,11 @@ export interface OwnAnswer<M extends ModeDescriptorBase> {
 export interface MachineMode<M extends ModeDescriptorBase> {
   /** The descriptor kind it answers (the registry's key). */
   readonly kind: M['kind'];
-  /** The word a user names it by (the command line's `--machine 5-axis`); its kind when absent. */
+  /**
+   * The word a user names it by (the command line's `--machine`); its kind when absent. The
+   * product's modes are named by the command line itself (cli/registryOptions.ts), so that their
+   * words stay out of the page's scripts.
+   */
   readonly name?: string;
   /**
    * The numbers its descriptor takes from the user, for the builders of a question over the

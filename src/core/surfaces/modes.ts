@@ -21,26 +21,13 @@ export type ModeDescriptor = DescriptorOf<(typeof MODES)[number]>;
 const LIST: MachineMode<ModeDescriptorBase>[] = [...(MODES as unknown as readonly MachineMode<ModeDescriptorBase>[])];
 
 /** The product's own mode kinds (the page's machine switch and the command line's own paths answer them). */
-export const PRODUCT_MODE_KINDS: readonly ModeDescriptor['kind'][] = MODES.map((m) => m.kind);
+export function productModeKinds(): readonly ModeDescriptor['kind'][] {
+  return MODES.map((m) => m.kind);
+}
 
 /** The registered kinds, in registration order. */
 export function modeKinds(): readonly string[] {
   return LIST.map((m) => m.kind);
-}
-
-/** The word a user names a mode by (mode.ts `name`; its kind when it has none). */
-export function modeName(mode: MachineMode<ModeDescriptorBase>): string {
-  return mode.name ?? mode.kind;
-}
-
-/** The registered modes' names, in registration order (what `--machine` takes). */
-export function modeNames(): readonly string[] {
-  return LIST.map(modeName);
-}
-
-/** The mode a user names (by its name, or its kind), or null when none is registered. */
-export function findModeByName(name: string): MachineMode<ModeDescriptorBase> | null {
-  return LIST.find((m) => modeName(m) === name) ?? LIST.find((m) => m.kind === name) ?? null;
 }
 
 /** The mode of a descriptor kind, or null when none is registered. */

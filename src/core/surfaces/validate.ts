@@ -10,6 +10,7 @@
 import type { ForwardInput, InverseInput, PassInput } from '../domain/pass';
 import { PLANE, type Surface, type SurfaceAxis } from '../domain/surface';
 import type { PassPattern, ToolInput } from '../domain/tool';
+import { leadAngleInRange, tiltAngleInRange } from '../input/angleRanges';
 import type { FieldName } from '../input/fields';
 import {
   type AnyFieldName,
@@ -36,7 +37,6 @@ import {
 } from '../input/validate';
 import type { FlankLimits } from '../tool/posture';
 import { leavesNoScallop } from './models/plane';
-import { leadAngleInRange, tiltAngleInRange } from './modes/fiveAxis';
 import { type SurfaceDescriptor, surfaceModel } from './registry';
 
 type Collected = {
@@ -73,7 +73,7 @@ function checkTool(c: Collected): void {
     if (Rcr < 0) reject(c, 'Rcr', 'negative');
     else if (c.values.R !== undefined && Rcr > c.values.R) reject(c, 'Rcr', 'corner-exceeds-radius', c.values.R);
   }
-  // The posture's angle rules are the five-axis mode's (one place).
+  // The posture's angle rules, stated once (input/angleRanges.ts; the five-axis mode asks them too).
   if (rho !== undefined && !leadAngleInRange(rho)) reject(c, 'rho', 'out-of-range');
   if (tilt !== undefined && !tiltAngleInRange(tilt)) reject(c, 'tilt', 'out-of-range');
 }

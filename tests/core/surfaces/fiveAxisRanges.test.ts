@@ -1,13 +1,22 @@
 /**
- * The five-axis posture's angle ranges are stated once (modes/fiveAxis.ts, from the field
- * registry's rho and tilt ranges): the page's and command line's validation (surfaces/validate.ts)
- * and the five-axis mode of the one question (question.ts) accept and refuse the same angles, at
- * the bounds, just inside and outside them, and at stratified random angles (seed 2727).
+ * The five-axis posture's angle ranges are stated once (input/angleRanges.ts): the page's and
+ * command line's validation (surfaces/validate.ts) and the five-axis mode of the one question
+ * (question.ts) accept and refuse the same angles, at the bounds, just inside and outside them, and
+ * at stratified random angles (seed 2727); the field registry's rho and tilt ranges say the same.
  */
 import { describe, expect, it } from 'vitest';
+import { FIELDS, type FieldRange } from '../../../src/core/input/fields';
 import { seededRandom } from '../../../src/core/math/seededRandom';
 import { validateQuestion } from '../../../src/core/surfaces/question';
 import { validateForward } from '../../../src/core/surfaces/validate';
+
+/** True when `v` lies inside a field registry range (its bounds included or not as it says). */
+function inRange(range: FieldRange | undefined, v: number): boolean {
+  if (range === undefined) throw new Error('no range');
+  const aboveMin = range.min === null || (range.minIncluded ? v >= range.min : v > range.min);
+  const belowMax = range.max === null || (range.maxIncluded ? v <= range.max : v < range.max);
+  return aboveMin && belowMax;
+}
 
 const accepts = {
   validate: (rho: number, tilt: number) => {
@@ -26,7 +35,7 @@ const accepts = {
   },
 };
 
-describe('five-axis angle ranges: one rule for the validation and the mode (seed 2727)', () => {
+describe('five-axis angle ranges: one rule for the validation, the mode and the field registry (seed 2727)', () => {
   it('the bounds: 0 <= rho < 90, -90 < tilt < 90, the same both ways', () => {
     const eps = 1e-9;
     const cases: Array<[number, number, boolean]> = [
@@ -51,7 +60,7 @@ describe('five-axis angle ranges: one rule for the validation and the mode (seed
       // Ten strata across [-180, 180) for each angle.
       const rho = -180 + 36 * (i % 10) + 36 * next();
       const tilt = -180 + 36 * (Math.floor(i / 10) % 10) + 36 * next();
-      const expected = rho >= 0 && rho < 90 && tilt > -90 && tilt < 90;
+      const expected = inRange(FIELDS.rho.range, rho) && inRange(FIELDS.tilt.range, tilt);
       expect(accepts.validate(rho, tilt), `validate ${rho} ${tilt}`).toBe(expected);
       expect(accepts.question(rho, tilt), `question ${rho} ${tilt}`).toBe(expected);
     }

@@ -88,7 +88,6 @@ const waterlineOnRevolution: OwnAnswer<ThreeAxisMode> = {
 /** The three-axis mode: a posture on the plane (the sloped plane); its own answer for waterline passes on a surface of revolution. */
 export const threeAxisMode: MachineMode<ThreeAxisMode> = {
   kind: 'threeAxis',
-  name: '3-axis',
   surfaceKinds: ['plane'],
   check,
   posture,
