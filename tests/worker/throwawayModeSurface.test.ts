@@ -15,7 +15,7 @@ import { modeKinds, registerMode } from '../../src/core/surfaces/modes';
 import { type Question, validateQuestion } from '../../src/core/surfaces/question';
 import { registerSurfaceModel, surfaceKinds } from '../../src/core/surfaces/registry';
 import { exactForward, exactInverse } from '../../src/core/surfaces/solve';
-import { buildQuestionRequest } from '../../src/ui/questionRequest';
+import { buildQuestionRequest } from '../../src/ui/registryQuestionRequest';
 import { type CalculatorState, defaultState } from '../../src/ui/state';
 import type { QuestionReply, QuestionRequest } from '../../src/worker/pageProtocol';
 import { workerApi } from '../../src/worker/workerApi';
