@@ -263,7 +263,7 @@ async function run(request: Request, io: Io, out: Output): Promise<number> {
     case 'question': {
       // --machine / --surface naming a registered mode or surface beyond the product's (registryReport.ts).
       const unit = unitOfText(request.values.unit) ?? 'mm';
-      const r = registryReport(valuesInMm(request.values, unit), request.kinds, request.quantity, unit);
+      const r = registryReport(valuesInMm(request.values, unit), request.kinds, request.quantity, unit, request.values);
       if (!r.ok) for (const e of r.errors) io.stderr.write(errorLine(e));
       else if (request.json) writeJson(out, r.json, unit);
       else out.write(`${r.table}\n`);

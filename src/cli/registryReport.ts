@@ -4,7 +4,10 @@
  * question read and answered once (question.ts answerRegistryQuestion), written as a short table
  * or as JSON (its lengths named as unitJson.ts converts them). Pure: the caller writes the text.
  */
+import { FIELDS, type FieldId } from '../core/input/fields';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
+import type { QuestionError } from '../core/surfaces/question';
+import { threeAxisMessageInUnit } from '../core/threeAxis/errors';
 import { answerRegistryQuestion, type QuestionValues } from './question';
 import type { RegistryKinds } from './registryOptions';
 import type { JsonValue } from './reportJson';
@@ -15,17 +18,30 @@ export type RegistryReport =
   | { readonly ok: false; readonly errors: readonly string[] };
 
 /**
- * Answers a question over the registries from the command line's values (lengths in mm) and
- * writes it in `unit`.
+ * A refusal (worded in mm) in the user's words: the value quoted as typed (`typed`: the options as
+ * given, before their unit was read) and every length in `unit`, as the command line words every
+ * other refusal (core threeAxisMessageInUnit).
+ */
+function inUserWords(e: QuestionError, unit: LengthUnit, typed: QuestionValues): string {
+  const option = e.field in FIELDS ? FIELDS[e.field as FieldId].cli : null;
+  const given = option === null ? undefined : typed[option as keyof QuestionValues]?.trim();
+  const got = /\(got ([^)]*)\)/.exec(e.message)?.[1] ?? null;
+  return threeAxisMessageInUnit({ message: e.message, got }, 'raster', unit, given ?? String(got));
+}
+
+/**
+ * Answers a question over the registries from the command line's values (lengths in mm; `typed`:
+ * as given, for the refusals' quotes) and writes it in `unit`.
  */
 export function registryReport(
   values: QuestionValues,
   kinds: RegistryKinds,
   quantity: 'h' | 'interval',
   unit: LengthUnit,
+  typed: QuestionValues = values,
 ): RegistryReport {
   const r = answerRegistryQuestion(values, kinds, quantity);
-  if (!r.ok) return { ok: false, errors: r.errors.map((e) => e.message) };
+  if (!r.ok) return { ok: false, errors: r.errors.map((e) => inUserWords(e, unit, typed)) };
   const a = r.answer;
   const length = (mm: number | null) =>
     mm === null || !Number.isFinite(mm) ? '-' : `${formatInputNumber(fromMm(mm, unit))} ${unitSymbol(unit)}`;

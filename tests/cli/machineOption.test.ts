@@ -150,3 +150,15 @@ describe('--machine as a process', () => {
     expect(unknown.stderr).toMatch(/^error: --machine must be one of 5-axis, 3-axis \(got "lathe"\)/);
   });
 });
+
+describe('--machine over a registered surface: refusals in the user unit', () => {
+  it('inches: the limit in inches, the value quoted as typed', async () => {
+    removers.push(registerSurfaceModel(drumModel), registerMode(fixedLeadMode));
+    const args = ['--R', '0.2', '--Rcr', '0.06', '--rho', '12', '--machine', 'throwawayFixedLead'];
+    const named = [...args, '--surface', 'throwawayDrum', '--unit', 'inch', '--interval', '0.7874'];
+    const r = await run(named);
+    expect(r.code).toBe(2);
+    expect(r.stderr).toMatch(/^error: Step-over L must be below 0\.\d+ in here \(got 0\.7874\): passes this far apart/);
+    expect(r.stderr).not.toMatch(/\bmm\b/);
+  });
+});
