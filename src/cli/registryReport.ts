@@ -7,7 +7,7 @@
 import { FIELDS, type FieldId } from '../core/input/fields';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
 import type { QuestionError } from '../core/surfaces/question';
-import { threeAxisMessageInUnit } from '../core/threeAxis/errors';
+import { questionMessageInUnit } from '../core/surfaces/questionWords';
 import { answerRegistryQuestion, type QuestionValues } from './question';
 import type { RegistryKinds } from './registryOptions';
 import type { JsonValue } from './reportJson';
@@ -17,16 +17,10 @@ export type RegistryReport =
   | { readonly ok: true; readonly table: string; readonly json: { [key: string]: JsonValue } }
   | { readonly ok: false; readonly errors: readonly string[] };
 
-/**
- * A refusal (worded in mm) in the user's words: the value quoted as typed (`typed`: the options as
- * given, before their unit was read) and every length in `unit`, as the command line words every
- * other refusal (core threeAxisMessageInUnit).
- */
+/** A refusal in the user's unit, the value quoted as typed (`typed`: the options as given). */
 function inUserWords(e: QuestionError, unit: LengthUnit, typed: QuestionValues): string {
   const option = e.field in FIELDS ? FIELDS[e.field as FieldId].cli : null;
-  const given = option === null ? undefined : typed[option as keyof QuestionValues]?.trim();
-  const got = /\(got ([^)]*)\)/.exec(e.message)?.[1] ?? null;
-  return threeAxisMessageInUnit({ message: e.message, got }, 'raster', unit, given ?? String(got));
+  return questionMessageInUnit(e, unit, option === null ? undefined : typed[option as keyof QuestionValues]?.trim());
 }
 
 /**

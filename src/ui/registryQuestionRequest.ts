@@ -10,6 +10,7 @@ import { FIELDS, type FieldId, pageKeyOf } from '../core/input/fields';
 import type { QuestionParameter } from '../core/surfaces/mode';
 import { findMode } from '../core/surfaces/modes';
 import { type Question, validateQuestion } from '../core/surfaces/question';
+import { questionMessageInUnit } from '../core/surfaces/questionWords';
 import { findSurfaceModel } from '../core/surfaces/registry';
 import type { QuestionRequest } from '../worker/pageProtocol';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
@@ -76,7 +77,11 @@ export function buildQuestionRequest(state: CalculatorState, kinds: QuestionKind
   if (!v.ok)
     return {
       ok: false,
-      errors: v.errors.map((e) => ({ key: keyOf(e.field, parameters, targetKey), message: e.message })),
+      errors: v.errors.map((e) => {
+        const key = keyOf(e.field, parameters, targetKey);
+        // In the user's unit, the value quoted as typed.
+        return { key, message: questionMessageInUnit(e, state.unit, state.fields[key].trim()) };
+      }),
     };
   return { ok: true, request: { mode: 'question', input: question } };
 }
