@@ -12,7 +12,7 @@
  * `npm run bench` prints the same figures (keys teachSlopeChartMsMedian, teachCurvedMsMedian).
  */
 import { pathToFileURL } from 'node:url';
-import { buildRequest } from '../ui/request';
+import { buildPageRequest } from '../ui/questionRequest';
 import { parseUrl } from '../ui/state';
 import { teachCurved, teachThreeAxis } from '../worker/jobs/teachPage';
 import type { CurvedRequest, PageRequest, ThreeAxisRequest } from '../worker/pageProtocol';
@@ -23,9 +23,9 @@ export const TEACH_BENCH_LINKS = {
   curved: '?R=3&Rcr=1&rho=10&tilt=0&h=0.05&feedRadius=40&crossRadius=-20&unit=mm',
 } as const;
 
-/** The page's request for a link (it must be valid). */
+/** The page's request for a link, from the page's one builder (it must be valid). */
 function requestOf(link: string): PageRequest {
-  const built = buildRequest(parseUrl(link).state);
+  const built = buildPageRequest(parseUrl(link).state);
   if (!built.ok) throw new Error(`the benchmark's link is invalid: ${link}`);
   return built.request;
 }

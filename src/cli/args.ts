@@ -5,13 +5,15 @@
 
 import { CLI_OPTIONS, type CliOption, cliFlag, FINISH_FIELD_IDS, THREE_AXIS_FIELDS } from '../core/input/fields';
 import type { ThreeAxisQuantity } from '../core/threeAxis/validate';
+import { type RegistryKinds, registryKinds } from './registryOptions';
 import { readPair, X3P_DEFAULT_SIZE, X3P_MAX_CELLS, X3P_MAX_POINTS } from './x3pOption';
 
 /**
- * The command line's settings that take a value but are no field: the length unit, and the x3p
- * file of the surface the teeth leave (its path, its grid's points and its period cells).
+ * The command line's settings that take a value but are no field: the length unit, the machine
+ * mode and surface kind named from their registries (registryOptions.ts), and the x3p file of the
+ * surface the teeth leave (its path, its grid's points and its period cells).
  */
-export const SETTING_OPTIONS = ['unit', 'x3p', 'x3p-size', 'x3p-cells'] as const;
+export const SETTING_OPTIONS = ['unit', 'machine', 'surface', 'x3p', 'x3p-size', 'x3p-cells'] as const;
 
 /** The words `--unit` takes: every length in and out in mm or in inches. */
 export const CLI_LENGTH_UNITS = ['mm', 'inch'] as const;
@@ -63,6 +65,17 @@ export type Request =
       readonly kind: 'slopeSweep';
       readonly json: boolean;
       readonly values: Readonly<Partial<Record<ValueOption, string>>>;
+    }
+  | {
+      /**
+       * --machine or --surface naming a registered mode or surface the product's own paths do not
+       * answer: the one question over the registries (core surfaces/question.ts), given --h or --interval.
+       */
+      readonly kind: 'question';
+      readonly json: boolean;
+      readonly values: Readonly<Partial<Record<ValueOption, string>>>;
+      readonly kinds: RegistryKinds;
+      readonly quantity: 'h' | 'interval';
     }
   | { readonly kind: 'usage'; readonly error: string };
 
@@ -160,6 +173,17 @@ export function parseArgs(args: readonly string[]): Request {
   const json = flags.has('json');
   const teeth = finishUsage(values, flags);
   if (teeth !== null) return usage(teeth);
+  // --machine and --surface: a registered mode and surface; the product's must match the other options.
+  const named = registryKinds(values, flags);
+  if (typeof named === 'string') return usage(named);
+  if (named !== null) {
+    const quantity = (['h', 'interval'] as const).filter((q) => values[q] !== undefined);
+    if (quantity.length !== 1)
+      return usage(`--machine ${named.modeName} over --surface ${named.surface} takes --h <mm> or --interval <mm>`);
+    if (FINISH_OPTIONS.some((o) => values[o] !== undefined))
+      return usage(`--flutes does not go with --machine ${named.modeName} over --surface ${named.surface}`);
+    return { kind: 'question', json, values, kinds: named, quantity: quantity[0] ?? 'h' };
+  }
   if (flags.has('slope-sweep')) return slopeSweepRequest(values, flags, json);
   if (values.slope !== undefined) return threeAxisRequest(values, flags, json);
   // The principal radii are also a five-axis surface (a doubly curved point): not three-axis only.

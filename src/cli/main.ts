@@ -56,6 +56,7 @@ import {
   type WordedError,
   wordErrors,
 } from './question';
+import { registryReport } from './registryReport';
 import {
   type Extras,
   forwardJson,
@@ -395,6 +396,15 @@ async function run(request: Request, io: Io, out: Output): Promise<number> {
       return question(request, io, out);
     case 'threeAxis':
       return threeAxis(request.values, request.quantity, request.json, io, out);
+    case 'question': {
+      // --machine / --surface naming a registered mode or surface beyond the product's (registryReport.ts).
+      const unit = unitOfText(request.values.unit) ?? 'mm';
+      const r = registryReport(valuesInMm(request.values, unit), request.kinds, request.quantity, unit, request.values);
+      if (!r.ok) for (const e of r.errors) io.stderr.write(errorLine(e));
+      else if (request.json) writeJson(out, r.json, unit);
+      else out.write(`${r.table}\n`);
+      return r.ok ? 0 : 2;
+    }
     case 'slopeSweep': {
       const unit = unitOfText(request.values.unit) ?? 'mm';
       const r = sweepSlopes(valuesInMm(request.values, unit));

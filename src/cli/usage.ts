@@ -3,6 +3,9 @@
  * It names each option as the field registry does (tests/fieldRegistry.test.ts checks it).
  */
 
+import { SURFACE_KINDS } from '../core/surfaces/registry';
+import { modeNames } from './registryOptions';
+
 /** The help text of the command line. */
 export const USAGE = `Usage: path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --h <mm> [--json] [--simulate]
        path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --ra <mm> [--json] [--simulate]
@@ -56,6 +59,11 @@ radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
                         JSON and the batch; JSON names it in "unit"). Any length may be typed
                         as the shop writes it: a fraction and a unit suffix (1/2", .030in, 5um,
                         1 1/4 in, 0.2 thou, 12.7mm), whatever the unit
+  --machine <m>         optional: the machine mode, from the mode registry (${modeNames().join(', ')});
+                        3-axis is the slope's (--slope), 5-axis the lead and tilt's
+  --surface <kind>      optional: the surface kind, from the surface registry
+                        (${SURFACE_KINDS.join(', ')}); it must match the options that give
+                        the surface (none of them: a plane)
 
 Three-axis machining (the tool upright, the surface sloped; then --rho and --tilt are not given):
   --slope <deg>         slope alpha of the surface at the contact (0 to 90; at 90 a straight wall

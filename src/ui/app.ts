@@ -33,8 +33,9 @@ import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
 import { readPreferences, withPreferences, writePreferences } from './preferences';
 import { PresentMode, parsePresent } from './present';
+import { buildPageRequest } from './questionRequest';
 import { questionWords } from './questionWords';
-import { type BuiltRequest, buildRequest, stateMessages } from './request';
+import { type BuiltRequest, stateMessages } from './request';
 import { ResultBar } from './resultBar';
 import { type QuestionKind, ResultsPanel } from './results';
 import { RoughnessPanel } from './roughness';
@@ -78,6 +79,8 @@ export interface AppObserver {
   resultShown?(): void;
   /** The 3D scene drew a frame; `current` when results and scene answer the inputs on screen. */
   frame?(current: boolean): void;
+  /** The page built a request (once per input: issue 27 point 4). */
+  built?(): void;
 }
 
 function must<T extends Element>(root: ParentNode, selector: string): T {
@@ -118,8 +121,10 @@ export class CalculatorApp {
   });
   /** The results: asked of the solver whenever no reply answers the inputs on screen. */
   private readonly fresh = new FreshJob<PageReply>({ ask: (request) => this.client.request(request) });
-  /** Holds a half-typed text back until a pause or a commit (typing.ts). */
-  private readonly typing = new TypingGate(() => this.change(this.state));
+  /** Holds a half-typed text back until a pause or a commit (typing.ts): then its request, built at the key press, is asked. */
+  private readonly typing = new TypingGate(() => this.change(this.state, this.held));
+  /** The request of the text held back (built once, at its key press; the gate holds no other state). */
+  private held: BuiltRequest = { ok: false, errors: [] };
   /** The field messages of the last committed state (kept while typing, so none flashes). */
   private messages: ReadonlyMap<FieldKey, string> = new Map();
   /** The last committed state's request, or its errors (built once per change). */
@@ -210,7 +215,9 @@ export class CalculatorApp {
       // A committed field shows the plain number a written length (1/2", 12.7 mm) means.
       onCommit: () => {
         const plain = plainLengths(this.state);
-        if (this.typing.release() || plain !== this.state) this.change(plain);
+        // A text held back was built at its key press (plain lengths: the same request).
+        if (this.typing.release()) this.change(plain, this.held);
+        else if (plain !== this.state) this.change(plain);
       },
       onSize: (size: ToolSize) => this.change(withSize(plainLengths(this.state), size)),
       onMode: (mode: SolveMode) => this.change({ ...this.state, mode }),
@@ -298,6 +305,12 @@ export class CalculatorApp {
     };
   }
 
+  /** The state's request, or its errors: the page's one builder (questionRequest.ts), once per input. */
+  private build(state: CalculatorState): BuiltRequest {
+    this.observer.built?.();
+    return buildPageRequest(plainLengths(state));
+  }
+
   /**
    * A field edited: a slider's value, or a typed text that makes a valid question, changes the
    * state at once; a typed text that does not (half-typed, or wrong) is held back until a pause or
@@ -305,13 +318,14 @@ export class CalculatorApp {
    * typed field's own, which is cleared.
    */
   private edit(key: FieldKey, state: CalculatorState, typing: boolean): void {
-    const built = buildRequest(plainLengths(state));
+    const built = this.build(state);
     if (!typing || built.ok) {
       this.typing.release();
       this.change(state, built);
       return;
     }
     this.typing.hold();
+    this.held = built;
     this.state = state;
     this.fresh.want(null);
     const kept = new Map(this.messages);
@@ -328,7 +342,7 @@ export class CalculatorApp {
    * The one way the state changes: ask the solver first, then draw the fields, write the URL.
    * `built` is the state's request when the caller built it already (one build per input).
    */
-  private change(state: CalculatorState, built: BuiltRequest = buildRequest(plainLengths(state))): void {
+  private change(state: CalculatorState, built: BuiltRequest = this.build(state)): void {
     this.typing.release();
     this.state = state;
     this.built = built;

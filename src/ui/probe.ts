@@ -23,6 +23,10 @@ export interface Probe {
   replies(worker: string): number;
   /** Calls sent to the live workers of this name (of any name if none) still without a reply (0: idle). */
   pending(worker?: string): number;
+  /** Calls posted so far to the workers of this name (restarted ones included). */
+  calls(worker: string): number;
+  /** Requests the page built so far (app.ts: once per input). */
+  requestsBuilt(): number;
   /** URL writes so far (history.replaceState calls: urlState.ts writes once the inputs settle). */
   urlWrites(): number;
   /** The 3D scene's camera and what it frames (null before the scene is built). */
@@ -38,8 +42,9 @@ const isReply = (data: unknown) => ['ok', 'error'].includes((data as { rpc?: unk
  * global Worker with a subclass before the page starts any (the page's own listeners run after
  * the counter's, in the same task). A terminated worker's unanswered calls no longer count.
  */
-function countWorkerMessages(): Pick<Probe, 'replies' | 'pending'> {
+function countWorkerMessages(): Pick<Probe, 'replies' | 'pending' | 'calls'> {
   const replies = new Map<string, number>();
+  const calls = new Map<string, number>();
   const live = new Map<string, Set<{ pending: number }>>();
   const NativeWorker = window.Worker;
   class CountedWorker extends NativeWorker {
@@ -58,7 +63,10 @@ function countWorkerMessages(): Pick<Probe, 'replies' | 'pending'> {
       });
     }
     override postMessage(message: unknown, options?: Transferable[] | StructuredSerializeOptions): void {
-      if (isCall(message)) this.count.pending++;
+      if (isCall(message)) {
+        this.count.pending++;
+        calls.set(this.workerName, (calls.get(this.workerName) ?? 0) + 1);
+      }
       super.postMessage(message, options as Transferable[]);
     }
     override terminate(): void {
@@ -69,6 +77,7 @@ function countWorkerMessages(): Pick<Probe, 'replies' | 'pending'> {
   window.Worker = CountedWorker;
   return {
     replies: (name) => replies.get(name) ?? 0,
+    calls: (name) => calls.get(name) ?? 0,
     pending: (name) =>
       [...live.entries()]
         .filter(([n]) => name === undefined || n === name)
@@ -120,7 +129,11 @@ export function startWithProbe(root: HTMLElement): void {
     },
     true,
   );
+  let requestsBuilt = 0;
   const observer: AppObserver = {
+    built() {
+      requestsBuilt++;
+    },
     resultShown() {
       firstResultMs ??= performance.now();
     },
@@ -145,6 +158,7 @@ export function startWithProbe(root: HTMLElement): void {
     activeView: d.activeView,
     workerStarts: d.workerStarts,
     sceneFraming: d.sceneFraming,
+    requestsBuilt: () => requestsBuilt,
     ...workerMessages,
     urlWrites,
   };

@@ -1,14 +1,11 @@
 /**
  * The edge between what the user typed and what the solver is asked: the state's text, in the
- * user's unit, becomes one validated request in mm, or the input errors. Units are converted here
- * and nowhere else on the way in. Pure (no DOM).
+ * user's unit, becomes one validated request in mm (the page's one builder, questionRequest.ts), or
+ * the input errors; and each field's message, from the build's errors or the worker's refusal.
+ * Units are converted here and nowhere else on the way in. Pure (no DOM).
  */
 
-import { type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
-import { rawFields } from '../core/input/raw';
-import { describeInputError, type InputError, inputError } from '../core/input/validate';
-import { validateRaTarget } from '../core/roughness/raTarget';
-import { validateForward, validateInverse } from '../core/surfaces/validate';
+import type { InputError } from '../core/input/validate';
 import {
   type CurvedReply,
   isCurvedRequest,
@@ -16,135 +13,20 @@ import {
   type PageReply,
   type ThreeAxisReply,
 } from '../worker/pageProtocol';
-import { buildCurvedRequest, cylinderState, describeCurvedError, renameRadius } from './curvedRequest';
+import { describeCurvedError } from './curvedRequest';
+import { fieldMessages, fieldOfError } from './fieldMessages';
+import { buildPageRequest } from './questionRequest';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
-import { type CalculatorState, type FieldKey, fieldInMm, parseField, sizeIsDiameter } from './state';
-import type { RadiusKey } from './surfaceState';
-import { buildThreeAxisRequest, threeAxisFieldErrors } from './threeAxisRequest';
+import type { CalculatorState, FieldKey } from './state';
+import { threeAxisFieldErrors } from './threeAxisRequest';
 
 export type { BuiltRequest, PageFieldError };
 
-/**
- * The request the state asks, or why it cannot be asked: three-axis machining's, a doubly curved
- * point's (with a straight radius, the cylinder's or the plane's), or the plane's or cylinder's.
- * Validation only, once per change: a doubly curved point's and three-axis machining's checks that
- * need a solver run in the worker, which refuses such a request in its reply (replyErrors).
- */
-export function buildRequest(state: CalculatorState): BuiltRequest {
-  if (state.machine === '3axis') return buildThreeAxisRequest(state);
-  if (state.surface === 'curved') {
-    const curved = buildCurvedRequest(state);
-    if (curved !== null) return curved;
-    const { state: cylinder, radius } = cylinderState(state);
-    const built = buildClassic(cylinder);
-    return built.ok || radius === null ? built : { ok: false, errors: onRadius(cylinder, built.errors, radius) };
-  }
-  return buildClassic(state);
-}
+/** The page's one builder (questionRequest.ts buildPageRequest), by its earlier name. */
+export const buildRequest = buildPageRequest;
 
-/** A cylinder's errors on the curved radius it came from (the cylinder's radius field is not shown). */
-function onRadius(
-  state: CalculatorState,
-  errors: readonly (InputError | PageFieldError)[],
-  key: RadiusKey,
-): Array<InputError | PageFieldError> {
-  const messages = fieldMessages(state, errors);
-  return errors.map((e) => {
-    if ('key' in e || e.field !== 'surfaceRadius') return e;
-    return { key, message: renameRadius(messages.get('Rs') ?? e.message, key) };
-  });
-}
-
-/** The plane's or the cylinder's request (five-axis). */
-function buildClassic(state: CalculatorState): BuiltRequest {
-  const built = validated(state);
-  const own = [surfaceError(state)].filter((e): e is InputError => e !== null);
-  if (own.length === 0) return built;
-  // A radius typed with a sign: its own error, beside the others' (the rest validated on a plane).
-  return { ok: false, errors: [...own, ...(built.ok ? [] : built.errors)] };
-}
-
-function validated(state: CalculatorState): BuiltRequest {
-  /** A field's value in mm or degrees (its text when it is not a number), read from its page field. */
-  const mm = (name: FieldName) => {
-    const key = pageKeyOf(name);
-    return key === null ? undefined : fieldInMm(state, key);
-  };
-  const tool = { ...rawFields(TOOL_FIELDS, mm), pattern: state.pattern, ...surfaceFields(state) };
-  if (state.mode === 'forward' && state.target === 'ra') {
-    const v = validateRaTarget({ ...tool, ra: mm('ra') });
-    return v.ok ? { ok: true, request: { mode: 'ra', input: v.value } } : v;
-  }
-  if (state.mode === 'forward') {
-    const v = validateForward({ ...tool, h: mm('h') });
-    return v.ok ? { ok: true, request: { mode: 'forward', input: v.value } } : v;
-  }
-  const v = validateInverse({ ...tool, interval: mm('interval') });
-  return v.ok ? { ok: true, request: { mode: 'inverse', input: v.value } } : v;
-}
-
-/**
- * The surface as the core's raw fields: none for a plane; for a cylinder the signed radius in mm
- * (the field's magnitude, negative when concave) and the axis. A radius that is not a positive
- * number goes as typed (the core words a missing or non-numeric one), or not at all when it has a
- * sign or is 0 (surfaceError words that).
- */
-function surfaceFields(state: CalculatorState): { surfaceRadius?: number | string; surfaceAxis?: string } {
-  if (state.surface === 'plane') return {};
-  const v = parseField(state.fields.Rs);
-  if (surfaceError(state) !== null || (v !== null && v <= 0)) return {};
-  const mm = fieldInMm(state, 'Rs');
-  return {
-    surfaceRadius: typeof mm === 'number' && state.surface === 'concave' ? -mm : mm,
-    surfaceAxis: state.surfaceAxis,
-  };
-}
-
-/** The radius field's own rule: a positive magnitude, without a sign (convex or concave is the switch). */
-function surfaceError(state: CalculatorState): InputError | null {
-  if (state.surface === 'plane') return null;
-  const v = parseField(state.fields.Rs);
-  const typed = state.fields.Rs.trim();
-  // The core reads a blank radius, or the word plane, as a plane: here a cylinder is chosen.
-  if (typed === '') return inputError('surfaceRadius', 'missing', typed);
-  if (typed === 'plane') return inputError('surfaceRadius', 'not-a-number', typed);
-  if (v !== null && v <= 0) return inputError('surfaceRadius', 'not-positive', typed);
-  return null;
-}
-
-/**
- * The page field that shows an error of the core's field. Pattern and axis errors cannot happen
- * here (switches offer only valid values); the surface radius's errors (gouging included) show on
- * the radius field.
- */
-export function fieldOfError(field: FieldName): FieldKey | null {
-  return pageKeyOf(field);
-}
-
-/** Each field's message, in the user's unit, quoting the text as typed. */
-export function fieldMessages(
-  state: CalculatorState,
-  errors: readonly (InputError | PageFieldError)[],
-): Map<FieldKey, string> {
-  const out = new Map<FieldKey, string>();
-  for (const e of errors) {
-    if ('key' in e) {
-      if (!out.has(e.key)) out.set(e.key, e.message);
-      continue;
-    }
-    const key = fieldOfError(e.field);
-    if (key === null || out.has(key)) continue;
-    out.set(
-      key,
-      describeInputError(e, state.unit, {
-        typed: state.fields[key].trim(),
-        toolSizeAsDiameter: sizeIsDiameter(state),
-        radiusAsMagnitude: true,
-      }),
-    );
-  }
-  return out;
-}
+/** Each field's message (fieldMessages.ts), re-exported for the callers. */
+export { fieldMessages, fieldOfError };
 
 /**
  * The errors of a refused reply (none for an answer) as the page shows them, on their fields in the

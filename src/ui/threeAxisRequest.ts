@@ -6,12 +6,11 @@
  * solver finds (ranges, the vertical wall, the flank and shank limits) come back in its reply, put
  * on their fields by threeAxisFieldErrors. Every message in the user's unit. Pure.
  */
-import { FIELDS } from '../core/input/fields';
+import { FIELDS, pageKeyOf } from '../core/input/fields';
 import { formatInputNumber, fromMm, unitSymbol } from '../core/input/units';
 import {
   type RawThreeAxisInput,
   type ThreeAxisInputError,
-  type ThreeAxisInputField,
   type ThreeAxisQuantity,
   validateThreeAxis,
 } from '../core/threeAxis/validate';
@@ -19,23 +18,6 @@ import { radiusMm } from './curvedRequest';
 import { programmedStepKey } from './machineState';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
 import { type CalculatorState, type FieldKey, fieldInMm } from './state';
-
-/** The page field of each field a three-axis error names (null: a switch, or a field the page does not give). */
-const KEY_OF: Readonly<Record<ThreeAxisInputField, FieldKey | null>> = {
-  R: 'R',
-  Rcr: 'Rcr',
-  slope: 'slope',
-  rasterAngle: 'psi',
-  feedRadius: 'Rf',
-  crossRadius: 'Rc',
-  h: 'h',
-  interval: 'L',
-  horizontalStep: 'Lxy',
-  stepDown: 'dz',
-  passes: null,
-  rho: 'rho',
-  tilt: 'tilt',
-};
 
 /**
  * A core message (mm and degrees) in the user's unit: every `<number> mm` converted, and the value
@@ -57,7 +39,8 @@ export function inUnit(message: string, state: CalculatorState, key: FieldKey | 
 
 /** A three-axis error on its page field, in the user's unit (R in diameter mode is named D). */
 function onField(e: ThreeAxisInputError, state: CalculatorState): PageFieldError | null {
-  const key = KEY_OF[e.field];
+  // The page field of the field it names (the field registry's; null: a switch, such as the passes).
+  const key = pageKeyOf(e.field);
   if (key === null) return null;
   return { key, message: inUnit(e.message, state, key) };
 }

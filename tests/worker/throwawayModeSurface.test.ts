@@ -15,7 +15,7 @@ import { modeKinds, registerMode } from '../../src/core/surfaces/modes';
 import { type Question, validateQuestion } from '../../src/core/surfaces/question';
 import { registerSurfaceModel, surfaceKinds } from '../../src/core/surfaces/registry';
 import { exactForward, exactInverse } from '../../src/core/surfaces/solve';
-import { buildQuestionRequest } from '../../src/ui/questionRequest';
+import { buildQuestionRequest } from '../../src/ui/registryQuestionRequest';
 import { type CalculatorState, defaultState } from '../../src/ui/state';
 import type { QuestionReply, QuestionRequest } from '../../src/worker/pageProtocol';
 import { workerApi } from '../../src/worker/workerApi';
@@ -109,6 +109,12 @@ describe('a throwaway surface and mode: one module and one line each', () => {
     expect(!pageSteep.ok && pageSteep.errors).toEqual([
       { key: 'rho', message: 'Lead angle must be from 0 to 30 degrees on this head (got 45).' },
     ]);
+    // A refusal in inches on the page: the limit in inches, the value quoted as typed.
+    const wideInch = buildQuestionRequest({ ...pageState('in', { L: '0.7874' }), mode: 'inverse' }, KINDS);
+    expect(!wideInch.ok && wideInch.errors.map((e) => e.key)).toEqual(['L']);
+    expect(!wideInch.ok && wideInch.errors[0]?.message).toMatch(
+      /^Step-over L must be below 0\.\d+ in here \(got 0\.7874\): passes this far apart leave a wall\.$/,
+    );
     // The command line's reader (options by the field registry's names, lengths in mm).
     const cli = answerRegistryQuestion({ R: '5', Rcr: '1.5', rho: '12', pattern: 'zigzag', h: '0.01' }, KINDS, 'h');
     expect(cli.ok && cli.answer.intervalMm).toBe(own.intervalMm);

@@ -111,8 +111,14 @@ export interface MachineMode<M extends ModeDescriptorBase> {
   /** The descriptor kind it answers (the registry's key). */
   readonly kind: M['kind'];
   /**
+   * The word a user names it by (the command line's `--machine`); its kind when absent. The
+   * product's modes are named by the command line itself (cli/registryOptions.ts), so that their
+   * words stay out of the page's scripts.
+   */
+  readonly name?: string;
+  /**
    * The numbers its descriptor takes from the user, for the builders of a question over the
-   * registries (ui/questionRequest.ts); the product's modes are built by the page's own switches.
+   * registries (ui/questionRequest.ts, the command line's --machine): the fields that give them.
    */
   readonly parameters?: readonly QuestionParameter[];
   /** The surface kinds it has a posture on; null: every registered surface. */

@@ -20,6 +20,11 @@ export type ModeDescriptor = DescriptorOf<(typeof MODES)[number]>;
 /** The registered modes: the product's, then any registerMode added. */
 const LIST: MachineMode<ModeDescriptorBase>[] = [...(MODES as unknown as readonly MachineMode<ModeDescriptorBase>[])];
 
+/** The product's own mode kinds (the page's machine switch and the command line's own paths answer them). */
+export function productModeKinds(): readonly ModeDescriptor['kind'][] {
+  return MODES.map((m) => m.kind);
+}
+
 /** The registered kinds, in registration order. */
 export function modeKinds(): readonly string[] {
   return LIST.map((m) => m.kind);

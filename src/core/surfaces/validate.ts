@@ -10,6 +10,7 @@
 import type { ForwardInput, InverseInput, PassInput } from '../domain/pass';
 import { PLANE, type Surface, type SurfaceAxis } from '../domain/surface';
 import type { PassPattern, ToolInput } from '../domain/tool';
+import { leadAngleInRange, tiltAngleInRange } from '../input/angleRanges';
 import type { FieldName } from '../input/fields';
 import {
   type AnyFieldName,
@@ -72,8 +73,9 @@ function checkTool(c: Collected): void {
     if (Rcr < 0) reject(c, 'Rcr', 'negative');
     else if (c.values.R !== undefined && Rcr > c.values.R) reject(c, 'Rcr', 'corner-exceeds-radius', c.values.R);
   }
-  if (rho !== undefined && !(rho >= 0 && rho < 90)) reject(c, 'rho', 'out-of-range');
-  if (tilt !== undefined && !(tilt > -90 && tilt < 90)) reject(c, 'tilt', 'out-of-range');
+  // The posture's angle rules, stated once (input/angleRanges.ts; the five-axis mode asks them too).
+  if (rho !== undefined && !leadAngleInRange(rho)) reject(c, 'rho', 'out-of-range');
+  if (tilt !== undefined && !tiltAngleInRange(tilt)) reject(c, 'tilt', 'out-of-range');
 }
 
 function checkPattern(raw: unknown, errors: InputError[]): PassPattern | null {

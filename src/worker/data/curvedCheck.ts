@@ -3,8 +3,9 @@
  * posture): each radius in range (0.001 mm to 1e6 mm, or straight), no gouging (gouging.ts: on the
  * field of each radius whose change would help, with its limit, the other held), the scallop height
  * below the flank and shank limits, the step-over below the widest that leaves a scallop, a target
- * Ra below the largest that the passes leave while leaving a scallop. Used by
- * the page as it builds the request and by the worker, which trusts no caller. Mm.
+ * Ra below the largest that the passes leave while leaving a scallop. They need the point's solver,
+ * so they run once, in the worker (jobs/curved.ts, which trusts no caller): the page validates the
+ * tool and posture only and words this reply's refusals (ui/curvedRequest.ts). Mm.
  */
 
 import type { PassPattern, ToolInput } from '../../core/input/validate';

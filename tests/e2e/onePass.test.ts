@@ -1,0 +1,85 @@
+/**
+ * Issue 27 point 4, one pass per keystroke, in headless Chromium: each key press in a field builds
+ * the page's request once, through the page's one builder (questionRequest.ts, counted by the
+ * probe's requestsBuilt), and asks the solver's worker once when it changes the question (the
+ * probe's calls); a half-typed text held back until the pause is built at its key press only (its
+ * commit asks nothing again), and typing back to the question on screen asks nothing. Five-axis on
+ * a plane, three-axis on a sloped plane and a doubly curved point, on one page.
+ */
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { SOLVER, useSite, workerIdle } from './harness';
+
+const site = useSite('docs/onePass');
+
+type Counters = {
+  __pathInterval: { requestsBuilt(): number; calls(worker: string): number; replies(w: string): number };
+};
+
+/** Requests built, calls sent to the solver and its replies, so far. */
+const counters = (page: Page) =>
+  page.evaluate((w) => {
+    const p = (window as unknown as Counters).__pathInterval;
+    return { built: p.requestsBuilt(), calls: p.calls(w), replies: p.replies(w) };
+  }, SOLVER);
+
+/** Presses one key in a field (focused, caret at the end) and returns the counters' change once the solver is idle. */
+async function keyPress(page: Page, testId: string, key: string, settled: () => Promise<unknown>) {
+  const input = page.getByTestId(testId);
+  await input.scrollIntoViewIfNeeded();
+  await input.focus();
+  await page.keyboard.press('End');
+  await workerIdle(page, SOLVER);
+  const before = await counters(page);
+  await page.keyboard.press(key);
+  await settled();
+  await workerIdle(page, SOLVER);
+  const after = await counters(page);
+  return { built: after.built - before.built, calls: after.calls - before.calls };
+}
+
+const text = (page: Page, id: string) => page.getByTestId(id).textContent();
+
+describe('one pass per keystroke', () => {
+  it('five-axis on a plane and a held-back text: one build per key press, one ask per new question', async () => {
+    const { page, errors } = await site.open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    const first = await text(page, 'result-exact-half');
+    // h 0.05 -> 0.051: built once, asked once, answered.
+    const typed = await keyPress(page, 'input-h', '1', () =>
+      expect.poll(() => text(page, 'result-exact-half')).not.toBe(first),
+    );
+    expect(typed).toEqual({ built: 1, calls: 1 });
+    // 0.051 -> "0.051." (half typed, held back until the pause): built at the key press only.
+    const held = await keyPress(page, 'input-h', '.', () => expect.poll(() => text(page, 'error-h')).toMatch(/\S/));
+    expect(held).toEqual({ built: 1, calls: 0 });
+    // Back to 0.051, the question answered on screen: built once, nothing asked.
+    const back = await keyPress(page, 'input-h', 'Backspace', () => expect.poll(() => text(page, 'error-h')).toBe(''));
+    expect(back).toEqual({ built: 1, calls: 0 });
+    site.changed();
+    expect(errors).toEqual([]);
+  });
+
+  it('three-axis on a sloped plane, then a doubly curved point: one build and one ask per key press', async () => {
+    const { page, errors } = await site.open('?R=3&Rcr=1&machine=3axis&slope=30&h=0.05&unit=mm');
+    await expect.poll(() => text(page, 'result-programmed-step')).toMatch(/\d/);
+    // The slope 30 -> 3 (Backspace).
+    const step = await text(page, 'result-programmed-step');
+    const slope = await keyPress(page, 'input-slope', 'Backspace', () =>
+      expect.poll(() => text(page, 'result-programmed-step')).not.toBe(step),
+    );
+    expect(slope).toEqual({ built: 1, calls: 1 });
+
+    // A doubly curved point (five-axis): h 0.05 -> 0.052.
+    await page.getByTestId('machine-switch').getByText('5-axis').click();
+    await page.locator('input[name="surface"][value="curved"]').check();
+    await page.getByTestId('input-h').fill('0.05');
+    await expect.poll(() => text(page, 'result-exact-half')).toMatch(/\d/);
+    const curvedBefore = await text(page, 'result-exact-half');
+    const curved = await keyPress(page, 'input-h', '2', () =>
+      expect.poll(() => text(page, 'result-exact-half')).not.toBe(curvedBefore),
+    );
+    expect(curved).toEqual({ built: 1, calls: 1 });
+    site.changed();
+    expect(errors).toEqual([]);
+  });
+});
