@@ -160,6 +160,8 @@ function cliCase(id: FieldId, bad: string): string[] {
   if (id === 'interval' || id === 'halfInterval' || id === 'ra' || id === 'horizontalStep' || id === 'stepDown')
     given.length = 0;
   if (id === 'surfaceAxis') base.push('--surface-radius', '50');
+  // The finish's fields come with the teeth and their feed (each needs the other).
+  if (FIELDS[id].group === 'finish') base.push('--flutes', '2', '--fz', '0.1');
   // The diameter stands in place of the radius.
   if (id === 'D') base.splice(0, 2);
   const args = [...base, ...given];
@@ -182,7 +184,7 @@ describe('the command line takes every registry field under its flag', () => {
   });
 
   it('the help names every flag, and every flag it names is one', () => {
-    const named = new Set([...USAGE.matchAll(/--([a-z][a-zA-Z-]*)/g)].map((m) => m[1]));
+    const named = new Set([...USAGE.matchAll(/--([a-z][a-zA-Z0-9-]*)/g)].map((m) => m[1]));
     const known = new Set<string>([...CLI_OPTIONS, ...FLAG_OPTIONS, ...SETTING_OPTIONS]);
     expect([...named].filter((n) => n !== undefined && !known.has(n))).toEqual([]);
     for (const option of CLI_OPTIONS) expect(USAGE, option).toContain(`--${option} <`);
@@ -201,7 +203,7 @@ describe('the command line takes every registry field under its flag', () => {
       'batchHeader.ts',
     ]) {
       const source = readFileSync(new URL(`../src/cli/${file}`, import.meta.url), 'utf8');
-      const named = [...source.matchAll(/--([a-z][a-zA-Z-]*)/g)].map((m) => m[1] as string);
+      const named = [...source.matchAll(/--([a-z][a-zA-Z0-9-]*)/g)].map((m) => m[1] as string);
       expect(
         named.filter((n) => !known.has(n)),
         file,

@@ -55,6 +55,10 @@ radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
   --runout <mm>         with --flutes and --fz: radial runout e (default 0; at most R/10)
   --runout-phase <deg>  its direction from tooth 0's half-plane (default 0)
   --pass-phase <q>      each pass shifted along the feed by q (0 <= q < 1) of the feed period
+  --x3p <file>          with --flutes and --fz: write the areal surface as an ISO 25178-72 x3p file
+                        (heights in metres on the grid x = (i + 1/2) dx, over whole period cells)
+  --x3p-size <nx,ny>    its points along the feed and across (default 1024,1024; at most 8192)
+  --x3p-cells <cx,cy>   its period cells along the feed and across (default 1,1)
   --unit <u>            mm (default) or inch: every length in and out in that unit (the table,
                         JSON and the batch; JSON names it in "unit"). Any length may be typed
                         as the shop writes it: a fraction and a unit suffix (1/2", .030in, 5um,

@@ -111,7 +111,7 @@ describe('a throwaway surface and mode: one module and one line each', () => {
     ]);
     // A refusal in inches on the page: the limit in inches, the value quoted as typed.
     const wideInch = buildQuestionRequest({ ...pageState('in', { L: '0.7874' }), mode: 'inverse' }, KINDS);
-    expect(!wideInch.ok && wideInch.errors.map((e) => e.key)).toEqual(['L']);
+    expect(!wideInch.ok && wideInch.errors.map((e) => ('key' in e ? e.key : null))).toEqual(['L']);
     expect(!wideInch.ok && wideInch.errors[0]?.message).toMatch(
       /^Step-over L must be below 0\.\d+ in here \(got 0\.7874\): passes this far apart leave a wall\.$/,
     );
