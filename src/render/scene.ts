@@ -63,7 +63,11 @@ export interface SceneFraming {
   readonly up: Vec3;
   readonly fovDeg: number;
   readonly aspect: number;
-  /** The corners of the tool's bounding box (the tool in its posture, shank included; flat xyz). */
+  /**
+   * The tool's points the camera is fitted to: its body's and its holder's vertices (the tool in its
+   * posture, shank included; flat xyz). Not their bounding box's corners: a box taken in the surface's
+   * frame stands far out of a tool turned into the machine frame (three-axis), leaving the view empty.
+   */
   readonly toolBox: readonly number[];
   /** Every point the camera was fitted to (flat xyz). */
   readonly framed: readonly number[];

@@ -82,7 +82,7 @@ export class ToolDrawable implements Drawable {
         ),
         'tool',
       ),
-      'box',
+      'points',
     );
     holder.add(legend(this.holderEdges, 'tool'));
     tool.add(holder);
@@ -104,7 +104,7 @@ export class ToolDrawable implements Drawable {
     this.neighbours[1].add(legend(outlineCopy, 'tool'));
     // Their placement is a rigid motion from the core (passMatrix), set as the matrix itself.
     for (const m of this.neighbours) m.matrixAutoUpdate = false;
-    this.objects = [framed(legend(tool, 'tool'), 'box'), ...this.neighbours.map((m) => legend(m, 'tool'))];
+    this.objects = [framed(legend(tool, 'tool'), 'points'), ...this.neighbours.map((m) => legend(m, 'tool'))];
   }
 
   update(s: DrawState): void {
@@ -209,7 +209,7 @@ export class ToolDrawable implements Drawable {
     this.holderEdges.finish(e / 3);
     attr.needsUpdate = true;
     this.holder.computeVertexNormals();
-    // The camera is fitted to its box (framePoints.ts): kept with its points.
+    // The camera is fitted to its points (framePoints.ts); the box kept with them for three.js.
     this.holder.computeBoundingSphere();
     this.holder.computeBoundingBox();
   }
