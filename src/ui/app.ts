@@ -66,7 +66,7 @@ import { UrlState } from './urlState';
 import type { ViewId } from './views/panel';
 
 /** The teaching views' ids, as the link's `view=` names them (the field registry's; here, so the views' code can load lazily). */
-const VIEW_IDS: readonly ViewId[] = FIELDS.view.values;
+const VIEW_IDS = FIELDS.view.values.filter((v): v is ViewId => v !== RESULT_VIEW);
 
 /** What the teaching views say while the inputs ask a doubly curved or three-axis question. */
 const ELSEWHERE =
