@@ -72,9 +72,8 @@
    * Each view's own size: its aspect (width over height) between a least and a greatest height
    * (CSS px), so that its content fits from about 640 to 1100 px wide (measured on the built page,
    * R 3, Rcr 1, lead 5, h 0.05: taller content scrolls inside the frame); '' is the whole
-   * calculator (no `view`: one column below WIDE_PX, 1180 px tall at 860 to 1000 px; from WIDE_PX
-   * its columns side by side, `wide` tall: 801 px at every width from 1000 to 1920), `result` the
-   * compact card.
+   * calculator (no `view`: one column below 1000 px; from 1000 px `wide`, side by side), `result`
+   * the compact card.
    */
   const VIEW_SIZES = {
     '': { aspect: 0.7, min: 1240, max: 1240, wide: 840 },
@@ -138,16 +137,10 @@
     return Math.round(Math.min(MAX_HEIGHT, Math.max(MIN_RESERVED, Number(match[1]))));
   }
 
-  /** The width (CSS px) from which the whole calculator lays its columns side by side (src/ui/embed.css). */
-  const WIDE_PX = 1000;
-
-  /**
-   * The height a view reserves at `widthPx` wide: its aspect, between its least and greatest height;
-   * the whole calculator from WIDE_PX wide its side-by-side layout's height.
-   */
+  /** The height a view reserves at `widthPx` wide: its aspect, between its least and greatest height. */
   function viewHeight(view, widthPx) {
     const size = VIEW_SIZES[view ?? ''] ?? VIEW_SIZES[''];
-    if (size.wide !== undefined && widthPx >= WIDE_PX) return size.wide;
+    if (size.wide && widthPx >= 1000) return size.wide;
     return Math.round(Math.min(size.max, Math.max(size.min, widthPx / size.aspect)));
   }
 

@@ -4,7 +4,7 @@
  * fields hold is pressed. Each tool is named in its own unit (metric tools in mm, inch tools in
  * inch): the tools of the page's unit show, and on a first visit (no unit chosen yet on this
  * device, {@link ToolChips.offerBothUnits}) those of the other unit too, after them, until a unit is
- * chosen; a tap on one of those also takes the page to its unit, in the same tap (issue 28: an inch
+ * chosen (the unit switch, or a tool); a tap on one of those also takes the page to its unit, in the same tap (issue 28: an inch
  * shop's first job without a tap on the unit switch). The preset box below keeps the whole list. It
  * holds no state beyond that offer: it draws the state it is given.
  */
@@ -34,9 +34,11 @@ export class ToolChips {
         { type: 'button', class: 'tool-chip', title: preset.label, 'aria-pressed': 'false' },
         preset.chip,
       );
-      button.addEventListener('click', () =>
-        onPreset(preset, preset.sizedIn === this.unit ? undefined : preset.sizedIn),
-      );
+      button.addEventListener('click', () => {
+        // A tool chosen is a unit chosen: its unit's tools only from now on.
+        this.bothUnits = false;
+        onPreset(preset, preset.sizedIn === this.unit ? undefined : preset.sizedIn);
+      });
       row.append(button);
       return { preset, button };
     });

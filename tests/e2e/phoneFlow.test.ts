@@ -93,6 +93,10 @@ async function flow(
   // A first visit offers the tools of both units: an inch tool's tap also sets the inch unit.
   await user.tap(`[data-testid="tool-chips"] button:text-is("${chip}")`);
   expect(await page.locator('[data-testid="unit-switch"] input:checked').inputValue()).toBe(unit);
+  // A tool chosen is a unit chosen: the catalogue of its unit only from then on.
+  expect(await page.locator('[data-testid="tool-chips"] button:visible').allTextContents()).toEqual(
+    PRESETS.filter((p) => p.sizedIn === unit).map((p) => p.chip),
+  );
   await user.enter('[data-testid="input-h"]', h);
   // The user reads the answer in the result bar before copying it.
   const bar = page.getByTestId('result-bar-value');
