@@ -72,10 +72,11 @@
    * Each view's own size: its aspect (width over height) between a least and a greatest height
    * (CSS px), so that its content fits from about 640 to 1100 px wide (measured on the built page,
    * R 3, Rcr 1, lead 5, h 0.05: taller content scrolls inside the frame); '' is the whole
-   * calculator (no `view`: one column below 1000 px), `result` the compact card.
+   * calculator (no `view`: one column below 1000 px; from 1000 px `wide`, side by side), `result`
+   * the compact card.
    */
   const VIEW_SIZES = {
-    '': { aspect: 0.7, min: 1240, max: 1240 },
+    '': { aspect: 0.7, min: 1240, max: 1240, wide: 840 },
     profile: { aspect: 2.15, min: 450, max: 560 },
     chart: { aspect: 0.74, min: 1440, max: 1600 },
     tables: { aspect: 1, min: 680, max: 680 },
@@ -139,6 +140,7 @@
   /** The height a view reserves at `widthPx` wide: its aspect, between its least and greatest height. */
   function viewHeight(view, widthPx) {
     const size = VIEW_SIZES[view ?? ''] ?? VIEW_SIZES[''];
+    if (size.wide && widthPx >= 1000) return size.wide;
     return Math.round(Math.min(size.max, Math.max(size.min, widthPx / size.aspect)));
   }
 

@@ -39,6 +39,12 @@ export interface LabelPlacement {
   readonly visible: boolean;
 }
 
+/**
+ * The least space between two labels (px): enough that labels stacked near one point (the axes'
+ * names beside a three-axis scene's dimensions on a phone) read as separate boxes, each with its leader.
+ */
+export const LABEL_GAP_PX = 5;
+
 /** Clearances tried between a label's box and its anchor, nearest first (px). */
 const GAPS_PX = [6, 14, 26, 42];
 /** Directions tried after the preferred one, every 45 degrees. */
@@ -86,7 +92,7 @@ export function placeLabels(
   widthPx: number,
   heightPx: number,
   obstacles: readonly PixelRect[] = [],
-  gapPx = 2,
+  gapPx = LABEL_GAP_PX,
 ): LabelPlacement[] {
   const placed: PixelRect[] = [...obstacles];
   const out: LabelPlacement[] = labels.map(() => HIDDEN);

@@ -63,7 +63,11 @@ export interface SceneFraming {
   readonly up: Vec3;
   readonly fovDeg: number;
   readonly aspect: number;
-  /** The corners of the tool's bounding box (the tool in its posture, shank included; flat xyz). */
+  /**
+   * The corners of the tool's and its holder's boxes (the tool in its posture, shank included; flat
+   * xyz), about the tool axis and facing the camera: a box along the surface's axes stands far out of a tool turned into
+   * the machine frame (three-axis), and the view framed to it was left empty above and below.
+   */
   readonly toolBox: readonly number[];
   /** Every point the camera was fitted to (flat xyz). */
   readonly framed: readonly number[];
@@ -254,10 +258,11 @@ export class ToolScene extends ViewedScene {
   private fitView(): void {
     const { camera, controls, scene } = this.view;
     scene.updateMatrixWorld();
-    const focus = this.traceShown && gatherFramePoints(scene, this.points, true) > 0;
-    const count = focus ? this.points.length / 3 : gatherFramePoints(scene, this.points, false);
     const towards = camera.position.clone().sub(controls.target);
     if (towards.lengthSq() === 0) towards.set(0, 0, 1);
+    const facing = towards.toArray();
+    const focus = this.traceShown && gatherFramePoints(scene, this.points, true, facing) > 0;
+    const count = focus ? this.points.length / 3 : gatherFramePoints(scene, this.points, false, facing);
     const fitted = fitCamera(this.points, count, towards.toArray(), camera.up.toArray(), {
       fovDeg: camera.fov,
       aspect: camera.aspect,
@@ -274,12 +279,13 @@ export class ToolScene extends ViewedScene {
   framing(): SceneFraming {
     const { camera, controls, scene } = this.view;
     scene.updateMatrixWorld();
+    const facing = camera.position.clone().sub(controls.target).toArray();
     const toolBox: number[] = [];
-    gatherFramePoints(this.tool.objects[0] as Object3D, toolBox, false);
+    gatherFramePoints(this.tool.objects[0] as Object3D, toolBox, false, facing);
     const all: number[] = [];
-    gatherFramePoints(scene, all, false);
+    gatherFramePoints(scene, all, false, facing);
     const focus: number[] = [];
-    const focused = this.traceShown && gatherFramePoints(scene, focus, true) > 0;
+    const focused = this.traceShown && gatherFramePoints(scene, focus, true, facing) > 0;
     const lines: Array<{ key: string; widthPx: number; points: number[] }> = [];
     const at = new Vector3();
     scene.traverseVisible((o) => {

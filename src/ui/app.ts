@@ -67,7 +67,7 @@ import { UrlState } from './urlState';
 import type { ViewId } from './views/panel';
 
 /** The teaching views' ids, as the link's `view=` names them (the field registry's; here, so the views' code can load lazily). */
-const VIEW_IDS: readonly ViewId[] = FIELDS.view.values;
+const VIEW_IDS = FIELDS.view.values.filter((v): v is ViewId => v !== RESULT_VIEW);
 
 /** What the teaching views say while the inputs ask a doubly curved or three-axis question. */
 const ELSEWHERE =
@@ -145,7 +145,8 @@ export class CalculatorApp {
     const embed = parsed.embed;
     // A bare visit starts on the machine and unit chosen last time; a link or an embed as it says.
     this.storage = embed ? null : browserStorage();
-    this.state = withPreferences(parsed.state, parsed.bare, readPreferences(this.storage));
+    const remembered = readPreferences(this.storage);
+    this.state = withPreferences(parsed.state, parsed.bare, remembered);
     const requested = VIEW_IDS.find((v) => v === parsed.view);
     const extra: Record<string, string> = {};
     document.documentElement.classList.toggle('embed', embed);
@@ -236,8 +237,13 @@ export class CalculatorApp {
       onSide: (key, side) => this.change({ ...this.state, [key === 'Rf' ? 'feedSide' : 'crossSide']: side }),
       onSurfacePreset: (preset) => this.change(withCurvedPreset(this.state, preset, this.state.machine === '3axis')),
       onSurfaceAxis: (surfaceAxis) => this.change({ ...this.state, surfaceAxis }),
-      onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
+      onPreset: (p, unit) =>
+        this.change(
+          withValues(unit ? convertState(plainLengths(this.state), unit) : this.state, { R: p.R, Rcr: p.Rcr }),
+        ),
     });
+    // A first visit (no unit chosen yet on this device) offers the tools of both units (toolChips.ts).
+    this.fields.chips?.offerBothUnits(this.storage !== null && parsed.bare && remembered.unit === null);
     this.shelf = new LazyToolShelf(must(root, '[data-testid="tool-shelf"]'), {
       onTool: (t) =>
         this.change({ ...withValues(this.state, { R: t.diameterMm / 2, Rcr: t.cornerRadiusMm }), toolName: t.name }),

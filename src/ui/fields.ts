@@ -62,8 +62,8 @@ export interface FieldEvents {
   /** The design surface (plane, convex or concave cylinder) and a cylinder's axis. */
   readonly onSurface: (surface: SurfaceKind) => void;
   readonly onSurfaceAxis: (axis: SurfaceAxis) => void;
-  /** A preset was chosen: R and Rcr in mm. */
-  readonly onPreset: (preset: { readonly R: number; readonly Rcr: number }) => void;
+  /** A preset was chosen: R and Rcr in mm; `unit`: the page switches to it (a first visit's tool of the other unit). */
+  readonly onPreset: (preset: { readonly R: number; readonly Rcr: number }, unit?: Unit) => void;
   /** Five-axis or three-axis machining; three-axis raster or waterline passes. */
   readonly onMachine: (machine: Machine) => void;
   readonly onPasses: (passes: Passes) => void;
@@ -135,7 +135,8 @@ export class FieldsPanel {
   private readonly fields = new Map<FieldKey, FieldView>();
   private readonly preset: HTMLSelectElement;
   /** The catalogue tools of the unit on screen, one tap each (absent from a page without them). */
-  private readonly chips: ToolChips | null;
+  /** The catalogue buttons (toolChips.ts; a first visit offers both units'). */
+  readonly chips: ToolChips | null;
   private readonly surfacePreset: HTMLSelectElement;
   /** The presets the surface box lists now (five-axis or waterline). */
   private presetsShown: readonly string[] = [];

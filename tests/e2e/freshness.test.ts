@@ -9,11 +9,12 @@
  * 0.051 reply lands only after the Backspace, and it waits for the page to have received that reply
  * by counting the replies that reach the page (a Worker subclass installed before the page loads).
  */
-import type { Page, Worker } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { exactForward, forwardInput, type ToolInput } from '../../src/core/index';
 import { formatLenUnit } from '../../src/ui/format';
 import { keepShot, namedWorker, useSite } from './harness';
+import { heldAnswers, holdReplies, release } from './heldReplies';
 
 const site = useSite('docs/freshness');
 const TOOL: ToolInput = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
@@ -54,39 +55,6 @@ async function open(query: string): Promise<Page> {
 /** Answers from the worker `name` that the page has received so far. */
 const answersReceived = (page: Page, name: string) =>
   page.evaluate((n) => (window as unknown as Counted).__answers[n] ?? 0, name);
-
-type Held = { __held: unknown[][]; __release(): void };
-
-/** The worker keeps its replies (and progress) to itself until release(). */
-async function holdReplies(worker: Worker): Promise<void> {
-  await worker.evaluate(() => {
-    const g = self as unknown as Held & { postMessage(m: unknown, t?: unknown): void };
-    const post = g.postMessage.bind(g);
-    const held: unknown[][] = [];
-    let holding = true;
-    g.__held = held;
-    g.postMessage = (m: unknown, t?: unknown) => {
-      if (holding) held.push([m, t]);
-      else post(m, t);
-    };
-    g.__release = () => {
-      holding = false;
-      for (const [m, t] of held.splice(0)) post(m, t);
-    };
-  });
-}
-
-/** Answers (replies carrying a request) the worker holds. */
-const heldAnswers = (worker: Worker) =>
-  worker.evaluate(
-    () =>
-      (self as unknown as Held).__held.filter(([m]) => {
-        const r = m as { rpc?: string; value?: unknown };
-        return r?.rpc === 'ok' && typeof r.value === 'object' && r.value !== null && 'request' in r.value;
-      }).length,
-  );
-
-const release = (worker: Worker) => worker.evaluate(() => (self as unknown as Held).__release());
 
 /**
  * Types `1` after 0.05 (0.051), then Backspace (0.05), while `workerName` holds its replies; then

@@ -469,7 +469,19 @@ export const FIELDS = {
   machine: pageSetting('machine', 'Machine', ['5axis', '3axis'] as const),
   mode: pageSetting('mode', 'Mode', ['forward', 'inverse'] as const),
   target: pageSetting('target', 'Given in forward mode', ['h', 'ra'] as const),
-  view: pageSetting('view', 'Teaching view', ['profile', 'chart', 'tables', 'stepper', 'formulas', 'surface'] as const),
+  /**
+   * A teaching view shown alone (with `embed`), or `result`: an embed's compact card (the inputs in a
+   * line, the answer and Copy; src/ui/embedCard.ts), no teaching view.
+   */
+  view: pageSetting('view', 'Teaching view', [
+    'profile',
+    'chart',
+    'tables',
+    'stepper',
+    'formulas',
+    'surface',
+    'result',
+  ] as const),
   /** Light, dark, or auto (the system's colour scheme, as without it; the embed element resolves it to its host page's). */
   theme: pageSetting('theme', 'Theme', ['light', 'dark', 'auto'] as const),
   /** The projector's layout (the 3D scene and the open view fill the screen); the full page only, so no attribute. */

@@ -62,6 +62,9 @@ export class ToolDrawable implements Drawable {
     'pairs',
   );
 
+  /** The tool and the holder: the camera is fitted to their boxes about the tool axis (framePoints.ts). */
+  private readonly framedBodies: readonly Object3D[];
+
   /** The tool's and the holder's materials (lit, and a share of their own colour given off). */
   private readonly bodies: readonly MeshStandardMaterial[];
 
@@ -87,6 +90,7 @@ export class ToolDrawable implements Drawable {
     holder.add(legend(this.holderEdges, 'tool'));
     tool.add(holder);
     this.bodies = [tool.material, holder.material as MeshStandardMaterial];
+    this.framedBodies = [tool, holder];
     this.matchTheme();
     const ghost = new MeshBasicMaterial({
       color: COLOURS.ghost,
@@ -141,6 +145,8 @@ export class ToolDrawable implements Drawable {
     this.geometry.computeBoundingBox();
     this.outline.finishPairs(positions, this.outlinePairs);
     this.fillHolder(s);
+    // Boxes square to the tool axis: tight around the tool in any posture (three-axis: turned upright).
+    for (const body of this.framedBodies) body.userData.boxAxis = g.toolAxis;
     // The neighbours: carried along the surface by L (turned about a cylinder's axis along the
     // feed, about m on a doubly curved patch); in the machine frame, the passes it gives.
     const given = g.machine?.passMatrices;
@@ -209,7 +215,7 @@ export class ToolDrawable implements Drawable {
     this.holderEdges.finish(e / 3);
     attr.needsUpdate = true;
     this.holder.computeVertexNormals();
-    // The camera is fitted to its box (framePoints.ts): kept with its points.
+    // The camera is fitted to its box about the tool axis (framePoints.ts), from these points.
     this.holder.computeBoundingSphere();
     this.holder.computeBoundingBox();
   }

@@ -4,6 +4,7 @@
  */
 import { type Object3D, SphereGeometry } from 'three';
 import { axisFoot } from '../../core/output/surfaceGeometry';
+import { framed } from '../framePoints';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import {
@@ -19,7 +20,8 @@ import {
 
 export class ToolMarksDrawable implements Drawable {
   readonly objects: readonly Object3D[];
-  private readonly axis = legend(lineOf(2, COLOURS.axis), 'axis');
+  /** Framed with the tool: its top, above the holder, stays in the view. */
+  private readonly axis = framed(legend(lineOf(2, COLOURS.axis), 'axis'), 'points');
   private readonly dot = new SphereGeometry(1, 16, 12);
   private readonly contact = markerOf(this.dot, COLOURS.contact, 'contact');
   private readonly centre = markerOf(this.dot, COLOURS.centre, 'centre');

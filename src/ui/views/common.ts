@@ -14,8 +14,8 @@ export interface ViewContext {
   readonly unit: Unit;
 }
 
-/** A teaching view's id, as the link's `view=` names it (the field registry's values). */
-export type ViewId = (typeof FIELDS.view.values)[number];
+/** A teaching view's id, as the link's `view=` names it (the field registry's values but `result`, an embed's card). */
+export type ViewId = Exclude<(typeof FIELDS.view.values)[number], 'result'>;
 
 /** The kinds of question beyond a plane or a cylinder that a view may draw. */
 export type PageKind = 'curved' | 'three-axis';

@@ -5,6 +5,7 @@
 import type { ProcedureKey } from '../../core/procedures/procedures';
 import { ChartView } from './chartView';
 import { html, type PageViewContext, type TeachingView, type ViewContext, type ViewId } from './common';
+import { curvedViewNote } from './curvedViewText';
 import { FormulasView } from './formulasView';
 import { ProfileView } from './profileView';
 import { StepperView, type TraceDisplay } from './stepperView';
@@ -151,12 +152,15 @@ export class TeachingPanel {
     if (tab && tab.textContent !== name) tab.textContent = name;
   }
 
-  /** The neutral line over the visible view for a three-axis question (what it shows), or none. */
+  /** The neutral line over the visible view for a three-axis question or a doubly curved point (what it shows), or none. */
   private showPageNote(): void {
+    const page = this.staleText === null ? this.pageCtx : null;
     const text =
-      this.pageCtx?.kind === 'three-axis' && this.staleText === null
-        ? threeAxisViewNote(this.active, this.pageCtx.data)
-        : null;
+      page === null
+        ? null
+        : page.kind === 'three-axis'
+          ? threeAxisViewNote(this.active, page.data)
+          : curvedViewNote(this.active);
     this.pageNote.hidden = text === null;
     if (this.pageNote.textContent !== (text ?? '')) this.pageNote.textContent = text ?? '';
   }
@@ -207,8 +211,9 @@ export class TeachingPanel {
   private showStale(): void {
     const active = this.views.find((v) => v.id === this.active);
     const elsewhere = active !== undefined && !this.draws(active);
-    // A three-axis question's views say what they show in the neutral line (showPageNote), not here.
-    const neutral = this.pageCtx?.kind === 'three-axis';
+    // A three-axis question's and a doubly curved point's views say what they show in the neutral
+    // line (showPageNote), not here.
+    const neutral = this.pageCtx !== null;
     const text = this.staleText ?? (elsewhere && !neutral ? this.elsewhere : null);
     this.root.classList.toggle('stale', text !== null);
     this.root.classList.toggle('elsewhere', this.staleText === null && elsewhere);

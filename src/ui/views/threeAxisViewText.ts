@@ -11,7 +11,7 @@ import { formatAngle, formatDeg } from '../format';
 
 type ThreeAxisOk = Extract<ThreeAxisTeachReply, { ok: true }>;
 /** A view's id (common.ts ViewId; not imported from there: this module is pure, tested without a DOM). */
-type ViewId = (typeof FIELDS.view.values)[number];
+type ViewId = Exclude<(typeof FIELDS.view.values)[number], 'result'>;
 /** The kinds of page question (common.ts PageKind), null for a plane's or a cylinder's. */
 type PageKind = 'curved' | 'three-axis';
 
