@@ -27,6 +27,8 @@ import { flankAtWidth } from '../tool/posture';
 import { BodySection, SectionPoint } from './bodySection';
 import type { ToothModel } from './toothModel';
 
+/** Most steps of one walk from the contact (a few tens are usual; thousands mean a stall). */
+const MAX_WALK_STEPS = 4000;
 /** Largest polar step, radians. */
 const MAX_STEP_RAD = 0.2;
 /** Levels within this fraction of the pitch count as met (an edge within ~1e-13 rad of the point). */
@@ -159,6 +161,9 @@ function levelsOffset(m: ToothModel, xLocalMm: number): number {
 
 /** The first event walking from the lowest point in direction `dir`, or `best` when none is lower. */
 function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, best: number): number {
+  const tiltSine = Math.abs(m.axis[1]);
+  // A bound of |P_perp,y| along the section near its bottom: |y - O_y| + |a_y| |zeta|, |zeta| <= 2 R.
+  const sideOffset = Math.abs(row.section.yRel) + tiltSine * 2 * (m.toolRadiusMm + m.cornerRadiusMm);
   const omega = m.omegaRadPerMm;
   const pitch = m.toothPitchRad;
   const scale = m.toolRadiusMm;
@@ -175,7 +180,8 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
   let level = (theta - omega * p0.w - beta) / pitch;
   if (distToInt(level) <= LEVEL_TOL) return Math.min(best, p0.z);
   let grow = MAX_STEP_RAD;
-  for (let iter = 0; iter < 4000; iter++) {
+  let iter = 0;
+  for (; iter < MAX_WALK_STEPS; iter++) {
     if (p0.rho <= 1e-12 * scale && !throughTip) {
       best = Math.min(best, p0.z);
       break;
@@ -206,14 +212,21 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
       rhoLo = Math.min(p0.rho, p1.rho) - speed * delta;
       // Through the tip the curve crosses the axis transversally: psi is smooth on either side
       // (its rate bounded by the curvature), and jumps by pi only at the tip itself.
+      // Otherwise |dpsi/dalpha| = |P_perp . (v x a)| / rho^2 <= speed (|P_perp,y| / rho^2 + |a_y| / rho):
+      // v lies in the plane y = const, so v x a_xz is along y and v x (a_y e_y) in the plane. Without
+      // tilt that is speed |y - O_y| / rho^2, far below speed / rho near the axis's own plane.
       psiRate = throughTip
         ? 2 * Math.max(Math.abs(p0.dpsi), Math.abs(p1.dpsi)) + 1e-3
         : rhoLo > 0
-          ? speed / rhoLo
+          ? speed * (Math.min(sideOffset, rhoLo) / (rhoLo * rhoLo) + tiltSine / rhoLo)
           : Number.POSITIVE_INFINITY;
       bound = speed * omega + psiRate;
       if (bound * delta <= 0.5 * pitch || delta <= 1e-15) break;
-      delta = Math.min(0.5 * delta, (0.45 * pitch) / bound);
+      // Past the axis within the step (rhoLo <= 0): shorten it to half the distance to the axis.
+      delta =
+        rhoLo > 0
+          ? Math.min(0.5 * delta, (0.45 * pitch) / bound)
+          : Math.min(0.5 * delta, (0.5 * Math.min(p0.rho, p1.rho)) / speed);
     }
     if (!Number.isFinite(p1.t)) break;
     grow = 4 * delta;
@@ -293,6 +306,9 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
     level = level1;
     if (p0.z >= best || final) break;
   }
+  // Never a silent wrong height: a walk that ran out of steps says so.
+  if (iter >= MAX_WALK_STEPS)
+    throw new Error('The tooth event search did not converge at this point (please report the inputs).');
   return best;
 }
 

@@ -171,4 +171,25 @@ describe('envelope height against the tooth-sweep brute force', () => {
       );
     }
   });
+
+  it("a ball at lead 0 just beside its tip's track: the teeth sweep past the axis (psi turns fast) within 1e-9 mm", () => {
+    const c: Case = {
+      label: 'ball lead 0',
+      tool: { toolRadiusMm: 3, cornerRadiusMm: 3, leadAngleDeg: 0, tiltAngleDeg: 0 },
+      pattern: 'one-way',
+      intervalMm: 1,
+      flutes: 2,
+      fzMm: 0.1,
+      passPhase: 0,
+    };
+    const m = modelOf(c);
+    for (const [x, y] of [
+      [0, 1e-4],
+      [0, 1e-6],
+      [0.034, -1e-5],
+    ] as const) {
+      const brute = bruteEnvelopeHeightMm(bruteParams(c), x, y, 100).heightMm;
+      expect(Math.abs(envelopeHeightMm(m, x, y) - brute), `(${x}, ${y})`).toBeLessThan(1e-9);
+    }
+  });
 });
