@@ -67,8 +67,11 @@ function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
         const x = s === 8 ? b - 1e-12 * (b - a) : a + ((b - a) * s) / 8;
         const low = lowestPass(row, x);
         if (low !== prevLow && low >= 0 && prevLow >= 0) {
-          const f = { value: (t: number) => row.passHeightAt(prevLow, t) - row.passHeightAt(low, t) };
-          breaks.push(bracketedRoot(f, prevX, x, f.value(prevX), f.value(x), 1e-15));
+          const f = { value: (t: number) => row.passHeightOrNaN(prevLow, t) - row.passHeightOrNaN(low, t) };
+          const fa = f.value(prevX);
+          const fb = f.value(x);
+          if (fa < 0 !== fb < 0 && Number.isFinite(fa) && Number.isFinite(fb))
+            breaks.push(bracketedRoot(f, prevX, x, fa, fb, 1e-15));
         }
         prevX = x;
         prevLow = low;
@@ -84,7 +87,7 @@ function lowestPass(row: RowEnvelope, x: number): number {
   let best = Number.POSITIVE_INFINITY;
   let index = -1;
   for (let i = 0; i < row.passes.length; i++) {
-    const h = row.passHeightAt(i, x);
+    const h = row.passHeightOrNaN(i, x);
     if (h < best) {
       best = h;
       index = i;

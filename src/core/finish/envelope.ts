@@ -27,8 +27,13 @@ import { flankAtWidth } from '../tool/posture';
 import { BodySection, SectionPoint } from './bodySection';
 import type { ToothModel } from './toothModel';
 
-/** Most steps of one walk from the contact (a few tens are usual; thousands mean a stall). */
-const MAX_WALK_STEPS = 4000;
+/** The error a point whose event search stalled raises (never a silent wrong height). */
+export const NOT_CONVERGED = 'The tooth event search did not converge at this point (please report the inputs).';
+/**
+ * Most steps of one walk from the contact: a few tens are usual; where Phi turns just short of a level
+ * (a tangential approach) the safe steps stay short and take thousands.
+ */
+const MAX_WALK_STEPS = 20000;
 /** Largest polar step, radians. */
 const MAX_STEP_RAD = 0.2;
 /** Levels within this fraction of the pitch count as met (an edge within ~1e-13 rad of the point). */
@@ -139,6 +144,22 @@ export function passEventMinMm(m: ToothModel, row: PassRow, xLocalMm: number, be
   const beta = levelsOffset(m, xLocalMm);
   if (row.bottom.rho <= 1e-12 * m.toolRadiusMm) return Math.min(best, row.bottom.z);
   const right = sideEventMm(m, row, beta, 1, best);
+  const least = sideEventMm(m, row, beta, -1, right);
+  // Never a silent wrong height.
+  if (Number.isNaN(least)) throw new Error(NOT_CONVERGED);
+  return least;
+}
+
+/**
+ * The lowest event of one pass at local x, unpruned, or NaN where the search stalled (for searches
+ * that can do without this pass's value, such as finding where passes cross), mm.
+ */
+export function passEventOrNaNMm(m: ToothModel, row: PassRow, xLocalMm: number): number {
+  if (!row.reaches) return Number.POSITIVE_INFINITY;
+  const beta = levelsOffset(m, xLocalMm);
+  if (row.bottom.rho <= 1e-12 * m.toolRadiusMm) return row.bottom.z;
+  const right = sideEventMm(m, row, beta, 1, Number.POSITIVE_INFINITY);
+  if (Number.isNaN(right)) return Number.NaN;
   return sideEventMm(m, row, beta, -1, right);
 }
 
@@ -147,10 +168,10 @@ export function passSideEventsMm(m: ToothModel, row: PassRow, xLocalMm: number):
   if (!row.reaches) return [Number.POSITIVE_INFINITY, Number.POSITIVE_INFINITY];
   const beta = levelsOffset(m, xLocalMm);
   if (row.bottom.rho <= 1e-12 * m.toolRadiusMm) return [row.bottom.z, row.bottom.z];
-  return [
-    sideEventMm(m, row, beta, 1, Number.POSITIVE_INFINITY),
-    sideEventMm(m, row, beta, -1, Number.POSITIVE_INFINITY),
-  ];
+  // A side whose walk ran out of steps counts as having no event (the crest search then falls back).
+  const r = sideEventMm(m, row, beta, 1, Number.POSITIVE_INFINITY);
+  const l = sideEventMm(m, row, beta, -1, Number.POSITIVE_INFINITY);
+  return [Number.isNaN(r) ? Number.POSITIVE_INFINITY : r, Number.isNaN(l) ? Number.POSITIVE_INFINITY : l];
 }
 
 /** The levels -omega x + j pitch, as an offset reduced to (-pitch, 0] (omega x can be large). */
@@ -306,9 +327,8 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
     level = level1;
     if (p0.z >= best || final) break;
   }
-  // Never a silent wrong height: a walk that ran out of steps says so.
-  if (iter >= MAX_WALK_STEPS)
-    throw new Error('The tooth event search did not converge at this point (please report the inputs).');
+  // A walk that ran out of steps has no answer (NaN): the callers say so or look elsewhere.
+  if (iter >= MAX_WALK_STEPS) return Number.NaN;
   return best;
 }
 
