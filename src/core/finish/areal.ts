@@ -13,7 +13,9 @@
  * The lowest point is the continuous contact on the CC path (no runout); the highest is the largest
  * line maximum over y (the shared maximiser over the cell's width).
  */
+import { inverseInput } from '../input/validate';
 import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
+import { planeInverse } from '../surfaces/exact';
 import { RUNOUT_NOT_YET } from './feedMarks';
 import { gaussLegendre } from './gaussLegendre';
 import { RowEnvelope } from './rowEnvelope';
@@ -36,6 +38,10 @@ const ROW_RULE = gaussLegendre(20);
 const PANEL_RULE = gaussLegendre(10);
 /** Relative agreement of a y panel with its halves at which it is accepted. */
 const Y_TOL = 1e-9;
+/** Most panel halvings of one integral over y (each 20 lines). */
+const MAX_SPLITS = 120;
+/** Panels graded towards each cusp: widths halving 12 times. */
+const GRADING = 12;
 
 /** The breakpoints of a line over one feed period from x0: valleys, crests and crossings of passes. */
 function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
@@ -61,8 +67,11 @@ function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
         const x = s === 8 ? b - 1e-12 * (b - a) : a + ((b - a) * s) / 8;
         const low = lowestPass(row, x);
         if (low !== prevLow && low >= 0 && prevLow >= 0) {
-          const f = { value: (t: number) => row.passHeightAt(prevLow, t) - row.passHeightAt(low, t) };
-          breaks.push(bracketedRoot(f, prevX, x, f.value(prevX), f.value(x), 1e-15));
+          const f = { value: (t: number) => row.passHeightOrNaN(prevLow, t) - row.passHeightOrNaN(low, t) };
+          const fa = f.value(prevX);
+          const fb = f.value(x);
+          if (fa < 0 !== fb < 0 && Number.isFinite(fa) && Number.isFinite(fb))
+            breaks.push(bracketedRoot(f, prevX, x, fa, fb, 1e-15));
         }
         prevX = x;
         prevLow = low;
@@ -78,7 +87,7 @@ function lowestPass(row: RowEnvelope, x: number): number {
   let best = Number.POSITIVE_INFINITY;
   let index = -1;
   for (let i = 0; i < row.passes.length; i++) {
-    const h = row.passHeightAt(i, x);
+    const h = row.passHeightOrNaN(i, x);
     if (h < best) {
       best = h;
       index = i;
@@ -151,7 +160,14 @@ function lineIntegrals(m: ToothModel, y: number, mean: number): number[] {
 }
 
 /** Adaptive integral over y in [a, b] of the line integrals (see the module comment). */
-function integrateY(m: ToothModel, a: number, b: number, mean: number, key: number): number[] {
+function integrateY(
+  m: ToothModel,
+  a: number,
+  b: number,
+  mean: number,
+  key: number,
+  cusps: readonly number[],
+): number[] {
   const panel = (lo: number, hi: number) => {
     const c = 0.5 * (lo + hi);
     const r = 0.5 * (hi - lo);
@@ -163,30 +179,73 @@ function integrateY(m: ToothModel, a: number, b: number, mean: number, key: numb
     }
     return out;
   };
-  const total = [0, 0, 0, 0, 0];
-  const initial = 4;
-  const whole: Array<[number, number, number[]]> = [];
-  for (let i = 0; i < initial; i++) {
-    const lo = a + ((b - a) * i) / initial;
-    const hi = a + ((b - a) * (i + 1)) / initial;
-    whole.push([lo, hi, panel(lo, hi)]);
+  // Each panel carries its 10-point value and its halves'; the panel whose halves disagree most
+  // with it is halved next (singular points of the line integral, where a neighbouring pass starts
+  // to cut, are then refined where they lie), until the disagreements add up to the tolerance.
+  interface Panel {
+    readonly lo: number;
+    readonly hi: number;
+    readonly left: number[];
+    readonly right: number[];
+    readonly err: number;
   }
-  const scale = Math.abs(whole.reduce((s, p) => s + (p[2][key] as number), 0)) + 1e-300;
-  let evaluations = 0;
-  while (whole.length > 0) {
-    const [lo, hi, v] = whole.pop() as [number, number, number[]];
+  const make = (lo: number, hi: number, whole: number[]): Panel => {
     const mid = 0.5 * (lo + hi);
     const left = panel(lo, mid);
     const right = panel(mid, hi);
-    evaluations++;
-    const err = Math.abs((left[key] as number) + (right[key] as number) - (v[key] as number));
-    if (err <= Y_TOL * scale * ((hi - lo) / (b - a)) || hi - lo <= 1e-9 * (b - a) || evaluations > 400) {
-      for (let i = 0; i < 5; i++) total[i] = (total[i] as number) + (left[i] as number) + (right[i] as number);
-    } else {
-      whole.push([lo, mid, left], [mid, hi, right]);
+    return {
+      lo,
+      hi,
+      left,
+      right,
+      err: Math.abs((left[key] as number) + (right[key] as number) - (whole[key] as number)),
+    };
+  };
+  // Start from panels graded towards each cusp between passes: near it, where a neighbouring pass
+  // starts to cut below the line's crests, the line integral turns like a power 3/2, in a strip
+  // narrower than the feed marks' slope allows; graded panels put nodes there.
+  const ends = [a, b];
+  for (const c of cusps) {
+    if (!(c > a && c < b)) continue;
+    ends.push(c);
+    for (let k = 1; k <= GRADING; k++) {
+      ends.push(c - (c - a) * 2 ** -k, c + (b - c) * 2 ** -k);
     }
   }
+  ends.sort((p, q) => p - q);
+  const panels: Panel[] = [];
+  for (let i = 0; i + 1 < ends.length; i++) {
+    const lo = ends[i] as number;
+    const hi = ends[i + 1] as number;
+    if (hi > lo) panels.push(make(lo, hi, panel(lo, hi)));
+  }
+  const scale = Math.abs(panels.reduce((s, p) => s + (p.left[key] as number) + (p.right[key] as number), 0)) + 1e-300;
+  for (let split = 0; split < MAX_SPLITS; split++) {
+    let worst = 0;
+    let errSum = 0;
+    for (let i = 0; i < panels.length; i++) {
+      errSum += (panels[i] as Panel).err;
+      if ((panels[i] as Panel).err > (panels[worst] as Panel).err) worst = i;
+    }
+    if (errSum <= Y_TOL * scale) break;
+    const p = panels[worst] as Panel;
+    if (!(p.hi - p.lo > 1e-9 * (b - a))) break;
+    const mid = 0.5 * (p.lo + p.hi);
+    panels.splice(worst, 1, make(p.lo, mid, p.left), make(mid, p.hi, p.right));
+  }
+  const total = [0, 0, 0, 0, 0];
+  for (const p of panels)
+    for (let i = 0; i < 5; i++) total[i] = (total[i] as number) + (p.left[i] as number) + (p.right[i] as number);
   return total;
+}
+/**
+ * The continuous model's cusps between passes in the cell [0, cross period): one-way at the right
+ * flank's reach wR(h); zigzag at L/2 (two right flanks) and 3L/2 (two left flanks).
+ */
+function cuspLines(m: ToothModel): number[] {
+  const { tool, pattern, intervalMm } = m.input;
+  if (pattern === 'zigzag') return [intervalMm / 2, 1.5 * intervalMm];
+  return [planeInverse(inverseInput(tool, pattern, intervalMm)).halfWidthRightMm];
 }
 
 /** The areal parameters of a prepared model over one period cell (see the module comment). */
@@ -195,8 +254,9 @@ export function arealParameters(m: ToothModel): ArealParameters {
   const width = m.feedPeriodMm;
   const height = m.crossPeriodMm;
   const area = width * height;
-  const mean = (integrateY(m, 0, height, Number.NaN, 0)[0] as number) / area;
-  const sums = integrateY(m, 0, height, mean, 2);
+  const cusps = cuspLines(m);
+  const mean = (integrateY(m, 0, height, Number.NaN, 0, cusps)[0] as number) / area;
+  const sums = integrateY(m, 0, height, mean, 2, cusps);
   const sa = (sums[1] as number) / area;
   const sq = Math.sqrt(Math.max(0, (sums[2] as number) / area));
   const low = new RowEnvelope(m, 0).floorMm;

@@ -27,6 +27,13 @@ import { flankAtWidth } from '../tool/posture';
 import { BodySection, SectionPoint } from './bodySection';
 import type { ToothModel } from './toothModel';
 
+/** The error a point whose event search stalled raises (never a silent wrong height). */
+export const NOT_CONVERGED = 'The tooth event search did not converge at this point (please report the inputs).';
+/**
+ * Most steps of one walk from the contact: a few tens are usual; where Phi turns just short of a level
+ * (a tangential approach) the safe steps stay short and take thousands.
+ */
+const MAX_WALK_STEPS = 20000;
 /** Largest polar step, radians. */
 const MAX_STEP_RAD = 0.2;
 /** Levels within this fraction of the pitch count as met (an edge within ~1e-13 rad of the point). */
@@ -137,6 +144,22 @@ export function passEventMinMm(m: ToothModel, row: PassRow, xLocalMm: number, be
   const beta = levelsOffset(m, xLocalMm);
   if (row.bottom.rho <= 1e-12 * m.toolRadiusMm) return Math.min(best, row.bottom.z);
   const right = sideEventMm(m, row, beta, 1, best);
+  const least = sideEventMm(m, row, beta, -1, right);
+  // Never a silent wrong height.
+  if (Number.isNaN(least)) throw new Error(NOT_CONVERGED);
+  return least;
+}
+
+/**
+ * The lowest event of one pass at local x, unpruned, or NaN where the search stalled (for searches
+ * that can do without this pass's value, such as finding where passes cross), mm.
+ */
+export function passEventOrNaNMm(m: ToothModel, row: PassRow, xLocalMm: number): number {
+  if (!row.reaches) return Number.POSITIVE_INFINITY;
+  const beta = levelsOffset(m, xLocalMm);
+  if (row.bottom.rho <= 1e-12 * m.toolRadiusMm) return row.bottom.z;
+  const right = sideEventMm(m, row, beta, 1, Number.POSITIVE_INFINITY);
+  if (Number.isNaN(right)) return Number.NaN;
   return sideEventMm(m, row, beta, -1, right);
 }
 
@@ -145,10 +168,10 @@ export function passSideEventsMm(m: ToothModel, row: PassRow, xLocalMm: number):
   if (!row.reaches) return [Number.POSITIVE_INFINITY, Number.POSITIVE_INFINITY];
   const beta = levelsOffset(m, xLocalMm);
   if (row.bottom.rho <= 1e-12 * m.toolRadiusMm) return [row.bottom.z, row.bottom.z];
-  return [
-    sideEventMm(m, row, beta, 1, Number.POSITIVE_INFINITY),
-    sideEventMm(m, row, beta, -1, Number.POSITIVE_INFINITY),
-  ];
+  // A side whose walk ran out of steps counts as having no event (the crest search then falls back).
+  const r = sideEventMm(m, row, beta, 1, Number.POSITIVE_INFINITY);
+  const l = sideEventMm(m, row, beta, -1, Number.POSITIVE_INFINITY);
+  return [Number.isNaN(r) ? Number.POSITIVE_INFINITY : r, Number.isNaN(l) ? Number.POSITIVE_INFINITY : l];
 }
 
 /** The levels -omega x + j pitch, as an offset reduced to (-pitch, 0] (omega x can be large). */
@@ -159,6 +182,9 @@ function levelsOffset(m: ToothModel, xLocalMm: number): number {
 
 /** The first event walking from the lowest point in direction `dir`, or `best` when none is lower. */
 function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, best: number): number {
+  const tiltSine = Math.abs(m.axis[1]);
+  // A bound of |P_perp,y| along the section near its bottom: |y - O_y| + |a_y| |zeta|, |zeta| <= 2 R.
+  const sideOffset = Math.abs(row.section.yRel) + tiltSine * 2 * (m.toolRadiusMm + m.cornerRadiusMm);
   const omega = m.omegaRadPerMm;
   const pitch = m.toothPitchRad;
   const scale = m.toolRadiusMm;
@@ -175,7 +201,8 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
   let level = (theta - omega * p0.w - beta) / pitch;
   if (distToInt(level) <= LEVEL_TOL) return Math.min(best, p0.z);
   let grow = MAX_STEP_RAD;
-  for (let iter = 0; iter < 4000; iter++) {
+  let iter = 0;
+  for (; iter < MAX_WALK_STEPS; iter++) {
     if (p0.rho <= 1e-12 * scale && !throughTip) {
       best = Math.min(best, p0.z);
       break;
@@ -206,14 +233,21 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
       rhoLo = Math.min(p0.rho, p1.rho) - speed * delta;
       // Through the tip the curve crosses the axis transversally: psi is smooth on either side
       // (its rate bounded by the curvature), and jumps by pi only at the tip itself.
+      // Otherwise |dpsi/dalpha| = |P_perp . (v x a)| / rho^2 <= speed (|P_perp,y| / rho^2 + |a_y| / rho):
+      // v lies in the plane y = const, so v x a_xz is along y and v x (a_y e_y) in the plane. Without
+      // tilt that is speed |y - O_y| / rho^2, far below speed / rho near the axis's own plane.
       psiRate = throughTip
         ? 2 * Math.max(Math.abs(p0.dpsi), Math.abs(p1.dpsi)) + 1e-3
         : rhoLo > 0
-          ? speed / rhoLo
+          ? speed * (Math.min(sideOffset, rhoLo) / (rhoLo * rhoLo) + tiltSine / rhoLo)
           : Number.POSITIVE_INFINITY;
       bound = speed * omega + psiRate;
       if (bound * delta <= 0.5 * pitch || delta <= 1e-15) break;
-      delta = Math.min(0.5 * delta, (0.45 * pitch) / bound);
+      // Past the axis within the step (rhoLo <= 0): shorten it to half the distance to the axis.
+      delta =
+        rhoLo > 0
+          ? Math.min(0.5 * delta, (0.45 * pitch) / bound)
+          : Math.min(0.5 * delta, (0.5 * Math.min(p0.rho, p1.rho)) / speed);
     }
     if (!Number.isFinite(p1.t)) break;
     grow = 4 * delta;
@@ -293,6 +327,8 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
     level = level1;
     if (p0.z >= best || final) break;
   }
+  // A walk that ran out of steps has no answer (NaN): the callers say so or look elsewhere.
+  if (iter >= MAX_WALK_STEPS) return Number.NaN;
   return best;
 }
 

@@ -5,7 +5,7 @@
  * lowest point, where the bottom's level `(Phi_b + omega x) / pitch` is a whole number. Lengths mm.
  */
 import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
-import { PassRow, passEventMinMm, passesAt, passSideEventsMm } from './envelope';
+import { PassRow, passEventMinMm, passEventOrNaNMm, passesAt, passSideEventsMm } from './envelope';
 import type { ToothModel } from './toothModel';
 
 /** One pass on the line: its row and how global x maps to its local x (`sign (x - shift)`). */
@@ -40,6 +40,12 @@ export class RowEnvelope {
     let best = Number.POSITIVE_INFINITY;
     for (const p of this.passes) best = passEventMinMm(this.m, p.row, p.sign * (xMm - p.shiftMm), best);
     return best;
+  }
+
+  /** The height of one pass alone at x (mm), or NaN where its search stalled (passEventOrNaNMm). */
+  passHeightOrNaN(index: number, xMm: number): number {
+    const p = this.passes[index] as PassOnLine;
+    return passEventOrNaNMm(this.m, p.row, p.sign * (xMm - p.shiftMm));
   }
 
   /** The height of one pass alone at x (mm). */
@@ -85,7 +91,7 @@ export class RowEnvelope {
     const fb = f.value(b);
     if (fa < 0 && fb > 0 && Number.isFinite(fa) && Number.isFinite(fb)) return bracketedRoot(f, a, b, fa, fb, 1e-15);
     const end = newSearchEnd();
-    maximise({ value: (x) => this.passHeightAt(index, x) }, v, v + P, 16, 1e-13 * P, end);
+    maximise({ value: (x) => this.passHeightOrNaN(index, x) }, v, v + P, 16, 1e-13 * P, end);
     return end.x;
   }
 }

@@ -7,11 +7,16 @@
  * height below the flank and shank limits: validateForward). No runout (not computed yet).
  */
 import { describe, expect, it } from 'vitest';
-import { envelopeHeightMm, toothModel } from '../../../src/core/finish/index';
+import { arealMap, envelopeHeightMm, feedMarks, toothModel } from '../../../src/core/finish/index';
 import { seededRandom } from '../../../src/core/math/seededRandom';
 import { planeIntervalMm } from '../../../src/core/surfaces/exact';
 import { scallopHeightLimits, validateForward } from '../../../src/core/surfaces/validate';
-import { bruteEnvelopeHeightMm, type ToothSweepParams } from '../../support/reference/toothSweepBruteForce';
+import {
+  bruteEnvelopeGrid,
+  bruteEnvelopeHeightMm,
+  bruteFeedMarkHeightMm,
+  type ToothSweepParams,
+} from '../../support/reference/toothSweepBruteForce';
 
 const DEG = Math.PI / 180;
 type Kind = 'ball' | 'flat' | 'bull';
@@ -110,5 +115,81 @@ describe('envelope height against the tooth-sweep brute force', () => {
       }
     }
     expect(worst).toBeLessThan(1e-9);
+  });
+
+  const fixed: Case[] = [
+    {
+      label: 'R 3 Rcr 1 lead 15 tilt 10 zigzag',
+      tool: { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 15, tiltAngleDeg: 10 },
+      pattern: 'zigzag',
+      intervalMm: 1,
+      flutes: 3,
+      fzMm: 0.08,
+      passPhase: 0.3,
+    },
+    {
+      label: 'ball R 3 lead 0 tilt 12 zigzag',
+      tool: { toolRadiusMm: 3, cornerRadiusMm: 3, leadAngleDeg: 0, tiltAngleDeg: 12 },
+      pattern: 'zigzag',
+      intervalMm: 0.8,
+      flutes: 2,
+      fzMm: 0.1,
+      passPhase: 0,
+    },
+  ];
+  const modelOf = (c: Case) =>
+    toothModel({
+      tool: c.tool,
+      pattern: c.pattern,
+      intervalMm: c.intervalMm,
+      finish: { flutes: c.flutes, feedPerToothMm: c.fzMm, runoutMm: 0, runoutPhaseDeg: 0, passPhase: c.passPhase },
+    });
+
+  it('hf along the CC path agrees with the brute force within 1e-9 mm', () => {
+    for (const c of fixed) {
+      const brute = bruteFeedMarkHeightMm(bruteParams(c), 100);
+      expect(Math.abs(feedMarks(modelOf(c)).heightMm - brute.heightMm), c.label).toBeLessThan(1e-9);
+    }
+  });
+
+  it("the areal map's grid (sample i at (i + 1/2) dx over the cell) agrees with the brute force's within 1e-9 mm", () => {
+    const c = fixed[0] as Case;
+    const m = modelOf(c);
+    const mine = arealMap(m, 6, 6);
+    const brute = bruteEnvelopeGrid(
+      bruteParams(c),
+      { x0: 0, x1: m.feedPeriodMm, y0: 0, y1: m.crossPeriodMm },
+      6,
+      6,
+      80,
+    );
+    expect(mine.dxMm).toBeCloseTo(brute.dxMm, 15);
+    expect(mine.dyMm).toBeCloseTo(brute.dyMm, 15);
+    for (let i = 0; i < 36; i++) {
+      expect(Math.abs((mine.heightsMm[i] as number) - (brute.heightsMm[i] as number)), `sample ${i}`).toBeLessThan(
+        1e-9,
+      );
+    }
+  });
+
+  it("a ball at lead 0 just beside its tip's track: the teeth sweep past the axis (psi turns fast) within 1e-9 mm", () => {
+    const c: Case = {
+      label: 'ball lead 0',
+      tool: { toolRadiusMm: 3, cornerRadiusMm: 3, leadAngleDeg: 0, tiltAngleDeg: 0 },
+      pattern: 'one-way',
+      intervalMm: 1,
+      flutes: 2,
+      fzMm: 0.1,
+      passPhase: 0,
+    };
+    const m = modelOf(c);
+    for (const [x, y] of [
+      [0, 1e-4],
+      [0, 1e-6],
+      [0.034, -1e-5],
+    ] as const) {
+      const brute = bruteEnvelopeHeightMm(bruteParams(c), x, y, 100).heightMm;
+      expect(Math.abs(envelopeHeightMm(m, x, y) - brute), `(${x}, ${y})`).toBeLessThan(1e-9);
+    }
   });
 });
