@@ -157,6 +157,36 @@ describe('toothSweepBruteForce', () => {
     }
   });
 
+  it('lead > 0 without tilt: on the CC path each tooth leaves its corner arc, hf = Rcr - sqrt(Rcr^2 - fz^2/4); lead 0: hf = 0 (seed 13)', () => {
+    // No tilt: the CC path y = 0 lies in the plane y = y_O of the axis. A half-plane through
+    // the axis meets that plane only on the axis unless it lies in it (theta = 0 or pi); so the
+    // line is cut by whole edges at those instants, the front ones (theta = 0, where the lowest
+    // ring point is for a lead) lowest: circular arcs of radius Rcr through the contact
+    // height, one per tooth, fz apart. Two equal arcs fz apart meet at the sag of their chord.
+    const r = rng(13);
+    for (const [R, Rcr] of [
+      [3, 3],
+      [3, 1],
+      [6, 2],
+    ] as const) {
+      const fz = 0.03 + 0.1 * r();
+      const p: ToothSweepParams = {
+        ...base,
+        radiusMm: R,
+        cornerRadiusMm: Rcr,
+        leadRad: (5 + 10 * r()) * DEG,
+        flutes: 1 + Math.floor(4 * r()),
+        fzMm: fz,
+        stepOverMm: 1,
+      };
+      const hf = bruteFeedMarkHeightMm(p, 50);
+      expect(Math.abs(hf.heightMm - (Rcr - Math.sqrt(Rcr * Rcr - (fz * fz) / 4)))).toBeLessThan(1e-12);
+      expect(Math.abs(hf.minMm)).toBeLessThan(1e-12);
+      // at lead 0 the flat bottom, or the ball's tip, sweeps the CC path at z = 0: hf = 0
+      expect(Math.abs(bruteFeedMarkHeightMm({ ...p, leadRad: 0 }, 50).heightMm)).toBeLessThan(1e-12);
+    }
+  });
+
   it('fz -> 0 tends to the continuous cross-feed profile of a bull-nose at lead 0 (O(fz^2) from above; Sa -> Ra, Sz -> Rz) (seed 11)', () => {
     // Continuous profile of pass j (lead 0, tilt 0): 0 over |y - jL| <= Rb, the corner
     // Rcr - sqrt(Rcr^2 - (|y - jL| - Rb)^2) up to R; the surface left is the lowest pass.
@@ -200,6 +230,26 @@ describe('toothSweepBruteForce', () => {
     }
     expect(errs[1] as number).toBeLessThan((errs[0] as number) / 2.5);
     expect(errs[1] as number).toBeLessThan(2e-4);
+  });
+
+  it('areal extremes: the refined highest and lowest points agree from two sampling grids, and no sample beats them (seed 17)', () => {
+    // The peak where a cusp crest meets feed-mark crests is a kink; a coarse grid ranks crests
+    // by how far off their top it samples them unless each crest is narrowed first.
+    const r = rng(17);
+    const p: ToothSweepParams = {
+      ...base,
+      leadRad: (4 + 4 * r()) * DEG,
+      tiltRad: (2 + 4 * r()) * DEG,
+      stepOverMm: 2.3 + 0.4 * r(),
+      fzMm: 0.08 + 0.04 * r(),
+    };
+    const a = bruteArealParameters(p, 8, 24, 50, true);
+    const b = bruteArealParameters(p, 10, 34, 50, true);
+    expect(Math.abs(a.maxMm - b.maxMm)).toBeLessThan(1e-12);
+    expect(Math.abs(a.minMm - b.minMm)).toBeLessThan(1e-12);
+    const fine = bruteArealParameters(p, 24, 96, 50);
+    expect(fine.maxMm).toBeLessThanOrEqual(a.maxMm + 1e-13);
+    expect(fine.minMm).toBeGreaterThanOrEqual(a.minMm - 1e-13);
   });
 
   it('z teeth at fz equal one tooth at z fz shifted by k fz, with and without runout (seed 3)', () => {

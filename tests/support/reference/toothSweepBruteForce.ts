@@ -360,11 +360,11 @@ export function scatterSweep(params: ToothSweepParams, window: Window, density: 
   const step = 1 / density;
   const p = m.params;
   const z = p.flutes;
-  // cells: the window and a margin of one cell (a query uses its cell's neighbours)
-  const gx0 = window.x0 - step;
-  const gy0 = window.y0 - step;
-  const ncx = Math.ceil((window.x1 - window.x0) / step) + 2;
-  const ncy = Math.ceil((window.y1 - window.y0) / step) + 2;
+  // cells: the window and a margin of 1.5 cells (a query uses its cell's neighbours)
+  const gx0 = window.x0 - 1.5 * step;
+  const gy0 = window.y0 - 1.5 * step;
+  const ncx = Math.floor((window.x1 - window.x0) / step) + 4;
+  const ncy = Math.floor((window.y1 - window.y0) / step) + 4;
   const gx1 = gx0 + ncx * step;
   const gy1 = gy0 + ncy * step;
   const n = ncx * ncy * keep;
@@ -486,6 +486,34 @@ export function scatterSweep(params: ToothSweepParams, window: Window, density: 
   };
 }
 
+/** A crossing: the edge point of tooth `tooth` of pass `pass` at (phi, s) over a query point, at height zMm. */
+export interface Crossing {
+  zMm: number;
+  pass: number;
+  tooth: number;
+  phi: number;
+  s: number;
+}
+
+/**
+ * Heights near (xc, yc) from the crossings found there (every solution `refineAt` met at the
+ * centre), each followed by Newton from its last solution: fast, for searches in a small box.
+ * Only as good as that list; `verifiedHeight` checks a result against a full `refineAt`.
+ */
+export function localHeights(sc: SweepScatter, xc: number, yc: number): (x: number, y: number) => number {
+  const list: Crossing[] = [];
+  refineAt(sc, xc, yc, list);
+  return (x, y) => {
+    let best = Number.POSITIVE_INFINITY;
+    for (const c of list) {
+      const sol = solveOver(sc.model, c.pass, c.tooth, c.phi, c.s, x, y);
+      if (sol === null) continue;
+      if (sol[0] < best) best = sol[0];
+    }
+    return best;
+  };
+}
+
 /**
  * Refine the envelope height at (x, y) from a scatter whose window contains the point: Newton
  * from every kept candidate of the 3 x 3 cells about it, then, from every solution found, a
@@ -494,7 +522,7 @@ export function scatterSweep(params: ToothSweepParams, window: Window, density: 
  * crossings of its other points, and the walk reaches the crossing lowest at this one. A walk
  * goes on while it improves, and z + 2 crossings past the last improvement.
  */
-export function refineAt(sc: SweepScatter, x: number, y: number): BruteHeight {
+export function refineAt(sc: SweepScatter, x: number, y: number, solutions?: Crossing[]): BruteHeight {
   const cx = Math.floor((x - sc.gx0) / sc.stepMm);
   const cy = Math.floor((y - sc.gy0) / sc.stepMm);
   if (cx < 1 || cy < 1 || cx > sc.ncx - 2 || cy > sc.ncy - 2) {
@@ -507,7 +535,6 @@ export function refineAt(sc: SweepScatter, x: number, y: number): BruteHeight {
   let bestErr = 0;
   let candidates = 0;
   let converged = 0;
-  const tried = new Set<string>();
   const found = new Set<string>();
   const sols: [number, number, number, number, number, number][] = [];
   const record = (j: number, k: number, sol: [number, number, number, number]): boolean => {
@@ -529,9 +556,6 @@ export function refineAt(sc: SweepScatter, x: number, y: number): BruteHeight {
         const h = sc.hz[t] as number;
         if (h === Number.POSITIVE_INFINITY) continue;
         if (h < lowestSample) lowestSample = h;
-        const key = `${sc.pass[t]}:${sc.tooth[t]}:${sc.rev[t]}:${Math.round((sc.s[t] as number) / (4 * sc.stepMm))}`;
-        if (tried.has(key)) continue;
-        tried.add(key);
         candidates++;
         const j = sc.pass[t] as number;
         const k = sc.tooth[t] as number;
@@ -566,6 +590,9 @@ export function refineAt(sc: SweepScatter, x: number, y: number): BruteHeight {
     throw new Error(`toothSweepBruteForce: no edge point refined over (${x}, ${y})`);
   }
   const lower = Math.min(best, lowestSample - sc.sampleRadiusMm);
+  if (solutions !== undefined) {
+    for (const [zc, j, k, phi, sv] of sols) solutions.push({ zMm: zc, pass: j, tooth: k, phi, s: sv });
+  }
   return {
     heightMm: best,
     lowerBoundMm: lower,
@@ -736,7 +763,11 @@ export function bruteEnvelopeGrid(
   ny: number,
   density: number,
 ): BruteGrid {
-  const sc = scatterSweep(params, window, density);
+  return gridFromScatter(scatterSweep(params, window, density), window, nx, ny);
+}
+
+/** The grid of `bruteEnvelopeGrid` from a scatter whose window contains `window`. */
+export function gridFromScatter(sc: SweepScatter, window: Window, nx: number, ny: number): BruteGrid {
   const dx = (window.x1 - window.x0) / nx;
   const dy = (window.y1 - window.y0) / ny;
   const heights = new Float64Array(nx * ny);
@@ -834,6 +865,16 @@ export interface BruteAreal {
   Ssk: number;
   Sku: number;
   meanMm: number;
+  /** Highest and lowest heights (mm): refined (nested golden sections) when asked, else sampled. */
+  maxMm: number;
+  minMm: number;
+  /** Where they are. */
+  xMaxMm: number;
+  yMaxMm: number;
+  xMinMm: number;
+  yMinMm: number;
+  /** Whether the extremes were refined. */
+  refinedExtremes: boolean;
   /** The cell: [0, P) along X, [-L/2, -L/2 + Lc) across (Lc = L or 2 L). */
   cell: Window;
   nx: number;
@@ -841,29 +882,135 @@ export interface BruteAreal {
 }
 
 /**
- * Sa, Sq, Sz, Sp, Sv, Ssk, Sku over one period cell (fz or z fz along, L or 2 L across) from an
- * nx by ny midpoint grid of exact (refined) heights. Expected error: the midpoint rule on a
- * continuous, piecewise-smooth periodic surface converges as O(h^2) in the means (the kinks
- * of the cusps cost O(h^2) per kink line), so Sa, Sq, Ssk, Sku carry about C (dx^2 + dy^2)
- * (compare two resolutions: the error is about a third of their difference); Sp, Sv, Sz are
- * the sampled extremes, low by up to the slope times half a grid diagonal at a kink (a
- * smooth extreme: curvature times dx^2 / 8).
+ * The extreme (sign +1: highest, -1: lowest) of the envelope within one grid step (dx, dy) of
+ * (x, y), every height exact (Newton on the crossings `refineAt` lists at (x, y), the result checked
+ * by a full `refineAt`; `sc`'s window holds the box). A peak of the surface left is a kink: the crest of the
+ * cusp between passes (along X) crossed by feed-mark crests (roughly along Y), where two or
+ * three crossings meet; no derivative is used. Nested searches in both orders: the outer
+ * variable scanned at 12 points over the box, then narrowed by golden section about the best
+ * scanned point, the inner one by golden section over the box (a crest crossed once is
+ * unimodal); positions to 1e-11 mm. The better of the two orders is returned: [height, x, y].
  */
-export function bruteArealParameters(params: ToothSweepParams, nx: number, ny: number, density: number): BruteAreal {
+export function refinedExtreme(
+  sc: SweepScatter,
+  x: number,
+  y: number,
+  dx: number,
+  dy: number,
+  sign: 1 | -1,
+): [number, number, number] {
+  const local = localHeights(sc, x, y);
+  const f = (xx: number, yy: number): number => sign * local(xx, yy);
+  let best: [number, number, number] = [f(x, y), x, y];
+  for (const xOuter of [true, false]) {
+    const [c, h] = xOuter ? [x, dx] : [y, dy];
+    const [ci, hi] = xOuter ? [y, dy] : [x, dx];
+    const g = (u: number, w: number): number => (xOuter ? f(u, w) : f(w, u));
+    const inner = (u: number): [number, number] => {
+      const [w, v] = goldenMax((ww) => g(u, ww), ci - hi, ci + hi, 1e-11);
+      return [v, w];
+    };
+    let bu = c;
+    let bv = Number.NEGATIVE_INFINITY;
+    const n = 12;
+    for (let i = 0; i <= n; i++) {
+      const u = c - h + (2 * h * i) / n;
+      const v = inner(u)[0];
+      if (v > bv) {
+        bv = v;
+        bu = u;
+      }
+    }
+    const step = (2 * h) / n;
+    const [u] = goldenMax((uu) => inner(uu)[0], Math.max(c - h, bu - step), Math.min(c + h, bu + step), 1e-11);
+    for (const uu of [u, bu]) {
+      const [v, w] = inner(uu);
+      if (v > best[0]) best = xOuter ? [v, uu, w] : [v, w, uu];
+    }
+  }
+  // the crossings listed at the centre must still be the lowest at the extreme found
+  const full = refineAt(sc, best[1], best[2]).heightMm;
+  if (Math.abs(full - sign * best[0]) > 1e-12) {
+    throw new Error(
+      `toothSweepBruteForce: the local search met a crossing it did not list (${full} against ${sign * best[0]})`,
+    );
+  }
+  return [full, best[1], best[2]];
+}
+
+/**
+ * Where to refine the extreme of sign `sign`: the crests of the sampled grid. Along every
+ * column (and every row) each local extreme of the periodic samples is narrowed by golden
+ * section across it with exact heights (a crest sampled off its top would rank by how far off
+ * it was sampled, not by its height); the best three crest points, as [height * sign, x, y].
+ */
+function crestCandidates(sc: SweepScatter, g: BruteGrid, cell: Window, sign: 1 | -1): [number, number, number][] {
+  const { nx, ny, dxMm: dx, dyMm: dy } = g;
+  const v = (ix: number, iy: number): number =>
+    sign * (g.heightsMm[(((iy % ny) + ny) % ny) * nx + (((ix % nx) + nx) % nx)] as number);
+  const out: [number, number, number][] = [];
+  for (let ix = 0; ix < nx; ix++) {
+    const x = cell.x0 + (ix + 0.5) * dx;
+    for (let iy = 0; iy < ny; iy++) {
+      if (v(ix, iy) < v(ix, iy - 1) || v(ix, iy) < v(ix, iy + 1)) continue;
+      const y = cell.y0 + (iy + 0.5) * dy;
+      const local = localHeights(sc, x, y);
+      const [yb, val] = goldenMax((yy) => sign * local(x, yy), y - dy, y + dy, 1e-6 * dy);
+      out.push([val, x, yb]);
+    }
+  }
+  for (let iy = 0; iy < ny; iy++) {
+    const y = cell.y0 + (iy + 0.5) * dy;
+    for (let ix = 0; ix < nx; ix++) {
+      if (v(ix, iy) < v(ix - 1, iy) || v(ix, iy) < v(ix + 1, iy)) continue;
+      const x = cell.x0 + (ix + 0.5) * dx;
+      const local = localHeights(sc, x, y);
+      const [xb, val] = goldenMax((xx) => sign * local(xx, y), x - dx, x + dx, 1e-6 * dx);
+      out.push([val, xb, y]);
+    }
+  }
+  return out.sort((a, b) => b[0] - a[0]).slice(0, 3);
+}
+
+/**
+ * Sa, Sq, Sz, Sp, Sv, Ssk, Sku over one period cell (fz or z fz along, L or 2 L across) from an
+ * nx by ny midpoint grid of exact (refined) heights (the x3p grid of the notes), the integral
+ * means by the midpoint rule. Expected error: the rule on a continuous, piecewise-smooth periodic
+ * surface converges as O(h^2) (the cusp and feed-mark kinks cost O(h^2) per kink line), so Sa,
+ * Sq, Ssk, Sku carry about C (dx^2 + dy^2): compare two resolutions (about a third of their
+ * difference). The extremes are the sampled ones (low by up to a slope times half a grid
+ * diagonal at a kink), or, with `refineExtremes`, located from the sampled ones by nested golden
+ * sections to 1e-11 mm in position with every height exact (heights to about 1e-12 mm where the
+ * extreme is a single point of the sampled peak's neighbourhood).
+ */
+export function bruteArealParameters(
+  params: ToothSweepParams,
+  nx: number,
+  ny: number,
+  density: number,
+  refineExtremes = false,
+): BruteAreal {
   const p = feedPatternPeriodMm(params);
   const lc = crossPeriodMm(params);
   const cell: Window = { x0: 0, x1: p, y0: -params.stepOverMm / 2, y1: -params.stepOverMm / 2 + lc };
-  const g = bruteEnvelopeGrid(params, cell, nx, ny, density);
+  const dxg = (cell.x1 - cell.x0) / nx;
+  const dyg = (cell.y1 - cell.y0) / ny;
+  const sc = scatterSweep(
+    params,
+    { x0: cell.x0 - 2 * dxg, x1: cell.x1 + 2 * dxg, y0: cell.y0 - 2 * dyg, y1: cell.y1 + 2 * dyg },
+    density,
+  );
+  const g = gridFromScatter(sc, cell, nx, ny);
   const h = g.heightsMm;
   const n = h.length;
   let sum = 0;
-  let hi = Number.NEGATIVE_INFINITY;
-  let lo = Number.POSITIVE_INFINITY;
+  let iHi = 0;
+  let iLo = 0;
   for (let i = 0; i < n; i++) {
     const v = h[i] as number;
     sum += v;
-    if (v > hi) hi = v;
-    if (v < lo) lo = v;
+    if (v > (h[iHi] as number)) iHi = i;
+    if (v < (h[iLo] as number)) iLo = i;
   }
   const mean = sum / n;
   let m1 = 0;
@@ -878,6 +1025,25 @@ export function bruteArealParameters(params: ToothSweepParams, nx: number, ny: n
     m4 += d * d * d * d;
   }
   const sq = Math.sqrt(m2 / n);
+  const at = (i: number): [number, number] => [
+    cell.x0 + ((i % nx) + 0.5) * g.dxMm,
+    cell.y0 + (Math.floor(i / nx) + 0.5) * g.dyMm,
+  ];
+  let [xHi, yHi] = at(iHi);
+  let [xLo, yLo] = at(iLo);
+  let hi = h[iHi] as number;
+  let lo = h[iLo] as number;
+  if (refineExtremes) {
+    for (const sign of [1, -1] as const) {
+      let best: [number, number, number] = sign > 0 ? [hi, xHi, yHi] : [lo, xLo, yLo];
+      for (const [, xc, yc] of crestCandidates(sc, g, cell, sign)) {
+        const r = refinedExtreme(sc, xc, yc, g.dxMm, g.dyMm, sign);
+        if (sign * r[0] > sign * best[0]) best = r;
+      }
+      if (sign > 0) [hi, xHi, yHi] = best;
+      else [lo, xLo, yLo] = best;
+    }
+  }
   return {
     Sa: m1 / n,
     Sq: sq,
@@ -887,6 +1053,13 @@ export function bruteArealParameters(params: ToothSweepParams, nx: number, ny: n
     Ssk: m3 / n / sq ** 3,
     Sku: m4 / n / sq ** 4,
     meanMm: mean,
+    maxMm: hi,
+    minMm: lo,
+    xMaxMm: xHi,
+    yMaxMm: yHi,
+    xMinMm: xLo,
+    yMinMm: yLo,
+    refinedExtremes: refineExtremes,
     cell,
     nx,
     ny,
