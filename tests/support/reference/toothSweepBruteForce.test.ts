@@ -8,6 +8,7 @@ import { describe, expect, it } from 'vitest';
 import { seededRandom } from '../../../src/core/math/seededRandom';
 import {
   bruteArealParameters,
+  bruteArealQuadrature,
   bruteEnvelopeHeightMm,
   bruteFeedMarkHeightMm,
   certifiedEnvelopeHeightMm,
@@ -32,7 +33,7 @@ const base: ToothSweepParams = {
   passPhase: 0,
 };
 
-const height = (p: ToothSweepParams, x: number, y: number, density = 100): number =>
+const height = (p: ToothSweepParams, x: number, y: number, density = 50): number =>
   bruteEnvelopeHeightMm(p, x, y, density).heightMm;
 
 describe('toothSweepBruteForce', () => {
@@ -243,13 +244,28 @@ describe('toothSweepBruteForce', () => {
       stepOverMm: 2.3 + 0.4 * r(),
       fzMm: 0.08 + 0.04 * r(),
     };
-    const a = bruteArealParameters(p, 8, 24, 50, true);
-    const b = bruteArealParameters(p, 10, 34, 50, true);
+    const a = bruteArealParameters(p, 6, 20, 50, true);
+    const b = bruteArealParameters(p, 8, 28, 50, true);
     expect(Math.abs(a.maxMm - b.maxMm)).toBeLessThan(1e-12);
     expect(Math.abs(a.minMm - b.minMm)).toBeLessThan(1e-12);
-    const fine = bruteArealParameters(p, 24, 96, 50);
+    const fine = bruteArealParameters(p, 16, 64, 50);
     expect(fine.maxMm).toBeLessThanOrEqual(a.maxMm + 1e-13);
     expect(fine.minMm).toBeGreaterThanOrEqual(a.minMm - 1e-13);
+  });
+
+  it('areal means by kink-following quadrature agree with the midpoint grid within its own error (seed 19)', () => {
+    const r = rng(19);
+    const p: ToothSweepParams = { ...base, leadRad: (4 + 4 * r()) * DEG, stepOverMm: 2.3 + 0.4 * r(), fzMm: 0.1 };
+    const q = bruteArealQuadrature(p, 1e-5, 50);
+    const coarse = bruteArealParameters(p, 8, 32, 50);
+    const fine = bruteArealParameters(p, 16, 64, 50);
+    for (const key of ['meanMm', 'Sa', 'Sq'] as const) {
+      // the midpoint rule's error is O(h^2): about a third of its change when h halves
+      const tol = Math.abs(fine[key] - coarse[key]) / 3 + 2e-6;
+      expect(Math.abs(q[key] - fine[key])).toBeLessThan(tol);
+    }
+    expect(Math.abs(q.Ssk - fine.Ssk)).toBeLessThan(0.01);
+    expect(Math.abs(q.Sku - fine.Sku)).toBeLessThan(0.02);
   });
 
   it('z teeth at fz equal one tooth at z fz shifted by k fz, with and without runout (seed 3)', () => {
