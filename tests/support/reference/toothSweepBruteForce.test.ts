@@ -109,6 +109,29 @@ describe('toothSweepBruteForce', () => {
     }
   });
 
+  it('flat end near its rim at a small fz: cut by the side, then by no pass, then by the flat lower down; the walk bridges the gap', () => {
+    // Found by a random sweep against the certificate (seed 2030): the cells hold only the rim's
+    // samples, the chain of crossings through the point has 22 tooth passes that miss it.
+    const p: ToothSweepParams = {
+      ...base,
+      radiusMm: 4.389472550712526,
+      cornerRadiusMm: 0,
+      leadRad: 0.3262924785878849,
+      tiltRad: 0.2782325094551036,
+      stepOverMm: 2.015322428892084,
+      flutes: 1,
+      fzMm: 0.004803778888657689,
+      passPhase: 0.26882214541547,
+    };
+    const x = 0.002449308524197349;
+    const y = 0.3901282521088128;
+    const c = certifiedEnvelopeHeightMm(p, x, y, 1e-9, 40);
+    expect(c.complete).toBe(true);
+    const refined = height(p, x, y, 40);
+    expect(refined).toBeGreaterThanOrEqual(c.lowerBoundMm - 1e-12);
+    expect(refined).toBeLessThanOrEqual(c.heightMm + 1e-9);
+  });
+
   it('lead 0: each tooth crossing gives the profile at rho = sqrt(y^2 + d^2), against a 1-D root per crossing; ball and bull-nose (seed 7)', () => {
     // Lead 0, tilt 0: O = (xc, 0, Rcr), tooth k at angle theta_k = -xc/F + 2 pi k/z
     // (F = z fz / 2 pi), its edge point at radius rho from the axis at the profile's height

@@ -5,7 +5,8 @@
  *
  * Method: every tooth edge of every pass that can reach a window is sampled on a lattice in
  * rotation angle and edge arc length; each sample is scattered onto an (x, y) grid of cells,
- * each cell keeping its K = 4 lowest samples of distinct crossings (pass, tooth, revolution). A
+ * each cell keeping its K = 6 lowest samples of distinct crossings (pass, tooth, revolution, part
+ * of the profile: flat, corner or side). A
  * query point is refined by solving exactly (Newton, 2 unknowns: rotation angle and arc
  * length) for the edge point over it from every candidate of its 3 x 3 cells, then along each
  * solution's chain of crossings (tooth k + 1, 2 pi / z later: a cell wider than fz keeps the
@@ -190,16 +191,19 @@ export function sweepModel(params: ToothSweepParams): SweepModel {
   };
 }
 
+/** A smooth part of the profile (0 flat, 1 corner, 2 side, each extended beyond its ends), or -1: the whole profile. */
+export type Piece = -1 | 0 | 1 | 2;
+
 /** Profile in the half-plane: radius r(s), axial h(s) from O, and their derivatives (|(r', h')| = 1). */
-function profile(m: SweepModel, s: number, out: Float64Array): void {
-  if (s <= m.rb) {
+function profile(m: SweepModel, s: number, out: Float64Array, piece: Piece = -1): void {
+  if (piece === 0 || (piece === -1 && s <= m.rb)) {
     out[0] = s;
     out[1] = -m.rcr;
     out[2] = 1;
     out[3] = 0;
     return;
   }
-  if (s <= m.sArc && m.rcr > 0) {
+  if (piece === 1 || (piece === -1 && s <= m.sArc && m.rcr > 0)) {
     const psi = (s - m.rb) / m.rcr;
     out[0] = m.rb + m.rcr * Math.sin(psi);
     out[1] = -m.rcr * Math.cos(psi);
@@ -240,10 +244,18 @@ function passPlacement(m: SweepModel, j: number): { mirror: boolean; dx: number;
  * Edge point of tooth k of pass j at rotation phi (rad, theta = -phi) and arc length s, global,
  * with dP/dphi and dP/ds: out = [x, y, z, xphi, yphi, zphi, xs, ys, zs].
  */
-export function edgePoint(m: SweepModel, j: number, k: number, phi: number, s: number, out: Float64Array): void {
+export function edgePoint(
+  m: SweepModel,
+  j: number,
+  k: number,
+  phi: number,
+  s: number,
+  out: Float64Array,
+  piece: Piece = -1,
+): void {
   const p = m.params;
   const prof = PROF;
-  profile(m, s, prof);
+  profile(m, s, prof, piece);
   const rr = prof[0] as number;
   const hh = prof[1] as number;
   const rp = prof[2] as number;
@@ -292,15 +304,19 @@ export function solveOver(
   s0: number,
   x: number,
   y: number,
+  piece: Piece = -1,
 ): [number, number, number, number] | null {
   const out = new Float64Array(9);
   let phi = phi0;
   let s = s0;
+  // the part's own range: a solution on a part's extension is no edge point
+  const lo = piece === 1 ? m.rb : piece === 2 ? m.sArc : 0;
+  const hi = piece === 0 ? m.rb : piece === 1 ? m.sArc : m.sMax;
   const tol = 1e-13 * (1 + Math.abs(x) + Math.abs(y));
   const maxPhiStep = 0.5;
   const maxSStep = 0.25 * m.r;
   for (let it = 0; it < 60; it++) {
-    edgePoint(m, j, k, phi, s, out);
+    edgePoint(m, j, k, phi, s, out, piece);
     const fx = (out[0] as number) - x;
     const fy = (out[1] as number) - y;
     const a11 = out[3] as number;
@@ -315,7 +331,7 @@ export function solveOver(
     if (res <= tol) {
       // the step that would remain, mapped to height: the error of z
       const dz = Math.abs((out[5] as number) * dphi + (out[8] as number) * ds);
-      if (s < -1e-12 || s > m.sMax + 1e-12) return null;
+      if (s < lo - 1e-12 || s > hi + 1e-12) return null;
       return [out[2] as number, phi, s, dz + 1e-15];
     }
     const f = Math.max(1, Math.abs(dphi) / maxPhiStep, Math.abs(ds) / maxSStep);
@@ -326,6 +342,31 @@ export function solveOver(
     if (s < -0.5 * m.r || s > m.sMax + 0.5 * m.r) return null;
   }
   return null;
+}
+
+/**
+ * `solveOver` on the whole profile, and where that fails (Newton across the rim of a flat end,
+ * where the profile turns a sharp corner, or across the joins where the curvature jumps) on
+ * each smooth part of it with its own extension: the lowest solution found, or null.
+ */
+export function solveAny(
+  m: SweepModel,
+  j: number,
+  k: number,
+  phi0: number,
+  s0: number,
+  x: number,
+  y: number,
+): [number, number, number, number] | null {
+  const whole = solveOver(m, j, k, phi0, s0, x, y);
+  if (whole !== null) return whole;
+  let best: [number, number, number, number] | null = null;
+  for (const piece of [0, 1, 2] as const) {
+    if ((piece === 0 && m.rb === 0) || (piece === 1 && m.rcr === 0)) continue;
+    const sol = solveOver(m, j, k, phi0, s0, x, y, piece);
+    if (sol !== null && (best === null || sol[0] < best[0])) best = sol;
+  }
+  return best;
 }
 
 // ---------------------------------------------------------------- scatter
@@ -341,7 +382,7 @@ export interface SweepScatter {
   ncx: number;
   ncy: number;
   keep: number;
-  /** Per cell and slot: height, pass, tooth, revolution key, phi, s (height +Infinity when empty). */
+  /** Per cell and slot: height, pass, tooth, crossing key (4 revolution + profile part), phi, s (+Infinity: empty). */
   hz: Float64Array;
   pass: Int32Array;
   tooth: Int32Array;
@@ -367,7 +408,7 @@ function passRange(m: SweepModel, w: Window): number[] {
  * (mm of edge arc length, and mm of motion of the farthest edge point per rotation step), and
  * scatter onto cells of that size, keeping the `keep` lowest distinct crossings per cell.
  */
-export function scatterSweep(params: ToothSweepParams, window: Window, density: number, keep = 4): SweepScatter {
+export function scatterSweep(params: ToothSweepParams, window: Window, density: number, keep = 6): SweepScatter {
   const m = sweepModel(params);
   const step = 1 / density;
   const p = m.params;
@@ -392,10 +433,14 @@ export function scatterSweep(params: ToothSweepParams, window: Window, density: 
   const nr = new Float64Array(ns + 1);
   const nh = new Float64Array(ns + 1);
   const pr = new Float64Array(4);
+  // the part of the profile each node lies on (flat 0, corner 1, side 2): crossings of one
+  // tooth pass on different parts are kept apart (the side can be lowest where the flat is not)
+  const seg = new Int32Array(ns + 1);
   for (let i = 0; i <= ns; i++) {
     profile(m, i * ds, pr);
     nr[i] = pr[0] as number;
     nh[i] = pr[1] as number;
+    seg[i] = i * ds <= m.rb ? 0 : i * ds <= m.sArc ? 1 : 2;
   }
   const dphi = step / m.lphi;
   const { u, v, a } = m;
@@ -454,11 +499,12 @@ export function scatterSweep(params: ToothSweepParams, window: Window, density: 
           const pz = bz + rq * wz + hq * a[2];
           samples++;
           const base = (cy * ncx + cx) * keep;
+          const crossingKey = 4 * revKey + (seg[q - 1] as number);
           // same crossing already kept: lower it; else replace the highest if lower
           let worst = base;
           let same = -1;
           for (let t = base; t < base + keep; t++) {
-            if (hz[t] !== Number.POSITIVE_INFINITY && pass[t] === j && tooth[t] === k && rev[t] === revKey) {
+            if (hz[t] !== Number.POSITIVE_INFINITY && pass[t] === j && tooth[t] === k && rev[t] === crossingKey) {
               same = t;
               break;
             }
@@ -469,7 +515,7 @@ export function scatterSweep(params: ToothSweepParams, window: Window, density: 
             hz[slot] = pz;
             pass[slot] = j;
             tooth[slot] = k;
-            rev[slot] = revKey;
+            rev[slot] = crossingKey;
             phiA[slot] = phi;
             sA[slot] = (q - 1) * ds;
           }
@@ -518,7 +564,7 @@ export function localHeights(sc: SweepScatter, xc: number, yc: number): (x: numb
   return (x, y) => {
     let best = Number.POSITIVE_INFINITY;
     for (const c of list) {
-      const sol = solveOver(sc.model, c.pass, c.tooth, c.phi, c.s, x, y);
+      const sol = solveAny(sc.model, c.pass, c.tooth, c.phi, c.s, x, y);
       if (sol === null) continue;
       if (sol[0] < best) best = sol[0];
     }
@@ -573,7 +619,7 @@ export function refineAt(sc: SweepScatter, x: number, y: number, solutions?: Cro
         candidates++;
         const j = sc.pass[t] as number;
         const k = sc.tooth[t] as number;
-        const sol = solveOver(m, j, k, sc.phi[t] as number, sc.s[t] as number, x, y);
+        const sol = solveAny(m, j, k, sc.phi[t] as number, sc.s[t] as number, x, y);
         if (sol !== null) record(j, k, sol);
       }
     }
@@ -581,27 +627,48 @@ export function refineAt(sc: SweepScatter, x: number, y: number, solutions?: Cro
   // walk the chains of crossings from every solution, lowest first
   const starts = sols.slice().sort((p, q) => p[0] - q[0]);
   const patience = z + 2;
-  for (const [, j, k0, phi0, s0] of starts) {
+  // from the lowest solution the walk also steps over tooth passes that miss the point, for up
+  // to 0.25 mm of feed: near the rim of a flat end a point can be cut by the side, then by no
+  // pass, then by the flat bottom lower down (the cells hold only the rim's own samples there)
+  const longGap = Math.max(patience, Math.ceil(0.25 / (z * m.params.fzMm)) * z);
+  starts.forEach(([, j, k0, phi0, s0], index) => {
+    const maxFails = index === 0 ? longGap : patience;
     for (const dir of [1, -1]) {
       let k = k0;
       let phi = phi0;
       let s = s0;
       let idle = 0;
-      while (idle < patience) {
+      let fails = 0;
+      let base = phi0;
+      let steps = 0;
+      while (idle < patience && fails < maxFails) {
         k = (((k + dir) % z) + z) % z;
-        phi += (dir * 2 * Math.PI) / z;
-        const sol = solveOver(m, j, k, phi, s, x, y);
-        if (sol === null) break;
+        steps++;
+        phi = base + (dir * 2 * Math.PI * steps) / z;
+        const sol = solveAny(m, j, k, phi, s, x, y);
+        if (sol === null) {
+          fails++;
+          continue;
+        }
+        fails = 0;
         const before = best;
-        if (!record(j, k, sol)) break;
-        phi = sol[1];
+        const fresh = record(j, k, sol);
+        base = sol[1];
+        steps = 0;
         s = sol[2];
-        idle = best < before ? 0 : idle + 1;
+        // a solution another walk found counts as no progress (that walk may have stopped there)
+        idle = fresh && best < before ? 0 : idle + 1;
       }
     }
-  }
+  });
   if (best === Number.POSITIVE_INFINITY) {
-    throw new Error(`toothSweepBruteForce: no edge point refined over (${x}, ${y})`);
+    // no seed converged (a fold of the sweep, where Newton's Jacobian vanishes): branch and bound
+    const c = certifyAt(m, x, y, Number.POSITIVE_INFINITY, sc.sampleRadiusMm);
+    if (c.heightMm === Number.POSITIVE_INFINITY) {
+      throw new Error(`toothSweepBruteForce: no edge point refined over (${x}, ${y})`);
+    }
+    best = c.heightMm;
+    bestErr = 1e-15;
   }
   const lower = Math.min(best, lowestSample - sc.sampleRadiusMm);
   if (solutions !== undefined) {
@@ -695,7 +762,7 @@ export function certifyAt(
       continue;
     }
     if (rxy < 1e-4) {
-      const sol = solveOver(m, j, k, phic, sc, x, y);
+      const sol = solveAny(m, j, k, phic, sc, x, y);
       if (sol !== null && sol[0] < upper) upper = sol[0];
       if (lb >= upper - tolMm) {
         droppedLower = Math.min(droppedLower, lb);
