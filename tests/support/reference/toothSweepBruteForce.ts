@@ -662,8 +662,11 @@ export function refineAt(sc: SweepScatter, x: number, y: number, solutions?: Cro
     }
   });
   if (best === Number.POSITIVE_INFINITY) {
-    // no seed converged (a fold of the sweep, where Newton's Jacobian vanishes): branch and bound
-    const c = certifyAt(m, x, y, Number.POSITIVE_INFINITY, sc.sampleRadiusMm);
+    // no seed converged (seeds on a flat end's rim, or a fold of the sweep where Newton's
+    // Jacobian vanishes): branch and bound, first to the sampling step (from no upper bound),
+    // then from that crossing to 1e-10 mm
+    const rough = certifyAt(m, x, y, Number.POSITIVE_INFINITY, sc.sampleRadiusMm);
+    const c = certifyAt(m, x, y, rough.heightMm, 1e-10);
     if (c.heightMm === Number.POSITIVE_INFINITY) {
       throw new Error(`toothSweepBruteForce: no edge point refined over (${x}, ${y})`);
     }
