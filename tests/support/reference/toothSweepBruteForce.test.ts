@@ -8,6 +8,7 @@ import { describe, expect, it } from 'vitest';
 import { seededRandom } from '../../../src/core/math/seededRandom';
 import {
   bruteArealParameters,
+  bruteArealQuadrature,
   bruteEnvelopeHeightMm,
   bruteFeedMarkHeightMm,
   certifiedEnvelopeHeightMm,
@@ -32,7 +33,7 @@ const base: ToothSweepParams = {
   passPhase: 0,
 };
 
-const height = (p: ToothSweepParams, x: number, y: number, density = 100): number =>
+const height = (p: ToothSweepParams, x: number, y: number, density = 50): number =>
   bruteEnvelopeHeightMm(p, x, y, density).heightMm;
 
 describe('toothSweepBruteForce', () => {
@@ -108,6 +109,29 @@ describe('toothSweepBruteForce', () => {
     }
   });
 
+  it('flat end near its rim at a small fz: cut by the side, then by no pass, then by the flat lower down; the walk bridges the gap', () => {
+    // Found by a random sweep against the certificate (seed 2030): the cells hold only the rim's
+    // samples, the chain of crossings through the point has 22 tooth passes that miss it.
+    const p: ToothSweepParams = {
+      ...base,
+      radiusMm: 4.389472550712526,
+      cornerRadiusMm: 0,
+      leadRad: 0.3262924785878849,
+      tiltRad: 0.2782325094551036,
+      stepOverMm: 2.015322428892084,
+      flutes: 1,
+      fzMm: 0.004803778888657689,
+      passPhase: 0.26882214541547,
+    };
+    const x = 0.002449308524197349;
+    const y = 0.3901282521088128;
+    const c = certifiedEnvelopeHeightMm(p, x, y, 1e-9, 40);
+    expect(c.complete).toBe(true);
+    const refined = height(p, x, y, 40);
+    expect(refined).toBeGreaterThanOrEqual(c.lowerBoundMm - 1e-12);
+    expect(refined).toBeLessThanOrEqual(c.heightMm + 1e-9);
+  });
+
   it('lead 0: each tooth crossing gives the profile at rho = sqrt(y^2 + d^2), against a 1-D root per crossing; ball and bull-nose (seed 7)', () => {
     // Lead 0, tilt 0: O = (xc, 0, Rcr), tooth k at angle theta_k = -xc/F + 2 pi k/z
     // (F = z fz / 2 pi), its edge point at radius rho from the axis at the profile's height
@@ -157,6 +181,36 @@ describe('toothSweepBruteForce', () => {
     }
   });
 
+  it('lead > 0 without tilt: on the CC path each tooth leaves its corner arc, hf = Rcr - sqrt(Rcr^2 - fz^2/4); lead 0: hf = 0 (seed 13)', () => {
+    // No tilt: the CC path y = 0 lies in the plane y = y_O of the axis. A half-plane through
+    // the axis meets that plane only on the axis unless it lies in it (theta = 0 or pi); so the
+    // line is cut by whole edges at those instants, the front ones (theta = 0, where the lowest
+    // ring point is for a lead) lowest: circular arcs of radius Rcr through the contact
+    // height, one per tooth, fz apart. Two equal arcs fz apart meet at the sag of their chord.
+    const r = rng(13);
+    for (const [R, Rcr] of [
+      [3, 3],
+      [3, 1],
+      [6, 2],
+    ] as const) {
+      const fz = 0.03 + 0.1 * r();
+      const p: ToothSweepParams = {
+        ...base,
+        radiusMm: R,
+        cornerRadiusMm: Rcr,
+        leadRad: (5 + 10 * r()) * DEG,
+        flutes: 1 + Math.floor(4 * r()),
+        fzMm: fz,
+        stepOverMm: 1,
+      };
+      const hf = bruteFeedMarkHeightMm(p, 50);
+      expect(Math.abs(hf.heightMm - (Rcr - Math.sqrt(Rcr * Rcr - (fz * fz) / 4)))).toBeLessThan(1e-12);
+      expect(Math.abs(hf.minMm)).toBeLessThan(1e-12);
+      // at lead 0 the flat bottom, or the ball's tip, sweeps the CC path at z = 0: hf = 0
+      expect(Math.abs(bruteFeedMarkHeightMm({ ...p, leadRad: 0 }, 50).heightMm)).toBeLessThan(1e-12);
+    }
+  });
+
   it('fz -> 0 tends to the continuous cross-feed profile of a bull-nose at lead 0 (O(fz^2) from above; Sa -> Ra, Sz -> Rz) (seed 11)', () => {
     // Continuous profile of pass j (lead 0, tilt 0): 0 over |y - jL| <= Rb, the corner
     // Rcr - sqrt(Rcr^2 - (|y - jL| - Rb)^2) up to R; the surface left is the lowest pass.
@@ -200,6 +254,41 @@ describe('toothSweepBruteForce', () => {
     }
     expect(errs[1] as number).toBeLessThan((errs[0] as number) / 2.5);
     expect(errs[1] as number).toBeLessThan(2e-4);
+  });
+
+  it('areal extremes: the refined highest and lowest points agree from two sampling grids, and no sample beats them (seed 17)', () => {
+    // The peak where a cusp crest meets feed-mark crests is a kink; a coarse grid ranks crests
+    // by how far off their top it samples them unless each crest is narrowed first.
+    const r = rng(17);
+    const p: ToothSweepParams = {
+      ...base,
+      leadRad: (4 + 4 * r()) * DEG,
+      tiltRad: (2 + 4 * r()) * DEG,
+      stepOverMm: 2.3 + 0.4 * r(),
+      fzMm: 0.08 + 0.04 * r(),
+    };
+    const a = bruteArealParameters(p, 6, 20, 50, true);
+    const b = bruteArealParameters(p, 8, 28, 50, true);
+    expect(Math.abs(a.maxMm - b.maxMm)).toBeLessThan(1e-12);
+    expect(Math.abs(a.minMm - b.minMm)).toBeLessThan(1e-12);
+    const fine = bruteArealParameters(p, 16, 64, 50);
+    expect(fine.maxMm).toBeLessThanOrEqual(a.maxMm + 1e-13);
+    expect(fine.minMm).toBeGreaterThanOrEqual(a.minMm - 1e-13);
+  });
+
+  it('areal means by kink-following quadrature agree with the midpoint grid within its own error (seed 19)', () => {
+    const r = rng(19);
+    const p: ToothSweepParams = { ...base, leadRad: (4 + 4 * r()) * DEG, stepOverMm: 2.3 + 0.4 * r(), fzMm: 0.1 };
+    const q = bruteArealQuadrature(p, 1e-5, 50);
+    const coarse = bruteArealParameters(p, 8, 32, 50);
+    const fine = bruteArealParameters(p, 16, 64, 50);
+    for (const key of ['meanMm', 'Sa', 'Sq'] as const) {
+      // the midpoint rule's error is O(h^2): about a third of its change when h halves
+      const tol = Math.abs(fine[key] - coarse[key]) / 3 + 2e-6;
+      expect(Math.abs(q[key] - fine[key])).toBeLessThan(tol);
+    }
+    expect(Math.abs(q.Ssk - fine.Ssk)).toBeLessThan(0.01);
+    expect(Math.abs(q.Sku - fine.Sku)).toBeLessThan(0.02);
   });
 
   it('z teeth at fz equal one tooth at z fz shifted by k fz, with and without runout (seed 3)', () => {

@@ -5,15 +5,26 @@
  *
  * Method: every tooth edge of every pass that can reach a window is sampled on a lattice in
  * rotation angle and edge arc length; each sample is scattered onto an (x, y) grid of cells,
- * each cell keeping its K lowest samples of distinct crossings (pass, tooth, revolution). A
+ * each cell keeping its K = 6 lowest samples of distinct crossings (pass, tooth, revolution, part
+ * of the profile: flat, corner or side). A
  * query point is refined by solving exactly (Newton, 2 unknowns: rotation angle and arc
- * length) for the edge point over it, from every candidate of its 3 x 3 cells; the height is
- * the lowest converged solution. Its error is bracketed: the value is a real edge point over
- * the query (an upper bound of the envelope, to the Newton residual), and every edge point
- * over the query lies within D = step of a lattice sample (Lipschitz: |dP/dphi| <= Lphi, the
- * arc length has |dP/ds| = 1), so the envelope is at least (lowest sample of the 3 x 3 cells)
- * - D. That bracket shrinks linearly with the density; `certifyEnvelopeHeight` then shrinks it
- * to any tolerance by branch and bound over (phi, s) rectangles with the same Lipschitz bounds.
+ * length) for the edge point over it from every candidate of its 3 x 3 cells, then along each
+ * solution's chain of crossings (tooth k + 1, 2 pi / z later: a cell wider than fz keeps the
+ * crossings lowest at its other points); the height is the lowest converged solution.
+ *
+ * Error. (1) Always, rigorous: the value is a real edge point over the query (an upper bound
+ * of the envelope, to the Newton residual, about 1e-15 mm), and every edge point over the
+ * query lies within D = 1/density of a lattice sample (Lipschitz: |dP/dphi| <= z fz / 2 pi +
+ * e + R per radian, |dP/ds| = 1), so the envelope is at least (lowest sample of the 3 x 3
+ * cells) - D: `boundMm`, which halves when the density doubles. (2) On demand, rigorous to any
+ * tolerance: `certifyAt` / `certifiedEnvelopeHeightMm`, branch and bound over (phi, s)
+ * rectangles with the same Lipschitz bounds (1e-9 mm in 0.03 to 0.2 million evaluations).
+ * Refined values agree with the certificate to 1e-14 mm over the tested strata.
+ *
+ * API: bruteEnvelopeHeightMm (one point), bruteEnvelopeGrid (the x3p grid of a window),
+ * certifiedEnvelopeHeightMm, bruteFeedMarkHeightMm (hf on pass 0's CC path y = 0, extremes by
+ * golden section), bruteArealParameters (midpoint grid over one cell; extremes refined on
+ * request); the pieces: sweepModel, scatterSweep, refineAt, localHeights, certifyAt.
  *
  * READING OF THE NOTES (choices where they leave room; the solver's author reads them alone):
  * 1. The point that positions a pass (the "spindle axis point") is the tool centre point O of
@@ -94,6 +105,8 @@ export interface BruteHeight {
   /** Candidates refined and how many converged. */
   candidates: number;
   converged: number;
+  /** The lowest crossing (whose edge point gives heightMm). */
+  crossing: Crossing;
 }
 
 // ---------------------------------------------------------------- small vector helpers
@@ -178,16 +191,19 @@ export function sweepModel(params: ToothSweepParams): SweepModel {
   };
 }
 
+/** A smooth part of the profile (0 flat, 1 corner, 2 side, each extended beyond its ends), or -1: the whole profile. */
+export type Piece = -1 | 0 | 1 | 2;
+
 /** Profile in the half-plane: radius r(s), axial h(s) from O, and their derivatives (|(r', h')| = 1). */
-function profile(m: SweepModel, s: number, out: Float64Array): void {
-  if (s <= m.rb) {
+function profile(m: SweepModel, s: number, out: Float64Array, piece: Piece = -1): void {
+  if (piece === 0 || (piece === -1 && s <= m.rb)) {
     out[0] = s;
     out[1] = -m.rcr;
     out[2] = 1;
     out[3] = 0;
     return;
   }
-  if (s <= m.sArc && m.rcr > 0) {
+  if (piece === 1 || (piece === -1 && s <= m.sArc && m.rcr > 0)) {
     const psi = (s - m.rb) / m.rcr;
     out[0] = m.rb + m.rcr * Math.sin(psi);
     out[1] = -m.rcr * Math.cos(psi);
@@ -228,10 +244,18 @@ function passPlacement(m: SweepModel, j: number): { mirror: boolean; dx: number;
  * Edge point of tooth k of pass j at rotation phi (rad, theta = -phi) and arc length s, global,
  * with dP/dphi and dP/ds: out = [x, y, z, xphi, yphi, zphi, xs, ys, zs].
  */
-export function edgePoint(m: SweepModel, j: number, k: number, phi: number, s: number, out: Float64Array): void {
+export function edgePoint(
+  m: SweepModel,
+  j: number,
+  k: number,
+  phi: number,
+  s: number,
+  out: Float64Array,
+  piece: Piece = -1,
+): void {
   const p = m.params;
   const prof = PROF;
-  profile(m, s, prof);
+  profile(m, s, prof, piece);
   const rr = prof[0] as number;
   const hh = prof[1] as number;
   const rp = prof[2] as number;
@@ -280,15 +304,19 @@ export function solveOver(
   s0: number,
   x: number,
   y: number,
+  piece: Piece = -1,
 ): [number, number, number, number] | null {
   const out = new Float64Array(9);
   let phi = phi0;
   let s = s0;
+  // the part's own range: a solution on a part's extension is no edge point
+  const lo = piece === 1 ? m.rb : piece === 2 ? m.sArc : 0;
+  const hi = piece === 0 ? m.rb : piece === 1 ? m.sArc : m.sMax;
   const tol = 1e-13 * (1 + Math.abs(x) + Math.abs(y));
   const maxPhiStep = 0.5;
   const maxSStep = 0.25 * m.r;
   for (let it = 0; it < 60; it++) {
-    edgePoint(m, j, k, phi, s, out);
+    edgePoint(m, j, k, phi, s, out, piece);
     const fx = (out[0] as number) - x;
     const fy = (out[1] as number) - y;
     const a11 = out[3] as number;
@@ -303,7 +331,7 @@ export function solveOver(
     if (res <= tol) {
       // the step that would remain, mapped to height: the error of z
       const dz = Math.abs((out[5] as number) * dphi + (out[8] as number) * ds);
-      if (s < -1e-12 || s > m.sMax + 1e-12) return null;
+      if (s < lo - 1e-12 || s > hi + 1e-12) return null;
       return [out[2] as number, phi, s, dz + 1e-15];
     }
     const f = Math.max(1, Math.abs(dphi) / maxPhiStep, Math.abs(ds) / maxSStep);
@@ -314,6 +342,31 @@ export function solveOver(
     if (s < -0.5 * m.r || s > m.sMax + 0.5 * m.r) return null;
   }
   return null;
+}
+
+/**
+ * `solveOver` on the whole profile, and where that fails (Newton across the rim of a flat end,
+ * where the profile turns a sharp corner, or across the joins where the curvature jumps) on
+ * each smooth part of it with its own extension: the lowest solution found, or null.
+ */
+export function solveAny(
+  m: SweepModel,
+  j: number,
+  k: number,
+  phi0: number,
+  s0: number,
+  x: number,
+  y: number,
+): [number, number, number, number] | null {
+  const whole = solveOver(m, j, k, phi0, s0, x, y);
+  if (whole !== null) return whole;
+  let best: [number, number, number, number] | null = null;
+  for (const piece of [0, 1, 2] as const) {
+    if ((piece === 0 && m.rb === 0) || (piece === 1 && m.rcr === 0)) continue;
+    const sol = solveOver(m, j, k, phi0, s0, x, y, piece);
+    if (sol !== null && (best === null || sol[0] < best[0])) best = sol;
+  }
+  return best;
 }
 
 // ---------------------------------------------------------------- scatter
@@ -329,7 +382,7 @@ export interface SweepScatter {
   ncx: number;
   ncy: number;
   keep: number;
-  /** Per cell and slot: height, pass, tooth, revolution key, phi, s (height +Infinity when empty). */
+  /** Per cell and slot: height, pass, tooth, crossing key (4 revolution + profile part), phi, s (+Infinity: empty). */
   hz: Float64Array;
   pass: Int32Array;
   tooth: Int32Array;
@@ -355,16 +408,16 @@ function passRange(m: SweepModel, w: Window): number[] {
  * (mm of edge arc length, and mm of motion of the farthest edge point per rotation step), and
  * scatter onto cells of that size, keeping the `keep` lowest distinct crossings per cell.
  */
-export function scatterSweep(params: ToothSweepParams, window: Window, density: number, keep = 4): SweepScatter {
+export function scatterSweep(params: ToothSweepParams, window: Window, density: number, keep = 6): SweepScatter {
   const m = sweepModel(params);
   const step = 1 / density;
   const p = m.params;
   const z = p.flutes;
-  // cells: the window and a margin of one cell (a query uses its cell's neighbours)
-  const gx0 = window.x0 - step;
-  const gy0 = window.y0 - step;
-  const ncx = Math.ceil((window.x1 - window.x0) / step) + 2;
-  const ncy = Math.ceil((window.y1 - window.y0) / step) + 2;
+  // cells: the window and a margin of 1.5 cells (a query uses its cell's neighbours)
+  const gx0 = window.x0 - 1.5 * step;
+  const gy0 = window.y0 - 1.5 * step;
+  const ncx = Math.floor((window.x1 - window.x0) / step) + 4;
+  const ncy = Math.floor((window.y1 - window.y0) / step) + 4;
   const gx1 = gx0 + ncx * step;
   const gy1 = gy0 + ncy * step;
   const n = ncx * ncy * keep;
@@ -380,10 +433,14 @@ export function scatterSweep(params: ToothSweepParams, window: Window, density: 
   const nr = new Float64Array(ns + 1);
   const nh = new Float64Array(ns + 1);
   const pr = new Float64Array(4);
+  // the part of the profile each node lies on (flat 0, corner 1, side 2): crossings of one
+  // tooth pass on different parts are kept apart (the side can be lowest where the flat is not)
+  const seg = new Int32Array(ns + 1);
   for (let i = 0; i <= ns; i++) {
     profile(m, i * ds, pr);
     nr[i] = pr[0] as number;
     nh[i] = pr[1] as number;
+    seg[i] = i * ds <= m.rb ? 0 : i * ds <= m.sArc ? 1 : 2;
   }
   const dphi = step / m.lphi;
   const { u, v, a } = m;
@@ -442,11 +499,12 @@ export function scatterSweep(params: ToothSweepParams, window: Window, density: 
           const pz = bz + rq * wz + hq * a[2];
           samples++;
           const base = (cy * ncx + cx) * keep;
+          const crossingKey = 4 * revKey + (seg[q - 1] as number);
           // same crossing already kept: lower it; else replace the highest if lower
           let worst = base;
           let same = -1;
           for (let t = base; t < base + keep; t++) {
-            if (hz[t] !== Number.POSITIVE_INFINITY && pass[t] === j && tooth[t] === k && rev[t] === revKey) {
+            if (hz[t] !== Number.POSITIVE_INFINITY && pass[t] === j && tooth[t] === k && rev[t] === crossingKey) {
               same = t;
               break;
             }
@@ -457,7 +515,7 @@ export function scatterSweep(params: ToothSweepParams, window: Window, density: 
             hz[slot] = pz;
             pass[slot] = j;
             tooth[slot] = k;
-            rev[slot] = revKey;
+            rev[slot] = crossingKey;
             phiA[slot] = phi;
             sA[slot] = (q - 1) * ds;
           }
@@ -486,6 +544,34 @@ export function scatterSweep(params: ToothSweepParams, window: Window, density: 
   };
 }
 
+/** A crossing: the edge point of tooth `tooth` of pass `pass` at (phi, s) over a query point, at height zMm. */
+export interface Crossing {
+  zMm: number;
+  pass: number;
+  tooth: number;
+  phi: number;
+  s: number;
+}
+
+/**
+ * Heights near (xc, yc) from the crossings found there (every solution `refineAt` met at the
+ * centre), each followed by Newton from its last solution: fast, for searches in a small box.
+ * Only as good as that list; `verifiedHeight` checks a result against a full `refineAt`.
+ */
+export function localHeights(sc: SweepScatter, xc: number, yc: number): (x: number, y: number) => number {
+  const list: Crossing[] = [];
+  refineAt(sc, xc, yc, list);
+  return (x, y) => {
+    let best = Number.POSITIVE_INFINITY;
+    for (const c of list) {
+      const sol = solveAny(sc.model, c.pass, c.tooth, c.phi, c.s, x, y);
+      if (sol === null) continue;
+      if (sol[0] < best) best = sol[0];
+    }
+    return best;
+  };
+}
+
 /**
  * Refine the envelope height at (x, y) from a scatter whose window contains the point: Newton
  * from every kept candidate of the 3 x 3 cells about it, then, from every solution found, a
@@ -494,7 +580,7 @@ export function scatterSweep(params: ToothSweepParams, window: Window, density: 
  * crossings of its other points, and the walk reaches the crossing lowest at this one. A walk
  * goes on while it improves, and z + 2 crossings past the last improvement.
  */
-export function refineAt(sc: SweepScatter, x: number, y: number): BruteHeight {
+export function refineAt(sc: SweepScatter, x: number, y: number, solutions?: Crossing[]): BruteHeight {
   const cx = Math.floor((x - sc.gx0) / sc.stepMm);
   const cy = Math.floor((y - sc.gy0) / sc.stepMm);
   if (cx < 1 || cy < 1 || cx > sc.ncx - 2 || cy > sc.ncy - 2) {
@@ -507,8 +593,8 @@ export function refineAt(sc: SweepScatter, x: number, y: number): BruteHeight {
   let bestErr = 0;
   let candidates = 0;
   let converged = 0;
-  const tried = new Set<string>();
   const found = new Set<string>();
+  let bestCrossing: Crossing = { zMm: Number.NaN, pass: 0, tooth: 0, phi: 0, s: 0 };
   const sols: [number, number, number, number, number, number][] = [];
   const record = (j: number, k: number, sol: [number, number, number, number]): boolean => {
     const key = `${j}:${k}:${Math.round(sol[1] * 1e7)}:${Math.round(sol[2] * 1e4)}`;
@@ -519,6 +605,7 @@ export function refineAt(sc: SweepScatter, x: number, y: number): BruteHeight {
     if (sol[0] < best) {
       best = sol[0];
       bestErr = sol[3];
+      bestCrossing = { zMm: sol[0], pass: j, tooth: k, phi: sol[1], s: sol[2] };
     }
     return true;
   };
@@ -529,13 +616,10 @@ export function refineAt(sc: SweepScatter, x: number, y: number): BruteHeight {
         const h = sc.hz[t] as number;
         if (h === Number.POSITIVE_INFINITY) continue;
         if (h < lowestSample) lowestSample = h;
-        const key = `${sc.pass[t]}:${sc.tooth[t]}:${sc.rev[t]}:${Math.round((sc.s[t] as number) / (4 * sc.stepMm))}`;
-        if (tried.has(key)) continue;
-        tried.add(key);
         candidates++;
         const j = sc.pass[t] as number;
         const k = sc.tooth[t] as number;
-        const sol = solveOver(m, j, k, sc.phi[t] as number, sc.s[t] as number, x, y);
+        const sol = solveAny(m, j, k, sc.phi[t] as number, sc.s[t] as number, x, y);
         if (sol !== null) record(j, k, sol);
       }
     }
@@ -543,29 +627,56 @@ export function refineAt(sc: SweepScatter, x: number, y: number): BruteHeight {
   // walk the chains of crossings from every solution, lowest first
   const starts = sols.slice().sort((p, q) => p[0] - q[0]);
   const patience = z + 2;
-  for (const [, j, k0, phi0, s0] of starts) {
+  // from the lowest solution the walk also steps over tooth passes that miss the point, for up
+  // to 0.25 mm of feed: near the rim of a flat end a point can be cut by the side, then by no
+  // pass, then by the flat bottom lower down (the cells hold only the rim's own samples there)
+  const longGap = Math.max(patience, Math.ceil(0.25 / (z * m.params.fzMm)) * z);
+  starts.forEach(([, j, k0, phi0, s0], index) => {
+    const maxFails = index === 0 ? longGap : patience;
     for (const dir of [1, -1]) {
       let k = k0;
       let phi = phi0;
       let s = s0;
       let idle = 0;
-      while (idle < patience) {
+      let fails = 0;
+      let base = phi0;
+      let steps = 0;
+      while (idle < patience && fails < maxFails) {
         k = (((k + dir) % z) + z) % z;
-        phi += (dir * 2 * Math.PI) / z;
-        const sol = solveOver(m, j, k, phi, s, x, y);
-        if (sol === null) break;
+        steps++;
+        phi = base + (dir * 2 * Math.PI * steps) / z;
+        const sol = solveAny(m, j, k, phi, s, x, y);
+        if (sol === null) {
+          fails++;
+          continue;
+        }
+        fails = 0;
         const before = best;
-        if (!record(j, k, sol)) break;
-        phi = sol[1];
+        const fresh = record(j, k, sol);
+        base = sol[1];
+        steps = 0;
         s = sol[2];
-        idle = best < before ? 0 : idle + 1;
+        // a solution another walk found counts as no progress (that walk may have stopped there)
+        idle = fresh && best < before ? 0 : idle + 1;
       }
     }
-  }
+  });
   if (best === Number.POSITIVE_INFINITY) {
-    throw new Error(`toothSweepBruteForce: no edge point refined over (${x}, ${y})`);
+    // no seed converged (seeds on a flat end's rim, or a fold of the sweep where Newton's
+    // Jacobian vanishes): branch and bound, first to the sampling step (from no upper bound),
+    // then from that crossing to 1e-10 mm
+    const rough = certifyAt(m, x, y, Number.POSITIVE_INFINITY, sc.sampleRadiusMm);
+    const c = certifyAt(m, x, y, rough.heightMm, 1e-10);
+    if (c.heightMm === Number.POSITIVE_INFINITY) {
+      throw new Error(`toothSweepBruteForce: no edge point refined over (${x}, ${y})`);
+    }
+    best = c.heightMm;
+    bestErr = 1e-15;
   }
   const lower = Math.min(best, lowestSample - sc.sampleRadiusMm);
+  if (solutions !== undefined) {
+    for (const [zc, j, k, phi, sv] of sols) solutions.push({ zMm: zc, pass: j, tooth: k, phi, s: sv });
+  }
   return {
     heightMm: best,
     lowerBoundMm: lower,
@@ -573,6 +684,7 @@ export function refineAt(sc: SweepScatter, x: number, y: number): BruteHeight {
     newtonErrorMm: bestErr,
     candidates,
     converged,
+    crossing: bestCrossing,
   };
 }
 
@@ -653,7 +765,7 @@ export function certifyAt(
       continue;
     }
     if (rxy < 1e-4) {
-      const sol = solveOver(m, j, k, phic, sc, x, y);
+      const sol = solveAny(m, j, k, phic, sc, x, y);
       if (sol !== null && sol[0] < upper) upper = sol[0];
       if (lb >= upper - tolMm) {
         droppedLower = Math.min(droppedLower, lb);
@@ -736,7 +848,11 @@ export function bruteEnvelopeGrid(
   ny: number,
   density: number,
 ): BruteGrid {
-  const sc = scatterSweep(params, window, density);
+  return gridFromScatter(scatterSweep(params, window, density), window, nx, ny);
+}
+
+/** The grid of `bruteEnvelopeGrid` from a scatter whose window contains `window`. */
+export function gridFromScatter(sc: SweepScatter, window: Window, nx: number, ny: number): BruteGrid {
   const dx = (window.x1 - window.x0) / nx;
   const dy = (window.y1 - window.y0) / ny;
   const heights = new Float64Array(nx * ny);
@@ -834,6 +950,16 @@ export interface BruteAreal {
   Ssk: number;
   Sku: number;
   meanMm: number;
+  /** Highest and lowest heights (mm): refined (nested golden sections) when asked, else sampled. */
+  maxMm: number;
+  minMm: number;
+  /** Where they are. */
+  xMaxMm: number;
+  yMaxMm: number;
+  xMinMm: number;
+  yMinMm: number;
+  /** Whether the extremes were refined. */
+  refinedExtremes: boolean;
   /** The cell: [0, P) along X, [-L/2, -L/2 + Lc) across (Lc = L or 2 L). */
   cell: Window;
   nx: number;
@@ -841,29 +967,135 @@ export interface BruteAreal {
 }
 
 /**
- * Sa, Sq, Sz, Sp, Sv, Ssk, Sku over one period cell (fz or z fz along, L or 2 L across) from an
- * nx by ny midpoint grid of exact (refined) heights. Expected error: the midpoint rule on a
- * continuous, piecewise-smooth periodic surface converges as O(h^2) in the means (the kinks
- * of the cusps cost O(h^2) per kink line), so Sa, Sq, Ssk, Sku carry about C (dx^2 + dy^2)
- * (compare two resolutions: the error is about a third of their difference); Sp, Sv, Sz are
- * the sampled extremes, low by up to the slope times half a grid diagonal at a kink (a
- * smooth extreme: curvature times dx^2 / 8).
+ * The extreme (sign +1: highest, -1: lowest) of the envelope within one grid step (dx, dy) of
+ * (x, y), every height exact (Newton on the crossings `refineAt` lists at (x, y), the result checked
+ * by a full `refineAt`; `sc`'s window holds the box). A peak of the surface left is a kink: the crest of the
+ * cusp between passes (along X) crossed by feed-mark crests (roughly along Y), where two or
+ * three crossings meet; no derivative is used. Nested searches in both orders: the outer
+ * variable scanned at 12 points over the box, then narrowed by golden section about the best
+ * scanned point, the inner one by golden section over the box (a crest crossed once is
+ * unimodal); positions to 1e-11 mm. The better of the two orders is returned: [height, x, y].
  */
-export function bruteArealParameters(params: ToothSweepParams, nx: number, ny: number, density: number): BruteAreal {
+export function refinedExtreme(
+  sc: SweepScatter,
+  x: number,
+  y: number,
+  dx: number,
+  dy: number,
+  sign: 1 | -1,
+): [number, number, number] {
+  const local = localHeights(sc, x, y);
+  const f = (xx: number, yy: number): number => sign * local(xx, yy);
+  let best: [number, number, number] = [f(x, y), x, y];
+  for (const xOuter of [true, false]) {
+    const [c, h] = xOuter ? [x, dx] : [y, dy];
+    const [ci, hi] = xOuter ? [y, dy] : [x, dx];
+    const g = (u: number, w: number): number => (xOuter ? f(u, w) : f(w, u));
+    const inner = (u: number): [number, number] => {
+      const [w, v] = goldenMax((ww) => g(u, ww), ci - hi, ci + hi, 1e-11);
+      return [v, w];
+    };
+    let bu = c;
+    let bv = Number.NEGATIVE_INFINITY;
+    const n = 12;
+    for (let i = 0; i <= n; i++) {
+      const u = c - h + (2 * h * i) / n;
+      const v = inner(u)[0];
+      if (v > bv) {
+        bv = v;
+        bu = u;
+      }
+    }
+    const step = (2 * h) / n;
+    const [u] = goldenMax((uu) => inner(uu)[0], Math.max(c - h, bu - step), Math.min(c + h, bu + step), 1e-11);
+    for (const uu of [u, bu]) {
+      const [v, w] = inner(uu);
+      if (v > best[0]) best = xOuter ? [v, uu, w] : [v, w, uu];
+    }
+  }
+  // the crossings listed at the centre must still be the lowest at the extreme found
+  const full = refineAt(sc, best[1], best[2]).heightMm;
+  if (Math.abs(full - sign * best[0]) > 1e-12) {
+    throw new Error(
+      `toothSweepBruteForce: the local search met a crossing it did not list (${full} against ${sign * best[0]})`,
+    );
+  }
+  return [full, best[1], best[2]];
+}
+
+/**
+ * Where to refine the extreme of sign `sign`: the crests of the sampled grid. Along every
+ * column (and every row) each local extreme of the periodic samples is narrowed by golden
+ * section across it with exact heights (a crest sampled off its top would rank by how far off
+ * it was sampled, not by its height); the best three crest points, as [height * sign, x, y].
+ */
+function crestCandidates(sc: SweepScatter, g: BruteGrid, cell: Window, sign: 1 | -1): [number, number, number][] {
+  const { nx, ny, dxMm: dx, dyMm: dy } = g;
+  const v = (ix: number, iy: number): number =>
+    sign * (g.heightsMm[(((iy % ny) + ny) % ny) * nx + (((ix % nx) + nx) % nx)] as number);
+  const out: [number, number, number][] = [];
+  for (let ix = 0; ix < nx; ix++) {
+    const x = cell.x0 + (ix + 0.5) * dx;
+    for (let iy = 0; iy < ny; iy++) {
+      if (v(ix, iy) < v(ix, iy - 1) || v(ix, iy) < v(ix, iy + 1)) continue;
+      const y = cell.y0 + (iy + 0.5) * dy;
+      const local = localHeights(sc, x, y);
+      const [yb, val] = goldenMax((yy) => sign * local(x, yy), y - dy, y + dy, 1e-6 * dy);
+      out.push([val, x, yb]);
+    }
+  }
+  for (let iy = 0; iy < ny; iy++) {
+    const y = cell.y0 + (iy + 0.5) * dy;
+    for (let ix = 0; ix < nx; ix++) {
+      if (v(ix, iy) < v(ix - 1, iy) || v(ix, iy) < v(ix + 1, iy)) continue;
+      const x = cell.x0 + (ix + 0.5) * dx;
+      const local = localHeights(sc, x, y);
+      const [xb, val] = goldenMax((xx) => sign * local(xx, y), x - dx, x + dx, 1e-6 * dx);
+      out.push([val, xb, y]);
+    }
+  }
+  return out.sort((a, b) => b[0] - a[0]).slice(0, 3);
+}
+
+/**
+ * Sa, Sq, Sz, Sp, Sv, Ssk, Sku over one period cell (fz or z fz along, L or 2 L across) from an
+ * nx by ny midpoint grid of exact (refined) heights (the x3p grid of the notes), the integral
+ * means by the midpoint rule. Expected error: the rule on a continuous, piecewise-smooth periodic
+ * surface converges as O(h^2) (the cusp and feed-mark kinks cost O(h^2) per kink line), so Sa,
+ * Sq, Ssk, Sku carry about C (dx^2 + dy^2): compare two resolutions (about a third of their
+ * difference). The extremes are the sampled ones (low by up to a slope times half a grid
+ * diagonal at a kink), or, with `refineExtremes`, located from the sampled ones by nested golden
+ * sections to 1e-11 mm in position with every height exact (heights to about 1e-12 mm where the
+ * extreme is a single point of the sampled peak's neighbourhood).
+ */
+export function bruteArealParameters(
+  params: ToothSweepParams,
+  nx: number,
+  ny: number,
+  density: number,
+  refineExtremes = false,
+): BruteAreal {
   const p = feedPatternPeriodMm(params);
   const lc = crossPeriodMm(params);
   const cell: Window = { x0: 0, x1: p, y0: -params.stepOverMm / 2, y1: -params.stepOverMm / 2 + lc };
-  const g = bruteEnvelopeGrid(params, cell, nx, ny, density);
+  const dxg = (cell.x1 - cell.x0) / nx;
+  const dyg = (cell.y1 - cell.y0) / ny;
+  const sc = scatterSweep(
+    params,
+    { x0: cell.x0 - 2 * dxg, x1: cell.x1 + 2 * dxg, y0: cell.y0 - 2 * dyg, y1: cell.y1 + 2 * dyg },
+    density,
+  );
+  const g = gridFromScatter(sc, cell, nx, ny);
   const h = g.heightsMm;
   const n = h.length;
   let sum = 0;
-  let hi = Number.NEGATIVE_INFINITY;
-  let lo = Number.POSITIVE_INFINITY;
+  let iHi = 0;
+  let iLo = 0;
   for (let i = 0; i < n; i++) {
     const v = h[i] as number;
     sum += v;
-    if (v > hi) hi = v;
-    if (v < lo) lo = v;
+    if (v > (h[iHi] as number)) iHi = i;
+    if (v < (h[iLo] as number)) iLo = i;
   }
   const mean = sum / n;
   let m1 = 0;
@@ -878,6 +1110,25 @@ export function bruteArealParameters(params: ToothSweepParams, nx: number, ny: n
     m4 += d * d * d * d;
   }
   const sq = Math.sqrt(m2 / n);
+  const at = (i: number): [number, number] => [
+    cell.x0 + ((i % nx) + 0.5) * g.dxMm,
+    cell.y0 + (Math.floor(i / nx) + 0.5) * g.dyMm,
+  ];
+  let [xHi, yHi] = at(iHi);
+  let [xLo, yLo] = at(iLo);
+  let hi = h[iHi] as number;
+  let lo = h[iLo] as number;
+  if (refineExtremes) {
+    for (const sign of [1, -1] as const) {
+      let best: [number, number, number] = sign > 0 ? [hi, xHi, yHi] : [lo, xLo, yLo];
+      for (const [, xc, yc] of crestCandidates(sc, g, cell, sign)) {
+        const r = refinedExtreme(sc, xc, yc, g.dxMm, g.dyMm, sign);
+        if (sign * r[0] > sign * best[0]) best = r;
+      }
+      if (sign > 0) [hi, xHi, yHi] = best;
+      else [lo, xLo, yLo] = best;
+    }
+  }
   return {
     Sa: m1 / n,
     Sq: sq,
@@ -887,8 +1138,210 @@ export function bruteArealParameters(params: ToothSweepParams, nx: number, ny: n
     Ssk: m3 / n / sq ** 3,
     Sku: m4 / n / sq ** 4,
     meanMm: mean,
+    maxMm: hi,
+    minMm: lo,
+    xMaxMm: xHi,
+    yMaxMm: yHi,
+    xMinMm: xLo,
+    yMinMm: yLo,
+    refinedExtremes: refineExtremes,
     cell,
     nx,
     ny,
   };
+}
+
+// ---------------------------------------------------------------- areal means by piecewise quadrature
+
+/** Gauss-Legendre, 8 nodes on [-1, 1]. */
+const GL_X = [
+  -0.960289856497536, -0.7966664774136267, -0.525532409916329, -0.1834346424956498, 0.1834346424956498,
+  0.525532409916329, 0.7966664774136267, 0.960289856497536,
+];
+const GL_W = [
+  0.10122853629037626, 0.22238103445337448, 0.31370664587788727, 0.362683783378362, 0.362683783378362,
+  0.31370664587788727, 0.22238103445337448, 0.10122853629037626,
+];
+
+/** Same smooth piece: the same crossing (pass, tooth, within half a tooth pitch and 0.5 mm of edge). */
+function sameCrossing(a: Crossing, b: Crossing, z: number): boolean {
+  return a.pass === b.pass && a.tooth === b.tooth && Math.abs(a.phi - b.phi) < Math.PI / z && Math.abs(a.s - b.s) < 0.5;
+}
+
+/**
+ * Integrals over x in [x0, x1] at y of f(s(x, y)) for each f of `fs`, the row cut into smooth
+ * pieces where its lowest crossing changes (found from `samples` points, each change bisected
+ * to 1e-13 mm; a change that comes and goes between two samples is missed) and where g(s)
+ * (optional, e.g. s - m) changes sign, each piece by 8-point Gauss-Legendre.
+ */
+function rowIntegrals(
+  sc: SweepScatter,
+  y: number,
+  x0: number,
+  x1: number,
+  samples: number,
+  fs: ((h: number) => number)[],
+  g?: (h: number) => number,
+): number[] {
+  const z = sc.model.params.flutes;
+  const at = (x: number): BruteHeight => refineAt(sc, x, y);
+  const cuts: number[] = [x0];
+  let prevX = x0;
+  let prev = at(x0);
+  for (let i = 1; i <= samples; i++) {
+    const x = x0 + ((x1 - x0) * i) / samples;
+    const cur = at(x);
+    if (!sameCrossing(prev.crossing, cur.crossing, z)) {
+      let a = prevX;
+      let b = x;
+      let ca = prev.crossing;
+      while (b - a > 1e-13 * (1 + Math.abs(a))) {
+        const mid = (a + b) / 2;
+        const cm = at(mid).crossing;
+        if (sameCrossing(ca, cm, z)) {
+          a = mid;
+          ca = cm;
+        } else b = mid;
+      }
+      // (a change between tied crossings, the flat bottom's, only costs a needless cut)
+      cuts.push((a + b) / 2);
+    }
+    prevX = x;
+    prev = cur;
+  }
+  cuts.push(x1);
+  const sums = fs.map(() => 0);
+  const piece = (a: number, b: number, depth: number): void => {
+    const hs = GL_X.map((t) => at((a + b) / 2 + ((b - a) / 2) * t).heightMm);
+    if (g !== undefined && depth < 60) {
+      const ga = g(at(a).heightMm);
+      const gb = g(at(b).heightMm);
+      const signs = [ga, ...hs.map(g), gb];
+      if (signs.some((v) => v > 0) && signs.some((v) => v < 0)) {
+        // split at a sign change of g: the first one found, by bisection
+        let lo = a;
+        let hi = b;
+        const sLo = Math.sign(ga) || Math.sign(signs[1] as number);
+        for (let it = 0; it < 200 && hi - lo > 1e-13 * (1 + Math.abs(lo)); it++) {
+          const mid = (lo + hi) / 2;
+          if (Math.sign(g(at(mid).heightMm)) === sLo) lo = mid;
+          else hi = mid;
+        }
+        const c = (lo + hi) / 2;
+        if (c - a > 1e-13 && b - c > 1e-13) {
+          piece(a, c, depth + 1);
+          piece(c, b, depth + 1);
+          return;
+        }
+      }
+    }
+    for (let q = 0; q < fs.length; q++) {
+      const f = fs[q] as (h: number) => number;
+      let acc = 0;
+      for (let i = 0; i < GL_W.length; i++) acc += (GL_W[i] as number) * f(hs[i] as number);
+      sums[q] = (sums[q] as number) + (acc * (b - a)) / 2;
+    }
+  };
+  for (let i = 0; i + 1 < cuts.length; i++) piece(cuts[i] as number, cuts[i + 1] as number, 0);
+  return sums;
+}
+
+/** Adaptive Simpson over y of a vector of row integrals; tolerance on the first component. */
+function adaptiveRows(row: (y: number) => number[], y0: number, y1: number, tol: number): number[] {
+  const add = (p: number[], q: number[], k = 1): number[] => p.map((v, i) => v + k * (q[i] as number));
+  const simpson = (a: number, b: number, fa: number[], fm: number[], fb: number[]): number[] =>
+    fa.map((v, i) => ((b - a) / 6) * (v + 4 * (fm[i] as number) + (fb[i] as number)));
+  const rec = (
+    a: number,
+    b: number,
+    fa: number[],
+    fm: number[],
+    fb: number[],
+    whole: number[],
+    t: number,
+    depth: number,
+  ): number[] => {
+    const m = (a + b) / 2;
+    const fl = row((a + m) / 2);
+    const fr = row((m + b) / 2);
+    const left = simpson(a, m, fa, fl, fm);
+    const right = simpson(m, b, fm, fr, fb);
+    const both = add(left, right);
+    const err = Math.abs((both[0] as number) - (whole[0] as number));
+    if (depth >= 40 || err <= 15 * t) return add(both, add(both, whole, -1), 1 / 15);
+    return add(rec(a, m, fa, fl, fm, left, t / 2, depth + 1), rec(m, b, fm, fr, fb, right, t / 2, depth + 1));
+  };
+  // start from 8 panels: a crest between two rows is not missed by the first estimate
+  let total: number[] | null = null;
+  const n = 8;
+  for (let i = 0; i < n; i++) {
+    const a = y0 + ((y1 - y0) * i) / n;
+    const b = y0 + ((y1 - y0) * (i + 1)) / n;
+    const fa = row(a);
+    const fm = row((a + b) / 2);
+    const fb = row(b);
+    const part = rec(a, b, fa, fm, fb, simpson(a, b, fa, fm, fb), tol / n, 0);
+    total = total === null ? part : add(total, part);
+  }
+  return total as number[];
+}
+
+/** Areal means by piecewise quadrature, with the tolerance used. */
+export interface BruteArealQuadrature {
+  Sa: number;
+  Sq: number;
+  Ssk: number;
+  Sku: number;
+  meanMm: number;
+  /** Absolute tolerance asked of each y-integral (mm^3 per mm^2 of cell: a height). */
+  tolMm: number;
+  rows: number;
+}
+
+/**
+ * The integral means of the areal parameters (m, Sa, Sq, Ssk, Sku) over the period cell by
+ * quadrature that follows the kinks: each row (fixed y) cut where its lowest crossing changes
+ * (and, for Sa, where s = m) and integrated piecewise by Gauss-Legendre (exact to rounding on
+ * each smooth piece), the rows integrated over y by adaptive Simpson to `tolMm` (a height: the
+ * tolerance on the cell mean). Error: about tolMm on m and Sa, and the same relative to Sq^2
+ * and its powers on Sq, Ssk, Sku (the adaptive estimate, not a bound).
+ */
+export function bruteArealQuadrature(
+  params: ToothSweepParams,
+  tolMm: number,
+  density: number,
+  rowSamples = 24,
+): BruteArealQuadrature {
+  const p = feedPatternPeriodMm(params);
+  const lc = crossPeriodMm(params);
+  const cell: Window = { x0: 0, x1: p, y0: -params.stepOverMm / 2, y1: -params.stepOverMm / 2 + lc };
+  const sc = scatterSweep(params, cell, density);
+  const area = p * lc;
+  let rows = 0;
+  const powers = [(h: number) => h, (h: number) => h * h, (h: number) => h * h * h, (h: number) => h * h * h * h];
+  const raw = adaptiveRows(
+    (y) => {
+      rows++;
+      return rowIntegrals(sc, y, cell.x0, cell.x1, rowSamples, powers);
+    },
+    cell.y0,
+    cell.y1,
+    tolMm * area,
+  ).map((v) => v / area);
+  const [e1, e2, e3, e4] = raw as [number, number, number, number];
+  const m = e1;
+  const c2 = e2 - m * m;
+  const c3 = e3 - 3 * m * e2 + 2 * m * m * m;
+  const c4 = e4 - 4 * m * e3 + 6 * m * m * e2 - 3 * m * m * m * m;
+  const [sa] = adaptiveRows(
+    (y) => {
+      rows++;
+      return rowIntegrals(sc, y, cell.x0, cell.x1, rowSamples, [(h) => Math.abs(h - m)], (h) => h - m);
+    },
+    cell.y0,
+    cell.y1,
+    tolMm * area,
+  ).map((v) => v / area) as [number];
+  const sq = Math.sqrt(c2);
+  return { Sa: sa, Sq: sq, Ssk: c3 / sq ** 3, Sku: c4 / sq ** 4, meanMm: m, tolMm, rows };
 }
