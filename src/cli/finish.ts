@@ -8,6 +8,7 @@
  */
 
 import type { PassPattern, ToolInput } from '../core/domain/tool';
+import { NOT_CONVERGED } from '../core/finish/envelope';
 import type { FinishError, FinishField, FinishInput } from '../core/finish/finishInput';
 import { describeFinishError } from '../core/finish/finishInput';
 import {
@@ -77,12 +78,16 @@ export function finishOf(
   try {
     return { ok: true, input: v.value, report: finishReport(tool, pattern, intervalMm, v.value) };
   } catch (e) {
-    // Runout: refused by the solver until it is computed (its one-line reason names the field).
+    // Runout: refused by the solver until it is computed (its one-line reason names the field);
+    // an event search that did not converge: said, never a number.
     if (e instanceof Error && e.message === RUNOUT_NOT_YET) {
       return {
         ok: false,
         errors: [{ field: 'runout', code: 'too-large', got: values.runout ?? '', message: e.message }],
       };
+    }
+    if (e instanceof Error && e.message === NOT_CONVERGED) {
+      return { ok: false, errors: [{ field: 'flutes', code: 'not-computed-here', got: '', message: e.message }] };
     }
     throw e;
   }
