@@ -16,6 +16,12 @@ export interface Feature {
   readonly modules?: readonly string[];
   /** three's modules of which a part only it reaches is cut ({@link REWRITES}). */
   readonly rewrites?: readonly string[];
+  /**
+   * A further proof over the GLSL the page can compile (the kept shader chunks, after the other
+   * features' dead blocks are dropped, and the page's own sources): false keeps the feature whole.
+   * Only for a feature without macros (its removal must not change the shaders it reads).
+   */
+  unusedInShaders?(glsl: string): boolean;
 }
 
 const exportsNone = (exports: ReadonlySet<string>, pattern: RegExp) => ![...exports].some((e) => pattern.test(e));
@@ -130,6 +136,104 @@ export const FEATURES: readonly Feature[] = [
     unused: (exports) => exportsNone(exports, /LightProbe/),
     macros: ['USE_LIGHT_PROBES'],
   },
+  {
+    // Uniform buffer objects: only a ShaderMaterial whose `uniformsGroups` the page fills has one
+    // (the class UniformsGroup is not exported, and no source names the property).
+    name: 'uniform buffer objects',
+    unused: (exports, sources) => exportsNone(exports, /^UniformsGroup$/) && !/\buniformsGroups\b/.test(sources),
+    macros: [],
+    modules: ['renderers/webgl/WebGLUniformsGroups.js'],
+  },
+  {
+    // The renderer's own render pass (WebGLOutput): made only for an `outputBufferType` other than
+    // the default UnsignedByteType (HDR, post-processing effects), which no source gives.
+    name: 'the output render pass',
+    unused: (_exports, sources) => !/\boutputBufferType\b/.test(sources),
+    macros: [],
+    modules: ['renderers/webgl/WebGLOutput.js'],
+  },
+  {
+    // Render targets, and textures other than 2D ones: no render target class is exported (the
+    // first feature) and no source draws into one or copies textures (the renderer's own render
+    // targets are the transmission pass's, the shadow maps', WebXR's and the output pass's, all
+    // removed above); a cube, 3D or array texture is bound only for a sampler of that type, and no
+    // shader the page can compile declares one. 2D textures stay (MeshStandardMaterial's DFG table).
+    name: 'render targets and cube, 3D and array textures',
+    unused: (exports, sources) =>
+      [
+        'textures and environment maps',
+        'physical-only material features',
+        'shadow maps',
+        'WebXR',
+        'light probes',
+      ].every((name) => FEATURES.find((f) => f.name === name)?.unused(exports, sources)) &&
+      !/\boutputBufferType\b/.test(sources) &&
+      !/\b(setRenderTarget|initRenderTarget|initTexture|copyTextureToTexture\w*|copyFramebufferToTexture|readRenderTargetPixels\w*)\b/.test(
+        sources,
+      ),
+    // The light probe grids' 3D textures are declared under `#if NUM_LIGHT_PROBE_GRIDS > 0`, the count
+    // of LightProbeGrid objects (WebGLPrograms), 0 without the class (the light probes feature).
+    unusedInShaders: (glsl) =>
+      !/\b[iu]?sampler(Cube|3D|2DArray)\w*\b/.test(withoutBlocks(glsl, '#if NUM_LIGHT_PROBE_GRIDS > 0')),
+    macros: [],
+    rewrites: ['renderers/webgl/WebGLTextures.js'],
+  },
+  {
+    // WebGLMaterials' uniform refreshes of materials the page has no class of (each called only
+    // for its own material, `material.isMeshPhysicalMaterial` and the like): cut while none of them
+    // is exported, all kept while any is.
+    name: "other materials' uniform refreshes",
+    unused: (exports) => Object.values(OTHER_MATERIALS).every((m) => !exports.has(m)),
+    macros: [],
+    rewrites: ['renderers/webgl/WebGLMaterials.js'],
+  },
+];
+
+/** WebGLMaterials.js's refreshes of materials the page does not use, each with its material's class. */
+const OTHER_MATERIALS: Readonly<Record<string, string>> = {
+  refreshUniformsToon: 'MeshToonMaterial',
+  refreshUniformsPhong: 'MeshPhongMaterial',
+  refreshUniformsPhysical: 'MeshPhysicalMaterial',
+  refreshUniformsMatcap: 'MeshMatcapMaterial',
+  refreshUniformsDistance: 'MeshDistanceMaterial',
+  refreshUniformsSprites: 'SpriteMaterial',
+  refreshUniformsLine: 'LineBasicMaterial',
+  refreshUniformsDash: 'LineDashedMaterial',
+};
+
+/**
+ * `glsl` without the blocks that open with the line `opening` (to their `#endif`, nested blocks
+ * counted); a block with an `#else` or `#elif` of its own is kept from there on (that part compiles).
+ */
+export function withoutBlocks(glsl: string, opening: string): string {
+  const out: string[] = [];
+  let depth = 0;
+  for (const line of glsl.split('\n')) {
+    const directive = line.trim();
+    if (depth === 0) {
+      if (directive === opening) depth = 1;
+      else out.push(line);
+    } else if (/^#\s*if/.test(directive)) depth++;
+    else if (/^#\s*endif/.test(directive)) depth--;
+    else if (depth === 1 && /^#\s*(else|elif)/.test(directive)) {
+      depth = 0;
+      out.push('#if 1');
+    }
+  }
+  return out.join('\n');
+}
+
+/** WebGLTextures.js's functions for render targets and for cube, 3D and array textures. */
+const TEXTURE_FUNCTIONS = [
+  'setTexture2DArray',
+  'setTexture3D',
+  'setTextureCube',
+  'rebindTextures',
+  'setupRenderTarget',
+  'updateRenderTargetMipmap',
+  'updateMultisampleRenderTarget',
+  'setupDepthRenderbuffer',
+  'setupFrameBufferTexture',
 ];
 
 /** A stand-in module's code: a class or factory whose reached methods throw, naming `what`. */
@@ -155,6 +259,10 @@ export function WebGLShadowMap() {
   'renderers/webgl/WebGLMorphtargets.js': `export function WebGLMorphtargets() {
   return { update() { ${unreachable('morph targets')}; } };
 }`,
+  'renderers/webgl/WebGLOutput.js': `export function WebGLOutput() { ${unreachable('the output render pass')}; }`,
+  'renderers/webgl/WebGLUniformsGroups.js': `export function WebGLUniformsGroups() {
+  return { bind() { ${unreachable('a uniform buffer object')}; }, update() { ${unreachable('a uniform buffer object')}; }, dispose() {} };
+}`,
 };
 
 /**
@@ -169,10 +277,30 @@ function cut(code: string, from: string, to: string, by: string, file: string): 
 }
 
 /**
+ * `code` with the body of the inner function `name` (declared at one tab's indentation, closed by
+ * the next line holding a tab and `}`) replaced by a throw naming `what`; throws when it is missing.
+ */
+function stubFunction(code: string, name: string, what: string, file: string): string {
+  const start = code.indexOf(`\tfunction ${name}(`);
+  const open = code.indexOf(' {\n', start);
+  const end = code.indexOf('\n\t}\n', open);
+  if (start < 0 || open < 0 || end < 0) throw new Error(`threeTrim: ${file} no longer has function ${name}`);
+  return `${code.slice(0, open)} {\n\t\t${unreachable(what)};${code.slice(end)}`;
+}
+
+/**
  * Parts of modules cut, by module path under three/src/: WebGLBackground's texture backgrounds
- * (the cube and plane meshes with their shaders; a colour or no background is unchanged).
+ * (the cube and plane meshes with their shaders; a colour or no background is unchanged), and
+ * WebGLMaterials' refreshes of other materials' uniforms.
  */
 export const REWRITES: Readonly<Record<string, (code: string) => string>> = {
+  'renderers/webgl/WebGLTextures.js': (code) =>
+    TEXTURE_FUNCTIONS.reduce((out, name) => stubFunction(out, name, `WebGLTextures.${name}`, 'WebGLTextures.js'), code),
+  'renderers/webgl/WebGLMaterials.js': (code) =>
+    Object.entries(OTHER_MATERIALS).reduce(
+      (out, [name, material]) => stubFunction(out, name, material, 'WebGLMaterials.js'),
+      code,
+    ),
   'renderers/webgl/WebGLBackground.js': (code) =>
     cut(
       code,

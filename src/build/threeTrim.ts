@@ -155,23 +155,43 @@ export function trimPlan(three: string, parts: string, sources: string): TrimPla
   // The renderer's own chunks (WebGLProgram.js: ShaderChunk[ 'name' ]).
   for (const m of read('renderers/webgl/WebGLProgram.js').matchAll(/ShaderChunk\[ '(\w+)' \]/g))
     roots.add(m[1] as string);
-  const standIns = new Map(removed.flatMap((f) => (f.modules ?? []).map((m) => [m, STAND_INS[m] as string])));
+  const chunks = includeClosure(roots, texts);
+  // The proofs over the GLSL the page can compile (macros of these features are not dead: see Feature).
+  const glsl = `${[...chunks].map((name) => texts.get(name)).join('\n')}\n${sources}`;
+  const proven = removed.filter((f) => f.unusedInShaders?.(glsl) ?? true);
+  const standIns = new Map(proven.flatMap((f) => (f.modules ?? []).map((m) => [m, STAND_INS[m] as string])));
   return {
-    removed: removed.map((f) => f.name),
-    kept: FEATURES.filter((f) => !removed.includes(f)).map((f) => f.name),
+    removed: proven.map((f) => f.name),
+    kept: FEATURES.filter((f) => !proven.includes(f)).map((f) => f.name),
     dead,
     standIns,
-    rewrites: new Set(removed.flatMap((f) => f.rewrites ?? [])),
-    chunks: includeClosure(roots, texts),
+    rewrites: new Set(proven.flatMap((f) => f.rewrites ?? [])),
+    chunks,
   };
 }
 
 const THREE_SRC = /\/node_modules\/three\/src\/(.+)$/;
 
+/** A line of WebGLProgram.js's prefixes that defines one switch when its parameter holds: `a ? '#define X' : '',` (or `'#define X ' + a.b`). */
+const DEFINE_LINE = /^[ \t]*[^\n]*? \? '#define (\w+) ?'(?: \+ [\w.]+)? : '',[ \t]*\n/gm;
+
+/**
+ * WebGLProgram.js without the prefix lines of dead switches (a line yields '' while its switch is
+ * dead, and the renderer drops empty lines): `USE_X` itself, and `X_UV`, the texture coordinates'
+ * channel of map X, which WebGLPrograms sets only when the material has that map (`mapUv: HAS_MAP
+ * && ...`), so only while `USE_X` can be defined.
+ */
+export function dropDeadDefines(code: string, dead: ReadonlySet<string>): string {
+  return code.replace(DEFINE_LINE, (line, name: string) =>
+    dead.has(name) || (name.endsWith('_UV') && dead.has(`USE_${name.slice(0, -3)}`)) ? '' : line,
+  );
+}
+
 /** A three.js module's code (`path` under three/src/) as the plan trims it; null when unchanged. */
 export function trimModule(path: string, code: string, plan: TrimPlan): string | null {
   if (plan.rewrites.has(path)) return (REWRITES[path] as (code: string) => string)(code);
   if (path === 'renderers/shaders/ShaderChunk.js') return trimShaderChunk(code, plan.chunks);
+  if (path === 'renderers/webgl/WebGLProgram.js') return dropDeadDefines(code, plan.dead);
   if (/^renderers\/shaders\/.*\.glsl\.js$/.test(path))
     return code.replace(/`([^`]*)`/g, (_, glsl: string) => `\`${dropDeadBlocks(glsl, plan.dead)}\``);
   return null;

@@ -1,0 +1,148 @@
+/**
+ * The three.js trim's cuts inside the renderer (src/build/threeFeatures.ts, threeTrim.ts): the
+ * render targets and the cube, 3D and array textures, the output pass, uniform buffer objects, the
+ * other materials' uniform refreshes and the dead switches' prefix lines go while the page's sources
+ * and the shaders it can compile prove them unreachable, and stay whole when a source could reach
+ * them. The pixels are the scene tests' (tests/e2e/scene*.test.ts); a reached stand-in throws, naming
+ * itself. Also the site's public scripts, minified in the build (src/build/publicScripts.ts).
+ */
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { minifySync } from 'vite';
+import { describe, expect, it } from 'vitest';
+import { minifyScript } from '../../src/build/publicScripts';
+import { withoutBlocks } from '../../src/build/threeFeatures';
+import { dropDeadDefines, pageSources, trimModule, trimPlan } from '../../src/build/threeTrim';
+
+const root = fileURLToPath(new URL('../../', import.meta.url));
+const three = `${root}node_modules/three/src/`;
+const parts = readFileSync(`${root}src/render/threeParts.ts`, 'utf8');
+const sources = pageSources(`${root}src`);
+const plan = trimPlan(three, parts, sources);
+const read = (path: string) => readFileSync(`${three}${path}`, 'utf8');
+/** A module of three.js as the page's plan trims it. */
+const cutOf = (path: string) => trimModule(path, read(path), plan) as string;
+
+const TEXTURES = 'render targets and cube, 3D and array textures';
+
+describe("three.js's renderer without what the page cannot reach", () => {
+  it('the page: every renderer cut made, stand-ins for the output pass and uniform buffer objects', () => {
+    for (const name of [
+      TEXTURES,
+      'the output render pass',
+      'uniform buffer objects',
+      "other materials' uniform refreshes",
+    ])
+      expect(plan.removed, name).toContain(name);
+    expect([...plan.standIns.keys()]).toEqual(
+      expect.arrayContaining(['renderers/webgl/WebGLOutput.js', 'renderers/webgl/WebGLUniformsGroups.js']),
+    );
+    expect([...plan.rewrites]).toEqual(
+      expect.arrayContaining(['renderers/webgl/WebGLTextures.js', 'renderers/webgl/WebGLMaterials.js']),
+    );
+  });
+
+  it('WebGLTextures keeps 2D textures (the DFG table) and stubs render targets and the other kinds, each throwing its name', () => {
+    const cut = cutOf('renderers/webgl/WebGLTextures.js');
+    expect(cut).toContain('function uploadTexture(');
+    expect(cut).toContain('function setTexture2D( texture, slot ) {');
+    expect(cut).not.toMatch(/function setTexture2D\( texture, slot \) \{\s*throw/);
+    for (const name of [
+      'setTextureCube',
+      'setTexture3D',
+      'setTexture2DArray',
+      'setupRenderTarget',
+      'updateMultisampleRenderTarget',
+    ])
+      expect(cut, name).toContain(`three.js trimmed: WebGLTextures.${name} is not in this build`);
+    // Minified, the helpers only those reach go too: no framebuffer, render buffer or cube face left.
+    const minified = minifySync('WebGLTextures.js', cut, { module: true }).code;
+    expect(minifySync('WebGLTextures.js', read('renderers/webgl/WebGLTextures.js'), { module: true }).code).toContain(
+      'framebufferTexture2D',
+    );
+    expect(minified).not.toMatch(
+      /framebufferTexture2D|renderbufferStorageMultisample|blitFramebuffer|TEXTURE_CUBE_MAP_POSITIVE_X/,
+    );
+    expect(minified).toContain('texSubImage2D');
+  });
+
+  it('WebGLMaterials keeps the basic, Lambert, standard and points refreshes and stubs the others', () => {
+    const cut = cutOf('renderers/webgl/WebGLMaterials.js');
+    expect(cut).toContain('MeshPhysicalMaterial is not in this build');
+    expect(cut).toContain('LineDashedMaterial is not in this build');
+    expect(cut).not.toContain('clearcoatNormalScale');
+    for (const kept of ['refreshUniformsCommon', 'refreshUniformsStandard', 'refreshUniformsPoints']) {
+      expect(cut, kept).toContain(`function ${kept}(`);
+      expect(cut, kept).not.toMatch(new RegExp(`function ${kept}\\([^)]*\\) \\{\\s*throw`));
+    }
+  });
+
+  it("WebGLProgram loses the prefix lines of dead switches and of their maps' channels, and keeps the live ones", () => {
+    const code = read('renderers/webgl/WebGLProgram.js');
+    const cut = trimModule('renderers/webgl/WebGLProgram.js', code, plan) as string;
+    expect(code).toContain("parameters.map ? '#define USE_MAP' : '',");
+    expect(code).toContain("parameters.mapUv ? '#define MAP_UV ' + parameters.mapUv : '',");
+    expect(cut).not.toMatch(
+      /#define (USE_MAP|MAP_UV|USE_CLEARCOAT_NORMALMAP|CLEARCOAT_NORMALMAP_UV|USE_FOG|USE_SKINNING)\b/,
+    );
+    for (const live of [
+      'HAS_NORMAL',
+      'USE_COLOR',
+      'DOUBLE_SIDED',
+      'FLAT_SHADED',
+      'USE_SIZEATTENUATION',
+      'TONE_MAPPING',
+    ])
+      expect(cut, live).toContain(`'#define ${live}'`);
+    // A switch that is not dead keeps its line, and its map's channel.
+    const lines = "\t\t\tp.map ? '#define USE_MAP' : '',\n\t\t\tp.mapUv ? '#define MAP_UV ' + p.mapUv : '',\n";
+    expect(dropDeadDefines(lines, new Set(['USE_FOG']))).toBe(lines);
+    expect(dropDeadDefines(lines, new Set(['USE_MAP']))).toBe('');
+  });
+
+  it('each cut stays whole when a source could reach it', () => {
+    const keptWith = (extraSources: string, extraParts = '') =>
+      trimPlan(three, parts + extraParts, `${sources}\n${extraSources}`).kept;
+    expect(keptWith('renderer.setRenderTarget(target);')).toContain(TEXTURES);
+    expect(keptWith('new WebGLRenderer({ outputBufferType: HalfFloatType });')).toEqual(
+      expect.arrayContaining([TEXTURES, 'the output render pass']),
+    );
+    expect(keptWith('material.uniformsGroups = [group];')).toEqual(['uniform buffer objects']);
+    expect(keptWith('', "\nexport { MeshPhongMaterial } from 'three/src/materials/MeshPhongMaterial.js';")).toEqual([
+      "other materials' uniform refreshes",
+    ]);
+    // A page shader with a cube sampler binds cube textures.
+    expect(keptWith('const glsl = `uniform samplerCube sky;`;')).toEqual([TEXTURES]);
+    expect(keptWith('const glsl = `uniform highp sampler2DArray layers;`;')).toEqual([TEXTURES]);
+  });
+
+  it('a sampler under `#if NUM_LIGHT_PROBE_GRIDS > 0` is not compiled without light probe grids; its #else part is', () => {
+    const glsl = [
+      'a',
+      '#if NUM_LIGHT_PROBE_GRIDS > 0',
+      'uniform sampler3D s;',
+      '#ifdef X',
+      'b',
+      '#endif',
+      '#endif',
+      'c',
+    ].join('\n');
+    expect(withoutBlocks(glsl, '#if NUM_LIGHT_PROBE_GRIDS > 0')).toBe('a\nc');
+    const withElse = ['#if NUM_LIGHT_PROBE_GRIDS > 0', 'x', '#else', 'uniform samplerCube y;', '#endif', 'z'].join(
+      '\n',
+    );
+    expect(withoutBlocks(withElse, '#if NUM_LIGHT_PROBE_GRIDS > 0')).toContain('samplerCube y');
+    expect(withoutBlocks(withElse, '#if NUM_LIGHT_PROBE_GRIDS > 0')).toContain('z');
+  });
+});
+
+describe("the site's public scripts ship minified", () => {
+  it('embed.js: under half its gzip size, the same element, and a syntax error stops the build', () => {
+    const source = readFileSync(`${root}public/embed.js`, 'utf8');
+    const out = minifyScript('embed.js', source);
+    expect(out.length).toBeLessThan(0.5 * source.length);
+    expect(out).toContain('path-interval-calculator');
+    expect(out).not.toMatch(/^\s*import |^\s*export /m);
+    expect(() => minifyScript('broken.js', 'function (')).toThrow(/broken\.js/);
+  });
+});
