@@ -26,6 +26,53 @@ export interface Feature {
 
 const exportsNone = (exports: ReadonlySet<string>, pattern: RegExp) => ![...exports].some((e) => pattern.test(e));
 
+/** The line between two files in the page's sources as threeTrim.ts pageSources joins them. */
+export const SOURCE_SEPARATOR = '\n// --- threeTrim: next source file ---\n';
+
+/** The page's source files that import three (through threeParts.ts: `from 'three'`). */
+const threeImporters = (sources: string) =>
+  sources.split(SOURCE_SEPARATOR).filter((file) => /\bfrom\s*['"]three['"]/.test(file));
+
+/** The modules of three in the build with their serialisation methods (class methods). */
+const SERIALISED: Readonly<Record<string, readonly string[]>> = {
+  'core/Object3D.js': ['toJSON'],
+  'core/BufferGeometry.js': ['toJSON'],
+  'core/BufferAttribute.js': ['toJSON'],
+  'materials/Material.js': ['toJSON', 'fromJSON'],
+  'materials/ShaderMaterial.js': ['toJSON', 'fromJSON'],
+  'textures/Texture.js': ['toJSON'],
+  'textures/TextureSource.js': ['toJSON'],
+  'textures/DepthTexture.js': ['toJSON'],
+  'scenes/Scene.js': ['toJSON'],
+  'lights/Light.js': ['toJSON'],
+  'lights/LightShadow.js': ['toJSON'],
+  'lights/DirectionalLight.js': ['toJSON'],
+  'cameras/PerspectiveCamera.js': ['toJSON'],
+  'cameras/OrthographicCamera.js': ['toJSON'],
+};
+
+/** The objects' raycast methods (called only by a Raycaster). */
+const RAYCAST: Readonly<Record<string, readonly string[]>> = {
+  'objects/Mesh.js': ['raycast'],
+  'objects/Points.js': ['raycast'],
+};
+
+/** WebGLRenderer's methods for render targets, texture copies, pixel reads, effects and compiling ahead. */
+const RENDERER_API = [
+  'setEffects',
+  'compile',
+  'compileAsync',
+  'setRenderTargetTextures',
+  'setRenderTargetFramebuffer',
+  'setRenderTarget',
+  'readRenderTargetPixels',
+  'readRenderTargetPixelsAsync',
+  'copyFramebufferToTexture',
+  'copyTextureToTexture',
+  'initRenderTarget',
+  'initTexture',
+];
+
 export const FEATURES: readonly Feature[] = [
   {
     // No texture can exist: no texture class, loader or render target is exported, and the page
@@ -179,6 +226,34 @@ export const FEATURES: readonly Feature[] = [
     rewrites: ['renderers/webgl/WebGLTextures.js'],
   },
   {
+    // Serialisation: three calls toJSON and fromJSON only from each other (ObjectLoader and the
+    // other loaders are not in the build); the page names neither, and no file that imports three
+    // calls JSON.stringify (which would call toJSON).
+    name: 'serialisation (toJSON, fromJSON)',
+    unused: (_exports, sources) =>
+      !/\b(toJSON|fromJSON)\b/.test(sources) && !threeImporters(sources).some((file) => /JSON\.stringify/.test(file)),
+    macros: [],
+    rewrites: Object.keys(SERIALISED),
+  },
+  {
+    // Picking: a mesh's or points' raycast runs only for a Raycaster, which is not exported.
+    name: 'raycasting',
+    unused: (exports, sources) => exportsNone(exports, /^Raycaster$/) && !/\braycast\b/.test(sources),
+    macros: [],
+    rewrites: Object.keys(RAYCAST),
+  },
+  {
+    // WebGLRenderer's API beyond what the page calls, which only render targets, texture copies and
+    // reads, effects, compiling ahead and the transmission pass (physical materials) reach: kept
+    // while a source names one of these methods, or render targets can exist.
+    name: "the renderer's render-target, copy and compile API",
+    unused: (exports, sources) =>
+      FEATURES.find((f) => f.name === 'render targets and cube, 3D and array textures')?.unused(exports, sources) ===
+        true && !new RegExp(`\\b(${RENDERER_API.join('|')})\\b`).test(sources),
+    macros: [],
+    rewrites: ['renderers/WebGLRenderer.js'],
+  },
+  {
     // WebGLMaterials' uniform refreshes of materials the page has no class of (each called only
     // for its own material, `material.isMeshPhysicalMaterial` and the like): cut while none of them
     // is exported, all kept while any is.
@@ -277,15 +352,32 @@ function cut(code: string, from: string, to: string, by: string, file: string): 
 }
 
 /**
- * `code` with the body of the inner function `name` (declared at one tab's indentation, closed by
- * the next line holding a tab and `}`) replaced by a throw naming `what`; throws when it is missing.
+ * `code` with the body of a function replaced by a throw naming `what`; throws when it is missing. The
+ * function opens with the text `opening` (up to its ` {` line end) and closes at the next line that
+ * is `closing` (its indentation and brace).
  */
-function stubFunction(code: string, name: string, what: string, file: string): string {
-  const start = code.indexOf(`\tfunction ${name}(`);
+function stubBody(code: string, opening: string, closing: string, what: string, file: string): string {
+  const start = code.indexOf(opening);
   const open = code.indexOf(' {\n', start);
-  const end = code.indexOf('\n\t}\n', open);
-  if (start < 0 || open < 0 || end < 0) throw new Error(`threeTrim: ${file} no longer has function ${name}`);
-  return `${code.slice(0, open)} {\n\t\t${unreachable(what)};${code.slice(end)}`;
+  const end = code.indexOf(`\n${closing}\n`, open);
+  if (start < 0 || open < 0 || end < 0) throw new Error(`threeTrim: ${file} no longer has ${JSON.stringify(opening)}`);
+  const indent = `${/^\t*/.exec(closing)?.[0] ?? ''}\t`;
+  return `${code.slice(0, open)} {\n${indent}${unreachable(what)};${code.slice(end)}`;
+}
+
+/** An inner function of a factory (`\tfunction name(`), or with `method`, a class method (`\tname(`), stubbed. */
+function stubFunction(code: string, name: string, what: string, file: string, method = false): string {
+  return stubBody(code, method ? `\n\t${name}(` : `\tfunction ${name}(`, '\t}', what, file);
+}
+
+/** WebGLRenderer's methods (`this.name = function`) and inner functions (`function name(`), stubbed. */
+function stubRenderer(code: string): string {
+  const file = 'WebGLRenderer.js';
+  const methods = RENDERER_API.reduce(
+    (out, name) => stubBody(out, `\t\tthis.${name} = `, '\t\t};', `WebGLRenderer.${name}`, file),
+    code,
+  );
+  return stubBody(methods, '\t\tfunction renderTransmissionPass(', '\t\t}', 'the transmission pass', file);
 }
 
 /**
@@ -294,6 +386,14 @@ function stubFunction(code: string, name: string, what: string, file: string): s
  * WebGLMaterials' refreshes of other materials' uniforms.
  */
 export const REWRITES: Readonly<Record<string, (code: string) => string>> = {
+  'renderers/WebGLRenderer.js': stubRenderer,
+  ...Object.fromEntries(
+    Object.entries({ ...SERIALISED, ...RAYCAST }).map(([path, methods]) => [
+      path,
+      (code: string) =>
+        methods.reduce((out, name) => stubFunction(out, name, `${path.split('/').pop()} ${name}`, path, true), code),
+    ]),
+  ),
   'renderers/webgl/WebGLTextures.js': (code) =>
     TEXTURE_FUNCTIONS.reduce((out, name) => stubFunction(out, name, `WebGLTextures.${name}`, 'WebGLTextures.js'), code),
   'renderers/webgl/WebGLMaterials.js': (code) =>

@@ -21,7 +21,7 @@ import { join } from 'node:path';
 import type { Plugin } from 'vite';
 import { dropDeadBlocks } from './glslDeadBlocks.ts';
 import { compactGlsl, glslTemplates, stripGlslComments } from './shaderWhitespace.ts';
-import { FEATURES, REWRITES, STAND_INS } from './threeFeatures.ts';
+import { FEATURES, REWRITES, SOURCE_SEPARATOR, STAND_INS } from './threeFeatures.ts';
 
 /** Materials' shader ids (WebGLPrograms.js `shaderIDs`: material type -> ShaderLib entry). */
 export function shaderIds(webGLPrograms: string): Map<string, string> {
@@ -88,7 +88,7 @@ export function trimShaderChunk(source: string, keep: ReadonlySet<string>): stri
     .join('\n');
 }
 
-/** The page's TypeScript sources (not the build tools and benchmarks), concatenated. */
+/** The page's TypeScript sources (not the build tools and benchmarks), concatenated (SOURCE_SEPARATOR between files). */
 export function pageSources(src: string): string {
   const texts: string[] = [];
   const walk = (dir: string) => {
@@ -100,7 +100,7 @@ export function pageSources(src: string): string {
     }
   };
   walk(src);
-  return texts.join('\n');
+  return texts.join(SOURCE_SEPARATOR);
 }
 
 export interface TrimPlan {

@@ -1,7 +1,8 @@
 /**
  * The three.js trim's cuts inside the renderer (src/build/threeFeatures.ts, threeTrim.ts): the
- * render targets and the cube, 3D and array textures, the output pass, uniform buffer objects, the
- * other materials' uniform refreshes and the dead switches' prefix lines go while the page's sources
+ * render targets and the cube, 3D and array textures, the renderer's API beyond what the page calls,
+ * the output pass, uniform buffer objects, serialisation, raycasting, the other materials' uniform
+ * refreshes and the dead switches' prefix lines go while the page's sources
  * and the shaders it can compile prove them unreachable, and stay whole when a source could reach
  * them. The pixels are the scene tests' (tests/e2e/scene*.test.ts); a reached stand-in throws, naming
  * itself. Also the site's public scripts, minified in the build (src/build/publicScripts.ts).
@@ -11,7 +12,7 @@ import { fileURLToPath } from 'node:url';
 import { minifySync } from 'vite';
 import { describe, expect, it } from 'vitest';
 import { minifyScript } from '../../src/build/publicScripts';
-import { withoutBlocks } from '../../src/build/threeFeatures';
+import { SOURCE_SEPARATOR, withoutBlocks } from '../../src/build/threeFeatures';
 import { dropDeadDefines, pageSources, trimModule, trimPlan } from '../../src/build/threeTrim';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
@@ -24,6 +25,7 @@ const read = (path: string) => readFileSync(`${three}${path}`, 'utf8');
 const cutOf = (path: string) => trimModule(path, read(path), plan) as string;
 
 const TEXTURES = 'render targets and cube, 3D and array textures';
+const RENDERER = "the renderer's render-target, copy and compile API";
 
 describe("three.js's renderer without what the page cannot reach", () => {
   it('the page: every renderer cut made, stand-ins for the output pass and uniform buffer objects', () => {
@@ -100,20 +102,52 @@ describe("three.js's renderer without what the page cannot reach", () => {
     expect(dropDeadDefines(lines, new Set(['USE_MAP']))).toBe('');
   });
 
+  it('WebGLRenderer keeps what the page calls and stubs render targets, copies, reads, effects, compiling and transmission', () => {
+    const cut = cutOf('renderers/WebGLRenderer.js');
+    for (const name of ['setRenderTarget', 'readRenderTargetPixels', 'copyTextureToTexture', 'compile', 'setEffects'])
+      expect(cut, name).toContain(`three.js trimmed: WebGLRenderer.${name} is not in this build`);
+    expect(cut).toContain('three.js trimmed: the transmission pass is not in this build');
+    for (const kept of ['render', 'setSize', 'setPixelRatio', 'setClearColor', 'dispose'])
+      expect(cut, kept).not.toMatch(new RegExp(`this\\.${kept} = function \\([^)]*\\) \\{\\s*throw`));
+    expect(minifySync('WebGLRenderer.js', cut, { module: true }).code).not.toMatch(/readPixels|blitFramebuffer/);
+  });
+
+  it('serialisation and raycasting stubbed in every module that has them; the rest of each module kept', () => {
+    const object = cutOf('core/Object3D.js');
+    expect(object).toContain('three.js trimmed: Object3D.js toJSON is not in this build');
+    expect(object).toMatch(/\n\tcopy\( source, recursive = true \) \{\n\n\t\tthis\.name = source\.name/);
+    const material = cutOf('materials/Material.js');
+    expect(material).toContain('Material.js fromJSON is not in this build');
+    expect(material).not.toContain('json.clippingPlanes');
+    expect(cutOf('objects/Mesh.js')).toContain('three.js trimmed: Mesh.js raycast is not in this build');
+    expect(cutOf('objects/Points.js')).toContain('three.js trimmed: Points.js raycast is not in this build');
+  });
+
   it('each cut stays whole when a source could reach it', () => {
     const keptWith = (extraSources: string, extraParts = '') =>
       trimPlan(three, parts + extraParts, `${sources}\n${extraSources}`).kept;
-    expect(keptWith('renderer.setRenderTarget(target);')).toContain(TEXTURES);
-    expect(keptWith('new WebGLRenderer({ outputBufferType: HalfFloatType });')).toEqual(
-      expect.arrayContaining([TEXTURES, 'the output render pass']),
-    );
+    expect(keptWith('renderer.setRenderTarget(target);')).toEqual([TEXTURES, RENDERER]);
+    expect(keptWith('new WebGLRenderer({ outputBufferType: HalfFloatType });')).toEqual([
+      'the output render pass',
+      TEXTURES,
+      RENDERER,
+    ]);
     expect(keptWith('material.uniformsGroups = [group];')).toEqual(['uniform buffer objects']);
+    expect(keptWith('renderer.compile(scene, camera);')).toEqual([RENDERER]);
+    expect(keptWith('const saved = mesh.toJSON();')).toEqual(['serialisation (toJSON, fromJSON)']);
+    expect(keptWith('const x = 1;', '')).toEqual([]);
+    expect(keptWith('', "\nexport { Raycaster } from 'three/src/core/Raycaster.js';")).toEqual(['raycasting']);
+    expect(keptWith('mesh.raycast(caster, hits);')).toEqual(['raycasting']);
     expect(keptWith('', "\nexport { MeshPhongMaterial } from 'three/src/materials/MeshPhongMaterial.js';")).toEqual([
       "other materials' uniform refreshes",
     ]);
     // A page shader with a cube sampler binds cube textures.
     expect(keptWith('const glsl = `uniform samplerCube sky;`;')).toEqual([TEXTURES]);
     expect(keptWith('const glsl = `uniform highp sampler2DArray layers;`;')).toEqual([TEXTURES]);
+    // JSON.stringify calls toJSON: not in a file that imports three; elsewhere (plain data) it is no reach.
+    const stringified = `${SOURCE_SEPARATOR}import { Mesh } from 'three';\nsave(JSON.stringify(mesh));`;
+    expect(keptWith(stringified)).toEqual(['serialisation (toJSON, fromJSON)']);
+    expect(keptWith(`${SOURCE_SEPARATOR}save(JSON.stringify({ a: 1 }));`)).toEqual([]);
   });
 
   it('a sampler under `#if NUM_LIGHT_PROBE_GRIDS > 0` is not compiled without light probe grids; its #else part is', () => {
