@@ -15,6 +15,11 @@
  *    enabled: nothing casts a shadow), WebGLEnvironments (no texture exists, so no environment map
  *    and no PMREM), WebGLMorphtargets (no geometry has morph attributes). A stand-in reached after
  *    all throws, naming itself.
+ *  - Parts cut inside modules, each while its feature is proven unreachable (threeFeatures.ts
+ *    REWRITES: the renderer's render targets and API beyond the page's calls, serialisation,
+ *    raycasting, other materials' refreshes, dead switches' prefix lines in WebGLProgram).
+ *  - Class methods that nothing names (unnamedMethods): their name appears nowhere else in three's
+ *    sources, nor in the page's, so no code can call them; dropped, to a fixpoint.
  */
 import { readdirSync, readFileSync, statSync } from 'node:fs';
 import { join } from 'node:path';
@@ -103,6 +108,57 @@ export function pageSources(src: string): string {
   return texts.join(SOURCE_SEPARATOR);
 }
 
+/**
+ * A class method of a three.js module: one tab in, `name( args ) {`, lines empty or two tabs in, then
+ * the line `\t}` (so that a match never runs past its method's end).
+ */
+const CLASS_METHOD = /\n\t(\w+)\([^)\n]*\) \{((?:\n(?:\t\t[^\n]*)?)*)\n\t\}\n/g;
+
+/** Every `.js` file under `dir`, recursively. */
+function jsFiles(dir: string): string[] {
+  return readdirSync(dir).flatMap((name) => {
+    const path = join(dir, name);
+    return statSync(path).isDirectory() ? jsFiles(path) : path.endsWith('.js') ? [path] : [];
+  });
+}
+
+/**
+ * The class methods of three's modules whose name appears nowhere else: not in any module of three
+ * (the build's and every other, comments included) nor in the page's sources; by module path under
+ * three/src/. Nothing can call such a method but by a name built at run time, which three does not do.
+ */
+export function unnamedMethods(three: string, sources: string): Map<string, string[]> {
+  const texts = new Map(jsFiles(three).map((file) => [file.slice(three.length), readFileSync(file, 'utf8')]));
+  const words = new Map<string, number>();
+  const count = (text: string, by: number) => {
+    for (const m of text.matchAll(/\w+/g)) words.set(m[0], (words.get(m[0]) ?? 0) + by);
+  };
+  for (const text of [...texts.values(), sources]) count(text, 1);
+  const methods = [...texts].flatMap(([path, text]) =>
+    [...text.matchAll(CLASS_METHOD)]
+      .filter((m) => m[1] !== 'constructor')
+      .map((m) => ({ path, name: m[1] as string, text: m[0] })),
+  );
+  const out = new Map<string, string[]>();
+  // Until no more: a method named only in methods dropped before is dropped in the next round.
+  for (let left = methods, found = true; found; ) {
+    const dropped = left.filter((m) => words.get(m.name) === 1);
+    found = dropped.length > 0;
+    for (const m of dropped) {
+      count(m.text, -1);
+      out.set(m.path, [...(out.get(m.path) ?? []), m.name]);
+    }
+    left = left.filter((m) => !dropped.includes(m));
+  }
+  return out;
+}
+
+/** `code` without the class methods `names` (each whole, from its line to its closing `\t}`). */
+export function dropMethods(code: string, names: readonly string[]): string {
+  const drop = new Set(names);
+  return code.replace(CLASS_METHOD, (method, name: string) => (drop.has(name) ? '\n' : method));
+}
+
 export interface TrimPlan {
   /** Features proven unused (their switches dead, their modules replaced). */
   readonly removed: readonly string[];
@@ -114,6 +170,8 @@ export interface TrimPlan {
   readonly rewrites: ReadonlySet<string>;
   /** The ShaderChunk entries kept. */
   readonly chunks: ReadonlySet<string>;
+  /** Class methods dropped (unnamedMethods), by module. */
+  readonly unnamed: ReadonlyMap<string, readonly string[]>;
 }
 
 /**
@@ -167,6 +225,7 @@ export function trimPlan(three: string, parts: string, sources: string): TrimPla
     standIns,
     rewrites: new Set(proven.flatMap((f) => f.rewrites ?? [])),
     chunks,
+    unnamed: unnamedMethods(three, sources),
   };
 }
 
@@ -189,6 +248,13 @@ export function dropDeadDefines(code: string, dead: ReadonlySet<string>): string
 
 /** A three.js module's code (`path` under three/src/) as the plan trims it; null when unchanged. */
 export function trimModule(path: string, code: string, plan: TrimPlan): string | null {
+  const unnamed = plan.unnamed.get(path);
+  const trimmed = trimModuleParts(path, code, plan);
+  return unnamed === undefined ? trimmed : dropMethods(trimmed ?? code, unnamed);
+}
+
+/** {@link trimModule} but for the unnamed methods. */
+function trimModuleParts(path: string, code: string, plan: TrimPlan): string | null {
   if (plan.rewrites.has(path)) return (REWRITES[path] as (code: string) => string)(code);
   if (path === 'renderers/shaders/ShaderChunk.js') return trimShaderChunk(code, plan.chunks);
   if (path === 'renderers/webgl/WebGLProgram.js') return dropDeadDefines(code, plan.dead);

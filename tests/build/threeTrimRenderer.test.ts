@@ -7,13 +7,22 @@
  * them. The pixels are the scene tests' (tests/e2e/scene*.test.ts); a reached stand-in throws, naming
  * itself. Also the site's public scripts, minified in the build (src/build/publicScripts.ts).
  */
-import { readFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { minifySync } from 'vite';
 import { describe, expect, it } from 'vitest';
 import { minifyScript } from '../../src/build/publicScripts';
 import { SOURCE_SEPARATOR, withoutBlocks } from '../../src/build/threeFeatures';
-import { dropDeadDefines, pageSources, trimModule, trimPlan } from '../../src/build/threeTrim';
+import {
+  dropDeadDefines,
+  dropMethods,
+  pageSources,
+  trimModule,
+  trimPlan,
+  unnamedMethods,
+} from '../../src/build/threeTrim';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const three = `${root}node_modules/three/src/`;
@@ -178,5 +187,47 @@ describe("the site's public scripts ship minified", () => {
     expect(out).toContain('path-interval-calculator');
     expect(out).not.toMatch(/^\s*import |^\s*export /m);
     expect(() => minifyScript('broken.js', 'function (')).toThrow(/broken\.js/);
+  });
+});
+
+describe("three.js's class methods that nothing names", () => {
+  it('drops a method named nowhere else (in three or the page), keeps any named elsewhere, to a fixpoint', () => {
+    expect(plan.unnamed.get('math/Vector4.js')).toEqual(
+      expect.arrayContaining(['setAxisAngleFromQuaternion', 'setAxisAngleFromRotationMatrix']),
+    );
+    // Methods the page or three calls stay.
+    for (const [path, name] of [
+      ['core/Object3D.js', 'lookAt'],
+      ['core/Object3D.js', 'updateMatrixWorld'],
+      ['math/Quaternion.js', 'setFromUnitVectors'],
+      ['math/Matrix4.js', 'makeRotationAxis'],
+    ] as const)
+      expect(plan.unnamed.get(path) ?? [], `${path} ${name}`).not.toContain(name);
+    // A page source that names one keeps it.
+    const named = unnamedMethods(three, `${sources}\nq.setAxisAngleFromQuaternion(x);`);
+    expect(named.get('math/Vector4.js')).not.toContain('setAxisAngleFromQuaternion');
+    const cut = cutOf('math/Vector4.js');
+    expect(cut).not.toContain('setAxisAngleFromRotationMatrix(');
+    expect(cut).toContain('\n\tapplyMatrix4( m ) {');
+  });
+
+  it('a method named only inside dropped methods goes in the next round', () => {
+    const dir = mkdtempSync(join(tmpdir(), 'three-src-'));
+    const a =
+      'export class A {\n\n\tgone() {\n\n\t\treturn this.helper();\n\n\t}\n\n\thelper() {\n\n\t\treturn 1;\n\n\t}\n\n\tused() {\n\n\t\treturn 2;\n\n\t}\n\n}\n';
+    writeFileSync(join(dir, 'A.js'), a);
+    writeFileSync(join(dir, 'B.js'), 'import { A } from "./A.js";\nnew A().used();\n');
+    expect(unnamedMethods(`${dir}/`, '')).toEqual(new Map([['A.js', ['gone', 'helper']]]));
+    rmSync(dir, { recursive: true });
+  });
+
+  it('drops a whole method and nothing past it, and never matches past a method that is not a class method', () => {
+    const code =
+      'class A {\n\n\tkeep() {\n\n\t\treturn 1;\n\n\t}\n\n\tgone( x ) {\n\n\t\treturn x;\n\n\t}\n\n\tnext() {}\n\n}\n';
+    expect(dropMethods(code, ['gone'])).toBe('class A {\n\n\tkeep() {\n\n\t\treturn 1;\n\n\t}\n\n\n\tnext() {}\n\n}\n');
+    // An object literal's method closes with `\t},`: no class method there, nothing dropped.
+    const literal =
+      'const o = {\n\tgone() {\n\t\treturn 1;\n\t},\n\tother: 2\n};\nclass B {\n\tb() {\n\t\treturn 2;\n\t}\n}\n';
+    expect(dropMethods(literal, ['gone'])).toBe(literal);
   });
 });
