@@ -204,7 +204,8 @@ export const FEATURES: readonly Feature[] = [
     // first feature) and no source draws into one or copies textures (the renderer's own render
     // targets are the transmission pass's, the shadow maps', WebXR's and the output pass's, all
     // removed above); a cube, 3D or array texture is bound only for a sampler of that type, and no
-    // shader the page can compile declares one. 2D textures stay (MeshStandardMaterial's DFG table).
+    // shader the page can compile declares one. Data textures stay (MeshStandardMaterial's DFG table,
+    // the only texture uploaded): uploadTexture keeps their branch only (dataTexturesOnly).
     name: 'render targets and cube, 3D and array textures',
     unused: (exports, sources) =>
       [
@@ -381,6 +382,30 @@ function stubRenderer(code: string): string {
 }
 
 /**
+ * WebGLTextures' uploadTexture for data textures only: the only texture uploaded is three's DFG table
+ * (a DataTexture, MeshStandardMaterial's); no texture class is exported, render targets (with their
+ * depth textures) are gone, and WebGLUniforms' empty textures are never uploaded (version 0). The
+ * depth, compressed, array, 3D, framebuffer, HTML and image branches go; another texture throws.
+ */
+function dataTexturesOnly(code: string): string {
+  const file = 'WebGLTextures.js';
+  const depthCut = cut(
+    code,
+    '\t\t\tif ( texture.isDepthTexture ) {',
+    '\t\t\t} else if ( texture.isDataTexture ) {',
+    '',
+    file,
+  );
+  return cut(
+    depthCut.replace('\t\t\t} else if ( texture.isDataTexture ) {', '\t\t\tif ( texture.isDataTexture ) {'),
+    '\t\t\t} else if ( texture.isCompressedTexture ) {',
+    '\n\n\t\t\tif ( textureNeedsGenerateMipmaps( texture ) && texture.mipmapsAutoUpdate === true ) {',
+    `\t\t\t} else {\n\t\t\t\t${unreachable('a texture other than a DataTexture')};\n\t\t\t}`,
+    file,
+  );
+}
+
+/**
  * Parts of modules cut, by module path under three/src/: WebGLBackground's texture backgrounds
  * (the cube and plane meshes with their shaders; a colour or no background is unchanged), and
  * WebGLMaterials' refreshes of other materials' uniforms.
@@ -395,7 +420,12 @@ export const REWRITES: Readonly<Record<string, (code: string) => string>> = {
     ]),
   ),
   'renderers/webgl/WebGLTextures.js': (code) =>
-    TEXTURE_FUNCTIONS.reduce((out, name) => stubFunction(out, name, `WebGLTextures.${name}`, 'WebGLTextures.js'), code),
+    dataTexturesOnly(
+      TEXTURE_FUNCTIONS.reduce(
+        (out, name) => stubFunction(out, name, `WebGLTextures.${name}`, 'WebGLTextures.js'),
+        code,
+      ),
+    ),
   'renderers/webgl/WebGLMaterials.js': (code) =>
     Object.entries(OTHER_MATERIALS).reduce(
       (out, [name, material]) => stubFunction(out, name, material, 'WebGLMaterials.js'),

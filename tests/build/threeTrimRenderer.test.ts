@@ -75,6 +75,10 @@ describe("three.js's renderer without what the page cannot reach", () => {
       /framebufferTexture2D|renderbufferStorageMultisample|blitFramebuffer|TEXTURE_CUBE_MAP_POSITIVE_X/,
     );
     expect(minified).toContain('texSubImage2D');
+    // Uploads: data textures only (three's DFG table); the other kinds' branches go, another texture throws.
+    expect(minified).not.toMatch(/compressedTexImage2D|texImage3D|copyTexSubImage2D/);
+    expect(cut).toContain('three.js trimmed: a texture other than a DataTexture is not in this build');
+    expect(cut).toMatch(/\n\t\t\tif \( texture\.isDataTexture \) \{\n/);
   });
 
   it('WebGLMaterials keeps the basic, Lambert, standard and points refreshes and stubs the others', () => {
