@@ -144,7 +144,9 @@ export default defineConfig(({ mode, command }) =>
         // The formulas view's MathML is typeset here, at build time, so no TeX engine is shipped.
         // three.js's shaders ship without comments and indentation (src/build/shaderWhitespace.ts), and
         // three.js without what the page cannot reach (src/build/threeTrim.ts: shaders of unused
-        // materials and features, WebXR, shadow maps, environment maps, morph targets).
+        // materials and features, WebXR, shadow maps, environment maps, morph targets, render targets,
+        // serialisation, raycasting, methods nothing names). The doubly curved model loads on first
+        // use in the site (src/build/siteSources.ts).
         // public/embed.js's attributes must be the field registry's (src/build/embedAttributes.ts), and
         // it ships minified (src/build/publicScripts.ts).
         plugins: [
@@ -161,7 +163,7 @@ export default defineConfig(({ mode, command }) =>
           publicScriptsPlugin(),
           serviceWorkerPlugin({ manifest: WEB_APP_MANIFEST, disable: mode === 'e2e' }),
         ],
-        // three.js is about 390 kB raw (101 kB gzip) in its chunk; the benchmark tracks the gzip
+        // three.js is about 290 kB raw (77 kB gzip) in its chunk; the benchmark tracks the gzip
         // size against its 200 kB budget, so Rollup's generic 500 kB warning is raised.
         build: {
           // Vite 8's default minifier (Oxc) is kept: on this site it ships the fewest gzip bytes of those
