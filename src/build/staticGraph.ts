@@ -40,15 +40,21 @@ function resolveFile(from: string, spec: string): string | null {
 
 /**
  * Every file `entry` loads at once, transitively, by path relative to `root`, each with the first
- * file found that imports it (the chain to it can be walked back for a message).
+ * file found that imports it (the chain to it can be walked back for a message). `replaced` maps a
+ * file (absolute) to the one the build takes in its place (siteSources.ts: the site's build).
  */
-export function staticClosure(entry: string, root: string): Map<string, string | null> {
+export function staticClosure(
+  entry: string,
+  root: string,
+  replaced: ReadonlyMap<string, string> = new Map(),
+): Map<string, string | null> {
   const reached = new Map<string, string | null>([[relative(root, entry), null]]);
   const queue = [entry];
   for (let file = queue.shift(); file !== undefined; file = queue.shift()) {
     for (const spec of staticSpecifiers(readFileSync(file, 'utf8'))) {
       if (!spec.startsWith('.')) continue;
-      const target = resolveFile(file, spec);
+      const found = resolveFile(file, spec);
+      const target = found === null ? null : (replaced.get(found) ?? found);
       if (target === null || !target.startsWith(root)) continue;
       const key = relative(root, target);
       if (reached.has(key)) continue;

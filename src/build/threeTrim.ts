@@ -15,13 +15,18 @@
  *    enabled: nothing casts a shadow), WebGLEnvironments (no texture exists, so no environment map
  *    and no PMREM), WebGLMorphtargets (no geometry has morph attributes). A stand-in reached after
  *    all throws, naming itself.
+ *  - Parts cut inside modules, each while its feature is proven unreachable (threeFeatures.ts
+ *    REWRITES: the renderer's render targets and API beyond the page's calls, serialisation,
+ *    raycasting, other materials' refreshes, dead switches' prefix lines in WebGLProgram).
+ *  - Class methods that nothing names (unnamedMethods): their name appears nowhere else in three's
+ *    sources, nor in the page's, so no code can call them; dropped, to a fixpoint.
  */
 import { readdirSync, readFileSync, statSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Plugin } from 'vite';
 import { dropDeadBlocks } from './glslDeadBlocks.ts';
 import { compactGlsl, glslTemplates, stripGlslComments } from './shaderWhitespace.ts';
-import { FEATURES, REWRITES, STAND_INS } from './threeFeatures.ts';
+import { FEATURES, REWRITES, SOURCE_SEPARATOR, STAND_INS } from './threeFeatures.ts';
 
 /** Materials' shader ids (WebGLPrograms.js `shaderIDs`: material type -> ShaderLib entry). */
 export function shaderIds(webGLPrograms: string): Map<string, string> {
@@ -88,7 +93,7 @@ export function trimShaderChunk(source: string, keep: ReadonlySet<string>): stri
     .join('\n');
 }
 
-/** The page's TypeScript sources (not the build tools and benchmarks), concatenated. */
+/** The page's TypeScript sources (not the build tools and benchmarks), concatenated (SOURCE_SEPARATOR between files). */
 export function pageSources(src: string): string {
   const texts: string[] = [];
   const walk = (dir: string) => {
@@ -100,7 +105,58 @@ export function pageSources(src: string): string {
     }
   };
   walk(src);
-  return texts.join('\n');
+  return texts.join(SOURCE_SEPARATOR);
+}
+
+/**
+ * A class method of a three.js module: one tab in, `name( args ) {`, lines empty or two tabs in, then
+ * the line `\t}` (so that a match never runs past its method's end).
+ */
+const CLASS_METHOD = /\n\t(\w+)\([^)\n]*\) \{((?:\n(?:\t\t[^\n]*)?)*)\n\t\}\n/g;
+
+/** Every `.js` file under `dir`, recursively. */
+function jsFiles(dir: string): string[] {
+  return readdirSync(dir).flatMap((name) => {
+    const path = join(dir, name);
+    return statSync(path).isDirectory() ? jsFiles(path) : path.endsWith('.js') ? [path] : [];
+  });
+}
+
+/**
+ * The class methods of three's modules whose name appears nowhere else: not in any module of three
+ * (the build's and every other, comments included) nor in the page's sources; by module path under
+ * three/src/. Nothing can call such a method but by a name built at run time, which three does not do.
+ */
+export function unnamedMethods(three: string, sources: string): Map<string, string[]> {
+  const texts = new Map(jsFiles(three).map((file) => [file.slice(three.length), readFileSync(file, 'utf8')]));
+  const words = new Map<string, number>();
+  const count = (text: string, by: number) => {
+    for (const m of text.matchAll(/\w+/g)) words.set(m[0], (words.get(m[0]) ?? 0) + by);
+  };
+  for (const text of [...texts.values(), sources]) count(text, 1);
+  const methods = [...texts].flatMap(([path, text]) =>
+    [...text.matchAll(CLASS_METHOD)]
+      .filter((m) => m[1] !== 'constructor')
+      .map((m) => ({ path, name: m[1] as string, text: m[0] })),
+  );
+  const out = new Map<string, string[]>();
+  // Until no more: a method named only in methods dropped before is dropped in the next round.
+  for (let left = methods, found = true; found; ) {
+    const dropped = left.filter((m) => words.get(m.name) === 1);
+    found = dropped.length > 0;
+    for (const m of dropped) {
+      count(m.text, -1);
+      out.set(m.path, [...(out.get(m.path) ?? []), m.name]);
+    }
+    left = left.filter((m) => !dropped.includes(m));
+  }
+  return out;
+}
+
+/** `code` without the class methods `names` (each whole, from its line to its closing `\t}`). */
+export function dropMethods(code: string, names: readonly string[]): string {
+  const drop = new Set(names);
+  return code.replace(CLASS_METHOD, (method, name: string) => (drop.has(name) ? '\n' : method));
 }
 
 export interface TrimPlan {
@@ -114,6 +170,8 @@ export interface TrimPlan {
   readonly rewrites: ReadonlySet<string>;
   /** The ShaderChunk entries kept. */
   readonly chunks: ReadonlySet<string>;
+  /** Class methods dropped (unnamedMethods), by module. */
+  readonly unnamed: ReadonlyMap<string, readonly string[]>;
 }
 
 /**
@@ -155,23 +213,51 @@ export function trimPlan(three: string, parts: string, sources: string): TrimPla
   // The renderer's own chunks (WebGLProgram.js: ShaderChunk[ 'name' ]).
   for (const m of read('renderers/webgl/WebGLProgram.js').matchAll(/ShaderChunk\[ '(\w+)' \]/g))
     roots.add(m[1] as string);
-  const standIns = new Map(removed.flatMap((f) => (f.modules ?? []).map((m) => [m, STAND_INS[m] as string])));
+  const chunks = includeClosure(roots, texts);
+  // The proofs over the GLSL the page can compile (macros of these features are not dead: see Feature).
+  const glsl = `${[...chunks].map((name) => texts.get(name)).join('\n')}\n${sources}`;
+  const proven = removed.filter((f) => f.unusedInShaders?.(glsl) ?? true);
+  const standIns = new Map(proven.flatMap((f) => (f.modules ?? []).map((m) => [m, STAND_INS[m] as string])));
   return {
-    removed: removed.map((f) => f.name),
-    kept: FEATURES.filter((f) => !removed.includes(f)).map((f) => f.name),
+    removed: proven.map((f) => f.name),
+    kept: FEATURES.filter((f) => !proven.includes(f)).map((f) => f.name),
     dead,
     standIns,
-    rewrites: new Set(removed.flatMap((f) => f.rewrites ?? [])),
-    chunks: includeClosure(roots, texts),
+    rewrites: new Set(proven.flatMap((f) => f.rewrites ?? [])),
+    chunks,
+    unnamed: unnamedMethods(three, sources),
   };
 }
 
 const THREE_SRC = /\/node_modules\/three\/src\/(.+)$/;
 
+/** A line of WebGLProgram.js's prefixes that defines one switch when its parameter holds: `a ? '#define X' : '',` (or `'#define X ' + a.b`). */
+const DEFINE_LINE = /^[ \t]*[^\n]*? \? '#define (\w+) ?'(?: \+ [\w.]+)? : '',[ \t]*\n/gm;
+
+/**
+ * WebGLProgram.js without the prefix lines of dead switches (a line yields '' while its switch is
+ * dead, and the renderer drops empty lines): `USE_X` itself, and `X_UV`, the texture coordinates'
+ * channel of map X, which WebGLPrograms sets only when the material has that map (`mapUv: HAS_MAP
+ * && ...`), so only while `USE_X` can be defined.
+ */
+export function dropDeadDefines(code: string, dead: ReadonlySet<string>): string {
+  return code.replace(DEFINE_LINE, (line, name: string) =>
+    dead.has(name) || (name.endsWith('_UV') && dead.has(`USE_${name.slice(0, -3)}`)) ? '' : line,
+  );
+}
+
 /** A three.js module's code (`path` under three/src/) as the plan trims it; null when unchanged. */
 export function trimModule(path: string, code: string, plan: TrimPlan): string | null {
+  const unnamed = plan.unnamed.get(path);
+  const trimmed = trimModuleParts(path, code, plan);
+  return unnamed === undefined ? trimmed : dropMethods(trimmed ?? code, unnamed);
+}
+
+/** {@link trimModule} but for the unnamed methods. */
+function trimModuleParts(path: string, code: string, plan: TrimPlan): string | null {
   if (plan.rewrites.has(path)) return (REWRITES[path] as (code: string) => string)(code);
   if (path === 'renderers/shaders/ShaderChunk.js') return trimShaderChunk(code, plan.chunks);
+  if (path === 'renderers/webgl/WebGLProgram.js') return dropDeadDefines(code, plan.dead);
   if (/^renderers\/shaders\/.*\.glsl\.js$/.test(path))
     return code.replace(/`([^`]*)`/g, (_, glsl: string) => `\`${dropDeadBlocks(glsl, plan.dead)}\``);
   return null;

@@ -5,7 +5,9 @@
  * value, and an embed, show what they say (a link without `machine=` is a five-axis link, without
  * `unit=` a millimetre one), so the preferences never change what a shared link means. Whatever the
  * storage holds is read as untrusted: only the known words count. A storage that throws (disabled,
- * private mode, full) is as if empty. Pure apart from the storage handed in.
+ * private mode, full) is as if empty. Pure apart from the storage handed in and the memory of what
+ * was last read from or written to it (so that a keystroke or a drag step that changes neither the
+ * machine nor the unit writes nothing: a localStorage write is synchronous).
  */
 import type { ToolStorage } from './savedTools';
 import { defaultState, withSize } from './state';
@@ -22,6 +24,12 @@ export interface PagePreferences {
 
 const NONE: PagePreferences = { machine: null, unit: null };
 
+/** What each storage holds, as last read or written here: the text writePreferences would write. */
+const HELD = new WeakMap<ToolStorage, string>();
+
+/** The stored text of a machine and a unit. */
+const textOf = (machine: Machine | null, unit: Unit | null) => JSON.stringify({ machine, unit });
+
 /** The remembered choices in `storage` (null: no storage), or none. */
 export function readPreferences(storage: ToolStorage | null): PagePreferences {
   let text: string | null = null;
@@ -30,6 +38,7 @@ export function readPreferences(storage: ToolStorage | null): PagePreferences {
   } catch {
     return NONE;
   }
+  if (storage) HELD.delete(storage);
   if (text === null) return NONE;
   let json: unknown;
   try {
@@ -39,17 +48,25 @@ export function readPreferences(storage: ToolStorage | null): PagePreferences {
   }
   if (typeof json !== 'object' || json === null) return NONE;
   const o = json as Record<string, unknown>;
-  return {
+  const prefs: PagePreferences = {
     machine: o.machine === '5axis' || o.machine === '3axis' ? o.machine : null,
     unit: o.unit === 'mm' || o.unit === 'in' ? o.unit : null,
   };
+  if (storage && text === textOf(prefs.machine, prefs.unit)) HELD.set(storage, text);
+  return prefs;
 }
 
-/** Remembers the state's machine and unit; false when the storage refused (the page goes on). */
+/**
+ * Remembers the state's machine and unit, writing only when they differ from what the storage was
+ * last read or written holding; false when the storage refused (the page goes on).
+ */
 export function writePreferences(storage: ToolStorage | null, state: CalculatorState): boolean {
   if (storage === null) return false;
+  const text = textOf(state.machine, state.unit);
+  if (HELD.get(storage) === text) return true;
   try {
-    storage.setItem(PREFERENCES_KEY, JSON.stringify({ machine: state.machine, unit: state.unit }));
+    storage.setItem(PREFERENCES_KEY, text);
+    HELD.set(storage, text);
     return true;
   } catch {
     return false;

@@ -165,7 +165,12 @@ describe('threeTrim: what the page cannot reach', () => {
 
   it('a source that casts a shadow keeps the shadow map whole; a Phong material keeps its shaders', () => {
     const shadowed = trimPlan(three, parts, `${sources}\nmesh.castShadow = true;`);
-    expect(shadowed.kept).toEqual(['shadow maps']);
+    // The render targets' cuts need the shadow maps gone (they draw into render targets).
+    expect(shadowed.kept).toEqual([
+      'shadow maps',
+      'render targets and cube, 3D and array textures',
+      "the renderer's render-target, copy and compile API",
+    ]);
     expect(shadowed.dead.has('USE_SHADOWMAP')).toBe(false);
     expect([...shadowed.standIns.keys()]).not.toContain('renderers/webgl/WebGLShadowMap.js');
     const phong = `${parts}\nexport { MeshPhongMaterial } from 'three/src/materials/MeshPhongMaterial.js';`;

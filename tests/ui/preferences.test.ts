@@ -67,3 +67,59 @@ describe('page preferences', () => {
     );
   });
 });
+
+describe('page preferences: written only when they change (no synchronous write per keystroke or drag step)', () => {
+  function counting() {
+    const inner = memory();
+    const writes: string[] = [];
+    const storage: ToolStorage = {
+      getItem: (k) => inner.getItem(k),
+      setItem: (k, v) => {
+        writes.push(v);
+        inner.setItem(k, v);
+      },
+    };
+    return { storage, writes };
+  }
+
+  it('a drag that changes neither the machine nor the unit writes once; each change writes once more', () => {
+    const { storage, writes } = counting();
+    const mm = defaultState('mm');
+    for (let i = 0; i < 50; i++)
+      expect(writePreferences(storage, { ...mm, fields: { ...mm.fields, h: `0.0${i}` } })).toBe(true);
+    expect(writes).toHaveLength(1);
+    expect(writePreferences(storage, { ...mm, unit: 'in' })).toBe(true);
+    expect(writePreferences(storage, { ...mm, unit: 'in' })).toBe(true);
+    expect(writePreferences(storage, { ...mm, machine: '3axis' })).toBe(true);
+    expect(writes).toHaveLength(3);
+    expect(readPreferences(storage)).toEqual({ machine: '3axis', unit: 'mm' });
+  });
+
+  it('what a visit read is not written again; a refused write is tried again at the next change-free step', () => {
+    const { storage, writes } = counting();
+    storage.setItem(PREFERENCES_KEY, JSON.stringify({ machine: '3axis', unit: 'in' }));
+    writes.length = 0;
+    expect(readPreferences(storage)).toEqual({ machine: '3axis', unit: 'in' });
+    expect(writePreferences(storage, { ...defaultState('in'), machine: '3axis' })).toBe(true);
+    expect(writes).toEqual([]);
+    // Another form in the storage (not one this page writes) is written over at the first step.
+    storage.setItem(PREFERENCES_KEY, '{"unit":"in","machine":"3axis","x":1}');
+    writes.length = 0;
+    readPreferences(storage);
+    writePreferences(storage, { ...defaultState('in'), machine: '3axis' });
+    expect(writes).toHaveLength(1);
+    let full = true;
+    const stored: string[] = [];
+    const flaky: ToolStorage = {
+      getItem: () => null,
+      setItem: (_, v) => {
+        if (full) throw new Error('full');
+        stored.push(v);
+      },
+    };
+    expect(writePreferences(flaky, defaultState())).toBe(false);
+    full = false;
+    expect(writePreferences(flaky, defaultState())).toBe(true);
+    expect(stored).toHaveLength(1);
+  });
+});
