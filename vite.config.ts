@@ -224,6 +224,10 @@ export default defineConfig(({ mode, command }) =>
                 // Two files at a time: a browser test mostly waits (debounces, replies, frames, polls);
                 // one file at a time left the 2 cores two-thirds idle (8 CPU-minutes in a 12-minute run).
                 maxWorkers: 2,
+                // As the Node tests: a worker runs its files in one process (playwright-core, three.js
+                // and the harness evaluated once, not per file; each file still starts its own
+                // Chromium, tests/e2e/harness.ts): 6 small files 60.2 -> 54.4 CPU s.
+                isolate: false,
                 // A page under load answers late: every poll waits up to 15 s for its condition (not 1 s).
                 expect: { poll: { timeout: 15_000 } },
               },
