@@ -214,6 +214,13 @@ export default defineConfig(({ mode, command }) =>
                 testTimeout: 180_000,
                 // Vitest's default leaves a core free (one worker on 2 cores).
                 maxWorkers: availableParallelism(),
+                // A worker runs file after file in one process, evaluating the modules they share
+                // (src/core, the CLI, vitest's runner) once: a fresh process and module graph per
+                // file cost about 0.25 s of CPU each, a third of the project's CPU on small files.
+                // The tests leave nothing behind that another file reads: fake timers, stubbed
+                // globals and registered throwaway surfaces are undone in afterEach, and vi.mock
+                // stays with the file that declares it (Vitest keeps a mock registry per file).
+                isolate: false,
               },
             },
             {
@@ -226,6 +233,10 @@ export default defineConfig(({ mode, command }) =>
                 // Two files at a time: a browser test mostly waits (debounces, replies, frames, polls);
                 // one file at a time left the 2 cores two-thirds idle (8 CPU-minutes in a 12-minute run).
                 maxWorkers: 2,
+                // As the Node tests: a worker runs its files in one process (playwright-core, three.js
+                // and the harness evaluated once, not per file; each file still starts its own
+                // Chromium, tests/e2e/harness.ts): 6 small files 60.2 -> 54.4 CPU s.
+                isolate: false,
                 // A page under load answers late: every poll waits up to 15 s for its condition (not 1 s).
                 expect: { poll: { timeout: 15_000 } },
               },

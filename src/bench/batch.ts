@@ -79,20 +79,24 @@ function median(xs: number[]): number {
  * user times it), each the median of `runs` runs, the files' runs interleaved (after a warm-up run
  * that builds the compiled command line if it is stale).
  */
-export function batchBench(runs: number): { batchRowsPerSecond: number; batchVariedRowsPerSecond: number } {
+export function batchBench(
+  runs: number,
+  /** Rows of each file (npm run bench's smoke mode: fewer, solvers.ts). */
+  rows: number = BATCH_ROWS,
+): { batchRowsPerSecond: number; batchVariedRowsPerSecond: number } {
   const dir = mkdtempSync(join(tmpdir(), 'path-interval-batch-'));
   try {
     const plane = join(dir, 'plane.csv');
     const varied = join(dir, 'varied.csv');
-    writeFileSync(plane, planeBatchCsv());
-    writeFileSync(varied, variedBatchCsv());
+    writeFileSync(plane, planeBatchCsv(rows));
+    writeFileSync(varied, variedBatchCsv(rows));
     writeFileSync(join(dir, 'warm.csv'), planeBatchCsv(10));
     batchSeconds(join(dir, 'warm.csv'));
     const planeRates: number[] = [];
     const variedRates: number[] = [];
     for (let r = 0; r < runs; r++) {
-      planeRates.push(BATCH_ROWS / batchSeconds(plane));
-      variedRates.push(BATCH_ROWS / batchSeconds(varied));
+      planeRates.push(rows / batchSeconds(plane));
+      variedRates.push(rows / batchSeconds(varied));
     }
     return { batchRowsPerSecond: median(planeRates), batchVariedRowsPerSecond: median(variedRates) };
   } finally {

@@ -114,7 +114,11 @@ export type Figure = { wall: number; cpu: number };
  * exact3AxisPlaneNsPerCall, target 1.5 us; exact3AxisWaterlineNsPerCall, target 50 us...) and the
  * 200-slope sweeps in ms. Also run by `npm run bench`.
  */
-export function threeAxisBench(rounds: number): {
+export function threeAxisBench(
+  rounds: number,
+  /** Calls per round for a round of `n` (npm run bench: all `n`; its smoke mode a hundredth, solvers.ts). */
+  calls: (n: number) => number = (n) => n,
+): {
   rows: Array<[string, string, Figure]>;
   sweeps: Array<[string, string, Figure]>;
 } {
@@ -138,7 +142,7 @@ export function threeAxisBench(rounds: number): {
     [
       'posture solver alone, same postures',
       'postureSolverSamePosturesNsPerCall',
-      measure((c) => exactIntervalMm(c.input), postures, 100_000, rounds),
+      measure((c) => exactIntervalMm(c.input), postures, calls(100_000), rounds),
     ],
     [
       'sloped plane, validated forward',
@@ -149,14 +153,14 @@ export function threeAxisBench(rounds: number): {
           return r.ok ? r.value.horizontalStepMm : 0;
         },
         plane,
-        100_000,
+        calls(100_000),
         rounds,
       ),
     ],
     [
       'sloped plane, L only (no validation)',
       'exact3AxisPlaneFastNsPerCall',
-      measure((c) => slopedPlaneIntervalMm(c.input, c.h), plane, 100_000, rounds),
+      measure((c) => slopedPlaneIntervalMm(c.input, c.h), plane, calls(100_000), rounds),
     ],
     [
       'waterline on a surface of revolution',
@@ -167,7 +171,7 @@ export function threeAxisBench(rounds: number): {
           return r.ok ? r.value.stepDownMm : 0;
         },
         revolution,
-        10_000,
+        calls(10_000),
         rounds,
       ),
     ],
@@ -177,8 +181,8 @@ export function threeAxisBench(rounds: number): {
   function sweepMs(make: () => number): { wall: number; cpu: number } {
     const wall: number[] = [];
     const cpu: number[] = [];
-    for (let i = 0; i < 3; i++) sink += make();
-    for (let r = 0; r < Math.max(5, rounds); r++) {
+    for (let i = 0; i < calls(3); i++) sink += make();
+    for (let r = 0; r < Math.max(calls(5), rounds); r++) {
       const c0 = process.cpuUsage();
       const t0 = process.hrtime.bigint();
       sink += make();

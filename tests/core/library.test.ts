@@ -56,12 +56,25 @@ e?.notAMember;
 export { mm };
 `,
     );
+    // A consumer project of its own: strict, bundler resolution, and no ambient @types (`types: []`).
+    // The shipped declarations need none, and without the limit tsc also read every @types package
+    // of this repository (three.js's 500 files, Node's): 10 s of CPU instead of 2.5.
+    writeFileSync(
+      join(dir, 'tsconfig.json'),
+      JSON.stringify({
+        compilerOptions: {
+          noEmit: true,
+          strict: true,
+          module: 'esnext',
+          moduleResolution: 'bundler',
+          target: 'es2022',
+          types: [],
+        },
+        files: ['consumer.ts'],
+      }),
+    );
     const tsc = join(ROOT, 'node_modules', 'typescript', 'bin', 'tsc');
-    const args = ['--noEmit', '--strict', '--module', 'esnext', '--moduleResolution', 'bundler'];
-    const r = spawnSync(process.execPath, [tsc, ...args, '--target', 'es2022', join(dir, 'consumer.ts')], {
-      cwd: ROOT,
-      encoding: 'utf8',
-    });
+    const r = spawnSync(process.execPath, [tsc, '-p', dir], { cwd: ROOT, encoding: 'utf8' });
     expect(r.stdout + r.stderr).toBe('');
     expect(r.status).toBe(0);
   });

@@ -10,7 +10,7 @@ import { expect } from 'vitest';
 const counts = { goto: 0, reload: 0, newPage: 0 };
 let patched = false;
 
-/** Patches Playwright's page and context classes once per test file (worker) when asked to. */
+/** Patches Playwright's page and context classes once per worker process when asked to. */
 export async function countLoads(browser: Browser): Promise<void> {
   if (!process.env.E2E_COUNT_LOADS || patched) return;
   patched = true;
@@ -45,4 +45,8 @@ export function reportLoads(): void {
     file,
     `${path.replace(/.*\/tests\//, 'tests/')} goto=${counts.goto} reload=${counts.reload} newPage=${counts.newPage}\n`,
   );
+  // A worker runs several files in one process (isolate: false): the next file counts from zero.
+  counts.goto = 0;
+  counts.reload = 0;
+  counts.newPage = 0;
 }
