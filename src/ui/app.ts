@@ -239,8 +239,16 @@ export class CalculatorApp {
       onPreset: (p) => this.change(withValues(this.state, { R: p.R, Rcr: p.Rcr })),
     });
     this.shelf = new LazyToolShelf(must(root, '[data-testid="tool-shelf"]'), {
+      // A library tool's flutes (a Fusion 360 NOF) give the teeth of the finish.
       onTool: (t) =>
-        this.change({ ...withValues(this.state, { R: t.diameterMm / 2, Rcr: t.cornerRadiusMm }), toolName: t.name }),
+        this.change({
+          ...withValues(this.state, {
+            R: t.diameterMm / 2,
+            Rcr: t.cornerRadiusMm,
+            ...(t.flutes === null ? {} : { z: t.flutes }),
+          }),
+          toolName: t.name,
+        }),
       onUnit: (unit) => this.change(convertState(plainLengths(this.state), unit)),
       current: () => {
         const plain = plainLengths(this.state);
