@@ -5,6 +5,7 @@
  */
 import solverWorkerUrl from 'virtual:solver-worker-url';
 import { JobClient, type JobClientOptions, type RestartInfo } from './client';
+import type { FinishReply, FinishRequest } from './finishProtocol';
 import { type PageReply, type PageRequest, samePageRequest } from './pageProtocol';
 import { sameTableRequest, type TableReply, type TableRequest } from './protocol';
 import type { PageTeachReply } from './teachProtocol';
@@ -64,6 +65,23 @@ export function createTableWorker(): Worker {
 /** The `table` job on its own worker. */
 export function tableClient(events: JobEvents<TableRequest, TableReply>): JobClient<TableRequest, TableReply> {
   return jobClient(createTableWorker, (api, r) => api.table(r), sameTableRequest, events);
+}
+
+/**
+ * The `finish` job (issue 29) on its own worker, started on the first finish question; `same` is
+ * finishProtocol.ts sameFinishRequest, passed by the finish box (loaded later) so that this first
+ * script does not carry it.
+ */
+export function finishClient(
+  events: JobEvents<FinishRequest, FinishReply>,
+  same: (a: FinishRequest, b: FinishRequest) => boolean,
+): JobClient<FinishRequest, FinishReply> {
+  return jobClient(
+    () => startSolverWorker('path-interval-finish'),
+    (api, r) => api.finish(r),
+    same,
+    events,
+  );
 }
 
 /** A solver worker (the module worker built from solver.worker.ts), named for the browser's tools. */

@@ -1,0 +1,55 @@
+/**
+ * The `finish` job (issue 29): the feed marks (hf, its period, the balanced feed fz*) and the areal
+ * parameters (Sa ... Sku) of the plane the page answered, from the finish fields validated here by
+ * the core (finishInput.ts: whole teeth, fz up to R, runout up to R/10), each refusal one line in
+ * the user's unit on its field; on request the x3p file of one period cell (core arealMap and
+ * output/x3p.ts, the notes' grid). Loaded by the worker on the first finish question, so neither
+ * the page's nor the worker's first script grows.
+ */
+import { describeFinishError, type FinishField } from '../../core/finish/finishInput';
+import {
+  arealMap,
+  type FinishReport,
+  finishReport,
+  RUNOUT_NOT_YET,
+  toothModel,
+  validateFinish,
+} from '../../core/finish/index';
+import { x3pBytes } from '../../core/output/x3p';
+import type { FinishReply, FinishRequest } from '../finishProtocol';
+
+/** Answers a finish question (never throws for a bad value: each is a message on its field). */
+export function finish(request: FinishRequest): FinishReply {
+  const v = request.values;
+  const checked = validateFinish(
+    { flutes: v.flutes, fz: v.fz, runout: v.runout, runoutPhase: v.runoutPhase, passPhase: v.passPhase },
+    request.tool.toolRadiusMm,
+  );
+  if (!checked.ok) {
+    const errors = checked.errors.map((e) => {
+      const typed = request.typed[e.field].trim();
+      return { field: e.field, message: describeFinishError(typed === '' ? e : { ...e, got: typed }, request.unit) };
+    });
+    return { ok: false, request, errors };
+  }
+  let report: FinishReport;
+  try {
+    report = finishReport(request.tool, request.pattern, request.intervalMm, checked.value);
+  } catch (e) {
+    // Runout: refused by the core until it is computed there (its own one line).
+    if (e instanceof Error && e.message === RUNOUT_NOT_YET)
+      return { ok: false, request, errors: [{ field: 'runout' as FinishField, message: e.message }] };
+    throw e;
+  }
+  const asked = request.x3p;
+  if (asked === undefined) return { ok: true, request, report, x3p: null };
+  const m = toothModel({
+    tool: request.tool,
+    pattern: request.pattern,
+    intervalMm: request.intervalMm,
+    finish: checked.value,
+  });
+  const map = arealMap(m, asked.size, asked.size, 1, 1);
+  const grid = { ...map, xOriginMm: map.dxMm / 2, yOriginMm: map.dyMm / 2 };
+  return { ok: true, request, report, x3p: x3pBytes(grid, { comment: asked.comment }) };
+}
