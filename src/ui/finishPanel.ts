@@ -74,7 +74,8 @@ export class FinishPanel {
   private readonly download: HTMLButtonElement;
   private readonly x3pStatus: HTMLElement;
   private wanted: FinishRequest | null = null;
-  private answer: Extract<FinishReply, { ok: true }> | null = null;
+  /** The latest answer of each part (shown only while it answers the question on screen). */
+  private readonly answers = new Map<FinishRequest['part'], Extract<FinishReply, { ok: true }>>();
   private refusal: string | null = null;
   /** The worker's refusal of a question (a bad value), with the question. */
   private failed: { readonly request: FinishRequest; readonly message: string } | null = null;
@@ -82,7 +83,9 @@ export class FinishPanel {
   private unit: LengthUnit = 'mm';
   /** The x3p asked (the question with its file), until its bytes come. */
   private x3pAsked: FinishRequest | null = null;
+  /** The feed marks' worker and the areal parameters' (slower: they never hold the marks back). */
   private readonly client: ReturnType<typeof finishClient>;
+  private readonly arealClient: ReturnType<typeof finishClient>;
   private x3pClient: ReturnType<typeof finishClient> | null = null;
 
   /** `clientOf`: workers.ts finishClient (the first script's, passed in). */
@@ -92,6 +95,10 @@ export class FinishPanel {
     private readonly clientOf: typeof finishClient,
   ) {
     this.client = clientOf(
+      { onReply: (reply) => this.received(reply), onRestart: (info) => this.restarted(info) },
+      sameFinishRequest,
+    );
+    this.arealClient = clientOf(
       { onReply: (reply) => this.received(reply), onRestart: (info) => this.restarted(info) },
       sameFinishRequest,
     );
@@ -119,7 +126,7 @@ export class FinishPanel {
     );
     balanced.append(' ', this.useBalanced);
     this.useBalanced.addEventListener('click', () => {
-      const fz = this.answer?.report.feedMarks.balancedFz;
+      const fz = this.answer('marks')?.feedMarks?.balancedFz;
       if (fz !== undefined && fz !== null) this.onFz(fz);
     });
     const areal = html('dl', { class: 'details finish-areal', 'data-testid': 'finish-areal' });
@@ -157,18 +164,30 @@ export class FinishPanel {
     this.raMm = ask.kind === 'ask' ? ask.raMm : null;
     if (!sameFinishRequest(request, this.wanted)) {
       this.wanted = request;
-      if (this.answer !== null && !sameFinishRequest(this.answer.request, request)) this.answer = null;
-      if (request !== null) this.client.request(request);
+      if (request !== null) {
+        this.client.request(request);
+        this.arealClient.request({ ...request, part: 'areal' });
+      }
     }
     this.draw();
   }
 
+  /** True when `request` is the question on screen (its feed marks or its areal parameters). */
+  private current(request: FinishRequest): boolean {
+    return this.wanted !== null && sameFinishRequest(request, { ...this.wanted, part: request.part });
+  }
+
   private received(reply: FinishReply): void {
-    if (reply.request.x3p !== undefined) return;
-    if (!sameFinishRequest(reply.request, this.wanted)) return;
-    this.answer = reply.ok ? reply : null;
-    this.failed = reply.ok ? null : { request: reply.request, message: reply.errors.map((e) => e.message).join(' ') };
+    if (reply.request.x3p !== undefined || !this.current(reply.request)) return;
+    if (reply.ok) this.answers.set(reply.request.part, reply);
+    else this.failed = { request: reply.request, message: reply.errors.map((e) => e.message).join(' ') };
     this.draw();
+  }
+
+  /** The answer of one part to the question on screen, or null. */
+  private answer(part: FinishRequest['part']): Extract<FinishReply, { ok: true }> | null {
+    const a = this.answers.get(part);
+    return a !== undefined && this.current(a.request) ? a : null;
   }
 
   private restarted(info: RestartInfo<FinishRequest>): void {
@@ -184,13 +203,13 @@ export class FinishPanel {
 
   /** Draws the answer to the question on screen (or dashes), or its refusal in one line. */
   private draw(): void {
-    const a = this.answer !== null && sameFinishRequest(this.answer.request, this.wanted) ? this.answer : null;
+    const marks = this.answer('marks');
+    const m = marks?.feedMarks ?? undefined;
+    const s = this.answer('areal')?.areal ?? undefined;
     const u = this.unit;
-    const m = a?.report.feedMarks;
-    const s = a?.report.areal;
     const height = (mm: number | undefined) => formatRoughness(mm ?? null, u);
-    this.set('finish-h', height(a?.request.scallopMm));
-    this.set('finish-ra', height(a === null ? undefined : (this.raMm ?? undefined)));
+    this.set('finish-h', height(marks?.request.scallopMm));
+    this.set('finish-ra', height(marks === null ? undefined : (this.raMm ?? undefined)));
     this.set('finish-hf', height(m?.height));
     this.set('finish-sa', height(s?.Sa));
     this.set('finish-period', formatLenUnit(m?.period ?? null, u, 'fine'));
@@ -204,17 +223,17 @@ export class FinishPanel {
         s === undefined ? NO_VALUE : symbol === 'Ssk' || symbol === 'Sku' ? plain(s[symbol]) : height(s[symbol]),
       );
     this.useBalanced.disabled = m === undefined || m.balancedFz === null;
-    this.download.disabled = a === null || this.x3pAsked !== null;
-    const failed =
-      this.failed !== null && sameFinishRequest(this.failed.request, this.wanted) ? this.failed.message : null;
-    const text = this.refusal ?? failed ?? (this.wanted !== null && a === null ? 'Computing the feed marks...' : '');
+    this.download.disabled = marks === null || this.x3pAsked !== null;
+    const failed = this.failed !== null && this.current(this.failed.request) ? this.failed.message : null;
+    const pending = this.wanted !== null && (m === undefined || s === undefined);
+    const text = this.refusal ?? failed ?? (pending ? 'Computing the feed marks and the areal parameters...' : '');
     if (this.message.textContent !== text) this.message.textContent = text;
     this.message.classList.toggle('error', this.refusal !== null || failed !== null);
   }
 
   /** The x3p of the question on screen: computed in the worker, saved when its bytes come. */
   private askX3p(): void {
-    const current = this.answer;
+    const current = this.answer('marks');
     if (current === null || this.x3pAsked !== null) return;
     const r = current.request;
     const fileName = x3pFileName(r);
@@ -239,7 +258,7 @@ export class FinishPanel {
   private savedX3p(reply: FinishReply): void {
     if (!sameFinishRequest(reply.request, this.x3pAsked)) return;
     this.x3pAsked = null;
-    this.download.disabled = this.answer === null;
+    this.download.disabled = this.answer('marks') === null;
     const file = reply.request.x3p;
     if (!reply.ok || reply.x3p === null || file === undefined) {
       this.x3pStatus.textContent = reply.ok ? 'No x3p.' : `No x3p: ${reply.errors.map((e) => e.message).join(' ')}`;

@@ -80,5 +80,5 @@ export function finishAsk(inputs: FinishInputs, reply: PageReply | null): Finish
   if (!(plane.intervalMm > 0 && Number.isFinite(plane.intervalMm))) return { kind: 'none' };
   const raMm = 'roughness' in reply && reply.ok && reply.roughness !== null ? reply.roughness.raMm : null;
   const { values, typed, unit } = inputs;
-  return { kind: 'ask', request: { ...plane, values, typed, unit }, raMm };
+  return { kind: 'ask', request: { ...plane, values, typed, unit, part: 'marks' }, raMm };
 }

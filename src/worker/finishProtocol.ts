@@ -24,7 +24,12 @@ export interface FinishRequest {
   /** The texts as typed (quoted by the messages) and the unit the messages speak. */
   readonly typed: Readonly<Record<FinishField, string>>;
   readonly unit: LengthUnit;
-  /** Also the x3p file of one period cell (`size` by `size` points), named `fileName`. */
+  /**
+   * What to compute: the feed marks (hf, period, fz*: fast, shown first) or the areal parameters
+   * (slower: asked of a worker of their own, so they never hold the feed marks back).
+   */
+  readonly part: 'marks' | 'areal';
+  /** Instead, the x3p file of one period cell (`size` by `size` points), named `fileName`. */
   readonly x3p?: { readonly size: number; readonly fileName: string; readonly comment: string };
 }
 
@@ -34,12 +39,13 @@ export interface FinishFieldMessage {
   readonly message: string;
 }
 
-/** The finish, or why not; with `x3p` asked, the file's bytes too. */
+/** The part of the finish asked (the other null), or with `x3p` asked only the file's bytes; or why not. */
 export type FinishReply =
   | {
       readonly ok: true;
       readonly request: FinishRequest;
-      readonly report: FinishReport;
+      readonly feedMarks: FinishReport['feedMarks'] | null;
+      readonly areal: FinishReport['areal'] | null;
       readonly x3p: Uint8Array | null;
     }
   | { readonly ok: false; readonly request: FinishRequest; readonly errors: readonly FinishFieldMessage[] };

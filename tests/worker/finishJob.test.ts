@@ -44,13 +44,14 @@ function asked(i: FinishInputs, reply: PageReply = plane): FinishRequest {
 }
 
 describe('the finish job', () => {
-  it("answers the core's finishReport at the answer's step-over (4 teeth, fz 0.1 mm, one-way)", () => {
+  it("answers the core's finishReport at the answer's step-over, part by part (4 teeth, fz 0.1 mm, one-way)", () => {
     const request = asked(inputs({ flutes: 4, fz: 0.1 }));
     if (!plane.ok || !('exact' in plane)) throw new Error('plane');
     expect(request.intervalMm).toBe(plane.exact.intervalMm);
     expect(request.scallopMm).toBe(plane.exact.cuspHeightMm);
-    const reply = finish(request);
-    if (!reply.ok) throw new Error(JSON.stringify(reply.errors));
+    const marks = finish(request);
+    const areal = finish({ ...request, part: 'areal' });
+    if (!marks.ok || !areal.ok) throw new Error('refused');
     const core = finishReport(TOOL, 'one-way', plane.exact.intervalMm, {
       flutes: 4,
       feedPerToothMm: 0.1,
@@ -58,9 +59,10 @@ describe('the finish job', () => {
       runoutPhaseDeg: 0,
       passPhase: 0,
     });
-    expect(reply.report).toEqual(core);
-    expect(reply.request).toBe(request);
-    expect(reply.x3p).toBeNull();
+    expect([marks.feedMarks, marks.areal]).toEqual([core.feedMarks, null]);
+    expect([areal.feedMarks, areal.areal]).toEqual([null, core.areal]);
+    expect(marks.request).toBe(request);
+    expect(marks.x3p).toBeNull();
   });
 
   it('words a bad value on its field in the unit of the request, quoting it as typed; others valid', () => {
@@ -81,8 +83,10 @@ describe('the finish job', () => {
   });
 
   it("refuses runout with the core's one line while the core does not compute it", () => {
-    const reply = finish(asked(inputs({ flutes: 2, fz: 0.1, runout: 0.005 })));
-    expect(!reply.ok && reply.errors).toEqual([{ field: 'runout', message: RUNOUT_NOT_YET }]);
+    for (const part of ['marks', 'areal'] as const) {
+      const reply = finish({ ...asked(inputs({ flutes: 2, fz: 0.1, runout: 0.005 })), part });
+      expect(!reply.ok && reply.errors, part).toEqual([{ field: 'runout', message: RUNOUT_NOT_YET }]);
+    }
   });
 
   it('writes the x3p of one cell when asked: a zip of 256 x 256 float64 heights', () => {

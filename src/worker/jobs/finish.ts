@@ -9,8 +9,9 @@
 import { describeFinishError, type FinishField } from '../../core/finish/finishInput';
 import {
   arealMap,
-  type FinishReport,
-  finishReport,
+  arealParameters,
+  balancedFeed,
+  feedMarks,
   RUNOUT_NOT_YET,
   toothModel,
   validateFinish,
@@ -18,7 +19,10 @@ import {
 import { x3pBytes } from '../../core/output/x3p';
 import type { FinishReply, FinishRequest } from '../finishProtocol';
 
-/** Answers a finish question (never throws for a bad value: each is a message on its field). */
+/**
+ * Answers a finish question, the part asked (the feed marks as core finishReport gives them, or
+ * the areal parameters), or its x3p; never throws for a bad value: each is a message on its field.
+ */
 export function finish(request: FinishRequest): FinishReply {
   const v = request.values;
   const checked = validateFinish(
@@ -32,24 +36,32 @@ export function finish(request: FinishRequest): FinishReply {
     });
     return { ok: false, request, errors };
   }
-  let report: FinishReport;
+  const model = () =>
+    toothModel({ tool: request.tool, pattern: request.pattern, intervalMm: request.intervalMm, finish: checked.value });
   try {
-    report = finishReport(request.tool, request.pattern, request.intervalMm, checked.value);
+    const asked = request.x3p;
+    if (asked !== undefined) {
+      const map = arealMap(model(), asked.size, asked.size, 1, 1);
+      const grid = { ...map, xOriginMm: map.dxMm / 2, yOriginMm: map.dyMm / 2 };
+      return { ok: true, request, feedMarks: null, areal: null, x3p: x3pBytes(grid, { comment: asked.comment }) };
+    }
+    if (request.part === 'areal') {
+      const a = arealParameters(model());
+      const areal = { Sa: a.saMm, Sq: a.sqMm, Sz: a.szMm, Sp: a.spMm, Sv: a.svMm, Ssk: a.ssk, Sku: a.sku };
+      return { ok: true, request, feedMarks: null, areal, x3p: null };
+    }
+    const marks = feedMarks(model());
+    const balanced = balancedFeed(request.tool, request.pattern, request.intervalMm, checked.value);
+    const feed = {
+      height: marks.heightMm,
+      period: marks.periodMm,
+      balancedFz: balanced.ok ? balanced.feedPerToothMm : null,
+    };
+    return { ok: true, request, feedMarks: feed, areal: null, x3p: null };
   } catch (e) {
     // Runout: refused by the core until it is computed there (its own one line).
     if (e instanceof Error && e.message === RUNOUT_NOT_YET)
       return { ok: false, request, errors: [{ field: 'runout' as FinishField, message: e.message }] };
     throw e;
   }
-  const asked = request.x3p;
-  if (asked === undefined) return { ok: true, request, report, x3p: null };
-  const m = toothModel({
-    tool: request.tool,
-    pattern: request.pattern,
-    intervalMm: request.intervalMm,
-    finish: checked.value,
-  });
-  const map = arealMap(m, asked.size, asked.size, 1, 1);
-  const grid = { ...map, xOriginMm: map.dxMm / 2, yOriginMm: map.dyMm / 2 };
-  return { ok: true, request, report, x3p: x3pBytes(grid, { comment: asked.comment }) };
 }
