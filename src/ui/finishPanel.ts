@@ -86,6 +86,10 @@ export class FinishPanel {
   /** The feed marks' worker and the areal parameters' (slower: they never hold the marks back). */
   private readonly client: ReturnType<typeof finishClient>;
   private readonly arealClient: ReturnType<typeof finishClient>;
+  /** The part each client computes now (until its reply). */
+  private readonly busy = new Map<ReturnType<typeof finishClient>, FinishRequest>();
+  /** A worker's restart or give-up, said while the question on screen waits. */
+  private note: string | null = null;
   private x3pClient: ReturnType<typeof finishClient> | null = null;
 
   /** `clientOf`: workers.ts finishClient (the first script's, passed in). */
@@ -164,12 +168,24 @@ export class FinishPanel {
     this.raMm = ask.kind === 'ask' ? ask.raMm : null;
     if (!sameFinishRequest(request, this.wanted)) {
       this.wanted = request;
+      this.note = null;
       if (request !== null) {
-        this.client.request(request);
-        this.arealClient.request({ ...request, part: 'areal' });
+        this.ask(this.client, request);
+        this.ask(this.arealClient, { ...request, part: 'areal' });
       }
     }
     this.draw();
+  }
+
+  /**
+   * Asks `client` a part; a worker still busy with an earlier question is ended first (the core's
+   * areal parameters can take minutes at a large feed: nobody waits for them any more).
+   */
+  private ask(client: ReturnType<typeof finishClient>, request: FinishRequest): void {
+    const busy = this.busy.get(client);
+    if (busy !== undefined && !sameFinishRequest(busy, request)) client.dispose();
+    this.busy.set(client, request);
+    client.request(request);
   }
 
   /** True when `request` is the question on screen (its feed marks or its areal parameters). */
@@ -178,7 +194,9 @@ export class FinishPanel {
   }
 
   private received(reply: FinishReply): void {
+    for (const [client, asked] of this.busy) if (sameFinishRequest(asked, reply.request)) this.busy.delete(client);
     if (reply.request.x3p !== undefined || !this.current(reply.request)) return;
+    this.note = null;
     if (reply.ok) this.answers.set(reply.request.part, reply);
     else this.failed = { request: reply.request, message: reply.errors.map((e) => e.message).join(' ') };
     this.draw();
@@ -191,9 +209,11 @@ export class FinishPanel {
   }
 
   private restarted(info: RestartInfo<FinishRequest>): void {
-    this.message.textContent = info.gaveUp
+    if (info.request === null || !this.current(info.request)) return;
+    this.note = info.gaveUp
       ? `No finish: its worker gave up (${info.reason}).`
       : `The finish's worker was restarted (${info.reason}); computing again...`;
+    this.draw();
   }
 
   private set(key: string, text: string): void {
@@ -226,7 +246,8 @@ export class FinishPanel {
     this.download.disabled = marks === null || this.x3pAsked !== null;
     const failed = this.failed !== null && this.current(this.failed.request) ? this.failed.message : null;
     const pending = this.wanted !== null && (m === undefined || s === undefined);
-    const text = this.refusal ?? failed ?? (pending ? 'Computing the feed marks and the areal parameters...' : '');
+    const waiting = pending ? (this.note ?? 'Computing the feed marks and the areal parameters...') : '';
+    const text = this.refusal ?? failed ?? waiting;
     if (this.message.textContent !== text) this.message.textContent = text;
     this.message.classList.toggle('error', this.refusal !== null || failed !== null);
   }

@@ -68,6 +68,13 @@ export function tableClient(events: JobEvents<TableRequest, TableReply>): JobCli
 }
 
 /**
+ * The finish's watchdog (ms): the core's areal parameters take seconds to minutes at large feeds, so
+ * only a worker silent this long is stuck; the page stops a computation nobody waits for itself
+ * (finishPanel.ts: a new question ends the worker still busy with the old one).
+ */
+export const FINISH_WATCHDOG_MS = 300_000;
+
+/**
  * The `finish` job (issue 29) on its own worker, started on the first finish question; `same` is
  * finishProtocol.ts sameFinishRequest, passed by the finish box (loaded later) so that this first
  * script does not carry it.
@@ -76,12 +83,13 @@ export function finishClient(
   events: JobEvents<FinishRequest, FinishReply>,
   same: (a: FinishRequest, b: FinishRequest) => boolean,
 ): JobClient<FinishRequest, FinishReply> {
-  return jobClient(
-    () => startSolverWorker('path-interval-finish'),
-    (api, r) => api.finish(r),
+  return new JobClient({
+    createWorker: () => startSolverWorker('path-interval-finish'),
+    call: (api, r) => api.finish(r),
     same,
-    events,
-  );
+    ...events,
+    watchdogMs: FINISH_WATCHDOG_MS,
+  });
 }
 
 /** A solver worker (the module worker built from solver.worker.ts), named for the browser's tools. */

@@ -26,7 +26,7 @@ function expected() {
   return { report: finishReport(TOOL, 'one-way', reply.exact.intervalMm, finish), L: reply.exact.intervalMm };
 }
 
-const text = (page: Page, id: string) => page.getByTestId(id).innerText();
+const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent()) ?? '';
 
 async function commit(page: Page, id: string, value: string): Promise<void> {
   await typeInto(page, id, value);
