@@ -116,3 +116,40 @@ describe("the page's finish question", () => {
     });
   });
 });
+
+describe("the page's finish question beyond the five-axis plane", () => {
+  const teeth = inputs({ flutes: 4, fz: 0.1 });
+  /** A three-axis answer as the worker gives it, with only the parts the finish reads. */
+  const threeAxis = (surface: 'plane' | 'revolution') =>
+    ({
+      ok: true,
+      request: {
+        mode: 'three-axis',
+        input: { surface, case: { toolRadiusMm: 3, cornerRadiusMm: 1 } },
+      },
+      answer: { leadDeg: 12, tiltDeg: -3, cuspHeightMm: 0.01, intervalMm: 1.5, noScallop: false },
+    }) as unknown as PageReply;
+
+  it('asks the sloped plane at its equivalent posture, one-way, at its step-over and cusp', () => {
+    const a = finishAsk(teeth, threeAxis('plane'));
+    expect(a.kind === 'ask' && a.request).toMatchObject({
+      tool: { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 12, tiltAngleDeg: -3 },
+      pattern: 'one-way',
+      intervalMm: 1.5,
+      scallopMm: 0.01,
+      part: 'marks',
+    });
+  });
+
+  it('refuses waterline on a surface of revolution and a doubly curved point in one line', () => {
+    expect(finishAsk(teeth, threeAxis('revolution'))).toEqual({
+      kind: 'refused',
+      message: expect.stringMatching(/^Feed marks are not computed on waterline passes on surfaces of revolution yet/),
+    });
+    const curved = { ok: true, request: { mode: 'curved-forward' } } as unknown as PageReply;
+    expect(finishAsk(teeth, curved)).toEqual({
+      kind: 'refused',
+      message: expect.stringMatching(/^Feed marks are not computed on doubly curved points yet/),
+    });
+  });
+});
