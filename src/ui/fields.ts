@@ -88,11 +88,11 @@ const HINTS: Readonly<Record<FieldKey, string>> = {
   Rc: 'principal radius across the feed, a positive number; its side is chosen beside it',
   Lxy: 'horizontal distance between adjacent raster passes, as the CAM system programs it',
   dz: 'vertical distance between adjacent levels (tool tips), as the CAM system programs it',
-  z: 'teeth of the end mill (optional: with fz, the feed marks and areal parameters)',
-  fz: 'feed per tooth along the pass (optional; empty: no feed marks)',
-  runout: 'radial runout of the tool (optional, default 0)',
-  runoutPhase: 'direction of the runout from tooth 0 (optional, default 0)',
-  passPhase: 'shift of each pass along the feed, a fraction of the feed period (optional, default 0)',
+  z: 'teeth; with fz: the feed marks',
+  fz: 'feed per tooth; empty: no feed marks',
+  runout: 'radial runout (default 0)',
+  runoutPhase: 'runout direction from tooth 0',
+  passPhase: 'pass shift, a fraction of the feed period',
 };
 
 /** The order of the form: the slope and raster angle sit where the lead and tilt do. */

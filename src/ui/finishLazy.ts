@@ -3,6 +3,7 @@
  * given; its code loads with the first finish question, not with the first result.
  */
 import type { FinishField } from '../core/finish/finishInput';
+import { FINISH_FIELD_IDS } from '../core/input/fields';
 import type { FinishValue } from '../worker/finishProtocol';
 import type { PageReply } from '../worker/pageProtocol';
 import { finishClient } from '../worker/workers';
@@ -11,8 +12,8 @@ import type { FinishPanel } from './finishPanel';
 import type { FinishInputs } from './finishRequest';
 import { type CalculatorState, fieldInMm } from './state';
 
-/** The core's finish fields, in the order of FINISH_KEYS (the registry's). */
-const FINISH_FIELDS: readonly FinishField[] = ['flutes', 'fz', 'runout', 'runoutPhase', 'passPhase'];
+/** The core's finish fields (the registry's ids are the core's names), in the order of FINISH_KEYS. */
+const FINISH_FIELDS = FINISH_FIELD_IDS as readonly FinishField[];
 
 /** The finish fields of a state (written lengths already plain): in mm and degrees, and as typed. */
 export function finishInputs(state: CalculatorState): FinishInputs {
