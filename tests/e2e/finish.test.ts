@@ -3,7 +3,8 @@
  * types them give hf, Sa and fz* equal to the core's finishReport to the digits shown; "use the
  * balanced feed" makes hf read as h; a bad fz is one line naming its limit in the unit, the
  * step-over kept; a cylinder is refused in one line (no number); the x3p download is a zip of one
- * cell's 256 x 256 heights named by the question. Every status read is polled.
+ * cell's 256 x 256 heights named by the question; a Fusion 360 tool's NOF fills the flutes. Every
+ * status read is polled.
  */
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
@@ -101,6 +102,32 @@ describe('the finish box', () => {
     expect(bytes.length).toBeGreaterThan(256 * 256 * 8);
     expect(bytes.length).toBeLessThan(256 * 256 * 8 + 20_000);
     await expect.poll(() => text(page, 'x3p-status')).toMatch(/^Saved finish_.*\.x3p: 256 x 256 heights/);
+    expect(errors).toEqual([]);
+  });
+
+  it("a Fusion 360 tool's NOF gives the flutes", async () => {
+    const library = {
+      data: [
+        {
+          type: 'bull nose end mill',
+          unit: 'millimeters',
+          description: 'D6 R1 3FL',
+          geometry: { DC: 6, RE: 1, NOF: 3 },
+        },
+      ],
+      version: 16,
+    };
+    await page.locator('[data-testid="tool-shelf"] summary').click();
+    await page.getByTestId('tool-library-import').setInputFiles({
+      name: 'shop.json',
+      mimeType: 'application/json',
+      buffer: Buffer.from(JSON.stringify(library)),
+    });
+    const list = page.getByTestId('library-tools');
+    await list.waitFor();
+    await list.selectOption({ label: 'D6 R1 3FL: D 6 mm, corner R 1 mm, 3 flutes' });
+    await expect.poll(() => page.getByTestId('input-flutes').inputValue()).toBe('3');
+    await expect.poll(() => new URL(page.url()).searchParams.get('z')).toBe('3');
     expect(errors).toEqual([]);
   });
 });
