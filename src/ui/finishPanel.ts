@@ -9,7 +9,7 @@
  */
 import { formatInputNumber, fromMm, type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
 import type { RestartInfo } from '../worker/client';
-import { type FinishReply, type FinishRequest, sameFinishRequest } from '../worker/finishProtocol';
+import { type FinishReply, type FinishRequest, MAP_SIZE, sameFinishRequest } from '../worker/finishProtocol';
 import type { PageReply } from '../worker/pageProtocol';
 import type { finishClient } from '../worker/workers';
 import { type FinishInputs, finishAsk } from './finishRequest';
@@ -86,6 +86,12 @@ export class FinishPanel {
   /** The feed marks' worker and the areal parameters' (slower: they never hold the marks back). */
   private readonly client: ReturnType<typeof finishClient>;
   private readonly arealClient: ReturnType<typeof finishClient>;
+  /** The cell's height map (issue 29: one cell, coloured by height, with its scale). */
+  private readonly figure: HTMLElement;
+  private readonly canvas: HTMLCanvasElement;
+  private readonly scale: HTMLElement;
+  /** The map on the canvas (its reply), so that it is painted once. */
+  private painted: Extract<FinishReply, { ok: true }> | null = null;
   /** The part each client computes now (until its reply). */
   private readonly busy = new Map<ReturnType<typeof finishClient>, FinishRequest>();
   /** A worker's restart or give-up, said while the question on screen waits. */
@@ -153,9 +159,19 @@ export class FinishPanel {
       { class: 'lookup-note' },
       'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).',
     );
+    this.figure = html('figure', { class: 'finish-map', 'data-testid': 'finish-map', hidden: '' });
+    this.canvas = html('canvas', {
+      width: String(MAP_SIZE),
+      height: String(MAP_SIZE),
+      'data-testid': 'finish-map-image',
+      role: 'img',
+      'aria-label': 'Heights of one period cell, coloured from the lowest (blue) to the highest (orange)',
+    });
+    this.scale = html('figcaption', { 'data-testid': 'finish-map-scale' });
+    this.figure.append(this.canvas, this.scale);
     const tools = html('div', { class: 'finish-tools' });
     tools.append(this.download, ' ', this.x3pStatus);
-    box.append(heading, list, areal, this.message, note, tools);
+    box.append(heading, list, areal, this.message, this.figure, note, tools);
   }
 
   /** The inputs on screen and the answer to them (null while none is, or while typing). */
@@ -246,10 +262,47 @@ export class FinishPanel {
     this.download.disabled = marks === null || this.x3pAsked !== null;
     const failed = this.failed !== null && this.current(this.failed.request) ? this.failed.message : null;
     const pending = this.wanted !== null && (m === undefined || s === undefined);
+    this.paint(this.answer('areal'));
     const waiting = pending ? (this.note ?? 'Computing the feed marks and the areal parameters...') : '';
     const text = this.refusal ?? failed ?? waiting;
     if (this.message.textContent !== text) this.message.textContent = text;
     this.message.classList.toggle('error', this.refusal !== null || failed !== null);
+  }
+
+  /**
+   * Paints the areal answer's map (hidden without one): heights from the lowest (blue) to the
+   * highest (orange), x along the feed to the right, y across it downwards, and its scale in words.
+   */
+  private paint(areal: Extract<FinishReply, { ok: true }> | null): void {
+    const map = areal?.map ?? null;
+    this.figure.hidden = map === null;
+    if (areal === null || map === null) return;
+    const r = areal.request;
+    const u = this.unit;
+    const period = this.answer('marks')?.feedMarks?.period ?? null;
+    const across = r.intervalMm * (r.pattern === 'zigzag' ? 2 : 1);
+    const text =
+      `One period cell, ${formatLenUnit(period, u, 'fine')} along the feed (right) by ${formatLenUnit(across, u, 'fine')} across (down); ` +
+      `blue the lowest, orange the highest: Sz = ${formatRoughness(areal.areal === null ? null : areal.areal.Sz, u)} apart.`;
+    if (this.scale.textContent !== text) this.scale.textContent = text;
+    if (this.painted === areal) return;
+    this.painted = areal;
+    let low = Number.POSITIVE_INFINITY;
+    let high = Number.NEGATIVE_INFINITY;
+    for (const h of map) {
+      low = Math.min(low, h);
+      high = Math.max(high, h);
+    }
+    const span = high > low ? high - low : 1;
+    const context = this.canvas.getContext('2d');
+    if (context !== null) {
+      const image = context.createImageData(MAP_SIZE, MAP_SIZE);
+      map.forEach((h, k) => {
+        const t = (h - low) / span;
+        image.data.set([29 + t * (245 - 29), 78 + t * (158 - 78), 216 + t * (11 - 216), 255], 4 * k);
+      });
+      context.putImageData(image, 0, 0);
+    }
   }
 
   /** The x3p of the question on screen: computed in the worker, saved when its bytes come. */

@@ -33,6 +33,9 @@ export interface FinishRequest {
   readonly x3p?: { readonly size: number; readonly fileName: string; readonly comment: string };
 }
 
+/** Points along each side of the cell's height map drawn on the page. */
+export const MAP_SIZE = 256;
+
 /** One finish field's refusal, worded in the request's unit (the constraint and its limit). */
 export interface FinishFieldMessage {
   readonly field: FinishField;
@@ -47,6 +50,8 @@ export type FinishReply =
       readonly feedMarks: FinishReport['feedMarks'] | null;
       readonly areal: FinishReport['areal'] | null;
       readonly x3p: Uint8Array | null;
+      /** With the areal parameters: one cell's heights (mm, MAP_SIZE x MAP_SIZE, row i + n j: x along the feed). */
+      readonly map: Float32Array | null;
     }
   | { readonly ok: false; readonly request: FinishRequest; readonly errors: readonly FinishFieldMessage[] };
 

@@ -69,7 +69,9 @@ export const workerApi = {
   /** The surface the teeth leave (issue 29): feed marks, areal parameters, and the x3p file when asked (transferred). */
   async finish(request: FinishRequest): Promise<FinishReply> {
     const reply = (await finishJob()).finish(request);
-    return reply.ok && reply.x3p !== null ? transfer(reply, [reply.x3p.buffer as ArrayBuffer]) : reply;
+    if (!reply.ok) return reply;
+    const buffers = [reply.x3p?.buffer, reply.map?.buffer].filter((b) => b !== undefined) as ArrayBuffer[];
+    return transfer(reply, buffers);
   },
   async simulate(request: SolveRequest, onProgress?: (fraction: number) => void): Promise<SimulateReply> {
     const r = await runner();

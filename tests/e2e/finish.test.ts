@@ -51,6 +51,17 @@ describe('the finish box', () => {
       .poll(() => text(page, 'finish-sa'), { timeout: 20_000 })
       .toBe(formatRoughness(core.report.areal.Sa, 'mm'));
     expect(await text(page, 'finish-balanced')).toBe(formatLenUnit(m.balancedFz, 'mm', 'fine'));
+    // The cell's height map: painted (blue to orange), its scale in words.
+    await expect
+      .poll(() => text(page, 'finish-map-scale'))
+      .toContain(`Sz = ${formatRoughness(core.report.areal.Sz, 'mm')} apart`);
+    const colours = await page.getByTestId('finish-map-image').evaluate((c: HTMLCanvasElement) => {
+      const d = c.getContext('2d')?.getImageData(0, 0, c.width, c.height).data ?? new Uint8ClampedArray();
+      const seen = new Set<number>();
+      for (let k = 0; k < d.length; k += 4) seen.add(((d[k] ?? 0) << 16) | ((d[k + 1] ?? 0) << 8) | (d[k + 2] ?? 0));
+      return seen.size;
+    });
+    expect(colours).toBeGreaterThan(20);
     expect(await text(page, 'finish-areal-Sz')).toBe(formatRoughness(core.report.areal.Sz, 'mm'));
     expect(await text(page, 'finish-areal-Sku')).toBe(core.report.areal.Sku.toFixed(4));
     // The link carries the teeth and the feed.

@@ -61,6 +61,13 @@ describe('the finish job', () => {
     });
     expect([marks.feedMarks, marks.areal]).toEqual([core.feedMarks, null]);
     expect([areal.feedMarks, areal.areal]).toEqual([null, core.areal]);
+    // With the areal parameters, the cell's height map the page paints: its sampled range within Sz.
+    const map = areal.map ?? new Float32Array();
+    expect(map.length).toBe(256 * 256);
+    const range = Math.max(...map) - Math.min(...map);
+    expect(range).toBeLessThanOrEqual(core.areal.Sz * (1 + 1e-6));
+    expect(range).toBeGreaterThan(0.95 * core.areal.Sz);
+    expect(marks.map).toBeNull();
     expect(marks.request).toBe(request);
     expect(marks.x3p).toBeNull();
   });

@@ -17,7 +17,7 @@ import {
   validateFinish,
 } from '../../core/finish/index';
 import { x3pBytes } from '../../core/output/x3p';
-import type { FinishReply, FinishRequest } from '../finishProtocol';
+import { type FinishReply, type FinishRequest, MAP_SIZE } from '../finishProtocol';
 
 /**
  * Answers a finish question, the part asked (the feed marks as core finishReport gives them, or
@@ -43,12 +43,21 @@ export function finish(request: FinishRequest): FinishReply {
     if (asked !== undefined) {
       const map = arealMap(model(), asked.size, asked.size, 1, 1);
       const grid = { ...map, xOriginMm: map.dxMm / 2, yOriginMm: map.dyMm / 2 };
-      return { ok: true, request, feedMarks: null, areal: null, x3p: x3pBytes(grid, { comment: asked.comment }) };
+      return {
+        ok: true,
+        request,
+        feedMarks: null,
+        areal: null,
+        x3p: x3pBytes(grid, { comment: asked.comment }),
+        map: null,
+      };
     }
     if (request.part === 'areal') {
-      const a = arealParameters(model());
+      const m = model();
+      const a = arealParameters(m);
       const areal = { Sa: a.saMm, Sq: a.sqMm, Sz: a.szMm, Sp: a.spMm, Sv: a.svMm, Ssk: a.ssk, Sku: a.sku };
-      return { ok: true, request, feedMarks: null, areal, x3p: null };
+      const map = Float32Array.from(arealMap(m, MAP_SIZE, MAP_SIZE, 1, 1).heightsMm);
+      return { ok: true, request, feedMarks: null, areal, x3p: null, map };
     }
     const marks = feedMarks(model());
     const balanced = balancedFeed(request.tool, request.pattern, request.intervalMm, checked.value);
@@ -57,7 +66,7 @@ export function finish(request: FinishRequest): FinishReply {
       period: marks.periodMm,
       balancedFz: balanced.ok ? balanced.feedPerToothMm : null,
     };
-    return { ok: true, request, feedMarks: feed, areal: null, x3p: null };
+    return { ok: true, request, feedMarks: feed, areal: null, x3p: null, map: null };
   } catch (e) {
     // Runout: refused by the core until it is computed there (its own one line).
     if (e instanceof Error && e.message === RUNOUT_NOT_YET)
