@@ -24,6 +24,7 @@ import { embedCode, wireCopyEmbed } from './embedCode';
 import { postHeightToParent } from './embedResize';
 import { listenForHostTheme } from './embedTheme';
 import { FieldsPanel } from './fields';
+import { LazyFinish } from './finishLazy';
 import { FreshJob } from './freshness';
 import { Highlighter } from './highlight';
 import { LazyShopSheet } from './lazyShopSheet';
@@ -106,6 +107,8 @@ export class CalculatorApp {
   private readonly sheet: LazyShopSheet;
   private readonly teaching: TeachingLoader | null;
   private readonly roughness: RoughnessPanel;
+  /** The feed marks and areal finish (finishLazy.ts). */
+  private readonly finish: LazyFinish;
   private readonly simulation: SimulationLoader;
   private readonly client = solveClient({
     onReply: (reply) => {
@@ -175,6 +178,9 @@ export class CalculatorApp {
     this.results = new ResultsPanel(root);
     this.resultBar = new ResultBar(root);
     this.roughness = new RoughnessPanel(root);
+    this.finish = new LazyFinish(root.querySelector<HTMLElement>('[data-testid="finish-results"]'), (fz) =>
+      this.change(withValues(this.state, { fz })),
+    );
     this.simulation = new SimulationLoader(
       (info) => this.restarted('simulation', info),
       () => this.notice.clear('simulation'),
@@ -245,8 +251,16 @@ export class CalculatorApp {
     // A first visit (no unit chosen yet on this device) offers the tools of both units (toolChips.ts).
     this.fields.chips?.offerBothUnits(this.storage !== null && parsed.bare && remembered.unit === null);
     this.shelf = new LazyToolShelf(must(root, '[data-testid="tool-shelf"]'), {
+      // A library tool's flutes (a Fusion 360 NOF) give the teeth of the finish.
       onTool: (t) =>
-        this.change({ ...withValues(this.state, { R: t.diameterMm / 2, Rcr: t.cornerRadiusMm }), toolName: t.name }),
+        this.change({
+          ...withValues(this.state, {
+            R: t.diameterMm / 2,
+            Rcr: t.cornerRadiusMm,
+            ...(t.flutes === null ? {} : { z: t.flutes }),
+          }),
+          toolName: t.name,
+        }),
       onUnit: (unit) => this.change(convertState(plainLengths(this.state), unit)),
       current: () => {
         const plain = plainLengths(this.state);
@@ -410,6 +424,8 @@ export class CalculatorApp {
     this.resultBar.render(typing);
     this.sceneBox.classList.toggle('typing', typing);
     this.roughness.render(shown, this.state.unit);
+    // The finish (issue 29): the answer on screen's feed marks, loaded with the first teeth and feed.
+    this.finish.show(this.state, shown.kind === 'current' && !typing ? shown.reply : null);
     this.highlighter.markRows();
     // The first answer (or the first error) is on screen: now the scene may take its time to load.
     if (shown.kind !== 'pending' && !this.resultCard) this.scene.load();

@@ -4,7 +4,7 @@
  * state it is given (values, ranges in the user's unit, messages); it holds no state itself.
  */
 
-import { FIELDS, fieldOfPageKey } from '../core/input/fields';
+import { FIELDS, type FieldSpec, fieldOfPageKey } from '../core/input/fields';
 import { unitSymbol } from '../core/input/units';
 import type { PassPattern } from '../core/input/validate';
 import type { SurfaceAxis } from '../core/surfaces/cylinder';
@@ -88,10 +88,23 @@ const HINTS: Readonly<Record<FieldKey, string>> = {
   Rc: 'principal radius across the feed, a positive number; its side is chosen beside it',
   Lxy: 'horizontal distance between adjacent raster passes, as the CAM system programs it',
   dz: 'vertical distance between adjacent levels (tool tips), as the CAM system programs it',
+  z: 'teeth; with fz: the feed marks',
+  fz: 'feed per tooth; empty: no feed marks',
+  runout: 'radial runout (default 0)',
+  runoutPhase: 'runout direction from tooth 0',
+  passPhase: 'pass shift, a fraction of the feed period',
 };
 
 /** The order of the form: the slope and raster angle sit where the lead and tilt do. */
 const FORM_ORDER: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'tilt', 'slope', 'psi', 'h', 'ra', 'L', 'Lxy', 'dz'];
+
+/** The teeth and their feed: always offered (optional; the finish says where it is not computed). */
+const FINISH_SHOWN = { z: true, fz: true, runout: true, runoutPhase: true, passPhase: true } as const;
+
+/** A field that is not a length: degrees, or a plain number (a count of teeth, a fraction). */
+function unitlessLabel(key: FieldKey): string {
+  return (FIELDS[fieldOfPageKey(key)] as FieldSpec).kind === 'number' ? '' : 'deg';
+}
 
 /** The fields shown with the surface's switches. */
 const SURFACE_KEYS: readonly FieldKey[] = ['Rs', 'Rf', 'Rc'];
@@ -110,6 +123,9 @@ const TEST_NAME: Partial<Readonly<Record<FieldKey, string>>> = {
   psi: 'raster-angle',
   Lxy: 'horizontal-step',
   dz: 'step-down',
+  z: 'flutes',
+  runoutPhase: 'runout-phase',
+  passPhase: 'pass-phase',
 };
 
 /** The sides' names in a radius's side box. */
@@ -155,9 +171,13 @@ export class FieldsPanel {
     const container = must<HTMLElement>(root, '.fields');
     // The surface radius sits with the surface's switches.
     const surfaceFields = root.querySelector<HTMLElement>('.surface-fields') ?? container;
+    // The teeth and their feed (optional) sit in their own box.
+    const finishFields = root.querySelector<HTMLElement>('.finish-fields') ?? container;
     const order = [...FORM_ORDER, ...FIELD_KEYS.filter((k) => !FORM_ORDER.includes(k))];
-    for (const key of order)
-      this.fields.set(key, this.buildField(SURFACE_KEYS.includes(key) ? surfaceFields : container, key, events));
+    for (const key of order) {
+      const box = SURFACE_KEYS.includes(key) ? surfaceFields : key in FINISH_SHOWN ? finishFields : container;
+      this.fields.set(key, this.buildField(box, key, events));
+    }
     for (const key of ['Rf', 'Rc'] as const) this.sides.set(key, this.buildSide(key, events));
     this.wireSwitch('machine', (v) => events.onMachine(v === '3axis' ? '3axis' : '5axis'));
     this.wireSwitch('passes', (v) => events.onPasses(v === 'waterline' ? 'waterline' : 'raster'));
@@ -281,6 +301,7 @@ export class FieldsPanel {
       Rs: cylinder,
       Rf: radii,
       Rc: radii,
+      ...FINISH_SHOWN,
     };
     for (const [key, view] of this.fields) {
       view.row.hidden = !shown[key];
@@ -291,7 +312,7 @@ export class FieldsPanel {
         view.input.disabled = side === 'straight';
         view.slider.disabled = side === 'straight';
       }
-      view.unitLabel.textContent = isLengthField(key) ? unitSymbol(state.unit) : 'deg';
+      view.unitLabel.textContent = isLengthField(key) ? unitSymbol(state.unit) : unitlessLabel(key);
       if (key === 'R') {
         const diameter = sizeIsDiameter(state);
         view.label.textContent = diameter ? DIAMETER_LABEL : FIELDS.R.label;

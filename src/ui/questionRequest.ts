@@ -9,6 +9,7 @@
  * registryQuestionRequest.ts. Pure (no DOM).
  */
 import type { ModeDescriptor } from '../core/surfaces/modes';
+import { finishFieldErrors } from './finishFields';
 import { buildFiveAxisRequest } from './fiveAxisRequest';
 import type { BuiltRequest } from './requestTypes';
 import type { CalculatorState } from './state';
@@ -26,5 +27,8 @@ export function pageModeKind(state: CalculatorState): ModeDescriptor['kind'] {
  */
 export function buildPageRequest(state: CalculatorState): BuiltRequest {
   // Each product mode of the mode registry has its builder (tests/ui/requestBuilder.test.ts checks every one).
-  return pageModeKind(state) === 'threeAxis' ? buildThreeAxisRequest(state) : buildFiveAxisRequest(state);
+  const built = pageModeKind(state) === 'threeAxis' ? buildThreeAxisRequest(state) : buildFiveAxisRequest(state);
+  // The teeth and their feed (issue 29, optional): a text that is not a number is named on its field.
+  const finish = finishFieldErrors(state);
+  return finish.length === 0 ? built : { ok: false, errors: [...(built.ok ? [] : built.errors), ...finish] };
 }

@@ -44,6 +44,11 @@ const STEPS: Readonly<Record<'mm' | 'in', Readonly<Record<FieldKey, number>>>> =
     Rc: 0.1,
     Lxy: 0.001,
     dz: 0.001,
+    z: 1,
+    fz: 0.001,
+    runout: 0.001,
+    runoutPhase: 1,
+    passPhase: 0.01,
   },
   in: {
     R: 0.001,
@@ -60,6 +65,11 @@ const STEPS: Readonly<Record<'mm' | 'in', Readonly<Record<FieldKey, number>>>> =
     Rc: 0.01,
     Lxy: 0.0001,
     dz: 0.0001,
+    z: 1,
+    fz: 0.0001,
+    runout: 0.0001,
+    runoutPhase: 1,
+    passPhase: 0.01,
   },
 };
 
@@ -153,6 +163,12 @@ export function sliderRanges(
     // The programmed steps: up to the tool's diameter (Lxy) or radius (dz); the field says the true limit.
     Lxy: [step.Lxy * 10, snap(len(2 * tool.toolRadiusMm), step.Lxy, step.Lxy * 10)],
     dz: [step.dz, snap(len(tool.toolRadiusMm), step.dz, step.dz)],
+    // The teeth and their feed (issue 29): up to 12 teeth, fz up to R/2 and runout up to R/10 (the fields take the limits).
+    z: [1, 12],
+    fz: [step.fz, snap(len(tool.toolRadiusMm / 2), step.fz, step.fz)],
+    runout: [0, snap(len(tool.toolRadiusMm / 10), step.runout, 0)],
+    runoutPhase: [0, 359],
+    passPhase: [0, 0.99],
   };
   // The size field in diameter mode: D runs over twice the radius's range.
   if (sizeIsDiameter(state)) ranges.R = [2 * ranges.R[0], 2 * ranges.R[1]];

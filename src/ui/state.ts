@@ -8,6 +8,7 @@ import { toMm } from '../core/input/units';
 import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
 import { choice, convertFields, fieldText, formatField, isLengthField, parseField } from './fieldText';
+import { finishSearch } from './finishFields';
 import { repeatedParamNotices } from './linkRepeats';
 import { parseMachine, threeAxisNeeded, threeAxisSearch } from './machineState';
 import type { CalculatorState, FieldKey, SurfaceKind, Target, ToolSize, Unit } from './stateTypes';
@@ -281,7 +282,7 @@ export function toSearch(state: CalculatorState, extra: Readonly<Record<string, 
   set('Rcr', state.fields.Rcr);
   writeToolName(params, state);
   if (state.machine === '3axis') {
-    for (const [name, value] of threeAxisSearch(state)) params.set(name, value);
+    for (const [name, value] of [...threeAxisSearch(state), ...finishSearch(state)]) params.set(name, value);
     for (const [k, v] of Object.entries(extra)) params.set(k, v);
     return `?${params.toString()}`;
   }
@@ -305,6 +306,7 @@ export function toSearch(state: CalculatorState, extra: Readonly<Record<string, 
     set('mode', 'inverse');
     set('interval', state.fields.L);
   }
+  for (const [name, value] of finishSearch(state)) params.set(name, value);
   set('unit', state.unit);
   for (const [k, v] of Object.entries(extra)) params.set(k, v);
   return `?${params.toString()}`;

@@ -7,6 +7,9 @@
  */
 import type { FieldKey, ToolSize, Unit } from './stateTypes';
 
+/** The teeth and their feed (issue 29) are optional: empty, no feed marks, in either unit. */
+const NO_FINISH = { z: '', fz: '', runout: '', runoutPhase: '', passPhase: '' } as const;
+
 /** Defaults in mm: the paper's Tool 1, condition 1 (L is its exact step-over, rounded), no tilt. */
 export const DEFAULT_FIELDS_MM: Readonly<Record<FieldKey, string>> = {
   R: '3',
@@ -23,6 +26,7 @@ export const DEFAULT_FIELDS_MM: Readonly<Record<FieldKey, string>> = {
   Rc: '40',
   Lxy: '2.5',
   dz: '1',
+  ...NO_FINISH,
 };
 
 /**
@@ -45,6 +49,7 @@ export const DEFAULT_FIELDS_IN: Readonly<Record<FieldKey, string>> = {
   Rc: '1.5',
   Lxy: '0.1',
   dz: '0.04',
+  ...NO_FINISH,
 };
 
 /** A field's default text in `unit`; the size field's as the diameter (twice R) when `size` is D. */

@@ -7,6 +7,8 @@
  * views' data, the lookup table and the simulation load here when first asked (dynamic imports,
  * each once; the module cache keeps them).
  */
+
+import type { FinishReply, FinishRequest } from './finishProtocol';
 import { solve } from './jobs/solve';
 import {
   isSolveReply,
@@ -28,6 +30,7 @@ const pageJob = lazyModule(() => import('./jobs/page'));
 const teachJob = lazyModule(() => import('./jobs/teachPage'));
 const tableJob = lazyModule(() => import('./jobs/table'));
 const simulation = lazyModule(() => import('./simulate'));
+const finishJob = lazyModule(() => import('./jobs/finish'));
 
 /** Answers any question; the plane's and cylinders' at once, the others' solvers loaded on first use. */
 async function solveAny(request: SolverRequest): Promise<PageReply | QuestionReply> {
@@ -62,6 +65,13 @@ export const workerApi = {
   /** The lookup table for the page's download (a string: nothing to transfer). */
   async table(request: TableRequest): Promise<TableReply> {
     return (await tableJob()).table(request);
+  },
+  /** The surface the teeth leave (issue 29): feed marks, areal parameters, and the x3p file when asked (transferred). */
+  async finish(request: FinishRequest): Promise<FinishReply> {
+    const reply = (await finishJob()).finish(request);
+    if (!reply.ok) return reply;
+    const buffers = [reply.x3p?.buffer, reply.map?.buffer].filter((b) => b !== undefined) as ArrayBuffer[];
+    return transfer(reply, buffers);
   },
   async simulate(request: SolveRequest, onProgress?: (fraction: number) => void): Promise<SimulateReply> {
     const r = await runner();

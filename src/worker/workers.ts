@@ -5,6 +5,7 @@
  */
 import solverWorkerUrl from 'virtual:solver-worker-url';
 import { JobClient, type JobClientOptions, type RestartInfo } from './client';
+import type { FinishReply, FinishRequest } from './finishProtocol';
 import { type PageReply, type PageRequest, samePageRequest } from './pageProtocol';
 import { sameTableRequest, type TableReply, type TableRequest } from './protocol';
 import type { PageTeachReply } from './teachProtocol';
@@ -64,6 +65,31 @@ export function createTableWorker(): Worker {
 /** The `table` job on its own worker. */
 export function tableClient(events: JobEvents<TableRequest, TableReply>): JobClient<TableRequest, TableReply> {
   return jobClient(createTableWorker, (api, r) => api.table(r), sameTableRequest, events);
+}
+
+/**
+ * The finish's watchdog (ms): the core's areal parameters take seconds to minutes at large feeds, so
+ * only a worker silent this long is stuck; the page stops a computation nobody waits for itself
+ * (finishPanel.ts: a new question ends the worker still busy with the old one).
+ */
+export const FINISH_WATCHDOG_MS = 300_000;
+
+/**
+ * The `finish` job (issue 29) on its own worker, started on the first finish question; `same` is
+ * finishProtocol.ts sameFinishRequest, passed by the finish box (loaded later) so that this first
+ * script does not carry it.
+ */
+export function finishClient(
+  events: JobEvents<FinishRequest, FinishReply>,
+  same: (a: FinishRequest, b: FinishRequest) => boolean,
+): JobClient<FinishRequest, FinishReply> {
+  return new JobClient({
+    createWorker: () => startSolverWorker('path-interval-finish'),
+    call: (api, r) => api.finish(r),
+    same,
+    ...events,
+    watchdogMs: FINISH_WATCHDOG_MS,
+  });
 }
 
 /** A solver worker (the module worker built from solver.worker.ts), named for the browser's tools. */

@@ -1,0 +1,351 @@
+/**
+ * The finish box under the results (issue 29): beside the scallop h and Ra across the feed, the
+ * feed marks hf along it and the areal Sa; the balanced feed fz* with a one-tap "use the balanced
+ * feed"; the areal parameters Sa ... Sku; an x3p download of one period cell. Everything is the
+ * worker's answer (jobs/finish.ts) to the question the inputs on screen ask (finishRequest.ts),
+ * shown only while its request is still that question (dashes meanwhile, never an earlier input's
+ * number); a refusal (a bad value, a surface where feed marks are not computed) is one line.
+ * Loaded with its first question (finishLazy.ts), not with the first result.
+ */
+import { formatInputNumber, fromMm, type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
+import type { RestartInfo } from '../worker/client';
+import { type FinishReply, type FinishRequest, MAP_SIZE, sameFinishRequest } from '../worker/finishProtocol';
+import type { PageReply } from '../worker/pageProtocol';
+import type { finishClient } from '../worker/workers';
+import { type FinishInputs, finishAsk } from './finishRequest';
+import { formatLenUnit, formatRoughness } from './format';
+
+/**
+ * An element with attributes and text (dom.ts's `html`, written here: the first result's modules
+ * stay out of this later chunk, which would otherwise split them into a shared one).
+ */
+function html<K extends keyof HTMLElementTagNameMap>(
+  tag: K,
+  props: Record<string, string> = {},
+  text = '',
+): HTMLElementTagNameMap[K] {
+  const e = document.createElement(tag);
+  for (const [name, value] of Object.entries(props)) e.setAttribute(name, value);
+  e.textContent = text;
+  return e;
+}
+
+/** Points along each side of the x3p download's one cell (the issue's 256 x 256). */
+export const X3P_SIZE = 256;
+
+/** The areal parameters' rows: symbol, test id, and whether it is a height (else dimensionless). */
+const AREAL = [
+  ['Sa', 'mean absolute height'],
+  ['Sq', 'root mean square height'],
+  ['Sz', 'highest peak to deepest valley'],
+  ['Sp', 'highest peak'],
+  ['Sv', 'deepest valley'],
+  ['Ssk', 'skewness'],
+  ['Sku', 'kurtosis'],
+] as const;
+
+/** A dimensionless number to 4 decimals, never -0. */
+function plain(v: number): string {
+  const t = v.toFixed(4);
+  return Number(t) === 0 ? (0).toFixed(4) : t;
+}
+
+/**
+ * The x3p file's name: the question it answers, lengths in `unit`:
+ * `finish_R3_Rcr1_rho5_tilt0_one-way_L0.9_z4_fz0.08_mm.x3p`.
+ */
+export function x3pFileName(r: FinishRequest): string {
+  const n = (mm: number) => formatInputNumber(fromMm(mm, r.unit));
+  const t = r.tool;
+  const v = r.values;
+  const runout = typeof v.runout === 'number' && v.runout > 0 ? `_e${n(v.runout)}` : '';
+  return (
+    `finish_R${n(t.toolRadiusMm)}_Rcr${n(t.cornerRadiusMm)}_rho${formatInputNumber(t.leadAngleDeg)}` +
+    `_tilt${formatInputNumber(t.tiltAngleDeg)}_${r.pattern}_L${n(r.intervalMm)}_z${String(v.flutes)}` +
+    `_fz${typeof v.fz === 'number' ? n(v.fz) : ''}${runout}_${unitSymbol(r.unit)}.x3p`
+  );
+}
+
+/** The finish box (see the module comment). */
+export class FinishPanel {
+  private readonly outputs = new Map<string, HTMLOutputElement>();
+  private readonly message: HTMLElement;
+  private readonly useBalanced: HTMLButtonElement;
+  private readonly download: HTMLButtonElement;
+  private readonly x3pStatus: HTMLElement;
+  private wanted: FinishRequest | null = null;
+  /** The latest answer of each part (shown only while it answers the question on screen). */
+  private readonly answers = new Map<FinishRequest['part'], Extract<FinishReply, { ok: true }>>();
+  private refusal: string | null = null;
+  /** The worker's refusal of a question (a bad value), with the question. */
+  private failed: { readonly request: FinishRequest; readonly message: string } | null = null;
+  private raMm: number | null = null;
+  private unit: LengthUnit = 'mm';
+  /** The x3p asked (the question with its file), until its bytes come. */
+  private x3pAsked: FinishRequest | null = null;
+  /** The feed marks' worker and the areal parameters' (slower: they never hold the marks back). */
+  private readonly client: ReturnType<typeof finishClient>;
+  private readonly arealClient: ReturnType<typeof finishClient>;
+  /** The cell's height map (issue 29: one cell, coloured by height, with its scale). */
+  private readonly figure: HTMLElement;
+  private readonly canvas: HTMLCanvasElement;
+  private readonly scale: HTMLElement;
+  /** The map on the canvas (its reply), so that it is painted once. */
+  private painted: Extract<FinishReply, { ok: true }> | null = null;
+  /** The part each client computes now (until its reply). */
+  private readonly busy = new Map<ReturnType<typeof finishClient>, FinishRequest>();
+  /** A worker's restart or give-up, said while the question on screen waits. */
+  private note: string | null = null;
+  private x3pClient: ReturnType<typeof finishClient> | null = null;
+
+  /** `clientOf`: workers.ts finishClient (the first script's, passed in). */
+  constructor(
+    private readonly box: HTMLElement,
+    private readonly onFz: (feedPerToothMm: number) => void,
+    private readonly clientOf: typeof finishClient,
+  ) {
+    this.client = clientOf(
+      { onReply: (reply) => this.received(reply), onRestart: (info) => this.restarted(info) },
+      sameFinishRequest,
+    );
+    this.arealClient = clientOf(
+      { onReply: (reply) => this.received(reply), onRestart: (info) => this.restarted(info) },
+      sameFinishRequest,
+    );
+    const list = html('dl', { class: 'details finish-details' });
+    const row = (label: string, testId: string, title = '') => {
+      const out = html('output', { 'data-testid': testId }, NO_VALUE);
+      this.outputs.set(testId, out);
+      const div = html('div', title === '' ? {} : { title });
+      const dd = html('dd');
+      dd.append(out);
+      div.append(html('dt', {}, label), dd);
+      list.append(div);
+      return dd;
+    };
+    row('Scallop h (across the feed)', 'finish-h');
+    row('Feed marks hf (along the CC path)', 'finish-hf');
+    row('Ra (across the feed)', 'finish-ra');
+    row('Sa (areal)', 'finish-sa');
+    row('Feed period', 'finish-period');
+    const balanced = row('Balanced feed fz* (hf = h)', 'finish-balanced');
+    this.useBalanced = html(
+      'button',
+      { type: 'button', 'data-testid': 'use-balanced-feed', disabled: '' },
+      'use the balanced feed',
+    );
+    balanced.append(' ', this.useBalanced);
+    this.useBalanced.addEventListener('click', () => {
+      const fz = this.answer('marks')?.feedMarks?.balancedFz;
+      if (fz !== undefined && fz !== null) this.onFz(fz);
+    });
+    const areal = html('dl', { class: 'details finish-areal', 'data-testid': 'finish-areal' });
+    for (const [symbol, words] of AREAL) {
+      const out = html('output', { 'data-testid': `finish-areal-${symbol}` }, NO_VALUE);
+      this.outputs.set(symbol, out);
+      const div = html('div', { title: words });
+      const dd = html('dd');
+      dd.append(out);
+      div.append(html('dt', {}, symbol), dd);
+      areal.append(div);
+    }
+    this.message = html('p', { class: 'finish-message', 'data-testid': 'finish-message', role: 'status' });
+    this.download = html('button', { type: 'button', 'data-testid': 'download-x3p', disabled: '' }, 'x3p');
+    this.download.addEventListener('click', () => this.askX3p());
+    this.x3pStatus = html('span', { class: 'lookup-note', 'data-testid': 'x3p-status', role: 'status' });
+    const heading = html('h3', {}, 'Finish: the feed marks the teeth leave');
+    const note = html(
+      'p',
+      { class: 'lookup-note' },
+      'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).',
+    );
+    this.figure = html('figure', { class: 'finish-map', 'data-testid': 'finish-map', hidden: '' });
+    this.canvas = html('canvas', {
+      width: String(MAP_SIZE),
+      height: String(MAP_SIZE),
+      'data-testid': 'finish-map-image',
+      role: 'img',
+      'aria-label': 'Heights of one period cell, coloured from the lowest (blue) to the highest (orange)',
+    });
+    this.scale = html('figcaption', { 'data-testid': 'finish-map-scale' });
+    this.figure.append(this.canvas, this.scale);
+    const tools = html('div', { class: 'finish-tools' });
+    tools.append(this.download, ' ', this.x3pStatus);
+    box.append(heading, list, areal, this.message, this.figure, note, tools);
+  }
+
+  /** The inputs on screen and the answer to them (null while none is, or while typing). */
+  show(inputs: FinishInputs, reply: PageReply | null): void {
+    this.unit = inputs.unit;
+    this.box.hidden = !inputs.given;
+    const ask = finishAsk(inputs, reply);
+    this.refusal = ask.kind === 'refused' ? ask.message : null;
+    const request = ask.kind === 'ask' ? ask.request : null;
+    this.raMm = ask.kind === 'ask' ? ask.raMm : null;
+    if (!sameFinishRequest(request, this.wanted)) {
+      this.wanted = request;
+      this.note = null;
+      if (request !== null) {
+        this.ask(this.client, request);
+        this.ask(this.arealClient, { ...request, part: 'areal' });
+      }
+    }
+    this.draw();
+  }
+
+  /**
+   * Asks `client` a part; a worker still busy with an earlier question is ended first (the core's
+   * areal parameters can take minutes at a large feed: nobody waits for them any more).
+   */
+  private ask(client: ReturnType<typeof finishClient>, request: FinishRequest): void {
+    const busy = this.busy.get(client);
+    if (busy !== undefined && !sameFinishRequest(busy, request)) client.dispose();
+    this.busy.set(client, request);
+    client.request(request);
+  }
+
+  /** True when `request` is the question on screen (its feed marks or its areal parameters). */
+  private current(request: FinishRequest): boolean {
+    return this.wanted !== null && sameFinishRequest(request, { ...this.wanted, part: request.part });
+  }
+
+  private received(reply: FinishReply): void {
+    for (const [client, asked] of this.busy) if (sameFinishRequest(asked, reply.request)) this.busy.delete(client);
+    if (reply.request.x3p !== undefined || !this.current(reply.request)) return;
+    this.note = null;
+    if (reply.ok) this.answers.set(reply.request.part, reply);
+    else this.failed = { request: reply.request, message: reply.errors.map((e) => e.message).join(' ') };
+    this.draw();
+  }
+
+  /** The answer of one part to the question on screen, or null. */
+  private answer(part: FinishRequest['part']): Extract<FinishReply, { ok: true }> | null {
+    const a = this.answers.get(part);
+    return a !== undefined && this.current(a.request) ? a : null;
+  }
+
+  private restarted(info: RestartInfo<FinishRequest>): void {
+    if (info.request === null || !this.current(info.request)) return;
+    this.note = info.gaveUp
+      ? `No finish: its worker gave up (${info.reason}).`
+      : `The finish's worker was restarted (${info.reason}); computing again...`;
+    this.draw();
+  }
+
+  private set(key: string, text: string): void {
+    const e = this.outputs.get(key);
+    if (e !== undefined && e.textContent !== text) e.textContent = text;
+  }
+
+  /** Draws the answer to the question on screen (or dashes), or its refusal in one line. */
+  private draw(): void {
+    const marks = this.answer('marks');
+    const m = marks?.feedMarks ?? undefined;
+    const s = this.answer('areal')?.areal ?? undefined;
+    const u = this.unit;
+    const height = (mm: number | undefined) => formatRoughness(mm ?? null, u);
+    this.set('finish-h', height(marks?.request.scallopMm));
+    this.set('finish-ra', height(marks === null ? undefined : (this.raMm ?? undefined)));
+    this.set('finish-hf', height(m?.height));
+    this.set('finish-sa', height(s?.Sa));
+    this.set('finish-period', formatLenUnit(m?.period ?? null, u, 'fine'));
+    this.set(
+      'finish-balanced',
+      m === undefined || m.balancedFz === null ? NO_VALUE : formatLenUnit(m.balancedFz, u, 'fine'),
+    );
+    for (const [symbol] of AREAL)
+      this.set(
+        symbol,
+        s === undefined ? NO_VALUE : symbol === 'Ssk' || symbol === 'Sku' ? plain(s[symbol]) : height(s[symbol]),
+      );
+    this.useBalanced.disabled = m === undefined || m.balancedFz === null;
+    this.download.disabled = marks === null || this.x3pAsked !== null;
+    const failed = this.failed !== null && this.current(this.failed.request) ? this.failed.message : null;
+    const pending = this.wanted !== null && (m === undefined || s === undefined);
+    this.paint(this.answer('areal'));
+    const waiting = pending ? (this.note ?? 'Computing the feed marks and the areal parameters...') : '';
+    const text = this.refusal ?? failed ?? waiting;
+    if (this.message.textContent !== text) this.message.textContent = text;
+    this.message.classList.toggle('error', this.refusal !== null || failed !== null);
+  }
+
+  /**
+   * Paints the areal answer's map (hidden without one): heights from the lowest (blue) to the
+   * highest (orange), x along the feed to the right, y across it downwards, and its scale in words.
+   */
+  private paint(areal: Extract<FinishReply, { ok: true }> | null): void {
+    const map = areal?.map ?? null;
+    this.figure.hidden = map === null;
+    if (areal === null || map === null) return;
+    const r = areal.request;
+    const u = this.unit;
+    const period = this.answer('marks')?.feedMarks?.period ?? null;
+    const across = r.intervalMm * (r.pattern === 'zigzag' ? 2 : 1);
+    const text =
+      `One period cell, ${formatLenUnit(period, u, 'fine')} along the feed (right) by ${formatLenUnit(across, u, 'fine')} across (down); ` +
+      `blue the lowest, orange the highest: Sz = ${formatRoughness(areal.areal === null ? null : areal.areal.Sz, u)} apart.`;
+    if (this.scale.textContent !== text) this.scale.textContent = text;
+    if (this.painted === areal) return;
+    this.painted = areal;
+    let low = Number.POSITIVE_INFINITY;
+    let high = Number.NEGATIVE_INFINITY;
+    for (const h of map) {
+      low = Math.min(low, h);
+      high = Math.max(high, h);
+    }
+    const span = high > low ? high - low : 1;
+    const context = this.canvas.getContext('2d');
+    if (context !== null) {
+      const image = context.createImageData(MAP_SIZE, MAP_SIZE);
+      map.forEach((h, k) => {
+        const t = (h - low) / span;
+        image.data.set([29 + t * (245 - 29), 78 + t * (158 - 78), 216 + t * (11 - 216), 255], 4 * k);
+      });
+      context.putImageData(image, 0, 0);
+    }
+  }
+
+  /** The x3p of the question on screen: computed in the worker, saved when its bytes come. */
+  private askX3p(): void {
+    const current = this.answer('marks');
+    if (current === null || this.x3pAsked !== null) return;
+    const r = current.request;
+    const fileName = x3pFileName(r);
+    const request: FinishRequest = { ...r, x3p: { size: X3P_SIZE, fileName, comment: fileName.replace(/\.x3p$/, '') } };
+    this.x3pAsked = request;
+    this.download.disabled = true;
+    this.x3pStatus.textContent = 'Computing the surface in the worker...';
+    this.x3pClient ??= this.clientOf(
+      {
+        onReply: (reply) => this.savedX3p(reply),
+        onRestart: (info) => {
+          if (!info.gaveUp) return;
+          this.x3pAsked = null;
+          this.x3pStatus.textContent = `No x3p: its worker gave up (${info.reason}).`;
+        },
+      },
+      sameFinishRequest,
+    );
+    this.x3pClient.request(request);
+  }
+
+  private savedX3p(reply: FinishReply): void {
+    if (!sameFinishRequest(reply.request, this.x3pAsked)) return;
+    this.x3pAsked = null;
+    this.download.disabled = this.answer('marks') === null;
+    const file = reply.request.x3p;
+    if (!reply.ok || reply.x3p === null || file === undefined) {
+      this.x3pStatus.textContent = reply.ok ? 'No x3p.' : `No x3p: ${reply.errors.map((e) => e.message).join(' ')}`;
+      return;
+    }
+    const url = URL.createObjectURL(new Blob([reply.x3p as BlobPart], { type: 'application/zip' }));
+    const link = document.createElement('a');
+    link.href = url;
+    link.download = file.fileName;
+    document.body.append(link);
+    link.click();
+    link.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 10_000);
+    this.x3pStatus.textContent = `Saved ${file.fileName}: ${file.size} x ${file.size} heights over one period cell.`;
+  }
+}

@@ -1,0 +1,144 @@
+/**
+ * The finish on the page (issue 29), one page load for the file: flutes and fz typed as a user
+ * types them give hf, Sa and fz* equal to the core's finishReport to the digits shown; "use the
+ * balanced feed" makes hf read as h; a bad fz is one line naming its limit in the unit, the
+ * step-over kept; a cylinder is refused in one line (no number); the x3p download is a zip of one
+ * cell's 256 x 256 heights named by the question; a Fusion 360 tool's NOF fills the flutes. Every
+ * status read is polled.
+ */
+import { readFileSync } from 'node:fs';
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { finishReport } from '../../src/core/finish/index';
+import { forwardInput } from '../../src/core/input/validate';
+import { formatLenUnit, formatRoughness } from '../../src/ui/format';
+import { solve } from '../../src/worker/jobs/solve';
+import { typeInto, useSite } from './harness';
+
+const site = useSite('finish');
+const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
+const QUERY = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm';
+
+/** The core's answer at the page's question (one-way, h 0.05 mm, 4 teeth, fz 0.1 mm). */
+function expected() {
+  const reply = solve({ mode: 'forward', input: forwardInput(TOOL, 'one-way', 0.05) });
+  if (!reply.ok) throw new Error('plane');
+  const finish = { flutes: 4, feedPerToothMm: 0.1, runoutMm: 0, runoutPhaseDeg: 0, passPhase: 0 };
+  return { report: finishReport(TOOL, 'one-way', reply.exact.intervalMm, finish), L: reply.exact.intervalMm };
+}
+
+const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent()) ?? '';
+
+async function commit(page: Page, id: string, value: string): Promise<void> {
+  await typeInto(page, id, value);
+  await page.keyboard.press('Enter');
+}
+
+describe('the finish box', () => {
+  let page: Page;
+  let errors: string[];
+  const core = expected();
+
+  it('typed flutes and fz give hf, Sa and fz* as the core computes them, to the digits shown', async () => {
+    ({ page, errors } = await site.open(QUERY));
+    await expect.poll(() => page.getByTestId('finish-results').isHidden()).toBe(true);
+    await commit(page, 'input-flutes', '4');
+    await commit(page, 'input-fz', '0.1');
+    const m = core.report.feedMarks;
+    await expect.poll(() => text(page, 'finish-hf'), { timeout: 20_000 }).toBe(formatRoughness(m.height, 'mm'));
+    // The areal parameters come from a worker of their own, after the feed marks.
+    await expect
+      .poll(() => text(page, 'finish-sa'), { timeout: 20_000 })
+      .toBe(formatRoughness(core.report.areal.Sa, 'mm'));
+    expect(await text(page, 'finish-balanced')).toBe(formatLenUnit(m.balancedFz, 'mm', 'fine'));
+    // The cell's height map: painted (blue to orange), its scale in words.
+    await expect
+      .poll(() => text(page, 'finish-map-scale'))
+      .toContain(`Sz = ${formatRoughness(core.report.areal.Sz, 'mm')} apart`);
+    const colours = await page.getByTestId('finish-map-image').evaluate((c: HTMLCanvasElement) => {
+      const d = c.getContext('2d')?.getImageData(0, 0, c.width, c.height).data ?? new Uint8ClampedArray();
+      const seen = new Set<number>();
+      for (let k = 0; k < d.length; k += 4) seen.add(((d[k] ?? 0) << 16) | ((d[k + 1] ?? 0) << 8) | (d[k + 2] ?? 0));
+      return seen.size;
+    });
+    expect(colours).toBeGreaterThan(20);
+    expect(await text(page, 'finish-areal-Sz')).toBe(formatRoughness(core.report.areal.Sz, 'mm'));
+    expect(await text(page, 'finish-areal-Sku')).toBe(core.report.areal.Sku.toFixed(4));
+    // The link carries the teeth and the feed.
+    await expect.poll(() => new URL(page.url()).searchParams.get('fz')).toBe('0.1');
+    expect(new URL(page.url()).searchParams.get('z')).toBe('4');
+  });
+
+  it('"use the balanced feed" sets fz to fz*: hf then reads as the scallop h', async () => {
+    await page.getByTestId('use-balanced-feed').click();
+    await expect.poll(() => page.getByTestId('input-fz').inputValue()).not.toBe('0.1');
+    const h = formatRoughness(0.05, 'mm');
+    await expect.poll(() => text(page, 'finish-h'), { timeout: 20_000 }).toBe(h);
+    await expect.poll(() => text(page, 'finish-hf'), { timeout: 20_000 }).toBe(h);
+  });
+
+  it('a bad fz is one line naming its limit in the unit; the step-over and the other fields stay', async () => {
+    await commit(page, 'input-fz', '5');
+    await expect
+      .poll(() => text(page, 'finish-message'), { timeout: 20_000 })
+      .toBe('Feed per tooth fz must be at most the tool radius R = 3 mm (got 5).');
+    expect(await text(page, 'finish-hf')).toBe('\u2014');
+    expect(await text(page, 'result-exact-interval')).toMatch(/\d/);
+    expect(await page.getByTestId('input-flutes').inputValue()).toBe('4');
+  });
+
+  it('on a cylinder the finish is refused in one line, no number', async () => {
+    await commit(page, 'input-fz', '0.1');
+    await page.locator('input[name="surface"][value="convex"]').check();
+    await expect
+      .poll(() => text(page, 'finish-message'), { timeout: 20_000 })
+      .toMatch(/^Feed marks are not computed on cylinders yet: only on a plane/);
+    expect(await text(page, 'finish-hf')).toBe('\u2014');
+    expect(await text(page, 'finish-areal-Sa')).toBe('\u2014');
+  });
+
+  it('downloads the x3p of one cell: a zip, 256 x 256 float64 heights, named by the question', async () => {
+    await page.locator('input[name="surface"][value="plane"]').check();
+    await expect
+      .poll(() => text(page, 'finish-hf'), { timeout: 20_000 })
+      .toBe(formatRoughness(core.report.feedMarks.height, 'mm'));
+    const button = page.getByTestId('download-x3p');
+    await expect.poll(() => button.isEnabled()).toBe(true);
+    const downloaded = page.waitForEvent('download');
+    await button.click();
+    const download = await downloaded;
+    expect(download.suggestedFilename()).toMatch(/^finish_R3_Rcr1_rho5_tilt0_one-way_L[\d.]+_z4_fz0\.1_mm\.x3p$/);
+    const bytes = readFileSync(await download.path());
+    expect([...bytes.subarray(0, 4)]).toEqual([0x50, 0x4b, 0x03, 0x04]);
+    expect(bytes.length).toBeGreaterThan(256 * 256 * 8);
+    expect(bytes.length).toBeLessThan(256 * 256 * 8 + 20_000);
+    await expect.poll(() => text(page, 'x3p-status')).toMatch(/^Saved finish_.*\.x3p: 256 x 256 heights/);
+    expect(errors).toEqual([]);
+  });
+
+  it("a Fusion 360 tool's NOF gives the flutes", async () => {
+    const library = {
+      data: [
+        {
+          type: 'bull nose end mill',
+          unit: 'millimeters',
+          description: 'D6 R1 3FL',
+          geometry: { DC: 6, RE: 1, NOF: 3 },
+        },
+      ],
+      version: 16,
+    };
+    await page.locator('[data-testid="tool-shelf"] summary').click();
+    await page.getByTestId('tool-library-import').setInputFiles({
+      name: 'shop.json',
+      mimeType: 'application/json',
+      buffer: Buffer.from(JSON.stringify(library)),
+    });
+    const list = page.getByTestId('library-tools');
+    await list.waitFor();
+    await list.selectOption({ label: 'D6 R1 3FL: D 6 mm, corner R 1 mm, 3 flutes' });
+    await expect.poll(() => page.getByTestId('input-flutes').inputValue()).toBe('3');
+    await expect.poll(() => new URL(page.url()).searchParams.get('z')).toBe('3');
+    expect(errors).toEqual([]);
+  });
+});

@@ -1,0 +1,162 @@
+/**
+ * The worker's `finish` job (src/worker/jobs/finish.ts) and the page's finish question
+ * (src/ui/finishRequest.ts finishAsk): the job answers exactly the core's finishReport for the
+ * validated finish, words each bad value in the request's unit on its field (quoting it as typed),
+ * refuses runout with the core's one line while the core does, and writes the x3p of one cell;
+ * the page asks nothing without teeth or feed and refuses, in one line, every surface where feed
+ * marks are not computed (never a continuous answer).
+ */
+import { describe, expect, it } from 'vitest';
+import { finishReport, RUNOUT_NOT_YET } from '../../src/core/finish/index';
+import { forwardInput } from '../../src/core/input/validate';
+import { type FinishInputs, finishAsk } from '../../src/ui/finishRequest';
+import type { FinishRequest } from '../../src/worker/finishProtocol';
+import { finish } from '../../src/worker/jobs/finish';
+import { solve } from '../../src/worker/jobs/solve';
+import type { PageReply } from '../../src/worker/pageProtocol';
+
+const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
+
+function inputs(values: Partial<FinishInputs['values']>, unit: 'mm' | 'in' = 'mm'): FinishInputs {
+  const all = {
+    flutes: undefined,
+    fz: undefined,
+    runout: undefined,
+    runoutPhase: undefined,
+    passPhase: undefined,
+    ...values,
+  };
+  const typed = Object.fromEntries(Object.entries(all).map(([k, v]) => [k, v === undefined ? '' : String(v)]));
+  return {
+    given: Object.values(all).some((v) => v !== undefined),
+    values: all,
+    typed: typed as FinishInputs['typed'],
+    unit,
+  };
+}
+
+const plane = solve({ mode: 'forward', input: forwardInput(TOOL, 'one-way', 0.05) }) as PageReply;
+
+function asked(i: FinishInputs, reply: PageReply = plane): FinishRequest {
+  const a = finishAsk(i, reply);
+  if (a.kind !== 'ask') throw new Error(`not asked: ${JSON.stringify(a)}`);
+  return a.request;
+}
+
+describe('the finish job', () => {
+  it("answers the core's finishReport at the answer's step-over, part by part (4 teeth, fz 0.1 mm, one-way)", () => {
+    const request = asked(inputs({ flutes: 4, fz: 0.1 }));
+    if (!plane.ok || !('exact' in plane)) throw new Error('plane');
+    expect(request.intervalMm).toBe(plane.exact.intervalMm);
+    expect(request.scallopMm).toBe(plane.exact.cuspHeightMm);
+    const marks = finish(request);
+    const areal = finish({ ...request, part: 'areal' });
+    if (!marks.ok || !areal.ok) throw new Error('refused');
+    const core = finishReport(TOOL, 'one-way', plane.exact.intervalMm, {
+      flutes: 4,
+      feedPerToothMm: 0.1,
+      runoutMm: 0,
+      runoutPhaseDeg: 0,
+      passPhase: 0,
+    });
+    expect([marks.feedMarks, marks.areal]).toEqual([core.feedMarks, null]);
+    expect([areal.feedMarks, areal.areal]).toEqual([null, core.areal]);
+    // With the areal parameters, the cell's height map the page paints: its sampled range within Sz.
+    const map = areal.map ?? new Float32Array();
+    expect(map.length).toBe(256 * 256);
+    const range = Math.max(...map) - Math.min(...map);
+    expect(range).toBeLessThanOrEqual(core.areal.Sz * (1 + 1e-6));
+    expect(range).toBeGreaterThan(0.95 * core.areal.Sz);
+    expect(marks.map).toBeNull();
+    expect(marks.request).toBe(request);
+    expect(marks.x3p).toBeNull();
+  });
+
+  it('words a bad value on its field in the unit of the request, quoting it as typed; others valid', () => {
+    const r = asked(inputs({ flutes: 4, fz: 5 * 25.4 }, 'in'));
+    const reply = finish({ ...r, typed: { ...r.typed, fz: '5' } });
+    expect(reply.ok).toBe(false);
+    if (reply.ok) return;
+    expect(reply.errors).toEqual([
+      {
+        field: 'fz',
+        message: expect.stringMatching(
+          /^Feed per tooth fz must be at most the tool radius R = 0\.11811 in \(got 5\)\.$/,
+        ),
+      },
+    ]);
+    const fractional = finish(asked(inputs({ flutes: 2.5, fz: 0.1 })));
+    expect(!fractional.ok && fractional.errors.map((e) => e.field)).toEqual(['flutes']);
+  });
+
+  it("refuses runout with the core's one line while the core does not compute it", () => {
+    for (const part of ['marks', 'areal'] as const) {
+      const reply = finish({ ...asked(inputs({ flutes: 2, fz: 0.1, runout: 0.005 })), part });
+      expect(!reply.ok && reply.errors, part).toEqual([{ field: 'runout', message: RUNOUT_NOT_YET }]);
+    }
+  });
+
+  it('writes the x3p of one cell when asked: a zip of 256 x 256 float64 heights', () => {
+    const r = asked(inputs({ flutes: 4, fz: 0.1 }));
+    const reply = finish({ ...r, x3p: { size: 256, fileName: 'f.x3p', comment: 'f' } });
+    if (!reply.ok || reply.x3p === null) throw new Error('no x3p');
+    expect([...reply.x3p.slice(0, 4)]).toEqual([0x50, 0x4b, 0x03, 0x04]);
+    expect(reply.x3p.length).toBeGreaterThan(256 * 256 * 8);
+    expect(reply.x3p.length).toBeLessThan(256 * 256 * 8 + 20_000);
+  });
+});
+
+describe("the page's finish question", () => {
+  it('asks nothing without teeth or feed, and nothing of a refused answer', () => {
+    expect(finishAsk(inputs({}), plane)).toEqual({ kind: 'none' });
+    expect(finishAsk(inputs({ flutes: 4, fz: 0.1 }), null)).toEqual({ kind: 'none' });
+  });
+
+  it('refuses a cylinder in one line (never the continuous answer)', () => {
+    const cylinder = solve({
+      mode: 'forward',
+      input: forwardInput(TOOL, 'one-way', 0.05, { kind: 'cylinder', radiusMm: 50, axis: 'feed' }),
+    }) as PageReply;
+    expect(finishAsk(inputs({ flutes: 4, fz: 0.1 }), cylinder)).toEqual({
+      kind: 'refused',
+      message: expect.stringMatching(/^Feed marks are not computed on cylinders yet: only on a plane/),
+    });
+  });
+});
+
+describe("the page's finish question beyond the five-axis plane", () => {
+  const teeth = inputs({ flutes: 4, fz: 0.1 });
+  /** A three-axis answer as the worker gives it, with only the parts the finish reads. */
+  const threeAxis = (surface: 'plane' | 'revolution') =>
+    ({
+      ok: true,
+      request: {
+        mode: 'three-axis',
+        input: { surface, case: { toolRadiusMm: 3, cornerRadiusMm: 1 } },
+      },
+      answer: { leadDeg: 12, tiltDeg: -3, cuspHeightMm: 0.01, intervalMm: 1.5, noScallop: false },
+    }) as unknown as PageReply;
+
+  it('asks the sloped plane at its equivalent posture, one-way, at its step-over and cusp', () => {
+    const a = finishAsk(teeth, threeAxis('plane'));
+    expect(a.kind === 'ask' && a.request).toMatchObject({
+      tool: { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 12, tiltAngleDeg: -3 },
+      pattern: 'one-way',
+      intervalMm: 1.5,
+      scallopMm: 0.01,
+      part: 'marks',
+    });
+  });
+
+  it('refuses waterline on a surface of revolution and a doubly curved point in one line', () => {
+    expect(finishAsk(teeth, threeAxis('revolution'))).toEqual({
+      kind: 'refused',
+      message: expect.stringMatching(/^Feed marks are not computed on waterline passes on surfaces of revolution yet/),
+    });
+    const curved = { ok: true, request: { mode: 'curved-forward' } } as unknown as PageReply;
+    expect(finishAsk(teeth, curved)).toEqual({
+      kind: 'refused',
+      message: expect.stringMatching(/^Feed marks are not computed on doubly curved points yet/),
+    });
+  });
+});
