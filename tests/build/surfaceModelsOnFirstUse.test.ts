@@ -11,15 +11,6 @@ import { describe, expect, it, vi } from 'vitest';
 import { siteSources } from '../../src/build/siteSources';
 import { chainTo, staticClosure } from '../../src/build/staticGraph';
 import type { DoublyCurvedSurface } from '../../src/core/domain/surface';
-import { doublyCurvedModel } from '../../src/core/surfaces/models/doublyCurved';
-import {
-  findSurfaceModel,
-  loadSurfaceModel,
-  registerSurfaceModel,
-  SURFACE_KINDS,
-  surfaceKinds,
-  surfaceModel,
-} from '../../src/core/surfaces/registry';
 
 vi.mock(
   '../../src/core/surfaces/models/loadedAtOnce',
@@ -49,6 +40,12 @@ describe('the doubly curved model on first use (the site)', () => {
   });
 
   it('refuses a synchronous lookup before the load, answers as the model itself after it, and keeps the kinds', async () => {
+    // Fresh modules: the Node project shares modules between files (isolate: false), and another
+    // file may have loaded the registry with Node's models already.
+    vi.resetModules();
+    const { doublyCurvedModel } = await import('../../src/core/surfaces/models/doublyCurved');
+    const { findSurfaceModel, loadSurfaceModel, registerSurfaceModel, SURFACE_KINDS, surfaceKinds, surfaceModel } =
+      await import('../../src/core/surfaces/registry');
     expect(SURFACE_KINDS).toEqual(['plane', 'cylinder', 'doublyCurved']);
     expect(surfaceKinds()).toEqual(['plane', 'cylinder', 'doublyCurved']);
     expect(() => surfaceModel(SURFACE)).toThrow(/loadSurfaceModel\("doublyCurved"\)/);
