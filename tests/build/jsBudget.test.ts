@@ -11,8 +11,10 @@
  * (src/build/threeFeatures.ts: render targets, textures other than the DFG table's, the renderer's API
  * beyond what the page calls, serialisation, raycasting, the output pass, uniform buffer objects,
  * other materials' uniform refreshes, dead switches' prefix lines, class methods nothing names;
- * 98.6 -> 77.1 kB); the page's and the core's own code is about 130 kB. kB here are 1024 bytes, as
- * bench:web prints them.
+ * 98.6 -> 77.1 kB); the page's and the core's own code is about 130 kB. Then issue 28's last views
+ * and the machine options (+1 kB) and issue 29's surface the teeth leave (+18 kB in all, all of it
+ * loaded on first use but its five fields and their seam, +1.1 kB to the first result): 59.5 and
+ * 231.9 kB. kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -26,10 +28,10 @@ const KB = 1024;
 describe('the JavaScript budget of the built site', () => {
   const sizes = jsSizes(siteFiles(DIST), readFileSync(`${DIST}/index.html`, 'utf8'), gzip9);
 
-  it('the first result (page and worker, their static imports) is at most 58.0 kB gzip (the ratchet; the target, 60, is met)', () => {
+  it('the first result (page and worker, their static imports) is at most 59.6 kB gzip (the ratchet; the target, 60, is met)', () => {
     expect(sizes.firstResult.some((p) => p.startsWith('assets/index-'))).toBe(true);
     expect(sizes.firstResult.some((p) => p.startsWith('assets/solver.worker-'))).toBe(true);
-    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(58.0);
+    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.6);
   });
 
   it('counts every .js file the build emits: the chunks, the service worker and embed.js', () => {
@@ -38,7 +40,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 212.5 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(212.5);
+  it('all of it, every .js file, is at most 232.0 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(232.0);
   });
 });
