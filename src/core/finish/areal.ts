@@ -43,18 +43,33 @@ const MAX_SPLITS = 120;
 /** Panels graded towards each cusp: widths halving 12 times. */
 const GRADING = 12;
 
+/**
+ * The passes of a line that can be its lowest somewhere: the lowest pass (passes are ordered by their
+ * lowest point) and those whose lowest point lies below that pass's highest (its crest); the others
+ * stay above it everywhere. All reaching passes when that crest's height is not known.
+ */
+function activePasses(m: ToothModel, row: RowEnvelope, x0: number): number[] {
+  const reaching: number[] = [];
+  for (let i = 0; i < row.passes.length; i++)
+    if ((row.passes[i] as RowEnvelope['passes'][number]).row.reaches) reaching.push(i);
+  if (reaching.length <= 1) return reaching;
+  const first = reaching[0] as number;
+  const P = m.feedPeriodMm;
+  const into = (x: number) => x0 + ((((x - x0) % P) + P) % P);
+  const top = row.passHeightOrNaN(first, into(row.crestXMm(first)));
+  if (Number.isNaN(top)) return reaching;
+  return reaching.filter((i) => (row.passes[i] as RowEnvelope['passes'][number]).row.zStar < top);
+}
+
 /** The breakpoints of a line over one feed period from x0: valleys, crests and crossings of passes. */
 function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
   const P = m.feedPeriodMm;
   const into = (x: number) => x0 + ((((x - x0) % P) + P) % P);
   const breaks = [x0, x0 + P];
-  const n = row.passes.length;
-  for (let i = 0; i < n; i++) {
-    if (!(row.passes[i] as RowEnvelope['passes'][number]).row.reaches) continue;
-    breaks.push(into(row.valleyXMm(i)), into(row.crestXMm(i)));
-  }
+  const active = activePasses(m, row, x0);
+  for (const i of active) breaks.push(into(row.valleyXMm(i)), into(row.crestXMm(i)));
   breaks.sort((a, b) => a - b);
-  if (n > 1) {
+  if (active.length > 1) {
     // Where the lowest pass changes between samples of a piece, the crossing of the two.
     const pieces = breaks.slice();
     for (let k = 0; k + 1 < pieces.length; k++) {
@@ -62,10 +77,10 @@ function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
       const b = pieces[k + 1] as number;
       if (!(b - a > 1e-14 * P)) continue;
       let prevX = a;
-      let prevLow = lowestPass(row, a + 1e-12 * (b - a));
+      let prevLow = lowestPass(row, active, a + 1e-12 * (b - a));
       for (let s = 1; s <= 8; s++) {
         const x = s === 8 ? b - 1e-12 * (b - a) : a + ((b - a) * s) / 8;
-        const low = lowestPass(row, x);
+        const low = lowestPass(row, active, x);
         if (low !== prevLow && low >= 0 && prevLow >= 0) {
           const f = { value: (t: number) => row.passHeightOrNaN(prevLow, t) - row.passHeightOrNaN(low, t) };
           const fa = f.value(prevX);
@@ -82,11 +97,11 @@ function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
   return breaks;
 }
 
-/** Index of the pass lowest at x on the line, -1 when none reaches. */
-function lowestPass(row: RowEnvelope, x: number): number {
+/** Index of the pass (among `active`) lowest at x on the line, -1 when none reaches. */
+function lowestPass(row: RowEnvelope, active: readonly number[], x: number): number {
   let best = Number.POSITIVE_INFINITY;
   let index = -1;
-  for (let i = 0; i < row.passes.length; i++) {
+  for (const i of active) {
     const h = row.passHeightOrNaN(i, x);
     if (h < best) {
       best = h;
@@ -105,56 +120,106 @@ function lineMax(m: ToothModel, y: number): number {
   return max;
 }
 
-/**
- * Integrals over one feed period of the line at y: [s, |s - m|, (s - m)^2, (s - m)^3, (s - m)^4] (mm^k
- * times mm), and the line's maximum. With `mean` NaN only the first is meaningful.
- */
-function lineIntegrals(m: ToothModel, y: number, mean: number): number[] {
+/** One smooth piece of a line: its ends, their heights, and the heights at the rule's nodes. */
+interface Piece {
+  readonly a: number;
+  readonly b: number;
+  readonly ha: number;
+  readonly hb: number;
+  readonly nodes: Float64Array;
+}
+
+/** A line y = const prepared once for both integrals (the mean, then the moments about it). */
+interface Line {
+  readonly row: RowEnvelope;
+  readonly pieces: readonly Piece[];
+}
+
+function piece(row: RowEnvelope, a: number, b: number, ha: number, hb: number): Piece {
+  const c = 0.5 * (a + b);
+  const r = 0.5 * (b - a);
+  const nodes = new Float64Array(ROW_RULE.nodes.length);
+  for (let k = 0; k < nodes.length; k++) nodes[k] = row.heightAt(c + r * (ROW_RULE.nodes[k] as number));
+  return { a, b, ha, hb, nodes };
+}
+
+function prepareLine(m: ToothModel, y: number): Line {
   const row = new RowEnvelope(m, y);
   const x0 = row.passes.length > 0 ? row.valleyXMm(0) : 0;
   const breaks = lineBreaks(m, row, x0);
-  const sums = [0, 0, 0, 0, 0];
-  const addPiece = (a: number, b: number) => {
-    const c = 0.5 * (a + b);
-    const r = 0.5 * (b - a);
-    for (let k = 0; k < ROW_RULE.nodes.length; k++) {
-      const s = row.heightAt(c + r * (ROW_RULE.nodes[k] as number));
-      const w = r * (ROW_RULE.weights[k] as number);
-      sums[0] = (sums[0] as number) + w * s;
-      if (!Number.isNaN(mean)) {
-        const d = s - mean;
-        const d2 = d * d;
-        sums[1] = (sums[1] as number) + w * Math.abs(d);
-        sums[2] = (sums[2] as number) + w * d2;
-        sums[3] = (sums[3] as number) + w * d2 * d;
-        sums[4] = (sums[4] as number) + w * d2 * d2;
-      }
-    }
-  };
+  const pieces: Piece[] = [];
+  let ha = row.heightAt(breaks[0] as number);
   for (let k = 0; k + 1 < breaks.length; k++) {
     const a = breaks[k] as number;
     const b = breaks[k + 1] as number;
     if (!(b > a)) continue;
+    const hb = row.heightAt(b);
+    pieces.push(piece(row, a, b, ha, hb));
+    ha = hb;
+  }
+  return { row, pieces };
+}
+
+/** Adds the integrals of one piece's node heights (see lineIntegrals) to `sums`. */
+function addPiece(p: Piece, mean: number, sums: number[]): void {
+  const r = 0.5 * (p.b - p.a);
+  for (let k = 0; k < p.nodes.length; k++) {
+    const s = p.nodes[k] as number;
+    const w = r * (ROW_RULE.weights[k] as number);
+    sums[0] = (sums[0] as number) + w * s;
+    if (!Number.isNaN(mean)) {
+      const d = s - mean;
+      const d2 = d * d;
+      sums[1] = (sums[1] as number) + w * Math.abs(d);
+      sums[2] = (sums[2] as number) + w * d2;
+      sums[3] = (sums[3] as number) + w * d2 * d;
+      sums[4] = (sums[4] as number) + w * d2 * d2;
+    }
+  }
+}
+
+/**
+ * Integrals over one feed period of the line at y: [s, |s - m|, (s - m)^2, (s - m)^3, (s - m)^4] (mm^k
+ * times mm). With `mean` NaN only the first is meaningful. Lines are prepared once per y (`lines`).
+ * Between breakpoints one pass is lowest and its height monotone (rising from a valley to a crest,
+ * falling after), so s crosses the mean at most once in a piece, where the piece's samples change
+ * sign: there the piece is split (|s - m| has a kink) and each part integrated anew.
+ */
+function lineIntegrals(m: ToothModel, y: number, mean: number, lines: Map<number, Line>): number[] {
+  let line = lines.get(y);
+  if (line === undefined) {
+    line = prepareLine(m, y);
+    lines.set(y, line);
+  }
+  const row = line.row;
+  const sums = [0, 0, 0, 0, 0];
+  for (const p of line.pieces) {
     if (Number.isNaN(mean)) {
-      addPiece(a, b);
+      addPiece(p, mean, sums);
       continue;
     }
-    // Split where s crosses the mean (|s - m| has a kink there).
-    const cuts = [a];
-    let prevX = a;
-    let prevD = row.heightAt(a) - mean;
-    for (let s = 1; s <= 8; s++) {
-      const x = a + ((b - a) * s) / 8;
-      const d = row.heightAt(x) - mean;
+    // The samples in order (ends and nodes): the first sign change brackets the crossing.
+    let prevX = p.a;
+    let prevD = p.ha - mean;
+    let cut = Number.NaN;
+    const c = 0.5 * (p.a + p.b);
+    const r = 0.5 * (p.b - p.a);
+    for (let k = 0; k <= p.nodes.length && Number.isNaN(cut); k++) {
+      const x = k < p.nodes.length ? c + r * (ROW_RULE.nodes[k] as number) : p.b;
+      const d = (k < p.nodes.length ? (p.nodes[k] as number) : p.hb) - mean;
       if (d > 0 !== prevD > 0 && d !== 0 && prevD !== 0) {
         const f = { value: (t: number) => row.heightAt(t) - mean };
-        cuts.push(bracketedRoot(f, prevX, x, prevD, d, 1e-15));
+        cut = bracketedRoot(f, prevX, x, prevD, d, 1e-15);
       }
       prevX = x;
       prevD = d;
     }
-    cuts.push(b);
-    for (let c = 0; c + 1 < cuts.length; c++) addPiece(cuts[c] as number, cuts[c + 1] as number);
+    if (Number.isNaN(cut)) {
+      addPiece(p, mean, sums);
+      continue;
+    }
+    addPiece(piece(row, p.a, cut, p.ha, mean), mean, sums);
+    addPiece(piece(row, cut, p.b, mean, p.hb), mean, sums);
   }
   return sums;
 }
@@ -167,13 +232,14 @@ function integrateY(
   mean: number,
   key: number,
   cusps: readonly number[],
+  lines: Map<number, Line>,
 ): number[] {
   const panel = (lo: number, hi: number) => {
     const c = 0.5 * (lo + hi);
     const r = 0.5 * (hi - lo);
     const out = [0, 0, 0, 0, 0];
     for (let k = 0; k < PANEL_RULE.nodes.length; k++) {
-      const sums = lineIntegrals(m, c + r * (PANEL_RULE.nodes[k] as number), mean);
+      const sums = lineIntegrals(m, c + r * (PANEL_RULE.nodes[k] as number), mean, lines);
       const w = r * (PANEL_RULE.weights[k] as number);
       for (let i = 0; i < 5; i++) out[i] = (out[i] as number) + w * (sums[i] as number);
     }
@@ -255,8 +321,9 @@ export function arealParameters(m: ToothModel): ArealParameters {
   const height = m.crossPeriodMm;
   const area = width * height;
   const cusps = cuspLines(m);
-  const mean = (integrateY(m, 0, height, Number.NaN, 0, cusps)[0] as number) / area;
-  const sums = integrateY(m, 0, height, mean, 2, cusps);
+  const lines = new Map<number, Line>();
+  const mean = (integrateY(m, 0, height, Number.NaN, 0, cusps, lines)[0] as number) / area;
+  const sums = integrateY(m, 0, height, mean, 2, cusps, lines);
   const sa = (sums[1] as number) / area;
   const sq = Math.sqrt(Math.max(0, (sums[2] as number) / area));
   const low = new RowEnvelope(m, 0).floorMm;
