@@ -70,8 +70,8 @@ export class RowEnvelope {
 
   /**
    * The global x of pass `index`'s crest in the period after its valley `valleyXMm(index)`: where the
-   * first events on either side of the section's lowest point are equally high (the right one rises
-   * and the left one falls as x runs over the period), by the shared bracketed root finder; the
+   * first events on either side of the section's lowest point are equally high (one rises and the
+   * other falls as x runs over the period), by the shared bracketed root finder; the
    * shared maximiser where that difference does not change sign (a pass that never meets its
    * levels on one side).
    */
@@ -89,7 +89,10 @@ export class RowEnvelope {
     const b = v + P - 1e-9 * P;
     const fa = f.value(a);
     const fb = f.value(b);
-    if (fa < 0 && fb > 0 && Number.isFinite(fa) && Number.isFinite(fb)) return bracketedRoot(f, a, b, fa, fb, 1e-15);
+    // Near a tip's track the right event can start the period above the left one: the crest is still
+    // where they are equal (the lower one rises to it, the other falls to it).
+    if (fa < 0 !== fb < 0 && fa !== 0 && fb !== 0 && Number.isFinite(fa) && Number.isFinite(fb))
+      return bracketedRoot(f, a, b, fa, fb, 1e-15);
     const end = newSearchEnd();
     maximise({ value: (x) => this.passHeightOrNaN(index, x) }, v, v + P, 16, 1e-13 * P, end);
     return end.x;
