@@ -70,7 +70,10 @@ function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
   const into = (x: number) => x0 + ((((x - x0) % P) + P) % P);
   const breaks = [x0, x0 + P];
   const active = activePasses(m, row, x0);
-  for (const i of active) breaks.push(into(row.valleyXMm(i)), into(row.crestXMm(i)));
+  for (const i of active) {
+    breaks.push(into(row.valleyXMm(i)), into(row.crestXMm(i)));
+    for (const x of row.turnXsMm(i)) breaks.push(into(x));
+  }
   breaks.sort((a, b) => a - b);
   if (active.length > 1) {
     // Where the lowest pass changes between samples of a piece, the crossing of the two.

@@ -5,6 +5,7 @@
  * lowest point, where the bottom's level `(Phi_b + omega x) / pitch` is a whole number. Lengths mm.
  */
 import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
+import { SectionPoint } from './bodySection';
 import { PassRow, passEventMinMm, passEventOrNaNMm, passesAt, passSideEventsMm } from './envelope';
 import type { ToothModel } from './toothModel';
 
@@ -60,12 +61,35 @@ export class RowEnvelope {
    */
   valleyXMm(index: number): number {
     const p = this.passes[index] as PassOnLine;
+    return this.levelXMm(p, p.row.bottom);
+  }
+
+  /**
+   * A global x where a level meets pass `index`'s Phi at a point of its section (the others `fz`
+   * apart): where (psi - omega w + omega x_local) / pitch is a whole number (the one nearest 0).
+   */
+  private levelXMm(p: PassOnLine, at: SectionPoint): number {
     const m = this.m;
-    const b = p.row.bottom;
-    const phiB = b.psi - m.omegaRadPerMm * b.w;
-    // Local x where (phiB + omega x) / pitch is a whole number (the one nearest 0).
-    const xLocal = (-phiB - m.toothPitchRad * Math.round(-phiB / m.toothPitchRad)) / m.omegaRadPerMm;
+    const phi = at.psi - m.omegaRadPerMm * at.w;
+    const xLocal = (-phi - m.toothPitchRad * Math.round(-phi / m.toothPitchRad)) / m.omegaRadPerMm;
     return p.shiftMm + p.sign * xLocal;
+  }
+
+  /**
+   * The global x (one per point, the others `fz` apart) where a level touches pass `index`'s Phi at
+   * its turning points (a vertical axis: PassRow.vertical): there the first event on that side jumps
+   * from the turning point further up, and the line's height may jump.
+   */
+  turnXsMm(index: number): number[] {
+    const p = this.passes[index] as PassOnLine;
+    const out: number[] = [];
+    const at = new SectionPoint();
+    for (const alpha of [p.row.turnRightAlpha, p.row.turnLeftAlpha]) {
+      if (Number.isNaN(alpha)) continue;
+      p.row.section.pointAt(p.row.cw, p.row.cz, alpha, at);
+      out.push(this.levelXMm(p, at));
+    }
+    return out;
   }
 
   /**
