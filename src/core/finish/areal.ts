@@ -46,30 +46,12 @@ const MAX_SPLITS = 120;
 /** Panels graded towards each cusp: widths halving 4 times. */
 const GRADING = 4;
 
-/**
- * The passes of a line that can be its lowest somewhere: the lowest pass (passes are ordered by their
- * lowest point) and those whose lowest point lies below that pass's highest (its crest); the others
- * stay above it everywhere. All reaching passes when that crest's height is not known.
- */
-function activePasses(m: ToothModel, row: RowEnvelope, x0: number): number[] {
-  const reaching: number[] = [];
-  for (let i = 0; i < row.passes.length; i++)
-    if ((row.passes[i] as RowEnvelope['passes'][number]).row.reaches) reaching.push(i);
-  if (reaching.length <= 1) return reaching;
-  const first = reaching[0] as number;
-  const P = m.feedPeriodMm;
-  const into = (x: number) => x0 + ((((x - x0) % P) + P) % P);
-  const top = row.passHeightOrNaN(first, into(row.crestXMm(first)));
-  if (Number.isNaN(top)) return reaching;
-  return reaching.filter((i) => (row.passes[i] as RowEnvelope['passes'][number]).row.zStar < top);
-}
-
 /** The breakpoints of a line over one feed period from x0: valleys, crests and crossings of passes. */
 function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
   const P = m.feedPeriodMm;
   const into = (x: number) => x0 + ((((x - x0) % P) + P) % P);
   const breaks = [x0, x0 + P];
-  const active = activePasses(m, row, x0);
+  const active = row.activePasses();
   for (const i of active) {
     breaks.push(into(row.valleyXMm(i)), into(row.crestXMm(i)));
     for (const x of row.turnXsMm(i)) breaks.push(into(x));

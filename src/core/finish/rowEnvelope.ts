@@ -16,24 +16,69 @@ interface PassOnLine {
   readonly shiftMm: number;
 }
 
-/** The passes that reach a line y = const, ordered by their lowest point (nearest CC path first). */
+/**
+ * The passes that reach a line y = const and can shape it, ordered by their lowest point (nearest CC
+ * path first). The lowest point of a pass at local y (the continuous surface's height there) is a
+ * convex function of y, least on its CC path: on either side of the line it rises with the distance
+ * to the pass. So the passes are prepared nearest first on each side, and a side stops at the first
+ * pass whose lowest point is at or above the crest of the line's lowest pass (the highest that pass
+ * reaches): it and the passes beyond it stay above that pass everywhere and never shape the line.
+ */
 export class RowEnvelope {
   readonly m: ToothModel;
   readonly yMm: number;
   readonly passes: readonly PassOnLine[];
   /** Lowest point of the continuous surface on this line (the least of the passes' contacts), mm. */
   readonly floorMm: number;
+  /** The crest of the lowest pass (its highest point on the line), NaN when unknown, mm. */
+  private readonly topMm: number;
+  /** The crests found so far, by pass. */
+  private readonly crests = new Map<PassOnLine, number>();
 
   constructor(m: ToothModel, yMm: number) {
     this.m = m;
     this.yMm = yMm;
-    const list: PassOnLine[] = [];
+    const sides: Array<Array<[number, 1 | -1, number]>> = [[], []];
     passesAt(m, 0, yMm, (_x, yLocal, sign, shiftMm) => {
-      list.push({ row: new PassRow(m, yLocal), sign, shiftMm });
+      (sides[yLocal >= 0 ? 0 : 1] as Array<[number, 1 | -1, number]>).push([yLocal, sign, shiftMm]);
     });
+    for (const side of sides) side.sort((p, q) => Math.abs(p[0]) - Math.abs(q[0]));
+    const list: PassOnLine[] = [];
+    const build = (c: [number, 1 | -1, number]): PassOnLine => {
+      const p = { row: new PassRow(m, c[0]), sign: c[1], shiftMm: c[2] };
+      list.push(p);
+      return p;
+    };
+    let lowest: PassOnLine | undefined;
+    for (const side of sides) {
+      const first = side[0];
+      if (first === undefined) continue;
+      const p = build(first);
+      if (p.row.reaches && (lowest === undefined || p.row.zStar < lowest.row.zStar)) lowest = p;
+    }
+    this.topMm = lowest === undefined ? Number.NaN : this.passHeightOf(lowest, this.crestOf(lowest));
+    for (const side of sides) {
+      for (let k = 1; k < side.length; k++) {
+        const p = build(side[k] as [number, 1 | -1, number]);
+        if (p.row.zStar >= this.topMm) break;
+      }
+    }
     list.sort((p, q) => p.row.zStar - q.row.zStar);
     this.passes = list;
     this.floorMm = list.length > 0 ? (list[0] as PassOnLine).row.zStar : Number.POSITIVE_INFINITY;
+  }
+
+  /**
+   * The passes that can be the line's lowest somewhere: the lowest reaching pass and those whose
+   * lowest point lies below its crest (all reaching passes when that crest's height is not known).
+   */
+  activePasses(): number[] {
+    const out: number[] = [];
+    for (let i = 0; i < this.passes.length; i++) {
+      const row = (this.passes[i] as PassOnLine).row;
+      if (row.reaches && (out.length === 0 || !(row.zStar >= this.topMm))) out.push(i);
+    }
+    return out;
   }
 
   /** s(x, y) on this line, mm (Infinity where no pass reaches). */
@@ -45,7 +90,10 @@ export class RowEnvelope {
 
   /** The height of one pass alone at x (mm), or NaN where its search stalled (passEventOrNaNMm). */
   passHeightOrNaN(index: number, xMm: number): number {
-    const p = this.passes[index] as PassOnLine;
+    return this.passHeightOf(this.passes[index] as PassOnLine, xMm);
+  }
+
+  private passHeightOf(p: PassOnLine, xMm: number): number {
     return passEventOrNaNMm(this.m, p.row, p.sign * (xMm - p.shiftMm));
   }
 
@@ -100,9 +148,21 @@ export class RowEnvelope {
    * levels on one side).
    */
   crestXMm(index: number): number {
-    const p = this.passes[index] as PassOnLine;
+    return this.crestOf(this.passes[index] as PassOnLine);
+  }
+
+  private crestOf(p: PassOnLine): number {
+    let x = this.crests.get(p);
+    if (x === undefined) {
+      x = this.findCrestXMm(p);
+      this.crests.set(p, x);
+    }
+    return x;
+  }
+
+  private findCrestXMm(p: PassOnLine): number {
     const P = this.m.feedPeriodMm;
-    const v = this.valleyXMm(index);
+    const v = this.levelXMm(p, p.row.bottom);
     const f = {
       value: (x: number) => {
         const [r, l] = passSideEventsMm(this.m, p.row, p.sign * (x - p.shiftMm));
@@ -118,7 +178,7 @@ export class RowEnvelope {
     if (fa < 0 !== fb < 0 && fa !== 0 && fb !== 0 && Number.isFinite(fa) && Number.isFinite(fb))
       return bracketedRoot(f, a, b, fa, fb, 1e-15);
     const end = newSearchEnd();
-    maximise({ value: (x) => this.passHeightOrNaN(index, x) }, v, v + P, 16, 1e-13 * P, end);
+    maximise({ value: (x) => this.passHeightOf(p, x) }, v, v + P, 16, 1e-13 * P, end);
     return end.x;
   }
 }
