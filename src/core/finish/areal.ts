@@ -9,10 +9,12 @@
  * two passes cross; |s - m| has kinks where s crosses m. Those points are found (the crests by the
  * shared maximiser, the crossings by its bracketed root finder) and each smooth piece is integrated
  * by a 12-point Gauss-Legendre rule (20 points change no result by more than 1e-15 relative). The
- * line integrals are integrated over y by adaptive 10-point Gauss-Legendre panels, halved until the
- * disagreements of panels with their halves add up to a relative 1e-7 of the whole (the halves' own
- * error is far below that: against a 1e-9 run the results differ by at most ~1e-8 relative in Sa, Sq
- * and 1e-7 in Ssk, Sku). Each line is prepared once for both integrals (the mean, then the moments).
+ * line integrals are integrated over y by adaptive 10-point Gauss-Legendre panels, graded towards
+ * the cusps between passes and (for the moments) towards the lines where the continuous surface
+ * crosses the mean (where the integral of |s - m| turns like |y - y_m| as the marks shrink), halved
+ * until the disagreements of panels with their halves add up to a relative 1e-7 of the whole, for
+ * the mean, and for Sa and Sq^2 each. Each line is prepared once for both integrals (the mean, then
+ * the moments). Checked in the tests against the continuous profile's Ra, Rq as fz -> 0.
  * The lowest point is the continuous contact on the CC path (no runout); the highest is the largest
  * line maximum over y (the shared maximiser over the cell's width).
  */
@@ -21,6 +23,7 @@ import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
 import { planeInverse } from '../surfaces/exact';
 import { RUNOUT_NOT_YET } from './feedMarks';
 import { gaussLegendre } from './gaussLegendre';
+import { PassRow, passesAt } from './envelope';
 import { RowEnvelope } from './rowEnvelope';
 import type { ToothModel } from './toothModel';
 
@@ -218,7 +221,7 @@ function integrateY(
   a: number,
   b: number,
   mean: number,
-  key: number,
+  keys: readonly number[],
   cusps: readonly number[],
   lines: Map<number, Line>,
 ): number[] {
@@ -241,7 +244,8 @@ function integrateY(
     readonly hi: number;
     readonly left: number[];
     readonly right: number[];
-    readonly err: number;
+    /** |halves - whole| of each watched integral. */
+    readonly diff: number[];
   }
   const make = (lo: number, hi: number, whole: number[]): Panel => {
     const mid = 0.5 * (lo + hi);
@@ -252,7 +256,7 @@ function integrateY(
       hi,
       left,
       right,
-      err: Math.abs((left[key] as number) + (right[key] as number) - (whole[key] as number)),
+      diff: keys.map((k) => Math.abs((left[k] as number) + (right[k] as number) - (whole[k] as number))),
     };
   };
   // Start from panels graded towards each cusp between passes: near it, where a neighbouring pass
@@ -273,15 +277,25 @@ function integrateY(
     const hi = ends[i + 1] as number;
     if (hi > lo) panels.push(make(lo, hi, panel(lo, hi)));
   }
-  const scale = Math.abs(panels.reduce((s, p) => s + (p.left[key] as number) + (p.right[key] as number), 0)) + 1e-300;
+  const scales = keys.map(
+    (k) => Math.abs(panels.reduce((s, p) => s + (p.left[k] as number) + (p.right[k] as number), 0)) + 1e-300,
+  );
+  // A panel's error: the largest of its watched integrals' disagreements, each relative to its whole.
+  const err = (p: Panel) => Math.max(...p.diff.map((d, i) => d / (scales[i] as number)));
   for (let split = 0; split < MAX_SPLITS; split++) {
     let worst = 0;
-    let errSum = 0;
+    let worstErr = 0;
+    const sums = keys.map(() => 0);
     for (let i = 0; i < panels.length; i++) {
-      errSum += (panels[i] as Panel).err;
-      if ((panels[i] as Panel).err > (panels[worst] as Panel).err) worst = i;
+      const p = panels[i] as Panel;
+      for (let k = 0; k < keys.length; k++) sums[k] = (sums[k] as number) + (p.diff[k] as number);
+      const e = err(p);
+      if (e > worstErr) {
+        worstErr = e;
+        worst = i;
+      }
     }
-    if (errSum <= Y_TOL * scale) break;
+    if (sums.every((d, k) => d <= Y_TOL * (scales[k] as number))) break;
     const p = panels[worst] as Panel;
     if (!(p.hi - p.lo > 1e-9 * (b - a))) break;
     const mid = 0.5 * (p.lo + p.hi);
@@ -302,6 +316,38 @@ function cuspLines(m: ToothModel): number[] {
   return [planeInverse(inverseInput(tool, pattern, intervalMm)).halfWidthRightMm];
 }
 
+/** The continuous surface's height on the line y (the least of the passes' lowest points), mm. */
+function floorAt(m: ToothModel, y: number): number {
+  let least = Number.POSITIVE_INFINITY;
+  passesAt(m, 0, y, (_x, yLocal) => {
+    least = Math.min(least, new PassRow(m, yLocal).zStar);
+  });
+  return least;
+}
+
+/**
+ * The lines where the continuous surface crosses the height `mean` in the cell [0, height): as the
+ * feed marks shrink the line integral of |s - m| turns there like |y - y_m|, a kink a panel and its
+ * halves can agree on by chance. Sign changes of the continuous height minus the mean between
+ * `ends` (the profile rises from each CC path to a cusp and falls beyond it), each located by the
+ * shared bracketed root finder.
+ */
+function meanLines(m: ToothModel, ends: readonly number[], mean: number): number[] {
+  const out: number[] = [];
+  const f = { value: (y: number) => floorAt(m, y) - mean };
+  let prevY = ends[0] as number;
+  let prevF = f.value(prevY);
+  for (let i = 1; i < ends.length; i++) {
+    const y = ends[i] as number;
+    const fy = f.value(y);
+    if (fy < 0 !== prevF < 0 && Number.isFinite(fy) && Number.isFinite(prevF))
+      out.push(bracketedRoot(f, prevY, y, prevF, fy, 1e-15));
+    prevY = y;
+    prevF = fy;
+  }
+  return out;
+}
+
 /** The areal parameters of a prepared model over one period cell (see the module comment). */
 export function arealParameters(m: ToothModel): ArealParameters {
   if (m.input.finish.runoutMm > 0) throw new Error(RUNOUT_NOT_YET);
@@ -310,8 +356,11 @@ export function arealParameters(m: ToothModel): ArealParameters {
   const area = width * height;
   const cusps = cuspLines(m);
   const lines = new Map<number, Line>();
-  const mean = (integrateY(m, 0, height, Number.NaN, 0, cusps, lines)[0] as number) / area;
-  const sums = integrateY(m, 0, height, mean, 2, cusps, lines);
+  const mean = (integrateY(m, 0, height, Number.NaN, [0], cusps, lines)[0] as number) / area;
+  const ends = [0, ...cusps.filter((c) => c > 0 && c < height), height];
+  if (m.input.pattern === 'zigzag') ends.push(m.input.intervalMm);
+  ends.sort((p, q) => p - q);
+  const sums = integrateY(m, 0, height, mean, [1, 2], [...cusps, ...meanLines(m, ends, mean)], lines);
   const sa = (sums[1] as number) / area;
   const sq = Math.sqrt(Math.max(0, (sums[2] as number) / area));
   const low = new RowEnvelope(m, 0).floorMm;
