@@ -21,9 +21,9 @@
 import { inverseInput } from '../input/validate';
 import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
 import { planeInverse } from '../surfaces/exact';
+import { PassRow, passesAt } from './envelope';
 import { RUNOUT_NOT_YET } from './feedMarks';
 import { gaussLegendre } from './gaussLegendre';
-import { PassRow, passesAt } from './envelope';
 import { RowEnvelope } from './rowEnvelope';
 import type { ToothModel } from './toothModel';
 
