@@ -155,7 +155,7 @@ describe('identities of the envelope', () => {
     expect(Math.abs(a.meanMm - rough.meanMm)).toBeLessThan(2 * hf);
   });
 
-  it('at fz 3e-5 Sa, Sq meet the continuous profile\'s Ra, Rq within 1e-6 relative (ball, bull-nose, zigzag with tilt)', () => {
+  it("at fz 3e-5 Sa, Sq meet the continuous profile's Ra, Rq within 1e-6 relative (ball, bull-nose, zigzag with tilt)", () => {
     // p(y) <= s(x, y) <= p(y) + d (d the tallest mark), and the means likewise, so |Sa - Ra| and
     // |Sq - Rq| are at most d: here marks on arcs of radius r >= 1 mm, fz^2 / (8 r) ~ 1.1e-10 mm,
     // below 1e-7 of Ra (>= 1.3e-3 mm). What remains is the quadrature's own error.
