@@ -57,6 +57,16 @@ export class PassRow {
    */
   readonly tipAlpha: number;
   readonly tipZ: number;
+  /**
+   * With the axis vertical (lead 0, tilt 0) psi is atan2(y - O_y, w) on the section, so Phi is a
+   * function of w alone, Phi'(w) = -(y - O_y) / (w^2 + (y - O_y)^2) - omega, which vanishes only at
+   * w = +-sqrt(-(y - O_y) / omega - (y - O_y)^2) (for y < O_y): Phi is monotone between those turning
+   * points and w's own turning points (the curve's vertical tangents). `vertical` says so; the polar
+   * angles of the turning points right (w > 0) and left, NaN where there are none.
+   */
+  readonly vertical: boolean;
+  readonly turnRightAlpha: number;
+  readonly turnLeftAlpha: number;
 
   constructor(m: ToothModel, yMm: number) {
     this.section = new BodySection(m, yMm);
@@ -89,6 +99,22 @@ export class PassRow {
       this.reaches && Math.abs(tipGap) <= 1e-14 * m.toolRadiusMm
         ? Math.atan2(this.tipZ - this.cz, tipW - this.cw)
         : Number.NaN;
+    this.vertical = this.reaches && a[0] === 0 && a[1] === 0 && Number.isNaN(this.tipAlpha);
+    const y = this.section.yRel;
+    const w2 = -y / m.omegaRadPerMm - y * y;
+    let right = Number.NaN;
+    let left = Number.NaN;
+    if (this.vertical && w2 > 0) {
+      const wt = Math.sqrt(w2);
+      const zr = this.section.entryZ(wt, below);
+      const zl = this.section.entryZ(-wt, below);
+      if (Number.isFinite(zr)) right = Math.atan2(zr - this.cz, wt - this.cw);
+      if (Number.isFinite(zl)) left = Math.atan2(zl - this.cz, -wt - this.cw);
+      // The left side's angles run below -pi/2 (down to -3 pi / 2).
+      if (left > Math.PI / 2) left -= 2 * Math.PI;
+    }
+    this.turnRightAlpha = right;
+    this.turnLeftAlpha = left;
   }
 }
 
@@ -195,6 +221,8 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
   // Walk to the top, or to the tip when the plane passes through it (an event there).
   const alphaEnd = tipAhead ? tip : dir > 0 ? Math.PI / 2 : -1.5 * Math.PI;
   const throughTip = !Number.isNaN(row.tipAlpha);
+  // Phi's turning point on this side (vertical axis), where a step must end (see PassRow.vertical).
+  const turn = dir > 0 ? row.turnRightAlpha : row.turnLeftAlpha;
   let alpha = -Math.PI / 2;
   copyPoint(bottom, p0);
   let theta = p0.psi;
@@ -224,6 +252,9 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
         alpha1 = alphaEnd;
         delta = Math.abs(alphaEnd - alpha);
         final = true;
+      } else if (dir * (turn - alpha) > 0 && dir * (alpha1 - turn) > 0) {
+        alpha1 = turn;
+        delta = Math.abs(turn - alpha);
       }
       // At the tip psi is undefined: its limit just before it.
       const at = final && tipAhead ? alpha1 - dir * 1e-12 : alpha1;
@@ -253,7 +284,11 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
     grow = 4 * delta;
     const theta1 = theta + wrap(p1.psi - p0.psi);
     const level1 = (theta1 - omega * p1.w - beta) / pitch;
-    const monotone = p0.dw * p1.dw > 0 && 0.5 * omega * Math.min(Math.abs(p0.dw), Math.abs(p1.dw)) > psiRate;
+    // With the axis vertical Phi is monotone while w is and the step stays on one side of the axis
+    // and of Phi's turning point (steps end there).
+    const monotone =
+      p0.dw * p1.dw > 0 &&
+      ((row.vertical && p0.w * p1.w >= 0) || 0.5 * omega * Math.min(Math.abs(p0.dw), Math.abs(p1.dw)) > psiRate);
     const n = Math.floor(Math.max(level, level1));
     const crossed = Math.floor(level) !== Math.floor(level1) || distToInt(level1) <= LEVEL_TOL;
     if (crossed) {

@@ -37,8 +37,10 @@ export function lineExtremes(m: ToothModel, row: RowEnvelope): { low: number; hi
   if (row.passes.length === 0) return { low: Number.POSITIVE_INFINITY, high: Number.POSITIVE_INFINITY, highX: 0 };
   const x0 = row.valleyXMm(0);
   const low = Math.min(row.floorMm, row.heightAt(x0));
-  if (row.passes.length === 1) {
-    const x = row.crestXMm(0);
+  // One pass alone shapes the line (the others stay above its crest): its crest is the highest point.
+  const active = row.activePasses();
+  if (active.length === 1) {
+    const x = row.crestXMm(active[0] as number);
     return { low, high: row.heightAt(x), highX: x };
   }
   const f: Objective = { value: (x) => row.heightAt(x) };

@@ -5,6 +5,7 @@
  * lowest point, where the bottom's level `(Phi_b + omega x) / pitch` is a whole number. Lengths mm.
  */
 import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
+import { SectionPoint } from './bodySection';
 import { PassRow, passEventMinMm, passEventOrNaNMm, passesAt, passSideEventsMm } from './envelope';
 import type { ToothModel } from './toothModel';
 
@@ -15,24 +16,69 @@ interface PassOnLine {
   readonly shiftMm: number;
 }
 
-/** The passes that reach a line y = const, ordered by their lowest point (nearest CC path first). */
+/**
+ * The passes that reach a line y = const and can shape it, ordered by their lowest point (nearest CC
+ * path first). The lowest point of a pass at local y (the continuous surface's height there) is a
+ * convex function of y, least on its CC path: on either side of the line it rises with the distance
+ * to the pass. So the passes are prepared nearest first on each side, and a side stops at the first
+ * pass whose lowest point is at or above the crest of the line's lowest pass (the highest that pass
+ * reaches): it and the passes beyond it stay above that pass everywhere and never shape the line.
+ */
 export class RowEnvelope {
   readonly m: ToothModel;
   readonly yMm: number;
   readonly passes: readonly PassOnLine[];
   /** Lowest point of the continuous surface on this line (the least of the passes' contacts), mm. */
   readonly floorMm: number;
+  /** The crest of the lowest pass (its highest point on the line), NaN when unknown, mm. */
+  private readonly topMm: number;
+  /** The crests found so far, by pass. */
+  private readonly crests = new Map<PassOnLine, number>();
 
   constructor(m: ToothModel, yMm: number) {
     this.m = m;
     this.yMm = yMm;
-    const list: PassOnLine[] = [];
+    const sides: Array<Array<[number, 1 | -1, number]>> = [[], []];
     passesAt(m, 0, yMm, (_x, yLocal, sign, shiftMm) => {
-      list.push({ row: new PassRow(m, yLocal), sign, shiftMm });
+      (sides[yLocal >= 0 ? 0 : 1] as Array<[number, 1 | -1, number]>).push([yLocal, sign, shiftMm]);
     });
+    for (const side of sides) side.sort((p, q) => Math.abs(p[0]) - Math.abs(q[0]));
+    const list: PassOnLine[] = [];
+    const build = (c: [number, 1 | -1, number]): PassOnLine => {
+      const p = { row: new PassRow(m, c[0]), sign: c[1], shiftMm: c[2] };
+      list.push(p);
+      return p;
+    };
+    let lowest: PassOnLine | undefined;
+    for (const side of sides) {
+      const first = side[0];
+      if (first === undefined) continue;
+      const p = build(first);
+      if (p.row.reaches && (lowest === undefined || p.row.zStar < lowest.row.zStar)) lowest = p;
+    }
+    this.topMm = lowest === undefined ? Number.NaN : this.passHeightOf(lowest, this.crestOf(lowest));
+    for (const side of sides) {
+      for (let k = 1; k < side.length; k++) {
+        const p = build(side[k] as [number, 1 | -1, number]);
+        if (p.row.zStar >= this.topMm) break;
+      }
+    }
     list.sort((p, q) => p.row.zStar - q.row.zStar);
     this.passes = list;
     this.floorMm = list.length > 0 ? (list[0] as PassOnLine).row.zStar : Number.POSITIVE_INFINITY;
+  }
+
+  /**
+   * The passes that can be the line's lowest somewhere: the lowest reaching pass and those whose
+   * lowest point lies below its crest (all reaching passes when that crest's height is not known).
+   */
+  activePasses(): number[] {
+    const out: number[] = [];
+    for (let i = 0; i < this.passes.length; i++) {
+      const row = (this.passes[i] as PassOnLine).row;
+      if (row.reaches && (out.length === 0 || !(row.zStar >= this.topMm))) out.push(i);
+    }
+    return out;
   }
 
   /** s(x, y) on this line, mm (Infinity where no pass reaches). */
@@ -44,7 +90,10 @@ export class RowEnvelope {
 
   /** The height of one pass alone at x (mm), or NaN where its search stalled (passEventOrNaNMm). */
   passHeightOrNaN(index: number, xMm: number): number {
-    const p = this.passes[index] as PassOnLine;
+    return this.passHeightOf(this.passes[index] as PassOnLine, xMm);
+  }
+
+  private passHeightOf(p: PassOnLine, xMm: number): number {
     return passEventOrNaNMm(this.m, p.row, p.sign * (xMm - p.shiftMm));
   }
 
@@ -60,25 +109,60 @@ export class RowEnvelope {
    */
   valleyXMm(index: number): number {
     const p = this.passes[index] as PassOnLine;
+    return this.levelXMm(p, p.row.bottom);
+  }
+
+  /**
+   * A global x where a level meets pass `index`'s Phi at a point of its section (the others `fz`
+   * apart): where (psi - omega w + omega x_local) / pitch is a whole number (the one nearest 0).
+   */
+  private levelXMm(p: PassOnLine, at: SectionPoint): number {
     const m = this.m;
-    const b = p.row.bottom;
-    const phiB = b.psi - m.omegaRadPerMm * b.w;
-    // Local x where (phiB + omega x) / pitch is a whole number (the one nearest 0).
-    const xLocal = (-phiB - m.toothPitchRad * Math.round(-phiB / m.toothPitchRad)) / m.omegaRadPerMm;
+    const phi = at.psi - m.omegaRadPerMm * at.w;
+    const xLocal = (-phi - m.toothPitchRad * Math.round(-phi / m.toothPitchRad)) / m.omegaRadPerMm;
     return p.shiftMm + p.sign * xLocal;
   }
 
   /**
+   * The global x (one per point, the others `fz` apart) where a level touches pass `index`'s Phi at
+   * its turning points (a vertical axis: PassRow.vertical): there the first event on that side jumps
+   * from the turning point further up, and the line's height may jump.
+   */
+  turnXsMm(index: number): number[] {
+    const p = this.passes[index] as PassOnLine;
+    const out: number[] = [];
+    const at = new SectionPoint();
+    for (const alpha of [p.row.turnRightAlpha, p.row.turnLeftAlpha]) {
+      if (Number.isNaN(alpha)) continue;
+      p.row.section.pointAt(p.row.cw, p.row.cz, alpha, at);
+      out.push(this.levelXMm(p, at));
+    }
+    return out;
+  }
+
+  /**
    * The global x of pass `index`'s crest in the period after its valley `valleyXMm(index)`: where the
-   * first events on either side of the section's lowest point are equally high (the right one rises
-   * and the left one falls as x runs over the period), by the shared bracketed root finder; the
+   * first events on either side of the section's lowest point are equally high (one rises and the
+   * other falls as x runs over the period), by the shared bracketed root finder; the
    * shared maximiser where that difference does not change sign (a pass that never meets its
    * levels on one side).
    */
   crestXMm(index: number): number {
-    const p = this.passes[index] as PassOnLine;
+    return this.crestOf(this.passes[index] as PassOnLine);
+  }
+
+  private crestOf(p: PassOnLine): number {
+    let x = this.crests.get(p);
+    if (x === undefined) {
+      x = this.findCrestXMm(p);
+      this.crests.set(p, x);
+    }
+    return x;
+  }
+
+  private findCrestXMm(p: PassOnLine): number {
     const P = this.m.feedPeriodMm;
-    const v = this.valleyXMm(index);
+    const v = this.levelXMm(p, p.row.bottom);
     const f = {
       value: (x: number) => {
         const [r, l] = passSideEventsMm(this.m, p.row, p.sign * (x - p.shiftMm));
@@ -89,9 +173,12 @@ export class RowEnvelope {
     const b = v + P - 1e-9 * P;
     const fa = f.value(a);
     const fb = f.value(b);
-    if (fa < 0 && fb > 0 && Number.isFinite(fa) && Number.isFinite(fb)) return bracketedRoot(f, a, b, fa, fb, 1e-15);
+    // Near a tip's track the right event can start the period above the left one: the crest is still
+    // where they are equal (the lower one rises to it, the other falls to it).
+    if (fa < 0 !== fb < 0 && fa !== 0 && fb !== 0 && Number.isFinite(fa) && Number.isFinite(fb))
+      return bracketedRoot(f, a, b, fa, fb, 1e-15);
     const end = newSearchEnd();
-    maximise({ value: (x) => this.passHeightOrNaN(index, x) }, v, v + P, 16, 1e-13 * P, end);
+    maximise({ value: (x) => this.passHeightOf(p, x) }, v, v + P, 16, 1e-13 * P, end);
     return end.x;
   }
 }

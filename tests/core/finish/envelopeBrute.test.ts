@@ -187,6 +187,9 @@ describe('envelope height against the tooth-sweep brute force', () => {
       [0, 1e-4],
       [0, 1e-6],
       [0.034, -1e-5],
+      // Where a level touches Phi's maximum (Phi' = 0 at w = sqrt(|y| / omega - y^2)) to 1e-13 of the
+      // pitch: the walk crept towards it (NOT_CONVERGED) before its steps ended at that turning point.
+      [0.11428594166324424, 1 - 0.0016308419676768215],
     ] as const) {
       const brute = bruteEnvelopeHeightMm(bruteParams(c), x, y, 100).heightMm;
       expect(Math.abs(envelopeHeightMm(m, x, y) - brute), `(${x}, ${y})`).toBeLessThan(1e-9);

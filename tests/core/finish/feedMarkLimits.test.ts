@@ -154,4 +154,23 @@ describe('identities of the envelope', () => {
     expect(a.szMm).toBeGreaterThanOrEqual(rough.rzMm - 1e-12);
     expect(Math.abs(a.meanMm - rough.meanMm)).toBeLessThan(2 * hf);
   });
+
+  it("at fz 3e-5 Sa, Sq meet the continuous profile's Ra, Rq within 1e-6 relative (ball, bull-nose, zigzag with tilt)", () => {
+    // p(y) <= s(x, y) <= p(y) + d (d the tallest mark), and the means likewise, so |Sa - Ra| and
+    // |Sq - Rq| are at most d: here marks on arcs of radius r >= 1 mm, fz^2 / (8 r) ~ 1.1e-10 mm,
+    // below 1e-7 of Ra (>= 1.3e-3 mm). What remains is the quadrature's own error.
+    const fz = 3e-5;
+    for (const [tool, pattern] of [
+      [{ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way'],
+      [{ toolRadiusMm: 3, cornerRadiusMm: 3, leadAngleDeg: 15, tiltAngleDeg: 0 }, 'one-way'],
+      [{ toolRadiusMm: 3, cornerRadiusMm: 3, leadAngleDeg: 0, tiltAngleDeg: 0 }, 'one-way'],
+      [{ toolRadiusMm: 6, cornerRadiusMm: 2, leadAngleDeg: 15, tiltAngleDeg: 10 }, 'zigzag'],
+    ] as const) {
+      const rough = exactRoughnessAtInterval(tool, pattern, planeInverse(inverseInput(tool, pattern, 1)));
+      const a = arealParameters(toothModel({ tool, pattern, intervalMm: 1, finish: finish(2, fz) }));
+      const label = `${JSON.stringify(tool)} ${pattern}`;
+      expect(Math.abs(a.saMm / rough.raMm - 1), label).toBeLessThan(1e-6);
+      expect(Math.abs(a.sqMm / rough.rqMm - 1), label).toBeLessThan(1e-6);
+    }
+  });
 });
