@@ -6,15 +6,20 @@
  * load of the page job, and later ones none (loaded once). The static side (what the first script
  * imports) is tests/build/firstResult.test.ts's.
  */
-import { describe, expect, it } from 'vitest';
-import { forwardInput } from '../../src/core/input/validate';
-import { type Endpoint, expose, type LoadMessage, wrap } from '../../src/worker/rpc';
-import { type WorkerApi, workerApi } from '../../src/worker/workerApi';
+import { describe, expect, it, vi } from 'vitest';
+import type { Endpoint, LoadMessage } from '../../src/worker/rpc';
+import type { WorkerApi } from '../../src/worker/workerApi';
 
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 10, tiltAngleDeg: 0 };
 
 describe("the worker's solvers beyond the plane and the cylinders load on first use", () => {
   it('no load for a plane or a cylinder; one for the first doubly curved question; none after', async () => {
+    // Fresh modules: the Node project shares modules between files (isolate: false), and another
+    // file may have loaded the lazily imported jobs already (then nothing would announce a load).
+    vi.resetModules();
+    const { forwardInput } = await import('../../src/core/input/validate');
+    const { expose, wrap } = await import('../../src/worker/rpc');
+    const { workerApi } = await import('../../src/worker/workerApi');
     const channel = new MessageChannel();
     const loads: LoadMessage[] = [];
     channel.port1.addEventListener('message', (e) => {
