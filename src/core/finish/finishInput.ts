@@ -5,6 +5,7 @@
  * constraint and its limit, in the user's unit). Lengths mm, angles degrees.
  */
 
+import { entryFaultMessage, quotedEntry } from '../input/entryMessages';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../input/units';
 import { parseNumber } from '../input/validate';
 
@@ -108,23 +109,18 @@ export function describeFinishError(e: Omit<FinishError, 'message'>, unit: Lengt
   const value = (v: number) =>
     isLength(e.field) ? `${formatInputNumber(fromMm(v, unit))} ${u}` : formatInputNumber(v);
   const limit = e.limit === undefined ? '' : value(e.limit);
-  const shown = e.got.length > 24 ? `${e.got.slice(0, 21)}...` : e.got;
-  const got = `(got ${shown})`;
+  const got = `(got ${quotedEntry(e.got)})`;
   switch (e.code) {
     case 'missing':
-      return `${label} is missing: enter a number.`;
     case 'not-a-number':
-      return `${label} must be a number (got "${shown}").`;
     case 'not-finite':
-      return `${label} must be a finite number ${got}.`;
+    case 'negative':
+    case 'too-small':
+      return entryFaultMessage(label, e.code, e.got, u, limit);
     case 'not-an-integer':
       return `${label} must be a whole number of teeth from 1 to ${MAX_FLUTES} ${got}.`;
     case 'not-positive':
       return `${label} must be greater than 0 ${isLength(e.field) ? `${u} ` : ''}${got}.`;
-    case 'negative':
-      return `${label} must be 0 ${u} or more ${got}.`;
-    case 'too-small':
-      return `${label} must be at least ${limit} ${got}.`;
     case 'too-large':
       return e.field === 'fz'
         ? `${label} must be at most the tool radius R = ${limit} ${got}.`

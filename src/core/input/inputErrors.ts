@@ -4,6 +4,7 @@
  * that produce these errors are in validate.ts, which re-exports everything here.
  */
 import type { SurfaceAxis } from '../domain/surface';
+import { entryFaultMessage, quotedEntry } from './entryMessages';
 import { FIELDS, type FieldName, isLengthField } from './fields';
 import { MAX_SURFACE_RADIUS_MM, MIN_SURFACE_RADIUS_MM } from './limits';
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from './units';
@@ -130,20 +131,16 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
   const limit =
     e.limit === undefined ? '' : isLengthField(e.field) ? length(e.limit) : `${formatAngleDeg(e.limit)} degrees`;
   const shown = options.typed ?? e.got;
-  const got = `(got ${shown.length > 24 ? `${shown.slice(0, 21)}...` : shown})`;
+  const got = `(got ${quotedEntry(shown)})`;
   switch (e.code) {
     case 'missing':
-      return `${label} is missing: enter a number.`;
     case 'not-a-number':
-      return `${label} must be a number ${got.replace('(got ', '(got "').replace(/\)$/, '")')}.`;
     case 'not-finite':
-      return `${label} must be a finite number ${got}.`;
+    case 'negative':
+    case 'too-small':
+      return entryFaultMessage(label, e.code, shown, u, limit);
     case 'not-positive':
       return `${label} must be greater than 0 ${u} ${got}.`;
-    case 'negative':
-      return `${label} must be 0 ${u} or more ${got}.`;
-    case 'too-small':
-      return `${label} must be at least ${limit} ${got}.`;
     case 'too-large':
       return `${label} must be at most ${limit} ${got}.`;
     case 'out-of-range':
