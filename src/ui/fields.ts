@@ -10,6 +10,7 @@ import type { PassPattern } from '../core/input/validate';
 import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
 import { html } from './dom';
+import { finishGiven } from './finishFields';
 import { LazyQuestionLimits } from './lazyQuestionLimits';
 import type { Machine, Passes } from './machineState';
 import { dragEarly } from './sliderDrag';
@@ -159,6 +160,10 @@ export class FieldsPanel {
   private readonly sides = new Map<RadiusKey, HTMLSelectElement>();
   /** The last state drawn, with its messages (drawn again once the sliders' limits have loaded). */
   private drawn: { state: CalculatorState; messages: ReadonlyMap<FieldKey, string> } | null = null;
+  /** The teeth-and-feed box (a disclosure, closed while its optional fields are empty). */
+  private readonly finishBox: HTMLDetailsElement | null;
+  /** Whether the finish fields held text at the last render (the box opens when they start to). */
+  private finishWasGiven = false;
   /** A doubly curved point's and three-axis machining's slider limits, loaded on the first such state. */
   private readonly limits = new LazyQuestionLimits(() => {
     if (this.drawn !== null) this.render(this.drawn.state, this.drawn.messages);
@@ -173,6 +178,7 @@ export class FieldsPanel {
     const surfaceFields = root.querySelector<HTMLElement>('.surface-fields') ?? container;
     // The teeth and their feed (optional) sit in their own box.
     const finishFields = root.querySelector<HTMLElement>('.finish-fields') ?? container;
+    this.finishBox = root.querySelector<HTMLDetailsElement>('details.finish-inputs');
     const order = [...FORM_ORDER, ...FIELD_KEYS.filter((k) => !FORM_ORDER.includes(k))];
     for (const key of order) {
       const box = SURFACE_KEYS.includes(key) ? surfaceFields : key in FINISH_SHOWN ? finishFields : container;
@@ -280,6 +286,11 @@ export class FieldsPanel {
   render(state: CalculatorState, messages: ReadonlyMap<FieldKey, string>): void {
     this.drawn = { state, messages };
     const ranges = sliderRanges(state, this.limits.for(state));
+    // The teeth-and-feed box opens when its fields come to hold text (a link's z and fz, a library
+    // tool's flutes); the user may close it again, and it stays as they left it while they do.
+    const finishNow = finishGiven(state);
+    if (finishNow && !this.finishWasGiven && this.finishBox !== null) this.finishBox.open = true;
+    this.finishWasGiven = finishNow;
     const forward = state.mode === 'forward';
     const five = state.machine === '5axis';
     const plane = state.surface === 'plane';

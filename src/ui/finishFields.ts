@@ -5,6 +5,8 @@
  * field's is); the limits (whole teeth, fz up to R, runout up to R/10) are the core's, checked in
  * the worker with the finish (jobs/finish.ts). Pure, small: it loads with the first result.
  */
+
+import { entryFaultMessage } from '../core/input/entryMessages';
 import { FIELDS, FINISH_FIELD_IDS, type FieldSpec, type PageFieldKey, urlParamOf } from '../core/input/fields';
 import { parseField } from './fieldText';
 import type { PageFieldError } from './requestTypes';
@@ -34,7 +36,6 @@ export function finishFieldErrors(state: CalculatorState): PageFieldError[] {
     const key = FINISH_KEYS[i] as PageFieldKey;
     const text = state.fields[key].trim();
     if (text === '' || parseField(text) !== null) return [];
-    const shown = text.length > 24 ? `${text.slice(0, 21)}...` : text;
-    return [{ key, message: `${FIELDS[id].label} must be a number (got "${shown}").` }];
+    return [{ key, message: entryFaultMessage(FIELDS[id].label, 'not-a-number', text, '') }];
   });
 }

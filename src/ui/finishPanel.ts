@@ -153,7 +153,7 @@ export class FinishPanel {
     this.download = html('button', { type: 'button', 'data-testid': 'download-x3p', disabled: '' }, 'x3p');
     this.download.addEventListener('click', () => this.askX3p());
     this.x3pStatus = html('span', { class: 'lookup-note', 'data-testid': 'x3p-status', role: 'status' });
-    const heading = html('h3', {}, 'Finish: the feed marks the teeth leave');
+    const heading = html('h2', { class: 'finish-title' }, 'Finish: the feed marks the teeth leave');
     const note = html(
       'p',
       { class: 'lookup-note' },

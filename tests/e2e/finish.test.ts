@@ -42,6 +42,10 @@ describe('the finish box', () => {
   it('typed flutes and fz give hf, Sa and fz* as the core computes them, to the digits shown', async () => {
     ({ page, errors } = await site.open(QUERY));
     await expect.poll(() => page.getByTestId('finish-results').isHidden()).toBe(true);
+    // The optional box is closed while its fields are empty; its summary opens it.
+    const box = page.getByTestId('finish-inputs');
+    expect(await box.getAttribute('open')).toBeNull();
+    await box.locator('summary').click();
     await commit(page, 'input-flutes', '4');
     await commit(page, 'input-fz', '0.1');
     const m = core.report.feedMarks;
@@ -140,5 +144,20 @@ describe('the finish box', () => {
     await expect.poll(() => page.getByTestId('input-flutes').inputValue()).toBe('3');
     await expect.poll(() => new URL(page.url()).searchParams.get('z')).toBe('3');
     expect(errors).toEqual([]);
+  });
+
+  it('a link that carries the teeth and the feed opens their box; the user may close it', async () => {
+    await page.goto(new URL(`${QUERY}&z=4&fz=0.1`, page.url()).href);
+    const box = page.getByTestId('finish-inputs');
+    await expect.poll(() => box.getAttribute('open')).toBe('');
+    await expect
+      .poll(() => text(page, 'finish-hf'), { timeout: 20_000 })
+      .toBe(formatRoughness(core.report.feedMarks.height, 'mm'));
+    await box.locator('summary').click();
+    await expect.poll(() => box.getAttribute('open')).toBeNull();
+    // Closed by the user, it stays closed while the answers come (the results still show the finish).
+    await page.locator('input[name="pattern"][value="zigzag"]').check();
+    await expect.poll(() => page.getByTestId('finish-results').isHidden()).toBe(false);
+    expect(await box.getAttribute('open')).toBeNull();
   });
 });

@@ -103,11 +103,15 @@ describe('three-axis and doubly curved teaching views in headless Chromium', () 
     expect(await view.locator('text.dim-text').allTextContents()).toContain(`L = ${exact.toFixed(4)} mm (arc)`);
     expect(await page.getByTestId('views-stale').isHidden()).toBe(true);
     await keepShot(view, 'view-profile-curved');
-    // The step-through does not draw this question: it says so, and hides its last picture (of other inputs).
+    // The step-through does not draw this question: it says so neutrally (what it solves, where the
+    // point is answered; no warning), and hides its last picture (of other inputs).
     await page.getByRole('tab', { name: /step/i }).first().click();
     await expect
-      .poll(() => page.getByTestId('views-stale').textContent())
-      .toMatch(/plane or a cylinder at a five-axis posture only/);
+      .poll(() => page.getByTestId('views-page-note').textContent())
+      .toMatch(
+        /step by step, solves a plane or a cylinder\. This doubly curved point is answered by the results above/,
+      );
+    expect(await page.getByTestId('views-stale').isHidden()).toBe(true);
     expect(await page.locator('.teaching .tab-panels').isHidden()).toBe(true);
     expect(errors).toEqual([]);
   });
