@@ -71,7 +71,7 @@ export class TeachingLoader {
   /**
    * The inputs changed: the request they ask (null when invalid), and the unit to show.
    * `elsewhere`: the inputs ask a doubly curved or three-axis question, which only some views
-   * draw: what the others say (and what all say instead of "invalid" while the inputs are).
+   * draw: what the others say (invalid inputs are said to be invalid in every mode).
    */
   want(request: PageRequest | null, unit: Unit, typing = false, elsewhere: string | null = null): void {
     this.unit = unit;
@@ -111,13 +111,11 @@ export class TeachingLoader {
         ? null
         : shown.kind === 'invalid' && this.typing
           ? 'Typing: these views follow when you pause or press Enter.'
-          : shown.kind === 'invalid' && this.elsewhere !== null
-            ? this.elsewhere
-            : shown.kind === 'invalid'
-              ? 'Out of date: the inputs are invalid, so these views still show the last valid inputs.'
-              : shown.kind === 'failed'
-                ? "Out of date: the teaching views' solver gave up; change any input to try again."
-                : 'Updating: these views still show the previous inputs.';
+          : shown.kind === 'invalid'
+            ? 'Out of date: the inputs are invalid, so these views still show the last valid inputs.'
+            : shown.kind === 'failed'
+              ? "Out of date: the teaching views' solver gave up; change any input to try again."
+              : 'Updating: these views still show the previous inputs.';
     this.panel?.setStale(text);
   }
 

@@ -6,7 +6,7 @@
  * last picture (of other inputs) hidden. Desktop, one page.
  */
 import { describe, expect, it } from 'vitest';
-import { useSite } from './harness';
+import { typeInto, useSite } from './harness';
 
 const site = useSite('docs/curved-views');
 
@@ -34,6 +34,16 @@ describe('the views of a doubly curved point', { timeout: 60_000 }, () => {
         expect(await note.isVisible(), view).toBe(true);
         expect(await page.locator(`#panel-${view}`).isVisible(), view).toBe(false);
       }
+    }
+    // Invalid inputs (a corner radius above R): every view, the Profile too, says the inputs are
+    // invalid, not that it draws other questions (issue 28 leftover: teaching.ts said the latter).
+    await typeInto(page, 'input-Rcr', '5');
+    await page.keyboard.press('Enter');
+    for (const view of ['profile', 'stepper']) {
+      await page.locator(`#tab-${view}`).click();
+      await expect
+        .poll(() => page.getByTestId('views-stale').textContent(), { message: view })
+        .toMatch(/^Out of date: the inputs are invalid/);
     }
     expect(errors).toEqual([]);
   });
