@@ -65,6 +65,7 @@
     target: 'target',
     view: 'view',
     theme: 'theme',
+    lang: 'lang',
   };
   /** The words of the `theme` attribute (and of the page's `theme=`). */
   const THEMES = ['light', 'dark', 'auto'];

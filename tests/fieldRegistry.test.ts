@@ -294,13 +294,14 @@ describe("the page's URL takes every registry field under its parameter", () => 
         if (id === 'view') expect(parsed.view).toBe(value);
         else if (id === 'present') expect(parsed.present).toBe(value);
         else if (id === 'embed') expect(parsed.embed).toBe(true);
-        else if (id === 'theme')
-          continue; // read by the theme (tests/ui/pageNames.test.ts)
+        else if (id === 'theme' || id === 'lang')
+          continue; // read by the theme (tests/ui/pageNames.test.ts) and the language (tests/ui/i18n/language.test.ts)
         else if (value !== f.values?.[0] || id === 'surfaceAxis' || id === 'unit')
           expect(new URLSearchParams(toSearch(parsed.state)).get(f.url as string), `${id}=${value}`).toBe(value);
       }
-      // view, present: the page says so (app.ts, present.ts); embed: anything else is not embedded; theme: tests/ui/pageNames.test.ts.
-      if (id === 'view' || id === 'present' || id === 'embed' || id === 'theme') continue;
+      // view, present: the page says so (app.ts, present.ts); embed: anything else is not embedded; theme:
+      // tests/ui/pageNames.test.ts; lang: tests/ui/i18n/language.test.ts.
+      if (id === 'view' || id === 'present' || id === 'embed' || id === 'theme' || id === 'lang') continue;
       expect(parseUrl(`?${f.url}=zzz`).notices.join(' '), id).toContain(`${f.url}="zzz" is not`);
     }
   });

@@ -70,10 +70,6 @@ import type { ViewId } from './views/panel';
 /** The teaching views' ids, as the link's `view=` names them (the field registry's; here, so the views' code can load lazily). */
 const VIEW_IDS = FIELDS.view.values.filter((v): v is ViewId => v !== RESULT_VIEW);
 
-/** What the teaching views say while the inputs ask a doubly curved or three-axis question. */
-const ELSEWHERE =
-  'This view draws a plane or a cylinder at a five-axis posture only: it has nothing to show for the inputs on screen (the results above answer them; the Chart and the Profile draw them).';
-
 /** Observes the page from outside (the e2e build's probe); the page itself needs none. */
 export interface AppObserver {
   /** A reply to the inputs on screen was drawn. */
@@ -304,6 +300,19 @@ export class CalculatorApp {
     if (present.notice !== null) notices.push(present.notice);
     if (notices.length > 0) this.notice.show(linkNotice(notices), 0);
     this.change(this.state);
+    // The language (issue 30): the switch's code loads after the first answer is asked (English, the
+    // page as written, needs nothing), a catalogue when its language is chosen; then the words code
+    // writes are redrawn.
+    void import('./i18n/language').then(({ startLanguage }) =>
+      startLanguage(root, this.storage, {
+        changed: () => {
+          this.fields.render(this.state, this.messages);
+          this.draw();
+        },
+        link: (lang) => this.url.setExtra(FIELDS.lang.url, lang),
+        notice: (text) => this.notice.show(linkNotice([text]), 0),
+      }),
+    );
   }
 
   private readonly highlighter: Highlighter;
@@ -396,7 +405,7 @@ export class CalculatorApp {
         : reply?.ok && reply.request.mode === 'three-axis'
           ? equivalentPlaneRequest(reply as ThreeAxisReply)
           : null;
-    this.teaching?.want(request, state.unit, false, this.kind() === 'classic' ? null : ELSEWHERE);
+    this.teaching?.want(request, state.unit, false);
     this.simulation.want(classic, state.unit);
     // The lookup table: a plane's, a cylinder's, a doubly curved point's or three-axis machining's.
     this.lookup.want(request, state.unit);

@@ -11,6 +11,7 @@ import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
 import { html } from './dom';
 import { finishGiven } from './finishFields';
+import { catalogue, fieldWords } from './i18n/words';
 import { LazyQuestionLimits } from './lazyQuestionLimits';
 import type { Machine, Passes } from './machineState';
 import { dragEarly } from './sliderDrag';
@@ -104,7 +105,7 @@ const FINISH_SHOWN = { z: true, fz: true, runout: true, runoutPhase: true, passP
 
 /** A field that is not a length: degrees, or a plain number (a count of teeth, a fraction). */
 function unitlessLabel(key: FieldKey): string {
-  return (FIELDS[fieldOfPageKey(key)] as FieldSpec).kind === 'number' ? '' : 'deg';
+  return (FIELDS[fieldOfPageKey(key)] as FieldSpec).kind === 'number' ? '' : (catalogue()?.degrees ?? 'deg');
 }
 
 /** The fields shown with the surface's switches. */
@@ -257,6 +258,25 @@ export class FieldsPanel {
     return { row, label: labelElement, hint, slider, input, unitLabel, error };
   }
 
+  /**
+   * A field's label, hint and slider name in the language in force (i18n/words.ts; English: the
+   * registry's label and HINTS), the tool size's and the corner radius's as the size is given.
+   */
+  private word(view: FieldView, key: FieldKey, diameter: boolean): void {
+    const words = catalogue();
+    const english = { label: FIELDS[fieldOfPageKey(key)].label, hint: HINTS[key] };
+    let { label, hint } = fieldWords(key, english);
+    if (key === 'R' && diameter) {
+      label = words?.diameter.label ?? DIAMETER_LABEL;
+      hint = words?.diameter.hint ?? DIAMETER_HINT;
+    }
+    if (key === 'Rcr' && diameter) hint = words?.diameter.cornerHint ?? CORNER_HINT_DIAMETER;
+    const slider = `${label}${words?.slider ?? ' slider'}`;
+    if (view.label.textContent !== label) view.label.textContent = label;
+    if (view.hint.textContent !== hint) view.hint.textContent = hint;
+    if (view.slider.getAttribute('aria-label') !== slider) view.slider.setAttribute('aria-label', slider);
+  }
+
   /** A radius's side box (convex, concave, straight), in its field's line. */
   private buildSide(key: RadiusKey, events: FieldEvents): HTMLSelectElement {
     const view = this.fields.get(key);
@@ -323,14 +343,9 @@ export class FieldsPanel {
         view.input.disabled = side === 'straight';
         view.slider.disabled = side === 'straight';
       }
-      view.unitLabel.textContent = isLengthField(key) ? unitSymbol(state.unit) : unitlessLabel(key);
-      if (key === 'R') {
-        const diameter = sizeIsDiameter(state);
-        view.label.textContent = diameter ? DIAMETER_LABEL : FIELDS.R.label;
-        view.hint.textContent = diameter ? DIAMETER_HINT : HINTS.R;
-        view.slider.setAttribute('aria-label', `${view.label.textContent} slider`);
-      }
-      if (key === 'Rcr') view.hint.textContent = sizeIsDiameter(state) ? CORNER_HINT_DIAMETER : HINTS.Rcr;
+      const unitText = isLengthField(key) ? unitSymbol(state.unit) : unitlessLabel(key);
+      if (view.unitLabel.textContent !== unitText) view.unitLabel.textContent = unitText;
+      this.word(view, key, sizeIsDiameter(state));
       if (view.input.value !== state.fields[key]) view.input.value = state.fields[key];
       const r = ranges[key];
       view.slider.min = r.min;

@@ -128,7 +128,7 @@ export interface ParsedUrl {
 }
 
 /** The address parameters that set the page, not the question: they leave a visit "bare". */
-const PAGE_SETTING_PARAMS: ReadonlySet<string> = new Set(['theme', 'present', 'view']);
+const PAGE_SETTING_PARAMS: ReadonlySet<string> = new Set(['theme', 'present', 'view', 'lang']);
 
 /** True when the address asks nothing of the calculator (no parameter beyond the page settings). */
 export function isBareVisit(search: string): boolean {

@@ -60,8 +60,6 @@ export class TeachingLoader {
   private unit: Unit = 'mm';
   /** The inputs are being typed (held back, typing.ts): said instead of "invalid". */
   private typing = false;
-  /** Why these views do not answer the inputs on screen (another kind of question), or null. */
-  private elsewhere: string | null = null;
   private highlighted: ProcedureKey | null = null;
   /** The reply and unit the views show now. */
   private drawn: { reply: PageTeachReply; unit: Unit } | null = null;
@@ -70,13 +68,10 @@ export class TeachingLoader {
 
   /**
    * The inputs changed: the request they ask (null when invalid), and the unit to show.
-   * `elsewhere`: the inputs ask a doubly curved or three-axis question, which only some views
-   * draw: what the others say (invalid inputs are said to be invalid in every mode).
    */
-  want(request: PageRequest | null, unit: Unit, typing = false, elsewhere: string | null = null): void {
+  want(request: PageRequest | null, unit: Unit, typing = false): void {
     this.unit = unit;
     this.typing = typing;
-    this.elsewhere = elsewhere;
     this.fresh.want(request);
     this.schedule();
   }
@@ -140,7 +135,7 @@ export class TeachingLoader {
           'slope' in page
             ? { kind: 'three-axis', data: page, unit: this.unit }
             : { kind: 'curved', data: page, unit: this.unit };
-        this.panel.updatePage(ctx, this.elsewhere ?? '');
+        this.panel.updatePage(ctx);
       } else if (page.reason !== null) this.panel.showMessage(page.reason);
     }
     this.markStale();

@@ -10,6 +10,7 @@ import { readdirSync, readFileSync } from 'node:fs';
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { EMBED_SCRIPT } from '../../src/build/embedAttributes';
 import { FIELDS, URL_PARAMS } from '../../src/core/input/fields';
+import { chooseLang } from '../../src/ui/i18n/langChoice';
 import { parseUrl } from '../../src/ui/state';
 import { parseTheme } from '../../src/ui/themeChoice';
 
@@ -38,6 +39,7 @@ function paramsRead(searches: readonly string[]): Set<string> {
   for (const search of searches) {
     parseUrl(search);
     parseTheme(search);
+    chooseLang(search, null, []);
   }
   return read;
 }
@@ -53,7 +55,7 @@ const LINKS = [
   '?D=6&Rcr=1&rho=5&tilt=3&pattern=zigzag&surfaceRadius=-40&surfaceAxis=cross&target=ra&ra=0.002&unit=in',
   '?R=3&Rcr=1&rho=5&mode=inverse&L=2&feedRadius=50&crossRadius=-80&view=chart&theme=dark&embed=1',
   '?R=3&Rcr=1&machine=3axis&slope=30&passes=waterline&mode=inverse&dz=0.2&feedRadius=40',
-  '?R=3&Rcr=1&machine=3axis&slope=30&rasterAngle=20&mode=inverse&Lxy=0.5&theme=auto',
+  '?R=3&Rcr=1&machine=3axis&slope=30&rasterAngle=20&mode=inverse&Lxy=0.5&theme=auto&lang=de',
 ];
 
 describe('the embed element takes every URL parameter the page reads', () => {
@@ -80,7 +82,7 @@ describe('the embed element takes every URL parameter the page reads', () => {
     expect(embedScriptTables().themes).toEqual([...FIELDS.theme.values]);
   });
 
-  it('the page reads its link only through those readers (parseUrl, parseTheme)', () => {
+  it('the page reads its link only through those readers (parseUrl, parseTheme, chooseLang)', () => {
     const dir = new URL('../../src/ui/', import.meta.url);
     const files = readdirSync(dir, { recursive: true, encoding: 'utf8' }).filter((f) => f.endsWith('.ts'));
     const readers: string[] = [];
@@ -93,6 +95,7 @@ describe('the embed element takes every URL parameter the page reads', () => {
     expect(readers).toEqual([
       'app.ts: const parsed = parseUrl(window.location.search);',
       'app.ts: const theme = parseTheme(window.location.search);',
+      'i18n/language.ts: const search = window.location.search;',
     ]);
   });
 });

@@ -15,8 +15,11 @@
  * and the machine options (+1 kB) and issue 29's surface the teeth leave (+18 kB in all, all of it
  * loaded on first use but its five fields and their seam, +1.1 kB to the first result): 59.5 and
  * 231.9 kB; the finish's faster areal integration (+0.9 kB, on first use) and the teeth-and-feed
- * box as a disclosure (+0.04 kB to the first result): 59.64 and 232.93 kB. kB here are 1024 bytes,
- * as bench:web prints them.
+ * box as a disclosure (+0.04 kB to the first result): 59.64 and 232.93 kB. Then issue 30's languages:
+ * the Japanese and German catalogues and the switch load when used (+4.9 kB in all); what the first
+ * result carries of them (the field words, the hook that puts the results into the language in
+ * force) is +0.16 kB, less the teaching views' dead 'elsewhere' text: 59.80 and 237.83 kB. kB here
+ * are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -30,10 +33,10 @@ const KB = 1024;
 describe('the JavaScript budget of the built site', () => {
   const sizes = jsSizes(siteFiles(DIST), readFileSync(`${DIST}/index.html`, 'utf8'), gzip9);
 
-  it('the first result (page and worker, their static imports) is at most 59.7 kB gzip (the ratchet; the target, 60, is met)', () => {
+  it('the first result (page and worker, their static imports) is at most 59.9 kB gzip (the ratchet; the target, 60, is met)', () => {
     expect(sizes.firstResult.some((p) => p.startsWith('assets/index-'))).toBe(true);
     expect(sizes.firstResult.some((p) => p.startsWith('assets/solver.worker-'))).toBe(true);
-    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.7);
+    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.9);
   });
 
   it('counts every .js file the build emits: the chunks, the service worker and embed.js', () => {
@@ -42,7 +45,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 233.0 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(233.0);
+  it('all of it, every .js file, is at most 238.0 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(238.0);
   });
 });

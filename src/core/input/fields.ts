@@ -484,6 +484,8 @@ export const FIELDS = {
   ] as const),
   /** Light, dark, or auto (the system's colour scheme, as without it; the embed element resolves it to its host page's). */
   theme: pageSetting('theme', 'Theme', ['light', 'dark', 'auto'] as const),
+  /** The page's language (issue 30): English, Japanese, German; an embed's `lang` attribute. */
+  lang: pageSetting('lang', 'Language', ['en', 'ja', 'de'] as const),
   /** The projector's layout (the 3D scene and the open view fill the screen); the full page only, so no attribute. */
   present: pageSetting('present', 'Presentation mode', ['1'] as const, false),
   // The element sets `embed` itself: no attribute.

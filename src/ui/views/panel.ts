@@ -29,8 +29,6 @@ export class TeachingPanel {
   private ctx: ViewContext | null = null;
   /** A doubly curved or three-axis reply to the inputs on screen, or null (the views show ctx's). */
   private pageCtx: PageViewContext | null = null;
-  /** What the views that do not draw pageCtx's kind say (they keep their last picture, greyed). */
-  private elsewhere = '';
   /** Why the data does not answer the inputs on screen (the loader's word), or null. */
   private staleText: string | null = null;
   private highlighted: ProcedureKey | null = null;
@@ -182,14 +180,13 @@ export class TeachingPanel {
 
   /**
    * A doubly curved point's or three-axis machining's data that answers the inputs on screen: the
-   * views that draw its kind draw it (the visible one now); the others show only `elsewhere`
-   * (their last picture answers other inputs, so it is hidden, not greyed).
+   * views that draw its kind draw it (the visible one now); the others say neutrally what they show
+   * (showPageNote; their last picture answers other inputs, so it is hidden, not greyed).
    */
-  updatePage(ctx: PageViewContext, elsewhere: string): void {
+  updatePage(ctx: PageViewContext): void {
     this.pageCtx = ctx;
     this.equivalent =
       ctx.kind === 'three-axis' && ctx.data.plane !== null ? { data: ctx.data.plane, unit: ctx.unit } : null;
-    this.elsewhere = elsewhere;
     this.message.hidden = true;
     this.root.classList.remove('no-data');
     this.nameTabs();
@@ -213,8 +210,7 @@ export class TeachingPanel {
     const elsewhere = active !== undefined && !this.draws(active);
     // A three-axis question's and a doubly curved point's views say what they show in the neutral
     // line (showPageNote), not here.
-    const neutral = this.pageCtx !== null;
-    const text = this.staleText ?? (elsewhere && !neutral ? this.elsewhere : null);
+    const text = this.staleText;
     this.root.classList.toggle('stale', text !== null);
     this.root.classList.toggle('elsewhere', this.staleText === null && elsewhere);
     this.staleNote.hidden = text === null;

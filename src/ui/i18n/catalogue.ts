@@ -1,0 +1,83 @@
+/**
+ * The shape of a language's catalogue (issue 30): every word the page's chrome, its fields and its
+ * headline show, by key. English is the page itself (index.html's text, the field registry's
+ * labels, fields.ts's hints): it needs no catalogue and costs the first result nothing. Japanese
+ * and German are typed by this shape, so a missing or an extra key fails the type check, and each
+ * loads only when chosen (language.ts). Types only: no code.
+ */
+import type { PageFieldKey } from '../../core/input/fields';
+
+/** The languages of the page: English (the page as written), Japanese, German. */
+export type Lang = 'en' | 'ja' | 'de';
+
+/** The keys of index.html's `data-i18n` elements (tests/ui/i18n/catalogues.test.ts reads the page's). */
+export type StaticKey =
+  | 'title'
+  | 'lede'
+  | 'language'
+  | 'machine'
+  | 'machine5'
+  | 'machine3'
+  | 'unit'
+  | 'inch'
+  | 'sizeAs'
+  | 'sizeD'
+  | 'sizeR'
+  | 'preset'
+  | 'shelf'
+  | 'passes'
+  | 'raster'
+  | 'waterline'
+  | 'solveFor'
+  | 'forward'
+  | 'inverse'
+  | 'given'
+  | 'givenH'
+  | 'givenRa'
+  | 'pattern'
+  | 'oneWay'
+  | 'zigzag'
+  | 'surface'
+  | 'plane'
+  | 'convex'
+  | 'concave'
+  | 'curved'
+  | 'axis'
+  | 'axisFeed'
+  | 'axisCross'
+  | 'finish'
+  | 'downloadTable'
+  | 'shopSheet'
+  | 'copyLink'
+  | 'copyEmbed'
+  | 'present'
+  | 'cameraIso'
+  | 'cameraFeed'
+  | 'cameraTop'
+  | 'rightFlank'
+  | 'leftFlank'
+  | 'contactOffset'
+  | 'cuspHeights';
+
+/** A field's label (with the paper's symbol kept) and the hint under it. */
+export interface FieldWords {
+  readonly label: string;
+  readonly hint: string;
+}
+
+/** One language's words. */
+export interface Catalogue {
+  readonly lang: Exclude<Lang, 'en'>;
+  /** index.html's chrome, by its `data-i18n` keys. */
+  readonly page: Readonly<Record<StaticKey, string>>;
+  /** Each field's label and hint (the paper's symbols kept: L, h, Rcr, rho...). */
+  readonly fields: Readonly<Record<PageFieldKey, FieldWords>>;
+  /** The tool size given as a diameter: its label and hint, and the corner radius's hint then. */
+  readonly diameter: FieldWords & { readonly cornerHint: string };
+  /** The unit word of an angle field ("deg"). */
+  readonly degrees: string;
+  /** A field's slider, named after its field: `${label}${slider}` (English: " slider"). */
+  readonly slider: string;
+  /** The headline's labels. */
+  readonly headline: { readonly stepOver: string; readonly scallopHeight: string };
+}

@@ -1,0 +1,127 @@
+/**
+ * The page's language (issue 30): English, Japanese or German. A link's `lang=` (the field
+ * registry's; an embed's `lang` attribute puts it there) wins; else the language chosen on an
+ * earlier visit (localStorage); else, on a first visit, the browser's first language the page
+ * has; else English. One tap on the switch changes it, remembers it and writes it into the link.
+ * A catalogue loads only when its language is chosen (ja.ts, de.ts); English is the page as
+ * written, its words read from the page itself before any other language replaces them.
+ */
+import type { ToolStorage } from '../savedTools';
+import type { Catalogue, Lang } from './catalogue';
+import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
+import { setCatalogue, catalogue as wordsInForce } from './words';
+
+/** Loads a language's catalogue (null for English). */
+export function loadCatalogue(lang: Lang): Promise<Catalogue | null> {
+  if (lang === 'ja') return import('./ja').then((m) => m.catalogue);
+  if (lang === 'de') return import('./de').then((m) => m.catalogue);
+  return Promise.resolve(null);
+}
+
+/** The page's English words of its `data-i18n` elements, read once before any language replaces them. */
+const ENGLISH = new WeakMap<Element, string>();
+
+/** Writes a catalogue's words (null: English) into the page's `data-i18n` elements and its `lang`. */
+export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): void {
+  for (const element of root.querySelectorAll<HTMLElement>('[data-i18n]')) {
+    if (!ENGLISH.has(element)) ENGLISH.set(element, element.textContent ?? '');
+    const key = element.dataset.i18n as keyof Catalogue['page'];
+    const text = catalogue === null ? ENGLISH.get(element) : catalogue.page[key];
+    if (text !== undefined && element.textContent !== text) element.textContent = text;
+  }
+  document.documentElement.lang = catalogue?.lang ?? 'en';
+  const title = root.querySelector('[data-i18n="title"]')?.textContent;
+  if (title) document.title = title;
+}
+
+/**
+ * The results in the language in force (issue 30): the headline's label in its words, and every
+ * number of the headline, the details and the procedures' table with the locale's decimal sign.
+ * Run after each drawing of the results (words.ts localize); English, the page as written, is left
+ * as drawn. Copy keeps its own text (data-copy, with a point).
+ */
+export function localizeResults(root: ParentNode): void {
+  const words = wordsInForce();
+  if (words === null) return;
+  const label = root.querySelector<HTMLElement>('[data-role="headline-label"]');
+  const named =
+    label?.textContent === 'Step-over L'
+      ? words.headline.stepOver
+      : label?.textContent === 'Scallop height h'
+        ? words.headline.scallopHeight
+        : null;
+  if (label && named !== null) label.textContent = named;
+  for (const e of root.querySelectorAll<HTMLElement>('.headline output, .results .procedures td, .results .pct')) {
+    const text = e.textContent ?? '';
+    const local = localDecimal(text, words);
+    if (local !== text) e.textContent = local;
+  }
+}
+
+/** What the language switch tells the page. */
+export interface LanguageEvents {
+  /** The words changed (a catalogue applied): redraw what code writes. */
+  readonly changed: (lang: Lang) => void;
+  /** The link's `lang=` (null: none). */
+  readonly link: (lang: Lang | null) => void;
+  /** A line for the page's notice (a link's lang= that is not a language). */
+  readonly notice: (text: string) => void;
+}
+
+/**
+ * Starts the page's language: the one the visit asks for (langChoice.ts), kept in the link when the
+ * link gave it, and the switch (`root`'s radios).
+ */
+export function startLanguage(root: HTMLElement, storage: ToolStorage | null, events: LanguageEvents): LanguageSwitch {
+  const search = window.location.search;
+  const chosen = chooseLang(search, storedLanguage(storage), navigator.languages ?? [navigator.language]);
+  if (chosen.fromLink) events.link(chosen.lang);
+  if (chosen.notice !== null) events.notice(chosen.notice);
+  return new LanguageSwitch(root, storage, events, chosen.lang);
+}
+
+/** The language switch (its radios in `root`), the storage it remembers in, and the loads. */
+export class LanguageSwitch {
+  /** The language last asked for: a slower load of an earlier choice never wins. */
+  private wanted: Lang;
+
+  constructor(
+    root: HTMLElement,
+    private readonly storage: ToolStorage | null,
+    private readonly events: LanguageEvents,
+    start: Lang,
+  ) {
+    this.wanted = start;
+    const radios = [...root.querySelectorAll<HTMLInputElement>('input[name="lang"]')];
+    // A tap made while this code was loading stands (the radio is checked already): taken as the user's.
+    const tapped = langOf(radios.find((r) => r.checked && r.value !== 'en')?.value);
+    for (const radio of radios) {
+      radio.checked = radio.value === (tapped ?? start);
+      radio.addEventListener('change', () => {
+        const lang = langOf(radio.value);
+        if (radio.checked && lang !== null) this.choose(lang, true);
+      });
+    }
+    if (tapped !== null) this.choose(tapped, true);
+    else if (start !== 'en') this.choose(start, false);
+  }
+
+  /** Switches to `lang`; `byUser`: remembered and written into the link. */
+  choose(lang: Lang, byUser: boolean): void {
+    this.wanted = lang;
+    if (byUser) {
+      try {
+        this.storage?.setItem(LANGUAGE_KEY, lang);
+      } catch {
+        // A storage that refuses (private mode, full): the choice lasts this visit.
+      }
+      this.events.link(lang === 'en' ? null : lang);
+    }
+    void loadCatalogue(lang).then((catalogue) => {
+      if (this.wanted !== lang) return;
+      setCatalogue(catalogue, localizeResults);
+      applyCatalogue(document, catalogue);
+      this.events.changed(lang);
+    });
+  }
+}

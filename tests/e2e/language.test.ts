@@ -1,0 +1,89 @@
+/**
+ * The page in Japanese and German (issue 30, first step), one phone page as a user holds it: one
+ * tap on the language switch changes the page's words (the chrome, the fields' labels and hints,
+ * the headline), its `lang`, and the numbers' decimal sign (German 2,8872 mm, every digit kept);
+ * German inputs take a decimal comma; Copy keeps the point; the choice is written into the link
+ * and remembered on the next visit; English comes back whole; axe finds nothing in either language.
+ */
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { forwardInput } from '../../src/core/input/validate';
+import { solve } from '../../src/worker/jobs/solve';
+import { axeViolations } from './axe';
+import { keepShot, pageSettled, typeInto, useSite } from './harness';
+
+const site = useSite('language');
+const QUERY = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm';
+const PHONE = { width: 390, height: 844 };
+
+/** The core's step-over at scallop height h (mm), to the page's four decimals. */
+function stepOver(h: number): string {
+  const reply = solve({
+    mode: 'forward',
+    input: forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', h),
+  });
+  if (!reply.ok) throw new Error('plane');
+  return reply.exact.intervalMm.toFixed(4);
+}
+
+const text = async (page: Page, selector: string) => (await page.locator(selector).first().textContent()) ?? '';
+const tap = (page: Page, lang: string) => page.locator(`[data-testid="lang-switch"] input[value="${lang}"]`).check();
+
+describe('the language switch (phone)', () => {
+  let page: Page;
+
+  it('German in one tap: words, lang, a decimal comma in the answer, the link; 0,08 typed', async () => {
+    ({ page } = await site.open(QUERY, PHONE));
+    expect(await page.evaluate(() => document.documentElement.lang)).toBe('en');
+    await tap(page, 'de');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('de');
+    expect(await text(page, '[data-testid="machine-switch"] legend')).toBe('Maschine');
+    expect(await text(page, 'label[for="field-Rcr"]')).toBe('Eckenradius Rcr');
+    expect(await text(page, '#field-rho-hint')).toBe('Neigung des Werkzeugs in Vorschubrichtung');
+    expect(await text(page, '[data-role="headline-label"]')).toBe('Bahnabstand L');
+    await expect
+      .poll(() => text(page, '[data-testid="result-exact-interval"]'))
+      .toBe(`${stepOver(0.05).replace('.', ',')} mm`);
+    // The result bar mirrors the headline, in German too.
+    expect(await text(page, '[data-role="bar-label"]')).toBe('Bahnabstand L');
+    // Copy keeps the point (a CAM field's reader).
+    expect(await page.getByTestId('result-exact-interval').getAttribute('data-copy')).toBe(stepOver(0.05));
+    await expect.poll(() => new URL(page.url()).searchParams.get('lang')).toBe('de');
+    await typeInto(page, 'input-h', '0,08');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="result-exact-interval"]'))
+      .toBe(`${stepOver(0.08).replace('.', ',')} mm`);
+    expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
+    // axe on the page at rest (a view marked out of date while it redraws is greyed on purpose).
+    await pageSettled(page);
+    await keepShot(page, 'language-de-phone', { fullPage: true });
+    expect(await axeViolations(page)).toEqual([]);
+  });
+
+  it('remembered: a bare visit later opens in German', async () => {
+    await page.goto(new URL('./', page.url()).href);
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('de');
+    await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('Bahnabstand L');
+  });
+
+  it('Japanese: its words and a decimal point; English comes back whole, lang= leaves the link', async () => {
+    await tap(page, 'ja');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('ja');
+    expect(await text(page, '[data-testid="machine-switch"] legend')).toBe('機械');
+    expect(await text(page, 'label[for="field-Rcr"]')).toBe('コーナ半径 Rcr');
+    await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('ピックフィード L');
+    expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
+    expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
+    await pageSettled(page);
+    await keepShot(page, 'language-ja-phone', { fullPage: true });
+    expect(await axeViolations(page)).toEqual([]);
+    await tap(page, 'en');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('en');
+    expect(await text(page, '[data-testid="machine-switch"] legend')).toBe('Machine');
+    expect(await text(page, 'label[for="field-Rcr"]')).toBe('Corner radius Rcr');
+    await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('Step-over L');
+    expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
+    await expect.poll(() => new URL(page.url()).searchParams.get('lang')).toBeNull();
+  });
+});

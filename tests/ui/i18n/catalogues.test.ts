@@ -1,0 +1,80 @@
+/**
+ * The catalogues cannot drift (issue 30 point 3): the type check fails on a missing or an extra key
+ * (catalogue.ts); here, the page's `data-i18n` keys are exactly the catalogues' page keys, every
+ * field of the registry that the page shows has its words, and no Japanese or German word is left
+ * in English: a Japanese entry holds Japanese script, and no Latin word beyond the paper's symbols,
+ * names and units; a German entry differs from the English one beside it and uses no English word
+ * from a list of the page's own (step, scallop, tool, feed...).
+ */
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { describe, expect, it } from 'vitest';
+import { PAGE_FIELD_KEYS } from '../../../src/core/input/fields';
+import type { Catalogue } from '../../../src/ui/i18n/catalogue';
+import { catalogue as de } from '../../../src/ui/i18n/de';
+import { catalogue as ja } from '../../../src/ui/i18n/ja';
+
+const HTML = readFileSync(fileURLToPath(new URL('../../../index.html', import.meta.url)), 'utf8');
+/** index.html's data-i18n keys and their English text (the page as written). */
+const ENGLISH = new Map(
+  [...HTML.matchAll(/data-i18n="([^"]+)"[^>]*>([^<]*)</g)].map((m) => [m[1] as string, (m[2] as string).trim()]),
+);
+
+/** Every string of a catalogue, with where it is. */
+function strings(c: Catalogue): Array<[string, string]> {
+  return [
+    ...Object.entries(c.page).map(([k, v]) => [`page.${k}`, v] as [string, string]),
+    ...Object.entries(c.fields).flatMap(([k, w]) => [
+      [`fields.${k}.label`, w.label] as [string, string],
+      [`fields.${k}.hint`, w.hint] as [string, string],
+    ]),
+    ['diameter.label', c.diameter.label],
+    ['diameter.hint', c.diameter.hint],
+    ['diameter.cornerHint', c.diameter.cornerHint],
+    ['degrees', c.degrees],
+    ['slider', c.slider],
+    ['headline.stepOver', c.headline.stepOver],
+    ['headline.scallopHeight', c.headline.scallopHeight],
+  ];
+}
+
+/** Latin words a translation keeps: the paper's symbols and authors, names, units and file kinds. */
+const KEPT = new Set(
+  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya'.split(
+    ' ',
+  ),
+);
+
+/** Entries whose German is the English word too ("Radius R"). */
+const SAME_IN_GERMAN = new Set(['sizeR']);
+
+describe('the catalogues', () => {
+  it("the page's data-i18n keys are the catalogues' page keys, both ways", () => {
+    const keys = [...ENGLISH.keys()].sort();
+    expect(keys.length).toBeGreaterThan(40);
+    expect(Object.keys(ja.page).sort()).toEqual(keys);
+    expect(Object.keys(de.page).sort()).toEqual(keys);
+  });
+
+  it('every field the page shows has its words in each language', () => {
+    for (const c of [ja, de]) expect(Object.keys(c.fields).sort()).toEqual([...PAGE_FIELD_KEYS].sort());
+  });
+
+  it('Japanese: each entry holds Japanese script, and its Latin words are symbols or names only', () => {
+    for (const [where, text] of strings(ja)) {
+      expect(/[\u3040-\u30ff\u4e00-\u9fff]/.test(text), `${where}: ${text}`).toBe(true);
+      for (const word of text.match(/[A-Za-z]+/g) ?? []) expect(KEPT.has(word), `${where}: "${word}"`).toBe(true);
+    }
+  });
+
+  it('German: no entry is the English one, and none uses an English word of the page', () => {
+    const english =
+      /\b(step|over|scallop|height|tool|feed|tooth|teeth|flutes?|lead|tilt|angle|surface|plane|radius of|pass(es)?|one-way|copy|download|sheet|table|along|across|the|and|of|slider|deg|inch)\b/i;
+    for (const [where, text] of strings(de)) {
+      const key = where.replace(/^page\./, '');
+      if (ENGLISH.has(key) && !SAME_IN_GERMAN.has(key))
+        expect(text.toLowerCase(), where).not.toBe(ENGLISH.get(key)?.toLowerCase());
+      expect(english.test(text), `${where}: ${text}`).toBe(false);
+    }
+  });
+});
