@@ -186,6 +186,36 @@ function columnUnitsOf(
   return out;
 }
 
+/**
+ * The layout of a header read without a problem: the columns of `order` it has, echoed in that
+ * order, and the unit each names (`units` by position).
+ */
+function layoutOf(
+  names: readonly string[],
+  units: readonly (LengthUnit | null)[],
+  unit: LengthUnit,
+  index: Partial<Record<InputColumn, number>>,
+  order: readonly InputColumn[],
+  target: InputColumn,
+  threeAxis: boolean,
+): Layout {
+  const echoed = order.flatMap((name) => {
+    const i = index[name];
+    return i === undefined ? [] : [{ name, index: i }];
+  });
+  return {
+    width: names.length,
+    names,
+    echoed,
+    index,
+    target,
+    threeAxis,
+    finish: hasFinish(index),
+    unit,
+    columnUnits: columnUnitsOf(index, units),
+  };
+}
+
 /** Puts column `name` (one of `known`) at `i` in `index`, or says why not: unknown, or given twice. */
 function placeColumn(
   index: Partial<Record<InputColumn, number>>,
@@ -235,26 +265,7 @@ export function parseHeader(
     problems.push(`give one of ${H_COLUMN}, ${RA_COLUMN} and ${L_COLUMN}, not ${given.join(' and ')}`);
   if (missing.length > 0) problems.unshift(`missing ${missing.join(', ')}`);
   if (problems.length > 0) return { ok: false, error: `${rule} (${problems.join('; ')})` };
-  const echoed = INPUT_COLUMNS.flatMap((name) => {
-    const i = index[name];
-    return i === undefined ? [] : [{ name, index: i }];
-  });
-  const target = given[0] as InputColumn;
-  const columnUnits = columnUnitsOf(index, plain.units);
-  return {
-    ok: true,
-    layout: {
-      width: names.length,
-      names,
-      echoed,
-      index,
-      target,
-      threeAxis: false,
-      finish: hasFinish(index),
-      unit,
-      columnUnits,
-    },
-  };
+  return { ok: true, layout: layoutOf(names, plain.units, unit, index, INPUT_COLUMNS, given[0] as InputColumn, false) };
 }
 
 /** A three-axis header (it has a slope column): R, Rcr, h and slope required; no rho needed. */
@@ -285,25 +296,7 @@ function parseThreeAxisHeader(
   const missing = [...THREE_AXIS_ECHOED.slice(0, 4)].filter((c) => index[c] === undefined);
   if (missing.length > 0) problems.unshift(`missing ${missing.join(', ')}`);
   if (problems.length > 0) return { ok: false, error: `${HEADER_RULE} (${problems.join('; ')})` };
-  const echoed = THREE_AXIS_ECHOED.flatMap((name) => {
-    const i = index[name];
-    return i === undefined ? [] : [{ name, index: i }];
-  });
-  const columnUnits = columnUnitsOf(index, units);
-  return {
-    ok: true,
-    layout: {
-      width: names.length,
-      names,
-      echoed,
-      index,
-      target: H_COLUMN,
-      threeAxis: true,
-      finish: hasFinish(index),
-      unit,
-      columnUnits,
-    },
-  };
+  return { ok: true, layout: layoutOf(names, units, unit, index, THREE_AXIS_ECHOED, H_COLUMN, true) };
 }
 
 /** The result columns of a layout: with a target Ra, the scallop height `h` that leaves it comes first. */

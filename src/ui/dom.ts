@@ -9,3 +9,21 @@ export function html<K extends keyof HTMLElementTagNameMap>(
   if (text) e.textContent = text;
   return e;
 }
+
+/**
+ * A term and its value in a details list: `<div><dt>term</dt><dd>value</dd></div>` (the div with
+ * `props`), appended to `list`; returns the div and the dd.
+ */
+export function detailsRow(
+  list: HTMLElement,
+  term: string,
+  value: Node,
+  props: Record<string, string> = {},
+): { row: HTMLDivElement; dd: HTMLElement } {
+  const row = html('div', props);
+  const dd = html('dd');
+  dd.append(value);
+  row.append(html('dt', {}, term), dd);
+  list.append(row);
+  return { row, dd };
+}

@@ -12,23 +12,9 @@ import type { RestartInfo } from '../worker/client';
 import { type FinishReply, type FinishRequest, MAP_SIZE, sameFinishRequest } from '../worker/finishProtocol';
 import type { PageReply } from '../worker/pageProtocol';
 import type { finishClient } from '../worker/workers';
+import { detailsRow, html } from './dom';
 import { type FinishInputs, finishAsk } from './finishRequest';
 import { formatLenUnit, formatRoughness } from './format';
-
-/**
- * An element with attributes and text (dom.ts's `html`, written here: the first result's modules
- * stay out of this later chunk, which would otherwise split them into a shared one).
- */
-function html<K extends keyof HTMLElementTagNameMap>(
-  tag: K,
-  props: Record<string, string> = {},
-  text = '',
-): HTMLElementTagNameMap[K] {
-  const e = document.createElement(tag);
-  for (const [name, value] of Object.entries(props)) e.setAttribute(name, value);
-  e.textContent = text;
-  return e;
-}
 
 /** Points along each side of the x3p download's one cell (the issue's 256 x 256). */
 export const X3P_SIZE = 256;
@@ -116,12 +102,7 @@ export class FinishPanel {
     const row = (label: string, testId: string, title = '') => {
       const out = html('output', { 'data-testid': testId }, NO_VALUE);
       this.outputs.set(testId, out);
-      const div = html('div', title === '' ? {} : { title });
-      const dd = html('dd');
-      dd.append(out);
-      div.append(html('dt', {}, label), dd);
-      list.append(div);
-      return dd;
+      return detailsRow(list, label, out, title === '' ? {} : { title }).dd;
     };
     row('Scallop h (across the feed)', 'finish-h');
     row('Feed marks hf (along the CC path)', 'finish-hf');
@@ -143,11 +124,7 @@ export class FinishPanel {
     for (const [symbol, words] of AREAL) {
       const out = html('output', { 'data-testid': `finish-areal-${symbol}` }, NO_VALUE);
       this.outputs.set(symbol, out);
-      const div = html('div', { title: words });
-      const dd = html('dd');
-      dd.append(out);
-      div.append(html('dt', {}, symbol), dd);
-      areal.append(div);
+      detailsRow(areal, symbol, out, { title: words });
     }
     this.message = html('p', { class: 'finish-message', 'data-testid': 'finish-message', role: 'status' });
     this.download = html('button', { type: 'button', 'data-testid': 'download-x3p', disabled: '' }, 'x3p');

@@ -8,7 +8,7 @@
  */
 import { formatPercent, type LengthUnit, NO_VALUE } from '../core/input/units';
 import type { PageReply } from '../worker/pageProtocol';
-import { html } from './dom';
+import { detailsRow, html } from './dom';
 import { formatLenUnit, formatRoughness } from './format';
 import type { Shown } from './freshness';
 
@@ -31,12 +31,7 @@ export class RoughnessPanel {
     const row = (label: string, testId: string) => {
       const out = html('output', { 'data-testid': testId }, NO_VALUE);
       this.outputs.set(testId, out);
-      const div = html('div');
-      const dd = html('dd');
-      dd.append(out);
-      div.append(html('dt', {}, label), dd);
-      list.append(div);
-      return div;
+      return detailsRow(list, label, out).row;
     };
     row('Rz', 'result-rz');
     row('Ra', 'result-ra');

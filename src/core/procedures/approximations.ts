@@ -131,14 +131,21 @@ function circleHalfInterval(who: string, reffMm: number, h: number): Approximati
   return { ok: true, halfIntervalMm: half, intervalMm: 2 * half };
 }
 
+/** A model that stands in for the tool's profile with a circle of radius Reff (mm). */
+type CircleModel = Approximation<{ readonly effectiveRadiusMm: number }>;
+
 /**
- * A circle's L/2 with its model's radius, built property by property in a spread's key order (an
- * object made by spreading is slow to make and to read in V8).
+ * A circle model's L/2 (Eq. 8) with its radius, or why it has none; built property by property in
+ * a spread's key order (an object made by spreading is slow to make and to read in V8).
  */
-function withRadius(
-  r: Approximation<HalfInterval>,
-  effectiveRadiusMm: number,
+function circleModelHalfInterval(
+  who: string,
+  model: CircleModel,
+  h: number,
 ): Approximation<HalfInterval & { readonly effectiveRadiusMm: number }> {
+  if (!model.ok) return model;
+  const effectiveRadiusMm = model.effectiveRadiusMm;
+  const r = circleHalfInterval(who, effectiveRadiusMm, h);
   if (!r.ok) return r;
   return { ok: true, halfIntervalMm: r.halfIntervalMm, intervalMm: r.intervalMm, effectiveRadiusMm };
 }
@@ -162,16 +169,7 @@ export function sekineHalfInterval(input: ForwardInput): Approximation<HalfInter
 
 /** Redonnet et al.'s `L/2` (Eqs. 9, 8), mm. */
 export function redonnetHalfInterval(input: ForwardInput): Approximation<HalfInterval & RedonnetModel> {
-  const model = redonnetModel(input);
-  if (!model.ok) return model;
-  const r = circleHalfInterval('Redonnet et al.', model.effectiveRadiusMm, input.scallopHeightMm);
-  if (!r.ok) return r;
-  return {
-    ok: true,
-    halfIntervalMm: r.halfIntervalMm,
-    intervalMm: r.intervalMm,
-    effectiveRadiusMm: model.effectiveRadiusMm,
-  };
+  return circleModelHalfInterval('Redonnet et al.', redonnetModel(input), input.scallopHeightMm);
 }
 
 /**
@@ -202,18 +200,20 @@ function circleScallop(who: string, reffMm: number, halfMm: number): Approximati
   return { ok: true, scallopHeightMm: (halfMm * halfMm) / (reffMm + Math.sqrt(reffMm * reffMm - halfMm * halfMm)) };
 }
 
+/** A circle model's scallop height at a step-over L (Eq. 12 at L/2), or why it has none. */
+function circleModelScallop(who: string, model: CircleModel, intervalMm: number): Approximation<ScallopHeight> {
+  if (!model.ok) return model;
+  return circleScallop(who, model.effectiveRadiusMm, intervalMm / 2);
+}
+
 /** Scallop height (mm) Sekine et al.'s circle predicts at a given step-over L (Eq. 12 at L/2). */
 export function sekineScallopHeight(input: InverseInput): Approximation<ScallopHeight> {
-  const model = sekineModel(input);
-  if (!model.ok) return model;
-  return circleScallop('Sekine et al.', model.effectiveRadiusMm, input.intervalMm / 2);
+  return circleModelScallop('Sekine et al.', sekineModel(input), input.intervalMm);
 }
 
 /** Scallop height (mm) Redonnet et al.'s circle predicts at a given step-over L (Eq. 12 at L/2). */
 export function redonnetScallopHeight(input: InverseInput): Approximation<ScallopHeight> {
-  const model = redonnetModel(input);
-  if (!model.ok) return model;
-  return circleScallop('Redonnet et al.', model.effectiveRadiusMm, input.intervalMm / 2);
+  return circleModelScallop('Redonnet et al.', redonnetModel(input), input.intervalMm);
 }
 
 /**
@@ -259,17 +259,12 @@ export function osculatingModel(tool: ToolInput): Approximation<OsculatingModel>
 
 /** `L/2 = sqrt(2 Reff h - h^2)` with the osculating radius at the contact, mm. */
 export function osculatingHalfInterval(input: ForwardInput): Approximation<HalfInterval & OsculatingModel> {
-  const model = osculatingModel(input);
-  if (!model.ok) return model;
-  const r = circleHalfInterval('Osculating circle', model.effectiveRadiusMm, input.scallopHeightMm);
-  return withRadius(r, model.effectiveRadiusMm);
+  return circleModelHalfInterval('Osculating circle', osculatingModel(input), input.scallopHeightMm);
 }
 
 /** Scallop height (mm) the osculating circle predicts at a step-over L: `Reff - sqrt(Reff^2 - (L/2)^2)`. */
 export function osculatingScallopHeight(input: InverseInput): Approximation<ScallopHeight> {
-  const model = osculatingModel(input);
-  if (!model.ok) return model;
-  return circleScallop('Osculating circle', model.effectiveRadiusMm, input.intervalMm / 2);
+  return circleModelScallop('Osculating circle', osculatingModel(input), input.intervalMm);
 }
 
 /** The ball of the corner radius (mm). */
@@ -288,17 +283,12 @@ export function cornerBallModel(tool: ToolInput): Approximation<CornerBallModel>
 
 /** `L/2 = sqrt(2 Rcr h - h^2)`, mm; not applicable for h > Rcr. */
 export function cornerBallHalfInterval(input: ForwardInput): Approximation<HalfInterval & CornerBallModel> {
-  const model = cornerBallModel(input);
-  if (!model.ok) return model;
-  const r = circleHalfInterval('Corner ball', model.effectiveRadiusMm, input.scallopHeightMm);
-  return withRadius(r, model.effectiveRadiusMm);
+  return circleModelHalfInterval('Corner ball', cornerBallModel(input), input.scallopHeightMm);
 }
 
 /** Scallop height (mm) the corner ball predicts at a step-over L: `Rcr - sqrt(Rcr^2 - (L/2)^2)`. */
 export function cornerBallScallopHeight(input: InverseInput): Approximation<ScallopHeight> {
-  const model = cornerBallModel(input);
-  if (!model.ok) return model;
-  return circleScallop('Corner ball', model.effectiveRadiusMm, input.intervalMm / 2);
+  return circleModelScallop('Corner ball', cornerBallModel(input), input.intervalMm);
 }
 
 /**

@@ -130,6 +130,37 @@ function toolOf(values: Collected['values']): ToolInput | null {
   return { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: rho, tiltAngleDeg: tilt };
 }
 
+/** The opening every validation shares: the fields, the tool, the pattern and the surface, checked. */
+interface CheckedPass {
+  readonly c: Collected;
+  readonly tool: ToolInput | null;
+  readonly pattern: PassPattern | null;
+  readonly surface: Surface | null;
+  /** The surface is too tight for the tool (the gouging error is among the errors). */
+  readonly gouges: boolean;
+}
+
+/**
+ * Parses `fields` (the tool's and a problem's own) and checks the tool's rules, then the pattern and
+ * the surface, a surface too tight for the tool included (gouging): the errors of the fields and the
+ * tool in `c.errors`, then those of the pattern and the surface in `rest` (`c.errors` unless given).
+ */
+function checkedPass(
+  raw: RawToolInput & Readonly<Partial<Record<FieldName, unknown>>>,
+  fields: readonly FieldName[],
+  rest?: InputError[],
+): CheckedPass {
+  const c = collect(raw, fields);
+  checkTool(c);
+  const errors = rest ?? c.errors;
+  const pattern = checkPattern(raw.pattern, errors);
+  const surface = checkSurface(raw, errors);
+  const tool = toolOf(c.values);
+  const gouge = tool !== null && surface !== null ? gouging(tool, surface, String(raw.surfaceRadius ?? '')) : null;
+  if (gouge) errors.push(gouge);
+  return { c, tool, pattern, surface, gouges: gouge !== null };
+}
+
 /** The common part of a validation: tool, pattern and surface (gouging included), and one number field, parsed. */
 export interface PassValidation {
   /** The errors so far, at most one per field; the field is only parsed, not checked against its range. */
@@ -153,23 +184,17 @@ export function validatePassAnd(
   raw: RawToolInput & Readonly<Partial<Record<AnyFieldName, unknown>>>,
   field: AnyFieldName,
 ): PassValidation {
-  const c = collect(raw, ['R', 'Rcr', 'rho', 'tilt']);
-  checkTool(c);
+  const rest: InputError[] = [];
+  const { c, tool, pattern, surface, gouges } = checkedPass(raw, ['R', 'Rcr', 'rho', 'tilt'], rest);
   const parsed = parseNumber(raw[field]);
   const own: AnyInputError[] = parsed.ok ? [] : [inputError(field, parsed.code, parsed.shown)];
-  const rest: InputError[] = [];
-  const pattern = checkPattern(raw.pattern, rest);
-  const surface = checkSurface(raw, rest);
-  const tool = toolOf(c.values);
-  const gouge = tool !== null && surface !== null ? gouging(tool, surface, String(raw.surfaceRadius ?? '')) : null;
-  if (gouge) rest.push(gouge);
   const valid = c.errors.length === 0 && rest.length === 0;
   return {
     errors: [...c.errors, ...own, ...rest],
     pass: valid && tool !== null && pattern !== null && surface !== null ? { ...tool, pattern, surface } : null,
     value: parsed.ok ? parsed.value : undefined,
     shown: parsed.shown,
-    gouges: gouge !== null,
+    gouges,
   };
 }
 
@@ -204,15 +229,9 @@ export function maxIntervalMm(tool: ToolInput, pattern: PassPattern, surface: Su
  * empty and non-numeric values are rejected.
  */
 export function validateForward(raw: RawForwardInput): Validation<ForwardInput> {
-  const c = collect(raw, ['R', 'Rcr', 'rho', 'tilt', 'h']);
-  checkTool(c);
-  const pattern = checkPattern(raw.pattern, c.errors);
-  const surface = checkSurface(raw, c.errors);
+  const { c, tool, pattern, surface, gouges } = checkedPass(raw, ['R', 'Rcr', 'rho', 'tilt', 'h']);
   const h = c.values.h;
-  const tool = toolOf(c.values);
-  const gouge = tool !== null && surface !== null ? gouging(tool, surface, String(raw.surfaceRadius ?? '')) : null;
-  if (gouge) c.errors.push(gouge);
-  if (h !== undefined && gouge === null) {
+  if (h !== undefined && !gouges) {
     if (h <= 0) reject(c, 'h', 'not-positive');
     else if (h < MIN_LENGTH_MM) reject(c, 'h', 'too-small', MIN_LENGTH_MM);
     else if (tool !== null && surface !== null && !surfaceModel(surface).leavesNoScallop(tool, surface)) {
@@ -247,15 +266,9 @@ export function validateForward(raw: RawForwardInput): Validation<ForwardInput> 
  * below {@link maxIntervalMm} (2R without tilt): at or beyond it adjacent passes leave a wall.
  */
 export function validateInverse(raw: RawInverseInput): Validation<InverseInput> {
-  const c = collect(raw, ['R', 'Rcr', 'rho', 'tilt', 'interval']);
-  checkTool(c);
-  const pattern = checkPattern(raw.pattern, c.errors);
-  const surface = checkSurface(raw, c.errors);
+  const { c, tool, pattern, surface, gouges } = checkedPass(raw, ['R', 'Rcr', 'rho', 'tilt', 'interval']);
   const L = c.values.interval;
-  const tool = toolOf(c.values);
-  const gouge = tool !== null && surface !== null ? gouging(tool, surface, String(raw.surfaceRadius ?? '')) : null;
-  if (gouge) c.errors.push(gouge);
-  if (L !== undefined && gouge === null) {
+  if (L !== undefined && !gouges) {
     if (L <= 0) reject(c, 'interval', 'not-positive');
     else if (L < 2 * MIN_LENGTH_MM) reject(c, 'interval', 'too-small', 2 * MIN_LENGTH_MM);
     else if (tool !== null && pattern !== null && surface !== null) {

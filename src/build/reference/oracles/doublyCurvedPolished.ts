@@ -197,29 +197,23 @@ class PassMap {
     this.at(u0);
     const f0 = this.s - target;
     if (f0 === 0) return { u: u0, H: this.H };
-    let uR = u0;
-    let fR = f0;
-    let uL = u0;
-    let fL = f0;
+    // The two ends of the search, each walked outwards in turn: the right one up to uEnd, the left one down to 0.
+    const ends = [
+      { u: u0, f: f0, right: true },
+      { u: u0, f: f0, right: false },
+    ];
+    const open = (e: { u: number; right: boolean }) => (e.right ? e.u < this.uEnd : e.u > 0);
     let step = 1e-6 * this.g.R;
-    while (uR < this.uEnd || uL > 0) {
-      if (uR < this.uEnd) {
-        const u = this.toSeam(uR, Math.min(this.uEnd, uR + step));
+    while (ends.some(open)) {
+      for (const e of ends) {
+        if (!open(e)) continue;
+        const u = this.toSeam(e.u, e.right ? Math.min(this.uEnd, e.u + step) : Math.max(0, e.u - step));
         this.at(u);
         const f = this.s - target;
         if (f === 0) return { u, H: this.H };
-        if (f < 0 !== fR < 0) return this.bisect(target, uR, fR, u);
-        uR = u;
-        fR = f;
-      }
-      if (uL > 0) {
-        const u = this.toSeam(uL, Math.max(0, uL - step));
-        this.at(u);
-        const f = this.s - target;
-        if (f === 0) return { u, H: this.H };
-        if (f < 0 !== fL < 0) return this.bisect(target, uL, fL, u);
-        uL = u;
-        fL = f;
+        if (f < 0 !== e.f < 0) return this.bisect(target, e.u, e.f, u);
+        e.u = u;
+        e.f = f;
       }
       step *= 2;
     }
