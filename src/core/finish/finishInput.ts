@@ -5,7 +5,7 @@
  * constraint and its limit, in the user's unit). Lengths mm, angles degrees.
  */
 
-import { entryFaultMessage, quotedEntry } from '../input/entryMessages';
+import { entryFaultMessage, isEntryFault, quotedEntry } from '../input/entryMessages';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../input/units';
 import { parseNumber } from '../input/validate';
 
@@ -110,13 +110,8 @@ export function describeFinishError(e: Omit<FinishError, 'message'>, unit: Lengt
     isLength(e.field) ? `${formatInputNumber(fromMm(v, unit))} ${u}` : formatInputNumber(v);
   const limit = e.limit === undefined ? '' : value(e.limit);
   const got = `(got ${quotedEntry(e.got)})`;
+  if (isEntryFault(e.code)) return entryFaultMessage(label, e.code, e.got, u, limit);
   switch (e.code) {
-    case 'missing':
-    case 'not-a-number':
-    case 'not-finite':
-    case 'negative':
-    case 'too-small':
-      return entryFaultMessage(label, e.code, e.got, u, limit);
     case 'not-an-integer':
       return `${label} must be a whole number of teeth from 1 to ${MAX_FLUTES} ${got}.`;
     case 'not-positive':

@@ -12,6 +12,19 @@ export function quotedEntry(typed: string): string {
 /** The faults every number entry shares. */
 export type EntryFault = 'missing' | 'not-a-number' | 'not-finite' | 'negative' | 'too-small';
 
+const ENTRY_FAULTS: ReadonlySet<string> = new Set<EntryFault>([
+  'missing',
+  'not-a-number',
+  'not-finite',
+  'negative',
+  'too-small',
+]);
+
+/** True for a fault every number entry shares (worded by {@link entryFaultMessage}). */
+export function isEntryFault(code: string): code is EntryFault {
+  return ENTRY_FAULTS.has(code);
+}
+
 /**
  * The one-line message of a common entry fault.
  * @param label the field's label ("Feed per tooth fz")

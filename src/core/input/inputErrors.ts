@@ -4,7 +4,7 @@
  * that produce these errors are in validate.ts, which re-exports everything here.
  */
 import type { SurfaceAxis } from '../domain/surface';
-import { entryFaultMessage, quotedEntry } from './entryMessages';
+import { entryFaultMessage, isEntryFault, quotedEntry } from './entryMessages';
 import { FIELDS, type FieldName, isLengthField } from './fields';
 import { MAX_SURFACE_RADIUS_MM, MIN_SURFACE_RADIUS_MM } from './limits';
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from './units';
@@ -132,13 +132,8 @@ export function describeInputError(e: AnyInputError, unit: LengthUnit, options: 
     e.limit === undefined ? '' : isLengthField(e.field) ? length(e.limit) : `${formatAngleDeg(e.limit)} degrees`;
   const shown = options.typed ?? e.got;
   const got = `(got ${quotedEntry(shown)})`;
+  if (isEntryFault(e.code)) return entryFaultMessage(label, e.code, shown, u, limit);
   switch (e.code) {
-    case 'missing':
-    case 'not-a-number':
-    case 'not-finite':
-    case 'negative':
-    case 'too-small':
-      return entryFaultMessage(label, e.code, shown, u, limit);
     case 'not-positive':
       return `${label} must be greater than 0 ${u} ${got}.`;
     case 'too-large':
