@@ -6,6 +6,7 @@
  * (notices), results.ts (headline and table), teaching.ts (views loading), highlight.ts, and the
  * 3D scene (render/scene.ts).
  */
+
 import { FIELDS } from '../core/input/fields';
 import type { PassPattern } from '../core/input/validate';
 import type { ProcedureKey } from '../core/procedures/procedures';
@@ -19,6 +20,7 @@ import { browserStorage } from './browserStorage';
 import { applyProcedureColours } from './colours';
 import { wireCopyButtons } from './copy';
 import { wireCopyLink } from './copyLink';
+import { must } from './dom';
 import { RESULT_VIEW, startResultCard } from './embedCard';
 import { embedCode, wireCopyEmbed } from './embedCode';
 import { postHeightToParent } from './embedResize';
@@ -78,12 +80,6 @@ export interface AppObserver {
   frame?(current: boolean): void;
   /** The page built a request (once per input: issue 27 point 4). */
   built?(): void;
-}
-
-function must<T extends Element>(root: ParentNode, selector: string): T {
-  const found = root.querySelector<T>(selector);
-  if (!found) throw new Error(`missing element ${selector}`);
-  return found;
 }
 
 export class CalculatorApp {
@@ -306,7 +302,8 @@ export class CalculatorApp {
     void import('./i18n/language').then(({ startLanguage }) =>
       startLanguage(root, this.storage, {
         changed: () => {
-          this.fields.render(this.state, this.messages);
+          // The fields' messages worded anew in the language (follow), then the results.
+          this.follow();
           this.draw();
         },
         link: (lang) => this.url.setExtra(FIELDS.lang.url, lang),

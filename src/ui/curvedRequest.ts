@@ -9,9 +9,10 @@
 import { FIELDS, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
 import { formatInputNumber, fromMm, toMm, unitSymbol } from '../core/input/units';
-import { describeInputError, type InputError, inputError, MIN_LENGTH_MM } from '../core/input/validate';
+import { type InputError, inputError, MIN_LENGTH_MM } from '../core/input/validate';
 import { validatePassAnd } from '../core/surfaces/validate';
 import type { CurvedError } from '../worker/pageProtocol';
+import { describeError } from './i18n/words';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
 import { type CalculatorState, type FieldKey, fieldInMm, parseField, type Unit } from './state';
 import { type RadiusKey, sideOf } from './surfaceState';
@@ -68,7 +69,7 @@ export function describeCurvedError(e: CurvedError, state: CalculatorState): Pag
     const error = inputError('ra', 'beyond-max-ra', typed, e.maxMm);
     return {
       key: 'ra',
-      message: describeInputError(error, unit, { typed }).replace('on this surface', 'at this point'),
+      message: describeError(error, unit, { typed }).replace('on this surface', 'at this point'),
     };
   }
   if (e.field === 'h' || e.field === 'interval') {

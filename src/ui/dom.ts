@@ -1,3 +1,10 @@
+/** The element `selector` finds under `root`; throws when the page lacks it (a broken page, not an input). */
+export function must<T extends Element>(root: ParentNode, selector: string): T {
+  const found = root.querySelector<T>(selector);
+  if (!found) throw new Error(`missing element ${selector}`);
+  return found;
+}
+
 /** Creates an element with attributes and optional text. */
 export function html<K extends keyof HTMLElementTagNameMap>(
   tag: K,

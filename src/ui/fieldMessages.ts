@@ -4,7 +4,8 @@
  * the page's builders (fiveAxisRequest.ts, request.ts). Pure.
  */
 import { type FieldName, pageKeyOf } from '../core/input/fields';
-import { describeInputError, type InputError } from '../core/input/validate';
+import type { InputError } from '../core/input/validate';
+import { describeError } from './i18n/words';
 import type { PageFieldError } from './requestTypes';
 import { type CalculatorState, type FieldKey, sizeIsDiameter } from './state';
 
@@ -30,7 +31,7 @@ export function fieldMessages(
     if (key === null || out.has(key)) continue;
     out.set(
       key,
-      describeInputError(e, state.unit, {
+      describeError(e, state.unit, {
         typed: state.fields[key].trim(),
         toolSizeAsDiameter: sizeIsDiameter(state),
         radiusAsMagnitude: true,

@@ -9,7 +9,7 @@ import { unitSymbol } from '../core/input/units';
 import type { PassPattern } from '../core/input/validate';
 import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
-import { html } from './dom';
+import { html, must } from './dom';
 import { finishGiven } from './finishFields';
 import { catalogue, fieldWords } from './i18n/words';
 import { LazyQuestionLimits } from './lazyQuestionLimits';
@@ -141,12 +141,6 @@ interface FieldView {
   readonly input: HTMLInputElement;
   readonly unitLabel: HTMLElement;
   readonly error: HTMLElement;
-}
-
-function must<T extends Element>(root: ParentNode, selector: string): T {
-  const found = root.querySelector<T>(selector);
-  if (!found) throw new Error(`missing element ${selector}`);
-  return found;
 }
 
 export class FieldsPanel {

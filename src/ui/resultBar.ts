@@ -9,13 +9,8 @@
  * computes nothing: it copies what ResultsPanel.render just drew, so it never shows a number the
  * panel does not show for the inputs on screen.
  */
+import { must } from './dom';
 import './resultBar.css';
-
-function must<T extends Element>(root: ParentNode, selector: string): T {
-  const found = root.querySelector<T>(selector);
-  if (!found) throw new Error(`missing element ${selector}`);
-  return found;
-}
 
 /** What the bar's mark says: typing, stale (the panel's `.stale` or aria-busy) or nothing. */
 export type ResultBarMark = 'typing' | 'stale' | '';

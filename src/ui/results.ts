@@ -9,7 +9,7 @@ import {
 import { type CurvedReply, isSolveReply, type PageReply, type ThreeAxisReply } from '../worker/pageProtocol';
 import type { CurvatureRow, ProcedureRow, SolveMode, SolveReply } from '../worker/protocol';
 import { setCopyValue } from './copy';
-import { html } from './dom';
+import { html, must } from './dom';
 import { formatLen, formatLenUnit, formatSignedLenUnit } from './format';
 import type { Shown } from './freshness';
 import { localize } from './i18n/words';
@@ -29,12 +29,6 @@ export type QuestionKind = 'classic' | 'curved' | 'three-axis';
 function kindOf(reply: PageReply): QuestionKind {
   if (isSolveReply(reply)) return 'classic';
   return reply.request.mode === 'three-axis' ? 'three-axis' : 'curved';
-}
-
-function must<T extends Element>(root: ParentNode, selector: string): T {
-  const found = root.querySelector<T>(selector);
-  if (!found) throw new Error(`missing element ${selector}`);
-  return found;
 }
 
 /** True when the reply answers a question on a cylinder whose axis runs across the feed. */

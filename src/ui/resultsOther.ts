@@ -12,7 +12,7 @@ import { CORRECTED_KEYS, CURVATURE_ROWS, correctedRowKey } from '../core/procedu
 import type { CurvedReply, ThreeAxisReply } from '../worker/pageProtocol';
 import type { SolveMode } from '../worker/protocol';
 import { setCopyValue } from './copy';
-import { html } from './dom';
+import { html, must } from './dom';
 import { formatAngle, formatLen, formatLenUnit, formatSignedLenUnit } from './format';
 
 type CurvedOk = Extract<CurvedReply, { ok: true }>;
@@ -21,12 +21,6 @@ type ThreeAxisOk = Extract<ThreeAxisReply, { ok: true }>;
 /** The test ids of the three-axis block while it is on screen (elsewhere neutral ones: ids stay unique). */
 const STEP_ID = 'result-programmed-step';
 const INTERVAL_ID = 'result-exact-interval';
-
-function must<T extends Element>(root: ParentNode, selector: string): T {
-  const found = root.querySelector<T>(selector);
-  if (!found) throw new Error(`missing element ${selector}`);
-  return found;
-}
 
 /** What a doubly curved point's L and heights mean, in words. */
 export function curvedMeaning(reply: CurvedOk, unit: LengthUnit): string {

@@ -18,8 +18,9 @@
  * box as a disclosure (+0.04 kB to the first result): 59.64 and 232.93 kB. Then issue 30's languages:
  * the Japanese and German catalogues and the switch load when used (+4.9 kB in all); what the first
  * result carries of them (the field words, the hook that puts the results into the language in
- * force) is +0.16 kB, less the teaching views' dead 'elsewhere' text: 59.80 and 237.83 kB. kB here
- * are 1024 bytes, as bench:web prints them.
+ * force) is +0.16 kB, less the teaching views' dead 'elsewhere' text: 59.80 and 237.83 kB; with the
+ * input errors' words in each (+4 kB, on first use) and the page's one `must`: 59.87 and 241.79 kB.
+ * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -45,7 +46,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 238.0 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(238.0);
+  it('all of it, every .js file, is at most 242.0 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(242.0);
   });
 });

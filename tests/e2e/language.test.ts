@@ -54,6 +54,18 @@ describe('the language switch (phone)', () => {
     await expect
       .poll(() => text(page, '[data-testid="result-exact-interval"]'))
       .toBe(`${stepOver(0.08).replace('.', ',')} mm`);
+    // A bad corner radius: one line in German on its field, the bound in mm; the answer a dash.
+    await typeInto(page, 'input-Rcr', '5');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="error-Rcr"]'))
+      .toBe(
+        'Eckenradius Rcr darf den Werkzeugradius R = 3 mm nicht überschreiten (eingegeben: 5); Rcr = R ist ein Kugelfräser.',
+      );
+    expect(await text(page, '[data-testid="result-exact-interval"]')).toBe('\u2014');
+    await typeInto(page, 'input-Rcr', '1');
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, '[data-testid="error-Rcr"]')).toBe('');
     expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
     // axe on the page at rest (a view marked out of date while it redraws is greyed on purpose).
     await pageSettled(page);
@@ -78,8 +90,20 @@ describe('the language switch (phone)', () => {
     await pageSettled(page);
     await keepShot(page, 'language-ja-phone', { fullPage: true });
     expect(await axeViolations(page)).toEqual([]);
+    // An error shown while the language changes is worded anew: Rcr 5 in Japanese, then in English
+    // (this bare visit gives the tool size as the diameter D, as a first visit does).
+    await typeInto(page, 'input-Rcr', '5');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="error-Rcr"]'))
+      .toBe('コーナ半径 Rcrは D/2 = 3 mm 以下にしてください（入力：5）。Rcr = D/2 はボールエンドミルです。');
     await tap(page, 'en');
     await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('en');
+    await expect
+      .poll(() => text(page, '[data-testid="error-Rcr"]'))
+      .toBe('Corner radius Rcr must be at most D/2 = 3 mm (got 5); Rcr = D/2 is a ball end mill.');
+    await typeInto(page, 'input-Rcr', '1');
+    await page.keyboard.press('Enter');
     expect(await text(page, '[data-testid="machine-switch"] legend')).toBe('Machine');
     expect(await text(page, 'label[for="field-Rcr"]')).toBe('Corner radius Rcr');
     await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('Step-over L');

@@ -6,6 +6,7 @@
  * loads only when chosen (language.ts). Types only: no code.
  */
 import type { PageFieldKey } from '../../core/input/fields';
+import type { AnyInputError, InputErrorCode } from '../../core/input/validate';
 
 /** The languages of the page: English (the page as written), Japanese, German. */
 export type Lang = 'en' | 'ja' | 'de';
@@ -80,4 +81,25 @@ export interface Catalogue {
   readonly slider: string;
   /** The headline's labels. */
   readonly headline: { readonly stepOver: string; readonly scallopHeight: string };
+  /** Each input error code's sentence (errorText.ts gives the field, the limit and what was typed). */
+  readonly errors: Readonly<Record<InputErrorCode, (t: ErrorText) => string>>;
+}
+
+/** What an error's sentence is made of, in the language and unit on screen. */
+export interface ErrorText {
+  readonly e: AnyInputError;
+  /** The field's name in the language (the tool diameter's when the size is given as D). */
+  readonly label: string;
+  /** What was typed, shortened to 24 characters as the English messages quote it. */
+  readonly got: string;
+  /** The bound it broke, with its unit (a length in the user's unit; an angle in degrees), or ''. */
+  readonly limit: string;
+  /** A length (mm) in the user's unit with its symbol, the locale's decimal sign. */
+  readonly length: (mm: number) => string;
+  /** An angle (degrees) as a number, the locale's decimal sign, without its unit. */
+  readonly angle: (deg: number) => string;
+  /** The unit's symbol (mm, in). */
+  readonly unit: string;
+  /** The tool size is given as the diameter D (limits set by R then read D/2). */
+  readonly diameter: boolean;
 }

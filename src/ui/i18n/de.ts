@@ -4,6 +4,7 @@
  * symbols kept. The README's glossary names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
+import { DE_ERRORS } from './deErrors';
 
 export const catalogue: Catalogue = {
   lang: 'de',
@@ -99,4 +100,5 @@ export const catalogue: Catalogue = {
   degrees: 'Grad',
   slider: ' Schieberegler',
   headline: { stepOver: 'Bahnabstand L', scallopHeight: 'Rautiefe h' },
+  errors: DE_ERRORS,
 };

@@ -4,6 +4,7 @@
  * names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
+import { JA_ERRORS } from './jaErrors';
 
 export const catalogue: Catalogue = {
   lang: 'ja',
@@ -84,4 +85,5 @@ export const catalogue: Catalogue = {
   degrees: '度',
   slider: 'のスライダー',
   headline: { stepOver: 'ピックフィード L', scallopHeight: 'カスプ高さ h' },
+  errors: JA_ERRORS,
 };

@@ -8,6 +8,7 @@
  */
 import type { ToolStorage } from '../savedTools';
 import type { Catalogue, Lang } from './catalogue';
+import { describeInputErrorIn } from './errorText';
 import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
 import { setCatalogue, catalogue as wordsInForce } from './words';
 
@@ -40,9 +41,10 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
  * Run after each drawing of the results (words.ts localize); English, the page as written, is left
  * as drawn. Copy keeps its own text (data-copy, with a point).
  */
-export function localizeResults(root: ParentNode): void {
+export function localizeResults(results: object): void {
   const words = wordsInForce();
   if (words === null) return;
+  const root = results as ParentNode;
   const label = root.querySelector<HTMLElement>('[data-role="headline-label"]');
   const named =
     label?.textContent === 'Step-over L'
@@ -119,7 +121,9 @@ export class LanguageSwitch {
     }
     void loadCatalogue(lang).then((catalogue) => {
       if (this.wanted !== lang) return;
-      setCatalogue(catalogue, localizeResults);
+      setCatalogue(catalogue, localizeResults, (e, unit, options) =>
+        catalogue === null ? '' : describeInputErrorIn(catalogue, e, unit, options),
+      );
       applyCatalogue(document, catalogue);
       this.events.changed(lang);
     });

@@ -4,16 +4,37 @@
  * catalogue has loaded, with the pass that puts the results into its words. Small: it loads with
  * the first result; what only another language needs loads with language.ts.
  */
+import type { LengthUnit } from '../../core/input/units';
+import { type AnyInputError, type DescribeOptions, describeInputError } from '../../core/input/validate';
 import type { Catalogue, FieldWords } from './catalogue';
 
-let current: Catalogue | null = null;
-/** Puts the results drawn in English into the language in force (language.ts's), or none. */
-let localizer: ((root: ParentNode) => void) | null = null;
+/** An input error's words in the language in force (language.ts's errorText.ts). */
+export type ErrorDescriber = (e: AnyInputError, unit: LengthUnit, options: DescribeOptions) => string;
 
-/** Makes `catalogue` (null: English) the page's words, `results` the pass over the drawn results. */
-export function setCatalogue(catalogue: Catalogue | null, results: ((root: ParentNode) => void) | null): void {
+let current: Catalogue | null = null;
+// The results' root is typed `object` here: this module is read by Node's tests of the page's
+// builders (no DOM); language.ts's pass takes the page's element.
+/** Puts the results drawn in English into the language in force (language.ts's), or none. */
+let localizer: ((root: object) => void) | null = null;
+let describer: ErrorDescriber | null = null;
+
+/**
+ * Makes `catalogue` (null: English) the page's words, with the pass over the drawn results and the
+ * input errors' words in its language.
+ */
+export function setCatalogue(
+  catalogue: Catalogue | null,
+  results: ((root: object) => void) | null,
+  errors: ErrorDescriber | null,
+): void {
   current = catalogue;
   localizer = catalogue === null ? null : results;
+  describer = catalogue === null ? null : errors;
+}
+
+/** An input error in the language in force and `unit` (English: the core's describeInputError). */
+export function describeError(e: AnyInputError, unit: LengthUnit, options: DescribeOptions = {}): string {
+  return describer === null ? describeInputError(e, unit, options) : describer(e, unit, options);
 }
 
 /** The catalogue in force, or null for English. */
@@ -27,6 +48,6 @@ export function fieldWords(key: keyof Catalogue['fields'], english: FieldWords):
 }
 
 /** Puts the results just drawn (in English) under `root` into the language in force; nothing in English. */
-export function localize(root: ParentNode): void {
+export function localize(root: object): void {
   localizer?.(root);
 }

@@ -1,0 +1,53 @@
+/**
+ * An input error's words in a catalogue's language (issue 30): the same error data the core words
+ * in English (core/input/inputErrors.ts describeInputError: the field, the code, the bound it broke,
+ * what was typed) with the field named in the language, the numbers in the user's unit with the
+ * locale's decimal sign, and the sentence from the catalogue's `errors`, one per error code (typed
+ * as a Record: a code without words fails the type check). Loaded with language.ts.
+ */
+import { FIELDS, pageKeyOf } from '../../core/input/fields';
+import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../../core/input/units';
+import type { AnyInputError, DescribeOptions } from '../../core/input/validate';
+import type { Catalogue } from './catalogue';
+
+export type { ErrorText } from './catalogue';
+
+import { localDecimal } from './langChoice';
+
+/** The message of `e` in `catalogue`'s language and `unit` (the page's options of describeInputError). */
+export function describeInputErrorIn(
+  catalogue: Catalogue,
+  e: AnyInputError,
+  unit: LengthUnit,
+  options: DescribeOptions = {},
+): string {
+  const diameter = options.toolSizeAsDiameter === true && e.field === 'R';
+  const key = pageKeyOf(e.field);
+  const label = diameter
+    ? catalogue.diameter.label
+    : key !== null
+      ? catalogue.fields[key].label
+      : FIELDS[e.field].label;
+  const scale = diameter ? 2 : 1;
+  const u = unitSymbol(unit);
+  const length = (mm: number) => localDecimal(`${formatInputNumber(fromMm(mm * scale, unit))} ${u}`, catalogue);
+  const isLength = FIELDS[e.field].kind === 'length';
+  const limit =
+    e.limit === undefined
+      ? ''
+      : isLength
+        ? length(e.limit)
+        : localDecimal(`${formatAngleDeg(e.limit)} ${catalogue.degrees}`, catalogue);
+  const typed = options.typed ?? e.got;
+  const got = typed.length > 24 ? `${typed.slice(0, 21)}...` : typed;
+  return catalogue.errors[e.code]({
+    e,
+    label,
+    got,
+    limit,
+    length,
+    angle: (deg: number) => localDecimal(formatAngleDeg(deg), catalogue),
+    unit: u,
+    diameter: options.toolSizeAsDiameter === true,
+  });
+}
