@@ -31,7 +31,8 @@ export function setCopyValue(output: Element, text: string | null, unit: LengthU
  */
 export function wireCopyButtons(root: ParentNode, live: HTMLElement, question: () => string | null = () => null): void {
   for (const button of root.querySelectorAll<HTMLButtonElement>('button.copy')) {
-    const label = button.textContent ?? 'Copy';
+    // The button's words in the language on screen (i18n/language.ts sets them), English by default.
+    const label = () => button.dataset.label ?? 'Copy';
     button.disabled = true;
     let timer: ReturnType<typeof setTimeout> | null = null;
     button.addEventListener('click', () => {
@@ -41,13 +42,13 @@ export function wireCopyButtons(root: ParentNode, live: HTMLElement, question: (
       const unit = output?.dataset.copyUnit ?? '';
       const asked = question();
       const done = (ok: boolean) => {
-        button.textContent = ok ? 'Copied' : 'Copy failed';
+        button.textContent = ok ? (button.dataset.copied ?? 'Copied') : (button.dataset.failed ?? 'Copy failed');
         live.textContent = ok
           ? `Copied ${text} (${unit})${asked ? `: ${asked}` : ''}.`
           : `Could not copy: select the value and copy it by hand (${text} ${unit}).`;
         if (timer !== null) clearTimeout(timer);
         timer = setTimeout(() => {
-          button.textContent = label;
+          button.textContent = label();
           live.textContent = '';
         }, COPIED_MS);
       };

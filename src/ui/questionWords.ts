@@ -8,8 +8,20 @@
  */
 import { unitSymbol } from '../core/input/units';
 import { parseField } from './fieldText';
+import type { QuestionWord } from './i18n/catalogue';
+import { catalogue } from './i18n/words';
 import type { CalculatorState, FieldKey } from './stateTypes';
 import { sideOf } from './surfaceState';
+
+/** A word of the question in the language in force (English: the word itself). */
+function w(word: QuestionWord): string {
+  return catalogue()?.question[word] ?? word;
+}
+
+/** The question's parts joined as the language in force lists them (English ", "). */
+function list(...parts: string[]): string {
+  return parts.join(catalogue()?.question[', '] ?? ', ');
+}
 
 /** A field's number as given (a finite number, never "-0"), or "?" when it is not one. */
 function given(state: CalculatorState, key: FieldKey): string {
@@ -25,40 +37,50 @@ function length(state: CalculatorState, key: FieldKey): string {
 
 /** The doubly curved point (or the surface of revolution) by its two radii and their sides. */
 function curvedWords(state: CalculatorState): string {
-  const radius = (key: 'Rf' | 'Rc', name: string): string => {
+  const radius = (key: 'Rf' | 'Rc', name: QuestionWord): string => {
     const side = sideOf(state, key);
-    return side === 'straight' ? `${name} straight` : `${name} ${side} ${length(state, key)}`;
+    return side === 'straight' ? `${w(name)} ${w('straight')}` : `${w(name)} ${w(side)} ${length(state, key)}`;
   };
-  return `${radius('Rf', 'along the feed')}, ${radius('Rc', 'across')}`;
+  return list(radius('Rf', 'along the feed'), radius('Rc', 'across'));
 }
 
 /** The five-axis design surface in words. */
 function surfaceWords(state: CalculatorState): string {
   switch (state.surface) {
     case 'plane':
-      return 'plane';
+      return w('plane');
     case 'convex':
     case 'concave':
-      return `${state.surface} cylinder ${length(state, 'Rs')} ${state.surfaceAxis === 'feed' ? 'along' : 'across'} the feed`;
+      return `${w(`${state.surface} cylinder`)} ${length(state, 'Rs')} ${w(state.surfaceAxis === 'feed' ? 'along the feed' : 'across the feed')}`;
     case 'curved':
-      return `curved point: ${curvedWords(state)}`;
+      return `${w('curved point')}: ${curvedWords(state)}`;
   }
 }
 
 /**
- * The question of a page state in words (see the module comment). Three-axis: the slope and the
- * raster angle (a slope of 0 is the flat floor, where the raster angle does not matter), or the
- * waterline passes with the slope and, on a surface of revolution, its radii.
+ * The question of a page state in words (see the module comment), in the language in force.
+ * Three-axis: the slope and the raster angle (a slope of 0 is the flat floor, where the raster
+ * angle does not matter), or the waterline passes with the slope and, on a surface of revolution,
+ * its radii.
  */
 export function questionWords(state: CalculatorState): string {
   if (state.machine === '3axis') {
     const slope = parseField(state.fields.slope);
+    const slopeWords = `${w('slope')} ${given(state, 'slope')}°`;
     if (state.passes === 'waterline') {
       const curved = state.feedSide !== 'straight' || state.crossSide !== 'straight';
-      return `3-axis, waterline, slope ${given(state, 'slope')}°${curved ? `, ${curvedWords(state)}` : ''}`;
+      return curved
+        ? list(w('3-axis'), w('waterline'), slopeWords, curvedWords(state))
+        : list(w('3-axis'), w('waterline'), slopeWords);
     }
-    if (slope === 0) return '3-axis, flat floor';
-    return `3-axis, slope ${given(state, 'slope')}°, raster ${given(state, 'psi')}°`;
+    if (slope === 0) return list(w('3-axis'), w('flat floor'));
+    return list(w('3-axis'), slopeWords, `${w('raster')} ${given(state, 'psi')}°`);
   }
-  return `5-axis, lead ${given(state, 'rho')}°, tilt ${given(state, 'tilt')}°, ${state.pattern}, ${surfaceWords(state)}`;
+  return list(
+    w('5-axis'),
+    `${w('lead')} ${given(state, 'rho')}°`,
+    `${w('tilt')} ${given(state, 'tilt')}°`,
+    w(state.pattern),
+    surfaceWords(state),
+  );
 }

@@ -67,7 +67,11 @@ export class ResultBar {
     }
     this.copyButton.disabled = copy === undefined;
     this.bar.toggleAttribute('data-has-result', copy !== undefined);
-    this.copyButton.setAttribute('aria-label', `Copy ${this.headlineLabel.textContent ?? 'the headline value'}`);
+    // Its name starts with its visible word, in the language on screen ("Copy", "Kopieren").
+    this.copyButton.setAttribute(
+      'aria-label',
+      `${this.copyButton.textContent || 'Copy'} ${this.headlineLabel.textContent ?? 'the headline value'}`,
+    );
     const stale = this.section.classList.contains('stale') || this.section.getAttribute('aria-busy') === 'true';
     const mark: ResultBarMark = typing ? 'typing' : stale ? 'stale' : '';
     this.bar.dataset.mark = mark;

@@ -44,8 +44,12 @@ describe('the language switch (phone)', () => {
     await expect
       .poll(() => text(page, '[data-testid="result-exact-interval"]'))
       .toBe(`${stepOver(0.05).replace('.', ',')} mm`);
-    // The result bar mirrors the headline, in German too.
+    // The result bar mirrors the headline, in German too; the question named in German; Copy in German.
     expect(await text(page, '[data-role="bar-label"]')).toBe('Bahnabstand L');
+    await expect
+      .poll(() => text(page, '[data-testid="headline-question"]'))
+      .toBe('5-Achs, Anstellung 5°, Kippung 0°, in einer Richtung, Ebene');
+    expect(await text(page, '.headline .big button.copy')).toBe('Kopieren');
     // Copy keeps the point (a CAM field's reader).
     expect(await page.getByTestId('result-exact-interval').getAttribute('data-copy')).toBe(stepOver(0.05));
     await expect.poll(() => new URL(page.url()).searchParams.get('lang')).toBe('de');
@@ -85,6 +89,10 @@ describe('the language switch (phone)', () => {
     expect(await text(page, '[data-testid="machine-switch"] legend')).toBe('機械');
     expect(await text(page, 'label[for="field-Rcr"]')).toBe('コーナ半径 Rcr');
     await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('ピックフィード L');
+    await expect
+      .poll(() => text(page, '[data-testid="headline-question"]'))
+      .toMatch(/^5軸、前傾 5°、傾斜 0°、片方向、平面$/);
+    expect(await text(page, '.headline .big button.copy')).toBe('コピー');
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
     expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
     await pageSettled(page);
@@ -107,6 +115,7 @@ describe('the language switch (phone)', () => {
     expect(await text(page, '[data-testid="machine-switch"] legend')).toBe('Machine');
     expect(await text(page, 'label[for="field-Rcr"]')).toBe('Corner radius Rcr');
     await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('Step-over L');
+    expect(await text(page, '.headline .big button.copy')).toBe('Copy');
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
     await expect.poll(() => new URL(page.url()).searchParams.get('lang')).toBeNull();
   });

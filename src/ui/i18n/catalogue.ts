@@ -60,6 +60,47 @@ export type StaticKey =
   | 'contactOffset'
   | 'cuspHeights';
 
+/** The words of the question named beside an answer (questionWords.ts), and its list separator ", ". */
+export type QuestionWord =
+  | ', '
+  | '5-axis'
+  | '3-axis'
+  | 'lead'
+  | 'tilt'
+  | 'one-way'
+  | 'zigzag'
+  | 'plane'
+  | 'convex cylinder'
+  | 'concave cylinder'
+  | 'along the feed'
+  | 'across the feed'
+  | 'curved point'
+  | 'across'
+  | 'straight'
+  | 'convex'
+  | 'concave'
+  | 'waterline'
+  | 'slope'
+  | 'raster'
+  | 'flat floor';
+
+/** The results' status lines and buttons, by their English (put into the language by language.ts's pass). */
+export type Phrase =
+  | 'Typing: the results follow when you pause or press Enter.'
+  | 'Updating: these numbers are for the previous inputs.'
+  | 'Out of date: the solver gave up; these numbers are for earlier inputs.'
+  | 'No answer: the solver gave up.'
+  | 'No scallop: a flat end on a flat floor lies flat, so L = 2R for any h.'
+  | 'Copy'
+  | 'Copied'
+  | 'Copy failed'
+  | 'Copy the headline value'
+  | 'Copy L/2'
+  | 'Copy the programmed step'
+  | 'Copy L along the surface'
+  | 'Copy the centre offset'
+  | 'Copy the current answer';
+
 /** A field's label (with the paper's symbol kept) and the hint under it. */
 export interface FieldWords {
   readonly label: string;
@@ -81,6 +122,10 @@ export interface Catalogue {
   readonly slider: string;
   /** The headline's labels. */
   readonly headline: { readonly stepOver: string; readonly scallopHeight: string };
+  /** The results' status lines and the Copy buttons' words. */
+  readonly phrases: Readonly<Record<Phrase, string>>;
+  /** The question's words beside an answer (questionWords.ts). */
+  readonly question: Readonly<Record<QuestionWord, string>>;
   /** Each input error code's sentence (errorText.ts gives the field, the limit and what was typed). */
   readonly errors: Readonly<Record<InputErrorCode, (t: ErrorText) => string>>;
 }

@@ -7,7 +7,7 @@
  * written, its words read from the page itself before any other language replaces them.
  */
 import type { ToolStorage } from '../savedTools';
-import type { Catalogue, Lang } from './catalogue';
+import type { Catalogue, Lang, Phrase } from './catalogue';
 import { describeInputErrorIn } from './errorText';
 import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
 import { setCatalogue, catalogue as wordsInForce } from './words';
@@ -30,6 +30,15 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
     const text = catalogue === null ? ENGLISH.get(element) : catalogue.page[key];
     if (text !== undefined && element.textContent !== text) element.textContent = text;
   }
+  // The Copy buttons' words: English by default (copy.ts), the language's from the results' pass.
+  if (catalogue === null)
+    for (const button of root.querySelectorAll<HTMLElement>('button.copy')) {
+      delete button.dataset.label;
+      delete button.dataset.copied;
+      delete button.dataset.failed;
+      button.textContent = 'Copy';
+      if (button.dataset.ariaEnglish) button.setAttribute('aria-label', button.dataset.ariaEnglish);
+    }
   document.documentElement.lang = catalogue?.lang ?? 'en';
   const title = root.querySelector('[data-i18n="title"]')?.textContent;
   if (title) document.title = title;
@@ -53,6 +62,25 @@ export function localizeResults(results: object): void {
         ? words.headline.scallopHeight
         : null;
   if (label && named !== null) label.textContent = named;
+  // The status line, the no-scallop line and the Copy buttons (copy.ts reads data-label back).
+  for (const e of root.querySelectorAll<HTMLElement>(
+    '[data-testid="results-status"], [data-testid="no-scallop"], button.copy',
+  )) {
+    if (e.matches('button.copy')) {
+      e.dataset.label = words.phrases.Copy;
+      e.dataset.copied = words.phrases.Copied;
+      e.dataset.failed = words.phrases['Copy failed'];
+      if (e.textContent !== words.phrases.Copied && e.textContent !== words.phrases['Copy failed'])
+        e.textContent = words.phrases.Copy;
+      // Its accessible name holds its visible word (WCAG 2.5.3): the English name kept to go back to.
+      e.dataset.ariaEnglish ??= e.getAttribute('aria-label') ?? '';
+      const name = words.phrases[e.dataset.ariaEnglish as Phrase];
+      if (name !== undefined) e.setAttribute('aria-label', name);
+      continue;
+    }
+    const phrase = words.phrases[e.textContent as Phrase];
+    if (phrase !== undefined) e.textContent = phrase;
+  }
   for (const e of root.querySelectorAll<HTMLElement>('.headline output, .results .procedures td, .results .pct')) {
     const text = e.textContent ?? '';
     const local = localDecimal(text, words);
