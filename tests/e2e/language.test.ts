@@ -72,6 +72,7 @@ describe('the language switch (phone)', () => {
     await expect.poll(() => text(page, '[data-testid="error-Rcr"]')).toBe('');
     expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
     // axe on the page at rest (a view marked out of date while it redraws is greyed on purpose).
+    await expect.poll(() => page.locator('.teaching').getAttribute('class')).not.toMatch(/\bstale\b/);
     await pageSettled(page);
     await keepShot(page, 'language-de-phone', { fullPage: true });
     expect(await axeViolations(page)).toEqual([]);
@@ -81,6 +82,17 @@ describe('the language switch (phone)', () => {
     await page.goto(new URL('./', page.url()).href);
     await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('de');
     await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('Bahnabstand L');
+  });
+
+  it("an embed takes its language from the link (the element's lang attribute), not the one remembered", async () => {
+    await page.goto(new URL(`${QUERY}&embed=1&lang=ja`, page.url()).href);
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('ja');
+    await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('ピックフィード L');
+    await page.goto(new URL(`${QUERY}&embed=1`, page.url()).href);
+    await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('Step-over L');
+    // The full page again, as the user left it (German remembered).
+    await page.goto(new URL('./', page.url()).href);
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('de');
   });
 
   it('Japanese: its words and a decimal point; English comes back whole, lang= leaves the link', async () => {
