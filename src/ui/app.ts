@@ -122,6 +122,16 @@ export class CalculatorApp {
   private held: BuiltRequest = { ok: false, errors: [] };
   /** The field messages of the last committed state (kept while typing, so none flashes). */
   private messages: ReadonlyMap<FieldKey, string> = new Map();
+  /** The finish worker's messages on the teeth-and-feed fields that answer the inputs on screen. */
+  private finishMessages: ReadonlyMap<FieldKey, string> = new Map();
+
+  /** The fields' messages: the page's and the solver's, then the finish worker's where a field has none. */
+  private fieldMessages(): ReadonlyMap<FieldKey, string> {
+    if (this.finishMessages.size === 0) return this.messages;
+    const all = new Map(this.finishMessages);
+    for (const [key, message] of this.messages) all.set(key, message);
+    return all;
+  }
   /** The last committed state's request, or its errors (built once per change). */
   private built: BuiltRequest = { ok: false, errors: [] };
   /** Where the machine and unit are remembered (preferences.ts); null in an embed or without storage. */
@@ -170,8 +180,13 @@ export class CalculatorApp {
     this.results = new ResultsPanel(root);
     this.resultBar = new ResultBar(root);
     this.roughness = new RoughnessPanel(root);
-    this.finish = new LazyFinish(root.querySelector<HTMLElement>('[data-testid="finish-results"]'), (fz) =>
-      this.change(withValues(this.state, { fz })),
+    this.finish = new LazyFinish(
+      root.querySelector<HTMLElement>('[data-testid="finish-results"]'),
+      (fz) => this.change(withValues(this.state, { fz })),
+      (messages) => {
+        this.finishMessages = messages;
+        this.fields.render(this.state, this.fieldMessages());
+      },
     );
     this.simulation = new SimulationLoader(
       (info) => this.restarted('simulation', info),
@@ -354,7 +369,7 @@ export class CalculatorApp {
     this.held = built;
     this.state = state;
     this.fresh.want(null);
-    const kept = new Map(this.messages);
+    const kept = new Map(this.fieldMessages());
     kept.delete(key);
     this.fields.render(state, kept);
     this.teaching?.want(null, state.unit, true);
@@ -391,7 +406,7 @@ export class CalculatorApp {
     const reply = shown.kind === 'current' ? shown.reply : null;
     const request = this.built.ok && reply?.ok !== false ? this.built.request : null;
     this.messages = stateMessages(plainLengths(state), this.built, reply);
-    this.fields.render(state, this.messages);
+    this.fields.render(state, this.fieldMessages());
     this.shelf.render(state.unit);
     // The simulation and the table answer a plane's or a cylinder's question (five-axis); the views
     // draw any (those that do not draw a doubly curved or three-axis question say so).

@@ -226,7 +226,8 @@ export class FieldsPanel {
     const input = html('input', {
       id,
       type: 'text',
-      inputmode: 'decimal',
+      // Whole teeth: the phone's number pad without a decimal sign.
+      inputmode: key === 'z' ? 'numeric' : 'decimal',
       autocomplete: 'off',
       spellcheck: 'false',
       'data-testid': `input-${testName}`,
@@ -347,6 +348,9 @@ export class FieldsPanel {
       view.slider.step = r.step;
       const v = parseField(state.fields[key]);
       if (v !== null && view.slider !== document.activeElement) view.slider.value = String(v);
+      // An empty optional field (the teeth and feed): its slider says so, not the value its thumb rests at.
+      if (v === null && state.fields[key].trim() === '') view.slider.setAttribute('aria-valuetext', 'empty');
+      else view.slider.removeAttribute('aria-valuetext');
       const message = messages.get(key) ?? '';
       if (view.error.textContent !== message) view.error.textContent = message;
       view.row.classList.toggle('invalid', message !== '');

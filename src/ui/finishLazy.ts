@@ -10,7 +10,7 @@ import { finishClient } from '../worker/workers';
 import { FINISH_KEYS, finishGiven } from './finishFields';
 import type { FinishPanel } from './finishPanel';
 import type { FinishInputs } from './finishRequest';
-import { type CalculatorState, fieldInMm } from './state';
+import { type CalculatorState, type FieldKey, fieldInMm } from './state';
 
 /** The core's finish fields (the registry's ids are the core's names), in the order of FINISH_KEYS. */
 const FINISH_FIELDS = FINISH_FIELD_IDS as readonly FinishField[];
@@ -37,6 +37,8 @@ export class LazyFinish {
   constructor(
     private readonly box: HTMLElement | null,
     private readonly onFz: (feedPerToothMm: number) => void,
+    /** The worker's messages on the finish fields, by page key (empty: none), for the fields. */
+    private readonly onFieldErrors: (messages: ReadonlyMap<FieldKey, string>) => void = () => {},
   ) {}
 
   /** The inputs on screen, and the answer to them (null while none is, or while typing). */
@@ -48,7 +50,11 @@ export class LazyFinish {
     else if (box !== null && inputs.given && !this.loading) {
       this.loading = true;
       void import('./finishPanel').then(({ FinishPanel }) => {
-        this.panel = new FinishPanel(box, this.onFz, finishClient);
+        this.panel = new FinishPanel(box, this.onFz, finishClient, (errors) =>
+          this.onFieldErrors(
+            new Map(errors.map((e) => [FINISH_KEYS[FINISH_FIELDS.indexOf(e.field)] as FieldKey, e.message])),
+          ),
+        );
         if (this.last !== null) this.panel.show(this.last.inputs, this.last.reply);
       });
     }

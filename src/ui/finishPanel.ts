@@ -9,12 +9,19 @@
  */
 import { formatInputNumber, fromMm, type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
 import type { RestartInfo } from '../worker/client';
-import { type FinishReply, type FinishRequest, MAP_SIZE, sameFinishRequest } from '../worker/finishProtocol';
+import {
+  type FinishFieldMessage,
+  type FinishReply,
+  type FinishRequest,
+  MAP_SIZE,
+  sameFinishRequest,
+} from '../worker/finishProtocol';
 import type { PageReply } from '../worker/pageProtocol';
 import type { finishClient } from '../worker/workers';
 import { detailsRow, html } from './dom';
 import { type FinishInputs, finishAsk } from './finishRequest';
 import { formatLenUnit, formatRoughness } from './format';
+import { shopFeed } from './shopFeed';
 
 /** Points along each side of the x3p download's one cell (the 256 x 256). */
 export const X3P_SIZE = 256;
@@ -64,7 +71,13 @@ export class FinishPanel {
   private readonly answers = new Map<FinishRequest['part'], Extract<FinishReply, { ok: true }>>();
   private refusal: string | null = null;
   /** The worker's refusal of a question (a bad value), with the question. */
-  private failed: { readonly request: FinishRequest; readonly message: string } | null = null;
+  private failed: {
+    readonly request: FinishRequest;
+    readonly message: string;
+    readonly errors: readonly FinishFieldMessage[];
+  } | null = null;
+  /** The field messages last told to the page (JSON), so that it is told only of a change. */
+  private toldFields = '[]';
   private raMm: number | null = null;
   private unit: LengthUnit = 'mm';
   /** The x3p asked (the question with its file), until its bytes come. */
@@ -89,6 +102,8 @@ export class FinishPanel {
     private readonly box: HTMLElement,
     private readonly onFz: (feedPerToothMm: number) => void,
     private readonly clientOf: typeof finishClient,
+    /** The worker's messages on the finish fields that answer the inputs on screen (shown on the fields too). */
+    private readonly onFieldErrors: (errors: readonly FinishFieldMessage[]) => void = () => {},
   ) {
     this.client = clientOf(
       { onReply: (reply) => this.received(reply), onRestart: (info) => this.restarted(info) },
@@ -118,7 +133,7 @@ export class FinishPanel {
     balanced.append(' ', this.useBalanced);
     this.useBalanced.addEventListener('click', () => {
       const fz = this.answer('marks')?.feedMarks?.balancedFz;
-      if (fz !== undefined && fz !== null) this.onFz(fz);
+      if (fz !== undefined && fz !== null) this.onFz(shopFeed(fz, this.unit));
     });
     const areal = html('dl', { class: 'details finish-areal', 'data-testid': 'finish-areal' });
     for (const [symbol, words] of AREAL) {
@@ -127,7 +142,7 @@ export class FinishPanel {
       detailsRow(areal, symbol, out, { title: words });
     }
     this.message = html('p', { class: 'finish-message', 'data-testid': 'finish-message', role: 'status' });
-    this.download = html('button', { type: 'button', 'data-testid': 'download-x3p', disabled: '' }, 'x3p');
+    this.download = html('button', { type: 'button', 'data-testid': 'download-x3p', disabled: '' }, 'Download x3p');
     this.download.addEventListener('click', () => this.askX3p());
     this.x3pStatus = html('span', { class: 'lookup-note', 'data-testid': 'x3p-status', role: 'status' });
     const heading = html('h2', { class: 'finish-title' }, 'Finish: the feed marks the teeth leave');
@@ -191,7 +206,12 @@ export class FinishPanel {
     if (reply.request.x3p !== undefined || !this.current(reply.request)) return;
     this.note = null;
     if (reply.ok) this.answers.set(reply.request.part, reply);
-    else this.failed = { request: reply.request, message: reply.errors.map((e) => e.message).join(' ') };
+    else
+      this.failed = {
+        request: reply.request,
+        message: reply.errors.map((e) => e.message).join(' '),
+        errors: reply.errors,
+      };
     this.draw();
   }
 
@@ -238,6 +258,13 @@ export class FinishPanel {
     this.useBalanced.disabled = m === undefined || m.balancedFz === null;
     this.download.disabled = marks === null || this.x3pAsked !== null;
     const failed = this.failed !== null && this.current(this.failed.request) ? this.failed.message : null;
+    // The same messages on their fields (a bad fz is named where it was typed), only while current.
+    const fieldErrors = failed !== null && this.failed !== null ? this.failed.errors : [];
+    const told = JSON.stringify(fieldErrors);
+    if (told !== this.toldFields) {
+      this.toldFields = told;
+      this.onFieldErrors(fieldErrors);
+    }
     const pending = this.wanted !== null && (m === undefined || s === undefined);
     this.paint(this.answer('areal'));
     const waiting = pending ? (this.note ?? 'Computing the feed marks and the areal parameters...') : '';

@@ -9,62 +9,11 @@
  * which), and a reply is saved only if it echoes that request.
  */
 
-import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
+import type { LengthUnit } from '../core/input/units';
 import type { RestartInfo } from '../worker/client';
 import type { CurvedRequest, ThreeAxisRequest } from '../worker/pageProtocol';
 import { type SolveRequest, sameTableRequest, type TableReply, type TableRequest } from '../worker/protocol';
 import { tableClient } from '../worker/workers';
-
-/**
- * The file name of a table: its tool, pattern and surface, then its unit, lengths in that unit:
- * `step-over-table_5-axis_R3_Rcr1_one-way_plane_mm.csv` (the machine first: the grid spans the
- * five-axis lead and tilt), on a cylinder `..._one-way_Rs-30_cross_mm.csv`
- * (the signed radius, negative for a concave cylinder, and the axis, as the CSV's columns give
- * them); in inches `step-over-table_5-axis_R0.25_Rcr0.0625_one-way_plane_in.csv`. Three-axis:
- * `step-over-table_3-axis_R3_Rcr1_raster30_plane_mm.csv`, `..._waterline_plane_mm.csv`, on a
- * surface of revolution `..._waterline_Rf50_Rc-20_mm.csv` (the grid spans the slope).
- */
-export function tableFileName(request: TableRequest): string {
-  const unit = request.unit ?? 'mm';
-  const n = (mm: number) => formatInputNumber(fromMm(mm, unit));
-  const t = request.tool;
-  const s = t.surface;
-  const r = request.radii;
-  const x = request.threeAxis?.case;
-  if (x !== undefined) {
-    const passes = x.passes === 'raster' ? `raster${formatInputNumber(x.rasterAngleDeg ?? 0)}` : 'waterline';
-    const rev = x.revolution;
-    const surface =
-      rev === null
-        ? 'plane'
-        : `Rf${rev.feedRadiusMm === null ? 'straight' : n(rev.feedRadiusMm)}_Rc${rev.crossRadiusMm === null ? 'straight' : n(rev.crossRadiusMm)}`;
-    return `step-over-table_3-axis_R${n(x.toolRadiusMm)}_Rcr${n(x.cornerRadiusMm)}_${passes}_${surface}_${unitSymbol(unit)}.csv`;
-  }
-  const surface =
-    r !== undefined
-      ? `Rf${n(r.feedRadiusMm)}_Rc${n(r.crossRadiusMm)}`
-      : s.kind === 'cylinder'
-        ? `Rs${n(s.radiusMm)}_${s.axis}`
-        : 'plane';
-  return `step-over-table_5-axis_R${n(t.toolRadiusMm)}_Rcr${n(t.cornerRadiusMm)}_${t.pattern}_${surface}_${unitSymbol(unit)}.csv`;
-}
-
-/** What the status line says about a table saved. */
-export function tableSummary(reply: Extract<TableReply, { ok: true }>): string {
-  const g = reply.request.grid;
-  const unit = reply.request.unit ?? 'mm';
-  const range = (v: readonly number[]) => `${formatInputNumber(v[0] ?? 0)} to ${formatInputNumber(v.at(-1) ?? 0)}`;
-  const h = g.scallopHeightsMm.map((mm) => fromMm(mm, unit));
-  const axes =
-    reply.request.threeAxis !== undefined
-      ? `x slope ${range(reply.request.threeAxis.slopesDeg)} deg, the programmed step (${reply.request.threeAxis.case.passes === 'raster' ? 'Lxy' : 'dz'}) in each row; `
-      : `x lead ${range(g.leadAnglesDeg)} deg x tilt ${range(g.tiltAnglesDeg)} deg; `;
-  return (
-    `Saved ${tableFileName(reply.request)}: ${reply.rows} rows, h ${range(h)} ${unitSymbol(unit)} ` +
-    axes +
-    `${reply.emptyCells} cells outside the valid domain are left empty, the reason in the error column.`
-  );
-}
 
 /** The download button and its status line (see the module comment). */
 export class LookupDownload {
@@ -74,6 +23,8 @@ export class LookupDownload {
   /** The first click waits for the grid's code (tableRequest.ts): the button stays disabled meanwhile. */
   private loadingGrid = false;
   private client: ReturnType<typeof tableClient> | null = null;
+  /** The file's name and summary (lookupFile.ts), loaded with the grid's code on the first click. */
+  private file: typeof import('./lookupFile') | null = null;
 
   constructor(
     private readonly button: HTMLButtonElement,
@@ -100,7 +51,8 @@ export class LookupDownload {
     this.status.textContent = 'Computing the table in the worker...';
     // The grid's code loads on the first click (not with the first result).
     this.loadingGrid = true;
-    const { tableRequestOf } = await import('./tableRequest');
+    const [{ tableRequestOf }, file] = await Promise.all([import('./tableRequest'), import('./lookupFile')]);
+    this.file = file;
     this.loadingGrid = false;
     const request = tableRequestOf(current, this.unit);
     this.asked = request;
@@ -132,11 +84,11 @@ export class LookupDownload {
     const url = URL.createObjectURL(new Blob([reply.csv], { type: 'text/csv;charset=utf-8' }));
     const link = document.createElement('a');
     link.href = url;
-    link.download = tableFileName(reply.request);
+    link.download = this.file?.tableFileName(reply.request) ?? 'step-over-table.csv';
     document.body.append(link);
     link.click();
     link.remove();
     setTimeout(() => URL.revokeObjectURL(url), 10_000);
-    this.status.textContent = tableSummary(reply);
+    this.status.textContent = this.file?.tableSummary(reply) ?? '';
   }
 }

@@ -163,9 +163,10 @@ export function sliderRanges(
     // The programmed steps: up to the tool's diameter (Lxy) or radius (dz); the field says the true limit.
     Lxy: [step.Lxy * 10, snap(len(2 * tool.toolRadiusMm), step.Lxy, step.Lxy * 10)],
     dz: [step.dz, snap(len(tool.toolRadiusMm), step.dz, step.dz)],
-    // The teeth and their feed (issue 29): up to 12 teeth, fz up to R/2 and runout up to R/10 (the fields take the limits).
+    // The teeth and their feed (issue 29): up to 12 teeth, fz up to R (the core's limit: a balanced
+    // feed of 2 mm on an R 3 tool stays on the slider) and runout up to R/10.
     z: [1, 12],
-    fz: [step.fz, snap(len(tool.toolRadiusMm / 2), step.fz, step.fz)],
+    fz: [step.fz, snap(len(tool.toolRadiusMm), step.fz, step.fz)],
     runout: [0, snap(len(tool.toolRadiusMm / 10), step.runout, 0)],
     runoutPhase: [0, 359],
     passPhase: [0, 0.99],

@@ -8,7 +8,7 @@ import { toMm } from '../core/input/units';
 import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
 import { choice, convertFields, fieldText, formatField, isLengthField, parseField } from './fieldText';
-import { finishSearch } from './finishFields';
+import { FINISH_KEYS, finishSearch } from './finishFields';
 import { repeatedParamNotices } from './linkRepeats';
 import { parseMachine, threeAxisNeeded, threeAxisSearch } from './machineState';
 import type { CalculatorState, FieldKey, SurfaceKind, Target, ToolSize, Unit } from './stateTypes';
@@ -180,9 +180,14 @@ export function parseUrl(search: string): ParsedUrl {
       continue;
     }
     const v = parseField(text);
-    if (v === null)
+    // The teeth and their feed are optional (empty by default): an empty one is simply not given,
+    // and a bad one is left empty, said so.
+    const optional = FINISH_KEYS.includes(key);
+    if (v === null && optional && text.trim() !== '')
+      notices.push(`${name}="${text.slice(0, 20)}" in the link is not a number; left empty.`);
+    else if (v === null && !optional)
       notices.push(`${name}="${text.slice(0, 20)}" in the link is not a number; using the default ${defaults[key]}.`);
-    else fields[key] = text.trim();
+    else if (v !== null) fields[key] = text.trim();
   }
   const toolName = toolNameOfLink(params);
   const embedText = params.get(param('embed'));

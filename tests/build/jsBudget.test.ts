@@ -21,7 +21,10 @@
  * force) is +0.16 kB, less the teaching views' dead 'elsewhere' text: 59.80 and 237.83 kB; with the
  * input errors' words in each (+4 kB, on first use) and the page's one `must`: 59.87 and 241.79 kB;
  * with the question's words, the status lines and the Copy buttons in each language (the words
- * lazy; their lookups in questionWords.ts, copy.ts and resultBar.ts not): 59.95 and 243.29 kB.
+ * lazy; their lookups in questionWords.ts, copy.ts and resultBar.ts not): 59.95 and 243.29 kB. Then
+ * the finish's messages on its fields, the optional fields' link notices and the empty sliders'
+ * words (+0.18 kB), less the lookup table's file name and summary, now loaded with its grid on the
+ * first click (lookupFile.ts, -0.38 kB): 59.76 and 243.90 kB.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -36,10 +39,10 @@ const KB = 1024;
 describe('the JavaScript budget of the built site', () => {
   const sizes = jsSizes(siteFiles(DIST), readFileSync(`${DIST}/index.html`, 'utf8'), gzip9);
 
-  it('the first result (page and worker, their static imports) is at most 59.95 kB gzip (the ratchet; the target, 60, is met)', () => {
+  it('the first result (page and worker, their static imports) is at most 59.8 kB gzip (the ratchet; the target, 60, is met)', () => {
     expect(sizes.firstResult.some((p) => p.startsWith('assets/index-'))).toBe(true);
     expect(sizes.firstResult.some((p) => p.startsWith('assets/solver.worker-'))).toBe(true);
-    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.95);
+    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.8);
   });
 
   it('counts every .js file the build emits: the chunks, the service worker and embed.js', () => {
@@ -48,7 +51,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 243.5 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(243.5);
+  it('all of it, every .js file, is at most 244.0 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(244.0);
   });
 });

@@ -86,6 +86,9 @@ describe('the finish box', () => {
     await expect
       .poll(() => text(page, 'finish-message'), { timeout: 20_000 })
       .toBe('Feed per tooth fz must be at most the tool radius R = 3 mm (got 5).');
+    // The same line on the field where it was typed, the field marked invalid.
+    expect(await text(page, 'error-fz')).toBe('Feed per tooth fz must be at most the tool radius R = 3 mm (got 5).');
+    expect(await page.getByTestId('input-fz').getAttribute('aria-invalid')).toBe('true');
     expect(await text(page, 'finish-hf')).toBe('\u2014');
     expect(await text(page, 'result-exact-interval')).toMatch(/\d/);
     expect(await page.getByTestId('input-flutes').inputValue()).toBe('4');
@@ -93,6 +96,8 @@ describe('the finish box', () => {
 
   it('on a cylinder the finish is refused in one line, no number', async () => {
     await commit(page, 'input-fz', '0.1');
+    // A good feed again: the field's message goes with the answer it belonged to.
+    await expect.poll(() => text(page, 'error-fz'), { timeout: 20_000 }).toBe('');
     await page.locator('input[name="surface"][value="convex"]').check();
     await expect
       .poll(() => text(page, 'finish-message'), { timeout: 20_000 })

@@ -15,6 +15,8 @@ import { keepShot, pageSettled, typeInto, useSite } from './harness';
 const site = useSite('language');
 const QUERY = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm';
 const PHONE = { width: 390, height: 844 };
+/** A language's code and catalogue load on first use: on a loaded machine that takes seconds. */
+const POLL = { timeout: 15_000 };
 
 /** The core's step-over at scallop height h (mm), to the page's four decimals. */
 function stepOver(h: number): string {
@@ -29,14 +31,14 @@ function stepOver(h: number): string {
 const text = async (page: Page, selector: string) => (await page.locator(selector).first().textContent()) ?? '';
 const tap = (page: Page, lang: string) => page.locator(`[data-testid="lang-switch"] input[value="${lang}"]`).check();
 
-describe('the language switch (phone)', () => {
+describe('the language switch (phone)', { timeout: 90_000 }, () => {
   let page: Page;
 
   it('German in one tap: words, lang, a decimal comma in the answer, the link; 0,08 typed', async () => {
     ({ page } = await site.open(QUERY, PHONE));
     expect(await page.evaluate(() => document.documentElement.lang)).toBe('en');
     await tap(page, 'de');
-    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('de');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('de');
     expect(await text(page, '[data-testid="machine-switch"] legend')).toBe('Maschine');
     expect(await text(page, 'label[for="field-Rcr"]')).toBe('Eckenradius Rcr');
     expect(await text(page, '#field-rho-hint')).toBe('Neigung des Werkzeugs in Vorschubrichtung');
@@ -52,7 +54,7 @@ describe('the language switch (phone)', () => {
     expect(await text(page, '.headline .big button.copy')).toBe('Kopieren');
     // Copy keeps the point (a CAM field's reader).
     expect(await page.getByTestId('result-exact-interval').getAttribute('data-copy')).toBe(stepOver(0.05));
-    await expect.poll(() => new URL(page.url()).searchParams.get('lang')).toBe('de');
+    await expect.poll(() => new URL(page.url()).searchParams.get('lang'), POLL).toBe('de');
     await typeInto(page, 'input-h', '0,08');
     await page.keyboard.press('Enter');
     await expect
@@ -69,10 +71,10 @@ describe('the language switch (phone)', () => {
     expect(await text(page, '[data-testid="result-exact-interval"]')).toBe('\u2014');
     await typeInto(page, 'input-Rcr', '1');
     await page.keyboard.press('Enter');
-    await expect.poll(() => text(page, '[data-testid="error-Rcr"]')).toBe('');
+    await expect.poll(() => text(page, '[data-testid="error-Rcr"]'), POLL).toBe('');
     expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
     // axe on the page at rest (a view marked out of date while it redraws is greyed on purpose).
-    await expect.poll(() => page.locator('.teaching').getAttribute('class')).not.toMatch(/\bstale\b/);
+    await expect.poll(() => page.locator('.teaching').getAttribute('class'), POLL).not.toMatch(/\bstale\b/);
     await pageSettled(page);
     await keepShot(page, 'language-de-phone', { fullPage: true });
     expect(await axeViolations(page)).toEqual([]);
@@ -80,27 +82,27 @@ describe('the language switch (phone)', () => {
 
   it('remembered: a bare visit later opens in German', async () => {
     await page.goto(new URL('./', page.url()).href);
-    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('de');
-    await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('Bahnabstand L');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('de');
+    await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Bahnabstand L');
   });
 
   it("an embed takes its language from the link (the element's lang attribute), not the one remembered", async () => {
     await page.goto(new URL(`${QUERY}&embed=1&lang=ja`, page.url()).href);
-    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('ja');
-    await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('ピックフィード L');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('ja');
+    await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('ピックフィード L');
     await page.goto(new URL(`${QUERY}&embed=1`, page.url()).href);
-    await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('Step-over L');
+    await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Step-over L');
     // The full page again, as the user left it (German remembered).
     await page.goto(new URL('./', page.url()).href);
-    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('de');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('de');
   });
 
   it('Japanese: its words and a decimal point; English comes back whole, lang= leaves the link', async () => {
     await tap(page, 'ja');
-    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('ja');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('ja');
     expect(await text(page, '[data-testid="machine-switch"] legend')).toBe('機械');
     expect(await text(page, 'label[for="field-Rcr"]')).toBe('コーナ半径 Rcr');
-    await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('ピックフィード L');
+    await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('ピックフィード L');
     await expect
       .poll(() => text(page, '[data-testid="headline-question"]'))
       .toMatch(/^5軸、前傾 5°、傾斜 0°、片方向、平面$/);
@@ -118,7 +120,7 @@ describe('the language switch (phone)', () => {
       .poll(() => text(page, '[data-testid="error-Rcr"]'))
       .toBe('コーナ半径 Rcrは D/2 = 3 mm 以下にしてください（入力：5）。Rcr = D/2 はボールエンドミルです。');
     await tap(page, 'en');
-    await expect.poll(() => page.evaluate(() => document.documentElement.lang)).toBe('en');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
     await expect
       .poll(() => text(page, '[data-testid="error-Rcr"]'))
       .toBe('Corner radius Rcr must be at most D/2 = 3 mm (got 5); Rcr = D/2 is a ball end mill.');
@@ -126,9 +128,9 @@ describe('the language switch (phone)', () => {
     await page.keyboard.press('Enter');
     expect(await text(page, '[data-testid="machine-switch"] legend')).toBe('Machine');
     expect(await text(page, 'label[for="field-Rcr"]')).toBe('Corner radius Rcr');
-    await expect.poll(() => text(page, '[data-role="headline-label"]')).toBe('Step-over L');
+    await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Step-over L');
     expect(await text(page, '.headline .big button.copy')).toBe('Copy');
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
-    await expect.poll(() => new URL(page.url()).searchParams.get('lang')).toBeNull();
+    await expect.poll(() => new URL(page.url()).searchParams.get('lang'), POLL).toBeNull();
   });
 });

@@ -184,6 +184,23 @@ describe("the profile's labels (issue 28 point 6)", () => {
   }, 90_000);
 });
 
+describe('a flat end lying flat (no scallop)', () => {
+  it('draws the profile with finite points only and no console error (the envelope is +infinity at the very edge of the flat)', async () => {
+    const { page, errors } = await open('?R=3&Rcr=0&rho=0&h=0.05&unit=mm&view=profile', { width: 1280, height: 800 });
+    const polygon = page.getByTestId('profile-scallop');
+    await polygon.waitFor({ state: 'attached' });
+    await pageSettled(page);
+    const points = (await polygon.getAttribute('points')) ?? '';
+    expect(points.split(/[ ,]/).length).toBeGreaterThan(100);
+    expect(
+      points.split(/[ ,]/).every((v) => Number.isFinite(Number(v))),
+      points.slice(0, 80),
+    ).toBe(true);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+});
+
 /** The profile's legend items shown that are not wholly inside the teaching column's visible box (unscrolled). */
 async function legendCut(page: Page): Promise<string[]> {
   return page.evaluate(() => {

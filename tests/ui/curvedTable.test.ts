@@ -9,7 +9,7 @@ import { parseCsv } from '../../src/cli/csv';
 import { lookupGrid } from '../../src/core/output/lookupTable';
 import { PLANE } from '../../src/core/surfaces/cylinder';
 import { doublyCurvedForward, doublyCurvedGouges, doublyCurvedLimits } from '../../src/core/surfaces/doublyCurved';
-import { tableFileName } from '../../src/ui/lookupDownload';
+import { tableFileName } from '../../src/ui/lookupFile';
 import { buildRequest } from '../../src/ui/request';
 import { parseUrl } from '../../src/ui/state';
 import { tableRequestOf } from '../../src/ui/tableRequest';

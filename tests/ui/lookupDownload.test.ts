@@ -2,7 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import { lookupGrid } from '../../src/core/output/lookupTable';
 import { PLANE } from '../../src/core/surfaces/cylinder';
-import { tableFileName } from '../../src/ui/lookupDownload';
+import { tableFileName } from '../../src/ui/lookupFile';
 import { buildRequest } from '../../src/ui/request';
 import { parseUrl } from '../../src/ui/state';
 import { tableRequestOf } from '../../src/ui/tableRequest';

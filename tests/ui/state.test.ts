@@ -104,3 +104,15 @@ describe('URL state of the posture', () => {
     expect(inch.fields.h).toBe('0.002'); // the default h, as the inch page's own default
   });
 });
+
+describe('URL state of the teeth and the feed (optional fields)', () => {
+  it('an empty one is not given and says nothing; a bad one is left empty, said so (no "default" that is not there)', () => {
+    const parsed = parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&z=&fz=abc');
+    expect(parsed.notices).toEqual(['fz="abc" in the link is not a number; left empty.']);
+    expect(parsed.state.fields.z).toBe('');
+    expect(parsed.state.fields.fz).toBe('');
+    const good = parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&z=4&fz=0.1');
+    expect(good.notices).toEqual([]);
+    expect([good.state.fields.z, good.state.fields.fz]).toEqual(['4', '0.1']);
+  });
+});

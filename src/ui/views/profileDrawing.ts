@@ -181,8 +181,15 @@ export function drawProfile(
   const mirrors: (1 | -1)[] = [mirrored ? -1 : 1, 1, mirrored ? -1 : 1];
   const profile = monotoneProfile(passProfile);
 
-  // Scallops: between the surface and the lower envelope of the three passes.
-  const envelope = along(-L, L, (sMm) => lowestPassHeight(profile, centres, mirrors, sMm), ENVELOPE_SAMPLES);
+  // Scallops: between the surface and the lower envelope of the three passes, kept within the band
+  // drawn (where no pass reaches, as at the very edge of a flat end lying flat, the envelope is
+  // +infinity: the drawing stops at its top, never at an infinite point).
+  const envelope = along(
+    -L,
+    L,
+    (sMm) => Math.min(lowestPassHeight(profile, centres, mirrors, sMm), top),
+    ENVELOPE_SAMPLES,
+  );
   const floor = along(L, -L, () => 0, segments(120));
   add('polygon', { points: [...envelope, ...floor].join(' '), class: 'scallop', 'data-testid': 'profile-scallop' });
   add('polyline', {
