@@ -78,6 +78,8 @@ export class FinishPanel {
   } | null = null;
   /** The field messages last told to the page (JSON), so that it is told only of a change. */
   private toldFields = '[]';
+  /** The parts that hold an answer (hidden while the surface is refused: its one line stands alone). */
+  private answerParts: readonly HTMLElement[] = [];
   private raMm: number | null = null;
   private unit: LengthUnit = 'mm';
   /** The x3p asked (the question with its file), until its bytes come. */
@@ -127,11 +129,12 @@ export class FinishPanel {
     const balanced = row('Balanced feed fz* (hf = h)', 'finish-balanced');
     this.useBalanced = html(
       'button',
-      { type: 'button', 'data-testid': 'use-balanced-feed', disabled: '' },
+      { type: 'button', 'data-testid': 'use-balanced-feed', 'aria-disabled': 'true' },
       'use the balanced feed',
     );
     balanced.append(' ', this.useBalanced);
     this.useBalanced.addEventListener('click', () => {
+      if (this.useBalanced.getAttribute('aria-disabled') === 'true') return;
       const fz = this.answer('marks')?.feedMarks?.balancedFz;
       if (fz !== undefined && fz !== null) this.onFz(shopFeed(fz, this.unit));
     });
@@ -164,6 +167,7 @@ export class FinishPanel {
     const tools = html('div', { class: 'finish-tools' });
     tools.append(this.download, ' ', this.x3pStatus);
     box.append(heading, list, areal, this.message, this.figure, note, tools);
+    this.answerParts = [list, areal, note, tools];
   }
 
   /** The inputs on screen and the answer to them (null while none is, or while typing). */
@@ -248,14 +252,20 @@ export class FinishPanel {
     this.set('finish-period', formatLenUnit(m?.period ?? null, u, 'fine'));
     this.set(
       'finish-balanced',
-      m === undefined || m.balancedFz === null ? NO_VALUE : formatLenUnit(m.balancedFz, u, 'fine'),
+      m === undefined
+        ? NO_VALUE
+        : m.balancedFz === null
+          ? 'none: hf stays below h at every fz up to R'
+          : formatLenUnit(m.balancedFz, u, 'fine'),
     );
     for (const [symbol] of AREAL)
       this.set(
         symbol,
         s === undefined ? NO_VALUE : symbol === 'Ssk' || symbol === 'Sku' ? plain(s[symbol]) : height(s[symbol]),
       );
-    this.useBalanced.disabled = m === undefined || m.balancedFz === null;
+    // aria-disabled, not disabled: a press keeps the focus on the button while the new answer comes.
+    this.useBalanced.setAttribute('aria-disabled', String(m === undefined || m.balancedFz === null));
+    for (const part of this.answerParts) part.hidden = this.refusal !== null;
     this.download.disabled = marks === null || this.x3pAsked !== null;
     const failed = this.failed !== null && this.current(this.failed.request) ? this.failed.message : null;
     // The same messages on their fields (a bad fz is named where it was typed), only while current.
@@ -267,10 +277,16 @@ export class FinishPanel {
     }
     const pending = this.wanted !== null && (m === undefined || s === undefined);
     this.paint(this.answer('areal'));
-    const waiting = pending ? (this.note ?? 'Computing the feed marks and the areal parameters...') : '';
+    const waiting = pending
+      ? (this.note ??
+        (m === undefined
+          ? 'Computing the feed marks and the areal parameters...'
+          : 'Computing the areal parameters...'))
+      : '';
     const text = this.refusal ?? failed ?? waiting;
     if (this.message.textContent !== text) this.message.textContent = text;
-    this.message.classList.toggle('error', this.refusal !== null || failed !== null);
+    const gaveUp = pending && this.note?.startsWith('No finish') === true;
+    this.message.classList.toggle('error', this.refusal !== null || failed !== null || gaveUp);
   }
 
   /**
@@ -287,7 +303,8 @@ export class FinishPanel {
     const across = r.intervalMm * (r.pattern === 'zigzag' ? 2 : 1);
     const text =
       `One period cell, ${formatLenUnit(period, u, 'fine')} along the feed (right) by ${formatLenUnit(across, u, 'fine')} across (down); ` +
-      `blue the lowest, orange the highest: Sz = ${formatRoughness(areal.areal === null ? null : areal.areal.Sz, u)} apart.`;
+      `blue the lowest, orange the highest: Sz = ${formatRoughness(areal.areal === null ? null : areal.areal.Sz, u)} apart. ` +
+      'Drawn square, not to scale.';
     if (this.scale.textContent !== text) this.scale.textContent = text;
     if (this.painted === areal) return;
     this.painted = areal;

@@ -76,6 +76,9 @@ describe('the finish box', () => {
   it('"use the balanced feed" sets fz to fz*: hf then reads as the scallop h', async () => {
     await page.getByTestId('use-balanced-feed').click();
     await expect.poll(() => page.getByTestId('input-fz').inputValue()).not.toBe('0.1');
+    // fz* as a shop types it (rounded down to 0.1 µm), and the focus stays on the button.
+    expect(await page.getByTestId('input-fz').inputValue()).toMatch(/^\d+\.\d{1,4}$/);
+    expect(await page.evaluate(() => document.activeElement?.getAttribute('data-testid'))).toBe('use-balanced-feed');
     const h = formatRoughness(0.05, 'mm');
     await expect.poll(() => text(page, 'finish-h'), { timeout: 20_000 }).toBe(h);
     await expect.poll(() => text(page, 'finish-hf'), { timeout: 20_000 }).toBe(h);
@@ -102,6 +105,9 @@ describe('the finish box', () => {
     await expect
       .poll(() => text(page, 'finish-message'), { timeout: 20_000 })
       .toMatch(/^Feed marks are not computed on cylinders yet: only on a plane/);
+    // The one line stands alone: no grid of dashes, no x3p button.
+    expect(await page.getByTestId('finish-areal').isHidden()).toBe(true);
+    expect(await page.getByTestId('download-x3p').isHidden()).toBe(true);
     expect(await text(page, 'finish-hf')).toBe('\u2014');
     expect(await text(page, 'finish-areal-Sa')).toBe('\u2014');
   });
