@@ -320,6 +320,7 @@ export class CalculatorApp {
           // The fields' messages worded anew in the language (follow), then the results.
           this.follow();
           this.draw();
+          this.teaching?.relabel();
         },
         link: (lang) => this.url.setExtra(FIELDS.lang.url, lang),
         notice: (text) => this.notice.show(linkNotice([text]), 0),

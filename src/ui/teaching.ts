@@ -76,6 +76,11 @@ export class TeachingLoader {
     this.schedule();
   }
 
+  /** The language changed: the tabs named anew (the views' own words follow their next drawing). */
+  relabel(): void {
+    this.panel?.nameTabs();
+  }
+
   highlight(key: ProcedureKey | null): void {
     this.highlighted = key;
     this.panel?.highlight(key);

@@ -52,6 +52,8 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       .poll(() => text(page, '[data-testid="headline-question"]'))
       .toBe('5-Achs, Anstellung 5°, Kippung 0°, in einer Richtung, Ebene');
     expect(await text(page, '.headline .big button.copy')).toBe('Kopieren');
+    await expect.poll(() => text(page, '#tab-profile'), POLL).toBe('Profil quer zum Vorschub');
+    expect(await text(page, '#tab-chart')).toBe('L über Anstell- und Kippwinkel');
     // Copy keeps the point (a CAM field's reader).
     expect(await page.getByTestId('result-exact-interval').getAttribute('data-copy')).toBe(stepOver(0.05));
     await expect.poll(() => new URL(page.url()).searchParams.get('lang'), POLL).toBe('de');
@@ -130,6 +132,7 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     expect(await text(page, 'label[for="field-Rcr"]')).toBe('Corner radius Rcr');
     await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Step-over L');
     expect(await text(page, '.headline .big button.copy')).toBe('Copy');
+    expect(await text(page, '#tab-profile')).toBe('Cross-feed profile');
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
     await expect.poll(() => new URL(page.url()).searchParams.get('lang'), POLL).toBeNull();
   });

@@ -101,6 +101,17 @@ export type Phrase =
   | 'Copy the centre offset'
   | 'Copy the current answer';
 
+/** The teaching views' tab names, by their English (views/*View.ts titles, threeAxisViewText.ts chartTitle). */
+export type TabName =
+  | 'Cross-feed profile'
+  | 'L against lead and tilt'
+  | 'Step against slope'
+  | 'L against each radius'
+  | "The paper's tables"
+  | '3D procedure, step by step'
+  | 'Formulas'
+  | 'Machined surface';
+
 /** A field's label (with the paper's symbol kept) and the hint under it. */
 export interface FieldWords {
   readonly label: string;
@@ -124,6 +135,8 @@ export interface Catalogue {
   readonly headline: { readonly stepOver: string; readonly scallopHeight: string };
   /** The results' status lines and the Copy buttons' words. */
   readonly phrases: Readonly<Record<Phrase, string>>;
+  /** The teaching views' tab names. */
+  readonly tabs: Readonly<Record<TabName, string>>;
   /** The question's words beside an answer (questionWords.ts). */
   readonly question: Readonly<Record<QuestionWord, string>>;
   /** Each input error code's sentence (errorText.ts gives the field, the limit and what was typed). */

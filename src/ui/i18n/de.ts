@@ -120,6 +120,16 @@ export const catalogue: Catalogue = {
     'Copy the centre offset': 'Kopieren: den Versatz des Werkzeugmittelpunkts',
     'Copy the current answer': 'Kopieren: die aktuelle Antwort',
   },
+  tabs: {
+    'Cross-feed profile': 'Profil quer zum Vorschub',
+    'L against lead and tilt': 'L über Anstell- und Kippwinkel',
+    'Step against slope': 'Abstand über Flächenneigung',
+    'L against each radius': 'L über jedem Radius',
+    "The paper's tables": 'Tabellen der Studie',
+    '3D procedure, step by step': '3D-Verfahren, Schritt für Schritt',
+    Formulas: 'Formeln',
+    'Machined surface': 'Bearbeitete Fläche',
+  },
   question: {
     ', ': ', ',
     '5-axis': '5-Achs',

@@ -104,6 +104,16 @@ export const catalogue: Catalogue = {
     'Copy the centre offset': '工具中心のずれをコピー',
     'Copy the current answer': '現在の答えをコピー',
   },
+  tabs: {
+    'Cross-feed profile': '送り直交断面',
+    'L against lead and tilt': '前傾角・傾斜角と L',
+    'Step against slope': '勾配とピッチ',
+    'L against each radius': '各半径と L',
+    "The paper's tables": '論文の表',
+    '3D procedure, step by step': '3D の手順（段階表示）',
+    Formulas: '数式',
+    'Machined surface': '加工面',
+  },
   question: {
     ', ': '、',
     '5-axis': '5軸',

@@ -2,7 +2,10 @@
  * The teaching views in one tabbed panel. Views are built on first use; `?view=` opens one.
  * The panel is told when its data no longer answers the inputs on screen, and then says so.
  */
+
 import type { ProcedureKey } from '../../core/procedures/procedures';
+import type { TabName } from '../i18n/catalogue';
+import { catalogue } from '../i18n/words';
 import { ChartView } from './chartView';
 import { html, type PageViewContext, type TeachingView, type ViewContext, type ViewId } from './common';
 import { curvedViewNote } from './curvedViewText';
@@ -143,11 +146,18 @@ export class TeachingPanel {
     } else if (this.ctx !== null) view.update(this.ctx);
   }
 
-  /** The tab names follow what the views draw (the chart's: the five-axis sweeps, the slope's, the radii's). */
-  private nameTabs(): void {
-    const tab = this.tabs.get('chart');
-    const name = chartTitle(this.pageCtx?.kind ?? null);
-    if (tab && tab.textContent !== name) tab.textContent = name;
+  /**
+   * The tab names follow what the views draw (the chart's: the five-axis sweeps, the slope's, the
+   * radii's), in the language in force (i18n/words.ts; English: the views' own titles).
+   */
+  nameTabs(): void {
+    const words = catalogue();
+    for (const view of this.views) {
+      const tab = this.tabs.get(view.id);
+      const english = view.id === 'chart' ? chartTitle(this.pageCtx?.kind ?? null) : view.title;
+      const name = words?.tabs[english as TabName] ?? english;
+      if (tab && tab.textContent !== name) tab.textContent = name;
+    }
   }
 
   /** The neutral line over the visible view for a three-axis question or a doubly curved point (what it shows), or none. */

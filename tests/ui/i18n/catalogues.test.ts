@@ -34,6 +34,7 @@ function strings(c: Catalogue): Array<[string, string]> {
     ['degrees', c.degrees],
     ['slider', c.slider],
     ...Object.entries(c.question).map(([k, v]) => [`question.${k}`, v] as [string, string]),
+    ...Object.entries(c.tabs).map(([k, v]) => [`tabs.${k}`, v] as [string, string]),
     ...Object.entries(c.phrases).map(([k, v]) => [`phrases.${k}`, v] as [string, string]),
     ['headline.stepOver', c.headline.stepOver],
     ['headline.scallopHeight', c.headline.scallopHeight],
