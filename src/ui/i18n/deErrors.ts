@@ -5,34 +5,28 @@
  */
 import { MAX_SURFACE_RADIUS_MM, MIN_SURFACE_RADIUS_MM } from '../../core/input/limits';
 import type { Catalogue } from './catalogue';
-import type { ErrorText } from './errorText';
+import { type ErrorText, radiusGougingParts } from './errorText';
 
 const gotOf = (t: ErrorText) => `(eingegeben: ${t.got})`;
 const side = (s: 'right' | 'left' | undefined) => (s === 'left' ? 'linken' : 'rechten');
 
 /** A radius-gouging error (a doubly curved point): what this radius must be, or the other. */
 function radiusGouging(t: ErrorText): string {
-  const feed = t.e.field === 'feedRadius';
-  const me = feed ? 'Rf' : 'Rc';
-  const them = feed ? 'Rc' : 'Rf';
-  const r = t.e.radiusLimit;
-  const held =
-    r?.heldMm === undefined || !Number.isFinite(r.heldMm) ? `${them} gerade` : `${them} = ${t.length(r.heldMm)}`;
-  const mag = t.e.limit === undefined ? '' : t.length(Math.abs(t.e.limit));
+  const { me, them, held: heldRadius, mag, kind, other: o } = radiusGougingParts(t);
+  const held = heldRadius === null ? `${them} gerade` : `${them} = ${heldRadius}`;
   const need =
-    r?.kind === 'concave-at-least'
+    kind === 'concave-at-least'
       ? `${t.label}: ein konkaves ${me} muss für dieses Werkzeug und diese Anstellung bei festem ${held} mindestens ${mag} betragen ${gotOf(t)}`
-      : r?.kind === 'convex-at-most'
+      : kind === 'convex-at-most'
         ? `${t.label} muss für dieses Werkzeug und diese Anstellung bei festem ${held} konvex und höchstens ${mag} sein ${gotOf(t)}`
-        : r?.kind === 'not-concave'
+        : kind === 'not-concave'
           ? `${t.label} muss für dieses Werkzeug und diese Anstellung bei festem ${held} gerade oder konvex sein ${gotOf(t)}: jedes konkave ${me} wird verletzt`
           : `Dieses Werkzeug verletzt den Punkt bei festem ${held} mit jedem Radius ${me} ${gotOf(t)}`;
-  const o = r?.other;
   const other =
-    o?.kind === 'concave-at-least' && o.radiusMm !== undefined
-      ? `; oder, bei festem ${me}, ein konkaves ${them} von mindestens ${t.length(o.radiusMm)}`
-      : o?.kind === 'convex-at-most' && o.radiusMm !== undefined
-        ? `; oder, bei festem ${me}, ein konvexes ${them} von höchstens ${t.length(o.radiusMm)}`
+    o?.kind === 'concave-at-least' && o.radius !== null
+      ? `; oder, bei festem ${me}, ein konkaves ${them} von mindestens ${o.radius}`
+      : o?.kind === 'convex-at-most' && o.radius !== null
+        ? `; oder, bei festem ${me}, ein konvexes ${them} von höchstens ${o.radius}`
         : o?.kind === 'not-concave'
           ? `; oder, bei festem ${me}, ein gerades oder konvexes ${them}`
           : o?.kind === 'none'

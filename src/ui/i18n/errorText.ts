@@ -8,7 +8,7 @@
 import { FIELDS, pageKeyOf } from '../../core/input/fields';
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../../core/input/units';
 import type { AnyInputError, DescribeOptions } from '../../core/input/validate';
-import type { Catalogue } from './catalogue';
+import type { Catalogue, ErrorText } from './catalogue';
 
 export type { ErrorText } from './catalogue';
 
@@ -50,4 +50,31 @@ export function describeInputErrorIn(
     unit: u,
     diameter: options.toolSizeAsDiameter === true,
   });
+}
+
+/**
+ * A radius-gouging error's parts (a doubly curved point), for each language's sentence: this
+ * radius's and the other's symbols, the other radius held (its length in the unit on screen, or
+ * null: straight), this radius's bound as a magnitude, what it must be, and what the other must be
+ * with this one held.
+ */
+export function radiusGougingParts(t: ErrorText): {
+  readonly me: 'Rf' | 'Rc';
+  readonly them: 'Rf' | 'Rc';
+  readonly held: string | null;
+  readonly mag: string;
+  readonly kind: 'concave-at-least' | 'convex-at-most' | 'not-concave' | 'none';
+  readonly other: { readonly kind: string; readonly radius: string | null } | null;
+} {
+  const feed = t.e.field === 'feedRadius';
+  const r = t.e.radiusLimit;
+  const o = r?.other;
+  return {
+    me: feed ? 'Rf' : 'Rc',
+    them: feed ? 'Rc' : 'Rf',
+    held: r?.heldMm === undefined || !Number.isFinite(r.heldMm) ? null : t.length(r.heldMm),
+    mag: t.e.limit === undefined ? '' : t.length(Math.abs(t.e.limit)),
+    kind: r?.kind ?? 'none',
+    other: o === undefined ? null : { kind: o.kind, radius: o.radiusMm === undefined ? null : t.length(o.radiusMm) },
+  };
 }

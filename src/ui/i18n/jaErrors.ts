@@ -4,34 +4,28 @@
  */
 import { MAX_SURFACE_RADIUS_MM, MIN_SURFACE_RADIUS_MM } from '../../core/input/limits';
 import type { Catalogue } from './catalogue';
-import type { ErrorText } from './errorText';
+import { type ErrorText, radiusGougingParts } from './errorText';
 
 const gotOf = (t: ErrorText) => `（入力：${t.got}）`;
 const side = (s: 'right' | 'left' | undefined) => (s === 'left' ? '左' : '右');
 
 /** A radius-gouging error (a doubly curved point): what this radius must be, or the other. */
 function radiusGouging(t: ErrorText): string {
-  const feed = t.e.field === 'feedRadius';
-  const me = feed ? 'Rf' : 'Rc';
-  const them = feed ? 'Rc' : 'Rf';
-  const r = t.e.radiusLimit;
-  const held =
-    r?.heldMm === undefined || !Number.isFinite(r.heldMm) ? `${them} を直線` : `${them} = ${t.length(r.heldMm)}`;
-  const mag = t.e.limit === undefined ? '' : t.length(Math.abs(t.e.limit));
+  const { me, them, held: heldRadius, mag, kind, other: o } = radiusGougingParts(t);
+  const held = heldRadius === null ? `${them} を直線` : `${them} = ${heldRadius}`;
   const need =
-    r?.kind === 'concave-at-least'
+    kind === 'concave-at-least'
       ? `${t.label}：${held}のままでは、この工具と姿勢で凹の ${me} は ${mag} 以上必要です${gotOf(t)}`
-      : r?.kind === 'convex-at-most'
+      : kind === 'convex-at-most'
         ? `${t.label}：${held}のままでは、この工具と姿勢で ${me} は凸で ${mag} 以下にしてください${gotOf(t)}`
-        : r?.kind === 'not-concave'
+        : kind === 'not-concave'
           ? `${t.label}：${held}のままでは、この工具と姿勢で ${me} は直線か凸にしてください${gotOf(t)}。凹ではどの半径でも食い込みます`
           : `この工具は ${held}のまま、どの半径の ${me} でもこの点に食い込みます${gotOf(t)}`;
-  const o = r?.other;
   const other =
-    o?.kind === 'concave-at-least' && o.radiusMm !== undefined
-      ? `。または ${me} をそのままにして、凹の ${them} を ${t.length(o.radiusMm)} 以上に`
-      : o?.kind === 'convex-at-most' && o.radiusMm !== undefined
-        ? `。または ${me} をそのままにして、凸の ${them} を ${t.length(o.radiusMm)} 以下に`
+    o?.kind === 'concave-at-least' && o.radius !== null
+      ? `。または ${me} をそのままにして、凹の ${them} を ${o.radius} 以上に`
+      : o?.kind === 'convex-at-most' && o.radius !== null
+        ? `。または ${me} をそのままにして、凸の ${them} を ${o.radius} 以下に`
         : o?.kind === 'not-concave'
           ? `。または ${me} をそのままにして、${them} を直線か凸に`
           : o?.kind === 'none'
