@@ -248,6 +248,12 @@ export class RunoutTrack {
     this.floorBound = floor;
   }
 
+  /** Distance from the spindle axis of the edge point at s: |r(s) + e e^(i phi_k)|, mm. */
+  radiusAt(s: number): number {
+    profileAt(this.prof, s, PR);
+    return Math.hypot((PR[0] as number) + this.p0, this.q);
+  }
+
   /** Evaluates E at (theta, s) into the fields of `b` (centre values and partials). */
   private centre(b: Box, theta: number, s: number): void {
     const m = this.m;
@@ -557,12 +563,18 @@ export class RunoutRow {
   readonly tracks: readonly TrackOnLine[];
   constructor(m: ToothModel, yMm: number) {
     const list: TrackOnLine[] = [];
-    passesAt(m, 0, yMm, (_x, yLocal, sign, shiftMm) => {
-      for (let k = 0; k < m.input.finish.flutes; k++) {
-        const track = new RunoutTrack(m, yLocal, k);
-        if (Number.isFinite(track.floorBound)) list.push({ track, sign, shiftMm });
-      }
-    });
+    passesAt(
+      m,
+      0,
+      yMm,
+      (_x, yLocal, sign, shiftMm) => {
+        for (let k = 0; k < m.input.finish.flutes; k++) {
+          const track = new RunoutTrack(m, yLocal, k);
+          if (Number.isFinite(track.floorBound)) list.push({ track, sign, shiftMm });
+        }
+      },
+      m.input.finish.runoutMm,
+    );
     // Each tooth's floor on this line, a rigorous lower bound to 1e-4 R: a tooth whose floor is at or
     // above the best event so far cannot lower it.
     for (const t of list) t.track.floor = t.track.lowestPoint(1e-4 * m.toolRadiusMm, true);
@@ -574,6 +586,12 @@ export class RunoutRow {
   lastTrack = -1;
   lastTheta = Number.NaN;
   lastS = Number.NaN;
+
+  /** The distance from the spindle axis of the last event's edge point (heightAt), mm. */
+  lastRho(): number {
+    const t = this.tracks[this.lastTrack];
+    return t === undefined ? 0 : t.track.radiusAt(this.lastS);
+  }
 
   /** Heights already found on this line, by x (with their event), for the pieces' nodes. */
   private readonly known = new Map<number, [number, number, number, number]>();

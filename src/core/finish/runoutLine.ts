@@ -17,10 +17,13 @@
  * section is cut once a turn); the highest is at a change (a crest), taken on both sides of it.
  */
 import { maximise } from '../math/rootFinder';
+import { NOT_CONVERGED } from './envelope';
 import { gaussLegendre } from './gaussLegendre';
 import { RunoutRow } from './runout';
 import type { ToothModel } from './toothModel';
 
+/** Most changes of bite located on one line (a few per tooth pitch are usual). */
+const MAX_CUTS = 2000;
 /** Pieces per tooth pitch the line starts from. */
 const PIECES_PER_TOOTH = 4;
 /** The rule the areal integrals use on each piece (areal.ts). */
@@ -33,18 +36,21 @@ interface Ident {
   readonly track: number;
   readonly theta: number;
   readonly s: number;
+  /** The edge point's distance from the spindle axis. */
+  readonly rho: number;
 }
 
 function identAt(row: RunoutRow, x: number): Ident {
   const h = row.heightAt(x);
-  return { x, h, track: row.lastTrack, theta: row.lastTheta, s: row.lastS };
+  return { x, h, track: row.lastTrack, theta: row.lastTheta, s: row.lastS, rho: row.lastRho() };
 }
 
 /** Whether two samples are the same bite of the same tooth (see the module comment). */
 function sameBite(m: ToothModel, a: Ident, b: Ident): boolean {
   if (a.track !== b.track) return false;
   if (a.track < 0) return true;
-  const rho = m.toolRadiusMm + m.input.finish.runoutMm;
+  // The edge point's distance from the axis: near the axis theta turns fast for a short move.
+  const rho = Math.max(a.rho, b.rho);
   let dt = Math.abs(a.theta - b.theta) % (2 * Math.PI);
   dt = Math.min(dt, 2 * Math.PI - dt);
   return dt * rho + Math.abs(a.s - b.s) <= 4 * Math.abs(a.x - b.x) + 1e-12 * m.toolRadiusMm;
@@ -74,7 +80,9 @@ export function runoutLineBreaks(m: ToothModel, row: RunoutRow, x0: number): num
     for (let k = 0; k <= nn && Number.isNaN(cut); k++) {
       const x = k < nn ? c + r * (RULE.nodes[nn - 1 - k] as number) : b;
       const cur = identAt(row, x);
-      if (!sameBite(m, prev, cur) && guard++ < 4000) {
+      if (!sameBite(m, prev, cur)) {
+        // Never a silent wrong integral: a line that keeps cutting is an error.
+        if (++guard > MAX_CUTS) throw new Error(NOT_CONVERGED);
         let lo = prev;
         let hi = cur;
         while (hi.x - lo.x > 1e-13 * P) {
@@ -83,8 +91,9 @@ export function runoutLineBreaks(m: ToothModel, row: RunoutRow, x0: number): num
           else hi = mid;
         }
         const at = 0.5 * (lo.x + hi.x);
-        // A change at an end of the piece is the break already there: look on.
-        if (at - a > 1e-13 * P && b - at > 1e-13 * P) cut = at;
+        // A change at an end of the piece is the break already there, and one that closes up at the
+        // finest step was a fast but continuous motion: look on.
+        if (at - a > 1e-13 * P && b - at > 1e-13 * P && !sameBite(m, lo, hi)) cut = at;
       }
       prev = cur;
     }
