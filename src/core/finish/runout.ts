@@ -171,6 +171,8 @@ class Box {
   /** F = theta - omega E_x at the centre and the radius of its enclosure. */
   f = 0;
   fRad = 0;
+  /** Largest distance from the spindle axis of the box's edge points (theta moves them by rho dtheta). */
+  rho = 0;
   /** Whether the Jacobian of (K, F) is provably regular over the box. */
   regular = false;
   children: [Box, Box] | null = null;
@@ -306,6 +308,7 @@ export class RunoutTrack {
     profileAt(this.prof, s1, PR1, true);
     const pLo = (PR0[0] as number) + this.p0;
     const pHi = (PR1[0] as number) + this.p0;
+    b.rho = Math.sqrt(Math.max(pLo * pLo, pHi * pHi) + this.q * this.q);
     const drLo = PR1[2] as number;
     const drHi = PR0[2] as number;
     const dhLo = PR0[3] as number;
@@ -368,7 +371,7 @@ export class RunoutTrack {
     const s0 = b.sc - b.ds;
     const s1 = b.sc + b.ds;
     const kids: [Box, Box] =
-      b.dt * this.rhoMax > b.ds
+      b.dt * b.rho > b.ds
         ? [this.box(t0, b.tc, s0, s1), this.box(b.tc, t1, s0, s1)]
         : [this.box(t0, t1, s0, b.sc), this.box(t0, t1, b.sc, s1)];
     b.children = kids;
@@ -376,7 +379,7 @@ export class RunoutTrack {
   }
 
   private tiny(b: Box): boolean {
-    return b.dt * this.rhoMax <= 1e-13 * this.scale && b.ds <= 1e-13 * this.scale;
+    return b.dt * b.rho <= 1e-13 * this.scale && b.ds <= 1e-13 * this.scale;
   }
 
   /**
