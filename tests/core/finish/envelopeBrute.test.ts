@@ -214,6 +214,28 @@ describe('envelope height against the tooth-sweep brute force', () => {
     }
   };
 
+  it("with runout a pass reaches e beyond its flank's reach (flat end, tilt 8: it was left out, 7.5e-3 mm too high)", () => {
+    const c: Case = {
+      label: 'flat lead 1 tilt 8 runout',
+      tool: {
+        toolRadiusMm: 1.9970170049928129,
+        cornerRadiusMm: 0,
+        leadAngleDeg: 1.0476846827194095,
+        tiltAngleDeg: 8.2019720566459,
+      },
+      pattern: 'one-way',
+      intervalMm: 0.028238071866375343,
+      flutes: 1,
+      fzMm: 0.11836810003966092,
+      passPhase: 0,
+      runoutMm: 0.10537989751404103,
+      runoutPhaseDeg: 339.1280046477914,
+    };
+    const [x, y] = [0.22630006062687624, 0.024375787633378034];
+    const brute = bruteEnvelopeHeightMm(bruteParams(c), x, y, 80).heightMm;
+    expect(Math.abs(envelopeHeightMm(modelOf(c), x, y) - brute)).toBeLessThan(1e-9);
+  });
+
   it("a ball at lead 0 just beside its tip's track: the teeth sweep past the axis (psi turns fast) within 1e-9 mm", () => {
     const c: Case = {
       label: 'ball lead 0',
