@@ -36,6 +36,13 @@ import { passesAt, envelopeHeightMm as walkHeightMm } from './envelope';
 import type { ToothModel } from './toothModel';
 
 const TWO_PI = 2 * Math.PI;
+/**
+ * A box whose edge points move by at most this much over it (rho dtheta + ds, mm) is taken as an
+ * event at its centre when K and F may still meet a level in it (where Newton cannot settle: a level
+ * touching the curve): its height is then within about 1e-10 mm of an edge point's over the point,
+ * below the 1e-9 mm asked.
+ */
+const TINY_MM = 1e-10;
 
 /** The profile of an edge by arc length s from the axis: flat bottom, corner, side (up to R above). */
 export interface EdgeProfile {
@@ -379,7 +386,7 @@ export class RunoutTrack {
   }
 
   private tiny(b: Box): boolean {
-    return b.dt * b.rho <= 1e-13 * this.scale && b.ds <= 1e-13 * this.scale;
+    return b.dt * b.rho + b.ds <= TINY_MM;
   }
 
   /**

@@ -8,7 +8,8 @@
  * bite (another turn) of the same tooth: the crests between bites, and where a bite ends. The line is
  * sampled 16 times per tooth pitch; where two neighbouring samples are not the same bite (another
  * track, or the event moved on the edge by more than 4 times the step in x plus a tolerance), the
- * change is located by bisection to 1e-13 of the period. Within a bite the event's motion per unit x
+ * change is located by bisection to 1e-13 of the period; a bracket whose events draw together as it
+ * shrinks (to a quarter in 4 halvings) holds a fast continuous motion, not a change. Within a bite the event's motion per unit x
  * is 1 / |dX/dl| with X = E_x - theta / omega the position along the line a point of the edge cuts
  * (l the arc length on the section in the metric (rho theta, s)); it is about 1 near the bites'
  * valleys, where the section runs along the feed. A change the sampling misses (a bite narrower than
@@ -45,15 +46,20 @@ function identAt(row: RunoutRow, x: number): Ident {
   return { x, h, track: row.lastTrack, theta: row.lastTheta, s: row.lastS, rho: row.lastRho() };
 }
 
-/** Whether two samples are the same bite of the same tooth (see the module comment). */
-function sameBite(m: ToothModel, a: Ident, b: Ident): boolean {
-  if (a.track !== b.track) return false;
-  if (a.track < 0) return true;
+/** How far apart two samples' events are on the edge (rho dtheta + ds, mm); Infinity across tracks. */
+function eventDistance(a: Ident, b: Ident): number {
+  if (a.track !== b.track) return Number.POSITIVE_INFINITY;
+  if (a.track < 0) return 0;
   // The edge point's distance from the axis: near the axis theta turns fast for a short move.
   const rho = Math.max(a.rho, b.rho);
   let dt = Math.abs(a.theta - b.theta) % (2 * Math.PI);
   dt = Math.min(dt, 2 * Math.PI - dt);
-  return dt * rho + Math.abs(a.s - b.s) <= 4 * Math.abs(a.x - b.x) + 1e-12 * m.toolRadiusMm;
+  return dt * rho + Math.abs(a.s - b.s);
+}
+
+/** Whether two samples are the same bite of the same tooth (see the module comment). */
+function sameBite(m: ToothModel, a: Ident, b: Ident): boolean {
+  return eventDistance(a, b) <= 4 * Math.abs(a.x - b.x) + 1e-12 * m.toolRadiusMm;
 }
 
 /**
@@ -85,15 +91,20 @@ export function runoutLineBreaks(m: ToothModel, row: RunoutRow, x0: number): num
         if (++guard > MAX_CUTS) throw new Error(NOT_CONVERGED);
         let lo = prev;
         let hi = cur;
+        const d0 = eventDistance(lo, hi);
+        let halvings = 0;
         while (hi.x - lo.x > 1e-13 * P) {
           const mid = identAt(row, 0.5 * (lo.x + hi.x));
           if (sameBite(m, lo, mid)) lo = mid;
           else hi = mid;
+          // A change of bite keeps its size as the bracket shrinks; a fast continuous motion shrinks
+          // with it (a quarter after 4 halvings): then there is no change here.
+          if (++halvings >= 4 && eventDistance(lo, hi) < 0.25 * d0) break;
         }
         const at = 0.5 * (lo.x + hi.x);
         // A change at an end of the piece is the break already there, and one that closes up at the
         // finest step was a fast but continuous motion: look on.
-        if (at - a > 1e-13 * P && b - at > 1e-13 * P && !sameBite(m, lo, hi)) cut = at;
+        if (at - a > 1e-13 * P && b - at > 1e-13 * P && hi.x - lo.x <= 1e-13 * P && !sameBite(m, lo, hi)) cut = at;
       }
       prev = cur;
     }
