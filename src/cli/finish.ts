@@ -11,13 +11,7 @@ import type { PassPattern, ToolInput } from '../core/domain/tool';
 import { NOT_CONVERGED } from '../core/finish/envelope';
 import type { FinishError, FinishField, FinishInput } from '../core/finish/finishInput';
 import { describeFinishError } from '../core/finish/finishInput';
-import {
-  type FinishReport,
-  finishReport,
-  finishScopeError,
-  RUNOUT_NOT_YET,
-  validateFinish,
-} from '../core/finish/index';
+import { type FinishReport, finishReport, finishScopeError, validateFinish } from '../core/finish/index';
 import { cliFlag, FINISH_FIELD_IDS, type FieldId } from '../core/input/fields';
 import { fromMm, type LengthUnit } from '../core/input/units';
 import { csvNumber } from '../core/output/csvWrite';
@@ -78,14 +72,7 @@ export function finishOf(
   try {
     return { ok: true, input: v.value, report: finishReport(tool, pattern, intervalMm, v.value) };
   } catch (e) {
-    // Runout: refused by the solver until it is computed (its one-line reason names the field);
-    // an event search that did not converge: said, never a number.
-    if (e instanceof Error && e.message === RUNOUT_NOT_YET) {
-      return {
-        ok: false,
-        errors: [{ field: 'runout', code: 'too-large', got: values.runout ?? '', message: e.message }],
-      };
-    }
+    // An event search that did not converge: said, never a number.
     if (e instanceof Error && e.message === NOT_CONVERGED) {
       return { ok: false, errors: [{ field: 'flutes', code: 'not-computed-here', got: '', message: e.message }] };
     }
@@ -98,7 +85,7 @@ export function finishOf(
  * unit was read; else the value in mm); a scope refusal is its own sentence.
  */
 export function finishErrorWords(e: FinishError, unit: LengthUnit, typed: Values = {}): string {
-  if (e.code === 'not-computed-here' || e.message === RUNOUT_NOT_YET) return e.message;
+  if (e.code === 'not-computed-here') return e.message;
   const given = typed[finishOption(e.field)]?.trim();
   return describeFinishError(given === undefined ? e : { ...e, got: given }, unit);
 }

@@ -2,12 +2,12 @@
  * The worker's `finish` job (src/worker/jobs/finish.ts) and the page's finish question
  * (src/ui/finishRequest.ts finishAsk): the job answers exactly the core's finishReport for the
  * validated finish, words each bad value in the request's unit on its field (quoting it as typed),
- * refuses runout with the core's one line while the core does, and writes the x3p of one cell;
+ * answers with runout as the core does (its feed marks and balanced feed), and writes the x3p of one cell;
  * the page asks nothing without teeth or feed and refuses, in one line, every surface where feed
  * marks are not computed (never a continuous answer).
  */
 import { describe, expect, it } from 'vitest';
-import { finishReport, RUNOUT_NOT_YET } from '../../src/core/finish/index';
+import { balancedFeed, feedMarks, finishReport, toothModel } from '../../src/core/finish/index';
 import { forwardInput } from '../../src/core/input/validate';
 import { type FinishInputs, finishAsk } from '../../src/ui/finishRequest';
 import type { FinishRequest } from '../../src/worker/finishProtocol';
@@ -89,11 +89,25 @@ describe('the finish job', () => {
     expect(!fractional.ok && fractional.errors.map((e) => e.field)).toEqual(['flutes']);
   });
 
-  it("refuses runout with the core's one line while the core does not compute it", () => {
-    for (const part of ['marks', 'areal'] as const) {
-      const reply = finish({ ...asked(inputs({ flutes: 2, fz: 0.1, runout: 0.005 })), part });
-      expect(!reply.ok && reply.errors, part).toEqual([{ field: 'runout', message: RUNOUT_NOT_YET }]);
-    }
+  it("answers runout with the core's feed marks over a turn and its balanced feed (2 teeth, e 0.005 mm at 30 degrees)", () => {
+    const request = asked(inputs({ flutes: 2, fz: 0.1, runout: 0.005, runoutPhase: 30 }));
+    const reply = finish(request);
+    if (!reply.ok || !plane.ok || !('exact' in plane)) throw new Error('refused');
+    const input = { flutes: 2, feedPerToothMm: 0.1, runoutMm: 0.005, runoutPhaseDeg: 30, passPhase: 0 };
+    const marks = feedMarks(
+      toothModel({ tool: TOOL, pattern: 'one-way', intervalMm: request.intervalMm, finish: input }),
+    );
+    const balanced = balancedFeed(TOOL, 'one-way', request.intervalMm, input);
+    expect(reply.feedMarks).toEqual({
+      height: marks.heightMm,
+      period: 0.2,
+      balancedFz: balanced.ok ? balanced.feedPerToothMm : null,
+    });
+    // The teeth cut unequally: the marks are taller than without runout.
+    const even = feedMarks(
+      toothModel({ tool: TOOL, pattern: 'one-way', intervalMm: request.intervalMm, finish: { ...input, runoutMm: 0 } }),
+    );
+    expect(marks.heightMm).toBeGreaterThan(even.heightMm);
   });
 
   it('writes the x3p of one cell when asked: a zip of 256 x 256 float64 heights', () => {

@@ -22,9 +22,10 @@ import { inverseInput } from '../input/validate';
 import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
 import { planeInverse } from '../surfaces/exact';
 import { PassRow, passesAt } from './envelope';
-import { RUNOUT_NOT_YET } from './feedMarks';
 import { gaussLegendre } from './gaussLegendre';
 import { RowEnvelope } from './rowEnvelope';
+import { RunoutRow } from './runout';
+import { runoutLineBreaks, runoutLineMax, runoutLowestMm } from './runoutLine';
 import type { ToothModel } from './toothModel';
 
 /** The areal parameters (ISO 25178-2 names), mm except the dimensionless Ssk and Sku. */
@@ -104,6 +105,10 @@ function lowestPass(row: RowEnvelope, active: readonly number[], x: number): num
 
 /** The highest point of the line at y over one feed period (mm). */
 function lineMax(m: ToothModel, y: number): number {
+  if (m.input.finish.runoutMm > 0) {
+    const r = new RunoutRow(m, y);
+    return runoutLineMax(m, r, runoutLineBreaks(m, r, 0)).high;
+  }
   const row = new RowEnvelope(m, y);
   const x0 = row.passes.length > 0 ? row.valleyXMm(0) : 0;
   let max = Number.NEGATIVE_INFINITY;
@@ -120,13 +125,20 @@ interface Piece {
   readonly nodes: Float64Array;
 }
 
+/** A line's heights: the e = 0 row (rowEnvelope.ts) or the runout one (runout.ts). */
+interface HeightLine {
+  heightAt(xMm: number): number;
+  /** Lets go of what the heights needed (a runout line's search boxes), if anything. */
+  release?(): void;
+}
+
 /** A line y = const prepared once for both integrals (the mean, then the moments about it). */
 interface Line {
-  readonly row: RowEnvelope;
+  readonly row: HeightLine;
   readonly pieces: readonly Piece[];
 }
 
-function piece(row: RowEnvelope, a: number, b: number, ha: number, hb: number): Piece {
+function piece(row: HeightLine, a: number, b: number, ha: number, hb: number): Piece {
   const c = 0.5 * (a + b);
   const r = 0.5 * (b - a);
   const nodes = new Float64Array(ROW_RULE.nodes.length);
@@ -135,9 +147,35 @@ function piece(row: RowEnvelope, a: number, b: number, ha: number, hb: number): 
 }
 
 function prepareLine(m: ToothModel, y: number): Line {
-  const row = new RowEnvelope(m, y);
-  const x0 = row.passes.length > 0 ? row.valleyXMm(0) : 0;
-  const breaks = lineBreaks(m, row, x0);
+  let row: HeightLine;
+  let breaks: number[];
+  if (m.input.finish.runoutMm > 0) {
+    const r = new RunoutRow(m, y);
+    breaks = runoutLineBreaks(m, r, 0);
+    const pieces = linePieces(r, breaks);
+    // The line's search boxes are let go (a line keeps only its pieces); the moments' few cuts at
+    // the mean prepare it anew.
+    let again: RunoutRow | undefined;
+    row = {
+      heightAt: (x: number) => {
+        again ??= new RunoutRow(m, y);
+        return again.heightAt(x);
+      },
+      release: () => {
+        again = undefined;
+      },
+    };
+    return { row, pieces };
+  } else {
+    const r = new RowEnvelope(m, y);
+    row = r;
+    breaks = lineBreaks(m, r, r.passes.length > 0 ? r.valleyXMm(0) : 0);
+  }
+  return { row, pieces: linePieces(row, breaks) };
+}
+
+/** The pieces of a line between its breaks, with their heights. */
+function linePieces(row: HeightLine, breaks: readonly number[]): Piece[] {
   const pieces: Piece[] = [];
   let ha = row.heightAt(breaks[0] as number);
   for (let k = 0; k + 1 < breaks.length; k++) {
@@ -148,7 +186,7 @@ function prepareLine(m: ToothModel, y: number): Line {
     pieces.push(piece(row, a, b, ha, hb));
     ha = hb;
   }
-  return { row, pieces };
+  return pieces;
 }
 
 /** Adds the integrals of one piece's node heights (see lineIntegrals) to `sums`. */
@@ -212,6 +250,7 @@ function lineIntegrals(m: ToothModel, y: number, mean: number, lines: Map<number
     addPiece(piece(row, p.a, cut, p.ha, mean), mean, sums);
     addPiece(piece(row, cut, p.b, mean, p.hb), mean, sums);
   }
+  row.release?.();
   return sums;
 }
 
@@ -350,7 +389,6 @@ function meanLines(m: ToothModel, ends: readonly number[], mean: number): number
 
 /** The areal parameters of a prepared model over one period cell (see the module comment). */
 export function arealParameters(m: ToothModel): ArealParameters {
-  if (m.input.finish.runoutMm > 0) throw new Error(RUNOUT_NOT_YET);
   const width = m.feedPeriodMm;
   const height = m.crossPeriodMm;
   const area = width * height;
@@ -363,7 +401,7 @@ export function arealParameters(m: ToothModel): ArealParameters {
   const sums = integrateY(m, 0, height, mean, [1, 2], [...cusps, ...meanLines(m, ends, mean)], lines);
   const sa = (sums[1] as number) / area;
   const sq = Math.sqrt(Math.max(0, (sums[2] as number) / area));
-  const low = new RowEnvelope(m, 0).floorMm;
+  const low = m.input.finish.runoutMm > 0 ? runoutLowestMm(m) : new RowEnvelope(m, 0).floorMm;
   const end = newSearchEnd();
   const high = maximise({ value: (y) => lineMax(m, y) }, 0, height, 24, 1e-12 * height, end);
   const sp = high - mean;

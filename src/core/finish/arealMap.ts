@@ -5,6 +5,7 @@
  * without levelling or filtering gets the sampled value of the definition. Lengths mm.
  */
 import { RowEnvelope } from './rowEnvelope';
+import { RunoutRow } from './runout';
 import type { ToothModel } from './toothModel';
 
 /** A height map on a regular grid (row-major: index i + nx j), heights in mm above the design plane. */
@@ -31,7 +32,8 @@ export function arealMap(m: ToothModel, nx: number, ny: number, cellsX = 1, cell
   const dy = heightMm / ny;
   const heights = new Float64Array(nx * ny);
   for (let j = 0; j < ny; j++) {
-    const row = new RowEnvelope(m, (j + 0.5) * dy);
+    const y = (j + 0.5) * dy;
+    const row = m.input.finish.runoutMm > 0 ? new RunoutRow(m, y) : new RowEnvelope(m, y);
     for (let i = 0; i < nx; i++) heights[i + nx * j] = row.heightAt((i + 0.5) * dx);
   }
   return { nx, ny, dxMm: dx, dyMm: dy, cellsX, cellsY, heightsMm: heights };

@@ -369,16 +369,19 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
 
 /**
  * Which passes can reach global y, with their local coordinates (see toothModel.ts): `x_local =
- * sign (x - shift)`.
+ * sign (x - shift)`. `marginMm` widens each pass's reach (runout moves every edge point by e).
  */
 export function passesAt(
   m: ToothModel,
   xMm: number,
   yMm: number,
   visit: (xLocal: number, yLocal: number, sign: 1 | -1, shiftMm: number) => void,
+  marginMm = 0,
 ): void {
   const L = m.input.intervalMm;
-  const reach = Math.max(m.reachRightMm, m.reachLeftMm);
+  const right = m.reachRightMm + marginMm;
+  const left = m.reachLeftMm + marginMm;
+  const reach = Math.max(right, left);
   const shift = m.input.finish.passPhase * m.feedPeriodMm;
   const zigzag = m.input.pattern === 'zigzag';
   const jLo = Math.floor((yMm - reach) / L) - 1;
@@ -386,7 +389,7 @@ export function passesAt(
   for (let j = jLo; j <= jHi; j++) {
     const odd = zigzag && (j & 1) !== 0;
     const yLocal = odd ? j * L - yMm : yMm - j * L;
-    if (!(yLocal < m.reachRightMm && yLocal > -m.reachLeftMm)) continue;
+    if (!(yLocal < right && yLocal > -left)) continue;
     const xShifted = xMm - j * shift;
     visit(odd ? -xShifted : xShifted, yLocal, odd ? -1 : 1, j * shift);
   }

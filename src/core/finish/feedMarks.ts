@@ -8,6 +8,9 @@
  * lowest point (rowEnvelope.ts). The highest is the crest between two valleys, where the first events
  * on either side of the contact are equally high: the maximum over one period from the valley, by the
  * shared maximiser (a scan, then Brent's method, whose golden steps handle the crest's kink).
+ * With runout (runout.ts, runoutLine.ts) the period is a turn, z fz; the lowest height along the line is
+ * the least of the teeth's lowest points on it (each tooth cuts every point of its section once a
+ * turn), and the highest is found at the line's breaks (the crests between bites).
  */
 import type { PassPattern, ToolInput } from '../domain/tool';
 import { inverseInput } from '../input/validate';
@@ -16,6 +19,8 @@ import { planeInverse } from '../surfaces/exact';
 import type { FinishInput } from './finishInput';
 import { maxFeedPerToothMm } from './finishInput';
 import { RowEnvelope } from './rowEnvelope';
+import { RunoutRow } from './runout';
+import { runoutLineBreaks, runoutLineMax } from './runoutLine';
 import { type ToothModel, toothModel } from './toothModel';
 
 /** The feed marks along the CC path. */
@@ -51,14 +56,18 @@ export function lineExtremes(m: ToothModel, row: RowEnvelope): { low: number; hi
 
 /** The feed marks of a prepared model along pass 0's CC path (y = 0). */
 export function feedMarks(m: ToothModel): FeedMarks {
-  if (m.input.finish.runoutMm > 0) throw new Error(RUNOUT_NOT_YET);
+  if (m.input.finish.runoutMm > 0) {
+    // With runout (runoutLine.ts): the least of the teeth's lowest points on the line, the highest at
+    // its breaks over one turn.
+    const row = new RunoutRow(m, 0);
+    const low = row.lowestMm();
+    const { high, x } = runoutLineMax(m, row, runoutLineBreaks(m, row, 0));
+    return { heightMm: Math.max(0, high - low), periodMm: m.feedPeriodMm, lowMm: low, highMm: high, crestXMm: x };
+  }
   const row = new RowEnvelope(m, 0);
   const { low, high, highX } = lineExtremes(m, row);
   return { heightMm: Math.max(0, high - low), periodMm: m.feedPeriodMm, lowMm: low, highMm: high, crestXMm: highX };
 }
-
-/** The refusal while runout is not computed (the model validates it; the solver does not take it yet). */
-export const RUNOUT_NOT_YET = 'Feed marks with runout are not computed yet: give runout 0 (the teeth cut equally).';
 
 /** The balanced feed: fz* or why there is none. */
 export type BalancedFeed =
@@ -72,6 +81,11 @@ export type BalancedFeed =
  * shop estimate `sqrt(8 R h)`. No answer when the step-over leaves no scallop, or when the marks stay
  * below h for every fz up to its limit R (a ball end at lead 0 drags its tip along the CC path:
  * hf = 0 there at any feed).
+ * With runout the definition is the same, hf(fz*) = h at the given e and phi_e (the marks over a turn,
+ * z fz); as fz -> 0 the tooth that reaches lowest cuts alone and hf tends to 0 as (z fz)^2 / (8 r), so
+ * fz* is at most about that of e = 0. hf(fz) need not be monotone then (teeth start and stop to cut
+ * as fz grows): fz* is the root the same bracketing finds, the first sign change of hf - h in the
+ * geometric scan from the ball's estimate.
  * @param finish the finish inputs; its fz is ignored.
  */
 export function balancedFeed(

@@ -17,10 +17,11 @@ import { toothModel } from './toothModel';
 
 export * from './areal';
 export * from './arealMap';
-export { envelopeHeightMm } from './envelope';
 export * from './feedMarks';
 export * from './finishInput';
 export * from './finishScope';
+export { envelopeHeightMm, RunoutRow, runoutEnvelopeHeightMm } from './runout';
+export { runoutLowestMm } from './runoutLine';
 export * from './toothModel';
 
 /** The finish a pass leaves, as the command line's JSON reports it (mm; Ssk, Sku dimensionless). */
@@ -46,7 +47,7 @@ export interface FinishReport {
 
 /**
  * The feed marks, balanced feed and areal parameters of passes `intervalMm` apart on a plane (tool
- * and posture validated, L valid for them, finish validated). Throws RUNOUT_NOT_YET with runout > 0.
+ * and posture validated, L valid for them, finish validated), with or without runout.
  */
 export function finishReport(
   tool: ToolInput,

@@ -6,13 +6,12 @@
  * output/x3p.ts, the notes' grid). Loaded by the worker on the first finish question, so neither
  * the page's nor the worker's first script grows.
  */
-import { describeFinishError, type FinishField } from '../../core/finish/finishInput';
+import { describeFinishError } from '../../core/finish/finishInput';
 import {
   arealMap,
   arealParameters,
   balancedFeed,
   feedMarks,
-  RUNOUT_NOT_YET,
   toothModel,
   validateFinish,
 } from '../../core/finish/index';
@@ -38,39 +37,32 @@ export function finish(request: FinishRequest): FinishReply {
   }
   const model = () =>
     toothModel({ tool: request.tool, pattern: request.pattern, intervalMm: request.intervalMm, finish: checked.value });
-  try {
-    const asked = request.x3p;
-    if (asked !== undefined) {
-      const map = arealMap(model(), asked.size, asked.size, 1, 1);
-      const grid = { ...map, xOriginMm: map.dxMm / 2, yOriginMm: map.dyMm / 2 };
-      return {
-        ok: true,
-        request,
-        feedMarks: null,
-        areal: null,
-        x3p: x3pBytes(grid, { comment: asked.comment }),
-        map: null,
-      };
-    }
-    if (request.part === 'areal') {
-      const m = model();
-      const a = arealParameters(m);
-      const areal = { Sa: a.saMm, Sq: a.sqMm, Sz: a.szMm, Sp: a.spMm, Sv: a.svMm, Ssk: a.ssk, Sku: a.sku };
-      const map = Float32Array.from(arealMap(m, MAP_SIZE, MAP_SIZE, 1, 1).heightsMm);
-      return { ok: true, request, feedMarks: null, areal, x3p: null, map };
-    }
-    const marks = feedMarks(model());
-    const balanced = balancedFeed(request.tool, request.pattern, request.intervalMm, checked.value);
-    const feed = {
-      height: marks.heightMm,
-      period: marks.periodMm,
-      balancedFz: balanced.ok ? balanced.feedPerToothMm : null,
+  const asked = request.x3p;
+  if (asked !== undefined) {
+    const map = arealMap(model(), asked.size, asked.size, 1, 1);
+    const grid = { ...map, xOriginMm: map.dxMm / 2, yOriginMm: map.dyMm / 2 };
+    return {
+      ok: true,
+      request,
+      feedMarks: null,
+      areal: null,
+      x3p: x3pBytes(grid, { comment: asked.comment }),
+      map: null,
     };
-    return { ok: true, request, feedMarks: feed, areal: null, x3p: null, map: null };
-  } catch (e) {
-    // Runout: refused by the core until it is computed there (its own one line).
-    if (e instanceof Error && e.message === RUNOUT_NOT_YET)
-      return { ok: false, request, errors: [{ field: 'runout' as FinishField, message: e.message }] };
-    throw e;
   }
+  if (request.part === 'areal') {
+    const m = model();
+    const a = arealParameters(m);
+    const areal = { Sa: a.saMm, Sq: a.sqMm, Sz: a.szMm, Sp: a.spMm, Sv: a.svMm, Ssk: a.ssk, Sku: a.sku };
+    const map = Float32Array.from(arealMap(m, MAP_SIZE, MAP_SIZE, 1, 1).heightsMm);
+    return { ok: true, request, feedMarks: null, areal, x3p: null, map };
+  }
+  const marks = feedMarks(model());
+  const balanced = balancedFeed(request.tool, request.pattern, request.intervalMm, checked.value);
+  const feed = {
+    height: marks.heightMm,
+    period: marks.periodMm,
+    balancedFz: balanced.ok ? balanced.feedPerToothMm : null,
+  };
+  return { ok: true, request, feedMarks: feed, areal: null, x3p: null, map: null };
 }

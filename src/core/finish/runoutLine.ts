@@ -1,0 +1,141 @@
+/**
+ * A line y = const of the surface the teeth leave with runout (runout.ts), cut into smooth pieces for
+ * the areal integrals and searched for its extremes. Lengths mm.
+ *
+ * Along the line the height is, piece by piece, one tooth's one bite: the event found by the search
+ * moves continuously over that tooth's edge as x moves (its (theta, s) by about as much as x, see
+ * below), and the line has a kink or a step where the lowest event passes to another tooth or another
+ * bite (another turn) of the same tooth: the crests between bites, and where a bite ends. The line is
+ * sampled 16 times per tooth pitch; where two neighbouring samples are not the same bite (another
+ * track, or the event moved on the edge by more than 4 times the step in x plus a tolerance), the
+ * change is located by bisection to 1e-13 of the period; a bracket whose events draw together as it
+ * shrinks (to a quarter in 4 halvings) holds a fast continuous motion, not a change. Within a bite the event's motion per unit x
+ * is 1 / |dX/dl| with X = E_x - theta / omega the position along the line a point of the edge cuts
+ * (l the arc length on the section in the metric (rho theta, s)); it is about 1 near the bites'
+ * valleys, where the section runs along the feed. A change the sampling misses (a bite narrower than
+ * a sample step) is a limit of this cut: the brute-force tests bound what it costs.
+ * The lowest point of a line is the least of its teeth's lowest points (every point of a tooth's
+ * section is cut once a turn); the highest is at a change (a crest), taken on both sides of it.
+ */
+import { maximise } from '../math/rootFinder';
+import { NOT_CONVERGED } from './envelope';
+import { gaussLegendre } from './gaussLegendre';
+import { RunoutRow } from './runout';
+import type { ToothModel } from './toothModel';
+
+/** Most changes of bite located on one line (a few per tooth pitch are usual). */
+const MAX_CUTS = 2000;
+/** Pieces per tooth pitch the line starts from. */
+const PIECES_PER_TOOTH = 4;
+/** The rule the areal integrals use on each piece (areal.ts). */
+const RULE = gaussLegendre(12);
+
+/** The event of a sample: its track and place on the edge. */
+interface Ident {
+  readonly x: number;
+  readonly h: number;
+  readonly track: number;
+  readonly theta: number;
+  readonly s: number;
+  /** The edge point's distance from the spindle axis. */
+  readonly rho: number;
+}
+
+function identAt(row: RunoutRow, x: number): Ident {
+  const h = row.heightAt(x);
+  return { x, h, track: row.lastTrack, theta: row.lastTheta, s: row.lastS, rho: row.lastRho() };
+}
+
+/** How far apart two samples' events are on the edge (rho dtheta + ds, mm); Infinity across tracks. */
+function eventDistance(a: Ident, b: Ident): number {
+  if (a.track !== b.track) return Number.POSITIVE_INFINITY;
+  if (a.track < 0) return 0;
+  // The edge point's distance from the axis: near the axis theta turns fast for a short move.
+  const rho = Math.max(a.rho, b.rho);
+  let dt = Math.abs(a.theta - b.theta) % (2 * Math.PI);
+  dt = Math.min(dt, 2 * Math.PI - dt);
+  return dt * rho + Math.abs(a.s - b.s);
+}
+
+/** Whether two samples are the same bite of the same tooth (see the module comment). */
+function sameBite(m: ToothModel, a: Ident, b: Ident): boolean {
+  return eventDistance(a, b) <= 4 * Math.abs(a.x - b.x) + 1e-12 * m.toolRadiusMm;
+}
+
+/**
+ * The breakpoints of a line over one feed period from x0 (x0 and x0 + P included), sorted: the period
+ * cut into 4 pieces per tooth pitch, then every piece whose ends and 12-point Gauss-Legendre nodes
+ * (those the areal integrals use) are not all one bite, cut where the first change between
+ * neighbouring samples lies (bisection to 1e-13 of the period), until none is left.
+ */
+export function runoutLineBreaks(m: ToothModel, row: RunoutRow, x0: number): number[] {
+  const P = m.feedPeriodMm;
+  const n = PIECES_PER_TOOTH * m.input.finish.flutes;
+  const done: number[] = [x0 + P];
+  const todo: Array<[number, number]> = [];
+  for (let i = 0; i < n; i++) todo.push([x0 + (P * i) / n, i + 1 === n ? x0 + P : x0 + (P * (i + 1)) / n]);
+  let guard = 0;
+  while (todo.length > 0) {
+    const [a, b] = todo.pop() as [number, number];
+    const c = 0.5 * (a + b);
+    const r = 0.5 * (b - a);
+    let prev = identAt(row, a);
+    let cut = Number.NaN;
+    // The rule's nodes run from +1 down to -1: taken in increasing x.
+    const nn = RULE.nodes.length;
+    for (let k = 0; k <= nn && Number.isNaN(cut); k++) {
+      const x = k < nn ? c + r * (RULE.nodes[nn - 1 - k] as number) : b;
+      const cur = identAt(row, x);
+      if (!sameBite(m, prev, cur)) {
+        // Never a silent wrong integral: a line that keeps cutting is an error.
+        if (++guard > MAX_CUTS) throw new Error(NOT_CONVERGED);
+        let lo = prev;
+        let hi = cur;
+        const d0 = eventDistance(lo, hi);
+        let halvings = 0;
+        while (hi.x - lo.x > 1e-13 * P) {
+          const mid = identAt(row, 0.5 * (lo.x + hi.x));
+          if (sameBite(m, lo, mid)) lo = mid;
+          else hi = mid;
+          // A change of bite keeps its size as the bracket shrinks; a fast continuous motion shrinks
+          // with it (a quarter after 4 halvings): then there is no change here.
+          if (++halvings >= 4 && eventDistance(lo, hi) < 0.25 * d0) break;
+        }
+        const at = 0.5 * (lo.x + hi.x);
+        // A change at an end of the piece is the break already there, and one that closes up at the
+        // finest step was a fast but continuous motion: look on.
+        if (at - a > 1e-13 * P && b - at > 1e-13 * P && hi.x - lo.x <= 1e-13 * P && !sameBite(m, lo, hi)) cut = at;
+      }
+      prev = cur;
+    }
+    if (Number.isNaN(cut)) done.push(a);
+    else todo.push([cut, b], [a, cut]);
+  }
+  return done.sort((p, q) => p - q);
+}
+
+/** The highest point of a line over one feed period: the largest height at its breaks, either side. */
+export function runoutLineMax(m: ToothModel, row: RunoutRow, breaks: readonly number[]): { high: number; x: number } {
+  const P = m.feedPeriodMm;
+  let high = Number.NEGATIVE_INFINITY;
+  let at = breaks[0] as number;
+  for (const b of breaks) {
+    for (const x of [b - 1e-12 * P, b, b + 1e-12 * P]) {
+      const h = row.heightAt(x);
+      if (h > high) {
+        high = h;
+        at = x;
+      }
+    }
+  }
+  return { high, x: at };
+}
+
+/**
+ * The lowest point of the surface over the cross period: the least over y of the lines' lowest points
+ * (the shared maximiser on its negative: a scan of 24 lines, then Brent's method to 1e-12 of the period).
+ */
+export function runoutLowestMm(m: ToothModel): number {
+  const H = m.crossPeriodMm;
+  return -maximise({ value: (y) => -new RunoutRow(m, y).lowestMm() }, -0.5 * H, 0.5 * H, 24, 1e-12 * H);
+}
