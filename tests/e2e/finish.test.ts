@@ -9,7 +9,7 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { finishReport } from '../../src/core/finish/index';
+import { feedMarks, finishReport, toothModel } from '../../src/core/finish/index';
 import { forwardInput } from '../../src/core/input/validate';
 import { formatLenUnit, formatRoughness } from '../../src/ui/format';
 import { solve } from '../../src/worker/jobs/solve';
@@ -129,6 +129,16 @@ describe('the finish box', () => {
     expect(bytes.length).toBeLessThan(256 * 256 * 8 + 20_000);
     await expect.poll(() => text(page, 'x3p-status')).toMatch(/^Saved finish_.*\.x3p: 256 x 256 heights/);
     expect(errors).toEqual([]);
+  });
+
+  it("a runout answers: hf of the teeth cutting unequally (the core's), the period z fz", async () => {
+    await commit(page, 'input-runout', '0.01');
+    const finish = { flutes: 4, feedPerToothMm: 0.1, runoutMm: 0.01, runoutPhaseDeg: 0, passPhase: 0 };
+    const marks = feedMarks(toothModel({ tool: TOOL, pattern: 'one-way', intervalMm: core.L, finish }));
+    await expect.poll(() => text(page, 'finish-hf'), { timeout: 30_000 }).toBe(formatRoughness(marks.heightMm, 'mm'));
+    expect(await text(page, 'finish-period')).toBe(formatLenUnit(0.4, 'mm', 'fine'));
+    expect(await text(page, 'finish-message')).not.toMatch(/runout/i);
+    await commit(page, 'input-runout', '');
   });
 
   it("a Fusion 360 tool's NOF gives the flutes", async () => {
