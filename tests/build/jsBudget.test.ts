@@ -24,7 +24,8 @@
  * lazy; their lookups in questionWords.ts, copy.ts and resultBar.ts not): 59.95 and 243.29 kB. Then
  * the finish's messages on its fields, the optional fields' link notices and the empty sliders'
  * words (+0.18 kB), less the lookup table's file name and summary, now loaded with its grid on the
- * first click (lookupFile.ts, -0.38 kB): 59.76 and 243.90 kB; the finish box's fixes (on first use): 244.04.
+ * first click (lookupFile.ts, -0.38 kB): 59.76 and 243.90 kB; the finish box's fixes (on first use): 244.04; runout in
+ * the finish core (its worker chunk, on first use, +3.9 kB): 59.78 and 247.91.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -51,7 +52,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 244.5 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(244.5);
+  it('all of it, every .js file, is at most 248.0 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(248.0);
   });
 });
