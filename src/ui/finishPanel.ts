@@ -7,7 +7,7 @@
  * number); a refusal (a bad value, a surface where feed marks are not computed) is one line.
  * Loaded with its first question (finishLazy.ts), not with the first result.
  */
-import { formatInputNumber, fromMm, type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
+import { type LengthUnit, NO_VALUE } from '../core/input/units';
 import type { RestartInfo } from '../worker/client';
 import {
   type FinishFieldMessage,
@@ -19,7 +19,7 @@ import {
 import type { PageReply } from '../worker/pageProtocol';
 import type { finishClient } from '../worker/workers';
 import { detailsRow, html } from './dom';
-import { type FinishInputs, finishAsk } from './finishRequest';
+import { type FinishInputs, finishAsk, x3pFileName } from './finishRequest';
 import { formatLenUnit, formatRoughness } from './format';
 import { shopFeed } from './shopFeed';
 
@@ -41,22 +41,6 @@ const AREAL = [
 function plain(v: number): string {
   const t = v.toFixed(4);
   return Number(t) === 0 ? (0).toFixed(4) : t;
-}
-
-/**
- * The x3p file's name: the question it answers, lengths in `unit`:
- * `finish_R3_Rcr1_rho5_tilt0_one-way_L0.9_z4_fz0.08_mm.x3p`.
- */
-export function x3pFileName(r: FinishRequest): string {
-  const n = (mm: number) => formatInputNumber(fromMm(mm, r.unit));
-  const t = r.tool;
-  const v = r.values;
-  const runout = typeof v.runout === 'number' && v.runout > 0 ? `_e${n(v.runout)}` : '';
-  return (
-    `finish_R${n(t.toolRadiusMm)}_Rcr${n(t.cornerRadiusMm)}_rho${formatInputNumber(t.leadAngleDeg)}` +
-    `_tilt${formatInputNumber(t.tiltAngleDeg)}_${r.pattern}_L${n(r.intervalMm)}_z${String(v.flutes)}` +
-    `_fz${typeof v.fz === 'number' ? n(v.fz) : ''}${runout}_${unitSymbol(r.unit)}.x3p`
-  );
 }
 
 /** The finish box (see the module comment). */

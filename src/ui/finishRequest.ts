@@ -5,9 +5,10 @@
  * plane at its equivalent posture, one-way); on a cylinder, a doubly curved point or waterline on a
  * surface of revolution the answer is the core's one-line refusal, never the continuous one. Pure.
  */
+
 import type { FinishField } from '../core/finish/finishInput';
 import { finishScopeError } from '../core/finish/finishScope';
-import type { LengthUnit } from '../core/input/units';
+import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
 import type { ToolInput } from '../core/input/validate';
 import { equivalentPlaneRequest } from '../worker/equivalentPlane';
 import type { FinishRequest, FinishValue } from '../worker/finishProtocol';
@@ -39,9 +40,16 @@ function toolOf(i: ToolInput): ToolInput {
 }
 
 /** The plane an answer stands on, or the kind of surface where feed marks are not computed. */
-function planeOf(
-  reply: PageReply,
-): { tool: ToolInput; pattern: 'one-way' | 'zigzag'; intervalMm: number; scallopMm: number } | string | null {
+function planeOf(reply: PageReply):
+  | {
+      tool: ToolInput;
+      pattern: 'one-way' | 'zigzag';
+      intervalMm: number;
+      scallopMm: number;
+      threeAxisName?: string;
+    }
+  | string
+  | null {
   if (isSolveReply(reply)) {
     if (!reply.ok) return null;
     const i = reply.request.input;
@@ -60,11 +68,14 @@ function planeOf(
   const plane = equivalentPlaneRequest(three);
   if (plane === null || plane.mode !== 'forward') return null;
   const i = plane.input;
+  const c = three.request.input.case;
+  const passes = c.passes === 'raster' ? `raster${formatInputNumber(c.rasterAngleDeg)}` : 'waterline';
   return {
     tool: toolOf(i),
     pattern: 'one-way',
     intervalMm: three.answer.intervalMm,
     scallopMm: three.answer.cuspHeightMm,
+    threeAxisName: `3-axis_slope${formatInputNumber(c.slopeDeg)}_${passes}`,
   };
 }
 
@@ -81,4 +92,23 @@ export function finishAsk(inputs: FinishInputs, reply: PageReply | null): Finish
   const raMm = 'roughness' in reply && reply.ok && reply.roughness !== null ? reply.roughness.raMm : null;
   const { values, typed, unit } = inputs;
   return { kind: 'ask', request: { ...plane, values, typed, unit, part: 'marks' }, raMm };
+}
+
+/**
+ * The x3p file's name: the question it answers, lengths in `unit`:
+ * `finish_R3_Rcr1_rho5_tilt0_one-way_L0.9_z4_fz0.08_mm.x3p`; three-axis
+ * `finish_R3_Rcr1_3-axis_slope30_raster30_L1.40219_z4_fz0.1_mm.x3p` (L along the surface).
+ */
+export function x3pFileName(r: FinishRequest): string {
+  const n = (mm: number) => formatInputNumber(fromMm(mm, r.unit));
+  const t = r.tool;
+  const v = r.values;
+  const runout = typeof v.runout === 'number' && v.runout > 0 ? `_e${n(v.runout)}` : '';
+  // Three-axis: the question asked (slope and passes), not the posture it stands on.
+  const posture =
+    r.threeAxisName ?? `rho${formatInputNumber(t.leadAngleDeg)}_tilt${formatInputNumber(t.tiltAngleDeg)}_${r.pattern}`;
+  return (
+    `finish_R${n(t.toolRadiusMm)}_Rcr${n(t.cornerRadiusMm)}_${posture}_L${n(r.intervalMm)}_z${String(v.flutes)}` +
+    `_fz${typeof v.fz === 'number' ? n(v.fz) : ''}${runout}_${unitSymbol(r.unit)}.x3p`
+  );
 }

@@ -29,6 +29,11 @@ export interface FinishRequest {
    * (slower: asked of a worker of their own, so they never hold the feed marks back).
    */
   readonly part: 'marks' | 'areal';
+  /**
+   * The three-axis question this plane stands for (its sloped plane at the equivalent posture), as a
+   * file name names it (`3-axis_slope30_raster30`, `3-axis_slope30_waterline`); left out on five axes.
+   */
+  readonly threeAxisName?: string;
   /** Instead, the x3p file of one period cell (`size` by `size` points), named `fileName`. */
   readonly x3p?: { readonly size: number; readonly fileName: string; readonly comment: string };
 }

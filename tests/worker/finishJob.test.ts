@@ -9,7 +9,7 @@
 import { describe, expect, it } from 'vitest';
 import { balancedFeed, feedMarks, finishReport, toothModel } from '../../src/core/finish/index';
 import { forwardInput } from '../../src/core/input/validate';
-import { type FinishInputs, finishAsk } from '../../src/ui/finishRequest';
+import { type FinishInputs, finishAsk, x3pFileName } from '../../src/ui/finishRequest';
 import type { FinishRequest } from '../../src/worker/finishProtocol';
 import { finish } from '../../src/worker/jobs/finish';
 import { solve } from '../../src/worker/jobs/solve';
@@ -146,7 +146,10 @@ describe("the page's finish question beyond the five-axis plane", () => {
       ok: true,
       request: {
         mode: 'three-axis',
-        input: { surface, case: { toolRadiusMm: 3, cornerRadiusMm: 1 } },
+        input: {
+          surface,
+          case: { toolRadiusMm: 3, cornerRadiusMm: 1, slopeDeg: 30, passes: 'raster', rasterAngleDeg: 30 },
+        },
       },
       answer: { leadDeg: 12, tiltDeg: -3, cuspHeightMm: 0.01, intervalMm: 1.5, noScallop: false },
     }) as unknown as PageReply;
@@ -160,6 +163,10 @@ describe("the page's finish question beyond the five-axis plane", () => {
       scallopMm: 0.01,
       part: 'marks',
     });
+    // Its x3p is named by the question asked (the slope and the passes), not the posture it stands on.
+    if (a.kind !== 'ask') throw new Error('asked');
+    expect(x3pFileName(a.request)).toBe('finish_R3_Rcr1_3-axis_slope30_raster30_L1.5_z4_fz0.1_mm.x3p');
+    expect(x3pFileName(asked(teeth))).toMatch(/^finish_R3_Rcr1_rho5_tilt0_one-way_L[\d.]+_z4_fz0\.1_mm\.x3p$/);
   });
 
   it('refuses waterline on a surface of revolution and a doubly curved point in one line', () => {
