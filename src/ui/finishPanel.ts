@@ -21,6 +21,7 @@ import type { finishClient } from '../worker/workers';
 import { detailsRow, html } from './dom';
 import { type FinishInputs, finishAsk, x3pFileName } from './finishRequest';
 import { formatLenUnit, formatRoughness } from './format';
+import { localize } from './i18n/words';
 import { shopFeed } from './shopFeed';
 
 /** Points along each side of the x3p download's one cell (the 256 x 256). */
@@ -103,7 +104,9 @@ export class FinishPanel {
     const row = (label: string, testId: string, title = '') => {
       const out = html('output', { 'data-testid': testId }, NO_VALUE);
       this.outputs.set(testId, out);
-      return detailsRow(list, label, out, title === '' ? {} : { title }).dd;
+      const { row: line, dd } = detailsRow(list, label, out, title === '' ? {} : { title });
+      (line.firstElementChild as HTMLElement).dataset.phrase = label;
+      return dd;
     };
     row('Scallop h (across the feed)', 'finish-h');
     row('Feed marks hf (along the CC path)', 'finish-hf');
@@ -113,7 +116,12 @@ export class FinishPanel {
     const balanced = row('Balanced feed fz* (hf = h)', 'finish-balanced');
     this.useBalanced = html(
       'button',
-      { type: 'button', 'data-testid': 'use-balanced-feed', 'aria-disabled': 'true' },
+      {
+        type: 'button',
+        'data-testid': 'use-balanced-feed',
+        'aria-disabled': 'true',
+        'data-phrase': 'use the balanced feed',
+      },
       'use the balanced feed',
     );
     balanced.append(' ', this.useBalanced);
@@ -129,15 +137,21 @@ export class FinishPanel {
       detailsRow(areal, symbol, out, { title: words });
     }
     this.message = html('p', { class: 'finish-message', 'data-testid': 'finish-message', role: 'status' });
-    this.download = html('button', { type: 'button', 'data-testid': 'download-x3p', disabled: '' }, 'Download x3p');
+    this.download = html(
+      'button',
+      { type: 'button', 'data-testid': 'download-x3p', disabled: '', 'data-phrase': 'Download x3p' },
+      'Download x3p',
+    );
     this.download.addEventListener('click', () => this.askX3p());
     this.x3pStatus = html('span', { class: 'lookup-note', 'data-testid': 'x3p-status', role: 'status' });
-    const heading = html('h2', { class: 'finish-title' }, 'Finish: the feed marks the teeth leave');
-    const note = html(
-      'p',
-      { class: 'lookup-note' },
-      'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).',
+    const heading = html(
+      'h2',
+      { class: 'finish-title', 'data-phrase': 'Finish: the feed marks the teeth leave' },
+      'Finish: the feed marks the teeth leave',
     );
+    const noteText =
+      'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).';
+    const note = html('p', { class: 'lookup-note', 'data-phrase': noteText }, noteText);
     this.figure = html('figure', { class: 'finish-map', 'data-testid': 'finish-map', hidden: '' });
     this.canvas = html('canvas', {
       width: String(MAP_SIZE),
@@ -249,6 +263,10 @@ export class FinishPanel {
       );
     // aria-disabled, not disabled: a press keeps the focus on the button while the new answer comes.
     this.useBalanced.setAttribute('aria-disabled', String(m === undefined || m.balancedFz === null));
+    const balanced = this.outputs.get('finish-balanced');
+    if (balanced !== undefined && m !== undefined && m.balancedFz === null)
+      balanced.dataset.phrase = balanced.textContent ?? '';
+    else if (balanced !== undefined) delete balanced.dataset.phrase;
     for (const part of this.answerParts) part.hidden = this.refusal !== null;
     this.download.disabled = marks === null || this.x3pAsked !== null;
     const failed = this.failed !== null && this.current(this.failed.request) ? this.failed.message : null;
@@ -269,8 +287,12 @@ export class FinishPanel {
       : '';
     const text = this.refusal ?? failed ?? waiting;
     if (this.message.textContent !== text) this.message.textContent = text;
+    // The waiting lines are the box's own words (put into the language in force); a refusal is the worker's.
+    if (text === waiting && text !== '' && this.note === null) this.message.dataset.phrase = text;
+    else delete this.message.dataset.phrase;
     const gaveUp = pending && this.note?.startsWith('No finish') === true;
     this.message.classList.toggle('error', this.refusal !== null || failed !== null || gaveUp);
+    localize(this.box);
   }
 
   /**

@@ -75,6 +75,14 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await page.keyboard.press('Enter');
     await expect.poll(() => text(page, '[data-testid="error-Rcr"]'), POLL).toBe('');
     expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
+    // The teeth and feed in German: fz typed with a decimal comma, the finish box in German.
+    await page.getByTestId('finish-inputs').locator('summary').click();
+    await typeInto(page, 'input-flutes', '4');
+    await typeInto(page, 'input-fz', '0,1');
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, '.finish-title'), POLL).toBe('Oberfläche: die Vorschubmarken der Schneiden');
+    await expect.poll(() => text(page, '[data-testid="finish-hf"]'), POLL).toMatch(/^\d+,\d+ µm$/);
+    expect(await text(page, '[data-testid="use-balanced-feed"]')).toBe('ausgewogenen Vorschub übernehmen');
     // axe on the page at rest (a view marked out of date while it redraws is greyed on purpose).
     await expect.poll(() => page.locator('.teaching').getAttribute('class'), POLL).not.toMatch(/\bstale\b/);
     await pageSettled(page);

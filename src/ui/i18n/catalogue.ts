@@ -112,6 +112,22 @@ export type TabName =
   | 'Formulas'
   | 'Machined surface';
 
+/** The finish box's words, by their English (finishPanel.ts marks each element with `data-phrase`). */
+export type FinishPhrase =
+  | 'Finish: the feed marks the teeth leave'
+  | 'Scallop h (across the feed)'
+  | 'Feed marks hf (along the CC path)'
+  | 'Ra (across the feed)'
+  | 'Sa (areal)'
+  | 'Feed period'
+  | 'Balanced feed fz* (hf = h)'
+  | 'use the balanced feed'
+  | 'Download x3p'
+  | 'none: hf stays below h at every fz up to R'
+  | 'Computing the feed marks and the areal parameters...'
+  | 'Computing the areal parameters...'
+  | 'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).';
+
 /** A field's label (with the paper's symbol kept) and the hint under it. */
 export interface FieldWords {
   readonly label: string;
@@ -135,6 +151,8 @@ export interface Catalogue {
   readonly headline: { readonly stepOver: string; readonly scallopHeight: string };
   /** The results' status lines and the Copy buttons' words. */
   readonly phrases: Readonly<Record<Phrase, string>>;
+  /** The finish box's words. */
+  readonly finish: Readonly<Record<FinishPhrase, string>>;
   /** The teaching views' tab names. */
   readonly tabs: Readonly<Record<TabName, string>>;
   /** The question's words beside an answer (questionWords.ts). */

@@ -120,6 +120,23 @@ export const catalogue: Catalogue = {
     'Copy the centre offset': 'Kopieren: den Versatz des Werkzeugmittelpunkts',
     'Copy the current answer': 'Kopieren: die aktuelle Antwort',
   },
+  finish: {
+    'Finish: the feed marks the teeth leave': 'Oberfläche: die Vorschubmarken der Schneiden',
+    'Scallop h (across the feed)': 'Rautiefe h (quer zum Vorschub)',
+    'Feed marks hf (along the CC path)': 'Vorschubmarken hf (entlang der Kontaktbahn)',
+    'Ra (across the feed)': 'Ra (quer zum Vorschub)',
+    'Sa (areal)': 'Sa (flächenhaft)',
+    'Feed period': 'Vorschubperiode',
+    'Balanced feed fz* (hf = h)': 'Ausgewogener Vorschub fz* (hf = h)',
+    'use the balanced feed': 'ausgewogenen Vorschub übernehmen',
+    'Download x3p': 'x3p herunterladen',
+    'none: hf stays below h at every fz up to R': 'keiner: hf bleibt bei jedem fz bis R unter h',
+    'Computing the feed marks and the areal parameters...':
+      'Vorschubmarken und flächenhafte Kenngrößen werden berechnet …',
+    'Computing the areal parameters...': 'Flächenhafte Kenngrößen werden berechnet …',
+    'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).':
+      'Flächenhafte Kenngrößen über eine Periodenzelle (ISO 25178-2, ungefiltert, Bezug ist die Sollebene); gerade Schneiden, M3. Die x3p-Datei enthält diese Zelle, 256 × 256 Höhen (ISO 25178-72).',
+  },
   tabs: {
     'Cross-feed profile': 'Profil quer zum Vorschub',
     'L against lead and tilt': 'L über Anstell- und Kippwinkel',

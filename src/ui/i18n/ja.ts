@@ -104,6 +104,22 @@ export const catalogue: Catalogue = {
     'Copy the centre offset': '工具中心のずれをコピー',
     'Copy the current answer': '現在の答えをコピー',
   },
+  finish: {
+    'Finish: the feed marks the teeth leave': '仕上げ面：刃が残す送りマーク',
+    'Scallop h (across the feed)': 'カスプ高さ h（送りに直交）',
+    'Feed marks hf (along the CC path)': '送りマーク hf（接触点の経路に沿って）',
+    'Ra (across the feed)': 'Ra（送りに直交）',
+    'Sa (areal)': 'Sa（面）',
+    'Feed period': '送りの周期',
+    'Balanced feed fz* (hf = h)': '釣り合う送り fz*（hf = h）',
+    'use the balanced feed': '釣り合う送りを使う',
+    'Download x3p': 'x3p をダウンロード',
+    'none: hf stays below h at every fz up to R': 'なし：R までのどの fz でも hf は h より低い',
+    'Computing the feed marks and the areal parameters...': '送りマークと面の粗さパラメータを計算中…',
+    'Computing the areal parameters...': '面の粗さパラメータを計算中…',
+    'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).':
+      '面の粗さパラメータは 1 周期のセルについて求めます（ISO 25178-2、フィルタなし、設計平面を基準）。直刃、M3。x3p ファイルはそのセルの 256 × 256 点の高さです（ISO 25178-72）。',
+  },
   tabs: {
     'Cross-feed profile': '送り直交断面',
     'L against lead and tilt': '前傾角・傾斜角と L',

@@ -7,7 +7,7 @@
  * written, its words read from the page itself before any other language replaces them.
  */
 import type { ToolStorage } from '../savedTools';
-import type { Catalogue, Lang, Phrase } from './catalogue';
+import type { Catalogue, FinishPhrase, Lang, Phrase } from './catalogue';
 import { describeInputErrorIn } from './errorText';
 import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
 import { setCatalogue, catalogue as wordsInForce } from './words';
@@ -39,6 +39,10 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
       button.textContent = 'Copy';
       if (button.dataset.ariaEnglish) button.setAttribute('aria-label', button.dataset.ariaEnglish);
     }
+  // The finish box's words back in English.
+  if (catalogue === null)
+    for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]'))
+      if (e.dataset.phrase && e.textContent !== e.dataset.phrase) e.textContent = e.dataset.phrase;
   document.documentElement.lang = catalogue?.lang ?? 'en';
   const title = root.querySelector('[data-i18n="title"]')?.textContent;
   if (title) document.title = title;
@@ -62,6 +66,11 @@ export function localizeResults(results: object): void {
         ? words.headline.scallopHeight
         : null;
   if (label && named !== null) label.textContent = named;
+  // The finish box's words (finishPanel.ts keeps each element's English in data-phrase).
+  for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]')) {
+    const text = words.finish[e.dataset.phrase as FinishPhrase];
+    if (text !== undefined && e.textContent !== text) e.textContent = text;
+  }
   // The status line, the no-scallop line and the Copy buttons (copy.ts reads data-label back).
   for (const e of root.querySelectorAll<HTMLElement>(
     '[data-testid="results-status"], [data-testid="no-scallop"], button.copy',
@@ -81,7 +90,9 @@ export function localizeResults(results: object): void {
     const phrase = words.phrases[e.textContent as Phrase];
     if (phrase !== undefined) e.textContent = phrase;
   }
-  for (const e of root.querySelectorAll<HTMLElement>('.headline output, .results .procedures td, .results .pct')) {
+  for (const e of root.querySelectorAll<HTMLElement>(
+    '.headline output, .results .procedures td, .results .pct, .finish-results output',
+  )) {
     const text = e.textContent ?? '';
     const local = localDecimal(text, words);
     if (local !== text) e.textContent = local;

@@ -34,6 +34,7 @@ function strings(c: Catalogue): Array<[string, string]> {
     ['degrees', c.degrees],
     ['slider', c.slider],
     ...Object.entries(c.question).map(([k, v]) => [`question.${k}`, v] as [string, string]),
+    ...Object.entries(c.finish).map(([k, v]) => [`finish.${k}`, v] as [string, string]),
     ...Object.entries(c.tabs).map(([k, v]) => [`tabs.${k}`, v] as [string, string]),
     ...Object.entries(c.phrases).map(([k, v]) => [`phrases.${k}`, v] as [string, string]),
     ['headline.stepOver', c.headline.stepOver],
@@ -43,7 +44,7 @@ function strings(c: Catalogue): Array<[string, string]> {
 
 /** Latin words a translation keeps: the paper's symbols and authors, names, units, file kinds and key names. */
 const KEPT = new Set(
-  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter'.split(
+  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter hf Sa ISO M3 x3p'.split(
     ' ',
   ),
 );
@@ -66,7 +67,7 @@ describe('the catalogues', () => {
   it('Japanese: each entry holds Japanese script, and its Latin words are symbols or names only', () => {
     for (const [where, text] of strings(ja)) {
       expect(/[\u3000-\u30ff\u4e00-\u9fff]/.test(text), `${where}: ${text}`).toBe(true);
-      for (const word of text.match(/[A-Za-z]+/g) ?? []) expect(KEPT.has(word), `${where}: "${word}"`).toBe(true);
+      for (const word of text.match(/[A-Za-z][A-Za-z0-9]*/g) ?? []) expect(KEPT.has(word), `${where}: "${word}"`).toBe(true);
     }
   });
 
