@@ -22,13 +22,14 @@ import { wireCopyButtons } from './copy';
 import { wireCopyLink } from './copyLink';
 import { must } from './dom';
 import { RESULT_VIEW, startResultCard } from './embedCard';
-import { embedCode, wireCopyEmbed } from './embedCode';
 import { postHeightToParent } from './embedResize';
 import { listenForHostTheme } from './embedTheme';
 import { FieldsPanel } from './fields';
 import { LazyFinish } from './finishLazy';
 import { FreshJob } from './freshness';
 import { Highlighter } from './highlight';
+import { langOf } from './i18n/langOf';
+import { localize } from './i18n/words';
 import { LazyShopSheet } from './lazyShopSheet';
 import { LazyToolShelf } from './lazyToolShelf';
 import { plainLengths } from './lengthFields';
@@ -146,7 +147,9 @@ export class CalculatorApp {
     private readonly observer: AppObserver = {},
   ) {
     applyProcedureColours(document.documentElement);
-    const parsed = parseUrl(window.location.search);
+    // The address as the visit began (the URL is rewritten from the state once the inputs settle).
+    const linkSearch = window.location.search;
+    const parsed = parseUrl(linkSearch);
     const embed = parsed.embed;
     // A bare visit starts on the machine and unit chosen last time; a link or an embed as it says.
     this.storage = embed ? null : browserStorage();
@@ -161,7 +164,10 @@ export class CalculatorApp {
     if (this.resultCard) extra[FIELDS.view.url] = RESULT_VIEW;
     if (embed) extra[FIELDS.embed.url] = '1';
     if (requested) extra[FIELDS.view.url] = requested;
-    const theme = parseTheme(window.location.search);
+    const theme = parseTheme(linkSearch);
+    // The link's language stays in the address from the first write on (the language's code loads later).
+    const linkedLang = langOf(new URLSearchParams(linkSearch).get(FIELDS.lang.url));
+    if (linkedLang !== null) extra[FIELDS.lang.url] = linkedLang;
     startTheme(theme);
     if (theme.override) extra[FIELDS.theme.url] = theme.override;
     // Presentation mode: the full page's only (an embed ignores it); in the URL while on.
@@ -215,14 +221,24 @@ export class CalculatorApp {
       });
       postHeightToParent(root);
     }
-    wireCopyEmbed(must(root, '[data-testid="copy-embed"]'), must(root, '[data-testid="copy-embed-status"]'), () =>
-      embedCode(
+    // "Copy embed code": its code loads on the first press (not with the first result), which it then copies.
+    const embedButton = must<HTMLButtonElement>(root, '[data-testid="copy-embed"]');
+    const embedCodeNow = (code: (pageUrl: string, search: string) => string) =>
+      code(
         `${window.location.origin}${window.location.pathname}`,
         toSearch(plainLengths(this.state), {
           ...extra,
           [FIELDS.view.url]: this.teaching?.activeView ?? requested ?? 'profile',
         }),
-      ),
+      );
+    embedButton.addEventListener(
+      'click',
+      () =>
+        void import('./embedCode').then(({ embedCode, wireCopyEmbed }) => {
+          wireCopyEmbed(embedButton, must(root, '[data-testid="copy-embed-status"]'), () => embedCodeNow(embedCode));
+          embedButton.click();
+        }),
+      { once: true },
     );
     this.fields = new FieldsPanel(root, {
       onField: (key, text, typing) => this.edit(key, withField(this.state, key, text), typing),
@@ -315,16 +331,24 @@ export class CalculatorApp {
     // page as written, needs nothing), a catalogue when its language is chosen; then the words code
     // writes are redrawn.
     void import('./i18n/language').then(({ startLanguage }) =>
-      startLanguage(root, this.storage, {
-        changed: () => {
-          // The fields' messages worded anew in the language (follow), then the results.
-          this.follow();
-          this.draw();
-          this.teaching?.relabel();
+      startLanguage(
+        root,
+        this.storage,
+        {
+          changed: () => {
+            // The request built anew (the page's own messages are worded as it is built), the fields'
+            // messages worded anew (follow), the table drawn anew, then the results.
+            this.built = this.build(this.state);
+            this.results.invalidate();
+            this.follow();
+            this.draw();
+            this.teaching?.relabel();
+          },
+          link: (lang) => this.url.setExtra(FIELDS.lang.url, lang),
+          notice: (text) => this.notice.show(linkNotice([text]), 0),
         },
-        link: (lang) => this.url.setExtra(FIELDS.lang.url, lang),
-        notice: (text) => this.notice.show(linkNotice([text]), 0),
-      }),
+        linkSearch,
+      ),
     );
   }
 
@@ -446,6 +470,8 @@ export class CalculatorApp {
     this.resultBar.render(typing);
     this.sceneBox.classList.toggle('typing', typing);
     this.roughness.render(shown, this.state.unit);
+    // The roughness rows are drawn after the results: they too in the language in force.
+    localize(document);
     // The finish (issue 29): the answer on screen's feed marks, loaded with the first teeth and feed.
     this.finish.show(this.state, shown.kind === 'current' && !typing ? shown.reply : null);
     this.highlighter.markRows();

@@ -10,7 +10,7 @@ import type { PassPattern } from '../core/input/validate';
 import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
 import { html, must } from './dom';
-import { finishGiven } from './finishFields';
+import { FINISH_KEYS, finishGiven } from './finishFields';
 import { catalogue, fieldWords } from './i18n/words';
 import { LazyQuestionLimits } from './lazyQuestionLimits';
 import type { Machine, Passes } from './machineState';
@@ -305,6 +305,9 @@ export class FieldsPanel {
     // tool's flutes); the user may close it again, and it stays as they left it while they do.
     const finishNow = finishGiven(state);
     if (finishNow && !this.finishWasGiven && this.finishBox !== null) this.finishBox.open = true;
+    // A message on one of its fields opens it too (a closed box must not hide why there is no answer).
+    if (this.finishBox !== null && !this.finishBox.open && FINISH_KEYS.some((k) => messages.has(k)))
+      this.finishBox.open = true;
     this.finishWasGiven = finishNow;
     const forward = state.mode === 'forward';
     const five = state.machine === '5axis';

@@ -70,7 +70,7 @@ export class ResultBar {
     // Its name starts with its visible word, in the language on screen ("Copy", "Kopieren").
     this.copyButton.setAttribute(
       'aria-label',
-      `${this.copyButton.textContent || 'Copy'} ${this.headlineLabel.textContent ?? 'the headline value'}`,
+      `${this.copyButton.dataset.label ?? 'Copy'} ${this.headlineLabel.textContent ?? 'the headline value'}`,
     );
     const stale = this.section.classList.contains('stale') || this.section.getAttribute('aria-busy') === 'true';
     const mark: ResultBarMark = typing ? 'typing' : stale ? 'stale' : '';

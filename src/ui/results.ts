@@ -291,6 +291,11 @@ export class ResultsPanel {
     this.table(reply, unit, forward ? 'forward' : 'inverse', false);
   }
 
+  /** The language changed: the table is drawn anew at the next render (its words and decimal sign). */
+  invalidate(): void {
+    this.drawn = null;
+  }
+
   private table(reply: PageReply | null, unit: LengthUnit, mode: SolveMode, leadOnly: boolean): void {
     const d = this.drawn;
     if (d && d.reply === reply && d.unit === unit && d.mode === mode && d.leadOnly === leadOnly) return;

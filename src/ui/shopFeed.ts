@@ -10,6 +10,7 @@ import { fromMm, type LengthUnit, toMm } from '../core/input/units';
  */
 export function shopFeed(fzMm: number, unit: LengthUnit): number {
   const scale = unit === 'mm' ? 1e4 : 1e5;
-  const rounded = Math.floor(fromMm(fzMm, unit) * scale) / scale;
+  // To 12 digits first: 1.13 mm * 1e4 is 11299.999..., which would floor a whole step down.
+  const rounded = Math.floor(Number((fromMm(fzMm, unit) * scale).toPrecision(12))) / scale;
   return rounded > 0 ? toMm(rounded, unit) : fzMm;
 }

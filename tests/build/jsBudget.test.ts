@@ -26,7 +26,9 @@
  * words (+0.18 kB), less the lookup table's file name and summary, now loaded with its grid on the
  * first click (lookupFile.ts, -0.38 kB): 59.76 and 243.90 kB; the finish box's fixes (on first use): 244.04; runout in
  * the finish core (its worker chunk, on first use, +3.9 kB): 59.78 and 247.91; the finish box's
- * and the tabs' words in each language (on first use): 59.79 and 249.16.
+ * and the tabs' words in each language (on first use): 59.79 and 249.16; the review's fixes (the link's
+ * language read at once, the table drawn anew on a switch) less the embed code, now loaded on its
+ * first press (-0.28 kB): 59.67 and 249.98.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -41,10 +43,10 @@ const KB = 1024;
 describe('the JavaScript budget of the built site', () => {
   const sizes = jsSizes(siteFiles(DIST), readFileSync(`${DIST}/index.html`, 'utf8'), gzip9);
 
-  it('the first result (page and worker, their static imports) is at most 59.8 kB gzip (the ratchet; the target, 60, is met)', () => {
+  it('the first result (page and worker, their static imports) is at most 59.75 kB gzip (the ratchet; the target, 60, is met)', () => {
     expect(sizes.firstResult.some((p) => p.startsWith('assets/index-'))).toBe(true);
     expect(sizes.firstResult.some((p) => p.startsWith('assets/solver.worker-'))).toBe(true);
-    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.8);
+    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.75);
   });
 
   it('counts every .js file the build emits: the chunks, the service worker and embed.js', () => {
@@ -53,7 +55,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 249.5 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(249.5);
+  it('all of it, every .js file, is at most 250.5 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(250.5);
   });
 });

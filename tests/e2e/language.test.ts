@@ -143,5 +143,17 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     expect(await text(page, '#tab-profile')).toBe('Cross-feed profile');
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
     await expect.poll(() => new URL(page.url()).searchParams.get('lang'), POLL).toBeNull();
+    // German then English again, with a valid answer: the table's decimal sign follows both ways.
+    await expect.poll(() => text(page, '[data-testid="error-Rcr"]'), POLL).toBe('');
+    await tap(page, 'de');
+    // In German the table's numbers take a comma, its cells keep their outputs (test ids).
+    await expect.poll(() => text(page, '[data-testid="result-sekine-half"]'), POLL).toMatch(/^\d+,\d{4} mm$/);
+    // The parts still in English say so (screen readers read them as English).
+    expect(await page.locator('.teaching').getAttribute('lang')).toBe('en');
+    await tap(page, 'en');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
+    // Back in English: the table drawn anew with points (no comma left to read as a thousands separator).
+    await expect.poll(() => text(page, '[data-testid="result-sekine-half"]'), POLL).toMatch(/^\d+\.\d{4} mm$/);
+    expect(await page.locator('.teaching').getAttribute('lang')).toBeNull();
   });
 });

@@ -10,6 +10,8 @@ describe('the balanced feed as the page sets it', () => {
   it('mm: 0.1 µm steps, rounded down', () => {
     expect(fromMm(shopFeed(0.92741345796649899, 'mm'), 'mm')).toBe(0.9274);
     expect(shopFeed(2.0702379778358155, 'mm')).toBe(2.0702);
+    // 1.13 * 1e4 is 11299.999... in binary: still 1.13, not 1.1299.
+    expect(shopFeed(1.13, 'mm')).toBe(1.13);
   });
   it('inch: 10 µin steps, rounded down, never above fz*', () => {
     const fz = 0.92741345796649899;

@@ -51,7 +51,6 @@ export type StaticKey =
   | 'shopSheet'
   | 'copyLink'
   | 'copyEmbed'
-  | 'present'
   | 'cameraIso'
   | 'cameraFeed'
   | 'cameraTop'

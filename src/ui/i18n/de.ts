@@ -47,7 +47,6 @@ export const catalogue: Catalogue = {
     shopSheet: 'Werkstattblatt',
     copyLink: 'Link kopieren',
     copyEmbed: 'Einbettungscode kopieren',
-    present: 'Präsentieren',
     cameraIso: 'Isometrisch',
     cameraFeed: 'In Vorschubrichtung',
     cameraTop: 'Draufsicht',

@@ -47,7 +47,6 @@ export const catalogue: Catalogue = {
     shopSheet: '現場用シート',
     copyLink: 'リンクをコピー',
     copyEmbed: '埋め込みコードをコピー',
-    present: 'プレゼン表示',
     cameraIso: '等角図',
     cameraFeed: '送り方向から',
     cameraTop: '上から',

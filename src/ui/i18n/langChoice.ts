@@ -6,6 +6,9 @@
 import { FIELDS } from '../../core/input/fields';
 import type { ToolStorage } from '../savedTools';
 import type { Catalogue, Lang } from './catalogue';
+import { LANGS, langOf } from './langOf';
+
+export { LANGS, langOf } from './langOf';
 
 /** The storage key of the chosen language (versioned). */
 export const LANGUAGE_KEY = 'path-interval.language.v1';
@@ -19,18 +22,10 @@ export function storedLanguage(storage: ToolStorage | null): string | null {
   }
 }
 
-/** The languages, as the registry names them. */
-export const LANGS: readonly Lang[] = FIELDS.lang.values;
-
-/** The word of a language in `text` (exactly one of the registry's), or null. */
-export function langOf(text: unknown): Lang | null {
-  return LANGS.find((l) => l === text) ?? null;
-}
-
 /** The browser's first language the page has (`de-AT` is German), or null. */
 export function browserLang(languages: readonly string[]): Lang | null {
   for (const tag of languages) {
-    const lang = langOf(tag.toLowerCase().split('-')[0]);
+    const lang = langOf(tag);
     if (lang !== null) return lang;
   }
   return null;
@@ -47,7 +42,7 @@ export function chooseLang(
   if (linked !== null) return { lang: linked, fromLink: true, notice: null };
   const fallback = langOf(stored) ?? browserLang(languages) ?? 'en';
   const notice =
-    text === null
+    text === null || text.trim() === ''
       ? null
       : `${FIELDS.lang.url}="${text.slice(0, 20)}" is not ${LANGS.slice(0, -1).join(', ')} or ${LANGS.at(-1)}; showing ${fallback}.`;
   return { lang: fallback, fromLink: false, notice };

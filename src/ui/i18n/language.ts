@@ -19,6 +19,10 @@ export function loadCatalogue(lang: Lang): Promise<Catalogue | null> {
   return Promise.resolve(null);
 }
 
+/** The parts of the page that stay in English in another language (their `lang` says so). */
+const ENGLISH_PARTS =
+  '.teaching, .table-notes, .procedures thead, .notices, [data-testid="copy-status"], .finish-message, .finish-map figcaption, .legend, .meaning, .scene';
+
 /** The page's English words of its `data-i18n` elements, read once before any language replaces them. */
 const ENGLISH = new WeakMap<Element, string>();
 
@@ -43,6 +47,10 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
   if (catalogue === null)
     for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]'))
       if (e.dataset.phrase && e.textContent !== e.dataset.phrase) e.textContent = e.dataset.phrase;
+  // The parts still in English say so (WCAG 3.1.2, language of parts): screen readers read them as English.
+  for (const e of root.querySelectorAll<HTMLElement>(ENGLISH_PARTS))
+    if (catalogue === null) e.removeAttribute('lang');
+    else e.setAttribute('lang', 'en');
   document.documentElement.lang = catalogue?.lang ?? 'en';
   const title = root.querySelector('[data-i18n="title"]')?.textContent;
   if (title) document.title = title;
@@ -90,12 +98,16 @@ export function localizeResults(results: object): void {
     const phrase = words.phrases[e.textContent as Phrase];
     if (phrase !== undefined) e.textContent = phrase;
   }
+  // Only the text nodes change (a cell's <output> and its test id stay).
   for (const e of root.querySelectorAll<HTMLElement>(
     '.headline output, .results .procedures td, .results .pct, .finish-results output',
   )) {
-    const text = e.textContent ?? '';
-    const local = localDecimal(text, words);
-    if (local !== text) e.textContent = local;
+    const walker = document.createTreeWalker(e, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node !== null; node = walker.nextNode()) {
+      const text = node.nodeValue ?? '';
+      const local = localDecimal(text, words);
+      if (local !== text) node.nodeValue = local;
+    }
   }
 }
 
@@ -113,8 +125,12 @@ export interface LanguageEvents {
  * Starts the page's language: the one the visit asks for (langChoice.ts), kept in the link when the
  * link gave it, and the switch (`root`'s radios).
  */
-export function startLanguage(root: HTMLElement, storage: ToolStorage | null, events: LanguageEvents): LanguageSwitch {
-  const search = window.location.search;
+export function startLanguage(
+  root: HTMLElement,
+  storage: ToolStorage | null,
+  events: LanguageEvents,
+  search: string,
+): LanguageSwitch {
   const chosen = chooseLang(search, storedLanguage(storage), navigator.languages ?? [navigator.language]);
   if (chosen.fromLink) events.link(chosen.lang);
   if (chosen.notice !== null) events.notice(chosen.notice);
@@ -125,6 +141,7 @@ export function startLanguage(root: HTMLElement, storage: ToolStorage | null, ev
 export class LanguageSwitch {
   /** The language last asked for: a slower load of an earlier choice never wins. */
   private wanted: Lang;
+  private readonly radios: readonly HTMLInputElement[];
 
   constructor(
     root: HTMLElement,
@@ -134,6 +151,7 @@ export class LanguageSwitch {
   ) {
     this.wanted = start;
     const radios = [...root.querySelectorAll<HTMLInputElement>('input[name="lang"]')];
+    this.radios = radios;
     // A tap made while this code was loading stands (the radio is checked already): taken as the user's.
     const tapped = langOf(radios.find((r) => r.checked && r.value !== 'en')?.value);
     for (const radio of radios) {
@@ -158,13 +176,26 @@ export class LanguageSwitch {
       }
       this.events.link(lang === 'en' ? null : lang);
     }
-    void loadCatalogue(lang).then((catalogue) => {
-      if (this.wanted !== lang) return;
-      setCatalogue(catalogue, localizeResults, (e, unit, options) =>
-        catalogue === null ? '' : describeInputErrorIn(catalogue, e, unit, options),
-      );
-      applyCatalogue(document, catalogue);
-      this.events.changed(lang);
-    });
+    void loadCatalogue(lang).then(
+      (catalogue) => this.loaded(lang, catalogue),
+      () => {
+        // A catalogue that does not load (offline, a new deployment): the page stays in the
+        // language in force, its radio checked again, and says so.
+        if (this.wanted !== lang) return;
+        const inForce = wordsInForce()?.lang ?? 'en';
+        this.wanted = inForce;
+        for (const radio of this.radios) radio.checked = radio.value === inForce;
+        this.events.notice(`The ${lang} words could not be loaded; the page stays in ${inForce}.`);
+      },
+    );
+  }
+
+  private loaded(lang: Lang, catalogue: Catalogue | null): void {
+    if (this.wanted !== lang) return;
+    setCatalogue(catalogue, localizeResults, (e, unit, options) =>
+      catalogue === null ? '' : describeInputErrorIn(catalogue, e, unit, options),
+    );
+    applyCatalogue(document, catalogue);
+    this.events.changed(lang);
   }
 }

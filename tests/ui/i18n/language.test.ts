@@ -21,9 +21,16 @@ describe('the language a visit starts in', () => {
   });
   it('a stored value that is not a language is ignored (storage is untrusted)', () => {
     expect(chooseLang('', '<script>', ['ja']).lang).toBe('ja');
-    expect(langOf('DE')).toBeNull();
+    expect(langOf('constructor')).toBeNull();
     expect(browserLang(['JA-jp'])).toBe('ja');
   });
+  it('a language tag as HTML and browsers write it: de-DE, DE, ja_JP; an empty lang= is not given', () => {
+    expect(chooseLang('?lang=de-DE', null, []).lang).toBe('de');
+    expect(chooseLang('?lang=DE', null, []).lang).toBe('de');
+    expect(chooseLang('?lang=ja_JP', null, []).lang).toBe('ja');
+    expect(chooseLang('?lang=', 'de', [])).toEqual({ lang: 'de', fromLink: false, notice: null });
+  });
+
   it("a lang= that is not one: a notice naming the three, and the visit's own language", () => {
     const chosen = chooseLang('?lang=fr', 'de', []);
     expect(chosen.lang).toBe('de');
