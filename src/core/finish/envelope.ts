@@ -30,6 +30,26 @@ import type { ToothModel } from './toothModel';
 /** The error a point whose event search stalled raises (never a silent wrong height). */
 export const NOT_CONVERGED = 'The tooth event search did not converge at this point (please report the inputs).';
 /**
+ * The error the areal parameters raise where some point of the cell is cut by no tooth (a flat end
+ * upright at a step-over of 2R: beside the pass boundary its bottom edges, turning, miss thin slivers
+ * that only the vertical side, an instant at a time, reaches): the surface left is not defined there.
+ */
+export const NOT_SWEPT = 'Some points of the period cell are cut by no tooth: the surface left is not defined there.';
+
+/**
+ * The one line a page or command line says where a finish part could not be computed, or null for
+ * any other error (which is a bug, thrown on).
+ */
+export function finishFailureWords(e: unknown, part: 'areal' | 'marks'): string | null {
+  if (!(e instanceof Error)) return null;
+  const what = part === 'areal' ? 'The areal parameters' : 'The feed marks';
+  if (e.message === NOT_CONVERGED)
+    return `${what} could not be computed for this feed: the event search did not converge; try a smaller fz.`;
+  if (e.message === NOT_SWEPT)
+    return `${what} are not defined here: thin slivers between the passes are cut by no tooth (the bottom edges miss them); try a smaller step-over.`;
+  return null;
+}
+/**
  * Most steps of one walk from the contact: a few tens are usual; where Phi turns just short of a level
  * (a tangential approach) the safe steps stay short and take thousands.
  */
@@ -230,7 +250,14 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
   if (distToInt(level) <= LEVEL_TOL) return Math.min(best, p0.z);
   let grow = MAX_STEP_RAD;
   let iter = 0;
+  // With the axis vertical the body above its widest section is the cylinder of radius R: the section
+  // goes on up the vertical line |w| = sqrt(R^2 - (y - O_y)^2), along which w, psi and so Phi stay
+  // constant. A walk that reaches that wall meets no level beyond it (the level, if met exactly,
+  // was met where the wall begins).
+  const wall = row.vertical ? Math.sqrt(Math.max(0, scale * scale - row.section.yRel * row.section.yRel)) : -1;
   for (; iter < MAX_WALK_STEPS; iter++) {
+    const onWall = Math.abs(Math.abs(p0.w) - wall) <= 1e-12 * scale && Math.abs(p0.dw) <= 1e-9 * p0.speed;
+    if (row.vertical && dir * p0.w > 0 && onWall) break;
     if (p0.rho <= 1e-12 * scale && !throughTip) {
       best = Math.min(best, p0.z);
       break;
@@ -363,7 +390,9 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
     if (p0.z >= best || final) break;
   }
   // A walk that ran out of steps has no answer (NaN): the callers say so or look elsewhere.
-  if (iter >= MAX_WALK_STEPS) return Number.NaN;
+  if (iter >= MAX_WALK_STEPS) {
+    return Number.NaN;
+  }
   return best;
 }
 
