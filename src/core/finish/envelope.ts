@@ -179,6 +179,8 @@ function copyPoint(from: SectionPoint, to: SectionPoint): void {
   to.psi = from.psi;
   to.speed = from.speed;
   to.dw = from.dw;
+  to.dpsi = from.dpsi;
+  to.inPlane = from.inPlane;
 }
 
 /**
@@ -375,8 +377,13 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
           best = Math.min(best, p0.z);
           break;
         }
-        grow = (0.8 * gap) / bound;
-        continue;
+        // Where Phi turns just short of a level its rate nearly vanishes while the bound does not:
+        // the second-order bound lets the steps past the turn grow with sqrt(gap), not with gap.
+        const reach = throughTip ? Number.NaN : secondOrderStep(m, p0, p1, speed * delta, rhoLo, gap);
+        if (!(reach >= 1)) {
+          grow = Math.max((0.8 * gap) / bound, Number.isFinite(reach) ? reach * delta : 0);
+          continue;
+        }
       }
     }
     if (final && tipAhead) {
@@ -394,6 +401,44 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
     return Number.NaN;
   }
   return best;
+}
+
+/**
+ * The second-order test of a step from p0 to p1 of arc length at most `arc` keeping at least `rhoLo`
+ * from the axis: the fraction of the step (>= 1: the whole) over which Phi provably stays within
+ * 0.9 `gap` of its value at p0, or NaN when no bound is at hand (a sharp corner, or the plane near
+ * tangent to the body).
+ *
+ * In arc length s along the section, |Phi(s) - Phi(0) - Phi'(0) s| <= M s^2 / 2 with |Phi''| <= M:
+ * Phi = psi - omega w, |w''| <= kappa (the section's curvature), and with P_perp the point's part
+ * across the axis (|P_perp| = rho) and v the unit tangent, psi' = (P_perp x v) . a / rho^2, whose
+ * derivative is (P_perp x v') . a / rho^2 - 2 (P_perp x v) . a (P_perp . v) / rho^4 (the term of
+ * P_perp' = v_perp vanishes: (v_perp x v) . a = 0), so |psi''| <= kappa / rho + 2 / rho^2. The body
+ * is the parallel body at distance Rcr of a convex set: its normal curvatures are at most 1 / Rcr
+ * and its normal n turns at most s / Rcr over s; by Meusnier the section's curvature is a normal
+ * curvature over |n_plane| = sqrt(1 - n_y^2), which over the step is at least (g0 + g1 - arc / Rcr) / 2.
+ */
+function secondOrderStep(
+  m: ToothModel,
+  p0: SectionPoint,
+  p1: SectionPoint,
+  arc: number,
+  rhoLo: number,
+  gap: number,
+): number {
+  const rcr = m.cornerRadiusMm;
+  if (!(rcr > 0) || !(rhoLo > 0) || !(arc > 0)) return Number.NaN;
+  const gLo = 0.5 * (p0.inPlane + p1.inPlane - arc / rcr);
+  if (!(gLo > 0)) return Number.NaN;
+  const kappa = 1 / (rcr * gLo);
+  const omega = m.omegaRadPerMm;
+  const slope = Math.abs(p0.dpsi - omega * p0.dw) / p0.speed;
+  const curv = kappa * (omega + 1 / rhoLo) + 2 / (rhoLo * rhoLo);
+  const change = slope * arc + 0.5 * curv * arc * arc;
+  if (change < 0.9 * gap) return 1;
+  // The arc over which the bound stays below 0.8 gap, as a fraction of this one.
+  const s = (0.8 * 2 * gap) / (slope + Math.sqrt(slope * slope + 1.6 * curv * gap));
+  return s / arc;
 }
 
 /**

@@ -35,8 +35,11 @@ interface Case {
   readonly runoutPhaseDeg?: number;
 }
 
-/** One case per stratum (kind x lead class x tilt class x pattern), drawn from `seed`. */
-function cases(seed: number): Case[] {
+/**
+ * One case per stratum (kind x lead class x tilt class x pattern), drawn from `seed`; fz from
+ * 0.01 to 0.16 mm, or with `large` from R/2 to R (the largest valid).
+ */
+function cases(seed: number, large = false): Case[] {
   const r = seededRandom(seed);
   const out: Case[] = [];
   const kinds: Kind[] = ['ball', 'flat', 'bull'];
@@ -67,7 +70,7 @@ function cases(seed: number): Case[] {
           pattern,
           intervalMm: planeIntervalMm(v.value),
           flutes: 1 + Math.floor(5 * r()),
-          fzMm: 0.01 + 0.15 * r(),
+          fzMm: large ? R * (0.5 + 0.5 * r()) : 0.01 + 0.15 * r(),
           passPhase: r() < 0.5 ? 0 : r(),
         });
         break;
@@ -146,6 +149,10 @@ describe('envelope height against the tooth-sweep brute force', () => {
 
   it('agrees within 1e-9 mm over the strata, inside the brute force bracket (seed 2901)', () => {
     checkStrata(cases(2901), 2902, 1);
+  });
+
+  it('at large fz (R/2 to R: a level met nearly tangentially, Phi turning just short of it) agrees within 1e-9 mm over the strata (seed 2907)', () => {
+    checkStrata(cases(2907, true), 2908, 3);
   });
 
   it('with runout (e 5 % to 150 % of fz, any phase) agrees within 1e-9 mm over the strata (seed 2903)', () => {
@@ -292,5 +299,25 @@ describe('envelope height against the tooth-sweep brute force', () => {
     const c = upright('flat upright R 3', 3, 0, 6, 4, 0.1);
     expect(envelopeHeightMm(modelOf(c), 0.03815834186971188, 2.99985634261393)).toBe(Number.POSITIVE_INFINITY);
     expect(() => arealParameters(modelOf(c))).toThrow(NOT_SWEPT);
+  });
+
+  it('bull R 3 Rcr 1 lead 5, 4 teeth, fz 2.9: where Phi turns 1e-13 to 4e-13 of the pitch short of a level the walk passes the turn (it ran out of steps), a lone pass within 1e-9 mm', () => {
+    // L 10: only pass 0 reaches y, whose events there are those it has at L 2.887 (h 0.05 mm).
+    const c: Case = {
+      label: 'bull lead 5 fz 2.9',
+      tool: { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 },
+      pattern: 'one-way',
+      intervalMm: 10,
+      flutes: 4,
+      fzMm: 2.9,
+      passPhase: 0,
+    };
+    const m = modelOf(c);
+    const y = -1.8091990583914503;
+    for (const phase of [1.2003539244754684, 1.2003545504062796, 1.2003548633716852]) {
+      const x = phase / m.omegaRadPerMm;
+      const brute = bruteEnvelopeHeightMm(bruteParams(c), x, y, 100).heightMm;
+      expect(Math.abs(envelopeHeightMm(m, x, y) - brute), `(${x}, ${y})`).toBeLessThan(1e-9);
+    }
   });
 });
