@@ -8,7 +8,7 @@
  */
 
 import type { PassPattern, ToolInput } from '../core/domain/tool';
-import { NOT_CONVERGED } from '../core/finish/envelope';
+import { finishFailureWords } from '../core/finish/envelope';
 import type { FinishError, FinishField, FinishInput } from '../core/finish/finishInput';
 import { describeFinishError } from '../core/finish/finishInput';
 import { type FinishReport, finishReport, finishScopeError, validateFinish } from '../core/finish/index';
@@ -72,11 +72,10 @@ export function finishOf(
   try {
     return { ok: true, input: v.value, report: finishReport(tool, pattern, intervalMm, v.value) };
   } catch (e) {
-    // An event search that did not converge: said, never a number.
-    if (e instanceof Error && e.message === NOT_CONVERGED) {
-      return { ok: false, errors: [{ field: 'flutes', code: 'not-computed-here', got: '', message: e.message }] };
-    }
-    throw e;
+    // An event search that did not converge (or a surface left undefined): said, never a number.
+    const message = finishFailureWords(e, 'areal');
+    if (message === null) throw e;
+    return { ok: false, errors: [{ field: 'fz', code: 'not-computed-here', got: '', message }] };
   }
 }
 

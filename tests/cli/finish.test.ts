@@ -181,6 +181,15 @@ describe('refusals, one line each', () => {
     });
   }
 
+  it('a flat end upright at L = 2R: the areal parameters are refused in one plain line on --fz (slivers no tooth cuts)', async () => {
+    const r = await runMain(['--R', '3', '--Rcr', '0', '--rho', '0', '--h', '0.05', '--flutes', '4', '--fz', '0.1']);
+    expect(r.code).toBe(2);
+    expect(r.stderr.trim()).toBe(
+      'error: --fz: The areal parameters are not defined here: thin slivers between the passes are cut by no tooth (the bottom edges miss them); try a smaller step-over.',
+    );
+    expect(r.stdout).toBe('');
+  });
+
   it('in inches, a limit is in inches', async () => {
     const r = await runMain([
       '--R',

@@ -7,6 +7,7 @@
  * marks are not computed (never a continuous answer).
  */
 import { describe, expect, it } from 'vitest';
+import { finishFailureWords, NOT_CONVERGED } from '../../src/core/finish/envelope';
 import { balancedFeed, feedMarks, finishReport, toothModel } from '../../src/core/finish/index';
 import { forwardInput } from '../../src/core/input/validate';
 import { type FinishInputs, finishAsk, x3pFileName } from '../../src/ui/finishRequest';
@@ -179,5 +180,33 @@ describe("the page's finish question beyond the five-axis plane", () => {
       kind: 'refused',
       message: expect.stringMatching(/^Feed marks are not computed on doubly curved points yet/),
     });
+  });
+
+  it('where the areal parameters cannot be computed it answers ok: false in one plain line on fz, never throws (flat end upright, L = 2R)', () => {
+    const flat = { toolRadiusMm: 3, cornerRadiusMm: 0, leadAngleDeg: 0, tiltAngleDeg: 0 };
+    const reply = solve({ mode: 'forward', input: forwardInput(flat, 'one-way', 0.05) }) as PageReply;
+    const request = asked(inputs({ flutes: 4, fz: 0.1 }), reply);
+    const marks = finish(request);
+    expect(marks.ok).toBe(true);
+    const areal = finish({ ...request, part: 'areal' });
+    if (areal.ok) throw new Error('answered');
+    expect(areal.errors).toEqual([
+      {
+        field: 'fz',
+        message:
+          'The areal parameters are not defined here: thin slivers between the passes are cut by no tooth (the bottom edges miss them); try a smaller step-over.',
+      },
+    ]);
+  });
+
+  it('words a search that did not converge in one line per part, and leaves other errors alone', () => {
+    expect(finishFailureWords(new Error(NOT_CONVERGED), 'areal')).toBe(
+      'The areal parameters could not be computed for this feed: the event search did not converge; try a smaller fz.',
+    );
+    expect(finishFailureWords(new Error(NOT_CONVERGED), 'marks')).toBe(
+      'The feed marks could not be computed for this feed: the event search did not converge; try a smaller fz.',
+    );
+    expect(finishFailureWords(new Error('other'), 'areal')).toBeNull();
+    expect(finishFailureWords('x', 'areal')).toBeNull();
   });
 });

@@ -21,7 +21,7 @@
 import { inverseInput } from '../input/validate';
 import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
 import { planeInverse } from '../surfaces/exact';
-import { PassRow, passesAt } from './envelope';
+import { NOT_SWEPT, PassRow, passesAt } from './envelope';
 import { gaussLegendre } from './gaussLegendre';
 import { RowEnvelope } from './rowEnvelope';
 import { RunoutRow } from './runout';
@@ -404,6 +404,8 @@ export function arealParameters(m: ToothModel): ArealParameters {
   const low = m.input.finish.runoutMm > 0 ? runoutLowestMm(m) : new RowEnvelope(m, 0).floorMm;
   const end = newSearchEnd();
   const high = maximise({ value: (y) => lineMax(m, y) }, 0, height, 24, 1e-12 * height, end);
+  // A point no tooth reaches has no height (+Infinity): the parameters are not defined.
+  if (!Number.isFinite(mean) || !Number.isFinite(high)) throw new Error(NOT_SWEPT);
   const sp = high - mean;
   const sv = mean - low;
   return {

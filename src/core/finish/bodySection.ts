@@ -35,6 +35,11 @@ export class SectionPoint {
   dw = 0;
   /** dpsi/dalpha, the angle's actual rate (radians per radian). */
   dpsi = 0;
+  /**
+   * Length of the body's unit normal's part in the plane, sqrt(1 - n_y^2) (the section's curvature is
+   * a normal curvature of the body over it, Meusnier).
+   */
+  inPlane = 0;
 }
 
 /** Scratch of the distance evaluation (read right after the call). */
@@ -204,6 +209,7 @@ export class BodySection {
       out.speed = Number.POSITIVE_INFINITY;
       out.dw = 0;
       out.dpsi = 0;
+      out.inPlane = 0;
       return;
     }
     const t = this.rayRoot(cw0, cz0, cw, cz, tb);
@@ -221,6 +227,7 @@ export class BodySection {
     const vw = dt * cw - t * cz;
     const vz = dt * cz + t * cw;
     out.dw = vw;
+    out.inPlane = Math.sqrt(ev.gw * ev.gw + ev.gz * ev.gz);
     // dpsi/dalpha = (c1 v.u2 - c2 v.u1) / rho^2 with v = (vw, 0, vz).
     const u1 = this.m.u1;
     const u2 = this.m.u2;

@@ -30,6 +30,26 @@ import type { ToothModel } from './toothModel';
 /** The error a point whose event search stalled raises (never a silent wrong height). */
 export const NOT_CONVERGED = 'The tooth event search did not converge at this point (please report the inputs).';
 /**
+ * The error the areal parameters raise where some point of the cell is cut by no tooth (a flat end
+ * upright at a step-over of 2R: beside the pass boundary its bottom edges, turning, miss thin slivers
+ * that only the vertical side, an instant at a time, reaches): the surface left is not defined there.
+ */
+export const NOT_SWEPT = 'Some points of the period cell are cut by no tooth: the surface left is not defined there.';
+
+/**
+ * The one line a page or command line says where a finish part could not be computed, or null for
+ * any other error (which is a bug, thrown on).
+ */
+export function finishFailureWords(e: unknown, part: 'areal' | 'marks'): string | null {
+  if (!(e instanceof Error)) return null;
+  const what = part === 'areal' ? 'The areal parameters' : 'The feed marks';
+  if (e.message === NOT_CONVERGED)
+    return `${what} could not be computed for this feed: the event search did not converge; try a smaller fz.`;
+  if (e.message === NOT_SWEPT)
+    return `${what} are not defined here: thin slivers between the passes are cut by no tooth (the bottom edges miss them); try a smaller step-over.`;
+  return null;
+}
+/**
  * Most steps of one walk from the contact: a few tens are usual; where Phi turns just short of a level
  * (a tangential approach) the safe steps stay short and take thousands.
  */
@@ -159,6 +179,8 @@ function copyPoint(from: SectionPoint, to: SectionPoint): void {
   to.psi = from.psi;
   to.speed = from.speed;
   to.dw = from.dw;
+  to.dpsi = from.dpsi;
+  to.inPlane = from.inPlane;
 }
 
 /**
@@ -230,7 +252,14 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
   if (distToInt(level) <= LEVEL_TOL) return Math.min(best, p0.z);
   let grow = MAX_STEP_RAD;
   let iter = 0;
+  // With the axis vertical the body above its widest section is the cylinder of radius R: the section
+  // goes on up the vertical line |w| = sqrt(R^2 - (y - O_y)^2), along which w, psi and so Phi stay
+  // constant. A walk that reaches that wall meets no level beyond it (the level, if met exactly,
+  // was met where the wall begins).
+  const wall = row.vertical ? Math.sqrt(Math.max(0, scale * scale - row.section.yRel * row.section.yRel)) : -1;
   for (; iter < MAX_WALK_STEPS; iter++) {
+    const onWall = Math.abs(Math.abs(p0.w) - wall) <= 1e-12 * scale && Math.abs(p0.dw) <= 1e-9 * p0.speed;
+    if (row.vertical && dir * p0.w > 0 && onWall) break;
     if (p0.rho <= 1e-12 * scale && !throughTip) {
       best = Math.min(best, p0.z);
       break;
@@ -348,8 +377,13 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
           best = Math.min(best, p0.z);
           break;
         }
-        grow = (0.8 * gap) / bound;
-        continue;
+        // Where Phi turns just short of a level its rate nearly vanishes while the bound does not:
+        // the second-order bound lets the steps past the turn grow with sqrt(gap), not with gap.
+        const reach = throughTip ? Number.NaN : secondOrderStep(m, p0, p1, speed * delta, rhoLo, gap);
+        if (!(reach >= 1)) {
+          grow = Math.max((0.8 * gap) / bound, Number.isFinite(reach) ? reach * delta : 0);
+          continue;
+        }
       }
     }
     if (final && tipAhead) {
@@ -363,8 +397,48 @@ function sideEventMm(m: ToothModel, row: PassRow, beta: number, dir: number, bes
     if (p0.z >= best || final) break;
   }
   // A walk that ran out of steps has no answer (NaN): the callers say so or look elsewhere.
-  if (iter >= MAX_WALK_STEPS) return Number.NaN;
+  if (iter >= MAX_WALK_STEPS) {
+    return Number.NaN;
+  }
   return best;
+}
+
+/**
+ * The second-order test of a step from p0 to p1 of arc length at most `arc` keeping at least `rhoLo`
+ * from the axis: the fraction of the step (>= 1: the whole) over which Phi provably stays within
+ * 0.9 `gap` of its value at p0, or NaN when no bound is at hand (a sharp corner, or the plane near
+ * tangent to the body).
+ *
+ * In arc length s along the section, |Phi(s) - Phi(0) - Phi'(0) s| <= M s^2 / 2 with |Phi''| <= M:
+ * Phi = psi - omega w, |w''| <= kappa (the section's curvature), and with P_perp the point's part
+ * across the axis (|P_perp| = rho) and v the unit tangent, psi' = (P_perp x v) . a / rho^2, whose
+ * derivative is (P_perp x v') . a / rho^2 - 2 (P_perp x v) . a (P_perp . v) / rho^4 (the term of
+ * P_perp' = v_perp vanishes: (v_perp x v) . a = 0), so |psi''| <= kappa / rho + 2 / rho^2. The body
+ * is the parallel body at distance Rcr of a convex set: its normal curvatures are at most 1 / Rcr
+ * and its normal n turns at most s / Rcr over s; by Meusnier the section's curvature is a normal
+ * curvature over |n_plane| = sqrt(1 - n_y^2), which over the step is at least (g0 + g1 - arc / Rcr) / 2.
+ */
+function secondOrderStep(
+  m: ToothModel,
+  p0: SectionPoint,
+  p1: SectionPoint,
+  arc: number,
+  rhoLo: number,
+  gap: number,
+): number {
+  const rcr = m.cornerRadiusMm;
+  if (!(rcr > 0) || !(rhoLo > 0) || !(arc > 0)) return Number.NaN;
+  const gLo = 0.5 * (p0.inPlane + p1.inPlane - arc / rcr);
+  if (!(gLo > 0)) return Number.NaN;
+  const kappa = 1 / (rcr * gLo);
+  const omega = m.omegaRadPerMm;
+  const slope = Math.abs(p0.dpsi - omega * p0.dw) / p0.speed;
+  const curv = kappa * (omega + 1 / rhoLo) + 2 / (rhoLo * rhoLo);
+  const change = slope * arc + 0.5 * curv * arc * arc;
+  if (change < 0.9 * gap) return 1;
+  // The arc over which the bound stays below 0.8 gap, as a fraction of this one.
+  const s = (0.8 * 2 * gap) / (slope + Math.sqrt(slope * slope + 1.6 * curv * gap));
+  return s / arc;
 }
 
 /**

@@ -6,6 +6,7 @@
  * output/x3p.ts, the notes' grid). Loaded by the worker on the first finish question, so neither
  * the page's nor the worker's first script grows.
  */
+import { finishFailureWords } from '../../core/finish/envelope';
 import { describeFinishError } from '../../core/finish/finishInput';
 import {
   arealMap,
@@ -23,6 +24,17 @@ import { type FinishReply, type FinishRequest, MAP_SIZE } from '../finishProtoco
  * the areal parameters), or its x3p; never throws for a bad value: each is a message on its field.
  */
 export function finish(request: FinishRequest): FinishReply {
+  try {
+    return answer(request);
+  } catch (e) {
+    // A search that did not converge (or a surface left undefined): one line on the feed, not a crash.
+    const message = finishFailureWords(e, request.x3p === undefined && request.part !== 'areal' ? 'marks' : 'areal');
+    if (message === null) throw e;
+    return { ok: false, request, errors: [{ field: 'fz', message }] };
+  }
+}
+
+function answer(request: FinishRequest): FinishReply {
   const v = request.values;
   const checked = validateFinish(
     { flutes: v.flutes, fz: v.fz, runout: v.runout, runoutPhase: v.runoutPhase, passPhase: v.passPhase },

@@ -8,7 +8,8 @@
  * e at phase phi_e (the teeth cut unequally, the pattern repeats every turn z fz).
  */
 import { describe, expect, it } from 'vitest';
-import { arealMap, envelopeHeightMm, feedMarks, toothModel } from '../../../src/core/finish/index';
+import { NOT_SWEPT } from '../../../src/core/finish/envelope';
+import { arealMap, arealParameters, envelopeHeightMm, feedMarks, toothModel } from '../../../src/core/finish/index';
 import { seededRandom } from '../../../src/core/math/seededRandom';
 import { planeIntervalMm } from '../../../src/core/surfaces/exact';
 import { scallopHeightLimits, validateForward } from '../../../src/core/surfaces/validate';
@@ -34,8 +35,11 @@ interface Case {
   readonly runoutPhaseDeg?: number;
 }
 
-/** One case per stratum (kind x lead class x tilt class x pattern), drawn from `seed`. */
-function cases(seed: number): Case[] {
+/**
+ * One case per stratum (kind x lead class x tilt class x pattern), drawn from `seed`; fz from
+ * 0.01 to 0.16 mm, or with `large` from R/2 to R (the largest valid).
+ */
+function cases(seed: number, large = false): Case[] {
   const r = seededRandom(seed);
   const out: Case[] = [];
   const kinds: Kind[] = ['ball', 'flat', 'bull'];
@@ -66,7 +70,7 @@ function cases(seed: number): Case[] {
           pattern,
           intervalMm: planeIntervalMm(v.value),
           flutes: 1 + Math.floor(5 * r()),
-          fzMm: 0.01 + 0.15 * r(),
+          fzMm: large ? R * (0.5 + 0.5 * r()) : 0.01 + 0.15 * r(),
           passPhase: r() < 0.5 ? 0 : r(),
         });
         break;
@@ -147,6 +151,10 @@ describe('envelope height against the tooth-sweep brute force', () => {
     checkStrata(cases(2901), 2902, 1);
   });
 
+  it('at large fz (R/2 to R: a level met nearly tangentially, Phi turning just short of it) agrees within 1e-9 mm over the strata (seed 2907)', () => {
+    checkStrata(cases(2907, true), 2908, 3);
+  });
+
   it('with runout (e 5 % to 150 % of fz, any phase) agrees within 1e-9 mm over the strata (seed 2903)', () => {
     const list = runoutCases(2903);
     expect(list.length).toBeGreaterThanOrEqual(8);
@@ -173,6 +181,16 @@ describe('envelope height against the tooth-sweep brute force', () => {
       passPhase: 0,
     },
   ];
+  /** An upright tool (lead 0, tilt 0), one-way, pass phase 0. */
+  const upright = (label: string, R: number, Rcr: number, intervalMm: number, flutes: number, fzMm: number): Case => ({
+    label,
+    tool: { toolRadiusMm: R, cornerRadiusMm: Rcr, leadAngleDeg: 0, tiltAngleDeg: 0 },
+    pattern: 'one-way',
+    intervalMm,
+    flutes,
+    fzMm,
+    passPhase: 0,
+  });
   const modelOf = (c: Case) =>
     toothModel({ tool: c.tool, pattern: c.pattern, intervalMm: c.intervalMm, finish: finishOf(c) });
 
@@ -237,15 +255,7 @@ describe('envelope height against the tooth-sweep brute force', () => {
   });
 
   it("a ball at lead 0 just beside its tip's track: the teeth sweep past the axis (psi turns fast) within 1e-9 mm", () => {
-    const c: Case = {
-      label: 'ball lead 0',
-      tool: { toolRadiusMm: 3, cornerRadiusMm: 3, leadAngleDeg: 0, tiltAngleDeg: 0 },
-      pattern: 'one-way',
-      intervalMm: 1,
-      flutes: 2,
-      fzMm: 0.1,
-      passPhase: 0,
-    };
+    const c = upright('ball lead 0', 3, 3, 1, 2, 0.1);
     const m = modelOf(c);
     for (const [x, y] of [
       [0, 1e-4],
@@ -255,6 +265,57 @@ describe('envelope height against the tooth-sweep brute force', () => {
       // pitch: the walk crept towards it (NOT_CONVERGED) before its steps ended at that turning point.
       [0.11428594166324424, 1 - 0.0016308419676768215],
     ] as const) {
+      const brute = bruteEnvelopeHeightMm(bruteParams(c), x, y, 100).heightMm;
+      expect(Math.abs(envelopeHeightMm(m, x, y) - brute), `(${x}, ${y})`).toBeLessThan(1e-9);
+    }
+  });
+
+  it('a flat end upright (lead 0, tilt 0): 0 wherever its bottom edges sweep, as the brute force says (seed 2905); at L = 2R slivers are cut by no tooth', () => {
+    // The section at y is the bottom segment |w| <= c = sqrt(R^2 - y^2) at z = 0 and the vertical
+    // side |w| = c above it, where w and psi, so Phi, stay constant: every event is on the bottom
+    // (z = 0) or, met exactly, at the corner (z = 0), and a walk reaching the side is done.
+    const r = seededRandom(2905);
+    for (let k = 0; k < 3; k++) {
+      const R = 1 + 5 * r();
+      const c: Case = {
+        label: `flat upright R ${R}`,
+        tool: { toolRadiusMm: R, cornerRadiusMm: 0, leadAngleDeg: 0, tiltAngleDeg: 0 },
+        pattern: k === 1 ? 'zigzag' : 'one-way',
+        intervalMm: 2 * R,
+        flutes: 1 + Math.floor(5 * r()),
+        fzMm: 0.01 + 0.15 * r(),
+        passPhase: 0,
+      };
+      const m = modelOf(c);
+      for (let p = 0; p < 4; p++) {
+        // Points the bottom certainly sweeps: |y - j L| < R - fz (beyond, slivers can be missed).
+        const y = (r() < 0.5 ? 0 : 2 * R) + (2 * r() - 1) * (R - c.fzMm);
+        const x = r() * 2 * m.feedPeriodMm;
+        const brute = bruteEnvelopeHeightMm(bruteParams(c), x, y, 80).heightMm;
+        expect(Math.abs(envelopeHeightMm(m, x, y) - brute), `${c.label} (${x}, ${y})`).toBeLessThan(1e-9);
+      }
+    }
+    // R 3, 4 teeth, fz 0.1: near y = R the bottom edges turn past some points between two teeth.
+    const c = upright('flat upright R 3', 3, 0, 6, 4, 0.1);
+    expect(envelopeHeightMm(modelOf(c), 0.03815834186971188, 2.99985634261393)).toBe(Number.POSITIVE_INFINITY);
+    expect(() => arealParameters(modelOf(c))).toThrow(NOT_SWEPT);
+  });
+
+  it('bull R 3 Rcr 1 lead 5, 4 teeth, fz 2.9: where Phi turns 1e-13 to 4e-13 of the pitch short of a level the walk passes the turn (it ran out of steps), a lone pass within 1e-9 mm', () => {
+    // L 10: only pass 0 reaches y, whose events there are those it has at L 2.887 (h 0.05 mm).
+    const c: Case = {
+      label: 'bull lead 5 fz 2.9',
+      tool: { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 },
+      pattern: 'one-way',
+      intervalMm: 10,
+      flutes: 4,
+      fzMm: 2.9,
+      passPhase: 0,
+    };
+    const m = modelOf(c);
+    const y = -1.8091990583914503;
+    for (const phase of [1.2003539244754684, 1.2003545504062796, 1.2003548633716852]) {
+      const x = phase / m.omegaRadPerMm;
       const brute = bruteEnvelopeHeightMm(bruteParams(c), x, y, 100).heightMm;
       expect(Math.abs(envelopeHeightMm(m, x, y) - brute), `(${x}, ${y})`).toBeLessThan(1e-9);
     }
