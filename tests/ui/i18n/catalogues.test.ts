@@ -67,7 +67,8 @@ describe('the catalogues', () => {
   it('Japanese: each entry holds Japanese script, and its Latin words are symbols or names only', () => {
     for (const [where, text] of strings(ja)) {
       expect(/[\u3000-\u30ff\u4e00-\u9fff]/.test(text), `${where}: ${text}`).toBe(true);
-      for (const word of text.match(/[A-Za-z][A-Za-z0-9]*/g) ?? []) expect(KEPT.has(word), `${where}: "${word}"`).toBe(true);
+      for (const word of text.match(/[A-Za-z][A-Za-z0-9]*/g) ?? [])
+        expect(KEPT.has(word), `${where}: "${word}"`).toBe(true);
     }
   });
 
