@@ -13,6 +13,7 @@
  *   least of one tooth at z fz (a turn per z fz) shifted by k fz, k = 0 .. z - 1 (one-way, q = 0).
  * - As fz -> 0 the areal parameters tend to the continuous cross-feed profile's (roughness.ts).
  */
+
 import { describe, expect, it } from 'vitest';
 import {
   arealParameters,
@@ -26,6 +27,7 @@ import { inverseInput } from '../../../src/core/input/validate';
 import { seededRandom } from '../../../src/core/math/seededRandom';
 import { exactRoughnessAtInterval } from '../../../src/core/roughness/roughness';
 import { planeInverse } from '../../../src/core/surfaces/exact';
+import { randomBullNose } from '../../support/randomBullNose';
 
 const finish = (flutes: number, fz: number, passPhase = 0): FinishInput => ({
   flutes,
@@ -117,13 +119,8 @@ describe('identities of the envelope', () => {
   it('z teeth at fz leave the least of one tooth at z fz shifted by k fz (seed 2913)', () => {
     const r = seededRandom(2913);
     for (let n = 0; n < 6; n++) {
-      const R = 1 + 5 * r();
-      const tool = {
-        toolRadiusMm: R,
-        cornerRadiusMm: R * (0.2 + 0.8 * r()),
-        leadAngleDeg: 1 + 20 * r(),
-        tiltAngleDeg: 20 * (r() - 0.5),
-      };
+      const tool = randomBullNose(r);
+      const R = tool.toolRadiusMm;
       const z = 2 + (n % 3);
       const fz = 0.02 + 0.1 * r();
       const L = 0.4 * R;

@@ -15,6 +15,7 @@
  * - Continuity as e -> 0: every edge point moves by e, so heights move by about e (the surface's
  *   slope is small on the plane), and hf with it.
  */
+
 import { describe, expect, it } from 'vitest';
 import {
   arealParameters,
@@ -25,6 +26,7 @@ import {
   toothModel,
 } from '../../../src/core/finish/index';
 import { seededRandom } from '../../../src/core/math/seededRandom';
+import { randomBullNose } from '../../support/randomBullNose';
 
 const finish = (flutes: number, fz: number, e = 0, phiDeg = 0, passPhase = 0): FinishInput => ({
   flutes,
@@ -63,13 +65,8 @@ describe('runout: the limit e = 0 and the single tooth', () => {
   it('z teeth with runout at fz leave the least of one tooth at z fz with phase phi_e - 2 pi k / z shifted by k fz (seed 2922)', () => {
     const r = seededRandom(2922);
     for (let n = 0; n < 5; n++) {
-      const R = 1 + 5 * r();
-      const tool = {
-        toolRadiusMm: R,
-        cornerRadiusMm: R * (0.2 + 0.8 * r()),
-        leadAngleDeg: 1 + 20 * r(),
-        tiltAngleDeg: 20 * (r() - 0.5),
-      };
+      const tool = randomBullNose(r);
+      const R = tool.toolRadiusMm;
       const z = 2 + (n % 3);
       const fz = 0.02 + 0.1 * r();
       const e = fz * (0.1 + r());
