@@ -467,11 +467,12 @@ export class CalculatorApp {
     else if (shown.kind === 'current') this.answeredWords = questionWords(this.state);
     else if (shown.last === null || !shown.last.ok) this.answeredWords = null;
     this.results.showQuestion(this.answeredWords);
+    this.roughness.render(shown, this.state.unit);
+    // The results and roughness rows drawn (in English): in the language in force, once, before the
+    // result bar mirrors the headline.
+    localize(document);
     this.resultBar.render(typing);
     this.sceneBox.classList.toggle('typing', typing);
-    this.roughness.render(shown, this.state.unit);
-    // The roughness rows are drawn after the results: they too in the language in force.
-    localize(document);
     // The finish (issue 29): the answer on screen's feed marks, loaded with the first teeth and feed.
     this.finish.show(this.state, shown.kind === 'current' && !typing ? shown.reply : null);
     this.highlighter.markRows();

@@ -12,7 +12,6 @@ import { setCopyValue } from './copy';
 import { html, must } from './dom';
 import { formatLen, formatLenUnit, formatSignedLenUnit } from './format';
 import type { Shown } from './freshness';
-import { localize } from './i18n/words';
 import { curvedMeaning, OtherResults } from './resultsOther';
 import { CROSS_AXIS_NOTE, curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
 import { ScrollCues } from './scrollCue';
@@ -127,19 +126,6 @@ export class ResultsPanel {
       kind: 'classic',
       passes: 'raster',
     },
-  ): void {
-    this.draw(shown, unit, mode, tiltDeg, typing, inputs);
-    // In another language than English, its words and decimal sign (i18n/language.ts, once loaded).
-    localize(this.root);
-  }
-
-  private draw(
-    shown: Shown<PageReply>,
-    unit: LengthUnit,
-    mode: SolveMode,
-    tiltDeg: number | null,
-    typing: boolean,
-    inputs: { readonly kind: QuestionKind; readonly passes: 'raster' | 'waterline' },
   ): void {
     const any = shown.kind === 'current' ? shown.reply : shown.kind === 'invalid' ? null : shown.last;
     // A stale reply is drawn as its own kind (marked stale); with none, the inputs' kind.
