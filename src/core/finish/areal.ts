@@ -263,6 +263,7 @@ function integrateY(
   keys: readonly number[],
   cusps: readonly number[],
   lines: Map<number, Line>,
+  relTol: number = Y_TOL,
 ): number[] {
   const panel = (lo: number, hi: number) => {
     const c = 0.5 * (lo + hi);
@@ -334,7 +335,7 @@ function integrateY(
         worst = i;
       }
     }
-    if (sums.every((d, k) => d <= Y_TOL * (scales[k] as number))) break;
+    if (sums.every((d, k) => d <= relTol * (scales[k] as number))) break;
     const p = panels[worst] as Panel;
     if (!(p.hi - p.lo > 1e-9 * (b - a))) break;
     const mid = 0.5 * (p.lo + p.hi);
@@ -345,6 +346,35 @@ function integrateY(
     for (let i = 0; i < 5; i++) total[i] = (total[i] as number) + (p.left[i] as number) + (p.right[i] as number);
   return total;
 }
+/**
+ * The quick integral over y in [a, b] of the line integrals: one 10-point Gauss-Legendre panel
+ * between each pair of neighbouring `cuts` (no grading, no halving; about 1e-3 relative for Sa).
+ * For searches that refine their answer on the full integral after.
+ */
+function quickIntegrateY(
+  m: ToothModel,
+  a: number,
+  b: number,
+  mean: number,
+  _keys: readonly number[],
+  cuts: readonly number[],
+  lines: Map<number, Line>,
+): number[] {
+  const ends = [a, ...cuts.filter((c) => c > a && c < b), b].sort((p, q) => p - q);
+  const total = [0, 0, 0, 0, 0];
+  for (let i = 0; i + 1 < ends.length; i++) {
+    const c = 0.5 * ((ends[i] as number) + (ends[i + 1] as number));
+    const r = 0.5 * ((ends[i + 1] as number) - (ends[i] as number));
+    if (!(r > 0)) continue;
+    for (let k = 0; k < PANEL_RULE.nodes.length; k++) {
+      const sums = lineIntegrals(m, c + r * (PANEL_RULE.nodes[k] as number), mean, lines);
+      const w = r * (PANEL_RULE.weights[k] as number);
+      for (let j = 0; j < 5; j++) total[j] = (total[j] as number) + w * (sums[j] as number);
+    }
+  }
+  return total;
+}
+
 /**
  * The continuous model's cusps between passes in the cell [0, cross period): one-way at the right
  * flank's reach wR(h); zigzag at L/2 (two right flanks) and 3L/2 (two left flanks).
@@ -385,6 +415,26 @@ function meanLines(m: ToothModel, ends: readonly number[], mean: number): number
     prevF = fy;
   }
   return out;
+}
+
+/**
+ * Sa alone (and the mean it is taken about) over one period cell of a prepared model, mm: as
+ * {@link arealParameters} (within 1e-6 relative), or `quick` (one panel between the cusps and the
+ * mean's lines: about 1e-3 relative, a tenth of the work) for searches that refine after.
+ */
+export function arealSa(m: ToothModel, quick = false): { readonly saMm: number; readonly meanMm: number } {
+  const area = m.feedPeriodMm * m.crossPeriodMm;
+  const height = m.crossPeriodMm;
+  const cusps = cuspLines(m);
+  const lines = new Map<number, Line>();
+  const integral = quick ? quickIntegrateY : integrateY;
+  const mean = (integral(m, 0, height, Number.NaN, [0], cusps, lines)[0] as number) / area;
+  if (!Number.isFinite(mean)) throw new Error(NOT_SWEPT);
+  const ends = [0, ...cusps.filter((c) => c > 0 && c < height), height];
+  if (m.input.pattern === 'zigzag') ends.push(m.input.intervalMm);
+  ends.sort((p, q) => p - q);
+  const sums = integral(m, 0, height, mean, [1], [...cusps, ...meanLines(m, ends, mean)], lines);
+  return { saMm: (sums[1] as number) / area, meanMm: mean };
 }
 
 /** The areal parameters of a prepared model over one period cell (see the module comment). */

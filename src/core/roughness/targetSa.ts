@@ -1,0 +1,206 @@
+/**
+ * The inverse of the areal roughness (issue 29, shared/notes/surface-finish.md): for a target `Sa`
+ * on a plane, the pairs (step-over `L`, feed per tooth `fz`) whose surface has that `Sa`, and the
+ * pair among them with the largest `L * fz` (the area machined per tooth, so the fastest finish at
+ * a given spindle speed). Lengths mm.
+ *
+ * Along the curve. As `fz -> 0` the teeth's surface tends to the continuous one, so `Sa -> Ra` of
+ * the cross-feed profile: the curve meets `fz = 0` at `L0`, the step-over whose passes leave
+ * `Ra = Sa` (roughness.ts's target-Ra solve). For `L` in (0, L0) the pair's `fz` is the first root
+ * of `Sa(L, fz) = target` met going up from 0 (sampled by doubling from a guess, then the shared
+ * bracketed root finder on `fz^2`, in which Sa is close to linear at small feeds); where even the
+ * largest feed accepted (R) leaves less, `fz = R` and the pair is marked `feedLimited`. `L * fz`
+ * vanishes at both ends (fz bounded as L -> 0; fz -> 0 as L -> L0), so it has an interior maximum,
+ * found by the shared maximiser (a scan, then Brent) on a quick Sa (areal.ts's integrals without
+ * grading or halving: about 1e-3 relative); the best pair's `fz` is then solved again on the full
+ * Sa (1e-6 relative), so its Sa is the target within 1e-6 relative. Runout is not taken here: its
+ * Sa costs seconds a point (the caller refuses it).
+ */
+import type { PassInput } from '../domain/pass';
+import type { PassPattern, ToolInput } from '../domain/tool';
+import { arealSa } from '../finish/areal';
+import type { FinishInput } from '../finish/finishInput';
+import { maxFeedPerToothMm } from '../finish/finishInput';
+import { toothModel } from '../finish/toothModel';
+import { inverseInput } from '../input/validate';
+import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
+import { exactForward, exactInverse } from '../surfaces/solve';
+import { forwardOfRaTarget } from './raTarget';
+import { exactRoughnessAtInterval } from './roughness';
+
+/** One pair of the curve: step-over, feed per tooth and the Sa they leave (mm). */
+export interface SaPair {
+  readonly intervalMm: number;
+  readonly feedPerToothMm: number;
+  readonly saMm: number;
+  /** True where the largest feed accepted (R) still leaves less than the target: fz is R. */
+  readonly feedLimited: boolean;
+}
+
+/** The answer of a target Sa: the best pair, the curve of pairs (L ascending) and its end at fz = 0. */
+export interface TargetSaAnswer {
+  readonly targetSaMm: number;
+  /** The pair with the largest L * fz; its Sa is the target within 1e-6 relative (or below, feedLimited). */
+  readonly best: SaPair;
+  /** Pairs across (0, L0), L ascending, from the quick Sa (within about 1e-3 of the target). */
+  readonly curve: readonly SaPair[];
+  /** L0: the step-over whose passes leave Ra = the target, where the curve meets fz = 0 (mm). */
+  readonly zeroFeedIntervalMm: number;
+}
+
+/** The teeth of the inverse: everything of a finish but its feed (no runout). */
+export type TeethInput = Omit<FinishInput, 'feedPerToothMm'>;
+
+/** Points of the scan of L * fz over (0, L0), and so of the curve. */
+const CURVE_POINTS = 12;
+/** Relative tolerance, in L0, of the best pair's step-over (L * fz is flat there: its square matters). */
+const BEST_L_TOL = 4e-3;
+/** Relative bracket on fz^2 of the quick curve's roots. */
+const QUICK_TOL = 1e-3;
+/** Relative bracket on fz^2 of the best pair's root (Sa within about 1e-9 relative of the target). */
+const FINE_TOL = 1e-9;
+
+/** The bracketing step of the best pair's fine solve, from the quick feed (Sa within about 1e-3). */
+const FINE_GROWTH = 1.004;
+
+/** The finish input of a pair (mm). */
+function finishOf(teeth: TeethInput, feedPerToothMm: number): FinishInput {
+  return { ...teeth, feedPerToothMm };
+}
+
+/**
+ * The first feed per tooth at which `sa(fz)` reaches `target` going up from 0 (`saZero` = its limit
+ * at 0, below the target), within `relTol` on fz^2; `guess` a feed to start the doubling from.
+ */
+function feedForSa(
+  sa: (fz: number) => number,
+  saZero: number,
+  target: number,
+  maxFz: number,
+  guess: number,
+  relTol: number,
+  growth: number,
+): { readonly fz: number; readonly feedLimited: boolean } {
+  let lo = 0;
+  let fLo = saZero - target;
+  let fz = Math.min(guess, maxFz);
+  let f = sa(fz) - target;
+  // Down while the guess is past the target (keeping it as the upper end), up by doubling while short.
+  let step = growth;
+  while (f > 0 && fz > 1e-6 * maxFz) {
+    const below = fz / step;
+    step *= step;
+    const fb = sa(below) - target;
+    if (fb > 0) {
+      fz = below;
+      f = fb;
+    } else {
+      lo = below;
+      fLo = fb;
+      break;
+    }
+  }
+  while (f < 0) {
+    if (fz >= maxFz) return { fz: maxFz, feedLimited: true };
+    lo = fz;
+    fLo = f;
+    fz = Math.min(step * fz, maxFz);
+    step *= step;
+    f = sa(fz) - target;
+  }
+  const u = bracketedRoot({ value: (v) => sa(Math.sqrt(v)) - target }, lo * lo, fz * fz, fLo, f, relTol);
+  return { fz: Math.sqrt(u), feedLimited: false };
+}
+
+/**
+ * The pairs (L, fz) of a tool on a plane that leave the target Sa, and the one with the largest
+ * L * fz (see the module comment).
+ * @param pass a validated tool, posture and pattern on a plane.
+ * @param teeth flutes and phases, runout 0.
+ * @param targetSaMm the target Sa, mm, > 0 and below the largest Ra the passes can leave.
+ * @param zeroFeedIntervalMm L0 (mm): the step-over of the target-Ra solve at Ra = targetSaMm.
+ * @param raAt the continuous cross-feed profile's Ra at a step-over (mm): Sa at fz -> 0.
+ */
+export function targetSaCurve(
+  pass: PassInput,
+  teeth: TeethInput,
+  targetSaMm: number,
+  zeroFeedIntervalMm: number,
+  raAt: (intervalMm: number) => number,
+): TargetSaAnswer {
+  if (teeth.runoutMm > 0) throw new Error('targetSaPairs: runout is not taken (see the module comment)');
+  const tool: ToolInput = pass;
+  const pattern: PassPattern = pass.pattern;
+  const L0 = zeroFeedIntervalMm;
+  const maxFz = maxFeedPerToothMm(pass.toolRadiusMm);
+  const saOf = (L: number, fz: number, quick: boolean) => {
+    const m = toothModel({ tool, pattern, intervalMm: L, finish: finishOf(teeth, fz) });
+    return arealSa(m, quick).saMm;
+  };
+  // The shop's ball-end rule Ra ~ fz^2 / (32 R) turned round: a start for the doubling.
+  let guess = Math.min(maxFz, Math.sqrt(32 * pass.toolRadiusMm * targetSaMm));
+  const solved = new Map<number, SaPair>();
+  const pairAt = (L: number): SaPair => {
+    const known = solved.get(L);
+    if (known !== undefined) return known;
+    // From a neighbour's feed (the curve is smooth) in small steps; from the rule's guess in doublings.
+    const growth = solved.size > 0 ? 1.25 : 2;
+    const r = feedForSa((fz) => saOf(L, fz, true), raAt(L), targetSaMm, maxFz, guess, QUICK_TOL, growth);
+    guess = Math.max(r.fz, 1e-6 * maxFz);
+    const pair = { intervalMm: L, feedPerToothMm: r.fz, saMm: targetSaMm, feedLimited: r.feedLimited };
+    solved.set(L, pair);
+    return pair;
+  };
+  const end = newSearchEnd();
+  maximise(
+    {
+      value: (L) => {
+        if (!(L > 0 && L < L0)) return 0;
+        const p = pairAt(L);
+        return p.intervalMm * p.feedPerToothMm;
+      },
+    },
+    0,
+    L0,
+    CURVE_POINTS,
+    BEST_L_TOL * L0,
+    end,
+  );
+  const bestL = end.x;
+  const curve = [...solved.values()].sort((a, b) => a.intervalMm - b.intervalMm);
+  const quick = solved.get(bestL);
+  // The best pair's feed on the full Sa, started from the quick one.
+  const fine = feedForSa(
+    (fz) => saOf(bestL, fz, false),
+    raAt(bestL),
+    targetSaMm,
+    maxFz,
+    quick?.feedPerToothMm ?? guess,
+    FINE_TOL,
+    FINE_GROWTH,
+  );
+  const best: SaPair = {
+    intervalMm: bestL,
+    feedPerToothMm: fine.fz,
+    saMm: saOf(bestL, fine.fz, false),
+    feedLimited: fine.feedLimited,
+  };
+  return { targetSaMm, best, curve, zeroFeedIntervalMm: L0 };
+}
+
+/**
+ * The target-Sa inverse of a validated tool, posture and pattern on a plane (see the module
+ * comment): `targetSaMm` > 0 and below the largest Ra the passes can leave (validateTargetRa's
+ * bound, as Sa -> Ra at fz -> 0), teeth without runout. Lengths mm.
+ */
+export function targetSaPairs(pass: PassInput, teeth: TeethInput, targetSaMm: number): TargetSaAnswer {
+  const L0 = exactForward(forwardOfRaTarget({ ...pass, targetRaMm: targetSaMm })).intervalMm;
+  const raAt = (L: number) =>
+    exactRoughnessAtInterval(
+      pass,
+      pass.pattern,
+      exactInverse(inverseInput(pass, pass.pattern, L, pass.surface)),
+      pass.surface,
+    ).raMm;
+  return targetSaCurve(pass, teeth, targetSaMm, L0, raAt);
+}
