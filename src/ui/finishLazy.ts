@@ -7,7 +7,7 @@ import { FINISH_FIELD_IDS } from '../core/input/fields';
 import type { FinishValue } from '../worker/finishProtocol';
 import type { PageReply } from '../worker/pageProtocol';
 import { finishClient } from '../worker/workers';
-import { FINISH_KEYS, finishGiven } from './finishFields';
+import { FINISH_KEYS, finishGiven, finishKeyOff } from './finishFields';
 import type { FinishPanel } from './finishPanel';
 import type { FinishInputs } from './finishRequest';
 import { type CalculatorState, type FieldKey, fieldInMm } from './state';
@@ -21,7 +21,8 @@ export function finishInputs(state: CalculatorState): FinishInputs {
   const typed = {} as Record<FinishField, string>;
   FINISH_FIELDS.forEach((field, i) => {
     const key = FINISH_KEYS[i] as (typeof FINISH_KEYS)[number];
-    const text = state.fields[key].trim();
+    // The feed rate and spindle speed while fz is typed: off (finishFields.ts finishKeyOff).
+    const text = finishKeyOff(state, key) ? '' : state.fields[key].trim();
     typed[field] = text;
     values[field] = text === '' ? undefined : fieldInMm(state, key);
   });

@@ -3,7 +3,8 @@
  * types them give hf, Sa and fz* equal to the core's finishReport to the digits shown; "use the
  * balanced feed" makes hf read as h; a bad fz is one line naming its limit in the unit, the
  * step-over kept; a cylinder is refused in one line (no number); the x3p download is a zip of one
- * cell's 256 x 256 heights named by the question; a Fusion 360 tool's NOF fills the flutes. Every
+ * cell's 256 x 256 heights named by the question; feed rate and spindle speed give fz; a Fusion
+ * 360 tool's NOF fills the flutes. Every
  * status read is polled.
  */
 import { readFileSync } from 'node:fs';
@@ -139,6 +140,30 @@ describe('the finish box', () => {
     expect(await text(page, 'finish-period')).toBe(formatLenUnit(0.4, 'mm', 'fine'));
     expect(await text(page, 'finish-message')).not.toMatch(/runout/i);
     await commit(page, 'input-runout', '');
+  });
+
+  it('feed rate and spindle speed give fz (read-only, F / (n z)); they are off while fz is typed', async () => {
+    expect(await page.getByTestId('input-feed-rate').isDisabled()).toBe(true);
+    await commit(page, 'input-fz', '');
+    await expect.poll(() => page.getByTestId('input-feed-rate').isDisabled()).toBe(false);
+    await commit(page, 'input-feed-rate', '2400');
+    await commit(page, 'input-spindle-speed', '6000');
+    // 2400 mm/min at 6000 rpm with 4 teeth: 0.1 mm per tooth, the answer of the first test.
+    await expect.poll(() => page.getByTestId('input-fz').inputValue()).toBe('0.1');
+    expect(await page.getByTestId('input-fz').getAttribute('readonly')).toBe('');
+    expect(await page.locator('[data-field="F"] .unit').textContent()).toBe('mm/min');
+    await expect
+      .poll(() => text(page, 'finish-hf'), { timeout: 20_000 })
+      .toBe(formatRoughness(core.report.feedMarks.height, 'mm'));
+    await expect.poll(() => new URL(page.url()).searchParams.get('rpm')).toBe('6000');
+    expect(new URL(page.url()).searchParams.get('F')).toBe('2400');
+    expect(new URL(page.url()).searchParams.get('fz')).toBeNull();
+    await commit(page, 'input-spindle-speed', '0');
+    const message = 'Spindle speed n must be greater than 0 rpm (got 0).';
+    await expect.poll(() => text(page, 'finish-message'), { timeout: 20_000 }).toBe(message);
+    expect(await text(page, 'error-spindle-speed')).toBe(message);
+    expect(await page.getByTestId('input-fz').inputValue()).toBe('');
+    expect(await text(page, 'finish-hf')).toBe('\u2014');
   });
 
   it("a Fusion 360 tool's NOF gives the flutes", async () => {

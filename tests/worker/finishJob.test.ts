@@ -22,6 +22,8 @@ function inputs(values: Partial<FinishInputs['values']>, unit: 'mm' | 'in' = 'mm
   const all = {
     flutes: undefined,
     fz: undefined,
+    feedRate: undefined,
+    spindleSpeed: undefined,
     runout: undefined,
     runoutPhase: undefined,
     passPhase: undefined,

@@ -90,6 +90,8 @@ export const catalogue: Catalogue = {
     runout: { label: 'Rundlauffehler e', hint: 'radialer Rundlauffehler (Vorgabe 0)' },
     runoutPhase: { label: 'Phase des Rundlauffehlers', hint: 'Richtung des Rundlauffehlers ab Schneide 0' },
     passPhase: { label: 'Bahnphase q', hint: 'Versatz der Bahnen als Anteil der Vorschubperiode' },
+    F: { label: 'Vorschubgeschwindigkeit F', hint: 'mit n: fz = F / (n z); aus, solange fz eingetragen ist' },
+    n: { label: 'Drehzahl n', hint: 'Spindeldrehzahl; mit F ergibt sie fz' },
   },
   diameter: {
     label: 'Werkzeugdurchmesser D',

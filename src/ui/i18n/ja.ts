@@ -75,6 +75,8 @@ export const catalogue: Catalogue = {
     runout: { label: '振れ e', hint: '半径方向の振れ（既定 0）' },
     runoutPhase: { label: '振れの位相', hint: '刃 0 から測った振れの向き' },
     passPhase: { label: 'パスの位相 q', hint: 'パスのずれ（送り周期に対する割合）' },
+    F: { label: '送り速度 F', hint: 'テーブル送り。n と合わせて fz = F / (n z)。fz を入力中は使わない' },
+    n: { label: '主軸回転数 n', hint: '毎分回転数。F と合わせて fz を与える' },
   },
   diameter: {
     label: '工具直径 D',

@@ -37,7 +37,15 @@ export function finish(request: FinishRequest): FinishReply {
 function answer(request: FinishRequest): FinishReply {
   const v = request.values;
   const checked = validateFinish(
-    { flutes: v.flutes, fz: v.fz, runout: v.runout, runoutPhase: v.runoutPhase, passPhase: v.passPhase },
+    {
+      flutes: v.flutes,
+      fz: v.fz,
+      feedRate: v.feedRate,
+      spindleSpeed: v.spindleSpeed,
+      runout: v.runout,
+      runoutPhase: v.runoutPhase,
+      passPhase: v.passPhase,
+    },
     request.tool.toolRadiusMm,
   );
   if (!checked.ok) {
