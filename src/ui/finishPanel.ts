@@ -19,6 +19,7 @@ import {
 import type { PageReply } from '../worker/pageProtocol';
 import type { finishClient } from '../worker/workers';
 import { detailsRow, html } from './dom';
+import { FinishProfileCharts } from './finishProfileCharts';
 import { type FinishInputs, finishAsk, x3pFileName } from './finishRequest';
 import { formatLenUnit, formatRoughness } from './format';
 import { localize } from './i18n/words';
@@ -76,6 +77,8 @@ export class FinishPanel {
   private readonly figure: HTMLElement;
   private readonly canvas: HTMLCanvasElement;
   private readonly scale: HTMLElement;
+  /** The profiles along and across the feed (with the areal answer). */
+  private readonly profiles: FinishProfileCharts;
   /** The map on the canvas (its reply), so that it is painted once. */
   private painted: Extract<FinishReply, { ok: true }> | null = null;
   /** The part each client computes now (until its reply). */
@@ -162,9 +165,10 @@ export class FinishPanel {
     });
     this.scale = html('figcaption', { 'data-testid': 'finish-map-scale' });
     this.figure.append(this.canvas, this.scale);
+    this.profiles = new FinishProfileCharts();
     const tools = html('div', { class: 'finish-tools' });
     tools.append(this.download, ' ', this.x3pStatus);
-    box.append(heading, list, areal, this.message, this.figure, note, tools);
+    box.append(heading, list, areal, this.message, this.figure, this.profiles.element, note, tools);
     this.answerParts = [list, areal, note, tools];
   }
 
@@ -279,6 +283,7 @@ export class FinishPanel {
     }
     const pending = this.wanted !== null && (m === undefined || s === undefined);
     this.paint(this.answer('areal'));
+    this.profiles.show(this.refusal === null ? (this.answer('areal')?.profiles ?? null) : null, this.unit);
     const waiting = pending
       ? (this.note ??
         (m === undefined

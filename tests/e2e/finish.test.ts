@@ -2,7 +2,7 @@
  * The finish on the page (issue 29), one page load for the file: flutes and fz typed as a user
  * types them give hf, Sa and fz* equal to the core's finishReport to the digits shown; "use the
  * balanced feed" makes hf read as h; a bad fz is one line naming its limit in the unit, the
- * step-over kept; a cylinder is refused in one line (no number); the x3p download is a zip of one
+ * step-over kept; the profiles along and across the feed are drawn; a cylinder is refused in one line (no number); the x3p download is a zip of one
  * cell's 256 x 256 heights named by the question; feed rate and spindle speed give fz; a Fusion
  * 360 tool's NOF fills the flutes. Every
  * status read is polled.
@@ -12,6 +12,7 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { feedMarks, finishReport, toothModel } from '../../src/core/finish/index';
 import { forwardInput } from '../../src/core/input/validate';
+import { feedLength } from '../../src/ui/finishLength';
 import { formatLenUnit, formatRoughness } from '../../src/ui/format';
 import { solve } from '../../src/worker/jobs/solve';
 import { typeInto, useSite } from './harness';
@@ -25,7 +26,12 @@ function expected() {
   const reply = solve({ mode: 'forward', input: forwardInput(TOOL, 'one-way', 0.05) });
   if (!reply.ok) throw new Error('plane');
   const finish = { flutes: 4, feedPerToothMm: 0.1, runoutMm: 0, runoutPhaseDeg: 0, passPhase: 0 };
-  return { report: finishReport(TOOL, 'one-way', reply.exact.intervalMm, finish), L: reply.exact.intervalMm };
+  const m = toothModel({ tool: TOOL, pattern: 'one-way', intervalMm: reply.exact.intervalMm, finish });
+  return {
+    report: finishReport(TOOL, 'one-way', reply.exact.intervalMm, finish),
+    L: reply.exact.intervalMm,
+    crestXMm: feedMarks(m).crestXMm,
+  };
 }
 
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent()) ?? '';
@@ -67,7 +73,20 @@ describe('the finish box', () => {
       return seen.size;
     });
     expect(colours).toBeGreaterThan(20);
-    expect(await text(page, 'finish-areal-Sz')).toBe(formatRoughness(core.report.areal.Sz, 'mm'));
+    // The profiles along the CC path and across the feed: charts with axes in mm and µm, the across
+    // one at the x of the highest feed mark (the core's).
+    await expect.poll(() => page.getByTestId('finish-profiles').isVisible()).toBe(true);
+    for (const id of ['finish-profile-along-chart', 'finish-profile-across-chart']) {
+      const chart = page.getByTestId(id);
+      expect(await chart.locator('.chart-axis-label').allTextContents()).toEqual([
+        id.includes('along') ? 'x (mm)' : 'y (mm)',
+        's (\u00b5m)',
+      ]);
+      expect(await chart.locator('path.chart-line').getAttribute('d')).toMatch(
+        /^M[\d.]+ [\d.]+(L[\d.]+ [\d.]+){100,}$/,
+      );
+    }
+    expect(await text(page, 'finish-profile-across-x')).toBe(feedLength(core.crestXMm, 'mm'));
     expect(await text(page, 'finish-areal-Sku')).toBe(core.report.areal.Sku.toFixed(4));
     // The link carries the teeth and the feed.
     await expect.poll(() => new URL(page.url()).searchParams.get('fz')).toBe('0.1');
@@ -111,6 +130,7 @@ describe('the finish box', () => {
     expect(await page.getByTestId('download-x3p').isHidden()).toBe(true);
     expect(await text(page, 'finish-hf')).toBe('\u2014');
     expect(await text(page, 'finish-areal-Sa')).toBe('\u2014');
+    expect(await page.getByTestId('finish-profiles').isHidden()).toBe(true);
   });
 
   it('downloads the x3p of one cell: a zip, 256 x 256 float64 heights, named by the question', async () => {

@@ -120,6 +120,9 @@ export const catalogue: Catalogue = {
     'Computing the areal parameters...': '面の粗さパラメータを計算中…',
     'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).':
       '面の粗さパラメータは 1 周期のセルについて求めます（ISO 25178-2、フィルタなし、設計平面を基準）。直刃、M3。x3p ファイルはそのセルの 256 × 256 点の高さです（ISO 25178-72）。',
+    'Along the CC path (y = 0), two feed periods': '切削点の経路に沿って（y = 0）、送り 2 周期',
+    'Across the feed, one period of the passes, where the feed marks stand highest:':
+      '送りと直角に、パス 1 周期、送りマークが最も高い位置で：',
   },
   tabs: {
     'Cross-feed profile': '送り直交断面',
