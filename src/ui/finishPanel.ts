@@ -19,18 +19,21 @@ import {
 import type { PageReply } from '../worker/pageProtocol';
 import type { finishClient } from '../worker/workers';
 import { detailsRow, html } from './dom';
+import { feedLength } from './finishLength';
 import { FinishProfileCharts } from './finishProfileCharts';
 import { type FinishInputs, finishAsk, x3pFileName } from './finishRequest';
-import { formatLenUnit, formatRoughness } from './format';
+import { formatRoughness } from './format';
 import { localize } from './i18n/words';
 import { shopFeed } from './shopFeed';
 
 /** Points along each side of the x3p download's one cell (the issue's 256 x 256). */
 export const X3P_SIZE = 256;
 
-/** The areal parameters' rows: symbol, test id, and whether it is a height (else dimensionless). */
+/**
+ * The areal parameters' rows after Sa (shown once, beside Ra above them): symbol and its words
+ * (the row's title).
+ */
 const AREAL = [
-  ['Sa', 'mean absolute height'],
   ['Sq', 'root mean square height'],
   ['Sz', 'highest peak to deepest valley'],
   ['Sp', 'highest peak'],
@@ -38,6 +41,14 @@ const AREAL = [
   ['Ssk', 'skewness'],
   ['Sku', 'kurtosis'],
 ] as const;
+
+/**
+ * An output of the box, not a live region of its own (an <output> is one by default): the box's one
+ * live region says the answer once it is complete, not each number as it changes.
+ */
+function quietOutput(testId: string): HTMLOutputElement {
+  return html('output', { 'data-testid': testId, 'aria-live': 'off' }, NO_VALUE);
+}
 
 /** A dimensionless number to 4 decimals, never -0. */
 function plain(v: number): string {
@@ -49,6 +60,8 @@ function plain(v: number): string {
 export class FinishPanel {
   private readonly outputs = new Map<string, HTMLOutputElement>();
   private readonly message: HTMLElement;
+  /** The polite live region (see the constructor). */
+  private readonly live: HTMLElement;
   private readonly useBalanced: HTMLButtonElement;
   private readonly download: HTMLButtonElement;
   private readonly x3pStatus: HTMLElement;
@@ -105,7 +118,7 @@ export class FinishPanel {
     );
     const list = html('dl', { class: 'details finish-details' });
     const row = (label: string, testId: string, title = '') => {
-      const out = html('output', { 'data-testid': testId }, NO_VALUE);
+      const out = quietOutput(testId);
       this.outputs.set(testId, out);
       const { row: line, dd } = detailsRow(list, label, out, title === '' ? {} : { title });
       (line.firstElementChild as HTMLElement).dataset.phrase = label;
@@ -135,11 +148,13 @@ export class FinishPanel {
     });
     const areal = html('dl', { class: 'details finish-areal', 'data-testid': 'finish-areal' });
     for (const [symbol, words] of AREAL) {
-      const out = html('output', { 'data-testid': `finish-areal-${symbol}` }, NO_VALUE);
+      const out = quietOutput(`finish-areal-${symbol}`);
       this.outputs.set(symbol, out);
       detailsRow(areal, symbol, out, { title: words });
     }
-    this.message = html('p', { class: 'finish-message', 'data-testid': 'finish-message', role: 'status' });
+    this.message = html('p', { class: 'finish-message', 'data-testid': 'finish-message' });
+    // The box's one live region: what it waits for, why it refuses, or its answer once complete.
+    this.live = html('p', { class: 'sr-only', 'data-testid': 'finish-live', role: 'status' });
     this.download = html(
       'button',
       { type: 'button', 'data-testid': 'download-x3p', disabled: '', 'data-phrase': 'Download x3p' },
@@ -168,7 +183,7 @@ export class FinishPanel {
     this.profiles = new FinishProfileCharts();
     const tools = html('div', { class: 'finish-tools' });
     tools.append(this.download, ' ', this.x3pStatus);
-    box.append(heading, list, areal, this.message, this.figure, this.profiles.element, note, tools);
+    box.append(heading, list, areal, this.message, this.live, this.figure, this.profiles.element, note, tools);
     this.answerParts = [list, areal, note, tools];
   }
 
@@ -251,14 +266,14 @@ export class FinishPanel {
     this.set('finish-ra', height(marks === null ? undefined : (this.raMm ?? undefined)));
     this.set('finish-hf', height(m?.height));
     this.set('finish-sa', height(s?.Sa));
-    this.set('finish-period', formatLenUnit(m?.period ?? null, u, 'fine'));
+    this.set('finish-period', feedLength(m?.period ?? null, u));
     this.set(
       'finish-balanced',
       m === undefined
         ? NO_VALUE
         : m.balancedFz === null
           ? 'none: hf stays below h at every fz up to R'
-          : formatLenUnit(m.balancedFz, u, 'fine'),
+          : feedLength(m.balancedFz, u),
     );
     for (const [symbol] of AREAL)
       this.set(
@@ -298,6 +313,20 @@ export class FinishPanel {
     const gaveUp = pending && this.note?.startsWith('No finish') === true;
     this.message.classList.toggle('error', this.refusal !== null || failed !== null || gaveUp);
     localize(this.box);
+    // Said once complete: the message while there is one, else the answer's main rows (as localized).
+    const said = text !== '' || this.wanted === null ? text : this.summary();
+    if (this.live.textContent !== said) this.live.textContent = said;
+  }
+
+  /** The answer's main rows, label and value as shown (in the language in force): hf, Sa, fz*. */
+  private summary(): string {
+    return ['finish-hf', 'finish-sa', 'finish-balanced']
+      .map((id) => {
+        const out = this.outputs.get(id);
+        const label = out?.closest('dd')?.previousElementSibling?.textContent ?? '';
+        return `${label}: ${out?.textContent ?? ''}`;
+      })
+      .join('; ');
   }
 
   /**
@@ -313,7 +342,7 @@ export class FinishPanel {
     const period = this.answer('marks')?.feedMarks?.period ?? null;
     const across = r.intervalMm * (r.pattern === 'zigzag' ? 2 : 1);
     const text =
-      `One period cell, ${formatLenUnit(period, u, 'fine')} along the feed (right) by ${formatLenUnit(across, u, 'fine')} across (down); ` +
+      `One period cell, ${feedLength(period, u)} along the feed (right) by ${feedLength(across, u)} across (down); ` +
       `blue the lowest, orange the highest: Sz = ${formatRoughness(areal.areal === null ? null : areal.areal.Sz, u)} apart. ` +
       'Drawn square, not to scale.';
     if (this.scale.textContent !== text) this.scale.textContent = text;

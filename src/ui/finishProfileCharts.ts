@@ -27,7 +27,8 @@ function figure(testId: string, words: string, withAt: boolean): Figure {
   const caption = html('figcaption', {});
   const phrase = html('span', { id: `${testId}-caption`, 'data-phrase': words }, words);
   caption.append(phrase);
-  const at = withAt ? html('output', { 'data-testid': `${testId}-x` }) : null;
+  // Not a live region of its own (finishPanel.ts: the box has one).
+  const at = withAt ? html('output', { 'data-testid': `${testId}-x`, 'aria-live': 'off' }) : null;
   if (at !== null) caption.append(' x = ', at);
   el.append(caption);
   return { figure: el, at };

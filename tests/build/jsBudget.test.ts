@@ -32,7 +32,8 @@
  * their page logic, +0.42 kB), less the lookup table's download, now loaded on its first press as
  * the shop sheet is (lazyButton.ts, in the tools' chunk, -0.48 kB): 59.60 and 251.49; the finish's
  * profiles along and across the feed (core profiles.ts in the finish worker's chunk, their charts with
- * the views' line chart, now a chunk both share; on first use): 59.64 and 252.77.
+ * the views' line chart, now a chunk both share; on first use): 59.64 and 252.77; the finish box's
+ * one live region and its feed lengths in the unit on screen (on first use): 252.88.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -59,7 +60,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 252.8 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(252.8);
+  it('all of it, every .js file, is at most 252.9 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(252.9);
   });
 });

@@ -13,7 +13,7 @@ import { describe, expect, it } from 'vitest';
 import { feedMarks, finishReport, toothModel } from '../../src/core/finish/index';
 import { forwardInput } from '../../src/core/input/validate';
 import { feedLength } from '../../src/ui/finishLength';
-import { formatLenUnit, formatRoughness } from '../../src/ui/format';
+import { formatRoughness } from '../../src/ui/format';
 import { solve } from '../../src/worker/jobs/solve';
 import { typeInto, useSite } from './harness';
 
@@ -61,7 +61,7 @@ describe('the finish box', () => {
     await expect
       .poll(() => text(page, 'finish-sa'), { timeout: 20_000 })
       .toBe(formatRoughness(core.report.areal.Sa, 'mm'));
-    expect(await text(page, 'finish-balanced')).toBe(formatLenUnit(m.balancedFz, 'mm', 'fine'));
+    expect(await text(page, 'finish-balanced')).toBe(feedLength(m.balancedFz, 'mm'));
     // The cell's height map: painted (blue to orange), its scale in words.
     await expect
       .poll(() => text(page, 'finish-map-scale'))
@@ -88,6 +88,23 @@ describe('the finish box', () => {
     }
     expect(await text(page, 'finish-profile-across-x')).toBe(feedLength(core.crestXMm, 'mm'));
     expect(await text(page, 'finish-areal-Sku')).toBe(core.report.areal.Sku.toFixed(4));
+    // Sa once (beside Ra), not again in the areal list.
+    expect(await page.getByTestId('finish-areal-Sa').count()).toBe(0);
+    // One polite live region for the results (beside the x3p's own status): the answer once complete.
+    const live = await page
+      .getByTestId('finish-results')
+      .evaluate((box) =>
+        [...box.querySelectorAll('output, [role="status"], [aria-live]')]
+          .filter((e) => e.getAttribute('aria-live') !== 'off')
+          .map((e) => e.getAttribute('data-testid')),
+      );
+    expect(live).toEqual(['finish-live', 'x3p-status']);
+    await expect
+      .poll(() => text(page, 'finish-live'))
+      .toBe(
+        `Feed marks hf (along the CC path): ${formatRoughness(m.height, 'mm')}; Sa (areal): ${formatRoughness(core.report.areal.Sa, 'mm')}; ` +
+          `Balanced feed fz* (hf = h): ${feedLength(m.balancedFz, 'mm')}`,
+      );
     // The link carries the teeth and the feed.
     await expect.poll(() => new URL(page.url()).searchParams.get('fz')).toBe('0.1');
     expect(new URL(page.url()).searchParams.get('z')).toBe('4');
@@ -129,7 +146,7 @@ describe('the finish box', () => {
     expect(await page.getByTestId('finish-areal').isHidden()).toBe(true);
     expect(await page.getByTestId('download-x3p').isHidden()).toBe(true);
     expect(await text(page, 'finish-hf')).toBe('\u2014');
-    expect(await text(page, 'finish-areal-Sa')).toBe('\u2014');
+    expect(await text(page, 'finish-sa')).toBe('\u2014');
     expect(await page.getByTestId('finish-profiles').isHidden()).toBe(true);
   });
 
@@ -157,7 +174,7 @@ describe('the finish box', () => {
     const finish = { flutes: 4, feedPerToothMm: 0.1, runoutMm: 0.01, runoutPhaseDeg: 0, passPhase: 0 };
     const marks = feedMarks(toothModel({ tool: TOOL, pattern: 'one-way', intervalMm: core.L, finish }));
     await expect.poll(() => text(page, 'finish-hf'), { timeout: 30_000 }).toBe(formatRoughness(marks.heightMm, 'mm'));
-    expect(await text(page, 'finish-period')).toBe(formatLenUnit(0.4, 'mm', 'fine'));
+    expect(await text(page, 'finish-period')).toBe(feedLength(0.4, 'mm'));
     expect(await text(page, 'finish-message')).not.toMatch(/runout/i);
     await commit(page, 'input-runout', '');
   });
