@@ -33,7 +33,8 @@
  * the shop sheet is (lazyButton.ts, in the tools' chunk, -0.48 kB): 59.60 and 251.49; the finish's
  * profiles along and across the feed (core profiles.ts in the finish worker's chunk, their charts with
  * the views' line chart, now a chunk both share; on first use): 59.64 and 252.77; the finish box's
- * one live region and its feed lengths in the unit on screen (on first use): 252.88.
+ * one live region and its feed lengths in the unit on screen (on first use): 252.88; a link's fz with
+ * F or rpm said in a notice (+0.04 kB): 59.68 and 252.92.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -60,7 +61,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 252.9 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(252.9);
+  it('all of it, every .js file, is at most 253.0 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(253.0);
   });
 });

@@ -38,6 +38,13 @@ describe('feed rate and spindle speed on the page', () => {
     expect(finishKeyOff(cleared, 'F')).toBe(false);
   });
 
+  it('a link with fz and F or rpm says that fz wins (F and rpm are not used), and keeps fz alone', () => {
+    const both = parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&z=4&fz=0.05&F=960&rpm=12000');
+    expect(both.notices).toEqual(['fz is in the link: F and rpm are not used.']);
+    expect(finishInputs(both.state).values.fz).toBe(0.05);
+    expect(toSearch(both.state)).toContain('z=4&fz=0.05&unit=mm');
+  });
+
   it('fz reads empty (read-only) for a half-given, zero or fractional-teeth pair (the worker then names the field)', () => {
     const base = parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&z=4&F=960').state;
     expect(rateFzText(base)).toBe('');
