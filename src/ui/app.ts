@@ -187,7 +187,7 @@ export class CalculatorApp {
     this.roughness = new RoughnessPanel(root);
     this.finish = new LazyFinish(
       root.querySelector<HTMLElement>('[data-testid="finish-results"]'),
-      (fz) => this.change(withValues(this.state, { fz })),
+      (fields) => this.change(withValues(this.state, fields)),
       (messages) => {
         this.finishMessages = messages;
         this.fields.render(this.state, this.fieldMessages());

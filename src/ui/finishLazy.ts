@@ -37,7 +37,8 @@ export class LazyFinish {
 
   constructor(
     private readonly box: HTMLElement | null,
-    private readonly onFz: (feedPerToothMm: number) => void,
+    /** "use the balanced feed": the fields it sets (fz in mm, or the feed rate F in mm/min). */
+    private readonly onFeed: (fields: { readonly fz: number } | { readonly F: number }) => void,
     /** The worker's messages on the finish fields, by page key (empty: none), for the fields. */
     private readonly onFieldErrors: (messages: ReadonlyMap<FieldKey, string>) => void = () => {},
   ) {}
@@ -51,7 +52,7 @@ export class LazyFinish {
     else if (box !== null && inputs.given && !this.loading) {
       this.loading = true;
       void import('./finishPanel').then(({ FinishPanel }) => {
-        this.panel = new FinishPanel(box, this.onFz, finishClient, (errors) =>
+        this.panel = new FinishPanel(box, this.onFeed, finishClient, (errors) =>
           this.onFieldErrors(
             new Map(errors.map((e) => [FINISH_KEYS[FINISH_FIELDS.indexOf(e.field)] as FieldKey, e.message])),
           ),

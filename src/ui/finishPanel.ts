@@ -24,7 +24,7 @@ import { FinishProfileCharts } from './finishProfileCharts';
 import { type FinishInputs, finishAsk, x3pFileName } from './finishRequest';
 import { formatRoughness } from './format';
 import { localize } from './i18n/words';
-import { shopFeed } from './shopFeed';
+import { balancedFeedFields } from './shopFeed';
 
 /** Points along each side of the x3p download's one cell (the issue's 256 x 256). */
 export const X3P_SIZE = 256;
@@ -81,6 +81,8 @@ export class FinishPanel {
   private answerParts: readonly HTMLElement[] = [];
   private raMm: number | null = null;
   private unit: LengthUnit = 'mm';
+  /** The finish fields on screen (the balanced feed sets fz, or F at the spindle speed given). */
+  private inputs: FinishInputs | null = null;
   /** The x3p asked (the question with its file), until its bytes come. */
   private x3pAsked: FinishRequest | null = null;
   /** The feed marks' worker and the areal parameters' (slower: they never hold the marks back). */
@@ -103,7 +105,8 @@ export class FinishPanel {
   /** `clientOf`: workers.ts finishClient (the first script's, passed in). */
   constructor(
     private readonly box: HTMLElement,
-    private readonly onFz: (feedPerToothMm: number) => void,
+    /** "use the balanced feed": the fields it sets (fz in mm, or the feed rate F in mm/min). */
+    private readonly onFeed: (fields: { readonly fz: number } | { readonly F: number }) => void,
     private readonly clientOf: typeof finishClient,
     /** The worker's messages on the finish fields that answer the inputs on screen (shown on the fields too). */
     private readonly onFieldErrors: (errors: readonly FinishFieldMessage[]) => void = () => {},
@@ -144,7 +147,7 @@ export class FinishPanel {
     this.useBalanced.addEventListener('click', () => {
       if (this.useBalanced.getAttribute('aria-disabled') === 'true') return;
       const fz = this.answer('marks')?.feedMarks?.balancedFz;
-      if (fz !== undefined && fz !== null) this.onFz(shopFeed(fz, this.unit));
+      if (fz !== undefined && fz !== null && this.inputs !== null) this.onFeed(balancedFeedFields(fz, this.inputs));
     });
     const areal = html('dl', { class: 'details finish-areal', 'data-testid': 'finish-areal' });
     for (const [symbol, words] of AREAL) {
@@ -190,6 +193,7 @@ export class FinishPanel {
   /** The inputs on screen and the answer to them (null while none is, or while typing). */
   show(inputs: FinishInputs, reply: PageReply | null): void {
     this.unit = inputs.unit;
+    this.inputs = inputs;
     this.box.hidden = !inputs.given;
     const ask = finishAsk(inputs, reply);
     this.refusal = ask.kind === 'refused' ? ask.message : null;

@@ -195,6 +195,12 @@ describe('the finish box', () => {
     await expect.poll(() => new URL(page.url()).searchParams.get('rpm')).toBe('6000');
     expect(new URL(page.url()).searchParams.get('F')).toBe('2400');
     expect(new URL(page.url()).searchParams.get('fz')).toBeNull();
+    // "use the balanced feed" keeps the spindle speed and sets the feed rate: fz* n z, down to 1 mm/min.
+    const rate = Math.floor((core.report.feedMarks.balancedFz ?? 0) * 6000 * 4);
+    await page.getByTestId('use-balanced-feed').click();
+    await expect.poll(() => page.getByTestId('input-feed-rate').inputValue()).toBe(String(rate));
+    expect(await page.getByTestId('input-spindle-speed').inputValue()).toBe('6000');
+    await expect.poll(() => page.getByTestId('input-fz').inputValue()).toBe(String(rate / 24000));
     await commit(page, 'input-spindle-speed', '0');
     const message = 'Spindle speed n must be greater than 0 rpm (got 0).';
     await expect.poll(() => text(page, 'finish-message'), { timeout: 20_000 }).toBe(message);
