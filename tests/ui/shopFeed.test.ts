@@ -6,6 +6,7 @@ import { describe, expect, it } from 'vitest';
 import { fromMm } from '../../src/core/input/units';
 import type { FinishInputs } from '../../src/ui/finishRequest';
 import { balancedFeedFields, shopFeed } from '../../src/ui/shopFeed';
+import { finishInputsOf } from '../support/finishInputs';
 
 describe('the balanced feed as the page sets it', () => {
   it('mm: 0.1 µm steps, rounded down', () => {
@@ -26,21 +27,9 @@ describe('the balanced feed as the page sets it', () => {
   });
 });
 
-/** The finish fields as the page holds them (mm, mm/min, rpm). */
-function inputs(values: Partial<FinishInputs['values']>, unit: 'mm' | 'in' = 'mm'): FinishInputs {
-  const all = {
-    flutes: 4,
-    fz: undefined,
-    feedRate: undefined,
-    spindleSpeed: undefined,
-    runout: undefined,
-    runoutPhase: undefined,
-    passPhase: undefined,
-    ...values,
-  };
-  const typed = Object.fromEntries(Object.entries(all).map(([k, v]) => [k, v === undefined ? '' : String(v)]));
-  return { given: true, values: all, typed: typed as FinishInputs['typed'], unit };
-}
+/** The finish fields with 4 teeth (mm, mm/min, rpm). */
+const inputs = (values: Partial<FinishInputs['values']>, unit: 'mm' | 'in' = 'mm') =>
+  finishInputsOf({ flutes: 4, ...values }, unit);
 
 describe('"use the balanced feed" with the feed rate and spindle speed', () => {
   const fzStar = 0.92741345796649899;

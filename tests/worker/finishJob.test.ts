@@ -15,28 +15,11 @@ import { type FinishRequest, PROFILE_POINTS } from '../../src/worker/finishProto
 import { finish } from '../../src/worker/jobs/finish';
 import { solve } from '../../src/worker/jobs/solve';
 import type { PageReply } from '../../src/worker/pageProtocol';
+import { finishInputsOf } from '../support/finishInputs';
 
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 
-function inputs(values: Partial<FinishInputs['values']>, unit: 'mm' | 'in' = 'mm'): FinishInputs {
-  const all = {
-    flutes: undefined,
-    fz: undefined,
-    feedRate: undefined,
-    spindleSpeed: undefined,
-    runout: undefined,
-    runoutPhase: undefined,
-    passPhase: undefined,
-    ...values,
-  };
-  const typed = Object.fromEntries(Object.entries(all).map(([k, v]) => [k, v === undefined ? '' : String(v)]));
-  return {
-    given: Object.values(all).some((v) => v !== undefined),
-    values: all,
-    typed: typed as FinishInputs['typed'],
-    unit,
-  };
-}
+const inputs = finishInputsOf;
 
 const plane = solve({ mode: 'forward', input: forwardInput(TOOL, 'one-way', 0.05) }) as PageReply;
 
