@@ -56,6 +56,8 @@
     dz: 'dz',
     flutes: 'z',
     fz: 'fz',
+    'feed-rate': 'F',
+    rpm: 'rpm',
     runout: 'runout',
     'runout-phase': 'runoutPhase',
     'pass-phase': 'passPhase',

@@ -161,7 +161,9 @@ function cliCase(id: FieldId, bad: string): string[] {
     given.length = 0;
   if (id === 'surfaceAxis') base.push('--surface-radius', '50');
   // The finish's fields come with the teeth and their feed (each needs the other).
-  if (FIELDS[id].group === 'finish') base.push('--flutes', '2', '--fz', '0.1');
+  // The feed rate and spindle speed give fz in its place (one way only).
+  if (id === 'feedRate' || id === 'spindleSpeed') base.push('--flutes', '2', '--feed-rate', '500', '--rpm', '5000');
+  else if (FIELDS[id].group === 'finish') base.push('--flutes', '2', '--fz', '0.1');
   // The diameter stands in place of the radius.
   if (id === 'D') base.splice(0, 2);
   const args = [...base, ...given];

@@ -267,9 +267,11 @@ function finishUsage(
   if (!size.ok) return size.error;
   const cells = readPair('x3p-cells', values['x3p-cells'], [1, 1], X3P_MAX_CELLS);
   if (!cells.ok) return cells.error;
-  const missing = (['flutes', 'fz'] as const).filter((o) => values[o] === undefined);
+  // The feed per tooth: --fz, or --feed-rate and --rpm, which give it (the core checks the pair).
+  const byRate = values['feed-rate'] !== undefined || values.rpm !== undefined;
+  const missing = (['flutes', 'fz'] as const).filter((o) => values[o] === undefined && !(o === 'fz' && byRate));
   if (missing.length > 0) {
-    return `--${given[0]} needs ${missing.map((o) => (o === 'flutes' ? '--flutes <N>' : '--fz <mm>')).join(' and ')}: the feed marks need the number of teeth and the feed per tooth`;
+    return `--${given[0]} needs ${missing.map((o) => (o === 'flutes' ? '--flutes <N>' : '--fz <mm> (or --feed-rate and --rpm)')).join(' and ')}: the feed marks need the number of teeth and the feed per tooth`;
   }
   if (flags.has('slope-sweep'))
     return `--${given[0]} does not go with --slope-sweep: the sweep answers the step-over only`;

@@ -62,6 +62,8 @@ export function finishOf(
     {
       flutes: values[finishOption('flutes')],
       fz: values[finishOption('fz')],
+      feedRate: values[finishOption('feedRate')],
+      spindleSpeed: values[finishOption('spindleSpeed')],
       runout: values[finishOption('runout')],
       runoutPhase: values[finishOption('runoutPhase')],
       passPhase: values[finishOption('passPhase')],

@@ -52,6 +52,8 @@ radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
   --fz <mm>             each advancing fz (M3); adds the feed-mark height hf along the CC path, its
                         period, the balanced feed fz* (hf = h) and the areal parameters Sa, Sq, Sz,
                         Sp, Sv, Ssk, Sku over one period cell (JSON: feedMarks, areal)
+  --feed-rate <mm/min>  with --rpm, instead of --fz: the feed rate F (in/min with --unit inch)
+  --rpm <n>             the spindle speed n; they give fz = F / (n z) (not together with --fz)
   --runout <mm>         with --flutes and --fz: radial runout e (default 0; at most R/10)
   --runout-phase <deg>  its direction from tooth 0's half-plane (default 0)
   --pass-phase <q>      each pass shifted along the feed by q (0 <= q < 1) of the feed period

@@ -30,10 +30,9 @@ import { FreshJob } from './freshness';
 import { Highlighter } from './highlight';
 import { langOf } from './i18n/langOf';
 import { localize } from './i18n/words';
-import { LazyShopSheet } from './lazyShopSheet';
+import { LazyButton } from './lazyButton';
 import { LazyToolShelf } from './lazyToolShelf';
 import { plainLengths } from './lengthFields';
-import { LookupDownload } from './lookupDownload';
 import { linkNotice, Notice, restartMessage } from './messages';
 import { readPreferences, withPreferences, writePreferences } from './preferences';
 import { PresentMode, parsePresent } from './present';
@@ -96,8 +95,8 @@ export class CalculatorApp {
   /** The 3D scene, built after the first result (its code and WebGL context load then). */
   private readonly scene: SceneSlot<ToolScene>;
   private readonly sceneBox: HTMLElement;
-  private readonly lookup: LookupDownload;
-  private readonly sheet: LazyShopSheet;
+  private readonly lookup: LazyButton;
+  private readonly sheet: LazyButton;
   private readonly teaching: TeachingLoader | null;
   private readonly roughness: RoughnessPanel;
   /** The feed marks and areal finish (finishLazy.ts). */
@@ -188,7 +187,7 @@ export class CalculatorApp {
     this.roughness = new RoughnessPanel(root);
     this.finish = new LazyFinish(
       root.querySelector<HTMLElement>('[data-testid="finish-results"]'),
-      (fz) => this.change(withValues(this.state, { fz })),
+      (fields) => this.change(withValues(this.state, fields)),
       (messages) => {
         this.finishMessages = messages;
         this.fields.render(this.state, this.fieldMessages());
@@ -198,11 +197,14 @@ export class CalculatorApp {
       (info) => this.restarted('simulation', info),
       () => this.notice.clear('simulation'),
     );
-    this.lookup = new LookupDownload(
-      must(root, '[data-testid="download-table"]'),
-      must(root, '[data-testid="download-table-status"]'),
+    // The lookup table's download and the shop sheet: their code loads on their first press.
+    const tableStatus = must<HTMLElement>(root, '[data-testid="download-table-status"]');
+    this.lookup = new LazyButton(must(root, '[data-testid="download-table"]'), (button) =>
+      import('./lookupDownload').then(({ LookupDownload }) => new LookupDownload(button, tableStatus)),
     );
-    this.sheet = new LazyShopSheet(must(root, '[data-testid="shop-sheet"]'));
+    this.sheet = new LazyButton(must(root, '[data-testid="shop-sheet"]'), (button) =>
+      import('./shopSheet').then(({ ShopSheetPanel }) => new ShopSheetPanel(button)),
+    );
     const sceneBox = must<HTMLElement>(root, '.scene');
     this.sceneBox = sceneBox;
     this.scene = new SceneSlot(() => import('../render/scene').then(({ ToolScene }) => new ToolScene(sceneBox)));

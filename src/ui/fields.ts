@@ -10,7 +10,7 @@ import type { PassPattern } from '../core/input/validate';
 import type { SurfaceAxis } from '../core/surfaces/cylinder';
 import type { SolveMode } from '../worker/protocol';
 import { html, must } from './dom';
-import { FINISH_KEYS, finishGiven } from './finishFields';
+import { FINISH_KEYS, finishGiven, finishKeyOff, rateFzText } from './finishFields';
 import { catalogue, fieldWords } from './i18n/words';
 import { LazyQuestionLimits } from './lazyQuestionLimits';
 import type { Machine, Passes } from './machineState';
@@ -21,7 +21,6 @@ import {
   FIELD_KEYS,
   type FieldKey,
   formatField,
-  isLengthField,
   PRESETS,
   parseField,
   presetOf,
@@ -95,17 +94,24 @@ const HINTS: Readonly<Record<FieldKey, string>> = {
   runout: 'radial runout (default 0)',
   runoutPhase: 'runout direction from tooth 0',
   passPhase: 'pass shift, a fraction of the feed period',
+  F: 'with n: fz = F / (n z); off while fz is typed',
+  n: 'spindle speed, with F',
 };
 
 /** The order of the form: the slope and raster angle sit where the lead and tilt do. */
 const FORM_ORDER: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'tilt', 'slope', 'psi', 'h', 'ra', 'L', 'Lxy', 'dz'];
 
 /** The teeth and their feed: always offered (optional; the finish says where it is not computed). */
-const FINISH_SHOWN = { z: true, fz: true, runout: true, runoutPhase: true, passPhase: true } as const;
+const FINISH_SHOWN = { z: true, fz: true, F: true, n: true, runout: true, runoutPhase: true, passPhase: true } as const;
 
-/** A field that is not a length: degrees, or a plain number (a count of teeth, a fraction). */
-function unitlessLabel(key: FieldKey): string {
-  return (FIELDS[fieldOfPageKey(key)] as FieldSpec).kind === 'number' ? '' : (catalogue()?.degrees ?? 'deg');
+/**
+ * The unit after a field: a length's symbol (with the registry's suffix: mm/min), the registry's
+ * unit of a plain number (rpm; none for a count of teeth or a fraction), or degrees.
+ */
+function unitLabel(key: FieldKey, unit: Unit): string {
+  const spec = FIELDS[fieldOfPageKey(key)] as FieldSpec;
+  if (spec.kind === 'length') return unitSymbol(unit) + (spec.unit ?? '');
+  return spec.kind === 'number' ? (spec.unit ?? '') : (catalogue()?.degrees ?? 'deg');
 }
 
 /** The fields shown with the surface's switches. */
@@ -128,6 +134,8 @@ const TEST_NAME: Partial<Readonly<Record<FieldKey, string>>> = {
   z: 'flutes',
   runoutPhase: 'runout-phase',
   passPhase: 'pass-phase',
+  F: 'feed-rate',
+  n: 'spindle-speed',
 };
 
 /** The sides' names in a radius's side box. */
@@ -309,6 +317,7 @@ export class FieldsPanel {
     if (this.finishBox !== null && !this.finishBox.open && FINISH_KEYS.some((k) => messages.has(k)))
       this.finishBox.open = true;
     this.finishWasGiven = finishNow;
+    const rateFz = rateFzText(state);
     const forward = state.mode === 'forward';
     const five = state.machine === '5axis';
     const plane = state.surface === 'plane';
@@ -340,11 +349,15 @@ export class FieldsPanel {
         if (box && box.value !== side) box.value = side;
         view.input.disabled = side === 'straight';
         view.slider.disabled = side === 'straight';
-      }
-      const unitText = isLengthField(key) ? unitSymbol(state.unit) : unitlessLabel(key);
+        // F and n while fz is typed: off (fz wins).
+      } else view.input.disabled = view.slider.disabled = finishKeyOff(state, key);
+      const unitText = unitLabel(key, state.unit);
       if (view.unitLabel.textContent !== unitText) view.unitLabel.textContent = unitText;
       this.word(view, key, sizeIsDiameter(state));
-      if (view.input.value !== state.fields[key]) view.input.value = state.fields[key];
+      // fz while the feed rate and spindle speed hold text: read-only, the fz they give (or empty).
+      const text = key === 'fz' && rateFz !== null ? rateFz : state.fields[key];
+      if (view.input.value !== text) view.input.value = text;
+      if (key === 'fz') view.input.readOnly = view.slider.disabled = rateFz !== null;
       const r = ranges[key];
       view.slider.min = r.min;
       view.slider.max = r.max;

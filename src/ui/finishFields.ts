@@ -6,16 +6,43 @@
  * the worker with the finish (jobs/finish.ts). Pure, small: it loads with the first result.
  */
 
+import { feedPerToothOfRate } from '../core/finish/feedRate';
 import { entryFaultMessage } from '../core/input/entryMessages';
 import { FIELDS, FINISH_FIELD_IDS, type FieldSpec, type PageFieldKey, urlParamOf } from '../core/input/fields';
+import { formatInputNumber } from '../core/input/units';
 import { parseField } from './fieldText';
 import type { PageFieldError } from './requestTypes';
 import type { CalculatorState } from './stateTypes';
 
-/** The finish fields' page keys, in the registry's order (z, fz, runout, runoutPhase, passPhase). */
+/** The finish fields' page keys, in the registry's order (z, fz, F, n, runout, runoutPhase, passPhase). */
 export const FINISH_KEYS: readonly PageFieldKey[] = FINISH_FIELD_IDS.map(
   (id) => (FIELDS[id] as FieldSpec).page as PageFieldKey,
 );
+
+/** The feed rate's and spindle speed's page keys (they give fz while fz is empty). */
+const RATE_KEYS: readonly PageFieldKey[] = [FIELDS.feedRate.page, FIELDS.spindleSpeed.page];
+
+/**
+ * True for a finish field the page leaves out: the feed rate and spindle speed while fz holds text
+ * (fz typed wins; its fields are then disabled, README "Feed rate and spindle speed").
+ */
+export function finishKeyOff(state: CalculatorState, key: PageFieldKey): boolean {
+  return RATE_KEYS.includes(key) && state.fields.fz.trim() !== '';
+}
+
+/**
+ * The fz field's text while the feed rate or spindle speed holds text and fz does not: the fz they
+ * give, F / (n z) in the user's unit (F in mm/min or in/min), or '' while F, n or z is not a
+ * positive number (whole teeth); null otherwise (fz typed, or F and n empty: the field as typed).
+ */
+export function rateFzText(state: CalculatorState): string | null {
+  const { fz, F, n, z } = state.fields;
+  if (fz.trim() !== '' || F.trim() + n.trim() === '') return null;
+  const [f, s, t] = [F, n, z].map(parseField) as [number | null, number | null, number | null];
+  return f !== null && s !== null && t !== null && f > 0 && s > 0 && Number.isInteger(t) && t >= 1
+    ? formatInputNumber(feedPerToothOfRate(f, s, t))
+    : '';
+}
 
 /** True when any finish field holds text (then the page asks for the finish). */
 export function finishGiven(state: CalculatorState): boolean {
@@ -25,8 +52,9 @@ export function finishGiven(state: CalculatorState): boolean {
 /** The link's parameters of the finish fields that hold text, as typed (`z=4&fz=0.08`). */
 export function finishSearch(state: CalculatorState): Array<[string, string]> {
   return FINISH_FIELD_IDS.flatMap((id, i) => {
-    const text = state.fields[FINISH_KEYS[i] as PageFieldKey].trim();
-    return text === '' ? [] : [[urlParamOf(id), text] as [string, string]];
+    const key = FINISH_KEYS[i] as PageFieldKey;
+    const text = state.fields[key].trim();
+    return text === '' || finishKeyOff(state, key) ? [] : [[urlParamOf(id), text] as [string, string]];
   });
 }
 
@@ -35,7 +63,7 @@ export function finishFieldErrors(state: CalculatorState): PageFieldError[] {
   return FINISH_FIELD_IDS.flatMap((id, i) => {
     const key = FINISH_KEYS[i] as PageFieldKey;
     const text = state.fields[key].trim();
-    if (text === '' || parseField(text) !== null) return [];
+    if (text === '' || parseField(text) !== null || finishKeyOff(state, key)) return [];
     return [{ key, message: entryFaultMessage(FIELDS[id].label, 'not-a-number', text, '') }];
   });
 }

@@ -7,7 +7,7 @@ import { FINISH_FIELD_IDS } from '../core/input/fields';
 import type { FinishValue } from '../worker/finishProtocol';
 import type { PageReply } from '../worker/pageProtocol';
 import { finishClient } from '../worker/workers';
-import { FINISH_KEYS, finishGiven } from './finishFields';
+import { FINISH_KEYS, finishGiven, finishKeyOff } from './finishFields';
 import type { FinishPanel } from './finishPanel';
 import type { FinishInputs } from './finishRequest';
 import { type CalculatorState, type FieldKey, fieldInMm } from './state';
@@ -21,7 +21,8 @@ export function finishInputs(state: CalculatorState): FinishInputs {
   const typed = {} as Record<FinishField, string>;
   FINISH_FIELDS.forEach((field, i) => {
     const key = FINISH_KEYS[i] as (typeof FINISH_KEYS)[number];
-    const text = state.fields[key].trim();
+    // The feed rate and spindle speed while fz is typed: off (finishFields.ts finishKeyOff).
+    const text = finishKeyOff(state, key) ? '' : state.fields[key].trim();
     typed[field] = text;
     values[field] = text === '' ? undefined : fieldInMm(state, key);
   });
@@ -36,7 +37,8 @@ export class LazyFinish {
 
   constructor(
     private readonly box: HTMLElement | null,
-    private readonly onFz: (feedPerToothMm: number) => void,
+    /** "use the balanced feed": the fields it sets (fz in mm, or the feed rate F in mm/min). */
+    private readonly onFeed: (fields: { readonly fz: number } | { readonly F: number }) => void,
     /** The worker's messages on the finish fields, by page key (empty: none), for the fields. */
     private readonly onFieldErrors: (messages: ReadonlyMap<FieldKey, string>) => void = () => {},
   ) {}
@@ -50,7 +52,7 @@ export class LazyFinish {
     else if (box !== null && inputs.given && !this.loading) {
       this.loading = true;
       void import('./finishPanel').then(({ FinishPanel }) => {
-        this.panel = new FinishPanel(box, this.onFz, finishClient, (errors) =>
+        this.panel = new FinishPanel(box, this.onFeed, finishClient, (errors) =>
           this.onFieldErrors(
             new Map(errors.map((e) => [FINISH_KEYS[FINISH_FIELDS.indexOf(e.field)] as FieldKey, e.message])),
           ),

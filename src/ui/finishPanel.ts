@@ -19,17 +19,21 @@ import {
 import type { PageReply } from '../worker/pageProtocol';
 import type { finishClient } from '../worker/workers';
 import { detailsRow, html } from './dom';
+import { feedLength } from './finishLength';
+import { FinishProfileCharts } from './finishProfileCharts';
 import { type FinishInputs, finishAsk, x3pFileName } from './finishRequest';
-import { formatLenUnit, formatRoughness } from './format';
+import { formatRoughness } from './format';
 import { localize } from './i18n/words';
-import { shopFeed } from './shopFeed';
+import { balancedFeedFields } from './shopFeed';
 
 /** Points along each side of the x3p download's one cell (the issue's 256 x 256). */
 export const X3P_SIZE = 256;
 
-/** The areal parameters' rows: symbol, test id, and whether it is a height (else dimensionless). */
+/**
+ * The areal parameters' rows after Sa (shown once, beside Ra above them): symbol and its words
+ * (the row's title).
+ */
 const AREAL = [
-  ['Sa', 'mean absolute height'],
   ['Sq', 'root mean square height'],
   ['Sz', 'highest peak to deepest valley'],
   ['Sp', 'highest peak'],
@@ -37,6 +41,14 @@ const AREAL = [
   ['Ssk', 'skewness'],
   ['Sku', 'kurtosis'],
 ] as const;
+
+/**
+ * An output of the box, not a live region of its own (an <output> is one by default): the box's one
+ * live region says the answer once it is complete, not each number as it changes.
+ */
+function quietOutput(testId: string): HTMLOutputElement {
+  return html('output', { 'data-testid': testId, 'aria-live': 'off' }, NO_VALUE);
+}
 
 /** A dimensionless number to 4 decimals, never -0. */
 function plain(v: number): string {
@@ -48,6 +60,8 @@ function plain(v: number): string {
 export class FinishPanel {
   private readonly outputs = new Map<string, HTMLOutputElement>();
   private readonly message: HTMLElement;
+  /** The polite live region (see the constructor). */
+  private readonly live: HTMLElement;
   private readonly useBalanced: HTMLButtonElement;
   private readonly download: HTMLButtonElement;
   private readonly x3pStatus: HTMLElement;
@@ -67,6 +81,8 @@ export class FinishPanel {
   private answerParts: readonly HTMLElement[] = [];
   private raMm: number | null = null;
   private unit: LengthUnit = 'mm';
+  /** The finish fields on screen (the balanced feed sets fz, or F at the spindle speed given). */
+  private inputs: FinishInputs | null = null;
   /** The x3p asked (the question with its file), until its bytes come. */
   private x3pAsked: FinishRequest | null = null;
   /** The feed marks' worker and the areal parameters' (slower: they never hold the marks back). */
@@ -76,6 +92,8 @@ export class FinishPanel {
   private readonly figure: HTMLElement;
   private readonly canvas: HTMLCanvasElement;
   private readonly scale: HTMLElement;
+  /** The profiles along and across the feed (with the areal answer). */
+  private readonly profiles: FinishProfileCharts;
   /** The map on the canvas (its reply), so that it is painted once. */
   private painted: Extract<FinishReply, { ok: true }> | null = null;
   /** The part each client computes now (until its reply). */
@@ -87,7 +105,8 @@ export class FinishPanel {
   /** `clientOf`: workers.ts finishClient (the first script's, passed in). */
   constructor(
     private readonly box: HTMLElement,
-    private readonly onFz: (feedPerToothMm: number) => void,
+    /** "use the balanced feed": the fields it sets (fz in mm, or the feed rate F in mm/min). */
+    private readonly onFeed: (fields: { readonly fz: number } | { readonly F: number }) => void,
     private readonly clientOf: typeof finishClient,
     /** The worker's messages on the finish fields that answer the inputs on screen (shown on the fields too). */
     private readonly onFieldErrors: (errors: readonly FinishFieldMessage[]) => void = () => {},
@@ -102,7 +121,7 @@ export class FinishPanel {
     );
     const list = html('dl', { class: 'details finish-details' });
     const row = (label: string, testId: string, title = '') => {
-      const out = html('output', { 'data-testid': testId }, NO_VALUE);
+      const out = quietOutput(testId);
       this.outputs.set(testId, out);
       const { row: line, dd } = detailsRow(list, label, out, title === '' ? {} : { title });
       (line.firstElementChild as HTMLElement).dataset.phrase = label;
@@ -128,15 +147,17 @@ export class FinishPanel {
     this.useBalanced.addEventListener('click', () => {
       if (this.useBalanced.getAttribute('aria-disabled') === 'true') return;
       const fz = this.answer('marks')?.feedMarks?.balancedFz;
-      if (fz !== undefined && fz !== null) this.onFz(shopFeed(fz, this.unit));
+      if (fz !== undefined && fz !== null && this.inputs !== null) this.onFeed(balancedFeedFields(fz, this.inputs));
     });
     const areal = html('dl', { class: 'details finish-areal', 'data-testid': 'finish-areal' });
     for (const [symbol, words] of AREAL) {
-      const out = html('output', { 'data-testid': `finish-areal-${symbol}` }, NO_VALUE);
+      const out = quietOutput(`finish-areal-${symbol}`);
       this.outputs.set(symbol, out);
       detailsRow(areal, symbol, out, { title: words });
     }
-    this.message = html('p', { class: 'finish-message', 'data-testid': 'finish-message', role: 'status' });
+    this.message = html('p', { class: 'finish-message', 'data-testid': 'finish-message' });
+    // The box's one live region: what it waits for, why it refuses, or its answer once complete.
+    this.live = html('p', { class: 'sr-only', 'data-testid': 'finish-live', role: 'status' });
     this.download = html(
       'button',
       { type: 'button', 'data-testid': 'download-x3p', disabled: '', 'data-phrase': 'Download x3p' },
@@ -162,15 +183,17 @@ export class FinishPanel {
     });
     this.scale = html('figcaption', { 'data-testid': 'finish-map-scale' });
     this.figure.append(this.canvas, this.scale);
+    this.profiles = new FinishProfileCharts();
     const tools = html('div', { class: 'finish-tools' });
     tools.append(this.download, ' ', this.x3pStatus);
-    box.append(heading, list, areal, this.message, this.figure, note, tools);
+    box.append(heading, list, areal, this.message, this.live, this.figure, this.profiles.element, note, tools);
     this.answerParts = [list, areal, note, tools];
   }
 
   /** The inputs on screen and the answer to them (null while none is, or while typing). */
   show(inputs: FinishInputs, reply: PageReply | null): void {
     this.unit = inputs.unit;
+    this.inputs = inputs;
     this.box.hidden = !inputs.given;
     const ask = finishAsk(inputs, reply);
     this.refusal = ask.kind === 'refused' ? ask.message : null;
@@ -247,14 +270,14 @@ export class FinishPanel {
     this.set('finish-ra', height(marks === null ? undefined : (this.raMm ?? undefined)));
     this.set('finish-hf', height(m?.height));
     this.set('finish-sa', height(s?.Sa));
-    this.set('finish-period', formatLenUnit(m?.period ?? null, u, 'fine'));
+    this.set('finish-period', feedLength(m?.period ?? null, u));
     this.set(
       'finish-balanced',
       m === undefined
         ? NO_VALUE
         : m.balancedFz === null
           ? 'none: hf stays below h at every fz up to R'
-          : formatLenUnit(m.balancedFz, u, 'fine'),
+          : feedLength(m.balancedFz, u),
     );
     for (const [symbol] of AREAL)
       this.set(
@@ -279,6 +302,7 @@ export class FinishPanel {
     }
     const pending = this.wanted !== null && (m === undefined || s === undefined);
     this.paint(this.answer('areal'));
+    this.profiles.show(this.refusal === null ? (this.answer('areal')?.profiles ?? null) : null, this.unit);
     const waiting = pending
       ? (this.note ??
         (m === undefined
@@ -293,6 +317,20 @@ export class FinishPanel {
     const gaveUp = pending && this.note?.startsWith('No finish') === true;
     this.message.classList.toggle('error', this.refusal !== null || failed !== null || gaveUp);
     localize(this.box);
+    // Said once complete: the message while there is one, else the answer's main rows (as localized).
+    const said = text !== '' || this.wanted === null ? text : this.summary();
+    if (this.live.textContent !== said) this.live.textContent = said;
+  }
+
+  /** The answer's main rows, label and value as shown (in the language in force): hf, Sa, fz*. */
+  private summary(): string {
+    return ['finish-hf', 'finish-sa', 'finish-balanced']
+      .map((id) => {
+        const out = this.outputs.get(id);
+        const label = out?.closest('dd')?.previousElementSibling?.textContent ?? '';
+        return `${label}: ${out?.textContent ?? ''}`;
+      })
+      .join('; ');
   }
 
   /**
@@ -308,7 +346,7 @@ export class FinishPanel {
     const period = this.answer('marks')?.feedMarks?.period ?? null;
     const across = r.intervalMm * (r.pattern === 'zigzag' ? 2 : 1);
     const text =
-      `One period cell, ${formatLenUnit(period, u, 'fine')} along the feed (right) by ${formatLenUnit(across, u, 'fine')} across (down); ` +
+      `One period cell, ${feedLength(period, u)} along the feed (right) by ${feedLength(across, u)} across (down); ` +
       `blue the lowest, orange the highest: Sz = ${formatRoughness(areal.areal === null ? null : areal.areal.Sz, u)} apart. ` +
       'Drawn square, not to scale.';
     if (this.scale.textContent !== text) this.scale.textContent = text;

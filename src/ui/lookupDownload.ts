@@ -6,18 +6,19 @@
  * in the user's unit (every dimensioned column's header names it: `h_in`, `rho_deg`; full
  * precision). The button is enabled only while the inputs on screen make a valid
  * question; the file answers the tool, pattern and surface asked for at the click (its name says
- * which), and a reply is saved only if it echoes that request.
+ * which), and a reply is saved only if it echoes that request. Loaded on the first press
+ * (lazyButton.ts), not with the first result.
  */
 
 import type { LengthUnit } from '../core/input/units';
 import type { RestartInfo } from '../worker/client';
-import type { CurvedRequest, ThreeAxisRequest } from '../worker/pageProtocol';
-import { type SolveRequest, sameTableRequest, type TableReply, type TableRequest } from '../worker/protocol';
+import type { PageRequest } from '../worker/pageProtocol';
+import { sameTableRequest, type TableReply, type TableRequest } from '../worker/protocol';
 import { tableClient } from '../worker/workers';
 
 /** The download button and its status line (see the module comment). */
 export class LookupDownload {
-  private current: SolveRequest | CurvedRequest | ThreeAxisRequest | null = null;
+  private current: PageRequest | null = null;
   private unit: LengthUnit = 'mm';
   private asked: TableRequest | null = null;
   /** The first click waits for the grid's code (tableRequest.ts): the button stays disabled meanwhile. */
@@ -31,17 +32,22 @@ export class LookupDownload {
     private readonly status: HTMLElement,
   ) {
     button.disabled = true;
-    button.addEventListener('click', () => void this.ask());
+    button.addEventListener('click', () => this.open());
   }
 
   /**
    * The inputs on screen changed: the request they ask, or null (invalid, or being typed). The file
    * is in `unit`, the user's.
    */
-  want(request: SolveRequest | CurvedRequest | ThreeAxisRequest | null, unit: LengthUnit): void {
+  want(request: PageRequest | null, unit: LengthUnit): void {
     this.current = request;
     this.unit = unit;
     this.button.disabled = this.current === null || this.asked !== null || this.loadingGrid;
+  }
+
+  /** Asks the table of the question on screen (a press of the button). */
+  open(): void {
+    void this.ask();
   }
 
   private async ask(): Promise<void> {

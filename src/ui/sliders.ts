@@ -46,6 +46,8 @@ const STEPS: Readonly<Record<'mm' | 'in', Readonly<Record<FieldKey, number>>>> =
     dz: 0.001,
     z: 1,
     fz: 0.001,
+    F: 1,
+    n: 10,
     runout: 0.001,
     runoutPhase: 1,
     passPhase: 0.01,
@@ -67,6 +69,8 @@ const STEPS: Readonly<Record<'mm' | 'in', Readonly<Record<FieldKey, number>>>> =
     dz: 0.0001,
     z: 1,
     fz: 0.0001,
+    F: 0.1,
+    n: 10,
     runout: 0.0001,
     runoutPhase: 1,
     passPhase: 0.01,
@@ -167,6 +171,9 @@ export function sliderRanges(
     // feed of 2 mm on an R 3 tool stays on the slider) and runout up to R/10.
     z: [1, 12],
     fz: [step.fz, snap(len(tool.toolRadiusMm), step.fz, step.fz)],
+    // Feed rate up to 20 m/min, spindle speed up to 40,000 rpm (the fields take any positive value).
+    F: [step.F, snap(len(20_000), step.F, step.F)],
+    n: [100, 40_000],
     runout: [0, snap(len(tool.toolRadiusMm / 10), step.runout, 0)],
     runoutPhase: [0, 359],
     passPhase: [0, 0.99],

@@ -189,6 +189,9 @@ export function parseUrl(search: string): ParsedUrl {
       notices.push(`${name}="${text.slice(0, 20)}" in the link is not a number; using the default ${defaults[key]}.`);
     else if (v !== null) fields[key] = text.trim();
   }
+  // fz given wins over the feed rate and spindle speed (finishFields.ts finishKeyOff): said, not silent.
+  if (fields.fz !== '' && fields.F + fields.n !== '')
+    notices.push(`${param('fz')} is in the link: ${param('feedRate')} and ${param('spindleSpeed')} are not used.`);
   const toolName = toolNameOfLink(params);
   const embedText = params.get(param('embed'));
   const embed = embedText !== null && (FIELDS.embed.values as readonly string[]).includes(embedText);

@@ -8,7 +8,7 @@
 import type { FieldKey, ToolSize, Unit } from './stateTypes';
 
 /** The teeth and their feed (issue 29) are optional: empty, no feed marks, in either unit. */
-const NO_FINISH = { z: '', fz: '', runout: '', runoutPhase: '', passPhase: '' } as const;
+const NO_FINISH = { z: '', fz: '', F: '', n: '', runout: '', runoutPhase: '', passPhase: '' } as const;
 
 /** Defaults in mm: the paper's Tool 1, condition 1 (L is its exact step-over, rounded), no tilt. */
 export const DEFAULT_FIELDS_MM: Readonly<Record<FieldKey, string>> = {

@@ -6,6 +6,7 @@
  */
 import type { FinishField } from '../core/finish/finishInput';
 import type { FinishReport } from '../core/finish/index';
+import type { FinishProfiles } from '../core/finish/profiles';
 import type { LengthUnit } from '../core/input/units';
 import type { PassPattern, ToolInput } from '../core/input/validate';
 
@@ -41,6 +42,9 @@ export interface FinishRequest {
 /** Points along each side of the cell's height map drawn on the page. */
 export const MAP_SIZE = 256;
 
+/** Points of each profile drawn on the page (along: two feed periods; across: one cross period). */
+export const PROFILE_POINTS = 193;
+
 /** One finish field's refusal, worded in the request's unit (the constraint and its limit). */
 export interface FinishFieldMessage {
   readonly field: FinishField;
@@ -57,6 +61,11 @@ export type FinishReply =
       readonly x3p: Uint8Array | null;
       /** With the areal parameters: one cell's heights (mm, MAP_SIZE x MAP_SIZE, row i + n j: x along the feed). */
       readonly map: Float32Array | null;
+      /**
+       * With the areal parameters: the profiles along the CC path (two feed periods) and across the
+       * feed (one cross period, at the x of the highest feed mark), PROFILE_POINTS each (core profiles.ts).
+       */
+      readonly profiles?: FinishProfiles | null;
     }
   | { readonly ok: false; readonly request: FinishRequest; readonly errors: readonly FinishFieldMessage[] };
 

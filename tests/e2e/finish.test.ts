@@ -2,8 +2,9 @@
  * The finish on the page (issue 29), one page load for the file: flutes and fz typed as a user
  * types them give hf, Sa and fz* equal to the core's finishReport to the digits shown; "use the
  * balanced feed" makes hf read as h; a bad fz is one line naming its limit in the unit, the
- * step-over kept; a cylinder is refused in one line (no number); the x3p download is a zip of one
- * cell's 256 x 256 heights named by the question; a Fusion 360 tool's NOF fills the flutes. Every
+ * step-over kept; the profiles along and across the feed are drawn; a cylinder is refused in one line (no number); the x3p download is a zip of one
+ * cell's 256 x 256 heights named by the question; feed rate and spindle speed give fz; a Fusion
+ * 360 tool's NOF fills the flutes. Every
  * status read is polled.
  */
 import { readFileSync } from 'node:fs';
@@ -11,7 +12,8 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { feedMarks, finishReport, toothModel } from '../../src/core/finish/index';
 import { forwardInput } from '../../src/core/input/validate';
-import { formatLenUnit, formatRoughness } from '../../src/ui/format';
+import { feedLength } from '../../src/ui/finishLength';
+import { formatRoughness } from '../../src/ui/format';
 import { solve } from '../../src/worker/jobs/solve';
 import { typeInto, useSite } from './harness';
 
@@ -24,7 +26,12 @@ function expected() {
   const reply = solve({ mode: 'forward', input: forwardInput(TOOL, 'one-way', 0.05) });
   if (!reply.ok) throw new Error('plane');
   const finish = { flutes: 4, feedPerToothMm: 0.1, runoutMm: 0, runoutPhaseDeg: 0, passPhase: 0 };
-  return { report: finishReport(TOOL, 'one-way', reply.exact.intervalMm, finish), L: reply.exact.intervalMm };
+  const m = toothModel({ tool: TOOL, pattern: 'one-way', intervalMm: reply.exact.intervalMm, finish });
+  return {
+    report: finishReport(TOOL, 'one-way', reply.exact.intervalMm, finish),
+    L: reply.exact.intervalMm,
+    crestXMm: feedMarks(m).crestXMm,
+  };
 }
 
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent()) ?? '';
@@ -54,7 +61,7 @@ describe('the finish box', () => {
     await expect
       .poll(() => text(page, 'finish-sa'), { timeout: 20_000 })
       .toBe(formatRoughness(core.report.areal.Sa, 'mm'));
-    expect(await text(page, 'finish-balanced')).toBe(formatLenUnit(m.balancedFz, 'mm', 'fine'));
+    expect(await text(page, 'finish-balanced')).toBe(feedLength(m.balancedFz, 'mm'));
     // The cell's height map: painted (blue to orange), its scale in words.
     await expect
       .poll(() => text(page, 'finish-map-scale'))
@@ -66,8 +73,38 @@ describe('the finish box', () => {
       return seen.size;
     });
     expect(colours).toBeGreaterThan(20);
-    expect(await text(page, 'finish-areal-Sz')).toBe(formatRoughness(core.report.areal.Sz, 'mm'));
+    // The profiles along the CC path and across the feed: charts with axes in mm and µm, the across
+    // one at the x of the highest feed mark (the core's).
+    await expect.poll(() => page.getByTestId('finish-profiles').isVisible()).toBe(true);
+    for (const id of ['finish-profile-along-chart', 'finish-profile-across-chart']) {
+      const chart = page.getByTestId(id);
+      expect(await chart.locator('.chart-axis-label').allTextContents()).toEqual([
+        id.includes('along') ? 'x (mm)' : 'y (mm)',
+        's (\u00b5m)',
+      ]);
+      expect(await chart.locator('path.chart-line').getAttribute('d')).toMatch(
+        /^M[\d.]+ [\d.]+(L[\d.]+ [\d.]+){100,}$/,
+      );
+    }
+    expect(await text(page, 'finish-profile-across-x')).toBe(feedLength(core.crestXMm, 'mm'));
     expect(await text(page, 'finish-areal-Sku')).toBe(core.report.areal.Sku.toFixed(4));
+    // Sa once (beside Ra), not again in the areal list.
+    expect(await page.getByTestId('finish-areal-Sa').count()).toBe(0);
+    // One polite live region for the results (beside the x3p's own status): the answer once complete.
+    const live = await page
+      .getByTestId('finish-results')
+      .evaluate((box) =>
+        [...box.querySelectorAll('output, [role="status"], [aria-live]')]
+          .filter((e) => e.getAttribute('aria-live') !== 'off')
+          .map((e) => e.getAttribute('data-testid')),
+      );
+    expect(live).toEqual(['finish-live', 'x3p-status']);
+    await expect
+      .poll(() => text(page, 'finish-live'))
+      .toBe(
+        `Feed marks hf (along the CC path): ${formatRoughness(m.height, 'mm')}; Sa (areal): ${formatRoughness(core.report.areal.Sa, 'mm')}; ` +
+          `Balanced feed fz* (hf = h): ${feedLength(m.balancedFz, 'mm')}`,
+      );
     // The link carries the teeth and the feed.
     await expect.poll(() => new URL(page.url()).searchParams.get('fz')).toBe('0.1');
     expect(new URL(page.url()).searchParams.get('z')).toBe('4');
@@ -109,7 +146,8 @@ describe('the finish box', () => {
     expect(await page.getByTestId('finish-areal').isHidden()).toBe(true);
     expect(await page.getByTestId('download-x3p').isHidden()).toBe(true);
     expect(await text(page, 'finish-hf')).toBe('\u2014');
-    expect(await text(page, 'finish-areal-Sa')).toBe('\u2014');
+    expect(await text(page, 'finish-sa')).toBe('\u2014');
+    expect(await page.getByTestId('finish-profiles').isHidden()).toBe(true);
   });
 
   it('downloads the x3p of one cell: a zip, 256 x 256 float64 heights, named by the question', async () => {
@@ -136,9 +174,39 @@ describe('the finish box', () => {
     const finish = { flutes: 4, feedPerToothMm: 0.1, runoutMm: 0.01, runoutPhaseDeg: 0, passPhase: 0 };
     const marks = feedMarks(toothModel({ tool: TOOL, pattern: 'one-way', intervalMm: core.L, finish }));
     await expect.poll(() => text(page, 'finish-hf'), { timeout: 30_000 }).toBe(formatRoughness(marks.heightMm, 'mm'));
-    expect(await text(page, 'finish-period')).toBe(formatLenUnit(0.4, 'mm', 'fine'));
+    expect(await text(page, 'finish-period')).toBe(feedLength(0.4, 'mm'));
     expect(await text(page, 'finish-message')).not.toMatch(/runout/i);
     await commit(page, 'input-runout', '');
+  });
+
+  it('feed rate and spindle speed give fz (read-only, F / (n z)); they are off while fz is typed', async () => {
+    expect(await page.getByTestId('input-feed-rate').isDisabled()).toBe(true);
+    await commit(page, 'input-fz', '');
+    await expect.poll(() => page.getByTestId('input-feed-rate').isDisabled()).toBe(false);
+    await commit(page, 'input-feed-rate', '2400');
+    await commit(page, 'input-spindle-speed', '6000');
+    // 2400 mm/min at 6000 rpm with 4 teeth: 0.1 mm per tooth, the answer of the first test.
+    await expect.poll(() => page.getByTestId('input-fz').inputValue()).toBe('0.1');
+    expect(await page.getByTestId('input-fz').getAttribute('readonly')).toBe('');
+    expect(await page.locator('[data-field="F"] .unit').textContent()).toBe('mm/min');
+    await expect
+      .poll(() => text(page, 'finish-hf'), { timeout: 20_000 })
+      .toBe(formatRoughness(core.report.feedMarks.height, 'mm'));
+    await expect.poll(() => new URL(page.url()).searchParams.get('rpm')).toBe('6000');
+    expect(new URL(page.url()).searchParams.get('F')).toBe('2400');
+    expect(new URL(page.url()).searchParams.get('fz')).toBeNull();
+    // "use the balanced feed" keeps the spindle speed and sets the feed rate: fz* n z, down to 1 mm/min.
+    const rate = Math.floor((core.report.feedMarks.balancedFz ?? 0) * 6000 * 4);
+    await page.getByTestId('use-balanced-feed').click();
+    await expect.poll(() => page.getByTestId('input-feed-rate').inputValue()).toBe(String(rate));
+    expect(await page.getByTestId('input-spindle-speed').inputValue()).toBe('6000');
+    await expect.poll(() => page.getByTestId('input-fz').inputValue()).toBe(String(rate / 24000));
+    await commit(page, 'input-spindle-speed', '0');
+    const message = 'Spindle speed n must be greater than 0 rpm (got 0).';
+    await expect.poll(() => text(page, 'finish-message'), { timeout: 20_000 }).toBe(message);
+    expect(await text(page, 'error-spindle-speed')).toBe(message);
+    expect(await page.getByTestId('input-fz').inputValue()).toBe('');
+    expect(await text(page, 'finish-hf')).toBe('\u2014');
   });
 
   it("a Fusion 360 tool's NOF gives the flutes", async () => {

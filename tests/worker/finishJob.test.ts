@@ -11,30 +11,15 @@ import { finishFailureWords, NOT_CONVERGED } from '../../src/core/finish/envelop
 import { balancedFeed, feedMarks, finishReport, toothModel } from '../../src/core/finish/index';
 import { forwardInput } from '../../src/core/input/validate';
 import { type FinishInputs, finishAsk, x3pFileName } from '../../src/ui/finishRequest';
-import type { FinishRequest } from '../../src/worker/finishProtocol';
+import { type FinishRequest, PROFILE_POINTS } from '../../src/worker/finishProtocol';
 import { finish } from '../../src/worker/jobs/finish';
 import { solve } from '../../src/worker/jobs/solve';
 import type { PageReply } from '../../src/worker/pageProtocol';
+import { finishInputsOf } from '../support/finishInputs';
 
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 
-function inputs(values: Partial<FinishInputs['values']>, unit: 'mm' | 'in' = 'mm'): FinishInputs {
-  const all = {
-    flutes: undefined,
-    fz: undefined,
-    runout: undefined,
-    runoutPhase: undefined,
-    passPhase: undefined,
-    ...values,
-  };
-  const typed = Object.fromEntries(Object.entries(all).map(([k, v]) => [k, v === undefined ? '' : String(v)]));
-  return {
-    given: Object.values(all).some((v) => v !== undefined),
-    values: all,
-    typed: typed as FinishInputs['typed'],
-    unit,
-  };
-}
+const inputs = finishInputsOf;
 
 const plane = solve({ mode: 'forward', input: forwardInput(TOOL, 'one-way', 0.05) }) as PageReply;
 
@@ -68,6 +53,27 @@ describe('the finish job', () => {
     const range = Math.max(...map) - Math.min(...map);
     expect(range).toBeLessThanOrEqual(core.areal.Sz * (1 + 1e-6));
     expect(range).toBeGreaterThan(0.95 * core.areal.Sz);
+    // And the profiles: along the CC path over two feed periods, its span within hf (the sampling's);
+    // across over one step-over, at the x of the highest feed mark.
+    const p = areal.profiles;
+    if (p === null || p === undefined) throw new Error('no profiles');
+    expect([p.along.atMm.length, p.across.atMm.length]).toEqual([PROFILE_POINTS, PROFILE_POINTS]);
+    expect(p.along.atMm.at(-1)).toBeCloseTo(0.2, 15);
+    expect((p.across.atMm.at(-1) as number) - (p.across.atMm[0] as number)).toBeCloseTo(plane.exact.intervalMm, 14);
+    const along = Math.max(...p.along.heightsMm) - Math.min(...p.along.heightsMm);
+    expect(along).toBeLessThanOrEqual(core.feedMarks.height + 1e-9);
+    expect(along).toBeGreaterThan(0.95 * core.feedMarks.height);
+    expect(p.acrossAtXMm).toBe(
+      feedMarks(
+        toothModel({
+          tool: TOOL,
+          pattern: 'one-way',
+          intervalMm: request.intervalMm,
+          finish: { flutes: 4, feedPerToothMm: 0.1, runoutMm: 0, runoutPhaseDeg: 0, passPhase: 0 },
+        }),
+      ).crestXMm,
+    );
+    expect(marks.profiles ?? null).toBeNull();
     expect(marks.map).toBeNull();
     expect(marks.request).toBe(request);
     expect(marks.x3p).toBeNull();

@@ -8,6 +8,7 @@
 import { entryFaultMessage, isEntryFault, quotedEntry } from '../input/entryMessages';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../input/units';
 import { parseNumber } from '../input/validate';
+import { feedPerToothOfRate } from './feedRate';
 
 /** A validated finish input. */
 export interface FinishInput {
@@ -23,17 +24,25 @@ export interface FinishInput {
   readonly passPhase: number;
 }
 
-/** Raw values as they come from a form, a URL or a CSV cell (mm and degrees); missing optional ones are 0. */
+/**
+ * Raw values as they come from a form, a URL or a CSV cell (mm, mm/min, rpm and degrees); missing
+ * optional ones are 0. The feed per tooth is `fz`, or the feed rate and spindle speed, which give
+ * it (fz = F / (n z)); not both.
+ */
 export interface RawFinishInput {
   readonly flutes: unknown;
-  readonly fz: unknown;
+  readonly fz?: unknown;
+  /** Feed rate F, mm/min (with the spindle speed, instead of fz). */
+  readonly feedRate?: unknown;
+  /** Spindle speed n, rpm (with the feed rate, instead of fz). */
+  readonly spindleSpeed?: unknown;
   readonly runout?: unknown;
   readonly runoutPhase?: unknown;
   readonly passPhase?: unknown;
 }
 
 /** The finish fields an error can name. */
-export type FinishField = 'flutes' | 'fz' | 'runout' | 'runoutPhase' | 'passPhase';
+export type FinishField = 'flutes' | 'fz' | 'feedRate' | 'spindleSpeed' | 'runout' | 'runoutPhase' | 'passPhase';
 
 /** Why a finish field was rejected. */
 export type FinishErrorCode =
@@ -46,6 +55,11 @@ export type FinishErrorCode =
   | 'too-small'
   | 'too-large'
   | 'out-of-range'
+  /** fz given together with the feed rate or the spindle speed (one way only). */
+  | 'both-feeds'
+  /** The fz that F / (n z) gives is below its least or above R (`got`: that fz, mm). */
+  | 'rate-too-small'
+  | 'rate-too-large'
   /** The surface is one where feed marks are not computed yet (finishScope.ts words it). */
   | 'not-computed-here';
 
@@ -92,6 +106,8 @@ export function maxRunoutMm(toolRadiusMm: number): number {
 const LABELS: Record<FinishField, string> = {
   flutes: 'Flutes z',
   fz: 'Feed per tooth fz',
+  feedRate: 'Feed rate F',
+  spindleSpeed: 'Spindle speed n',
   runout: 'Runout e',
   runoutPhase: 'Runout phase',
   passPhase: 'Pass phase q',
@@ -105,17 +121,25 @@ function isLength(field: FinishField): boolean {
 /** The message of a finish error in `unit` (lengths converted; angles in degrees; counts as they are). */
 export function describeFinishError(e: Omit<FinishError, 'message'>, unit: LengthUnit): string {
   const label = LABELS[e.field];
-  const u = unitSymbol(unit);
+  const length = unitSymbol(unit);
+  // The field's unit: mm/min for F (in/min in inch), rpm for n, the length's for fz and e, none else.
+  const u =
+    e.field === 'feedRate' ? `${length}/min` : e.field === 'spindleSpeed' ? 'rpm' : isLength(e.field) ? length : '';
   const value = (v: number) =>
-    isLength(e.field) ? `${formatInputNumber(fromMm(v, unit))} ${u}` : formatInputNumber(v);
+    isLength(e.field) ? `${formatInputNumber(fromMm(v, unit))} ${length}` : formatInputNumber(v);
   const limit = e.limit === undefined ? '' : value(e.limit);
   const got = `(got ${quotedEntry(e.got)})`;
   if (isEntryFault(e.code)) return entryFaultMessage(label, e.code, e.got, u, limit);
   switch (e.code) {
+    case 'both-feeds':
+      return 'Give the feed per tooth fz, or the feed rate F and the spindle speed n, not both.';
+    case 'rate-too-small':
+    case 'rate-too-large':
+      return `Feed per tooth fz = F / (n z) = ${value(Number(e.got))} must be ${e.code === 'rate-too-small' ? 'at least' : 'at most the tool radius R ='} ${limit}.`;
     case 'not-an-integer':
       return `${label} must be a whole number of teeth from 1 to ${MAX_FLUTES} ${got}.`;
     case 'not-positive':
-      return `${label} must be greater than 0 ${isLength(e.field) ? `${u} ` : ''}${got}.`;
+      return `${label} must be greater than 0 ${u === '' ? '' : `${u} `}${got}.`;
     case 'too-large':
       return e.field === 'fz'
         ? `${label} must be at most the tool radius R = ${limit} ${got}.`
@@ -140,16 +164,62 @@ export type FinishValidation =
   | { readonly ok: true; readonly value: FinishInput }
   | { readonly ok: false; readonly errors: readonly FinishError[] };
 
+/** True for a value not given (absent, or an empty text). */
+function empty(value: unknown): boolean {
+  return value === undefined || value === null || (typeof value === 'string' && value.trim() === '');
+}
+
+type ReadNumber = (field: FinishField, value: unknown, optional: boolean) => { v: number; shown: string } | null;
+
+/**
+ * The feed per tooth, mm: `fz` as given, or F / (n z) from the feed rate (mm/min) and the spindle
+ * speed (rpm), each checked (F > 0, n > 0, and the fz they give within fz's own limits, said as
+ * that fz); `flutes` null while the teeth are invalid (the rate's fz is then not checked). Both ways
+ * at once is refused. Null when refused (the reasons pushed on `errors`).
+ */
+function feedPerTooth(
+  raw: RawFinishInput,
+  flutes: number | null,
+  toolRadiusMm: number,
+  num: ReadNumber,
+  errors: FinishError[],
+): number | null {
+  const maxMm = maxFeedPerToothMm(toolRadiusMm);
+  if (empty(raw.feedRate) && empty(raw.spindleSpeed)) {
+    const fz = num('fz', raw.fz, false);
+    if (fz === null) return null;
+    if (!(fz.v > 0)) errors.push(finishError('fz', 'not-positive', fz.shown));
+    else if (fz.v < MIN_FEED_PER_TOOTH_MM) errors.push(finishError('fz', 'too-small', fz.shown, MIN_FEED_PER_TOOTH_MM));
+    else if (fz.v > maxMm) errors.push(finishError('fz', 'too-large', fz.shown, maxMm));
+    else return fz.v;
+    return null;
+  }
+  if (!empty(raw.fz)) {
+    errors.push(finishError('fz', 'both-feeds', String(raw.fz)));
+    return null;
+  }
+  const rate = num('feedRate', raw.feedRate, false);
+  const speed = num('spindleSpeed', raw.spindleSpeed, false);
+  if (rate !== null && !(rate.v > 0)) errors.push(finishError('feedRate', 'not-positive', rate.shown));
+  if (speed !== null && !(speed.v > 0)) errors.push(finishError('spindleSpeed', 'not-positive', speed.shown));
+  if (rate === null || speed === null || !(rate.v > 0 && speed.v > 0) || flutes === null) return null;
+  const fzMm = feedPerToothOfRate(rate.v, speed.v, flutes);
+  if (fzMm < MIN_FEED_PER_TOOTH_MM)
+    errors.push(finishError('fz', 'rate-too-small', String(fzMm), MIN_FEED_PER_TOOTH_MM));
+  else if (fzMm > maxMm) errors.push(finishError('fz', 'rate-too-large', String(fzMm), maxMm));
+  else return fzMm;
+  return null;
+}
+
 /**
  * Validates the finish inputs for a tool of radius `toolRadiusMm` (mm, already validated): flutes an
- * integer in [1, MAX_FLUTES]; fz in [MIN_FEED_PER_TOOTH_MM, R]; runout in [0, R/10] (missing: 0);
+ * integer in [1, MAX_FLUTES]; fz in [MIN_FEED_PER_TOOTH_MM, R], given or F / (n z); runout in [0, R/10] (missing: 0);
  * runout phase any finite number of degrees (missing: 0); pass phase in [0, 1) (missing: 0).
  */
 export function validateFinish(raw: RawFinishInput, toolRadiusMm: number): FinishValidation {
   const errors: FinishError[] = [];
   const num = (field: FinishField, value: unknown, optional: boolean): { v: number; shown: string } | null => {
-    if (optional && (value === undefined || value === null || (typeof value === 'string' && value.trim() === '')))
-      return { v: 0, shown: '0' };
+    if (optional && empty(value)) return { v: 0, shown: '0' };
     const p = parseNumber(value);
     if (!p.ok) {
       errors.push(
@@ -168,13 +238,7 @@ export function validateFinish(raw: RawFinishInput, toolRadiusMm: number): Finis
     if (!Number.isInteger(z.v) || z.v < 1 || z.v > MAX_FLUTES)
       errors.push(finishError('flutes', 'not-an-integer', z.shown));
   }
-  const fz = num('fz', raw.fz, false);
-  if (fz !== null) {
-    if (!(fz.v > 0)) errors.push(finishError('fz', 'not-positive', fz.shown));
-    else if (fz.v < MIN_FEED_PER_TOOTH_MM) errors.push(finishError('fz', 'too-small', fz.shown, MIN_FEED_PER_TOOTH_MM));
-    else if (fz.v > maxFeedPerToothMm(toolRadiusMm))
-      errors.push(finishError('fz', 'too-large', fz.shown, maxFeedPerToothMm(toolRadiusMm)));
-  }
+  const fz = feedPerTooth(raw, z === null || errors.length > 0 ? null : z.v, toolRadiusMm, num, errors);
   const e = num('runout', raw.runout, true);
   if (e !== null) {
     if (e.v < 0) errors.push(finishError('runout', 'negative', e.shown));
@@ -190,7 +254,7 @@ export function validateFinish(raw: RawFinishInput, toolRadiusMm: number): Finis
     ok: true,
     value: {
       flutes: z.v,
-      feedPerToothMm: fz.v,
+      feedPerToothMm: fz,
       runoutMm: e.v,
       // 0 - (-0) would print -0 nowhere, but keep the phase free of -0 all the same.
       runoutPhaseDeg: phi.v === 0 ? 0 : phi.v,

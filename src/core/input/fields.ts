@@ -70,6 +70,8 @@ export interface FieldSpec {
   readonly label: string;
   /** For `alias`: the field it is another form of. */
   readonly aliasOf?: string;
+  /** The unit shown after the field where not the length's or degrees alone: appended to a length's symbol ('/min': mm/min), else the whole unit ('rpm'). */
+  readonly unit?: string;
   /** Numbers: the fixed bounds validation applies. */
   readonly range?: FieldRange;
   /** Words: the values accepted (the first is the default, where one applies). */
@@ -446,6 +448,35 @@ export const FIELDS = {
     csv: { column: 'fz', role: 'finish' },
     embed: 'fz',
     page: 'fz',
+  },
+  /** Feed rate and spindle speed, which give fz = F / (n z) (the page: used while fz is empty). */
+  feedRate: {
+    short: 'F',
+    core: 'feedRateMmPerMin',
+    kind: 'length',
+    unit: '/min',
+    group: 'finish',
+    label: 'Feed rate F',
+    range: { min: 0, max: null, minIncluded: false, maxIncluded: true, rule: 'F > 0, with n' },
+    url: 'F',
+    cli: 'feed-rate',
+    csv: { column: 'feedRate', role: 'finish' },
+    embed: 'feed-rate',
+    page: 'F',
+  },
+  spindleSpeed: {
+    short: 'n',
+    core: 'spindleRpm',
+    kind: 'number',
+    unit: 'rpm',
+    group: 'finish',
+    label: 'Spindle speed n',
+    range: { min: 0, max: null, minIncluded: false, maxIncluded: true, rule: 'n > 0, with F' },
+    url: 'rpm',
+    cli: 'rpm',
+    csv: { column: 'rpm', role: 'finish' },
+    embed: 'rpm',
+    page: 'n',
   },
   runout: {
     short: 'e',

@@ -125,7 +125,9 @@ export type FinishPhrase =
   | 'none: hf stays below h at every fz up to R'
   | 'Computing the feed marks and the areal parameters...'
   | 'Computing the areal parameters...'
-  | 'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).';
+  | 'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).'
+  | 'Along the CC path (y = 0), two feed periods'
+  | 'Across the feed, one period of the passes, where the feed marks stand highest:';
 
 /** A field's label (with the paper's symbol kept) and the hint under it. */
 export interface FieldWords {

@@ -90,6 +90,8 @@ export const catalogue: Catalogue = {
     runout: { label: 'Rundlauffehler e', hint: 'radialer Rundlauffehler (Vorgabe 0)' },
     runoutPhase: { label: 'Phase des Rundlauffehlers', hint: 'Richtung des Rundlauffehlers ab Schneide 0' },
     passPhase: { label: 'Bahnphase q', hint: 'Versatz der Bahnen als Anteil der Vorschubperiode' },
+    F: { label: 'Vorschubgeschwindigkeit F', hint: 'mit n: fz = F / (n z); aus, solange fz eingetragen ist' },
+    n: { label: 'Drehzahl n', hint: 'Spindeldrehzahl; mit F ergibt sie fz' },
   },
   diameter: {
     label: 'Werkzeugdurchmesser D',
@@ -135,6 +137,9 @@ export const catalogue: Catalogue = {
     'Computing the areal parameters...': 'Flächenhafte Kenngrößen werden berechnet …',
     'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).':
       'Flächenhafte Kenngrößen über eine Periodenzelle (ISO 25178-2, ungefiltert, Bezug ist die Sollebene); gerade Schneiden, M3. Die x3p-Datei enthält diese Zelle, 256 × 256 Höhen (ISO 25178-72).',
+    'Along the CC path (y = 0), two feed periods': 'Entlang der CC-Bahn (y = 0), zwei Vorschubperioden',
+    'Across the feed, one period of the passes, where the feed marks stand highest:':
+      'Quer zum Vorschub, eine Periode der Bahnen, wo die Vorschubmarken am höchsten stehen:',
   },
   tabs: {
     'Cross-feed profile': 'Profil quer zum Vorschub',

@@ -75,6 +75,8 @@ export const catalogue: Catalogue = {
     runout: { label: '振れ e', hint: '半径方向の振れ（既定 0）' },
     runoutPhase: { label: '振れの位相', hint: '刃 0 から測った振れの向き' },
     passPhase: { label: 'パスの位相 q', hint: 'パスのずれ（送り周期に対する割合）' },
+    F: { label: '送り速度 F', hint: 'テーブル送り。n と合わせて fz = F / (n z)。fz を入力中は使わない' },
+    n: { label: '主軸回転数 n', hint: '毎分回転数。F と合わせて fz を与える' },
   },
   diameter: {
     label: '工具直径 D',
@@ -118,6 +120,9 @@ export const catalogue: Catalogue = {
     'Computing the areal parameters...': '面の粗さパラメータを計算中…',
     'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).':
       '面の粗さパラメータは 1 周期のセルについて求めます（ISO 25178-2、フィルタなし、設計平面を基準）。直刃、M3。x3p ファイルはそのセルの 256 × 256 点の高さです（ISO 25178-72）。',
+    'Along the CC path (y = 0), two feed periods': '切削点の経路に沿って（y = 0）、送り 2 周期',
+    'Across the feed, one period of the passes, where the feed marks stand highest:':
+      '送りと直角に、パス 1 周期、送りマークが最も高い位置で：',
   },
   tabs: {
     'Cross-feed profile': '送り直交断面',

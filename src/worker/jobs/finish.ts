@@ -1,6 +1,6 @@
 /**
  * The `finish` job (issue 29): the feed marks (hf, its period, the balanced feed fz*) and the areal
- * parameters (Sa ... Sku) of the plane the page answered, from the finish fields validated here by
+ * parameters (Sa ... Sku) with the cell's map and the profiles along and across the feed, of the plane the page answered, from the finish fields validated here by
  * the core (finishInput.ts: whole teeth, fz up to R, runout up to R/10), each refusal one line in
  * the user's unit on its field; on request the x3p file of one period cell (core arealMap and
  * output/x3p.ts, the notes' grid). Loaded by the worker on the first finish question, so neither
@@ -16,8 +16,9 @@ import {
   toothModel,
   validateFinish,
 } from '../../core/finish/index';
+import { finishProfiles } from '../../core/finish/profiles';
 import { x3pBytes } from '../../core/output/x3p';
-import { type FinishReply, type FinishRequest, MAP_SIZE } from '../finishProtocol';
+import { type FinishReply, type FinishRequest, MAP_SIZE, PROFILE_POINTS } from '../finishProtocol';
 
 /**
  * Answers a finish question, the part asked (the feed marks as core finishReport gives them, or
@@ -37,7 +38,15 @@ export function finish(request: FinishRequest): FinishReply {
 function answer(request: FinishRequest): FinishReply {
   const v = request.values;
   const checked = validateFinish(
-    { flutes: v.flutes, fz: v.fz, runout: v.runout, runoutPhase: v.runoutPhase, passPhase: v.passPhase },
+    {
+      flutes: v.flutes,
+      fz: v.fz,
+      feedRate: v.feedRate,
+      spindleSpeed: v.spindleSpeed,
+      runout: v.runout,
+      runoutPhase: v.runoutPhase,
+      passPhase: v.passPhase,
+    },
     request.tool.toolRadiusMm,
   );
   if (!checked.ok) {
@@ -67,7 +76,9 @@ function answer(request: FinishRequest): FinishReply {
     const a = arealParameters(m);
     const areal = { Sa: a.saMm, Sq: a.sqMm, Sz: a.szMm, Sp: a.spMm, Sv: a.svMm, Ssk: a.ssk, Sku: a.sku };
     const map = Float32Array.from(arealMap(m, MAP_SIZE, MAP_SIZE, 1, 1).heightsMm);
-    return { ok: true, request, feedMarks: null, areal, x3p: null, map };
+    // The profiles: along the CC path, and across it where the feed marks stand highest.
+    const profiles = finishProfiles(m, PROFILE_POINTS, feedMarks(m).crestXMm);
+    return { ok: true, request, feedMarks: null, areal, x3p: null, map, profiles };
   }
   const marks = feedMarks(model());
   const balanced = balancedFeed(request.tool, request.pattern, request.intervalMm, checked.value);
