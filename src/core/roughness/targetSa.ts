@@ -19,14 +19,16 @@
 import type { PassInput } from '../domain/pass';
 import type { PassPattern, ToolInput } from '../domain/tool';
 import { arealSa } from '../finish/areal';
+import { balancedFeed } from '../finish/feedMarks';
 import type { FinishInput } from '../finish/finishInput';
 import { maxFeedPerToothMm } from '../finish/finishInput';
 import { toothModel } from '../finish/toothModel';
-import { inverseInput } from '../input/validate';
+import type { AnyInputError, Validation } from '../input/inputErrors';
+import { forwardInput, inverseInput, type RawToolInput } from '../input/validate';
 import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
 import { exactForward, exactInverse } from '../surfaces/solve';
 import { forwardOfRaTarget } from './raTarget';
-import { exactRoughnessAtInterval } from './roughness';
+import { exactRoughnessAtInterval, validateTargetRa } from './roughness';
 
 /** One pair of the curve: step-over, feed per tooth and the Sa they leave (mm). */
 export interface SaPair {
@@ -203,4 +205,57 @@ export function targetSaPairs(pass: PassInput, teeth: TeethInput, targetSaMm: nu
       pass.surface,
     ).raMm;
   return targetSaCurve(pass, teeth, targetSaMm, L0, raAt);
+}
+
+/** Raw values of a target Sa (mm and degrees): the tool, pattern, surface and the target. */
+export interface RawTargetSaInput extends RawToolInput {
+  readonly sa: unknown;
+}
+
+/** A validated target Sa: the pass and the Sa (mm) its pairs must leave. */
+export interface TargetSaInput extends PassInput {
+  /** Target Sa in mm: at least 1e-9 mm, below the largest Ra of the pass (Sa -> Ra as fz -> 0). */
+  readonly targetSaMm: number;
+}
+
+/**
+ * Validates a target Sa: the tool rules and the bound of a target Ra (validateTargetRa: the same
+ * limit, since Sa tends to the cross-feed Ra as fz -> 0 and the pairs need L0), each error naming
+ * the target Sa field. The one validation of a target Sa, for the command line and the page.
+ * @param maxRa the largest Ra of a valid pass (the page passes a cached one).
+ */
+export function validateTargetSa(
+  raw: RawTargetSaInput,
+  maxRa?: (pass: PassInput) => number,
+): Validation<TargetSaInput, AnyInputError> {
+  const v = validateTargetRa({ ...raw, ra: raw.sa }, maxRa);
+  if (!v.ok) return { ok: false, errors: v.errors.map((e) => (e.field === 'ra' ? { ...e, field: 'targetSa' } : e)) };
+  const { targetRaMm, ...pass } = v.value;
+  return { ok: true, value: { ...pass, targetSaMm: targetRaMm } };
+}
+
+/** The pair for a target Rz: across the feed the scallop h, along it the feed marks hf, both at most Rz. */
+export interface TargetRzAnswer {
+  readonly targetRzMm: number;
+  /** The step-over whose scallop h is the target (mm). */
+  readonly intervalMm: number;
+  /** The balanced feed at that step-over (hf = h = the target), or R where the marks stay lower (mm). */
+  readonly feedPerToothMm: number;
+  /** True where even fz = R leaves marks below the target (a ball end at lead 0 drags its tip). */
+  readonly feedLimited: boolean;
+}
+
+/**
+ * The pair (L, fz) with the largest L * fz whose profile across the feed (the scallop h) and along
+ * the CC path (the feed marks hf) both have Rz at most `targetRzMm`: h <= Rz holds up to the
+ * forward step-over L(h = Rz), and hf does not depend on L while the neighbouring passes stay above
+ * the CC path, so the best pair is that step-over with its balanced feed (hf = h = Rz, feedMarks.ts),
+ * or fz = R where the marks never reach it. Requires a valid pass and Rz below its scallop limit.
+ */
+export function targetRzPair(pass: PassInput, teeth: TeethInput, targetRzMm: number): TargetRzAnswer {
+  const L = exactForward(forwardInput(pass, pass.pattern, targetRzMm, pass.surface)).intervalMm;
+  const b = balancedFeed(pass, pass.pattern, L, finishOf(teeth, maxFeedPerToothMm(pass.toolRadiusMm)));
+  return b.ok
+    ? { targetRzMm, intervalMm: L, feedPerToothMm: b.feedPerToothMm, feedLimited: false }
+    : { targetRzMm, intervalMm: L, feedPerToothMm: maxFeedPerToothMm(pass.toolRadiusMm), feedLimited: true };
 }
