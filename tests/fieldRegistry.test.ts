@@ -46,6 +46,7 @@ import {
 } from '../src/core/input/validate';
 import { LOOKUP_HEADER } from '../src/core/output/lookupTable';
 import { validateRaTarget } from '../src/core/roughness/raTarget';
+import { targetRzPair, validateTargetSa } from '../src/core/roughness/targetSa';
 import { validateForward, validateInverse } from '../src/core/surfaces/validate';
 import { buildRequest, fieldMessages } from '../src/ui/request';
 import {
@@ -159,6 +160,11 @@ function cliCase(id: FieldId, bad: string): string[] {
   const given = ['--h', '0.05'];
   if (id === 'interval' || id === 'halfInterval' || id === 'ra' || id === 'horizontalStep' || id === 'stepDown')
     given.length = 0;
+  // A target finish (--target-sa, --target-rz) is the quantity, with the teeth.
+  if (id === 'targetSa' || id === 'targetRz') {
+    given.length = 0;
+    base.push('--flutes', '2');
+  }
   if (id === 'surfaceAxis') base.push('--surface-radius', '50');
   // The finish's fields come with the teeth and their feed (each needs the other).
   // The feed rate and spindle speed give fz in its place (one way only).
@@ -363,7 +369,10 @@ describe('the worker reads the registry fields back from a request', () => {
     if (!ra.ok) throw new Error('valid');
     expect(validateRaTarget(rawOf(ra.value, [...PASS_FIELDS, 'ra']))).toEqual(ra);
     // Every field with a core property is read from the inputs that hold it.
-    const holders: Record<string, object> = { h: f, interval: i, ra: ra.value };
+    const sa = validateTargetSa({ R: 3, Rcr: 1, rho: 5, tilt: 3, pattern: 'zigzag', sa: 0.002 });
+    if (!sa.ok) throw new Error('valid');
+    const rz = targetRzPair(sa.value, { flutes: 2, runoutMm: 0, runoutPhaseDeg: 0, passPhase: 0 }, 0.002);
+    const holders: Record<string, object> = { h: f, interval: i, ra: ra.value, targetSa: sa.value, targetRz: rz };
     for (const name of FIELD_NAMES) {
       const raw: Partial<Record<FieldName, unknown>> = rawOf(holders[name] ?? f, [name]);
       expect(raw[name], name).toBeDefined();

@@ -77,6 +77,13 @@ export type Request =
       readonly kinds: RegistryKinds;
       readonly quantity: 'h' | 'interval';
     }
+  | {
+      /** --target-sa or --target-rz: the best (step-over, feed per tooth) pair for a finish (targetFinish.ts). */
+      readonly kind: 'target';
+      readonly target: 'sa' | 'rz';
+      readonly json: boolean;
+      readonly values: Readonly<Partial<Record<ValueOption, string>>>;
+    }
   | { readonly kind: 'usage'; readonly error: string };
 
 function isValueOption(name: string): name is ValueOption {
@@ -171,6 +178,8 @@ export function parseArgs(args: readonly string[]): Request {
     return { kind: 'batch', values };
   }
   const json = flags.has('json');
+  const target = targetRequest(values, flags, json);
+  if (target !== null) return target;
   const teeth = finishUsage(values, flags);
   if (teeth !== null) return usage(teeth);
   // --machine and --surface: a registered mode and surface; the product's must match the other options.
@@ -241,6 +250,57 @@ export function parseArgs(args: readonly string[]): Request {
   }
   if (flags.has('inverse') || hasInterval || hasHalf) return { kind: 'inverse', json, simulate, values, half: hasHalf };
   return { kind: hasRa ? 'ra' : 'forward', json, simulate, values };
+}
+
+/** What a target finds, and so cannot be given beside it; and what it does not model. */
+const NOT_WITH_TARGET: ReadonlyArray<readonly [string, string]> = [
+  ['h', 'the target sets the scallop'],
+  ['ra', 'give one target'],
+  ['interval', 'the step-over is the answer'],
+  ['half-interval', 'the step-over is the answer'],
+  ['inverse', 'the step-over is the answer'],
+  ['fz', 'the feed per tooth is the answer'],
+  ['feed-rate', 'the feed per tooth is the answer'],
+  ['rpm', 'the feed per tooth is the answer'],
+  ['simulate', 'the pair is answered without a simulation'],
+  ['x3p', 'ask --fz at the step-over found for the file'],
+  ['x3p-size', 'ask --fz at the step-over found for the file'],
+  ['x3p-cells', 'ask --fz at the step-over found for the file'],
+  ['surface-radius', 'the pairs are answered on a plane'],
+  ['surface-axis', 'the pairs are answered on a plane'],
+  ['feed-radius', 'the pairs are answered on a plane'],
+  ['cross-radius', 'the pairs are answered on a plane'],
+  ['slope', 'the pairs are answered for a five-axis lead and tilt'],
+  ['slope-sweep', 'the pairs are answered for a five-axis lead and tilt'],
+  ['machine', 'the pairs are answered for a five-axis lead and tilt on a plane'],
+  ['surface', 'the pairs are answered for a five-axis lead and tilt on a plane'],
+];
+
+/**
+ * --target-sa / --target-rz (targetFinish.ts): one of them, with --flutes, on a plane at a five-axis
+ * posture; null when neither is given.
+ */
+function targetRequest(
+  values: Readonly<Partial<Record<ValueOption, string>>>,
+  flags: ReadonlySet<string>,
+  json: boolean,
+): Request | null {
+  const sa = values['target-sa'] !== undefined;
+  const rz = values['target-rz'] !== undefined;
+  if (!sa && !rz) return null;
+  if (sa && rz) return usage('--target-sa and --target-rz do not go together: give one target');
+  const name = sa ? 'target-sa' : 'target-rz';
+  for (const [option, why] of NOT_WITH_TARGET) {
+    const given = flags.has(option) || (values as Record<string, string | undefined>)[option] !== undefined;
+    if (given) return usage(`--${option} does not go with --${name}: ${why}`);
+  }
+  for (const id of THREE_AXIS_FIELDS) {
+    if (values[FIELD_OPTION[id]] !== undefined)
+      return usage(`${cliFlag(id)} does not go with --${name}: the pairs are answered on a plane`);
+  }
+  if (values.flutes === undefined)
+    return usage(`--${name} needs --flutes <N>: the feed per tooth found depends on the teeth`);
+  return { kind: 'target', target: sa ? 'sa' : 'rz', json, values };
 }
 
 /**

@@ -68,6 +68,7 @@ import {
 } from './report';
 import { sweepSlopes } from './slopeSweep';
 import { lengthsIn } from './table';
+import { targetFinish } from './targetFinish';
 import { slopeSweepJson, slopeSweepTable, threeAxisJson, threeAxisTable } from './threeAxisReport';
 import { jsonInUnit } from './unitJson';
 import { USAGE } from './usage';
@@ -380,6 +381,29 @@ function threeAxis(values: Values, quantity: ThreeAxisQuantity, json: boolean, i
   return 0;
 }
 
+/** --target-sa / --target-rz (targetFinish.ts): the best pair, or the input errors named by their options. */
+function target(request: Extract<Request, { kind: 'target' }>, io: Io, out: Output): number {
+  const unit = unitOfText(request.values.unit) ?? 'mm';
+  const mm = valuesInMm(request.values, unit);
+  const r = targetFinish(mm, request.target, unit);
+  if (!r.ok) {
+    if (r.inputErrors.length > 0) {
+      const q = { values: mm, quantity: 'h' as const, half: false };
+      return reportErrors(
+        io,
+        out,
+        wordErrors({ ok: false, errors: r.inputErrors }, q, unit, request.values),
+        request.json,
+        unit,
+      );
+    }
+    return reportFinishErrors(io, out, r.finishErrors, request.json, unit, request.values);
+  }
+  if (request.json) writeJson(out, r.json, unit);
+  else out.write(`${r.table}\n`);
+  return 0;
+}
+
 async function run(request: Request, io: Io, out: Output): Promise<number> {
   switch (request.kind) {
     case 'help':
@@ -405,6 +429,8 @@ async function run(request: Request, io: Io, out: Output): Promise<number> {
       else out.write(`${r.table}\n`);
       return r.ok ? 0 : 2;
     }
+    case 'target':
+      return target(request, io, out);
     case 'slopeSweep': {
       const unit = unitOfText(request.values.unit) ?? 'mm';
       const r = sweepSlopes(valuesInMm(request.values, unit));

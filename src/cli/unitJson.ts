@@ -65,6 +65,10 @@ export const LENGTH_MEMBERS: ReadonlySet<string> = new Set([
   'Sv',
   'dx',
   'dy',
+  // The finish asked backwards (targetFinish.ts).
+  'feedPerTooth',
+  'feedMarkHeight',
+  'zeroFeedInterval',
 ]);
 
 /** Members that hold a number that is no length (angles in degrees, percentages, counts, times). */

@@ -10,6 +10,8 @@ import { modeNames } from './registryOptions';
 export const USAGE = `Usage: path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --h <mm> [--json] [--simulate]
        path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --ra <mm> [--json] [--simulate]
        path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --interval <mm> [--json] [--simulate]
+       path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --flutes <N> --target-sa <mm> [--json]
+       path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --flutes <N> --target-rz <mm> [--json]
        path-interval --R <mm> --Rcr <mm> --rho <deg> [options] --half-interval <mm> [--json] [--simulate]
        path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --h <mm> [--json]
        path-interval --R <mm> --Rcr <mm> --slope <deg> [three-axis options] --horizontal-step <mm> [--json]
@@ -57,6 +59,12 @@ radius; with the exact roughness (Rz, Ra, Rq) of the surface the passes leave.
   --runout <mm>         with --flutes and --fz: radial runout e (default 0; at most R/10)
   --runout-phase <deg>  its direction from tooth 0's half-plane (default 0)
   --pass-phase <q>      each pass shifted along the feed by q (0 <= q < 1) of the feed period
+  --target-sa <mm>      with --flutes, on a plane, instead of --h and --fz: the pair (step-over L,
+                        feed per tooth fz) whose areal Sa is this, with the largest L x fz (area
+                        machined per tooth), and the curve of pairs (JSON: targetSa); a few seconds
+  --target-rz <mm>      with --flutes, likewise: the pair with the largest L x fz whose scallop h
+                        (across the feed) and feed marks hf (along it) are both at most this: L for
+                        h, and its balanced feed fz* (JSON: targetRz)
   --x3p <file>          with --flutes and --fz: write the areal surface as an ISO 25178-72 x3p file
                         (heights in metres on the grid x = (i + 1/2) dx, over whole period cells)
   --x3p-size <nx,ny>    its points along the feed and across (default 1024,1024; at most 8192)

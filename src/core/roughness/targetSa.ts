@@ -6,15 +6,20 @@
  *
  * Along the curve. As `fz -> 0` the teeth's surface tends to the continuous one, so `Sa -> Ra` of
  * the cross-feed profile: the curve meets `fz = 0` at `L0`, the step-over whose passes leave
- * `Ra = Sa` (roughness.ts's target-Ra solve). For `L` in (0, L0) the pair's `fz` is the first root
- * of `Sa(L, fz) = target` met going up from 0 (sampled by doubling from a guess, then the shared
- * bracketed root finder on `fz^2`, in which Sa is close to linear at small feeds); where even the
- * largest feed accepted (R) leaves less, `fz = R` and the pair is marked `feedLimited`. `L * fz`
- * vanishes at both ends (fz bounded as L -> 0; fz -> 0 as L -> L0), so it has an interior maximum,
- * found by the shared maximiser (a scan, then Brent) on a quick Sa (areal.ts's integrals without
- * grading or halving: about 1e-3 relative); the best pair's `fz` is then solved again on the full
- * Sa (1e-6 relative), so its Sa is the target within 1e-6 relative. Runout is not taken here: its
- * Sa costs seconds a point (the caller refuses it).
+ * `Ra = Sa` (roughness.ts's target-Ra solve). For `L` in (0, L0) the pair's `fz` is a root of
+ * `Sa(L, fz) = target`, bracketed by steps from a start (the ball-end rule, then the neighbouring
+ * pair's feed: the curve is followed) and closed by the shared bracketed root finder on `fz^2` (in
+ * which Sa is close to linear at small feeds); where even the largest feed accepted (R) leaves less,
+ * `fz = R` and the pair is marked `feedLimited`. Sa need not be monotone in fz: with zigzag passes
+ * and a tilt the teeth of neighbouring passes interfere (R 6, Rcr 2, lead 15, tilt 10, L 0.59 mm: Sa
+ * rises 14 % from fz 0.350 to 0.362 mm, then falls 3 % by 0.365), so there the curve can step
+ * between roots and the best pair is the best of the roots followed, not a proven global maximum.
+ * `L * fz` vanishes at both ends (fz bounded as L -> 0; fz -> 0 as L -> L0), so it has an interior
+ * maximum, searched over (L0 / 4, L0) (see SCAN_FROM) by the shared maximiser (a scan, then Brent)
+ * on a quick Sa (areal.ts's integrals without grading or halving: about 1e-3 relative, 5e-3 at
+ * worst measured); the best pair's `fz` is then solved again on the full Sa (1e-6 relative), so its
+ * Sa is the target within 1e-6 relative (checked in the tests with the full areal parameters).
+ * Runout is not taken here: its Sa costs seconds a point (the caller refuses it).
  */
 import type { PassInput } from '../domain/pass';
 import type { PassPattern, ToolInput } from '../domain/tool';
@@ -44,7 +49,7 @@ export interface TargetSaAnswer {
   readonly targetSaMm: number;
   /** The pair with the largest L * fz; its Sa is the target within 1e-6 relative (or below, feedLimited). */
   readonly best: SaPair;
-  /** Pairs across (0, L0), L ascending, from the quick Sa (within about 1e-3 of the target). */
+  /** Pairs across (L0 / 4, L0), L ascending, from the quick Sa (within about 1e-3 of the target). */
   readonly curve: readonly SaPair[];
   /** L0: the step-over whose passes leave Ra = the target, where the curve meets fz = 0 (mm). */
   readonly zeroFeedIntervalMm: number;
@@ -53,8 +58,17 @@ export interface TargetSaAnswer {
 /** The teeth of the inverse: everything of a finish but its feed (no runout). */
 export type TeethInput = Omit<FinishInput, 'feedPerToothMm'>;
 
-/** Points of the scan of L * fz over (0, L0), and so of the curve. */
+/** Points of the scan of L * fz over (L0 / 4, L0), and so of the curve. */
 const CURVE_POINTS = 12;
+/**
+ * Where the scan starts, in L0. The best pair lies near 0.7 to 0.85 L0 (where the cross-feed Ra and
+ * the feed marks share the target: measured on the paper's tools, and so in the models Sa ~ Ra + Sf
+ * or Sa^2 ~ Ra^2 + Sf^2, with Ra ~ L^2 and Sf ~ fz^2, at L0 / sqrt 2 and L0 / 2^(1/4)); below L0 / 4
+ * the product is small (fz stays bounded as L -> 0) while each Sa costs in proportion to the
+ * passes that reach a line (the tool's width over L), and Sa(fz) turns non-monotone at feeds of
+ * several times the step-over.
+ */
+const SCAN_FROM = 0.25;
 /** Relative tolerance, in L0, of the best pair's step-over (L * fz is flat there: its square matters). */
 const BEST_L_TOL = 4e-3;
 /** Relative bracket on fz^2 of the quick curve's roots. */
@@ -71,8 +85,9 @@ function finishOf(teeth: TeethInput, feedPerToothMm: number): FinishInput {
 }
 
 /**
- * The first feed per tooth at which `sa(fz)` reaches `target` going up from 0 (`saZero` = its limit
- * at 0, below the target), within `relTol` on fz^2; `guess` a feed to start the doubling from.
+ * A feed per tooth at which `sa(fz)` is `target` (`saZero`: its limit at 0, below the target), within
+ * `relTol` on fz^2: bracketed by steps from `guess` (down while past the target, up while short; the
+ * step `growth` squared at each), then closed by the shared bracketed root finder.
  */
 function feedForSa(
   sa: (fz: number) => number,
@@ -157,12 +172,12 @@ export function targetSaCurve(
   maximise(
     {
       value: (L) => {
-        if (!(L > 0 && L < L0)) return 0;
+        if (!(L > SCAN_FROM * L0 && L < L0)) return 0;
         const p = pairAt(L);
         return p.intervalMm * p.feedPerToothMm;
       },
     },
-    0,
+    SCAN_FROM * L0,
     L0,
     CURVE_POINTS,
     BEST_L_TOL * L0,
