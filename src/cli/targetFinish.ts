@@ -17,6 +17,7 @@ import { fromMm, type LengthUnit } from '../core/input/units';
 import { inverseInput } from '../core/input/validate';
 import {
   type SaPair,
+  TargetSaTooLongError,
   type TeethInput,
   targetRzPair,
   targetSaPairs,
@@ -149,7 +150,17 @@ export function targetFinish(values: Values, target: FinishTarget, unit: LengthU
       },
     };
   }
-  const a = targetSaPairs(pass, teeth, targetMm);
+  let a: ReturnType<typeof targetSaPairs>;
+  try {
+    a = targetSaPairs(pass, teeth, targetMm);
+  } catch (e) {
+    if (!(e instanceof TargetSaTooLongError)) throw e;
+    return {
+      ok: false,
+      inputErrors: [],
+      finishErrors: [{ field: 'flutes', code: 'not-computed-here', got: '', message: e.message }],
+    };
+  }
   const b = a.best;
   const { h, hf } = pairHeights(pass, teeth, b.intervalMm, b.feedPerToothMm);
   const table = [
@@ -157,7 +168,7 @@ export function targetFinish(values: Values, target: FinishTarget, unit: LengthU
     `  step-over L      ${withUnit(L, b.intervalMm)}`,
     `  feed per tooth   ${withUnit(L, b.feedPerToothMm)}${b.feedLimited ? '   (the largest accepted, R: Sa stays below the target)' : ''}`,
     `  L x fz           ${area(b.intervalMm, b.feedPerToothMm)}`,
-    `  Sa               ${withUnit(L, b.saMm)}   (the target within 1e-6 relative)`,
+    `  Sa               ${withUnit(L, b.saMm)}   ${b.feedLimited ? '(below the target: the largest feed accepted leaves less)' : '(the target within 1e-6 relative)'}`,
     `  h                ${withUnit(L, h)}   scallop across the feed at L`,
     `  hf               ${withUnit(L, hf)}   feed marks along the CC path at fz`,
     `  L0               ${withUnit(L, a.zeroFeedIntervalMm)}   where the curve meets fz = 0 (the step-over for Ra = the target)`,

@@ -214,11 +214,28 @@ function addPiece(p: Piece, mean: number, sums: number[]): void {
  * falling after), so s crosses the mean at most once in a piece, where the piece's samples change
  * sign: there the piece is split (|s - m| has a kink) and each part integrated anew.
  */
+/** The prepared lines of one computation, with a budget of pieces (Infinity: none). */
+class BudgetedLines extends Map<number, Line> {
+  pieces = 0;
+  constructor(private readonly budget: number) {
+    super();
+  }
+  /** Counts a prepared line's pieces; throws {@link AREAL_BUDGET} past the budget. */
+  spend(count: number): void {
+    this.pieces += count;
+    if (this.pieces > this.budget) throw new Error(AREAL_BUDGET);
+  }
+}
+
+/** The message of a computation stopped at its budget of line pieces (arealSa). */
+export const AREAL_BUDGET = 'areal: budget of line pieces spent';
+
 function lineIntegrals(m: ToothModel, y: number, mean: number, lines: Map<number, Line>): number[] {
   let line = lines.get(y);
   if (line === undefined) {
     line = prepareLine(m, y);
     lines.set(y, line);
+    if (lines instanceof BudgetedLines) lines.spend(line.pieces.length);
   }
   const row = line.row;
   const sums = [0, 0, 0, 0, 0];
@@ -420,13 +437,19 @@ function meanLines(m: ToothModel, ends: readonly number[], mean: number): number
 /**
  * Sa alone (and the mean it is taken about) over one period cell of a prepared model, mm: as
  * {@link arealParameters} (within 1e-6 relative), or `quick` (one panel between the cusps and the
- * mean's lines: about 1e-3 relative, a tenth of the work) for searches that refine after.
+ * mean's lines: about 1e-3 relative, a tenth of the work) for searches that refine after; with
+ * the work done, as the number of smooth line pieces integrated (deterministic, for budgets).
+ * Past `budgetPieces` it stops, throwing {@link AREAL_BUDGET}.
  */
-export function arealSa(m: ToothModel, quick = false): { readonly saMm: number; readonly meanMm: number } {
+export function arealSa(
+  m: ToothModel,
+  quick = false,
+  budgetPieces = Number.POSITIVE_INFINITY,
+): { readonly saMm: number; readonly meanMm: number; readonly pieces: number } {
   const area = m.feedPeriodMm * m.crossPeriodMm;
   const height = m.crossPeriodMm;
   const cusps = cuspLines(m);
-  const lines = new Map<number, Line>();
+  const lines = new BudgetedLines(budgetPieces);
   const integral = quick ? quickIntegrateY : integrateY;
   const mean = (integral(m, 0, height, Number.NaN, [0], cusps, lines)[0] as number) / area;
   if (!Number.isFinite(mean)) throw new Error(NOT_SWEPT);
@@ -434,7 +457,7 @@ export function arealSa(m: ToothModel, quick = false): { readonly saMm: number; 
   if (m.input.pattern === 'zigzag') ends.push(m.input.intervalMm);
   ends.sort((p, q) => p - q);
   const sums = integral(m, 0, height, mean, [1], [...cusps, ...meanLines(m, ends, mean)], lines);
-  return { saMm: (sums[1] as number) / area, meanMm: mean };
+  return { saMm: (sums[1] as number) / area, meanMm: mean, pieces: lines.pieces };
 }
 
 /** The areal parameters of a prepared model over one period cell (see the module comment). */

@@ -23,7 +23,7 @@
  */
 import type { PassInput } from '../domain/pass';
 import type { PassPattern, ToolInput } from '../domain/tool';
-import { arealSa } from '../finish/areal';
+import { AREAL_BUDGET, arealSa } from '../finish/areal';
 import { balancedFeed } from '../finish/feedMarks';
 import type { FinishInput } from '../finish/finishInput';
 import { maxFeedPerToothMm } from '../finish/finishInput';
@@ -53,6 +53,33 @@ export interface TargetSaAnswer {
   readonly curve: readonly SaPair[];
   /** L0: the step-over whose passes leave Ra = the target, where the curve meets fz = 0 (mm). */
   readonly zeroFeedIntervalMm: number;
+}
+
+/**
+ * The most smooth line pieces a search integrates (areal.ts's count: deterministic, unlike time).
+ * The paper's tools at a lead take 30,000 to 60,000 (a few seconds); a zigzag with tilt 30 about
+ * 110,000, a bull-nose R 6 zigzag at 3 teeth 240,000 (refused); a target near the largest Ra, whose pairs
+ * feed several mm a tooth, many more. About 0.1 to 0.5 ms a piece on this machine.
+ */
+export const TARGET_SA_WORK = 200_000;
+
+/** Root steps of a quick feed (Sa bumpy in fz can make the secant creep) and of the best pair's. */
+const QUICK_STEPS = 10;
+const FINE_STEPS = 40;
+/** The most Sa evaluations of one search: the paper's tools take 80 to 130. */
+const MAX_EVALUATIONS = 220;
+
+/**
+ * Thrown when a target-Sa search exceeds {@link TARGET_SA_WORK} pieces or {@link MAX_EVALUATIONS}
+ * evaluations (both deterministic): its message is one line for the user.
+ */
+export class TargetSaTooLongError extends Error {
+  constructor() {
+    super(
+      'The search for this target Sa stopped before its end (it would take minutes): its pairs feed too far or the passes are too many; ask the finish of a step-over and feed instead.',
+    );
+    this.name = 'TargetSaTooLongError';
+  }
 }
 
 /** The teeth of the inverse: everything of a finish but its feed (no runout). */
@@ -97,6 +124,7 @@ function feedForSa(
   guess: number,
   relTol: number,
   growth: number,
+  maxSteps: number,
 ): { readonly fz: number; readonly feedLimited: boolean } {
   let lo = 0;
   let fLo = saZero - target;
@@ -125,7 +153,7 @@ function feedForSa(
     step *= step;
     f = sa(fz) - target;
   }
-  const u = bracketedRoot({ value: (v) => sa(Math.sqrt(v)) - target }, lo * lo, fz * fz, fLo, f, relTol);
+  const u = bracketedRoot({ value: (v) => sa(Math.sqrt(v)) - target }, lo * lo, fz * fz, fLo, f, relTol, maxSteps);
   return { fz: Math.sqrt(u), feedLimited: false };
 }
 
@@ -150,9 +178,19 @@ export function targetSaCurve(
   const pattern: PassPattern = pass.pattern;
   const L0 = zeroFeedIntervalMm;
   const maxFz = maxFeedPerToothMm(pass.toolRadiusMm);
+  let work = 0;
+  let evaluations = 0;
   const saOf = (L: number, fz: number, quick: boolean) => {
+    if (++evaluations > MAX_EVALUATIONS) throw new TargetSaTooLongError();
     const m = toothModel({ tool, pattern, intervalMm: L, finish: finishOf(teeth, fz) });
-    return arealSa(m, quick).saMm;
+    try {
+      const r = arealSa(m, quick, TARGET_SA_WORK - work);
+      work += r.pieces;
+      return r.saMm;
+    } catch (e) {
+      if (e instanceof Error && e.message === AREAL_BUDGET) throw new TargetSaTooLongError();
+      throw e;
+    }
   };
   // The shop's ball-end rule Ra ~ fz^2 / (32 R) turned round: a start for the doubling.
   let guess = Math.min(maxFz, Math.sqrt(32 * pass.toolRadiusMm * targetSaMm));
@@ -162,7 +200,7 @@ export function targetSaCurve(
     if (known !== undefined) return known;
     // From a neighbour's feed (the curve is smooth) in small steps; from the rule's guess in doublings.
     const growth = solved.size > 0 ? 1.25 : 2;
-    const r = feedForSa((fz) => saOf(L, fz, true), raAt(L), targetSaMm, maxFz, guess, QUICK_TOL, growth);
+    const r = feedForSa((fz) => saOf(L, fz, true), raAt(L), targetSaMm, maxFz, guess, QUICK_TOL, growth, QUICK_STEPS);
     guess = Math.max(r.fz, 1e-6 * maxFz);
     const pair = { intervalMm: L, feedPerToothMm: r.fz, saMm: targetSaMm, feedLimited: r.feedLimited };
     solved.set(L, pair);
@@ -195,6 +233,7 @@ export function targetSaCurve(
     quick?.feedPerToothMm ?? guess,
     FINE_TOL,
     FINE_GROWTH,
+    FINE_STEPS,
   );
   const best: SaPair = {
     intervalMm: bestL,
