@@ -8,7 +8,7 @@
 import { type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
 import { type InputError, inputError } from '../core/input/validate';
-import { validateRaTarget } from '../core/roughness/raTarget';
+import { targetRaFields, targetRaValidation } from '../core/roughness/targetRaFields';
 import { validateForward, validateInverse } from '../core/surfaces/validate';
 import { buildCurvedRequest, cylinderState, renameRadius } from './curvedRequest';
 import { fieldMessages } from './fieldMessages';
@@ -63,8 +63,13 @@ function validated(state: CalculatorState): BuiltRequest {
   };
   const tool = { ...rawFields(TOOL_FIELDS, mm), pattern: state.pattern, ...surfaceFields(state) };
   if (state.mode === 'forward' && state.target === 'ra') {
-    const v = validateRaTarget({ ...tool, ra: mm('ra') });
-    return v.ok ? { ok: true, request: { mode: 'ra', input: v.value } } : v;
+    // The fields only: a posture that leaves a wall only and an Ra beyond the largest are the
+    // worker's to find (they need a solve), in its reply (request.ts replyErrors).
+    const v = targetRaValidation(targetRaFields({ ...tool, ra: mm('ra') }));
+    // Its errors name the tool, pass and Ra fields only (never a doubly curved point's radii).
+    return v.ok
+      ? { ok: true, request: { mode: 'ra', input: v.value } }
+      : { ok: false, errors: v.errors as InputError[] };
   }
   if (state.mode === 'forward') {
     const v = validateForward({ ...tool, h: mm('h') });

@@ -57,7 +57,6 @@ describe('the static import graph of the first result', () => {
     expect(loaded(page, [...THREE_AXIS_SOLVERS, ...CURVED_JOB])).toEqual([]);
     expect(
       loaded(page, [
-        'ui/questionLimits.ts',
         'ui/shopSheet.ts',
         'core/output/shopSheet.ts',
         'ui/toolShelf.ts',

@@ -10,9 +10,9 @@ import { scallopHeightForRaMm } from '../../src/core/roughness/roughness';
 import { minConcaveRadiusMm } from '../../src/core/surfaces/cylinder';
 import { exactForward } from '../../src/core/surfaces/solve';
 import { buildRequest, fieldMessages, fieldOfError } from '../../src/ui/request';
-import { sliderRanges } from '../../src/ui/sliders';
 import { convertState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';
 import { solvePage } from '../../src/worker/jobs/page';
+import { answeredRanges } from '../support/pageAnswer';
 
 const parse = (q: string) => parseUrl(q);
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
@@ -141,9 +141,13 @@ describe('the request a surface makes', () => {
   it('the radius slider starts at the gouging limit for a concave cylinder; h and L ranges follow the surface', () => {
     const concave = { ...defaultState(), surface: 'concave' as const };
     const limit = minConcaveRadiusMm(TOOL, 'feed');
-    expect(Number(sliderRanges(concave).Rs.min)).toBe(Math.ceil(limit / 0.1) * 0.1);
-    expect(Number(sliderRanges({ ...concave, surface: 'convex' }).Rs.min)).toBe(0.1);
+    expect(Number(answeredRanges(concave).Rs.min)).toBe(Math.ceil(limit / 0.1) * 0.1);
+    // A radius the tool gouges: the page's build names the limit, and the slider starts there too.
+    const gouged = withField(concave, 'Rs', '5');
+    expect(buildRequest(gouged).ok).toBe(false);
+    expect(Number(answeredRanges(gouged).Rs.min)).toBe(Math.ceil(limit / 0.1) * 0.1);
+    expect(Number(answeredRanges({ ...concave, surface: 'convex' }).Rs.min)).toBe(0.1);
     const convex = withField({ ...concave, surface: 'convex' as const }, 'Rs', '5');
-    expect(sliderRanges(convex).L.max).not.toBe(sliderRanges(defaultState()).L.max);
+    expect(answeredRanges(convex).L.max).not.toBe(answeredRanges(defaultState()).L.max);
   });
 });
