@@ -11,12 +11,11 @@
 import type { PassPattern, ToolInput } from '../../core/input/validate';
 import { doublyCurvedMaxRaMm } from '../../core/roughness/doublyCurved';
 import {
+  curvedRadiusInRange,
   doublyCurvedGouges,
   doublyCurvedGouging,
   doublyCurvedMaxIntervalMm,
   doublyCurvedSolver,
-  MAX_PRINCIPAL_RADIUS_MM,
-  MIN_PRINCIPAL_RADIUS_MM,
   type PrincipalRadii,
   type RadiusLimit,
 } from '../../core/surfaces/doublyCurved';
@@ -25,8 +24,7 @@ import type { SliderLimits } from '../protocol';
 
 /** True for a radius the model takes: straight (infinite), or a magnitude from 0.001 mm to 1e6 mm. */
 function radiusInRange(radiusMm: number): boolean {
-  const r = Math.abs(radiusMm);
-  return r === Number.POSITIVE_INFINITY || (r >= MIN_PRINCIPAL_RADIUS_MM && r <= MAX_PRINCIPAL_RADIUS_MM);
+  return Math.abs(radiusMm) === Number.POSITIVE_INFINITY || curvedRadiusInRange(radiusMm);
 }
 
 /** A limit that a change of its radius can meet (not `any`: that radius is not the cause; not `none`). */
