@@ -21,9 +21,10 @@
  * The core's root files (index.ts, library.ts: barrels) stand above every folder; none imports them.
  *
  * The page validates and the worker solves (issue 27 point 4, one pass per keystroke): no file of
- * src/ui imports a value of a solver module (SOLVER_MODULES: the surface models and their solvers,
- * the posture solvers, roughness, three-axis solving, the procedures' comparison, the simulation,
- * the worker's jobs and their data); type imports cost nothing at run time and stay allowed.
+ * src/ui imports a value of a solver module (SOLVER_MODULES: the validations that ask a surface
+ * model, the surface models and their solvers, the posture solvers, roughness, three-axis solving,
+ * the procedures' comparison, the simulation, the worker's jobs and their data); type imports cost
+ * nothing at run time and stay allowed. The page checks the fields (core input/passFields.ts).
  *
  * No import circle anywhere in src/: among static imports and re-exports, type imports included
  * (a circle of types alone still ties the files together). A dynamic `import()` loads later, on
@@ -229,6 +230,8 @@ function loopThrough(
  * answer, a refusal, the sliders' limits).
  */
 const SOLVER_MODULES = [
+  'core/surfaces/validate.ts',
+  'core/surfaces/question.ts',
   'core/surfaces/solve.ts',
   'core/surfaces/exact.ts',
   'core/surfaces/congruentPasses.ts',
@@ -264,9 +267,11 @@ const SOLVER_MODULES = [
 /**
  * The page's solver imports still to move into the worker (`file -> module`): the shop sheet's
  * matrix of answers is worked out on the page while its dialog is open (shopSheet.ts; its text
- * reads the module's marks and passes). The list only shrinks.
+ * reads the module's marks and passes); the builder of a question over the registries (not wired
+ * to the page's switches yet) validates it whole, gouging included. The list only shrinks.
  */
 const SOLVING_ON_THE_PAGE_STILL = [
+  'ui/registryQuestionRequest.ts -> core/surfaces/question.ts',
   'ui/shopSheet.ts -> core/output/shopSheet.ts',
   'ui/shopSheetText.ts -> core/output/shopSheet.ts',
 ];

@@ -14,7 +14,7 @@ import type { CameraPreset, ToolScene } from '../render/scene';
 import type { RestartInfo } from '../worker/client';
 import { equivalentPlaneRequest } from '../worker/equivalentPlane';
 import { isSolveRequest, type PageReply, type PageRequest, type ThreeAxisReply } from '../worker/pageProtocol';
-import type { SliderLimits, SolveMode } from '../worker/protocol';
+import type { SolveMode } from '../worker/protocol';
 import { solveClient } from '../worker/workers';
 import { browserStorage } from './browserStorage';
 import { applyProcedureColours } from './colours';
@@ -47,7 +47,6 @@ import type { ToolStorage } from './savedTools';
 import { sceneOfReply } from './sceneLabels';
 import { SceneSlot } from './sceneSlot';
 import { SimulationLoader } from './simulation';
-import { sliderLimitsOf } from './sliders';
 import {
   type CalculatorState,
   convertState,
@@ -108,13 +107,13 @@ export class CalculatorApp {
     onReply: (reply) => {
       this.notice.clear('results');
       if (!this.fresh.receive(reply)) return;
-      // The sliders' limits come with the reply (the page solves nothing).
-      this.replyLimits = reply.limits;
-      // A refusal only the worker finds (a doubly curved point's gouging, a three-axis limit): its
+      // A refusal only the worker finds (gouging, a limit of h, L or Ra, a three-axis limit): its
       // messages go on the fields and the parts beyond the results let the question go. A
       // three-axis answer on a sloped plane gives the simulation its plane question (follow).
-      if (!reply.ok || reply.request.mode === 'three-axis') this.follow();
-      else this.fields.rangeSliders(sliderLimitsOf(this.replyLimits, this.built));
+      const follows = !reply.ok || reply.request.mode === 'three-axis';
+      // The sliders' limits come with the reply, answer or refusal (the page solves nothing).
+      this.fields.rangeSliders(reply.limits, !follows);
+      if (follows) this.follow();
       this.draw();
     },
     onRestart: (info) => this.restarted('results', info),
@@ -139,8 +138,6 @@ export class CalculatorApp {
   }
   /** The last committed state's request, or its errors (built once per change). */
   private built: BuiltRequest = { ok: false, errors: [] };
-  /** The sliders' limits of the last reply received (null: none yet, or its question has none). */
-  private replyLimits: SliderLimits | null = null;
   /** Where the machine and unit are remembered (preferences.ts); null in an embed or without storage. */
   private readonly storage: ToolStorage | null;
   /** The question's words of the number on screen (questionWords.ts), or null beside a dash. */
@@ -437,7 +434,6 @@ export class CalculatorApp {
     const reply = shown.kind === 'current' ? shown.reply : null;
     const request = this.built.ok && reply?.ok !== false ? this.built.request : null;
     this.messages = stateMessages(plainLengths(state), this.built, reply);
-    this.fields.rangeSliders(sliderLimitsOf(this.replyLimits, this.built), false);
     this.fields.render(state, this.fieldMessages());
     this.shelf.render(state.unit);
     // The simulation and the table answer a plane's or a cylinder's question (five-axis); the views

@@ -158,8 +158,8 @@ export class FieldsPanel {
   private readonly finishBox: HTMLDetailsElement | null;
   /** Whether the finish fields held text at the last render (the box opens when they start to). */
   private finishWasGiven = false;
-  /** The sliders' limits (sliders.ts sliderLimitsOf: the worker's, beside its last reply). */
-  private limits: Partial<SliderLimits> | null = null;
+  /** The sliders' limits: the worker's, beside its last reply (null: none yet). */
+  private limits: SliderLimits | null = null;
 
   constructor(
     private readonly root: HTMLElement,
@@ -295,10 +295,10 @@ export class FieldsPanel {
   }
 
   /**
-   * The sliders' limits (sliderLimitsOf), for this render on: the state drawn is drawn again when
-   * they change, unless `redraw` is false (the caller draws next).
+   * The sliders' limits (a reply's), for this render on: the state drawn is drawn again when they
+   * change, unless `redraw` is false (the caller draws next).
    */
-  rangeSliders(limits: Partial<SliderLimits> | null, redraw = true): void {
+  rangeSliders(limits: SliderLimits | null, redraw = true): void {
     if (JSON.stringify(limits) === JSON.stringify(this.limits)) return;
     this.limits = limits;
     if (redraw && this.drawn !== null) this.render(this.drawn.state, this.drawn.messages);

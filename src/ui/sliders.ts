@@ -3,16 +3,14 @@
  * or 0.001 in for the tool), so arrow keys move a value by a clean amount instead of a converted
  * millimetre step. The ranges follow the other values (Rcr up to R, h below the limit of the
  * question on screen, L and Ra below the widest and largest there, a concave cylinder's radius from
- * the smallest that does not gouge): limits the worker works out beside its answer (its reply's
- * SliderLimits, issue 27 point 4: the page solves nothing) or the build's gouging error states.
- * Pure (no DOM).
+ * the smallest that does not gouge): limits the worker works out beside its answer or refusal (its
+ * reply's SliderLimits, issue 27 point 4: the page solves nothing). Pure (no DOM).
  */
 
 import { fromMm, toMm } from '../core/input/units';
 import { MAX_TOOL_RADIUS_MM, MIN_TOOL_RADIUS_MM, type ToolInput } from '../core/input/validate';
 import type { SliderLimits } from '../worker/protocol';
 import { cylinderState } from './curvedRequest';
-import type { BuiltRequest } from './requestTypes';
 import { type CalculatorState, type FieldKey, formatField, parseField, radiusField, sizeIsDiameter } from './state';
 
 export interface SliderRange {
@@ -98,30 +96,14 @@ function snap(value: number, step: number, min: number): number {
 }
 
 /**
- * The sliders' limits for a state: the last reply's (null: none came, or its question has none),
- * with a concave cylinder's smallest radius from the build's gouging error where the build refused
- * the radius (no request, so no reply, goes out then).
- */
-export function sliderLimitsOf(reply: SliderLimits | null, built: BuiltRequest): Partial<SliderLimits> | null {
-  const gouging = built.ok
-    ? undefined
-    : built.errors.find(
-        (e) => !('key' in e) && e.field === 'surfaceRadius' && (e.code === 'gouging' || e.code === 'shank-gouging'),
-      );
-  if (gouging === undefined || 'key' in gouging) return reply;
-  // No limit: no concave radius takes the tool.
-  const concaveMinMm = typeof gouging.limit === 'number' ? Math.abs(gouging.limit) : Number.POSITIVE_INFINITY;
-  return { ...(reply ?? {}), concaveMinMm };
-}
-
-/**
  * Every slider's range and step for a state, as the strings a range input takes.
- * @param limits The question's limits (sliderLimitsOf); each one missing stands in by the tool's
- *   size: h below R, L below 2R, Ra below a quarter of the h limit, no concave limit.
+ * @param limits The question's limits, from the worker's last reply (null: none came yet, or its
+ *   question has none); each one missing stands in by the tool's size: h below R, L below 2R, Ra
+ *   below a quarter of the h limit, no concave limit.
  */
 export function sliderRanges(
   state: CalculatorState,
-  limits: Partial<SliderLimits> | null = null,
+  limits: SliderLimits | null = null,
 ): Readonly<Record<FieldKey, SliderRange>> {
   const u = state.unit;
   const step = STEPS[u];

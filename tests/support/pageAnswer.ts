@@ -4,7 +4,7 @@
  * the messages are then the build's errors or the reply's refusal (stateMessages), as app.ts draws them.
  */
 import { buildRequest, stateMessages } from '../../src/ui/request';
-import { type SliderRange, sliderLimitsOf, sliderRanges } from '../../src/ui/sliders';
+import { type SliderRange, sliderRanges } from '../../src/ui/sliders';
 import type { CalculatorState, FieldKey } from '../../src/ui/state';
 import { solvePage } from '../../src/worker/jobs/page';
 
@@ -20,12 +20,8 @@ export function answered(state: CalculatorState): boolean {
   return built.ok && solvePage(built.request).ok;
 }
 
-/**
- * The sliders' ranges for `state` once its worker has answered (the reply's limits, as app.ts
- * ranges them; the build's gouging limit where the page refuses the radius).
- */
+/** The sliders' ranges for `state` once its worker has answered (its reply's limits, as app.ts ranges them). */
 export function answeredRanges(state: CalculatorState): Readonly<Record<FieldKey, SliderRange>> {
   const built = buildRequest(state);
-  const reply = built.ok ? solvePage(built.request) : null;
-  return sliderRanges(state, sliderLimitsOf(reply?.limits ?? null, built));
+  return sliderRanges(state, built.ok ? solvePage(built.request).limits : null);
 }

@@ -29,7 +29,7 @@ import { type AnyInputError, forwardInput, inputError, MIN_LENGTH_MM, type Valid
 import type { CylinderSolver } from '../surfaces/cylinder';
 import { type SurfaceDescriptor, surfaceModel } from '../surfaces/registry';
 import { type ExactForward, type ExactInverse, exactForward } from '../surfaces/solve';
-import { scallopHeightLimits } from '../surfaces/validate';
+import { scallopHeightLimits, validatePassAnd } from '../surfaces/validate';
 import { type Flank, flankWidthMm, type PostureShape } from '../tool/posture';
 import { type RawTargetRaInput, type TargetRaInput, targetRaFields, targetRaValidation } from './targetRaFields';
 
@@ -365,7 +365,7 @@ export function validateTargetRa(
   raw: RawTargetRaInput,
   maxRa: (pass: PassInput) => number = (p) => maxRaMm(p, p.pattern, p.surface),
 ): Validation<TargetRaInput, AnyInputError> {
-  const f = targetRaFields(raw);
+  const f = targetRaFields(validatePassAnd(raw, 'ra'));
   if (!f.toSolve || f.pass === null || f.ra === undefined) return targetRaValidation(f);
   const p = f.pass;
   const flatLying = surfaceModel(p.surface).leavesNoScallop(p, p.surface);

@@ -1,12 +1,13 @@
 /**
- * A target roughness's fields, checked without a solver (issue 27 point 4: the page validates, the
- * worker solves): the tool, pattern and surface as validatePassAnd checks them, and Ra a length of
- * at least MIN_LENGTH_MM. What needs a solver, a posture that cuts a step only and an Ra beyond the
- * largest the passes leave, roughness.ts's validateTargetRa checks after these. Lengths mm.
+ * A target roughness's own checks (issue 27 point 4: the page validates, the worker solves): Ra a
+ * length of at least MIN_LENGTH_MM, after the tool, pattern and surface (a PassValidation: the
+ * page's passFieldsAnd, or validatePassAnd with gouging). What needs a solver, a posture that cuts a
+ * step only and an Ra beyond the largest the passes leave, roughness.ts's validateTargetRa checks
+ * after these. Lengths mm.
  */
 import type { PassInput } from '../domain/pass';
+import type { PassValidation } from '../input/passFields';
 import { type AnyInputError, inputError, MIN_LENGTH_MM, type RawToolInput, type Validation } from '../input/validate';
-import { validatePassAnd } from '../surfaces/validate';
 
 /** Raw values of the target-roughness problem (mm and degrees): the tool, pattern, surface and a target Ra. */
 export interface RawTargetRaInput extends RawToolInput {
@@ -29,9 +30,8 @@ export interface TargetRaFields {
   readonly toSolve: boolean;
 }
 
-/** The checks of a target Ra that need no solver (validateTargetRa's first part). */
-export function targetRaFields(raw: RawTargetRaInput): TargetRaFields {
-  const v = validatePassAnd(raw, 'ra');
+/** The checks of a target Ra that need no solver, after its pass's (`v`, of the field `ra`): validateTargetRa's first part. */
+export function targetRaFields(v: PassValidation): TargetRaFields {
   const errors = [...v.errors];
   const ra = v.value;
   let toSolve = false;
