@@ -12,6 +12,7 @@ import type { PassPattern, ToolInput } from '../../core/input/validate';
 import { doublyCurvedMaxRaMm } from '../../core/roughness/doublyCurved';
 import {
   curvedRadiusInRange,
+  type DoublyCurvedSolver,
   doublyCurvedGouges,
   doublyCurvedGouging,
   doublyCurvedMaxIntervalMm,
@@ -102,17 +103,17 @@ function maxRaAt(tool: ToolInput, pattern: PassPattern, radii: PrincipalRadii): 
 
 /**
  * A doubly curved point's sliders' limits (protocol.ts SliderLimits) for a valid tool and posture
- * and radii that curvedRadiusErrors takes (in range, no gouging): the scallop height below the flank
- * and shank limits, the widest step-over that leaves a scallop and, while Ra is the target, the
- * largest Ra.
+ * and radii that curvedRadiusErrors takes (in range, no gouging), through the point's prepared
+ * `solver`: the scallop height below the flank and shank limits, the widest step-over that leaves a
+ * scallop and, while Ra is the target, the largest Ra.
  */
 export function curvedSliderLimits(
+  solver: DoublyCurvedSolver,
   tool: ToolInput,
   radii: PrincipalRadii,
   pattern: PassPattern,
   raTarget: boolean,
 ): SliderLimits {
-  const solver = doublyCurvedSolver(tool, radii);
   const hMm = solver.limits().limitMm;
   return {
     hMm,

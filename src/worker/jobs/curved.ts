@@ -54,14 +54,16 @@ export function solveCurved(request: CurvedRequest): CurvedReply {
   const t0 = performance.now();
   const errors = revalidateCurved(request);
   const i = request.input;
-  // The sliders' limits, beside a refusal of h, L or Ra too (the radii checked once, above).
-  const sliderLimits = (errors ?? []).some(noLimits)
-    ? null
-    : finiteLimits(() => curvedSliderLimits(i, i, i.pattern, request.mode === 'curved-ra'));
-  if (errors !== null) return { ok: false, request, errors, limits: sliderLimits };
-  const solver = doublyCurvedSolver(i, i);
+  // The point's solver, prepared once for the answer and the sliders' limits (beside a refusal of
+  // h, L or Ra too): unless the tool or the radii were refused (the radii checked once, above).
+  const solver = (errors ?? []).some(noLimits) ? null : doublyCurvedSolver(i, i);
+  const sliderLimits =
+    solver === null
+      ? null
+      : finiteLimits(() => curvedSliderLimits(solver, i, i, i.pattern, request.mode === 'curved-ra'));
+  if (errors !== null || solver === null) return { ok: false, request, errors: errors ?? [], limits: sliderLimits };
   const limits = solver.limits();
-  const maxIntervalMm = doublyCurvedMaxIntervalMm(solver, i.pattern);
+  const maxIntervalMm = sliderLimits?.intervalMm ?? doublyCurvedMaxIntervalMm(solver, i.pattern);
   if (request.mode !== 'curved-inverse') {
     const hMm =
       request.mode === 'curved-forward'
