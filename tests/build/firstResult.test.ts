@@ -1,9 +1,10 @@
 /**
  * What the first result loads (issue 27 points 2 and 4), read from the sources' static imports
  * (src/build/staticGraph.ts, from which vite.config.ts also groups the chunks): the page validates
- * the fields and loads no surface model (gouging and the limits are the worker's), the worker's first script answers
- * a plane or a cylinder only; the doubly curved and three-axis solvers, the teaching views, the shop
- * sheet, the tool shelf and the lookup table load on first use (dynamic imports).
+ * the fields and loads no surface model (gouging and the limits are the worker's), the worker's
+ * first script answers a plane or a cylinder only; the doubly curved and three-axis solvers, the
+ * teaching views, the shop sheet, the tool shelf and the lookup table load on first use (dynamic
+ * imports).
  */
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
