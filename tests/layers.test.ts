@@ -20,6 +20,12 @@
  * - output: what the page, the CLI and the shop sheet show (tables, CSV, geometry).
  * The core's root files (index.ts, library.ts: barrels) stand above every folder; none imports them.
  *
+ * The page validates and the worker solves (issue 27 point 4, one pass per keystroke): no file of
+ * src/ui imports a value of a solver module (SOLVER_MODULES: the validations that ask a surface
+ * model, the surface models and their solvers, the posture solvers, roughness, three-axis solving,
+ * the procedures' comparison, the simulation, the worker's jobs and their data); type imports cost
+ * nothing at run time and stay allowed. The page checks the fields (core input/passFields.ts).
+ *
  * No import circle anywhere in src/: among static imports and re-exports, type imports included
  * (a circle of types alone still ties the files together). A dynamic `import()` loads later, on
  * first use, so it is left out of the circle check (a lazily loaded module may import back what
@@ -218,6 +224,102 @@ function loopThrough(
   return start;
 }
 
+/**
+ * The modules that solve (paths under src/, a folder ending in `/`): the page imports no value of
+ * them; it validates the typed fields, and the worker's reply brings what needs a solve (the
+ * answer, a refusal, the sliders' limits).
+ */
+const SOLVER_MODULES = [
+  'core/surfaces/validate.ts',
+  'core/surfaces/question.ts',
+  'core/surfaces/solve.ts',
+  'core/surfaces/exact.ts',
+  'core/surfaces/congruentPasses.ts',
+  'core/surfaces/cylinder.ts',
+  'core/surfaces/cylinder/',
+  'core/surfaces/doublyCurved/index.ts',
+  'core/surfaces/doublyCurved/solve.ts',
+  'core/surfaces/doublyCurved/gouging.ts',
+  'core/surfaces/models/',
+  'core/tool/posture.ts',
+  'core/tool/postureShape.ts',
+  'core/tool/placement.ts',
+  'core/roughness/roughness.ts',
+  'core/roughness/raTarget.ts',
+  'core/roughness/doublyCurved.ts',
+  'core/roughness/slopedPlane.ts',
+  'core/threeAxis/index.ts',
+  'core/threeAxis/solve.ts',
+  'core/threeAxis/slopedPlane.ts',
+  'core/threeAxis/slopeSweep.ts',
+  'core/threeAxis/waterlineRevolution.ts',
+  'core/threeAxis/waterlineSolve.ts',
+  'core/threeAxis/revolutionGouging.ts',
+  'core/threeAxis/meridianCusp.ts',
+  'core/procedures/compare.ts',
+  'core/procedures/compareDoublyCurved.ts',
+  'core/simulation/',
+  'core/output/shopSheet.ts',
+  'worker/jobs/',
+  'worker/data/',
+] as const;
+
+/**
+ * The page's solver imports still to move into the worker (`file -> module`): the shop sheet's
+ * matrix of answers is worked out on the page while its dialog is open (shopSheet.ts; its text
+ * reads the module's marks and passes); the builder of a question over the registries (not wired
+ * to the page's switches yet) validates it whole, gouging included. The list only shrinks.
+ */
+const SOLVING_ON_THE_PAGE_STILL = [
+  'ui/registryQuestionRequest.ts -> core/surfaces/question.ts',
+  'ui/shopSheet.ts -> core/output/shopSheet.ts',
+  'ui/shopSheetText.ts -> core/output/shopSheet.ts',
+];
+
+/**
+ * The specifiers a file imports a value from: static imports and re-exports (not `import type`, not
+ * `export type`, not a list of `type` names only) and dynamic `import()` (not in comments).
+ */
+function valueImports(source: string): string[] {
+  const code = source.replace(/\/\*[\s\S]*?\*\//g, '').replace(/^\s*\/\/.*$/gm, '');
+  const out: string[] = [];
+  const statement = /^\s*(?:import|export)\s+([\s\S]*?)\s*from\s*['"]([^'"]+)['"]/gm;
+  for (let m = statement.exec(code); m !== null; m = statement.exec(code)) {
+    const clause = (m[1] as string).trim();
+    if (/^type\b/.test(clause)) continue;
+    const named = /^\{([\s\S]*)\}$/.exec(clause);
+    const names =
+      named === null
+        ? []
+        : (named[1] as string)
+            .split(',')
+            .map((n) => n.trim())
+            .filter((n) => n !== '');
+    if (named !== null && names.every((n) => n.startsWith('type '))) continue;
+    out.push(m[2] as string);
+  }
+  for (const m of code.matchAll(/\bimport\s*\(\s*['"]([^'"]+)['"]\s*\)/g)) out.push(m[1] as string);
+  for (const m of code.matchAll(/^\s*import\s+['"]([^'"]+)['"]/gm)) out.push(m[1] as string);
+  return out;
+}
+
+/** Each value import of a solver module by a file of src/ui, as `ui/file.ts -> core/module.ts`. */
+function pageSolverImports(): string[] {
+  const found: string[] = [];
+  const uiDir = join(SRC, 'ui');
+  for (const file of sourceFiles(uiDir)) {
+    for (const spec of valueImports(readFileSync(file, 'utf8'))) {
+      if (!spec.startsWith('.')) continue;
+      const target = resolveFile(file, spec);
+      if (target === null) continue;
+      const path = relative(SRC, target).split(/[\\/]/).join('/');
+      if (SOLVER_MODULES.some((m) => (m.endsWith('/') ? path.startsWith(m) : path === m)))
+        found.push(`${relative(SRC, file).split(/[\\/]/).join('/')} -> ${path}`);
+    }
+  }
+  return found.sort();
+}
+
 describe('layers of src/', () => {
   const all = edges();
 
@@ -294,5 +396,31 @@ describe('layers of src/', () => {
       .map((e) => e.name);
     expect([...folders].sort()).toEqual([...CORE_ORDER].sort());
     expect(backArrows(fileGraph(join(SRC, 'core'), true))).toEqual([]);
+  });
+
+  it('reads value imports apart from type imports (the checker itself)', () => {
+    const source = [
+      "import { a } from './a';",
+      "import type { B } from './b';",
+      "import { type C, type D } from './c';",
+      "import { type E, f } from './e';",
+      'import {',
+      '  type G,',
+      '  h,',
+      "} from './g';",
+      "export { i } from './i';",
+      "export type { J } from './j';",
+      "export * from './k';",
+      "import * as l from './l';",
+      "import './side';",
+      "const later = () => import('./lazy');",
+      "// import { x } from './comment';",
+    ].join('\n');
+    expect(valueImports(source).sort()).toEqual(['./a', './e', './g', './i', './k', './l', './lazy', './side']);
+  });
+
+  it('the page imports no solver: src/ui validates, the worker solves (issue 27 point 4)', () => {
+    for (const m of SOLVER_MODULES) expect(existsSync(join(SRC, m)), m).toBe(true);
+    expect(pageSolverImports()).toEqual(SOLVING_ON_THE_PAGE_STILL);
   });
 });

@@ -43,23 +43,18 @@ const INPUT_COLUMNS: readonly InputColumn[] = [
 ];
 
 /**
+ * The areal parameters that are heights (Ssk and Sku are ratios), by the finish report's names: the
+ * batch's columns and the JSON's length members alike.
+ */
+export const AREAL_HEIGHTS = ['Sa', 'Sq', 'Sz', 'Sp', 'Sv'] as const;
+
+/**
  * The finish's result columns (issue 29), written when the header has a finish column (flutes, fz,
  * runout, runoutPhase, passPhase): the feed-mark height along the CC path, its period, the balanced
  * feed fz*, and the areal parameters over one period cell; before `error`. Empty where a row gives
  * no teeth (flutes and fz empty) or where there is none (no balanced feed).
  */
-export const FINISH_RESULT_COLUMNS = [
-  'feedMarkHeight',
-  'feedPeriod',
-  'balancedFz',
-  'Sa',
-  'Sq',
-  'Sz',
-  'Sp',
-  'Sv',
-  'Ssk',
-  'Sku',
-];
+export const FINISH_RESULT_COLUMNS = ['feedMarkHeight', 'feedPeriod', 'balancedFz', ...AREAL_HEIGHTS, 'Ssk', 'Sku'];
 
 /** The scallop height's, the target roughness's and the step-over's columns (h, Ra, L). */
 export const H_COLUMN = csvColumnOf('h');

@@ -8,6 +8,8 @@
  */
 
 import { CORRECTED_KEYS, PROCEDURES, type Roughness } from '../core/index';
+import { TOOL_FIELDS } from '../core/input/fields';
+import { rawOf } from '../core/input/raw';
 import type { LengthUnit } from '../core/input/units';
 import type { DoublyCurvedComparison, DoublyCurvedRow } from '../core/procedures/compareDoublyCurved';
 import type { DoublyCurvedInverse, DoublyCurvedPass } from '../core/surfaces/doublyCurved/index';
@@ -135,17 +137,15 @@ export function doublyCurvedInverseTable(
   ].join('\n');
 }
 
-/** The pass as JSON input fields (the registry's names). */
+/** The tool's fields and the pattern, in this order (the registry's names). */
+const PASS_INPUT_FIELDS = [...TOOL_FIELDS, 'pattern'] as const;
+
+/**
+ * The pass as JSON input fields (the registry's names): the tool's and the pattern read back by
+ * each field's core property (core input/raw.ts), then the point's two radii.
+ */
 function inputJson(p: DoublyCurvedPass): JsonObject {
-  return {
-    R: p.toolRadiusMm,
-    Rcr: p.cornerRadiusMm,
-    rho: p.leadAngleDeg,
-    tilt: p.tiltAngleDeg,
-    pattern: p.pattern,
-    feedRadius: p.feedRadiusMm,
-    crossRadius: p.crossRadiusMm,
-  };
+  return { ...(rawOf(p, PASS_INPUT_FIELDS) as JsonObject), feedRadius: p.feedRadiusMm, crossRadius: p.crossRadiusMm };
 }
 
 function rowJson(r: DoublyCurvedRow & { readonly combinedRadiusMm?: number }): JsonObject {

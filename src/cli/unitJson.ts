@@ -8,6 +8,7 @@
  */
 import { FIELDS, type FieldId, isLengthField } from '../core/input/fields';
 import { fromMm, type LengthUnit } from '../core/input/units';
+import { AREAL_HEIGHTS } from './batchHeader';
 import { unitWord } from './lengthInput';
 import type { JsonValue } from './reportJson';
 import { inputIn } from './table';
@@ -58,11 +59,7 @@ export const LENGTH_MEMBERS: ReadonlySet<string> = new Set([
   'height',
   'period',
   'balancedFz',
-  'Sa',
-  'Sq',
-  'Sz',
-  'Sp',
-  'Sv',
+  ...AREAL_HEIGHTS,
   'dx',
   'dy',
   // The finish asked backwards (targetFinish.ts).

@@ -106,10 +106,20 @@ export class CalculatorApp {
     onReply: (reply) => {
       this.notice.clear('results');
       if (!this.fresh.receive(reply)) return;
-      // A refusal only the worker finds (a doubly curved point's gouging, a three-axis limit): its
+      // The worker's refusal of a text still being typed (a gouging radius half typed, 2 on the way
+      // to 25) is held back as the page's own errors are (typing.ts): said at the pause.
+      if (!reply.ok && this.typedKey !== null) {
+        this.fields.rangeSliders(reply.limits, false);
+        this.holdTyped(this.state, this.typedKey, this.built);
+        return;
+      }
+      // A refusal only the worker finds (gouging, a limit of h, L or Ra, a three-axis limit): its
       // messages go on the fields and the parts beyond the results let the question go. A
       // three-axis answer on a sloped plane gives the simulation its plane question (follow).
-      if (!reply.ok || reply.request.mode === 'three-axis') this.follow();
+      const follows = !reply.ok || reply.request.mode === 'three-axis';
+      // The sliders' limits come with the reply, answer or refusal (the page solves nothing).
+      this.fields.rangeSliders(reply.limits, !follows);
+      if (follows) this.follow();
       this.draw();
     },
     onRestart: (info) => this.restarted('results', info),
@@ -120,6 +130,8 @@ export class CalculatorApp {
   private readonly typing = new TypingGate(() => this.change(this.state, this.held));
   /** The request of the text held back (built once, at its key press; the gate holds no other state). */
   private held: BuiltRequest = { ok: false, errors: [] };
+  /** The field a text was typed into whose question is asked but not yet answered (null: none). */
+  private typedKey: FieldKey | null = null;
   /** The field messages of the last committed state (kept while typing, so none flashes). */
   private messages: ReadonlyMap<FieldKey, string> = new Map();
   /** The finish worker's messages on the teeth-and-feed fields that answer the inputs on screen. */
@@ -246,6 +258,7 @@ export class CalculatorApp {
       onField: (key, text, typing) => this.edit(key, withField(this.state, key, text), typing),
       // A committed field shows the plain number a written length (1/2", 12.7 mm) means.
       onCommit: () => {
+        this.typedKey = null;
         const plain = plainLengths(this.state);
         // A text held back was built at its key press (plain lengths: the same request).
         if (this.typing.release()) this.change(plain, this.held);
@@ -390,8 +403,19 @@ export class CalculatorApp {
     if (!typing || built.ok) {
       this.typing.release();
       this.change(state, built);
+      // A typed text asked at once: the worker's refusal of it waits for the pause (onReply).
+      if (typing) this.typedKey = key;
       return;
     }
+    this.holdTyped(state, key, built);
+  }
+
+  /**
+   * Holds a typed text back until a pause or a commit (its request `built`, asked then if valid):
+   * every number a dash marked "typing", no message changed but the typed field's own, cleared.
+   */
+  private holdTyped(state: CalculatorState, key: FieldKey, built: BuiltRequest): void {
+    this.typedKey = null;
     this.typing.hold();
     this.held = built;
     this.state = state;
@@ -412,6 +436,7 @@ export class CalculatorApp {
    */
   private change(state: CalculatorState, built: BuiltRequest = this.build(state)): void {
     this.typing.release();
+    this.typedKey = null;
     this.state = state;
     this.built = built;
     // Asked (unless answered already) before any drawing, so the worker solves while the page draws.

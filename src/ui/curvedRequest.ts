@@ -7,10 +7,10 @@
  * refusal describeCurvedError words. Every message in the user's unit on its field. Pure.
  */
 import { FIELDS, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
+import { passFieldsAnd } from '../core/input/passFields';
 import { rawFields } from '../core/input/raw';
 import { formatInputNumber, fromMm, toMm, unitSymbol } from '../core/input/units';
 import { type InputError, inputError, MIN_LENGTH_MM } from '../core/input/validate';
-import { validatePassAnd } from '../core/surfaces/validate';
 import type { CurvedError } from '../worker/pageProtocol';
 import { describeError } from './i18n/words';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
@@ -136,7 +136,7 @@ export function buildCurvedRequest(state: CalculatorState): BuiltRequest | null 
     return key === null ? undefined : fieldInMm(state, key);
   };
   const field = forward ? (state.target === 'ra' ? 'ra' : 'h') : 'interval';
-  const v = validatePassAnd({ ...rawFields(TOOL_FIELDS, mm), pattern: state.pattern, [field]: mm(field) }, field);
+  const v = passFieldsAnd({ ...rawFields(TOOL_FIELDS, mm), pattern: state.pattern, [field]: mm(field) }, field);
   const errors: Array<InputError | PageFieldError> = [...own, ...(v.errors as InputError[])];
   const min = forward ? MIN_LENGTH_MM : 2 * MIN_LENGTH_MM;
   if (v.value !== undefined && !(v.value >= min))

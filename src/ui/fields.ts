@@ -8,11 +8,10 @@ import { FIELDS, type FieldSpec, fieldOfPageKey } from '../core/input/fields';
 import { unitSymbol } from '../core/input/units';
 import type { PassPattern } from '../core/input/validate';
 import type { SurfaceAxis } from '../core/surfaces/cylinder';
-import type { SolveMode } from '../worker/protocol';
+import type { SliderLimits, SolveMode } from '../worker/protocol';
 import { html, must } from './dom';
 import { FINISH_KEYS, finishGiven, finishKeyOff, rateFzText } from './finishFields';
 import { catalogue, fieldWords } from './i18n/words';
-import { LazyQuestionLimits } from './lazyQuestionLimits';
 import type { Machine, Passes } from './machineState';
 import { dragEarly } from './sliderDrag';
 import { sliderRanges } from './sliders';
@@ -161,16 +160,14 @@ export class FieldsPanel {
   /** The presets the surface box lists now (five-axis or waterline). */
   private presetsShown: readonly string[] = [];
   private readonly sides = new Map<RadiusKey, HTMLSelectElement>();
-  /** The last state drawn, with its messages (drawn again once the sliders' limits have loaded). */
+  /** The last state drawn, with its messages (drawn again when the sliders' limits change). */
   private drawn: { state: CalculatorState; messages: ReadonlyMap<FieldKey, string> } | null = null;
   /** The teeth-and-feed box (a disclosure, closed while its optional fields are empty). */
   private readonly finishBox: HTMLDetailsElement | null;
   /** Whether the finish fields held text at the last render (the box opens when they start to). */
   private finishWasGiven = false;
-  /** A doubly curved point's and three-axis machining's slider limits, loaded on the first such state. */
-  private readonly limits = new LazyQuestionLimits(() => {
-    if (this.drawn !== null) this.render(this.drawn.state, this.drawn.messages);
-  });
+  /** The sliders' limits: the worker's, beside its last reply (null: none yet). */
+  private limits: SliderLimits | null = null;
 
   constructor(
     private readonly root: HTMLElement,
@@ -305,10 +302,20 @@ export class FieldsPanel {
     }
   }
 
+  /**
+   * The sliders' limits (a reply's), for this render on: the state drawn is drawn again when they
+   * change, unless `redraw` is false (the caller draws next).
+   */
+  rangeSliders(limits: SliderLimits | null, redraw = true): void {
+    if (JSON.stringify(limits) === JSON.stringify(this.limits)) return;
+    this.limits = limits;
+    if (redraw && this.drawn !== null) this.render(this.drawn.state, this.drawn.messages);
+  }
+
   /** Draws a state: values, visibility by mode, unit labels, slider ranges and the messages. */
   render(state: CalculatorState, messages: ReadonlyMap<FieldKey, string>): void {
     this.drawn = { state, messages };
-    const ranges = sliderRanges(state, this.limits.for(state));
+    const ranges = sliderRanges(state, this.limits);
     // The teeth-and-feed box opens when its fields come to hold text (a link's z and fz, a library
     // tool's flutes); the user may close it again, and it stays as they left it while they do.
     const finishNow = finishGiven(state);

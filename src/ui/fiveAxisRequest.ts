@@ -6,10 +6,10 @@
  * (questionRequest.ts). Pure (no DOM).
  */
 import { type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
+import { passFieldsAnd, validateForwardFields, validateInverseFields } from '../core/input/passFields';
 import { rawFields } from '../core/input/raw';
 import { type InputError, inputError } from '../core/input/validate';
-import { validateRaTarget } from '../core/roughness/raTarget';
-import { validateForward, validateInverse } from '../core/surfaces/validate';
+import { targetRaFields, targetRaValidation } from '../core/roughness/targetRaFields';
 import { buildCurvedRequest, cylinderState, renameRadius } from './curvedRequest';
 import { fieldMessages } from './fieldMessages';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
@@ -19,8 +19,9 @@ import type { RadiusKey } from './surfaceState';
 /**
  * The five-axis request the state asks, or why it cannot be asked: a doubly curved point's (with a
  * straight radius, the cylinder's or the plane's), or the plane's or cylinder's. Validation only,
- * once per change: a doubly curved point's checks that need a solver run in the worker, which
- * refuses such a request in its reply (request.ts replyErrors).
+ * once per change: the checks that need a solver (gouging, the limits of h, L and Ra, a doubly
+ * curved point's) run in the worker, which refuses such a request in its reply (request.ts
+ * replyErrors) and brings the sliders' limits with it.
  */
 export function buildFiveAxisRequest(state: CalculatorState): BuiltRequest {
   if (state.surface === 'curved') {
@@ -63,14 +64,20 @@ function validated(state: CalculatorState): BuiltRequest {
   };
   const tool = { ...rawFields(TOOL_FIELDS, mm), pattern: state.pattern, ...surfaceFields(state) };
   if (state.mode === 'forward' && state.target === 'ra') {
-    const v = validateRaTarget({ ...tool, ra: mm('ra') });
-    return v.ok ? { ok: true, request: { mode: 'ra', input: v.value } } : v;
+    // The fields only: gouging, a posture that leaves a wall only and an Ra beyond the largest are
+    // the worker's to find (they need a solve), in its reply (request.ts replyErrors).
+    const v = targetRaValidation(targetRaFields(passFieldsAnd({ ...tool, ra: mm('ra') }, 'ra')));
+    // Its errors name the tool, pass and Ra fields only (never a doubly curved point's radii).
+    return v.ok
+      ? { ok: true, request: { mode: 'ra', input: v.value } }
+      : { ok: false, errors: v.errors as InputError[] };
   }
+  // The fields only, likewise: gouging and the height or step-over limits are the worker's.
   if (state.mode === 'forward') {
-    const v = validateForward({ ...tool, h: mm('h') });
+    const v = validateForwardFields({ ...tool, h: mm('h') });
     return v.ok ? { ok: true, request: { mode: 'forward', input: v.value } } : v;
   }
-  const v = validateInverse({ ...tool, interval: mm('interval') });
+  const v = validateInverseFields({ ...tool, interval: mm('interval') });
   return v.ok ? { ok: true, request: { mode: 'inverse', input: v.value } } : v;
 }
 

@@ -2,23 +2,15 @@
  * The sliders' ranges and steps, in the user's unit: steps are round numbers of that unit (0.01 mm
  * or 0.001 in for the tool), so arrow keys move a value by a clean amount instead of a converted
  * millimetre step. The ranges follow the other values (Rcr up to R, h below the limit of the
- * question on screen: the posture's on a plane or cylinder, a doubly curved point's, three-axis
- * machining's at the slope; L and Ra below the widest and largest there). Pure (no DOM).
+ * question on screen, L and Ra below the widest and largest there, a concave cylinder's radius from
+ * the smallest that does not gouge): limits the worker works out beside its answer or refusal (its
+ * reply's SliderLimits, issue 27 point 4: the page solves nothing). Pure (no DOM).
  */
 
 import { fromMm, toMm } from '../core/input/units';
-import {
-  MAX_SURFACE_RADIUS_MM,
-  MAX_TOOL_RADIUS_MM,
-  MIN_SURFACE_RADIUS_MM,
-  MIN_TOOL_RADIUS_MM,
-  type ToolInput,
-} from '../core/input/validate';
-import { maxRaCachedMm } from '../core/roughness/raTarget';
-import { minConcaveRadiusMm, PLANE, type Surface } from '../core/surfaces/cylinder';
-import { maxIntervalMm, scallopHeightLimits } from '../core/surfaces/validate';
+import { MAX_TOOL_RADIUS_MM, MIN_TOOL_RADIUS_MM, type ToolInput } from '../core/input/validate';
+import type { SliderLimits } from '../worker/protocol';
 import { cylinderState } from './curvedRequest';
-import type { QuestionLimitsOf } from './questionLimits';
 import { type CalculatorState, type FieldKey, formatField, parseField, radiusField, sizeIsDiameter } from './state';
 
 export interface SliderRange {
@@ -97,20 +89,6 @@ function rangeTool(state: CalculatorState): ToolInput {
 /** The surface radius slider's top (mm): the field takes up to 1e6 mm, the slider the usual sizes. */
 const RADIUS_SLIDER_MAX_MM = 500;
 
-/**
- * The surface for the ranges: the typed cylinder when its radius is valid and (concave) not
- * gouging, else a plane.
- */
-function rangeSurface(state: CalculatorState, concaveMinMm: number): Surface {
-  if (state.surface === 'plane') return PLANE;
-  const v = parseField(state.fields.Rs);
-  if (v === null || !(v > 0)) return PLANE;
-  const mm = toMm(v, state.unit);
-  if (!(mm >= MIN_SURFACE_RADIUS_MM && mm <= MAX_SURFACE_RADIUS_MM)) return PLANE;
-  if (state.surface === 'concave' && !(mm >= concaveMinMm)) return PLANE;
-  return { kind: 'cylinder', radiusMm: state.surface === 'concave' ? -mm : mm, axis: state.surfaceAxis };
-}
-
 /** Rounds up to a whole number of steps. */
 function snapUp(value: number, step: number): number {
   return Math.ceil(value / step - 1e-9) * step;
@@ -123,13 +101,13 @@ function snap(value: number, step: number, min: number): number {
 
 /**
  * Every slider's range and step for a state, as the strings a range input takes.
- * @param limitsOf A doubly curved point's and three-axis machining's limits (questionLimits.ts's
- *   questionLimitsOf, which the page loads on the first such question); null: the plane's or the
- *   cylinder's ranges stand in.
+ * @param limits The question's limits, from the worker's last reply (null: none came yet, or its
+ *   question has none); each one missing stands in by the tool's size: h below R, L below 2R, Ra
+ *   below a quarter of the h limit, no concave limit.
  */
 export function sliderRanges(
   state: CalculatorState,
-  limitsOf: QuestionLimitsOf | null = null,
+  limits: SliderLimits | null = null,
 ): Readonly<Record<FieldKey, SliderRange>> {
   const u = state.unit;
   const step = STEPS[u];
@@ -138,12 +116,10 @@ export function sliderRanges(
   // A doubly curved point with a straight radius is a cylinder's (or the plane's) question.
   const classic = state.machine === '3axis' ? null : state.surface === 'curved' ? cylinderState(state).state : state;
   // A concave cylinder's slider starts at the gouging limit (Infinity: no concave fits; then from 1 step).
-  const concaveMin = classic?.surface === 'concave' ? minConcaveRadiusMm(tool, classic.surfaceAxis) : 0;
-  const surface = classic === null ? PLANE : rangeSurface(classic, concaveMin);
-  const question = limitsOf?.(state, tool) ?? null;
-  const hLimit = question?.hMm ?? scallopHeightLimits(tool, surface).limitMm;
-  const lMax = question?.intervalMm ?? maxIntervalMm(tool, state.pattern, surface);
-  const raMax = () => question?.raMm ?? maxRaCachedMm({ ...tool, pattern: state.pattern, surface });
+  const concaveMin = classic?.surface === 'concave' ? (limits?.concaveMinMm ?? 0) : 0;
+  const hLimit = limits?.hMm ?? tool.toolRadiusMm;
+  const lMax = limits?.intervalMm ?? 2 * tool.toolRadiusMm;
+  const raMax = () => limits?.raMm ?? hLimit / 4;
   const rsMin = Number.isFinite(concaveMin) ? Math.max(step.Rs, snapUp(len(concaveMin), step.Rs)) : step.Rs;
   const ranges: Record<FieldKey, [number, number]> = {
     R: [step.R * 10, snap(len(25), step.R, 0)],

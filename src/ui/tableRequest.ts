@@ -4,10 +4,11 @@
  * and strategy, and the grid of core/output/threeAxisLookup.ts). Apart from the button,
  * so that the grid's code loads on the first download, not with the first result. Pure.
  */
+
+import { PLANE } from '../core/domain/surface';
 import type { LengthUnit } from '../core/input/units';
 import { lookupGrid } from '../core/output/lookupTable';
 import { type ThreeAxisLookupCase, threeAxisLookupGrid } from '../core/output/threeAxisLookup';
-import { PLANE } from '../core/surfaces/cylinder';
 import { type CurvedRequest, isCurvedRequest, type ThreeAxisRequest } from '../worker/pageProtocol';
 import type { SolveRequest, TableRequest } from '../worker/protocol';
 

@@ -20,7 +20,7 @@ import type { Question, QuestionAnswer, QuestionError } from '../core/surfaces/q
 import type { SlopeSweep } from '../core/threeAxis/slopeSweep';
 import type { ThreeAxisAnswer, ThreeAxisInputError, ThreeAxisProblem } from '../core/threeAxis/validate';
 import type { WaterlineGeometry } from '../core/threeAxis/waterlineRevolution';
-import { type SceneGeometry, type SolveReply, type SolveRequest, sameRequest } from './protocol';
+import { type SceneGeometry, type SliderLimits, type SolveReply, type SolveRequest, sameRequest } from './protocol';
 
 /** A target roughness at a doubly curved point: Ra (mm, 0 < Ra below the largest the tool leaves there). */
 export interface DoublyCurvedRaInput extends DoublyCurvedPass {
@@ -137,6 +137,7 @@ export type CurvedReply =
   | {
       readonly ok: true;
       readonly request: CurvedRequest;
+      readonly limits: SliderLimits | null;
       readonly exact: CurvedSummary;
       /**
        * Forward: the plane's, each cylinder's and the usual correction's step-overs beside the exact
@@ -156,6 +157,7 @@ export type CurvedReply =
   | {
       readonly ok: false;
       readonly request: CurvedRequest;
+      readonly limits: SliderLimits | null;
       /** The tool's and posture's errors (validate.ts), or this point's. */
       readonly errors: readonly (InputError | CurvedError)[];
     };
@@ -165,6 +167,7 @@ export type ThreeAxisReply =
   | {
       readonly ok: true;
       readonly request: ThreeAxisRequest;
+      readonly limits: SliderLimits | null;
       /** L, Lxy, dz, the cusp and the equivalent lead and tilt (core solveThreeAxis). */
       readonly answer: ThreeAxisAnswer;
       /** Waterline on a surface of revolution: the pair of passes in the meridian plane; null otherwise. */
@@ -194,7 +197,12 @@ export type ThreeAxisReply =
       readonly scene: SceneGeometry | null;
       readonly solveMs: number;
     }
-  | { readonly ok: false; readonly request: ThreeAxisRequest; readonly errors: readonly ThreeAxisInputError[] };
+  | {
+      readonly ok: false;
+      readonly request: ThreeAxisRequest;
+      readonly errors: readonly ThreeAxisInputError[];
+      readonly limits: SliderLimits | null;
+    };
 
 /** Every answer of the page's `solve` job. */
 export type PageReply = SolveReply | CurvedReply | ThreeAxisReply;

@@ -185,11 +185,26 @@ export interface MachineView {
   };
 }
 
+/**
+ * How far the page's sliders reach for the question a reply answers or refuses (issue 27 point 4:
+ * the page solves nothing, so the worker's reply carries what its sliders need), mm: h below
+ * `hMm`, L below `intervalMm` (null: the sliders' own range), Ra below `raMm` (null: Ra is not the
+ * target), a concave cylinder's radius from `concaveMinMm` (Infinity: no concave radius fits; 0: no
+ * concave cylinder asked). Null in a reply whose tool, posture or surface make no such question.
+ */
+export interface SliderLimits {
+  readonly hMm: number;
+  readonly intervalMm: number | null;
+  readonly raMm: number | null;
+  readonly concaveMinMm: number;
+}
+
 /** The answer to `solve`. */
 export type SolveReply =
   | {
       readonly ok: true;
       readonly request: SolveRequest;
+      readonly limits: SliderLimits | null;
       readonly exact: ExactSummary;
       readonly rows: readonly ProcedureRow[];
       /** On a cylinder: the plane's answer and the corrected procedures (CURVATURE_ROW_KEYS order); null on a plane. */
@@ -199,7 +214,12 @@ export type SolveReply =
       readonly roughness: RoughnessSummary;
       readonly solveMs: number;
     }
-  | { readonly ok: false; readonly request: SolveRequest; readonly errors: readonly InputError[] };
+  | {
+      readonly ok: false;
+      readonly request: SolveRequest;
+      readonly errors: readonly InputError[];
+      readonly limits: SliderLimits | null;
+    };
 
 /** One frame of the step-through of the paper's 3D procedure (Figure 1), on one flank or both. */
 export interface TraceFrame {

@@ -1,9 +1,10 @@
 /**
  * What the first result loads (issue 27 points 2 and 4), read from the sources' static imports
  * (src/build/staticGraph.ts, from which vite.config.ts also groups the chunks): the page validates
- * and solves nothing beyond a plane's or a cylinder's validation, the worker's first script answers
- * a plane or a cylinder only; the doubly curved and three-axis solvers, the teaching views, the shop
- * sheet, the tool shelf and the lookup table load on first use (dynamic imports).
+ * the fields and loads no surface model (gouging and the limits are the worker's), the worker's
+ * first script answers a plane or a cylinder only; the doubly curved and three-axis solvers, the
+ * teaching views, the shop sheet, the tool shelf and the lookup table load on first use (dynamic
+ * imports).
  */
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
@@ -57,7 +58,6 @@ describe('the static import graph of the first result', () => {
     expect(loaded(page, [...THREE_AXIS_SOLVERS, ...CURVED_JOB])).toEqual([]);
     expect(
       loaded(page, [
-        'ui/questionLimits.ts',
         'ui/shopSheet.ts',
         'core/output/shopSheet.ts',
         'ui/toolShelf.ts',
@@ -70,6 +70,11 @@ describe('the static import graph of the first result', () => {
     ).toEqual([]);
     // Nothing of the worker's jobs runs on the page.
     expect([...page.keys()].filter((f) => /^worker\/(jobs|data)\//.test(f))).toEqual([]);
+  });
+
+  it("the page validates without a surface model: gouging and the limits are the worker's (issue 27 point 4)", () => {
+    expect(page.has('core/input/passFields.ts')).toBe(true);
+    expect([...page.keys()].filter((f) => /^core\/surfaces\//.test(f)).map((f) => chainTo(page, f))).toEqual([]);
   });
 
   it("the worker's first script answers a plane or a cylinder; the other jobs load when first asked", () => {

@@ -18,11 +18,10 @@ import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
 import { slopePosture } from '../../src/core/threeAxis/slopePosture';
 import { waterlineForward } from '../../src/core/threeAxis/waterlineRevolution';
 import { formatAngle, formatLen, formatLenUnit, formatRoughness } from '../../src/ui/format';
-import { questionLimitsOf } from '../../src/ui/questionLimits';
 import { REVOLUTION_NOTE } from '../../src/ui/roughness';
-import { sliderRanges } from '../../src/ui/sliders';
 import { parseUrl } from '../../src/ui/state';
 import { run } from '../cli/helpers';
+import { answeredRanges } from '../support/pageAnswer';
 import { keepShot, pageSettled, ROOT, urlWrites, useSite } from './harness';
 
 const site = useSite('docs/curved-three-axis');
@@ -187,9 +186,9 @@ describe('roughness, a target Ra and the sliders at a doubly curved point; three
     expect(await text(page, 'result-rq')).toBe(formatRoughness(r.rqMm, 'mm'));
     // The h slider's top is this point's limit (not the plane's), as the field's message states it.
     const state = parseUrl('?R=3&Rcr=1&rho=5&h=0.05&feedRadius=80&crossRadius=-40&unit=mm').state;
-    const max = sliderRanges(state, questionLimitsOf).h.max;
+    const max = answeredRanges(state).h.max;
     await expect.poll(() => page.getByTestId('slider-h').getAttribute('max')).toBe(max);
-    expect(max).not.toBe(sliderRanges(parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm').state).h.max);
+    expect(max).not.toBe(answeredRanges(parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm').state).h.max);
     // A target Ra: the h that leaves it and its step-over, as the core gives them.
     await radio(page, 'target-switch', 'ra').check();
     await page.getByTestId('input-ra').fill('0.004');

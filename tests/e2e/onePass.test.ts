@@ -3,11 +3,14 @@
  * the page's request once, through the page's one builder (questionRequest.ts, counted by the
  * probe's requestsBuilt), and asks the solver's worker once when it changes the question (the
  * probe's calls); a half-typed text held back until the pause is built at its key press only (its
- * commit asks nothing again), and typing back to the question on screen asks nothing. Five-axis on
- * a plane, three-axis on a sloped plane and a doubly curved point, on one page.
+ * commit asks nothing again), and typing back to the question on screen asks nothing; a typed text
+ * only the worker refuses (a gouging radius) is asked once and its message waits for the typing
+ * pause. Five-axis on a plane and a concave cylinder, three-axis on a sloped plane and a doubly
+ * curved point.
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
+import { TYPING_PAUSE_MS } from '../../src/ui/typing';
 import { SOLVER, useSite, workerIdle } from './harness';
 
 const site = useSite('docs/onePass');
@@ -55,6 +58,37 @@ describe('one pass per keystroke', () => {
     // Back to 0.051, the question answered on screen: built once, nothing asked.
     const back = await keyPress(page, 'input-h', 'Backspace', () => expect.poll(() => text(page, 'error-h')).toBe(''));
     expect(back).toEqual({ built: 1, calls: 0 });
+
+    // A concave radius typed: 50 -> 5 (Backspace), which the tool gouges (it needs more than 20 mm).
+    // Only the worker finds that: the text is asked once, and its refusal waits for the typing pause
+    // as the page's own errors do (no message flashes while typing), then shows.
+    await page.locator('input[name="surface"][value="concave"]').check();
+    await page.getByTestId('input-surface-radius').fill('50');
+    await expect.poll(() => text(page, 'result-exact-half')).toMatch(/\d/);
+    await page.evaluate(() => {
+      const w = window as unknown as { __shown: { text: string; sinceKeyMs: number }[]; __keyAt: number };
+      w.__shown = [];
+      w.__keyAt = performance.now();
+      const field = document.querySelector('[data-testid="input-surface-radius"]') as HTMLInputElement;
+      field.addEventListener('input', () => {
+        w.__keyAt = performance.now();
+      });
+      const error = document.querySelector('[data-testid="error-surface-radius"]') as HTMLElement;
+      new MutationObserver(() =>
+        w.__shown.push({ text: error.textContent ?? '', sinceKeyMs: performance.now() - w.__keyAt }),
+      ).observe(error, { childList: true, characterData: true, subtree: true });
+    });
+    const gouged = await keyPress(page, 'input-surface-radius', 'Backspace', () =>
+      expect.poll(() => text(page, 'error-surface-radius')).toMatch(/gouged/),
+    );
+    expect(gouged).toEqual({ built: 1, calls: 1 });
+    const shown = await page.evaluate(
+      () => (window as unknown as { __shown: { text: string; sinceKeyMs: number }[] }).__shown,
+    );
+    // A timer never fires early: every message came with the pause, none with the reply.
+    const messages = shown.filter((m) => m.text !== '');
+    expect(messages.length).toBeGreaterThan(0);
+    for (const m of messages) expect(m.sinceKeyMs, m.text).toBeGreaterThanOrEqual(TYPING_PAUSE_MS - 1);
     site.changed();
     expect(errors).toEqual([]);
   });

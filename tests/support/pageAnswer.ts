@@ -4,6 +4,7 @@
  * the messages are then the build's errors or the reply's refusal (stateMessages), as app.ts draws them.
  */
 import { buildRequest, stateMessages } from '../../src/ui/request';
+import { type SliderRange, sliderRanges } from '../../src/ui/sliders';
 import type { CalculatorState, FieldKey } from '../../src/ui/state';
 import { solvePage } from '../../src/worker/jobs/page';
 
@@ -17,4 +18,10 @@ export function answeredMessages(state: CalculatorState): Map<FieldKey, string> 
 export function answered(state: CalculatorState): boolean {
   const built = buildRequest(state);
   return built.ok && solvePage(built.request).ok;
+}
+
+/** The sliders' ranges for `state` once its worker has answered (its reply's limits, as app.ts ranges them). */
+export function answeredRanges(state: CalculatorState): Readonly<Record<FieldKey, SliderRange>> {
+  const built = buildRequest(state);
+  return sliderRanges(state, built.ok ? solvePage(built.request).limits : null);
 }

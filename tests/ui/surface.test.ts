@@ -10,9 +10,9 @@ import { scallopHeightForRaMm } from '../../src/core/roughness/roughness';
 import { minConcaveRadiusMm } from '../../src/core/surfaces/cylinder';
 import { exactForward } from '../../src/core/surfaces/solve';
 import { buildRequest, fieldMessages, fieldOfError } from '../../src/ui/request';
-import { sliderRanges } from '../../src/ui/sliders';
 import { convertState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';
 import { solvePage } from '../../src/worker/jobs/page';
+import { answered, answeredMessages, answeredRanges } from '../support/pageAnswer';
 
 const parse = (q: string) => parseUrl(q);
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
@@ -92,13 +92,13 @@ describe('the request a surface makes', () => {
     for (const unit of ['mm', 'in'] as const) {
       const base = { ...defaultState(unit), surface: 'concave' as const };
       const tight = withField(base, 'Rs', unit === 'mm' ? '20' : '0.8');
-      const r = buildRequest(tight);
-      if (r.ok) throw new Error('gouges');
+      // Gouging is a solve: the page asks, the worker refuses (its message on the radius field as the page's own).
+      expect(answered(tight)).toBe(false);
       // The tool as the fields give it in this unit (R = 0.11811 in is not quite 3 mm).
       const mm = (key: 'R' | 'Rcr') => toMm(Number(base.fields[key]), unit);
       const limit = minConcaveRadiusMm({ ...TOOL, toolRadiusMm: mm('R'), cornerRadiusMm: mm('Rcr') }, 'feed');
       const shown = formatInputNumber(fromMm(limit, unit));
-      expect(fieldMessages(tight, r.errors).get('Rs')).toBe(
+      expect(answeredMessages(tight).get('Rs')).toBe(
         `Surface radius Rs: a concave cylinder must have a radius of at least ${shown} ${unit} for this tool and posture (got ${tight.fields.Rs}); a tighter one is gouged (the tool reaches below the surface away from the contact).`,
       );
     }
@@ -141,9 +141,13 @@ describe('the request a surface makes', () => {
   it('the radius slider starts at the gouging limit for a concave cylinder; h and L ranges follow the surface', () => {
     const concave = { ...defaultState(), surface: 'concave' as const };
     const limit = minConcaveRadiusMm(TOOL, 'feed');
-    expect(Number(sliderRanges(concave).Rs.min)).toBe(Math.ceil(limit / 0.1) * 0.1);
-    expect(Number(sliderRanges({ ...concave, surface: 'convex' }).Rs.min)).toBe(0.1);
+    expect(Number(answeredRanges(concave).Rs.min)).toBe(Math.ceil(limit / 0.1) * 0.1);
+    // A radius the tool gouges: the worker refuses it, and its reply starts the slider at the limit too.
+    const gouged = withField(concave, 'Rs', '5');
+    expect(answered(gouged)).toBe(false);
+    expect(Number(answeredRanges(gouged).Rs.min)).toBe(Math.ceil(limit / 0.1) * 0.1);
+    expect(Number(answeredRanges({ ...concave, surface: 'convex' }).Rs.min)).toBe(0.1);
     const convex = withField({ ...concave, surface: 'convex' as const }, 'Rs', '5');
-    expect(sliderRanges(convex).L.max).not.toBe(sliderRanges(defaultState()).L.max);
+    expect(answeredRanges(convex).L.max).not.toBe(answeredRanges(defaultState()).L.max);
   });
 });

@@ -126,6 +126,27 @@ export function bracketedRoot(
 }
 
 /**
+ * Bisection on a predicate that holds at `lo` and not at `hi` (lo < hi or lo > hi): the bracket
+ * halved, its `lo` end moved to the midpoint where `holds` is true and its `hi` end where false, at
+ * most `maxSteps` times and while |hi - lo| exceeds `width` (none: all the steps). No evaluation at
+ * the ends. Returns the final bracket.
+ */
+export function bisect(
+  holds: (x: number) => boolean,
+  lo: number,
+  hi: number,
+  maxSteps: number,
+  width = Number.NEGATIVE_INFINITY,
+): { lo: number; hi: number } {
+  for (let i = 0; i < maxSteps && hi - lo > width; i++) {
+    const mid = 0.5 * (lo + hi);
+    if (holds(mid)) lo = mid;
+    else hi = mid;
+  }
+  return { lo, hi };
+}
+
+/**
  * The state of a safeguarded Newton iteration driven by its caller ({@link newtonStep}): the
  * bracket [lo, hi] around the root, the next point x to evaluate, and whether it is done. A class
  * with its fields set in the constructor, so that every solver hands {@link newtonStep} objects of

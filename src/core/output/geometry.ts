@@ -6,6 +6,7 @@
  */
 
 import type { ToolInput } from '../domain/tool';
+import { bisect } from '../math/rootFinder';
 import { cross, dot, norm, type Vec3 } from '../math/vec';
 import {
   cutSection,
@@ -100,13 +101,7 @@ function meetingIntervals(p: Placement, h: number, must: readonly number[]): Arr
   if (inside.every((v) => v)) return [[0, TAU]];
   if (!inside.some((v) => v)) return [];
   const edge = (a: number, b: number, aInside: boolean) => {
-    let lo = a;
-    let hi = b;
-    for (let j = 0; j < 60; j++) {
-      const mid = 0.5 * (lo + hi);
-      if (gap(mid) <= 0 === aInside) lo = mid;
-      else hi = mid;
-    }
+    const { lo, hi } = bisect((t) => gap(t) <= 0 === aInside, a, b, 60);
     return aInside ? lo : hi;
   };
   const starts: number[] = [];

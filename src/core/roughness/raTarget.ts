@@ -24,7 +24,10 @@ export type RaTargetInput = TargetRaInput;
 /** Raw values of a target Ra (as typed). */
 export type RawRaTargetInput = RawTargetRaInput;
 
-/** The last maxRaMm asked (the page validates on every keystroke; a solve costs about 1 ms). */
+/**
+ * The last maxRaMm asked (a solve costs about 1 ms): the worker validates a target Ra and ranges the
+ * Ra slider with it, one solve for both, and the same pass comes again while the Ra alone changes.
+ */
 let cached: { key: string; value: number } | null = null;
 
 /** maxRaMm, remembered for the last tool, posture, pattern and surface. */
@@ -36,8 +39,8 @@ export function maxRaCachedMm(input: PassInput): number {
 }
 
 /**
- * Validates a target Ra for the page: {@link validateTargetRa} (the one validation, shared with the
- * command line) with maxRaMm remembered for the last pass (the page validates on every keystroke).
+ * Validates a target Ra for the page's worker: {@link validateTargetRa} (the one validation, shared
+ * with the command line) with maxRaMm remembered for the last pass (asked on every keystroke).
  */
 export function validateRaTarget(raw: RawRaTargetInput): Validation<RaTargetInput> {
   // Its errors name the tool, pass and Ra fields only (never a doubly curved point's radii).

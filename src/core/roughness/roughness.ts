@@ -25,19 +25,13 @@
 import type { ForwardInput, PassInput } from '../domain/pass';
 import { PLANE, type Surface } from '../domain/surface';
 import type { PassPattern, ToolInput } from '../domain/tool';
-import {
-  type AnyInputError,
-  forwardInput,
-  inputError,
-  MIN_LENGTH_MM,
-  type RawToolInput,
-  type Validation,
-} from '../input/validate';
+import { type AnyInputError, forwardInput, inputError, MIN_LENGTH_MM, type Validation } from '../input/validate';
 import type { CylinderSolver } from '../surfaces/cylinder';
 import { type SurfaceDescriptor, surfaceModel } from '../surfaces/registry';
 import { type ExactForward, type ExactInverse, exactForward } from '../surfaces/solve';
 import { scallopHeightLimits, validatePassAnd } from '../surfaces/validate';
 import { type Flank, flankWidthMm, type PostureShape } from '../tool/posture';
+import { type RawTargetRaInput, type TargetRaInput, targetRaFields, targetRaValidation } from './targetRaFields';
 
 /** Roughness across the feed, mm. */
 export interface Roughness {
@@ -357,16 +351,7 @@ export function heightForRaMm(raAt: (h: number) => number, targetRaMm: number, l
   return Math.exp(0.5 * (lo + hi));
 }
 
-/** Raw values of the target-roughness problem (mm and degrees): the tool, pattern, surface and a target Ra. */
-export interface RawTargetRaInput extends RawToolInput {
-  readonly ra: unknown;
-}
-
-/** A validated target roughness: the pass and the Ra (mm) its passes must leave. */
-export interface TargetRaInput extends PassInput {
-  /** Target Ra in mm: at least {@link MIN_LENGTH_MM}, below maxRaMm of the pass. */
-  readonly targetRaMm: number;
-}
+export type { RawTargetRaInput, TargetRaInput } from './targetRaFields';
 
 /**
  * Validates a target roughness: the tool rules of validateForward, and `Ra` from
@@ -380,36 +365,13 @@ export function validateTargetRa(
   raw: RawTargetRaInput,
   maxRa: (pass: PassInput) => number = (p) => maxRaMm(p, p.pattern, p.surface),
 ): Validation<TargetRaInput, AnyInputError> {
-  const v = validatePassAnd(raw, 'ra');
-  const errors = [...v.errors];
-  const ra = v.value;
-  if (ra !== undefined && !v.gouges) {
-    if (ra <= 0) errors.push(inputError('ra', 'not-positive', v.shown));
-    else if (ra < MIN_LENGTH_MM) errors.push(inputError('ra', 'too-small', v.shown, MIN_LENGTH_MM));
-    else if (v.pass !== null) {
-      const p = v.pass;
-      const flatLying = surfaceModel(p.surface).leavesNoScallop(p, p.surface);
-      if (!flatLying && !(scallopHeightLimits(p, p.surface).limitMm >= MIN_LENGTH_MM)) {
-        // As validateForward: in this posture the tool cuts a step, no scallop forms.
-        errors.push(inputError('ra', 'wall-only', v.shown));
-      } else {
-        const max = flatLying ? 0 : maxRa(p);
-        if (!(ra < max)) errors.push(inputError('ra', 'beyond-max-ra', v.shown, max));
-      }
-    }
-  }
-  if (errors.length > 0 || v.pass === null || ra === undefined) return { ok: false, errors };
-  const p = v.pass;
-  return {
-    ok: true,
-    value: {
-      toolRadiusMm: p.toolRadiusMm,
-      cornerRadiusMm: p.cornerRadiusMm,
-      leadAngleDeg: p.leadAngleDeg,
-      tiltAngleDeg: p.tiltAngleDeg,
-      pattern: p.pattern,
-      surface: p.surface,
-      targetRaMm: ra,
-    },
-  };
+  const f = targetRaFields(validatePassAnd(raw, 'ra'));
+  if (!f.toSolve || f.pass === null || f.ra === undefined) return targetRaValidation(f);
+  const p = f.pass;
+  const flatLying = surfaceModel(p.surface).leavesNoScallop(p, p.surface);
+  // As validateForward: in this posture the tool cuts a step, no scallop forms.
+  if (!flatLying && !(scallopHeightLimits(p, p.surface).limitMm >= MIN_LENGTH_MM))
+    return targetRaValidation(f, [inputError('ra', 'wall-only', f.shown)]);
+  const max = flatLying ? 0 : maxRa(p);
+  return targetRaValidation(f, f.ra < max ? [] : [inputError('ra', 'beyond-max-ra', f.shown, max)]);
 }

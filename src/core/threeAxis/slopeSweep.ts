@@ -21,6 +21,7 @@
  *   waterline, typed as the step-down `dz` (a common practice to compare; on a flat floor a
  *   step-down means nothing, so the waterline sweep has no step and no cusp at slope 0).
  */
+import { bisect } from '../math/rootFinder';
 import { flankLimits, postureShape } from '../tool/posture';
 import {
   checkHeight,
@@ -179,14 +180,7 @@ function largestOfScan(input: SlopeSweepInput, verdicts: ReturnType<typeof scan>
   for (const v of verdicts) if (v.verdict === 'ok') last = v.slopeDeg;
   if (last < 0) return 0;
   if (last === 90) return 90;
-  let lo = last;
-  let hi = Math.min(90, last + 0.5);
-  for (let i = 0; i < 60 && hi - lo > 1e-12; i++) {
-    const mid = 0.5 * (lo + hi);
-    if (ok(mid)) lo = mid;
-    else hi = mid;
-  }
-  return lo;
+  return bisect(ok, last, Math.min(90, last + 0.5), 60, 1e-12).lo;
 }
 
 /**
@@ -213,14 +207,11 @@ export function rasterWaterlineCrossingDeg(
   );
   const dTop = diff(top * (1 - 1e-9));
   if (dTop === null || dTop > 0) return null;
-  let lo = 1e-9;
-  let hi = top * (1 - 1e-9);
-  for (let i = 0; i < 80 && hi - lo > 1e-12; i++) {
-    const mid = 0.5 * (lo + hi);
-    const d = diff(mid);
-    if (d !== null && d > 0) lo = mid;
-    else hi = mid;
-  }
+  const rasterMore = (a: number) => {
+    const d = diff(a);
+    return d !== null && d > 0;
+  };
+  const { lo, hi } = bisect(rasterMore, 1e-9, top * (1 - 1e-9), 80, 1e-12);
   return 0.5 * (lo + hi);
 }
 

@@ -2,6 +2,8 @@
  * The limits of waterline passes on a surface of revolution as input errors (waterlineRevolution.ts):
  * the case's own inputs, and an unsuccessful solve worded with its limit in the quantity given.
  */
+
+import { bisect } from '../math/rootFinder';
 import {
   checkTool,
   formatNumber,
@@ -182,16 +184,10 @@ export function gougingError(c: RevolutionCase, which: string, gouges: (c: Revol
     if (gouges(withRadius(null))) continue;
     const sign = Math.sign(r);
     const maxMag = THREE_AXIS_SURFACE_RADIUS_RANGE_MM[1];
-    let lo = Math.log(Math.abs(r));
-    let hi = Math.log(maxMag);
     let limit: number | null = null;
     if (!gouges(withRadius(sign * maxMag))) {
-      for (let i = 0; i < 80 && hi - lo > 1e-13; i++) {
-        const mid = 0.5 * (lo + hi);
-        if (gouges(withRadius(sign * Math.exp(mid)))) lo = mid;
-        else hi = mid;
-      }
-      limit = Math.exp(hi);
+      const gougesAt = (logMag: number) => gouges(withRadius(sign * Math.exp(logMag)));
+      limit = Math.exp(bisect(gougesAt, Math.log(Math.abs(r)), Math.log(maxMag), 80, 1e-13).hi);
     }
     const name = field === 'crossRadius' ? 'meridian' : 'horizontal circle (its normal radius)';
     const kind = sign < 0 ? 'concave' : 'convex';

@@ -13,11 +13,11 @@
  * radius Rc and the pass its two flanks make (curvedProfileSection).
  */
 
+import { PLANE } from '../../core/domain/surface';
 import { lowestPassHeight, monotoneProfile, sectionRadiusMm } from '../../core/output/sectionProfile';
 import { fromSurfaceSection, toSurfaceSection } from '../../core/output/surfaceGeometry';
 import { PROCEDURE_KEYS, type ProcedureKey } from '../../core/procedures/procedures';
 import type { Surface } from '../../core/surfaces/cylinder';
-import { PLANE } from '../../core/surfaces/cylinder';
 import type { CylinderCurves, ProfileCurveSet } from '../../worker/protocol';
 import type { CurvedSectionData } from '../../worker/teachProtocol';
 import { formatLenUnit } from '../format';

@@ -11,21 +11,21 @@
 import type { PassPattern, ToolInput } from '../../core/input/validate';
 import { doublyCurvedMaxRaMm } from '../../core/roughness/doublyCurved';
 import {
+  curvedRadiusInRange,
+  type DoublyCurvedSolver,
   doublyCurvedGouges,
   doublyCurvedGouging,
   doublyCurvedMaxIntervalMm,
   doublyCurvedSolver,
-  MAX_PRINCIPAL_RADIUS_MM,
-  MIN_PRINCIPAL_RADIUS_MM,
   type PrincipalRadii,
   type RadiusLimit,
 } from '../../core/surfaces/doublyCurved';
 import type { CurvedError } from '../pageProtocol';
+import type { SliderLimits } from '../protocol';
 
 /** True for a radius the model takes: straight (infinite), or a magnitude from 0.001 mm to 1e6 mm. */
 function radiusInRange(radiusMm: number): boolean {
-  const r = Math.abs(radiusMm);
-  return r === Number.POSITIVE_INFINITY || (r >= MIN_PRINCIPAL_RADIUS_MM && r <= MAX_PRINCIPAL_RADIUS_MM);
+  return Math.abs(radiusMm) === Number.POSITIVE_INFINITY || curvedRadiusInRange(radiusMm);
 }
 
 /** A limit that a change of its radius can meet (not `any`: that radius is not the cause; not `none`). */
@@ -76,9 +76,49 @@ export function curvedErrors(
     return [];
   }
   if ('ra' in question) {
-    const maxRaMm = limits.limitMm > 0 ? doublyCurvedMaxRaMm(tool, pattern, radii) : 0;
+    const maxRaMm = limits.limitMm > 0 ? maxRaAt(tool, pattern, radii) : 0;
     return question.ra < maxRaMm ? [] : [{ field: 'ra', code: 'beyond-max-ra', maxMm: maxRaMm }];
   }
   const maxMm = doublyCurvedMaxIntervalMm(solver, pattern);
   return question.interval < maxMm ? [] : [{ field: 'interval', code: 'beyond-max', maxMm }];
+}
+
+/** The last largest Ra worked out (a few ms): the check and the sliders' limits ask it of one request. */
+let lastRa: { key: string; value: number } | null = null;
+
+/** doublyCurvedMaxRaMm, remembered for the last tool, pattern and radii. */
+function maxRaAt(tool: ToolInput, pattern: PassPattern, radii: PrincipalRadii): number {
+  const key = JSON.stringify([
+    tool.toolRadiusMm,
+    tool.cornerRadiusMm,
+    tool.leadAngleDeg,
+    tool.tiltAngleDeg,
+    pattern,
+    radii.feedRadiusMm,
+    radii.crossRadiusMm,
+  ]);
+  if (lastRa?.key !== key) lastRa = { key, value: doublyCurvedMaxRaMm(tool, pattern, radii) };
+  return lastRa.value;
+}
+
+/**
+ * A doubly curved point's sliders' limits (protocol.ts SliderLimits) for a valid tool and posture
+ * and radii that curvedRadiusErrors takes (in range, no gouging), through the point's prepared
+ * `solver`: the scallop height below the flank and shank limits, the widest step-over that leaves a
+ * scallop and, while Ra is the target, the largest Ra.
+ */
+export function curvedSliderLimits(
+  solver: DoublyCurvedSolver,
+  tool: ToolInput,
+  radii: PrincipalRadii,
+  pattern: PassPattern,
+  raTarget: boolean,
+): SliderLimits {
+  const hMm = solver.limits().limitMm;
+  return {
+    hMm,
+    intervalMm: doublyCurvedMaxIntervalMm(solver, pattern),
+    raMm: raTarget && hMm > 0 ? maxRaAt(tool, pattern, radii) : null,
+    concaveMinMm: 0,
+  };
 }

@@ -16,6 +16,7 @@ import type { PassPattern } from '../../core/input/validate';
 import { csvNumber, csvText, RESULT_COLUMNS } from '../../core/output/csvWrite';
 import type { LookupGrid, LookupTable } from '../../core/output/lookupTable';
 import {
+  curvedRadiusInRange,
   doublyCurvedGouges,
   doublyCurvedSolver,
   forwardWith,
@@ -37,15 +38,9 @@ export const CURVED_INPUT_COLUMNS = [
 /** The header of a doubly curved table. */
 export const CURVED_LOOKUP_HEADER = [...CURVED_INPUT_COLUMNS, ...RESULT_COLUMNS].join(',');
 
-/** A radius the model takes: a magnitude from 0.001 mm to 1e6 mm (a straight one is a cylinder's table). */
-function curvedRadius(radiusMm: number): boolean {
-  const r = Math.abs(radiusMm);
-  return r >= MIN_PRINCIPAL_RADIUS_MM && r <= MAX_PRINCIPAL_RADIUS_MM;
-}
-
-/** Why these radii cannot be tabulated, or null. */
+/** Why these radii cannot be tabulated (a straight one is a cylinder's table), or null. */
 export function badRadii(radii: PrincipalRadii): string | null {
-  if (curvedRadius(radii.feedRadiusMm) && curvedRadius(radii.crossRadiusMm)) return null;
+  if (curvedRadiusInRange(radii.feedRadiusMm) && curvedRadiusInRange(radii.crossRadiusMm)) return null;
   return `both radii of a doubly curved point must be from ${MIN_PRINCIPAL_RADIUS_MM} mm to ${MAX_PRINCIPAL_RADIUS_MM} mm in size (got ${radii.feedRadiusMm} and ${radii.crossRadiusMm}).`;
 }
 

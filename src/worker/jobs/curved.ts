@@ -18,8 +18,9 @@ import {
 import { roughnessSummary } from '../../core/roughness/raTarget';
 import { doublyCurvedMaxIntervalMm, doublyCurvedSolver, inverseWith } from '../../core/surfaces/doublyCurved';
 import { validatePassAnd } from '../../core/surfaces/validate';
-import { curvedErrors } from '../data/curvedCheck';
+import { curvedErrors, curvedSliderLimits } from '../data/curvedCheck';
 import { curvedSceneGeometry } from '../data/curvedScene';
+import { finiteLimits } from '../data/sliderLimits';
 import type { CurvedError, CurvedReply, CurvedRequest, CurvedSummary } from '../pageProtocol';
 
 /** The request's errors (the tool's, then the point's), or null when it is valid. */
@@ -40,15 +41,29 @@ export function revalidateCurved(request: CurvedRequest): readonly (InputError |
   return errors.length > 0 ? errors : null;
 }
 
+/**
+ * True for an error after which a point has no sliders' limits: a validation error (the radii are
+ * checked only after it), a radius out of range or gouging.
+ */
+function noLimits(e: InputError | CurvedError): boolean {
+  return 'got' in e || e.field === 'feedRadius' || e.field === 'crossRadius';
+}
+
 /** Solves a doubly curved request. Never throws for any numeric input. */
 export function solveCurved(request: CurvedRequest): CurvedReply {
   const t0 = performance.now();
   const errors = revalidateCurved(request);
-  if (errors !== null) return { ok: false, request, errors };
   const i = request.input;
-  const solver = doublyCurvedSolver(i, i);
+  // The point's solver, prepared once for the answer and the sliders' limits (beside a refusal of
+  // h, L or Ra too): unless the tool or the radii were refused (the radii checked once, above).
+  const solver = (errors ?? []).some(noLimits) ? null : doublyCurvedSolver(i, i);
+  const sliderLimits =
+    solver === null
+      ? null
+      : finiteLimits(() => curvedSliderLimits(solver, i, i, i.pattern, request.mode === 'curved-ra'));
+  if (errors !== null || solver === null) return { ok: false, request, errors: errors ?? [], limits: sliderLimits };
   const limits = solver.limits();
-  const maxIntervalMm = doublyCurvedMaxIntervalMm(solver, i.pattern);
+  const maxIntervalMm = sliderLimits?.intervalMm ?? doublyCurvedMaxIntervalMm(solver, i.pattern);
   if (request.mode !== 'curved-inverse') {
     const hMm =
       request.mode === 'curved-forward'
@@ -60,6 +75,7 @@ export function solveCurved(request: CurvedRequest): CurvedReply {
     return {
       ok: true,
       request,
+      limits: sliderLimits,
       exact: summary,
       comparison,
       roughness: roughnessSummary(roughness, exact.cuspHeightMm),
@@ -82,6 +98,7 @@ export function solveCurved(request: CurvedRequest): CurvedReply {
   return {
     ok: true,
     request,
+    limits: sliderLimits,
     exact,
     comparison: null,
     roughness: roughnessSummary(doublyCurvedRoughnessAtInterval(solver, i.pattern, e), e.cuspHeightMm),

@@ -9,6 +9,7 @@ import { exactRoughness, exactRoughnessAtInterval, type Roughness } from '../../
 import { exactOfForward, exactOfInverse } from '../data/exact';
 import { forwardCurvatureRows, forwardRows, inverseCurvatureRows, inverseRows } from '../data/rows';
 import { sceneGeometry } from '../data/scene';
+import { classicSliderLimits } from '../data/sliderLimits';
 import type { CurvatureRow, ExactSummary, ProcedureRow, SolveReply, SolveRequest } from '../protocol';
 import { revalidate } from './revalidate';
 
@@ -16,7 +17,8 @@ import { revalidate } from './revalidate';
 export function solve(request: SolveRequest): SolveReply {
   const t0 = performance.now();
   const errors = revalidate(request);
-  if (errors !== null) return { ok: false, request, errors };
+  const limits = classicSliderLimits(request);
+  if (errors !== null) return { ok: false, request, errors, limits };
   let exact: ExactSummary;
   let rows: ProcedureRow[];
   let curvature: CurvatureRow[] | null;
@@ -39,6 +41,7 @@ export function solve(request: SolveRequest): SolveReply {
   return {
     ok: true,
     request,
+    limits,
     exact,
     rows,
     curvature,

@@ -7,6 +7,8 @@
  */
 import { roughnessSummary } from '../../core/roughness/raTarget';
 import { slopedPlaneRoughness } from '../../core/roughness/slopedPlane';
+import { effectiveRasterAngleDeg } from '../../core/threeAxis/slopedPlane';
+import { slopePosture } from '../../core/threeAxis/slopePosture';
 import { rasterWaterlineCrossingDeg, slopeSweep } from '../../core/threeAxis/slopeSweep';
 import { solveThreeAxis } from '../../core/threeAxis/solve';
 import {
@@ -15,9 +17,13 @@ import {
   type ThreeAxisProblem,
   validateThreeAxis,
 } from '../../core/threeAxis/validate';
-import { waterlineForward, waterlineInverse } from '../../core/threeAxis/waterlineRevolution';
+import { waterlineForward, waterlineHeightLimitMm, waterlineInverse } from '../../core/threeAxis/waterlineRevolution';
+import { flankLimits } from '../../core/tool/posture';
+import { postureShape } from '../../core/tool/postureShape';
 import { threeAxisSceneGeometry } from '../data/curvedScene';
+import { finiteLimits } from '../data/sliderLimits';
 import type { ThreeAxisReply, ThreeAxisRequest } from '../pageProtocol';
+import type { SliderLimits } from '../protocol';
 
 /** The raw inputs (by registry field name) a validated problem came from. */
 export function rawOfThreeAxis(p: ThreeAxisProblem): RawThreeAxisInput {
@@ -64,12 +70,34 @@ function waterlinePair(p: ThreeAxisProblem): Extract<ThreeAxisReply, { ok: true 
   return { geometry: r.value.geometry, slopeNextDeg: r.value.slopeNextDeg, radialStepMm: r.value.radialStepMm };
 }
 
+/**
+ * Three-axis machining's sliders' limits (protocol.ts SliderLimits): the largest scallop height at
+ * the slope (the posture solver's flank and shank limits at the slope's equivalent posture on a
+ * plane, waterlineHeightLimitMm on a surface of revolution); the steps' sliders keep their own
+ * ranges (the field says the true limit). Null while the tool, slope and surface are invalid, or
+ * where a flat end lies on a flat floor (any h is answered).
+ */
+export function threeAxisSliderLimits(p: ThreeAxisProblem): SliderLimits | null {
+  // Validated with a tiny h: only the tool, slope and surface are looked at.
+  const v = validateThreeAxis(rawOfThreeAxis(p), 'h', 1e-6);
+  if (!v.ok) return null;
+  const q = v.value;
+  const only = (hMm: number): SliderLimits => ({ hMm, intervalMm: null, raMm: null, concaveMinMm: 0 });
+  if (q.surface === 'revolution') return only(waterlineHeightLimitMm(q.case));
+  const c = q.case;
+  const posture = slopePosture(c.slopeDeg, effectiveRasterAngleDeg(c));
+  const shape = postureShape(c.toolRadiusMm, c.cornerRadiusMm, posture.leadRad, posture.tiltRad);
+  if (shape.flatOnPlane && shape.rcr === 0) return null;
+  return only(flankLimits(shape).limitMm);
+}
+
 /** Solves a three-axis request. Never throws for any numeric input. */
 export function solveThreeAxisRequest(request: ThreeAxisRequest): ThreeAxisReply {
   const t0 = performance.now();
   const p = request.input;
   const checked = checkThreeAxis(p);
-  if (!checked.ok) return { ok: false, request, errors: checked.errors };
+  const limits = finiteLimits(() => threeAxisSliderLimits(p));
+  if (!checked.ok) return { ok: false, request, errors: checked.errors, limits };
   const answer = checked.value.value;
   const c = p.case;
   const hMm = answer.cuspHeightMm;
@@ -104,6 +132,7 @@ export function solveThreeAxisRequest(request: ThreeAxisRequest): ThreeAxisReply
   return {
     ok: true,
     request,
+    limits,
     answer,
     waterline,
     sweep,

@@ -23,6 +23,12 @@ export const MIN_PRINCIPAL_RADIUS_MM = 0.001;
  */
 export const MAX_PRINCIPAL_RADIUS_MM = 1e6;
 
+/** True for a curved principal radius the model takes: a magnitude from MIN_ to MAX_PRINCIPAL_RADIUS_MM (not straight). */
+export function curvedRadiusInRange(radiusMm: number): boolean {
+  const r = Math.abs(radiusMm);
+  return r >= MIN_PRINCIPAL_RADIUS_MM && r <= MAX_PRINCIPAL_RADIUS_MM;
+}
+
 /**
  * The two signed principal radii of the design surface at the CC point: the doubly curved surface
  * descriptor (domain/surface.ts) without its kind. `feedRadiusMm` is `Rf` along the feed,
