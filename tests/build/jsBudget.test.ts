@@ -28,7 +28,10 @@
  * the finish core (its worker chunk, on first use, +3.9 kB): 59.78 and 247.91; the finish box's
  * and the tabs' words in each language (on first use): 59.79 and 249.16; the review's fixes (the link's
  * language read at once, the table drawn anew on a switch) less the embed code, now loaded on its
- * first press (-0.28 kB): 59.67 and 249.98.
+ * first press (-0.28 kB): 59.67 and 249.98. The shop sheet in Japanese and German (issue 30): its words
+ * in each catalogue (+0.9 kB each), its English as one typed words object in the sheet's own chunk,
+ * the locale's decimal sign shared with the language code (a chunk of its own, +0.24 kB), all on
+ * first use; the first result +0.02 kB (the sheet reads the language in force): 59.68 and 253.05.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -55,7 +58,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 250.5 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(250.5);
+  it('all of it, every .js file, is at most 253.25 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(253.25);
   });
 });

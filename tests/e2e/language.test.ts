@@ -31,6 +31,51 @@ function stepOver(h: number): string {
 const text = async (page: Page, selector: string) => (await page.locator(selector).first().textContent()) ?? '';
 const tap = (page: Page, lang: string) => page.locator(`[data-testid="lang-switch"] input[value="${lang}"]`).check();
 
+/** The shop sheet's Latin words a translation keeps: the paper's symbols, the unit, the marks' letters, file kinds. */
+const SHEET_KEPT = new Set('L h R D Rcr rho Rs Rf Rc Lxy dz mm in W G X Z CSV CAM'.split(' '));
+
+/** The Latin words of a text. */
+const latinWords = (t: string): string[] => t.match(/[A-Za-z][A-Za-z0-9]*/g) ?? [];
+
+/** The row heads of the open sheet's table (the screen reader's "your h" left out). */
+const rowHeads = (page: Page): Promise<string[]> =>
+  page
+    .getByTestId('shop-sheet-table')
+    .evaluate((t) => [...t.querySelectorAll('tbody th')].map((th) => th.firstChild?.textContent ?? ''));
+
+/**
+ * Opens the shop sheet on the inputs on screen, types a bad list of heights (its message returned),
+ * then three heights, the last past the tool's limit at lead 0 (a W mark: the legend and its hints
+ * are drawn), once the table shows them.
+ */
+async function openSheet(page: Page, sign: '.' | ','): Promise<string> {
+  await expect.poll(() => page.getByTestId('shop-sheet').isEnabled(), POLL).toBe(true);
+  await page.getByTestId('shop-sheet').click();
+  await page.getByTestId('shop-sheet-dialog').waitFor({ state: 'visible', timeout: POLL.timeout });
+  const field = page.getByTestId('shop-sheet-heights');
+  await field.fill('0.01 -1');
+  await field.press('Enter');
+  await expect.poll(() => text(page, '[data-testid="shop-sheet-heights-error"]')).not.toBe('');
+  const message = await text(page, '[data-testid="shop-sheet-heights-error"]');
+  await field.fill('0.01 0.05 1.5');
+  await field.press('Enter');
+  await expect.poll(async () => (await rowHeads(page)).at(-1), POLL).toBe(`1${sign}5`);
+  return message;
+}
+
+/**
+ * Every word of the open sheet a person reads or hears: its text (the legend's hints for a pointer
+ * and for touch, the caption, the heights' label, the buttons) and its elements' accessible names.
+ */
+const sheetWords = (page: Page): Promise<string> =>
+  page.getByTestId('shop-sheet-dialog').evaluate((d) => {
+    const texts: string[] = [];
+    const walker = document.createTreeWalker(d, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node !== null; node = walker.nextNode()) texts.push(node.nodeValue ?? '');
+    const names = [...d.querySelectorAll('[aria-label]')].map((e) => e.getAttribute('aria-label'));
+    return [...texts, ...names].join(' ');
+  });
+
 describe('the language switch (phone)', { timeout: 90_000 }, () => {
   let page: Page;
 
@@ -144,6 +189,58 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     // Back in English: the table drawn anew with points (no comma left to read as a thousands separator).
     await expect.poll(() => text(page, '[data-testid="result-sekine-half"]'), POLL).toMatch(/^\d+\.\d{4} mm$/);
     expect(await page.locator('.teaching').getAttribute('lang')).toBeNull();
+  });
+
+  it('the shop sheet in Japanese and German: no English word left on screen or printed, German decimal commas', async () => {
+    // English first (the page is in English by now): the sheet's own words, to find any left over.
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
+    const englishMessage = await openSheet(page, '.');
+    expect(await text(page, '[data-testid="shop-sheet-title"]')).toBe('Shop sheet: L (mm)');
+    const english = new Set(latinWords(`${englishMessage} ${await sheetWords(page)}`));
+    // The English sheet's words include its legend, its hints, its buttons and its table's names.
+    for (const w of ['Bold', 'posture', 'Tap', 'Hover', 'Print', 'Close', 'Download', 'table', 'separated'])
+      expect(english.has(w), `${w} in ${[...english].join(' ')}`).toBe(true);
+    await page.getByTestId('shop-sheet-close').click();
+    for (const [lang, title, sign] of [
+      ['ja', '現場用シート：L（mm）', '.'],
+      ['de', 'Werkstattblatt: L (mm)', ','],
+    ] as const) {
+      await tap(page, lang);
+      await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe(lang);
+      const message = await openSheet(page, sign);
+      expect(await text(page, '[data-testid="shop-sheet-title"]')).toBe(title);
+      // Japanese: no Latin word but the symbols and the unit; German: none of the English sheet's words.
+      const leftOver = (t: string) =>
+        latinWords(t).filter((w) => !SHEET_KEPT.has(w) && (lang === 'ja' || english.has(w)));
+      const words = `${message} ${await sheetWords(page)}`;
+      expect(leftOver(words), `${lang}: ${words}`).toEqual([]);
+      // Printed (print media): the sheet alone, in the language.
+      await page.emulateMedia({ media: 'print' });
+      expect(await page.locator('#app').isVisible()).toBe(false);
+      // biome-ignore lint/performance/useDomNodeTextContent: the text as rendered in print is the point
+      const printed = await page.getByTestId('shop-sheet-dialog').evaluate((d) => (d as HTMLElement).innerText);
+      expect(printed).toContain(title);
+      // The marks print as their letters (a mark is a button on screen; the page's buttons do not print).
+      expect(await page.getByTestId('shop-sheet-table').locator('td.refused .mark').first().isVisible()).toBe(true);
+      expect(leftOver(printed), `${lang} printed: ${printed}`).toEqual([]);
+      await keepShot(page, `shop-sheet-print-${lang}-phone`, { fullPage: true });
+      await page.emulateMedia({ media: 'screen' });
+      // The numbers with the locale's decimal sign, every digit kept; past the limit, a W.
+      expect(await rowHeads(page)).toEqual(expect.arrayContaining(['0.01', '0.05'].map((h) => h.replace('.', sign))));
+      const cells = await page
+        .getByTestId('shop-sheet-table')
+        .locator('tbody tr')
+        .first()
+        .locator('td')
+        .allTextContents();
+      for (const c of cells) expect(c).toMatch(sign === ',' ? /^\d+,\d{4}$/ : /^\d+\.\d{4}$/);
+      expect(
+        await page.getByTestId('shop-sheet-table').locator('tbody tr').last().locator('td').first().textContent(),
+      ).toBe('W');
+      await page.getByTestId('shop-sheet-close').click();
+    }
+    await tap(page, 'en');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
   });
 
   it("an embed takes its language from the link (the element's lang attribute), not the one remembered (English by now)", async () => {

@@ -158,6 +158,75 @@ export interface Catalogue {
   readonly question: Readonly<Record<QuestionWord, string>>;
   /** Each input error code's sentence (errorText.ts gives the field, the limit and what was typed). */
   readonly errors: Readonly<Record<InputErrorCode, (t: ErrorText) => string>>;
+  /** The shop sheet's words (shopSheet.ts; its English in shopSheetWords.ts). */
+  readonly sheet: SheetWords;
+}
+
+/**
+ * The surface of a shop sheet, for its title line: lengths given already in the user's unit with
+ * their symbol (`30 mm`); a radius of a surface of revolution null when straight.
+ */
+export type SheetSurface =
+  | { readonly kind: 'plane' }
+  | { readonly kind: 'sloped-plane' }
+  | { readonly kind: 'cylinder'; readonly concave: boolean; readonly radius: string; readonly axis: 'feed' | 'cross' }
+  | { readonly kind: 'doubly-curved'; readonly feed: string; readonly cross: string }
+  | { readonly kind: 'revolution'; readonly feed: string | null; readonly cross: string | null };
+
+/** What a sheet's cells give: the step-over L, the horizontal step Lxy (raster) or the step-down dz (waterline). */
+export type SheetStep = 'interval' | 'horizontalStep' | 'stepDown';
+
+/**
+ * The shop sheet's words (issue 30): every heading, label, note and unit word of the sheet, as
+ * functions of its numbers (given as text in the user's unit, `u` its symbol). The symbols (L, Lxy,
+ * dz, h, Rcr, the marks' letters W, G, X) stay; the CSV stays English.
+ */
+export interface SheetWords {
+  /** The heading: `Shop sheet: L (mm)`. */
+  readonly title: (step: string, u: string) => string;
+  /** The tool line: its diameter, radius and corner radius, each with its unit. */
+  readonly tool: (d: string, r: string, rcr: string) => string;
+  /** Five-axis machining: the tilt (degrees, a number), the pattern, the surface's words. */
+  readonly fiveAxis: (tiltDeg: string, pattern: 'one-way' | 'zigzag', surface: string) => string;
+  /** Three-axis machining: the passes, the raster angle from the fall line (degrees) or null, the surface's words. */
+  readonly threeAxis: (passes: 'raster' | 'waterline', angleDeg: string | null, surface: string) => string;
+  /** The surface in words. */
+  readonly surface: (s: SheetSurface) => string;
+  /** What the rows, the columns and the cells are, in unit `u`. */
+  readonly axes: (u: string, columns: 'lead' | 'slope', step: SheetStep) => string;
+  /** The last title line: how the numbers were made, and the date (YYYY-MM-DD). */
+  readonly made: (date: string) => string;
+  /** The table's accessible name (a scrolling region). */
+  readonly region: string;
+  /** The table's caption (screen readers). */
+  readonly caption: (step: string, u: string, columns: 'lead' | 'slope') => string;
+  /** The corner's column axis name (lead or slope) and the degrees' unit word. */
+  readonly column: Readonly<Record<'lead' | 'slope', string>>;
+  readonly deg: string;
+  /** After the user's own height in its row (screen readers): ` (your h)`. */
+  readonly yourH: string;
+  /** Where a refused cell is: its row's h (with unit) and its column (degrees). */
+  readonly where: (h: string, columns: 'lead' | 'slope', deg: string) => string;
+  /** A mark's button name, and the line a tap on it writes (its reason stays the core's English). */
+  readonly markLabel: (letter: string, where: string) => string;
+  readonly markReason: (letter: string, where: string) => string;
+  /** Each mark's legend. */
+  readonly marks: Readonly<Record<'wall' | 'gouge' | 'range', string>>;
+  /** The no-scallop star's legend. */
+  readonly noScallop: string;
+  /** The legend of the bold row: the user's h with its unit. */
+  readonly ownRow: (h: string) => string;
+  /** How to read a mark's reason, with a pointer and on a touch screen. */
+  readonly hintHover: string;
+  readonly hintTouch: string;
+  /** The heights field's label, and its message for a bad list (`got`: what was wrong, or null). */
+  readonly heightsLabel: (u: string, max: number) => string;
+  readonly heightsError: (u: string, max: number, got: string | null) => string;
+  /** The buttons, and the line after a download. */
+  readonly csv: string;
+  readonly print: string;
+  readonly close: string;
+  readonly saved: (fileName: string) => string;
 }
 
 /** What an error's sentence is made of, in the language and unit on screen. */

@@ -5,6 +5,7 @@
  */
 import type { Catalogue } from './catalogue';
 import { DE_ERRORS } from './deErrors';
+import { DE_SHEET } from './deSheet';
 
 export const catalogue: Catalogue = {
   lang: 'de',
@@ -170,4 +171,5 @@ export const catalogue: Catalogue = {
     'flat floor': 'ebener Boden',
   },
   errors: DE_ERRORS,
+  sheet: DE_SHEET,
 };

@@ -5,6 +5,7 @@
  */
 import type { Catalogue } from './catalogue';
 import { JA_ERRORS } from './jaErrors';
+import { JA_SHEET } from './jaSheet';
 
 export const catalogue: Catalogue = {
   lang: 'ja',
@@ -153,4 +154,5 @@ export const catalogue: Catalogue = {
     'flat floor': '平らな底面',
   },
   errors: JA_ERRORS,
+  sheet: JA_SHEET,
 };
