@@ -31,7 +31,10 @@
  * first press (-0.28 kB): 59.67 and 249.98. The shop sheet in Japanese and German (issue 30): its words
  * in each catalogue (+0.9 kB each), its English as one typed words object in the sheet's own chunk,
  * the locale's decimal sign shared with the language code (a chunk of its own, +0.24 kB), all on
- * first use; the first result +0.02 kB (the sheet reads the language in force): 59.68 and 253.05.
+ * first use; the first result +0.02 kB (the sheet reads the language in force): 59.68 and 253.05. Then
+ * the words the page writes itself (the three-axis step, a flat end's no-scallop line, Copy's spoken
+ * confirmation, an empty slider) and eleven more chrome keys in each language, put into the language
+ * by language.ts (on first use; copy.ts and fields.ts only hand over, +0.01 kB): 59.69 and 254.28.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -58,7 +61,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 253.25 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(253.25);
+  it('all of it, every .js file, is at most 254.5 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(254.5);
   });
 });

@@ -243,6 +243,52 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
   });
 
+  it('German words the page writes itself: the three-axis step, its question with a decimal comma, Copy said, an empty slider, a flat end lying flat', async () => {
+    await page
+      .context()
+      .grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(page.url()).origin });
+    await tap(page, 'de');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('de');
+    // An optional field left empty: its slider says so in German.
+    await expect.poll(() => page.getByTestId('slider-runout').getAttribute('aria-valuetext'), POLL).toBe('leer');
+    await page.locator('[data-testid="machine-switch"] input[value="3axis"]').check();
+    await typeInto(page, 'input-slope', '20,5');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-role="headline-label"]'), POLL)
+      .toBe('Waagerechter Bahnabstand Lxy (wie programmiert)');
+    expect(await text(page, '[data-i18n="alongSurface"]')).toBe('L entlang der Fläche');
+    await expect.poll(() => text(page, '[data-testid="headline-question"]'), POLL).toMatch(/^3-Achs, Neigung 20,5°, /);
+    await expect
+      .poll(() => text(page, '[data-testid="result-bar-question"]'), POLL)
+      .toMatch(/^3-Achs, Neigung 20,5°, /);
+    // Copy says what it copied in German (the value with a point, as pasted into CAM), the question too.
+    await page.evaluate(() => {
+      const live = document.querySelector('[data-testid="copy-status"]') as HTMLElement;
+      const said: string[] = [];
+      (window as unknown as { said: string[] }).said = said;
+      new MutationObserver(() => said.push(live.textContent ?? '')).observe(live, { childList: true });
+    });
+    await page.locator('.headline .big button.copy').click();
+    await expect
+      .poll(() => page.evaluate(() => (window as unknown as { said: string[] }).said.filter((t) => t !== '')), POLL)
+      .toEqual([expect.stringMatching(/^\d+\.\d+ \(mm\) kopiert: 3-Achs, Neigung 20,5°, .*\.$/)]);
+    // Back to five axes: a flat end without lead or tilt lies flat, said in German with its L = 2R.
+    await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();
+    await typeInto(page, 'input-Rcr', '0');
+    await typeInto(page, 'input-rho', '0');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="no-scallop"]'), POLL)
+      .toMatch(/^Kein Kamm: ein Schaftfräser ohne Anstell- und Kippwinkel .* also L = 2R = 6,0000 mm für jedes h\.$/);
+    await typeInto(page, 'input-Rcr', '1');
+    await typeInto(page, 'input-rho', '5');
+    await page.keyboard.press('Enter');
+    await tap(page, 'en');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
+    await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Step-over L');
+  });
+
   it("an embed takes its language from the link (the element's lang attribute), not the one remembered (English by now)", async () => {
     await page.goto(new URL(`${QUERY}&embed=1&lang=ja`, page.url()).href);
     await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('ja');

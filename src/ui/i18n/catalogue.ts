@@ -57,7 +57,18 @@ export type StaticKey =
   | 'rightFlank'
   | 'leftFlank'
   | 'contactOffset'
-  | 'cuspHeights';
+  | 'cuspHeights'
+  | 'openFull'
+  | 'embedTitle'
+  | 'alongSurface'
+  | 'cuspNormal'
+  | 'equivalentLead'
+  | 'equivalentTilt'
+  | 'lookupNote'
+  | 'sheetNote'
+  | 'staleBadge'
+  | 'typingBadge'
+  | 'camera';
 
 /** The words of the question named beside an answer (questionWords.ts), and its list separator ", ". */
 export type QuestionWord =
@@ -98,7 +109,9 @@ export type Phrase =
   | 'Copy the programmed step'
   | 'Copy L along the surface'
   | 'Copy the centre offset'
-  | 'Copy the current answer';
+  | 'Copy the current answer'
+  | 'Horizontal step Lxy (as programmed)'
+  | 'Step-down dz (as programmed)';
 
 /** The teaching views' tab names, by their English (views/*View.ts titles, threeAxisViewText.ts chartTitle). */
 export type TabName =
@@ -160,6 +173,20 @@ export interface Catalogue {
   readonly errors: Readonly<Record<InputErrorCode, (t: ErrorText) => string>>;
   /** The shop sheet's words (shopSheet.ts; its English in shopSheetWords.ts). */
   readonly sheet: SheetWords;
+  /** The sentences the page words itself around a number (language.ts puts them into the language). */
+  readonly said: SaidWords;
+}
+
+/** Sentences the page words in English around numbers (results.ts, copy.ts, fields.ts), in a language. */
+export interface SaidWords {
+  /** A flat end lying flat on a plane: no scallop; `diameter` is L = 2R with its unit. */
+  readonly noScallopPlane: (diameter: string) => string;
+  /** Copy's spoken confirmation: the value copied, its unit, the question it answers (or null). */
+  readonly copied: (value: string, unit: string, question: string | null) => string;
+  /** Copy's spoken failure: the value and its unit to copy by hand. */
+  readonly copyFailed: (value: string, unit: string) => string;
+  /** An empty optional field's slider (aria-valuetext). */
+  readonly empty: string;
 }
 
 /**

@@ -55,6 +55,19 @@ export const catalogue: Catalogue = {
     leftFlank: '(linke Flanke)',
     contactOffset: '(Versatz des Kontaktpunkts)',
     cuspHeights: 'Kammhöhen (Zickzack)',
+    openFull: 'Vollständigen Rechner öffnen',
+    embedTitle: 'Bahnabstandsrechner',
+    alongSurface: 'L entlang der Fläche',
+    cuspNormal: 'Kammhöhe h (normal zur Fläche)',
+    equivalentLead: 'Äquivalenter Anstellwinkel ρ',
+    equivalentTilt: 'Äquivalenter Kippwinkel β',
+    lookupNote:
+      'Exakter Bahnabstand L und L/2 dieses Werkzeugs und dieser Bahnfolge je Rautiefe × Anstellwinkel × Kippwinkel (3-Achs: × Neigung, der programmierte Abstand Lxy oder dz), in der Einheit am Bildschirm (in jeder Spalte und im Dateinamen genannt), im Stapelformat der Kommandozeile.',
+    sheetNote:
+      'Eine druckbare Seite: der Bahnabstand dieses Werkzeugs, dieser Anstellung und Fläche je Rautiefe × Anstellwinkel (3-Achs: × Neigung), mit CSV.',
+    staleBadge: 'Zeigt den letzten gültigen Zustand',
+    typingBadge: 'Eingabe: die Szene folgt, sobald Sie innehalten oder die Eingabetaste drücken',
+    camera: 'Kamera',
   },
   fields: {
     R: { label: 'Werkzeugradius R', hint: 'halber Werkzeugdurchmesser' },
@@ -119,6 +132,8 @@ export const catalogue: Catalogue = {
     'Copy L along the surface': 'Kopieren: L entlang der Fläche',
     'Copy the centre offset': 'Kopieren: den Versatz des Werkzeugmittelpunkts',
     'Copy the current answer': 'Kopieren: die aktuelle Antwort',
+    'Horizontal step Lxy (as programmed)': 'Waagerechter Bahnabstand Lxy (wie programmiert)',
+    'Step-down dz (as programmed)': 'Z-Zustellung dz (wie programmiert)',
   },
   finish: {
     'Finish: the feed marks the teeth leave': 'Oberfläche: die Vorschubmarken der Schneiden',
@@ -172,4 +187,11 @@ export const catalogue: Catalogue = {
   },
   errors: DE_ERRORS,
   sheet: DE_SHEET,
+  said: {
+    noScallopPlane: (d) =>
+      `Kein Kamm: ein Schaftfräser ohne Anstell- und Kippwinkel liegt flach auf der Ebene und hinterlässt bei keinem Bahnabstand bis zu seinem Durchmesser einen Kamm, also L = 2R = ${d} für jedes h.`,
+    copied: (v, u, q) => `${v} (${u}) kopiert${q === null ? '' : `: ${q}`}.`,
+    copyFailed: (v, u) => `Kopieren nicht möglich: den Wert markieren und von Hand kopieren (${v} ${u}).`,
+    empty: 'leer',
+  },
 };

@@ -55,6 +55,19 @@ export const catalogue: Catalogue = {
     leftFlank: '（左側）',
     contactOffset: '（接触点のずれ）',
     cuspHeights: 'カスプ高さ（往復）',
+    openFull: 'フル版の計算機を開く',
+    embedTitle: 'ピックフィード計算機',
+    alongSurface: '面に沿った L',
+    cuspNormal: 'カスプ高さ h（法線方向）',
+    equivalentLead: '等価前傾角 ρ',
+    equivalentTilt: '等価傾斜角 β',
+    lookupNote:
+      'この工具とパスの厳密なピックフィード L と L/2 を、カスプ高さ × 前傾角 × 傾斜角（3軸では × 勾配、CAM で指定する Lxy または dz）ごとに、画面の単位（各列とファイル名に明記）で、コマンドラインの一括処理と同じ形式にまとめます。',
+    sheetNote:
+      '印刷用の 1 ページ：この工具・姿勢・加工面のピックフィードをカスプ高さ × 前傾角（3軸では × 勾配）の表にし、CSV も付けます。',
+    staleBadge: '最後の有効な状態を表示中',
+    typingBadge: '入力中：手を止めるか Enter を押すと 3D 表示が更新されます',
+    camera: 'カメラ',
   },
   fields: {
     R: { label: '工具半径 R', hint: '工具直径の半分' },
@@ -103,6 +116,8 @@ export const catalogue: Catalogue = {
     'Copy L along the surface': '面に沿った L をコピー',
     'Copy the centre offset': '工具中心のずれをコピー',
     'Copy the current answer': '現在の答えをコピー',
+    'Horizontal step Lxy (as programmed)': '水平ピック Lxy（CAM で指定する値）',
+    'Step-down dz (as programmed)': 'Z ピッチ dz（CAM で指定する値）',
   },
   finish: {
     'Finish: the feed marks the teeth leave': '仕上げ面：刃が残す送りマーク',
@@ -155,4 +170,11 @@ export const catalogue: Catalogue = {
   },
   errors: JA_ERRORS,
   sheet: JA_SHEET,
+  said: {
+    noScallopPlane: (d) =>
+      `カスプなし：前傾も傾斜もないフラットエンドは平面に密着し、直径までのどのピックフィードでもカスプを残さないため、どの h でも L = 2R = ${d} です。`,
+    copied: (v, u, q) => `${v}（${u}）をコピーしました${q === null ? '' : `：${q}`}。`,
+    copyFailed: (v, u) => `コピーできませんでした。値を選択して手でコピーしてください（${v} ${u}）。`,
+    empty: '空欄',
+  },
 };
