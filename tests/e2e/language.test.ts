@@ -262,6 +262,16 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect
       .poll(() => text(page, '[data-testid="result-bar-question"]'), POLL)
       .toMatch(/^3-Achs, Neigung 20,5°, /);
+    // A three-axis refusal in German, its bound in mm with a decimal comma: h past the flank's or shank's limit.
+    const h = await page.getByTestId('input-h').inputValue();
+    await typeInto(page, 'input-h', '5');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="error-h"]'), POLL)
+      .toMatch(/^Rautiefe h muss bei dieser Neigung unter \d+,\d+ mm liegen \(eingegeben: 5\)[;:] /);
+    await typeInto(page, 'input-h', h);
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, '[data-testid="error-h"]'), POLL).toBe('');
     // Copy says what it copied in German (the value with a point, as pasted into CAM), the question too.
     await page.evaluate(() => {
       const live = document.querySelector('[data-testid="copy-status"]') as HTMLElement;

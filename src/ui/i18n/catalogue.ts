@@ -7,6 +7,7 @@
  */
 import type { PageFieldKey } from '../../core/input/fields';
 import type { AnyInputError, InputErrorCode } from '../../core/input/validate';
+import type { ThreeAxisInputError } from '../../core/threeAxis/validate';
 
 /** The languages of the page: English (the page as written), Japanese, German. */
 export type Lang = 'en' | 'ja' | 'de';
@@ -175,6 +176,31 @@ export interface Catalogue {
   readonly sheet: SheetWords;
   /** The sentences the page words itself around a number (language.ts puts them into the language). */
   readonly said: SaidWords;
+  /** Each three-axis error code's sentence (errorText.ts gives the field, the limit and what was typed). */
+  readonly threeAxis: Readonly<Record<ThreeAxisInputError['code'], (t: ThreeAxisText) => string>>;
+}
+
+/** What a three-axis error's sentence is made of, in the language and unit on screen. */
+export interface ThreeAxisText {
+  readonly e: ThreeAxisInputError;
+  /** The field's name in the language (the tool diameter's when the size is given as D). */
+  readonly label: string;
+  /** What was typed (or the value given), shortened to 24 characters. */
+  readonly got: string;
+  /** The bound it broke with its unit (a length in the user's unit; an angle in degrees), or ''. */
+  readonly limit: string;
+  /** A length (mm) in the user's unit with its symbol, the locale's decimal sign. */
+  readonly length: (mm: number) => string;
+  /** The field is a length (else an angle, or the passes). */
+  readonly isLength: boolean;
+  /** The passes are waterline (else raster). */
+  readonly waterline: boolean;
+  /** No bound to stay below (none given, or below the smallest length accepted): no answer here at all. */
+  readonly noLimit: boolean;
+  /** The tool radius's range, a surface radius's range, and the smallest length accepted, in the unit. */
+  readonly toolRange: readonly [string, string];
+  readonly radiusRange: readonly [string, string];
+  readonly minLength: string;
 }
 
 /** Sentences the page words in English around numbers (results.ts, copy.ts, fields.ts), in a language. */

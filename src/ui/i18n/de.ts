@@ -6,6 +6,7 @@
 import type { Catalogue } from './catalogue';
 import { DE_ERRORS } from './deErrors';
 import { DE_SHEET } from './deSheet';
+import { DE_THREE_AXIS } from './deThreeAxis';
 
 export const catalogue: Catalogue = {
   lang: 'de',
@@ -194,4 +195,5 @@ export const catalogue: Catalogue = {
     copyFailed: (v, u) => `Kopieren nicht möglich: den Wert markieren und von Hand kopieren (${v} ${u}).`,
     empty: 'leer',
   },
+  threeAxis: DE_THREE_AXIS,
 };

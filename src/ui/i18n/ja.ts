@@ -6,6 +6,7 @@
 import type { Catalogue } from './catalogue';
 import { JA_ERRORS } from './jaErrors';
 import { JA_SHEET } from './jaSheet';
+import { JA_THREE_AXIS } from './jaThreeAxis';
 
 export const catalogue: Catalogue = {
   lang: 'ja',
@@ -177,4 +178,5 @@ export const catalogue: Catalogue = {
     copyFailed: (v, u) => `コピーできませんでした。値を選択して手でコピーしてください（${v} ${u}）。`,
     empty: '空欄',
   },
+  threeAxis: JA_THREE_AXIS,
 };

@@ -8,7 +8,7 @@
  */
 import type { ToolStorage } from '../savedTools';
 import type { Catalogue, FinishPhrase, Lang, Phrase } from './catalogue';
-import { describeInputErrorIn } from './errorText';
+import { describeInputErrorIn, describeThreeAxisErrorIn } from './errorText';
 import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
 import { setCatalogue, catalogue as wordsInForce } from './words';
 
@@ -227,8 +227,12 @@ export class LanguageSwitch {
 
   private loaded(lang: Lang, catalogue: Catalogue | null): void {
     if (this.wanted !== lang) return;
-    setCatalogue(catalogue, localizeResults, (e, unit, options) =>
-      catalogue === null ? '' : describeInputErrorIn(catalogue, e, unit, options),
+    setCatalogue(
+      catalogue,
+      localizeResults,
+      (e, unit, options) => (catalogue === null ? '' : describeInputErrorIn(catalogue, e, unit, options)),
+      (e, unit, typed, waterline) =>
+        catalogue === null ? '' : describeThreeAxisErrorIn(catalogue, e, unit, typed, waterline),
     );
     applyCatalogue(document, catalogue);
     this.events.changed(lang);
