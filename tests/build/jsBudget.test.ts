@@ -36,7 +36,8 @@
  * confirmation, an empty slider) and eleven more chrome keys in each language, put into the language
  * by language.ts (on first use; copy.ts and fields.ts only hand over, +0.01 kB): 59.69 and 254.28; the
  * three-axis refusals worded from their data in each language (on first use; the hook that hands
- * them over, +0.04 kB): 59.73 and 256.56.
+ * them over, +0.04 kB): 59.73 and 256.56; the 3D scene's legend in each language (nineteen chrome keys):
+ * 59.73 and 257.55.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -63,7 +64,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 256.75 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(256.75);
+  it('all of it, every .js file, is at most 257.75 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(257.75);
   });
 });

@@ -34,6 +34,9 @@ const tap = (page: Page, lang: string) => page.locator(`[data-testid="lang-switc
 /** The shop sheet's Latin words a translation keeps: the paper's symbols, the unit, the marks' letters, file kinds. */
 const SHEET_KEPT = new Set('L h R D Rcr rho Rs Rf Rc Lxy dz mm in W G X Z CSV CAM'.split(' '));
 
+/** The scene legend's Latin words a translation keeps: the sheet's, and the paper's P_hp, P_base, CC, O, y0, N, i. */
+const LEGEND_KEPT = new Set([...SHEET_KEPT, 'P', 'hp', 'base', 'CC', 'O', 'y0', 'N', 'i', 'X', 'Y', 'Z']);
+
 /** The Latin words of a text. */
 const latinWords = (t: string): string[] => t.match(/[A-Za-z][A-Za-z0-9]*/g) ?? [];
 
@@ -151,6 +154,13 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       .poll(() => text(page, '[data-testid="headline-question"]'))
       .toMatch(/^5軸、前傾 5°、傾斜 0°、片方向、平面$/);
     expect(await text(page, '.headline .big button.copy')).toBe('コピー');
+    // The 3D scene's legend in Japanese: no Latin word but the paper's symbols (and its lang the page's).
+    const legend = await text(page, '[data-testid="scene-legend"]');
+    expect(
+      latinWords(legend).filter((w) => !LEGEND_KEPT.has(w)),
+      legend,
+    ).toEqual([]);
+    expect(await page.getByTestId('scene-legend').getAttribute('lang')).toBeNull();
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
     expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
     await pageSettled(page);

@@ -69,7 +69,26 @@ export type StaticKey =
   | 'sheetNote'
   | 'staleBadge'
   | 'typingBadge'
-  | 'camera';
+  | 'camera'
+  | 'legendTool'
+  | 'legendPath'
+  | 'legendContact'
+  | 'legendDimension'
+  | 'legendOffset'
+  | 'legendCentre'
+  | 'legendAxis'
+  | 'legendDesign'
+  | 'legendHplane'
+  | 'legendPhp'
+  | 'legendSection'
+  | 'legendLoop'
+  | 'legendRidge'
+  | 'legendDesignCurved'
+  | 'legendHsurface'
+  | 'legendCusp'
+  | 'legendAxes'
+  | 'legendTrace'
+  | 'legendExaggeration';
 
 /** The words of the question named beside an answer (questionWords.ts), and its list separator ", ". */
 export type QuestionWord =

@@ -69,6 +69,28 @@ export const catalogue: Catalogue = {
     staleBadge: 'Zeigt den letzten gültigen Zustand',
     typingBadge: 'Eingabe: die Szene folgt, sobald Sie innehalten oder die Eingabetaste drücken',
     camera: 'Kamera',
+    legendTool: 'Werkzeug und seine Nachbarbahnen (im Zickzack gespiegelt)',
+    legendPath: 'Kontaktpunktbahnen (CC), im Abstand L',
+    legendContact: 'CC (P_base): Kontaktpunkt dieser Bahn',
+    legendDimension: 'L und L/2, ab der CC-Bahn dieser Bahn',
+    legendOffset: 'y0: Versatz des Kontaktpunkts vom Werkzeugmittelpunkt O',
+    legendCentre: 'O: Werkzeugmittelpunkt',
+    legendAxis: 'Werkzeugachse, ab ihrem Fußpunkt auf der Fläche',
+    legendDesign: 'Sollebene',
+    legendHplane: 'h-Pseudoebene',
+    legendPhp: 'P_hp: Punkt des Werkzeugs auf Kammhöhe',
+    legendSection: 'Schnittkreis durch jeden P_hp',
+    legendLoop: 'Torus / h-Pseudoebene',
+    legendRidge: 'Kämme in Vorschubrichtung (die Grate zwischen den Bahnen)',
+    legendDesignCurved:
+      'Zylinder oder doppelt gekrümmte Fläche (gefärbt nach der Höhe über der Tangentialebene: blau fällt ab, orange steigt, in Bändern)',
+    legendHsurface: 'h-Pseudofläche (die um h versetzte Fläche)',
+    legendCusp: 'Kämme darauf',
+    legendAxes:
+      'X (Vorschub), Y, Z am Kontaktpunkt (3-Achs: die Szene steht in der Maschine, Werkzeugachse senkrecht, Lxy oder dz ist der programmierte Abstand)',
+    legendTrace: 'Schritt für Schritt: geprüfter Schnitt, Kandidaten P_hp[i], gefundener Punkt',
+    legendExaggeration:
+      'Höhen nahe der Fläche N-fach überhöht, wenn der Kamm zu niedrig zum Sehen ist (Hinweis in der Szene; Zahlen unverändert)',
   },
   fields: {
     R: { label: 'Werkzeugradius R', hint: 'halber Werkzeugdurchmesser' },
