@@ -37,7 +37,9 @@
  * by language.ts (on first use; copy.ts and fields.ts only hand over, +0.01 kB): 59.69 and 254.28; the
  * three-axis refusals worded from their data in each language (on first use; the hook that hands
  * them over, +0.04 kB): 59.73 and 256.56; the 3D scene's legend in each language (nineteen chrome keys):
- * 59.73 and 257.55.
+ * 59.73 and 257.55; the comparison charts' captions, axis titles, choices and notes in each
+ * language (on first use; the tabs' relabel redraws the visible view, a shorter call, -0.01 kB):
+ * 59.72 and 259.15.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -64,7 +66,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 257.75 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(257.75);
+  it('all of it, every .js file, is at most 259.25 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(259.25);
   });
 });

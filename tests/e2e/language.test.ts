@@ -261,6 +261,41 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('de');
     // An optional field left empty: its slider says so in German.
     await expect.poll(() => page.getByTestId('slider-runout').getAttribute('aria-valuetext'), POLL).toBe('leer');
+    // The comparison charts in German: captions, axis titles, choices, the legend's head, the summary,
+    // the ticks' decimal commas; no English word of theirs left but the procedures' names.
+    await page.locator('#tab-chart').click();
+    const caption = page.getByTestId('chart-lead').locator('figcaption');
+    await expect
+      .poll(() => caption.textContent(), POLL)
+      .toBe('L [mm] über dem Anstellwinkel rho [°] (R, Rcr, beta, h fest; gestrichelt: aktueller rho = 5)');
+    expect(await page.getByTestId('chart-summary').textContent()).toMatch(/^Bei rho = 5°, beta = 0°, L: .*\d,\d{4} mm/);
+    const charts = await page.getByTestId('comparison-chart').evaluate((e) => {
+      const classic = e.querySelector('.chart-classic') as HTMLElement;
+      const parts = [...classic.querySelectorAll('figcaption, text, option, .chart-legend-head, [aria-label]')];
+      return {
+        lang: classic.lang,
+        words: [...parts.map((p) => p.textContent ?? ''), ...parts.map((p) => p.getAttribute('aria-label') ?? '')].join(
+          ' ',
+        ),
+        ticks: [...classic.querySelectorAll('text')]
+          .map((t) => t.textContent ?? '')
+          .filter((t) => /^[\d.,−-]+$/.test(t)),
+      };
+    });
+    expect(charts.lang).toBe('de');
+    expect(
+      charts.words.match(
+        /\b(against|lead|tilt|fixed|dashed|current|error|axis|angle|signed|approximation|along|length|at|deg)\b/gi,
+      ),
+      charts.words,
+    ).toBeNull();
+    expect(charts.ticks.some((t) => /\d,\d/.test(t)) && !charts.ticks.some((t) => /\d\.\d/.test(t))).toBe(true);
+    // A switch while the charts are on screen draws them anew in its words.
+    await tap(page, 'ja');
+    await expect.poll(() => caption.textContent(), POLL).toMatch(/^前傾角 rho \[°\] に対する L \[mm\]/);
+    await tap(page, 'de');
+    await expect.poll(() => caption.textContent(), POLL).toMatch(/^L \[mm\] über dem Anstellwinkel/);
+    await page.locator('#tab-profile').click();
     await page.locator('[data-testid="machine-switch"] input[value="3axis"]').check();
     await typeInto(page, 'input-slope', '20,5');
     await page.keyboard.press('Enter');

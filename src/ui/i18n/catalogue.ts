@@ -197,6 +197,42 @@ export interface Catalogue {
   readonly said: SaidWords;
   /** Each three-axis error code's sentence (errorText.ts gives the field, the limit and what was typed). */
   readonly threeAxis: Readonly<Record<ThreeAxisInputError['code'], (t: ThreeAxisText) => string>>;
+  /** The "L against lead and tilt" charts' captions, axis titles, legends and notes (views/chartView.ts). */
+  readonly chart: ChartWords;
+}
+
+/**
+ * The five-axis comparison charts' words (views/chartView.ts; English in views/chartWords.ts): the
+ * numbers given as text (degrees without their unit, `u` a unit symbol or %), the procedures' names
+ * and the solvers' reasons for a gap kept as they are.
+ */
+export interface ChartWords {
+  /** The captions: L against the lead, the approximations' error along the lead, L against the tilt. */
+  readonly leadTitle: (u: string, rho: string) => string;
+  readonly errorTitle: (u: string) => string;
+  readonly tiltTitle: (u: string, beta: string) => string;
+  /** The axis titles: the lead, the tilt, the error in `u`. */
+  readonly leadAxis: string;
+  readonly tiltAxis: string;
+  readonly errorAxis: (u: string) => string;
+  /** A chart's description for a screen reader, after its caption. */
+  readonly description: (title: string) => string;
+  /** The legend's head: the values at the current angle. */
+  readonly legendHead: (angle: 'rho' | 'beta', deg: string) => string;
+  /** After a lead-only model's name with a tilt; a value missing (the notes say why); none. */
+  readonly leadOnly: string;
+  readonly seeBelow: string;
+  readonly none: string;
+  /** The error unit's and the lead axis's choices and their names. */
+  readonly errorIn: { readonly pct: string; readonly length: string; readonly name: string };
+  readonly rhoScale: { readonly log: string; readonly linear: string; readonly name: string };
+  /** The values at the current posture (`values`: "Exact 2.8872 mm, Sekine ..."); outside the charted range. */
+  readonly summary: (rho: string, beta: string, values: string) => string;
+  readonly noSummary: string;
+  /** On a cylinder: what the exact curve and the approximations are. */
+  readonly cylinder: (concave: boolean, axis: 'feed' | 'cross') => string;
+  /** A gap's note before its reason: the procedures, the angle, from (and to, or null at one sample). */
+  readonly gap: (names: string, angle: 'rho' | 'beta', from: string, to: string | null) => string;
 }
 
 /** What a three-axis error's sentence is made of, in the language and unit on screen. */

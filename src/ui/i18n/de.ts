@@ -4,6 +4,7 @@
  * symbols kept. The README's glossary names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
+import { DE_CHART } from './deChart';
 import { DE_ERRORS } from './deErrors';
 import { DE_SHEET } from './deSheet';
 import { DE_THREE_AXIS } from './deThreeAxis';
@@ -218,4 +219,5 @@ export const catalogue: Catalogue = {
     empty: 'leer',
   },
   threeAxis: DE_THREE_AXIS,
+  chart: DE_CHART,
 };

@@ -4,6 +4,7 @@
  * names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
+import { JA_CHART } from './jaChart';
 import { JA_ERRORS } from './jaErrors';
 import { JA_SHEET } from './jaSheet';
 import { JA_THREE_AXIS } from './jaThreeAxis';
@@ -198,4 +199,5 @@ export const catalogue: Catalogue = {
     empty: '空欄',
   },
   threeAxis: JA_THREE_AXIS,
+  chart: JA_CHART,
 };

@@ -146,6 +146,13 @@ export class TeachingPanel {
     } else if (this.ctx !== null) view.update(this.ctx);
   }
 
+  /** The language changed: the tabs named anew, and the visible view drawn in its words. */
+  relabel(): void {
+    this.nameTabs();
+    const view = this.views.find((v) => v.id === this.active);
+    if (view) this.updateView(view);
+  }
+
   /**
    * The tab names follow what the views draw (the chart's: the five-axis sweeps, the slope's, the
    * radii's), in the language in force (i18n/words.ts; English: the views' own titles).
