@@ -39,7 +39,8 @@
  * them over, +0.04 kB): 59.73 and 256.56; the 3D scene's legend in each language (nineteen chrome keys):
  * 59.73 and 257.55; the comparison charts' captions, axis titles, choices and notes in each
  * language (on first use; the tabs' relabel redraws the visible view, a shorter call, -0.01 kB):
- * 59.72 and 259.15.
+ * 59.72 and 259.15; the notices' sentences (a worker restarted or stopped, link values replaced) in
+ * each language, put in by language.ts when the page writes the notice (on first use): 59.73 and 260.06.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -66,7 +67,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 259.25 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(259.25);
+  it('all of it, every .js file, is at most 260.25 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(260.25);
   });
 });

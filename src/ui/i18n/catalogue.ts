@@ -268,6 +268,13 @@ export interface SaidWords {
   readonly copyFailed: (value: string, unit: string) => string;
   /** An empty optional field's slider (aria-valuetext). */
   readonly empty: string;
+  /**
+   * A worker that stopped after `restarts` restarts in a row, or was restarted (`restarts` null):
+   * the words before and after its reason (the worker's own, kept in English).
+   */
+  readonly restarted: (who: 'results' | 'views', restarts: string | null) => readonly [string, string];
+  /** Before the link values replaced (each named in English, by the link's parameter names). */
+  readonly linkReplaced: string;
 }
 
 /**

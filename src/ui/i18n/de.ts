@@ -217,6 +217,16 @@ export const catalogue: Catalogue = {
     copied: (v, u, q) => `${v} (${u}) kopiert${q === null ? '' : `: ${q}`}.`,
     copyFailed: (v, u) => `Kopieren nicht möglich: den Wert markieren und von Hand kopieren (${v} ${u}).`,
     empty: 'leer',
+    restarted: (who, restarts) => {
+      const subject = who === 'results' ? 'Der Rechner' : 'Der Rechner der Lehransichten';
+      return restarts === null
+        ? [`${subject} wurde neu gestartet (`, '). Ihre letzte Anfrage wurde erneut gesendet.']
+        : [
+            `${subject} hat nach ${restarts} Neustarts in Folge aufgehört (`,
+            `): ${who === 'results' ? 'die gezeigten Zahlen sind' : 'die Ansichten sind'} veraltet und so markiert. Eine beliebige Eingabe ändern, um es erneut zu versuchen.`,
+          ];
+    },
+    linkReplaced: 'Einige Werte des Links wurden ersetzt: ',
   },
   threeAxis: DE_THREE_AXIS,
   chart: DE_CHART,

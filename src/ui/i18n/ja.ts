@@ -197,6 +197,16 @@ export const catalogue: Catalogue = {
     copied: (v, u, q) => `${v}（${u}）をコピーしました${q === null ? '' : `：${q}`}。`,
     copyFailed: (v, u) => `コピーできませんでした。値を選択して手でコピーしてください（${v} ${u}）。`,
     empty: '空欄',
+    restarted: (who, restarts) => {
+      const subject = who === 'results' ? '計算' : '解説ビューの計算';
+      return restarts === null
+        ? [`${subject}を再起動しました（`, '）。最後の要求をもう一度送りました。']
+        : [
+            `${subject}は ${restarts} 回続けて再起動したあと停止しました（`,
+            `）。${who === 'results' ? '表示中の数値' : 'ビュー'}は古く、そのように表示しています。入力をどれか変えるともう一度試します。`,
+          ];
+    },
+    linkReplaced: 'リンクの値の一部を置き換えました：',
   },
   threeAxis: JA_THREE_AXIS,
   chart: JA_CHART,

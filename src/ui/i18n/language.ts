@@ -10,6 +10,7 @@ import type { ToolStorage } from '../savedTools';
 import type { Catalogue, FinishPhrase, Lang, Phrase } from './catalogue';
 import { describeInputErrorIn, describeThreeAxisErrorIn } from './errorText';
 import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
+import { noticeParts } from './noticeWords';
 import { setCatalogue, catalogue as wordsInForce } from './words';
 
 /** Loads a language's catalogue (null for English). */
@@ -146,6 +147,36 @@ function spoken(live: HTMLElement, words: Catalogue): void {
   else if (failed) live.textContent = words.said.copyFailed(failed[1] ?? '', failed[2] ?? '');
 }
 
+/**
+ * The notice box in the language in force: the page writes it in English (a worker restarted or
+ * stopped, link values replaced); its sentence is put into the language, the worker's reason and
+ * the link's values (named by their parameters) kept in English in a part that says so. The English
+ * is kept to word it again in another language, or to put it back.
+ */
+export function localizeNotice(box: HTMLElement): void {
+  const words = wordsInForce();
+  const text = box.textContent ?? '';
+  const ours = box.dataset.worded === text;
+  if (ours && (words?.lang ?? 'en') === (box.getAttribute('lang') ?? 'en')) return;
+  const english = ours ? (box.dataset.english ?? text) : text;
+  delete box.dataset.worded;
+  delete box.dataset.english;
+  box.removeAttribute('lang');
+  if (ours && words === null) box.textContent = english;
+  if (words === null) return;
+  const parts = noticeParts(english, words);
+  if (parts !== null) {
+    const [before, kept, after] = parts;
+    const part = document.createElement('span');
+    part.lang = 'en';
+    part.textContent = kept;
+    box.replaceChildren(before, part, after);
+    box.lang = words.lang;
+    box.dataset.english = english;
+    box.dataset.worded = box.textContent ?? '';
+  }
+}
+
 /** What the language switch tells the page. */
 export interface LanguageEvents {
   /** The words changed (a catalogue applied): redraw what code writes. */
@@ -185,6 +216,14 @@ export class LanguageSwitch {
     start: Lang,
   ) {
     this.wanted = start;
+    // The notice box follows the language whenever the page writes into it.
+    const box = document.querySelector<HTMLElement>('[data-testid="notice"]');
+    if (box !== null)
+      new MutationObserver(() => localizeNotice(box)).observe(box, {
+        childList: true,
+        characterData: true,
+        subtree: true,
+      });
     const radios = [...root.querySelectorAll<HTMLInputElement>('input[name="lang"]')];
     this.radios = radios;
     // A tap made while this code was loading stands (the radio is checked already): taken as the user's.
@@ -235,6 +274,8 @@ export class LanguageSwitch {
         catalogue === null ? '' : describeThreeAxisErrorIn(catalogue, e, unit, typed, waterline),
     );
     applyCatalogue(document, catalogue);
+    const box = document.querySelector<HTMLElement>('[data-testid="notice"]');
+    if (box !== null) localizeNotice(box);
     this.events.changed(lang);
   }
 }
