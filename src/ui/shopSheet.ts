@@ -10,13 +10,21 @@
  * curved point).
  */
 
-import { fromMm, type LengthUnit, toMm, unitSymbol } from '../core/input/units';
-import { SHEET_HEIGHTS, SHEET_MARKS, type SheetCase, type ShopSheet, shopSheet } from '../core/output/shopSheet';
+import { formatInputNumber, fromMm, type LengthUnit, toMm, unitSymbol } from '../core/input/units';
+import {
+  passesOf,
+  SHEET_HEIGHTS,
+  SHEET_MARKS,
+  type SheetCase,
+  type SheetCell,
+  type ShopSheet,
+  shopSheet,
+} from '../core/output/shopSheet';
 import type { PageRequest } from '../worker/pageProtocol';
 import { formatDeg } from './format';
 import type { SheetWords } from './i18n/catalogue';
 import { localDecimal } from './i18n/langChoice';
-import { catalogue } from './i18n/words';
+import { catalogue, describeError, describeThreeAxis } from './i18n/words';
 import {
   cellText,
   heightsText,
@@ -43,6 +51,39 @@ function sheetWords(): SheetWords {
 /** A text's numbers with the decimal sign of the language in force (German 0,05; every digit kept). */
 function local(text: string): string {
   return localDecimal(text, catalogue());
+}
+
+/**
+ * A refused cell's reason in the language in force, from what it is made of (the input errors',
+ * the three-axis errors' or the sheet's own sentences); English: the core's reason. `typed` is the
+ * row's h as the sheet shows it.
+ */
+function reasonOf(
+  cell: Extract<SheetCell, { ok: false }>,
+  c: SheetCase,
+  unit: LengthUnit,
+  typed: string,
+): { readonly text: string; readonly english: boolean } {
+  const words = catalogue();
+  if (words === null) return { text: cell.reason, english: true };
+  const own = words.sheet.refusals;
+  const r = cell.refusal;
+  const waterline = c.kind === 'three-axis' && passesOf(c.problem) === 'waterline';
+  const text =
+    r.kind === 'input'
+      ? r.errors.map((e) => describeError(e, unit, e.field === 'h' ? { typed } : {})).join(' ')
+      : r.kind === 'three-axis'
+        ? r.errors
+            .map((e) => describeThreeAxis(e, unit, e.field === 'h' ? typed : null, waterline) ?? e.message)
+            .join(' ')
+        : r.kind === 'curved-wall'
+          ? own.curvedWall(local(`${formatInputNumber(fromMm(r.limitMm, unit))} ${unitSymbol(unit)}`), typed)
+          : r.kind === 'lead-range'
+            ? own.leadRange
+            : r.kind === 'curved-gouge'
+              ? own.curvedGouge
+              : own.noStepDown;
+  return { text, english: false };
 }
 
 /** An element with a class, optional test id and text (text only: nothing is parsed as HTML). */
@@ -233,13 +274,14 @@ export class ShopSheetPanel {
         el('p', 'sheet-line', t),
       ),
     );
-    this.renderTable(sheet, unit, rows, words);
+    this.renderTable(c, sheet, unit, rows, words);
     this.renderLegend(sheet, rows.own, u, words);
     this.reason.hidden = true;
     this.reason.textContent = '';
   }
 
   private renderTable(
+    c: SheetCase,
     sheet: ShopSheet,
     unit: LengthUnit,
     rows: { values: readonly number[]; own: number | null },
@@ -279,9 +321,10 @@ export class ShopSheetPanel {
         const td = el('td', cell.ok ? '' : 'refused', cell.ok ? local(cellText(cell, unit)) : '');
         if (!cell.ok) {
           // Hover shows the title; a tap or a click (a button: keyboard too) writes the reason below the table.
-          // The reason is the core's sentence, in English (said so by its lang).
-          td.title = cell.reason;
-          td.lang = 'en';
+          // The reason in the language in force; the core's English sentence says so by its lang.
+          const why = reasonOf(cell, c, unit, heightsText([value]));
+          td.title = why.text;
+          if (why.english) td.lang = 'en';
           const letter = cellText(cell, unit);
           const mark = el('button', 'mark', letter);
           mark.type = 'button';
@@ -292,9 +335,9 @@ export class ShopSheetPanel {
           mark.setAttribute('aria-label', words.markLabel(letter, where));
           mark.addEventListener('click', () => {
             this.reason.hidden = false;
-            const why = el('span', '', cell.reason);
-            why.lang = 'en';
-            this.reason.replaceChildren(words.markReason(letter, where), why);
+            const reason = el('span', '', why.text);
+            if (why.english) reason.lang = 'en';
+            this.reason.replaceChildren(words.markReason(letter, where), reason);
           });
           td.append(mark);
         }

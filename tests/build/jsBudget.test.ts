@@ -40,7 +40,9 @@
  * 59.73 and 257.55; the comparison charts' captions, axis titles, choices and notes in each
  * language (on first use; the tabs' relabel redraws the visible view, a shorter call, -0.01 kB):
  * 59.72 and 259.15; the notices' sentences (a worker restarted or stopped, link values replaced) in
- * each language, put in by language.ts when the page writes the notice (on first use): 59.73 and 260.06.
+ * each language, put in by language.ts when the page writes the notice (on first use): 59.73 and 260.06;
+ * a shop sheet mark's reason in each language from its data (the sheet reads two more of words.ts's
+ * exports, +0.01 kB): 59.74 and 260.57.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -67,7 +69,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 260.25 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(260.25);
+  it('all of it, every .js file, is at most 260.75 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(260.75);
   });
 });

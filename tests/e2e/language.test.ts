@@ -32,7 +32,7 @@ const text = async (page: Page, selector: string) => (await page.locator(selecto
 const tap = (page: Page, lang: string) => page.locator(`[data-testid="lang-switch"] input[value="${lang}"]`).check();
 
 /** The shop sheet's Latin words a translation keeps: the paper's symbols, the unit, the marks' letters, file kinds. */
-const SHEET_KEPT = new Set('L h R D Rcr rho Rs Rf Rc Lxy dz mm in W G X Z CSV CAM'.split(' '));
+const SHEET_KEPT = new Set('L h R D Rcr rho Rs Rf Rc Lxy dz mm in W G X Z CSV CAM sin'.split(' '));
 
 /** The scene legend's Latin words a translation keeps: the sheet's, and the paper's P_hp, P_base, CC, O, y0, N, i. */
 const LEGEND_KEPT = new Set([...SHEET_KEPT, 'P', 'hp', 'base', 'CC', 'O', 'y0', 'N', 'i', 'X', 'Y', 'Z']);
@@ -63,19 +63,25 @@ async function openSheet(page: Page, sign: '.' | ','): Promise<string> {
   await field.fill('0.01 0.05 1.5');
   await field.press('Enter');
   await expect.poll(async () => (await rowHeads(page)).at(-1), POLL).toBe(`1${sign}5`);
+  // A mark's full reason, tapped (its words read with the rest).
+  await page.getByTestId('shop-sheet-table').locator('td.refused .mark').first().click();
+  await expect.poll(() => text(page, '[data-testid="shop-sheet-reason"]'), POLL).toMatch(/\S/);
   return message;
 }
 
 /**
  * Every word of the open sheet a person reads or hears: its text (the legend's hints for a pointer
- * and for touch, the caption, the heights' label, the buttons) and its elements' accessible names.
+ * and for touch, the caption, the heights' label, the buttons, a mark's reason) and its elements'
+ * accessible names and titles (a refused cell's reason on hover).
  */
 const sheetWords = (page: Page): Promise<string> =>
   page.getByTestId('shop-sheet-dialog').evaluate((d) => {
     const texts: string[] = [];
     const walker = document.createTreeWalker(d, NodeFilter.SHOW_TEXT);
     for (let node = walker.nextNode(); node !== null; node = walker.nextNode()) texts.push(node.nodeValue ?? '');
-    const names = [...d.querySelectorAll('[aria-label]')].map((e) => e.getAttribute('aria-label'));
+    const names = [...d.querySelectorAll('[aria-label], [title]')].map(
+      (e) => `${e.getAttribute('aria-label') ?? ''} ${e.getAttribute('title') ?? ''}`,
+    );
     return [...texts, ...names].join(' ');
   });
 

@@ -191,8 +191,8 @@ export interface Catalogue {
   readonly question: Readonly<Record<QuestionWord, string>>;
   /** Each input error code's sentence (errorText.ts gives the field, the limit and what was typed). */
   readonly errors: Readonly<Record<InputErrorCode, (t: ErrorText) => string>>;
-  /** The shop sheet's words (shopSheet.ts; its English in shopSheetWords.ts). */
-  readonly sheet: SheetWords;
+  /** The shop sheet's words (shopSheet.ts; its English in shopSheetWords.ts) and its refusals' own sentences. */
+  readonly sheet: SheetWords & { readonly refusals: SheetRefusalWords };
   /** The sentences the page words itself around a number (language.ts puts them into the language). */
   readonly said: SaidWords;
   /** Each three-axis error code's sentence (errorText.ts gives the field, the limit and what was typed). */
@@ -287,6 +287,19 @@ export type SheetSurface =
   | { readonly kind: 'cylinder'; readonly concave: boolean; readonly radius: string; readonly axis: 'feed' | 'cross' }
   | { readonly kind: 'doubly-curved'; readonly feed: string; readonly cross: string }
   | { readonly kind: 'revolution'; readonly feed: string | null; readonly cross: string | null };
+
+/**
+ * The sentences of a shop sheet's refusals that are the sheet's own (core/output/shopSheet.ts
+ * SheetRefusal; English: the core's reasons): the lead out of range, the tool gouging a doubly
+ * curved point, h at or above that point's limit (with its unit) and what was given, waterline passes
+ * without a step-down. The others are the input errors' and the three-axis errors' sentences.
+ */
+export interface SheetRefusalWords {
+  readonly leadRange: string;
+  readonly curvedGouge: string;
+  readonly curvedWall: (limit: string, got: string) => string;
+  readonly noStepDown: string;
+}
 
 /** What a sheet's cells give: the step-over L, the horizontal step Lxy (raster) or the step-down dz (waterline). */
 export type SheetStep = 'interval' | 'horizontalStep' | 'stepDown';

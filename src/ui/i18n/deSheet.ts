@@ -3,7 +3,7 @@
  * systems' terms (Bahnabstand, Rautiefe, Anstellwinkel, Z-Zustellung; as de.ts); the symbols and
  * the marks' letters kept. Part of de.ts.
  */
-import type { SheetWords } from './catalogue';
+import type { Catalogue } from './catalogue';
 
 const STEP = {
   interval: 'Bahnabstand L benachbarter Bahnen, entlang der Fläche',
@@ -11,7 +11,7 @@ const STEP = {
   stepDown: 'Z-Zustellung dz benachbarter Z-Ebenen, wie programmiert',
 } as const;
 
-export const DE_SHEET: SheetWords = {
+export const DE_SHEET: Catalogue['sheet'] = {
   title: (step, u) => `Werkstattblatt: ${step} (${u})`,
   tool: (d, r, rcr) => `Werkzeug: D ${d} (R ${r}), Eckenradius Rcr ${rcr}`,
   fiveAxis: (tilt, pattern, surface) =>
@@ -55,4 +55,12 @@ export const DE_SHEET: SheetWords = {
   print: 'Drucken',
   close: 'Schließen',
   saved: (name) => `${name} gespeichert.`,
+  refusals: {
+    leadRange: 'Der Anstellwinkel rho muss mindestens 0° und unter 90° betragen.',
+    curvedGouge:
+      'Das Werkzeug verletzt diesen doppelt gekrümmten Punkt in dieser Anstellung: das bewegte Werkzeug reicht abseits des Kontaktpunkts in die Fläche.',
+    curvedWall: (limit, got) =>
+      `Die Rautiefe h muss an diesem Punkt und in dieser Anstellung unter ${limit} liegen (eingegeben: ${got}).`,
+    noStepDown: 'Z-Ebenen haben hier keine Z-Zustellung.',
+  },
 };

@@ -3,7 +3,7 @@
  * shop's terms (ピックフィード, カスプ高さ, 前傾角, 水平ピック, Z ピッチ; as ja.ts); the symbols and the
  * marks' letters kept. Part of ja.ts.
  */
-import type { SheetWords } from './catalogue';
+import type { Catalogue } from './catalogue';
 
 const STEP = {
   interval: 'ピックフィード L（隣り合うパスの間隔、面に沿って）',
@@ -11,7 +11,7 @@ const STEP = {
   stepDown: 'Z ピッチ dz（隣り合う等高線の段の高さの差、CAM で指定する値）',
 } as const;
 
-export const JA_SHEET: SheetWords = {
+export const JA_SHEET: Catalogue['sheet'] = {
   title: (step, u) => `現場用シート：${step}（${u}）`,
   tool: (d, r, rcr) => `工具：D ${d}（R ${r}）、コーナ半径 Rcr ${rcr}`,
   fiveAxis: (tilt, pattern, surface) =>
@@ -54,4 +54,10 @@ export const JA_SHEET: SheetWords = {
   print: '印刷',
   close: '閉じる',
   saved: (name) => `${name} を保存しました。`,
+  refusals: {
+    leadRange: '前傾角 rho は 0° 以上 90° 未満にしてください。',
+    curvedGouge: 'この姿勢では工具がこの複曲面上の点に食い込みます。動く工具が接触点から離れた所で面の内側に入ります。',
+    curvedWall: (limit, got) => `カスプ高さ h はこの点と姿勢では ${limit} 未満にしてください（入力：${got}）。`,
+    noStepDown: 'ここでは等高線パスに Z ピッチがありません。',
+  },
 };

@@ -74,7 +74,15 @@ const latin = (t: string) => t.match(/[A-Za-z][A-Za-z0-9]*/g) ?? [];
 const FILE = /shop-sheet_\S+\.csv/g;
 
 describe("the shop sheet's words", () => {
-  const english = new Set(everything(EN_SHEET).flatMap((t) => latin(t.replace(FILE, ''))));
+  const english = new Set(
+    [
+      ...everything(EN_SHEET),
+      'Lead angle rho must be at least 0 and below 90 degrees.',
+      'The tool gouges this doubly curved point at this posture: the swept tool reaches inside the surface away from the contact.',
+      'Scallop height h must be below 0.5 mm at this point and posture (got 1.5).',
+      'Waterline passes have no step-down here.',
+    ].flatMap((t) => latin(t.replace(FILE, ''))),
+  );
 
   it('the English words are the sheet as written (the lines the sheet showed before the catalogues)', () => {
     expect(everything(EN_SHEET).slice(0, 2)).toEqual([
@@ -90,7 +98,11 @@ describe("the shop sheet's words", () => {
     ['de', DE_SHEET],
   ] as const)
     it(`${lang}: no English word in any sheet's lines, legend, names or buttons; every number given is said`, () => {
-      for (const text of everything(words)) {
+      const own = words.refusals;
+      // The sheet's own refusals (English: the core's reasons, whose words count as the sheet's).
+      const refusals = [own.leadRange, own.curvedGouge, own.curvedWall('0.5 mm', '1.5'), own.noStepDown];
+      expect(refusals[2]).toContain('0.5 mm');
+      for (const text of [...everything(words), ...refusals]) {
         const left = latin(text.replace(FILE, '')).filter((w) => !KEPT.has(w) && (lang === 'ja' || english.has(w)));
         expect(left, text).toEqual([]);
       }
