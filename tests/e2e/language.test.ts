@@ -230,6 +230,8 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
         latinWords(t).filter((w) => !SHEET_KEPT.has(w) && (lang === 'ja' || english.has(w)));
       const words = `${message} ${await sheetWords(page)}`;
       expect(leftOver(words), `${lang}: ${words}`).toEqual([]);
+      // axe on the open sheet in the language (its reason tapped).
+      if (lang === 'ja') expect(await axeViolations(page)).toEqual([]);
       // Printed (print media): the sheet alone, in the language.
       await page.emulateMedia({ media: 'print' });
       expect(await page.locator('#app').isVisible()).toBe(false);
