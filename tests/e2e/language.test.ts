@@ -339,6 +339,30 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await typeInto(page, 'input-h', h);
     await page.keyboard.press('Enter');
     await expect.poll(() => text(page, '[data-testid="error-h"]'), POLL).toBe('');
+    // The three-axis chart in German: captions, axis titles, legends, the crossing sentence, notes,
+    // the ticks' decimal commas; no English word of its own left.
+    await page.locator('#tab-chart').click();
+    const slopeCaption = page.getByTestId('chart-slope').locator('figcaption');
+    await expect
+      .poll(() => slopeCaption.textContent(), POLL)
+      .toMatch(/^Programmierter Abstand \[mm\] über der Neigung/);
+    const slopeView = await page.getByTestId('chart-slope-view').evaluate((e) => ({
+      lang: (e as HTMLElement).lang,
+      words: [
+        ...[...e.querySelectorAll('figcaption, text, li, p')].map((p) => p.textContent ?? ''),
+        ...[...e.querySelectorAll('[aria-label]')].map((p) => p.getAttribute('aria-label') ?? ''),
+      ].join(' '),
+      ticks: [...e.querySelectorAll('text')].map((t) => t.textContent ?? '').filter((t) => /^[\d.,−-]+$/.test(t)),
+    }));
+    expect(slopeView.lang).toBe('de');
+    expect(
+      slopeView.words.match(
+        /\b(against|slope|step|scallop|programmed|fixed|dashed|dotted|current|constant|leaves|raster|waterline|flat|floor|above|below|cross|larger|at|of|the|no)\b/gi,
+      ),
+      slopeView.words,
+    ).toBeNull();
+    expect(slopeView.ticks.some((t) => /\d,\d/.test(t)) && !slopeView.ticks.some((t) => /\d\.\d/.test(t))).toBe(true);
+    await page.locator('#tab-profile').click();
     // Copy says what it copied in German (the value with a point, as pasted into CAM), the question too.
     await page.evaluate(() => {
       const live = document.querySelector('[data-testid="copy-status"]') as HTMLElement;

@@ -199,6 +199,44 @@ export interface Catalogue {
   readonly threeAxis: Readonly<Record<ThreeAxisInputError['code'], (t: ThreeAxisText) => string>>;
   /** The "L against lead and tilt" charts' captions, axis titles, legends and notes (views/chartView.ts). */
   readonly chart: ChartWords;
+  /** The three-axis chart "step against slope" (views/slopeChart.ts, pageChartText.ts). */
+  readonly slope: SlopeWords;
+}
+
+/**
+ * The three-axis chart's words (views/slopeChart.ts and pageChartText.ts; English in
+ * views/slopeWords.ts): numbers given as text with their units (angles with °), the symbols kept.
+ */
+export interface SlopeWords {
+  /** The captions: the programmed step against the slope for h; the scallop a constant step leaves. */
+  readonly stepTitle: (u: string, h: string, slope: string) => string;
+  readonly cuspTitle: (u: string, constant: string, h: string) => string;
+  /** The axis titles. */
+  readonly slopeAxis: string;
+  readonly stepAxis: (u: string) => string;
+  readonly scallopAxis: (u: string) => string;
+  /** A chart's description for a screen reader: its caption and the crossing sentence. */
+  readonly description: (title: string, sentence: string) => string;
+  /** The legends: their head at the current slope; a strategy's step (psi: its raster angle); the flat floor's; a constant step's scallop; none. */
+  readonly legendHead: (slope: string) => string;
+  readonly strategy: (passes: 'raster' | 'waterline', psi: string) => string;
+  readonly floor: string;
+  readonly scallopOf: (constant: string) => string;
+  readonly none: string;
+  /** A band without a step (its title). */
+  readonly gap: string;
+  /** No step above `slope`: h reaches the largest scallop the tool can leave (or the surface's end). */
+  readonly noStepAbove: (slope: string, h: string, revolution: boolean) => string;
+  /** Where raster (at psi) and waterline cross for h (`both`: the step there and the slope), or that they do not. */
+  readonly crossing: (
+    crossing: string | null,
+    psi: string,
+    h: string,
+    both: string | null,
+    revolution: boolean,
+  ) => string;
+  /** Slopes where a constant step leaves no scallop (from, to or null at one sample), and why by the core's code. */
+  readonly refusal: (step: string, from: string, to: string | null, code: string) => string;
 }
 
 /**

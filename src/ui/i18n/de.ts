@@ -7,6 +7,7 @@ import type { Catalogue } from './catalogue';
 import { DE_CHART } from './deChart';
 import { DE_ERRORS } from './deErrors';
 import { DE_SHEET } from './deSheet';
+import { DE_SLOPE } from './deSlope';
 import { DE_THREE_AXIS } from './deThreeAxis';
 
 export const catalogue: Catalogue = {
@@ -230,4 +231,5 @@ export const catalogue: Catalogue = {
   },
   threeAxis: DE_THREE_AXIS,
   chart: DE_CHART,
+  slope: DE_SLOPE,
 };

@@ -7,6 +7,7 @@ import type { Catalogue } from './catalogue';
 import { JA_CHART } from './jaChart';
 import { JA_ERRORS } from './jaErrors';
 import { JA_SHEET } from './jaSheet';
+import { JA_SLOPE } from './jaSlope';
 import { JA_THREE_AXIS } from './jaThreeAxis';
 
 export const catalogue: Catalogue = {
@@ -210,4 +211,5 @@ export const catalogue: Catalogue = {
   },
   threeAxis: JA_THREE_AXIS,
   chart: JA_CHART,
+  slope: JA_SLOPE,
 };

@@ -6,7 +6,9 @@
 import { formatSignificant, fromMm, unitSymbol } from '../../core/input/units';
 import type { RadiusGap, RadiusSweepData, SlopeChartData } from '../../worker/teachProtocol';
 import { formatDeg, formatLenUnit } from '../format';
+import type { SlopeWords } from '../i18n/catalogue';
 import type { Unit } from '../state';
+import { EN_SLOPE } from './slopeWords';
 
 /** Degrees in words: 38.2° (three significant digits, never -0). */
 export function deg(d: number): string {
@@ -21,17 +23,17 @@ export function radiusNames(which: RadiusSweepData['which']): { self: string; ot
 /**
  * One sentence: where raster (at the compared raster angle) and waterline program the same step
  * for the charted scallop h, and which programs the larger above and below; or, plainly, that they
- * do not cross. Lengths in the user's unit.
+ * do not cross. Lengths in the user's unit; in `words`' language.
  */
-export function crossingSentence(d: SlopeChartData, unit: Unit): string {
-  const raster = `raster at psi = ${deg(d.crossingRasterAngleDeg)}`;
+export function crossingSentence(d: SlopeChartData, unit: Unit, words: SlopeWords = EN_SLOPE): string {
   const h = formatLenUnit(d.hMm, unit, 'height');
-  const where = d.onRevolution ? ' (on a plane of that slope)' : '';
-  if (d.crossingDeg === null)
-    return `Waterline and ${raster} do not cross for a scallop of ${h}${where}: ${raster} programs the larger step at every slope where both are valid.`;
-  const step =
-    d.crossingStepMm === null ? '' : ` (both ${formatLenUnit(d.crossingStepMm, unit)} at ${deg(d.crossingDeg)})`;
-  return `Above ${deg(d.crossingDeg)} waterline programs a larger step than ${raster} for the same scallop of ${h}, below it ${raster} does${step}${where}.`;
+  return words.crossing(
+    d.crossingDeg === null ? null : deg(d.crossingDeg),
+    deg(d.crossingRasterAngleDeg),
+    h,
+    d.crossingDeg === null || d.crossingStepMm === null ? null : formatLenUnit(d.crossingStepMm, unit),
+    d.onRevolution,
+  );
 }
 
 /** A signed radius in words: "convex 40 mm", "concave 20 mm", "straight". */
@@ -60,23 +62,10 @@ export function radiusGapNotes(s: RadiusSweepData, unit: Unit): string[] {
   });
 }
 
-/** Why a constant step leaves no cusp, by the core's code (core/threeAxis/errors.ts). */
-const REFUSAL_WORDS: Readonly<Record<string, string>> = {
-  'beyond-step': 'passes that far apart leave a wall, not a scallop',
-  'shank-cuts': "the tool's shank, not its corner, would form the cusp",
-  'flank-wall': 'the flank rises to a wall before the passes meet',
-  'wall-only': 'the side rises straight from the contact: no scallop at any step',
-  'past-surface': 'the next pass would lie past the usable surface',
-  'needs-slope': 'on a flat floor a step-down means nothing',
-  gouging: 'the tool would gouge the surface',
-};
-
-/** One sentence per run of slopes where the constant step leaves no cusp, and why. */
-export function refusalNotes(d: SlopeChartData, unit: Unit): string[] {
+/** One sentence per run of slopes where the constant step leaves no cusp, and why (in `words`' language). */
+export function refusalNotes(d: SlopeChartData, unit: Unit, words: SlopeWords = EN_SLOPE): string[] {
   const step = `${d.passes === 'raster' ? 'Lxy' : 'dz'} = ${formatLenUnit(d.constantStepMm, unit)}`;
-  return d.constantStepRefusals.map((r) => {
-    const range =
-      r.fromDeg === r.toDeg ? `at about ${deg(r.fromDeg)}` : `from about ${deg(r.fromDeg)} to ${deg(r.toDeg)}`;
-    return `No scallop for the constant ${step} ${range}: ${REFUSAL_WORDS[r.code] ?? 'the solver refuses it'}.`;
-  });
+  return d.constantStepRefusals.map((r) =>
+    words.refusal(step, deg(r.fromDeg), r.fromDeg === r.toDeg ? null : deg(r.toDeg), r.code),
+  );
 }
