@@ -374,6 +374,32 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect
       .poll(() => page.evaluate(() => (window as unknown as { said: string[] }).said.filter((t) => t !== '')), POLL)
       .toEqual([expect.stringMatching(/^\d+\.\d+ \(mm\) kopiert: 3-Achs, Neigung 20,5°, .*\.$/)]);
+    // A doubly curved point's charts in German: caption, axis titles, legends, summary, ticks.
+    await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();
+    await page.locator('input[name="surface"][value="curved"]').check();
+    await typeInto(page, 'input-feed-radius', '80');
+    await typeInto(page, 'input-cross-radius', '40');
+    await page.keyboard.press('Enter');
+    await page.locator('#tab-chart').click();
+    await expect
+      .poll(() => page.getByTestId('chart-radius-feed').locator('figcaption').textContent(), POLL)
+      .toMatch(/^L \[mm\] über \|Rf\| \[mm\], logarithmische Achse \(Rc fest konvex 40 mm; /);
+    const radiusView = await page.getByTestId('chart-radius-view').evaluate((e) => ({
+      lang: (e as HTMLElement).lang,
+      words: [...e.querySelectorAll('figcaption, text, li, p')].map((p) => p.textContent ?? '').join(' '),
+    }));
+    expect(radiusView.lang).toBe('de');
+    expect(
+      radiusView.words.match(
+        /\b(against|log|axis|held|fixed|dashed|current|convex|concave|straight|at|with|no|the)\b/gi,
+      ),
+      radiusView.words,
+    ).toBeNull();
+    expect(await page.getByTestId('chart-radius-summary').textContent()).toMatch(
+      /^Bei Rf konvex 80 mm, Rc konvex 40 mm: L = \d+,\d{4} mm/,
+    );
+    await page.locator('#tab-profile').click();
+    await page.locator('input[name="surface"][value="plane"]').check();
     // Back to five axes: a flat end without lead or tilt lies flat, said in German with its L = 2R.
     await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();
     await typeInto(page, 'input-Rcr', '0');

@@ -201,6 +201,39 @@ export interface Catalogue {
   readonly chart: ChartWords;
   /** The three-axis chart "step against slope" (views/slopeChart.ts, pageChartText.ts). */
   readonly slope: SlopeWords;
+  /** A doubly curved point's charts of L against each radius (views/radiusChart.ts, pageChartText.ts). */
+  readonly radius: RadiusWords;
+}
+
+/**
+ * A doubly curved point's charts' words (views/radiusChart.ts, pageChartText.ts; English in
+ * views/radiusWords.ts): `self` and `other` the radii's symbols (Rf, Rc), lengths with their unit.
+ */
+export interface RadiusWords {
+  /** A signed radius: convex or concave and its size, or straight. */
+  readonly radius: (kind: 'convex' | 'concave' | 'straight', size: string) => string;
+  /** The caption: L against |self| on a log axis, the other held, the current radius. */
+  readonly title: (u: string, self: string, other: string, held: string, current: string) => string;
+  readonly xLabel: (self: string, u: string) => string;
+  readonly description: (title: string) => string;
+  /** A band without L: gouging, or h at or above the flank or shank limit. */
+  readonly band: { readonly gouging: string; readonly limit: string };
+  /** The legend: its head at the current radius, each branch's name, a value missing. */
+  readonly legendHead: (self: string, current: string) => string;
+  readonly branch: (self: string, kind: 'convex' | 'concave' | 'straight') => string;
+  readonly seeBelow: string;
+  /** The values at the current point: the radii, L, and L with each radius straight. */
+  readonly summary: (rf: string, rc: string, L: string, rfStraight: string, rcStraight: string) => string;
+  /** A gap's note: the branch (convex or concave), |self| about `from` (to `to`), the other radius and the value it is held at, and why. */
+  readonly gap: (
+    side: string,
+    self: string,
+    from: string,
+    to: string | null,
+    other: string,
+    held: string,
+    reason: 'gouging' | 'limit',
+  ) => string;
 }
 
 /**

@@ -6,6 +6,7 @@
 import type { Catalogue } from './catalogue';
 import { DE_CHART } from './deChart';
 import { DE_ERRORS } from './deErrors';
+import { DE_RADIUS } from './deRadius';
 import { DE_SHEET } from './deSheet';
 import { DE_SLOPE } from './deSlope';
 import { DE_THREE_AXIS } from './deThreeAxis';
@@ -232,4 +233,5 @@ export const catalogue: Catalogue = {
   threeAxis: DE_THREE_AXIS,
   chart: DE_CHART,
   slope: DE_SLOPE,
+  radius: DE_RADIUS,
 };

@@ -6,6 +6,7 @@
 import type { Catalogue } from './catalogue';
 import { JA_CHART } from './jaChart';
 import { JA_ERRORS } from './jaErrors';
+import { JA_RADIUS } from './jaRadius';
 import { JA_SHEET } from './jaSheet';
 import { JA_SLOPE } from './jaSlope';
 import { JA_THREE_AXIS } from './jaThreeAxis';
@@ -212,4 +213,5 @@ export const catalogue: Catalogue = {
   threeAxis: JA_THREE_AXIS,
   chart: JA_CHART,
   slope: JA_SLOPE,
+  radius: JA_RADIUS,
 };

@@ -6,8 +6,9 @@
 import { formatSignificant, fromMm, unitSymbol } from '../../core/input/units';
 import type { RadiusGap, RadiusSweepData, SlopeChartData } from '../../worker/teachProtocol';
 import { formatDeg, formatLenUnit } from '../format';
-import type { SlopeWords } from '../i18n/catalogue';
+import type { RadiusWords, SlopeWords } from '../i18n/catalogue';
 import type { Unit } from '../state';
+import { EN_RADIUS } from './radiusWords';
 import { EN_SLOPE } from './slopeWords';
 
 /** Degrees in words: 38.2° (three significant digits, never -0). */
@@ -36,30 +37,30 @@ export function crossingSentence(d: SlopeChartData, unit: Unit, words: SlopeWord
   );
 }
 
-/** A signed radius in words: "convex 40 mm", "concave 20 mm", "straight". */
-export function radiusWords(radiusMm: number, unit: Unit): string {
-  if (!Number.isFinite(radiusMm)) return 'straight';
+/** A signed radius in words: "convex 40 mm", "concave 20 mm", "straight" (in `words`' language). */
+export function radiusWords(radiusMm: number, unit: Unit, words: RadiusWords = EN_RADIUS): string {
+  if (!Number.isFinite(radiusMm)) return words.radius('straight', '');
   const r = formatSignificant(fromMm(Math.abs(radiusMm), unit), { digits: 6, trimZeros: true });
-  return `${radiusMm > 0 ? 'convex' : 'concave'} ${r} ${unitSymbol(unit)}`;
+  return words.radius(radiusMm > 0 ? 'convex' : 'concave', `${r} ${unitSymbol(unit)}`);
 }
 
-/** One sentence per gap: which radii of which side have no L, and why (radii in the user's unit). */
-export function radiusGapNotes(s: RadiusSweepData, unit: Unit): string[] {
+/** One sentence per gap: which radii of which side have no L, and why (radii in the user's unit; in `words`' language). */
+export function radiusGapNotes(s: RadiusSweepData, unit: Unit, words: RadiusWords = EN_RADIUS): string[] {
   const { self, other } = radiusNames(s.which);
-  const held = `${other} held ${radiusWords(s.heldMm, unit)}`;
+  const held = radiusWords(s.heldMm, unit, words);
   const r = (mm: number) =>
     `${formatSignificant(fromMm(mm, unit), { digits: 3, trimZeros: true })} ${unitSymbol(unit)}`;
-  return s.gaps.map((g: RadiusGap) => {
-    const range =
-      g.fromMm === g.toMm
-        ? `at about |${self}| = ${r(g.fromMm)}`
-        : `for |${self}| from about ${r(g.fromMm)} to ${r(g.toMm)}`;
-    const why =
-      g.reason === 'gouging'
-        ? 'the tool gouges the surface at this posture'
-        : 'h is at or above the flank or shank limit there';
-    return `No ${g.side} L ${range} (${held}): ${why}.`;
-  });
+  return s.gaps.map((g: RadiusGap) =>
+    words.gap(
+      g.side,
+      self,
+      r(g.fromMm),
+      g.fromMm === g.toMm ? null : r(g.toMm),
+      other,
+      held,
+      g.reason === 'gouging' ? 'gouging' : 'limit',
+    ),
+  );
 }
 
 /** One sentence per run of slopes where the constant step leaves no cusp, and why (in `words`' language). */

@@ -1,13 +1,13 @@
 /**
  * The teaching charts' words in Japanese and German (issue 30): every caption, axis title, legend
- * head, choice, summary and note of the "L against lead and tilt" charts and of the three-axis
- * "step against slope" chart, for each variant (a cylinder's side and axis, a gap at one sample or
+ * head, choice, summary and note of the "L against lead and tilt" charts, of the three-axis
+ * "step against slope" chart and of a doubly curved point's charts of L against each radius, for each variant (a cylinder's side and axis, a gap at one sample or
  * over a range, raster or waterline, crossing or not, on a surface of revolution, every refusal code
  * of the constant step): no English word left (Japanese: no Latin word but the symbols and units),
  * every number given said.
  */
 import { describe, expect, it } from 'vitest';
-import type { ChartWords, SlopeWords } from '../../../src/ui/i18n/catalogue';
+import type { ChartWords, RadiusWords, SlopeWords } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
 
@@ -63,9 +63,30 @@ function slopeTexts(s: SlopeWords): string[] {
   ];
 }
 
-const KEPT = new Set('L h R D Rcr rho beta alpha psi Lxy Lxy0 dz mm in CAM Z T V N S'.split(' '));
+function radiusTexts(r: RadiusWords): string[] {
+  return [
+    r.radius('convex', '40 mm'),
+    r.radius('concave', '20 mm'),
+    r.radius('straight', ''),
+    r.title('mm', 'Rf', 'Rc', r.radius('concave', '40 mm'), r.radius('convex', '80 mm')),
+    r.xLabel('Rc', 'in'),
+    r.description('T'),
+    r.band.gouging,
+    r.band.limit,
+    r.legendHead('Rf', r.radius('convex', '80 mm')),
+    r.branch('Rf', 'convex'),
+    r.branch('Rc', 'concave'),
+    r.branch('Rc', 'straight'),
+    r.seeBelow,
+    r.summary('80 mm', '-40 mm', '1.2345 mm', '1.5 mm', '1.1 mm'),
+    r.gap('convex', 'Rf', '12.5 mm', null, 'Rc', r.radius('straight', ''), 'gouging'),
+    r.gap('concave', 'Rc', '12.5 mm', '17.5 mm', 'Rf', r.radius('convex', '80 mm'), 'limit'),
+  ];
+}
+
+const KEPT = new Set('L h R D Rcr rho beta alpha psi Lxy Lxy0 dz mm in CAM Z T V N S Rf Rc'.split(' '));
 const ENGLISH =
-  /\b(against|lead|tilt|fixed|dashed|dotted|current|error|axis|angle|signed|approximation|along|length|at|deg|slope|step|scallop|programmed|constant|leaves|raster|waterline|flat|floor|above|below|cross|larger|of|the|no|and|on|cylinder|answer|from|to)\b/i;
+  /\b(against|lead|tilt|fixed|dashed|dotted|current|error|axis|angle|signed|approximation|along|length|at|deg|slope|step|scallop|programmed|constant|leaves|raster|waterline|flat|floor|above|below|cross|larger|of|the|no|and|on|cylinder|answer|from|to|convex|concave|straight|held|log|gouging|limit|posture)\b/i;
 
 describe("the teaching charts' words", () => {
   for (const [name, c] of [
@@ -73,7 +94,7 @@ describe("the teaching charts' words", () => {
     ['de', de],
   ] as const)
     it(`${name}: no English word in any caption, axis title, choice, legend, summary or note; the numbers said`, () => {
-      const texts = [...chartTexts(c.chart), ...slopeTexts(c.slope)];
+      const texts = [...chartTexts(c.chart), ...slopeTexts(c.slope), ...radiusTexts(c.radius)];
       for (const text of texts) {
         if (name === 'ja')
           for (const w of text.match(/[A-Za-z][A-Za-z0-9]*/g) ?? []) expect(KEPT.has(w), `${text}: "${w}"`).toBe(true);
@@ -82,6 +103,8 @@ describe("the teaching charts' words", () => {
       expect(c.chart.gap('N', 'beta', '12.5', '17.5')).toContain('17.5');
       expect(c.slope.crossing('38.2°', '15°', '0.05 mm', '0.912 mm', true)).toContain('0.912 mm');
       expect(c.slope.refusal('dz = 1 mm', '10°', '20°', 'gouging')).toContain('20°');
+      expect(c.radius.gap('concave', 'Rc', '12.5 mm', '17.5 mm', 'Rf', '80 mm', 'limit')).toContain('17.5 mm');
+      expect(c.radius.summary('80 mm', '-40 mm', '1.2345 mm', '1.5 mm', '1.1 mm')).toContain('1.2345 mm');
       // Each refusal code has its own words (none falls back to the generic sentence).
       expect(new Set(CODES.map((code) => c.slope.refusal('L', '1°', null, code))).size).toBe(CODES.length);
     });
