@@ -44,7 +44,8 @@
  * a shop sheet mark's reason in each language from its data (the sheet reads two more of words.ts's
  * exports, +0.01 kB): 59.74 and 260.57; the three-axis chart "step against slope" in each language
  * (on first use): 59.74 and 261.94; a doubly curved point's charts of L against each radius in each
- * language (on first use): 59.74 and 262.66. The first result has 9 bytes left under its ratchet.
+ * language (on first use): 59.74 and 262.66; the views' lines over a page question in each language
+ * (on first use): 59.74 and 263.64. The first result has 13 bytes left under its ratchet.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -71,7 +72,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 262.75 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(262.75);
+  it('all of it, every .js file, is at most 263.75 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(263.75);
   });
 });

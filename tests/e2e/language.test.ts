@@ -363,6 +363,13 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     ).toBeNull();
     expect(slopeView.ticks.some((t) => /\d,\d/.test(t)) && !slopeView.ticks.some((t) => /\d\.\d/.test(t))).toBe(true);
     await page.locator('#tab-profile').click();
+    // The profile's line over the three-axis question in German, its numbers with a decimal comma.
+    await expect
+      .poll(() => page.getByTestId('views-page-note').textContent(), POLL)
+      .toMatch(
+        /^Das senkrechte Werkzeug bei Neigung 20,5°, Zeilenwinkel 0° ist das Werkzeug mit Anstellwinkel \d+(,\d+)?°/,
+      );
+    expect(await page.getByTestId('views-page-note').getAttribute('lang')).toBe('de');
     // Copy says what it copied in German (the value with a point, as pasted into CAM), the question too.
     await page.evaluate(() => {
       const live = document.querySelector('[data-testid="copy-status"]') as HTMLElement;

@@ -203,6 +203,25 @@ export interface Catalogue {
   readonly slope: SlopeWords;
   /** A doubly curved point's charts of L against each radius (views/radiusChart.ts, pageChartText.ts). */
   readonly radius: RadiusWords;
+  /** The line over a view that does not draw a page question itself (views/curvedViewText.ts, threeAxisViewText.ts). */
+  readonly viewNotes: ViewNoteWords;
+}
+
+/**
+ * The neutral line over a teaching view for a doubly curved point or a three-axis question (English
+ * in views/viewNoteWords.ts): what the view works on and where the question is answered.
+ */
+export interface ViewNoteWords {
+  /** A doubly curved point: what each view that does not draw it works on, then where it is answered. */
+  readonly curved: Readonly<Record<'tables' | 'stepper' | 'formulas' | 'surface', string>>;
+  readonly curvedAnswered: string;
+  /** The three-axis question in words: its slope and raster angle (degrees, without °), or waterline (null). */
+  readonly question: (slope: string, psi: string | null) => string;
+  /** The paper's tables in three-axis mode; waterline on a surface of revolution (nothing to draw). */
+  readonly tables: string;
+  readonly revolution: (question: string) => string;
+  /** The upright tool over the question as the tool at the equivalent lead and tilt (degrees, without their unit) on a plane (the surface view, the others). */
+  readonly equivalent: (question: string, lead: string, tilt: string, surface: boolean) => string;
 }
 
 /**

@@ -234,4 +234,21 @@ export const catalogue: Catalogue = {
   chart: DE_CHART,
   slope: DE_SLOPE,
   radius: DE_RADIUS,
+  viewNotes: {
+    curved: {
+      tables: 'Die Tabellen der Studie gelten für deren eigene Bedingungen, auf einer Ebene',
+      stepper: 'Das Verfahren der Studie, Schritt für Schritt, löst eine Ebene oder einen Zylinder',
+      formulas: 'Die Formeln der Studie gelten für eine Ebene oder einen Zylinder',
+      surface: 'Die Simulation der bearbeiteten Fläche läuft auf einer Ebene oder einem Zylinder',
+    },
+    curvedAnswered:
+      'Diesen doppelt gekrümmten Punkt beantworten die Ergebnisse oben, das Profil (sein Schnitt quer zum Vorschub) und das Diagramm „L über jedem Radius“.',
+    question: (slope, psi) => `Neigung ${slope}°, ${psi === null ? 'Z-Ebenen' : `Zeilenwinkel ${psi}°`}`,
+    tables:
+      'Die Tabellen der Studie: deren eigene 5-Achs-Bedingungen (Anstellung auf einer Ebene), zum Nachschlagen; sie sind nicht die 3-Achs-Frage am Bildschirm.',
+    revolution: (q) =>
+      `Z-Ebenen auf einer Rotationsfläche (${q}) ändern ihren Abstand von Ebene zu Ebene; diese Ansicht zeichnet kongruente Bahnen und hat hier nichts zu zeichnen: das Diagramm „Abstand über Flächenneigung“ und die 3D-Szene zeigen sie.`,
+    equivalent: (q, lead, tilt, surface) =>
+      `Das senkrechte Werkzeug bei ${q} ist das Werkzeug mit Anstellwinkel ${lead}°, Kippwinkel ${tilt}° auf einer Ebene, in einer Richtung: ${surface ? 'seine Bahnen im Koordinatensystem der Ebene simuliert.' : 'im Koordinatensystem der Ebene gezeichnet (Längen entlang der Ebene, h entlang ihrer Normalen).'}`,
+  },
 };

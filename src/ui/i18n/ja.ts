@@ -214,4 +214,20 @@ export const catalogue: Catalogue = {
   chart: JA_CHART,
   slope: JA_SLOPE,
   radius: JA_RADIUS,
+  viewNotes: {
+    curved: {
+      tables: '論文の表は論文自身の条件（平面）のものです',
+      stepper: '論文の手順の段階表示は平面か円筒を解きます',
+      formulas: '論文の数式は平面か円筒を扱います',
+      surface: '加工面のシミュレーションは平面か円筒で行います',
+    },
+    curvedAnswered:
+      'この複曲面上の点の答えは、上の結果、送り直交断面（送りに直交する断面）と「各半径と L」のグラフにあります。',
+    question: (slope, psi) => `勾配 ${slope}°、${psi === null ? '等高線' : `走査角 ${psi}°`}`,
+    tables: '論文の表：論文自身の 5 軸の条件（平面上の前傾）で、参考として示します。画面の 3 軸の問いではありません。',
+    revolution: (q) =>
+      `回転面上の等高線パス（${q}）は段ごとに間隔が変わるので、合同なパスを描くこのビューには描くものがありません。「勾配とピッチ」のグラフと 3D 表示が示します。`,
+    equivalent: (q, lead, tilt, surface) =>
+      `${q}で垂直に立つ工具は、平面上で前傾角 ${lead}°、傾斜角 ${tilt}°、片方向の工具と同じです。${surface ? 'そのパスを平面自身の座標でシミュレーションします。' : '平面自身の座標で描きます（長さは平面に沿って、h は法線方向）。'}`,
+  },
 };

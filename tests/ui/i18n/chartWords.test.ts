@@ -7,7 +7,7 @@
  * every number given said.
  */
 import { describe, expect, it } from 'vitest';
-import type { ChartWords, RadiusWords, SlopeWords } from '../../../src/ui/i18n/catalogue';
+import type { ChartWords, RadiusWords, SlopeWords, ViewNoteWords } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
 
@@ -84,9 +84,22 @@ function radiusTexts(r: RadiusWords): string[] {
   ];
 }
 
+function noteTexts(n: ViewNoteWords): string[] {
+  return [
+    ...Object.values(n.curved),
+    n.curvedAnswered,
+    n.question('30', '15'),
+    n.question('30', null),
+    n.tables,
+    n.revolution(n.question('30', null)),
+    n.equivalent(n.question('30', '15'), '12.5', '3.25', true),
+    n.equivalent(n.question('30', '15'), '12.5', '3.25', false),
+  ];
+}
+
 const KEPT = new Set('L h R D Rcr rho beta alpha psi Lxy Lxy0 dz mm in CAM Z T V N S Rf Rc'.split(' '));
 const ENGLISH =
-  /\b(against|lead|tilt|fixed|dashed|dotted|current|error|axis|angle|signed|approximation|along|length|at|deg|slope|step|scallop|programmed|constant|leaves|raster|waterline|flat|floor|above|below|cross|larger|of|the|no|and|on|cylinder|answer|from|to|convex|concave|straight|held|log|gouging|limit|posture)\b/i;
+  /\b(against|lead|tilt|fixed|dashed|dotted|current|error|axis|angle|signed|approximation|along|length|at|deg|slope|step|scallop|programmed|constant|leaves|raster|waterline|flat|floor|above|below|cross|larger|of|the|no|and|on|cylinder|answer|from|to|convex|concave|straight|held|log|gouging|limit|posture|paper|tables|plane|view|upright|frame|simulated|drawn|point|results)\b/i;
 
 describe("the teaching charts' words", () => {
   for (const [name, c] of [
@@ -94,7 +107,12 @@ describe("the teaching charts' words", () => {
     ['de', de],
   ] as const)
     it(`${name}: no English word in any caption, axis title, choice, legend, summary or note; the numbers said`, () => {
-      const texts = [...chartTexts(c.chart), ...slopeTexts(c.slope), ...radiusTexts(c.radius)];
+      const texts = [
+        ...chartTexts(c.chart),
+        ...slopeTexts(c.slope),
+        ...radiusTexts(c.radius),
+        ...noteTexts(c.viewNotes),
+      ];
       for (const text of texts) {
         if (name === 'ja')
           for (const w of text.match(/[A-Za-z][A-Za-z0-9]*/g) ?? []) expect(KEPT.has(w), `${text}: "${w}"`).toBe(true);
@@ -105,6 +123,7 @@ describe("the teaching charts' words", () => {
       expect(c.slope.refusal('dz = 1 mm', '10°', '20°', 'gouging')).toContain('20°');
       expect(c.radius.gap('concave', 'Rc', '12.5 mm', '17.5 mm', 'Rf', '80 mm', 'limit')).toContain('17.5 mm');
       expect(c.radius.summary('80 mm', '-40 mm', '1.2345 mm', '1.5 mm', '1.1 mm')).toContain('1.2345 mm');
+      expect(c.viewNotes.equivalent('Q', '12.5', '3.25', true)).toMatch(/12\.5°.*3\.25°/);
       // Each refusal code has its own words (none falls back to the generic sentence).
       expect(new Set(CODES.map((code) => c.slope.refusal('L', '1°', null, code))).size).toBe(CODES.length);
     });
