@@ -94,7 +94,9 @@ function core(id: string): boolean {
 
 /** The page's parts loaded on first use but the views and the scene: the shop sheet, the tool shelf, the table's grid and download. */
 function tools(id: string): boolean {
-  return /\/src\/ui\/(shopSheet|shopSheetText|toolShelf|savedTools|tableRequest|lookupDownload)\.ts$/.test(id);
+  return /\/src\/ui\/(shopSheet|shopSheetText|shopSheetWords|toolShelf|savedTools|tableRequest|lookupDownload)\.ts$/.test(
+    id,
+  );
 }
 
 /** Tests that drive headless Chromium or read the built sites (dist/, test-results/site-e2e/). */

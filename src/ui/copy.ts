@@ -7,6 +7,7 @@
  * button for COPIED_MS and by a polite live region that names the value and its unit.
  */
 import { type LengthUnit, unitSymbol } from '../core/input/units';
+import { localize } from './i18n/words';
 
 /** How long the button says "Copied" (ms). */
 export const COPIED_MS = 1500;
@@ -46,6 +47,8 @@ export function wireCopyButtons(root: ParentNode, live: HTMLElement, question: (
         live.textContent = ok
           ? `Copied ${text} (${unit})${asked ? `: ${asked}` : ''}.`
           : `Could not copy: select the value and copy it by hand (${text} ${unit}).`;
+        // In the language in force (i18n/language.ts; English: as written).
+        localize(live);
         if (timer !== null) clearTimeout(timer);
         timer = setTimeout(() => {
           button.textContent = label();

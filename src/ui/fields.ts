@@ -372,7 +372,8 @@ export class FieldsPanel {
       const v = parseField(state.fields[key]);
       if (v !== null && view.slider !== document.activeElement) view.slider.value = String(v);
       // An empty optional field (the teeth and feed): its slider says so, not the value its thumb rests at.
-      if (v === null && state.fields[key].trim() === '') view.slider.setAttribute('aria-valuetext', 'empty');
+      if (v === null && state.fields[key].trim() === '')
+        view.slider.setAttribute('aria-valuetext', catalogue()?.said.empty ?? 'empty');
       else view.slider.removeAttribute('aria-valuetext');
       const message = messages.get(key) ?? '';
       if (view.error.textContent !== message) view.error.textContent = message;

@@ -10,16 +10,26 @@
  * curved point).
  */
 
-import { fromMm, type LengthUnit, toMm, unitSymbol } from '../core/input/units';
-import { SHEET_HEIGHTS, SHEET_MARKS, type SheetCase, type ShopSheet, shopSheet } from '../core/output/shopSheet';
+import { formatInputNumber, fromMm, type LengthUnit, toMm, unitSymbol } from '../core/input/units';
+import {
+  passesOf,
+  SHEET_HEIGHTS,
+  SHEET_MARKS,
+  type SheetCase,
+  type SheetCell,
+  type ShopSheet,
+  shopSheet,
+} from '../core/output/shopSheet';
 import type { PageRequest } from '../worker/pageProtocol';
 import { formatDeg } from './format';
+import type { SheetWords } from './i18n/catalogue';
+import { localDecimal } from './i18n/langChoice';
+import { catalogue, describeError, describeThreeAxis } from './i18n/words';
 import {
   cellText,
   heightsText,
   MAX_SHEET_ROWS,
   marksUsed,
-  NO_SCALLOP_LEGEND,
   NO_SCALLOP_STAR,
   ownHeightMm,
   parseHeights,
@@ -30,7 +40,51 @@ import {
   sheetTitleLines,
   stepSymbol,
 } from './shopSheetText';
+import { EN_SHEET } from './shopSheetWords';
 import { shownToolNameLines } from './toolName';
+
+/** The sheet's words in the language in force (English: the sheet as written). */
+function sheetWords(): SheetWords {
+  return catalogue()?.sheet ?? EN_SHEET;
+}
+
+/** A text's numbers with the decimal sign of the language in force (German 0,05; every digit kept). */
+function local(text: string): string {
+  return localDecimal(text, catalogue());
+}
+
+/**
+ * A refused cell's reason in the language in force, from what it is made of (the input errors',
+ * the three-axis errors' or the sheet's own sentences); English: the core's reason. `typed` is the
+ * row's h as the sheet shows it.
+ */
+function reasonOf(
+  cell: Extract<SheetCell, { ok: false }>,
+  c: SheetCase,
+  unit: LengthUnit,
+  typed: string,
+): { readonly text: string; readonly english: boolean } {
+  const words = catalogue();
+  if (words === null) return { text: cell.reason, english: true };
+  const own = words.sheet.refusals;
+  const r = cell.refusal;
+  const waterline = c.kind === 'three-axis' && passesOf(c.problem) === 'waterline';
+  const text =
+    r.kind === 'input'
+      ? r.errors.map((e) => describeError(e, unit, e.field === 'h' ? { typed } : {})).join(' ')
+      : r.kind === 'three-axis'
+        ? r.errors
+            .map((e) => describeThreeAxis(e, unit, e.field === 'h' ? typed : null, waterline) ?? e.message)
+            .join(' ')
+        : r.kind === 'curved-wall'
+          ? own.curvedWall(local(`${formatInputNumber(fromMm(r.limitMm, unit))} ${unitSymbol(unit)}`), typed)
+          : r.kind === 'lead-range'
+            ? own.leadRange
+            : r.kind === 'curved-gouge'
+              ? own.curvedGouge
+              : own.noStepDown;
+  return { text, english: false };
+}
 
 /** An element with a class, optional test id and text (text only: nothing is parsed as HTML). */
 function el<K extends keyof HTMLElementTagNameMap>(
@@ -81,6 +135,10 @@ export class ShopSheetPanel {
   private readonly heightsLabel: HTMLLabelElement;
   private readonly heightsError: HTMLParagraphElement;
   private readonly status: HTMLParagraphElement;
+  private readonly scroll: HTMLDivElement;
+  private readonly csv: HTMLButtonElement;
+  private readonly print: HTMLButtonElement;
+  private readonly close: HTMLButtonElement;
 
   constructor(private readonly button: HTMLButtonElement) {
     button.disabled = true;
@@ -93,10 +151,10 @@ export class ShopSheetPanel {
     this.title.id = 'shop-sheet-title';
     this.lines = el('div', 'sheet-lines', '', 'shop-sheet-lines');
     const scroll = el('div', 'sheet-scroll');
+    this.scroll = scroll;
     // A scrolling region is reachable by keyboard (axe: scrollable-region-focusable).
     scroll.tabIndex = 0;
     scroll.setAttribute('role', 'region');
-    scroll.setAttribute('aria-label', 'Step-over table');
     this.table = el('table', 'sheet-table', '', 'shop-sheet-table');
     scroll.append(this.table);
     this.reason = el('p', 'sheet-reason', '', 'shop-sheet-reason');
@@ -124,16 +182,20 @@ export class ShopSheetPanel {
       if (e.key === 'Enter') this.listed();
     });
     const buttons = el('div', 'sheet-buttons');
-    const csv = el('button', '', 'Download CSV', 'shop-sheet-csv');
+    // Their words are the language's when the sheet is drawn (render).
+    const csv = el('button', '', '', 'shop-sheet-csv');
     csv.type = 'button';
     csv.addEventListener('click', () => this.download());
-    const print = el('button', '', 'Print', 'shop-sheet-print');
+    const print = el('button', '', '', 'shop-sheet-print');
     print.type = 'button';
     print.addEventListener('click', () => window.print());
-    const close = el('button', '', 'Close', 'shop-sheet-close');
+    const close = el('button', '', '', 'shop-sheet-close');
     close.type = 'button';
     close.addEventListener('click', () => this.dialog.close());
     buttons.append(csv, print, close);
+    this.csv = csv;
+    this.print = print;
+    this.close = close;
     this.status = el('p', 'sheet-status', '', 'shop-sheet-status');
     this.status.setAttribute('role', 'status');
     tools.append(field, buttons, this.status);
@@ -171,7 +233,7 @@ export class ShopSheetPanel {
 
   /** The user listed heights: the sheet again, or the list's message (the last sheet stays). */
   private listed(): void {
-    const parsed = parseHeights(this.heightsInput.value, this.unit);
+    const parsed = parseHeights(this.heightsInput.value, this.unit, sheetWords());
     if (!parsed.ok) {
       this.heightsError.textContent = parsed.message;
       this.heightsInput.setAttribute('aria-invalid', 'true');
@@ -187,11 +249,16 @@ export class ShopSheetPanel {
     if (c === null) return;
     const unit = this.unit;
     const u = unitSymbol(unit);
+    const words = sheetWords();
     const heights = this.heightsInUnit();
     this.heightsInput.value = heightsText(heights);
     this.heightsInput.removeAttribute('aria-invalid');
     this.heightsError.textContent = '';
-    this.heightsLabel.textContent = `Scallop heights h (${u}), up to ${MAX_SHEET_ROWS}, separated by spaces (your h is added)`;
+    this.heightsLabel.textContent = words.heightsLabel(u, MAX_SHEET_ROWS);
+    this.scroll.setAttribute('aria-label', words.region);
+    this.csv.textContent = words.csv;
+    this.print.textContent = words.print;
+    this.close.textContent = words.close;
     const rows = sheetRows(heights, this.ownMm, unit);
     const sheet = shopSheet(
       c,
@@ -199,29 +266,30 @@ export class ShopSheetPanel {
       unit,
     );
     this.sheet = sheet;
-    this.title.textContent = `Shop sheet: ${stepSymbol(sheet)} (${u})`;
+    this.title.textContent = words.title(stepSymbol(sheet), u);
     const date = new Date().toISOString().slice(0, 10);
+    // The tool's own name as the user wrote it; the sheet's lines with the locale's decimal sign.
     this.lines.replaceChildren(
-      ...[...shownToolNameLines(), ...sheetTitleLines(c, sheet, unit, date)].map((t) => el('p', 'sheet-line', t)),
+      ...[...shownToolNameLines(), ...sheetTitleLines(c, sheet, unit, date, words).map(local)].map((t) =>
+        el('p', 'sheet-line', t),
+      ),
     );
-    this.renderTable(sheet, unit, rows);
-    this.renderLegend(sheet, rows.own, u);
+    this.renderTable(c, sheet, unit, rows, words);
+    this.renderLegend(sheet, rows.own, u, words);
     this.reason.hidden = true;
     this.reason.textContent = '';
   }
 
   private renderTable(
+    c: SheetCase,
     sheet: ShopSheet,
     unit: LengthUnit,
     rows: { values: readonly number[]; own: number | null },
+    words: SheetWords,
   ): void {
     const u = unitSymbol(unit);
-    const column = sheet.columnKind === 'lead' ? 'lead' : 'slope';
-    const caption = el(
-      'caption',
-      'sr-only',
-      `${stepSymbol(sheet)} (${u}) by scallop height h (${u}, rows) and ${column} (degrees, columns)`,
-    );
+    const column = words.column[sheet.columnKind];
+    const caption = el('caption', 'sr-only', words.caption(stepSymbol(sheet), u, sheet.columnKind));
     const head = el('tr');
     // The corner names both axes and their units, on two lines (narrow on a phone).
     const corner = el('th', 'corner');
@@ -231,10 +299,10 @@ export class ShopSheetPanel {
       line.append(el('span', 'unit', ` (${unitText})`), ` ${arrow}`);
       return line;
     };
-    corner.append(axis(column, 'deg', '\u2192'), axis('h', u, '\u2193'));
+    corner.append(axis(column, words.deg, '\u2192'), axis('h', u, '\u2193'));
     head.append(corner);
     for (const deg of sheet.columnsDeg) {
-      const th = el('th', '', formatDeg(deg));
+      const th = el('th', '', local(formatDeg(deg)));
       th.scope = 'col';
       head.append(th);
     }
@@ -245,22 +313,31 @@ export class ShopSheetPanel {
       const value = rows.values[i] ?? 0;
       const own = value === rows.own;
       const tr = el('tr', own ? 'own-h' : '', '', own ? 'shop-sheet-own-row' : '');
-      const th = el('th', '', heightsText([value]));
+      const th = el('th', '', local(heightsText([value])));
       th.scope = 'row';
-      if (own) th.append(el('span', 'sr-only', ' (your h)'));
+      if (own) th.append(el('span', 'sr-only', words.yourH));
       tr.append(th);
       (sheet.cells[i] ?? []).forEach((cell, j) => {
-        const td = el('td', cell.ok ? '' : 'refused', cell.ok ? cellText(cell, unit) : '');
+        const td = el('td', cell.ok ? '' : 'refused', cell.ok ? local(cellText(cell, unit)) : '');
         if (!cell.ok) {
           // Hover shows the title; a tap or a click (a button: keyboard too) writes the reason below the table.
-          td.title = cell.reason;
-          const mark = el('button', 'mark', cellText(cell, unit));
+          // The reason in the language in force; the core's English sentence says so by its lang.
+          const why = reasonOf(cell, c, unit, heightsText([value]));
+          td.title = why.text;
+          if (why.english) td.lang = 'en';
+          const letter = cellText(cell, unit);
+          const mark = el('button', 'mark', letter);
           mark.type = 'button';
-          const where = `h ${heightsText([value])} ${unitSymbol(unit)}, ${sheet.columnKind} ${formatDeg(sheet.columnsDeg[j] ?? 0)} deg`;
-          mark.setAttribute('aria-label', `${cellText(cell, unit)} at ${where}: show the reason`);
+          mark.lang = document.documentElement.lang;
+          const where = local(
+            words.where(`${heightsText([value])} ${u}`, sheet.columnKind, formatDeg(sheet.columnsDeg[j] ?? 0)),
+          );
+          mark.setAttribute('aria-label', words.markLabel(letter, where));
           mark.addEventListener('click', () => {
             this.reason.hidden = false;
-            this.reason.textContent = `${cellText(cell, unit)} at ${where}: ${cell.reason}`;
+            const reason = el('span', '', why.text);
+            if (why.english) reason.lang = 'en';
+            this.reason.replaceChildren(words.markReason(letter, where), reason);
           });
           td.append(mark);
         }
@@ -271,17 +348,14 @@ export class ShopSheetPanel {
     this.table.replaceChildren(caption, thead, tbody);
   }
 
-  private renderLegend(sheet: ShopSheet, own: number | null, u: string): void {
+  private renderLegend(sheet: ShopSheet, own: number | null, u: string, words: SheetWords): void {
     const used = marksUsed(sheet);
-    const items = used.marks.map((m) => el('li', '', `${SHEET_MARKS[m].letter}: ${SHEET_MARKS[m].legend}.`));
-    if (used.noScallop) items.push(el('li', '', `${NO_SCALLOP_STAR} ${NO_SCALLOP_LEGEND}.`));
-    if (own !== null) items.push(el('li', '', `Bold row: your scallop height h = ${heightsText([own])} ${u}.`));
+    const items = used.marks.map((m) => el('li', '', `${SHEET_MARKS[m].letter}: ${words.marks[m]}`));
+    if (used.noScallop) items.push(el('li', '', `${NO_SCALLOP_STAR} ${words.noScallop}`));
+    if (own !== null) items.push(el('li', '', words.ownRow(local(`${heightsText([own])} ${u}`))));
     // How to read a mark's reason: on screen only, worded for the pointer (shopSheet.css shows one).
     if (used.marks.length > 0)
-      items.push(
-        el('li', 'hint-hover', 'Hover or click a mark for its full reason; the calculator answers any single case.'),
-        el('li', 'hint-touch', 'Tap a mark for its full reason; the calculator answers any single case.'),
-      );
+      items.push(el('li', 'hint-hover', words.hintHover), el('li', 'hint-touch', words.hintTouch));
     this.legend.replaceChildren(...items);
   }
 
@@ -289,6 +363,6 @@ export class ShopSheetPanel {
     if (this.case === null || this.sheet === null) return;
     const name = sheetFileName(this.case, this.unit);
     saveText(sheetCsv(this.sheet, this.unit), name, 'text/csv;charset=utf-8');
-    this.status.textContent = `Saved ${name}.`;
+    this.status.textContent = sheetWords().saved(name);
   }
 }

@@ -17,6 +17,8 @@ import {
 } from '../core/output/shopSheet';
 import { isCurvedRequest, type PageRequest } from '../worker/pageProtocol';
 import { formatDeg, formatLen } from './format';
+import type { SheetSurface, SheetWords } from './i18n/catalogue';
+import { EN_SHEET } from './shopSheetWords';
 
 /** At most this many scallop heights (rows): the sheet fits one printed page. */
 export const MAX_SHEET_ROWS = 12;
@@ -81,20 +83,20 @@ export function heightsText(heights: readonly number[]): string {
 export function parseHeights(
   text: string,
   unit: LengthUnit,
+  words: SheetWords = EN_SHEET,
 ): { readonly ok: true; readonly mm: number[] } | { readonly ok: false; readonly message: string } {
   const u = unitSymbol(unit);
-  const rule = `give 1 to ${MAX_SHEET_ROWS} scallop heights above 0 ${u}, separated by spaces`;
+  const message = (got: string | null) => ({ ok: false, message: words.heightsError(u, MAX_SHEET_ROWS, got) }) as const;
   const tokens = text.split(/[\s;]+/).filter((t) => t !== '');
-  if (tokens.length === 0) return { ok: false, message: `Scallop heights: ${rule}.` };
+  if (tokens.length === 0) return message(null);
   const values: number[] = [];
   for (const t of tokens) {
     const v = /^[+]?(\d+[.,]?\d*|[.,]\d+)([eE][+-]?\d+)?$/.test(t) ? Number(t.replace(',', '.')) : Number.NaN;
-    if (!(Number.isFinite(v) && v > 0))
-      return { ok: false, message: `Scallop heights: ${rule} (got "${t.length > 24 ? `${t.slice(0, 21)}...` : t}").` };
+    if (!(Number.isFinite(v) && v > 0)) return message(`"${t.length > 24 ? `${t.slice(0, 21)}...` : t}"`);
     values.push(v);
   }
   const unique = [...new Set(values)].sort((a, b) => a - b);
-  if (unique.length > MAX_SHEET_ROWS) return { ok: false, message: `Scallop heights: ${rule} (got ${unique.length}).` };
+  if (unique.length > MAX_SHEET_ROWS) return message(String(unique.length));
   return { ok: true, mm: unique.map((v) => toMm(v, unit)) };
 }
 
@@ -103,62 +105,56 @@ export function stepSymbol(sheet: ShopSheet): string {
   return sheet.step === 'interval' ? 'L' : sheet.step === 'horizontalStep' ? 'Lxy' : 'dz';
 }
 
-/** What a cell gives, in words. */
-function stepWords(sheet: ShopSheet): string {
-  if (sheet.step === 'interval') return 'step-over L between adjacent passes, along the surface';
-  if (sheet.step === 'horizontalStep') return 'horizontal step Lxy between adjacent raster passes, as programmed';
-  return 'step-down dz between adjacent waterline levels, as programmed';
-}
-
-/** The surface of a case in words. */
-function surfaceWords(c: SheetCase, unit: LengthUnit): string {
-  const u = unitSymbol(unit);
+/** The surface of a case, for the words of its title line (lengths in the user's unit). */
+function sheetSurface(c: SheetCase, unit: LengthUnit): SheetSurface {
+  const len = (mm: number) => `${n(mm, unit)} ${unitSymbol(unit)}`;
   if (c.kind === 'doubly-curved')
-    return `a doubly curved point, Rf ${n(c.radii.feedRadiusMm, unit)} ${u}, Rc ${n(c.radii.crossRadiusMm, unit)} ${u} (negative: concave)`;
+    return { kind: 'doubly-curved', feed: len(c.radii.feedRadiusMm), cross: len(c.radii.crossRadiusMm) };
   if (c.kind === 'three-axis') {
     const p = c.problem;
-    if (p.surface === 'plane') return 'a sloped plane';
-    const r = (mm: number | null) => (mm === null ? 'straight' : `${n(mm, unit)} ${u}`);
-    return `a surface of revolution, Rf ${r(p.case.feedRadiusMm)}, Rc ${r(p.case.crossRadiusMm)} (negative: concave)`;
+    if (p.surface === 'plane') return { kind: 'sloped-plane' };
+    const r = (mm: number | null) => (mm === null ? null : len(mm));
+    return { kind: 'revolution', feed: r(p.case.feedRadiusMm), cross: r(p.case.crossRadiusMm) };
   }
   const s = c.surface;
-  if (s.kind !== 'cylinder') return 'a plane';
-  const axis = s.axis === 'feed' ? 'along the feed' : 'across the feed';
-  return `a ${s.radiusMm < 0 ? 'concave' : 'convex'} cylinder, Rs ${n(Math.abs(s.radiusMm), unit)} ${u}, axis ${axis}`;
+  if (s.kind !== 'cylinder') return { kind: 'plane' };
+  return { kind: 'cylinder', concave: s.radiusMm < 0, radius: len(Math.abs(s.radiusMm)), axis: s.axis };
 }
 
 /**
  * The title lines of a sheet: the tool (D and R, Rcr), the machining and posture, the pattern or
  * strategy and the surface, what the rows, columns and cells are and their unit, and `date`.
  */
-export function sheetTitleLines(c: SheetCase, sheet: ShopSheet, unit: LengthUnit, date: string): string[] {
+export function sheetTitleLines(
+  c: SheetCase,
+  sheet: ShopSheet,
+  unit: LengthUnit,
+  date: string,
+  words: SheetWords = EN_SHEET,
+): string[] {
   const u = unitSymbol(unit);
+  const len = (mm: number) => `${n(mm, unit)} ${u}`;
   const tool = c.kind === 'three-axis' ? c.problem.case : c;
-  const toolLine = `Tool: D ${n(2 * tool.toolRadiusMm, unit)} ${u} (R ${n(tool.toolRadiusMm, unit)} ${u}), corner radius Rcr ${n(tool.cornerRadiusMm, unit)} ${u}`;
+  const surface = words.surface(sheetSurface(c, unit));
   let machining: string;
   if (c.kind === 'three-axis') {
     const p = c.problem;
     const passes = passesOf(p);
-    const angle =
-      passes === 'raster' && p.surface === 'plane'
-        ? ` at ${formatDeg(p.case.rasterAngleDeg)} deg from the fall line`
-        : '';
-    machining = `Three-axis, the tool upright; ${passes} passes${angle}; on ${surfaceWords(c, unit)}`;
+    const angle = passes === 'raster' && p.surface === 'plane' ? formatDeg(p.case.rasterAngleDeg) : null;
+    machining = words.threeAxis(passes, angle, surface);
   } else {
-    machining = `Five-axis, tilt ${formatDeg(c.tiltAngleDeg)} deg; ${c.pattern} passes; on ${surfaceWords(c, unit)}`;
+    machining = words.fiveAxis(formatDeg(c.tiltAngleDeg), c.pattern, surface);
   }
-  const columns = sheet.columnKind === 'lead' ? 'lead angle rho (deg)' : 'surface slope (deg)';
   return [
-    toolLine,
+    words.tool(len(2 * tool.toolRadiusMm), len(tool.toolRadiusMm), len(tool.cornerRadiusMm)),
     machining,
-    `Rows: scallop height h (${u}). Columns: ${columns}. Cells: ${stepWords(sheet)} (${u}).`,
-    `Exact solution, path-interval calculator, ${date}.`,
+    words.axes(u, sheet.columnKind, sheet.step),
+    words.made(date),
   ];
 }
 
-/** The letter of a mark and the no-scallop star, as the legend lists them. */
+/** The no-scallop star, as the cells and the legend show it. */
 export const NO_SCALLOP_STAR = '*';
-export const NO_SCALLOP_LEGEND = 'no scallop: a flat end lying flat cuts flat at any step-over up to 2R';
 
 /**
  * The significant digits of every inch cell: one count for the whole sheet, so that a column reads

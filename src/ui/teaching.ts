@@ -76,9 +76,9 @@ export class TeachingLoader {
     this.schedule();
   }
 
-  /** The language changed: the tabs named anew (the views' own words follow their next drawing). */
+  /** The language changed: the tabs named anew, the visible view drawn anew in its words. */
   relabel(): void {
-    this.panel?.nameTabs();
+    this.panel?.relabel();
   }
 
   highlight(key: ProcedureKey | null): void {

@@ -4,7 +4,8 @@
  * (Lxy for raster, dz for waterline), validated as the command line does (core validateThreeAxis).
  * The page does not solve it: the worker does, once (jobs/threeAxis.ts), and the refusals only a
  * solver finds (ranges, the vertical wall, the flank and shank limits) come back in its reply, put
- * on their fields by threeAxisFieldErrors. Every message in the user's unit. Pure.
+ * on their fields by threeAxisFieldErrors. Every message in the user's unit and the language in
+ * force (i18n/words.ts describeThreeAxis; English: the core's message). Pure.
  */
 import { FIELDS, pageKeyOf } from '../core/input/fields';
 import { formatInputNumber, fromMm, unitSymbol } from '../core/input/units';
@@ -15,6 +16,7 @@ import {
   validateThreeAxis,
 } from '../core/threeAxis/validate';
 import { radiusMm } from './curvedRequest';
+import { describeThreeAxis } from './i18n/words';
 import { programmedStepKey } from './machineState';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
 import { type CalculatorState, type FieldKey, fieldInMm } from './state';
@@ -42,7 +44,8 @@ function onField(e: ThreeAxisInputError, state: CalculatorState): PageFieldError
   // The page field of the field it names (the field registry's; null: a switch, such as the passes).
   const key = pageKeyOf(e.field);
   if (key === null) return null;
-  return { key, message: inUnit(e.message, state, key) };
+  const words = describeThreeAxis(e, state.unit, state.fields[key].trim(), state.passes === 'waterline');
+  return { key, message: words ?? inUnit(e.message, state, key) };
 }
 
 /** Three-axis errors (the validation's, or the worker's reply's) on their page fields, in the user's unit. */

@@ -36,6 +36,24 @@
  * one live region and its feed lengths in the unit on screen (on first use): 252.88; a link's fz with
  * F or rpm said in a notice (+0.04 kB): 59.68 and 252.92; the balanced feed set as a feed rate at the
  * spindle speed given (on first use): 59.69 and 253.04.
+ * first press (-0.28 kB): 59.67 and 249.98. The shop sheet in Japanese and German (issue 30): its words
+ * in each catalogue (+0.9 kB each), its English as one typed words object in the sheet's own chunk,
+ * the locale's decimal sign shared with the language code (a chunk of its own, +0.24 kB), all on
+ * first use; the first result +0.02 kB (the sheet reads the language in force): 59.68 and 253.05. Then
+ * the words the page writes itself (the three-axis step, a flat end's no-scallop line, Copy's spoken
+ * confirmation, an empty slider) and eleven more chrome keys in each language, put into the language
+ * by language.ts (on first use; copy.ts and fields.ts only hand over, +0.01 kB): 59.69 and 254.28; the
+ * three-axis refusals worded from their data in each language (on first use; the hook that hands
+ * them over, +0.04 kB): 59.73 and 256.56; the 3D scene's legend in each language (nineteen chrome keys):
+ * 59.73 and 257.55; the comparison charts' captions, axis titles, choices and notes in each
+ * language (on first use; the tabs' relabel redraws the visible view, a shorter call, -0.01 kB):
+ * 59.72 and 259.15; the notices' sentences (a worker restarted or stopped, link values replaced) in
+ * each language, put in by language.ts when the page writes the notice (on first use): 59.73 and 260.06;
+ * a shop sheet mark's reason in each language from its data (the sheet reads two more of words.ts's
+ * exports, +0.01 kB): 59.74 and 260.57; the three-axis chart "step against slope" in each language
+ * (on first use): 59.74 and 261.94; a doubly curved point's charts of L against each radius in each
+ * language (on first use): 59.74 and 262.66; the views' lines over a page question in each language
+ * (on first use): 59.74 and 263.64. The first result has 13 bytes left under its ratchet.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -62,7 +80,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 253.1 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(253.1);
+  it('all of it, every .js file, is at most 263.75 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(263.75);
   });
 });

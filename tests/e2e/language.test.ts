@@ -31,6 +31,60 @@ function stepOver(h: number): string {
 const text = async (page: Page, selector: string) => (await page.locator(selector).first().textContent()) ?? '';
 const tap = (page: Page, lang: string) => page.locator(`[data-testid="lang-switch"] input[value="${lang}"]`).check();
 
+/** The shop sheet's Latin words a translation keeps: the paper's symbols, the unit, the marks' letters, file kinds. */
+const SHEET_KEPT = new Set('L h R D Rcr rho Rs Rf Rc Lxy dz mm in W G X Z CSV CAM sin'.split(' '));
+
+/** The scene legend's Latin words a translation keeps: the sheet's, and the paper's P_hp, P_base, CC, O, y0, N, i. */
+const LEGEND_KEPT = new Set([...SHEET_KEPT, 'P', 'hp', 'base', 'CC', 'O', 'y0', 'N', 'i', 'X', 'Y', 'Z']);
+
+/** The Latin words of a text. */
+const latinWords = (t: string): string[] => t.match(/[A-Za-z][A-Za-z0-9]*/g) ?? [];
+
+/** The row heads of the open sheet's table (the screen reader's "your h" left out). */
+const rowHeads = (page: Page): Promise<string[]> =>
+  page
+    .getByTestId('shop-sheet-table')
+    .evaluate((t) => [...t.querySelectorAll('tbody th')].map((th) => th.firstChild?.textContent ?? ''));
+
+/**
+ * Opens the shop sheet on the inputs on screen, types a bad list of heights (its message returned),
+ * then three heights, the last past the tool's limit at lead 0 (a W mark: the legend and its hints
+ * are drawn), once the table shows them.
+ */
+async function openSheet(page: Page, sign: '.' | ','): Promise<string> {
+  await expect.poll(() => page.getByTestId('shop-sheet').isEnabled(), POLL).toBe(true);
+  await page.getByTestId('shop-sheet').click();
+  await page.getByTestId('shop-sheet-dialog').waitFor({ state: 'visible', timeout: POLL.timeout });
+  const field = page.getByTestId('shop-sheet-heights');
+  await field.fill('0.01 -1');
+  await field.press('Enter');
+  await expect.poll(() => text(page, '[data-testid="shop-sheet-heights-error"]')).not.toBe('');
+  const message = await text(page, '[data-testid="shop-sheet-heights-error"]');
+  await field.fill('0.01 0.05 1.5');
+  await field.press('Enter');
+  await expect.poll(async () => (await rowHeads(page)).at(-1), POLL).toBe(`1${sign}5`);
+  // A mark's full reason, tapped (its words read with the rest).
+  await page.getByTestId('shop-sheet-table').locator('td.refused .mark').first().click();
+  await expect.poll(() => text(page, '[data-testid="shop-sheet-reason"]'), POLL).toMatch(/\S/);
+  return message;
+}
+
+/**
+ * Every word of the open sheet a person reads or hears: its text (the legend's hints for a pointer
+ * and for touch, the caption, the heights' label, the buttons, a mark's reason) and its elements'
+ * accessible names and titles (a refused cell's reason on hover).
+ */
+const sheetWords = (page: Page): Promise<string> =>
+  page.getByTestId('shop-sheet-dialog').evaluate((d) => {
+    const texts: string[] = [];
+    const walker = document.createTreeWalker(d, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node !== null; node = walker.nextNode()) texts.push(node.nodeValue ?? '');
+    const names = [...d.querySelectorAll('[aria-label], [title]')].map(
+      (e) => `${e.getAttribute('aria-label') ?? ''} ${e.getAttribute('title') ?? ''}`,
+    );
+    return [...texts, ...names].join(' ');
+  });
+
 describe('the language switch (phone)', { timeout: 90_000 }, () => {
   let page: Page;
 
@@ -106,6 +160,13 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       .poll(() => text(page, '[data-testid="headline-question"]'))
       .toMatch(/^5軸、前傾 5°、傾斜 0°、片方向、平面$/);
     expect(await text(page, '.headline .big button.copy')).toBe('コピー');
+    // The 3D scene's legend in Japanese: no Latin word but the paper's symbols (and its lang the page's).
+    const legend = await text(page, '[data-testid="scene-legend"]');
+    expect(
+      latinWords(legend).filter((w) => !LEGEND_KEPT.has(w)),
+      legend,
+    ).toEqual([]);
+    expect(await page.getByTestId('scene-legend').getAttribute('lang')).toBeNull();
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
     expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
     await pageSettled(page);
@@ -144,6 +205,222 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     // Back in English: the table drawn anew with points (no comma left to read as a thousands separator).
     await expect.poll(() => text(page, '[data-testid="result-sekine-half"]'), POLL).toMatch(/^\d+\.\d{4} mm$/);
     expect(await page.locator('.teaching').getAttribute('lang')).toBeNull();
+  });
+
+  it('the shop sheet in Japanese and German: no English word left on screen or printed, German decimal commas', async () => {
+    // English first (the page is in English by now): the sheet's own words, to find any left over.
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
+    const englishMessage = await openSheet(page, '.');
+    expect(await text(page, '[data-testid="shop-sheet-title"]')).toBe('Shop sheet: L (mm)');
+    const english = new Set(latinWords(`${englishMessage} ${await sheetWords(page)}`));
+    // The English sheet's words include its legend, its hints, its buttons and its table's names.
+    for (const w of ['Bold', 'posture', 'Tap', 'Hover', 'Print', 'Close', 'Download', 'table', 'separated'])
+      expect(english.has(w), `${w} in ${[...english].join(' ')}`).toBe(true);
+    await page.getByTestId('shop-sheet-close').click();
+    for (const [lang, title, sign] of [
+      ['ja', '現場用シート：L（mm）', '.'],
+      ['de', 'Werkstattblatt: L (mm)', ','],
+    ] as const) {
+      await tap(page, lang);
+      await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe(lang);
+      const message = await openSheet(page, sign);
+      expect(await text(page, '[data-testid="shop-sheet-title"]')).toBe(title);
+      // Japanese: no Latin word but the symbols and the unit; German: none of the English sheet's words.
+      const leftOver = (t: string) =>
+        latinWords(t).filter((w) => !SHEET_KEPT.has(w) && (lang === 'ja' || english.has(w)));
+      const words = `${message} ${await sheetWords(page)}`;
+      expect(leftOver(words), `${lang}: ${words}`).toEqual([]);
+      // axe on the open sheet in the language (its reason tapped).
+      if (lang === 'ja') expect(await axeViolations(page)).toEqual([]);
+      // Printed (print media): the sheet alone, in the language.
+      await page.emulateMedia({ media: 'print' });
+      expect(await page.locator('#app').isVisible()).toBe(false);
+      // biome-ignore lint/performance/useDomNodeTextContent: the text as rendered in print is the point
+      const printed = await page.getByTestId('shop-sheet-dialog').evaluate((d) => (d as HTMLElement).innerText);
+      expect(printed).toContain(title);
+      // The marks print as their letters (a mark is a button on screen; the page's buttons do not print).
+      expect(await page.getByTestId('shop-sheet-table').locator('td.refused .mark').first().isVisible()).toBe(true);
+      expect(leftOver(printed), `${lang} printed: ${printed}`).toEqual([]);
+      await keepShot(page, `shop-sheet-print-${lang}-phone`, { fullPage: true });
+      await page.emulateMedia({ media: 'screen' });
+      // The numbers with the locale's decimal sign, every digit kept; past the limit, a W.
+      expect(await rowHeads(page)).toEqual(expect.arrayContaining(['0.01', '0.05'].map((h) => h.replace('.', sign))));
+      const cells = await page
+        .getByTestId('shop-sheet-table')
+        .locator('tbody tr')
+        .first()
+        .locator('td')
+        .allTextContents();
+      for (const c of cells) expect(c).toMatch(sign === ',' ? /^\d+,\d{4}$/ : /^\d+\.\d{4}$/);
+      expect(
+        await page.getByTestId('shop-sheet-table').locator('tbody tr').last().locator('td').first().textContent(),
+      ).toBe('W');
+      await page.getByTestId('shop-sheet-close').click();
+    }
+    await tap(page, 'en');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
+  });
+
+  it('German words the page writes itself: the three-axis step, its question with a decimal comma, Copy said, an empty slider, a flat end lying flat', async () => {
+    // A link value replaced: the notice's sentence in the language, the link's own words kept in English.
+    await page.goto(new URL('?R=3&Rcr=abc&rho=5&h=0.05&unit=mm&lang=de', page.url()).href);
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('de');
+    const notice = page.getByTestId('notice');
+    await expect
+      .poll(() => notice.textContent(), POLL)
+      .toMatch(/^Einige Werte des Links wurden ersetzt: \S*Rcr\S*="abc"/);
+    expect(await notice.locator('span[lang="en"]').textContent()).toMatch(/="abc" in the link is not a number/);
+    expect(await notice.getAttribute('lang')).toBe('de');
+    await tap(page, 'ja');
+    await expect.poll(() => notice.textContent(), POLL).toMatch(/^リンクの値の一部を置き換えました：\S*Rcr\S*="abc"/);
+    await tap(page, 'en');
+    await expect.poll(() => notice.textContent(), POLL).toMatch(/^Some link values were replaced: \S*Rcr\S*="abc"/);
+    expect(await notice.getAttribute('lang')).toBeNull();
+    await page
+      .context()
+      .grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(page.url()).origin });
+    await tap(page, 'de');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('de');
+    // An optional field left empty: its slider says so in German.
+    await expect.poll(() => page.getByTestId('slider-runout').getAttribute('aria-valuetext'), POLL).toBe('leer');
+    // The comparison charts in German: captions, axis titles, choices, the legend's head, the summary,
+    // the ticks' decimal commas; no English word of theirs left but the procedures' names.
+    await page.locator('#tab-chart').click();
+    const caption = page.getByTestId('chart-lead').locator('figcaption');
+    await expect
+      .poll(() => caption.textContent(), POLL)
+      .toBe('L [mm] über dem Anstellwinkel rho [°] (R, Rcr, beta, h fest; gestrichelt: aktueller rho = 5)');
+    expect(await page.getByTestId('chart-summary').textContent()).toMatch(/^Bei rho = 5°, beta = 0°, L: .*\d,\d{4} mm/);
+    const charts = await page.getByTestId('comparison-chart').evaluate((e) => {
+      const classic = e.querySelector('.chart-classic') as HTMLElement;
+      const parts = [...classic.querySelectorAll('figcaption, text, option, .chart-legend-head, [aria-label]')];
+      return {
+        lang: classic.lang,
+        words: [...parts.map((p) => p.textContent ?? ''), ...parts.map((p) => p.getAttribute('aria-label') ?? '')].join(
+          ' ',
+        ),
+        ticks: [...classic.querySelectorAll('text')]
+          .map((t) => t.textContent ?? '')
+          .filter((t) => /^[\d.,−-]+$/.test(t)),
+      };
+    });
+    expect(charts.lang).toBe('de');
+    expect(
+      charts.words.match(
+        /\b(against|lead|tilt|fixed|dashed|current|error|axis|angle|signed|approximation|along|length|at|deg)\b/gi,
+      ),
+      charts.words,
+    ).toBeNull();
+    expect(charts.ticks.some((t) => /\d,\d/.test(t)) && !charts.ticks.some((t) => /\d\.\d/.test(t))).toBe(true);
+    // A switch while the charts are on screen draws them anew in its words.
+    await tap(page, 'ja');
+    await expect.poll(() => caption.textContent(), POLL).toMatch(/^前傾角 rho \[°\] に対する L \[mm\]/);
+    await tap(page, 'de');
+    await expect.poll(() => caption.textContent(), POLL).toMatch(/^L \[mm\] über dem Anstellwinkel/);
+    await page.locator('#tab-profile').click();
+    await page.locator('[data-testid="machine-switch"] input[value="3axis"]').check();
+    await typeInto(page, 'input-slope', '20,5');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-role="headline-label"]'), POLL)
+      .toBe('Waagerechter Bahnabstand Lxy (wie programmiert)');
+    expect(await text(page, '[data-i18n="alongSurface"]')).toBe('L entlang der Fläche');
+    await expect.poll(() => text(page, '[data-testid="headline-question"]'), POLL).toMatch(/^3-Achs, Neigung 20,5°, /);
+    await expect
+      .poll(() => text(page, '[data-testid="result-bar-question"]'), POLL)
+      .toMatch(/^3-Achs, Neigung 20,5°, /);
+    // A three-axis refusal in German, its bound in mm with a decimal comma: h past the flank's or shank's limit.
+    const h = await page.getByTestId('input-h').inputValue();
+    await typeInto(page, 'input-h', '5');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="error-h"]'), POLL)
+      .toMatch(/^Rautiefe h muss bei dieser Neigung unter \d+,\d+ mm liegen \(eingegeben: 5\)[;:] /);
+    await typeInto(page, 'input-h', h);
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, '[data-testid="error-h"]'), POLL).toBe('');
+    // The three-axis chart in German: captions, axis titles, legends, the crossing sentence, notes,
+    // the ticks' decimal commas; no English word of its own left.
+    await page.locator('#tab-chart').click();
+    const slopeCaption = page.getByTestId('chart-slope').locator('figcaption');
+    await expect
+      .poll(() => slopeCaption.textContent(), POLL)
+      .toMatch(/^Programmierter Abstand \[mm\] über der Neigung/);
+    const slopeView = await page.getByTestId('chart-slope-view').evaluate((e) => ({
+      lang: (e as HTMLElement).lang,
+      words: [
+        ...[...e.querySelectorAll('figcaption, text, li, p')].map((p) => p.textContent ?? ''),
+        ...[...e.querySelectorAll('[aria-label]')].map((p) => p.getAttribute('aria-label') ?? ''),
+      ].join(' '),
+      ticks: [...e.querySelectorAll('text')].map((t) => t.textContent ?? '').filter((t) => /^[\d.,−-]+$/.test(t)),
+    }));
+    expect(slopeView.lang).toBe('de');
+    expect(
+      slopeView.words.match(
+        /\b(against|slope|step|scallop|programmed|fixed|dashed|dotted|current|constant|leaves|raster|waterline|flat|floor|above|below|cross|larger|at|of|the|no)\b/gi,
+      ),
+      slopeView.words,
+    ).toBeNull();
+    expect(slopeView.ticks.some((t) => /\d,\d/.test(t)) && !slopeView.ticks.some((t) => /\d\.\d/.test(t))).toBe(true);
+    await page.locator('#tab-profile').click();
+    // The profile's line over the three-axis question in German, its numbers with a decimal comma.
+    await expect
+      .poll(() => page.getByTestId('views-page-note').textContent(), POLL)
+      .toMatch(
+        /^Das senkrechte Werkzeug bei Neigung 20,5°, Zeilenwinkel 0° ist das Werkzeug mit Anstellwinkel \d+(,\d+)?°/,
+      );
+    expect(await page.getByTestId('views-page-note').getAttribute('lang')).toBe('de');
+    // Copy says what it copied in German (the value with a point, as pasted into CAM), the question too.
+    await page.evaluate(() => {
+      const live = document.querySelector('[data-testid="copy-status"]') as HTMLElement;
+      const said: string[] = [];
+      (window as unknown as { said: string[] }).said = said;
+      new MutationObserver(() => said.push(live.textContent ?? '')).observe(live, { childList: true });
+    });
+    await page.locator('.headline .big button.copy').click();
+    await expect
+      .poll(() => page.evaluate(() => (window as unknown as { said: string[] }).said.filter((t) => t !== '')), POLL)
+      .toEqual([expect.stringMatching(/^\d+\.\d+ \(mm\) kopiert: 3-Achs, Neigung 20,5°, .*\.$/)]);
+    // A doubly curved point's charts in German: caption, axis titles, legends, summary, ticks.
+    await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();
+    await page.locator('input[name="surface"][value="curved"]').check();
+    await typeInto(page, 'input-feed-radius', '80');
+    await typeInto(page, 'input-cross-radius', '40');
+    await page.keyboard.press('Enter');
+    await page.locator('#tab-chart').click();
+    await expect
+      .poll(() => page.getByTestId('chart-radius-feed').locator('figcaption').textContent(), POLL)
+      .toMatch(/^L \[mm\] über \|Rf\| \[mm\], logarithmische Achse \(Rc fest konvex 40 mm; /);
+    const radiusView = await page.getByTestId('chart-radius-view').evaluate((e) => ({
+      lang: (e as HTMLElement).lang,
+      words: [...e.querySelectorAll('figcaption, text, li, p')].map((p) => p.textContent ?? '').join(' '),
+    }));
+    expect(radiusView.lang).toBe('de');
+    expect(
+      radiusView.words.match(
+        /\b(against|log|axis|held|fixed|dashed|current|convex|concave|straight|at|with|no|the)\b/gi,
+      ),
+      radiusView.words,
+    ).toBeNull();
+    expect(await page.getByTestId('chart-radius-summary').textContent()).toMatch(
+      /^Bei Rf konvex 80 mm, Rc konvex 40 mm: L = \d+,\d{4} mm/,
+    );
+    await page.locator('#tab-profile').click();
+    await page.locator('input[name="surface"][value="plane"]').check();
+    // Back to five axes: a flat end without lead or tilt lies flat, said in German with its L = 2R.
+    await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();
+    await typeInto(page, 'input-Rcr', '0');
+    await typeInto(page, 'input-rho', '0');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="no-scallop"]'), POLL)
+      .toMatch(/^Kein Kamm: ein Schaftfräser ohne Anstell- und Kippwinkel .* also L = 2R = 6,0000 mm für jedes h\.$/);
+    await typeInto(page, 'input-Rcr', '1');
+    await typeInto(page, 'input-rho', '5');
+    await page.keyboard.press('Enter');
+    await tap(page, 'en');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
+    await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Step-over L');
   });
 
   it("an embed takes its language from the link (the element's lang attribute), not the one remembered (English by now)", async () => {

@@ -90,7 +90,9 @@ describe('shop sheet text', () => {
     expect(csv[2]?.split(',').slice(0, 2)).toEqual(['1.5', 'wall: h at or above the limit']);
     expect(csv.join('\n')).not.toMatch(/NaN|Infinity/);
     expect(sheetFileName(plane, 'mm')).toBe('shop-sheet_R3_Rcr1_one-way_plane_tilt0_mm.csv');
-    expect(cellText(sheet.cells[0]?.[2] ?? { ok: false, mark: 'range', reason: '' }, 'mm')).toMatch(/^\d+\.\d{4}$/);
+    expect(
+      cellText(sheet.cells[0]?.[2] ?? { ok: false, mark: 'range', reason: '', refusal: { kind: 'lead-range' } }, 'mm'),
+    ).toMatch(/^\d+\.\d{4}$/);
     expect(cellText(sheet.cells[1]?.[0] ?? { ok: true, stepMm: 0, noScallop: false }, 'mm')).toBe('W');
   });
 

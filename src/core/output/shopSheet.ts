@@ -12,7 +12,7 @@
 import type { Surface } from '../domain/surface';
 import type { PassPattern } from '../domain/tool';
 import { PASS_FIELDS } from '../input/fields';
-import { describeInputError } from '../input/inputErrors';
+import { describeInputError, type InputError } from '../input/inputErrors';
 import { rawOf } from '../input/raw';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../input/units';
 import {
@@ -24,7 +24,7 @@ import {
 import { exactForward } from '../surfaces/solve';
 import { validateForward } from '../surfaces/validate';
 import { solveThreeAxis } from '../threeAxis/solve';
-import type { ThreeAxisProblem } from '../threeAxis/validate';
+import type { ThreeAxisInputError, ThreeAxisProblem } from '../threeAxis/validate';
 
 /**
  * Why a cell has no step-over:
@@ -53,7 +53,21 @@ export type SheetCell =
       /** True for a flat end lying flat: no scallop at any step-over up to 2R (L = 2R). */
       readonly noScallop: boolean;
     }
-  | { readonly ok: false; readonly mark: SheetMark; readonly reason: string };
+  | { readonly ok: false; readonly mark: SheetMark; readonly reason: string; readonly refusal: SheetRefusal };
+
+/**
+ * What a refused cell's reason is made of, so that a page can word it in its own language: the
+ * validation's errors (a plane or a cylinder), a three-axis solver's, or a doubly curved point's own
+ * checks (the lead out of range, the tool gouging the point, h at or above the limit `limitMm`), or
+ * waterline passes without a step-down.
+ */
+export type SheetRefusal =
+  | { readonly kind: 'input'; readonly errors: readonly InputError[] }
+  | { readonly kind: 'three-axis'; readonly errors: readonly ThreeAxisInputError[] }
+  | { readonly kind: 'lead-range' }
+  | { readonly kind: 'curved-gouge' }
+  | { readonly kind: 'curved-wall'; readonly limitMm: number }
+  | { readonly kind: 'no-step-down' };
 
 /** What the sheet is for: a five-axis posture (columns: leads) or three-axis passes (columns: slopes). */
 export type SheetCase =
@@ -155,7 +169,7 @@ function fiveAxisCell(
     const first = v.errors[0];
     const typed = heightText(hMm, unit);
     const reason = v.errors.map((e) => describeInputError(e, unit, e.field === 'h' ? { typed } : {})).join(' ');
-    return { ok: false, mark: markOfCode(first?.code ?? ''), reason };
+    return { ok: false, mark: markOfCode(first?.code ?? ''), reason, refusal: { kind: 'input', errors: v.errors } };
   }
   const e = exactForward(v.value);
   return { ok: true, stepMm: e.intervalMm, noScallop: e.noScallop };
@@ -169,11 +183,22 @@ function threeAxisCell(problem: ThreeAxisProblem, slopeDeg: number, hMm: number,
     const first = r.errors[0];
     const typed = heightText(hMm, unit);
     const reason = r.errors.map((e) => messageInUnit(e.message, unit, e.field === 'h' ? typed : undefined)).join(' ');
-    return { ok: false, mark: markOfCode(first?.code ?? ''), reason };
+    return {
+      ok: false,
+      mark: markOfCode(first?.code ?? ''),
+      reason,
+      refusal: { kind: 'three-axis', errors: r.errors },
+    };
   }
   const a = r.value;
   const stepMm = a.passes === 'waterline' ? a.stepDownMm : a.horizontalStepMm;
-  if (stepMm === null) return { ok: false, mark: 'range', reason: 'Waterline passes have no step-down here.' };
+  if (stepMm === null)
+    return {
+      ok: false,
+      mark: 'range',
+      reason: 'Waterline passes have no step-down here.',
+      refusal: { kind: 'no-step-down' },
+    };
   return { ok: true, stepMm, noScallop: a.noScallop };
 }
 
@@ -210,6 +235,7 @@ function cellsOfColumn(c: SheetCase, deg: number, heightsMm: readonly number[], 
       ok: false,
       mark: 'range',
       reason: 'Lead angle rho must be at least 0 and below 90 degrees.',
+      refusal: { kind: 'lead-range' },
     }));
   if (doublyCurvedGouges(posture, c.radii))
     return heightsMm.map(() => ({
@@ -217,6 +243,7 @@ function cellsOfColumn(c: SheetCase, deg: number, heightsMm: readonly number[], 
       mark: 'gouge',
       reason:
         'The tool gouges this doubly curved point at this posture: the swept tool reaches inside the surface away from the contact.',
+      refusal: { kind: 'curved-gouge' },
     }));
   const solver = doublyCurvedSolver(posture, c.radii);
   const limitMm = solver.limits().limitMm;
@@ -226,6 +253,7 @@ function cellsOfColumn(c: SheetCase, deg: number, heightsMm: readonly number[], 
         ok: false,
         mark: 'wall',
         reason: `Scallop height h must be below ${formatInputNumber(fromMm(limitMm, unit))} ${unitSymbol(unit)} at this point and posture (got ${heightText(h, unit)}).`,
+        refusal: { kind: 'curved-wall', limitMm },
       };
     return { ok: true, stepMm: forwardWith(solver, c.pattern, h).intervalMm, noScallop: false };
   });

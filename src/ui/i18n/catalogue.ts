@@ -7,6 +7,7 @@
  */
 import type { PageFieldKey } from '../../core/input/fields';
 import type { AnyInputError, InputErrorCode } from '../../core/input/validate';
+import type { ThreeAxisInputError } from '../../core/threeAxis/validate';
 
 /** The languages of the page: English (the page as written), Japanese, German. */
 export type Lang = 'en' | 'ja' | 'de';
@@ -57,7 +58,37 @@ export type StaticKey =
   | 'rightFlank'
   | 'leftFlank'
   | 'contactOffset'
-  | 'cuspHeights';
+  | 'cuspHeights'
+  | 'openFull'
+  | 'embedTitle'
+  | 'alongSurface'
+  | 'cuspNormal'
+  | 'equivalentLead'
+  | 'equivalentTilt'
+  | 'lookupNote'
+  | 'sheetNote'
+  | 'staleBadge'
+  | 'typingBadge'
+  | 'camera'
+  | 'legendTool'
+  | 'legendPath'
+  | 'legendContact'
+  | 'legendDimension'
+  | 'legendOffset'
+  | 'legendCentre'
+  | 'legendAxis'
+  | 'legendDesign'
+  | 'legendHplane'
+  | 'legendPhp'
+  | 'legendSection'
+  | 'legendLoop'
+  | 'legendRidge'
+  | 'legendDesignCurved'
+  | 'legendHsurface'
+  | 'legendCusp'
+  | 'legendAxes'
+  | 'legendTrace'
+  | 'legendExaggeration';
 
 /** The words of the question named beside an answer (questionWords.ts), and its list separator ", ". */
 export type QuestionWord =
@@ -98,7 +129,9 @@ export type Phrase =
   | 'Copy the programmed step'
   | 'Copy L along the surface'
   | 'Copy the centre offset'
-  | 'Copy the current answer';
+  | 'Copy the current answer'
+  | 'Horizontal step Lxy (as programmed)'
+  | 'Step-down dz (as programmed)';
 
 /** The teaching views' tab names, by their English (views/*View.ts titles, threeAxisViewText.ts chartTitle). */
 export type TabName =
@@ -160,6 +193,260 @@ export interface Catalogue {
   readonly question: Readonly<Record<QuestionWord, string>>;
   /** Each input error code's sentence (errorText.ts gives the field, the limit and what was typed). */
   readonly errors: Readonly<Record<InputErrorCode, (t: ErrorText) => string>>;
+  /** The shop sheet's words (shopSheet.ts; its English in shopSheetWords.ts) and its refusals' own sentences. */
+  readonly sheet: SheetWords & { readonly refusals: SheetRefusalWords };
+  /** The sentences the page words itself around a number (language.ts puts them into the language). */
+  readonly said: SaidWords;
+  /** Each three-axis error code's sentence (errorText.ts gives the field, the limit and what was typed). */
+  readonly threeAxis: Readonly<Record<ThreeAxisInputError['code'], (t: ThreeAxisText) => string>>;
+  /** The "L against lead and tilt" charts' captions, axis titles, legends and notes (views/chartView.ts). */
+  readonly chart: ChartWords;
+  /** The three-axis chart "step against slope" (views/slopeChart.ts, pageChartText.ts). */
+  readonly slope: SlopeWords;
+  /** A doubly curved point's charts of L against each radius (views/radiusChart.ts, pageChartText.ts). */
+  readonly radius: RadiusWords;
+  /** The line over a view that does not draw a page question itself (views/curvedViewText.ts, threeAxisViewText.ts). */
+  readonly viewNotes: ViewNoteWords;
+}
+
+/**
+ * The neutral line over a teaching view for a doubly curved point or a three-axis question (English
+ * in views/viewNoteWords.ts): what the view works on and where the question is answered.
+ */
+export interface ViewNoteWords {
+  /** A doubly curved point: what each view that does not draw it works on, then where it is answered. */
+  readonly curved: Readonly<Record<'tables' | 'stepper' | 'formulas' | 'surface', string>>;
+  readonly curvedAnswered: string;
+  /** The three-axis question in words: its slope and raster angle (degrees, without °), or waterline (null). */
+  readonly question: (slope: string, psi: string | null) => string;
+  /** The paper's tables in three-axis mode; waterline on a surface of revolution (nothing to draw). */
+  readonly tables: string;
+  readonly revolution: (question: string) => string;
+  /** The upright tool over the question as the tool at the equivalent lead and tilt (degrees, without their unit) on a plane (the surface view, the others). */
+  readonly equivalent: (question: string, lead: string, tilt: string, surface: boolean) => string;
+}
+
+/**
+ * A doubly curved point's charts' words (views/radiusChart.ts, pageChartText.ts; English in
+ * views/radiusWords.ts): `self` and `other` the radii's symbols (Rf, Rc), lengths with their unit.
+ */
+export interface RadiusWords {
+  /** A signed radius: convex or concave and its size, or straight. */
+  readonly radius: (kind: 'convex' | 'concave' | 'straight', size: string) => string;
+  /** The caption: L against |self| on a log axis, the other held, the current radius. */
+  readonly title: (u: string, self: string, other: string, held: string, current: string) => string;
+  readonly xLabel: (self: string, u: string) => string;
+  readonly description: (title: string) => string;
+  /** A band without L: gouging, or h at or above the flank or shank limit. */
+  readonly band: { readonly gouging: string; readonly limit: string };
+  /** The legend: its head at the current radius, each branch's name, a value missing. */
+  readonly legendHead: (self: string, current: string) => string;
+  readonly branch: (self: string, kind: 'convex' | 'concave' | 'straight') => string;
+  readonly seeBelow: string;
+  /** The values at the current point: the radii, L, and L with each radius straight. */
+  readonly summary: (rf: string, rc: string, L: string, rfStraight: string, rcStraight: string) => string;
+  /** A gap's note: the branch (convex or concave), |self| about `from` (to `to`), the other radius and the value it is held at, and why. */
+  readonly gap: (
+    side: string,
+    self: string,
+    from: string,
+    to: string | null,
+    other: string,
+    held: string,
+    reason: 'gouging' | 'limit',
+  ) => string;
+}
+
+/**
+ * The three-axis chart's words (views/slopeChart.ts and pageChartText.ts; English in
+ * views/slopeWords.ts): numbers given as text with their units (angles with °), the symbols kept.
+ */
+export interface SlopeWords {
+  /** The captions: the programmed step against the slope for h; the scallop a constant step leaves. */
+  readonly stepTitle: (u: string, h: string, slope: string) => string;
+  readonly cuspTitle: (u: string, constant: string, h: string) => string;
+  /** The axis titles. */
+  readonly slopeAxis: string;
+  readonly stepAxis: (u: string) => string;
+  readonly scallopAxis: (u: string) => string;
+  /** A chart's description for a screen reader: its caption and the crossing sentence. */
+  readonly description: (title: string, sentence: string) => string;
+  /** The legends: their head at the current slope; a strategy's step (psi: its raster angle); the flat floor's; a constant step's scallop; none. */
+  readonly legendHead: (slope: string) => string;
+  readonly strategy: (passes: 'raster' | 'waterline', psi: string) => string;
+  readonly floor: string;
+  readonly scallopOf: (constant: string) => string;
+  readonly none: string;
+  /** A band without a step (its title). */
+  readonly gap: string;
+  /** No step above `slope`: h reaches the largest scallop the tool can leave (or the surface's end). */
+  readonly noStepAbove: (slope: string, h: string, revolution: boolean) => string;
+  /** Where raster (at psi) and waterline cross for h (`both`: the step there and the slope), or that they do not. */
+  readonly crossing: (
+    crossing: string | null,
+    psi: string,
+    h: string,
+    both: string | null,
+    revolution: boolean,
+  ) => string;
+  /** Slopes where a constant step leaves no scallop (from, to or null at one sample), and why by the core's code. */
+  readonly refusal: (step: string, from: string, to: string | null, code: string) => string;
+}
+
+/**
+ * The five-axis comparison charts' words (views/chartView.ts; English in views/chartWords.ts): the
+ * numbers given as text (degrees without their unit, `u` a unit symbol or %), the procedures' names
+ * and the solvers' reasons for a gap kept as they are.
+ */
+export interface ChartWords {
+  /** The captions: L against the lead, the approximations' error along the lead, L against the tilt. */
+  readonly leadTitle: (u: string, rho: string) => string;
+  readonly errorTitle: (u: string) => string;
+  readonly tiltTitle: (u: string, beta: string) => string;
+  /** The axis titles: the lead, the tilt, the error in `u`. */
+  readonly leadAxis: string;
+  readonly tiltAxis: string;
+  readonly errorAxis: (u: string) => string;
+  /** A chart's description for a screen reader, after its caption. */
+  readonly description: (title: string) => string;
+  /** The legend's head: the values at the current angle. */
+  readonly legendHead: (angle: 'rho' | 'beta', deg: string) => string;
+  /** After a lead-only model's name with a tilt; a value missing (the notes say why); none. */
+  readonly leadOnly: string;
+  readonly seeBelow: string;
+  readonly none: string;
+  /** The error unit's and the lead axis's choices and their names. */
+  readonly errorIn: { readonly pct: string; readonly length: string; readonly name: string };
+  readonly rhoScale: { readonly log: string; readonly linear: string; readonly name: string };
+  /** The values at the current posture (`values`: "Exact 2.8872 mm, Sekine ..."); outside the charted range. */
+  readonly summary: (rho: string, beta: string, values: string) => string;
+  readonly noSummary: string;
+  /** On a cylinder: what the exact curve and the approximations are. */
+  readonly cylinder: (concave: boolean, axis: 'feed' | 'cross') => string;
+  /** A gap's note before its reason: the procedures, the angle, from (and to, or null at one sample). */
+  readonly gap: (names: string, angle: 'rho' | 'beta', from: string, to: string | null) => string;
+}
+
+/** What a three-axis error's sentence is made of, in the language and unit on screen. */
+export interface ThreeAxisText {
+  readonly e: ThreeAxisInputError;
+  /** The field's name in the language (the tool diameter's when the size is given as D). */
+  readonly label: string;
+  /** What was typed (or the value given), shortened to 24 characters. */
+  readonly got: string;
+  /** The bound it broke with its unit (a length in the user's unit; an angle in degrees), or ''. */
+  readonly limit: string;
+  /** A length (mm) in the user's unit with its symbol, the locale's decimal sign. */
+  readonly length: (mm: number) => string;
+  /** The field is a length (else an angle, or the passes). */
+  readonly isLength: boolean;
+  /** The passes are waterline (else raster). */
+  readonly waterline: boolean;
+  /** No bound to stay below (none given, or below the smallest length accepted): no answer here at all. */
+  readonly noLimit: boolean;
+  /** The tool radius's range, a surface radius's range, and the smallest length accepted, in the unit. */
+  readonly toolRange: readonly [string, string];
+  readonly radiusRange: readonly [string, string];
+  readonly minLength: string;
+}
+
+/** Sentences the page words in English around numbers (results.ts, copy.ts, fields.ts), in a language. */
+export interface SaidWords {
+  /** A flat end lying flat on a plane: no scallop; `diameter` is L = 2R with its unit. */
+  readonly noScallopPlane: (diameter: string) => string;
+  /** Copy's spoken confirmation: the value copied, its unit, the question it answers (or null). */
+  readonly copied: (value: string, unit: string, question: string | null) => string;
+  /** Copy's spoken failure: the value and its unit to copy by hand. */
+  readonly copyFailed: (value: string, unit: string) => string;
+  /** An empty optional field's slider (aria-valuetext). */
+  readonly empty: string;
+  /**
+   * A worker that stopped after `restarts` restarts in a row, or was restarted (`restarts` null):
+   * the words before and after its reason (the worker's own, kept in English).
+   */
+  readonly restarted: (who: 'results' | 'views', restarts: string | null) => readonly [string, string];
+  /** Before the link values replaced (each named in English, by the link's parameter names). */
+  readonly linkReplaced: string;
+}
+
+/**
+ * The surface of a shop sheet, for its title line: lengths given already in the user's unit with
+ * their symbol (`30 mm`); a radius of a surface of revolution null when straight.
+ */
+export type SheetSurface =
+  | { readonly kind: 'plane' }
+  | { readonly kind: 'sloped-plane' }
+  | { readonly kind: 'cylinder'; readonly concave: boolean; readonly radius: string; readonly axis: 'feed' | 'cross' }
+  | { readonly kind: 'doubly-curved'; readonly feed: string; readonly cross: string }
+  | { readonly kind: 'revolution'; readonly feed: string | null; readonly cross: string | null };
+
+/**
+ * The sentences of a shop sheet's refusals that are the sheet's own (core/output/shopSheet.ts
+ * SheetRefusal; English: the core's reasons): the lead out of range, the tool gouging a doubly
+ * curved point, h at or above that point's limit (with its unit) and what was given, waterline passes
+ * without a step-down. The others are the input errors' and the three-axis errors' sentences.
+ */
+export interface SheetRefusalWords {
+  readonly leadRange: string;
+  readonly curvedGouge: string;
+  readonly curvedWall: (limit: string, got: string) => string;
+  readonly noStepDown: string;
+}
+
+/** What a sheet's cells give: the step-over L, the horizontal step Lxy (raster) or the step-down dz (waterline). */
+export type SheetStep = 'interval' | 'horizontalStep' | 'stepDown';
+
+/**
+ * The shop sheet's words (issue 30): every heading, label, note and unit word of the sheet, as
+ * functions of its numbers (given as text in the user's unit, `u` its symbol). The symbols (L, Lxy,
+ * dz, h, Rcr, the marks' letters W, G, X) stay; the CSV stays English.
+ */
+export interface SheetWords {
+  /** The heading: `Shop sheet: L (mm)`. */
+  readonly title: (step: string, u: string) => string;
+  /** The tool line: its diameter, radius and corner radius, each with its unit. */
+  readonly tool: (d: string, r: string, rcr: string) => string;
+  /** Five-axis machining: the tilt (degrees, a number), the pattern, the surface's words. */
+  readonly fiveAxis: (tiltDeg: string, pattern: 'one-way' | 'zigzag', surface: string) => string;
+  /** Three-axis machining: the passes, the raster angle from the fall line (degrees) or null, the surface's words. */
+  readonly threeAxis: (passes: 'raster' | 'waterline', angleDeg: string | null, surface: string) => string;
+  /** The surface in words. */
+  readonly surface: (s: SheetSurface) => string;
+  /** What the rows, the columns and the cells are, in unit `u`. */
+  readonly axes: (u: string, columns: 'lead' | 'slope', step: SheetStep) => string;
+  /** The last title line: how the numbers were made, and the date (YYYY-MM-DD). */
+  readonly made: (date: string) => string;
+  /** The table's accessible name (a scrolling region). */
+  readonly region: string;
+  /** The table's caption (screen readers). */
+  readonly caption: (step: string, u: string, columns: 'lead' | 'slope') => string;
+  /** The corner's column axis name (lead or slope) and the degrees' unit word. */
+  readonly column: Readonly<Record<'lead' | 'slope', string>>;
+  readonly deg: string;
+  /** After the user's own height in its row (screen readers): ` (your h)`. */
+  readonly yourH: string;
+  /** Where a refused cell is: its row's h (with unit) and its column (degrees). */
+  readonly where: (h: string, columns: 'lead' | 'slope', deg: string) => string;
+  /** A mark's button name, and the line a tap on it writes (its reason stays the core's English). */
+  readonly markLabel: (letter: string, where: string) => string;
+  readonly markReason: (letter: string, where: string) => string;
+  /** Each mark's legend. */
+  readonly marks: Readonly<Record<'wall' | 'gouge' | 'range', string>>;
+  /** The no-scallop star's legend. */
+  readonly noScallop: string;
+  /** The legend of the bold row: the user's h with its unit. */
+  readonly ownRow: (h: string) => string;
+  /** How to read a mark's reason, with a pointer and on a touch screen. */
+  readonly hintHover: string;
+  readonly hintTouch: string;
+  /** The heights field's label, and its message for a bad list (`got`: what was wrong, or null). */
+  readonly heightsLabel: (u: string, max: number) => string;
+  readonly heightsError: (u: string, max: number, got: string | null) => string;
+  /** The buttons, and the line after a download. */
+  readonly csv: string;
+  readonly print: string;
+  readonly close: string;
+  readonly saved: (fileName: string) => string;
 }
 
 /** What an error's sentence is made of, in the language and unit on screen. */

@@ -4,7 +4,12 @@
  * symbols kept. The README's glossary names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
+import { DE_CHART } from './deChart';
 import { DE_ERRORS } from './deErrors';
+import { DE_RADIUS } from './deRadius';
+import { DE_SHEET } from './deSheet';
+import { DE_SLOPE } from './deSlope';
+import { DE_THREE_AXIS } from './deThreeAxis';
 
 export const catalogue: Catalogue = {
   lang: 'de',
@@ -54,6 +59,41 @@ export const catalogue: Catalogue = {
     leftFlank: '(linke Flanke)',
     contactOffset: '(Versatz des Kontaktpunkts)',
     cuspHeights: 'Kammhöhen (Zickzack)',
+    openFull: 'Vollständigen Rechner öffnen',
+    embedTitle: 'Bahnabstandsrechner',
+    alongSurface: 'L entlang der Fläche',
+    cuspNormal: 'Kammhöhe h (normal zur Fläche)',
+    equivalentLead: 'Äquivalenter Anstellwinkel ρ',
+    equivalentTilt: 'Äquivalenter Kippwinkel β',
+    lookupNote:
+      'Exakter Bahnabstand L und L/2 dieses Werkzeugs und dieser Bahnfolge je Rautiefe × Anstellwinkel × Kippwinkel (3-Achs: × Neigung, der programmierte Abstand Lxy oder dz), in der Einheit am Bildschirm (in jeder Spalte und im Dateinamen genannt), im Stapelformat der Kommandozeile.',
+    sheetNote:
+      'Eine druckbare Seite: der Bahnabstand dieses Werkzeugs, dieser Anstellung und Fläche je Rautiefe × Anstellwinkel (3-Achs: × Neigung), mit CSV.',
+    staleBadge: 'Zeigt den letzten gültigen Zustand',
+    typingBadge: 'Eingabe: die Szene folgt, sobald Sie innehalten oder die Eingabetaste drücken',
+    camera: 'Kamera',
+    legendTool: 'Werkzeug und seine Nachbarbahnen (im Zickzack gespiegelt)',
+    legendPath: 'Kontaktpunktbahnen (CC), im Abstand L',
+    legendContact: 'CC (P_base): Kontaktpunkt dieser Bahn',
+    legendDimension: 'L und L/2, ab der CC-Bahn dieser Bahn',
+    legendOffset: 'y0: Versatz des Kontaktpunkts vom Werkzeugmittelpunkt O',
+    legendCentre: 'O: Werkzeugmittelpunkt',
+    legendAxis: 'Werkzeugachse, ab ihrem Fußpunkt auf der Fläche',
+    legendDesign: 'Sollebene',
+    legendHplane: 'h-Pseudoebene',
+    legendPhp: 'P_hp: Punkt des Werkzeugs auf Kammhöhe',
+    legendSection: 'Schnittkreis durch jeden P_hp',
+    legendLoop: 'Torus / h-Pseudoebene',
+    legendRidge: 'Kämme in Vorschubrichtung (die Grate zwischen den Bahnen)',
+    legendDesignCurved:
+      'Zylinder oder doppelt gekrümmte Fläche (gefärbt nach der Höhe über der Tangentialebene: blau fällt ab, orange steigt, in Bändern)',
+    legendHsurface: 'h-Pseudofläche (die um h versetzte Fläche)',
+    legendCusp: 'Kämme darauf',
+    legendAxes:
+      'X (Vorschub), Y, Z am Kontaktpunkt (3-Achs: die Szene steht in der Maschine, Werkzeugachse senkrecht, Lxy oder dz ist der programmierte Abstand)',
+    legendTrace: 'Schritt für Schritt: geprüfter Schnitt, Kandidaten P_hp[i], gefundener Punkt',
+    legendExaggeration:
+      'Höhen nahe der Fläche N-fach überhöht, wenn der Kamm zu niedrig zum Sehen ist (Hinweis in der Szene; Zahlen unverändert)',
   },
   fields: {
     R: { label: 'Werkzeugradius R', hint: 'halber Werkzeugdurchmesser' },
@@ -120,6 +160,8 @@ export const catalogue: Catalogue = {
     'Copy L along the surface': 'Kopieren: L entlang der Fläche',
     'Copy the centre offset': 'Kopieren: den Versatz des Werkzeugmittelpunkts',
     'Copy the current answer': 'Kopieren: die aktuelle Antwort',
+    'Horizontal step Lxy (as programmed)': 'Waagerechter Bahnabstand Lxy (wie programmiert)',
+    'Step-down dz (as programmed)': 'Z-Zustellung dz (wie programmiert)',
   },
   finish: {
     'Finish: the feed marks the teeth leave': 'Oberfläche: die Vorschubmarken der Schneiden',
@@ -175,4 +217,43 @@ export const catalogue: Catalogue = {
     'flat floor': 'ebener Boden',
   },
   errors: DE_ERRORS,
+  sheet: DE_SHEET,
+  said: {
+    noScallopPlane: (d) =>
+      `Kein Kamm: ein Schaftfräser ohne Anstell- und Kippwinkel liegt flach auf der Ebene und hinterlässt bei keinem Bahnabstand bis zu seinem Durchmesser einen Kamm, also L = 2R = ${d} für jedes h.`,
+    copied: (v, u, q) => `${v} (${u}) kopiert${q === null ? '' : `: ${q}`}.`,
+    copyFailed: (v, u) => `Kopieren nicht möglich: den Wert markieren und von Hand kopieren (${v} ${u}).`,
+    empty: 'leer',
+    restarted: (who, restarts) => {
+      const subject = who === 'results' ? 'Der Rechner' : 'Der Rechner der Lehransichten';
+      return restarts === null
+        ? [`${subject} wurde neu gestartet (`, '). Ihre letzte Anfrage wurde erneut gesendet.']
+        : [
+            `${subject} hat nach ${restarts} Neustarts in Folge aufgehört (`,
+            `): ${who === 'results' ? 'die gezeigten Zahlen sind' : 'die Ansichten sind'} veraltet und so markiert. Eine beliebige Eingabe ändern, um es erneut zu versuchen.`,
+          ];
+    },
+    linkReplaced: 'Einige Werte des Links wurden ersetzt: ',
+  },
+  threeAxis: DE_THREE_AXIS,
+  chart: DE_CHART,
+  slope: DE_SLOPE,
+  radius: DE_RADIUS,
+  viewNotes: {
+    curved: {
+      tables: 'Die Tabellen der Studie gelten für deren eigene Bedingungen, auf einer Ebene',
+      stepper: 'Das Verfahren der Studie, Schritt für Schritt, löst eine Ebene oder einen Zylinder',
+      formulas: 'Die Formeln der Studie gelten für eine Ebene oder einen Zylinder',
+      surface: 'Die Simulation der bearbeiteten Fläche läuft auf einer Ebene oder einem Zylinder',
+    },
+    curvedAnswered:
+      'Diesen doppelt gekrümmten Punkt beantworten die Ergebnisse oben, das Profil (sein Schnitt quer zum Vorschub) und das Diagramm „L über jedem Radius“.',
+    question: (slope, psi) => `Neigung ${slope}°, ${psi === null ? 'Z-Ebenen' : `Zeilenwinkel ${psi}°`}`,
+    tables:
+      'Die Tabellen der Studie: deren eigene 5-Achs-Bedingungen (Anstellung auf einer Ebene), zum Nachschlagen; sie sind nicht die 3-Achs-Frage am Bildschirm.',
+    revolution: (q) =>
+      `Z-Ebenen auf einer Rotationsfläche (${q}) ändern ihren Abstand von Ebene zu Ebene; diese Ansicht zeichnet kongruente Bahnen und hat hier nichts zu zeichnen: das Diagramm „Abstand über Flächenneigung“ und die 3D-Szene zeigen sie.`,
+    equivalent: (q, lead, tilt, surface) =>
+      `Das senkrechte Werkzeug bei ${q} ist das Werkzeug mit Anstellwinkel ${lead}°, Kippwinkel ${tilt}° auf einer Ebene, in einer Richtung: ${surface ? 'seine Bahnen im Koordinatensystem der Ebene simuliert.' : 'im Koordinatensystem der Ebene gezeichnet (Längen entlang der Ebene, h entlang ihrer Normalen).'}`,
+  },
 };

@@ -8,6 +8,12 @@
 import { FIELDS, pageKeyOf } from '../../core/input/fields';
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../../core/input/units';
 import type { AnyInputError, DescribeOptions } from '../../core/input/validate';
+import {
+  MIN_THREE_AXIS_LENGTH_MM,
+  THREE_AXIS_SURFACE_RADIUS_RANGE_MM,
+  THREE_AXIS_TOOL_RADIUS_RANGE_MM,
+} from '../../core/threeAxis/errors';
+import type { ThreeAxisInputError } from '../../core/threeAxis/validate';
 import type { Catalogue, ErrorText } from './catalogue';
 
 export type { ErrorText } from './catalogue';
@@ -77,4 +83,47 @@ export function radiusGougingParts(t: ErrorText): {
     kind: r?.kind ?? 'none',
     other: o === undefined ? null : { kind: o.kind, radius: o.radiusMm === undefined ? null : t.length(o.radiusMm) },
   };
+}
+
+/**
+ * A three-axis error (the validation's or a solver's: core/threeAxis) in `catalogue`'s language and
+ * `unit`, from its data (field, code, limit, what was given) rather than the core's English
+ * sentence; `typed` replaces the value given (the text as typed in the user's unit).
+ */
+export function describeThreeAxisErrorIn(
+  catalogue: Catalogue,
+  e: ThreeAxisInputError,
+  unit: LengthUnit,
+  typed: string | null,
+  waterline: boolean,
+): string {
+  const key = pageKeyOf(e.field);
+  const label = key !== null ? catalogue.fields[key].label : catalogue.page.passes;
+  const u = unitSymbol(unit);
+  const length = (mm: number) => localDecimal(`${formatInputNumber(fromMm(mm, unit))} ${u}`, catalogue);
+  const isLength = FIELDS[e.field].kind === 'length';
+  const limit =
+    e.limit === null || !Number.isFinite(e.limit)
+      ? ''
+      : isLength
+        ? length(e.limit)
+        : localDecimal(`${formatAngleDeg(e.limit)}°`, catalogue);
+  const given =
+    typed !== null && typed !== '' ? typed : isLength && typeof e.got === 'number' ? length(e.got) : String(e.got);
+  const got = given.length > 24 ? `${given.slice(0, 21)}...` : given;
+  const [toolLo, toolHi] = THREE_AXIS_TOOL_RADIUS_RANGE_MM;
+  const [radiusLo, radiusHi] = THREE_AXIS_SURFACE_RADIUS_RANGE_MM;
+  return catalogue.threeAxis[e.code]({
+    e,
+    label,
+    got,
+    limit,
+    length,
+    isLength,
+    waterline,
+    noLimit: limit === '' || (e.limit ?? 0) < MIN_THREE_AXIS_LENGTH_MM,
+    toolRange: [length(toolLo), length(toolHi)],
+    radiusRange: [length(radiusLo), length(radiusHi)],
+    minLength: length(MIN_THREE_AXIS_LENGTH_MM),
+  });
 }

@@ -4,7 +4,12 @@
  * names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
+import { JA_CHART } from './jaChart';
 import { JA_ERRORS } from './jaErrors';
+import { JA_RADIUS } from './jaRadius';
+import { JA_SHEET } from './jaSheet';
+import { JA_SLOPE } from './jaSlope';
+import { JA_THREE_AXIS } from './jaThreeAxis';
 
 export const catalogue: Catalogue = {
   lang: 'ja',
@@ -54,6 +59,38 @@ export const catalogue: Catalogue = {
     leftFlank: '（左側）',
     contactOffset: '（接触点のずれ）',
     cuspHeights: 'カスプ高さ（往復）',
+    openFull: 'フル版の計算機を開く',
+    embedTitle: 'ピックフィード計算機',
+    alongSurface: '面に沿った L',
+    cuspNormal: 'カスプ高さ h（法線方向）',
+    equivalentLead: '等価前傾角 ρ',
+    equivalentTilt: '等価傾斜角 β',
+    lookupNote:
+      'この工具とパスの厳密なピックフィード L と L/2 を、カスプ高さ × 前傾角 × 傾斜角（3軸では × 勾配、CAM で指定する Lxy または dz）ごとに、画面の単位（各列とファイル名に明記）で、コマンドラインの一括処理と同じ形式にまとめます。',
+    sheetNote:
+      '印刷用の 1 ページ：この工具・姿勢・加工面のピックフィードをカスプ高さ × 前傾角（3軸では × 勾配）の表にし、CSV も付けます。',
+    staleBadge: '最後の有効な状態を表示中',
+    typingBadge: '入力中：手を止めるか Enter を押すと 3D 表示が更新されます',
+    camera: 'カメラ',
+    legendTool: '工具と隣り合うパス（往復では鏡映）',
+    legendPath: '接触点（CC）の経路、間隔 L',
+    legendContact: 'CC（P_base）：このパスの接触点',
+    legendDimension: 'このパスの CC 経路から測った L と L/2',
+    legendOffset: 'y0：工具中心 O から見た接触点のずれ',
+    legendCentre: 'O：工具中心点',
+    legendAxis: '工具軸（面上の足から）',
+    legendDesign: '設計平面',
+    legendHplane: 'h 擬似平面',
+    legendPhp: 'P_hp：カスプ高さにある工具上の点',
+    legendSection: '各 P_hp を通る断面円',
+    legendLoop: 'トーラス／h 擬似平面',
+    legendRidge: '送り方向に続くカスプ（スカラップの稜線）',
+    legendDesignCurved: '円筒または複曲面（接平面からの高さで帯状に着色：青は下がり、橙は上がる）',
+    legendHsurface: 'h 擬似曲面（面を h だけオフセットした面）',
+    legendCusp: 'その上のカスプ',
+    legendAxes: '接触点の X（送り）、Y、Z（3軸では機械上の姿勢で工具軸が垂直、Lxy または dz は CAM で指定する値）',
+    legendTrace: '段階表示：試した断面、候補 P_hp[i]、求めた点',
+    legendExaggeration: 'スカラップが低くて見えないときは面の近くで高さを N 倍に拡大（表示にバッジ、数値は不変）',
   },
   fields: {
     R: { label: '工具半径 R', hint: '工具直径の半分' },
@@ -104,6 +141,8 @@ export const catalogue: Catalogue = {
     'Copy L along the surface': '面に沿った L をコピー',
     'Copy the centre offset': '工具中心のずれをコピー',
     'Copy the current answer': '現在の答えをコピー',
+    'Horizontal step Lxy (as programmed)': '水平ピック Lxy（CAM で指定する値）',
+    'Step-down dz (as programmed)': 'Z ピッチ dz（CAM で指定する値）',
   },
   finish: {
     'Finish: the feed marks the teeth leave': '仕上げ面：刃が残す送りマーク',
@@ -158,4 +197,42 @@ export const catalogue: Catalogue = {
     'flat floor': '平らな底面',
   },
   errors: JA_ERRORS,
+  sheet: JA_SHEET,
+  said: {
+    noScallopPlane: (d) =>
+      `カスプなし：前傾も傾斜もないフラットエンドは平面に密着し、直径までのどのピックフィードでもカスプを残さないため、どの h でも L = 2R = ${d} です。`,
+    copied: (v, u, q) => `${v}（${u}）をコピーしました${q === null ? '' : `：${q}`}。`,
+    copyFailed: (v, u) => `コピーできませんでした。値を選択して手でコピーしてください（${v} ${u}）。`,
+    empty: '空欄',
+    restarted: (who, restarts) => {
+      const subject = who === 'results' ? '計算' : '解説ビューの計算';
+      return restarts === null
+        ? [`${subject}を再起動しました（`, '）。最後の要求をもう一度送りました。']
+        : [
+            `${subject}は ${restarts} 回続けて再起動したあと停止しました（`,
+            `）。${who === 'results' ? '表示中の数値' : 'ビュー'}は古く、そのように表示しています。入力をどれか変えるともう一度試します。`,
+          ];
+    },
+    linkReplaced: 'リンクの値の一部を置き換えました：',
+  },
+  threeAxis: JA_THREE_AXIS,
+  chart: JA_CHART,
+  slope: JA_SLOPE,
+  radius: JA_RADIUS,
+  viewNotes: {
+    curved: {
+      tables: '論文の表は論文自身の条件（平面）のものです',
+      stepper: '論文の手順の段階表示は平面か円筒を解きます',
+      formulas: '論文の数式は平面か円筒を扱います',
+      surface: '加工面のシミュレーションは平面か円筒で行います',
+    },
+    curvedAnswered:
+      'この複曲面上の点の答えは、上の結果、送り直交断面（送りに直交する断面）と「各半径と L」のグラフにあります。',
+    question: (slope, psi) => `勾配 ${slope}°、${psi === null ? '等高線' : `走査角 ${psi}°`}`,
+    tables: '論文の表：論文自身の 5 軸の条件（平面上の前傾）で、参考として示します。画面の 3 軸の問いではありません。',
+    revolution: (q) =>
+      `回転面上の等高線パス（${q}）は段ごとに間隔が変わるので、合同なパスを描くこのビューには描くものがありません。「勾配とピッチ」のグラフと 3D 表示が示します。`,
+    equivalent: (q, lead, tilt, surface) =>
+      `${q}で垂直に立つ工具は、平面上で前傾角 ${lead}°、傾斜角 ${tilt}°、片方向の工具と同じです。${surface ? 'そのパスを平面自身の座標でシミュレーションします。' : '平面自身の座標で描きます（長さは平面に沿って、h は法線方向）。'}`,
+  },
 };

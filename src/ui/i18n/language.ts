@@ -8,8 +8,9 @@
  */
 import type { ToolStorage } from '../savedTools';
 import type { Catalogue, FinishPhrase, Lang, Phrase } from './catalogue';
-import { describeInputErrorIn } from './errorText';
+import { describeInputErrorIn, describeThreeAxisErrorIn } from './errorText';
 import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
+import { noticeParts } from './noticeWords';
 import { setCatalogue, catalogue as wordsInForce } from './words';
 
 /** Loads a language's catalogue (null for English). */
@@ -21,7 +22,7 @@ export function loadCatalogue(lang: Lang): Promise<Catalogue | null> {
 
 /** The parts of the page that stay in English in another language (their `lang` says so). */
 const ENGLISH_PARTS =
-  '.teaching, .table-notes, .procedures thead, .notices, [data-testid="copy-status"], .finish-message, .finish-map figcaption, .legend, .meaning, .scene';
+  '.teaching, .table-notes, .procedures thead, .notices, .finish-message, .finish-map figcaption, .meaning, .scene';
 
 /** The page's English words of its `data-i18n` elements, read once before any language replaces them. */
 const ENGLISH = new WeakMap<Element, string>();
@@ -51,6 +52,10 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
   for (const e of root.querySelectorAll<HTMLElement>(ENGLISH_PARTS))
     if (catalogue === null) e.removeAttribute('lang');
     else e.setAttribute('lang', 'en');
+  // A translated element inside such a part (the scene's camera buttons) is in the language again.
+  for (const e of root.querySelectorAll<HTMLElement>('[data-i18n]'))
+    if (catalogue !== null && e.parentElement?.closest(ENGLISH_PARTS)) e.lang = catalogue.lang;
+    else e.removeAttribute('lang');
   document.documentElement.lang = catalogue?.lang ?? 'en';
   const title = root.querySelector('[data-i18n="title"]')?.textContent;
   if (title) document.title = title;
@@ -65,15 +70,28 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
 export function localizeResults(results: object): void {
   const words = wordsInForce();
   if (words === null) return;
+  if (results instanceof HTMLElement && results.dataset.testid === 'copy-status') {
+    spoken(results, words);
+    return;
+  }
   const root = results as ParentNode;
-  const label = root.querySelector<HTMLElement>('[data-role="headline-label"]');
-  const named =
-    label?.textContent === 'Step-over L'
-      ? words.headline.stepOver
-      : label?.textContent === 'Scallop height h'
-        ? words.headline.scallopHeight
-        : null;
-  if (label && named !== null) label.textContent = named;
+  // The headline's label, and the three-axis step's (forward and inverse).
+  for (const label of root.querySelectorAll<HTMLElement>('[data-role="headline-label"], [data-role="step-label"]')) {
+    const english = label.textContent ?? '';
+    const named =
+      english === 'Step-over L'
+        ? words.headline.stepOver
+        : english === 'Scallop height h'
+          ? words.headline.scallopHeight
+          : words.phrases[english as Phrase];
+    if (named !== undefined) label.textContent = named;
+  }
+  // A flat end lying flat on a plane: the sentence with its L = 2R.
+  const flat = root.querySelector<HTMLElement>('[data-testid="no-scallop"]');
+  const diameter = /^No scallop: a flat end without lead or tilt .* so L = 2R = (.+) for any h\.$/.exec(
+    flat?.textContent ?? '',
+  )?.[1];
+  if (flat && diameter !== undefined) flat.textContent = words.said.noScallopPlane(localDecimal(diameter, words));
   // The finish box's words (finishPanel.ts keeps each element's English in data-phrase).
   for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]')) {
     const text = words.finish[e.dataset.phrase as FinishPhrase];
@@ -100,7 +118,7 @@ export function localizeResults(results: object): void {
   }
   // Only the text nodes change (a cell's <output> and its test id stay).
   for (const e of root.querySelectorAll<HTMLElement>(
-    '.headline output, .results .procedures td, .results .pct, .finish-results output',
+    '.headline output, .results .procedures td, .results .pct, .finish-results output, [data-role="headline-question"]',
   )) {
     const walker = document.createTreeWalker(e, NodeFilter.SHOW_TEXT);
     for (let node = walker.nextNode(); node !== null; node = walker.nextNode()) {
@@ -108,6 +126,54 @@ export function localizeResults(results: object): void {
       const local = localDecimal(text, words);
       if (local !== text) node.nodeValue = local;
     }
+  }
+}
+
+/**
+ * Copy's spoken confirmation (copy.ts writes it in English into its live region, then asks for
+ * this): the same value (with a point, as copied) and unit, the question in the language with its
+ * decimal sign.
+ */
+function spoken(live: HTMLElement, words: Catalogue): void {
+  const text = live.textContent ?? '';
+  const copied = /^Copied (\S+) \(([^)]*)\)(?:: (.*))?\.$/s.exec(text);
+  const failed = /^Could not copy: select the value and copy it by hand \((\S+) ?(.*)\)\.$/.exec(text);
+  if (copied)
+    live.textContent = words.said.copied(
+      copied[1] ?? '',
+      copied[2] ?? '',
+      copied[3] === undefined ? null : localDecimal(copied[3], words),
+    );
+  else if (failed) live.textContent = words.said.copyFailed(failed[1] ?? '', failed[2] ?? '');
+}
+
+/**
+ * The notice box in the language in force: the page writes it in English (a worker restarted or
+ * stopped, link values replaced); its sentence is put into the language, the worker's reason and
+ * the link's values (named by their parameters) kept in English in a part that says so. The English
+ * is kept to word it again in another language, or to put it back.
+ */
+export function localizeNotice(box: HTMLElement): void {
+  const words = wordsInForce();
+  const text = box.textContent ?? '';
+  const ours = box.dataset.worded === text;
+  if (ours && (words?.lang ?? 'en') === (box.getAttribute('lang') ?? 'en')) return;
+  const english = ours ? (box.dataset.english ?? text) : text;
+  delete box.dataset.worded;
+  delete box.dataset.english;
+  box.removeAttribute('lang');
+  if (ours && words === null) box.textContent = english;
+  if (words === null) return;
+  const parts = noticeParts(english, words);
+  if (parts !== null) {
+    const [before, kept, after] = parts;
+    const part = document.createElement('span');
+    part.lang = 'en';
+    part.textContent = kept;
+    box.replaceChildren(before, part, after);
+    box.lang = words.lang;
+    box.dataset.english = english;
+    box.dataset.worded = box.textContent ?? '';
   }
 }
 
@@ -150,6 +216,14 @@ export class LanguageSwitch {
     start: Lang,
   ) {
     this.wanted = start;
+    // The notice box follows the language whenever the page writes into it.
+    const box = document.querySelector<HTMLElement>('[data-testid="notice"]');
+    if (box !== null)
+      new MutationObserver(() => localizeNotice(box)).observe(box, {
+        childList: true,
+        characterData: true,
+        subtree: true,
+      });
     const radios = [...root.querySelectorAll<HTMLInputElement>('input[name="lang"]')];
     this.radios = radios;
     // A tap made while this code was loading stands (the radio is checked already): taken as the user's.
@@ -192,10 +266,16 @@ export class LanguageSwitch {
 
   private loaded(lang: Lang, catalogue: Catalogue | null): void {
     if (this.wanted !== lang) return;
-    setCatalogue(catalogue, localizeResults, (e, unit, options) =>
-      catalogue === null ? '' : describeInputErrorIn(catalogue, e, unit, options),
+    setCatalogue(
+      catalogue,
+      localizeResults,
+      (e, unit, options) => (catalogue === null ? '' : describeInputErrorIn(catalogue, e, unit, options)),
+      (e, unit, typed, waterline) =>
+        catalogue === null ? '' : describeThreeAxisErrorIn(catalogue, e, unit, typed, waterline),
     );
     applyCatalogue(document, catalogue);
+    const box = document.querySelector<HTMLElement>('[data-testid="notice"]');
+    if (box !== null) localizeNotice(box);
     this.events.changed(lang);
   }
 }

@@ -6,10 +6,19 @@
  */
 import type { LengthUnit } from '../../core/input/units';
 import { type AnyInputError, type DescribeOptions, describeInputError } from '../../core/input/validate';
+import type { ThreeAxisInputError } from '../../core/threeAxis/validate';
 import type { Catalogue, FieldWords } from './catalogue';
 
 /** An input error's words in the language in force (language.ts's errorText.ts). */
 export type ErrorDescriber = (e: AnyInputError, unit: LengthUnit, options: DescribeOptions) => string;
+
+/** A three-axis error's words in the language in force: what was typed, and whether the passes are waterline. */
+export type ThreeAxisDescriber = (
+  e: ThreeAxisInputError,
+  unit: LengthUnit,
+  typed: string | null,
+  waterline: boolean,
+) => string;
 
 let current: Catalogue | null = null;
 // The results' root is typed `object` here: this module is read by Node's tests of the page's
@@ -17,6 +26,7 @@ let current: Catalogue | null = null;
 /** Puts the results drawn in English into the language in force (language.ts's), or none. */
 let localizer: ((root: object) => void) | null = null;
 let describer: ErrorDescriber | null = null;
+let threeAxisDescriber: ThreeAxisDescriber | null = null;
 
 /**
  * Makes `catalogue` (null: English) the page's words, with the pass over the drawn results and the
@@ -26,10 +36,22 @@ export function setCatalogue(
   catalogue: Catalogue | null,
   results: ((root: object) => void) | null,
   errors: ErrorDescriber | null,
+  threeAxisErrors: ThreeAxisDescriber | null = null,
 ): void {
   current = catalogue;
   localizer = catalogue === null ? null : results;
   describer = catalogue === null ? null : errors;
+  threeAxisDescriber = catalogue === null ? null : threeAxisErrors;
+}
+
+/** A three-axis error in the language in force, or null in English (the page words the core's message). */
+export function describeThreeAxis(
+  e: ThreeAxisInputError,
+  unit: LengthUnit,
+  typed: string | null,
+  waterline: boolean,
+): string | null {
+  return threeAxisDescriber?.(e, unit, typed, waterline) ?? null;
 }
 
 /** An input error in the language in force and `unit` (English: the core's describeInputError). */

@@ -10,6 +10,10 @@ import { formatSignificant, fromMm, unitSymbol } from '../../core/input/units';
 import { APPROXIMATION_KEYS, PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import type { Sweep, SweepGap } from '../../worker/protocol';
 import { formatDeg, formatLenUnit, formatSignedLenUnit, formatSignedPercent } from '../format';
+import type { ChartWords } from '../i18n/catalogue';
+import { localDecimal } from '../i18n/langChoice';
+import { catalogue } from '../i18n/words';
+import { EN_CHART } from './chartWords';
 import { html, type PageKind, type PageViewContext, type TeachingView, type ViewContext } from './common';
 import { type ChartGapBand, type ChartLine, lineChart } from './lineChart';
 import { RadiusCharts } from './radiusChart';
@@ -40,7 +44,7 @@ interface ChartData {
   readonly current: number;
   /** Index of the current angle among the samples (-1 when it is not one). */
   readonly at: number;
-  readonly angleName: string;
+  readonly angleName: 'rho' | 'beta';
   readonly xLabel: string;
   readonly yLabel: string;
   readonly value: (v: number) => string;
@@ -57,11 +61,20 @@ function chart(testId: string): Chart {
 }
 
 /** On a cylinder, what the charts' exact curve is and what the approximations' are. */
-function cylinderSummary(ctx: ViewContext): string {
+function cylinderSummary(ctx: ViewContext, words: ChartWords): string {
   const s = ctx.data.forward.surface;
   if (s.kind !== 'cylinder') return '';
-  const side = s.radiusMm > 0 ? 'convex' : 'concave';
-  return ` On this ${side} cylinder (axis ${s.axis === 'feed' ? 'along' : 'across'} the feed) the exact curve is the cylinder's (none where the posture would gouge the surface or h is beyond its flanks); the approximations are as on a plane, as in the table.`;
+  return words.cylinder(s.radiusMm < 0, s.axis);
+}
+
+/** The charts' words in the language in force (English: the charts as written). */
+function chartWords(): ChartWords {
+  return catalogue()?.chart ?? EN_CHART;
+}
+
+/** A text's numbers with the decimal sign of the language in force (German 2,8872; every digit kept). */
+function local(text: string): string {
+  return localDecimal(text, catalogue());
 }
 
 export class ChartView implements TeachingView {
@@ -71,8 +84,8 @@ export class ChartView implements TeachingView {
   private readonly lead = chart('chart-lead');
   private readonly error = chart('chart-error');
   private readonly tilt = chart('chart-tilt');
-  private readonly errorUnit = html('select', { 'aria-label': 'Error unit', 'data-testid': 'chart-error-unit' });
-  private readonly rhoAxis = html('select', { 'aria-label': 'Lead angle axis', 'data-testid': 'chart-rho-axis' });
+  private readonly errorUnit = html('select', { 'data-testid': 'chart-error-unit' });
+  private readonly rhoAxis = html('select', { 'data-testid': 'chart-rho-axis' });
   /** The charted values at the current posture, as text (charts are pictures to a screen reader). */
   private readonly summary = html('p', { class: 'view-note', 'data-testid': 'chart-summary', 'aria-live': 'polite' });
   private ctx: ViewContext | null = null;
@@ -87,16 +100,11 @@ export class ChartView implements TeachingView {
   private pageCtx: PageViewContext | null = null;
 
   constructor() {
-    this.errorUnit.append(
-      html('option', { value: 'pct' }, 'error in %'),
-      html('option', { value: 'mm' }, 'error in length'),
-    );
+    // Their words are the language's when the charts are drawn (rebuild).
+    this.errorUnit.append(html('option', { value: 'pct' }), html('option', { value: 'mm' }));
     this.errorUnit.addEventListener('change', () => this.ctx && this.rebuild(this.ctx));
     // A log axis spreads the small lead angles, where the procedures part ways.
-    this.rhoAxis.append(
-      html('option', { value: 'log' }, 'rho axis: log'),
-      html('option', { value: 'linear' }, 'rho axis: linear'),
-    );
+    this.rhoAxis.append(html('option', { value: 'log' }), html('option', { value: 'linear' }));
     this.rhoAxis.addEventListener('change', () => this.ctx && this.rebuild(this.ctx));
     const tools = html('div', { class: 'view-tools' });
     tools.append(this.errorUnit, this.rhoAxis);
@@ -140,7 +148,26 @@ export class ChartView implements TeachingView {
     else this.radius.draw(ctx.data.feed, ctx.data.cross, ctx.unit, this.drawnWidthPx);
   }
 
+  /** The choices' words, and the charts' language (the teaching views are otherwise marked English). */
+  private name(words: ChartWords): void {
+    const [pct, length] = this.errorUnit.options;
+    const [log, linear] = this.rhoAxis.options;
+    if (pct && length && log && linear) {
+      pct.textContent = words.errorIn.pct;
+      length.textContent = words.errorIn.length;
+      log.textContent = words.rhoScale.log;
+      linear.textContent = words.rhoScale.linear;
+    }
+    this.errorUnit.setAttribute('aria-label', words.errorIn.name);
+    this.rhoAxis.setAttribute('aria-label', words.rhoScale.name);
+    const lang = catalogue()?.lang;
+    if (lang === undefined) this.classic.removeAttribute('lang');
+    else this.classic.lang = lang;
+  }
+
   private rebuild(ctx: ViewContext): void {
+    const words = chartWords();
+    this.name(words);
     const { lead, tilt } = ctx.data.sweeps;
     const rho = ctx.data.forward.leadAngleDeg;
     const beta = ctx.data.forward.tiltAngleDeg;
@@ -161,18 +188,18 @@ export class ChartView implements TeachingView {
     }));
     const lines = (s: Sweep, keys: readonly ProcedureKey[]) => keys.map((key) => ({ key, values: s.values[key] }));
     const k = fromMm(1, ctx.unit);
-    const common = { logX, current: rho, at: lead.angleDeg.indexOf(rho), angleName: 'rho' };
+    const common = { logX, current: rho, at: lead.angleDeg.indexOf(rho), angleName: 'rho' as const };
     const specs: Array<[Chart, ChartData]> = [
       [
         this.lead,
         {
           ...common,
-          title: `L [${unit}] against lead rho [deg] (R, Rcr, beta, h fixed; dashed: current rho = ${formatDeg(rho)})`,
+          title: local(words.leadTitle(unit, formatDeg(rho))),
           x: lead.angleDeg,
           lines: lines(lead, PROCEDURE_KEYS),
           yFactor: k,
           gaps: lead.gaps,
-          xLabel: 'lead angle rho [deg]',
+          xLabel: words.leadAxis,
           yLabel: `L [${unit}]`,
           value: len,
         },
@@ -181,20 +208,20 @@ export class ChartView implements TeachingView {
         this.error,
         {
           ...common,
-          title: `Signed error of each approximation against exact, along the lead [${pct ? '%' : unit}]`,
+          title: words.errorTitle(pct ? '%' : unit),
           x: lead.angleDeg,
           lines: errorLines,
           yFactor: pct ? 1 : k,
           gaps: lead.gaps,
-          xLabel: 'lead angle rho [deg]',
-          yLabel: pct ? 'error [%]' : `error [${unit}]`,
+          xLabel: words.leadAxis,
+          yLabel: words.errorAxis(pct ? '%' : unit),
           value: pct ? (v) => `${formatSignedPercent(v)} %` : (v) => formatSignedLenUnit(v, ctx.unit),
         },
       ],
       [
         this.tilt,
         {
-          title: `L [${unit}] against tilt beta [deg] (R, Rcr, rho, h fixed; dashed: current beta = ${formatDeg(beta)})`,
+          title: local(words.tiltTitle(unit, formatDeg(beta))),
           x: tilt.angleDeg,
           logX: false,
           lines: lines(tilt, PROCEDURE_KEYS),
@@ -203,52 +230,63 @@ export class ChartView implements TeachingView {
           current: beta,
           at: tilt.angleDeg.indexOf(beta),
           angleName: 'beta',
-          xLabel: 'tilt angle beta [deg]',
+          xLabel: words.tiltAxis,
           yLabel: `L [${unit}]`,
           value: len,
         },
       ],
     ];
     this.drawnWidthPx = this.width();
-    for (const [c, data] of specs) this.draw(c, data, leadOnly);
+    for (const [c, data] of specs) this.draw(c, data, leadOnly, words);
     const at = tilt.angleDeg.indexOf(beta);
     this.summary.textContent =
       at < 0
-        ? NO_SUMMARY
-        : `At rho = ${formatDeg(rho)} deg, beta = ${formatDeg(beta)} deg, L: ${PROCEDURE_KEYS.map((key) => {
-            const v = tilt.values[key][at];
-            return `${PROCEDURES[key].shortLabel} ${v === null || v === undefined ? 'n/a' : len(v)}`;
-          }).join(', ')}.${cylinderSummary(ctx)}`;
+        ? words.noSummary
+        : local(
+            `${words.summary(
+              formatDeg(rho),
+              formatDeg(beta),
+              PROCEDURE_KEYS.map((key) => {
+                const v = tilt.values[key][at];
+                return `${PROCEDURES[key].shortLabel} ${v === null || v === undefined ? words.none : len(v)}`;
+              }).join(', '),
+            )}${cylinderSummary(ctx, words)}`,
+          );
     this.highlight(this.highlighted);
   }
 
-  private draw(c: Chart, data: ChartData, leadOnly: boolean): void {
+  private draw(c: Chart, data: ChartData, leadOnly: boolean, words: ChartWords): void {
     const keys = data.lines.map((l) => l.key);
     const bands: ChartGapBand[] = keys.flatMap((key) =>
       data.gaps[key].map((g) => ({ key, from: g.fromDeg, to: g.toDeg, reason: g.reason })),
     );
     c.title.textContent = data.title;
-    c.picture.replaceChildren(
-      lineChart({
-        widthPx: this.drawnWidthPx,
-        plotHeightPx: PLOT_HEIGHT_PX,
-        x: data.x,
-        logX: data.logX,
-        lines: data.lines,
-        yFactor: data.yFactor,
-        gaps: bands,
-        markerX: data.current,
-        xLabel: data.xLabel,
-        yLabel: data.yLabel,
-        description: `${data.title}. The values at the current angle are listed beside the chart.`,
-      }),
-    );
+    const picture = lineChart({
+      widthPx: this.drawnWidthPx,
+      plotHeightPx: PLOT_HEIGHT_PX,
+      x: data.x,
+      logX: data.logX,
+      lines: data.lines,
+      yFactor: data.yFactor,
+      gaps: bands,
+      markerX: data.current,
+      xLabel: data.xLabel,
+      yLabel: data.yLabel,
+      description: words.description(data.title),
+    });
+    // The ticks' numbers with the locale's decimal sign.
+    if (catalogue() !== null)
+      for (const t of picture.querySelectorAll('text')) {
+        const text = t.textContent ?? '';
+        if (local(text) !== text) t.textContent = local(text);
+      }
+    c.picture.replaceChildren(picture);
     // The legend: each procedure's value at the current angle, without hovering.
     c.legend.replaceChildren(
-      html('li', { class: 'chart-legend-head' }, `at ${data.angleName} = ${formatDeg(data.current)} deg:`),
+      html('li', { class: 'chart-legend-head' }, local(words.legendHead(data.angleName, formatDeg(data.current)))),
       ...data.lines.map((line) => {
         const v = data.at < 0 ? null : (line.values[data.at] ?? null);
-        const name = `${PROCEDURES[line.key].shortLabel}${leadOnly && PROCEDURES[line.key].leadOnly ? ' (lead only)' : ''}`;
+        const name = `${PROCEDURES[line.key].shortLabel}${leadOnly && PROCEDURES[line.key].leadOnly ? words.leadOnly : ''}`;
         const item = html('li', { class: 'legend-item', 'data-procedure': line.key });
         item.append(
           html('span', { class: 'swatch' }),
@@ -256,13 +294,20 @@ export class ChartView implements TeachingView {
           html(
             'span',
             { class: 'legend-value', 'data-testid': `${c.figure.dataset.testid}-value-${line.key}` },
-            v === null || !Number.isFinite(v) ? 'n/a (see below)' : data.value(v),
+            v === null || !Number.isFinite(v) ? words.seeBelow : local(data.value(v)),
           ),
         );
         return item;
       }),
     );
-    c.notes.replaceChildren(...gapNotes(keys, data.gaps, data.angleName).map((t) => html('li', {}, t)));
+    // A gap's reason is the solver's sentence, in English (said so by its lang).
+    c.notes.replaceChildren(
+      ...gapNotes(keys, data.gaps, data.angleName, words).map(({ lead, reason }) => {
+        const li = html('li', {}, local(lead));
+        li.append(html('span', { lang: 'en' }, reason), '.');
+        return li;
+      }),
+    );
   }
 
   highlight(key: ProcedureKey | null): void {
@@ -281,14 +326,16 @@ export class ChartView implements TeachingView {
 }
 
 /**
- * One sentence per distinct gap: the procedures without an answer over one range of the angle,
- * and why (procedures sharing the same range and reason are named together).
+ * One sentence per distinct gap: the procedures without an answer over one range of the angle (in
+ * `words`' language), and why (the solver's reason; procedures sharing the same range and reason
+ * are named together).
  */
 export function gapNotes(
   keys: readonly ProcedureKey[],
   gaps: { readonly [K in ProcedureKey]: readonly SweepGap[] },
-  angleName: string,
-): string[] {
+  angleName: 'rho' | 'beta',
+  words: ChartWords = EN_CHART,
+): Array<{ readonly lead: string; readonly reason: string }> {
   const groups = new Map<string, { names: string[]; gap: SweepGap }>();
   for (const key of keys) {
     for (const gap of gaps[key]) {
@@ -301,12 +348,7 @@ export function gapNotes(
   return [...groups.values()].map(({ names, gap }) => {
     // The edges are samples: the true edge lies between a sample and the next one.
     const deg = (d: number) => formatSignificant(d, { digits: 3, trimZeros: true });
-    const range =
-      gap.fromDeg === gap.toDeg
-        ? `at about ${angleName} = ${deg(gap.fromDeg)} deg`
-        : `for ${angleName} from about ${deg(gap.fromDeg)} to ${deg(gap.toDeg)} deg`;
-    return `No answer from ${names.join(', ')} ${range}: ${gap.reason}.`;
+    const to = gap.fromDeg === gap.toDeg ? null : deg(gap.toDeg);
+    return { lead: words.gap(names.join(', '), angleName, deg(gap.fromDeg), to), reason: gap.reason };
   });
 }
-
-const NO_SUMMARY = 'The current posture is outside the charted range.';

@@ -5,24 +5,18 @@
  * Pure (no DOM).
  */
 import type { FIELDS } from '../../core/input/fields';
+import type { ViewNoteWords } from '../i18n/catalogue';
+import { EN_VIEW_NOTES } from './viewNoteWords';
 
 /** A view's id (common.ts ViewId; not imported from there: this module is pure, tested without a DOM). */
 type ViewId = Exclude<(typeof FIELDS.view.values)[number], 'result'>;
 
-/** What each view that does not draw a doubly curved point works on. */
-const WORKS_ON: Readonly<Partial<Record<ViewId, string>>> = {
-  tables: "The paper's tables hold its own conditions, on a plane",
-  stepper: "The paper's procedure, step by step, solves a plane or a cylinder",
-  formulas: "The paper's formulas take a plane or a cylinder",
-  surface: 'The machined-surface simulation runs on a plane or a cylinder',
-};
-
 /**
  * The neutral line over a view for a doubly curved point: null for a view that draws it (the
- * Profile, the chart), else what the view works on and where the point is answered.
+ * Profile, the chart), else what the view works on and where the point is answered (in `words`'
+ * language).
  */
-export function curvedViewNote(view: ViewId): string | null {
-  const works = WORKS_ON[view];
-  if (works === undefined) return null;
-  return `${works}. This doubly curved point is answered by the results above, the Profile (its section across the feed) and the L against each radius chart.`;
+export function curvedViewNote(view: ViewId, words: ViewNoteWords = EN_VIEW_NOTES): string | null {
+  if (view !== 'tables' && view !== 'stepper' && view !== 'formulas' && view !== 'surface') return null;
+  return `${words.curved[view]}. ${words.curvedAnswered}`;
 }

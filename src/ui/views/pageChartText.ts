@@ -6,7 +6,10 @@
 import { formatSignificant, fromMm, unitSymbol } from '../../core/input/units';
 import type { RadiusGap, RadiusSweepData, SlopeChartData } from '../../worker/teachProtocol';
 import { formatDeg, formatLenUnit } from '../format';
+import type { RadiusWords, SlopeWords } from '../i18n/catalogue';
 import type { Unit } from '../state';
+import { EN_RADIUS } from './radiusWords';
+import { EN_SLOPE } from './slopeWords';
 
 /** Degrees in words: 38.2° (three significant digits, never -0). */
 export function deg(d: number): string {
@@ -21,62 +24,49 @@ export function radiusNames(which: RadiusSweepData['which']): { self: string; ot
 /**
  * One sentence: where raster (at the compared raster angle) and waterline program the same step
  * for the charted scallop h, and which programs the larger above and below; or, plainly, that they
- * do not cross. Lengths in the user's unit.
+ * do not cross. Lengths in the user's unit; in `words`' language.
  */
-export function crossingSentence(d: SlopeChartData, unit: Unit): string {
-  const raster = `raster at psi = ${deg(d.crossingRasterAngleDeg)}`;
+export function crossingSentence(d: SlopeChartData, unit: Unit, words: SlopeWords = EN_SLOPE): string {
   const h = formatLenUnit(d.hMm, unit, 'height');
-  const where = d.onRevolution ? ' (on a plane of that slope)' : '';
-  if (d.crossingDeg === null)
-    return `Waterline and ${raster} do not cross for a scallop of ${h}${where}: ${raster} programs the larger step at every slope where both are valid.`;
-  const step =
-    d.crossingStepMm === null ? '' : ` (both ${formatLenUnit(d.crossingStepMm, unit)} at ${deg(d.crossingDeg)})`;
-  return `Above ${deg(d.crossingDeg)} waterline programs a larger step than ${raster} for the same scallop of ${h}, below it ${raster} does${step}${where}.`;
+  return words.crossing(
+    d.crossingDeg === null ? null : deg(d.crossingDeg),
+    deg(d.crossingRasterAngleDeg),
+    h,
+    d.crossingDeg === null || d.crossingStepMm === null ? null : formatLenUnit(d.crossingStepMm, unit),
+    d.onRevolution,
+  );
 }
 
-/** A signed radius in words: "convex 40 mm", "concave 20 mm", "straight". */
-export function radiusWords(radiusMm: number, unit: Unit): string {
-  if (!Number.isFinite(radiusMm)) return 'straight';
+/** A signed radius in words: "convex 40 mm", "concave 20 mm", "straight" (in `words`' language). */
+export function radiusWords(radiusMm: number, unit: Unit, words: RadiusWords = EN_RADIUS): string {
+  if (!Number.isFinite(radiusMm)) return words.radius('straight', '');
   const r = formatSignificant(fromMm(Math.abs(radiusMm), unit), { digits: 6, trimZeros: true });
-  return `${radiusMm > 0 ? 'convex' : 'concave'} ${r} ${unitSymbol(unit)}`;
+  return words.radius(radiusMm > 0 ? 'convex' : 'concave', `${r} ${unitSymbol(unit)}`);
 }
 
-/** One sentence per gap: which radii of which side have no L, and why (radii in the user's unit). */
-export function radiusGapNotes(s: RadiusSweepData, unit: Unit): string[] {
+/** One sentence per gap: which radii of which side have no L, and why (radii in the user's unit; in `words`' language). */
+export function radiusGapNotes(s: RadiusSweepData, unit: Unit, words: RadiusWords = EN_RADIUS): string[] {
   const { self, other } = radiusNames(s.which);
-  const held = `${other} held ${radiusWords(s.heldMm, unit)}`;
+  const held = radiusWords(s.heldMm, unit, words);
   const r = (mm: number) =>
     `${formatSignificant(fromMm(mm, unit), { digits: 3, trimZeros: true })} ${unitSymbol(unit)}`;
-  return s.gaps.map((g: RadiusGap) => {
-    const range =
-      g.fromMm === g.toMm
-        ? `at about |${self}| = ${r(g.fromMm)}`
-        : `for |${self}| from about ${r(g.fromMm)} to ${r(g.toMm)}`;
-    const why =
-      g.reason === 'gouging'
-        ? 'the tool gouges the surface at this posture'
-        : 'h is at or above the flank or shank limit there';
-    return `No ${g.side} L ${range} (${held}): ${why}.`;
-  });
+  return s.gaps.map((g: RadiusGap) =>
+    words.gap(
+      g.side,
+      self,
+      r(g.fromMm),
+      g.fromMm === g.toMm ? null : r(g.toMm),
+      other,
+      held,
+      g.reason === 'gouging' ? 'gouging' : 'limit',
+    ),
+  );
 }
 
-/** Why a constant step leaves no cusp, by the core's code (core/threeAxis/errors.ts). */
-const REFUSAL_WORDS: Readonly<Record<string, string>> = {
-  'beyond-step': 'passes that far apart leave a wall, not a scallop',
-  'shank-cuts': "the tool's shank, not its corner, would form the cusp",
-  'flank-wall': 'the flank rises to a wall before the passes meet',
-  'wall-only': 'the side rises straight from the contact: no scallop at any step',
-  'past-surface': 'the next pass would lie past the usable surface',
-  'needs-slope': 'on a flat floor a step-down means nothing',
-  gouging: 'the tool would gouge the surface',
-};
-
-/** One sentence per run of slopes where the constant step leaves no cusp, and why. */
-export function refusalNotes(d: SlopeChartData, unit: Unit): string[] {
+/** One sentence per run of slopes where the constant step leaves no cusp, and why (in `words`' language). */
+export function refusalNotes(d: SlopeChartData, unit: Unit, words: SlopeWords = EN_SLOPE): string[] {
   const step = `${d.passes === 'raster' ? 'Lxy' : 'dz'} = ${formatLenUnit(d.constantStepMm, unit)}`;
-  return d.constantStepRefusals.map((r) => {
-    const range =
-      r.fromDeg === r.toDeg ? `at about ${deg(r.fromDeg)}` : `from about ${deg(r.fromDeg)} to ${deg(r.toDeg)}`;
-    return `No scallop for the constant ${step} ${range}: ${REFUSAL_WORDS[r.code] ?? 'the solver refuses it'}.`;
-  });
+  return d.constantStepRefusals.map((r) =>
+    words.refusal(step, deg(r.fromDeg), r.fromDeg === r.toDeg ? null : deg(r.toDeg), r.code),
+  );
 }

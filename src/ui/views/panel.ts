@@ -5,6 +5,7 @@
 
 import type { ProcedureKey } from '../../core/procedures/procedures';
 import type { TabName } from '../i18n/catalogue';
+import { localDecimal } from '../i18n/langChoice';
 import { catalogue } from '../i18n/words';
 import { ChartView } from './chartView';
 import { html, type PageViewContext, type TeachingView, type ViewContext, type ViewId } from './common';
@@ -146,6 +147,13 @@ export class TeachingPanel {
     } else if (this.ctx !== null) view.update(this.ctx);
   }
 
+  /** The language changed: the tabs named anew, and the visible view drawn in its words. */
+  relabel(): void {
+    this.nameTabs();
+    const view = this.views.find((v) => v.id === this.active);
+    if (view) this.updateView(view);
+  }
+
   /**
    * The tab names follow what the views draw (the chart's: the five-axis sweeps, the slope's, the
    * radii's), in the language in force (i18n/words.ts; English: the views' own titles).
@@ -167,10 +175,15 @@ export class TeachingPanel {
       page === null
         ? null
         : page.kind === 'three-axis'
-          ? threeAxisViewNote(this.active, page.data)
-          : curvedViewNote(this.active);
+          ? threeAxisViewNote(this.active, page.data, catalogue()?.viewNotes)
+          : curvedViewNote(this.active, catalogue()?.viewNotes);
     this.pageNote.hidden = text === null;
-    if (this.pageNote.textContent !== (text ?? '')) this.pageNote.textContent = text ?? '';
+    // In the language in force (its numbers with its decimal sign); the views are otherwise marked English.
+    const local = text === null ? '' : localDecimal(text, catalogue());
+    if (this.pageNote.textContent !== local) this.pageNote.textContent = local;
+    const lang = catalogue()?.lang;
+    if (lang === undefined) this.pageNote.removeAttribute('lang');
+    else this.pageNote.lang = lang;
   }
 
   /** Data that answers the inputs on screen: only the visible view redraws now; the others when shown. */

@@ -8,10 +8,24 @@
 import { fromMm, unitSymbol } from '../../core/input/units';
 import type { RadiusSweepData } from '../../worker/teachProtocol';
 import { formatLenUnit } from '../format';
+import type { RadiusWords } from '../i18n/catalogue';
+import { localDecimal } from '../i18n/langChoice';
+import { catalogue } from '../i18n/words';
 import type { Unit } from '../state';
 import { html } from './common';
 import { type ChartGapBand, lineChart } from './lineChart';
 import { radiusNames as names, radiusGapNotes, radiusWords } from './pageChartText';
+import { EN_RADIUS } from './radiusWords';
+
+/** The charts' words in the language in force (English: as written). */
+function words(): RadiusWords {
+  return catalogue()?.radius ?? EN_RADIUS;
+}
+
+/** A text's numbers with the decimal sign of the language in force (German 0,05; every digit kept). */
+function local(text: string): string {
+  return localDecimal(text, catalogue());
+}
 
 const PLOT_HEIGHT_PX = 240;
 
@@ -40,7 +54,10 @@ class RadiusFigure {
     const { self, other } = names(s.which);
     const u = unitSymbol(unit);
     const cur = Math.abs(s.currentMm);
-    this.title.textContent = `L [${u}] against |${self}| [${u}], log axis (${other} held ${radiusWords(s.heldMm, unit)}; R, Rcr, posture, h fixed; dashed: current ${self} = ${radiusWords(s.currentMm, unit)})`;
+    const w = words();
+    this.title.textContent = local(
+      w.title(u, self, other, radiusWords(s.heldMm, unit, w), radiusWords(s.currentMm, unit, w)),
+    );
     const k = fromMm(1, unit);
     const x = s.radiusMm.map((r) => r * k);
     const straight = s.straightMm;
@@ -49,7 +66,7 @@ class RadiusFigure {
       colourBy: 'series',
       from: g.fromMm * k,
       to: g.toMm * k,
-      reason: g.reason === 'gouging' ? 'gouging' : 'h at or above the limit',
+      reason: g.reason === 'gouging' ? w.band.gouging : w.band.limit,
     }));
     this.picture.replaceChildren(
       lineChart({
@@ -68,12 +85,18 @@ class RadiusFigure {
         gaps: bands,
         markerX: cur * k,
         markerPoint: s.currentIntervalMm === null ? null : { x: cur * k, y: s.currentIntervalMm },
-        xLabel: `|${self}| [${u}] (log)`,
+        xLabel: w.xLabel(self, u),
         yLabel: `L [${u}]`,
-        description: `${this.title.textContent}. The values at the current radius are listed beside the chart.`,
+        description: w.description(this.title.textContent),
       }),
     );
-    const len = (v: number | null) => (v === null ? 'n/a (see below)' : formatLenUnit(v, unit));
+    // The ticks' numbers with the locale's decimal sign.
+    if (catalogue() !== null)
+      for (const t of this.picture.querySelectorAll('text')) {
+        const text = t.textContent ?? '';
+        if (local(text) !== text) t.textContent = local(text);
+      }
+    const len = (v: number | null) => (v === null ? w.seeBelow : local(formatLenUnit(v, unit)));
     const item = (series: string, name: string, v: number | null) => {
       const li = html('li', { class: 'legend-item', 'data-series': series });
       li.append(
@@ -84,12 +107,12 @@ class RadiusFigure {
       return li;
     };
     this.legend.replaceChildren(
-      html('li', { class: 'chart-legend-head' }, `at ${self} ${radiusWords(s.currentMm, unit)}:`),
-      item('convex', `${self} convex`, valueAt(s, 'convex')),
-      item('concave', `${self} concave`, valueAt(s, 'concave')),
-      item('straight', `${self} straight`, straight),
+      html('li', { class: 'chart-legend-head' }, local(w.legendHead(self, radiusWords(s.currentMm, unit, w)))),
+      item('convex', w.branch(self, 'convex'), valueAt(s, 'convex')),
+      item('concave', w.branch(self, 'concave'), valueAt(s, 'concave')),
+      item('straight', w.branch(self, 'straight'), straight),
     );
-    this.notes.replaceChildren(...radiusGapNotes(s, unit).map((t) => html('li', {}, t)));
+    this.notes.replaceChildren(...radiusGapNotes(s, unit, w).map((t) => html('li', {}, local(t))));
   }
 }
 
@@ -110,7 +133,19 @@ export class RadiusCharts {
 
   draw(feed: RadiusSweepData, cross: RadiusSweepData, unit: Unit, widthPx: number): void {
     const L = feed.currentIntervalMm;
-    this.summary.textContent = `At Rf ${radiusWords(feed.currentMm, unit)}, Rc ${radiusWords(cross.currentMm, unit)}: L = ${formatLenUnit(L, unit)}; with Rf straight ${formatLenUnit(feed.straightMm, unit)}, with Rc straight ${formatLenUnit(cross.straightMm, unit)}.`;
+    const w = words();
+    const lang = catalogue()?.lang;
+    if (lang === undefined) this.element.removeAttribute('lang');
+    else this.element.lang = lang;
+    this.summary.textContent = local(
+      w.summary(
+        radiusWords(feed.currentMm, unit, w),
+        radiusWords(cross.currentMm, unit, w),
+        formatLenUnit(L, unit),
+        formatLenUnit(feed.straightMm, unit),
+        formatLenUnit(cross.straightMm, unit),
+      ),
+    );
     this.feed.draw(feed, unit, widthPx);
     this.cross.draw(cross, unit, widthPx);
   }

@@ -9,10 +9,14 @@
 import { fromMm, unitSymbol } from '../../core/input/units';
 import type { SlopeChartData } from '../../worker/teachProtocol';
 import { formatLenUnit } from '../format';
+import type { SlopeWords } from '../i18n/catalogue';
+import { localDecimal } from '../i18n/langChoice';
+import { catalogue } from '../i18n/words';
 import type { Unit } from '../state';
 import { html } from './common';
 import { type ChartGapBand, type ChartLine, lineChart } from './lineChart';
 import { crossingSentence, deg, refusalNotes } from './pageChartText';
+import { EN_SLOPE } from './slopeWords';
 
 /** Height of each plot area (CSS px). */
 const PLOT_HEIGHT_PX = 240;
@@ -68,10 +72,16 @@ export class SlopeChart {
 
   /** Draws the data for the unit, `widthPx` wide. */
   draw(d: SlopeChartData, unit: Unit, widthPx: number): void {
+    const words: SlopeWords = catalogue()?.slope ?? EN_SLOPE;
+    // Numbers with the decimal sign of the language in force (German 0,05; every digit kept).
+    const local = (text: string) => localDecimal(text, catalogue());
+    const lang = catalogue()?.lang;
+    if (lang === undefined) this.element.removeAttribute('lang');
+    else this.element.lang = lang;
     const u = unitSymbol(unit);
     const name = stepName(d.passes);
-    const otherName = d.passes === 'raster' ? 'dz (waterline)' : `Lxy (raster, psi = ${deg(d.crossingRasterAngleDeg)})`;
-    const own = d.passes === 'raster' ? `Lxy (raster, psi = ${deg(d.rasterAngleDeg)})` : 'dz (waterline)';
+    const otherName = words.strategy(d.passes === 'raster' ? 'waterline' : 'raster', deg(d.crossingRasterAngleDeg));
+    const own = words.strategy(d.passes, deg(d.rasterAngleDeg));
     // The slope axis runs to 90 degrees; the lines stop at the largest valid slope.
     const open = d.largestSlopeDeg < 90;
     const x = open ? [...d.slopeDeg, 90] : [...d.slopeDeg];
@@ -79,7 +89,7 @@ export class SlopeChart {
     const flat = (v: number) => x.map((a) => (a <= d.largestSlopeDeg ? v : null));
     const k = fromMm(1, unit);
     const gaps: ChartGapBand[] = open
-      ? [{ key: 'step', colourBy: 'series', from: d.largestSlopeDeg, to: 90, reason: 'h at or above the limit' }]
+      ? [{ key: 'step', colourBy: 'series', from: d.largestSlopeDeg, to: 90, reason: words.gap }]
       : [];
     const stepLines: ChartLine[] = [
       { key: 'step', colourBy: 'series', values: pad(d.stepMm) },
@@ -88,9 +98,9 @@ export class SlopeChart {
         : []),
       { key: 'floor', colourBy: 'series', values: flat(d.flatFloorStepMm) },
     ];
-    const slope = `slope = ${deg(d.currentSlopeDeg)}`;
-    this.sentence.textContent = crossingSentence(d, unit);
-    this.step.title.textContent = `Programmed step [${u}] against slope [deg] for h = ${formatLenUnit(d.hMm, unit, 'height')} (R, Rcr fixed; dashed: current ${slope})`;
+    const slope = deg(d.currentSlopeDeg);
+    this.sentence.textContent = local(crossingSentence(d, unit, words));
+    this.step.title.textContent = local(words.stepTitle(u, formatLenUnit(d.hMm, unit, 'height'), slope));
     this.step.picture.replaceChildren(
       lineChart({
         widthPx,
@@ -102,22 +112,22 @@ export class SlopeChart {
         gaps,
         markerX: d.currentSlopeDeg,
         markerPoint: d.currentStepMm === null ? null : { x: d.currentSlopeDeg, y: d.currentStepMm },
-        xLabel: 'slope alpha [deg]',
-        yLabel: `step [${u}]`,
-        description: `${this.step.title.textContent}. ${this.sentence.textContent}`,
+        xLabel: words.slopeAxis,
+        yLabel: words.stepAxis(u),
+        description: words.description(this.step.title.textContent, this.sentence.textContent),
       }),
     );
-    const len = (v: number | null) => (v === null ? 'n/a' : formatLenUnit(v, unit));
+    const len = (v: number | null) => (v === null ? words.none : local(formatLenUnit(v, unit)));
     this.step.legend.replaceChildren(
-      html('li', { class: 'chart-legend-head' }, `at ${slope}:`),
+      html('li', { class: 'chart-legend-head' }, local(words.legendHead(slope))),
       entry('step', own, len(d.currentStepMm), 'chart-slope-value-step'),
       ...(stepLines.some((l) => l.key === 'other')
         ? [entry('other', otherName, len(d.currentOtherStepMm), 'chart-slope-value-other')]
         : []),
-      entry('floor', "flat floor's step Lxy0", len(d.flatFloorStepMm), 'chart-slope-value-floor'),
+      entry('floor', words.floor, len(d.flatFloorStepMm), 'chart-slope-value-floor'),
     );
     const constant = `${name} = ${formatLenUnit(d.constantStepMm, unit)}`;
-    this.cusp.title.textContent = `Scallop [${u}] a constant ${constant} leaves, against slope [deg] (dotted: h = ${formatLenUnit(d.hMm, unit, 'height')})`;
+    this.cusp.title.textContent = local(words.cuspTitle(u, constant, formatLenUnit(d.hMm, unit, 'height')));
     this.cusp.picture.replaceChildren(
       lineChart({
         widthPx,
@@ -133,31 +143,39 @@ export class SlopeChart {
         markerX: d.currentSlopeDeg,
         markerPoint:
           d.currentCuspAtConstantStepMm === null ? null : { x: d.currentSlopeDeg, y: d.currentCuspAtConstantStepMm },
-        xLabel: 'slope alpha [deg]',
-        yLabel: `scallop [${u}]`,
+        xLabel: words.slopeAxis,
+        yLabel: words.scallopAxis(u),
         description: this.cusp.title.textContent,
       }),
     );
     this.cusp.legend.replaceChildren(
-      html('li', { class: 'chart-legend-head' }, `at ${slope}:`),
+      html('li', { class: 'chart-legend-head' }, local(words.legendHead(slope))),
       entry(
         'cusp',
-        `scallop of ${constant}`,
-        d.currentCuspAtConstantStepMm === null ? 'n/a' : formatLenUnit(d.currentCuspAtConstantStepMm, unit, 'height'),
+        local(words.scallopOf(constant)),
+        d.currentCuspAtConstantStepMm === null
+          ? words.none
+          : local(formatLenUnit(d.currentCuspAtConstantStepMm, unit, 'height')),
         'chart-slope-value-cusp',
       ),
     );
     this.notes.replaceChildren(
-      ...refusalNotes(d, unit).map((t) => html('li', {}, t)),
+      ...refusalNotes(d, unit, words).map((t) => html('li', {}, local(t))),
       ...(open
         ? [
             html(
               'li',
               {},
-              `No step above ${deg(d.largestSlopeDeg)}: there h = ${formatLenUnit(d.hMm, unit, 'height')} reaches the largest scallop the tool can leave (its flank or shank${d.onRevolution ? ', or the end of the surface' : ''}); 90° is a vertical wall.`,
+              local(words.noStepAbove(deg(d.largestSlopeDeg), formatLenUnit(d.hMm, unit, 'height'), d.onRevolution)),
             ),
           ]
         : []),
     );
+    // The ticks' numbers with the locale's decimal sign.
+    if (catalogue() !== null)
+      for (const t of this.element.querySelectorAll('svg text')) {
+        const text = t.textContent ?? '';
+        if (local(text) !== text) t.textContent = local(text);
+      }
   }
 }

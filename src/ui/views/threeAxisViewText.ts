@@ -8,6 +8,8 @@ import type { FIELDS } from '../../core/input/fields';
 import { slopePosture } from '../../core/threeAxis/slopePosture';
 import type { ThreeAxisTeachReply } from '../../worker/teachProtocol';
 import { formatAngle, formatDeg } from '../format';
+import type { ViewNoteWords } from '../i18n/catalogue';
+import { EN_VIEW_NOTES } from './viewNoteWords';
 
 type ThreeAxisOk = Extract<ThreeAxisTeachReply, { ok: true }>;
 /** A view's id (common.ts ViewId; not imported from there: this module is pure, tested without a DOM). */
@@ -30,28 +32,27 @@ function rasterAngleOf(d: ThreeAxisOk): number | null {
   return i.surface === 'plane' && i.case.passes === 'raster' ? i.case.rasterAngleDeg : null;
 }
 
-/** The question in words: "slope 30°, raster 30°" or "slope 30°, waterline". */
-function slopeWords(d: ThreeAxisOk): string {
-  const psi = rasterAngleOf(d);
-  return `slope ${formatDeg(d.request.input.case.slopeDeg)}°, ${psi === null ? 'waterline' : `raster ${formatDeg(psi)}°`}`;
-}
-
 /**
  * The neutral line over a view that draws the sloped plane as the plane at the equivalent posture
  * (the profile, the step-through, the formulas), or over one that draws nothing for this question
  * (waterline on a surface of revolution); null for a view that draws the three-axis question itself
- * (the chart).
+ * (the chart). In `words`' language.
  */
-export function threeAxisViewNote(view: ViewId, d: ThreeAxisOk): string | null {
+export function threeAxisViewNote(view: ViewId, d: ThreeAxisOk, words: ViewNoteWords = EN_VIEW_NOTES): string | null {
   if (view === 'chart') return null;
-  if (view === 'tables')
-    return "The paper's tables: its own five-axis conditions (a lead on a plane), kept for reference; they are not the three-axis question on screen.";
+  if (view === 'tables') return words.tables;
+  const psi = rasterAngleOf(d);
+  const question = words.question(formatDeg(d.request.input.case.slopeDeg), psi === null ? null : formatDeg(psi));
   const plane = d.plane;
-  if (plane === null)
-    return `Waterline passes on a surface of revolution (${slopeWords(d)}) change their spacing from level to level, so this view, which draws congruent passes, has nothing to draw: the Step against slope chart and the 3D scene show them.`;
-  if (view === 'surface')
-    return `The upright tool over ${slopeWords(d)} is the tool at lead ${formatAngle(plane.forward.leadAngleDeg)}, tilt ${formatAngle(plane.forward.tiltAngleDeg)} on a plane, one-way: its passes simulated in the plane's own frame.`;
-  return `The upright tool over ${slopeWords(d)} is the tool at lead ${formatAngle(plane.forward.leadAngleDeg)}, tilt ${formatAngle(plane.forward.tiltAngleDeg)} on a plane, one-way: drawn in the plane's own frame (lengths along it, h along its normal).`;
+  if (plane === null) return words.revolution(question);
+  // The angles' numbers (formatAngle's, its unit word left to the language).
+  const angle = (deg: number) => formatAngle(deg).replace(/ deg$/, '');
+  return words.equivalent(
+    question,
+    angle(plane.forward.leadAngleDeg),
+    angle(plane.forward.tiltAngleDeg),
+    view === 'surface',
+  );
 }
 
 /** One line of the posture formulas: what it is, the formula, and its value. */

@@ -1,0 +1,39 @@
+/**
+ * The notices' words (issue 30): the sentences the page writes into its notice box in English
+ * (messages.ts: a worker restarted or stopped, link values replaced), each read back as the words
+ * before, the part kept in English (the worker's reason, the link's values named by their
+ * parameters), and the words after, in a catalogue's language. Pure (no DOM): language.ts writes them.
+ */
+import type { Catalogue } from './catalogue';
+
+/** The notice's sentences the page writes (messages.ts), the parts in between kept in English. */
+const NOTICES: ReadonlyArray<{
+  readonly english: RegExp;
+  readonly words: (m: RegExpExecArray, c: Catalogue) => readonly [string, string, string];
+}> = [
+  {
+    english:
+      /^(The solver|The teaching views' solver) stopped after (\d+) restarts in a row \((.*)\): (?:the numbers shown are|the views are) out of date, marked stale\. Change any input to try again\.$/s,
+    words: (m, c) => {
+      const [before, after] = c.said.restarted(m[1] === 'The solver' ? 'results' : 'views', m[2] ?? '');
+      return [before, m[3] ?? '', after];
+    },
+  },
+  {
+    english: /^(The solver|The teaching views' solver) was restarted: (.*)\. Your last request was sent again\.$/s,
+    words: (m, c) => {
+      const [before, after] = c.said.restarted(m[1] === 'The solver' ? 'results' : 'views', null);
+      return [before, m[2] ?? '', after];
+    },
+  },
+  { english: /^Some link values were replaced: (.*)$/s, words: (m, c) => [c.said.linkReplaced, m[1] ?? '', ''] },
+];
+
+/** A notice's English (messages.ts) as the words before, the part kept in English, the words after; null: not one. */
+export function noticeParts(english: string, words: Catalogue): readonly [string, string, string] | null {
+  for (const notice of NOTICES) {
+    const m = notice.english.exec(english);
+    if (m !== null) return notice.words(m, words);
+  }
+  return null;
+}

@@ -1,0 +1,28 @@
+/**
+ * The five-axis comparison charts' words in English (issue 30): the charts as written, typed by the
+ * catalogues' ChartWords so Japanese and German (i18n/jaChart.ts, deChart.ts) give every one.
+ * Loaded with the teaching views, not with the first result.
+ */
+import type { ChartWords } from '../i18n/catalogue';
+
+export const EN_CHART: ChartWords = {
+  leadTitle: (u, rho) => `L [${u}] against lead rho [deg] (R, Rcr, beta, h fixed; dashed: current rho = ${rho})`,
+  errorTitle: (u) => `Signed error of each approximation against exact, along the lead [${u}]`,
+  tiltTitle: (u, beta) => `L [${u}] against tilt beta [deg] (R, Rcr, rho, h fixed; dashed: current beta = ${beta})`,
+  leadAxis: 'lead angle rho [deg]',
+  tiltAxis: 'tilt angle beta [deg]',
+  errorAxis: (u) => `error [${u}]`,
+  description: (title) => `${title}. The values at the current angle are listed beside the chart.`,
+  legendHead: (angle, deg) => `at ${angle} = ${deg} deg:`,
+  leadOnly: ' (lead only)',
+  seeBelow: 'n/a (see below)',
+  none: 'n/a',
+  errorIn: { pct: 'error in %', length: 'error in length', name: 'Error unit' },
+  rhoScale: { log: 'rho axis: log', linear: 'rho axis: linear', name: 'Lead angle axis' },
+  summary: (rho, beta, values) => `At rho = ${rho} deg, beta = ${beta} deg, L: ${values}.`,
+  noSummary: 'The current posture is outside the charted range.',
+  cylinder: (concave, axis) =>
+    ` On this ${concave ? 'concave' : 'convex'} cylinder (axis ${axis === 'feed' ? 'along' : 'across'} the feed) the exact curve is the cylinder's (none where the posture would gouge the surface or h is beyond its flanks); the approximations are as on a plane, as in the table.`,
+  gap: (names, angle, from, to) =>
+    `No answer from ${names} ${to === null ? `at about ${angle} = ${from} deg` : `for ${angle} from about ${from} to ${to} deg`}: `,
+};

@@ -1,0 +1,34 @@
+/**
+ * The notices' words (issue 30, i18n/noticeWords.ts): each sentence the page writes into its notice
+ * box in English (messages.ts, read from its own functions here, not copied) is found again, put
+ * into Japanese and German, and its English part (the worker's reason, the link's values) kept
+ * whole. Compiled with the page (DOM types: messages.ts's Notice).
+ */
+import { describe, expect, it } from 'vitest';
+import { catalogue as de } from '../../../src/ui/i18n/de';
+import { catalogue as ja } from '../../../src/ui/i18n/ja';
+import { noticeParts } from '../../../src/ui/i18n/noticeWords';
+import { linkNotice, restartMessage } from '../../../src/ui/messages';
+import { MAX_CONSECUTIVE_RESTARTS } from '../../../src/worker/client';
+
+describe("the notices' words (language.ts noticeParts, from messages.ts's English)", () => {
+  const reason = 'it stopped answering (30 s)';
+  for (const [name, c] of [
+    ['ja', ja],
+    ['de', de],
+  ] as const)
+    it(`${name}: a worker restarted or stopped, link values replaced; the English part kept whole`, () => {
+      for (const who of ['results', 'views'] as const)
+        for (const gaveUp of [false, true]) {
+          const english = restartMessage(who, { reason, gaveUp, request: null });
+          const parts = noticeParts(english, c);
+          expect(parts, english).not.toBeNull();
+          expect(parts?.[1]).toBe(reason);
+          expect(parts?.join('')).not.toMatch(/solver|restart|stale|input/i);
+          if (gaveUp) expect(parts?.[0]).toContain(String(MAX_CONSECUTIVE_RESTARTS));
+        }
+      const link = linkNotice(['Rcr="abc" in the link is not a number; using the default 1.']);
+      expect(noticeParts(link, c)?.[1]).toBe('Rcr="abc" in the link is not a number; using the default 1.');
+      expect(noticeParts('Something else.', c)).toBeNull();
+    });
+});
