@@ -46,6 +46,7 @@ import {
 } from '../src/core/input/validate';
 import { LOOKUP_HEADER } from '../src/core/output/lookupTable';
 import { validateRaTarget } from '../src/core/roughness/raTarget';
+import { validateTargetSa } from '../src/core/roughness/targetSa';
 import { validateForward, validateInverse } from '../src/core/surfaces/validate';
 import { buildRequest, fieldMessages } from '../src/ui/request';
 import {
@@ -71,6 +72,7 @@ const withUrl = ENTRIES.filter(([, f]) => f.url !== null);
 function urlContext(id: string): string {
   if (id === 'interval') return '&mode=inverse';
   if (id === 'ra') return '&target=ra';
+  if (id === 'targetSa') return '&target=sa';
   if (id === 'slope' || id === 'rasterAngle' || id === 'passes') return '&machine=3axis';
   if (id === 'horizontalStep') return '&machine=3axis&mode=inverse';
   if (id === 'stepDown') return '&machine=3axis&mode=inverse&passes=waterline';
@@ -333,6 +335,7 @@ describe("the page's fields are the registry's", () => {
       let state = withField(defaultState(), key, 'abc');
       if (key === 'L') state = { ...state, mode: 'inverse' };
       if (key === 'ra') state = { ...state, target: 'ra' };
+      if (key === 'sa') state = { ...state, target: 'sa' };
       if (key === 'Rs') state = { ...state, surface: 'convex' };
       // Three-axis fields in three-axis machining; the radii at a doubly curved point (both curved).
       if (key === 'slope' || key === 'psi') state = { ...state, machine: '3axis' };
@@ -363,7 +366,9 @@ describe('the worker reads the registry fields back from a request', () => {
     if (!ra.ok) throw new Error('valid');
     expect(validateRaTarget(rawOf(ra.value, [...PASS_FIELDS, 'ra']))).toEqual(ra);
     // Every field with a core property is read from the inputs that hold it.
-    const holders: Record<string, object> = { h: f, interval: i, ra: ra.value };
+    const sa = validateTargetSa({ R: 3, Rcr: 1, rho: 5, tilt: 3, pattern: 'zigzag', sa: 0.002 });
+    if (!sa.ok) throw new Error('valid');
+    const holders: Record<string, object> = { h: f, interval: i, ra: ra.value, targetSa: sa.value };
     for (const name of FIELD_NAMES) {
       const raw: Partial<Record<FieldName, unknown>> = rawOf(holders[name] ?? f, [name]);
       expect(raw[name], name).toBeDefined();

@@ -5,10 +5,11 @@
  * in mm, or the input errors. One of the per-mode builders behind the page's one builder
  * (questionRequest.ts). Pure (no DOM).
  */
-import { type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
+import { FIELDS, type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
 import { type InputError, inputError } from '../core/input/validate';
 import { validateRaTarget } from '../core/roughness/raTarget';
+import { validateTargetSa } from '../core/roughness/targetSa';
 import { validateForward, validateInverse } from '../core/surfaces/validate';
 import { buildCurvedRequest, cylinderState, renameRadius } from './curvedRequest';
 import { fieldMessages } from './fieldMessages';
@@ -23,6 +24,8 @@ import type { RadiusKey } from './surfaceState';
  * refuses such a request in its reply (request.ts replyErrors).
  */
 export function buildFiveAxisRequest(state: CalculatorState): BuiltRequest {
+  const saRefused = targetSaRefusal(state);
+  if (saRefused !== null) return { ok: false, errors: [saRefused] };
   if (state.surface === 'curved') {
     const curved = buildCurvedRequest(state);
     if (curved !== null) return curved;
@@ -46,6 +49,21 @@ function onRadius(
   });
 }
 
+/**
+ * A target Sa off a plane: the teeth's surface (and so its Sa) is computed on a plane only
+ * (shared/notes/surface-finish.md), so a cylinder or a doubly curved point gets this one line.
+ */
+function targetSaRefusal(state: CalculatorState): PageFieldError | null {
+  if (state.mode !== 'forward' || state.target !== 'sa') return null;
+  const straight = state.surface === 'curved' && state.feedSide === 'straight' && state.crossSide === 'straight';
+  if (state.surface === 'plane' || straight) return null;
+  const where = state.surface === 'curved' ? 'a doubly curved point' : 'a cylinder';
+  return {
+    key: 'sa',
+    message: `${FIELDS.targetSa.label} is not offered on ${where}: the surface the teeth leave is computed on a plane only; give h or Ra.`,
+  };
+}
+
 /** The plane's or the cylinder's request (five-axis). */
 function buildClassic(state: CalculatorState): BuiltRequest {
   const built = validated(state);
@@ -65,6 +83,14 @@ function validated(state: CalculatorState): BuiltRequest {
   if (state.mode === 'forward' && state.target === 'ra') {
     const v = validateRaTarget({ ...tool, ra: mm('ra') });
     return v.ok ? { ok: true, request: { mode: 'ra', input: v.value } } : v;
+  }
+  if (state.mode === 'forward' && state.target === 'sa') {
+    // The results answer the curve's end at fz -> 0 (Ra = Sa: L0); the pair is the target-Sa box's (targetSaLazy.ts).
+    const v = validateTargetSa({ ...tool, sa: mm('targetSa') });
+    // Its errors name the tool's fields and the target Sa only (no three-axis field): InputErrors.
+    if (!v.ok) return { ok: false, errors: v.errors as readonly InputError[] };
+    const { targetSaMm, ...pass } = v.value;
+    return { ok: true, request: { mode: 'ra', input: { ...pass, targetRaMm: targetSaMm } } };
   }
   if (state.mode === 'forward') {
     const v = validateForward({ ...tool, h: mm('h') });

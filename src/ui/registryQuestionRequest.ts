@@ -56,6 +56,8 @@ export function buildQuestionRequest(state: CalculatorState, kinds: QuestionKind
   const own: PageFieldError[] = [];
   if (forward && state.target === 'ra')
     own.push({ key: 'ra', message: `${FIELDS.ra.label} as a target is not offered here: give the scallop height h.` });
+  if (forward && state.target === 'sa')
+    own.push({ key: 'sa', message: `${FIELDS.targetSa.label} is not offered here: give the scallop height h.` });
   const values = read(state, [...parameters, { name: 'R', field: 'R' }, { name: 'Rcr', field: 'Rcr' }], own);
   const target = fieldInMm(state, targetKey);
   if (typeof target !== 'number')

@@ -86,6 +86,11 @@ export function buildThreeAxisRequest(state: CalculatorState): BuiltRequest {
       key: 'ra',
       message: `${FIELDS.ra.label} as a target is not offered for three-axis machining: give the scallop height h.`,
     });
+  if (forward && state.target === 'sa')
+    own.push({
+      key: 'sa',
+      message: `${FIELDS.targetSa.label} is not offered for three-axis machining: the teeth's surface is computed on a five-axis plane here; give the scallop height h.`,
+    });
   const raw = threeAxisRaw(state, own);
   const stepKey = programmedStepKey(state.passes);
   const quantity: ThreeAxisQuantity = forward ? 'h' : state.passes === 'waterline' ? 'stepDown' : 'horizontalStep';
