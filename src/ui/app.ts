@@ -62,7 +62,7 @@ import {
   withValues,
 } from './state';
 import { withCurvedPreset } from './surfaceState';
-import { LazyTargetSa } from './targetSaLazy';
+import type { TargetSaPanel } from './targetSaPanel';
 import { TeachingLoader } from './teaching';
 import { onThemeChange, setThemeOverride, startTheme } from './theme';
 import { parseTheme } from './themeChoice';
@@ -102,8 +102,8 @@ export class CalculatorApp {
   private readonly roughness: RoughnessPanel;
   /** The feed marks and areal finish (finishLazy.ts). */
   private readonly finish: LazyFinish;
-  /** The best (L, fz) pair for a target Sa (targetSaLazy.ts). */
-  private readonly targetSa: LazyTargetSa;
+  /** The best (L, fz) pair for a target Sa (targetSaPanel.ts): loaded with the first target Sa. */
+  private targetSa: Promise<TargetSaPanel> | null = null;
   private readonly simulation: SimulationLoader;
   private readonly client = solveClient({
     onReply: (reply) => {
@@ -128,6 +128,8 @@ export class CalculatorApp {
   /** The finish worker's messages on the teeth-and-feed fields that answer the inputs on screen. */
   private finishMessages: ReadonlyMap<FieldKey, string> = new Map();
 
+  /** The target-Sa box's place. */
+  private readonly saBox: HTMLElement;
   /** The target-Sa worker's messages on the teeth fields that answer the inputs on screen. */
   private saMessages: ReadonlyMap<FieldKey, string> = new Map();
 
@@ -199,15 +201,7 @@ export class CalculatorApp {
         this.fields.render(this.state, this.fieldMessages());
       },
     );
-    this.targetSa = new LazyTargetSa(
-      root.querySelector<HTMLElement>('[data-testid="target-sa-results"]'),
-      // "use this pair": solve for the scallop height at its L, with its fz (the finish box then answers).
-      ({ L, fz }) => this.change(withValues({ ...this.state, mode: 'inverse' }, { L, fz })),
-      (errors) => {
-        this.saMessages = finishKeyMessages(errors);
-        this.fields.render(this.state, this.fieldMessages());
-      },
-    );
+    this.saBox = must(root, '[data-testid="target-sa-results"]');
     this.simulation = new SimulationLoader(
       (info) => this.restarted('simulation', info),
       () => this.notice.clear('simulation'),
@@ -493,8 +487,24 @@ export class CalculatorApp {
     // The finish (issue 29): the answer on screen's feed marks, loaded with the first teeth and feed.
     const answered = shown.kind === 'current' && !typing ? shown.reply : null;
     this.finish.show(this.state, answered);
-    // A target Sa (issue 29): its best pair, asked of the answer on screen (the target Ra at Ra = Sa).
-    this.targetSa.show(finishInputs(this.state), answered, this.state.mode === 'forward' && this.state.target === 'sa');
+    // A target Sa (issue 29): its best pair, asked of the answer on screen (the target Ra at Ra = Sa);
+    // the box's code loads with the first target Sa (each show runs in order, once it has).
+    const sa = this.state.mode === 'forward' && this.state.target === 'sa';
+    const inputs = finishInputs(this.state);
+    if (sa && this.targetSa === null)
+      this.targetSa = import('./targetSaPanel').then(
+        ({ TargetSaPanel }) =>
+          new TargetSaPanel(
+            this.saBox,
+            // "use this pair": solve for the scallop height at its L, with its fz (the finish box then answers).
+            ({ L, fz }) => this.change(withValues({ ...this.state, mode: 'inverse' }, { L, fz })),
+            (errors) => {
+              this.saMessages = finishKeyMessages(errors);
+              this.fields.render(this.state, this.fieldMessages());
+            },
+          ),
+      );
+    void this.targetSa?.then((panel) => panel.show(inputs, answered, sa));
     this.highlighter.markRows();
     // The first answer (or the first error) is on screen: now the scene may take its time to load.
     if (shown.kind !== 'pending' && !this.resultCard) this.scene.load();

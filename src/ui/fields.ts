@@ -82,7 +82,7 @@ const HINTS: Readonly<Record<FieldKey, string>> = {
   h: 'height of the highest cusp left between passes',
   L: 'distance between adjacent cutter-contact paths',
   ra: 'target roughness across the feed; the scallop height follows',
-  sa: 'target areal roughness the teeth leave (plane, no runout); with the flutes z: the best step-over and fz',
+  sa: 'areal roughness the teeth leave (plane); with z: the best L and fz',
   Rs: "the cylinder's radius, a positive number (convex or concave is chosen above)",
   slope: "the surface's slope from the horizontal at the contact (0 a flat floor)",
   psi: 'passes in plan from the fall line: 0 up and down the slope, 90 along the contour',

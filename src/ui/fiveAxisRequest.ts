@@ -8,8 +8,8 @@
 import { FIELDS, type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { rawFields } from '../core/input/raw';
 import { type InputError, inputError } from '../core/input/validate';
-import { validateRaTarget } from '../core/roughness/raTarget';
-import { validateTargetSa } from '../core/roughness/targetSa';
+import { maxRaCachedMm, validateRaTarget } from '../core/roughness/raTarget';
+import { validateTargetSa } from '../core/roughness/targetSaInput';
 import { validateForward, validateInverse } from '../core/surfaces/validate';
 import { buildCurvedRequest, cylinderState, renameRadius } from './curvedRequest';
 import { fieldMessages } from './fieldMessages';
@@ -57,11 +57,7 @@ function targetSaRefusal(state: CalculatorState): PageFieldError | null {
   if (state.mode !== 'forward' || state.target !== 'sa') return null;
   const straight = state.surface === 'curved' && state.feedSide === 'straight' && state.crossSide === 'straight';
   if (state.surface === 'plane' || straight) return null;
-  const where = state.surface === 'curved' ? 'a doubly curved point' : 'a cylinder';
-  return {
-    key: 'sa',
-    message: `${FIELDS.targetSa.label} is not offered on ${where}: the surface the teeth leave is computed on a plane only; give h or Ra.`,
-  };
+  return { key: 'sa', message: `${FIELDS.targetSa.label} is computed on a plane only: give h or Ra here.` };
 }
 
 /** The plane's or the cylinder's request (five-axis). */
@@ -86,7 +82,7 @@ function validated(state: CalculatorState): BuiltRequest {
   }
   if (state.mode === 'forward' && state.target === 'sa') {
     // The results answer the curve's end at fz -> 0 (Ra = Sa: L0); the pair is the target-Sa box's (targetSaLazy.ts).
-    const v = validateTargetSa({ ...tool, sa: mm('targetSa') });
+    const v = validateTargetSa({ ...tool, sa: mm('targetSa') }, maxRaCachedMm);
     // Its errors name the tool's fields and the target Sa only (no three-axis field): InputErrors.
     if (!v.ok) return { ok: false, errors: v.errors as readonly InputError[] };
     const { targetSaMm, ...pass } = v.value;

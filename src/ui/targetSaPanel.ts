@@ -11,11 +11,11 @@
  * that question (dashes meanwhile, never an earlier input's number). Loaded on the first target Sa.
  */
 import { fromMm, type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
-import type { RestartInfo } from '../worker/client';
+import { JobClient, type RestartInfo } from '../worker/client';
 import type { FinishFieldMessage } from '../worker/finishProtocol';
 import type { PageReply } from '../worker/pageProtocol';
 import { sameTargetSaRequest, type TargetSaReply, type TargetSaRequest } from '../worker/targetSaProtocol';
-import type { targetSaClient } from '../worker/workers';
+import { FINISH_WATCHDOG_MS, startSolverWorker } from '../worker/workers';
 import { detailsRow, html } from './dom';
 import { feedLength } from './finishLength';
 import type { FinishInputs } from './finishRequest';
@@ -50,7 +50,8 @@ export class TargetSaPanel {
   private readonly use: HTMLButtonElement;
   private readonly figure: HTMLElement;
   private readonly answerParts: readonly HTMLElement[];
-  private readonly client: ReturnType<typeof targetSaClient>;
+  /** The `targetSa` job on its own worker (seconds of work: the finish's watchdog). */
+  private readonly client: JobClient<TargetSaRequest, TargetSaReply>;
   private wanted: TargetSaRequest | null = null;
   private busy: TargetSaRequest | null = null;
   private answer: Answered | null = null;
@@ -66,14 +67,17 @@ export class TargetSaPanel {
     private readonly box: HTMLElement,
     /** "use this pair": the step-over L and fz (mm), as a shop types them. */
     private readonly onUse: (pair: { readonly L: number; readonly fz: number }) => void,
-    clientOf: typeof targetSaClient,
     /** The worker's messages on the teeth fields that answer the inputs on screen. */
     private readonly onFieldErrors: (errors: readonly FinishFieldMessage[]) => void,
   ) {
-    this.client = clientOf(
-      { onReply: (reply) => this.received(reply), onRestart: (info) => this.restarted(info) },
-      sameTargetSaRequest,
-    );
+    this.client = new JobClient<TargetSaRequest, TargetSaReply>({
+      createWorker: () => startSolverWorker('path-interval-target-sa'),
+      call: (api, r) => api.targetSa(r),
+      same: sameTargetSaRequest,
+      onReply: (reply) => this.received(reply),
+      onRestart: (info) => this.restarted(info),
+      watchdogMs: FINISH_WATCHDOG_MS,
+    });
     const heading = html('h2', { class: 'finish-title', 'data-phrase': TITLE }, TITLE);
     const list = html('dl', { class: 'details finish-details' });
     const row = (label: string, testId: string) => {

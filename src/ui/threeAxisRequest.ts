@@ -6,7 +6,7 @@
  * solver finds (ranges, the vertical wall, the flank and shank limits) come back in its reply, put
  * on their fields by threeAxisFieldErrors. Every message in the user's unit. Pure.
  */
-import { FIELDS, pageKeyOf } from '../core/input/fields';
+import { FIELDS, fieldOfPageKey, pageKeyOf } from '../core/input/fields';
 import { formatInputNumber, fromMm, unitSymbol } from '../core/input/units';
 import {
   type RawThreeAxisInput,
@@ -81,15 +81,11 @@ export function threeAxisRaw(state: CalculatorState, errors: PageFieldError[]): 
 export function buildThreeAxisRequest(state: CalculatorState): BuiltRequest {
   const own: PageFieldError[] = [];
   const forward = state.mode === 'forward';
-  if (forward && state.target === 'ra')
+  // A target Ra or Sa: its field names it.
+  if (forward && state.target !== 'h')
     own.push({
-      key: 'ra',
-      message: `${FIELDS.ra.label} as a target is not offered for three-axis machining: give the scallop height h.`,
-    });
-  if (forward && state.target === 'sa')
-    own.push({
-      key: 'sa',
-      message: `${FIELDS.targetSa.label} is not offered for three-axis machining: the teeth's surface is computed on a five-axis plane here; give the scallop height h.`,
+      key: state.target,
+      message: `${FIELDS[fieldOfPageKey(state.target)].label} as a target is not offered for three-axis machining: give the scallop height h.`,
     });
   const raw = threeAxisRaw(state, own);
   const stepKey = programmedStepKey(state.passes);

@@ -8,7 +8,6 @@ import { JobClient, type JobClientOptions, type RestartInfo } from './client';
 import type { FinishReply, FinishRequest } from './finishProtocol';
 import { type PageReply, type PageRequest, samePageRequest } from './pageProtocol';
 import { sameTableRequest, type TableReply, type TableRequest } from './protocol';
-import type { TargetSaReply, TargetSaRequest } from './targetSaProtocol';
 import type { PageTeachReply } from './teachProtocol';
 
 /** The worker for `solve`: results and the 3D scene. */
@@ -87,20 +86,6 @@ export function finishClient(
   return new JobClient({
     createWorker: () => startSolverWorker('path-interval-finish'),
     call: (api, r) => api.finish(r),
-    same,
-    ...events,
-    watchdogMs: FINISH_WATCHDOG_MS,
-  });
-}
-
-/** The `targetSa` job (issue 29: seconds of work) on its own worker, started on the first target Sa; `same` as finishClient's. */
-export function targetSaClient(
-  events: JobEvents<TargetSaRequest, TargetSaReply>,
-  same: (a: TargetSaRequest, b: TargetSaRequest) => boolean,
-): JobClient<TargetSaRequest, TargetSaReply> {
-  return new JobClient({
-    createWorker: () => startSolverWorker('path-interval-target-sa'),
-    call: (api, r) => api.targetSa(r),
     same,
     ...events,
     watchdogMs: FINISH_WATCHDOG_MS,
