@@ -469,6 +469,7 @@ export class CalculatorApp {
     this.results.render(shown, this.state.unit, this.state.mode, tilt, typing, {
       kind: this.kind(),
       passes: this.state.passes,
+      saTarget: this.state.mode === 'forward' && this.state.target === 'sa',
     });
     this.results.showToolName(this.state.toolName ?? null);
     // The words of the question whose number is on screen: the current answer's, or, while a new

@@ -275,6 +275,8 @@ describe('the finish box', () => {
     // L0: the curve's end at fz -> 0 (Ra = Sa), the step-over the results show.
     expect(await text(page, 'target-sa-l0')).toBe(feedLength(zeroFeedL(0.0008), 'mm'));
     expect(await text(page, 'result-exact-interval')).toBe(formatLenUnit(zeroFeedL(0.0008), 'mm'));
+    // Named as what it is: not the pair's L.
+    expect(await page.locator('[data-role="headline-label"]').textContent()).toBe('Step-over L0 (fz -> 0: Ra = Sa)');
     const L = parseFloat(await text(page, 'target-sa-interval'));
     const fz = parseFloat(await text(page, 'target-sa-fz'));
     expect(L).toBeGreaterThan(0);

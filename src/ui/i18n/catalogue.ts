@@ -162,7 +162,12 @@ export interface Catalogue {
   /** A field's slider, named after its field: `${label}${slider}` (English: " slider"). */
   readonly slider: string;
   /** The headline's labels. */
-  readonly headline: { readonly stepOver: string; readonly scallopHeight: string };
+  readonly headline: {
+    readonly stepOver: string;
+    readonly scallopHeight: string;
+    /** A target Sa's: the step-over at the curve's end, fz -> 0 (results.ts ZERO_FEED_LABEL). */
+    readonly zeroFeed: string;
+  };
   /** The results' status lines and the Copy buttons' words. */
   readonly phrases: Readonly<Record<Phrase, string>>;
   /** The finish box's words. */

@@ -105,7 +105,7 @@ export const catalogue: Catalogue = {
   },
   degrees: 'Grad',
   slider: ' Schieberegler',
-  headline: { stepOver: 'Bahnabstand L', scallopHeight: 'Rautiefe h' },
+  headline: { stepOver: 'Bahnabstand L', scallopHeight: 'Rautiefe h', zeroFeed: 'Bahnabstand L0 (fz → 0: Ra = Sa)' },
   phrases: {
     'Typing: the results follow when you pause or press Enter.':
       'Eingabe: die Ergebnisse folgen, sobald Sie innehalten oder die Eingabetaste drücken.',

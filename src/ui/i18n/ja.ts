@@ -90,7 +90,11 @@ export const catalogue: Catalogue = {
   },
   degrees: '度',
   slider: 'のスライダー',
-  headline: { stepOver: 'ピックフィード L', scallopHeight: 'カスプ高さ h' },
+  headline: {
+    stepOver: 'ピックフィード L',
+    scallopHeight: 'カスプ高さ h',
+    zeroFeed: 'ピックフィード L0（fz → 0 の端：Ra = Sa）',
+  },
   phrases: {
     'Typing: the results follow when you pause or press Enter.':
       '入力中：手を止めるか Enter を押すと結果が更新されます。',

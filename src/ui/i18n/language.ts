@@ -6,6 +6,7 @@
  * A catalogue loads only when its language is chosen (ja.ts, de.ts); English is the page as
  * written, its words read from the page itself before any other language replaces them.
  */
+import { ZERO_FEED_LABEL } from '../results';
 import type { ToolStorage } from '../savedTools';
 import type { Catalogue, FinishPhrase, Lang, Phrase } from './catalogue';
 import { describeInputErrorIn } from './errorText';
@@ -72,7 +73,9 @@ export function localizeResults(results: object): void {
       ? words.headline.stepOver
       : label?.textContent === 'Scallop height h'
         ? words.headline.scallopHeight
-        : null;
+        : label?.textContent === ZERO_FEED_LABEL
+          ? words.headline.zeroFeed
+          : null;
   if (label && named !== null) label.textContent = named;
   // The finish box's words (finishPanel.ts keeps each element's English in data-phrase).
   for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]')) {
