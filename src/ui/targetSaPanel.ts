@@ -124,8 +124,9 @@ export class TargetSaPanel {
     if (!sameTargetSaRequest(request, this.wanted)) {
       this.wanted = request;
       this.note = null;
-      if (request !== null) {
-        // A worker still busy with an earlier question is ended: nobody waits for it any more.
+      // A worker still busy with another question is ended (nobody waits for it any more); one busy
+      // with this very question (asked again after a pause in typing) is left to finish it.
+      if (request !== null && !sameTargetSaRequest(request, this.busy)) {
         if (this.busy !== null) this.client.dispose();
         this.busy = request;
         this.client.request(request);
