@@ -46,6 +46,7 @@
     'surface-axis': 'surfaceAxis',
     h: 'h',
     ra: 'ra',
+    sa: 'sa',
     l: 'L',
     slope: 'slope',
     passes: 'passes',

@@ -72,6 +72,7 @@ const withUrl = ENTRIES.filter(([, f]) => f.url !== null);
 function urlContext(id: string): string {
   if (id === 'interval') return '&mode=inverse';
   if (id === 'ra') return '&target=ra';
+  if (id === 'targetSa') return '&target=sa';
   if (id === 'slope' || id === 'rasterAngle' || id === 'passes') return '&machine=3axis';
   if (id === 'horizontalStep') return '&machine=3axis&mode=inverse';
   if (id === 'stepDown') return '&machine=3axis&mode=inverse&passes=waterline';
@@ -339,6 +340,7 @@ describe("the page's fields are the registry's", () => {
       let state = withField(defaultState(), key, 'abc');
       if (key === 'L') state = { ...state, mode: 'inverse' };
       if (key === 'ra') state = { ...state, target: 'ra' };
+      if (key === 'sa') state = { ...state, target: 'sa' };
       if (key === 'Rs') state = { ...state, surface: 'convex' };
       // Three-axis fields in three-axis machining; the radii at a doubly curved point (both curved).
       if (key === 'slope' || key === 'psi') state = { ...state, machine: '3axis' };

@@ -25,7 +25,7 @@ import { RESULT_VIEW, startResultCard } from './embedCard';
 import { postHeightToParent } from './embedResize';
 import { listenForHostTheme } from './embedTheme';
 import { FieldsPanel } from './fields';
-import { LazyFinish } from './finishLazy';
+import { finishInputs, finishKeyMessages, LazyFinish } from './finishLazy';
 import { FreshJob } from './freshness';
 import { Highlighter } from './highlight';
 import { langOf } from './i18n/langOf';
@@ -62,6 +62,7 @@ import {
   withValues,
 } from './state';
 import { withCurvedPreset } from './surfaceState';
+import type { TargetSaPanel } from './targetSaPanel';
 import { TeachingLoader } from './teaching';
 import { onThemeChange, setThemeOverride, startTheme } from './theme';
 import { parseTheme } from './themeChoice';
@@ -101,6 +102,8 @@ export class CalculatorApp {
   private readonly roughness: RoughnessPanel;
   /** The feed marks and areal finish (finishLazy.ts). */
   private readonly finish: LazyFinish;
+  /** The best (L, fz) pair for a target Sa (targetSaPanel.ts): loaded with the first target Sa. */
+  private targetSa: Promise<TargetSaPanel> | null = null;
   private readonly simulation: SimulationLoader;
   private readonly client = solveClient({
     onReply: (reply) => {
@@ -137,10 +140,15 @@ export class CalculatorApp {
   /** The finish worker's messages on the teeth-and-feed fields that answer the inputs on screen. */
   private finishMessages: ReadonlyMap<FieldKey, string> = new Map();
 
-  /** The fields' messages: the page's and the solver's, then the finish worker's where a field has none. */
+  /** The target-Sa box's place. */
+  private readonly saBox: HTMLElement;
+  /** The target-Sa worker's messages on the teeth fields that answer the inputs on screen. */
+  private saMessages: ReadonlyMap<FieldKey, string> = new Map();
+
+  /** The fields' messages: the page's and the solver's, then the finish and target-Sa workers' where a field has none. */
   private fieldMessages(): ReadonlyMap<FieldKey, string> {
-    if (this.finishMessages.size === 0) return this.messages;
-    const all = new Map(this.finishMessages);
+    if (this.finishMessages.size + this.saMessages.size === 0) return this.messages;
+    const all = new Map([...this.finishMessages, ...this.saMessages]);
     for (const [key, message] of this.messages) all.set(key, message);
     return all;
   }
@@ -205,6 +213,7 @@ export class CalculatorApp {
         this.fields.render(this.state, this.fieldMessages());
       },
     );
+    this.saBox = must(root, '[data-testid="target-sa-results"]');
     this.simulation = new SimulationLoader(
       (info) => this.restarted('simulation', info),
       () => this.notice.clear('simulation'),
@@ -485,6 +494,7 @@ export class CalculatorApp {
     this.results.render(shown, this.state.unit, this.state.mode, tilt, typing, {
       kind: this.kind(),
       passes: this.state.passes,
+      saTarget: this.state.mode === 'forward' && this.state.target === 'sa',
     });
     this.results.showToolName(this.state.toolName ?? null);
     // The words of the question whose number is on screen: the current answer's, or, while a new
@@ -501,7 +511,26 @@ export class CalculatorApp {
     this.resultBar.render(typing);
     this.sceneBox.classList.toggle('typing', typing);
     // The finish (issue 29): the answer on screen's feed marks, loaded with the first teeth and feed.
-    this.finish.show(this.state, shown.kind === 'current' && !typing ? shown.reply : null);
+    const answered = shown.kind === 'current' && !typing ? shown.reply : null;
+    this.finish.show(this.state, answered);
+    // A target Sa (issue 29): its best pair, asked of the answer on screen (the target Ra at Ra = Sa);
+    // the box's code loads with the first target Sa (each show runs in order, once it has).
+    const sa = this.state.mode === 'forward' && this.state.target === 'sa';
+    const inputs = finishInputs(this.state);
+    if (sa && this.targetSa === null)
+      this.targetSa = import('./targetSaPanel').then(
+        ({ TargetSaPanel }) =>
+          new TargetSaPanel(
+            this.saBox,
+            // "use this pair": solve for the scallop height at its L, with its fz (the finish box then answers).
+            ({ L, fz }) => this.change(withValues({ ...this.state, mode: 'inverse' }, { L, fz })),
+            (errors) => {
+              this.saMessages = finishKeyMessages(errors);
+              this.fields.render(this.state, this.fieldMessages());
+            },
+          ),
+      );
+    void this.targetSa?.then((panel) => panel.show(inputs, answered, sa));
     this.highlighter.markRows();
     // The first answer (or the first error) is on screen: now the scene may take its time to load.
     if (shown.kind !== 'pending' && !this.resultCard) this.scene.load();

@@ -22,7 +22,7 @@ export function cardSummary(state: CalculatorState): string {
     else parts.push(`${state.surface} cylinder Rs ${len(f.Rs)}`);
   }
   if (state.mode === 'inverse') parts.push(`L ${len(f.L)}`);
-  else if (state.target === 'ra') parts.push(`Ra ${len(f.ra)}`);
+  else if (state.target !== 'h') parts.push(`${state.target === 'ra' ? 'Ra' : 'Sa'} ${len(f[state.target])}`);
   else parts.push(`h ${len(f.h)}`);
   return parts.join(', ');
 }

@@ -81,6 +81,7 @@ const HINTS: Readonly<Record<FieldKey, string>> = {
   h: 'height of the highest cusp left between passes',
   L: 'distance between adjacent cutter-contact paths',
   ra: 'target roughness across the feed; the scallop height follows',
+  sa: 'areal roughness the teeth leave (plane); with z: the best L and fz',
   Rs: "the cylinder's radius, a positive number (convex or concave is chosen above)",
   slope: "the surface's slope from the horizontal at the contact (0 a flat floor)",
   psi: 'passes in plan from the fall line: 0 up and down the slope, 90 along the contour',
@@ -98,7 +99,17 @@ const HINTS: Readonly<Record<FieldKey, string>> = {
 };
 
 /** The order of the form: the slope and raster angle sit where the lead and tilt do. */
-const FORM_ORDER: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'tilt', 'slope', 'psi', 'h', 'ra', 'L', 'Lxy', 'dz'];
+const FORM_ORDER: readonly FieldKey[] = ['R', 'Rcr', 'rho', 'tilt', 'slope', 'psi', 'h', 'ra', 'sa', 'L', 'Lxy', 'dz'];
+
+/** The feed's fields, not used with a target Sa (fz is its answer): disabled, their hint says so. */
+const SA_UNUSED: readonly FieldKey[] = ['fz', 'F', 'n'];
+/** Their hint then (a finish phrase: put into the language in force). */
+const SA_UNUSED_HINT = 'not used with a target Sa: fz is its answer';
+
+/** True for the feed's fields a target Sa does not use. */
+function unusedBySa(key: FieldKey): boolean {
+  return SA_UNUSED.includes(key);
+}
 
 /** The teeth and their feed: always offered (optional; the finish says where it is not computed). */
 const FINISH_SHOWN = { z: true, fz: true, F: true, n: true, runout: true, runoutPhase: true, passPhase: true } as const;
@@ -196,7 +207,7 @@ export class FieldsPanel {
     this.wireSwitch('mode', (v) => events.onMode(v === 'inverse' ? 'inverse' : 'forward'));
     this.wireSwitch('unit', (v) => events.onUnit(v === 'in' ? 'in' : 'mm'));
     this.wireSwitch('pattern', (v) => events.onPattern(v === 'zigzag' ? 'zigzag' : 'one-way'));
-    this.wireSwitch('target', (v) => events.onTarget(v === 'ra' ? 'ra' : 'h'));
+    this.wireSwitch('target', (v) => events.onTarget(v === 'ra' || v === 'sa' ? v : 'h'));
     this.wireSwitch('size', (v) => events.onSize(v === 'D' ? 'D' : 'R'));
     this.wireSwitch('surface', (v) =>
       events.onSurface(v === 'convex' || v === 'concave' || v === 'curved' ? v : 'plane'),
@@ -262,10 +273,11 @@ export class FieldsPanel {
    * A field's label, hint and slider name in the language in force (i18n/words.ts; English: the
    * registry's label and HINTS), the tool size's and the corner radius's as the size is given.
    */
-  private word(view: FieldView, key: FieldKey, diameter: boolean): void {
+  private word(view: FieldView, key: FieldKey, diameter: boolean, unusedBySa = false): void {
     const words = catalogue();
     const english = { label: FIELDS[fieldOfPageKey(key)].label, hint: HINTS[key] };
     let { label, hint } = fieldWords(key, english);
+    if (unusedBySa) hint = words?.finish[SA_UNUSED_HINT] ?? SA_UNUSED_HINT;
     if (key === 'R' && diameter) {
       label = words?.diameter.label ?? DIAMETER_LABEL;
       hint = words?.diameter.hint ?? DIAMETER_HINT;
@@ -331,6 +343,7 @@ export class FieldsPanel {
     const cylinder = five && (state.surface === 'convex' || state.surface === 'concave');
     const radii = five ? state.surface === 'curved' : state.passes === 'waterline';
     const given: FieldKey = forward ? state.target : five ? 'L' : state.passes === 'waterline' ? 'dz' : 'Lxy';
+    const saTarget = given === 'sa';
     const shown: Readonly<Record<FieldKey, boolean>> = {
       R: true,
       Rcr: true,
@@ -340,6 +353,7 @@ export class FieldsPanel {
       psi: !five && state.passes === 'raster',
       h: given === 'h',
       ra: given === 'ra',
+      sa: given === 'sa',
       L: given === 'L',
       Lxy: given === 'Lxy',
       dz: given === 'dz',
@@ -357,10 +371,10 @@ export class FieldsPanel {
         view.input.disabled = side === 'straight';
         view.slider.disabled = side === 'straight';
         // F and n while fz is typed: off (fz wins).
-      } else view.input.disabled = view.slider.disabled = finishKeyOff(state, key);
+      } else view.input.disabled = view.slider.disabled = finishKeyOff(state, key) || (saTarget && unusedBySa(key));
       const unitText = unitLabel(key, state.unit);
       if (view.unitLabel.textContent !== unitText) view.unitLabel.textContent = unitText;
-      this.word(view, key, sizeIsDiameter(state));
+      this.word(view, key, sizeIsDiameter(state), saTarget && unusedBySa(key));
       // fz while the feed rate and spindle speed hold text: read-only, the fz they give (or empty).
       const text = key === 'fz' && rateFz !== null ? rateFz : state.fields[key];
       if (view.input.value !== text) view.input.value = text;

@@ -4,7 +4,7 @@
  */
 import type { FinishField } from '../core/finish/finishInput';
 import { FINISH_FIELD_IDS } from '../core/input/fields';
-import type { FinishValue } from '../worker/finishProtocol';
+import type { FinishFieldMessage, FinishValue } from '../worker/finishProtocol';
 import type { PageReply } from '../worker/pageProtocol';
 import { finishClient } from '../worker/workers';
 import { FINISH_KEYS, finishGiven, finishKeyOff } from './finishFields';
@@ -26,7 +26,14 @@ export function finishInputs(state: CalculatorState): FinishInputs {
     typed[field] = text;
     values[field] = text === '' ? undefined : fieldInMm(state, key);
   });
-  return { given: finishGiven(state), values, typed, unit: state.unit };
+  // With a target Sa the feed is its answer: the finish box asks nothing (the target-Sa box answers).
+  const saTarget = state.mode === 'forward' && state.target === 'sa';
+  return { given: finishGiven(state) && !saTarget, values, typed, unit: state.unit };
+}
+
+/** The worker's messages on finish fields, by the fields' page keys. */
+export function finishKeyMessages(errors: readonly FinishFieldMessage[]): ReadonlyMap<FieldKey, string> {
+  return new Map(errors.map((e) => [FINISH_KEYS[FINISH_FIELDS.indexOf(e.field)] as FieldKey, e.message]));
 }
 
 /** Stands in for the FinishPanel until teeth or a feed are first given; then hands it every call. */
@@ -53,9 +60,7 @@ export class LazyFinish {
       this.loading = true;
       void import('./finishPanel').then(({ FinishPanel }) => {
         this.panel = new FinishPanel(box, this.onFeed, finishClient, (errors) =>
-          this.onFieldErrors(
-            new Map(errors.map((e) => [FINISH_KEYS[FINISH_FIELDS.indexOf(e.field)] as FieldKey, e.message])),
-          ),
+          this.onFieldErrors(finishKeyMessages(errors)),
         );
         if (this.last !== null) this.panel.show(this.last.inputs, this.last.reply);
       });

@@ -5,11 +5,17 @@
  * in mm, or the input errors. One of the per-mode builders behind the page's one builder
  * (questionRequest.ts). Pure (no DOM).
  */
-import { type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
-import { passFieldsAnd, validateForwardFields, validateInverseFields } from '../core/input/passFields';
-import { rawFields } from '../core/input/raw';
-import { type InputError, inputError } from '../core/input/validate';
-import { targetRaFields, targetRaValidation } from '../core/roughness/targetRaFields';
+  if (state.mode === 'forward' && state.target === 'sa') {
+    // The results answer the curve's end at fz -> 0 (Ra = Sa: L0); the pair is the target-Sa box's
+    // (targetSaLazy.ts). The fields only, as a target Ra (the same bound, checked by the worker),
+    // each error naming the target Sa field.
+    const v = targetRaValidation(targetRaFields(passFieldsAnd({ ...tool, ra: mm('targetSa') }, 'ra')));
+    return v.ok
+      ? { ok: true, request: { mode: 'ra', input: v.value } }
+      : { ok: false, errors: (v.errors as InputError[]).map((e) => (e.field === 'ra' ? { ...e, field: 'targetSa' } : e)) };
+  }
+
+  // The fields only, likewise: gouging and the height or step-over limits are the worker's.
 import { buildCurvedRequest, cylinderState, renameRadius } from './curvedRequest';
 import { fieldMessages } from './fieldMessages';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
@@ -24,6 +30,8 @@ import type { RadiusKey } from './surfaceState';
  * replyErrors) and brings the sliders' limits with it.
  */
 export function buildFiveAxisRequest(state: CalculatorState): BuiltRequest {
+  const saRefused = targetSaRefusal(state);
+  if (saRefused !== null) return { ok: false, errors: [saRefused] };
   if (state.surface === 'curved') {
     const curved = buildCurvedRequest(state);
     if (curved !== null) return curved;
@@ -45,6 +53,17 @@ function onRadius(
     if ('key' in e || e.field !== 'surfaceRadius') return e;
     return { key, message: renameRadius(messages.get('Rs') ?? e.message, key) };
   });
+}
+
+/**
+ * A target Sa off a plane: the teeth's surface (and so its Sa) is computed on a plane only
+ * (shared/notes/surface-finish.md), so a cylinder or a doubly curved point gets this one line.
+ */
+function targetSaRefusal(state: CalculatorState): PageFieldError | null {
+  if (state.mode !== 'forward' || state.target !== 'sa') return null;
+  const straight = state.surface === 'curved' && state.feedSide === 'straight' && state.crossSide === 'straight';
+  if (state.surface === 'plane' || straight) return null;
+  return { key: 'sa', message: `${FIELDS.targetSa.label} is computed on a plane only: give h or Ra here.` };
 }
 
 /** The plane's or the cylinder's request (five-axis). */

@@ -49,7 +49,8 @@ export function threeAxisSearch(state: CalculatorState): Array<[string, string]>
       if (signed !== null) out.push([RADIUS_PARAM[key], signed]);
     }
   } else if (state.fields.psi.trim() !== '0') out.push(['rasterAngle', state.fields.psi]);
-  if (state.mode === 'forward' && state.target === 'ra') out.push(['target', 'ra'], ['ra', state.fields.ra]);
+  if (state.mode === 'forward' && state.target !== 'h')
+    out.push(['target', state.target], [state.target, state.fields[state.target]]);
   else if (state.mode === 'forward') out.push(['h', state.fields.h]);
   else {
     out.push(['mode', 'inverse']);

@@ -6,7 +6,7 @@
  * user's unit, converted to mm, and validated once; every error is put on a field, in one line.
  * The worker answers the request (jobs/question.ts). Pure.
  */
-import { FIELDS, type FieldId, pageKeyOf } from '../core/input/fields';
+import { FIELDS, type FieldId, fieldOfPageKey, pageKeyOf } from '../core/input/fields';
 import type { QuestionParameter } from '../core/surfaces/mode';
 import { findMode } from '../core/surfaces/modes';
 import { type Question, validateQuestion } from '../core/surfaces/question';
@@ -54,8 +54,11 @@ export function buildQuestionRequest(state: CalculatorState, kinds: QuestionKind
   const forward = state.mode === 'forward';
   const targetKey: FieldKey = forward ? 'h' : 'L';
   const own: PageFieldError[] = [];
-  if (forward && state.target === 'ra')
-    own.push({ key: 'ra', message: `${FIELDS.ra.label} as a target is not offered here: give the scallop height h.` });
+  if (forward && state.target !== 'h')
+    own.push({
+      key: state.target,
+      message: `${FIELDS[fieldOfPageKey(state.target)].label} as a target is not offered here: give the scallop height h.`,
+    });
   const values = read(state, [...parameters, { name: 'R', field: 'R' }, { name: 'Rcr', field: 'Rcr' }], own);
   const target = fieldInMm(state, targetKey);
   if (typeof target !== 'number')

@@ -35,7 +35,13 @@ export { fieldMessages, fieldOfError };
  * validation errors as they are.
  */
 export function replyErrors(state: CalculatorState, reply: PageReply): Array<InputError | PageFieldError> {
-  if (reply.ok || isSolveReply(reply)) return reply.ok ? [] : [...reply.errors];
+  if (reply.ok || isSolveReply(reply)) {
+    if (reply.ok) return [];
+    // A target Sa is asked as a target Ra (its L0): the worker's Ra bound is the Sa field's.
+    return state.mode === 'forward' && state.target === 'sa'
+      ? reply.errors.map((e) => (e.field === 'ra' ? { ...e, field: 'targetSa' } : e))
+      : [...reply.errors];
+  }
   if (isCurvedRequest(reply.request))
     return (reply as Extract<CurvedReply, { ok: false }>).errors.map((e) =>
       'got' in e ? e : describeCurvedError(e, state),

@@ -21,6 +21,9 @@ export { curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
 
 type OkReply = Extract<SolveReply, { ok: true }>;
 
+/** The headline's label with a target Sa: the step-over at fz -> 0, where the passes leave Ra = Sa. */
+export const ZERO_FEED_LABEL = 'Step-over L0 (fz -> 0: Ra = Sa)';
+
 /** Which kind of question the inputs on screen (or a reply) are: a plane's or cylinder's, a doubly curved point's, three-axis. */
 export type QuestionKind = 'classic' | 'curved' | 'three-axis';
 
@@ -122,7 +125,7 @@ export class ResultsPanel {
     mode: SolveMode,
     tiltDeg: number | null,
     typing = false,
-    inputs: { readonly kind: QuestionKind; readonly passes: 'raster' | 'waterline' } = {
+    inputs: { readonly kind: QuestionKind; readonly passes: 'raster' | 'waterline'; readonly saTarget?: boolean } = {
       kind: 'classic',
       passes: 'raster',
     },
@@ -176,7 +179,8 @@ export class ResultsPanel {
       return;
     }
     const forward = drawMode === 'forward';
-    this.headlineLabel.textContent = forward ? 'Step-over L' : 'Scallop height h';
+    // A target Sa's answer here is the curve's end L0 (the pair is the target-Sa box's): named so.
+    this.headlineLabel.textContent = forward ? (inputs.saTarget ? ZERO_FEED_LABEL : 'Step-over L') : 'Scallop height h';
     this.headline.dataset.testid = forward ? 'result-exact-interval' : 'result-exact-height';
     const e = ok?.exact ?? null;
     const value = (mm: number | null | undefined, resolution: 'length' | 'height' = 'length') =>

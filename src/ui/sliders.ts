@@ -29,6 +29,7 @@ const STEPS: Readonly<Record<'mm' | 'in', Readonly<Record<FieldKey, number>>>> =
     h: 0.001,
     L: 0.001,
     ra: 0.0001,
+    sa: 0.0001,
     Rs: 0.1,
     slope: 0.1,
     psi: 0.1,
@@ -52,6 +53,7 @@ const STEPS: Readonly<Record<'mm' | 'in', Readonly<Record<FieldKey, number>>>> =
     h: 0.0001,
     L: 0.0001,
     ra: 0.00001,
+    sa: 0.00001,
     Rs: 0.01,
     slope: 0.1,
     psi: 0.1,
@@ -133,6 +135,11 @@ export function sliderRanges(
       state.mode === 'forward' && state.target === 'ra'
         ? [step.ra, snap(len(Math.min(0.999 * raMax(), 0.5)), step.ra, step.ra)]
         : [step.ra, 10 * step.ra],
+    // A target Sa: below the same largest Ra (Sa tends to Ra as fz -> 0); only drawn while it is the target.
+    sa:
+      state.mode === 'forward' && state.target === 'sa'
+        ? [step.sa, snap(len(Math.min(0.999 * raMax(), 0.5)), step.sa, step.sa)]
+        : [step.sa, 10 * step.sa],
     Rs: [rsMin, Math.max(rsMin + step.Rs, snap(len(RADIUS_SLIDER_MAX_MM), step.Rs, 0))],
     // Three-axis: the slope below a vertical wall, the raster angle from the fall line to the contour.
     slope: [0, 89.9],

@@ -309,6 +309,9 @@ export function toSearch(state: CalculatorState, extra: Readonly<Record<string, 
   if (state.mode === 'forward' && state.target === 'ra') {
     set('target', 'ra');
     set('ra', state.fields.ra);
+  } else if (state.mode === 'forward' && state.target === 'sa') {
+    set('target', 'sa');
+    set('targetSa', state.fields.sa);
   } else if (state.mode === 'forward') set('h', state.fields.h);
   else {
     set('mode', 'inverse');

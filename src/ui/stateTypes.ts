@@ -13,8 +13,11 @@ import type { CurvedFields, RadiusSide } from './surfaceState';
 export type Unit = LengthUnit;
 /** The page's text fields: R (or D), Rcr, rho, tilt, Rs, h, ra, L (the field registry's page keys). */
 export type FieldKey = PageFieldKey;
-/** What the forward problem is given: a scallop height h, or a roughness Ra (h then follows). */
-export type Target = 'h' | 'ra';
+/**
+ * What the forward problem is given: a scallop height h, a roughness Ra (h then follows), or a
+ * target Sa (the teeth's areal roughness: the best pair of step-over and feed per tooth; a plane only).
+ */
+export type Target = 'h' | 'ra' | 'sa';
 /** How the tool size field is given: the radius R, or the diameter D = 2R, as catalogues give it. */
 export type ToolSize = 'R' | 'D';
 /**

@@ -7,7 +7,7 @@
  * on their fields by threeAxisFieldErrors. Every message in the user's unit and the language in
  * force (i18n/words.ts describeThreeAxis; English: the core's message). Pure.
  */
-import { FIELDS, pageKeyOf } from '../core/input/fields';
+import { FIELDS, fieldOfPageKey, pageKeyOf } from '../core/input/fields';
 import { formatInputNumber, fromMm, unitSymbol } from '../core/input/units';
 import {
   type RawThreeAxisInput,
@@ -84,10 +84,11 @@ export function threeAxisRaw(state: CalculatorState, errors: PageFieldError[]): 
 export function buildThreeAxisRequest(state: CalculatorState): BuiltRequest {
   const own: PageFieldError[] = [];
   const forward = state.mode === 'forward';
-  if (forward && state.target === 'ra')
+  // A target Ra or Sa: its field names it.
+  if (forward && state.target !== 'h')
     own.push({
-      key: 'ra',
-      message: `${FIELDS.ra.label} as a target is not offered for three-axis machining: give the scallop height h.`,
+      key: state.target,
+      message: `${FIELDS[fieldOfPageKey(state.target)].label} as a target is not offered for three-axis machining: give the scallop height h.`,
     });
   const raw = threeAxisRaw(state, own);
   const stepKey = programmedStepKey(state.passes);

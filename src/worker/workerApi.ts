@@ -22,6 +22,7 @@ import {
 import type { SolveRequest, TableReply, TableRequest, TeachReply } from './protocol';
 import { lazyModule, transfer } from './rpc';
 import type { SimulateReply, SimulationRunner } from './simulate';
+import type { TargetSaReply, TargetSaRequest } from './targetSaProtocol';
 import type { PageTeachReply } from './teachProtocol';
 import { sceneTransferables, transferables } from './transferables';
 
@@ -31,6 +32,7 @@ const teachJob = lazyModule(() => import('./jobs/teachPage'));
 const tableJob = lazyModule(() => import('./jobs/table'));
 const simulation = lazyModule(() => import('./simulate'));
 const finishJob = lazyModule(() => import('./jobs/finish'));
+const targetSaJob = lazyModule(() => import('./jobs/targetSa'));
 
 /** Answers any question; the plane's and cylinders' at once, the others' solvers loaded on first use. */
 async function solveAny(request: SolverRequest): Promise<PageReply | QuestionReply> {
@@ -72,6 +74,10 @@ export const workerApi = {
     if (!reply.ok) return reply;
     const buffers = [reply.x3p?.buffer, reply.map?.buffer].filter((b) => b !== undefined) as ArrayBuffer[];
     return transfer(reply, buffers);
+  },
+  /** The best (L, fz) pair for a target Sa and the curve of pairs (issue 29; seconds of work). */
+  async targetSa(request: TargetSaRequest): Promise<TargetSaReply> {
+    return (await targetSaJob()).targetSa(request);
   },
   async simulate(request: SolveRequest, onProgress?: (fraction: number) => void): Promise<SimulateReply> {
     const r = await runner();

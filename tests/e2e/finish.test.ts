@@ -4,22 +4,32 @@
  * balanced feed" makes hf read as h; a bad fz is one line naming its limit in the unit, the
  * step-over kept; the profiles along and across the feed are drawn; a cylinder is refused in one line (no number); the x3p download is a zip of one
  * cell's 256 x 256 heights named by the question; feed rate and spindle speed give fz; a Fusion
- * 360 tool's NOF fills the flutes. Every
- * status read is polled.
+ * 360 tool's NOF fills the flutes; a target Sa typed gives the best pair with its
+ * Sa, L0 and the chart of pairs, "use this pair" solves at it, a cylinder and runout are refused in
+ * one line and the earlier pair is never shown for them. Every status read is polled.
  */
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { feedMarks, finishReport, toothModel } from '../../src/core/finish/index';
 import { forwardInput } from '../../src/core/input/validate';
+import { forwardOfRaTarget, validateRaTarget } from '../../src/core/roughness/raTarget';
+import { exactForward } from '../../src/core/surfaces/solve';
 import { feedLength } from '../../src/ui/finishLength';
-import { formatRoughness } from '../../src/ui/format';
+import { formatLenUnit, formatRoughness } from '../../src/ui/format';
 import { solve } from '../../src/worker/jobs/solve';
 import { typeInto, useSite } from './harness';
 
 const site = useSite('finish');
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 const QUERY = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm';
+
+/** L0 of a target Sa (mm): the step-over whose passes leave Ra = Sa, where the curve of pairs meets fz = 0. */
+function zeroFeedL(saMm: number): number {
+  const v = validateRaTarget({ R: 3, Rcr: 1, rho: 5, tilt: 0, pattern: 'one-way', ra: saMm });
+  if (!v.ok) throw new Error('invalid');
+  return exactForward(forwardOfRaTarget(v.value)).intervalMm;
+}
 
 /** The core's answer at the page's question (one-way, h 0.05 mm, 4 teeth, fz 0.1 mm). */
 function expected() {
@@ -45,6 +55,8 @@ describe('the finish box', () => {
   let page: Page;
   let errors: string[];
   const core = expected();
+  /** The best pair's step-over as the target-Sa box showed it. */
+  let pairShown = '';
 
   it('typed flutes and fz give hf, Sa and fz* as the core computes them, to the digits shown', async () => {
     ({ page, errors } = await site.open(QUERY));
@@ -248,5 +260,100 @@ describe('the finish box', () => {
     await page.locator('input[name="pattern"][value="zigzag"]').check();
     await expect.poll(() => page.getByTestId('finish-results').isHidden()).toBe(false);
     expect(await box.getAttribute('open')).toBeNull();
+  });
+
+  it('target Sa: chosen and typed, it gives the best pair, the Sa it leaves, L0 and the chart of pairs', async () => {
+    await page.locator('input[name="pattern"][value="one-way"]').check();
+    await page.locator('input[name="target"][value="sa"]').check();
+    await commit(page, 'input-sa', '0.0008');
+    const box = page.getByTestId('target-sa-results');
+    await expect.poll(() => box.isVisible()).toBe(true);
+    // Seconds of work in the worker: a waiting line saying what is computed, then the pair.
+    await expect.poll(() => text(page, 'target-sa-message')).toMatch(/^Computing the pairs of step-over and feed/);
+    await expect.poll(() => text(page, 'target-sa-sa'), { timeout: 90_000 }).toBe(formatRoughness(0.0008, 'mm'));
+    expect(await text(page, 'target-sa-message')).toBe('');
+    // L0: the curve's end at fz -> 0 (Ra = Sa), the step-over the results show.
+    expect(await text(page, 'target-sa-l0')).toBe(feedLength(zeroFeedL(0.0008), 'mm'));
+    expect(await text(page, 'result-exact-interval')).toBe(formatLenUnit(zeroFeedL(0.0008), 'mm'));
+    // Named as what it is: not the pair's L.
+    expect(await page.locator('[data-role="headline-label"]').textContent()).toBe('Step-over L0 (fz -> 0: Ra = Sa)');
+    const L = parseFloat(await text(page, 'target-sa-interval'));
+    const fz = parseFloat(await text(page, 'target-sa-fz'));
+    expect(L).toBeGreaterThan(0);
+    expect(L).toBeLessThan(zeroFeedL(0.0008));
+    expect(fz).toBeGreaterThan(0);
+    expect(parseFloat(await text(page, 'target-sa-area'))).toBeCloseTo(L * fz, 6);
+    expect(await text(page, 'target-sa-h')).toMatch(/^\d+\.\d+ \u00b5m$/);
+    // The chart: L across, fz up, in mm; the best pair a dot on a dashed line; the curve ends at fz = 0.
+    const chart = page.getByTestId('target-sa-chart');
+    expect(await chart.locator('.chart-axis-label').allTextContents()).toEqual(['L (mm)', 'fz (mm)']);
+    expect(await chart.locator('circle.chart-point').count()).toBe(1);
+    expect(await chart.locator('line.chart-marker').count()).toBe(1);
+    expect(await chart.locator('path.chart-line').getAttribute('d')).toMatch(/^M[\d.]+ [\d.]+(L[\d.]+ [\d.]+){8,}$/);
+    // The feed's fields are not used (fz is the answer), and say so; the finish box asks nothing.
+    expect(await page.getByTestId('input-fz').isDisabled()).toBe(true);
+    expect(await page.locator('[data-field="fz"] .hint').textContent()).toBe(
+      'not used with a target Sa: fz is its answer',
+    );
+    expect(await page.getByTestId('finish-results').isHidden()).toBe(true);
+    expect(await text(page, 'target-sa-live')).toMatch(
+      /^Step-over L: [\d.]+ mm; Feed per tooth fz: [\d.]+ mm; Sa it leaves: /,
+    );
+    // The link: target=sa&sa=0.0008&z=4 (tests/fieldRegistry.test.ts reads it back).
+    await expect.poll(() => new URL(page.url()).searchParams.get('target')).toBe('sa');
+    expect(new URL(page.url()).searchParams.get('sa')).toBe('0.0008');
+    expect(new URL(page.url()).searchParams.get('z')).toBe('4');
+    // The worker's seconds (3-10 s of CPU, more on a loaded machine) within the test's own time.
+  }, 120_000);
+
+  it('target Sa: "use this pair" solves for the scallop height at its L with its fz; the finish then gives Sa', async () => {
+    const L = await text(page, 'target-sa-interval');
+    pairShown = L;
+    await page.getByTestId('use-target-sa-pair').click();
+    await expect.poll(() => page.locator('input[name="mode"][value="inverse"]').isChecked()).toBe(true);
+    // L and fz as a shop types them: rounded down to 0.1 µm.
+    expect(await page.getByTestId('input-L').inputValue()).toBe(String(Math.floor(parseFloat(L) * 1e4) / 1e4));
+    expect(await page.getByTestId('target-sa-results').isHidden()).toBe(true);
+    // The finish box at the pair: Sa at or just below the target (both rounded down).
+    await expect.poll(() => text(page, 'finish-sa'), { timeout: 30_000 }).toMatch(/\d/);
+    const sa = parseFloat(await text(page, 'finish-sa'));
+    expect(sa).toBeLessThanOrEqual(0.8);
+    expect(sa).toBeGreaterThan(0.79);
+  });
+
+  it('target Sa off a plane is refused on its field; a newer input never shows the earlier pair; runout refused', async () => {
+    // From here on, every value the pair's output shows, sampled each frame.
+    await page.evaluate(() => {
+      const w = window as unknown as { seen: string[]; sampling: boolean };
+      w.seen = [];
+      w.sampling = true;
+      const sample = () => {
+        w.seen.push(document.querySelector('[data-testid="target-sa-interval"]')?.textContent ?? '');
+        if (w.sampling) requestAnimationFrame(sample);
+      };
+      sample();
+    });
+    await page.locator('input[name="surface"][value="convex"]').check();
+    await page.locator('input[name="mode"][value="forward"]').check();
+    await expect.poll(() => text(page, 'error-sa')).toBe('Target Sa is computed on a plane only: give h or Ra here.');
+    expect(await text(page, 'result-exact-interval')).toBe('\u2014');
+    // The teeth-and-feed box was closed by the user above: opened again to reach the runout.
+    const teeth = page.getByTestId('finish-inputs');
+    if ((await teeth.getAttribute('open')) === null) await teeth.locator('summary').click();
+    await commit(page, 'input-runout', '0.01');
+    await page.locator('input[name="surface"][value="plane"]').check();
+    const runout = 'Target Sa is computed without runout: set the runout e to 0 (or leave it empty) for the best pair.';
+    await expect.poll(() => text(page, 'target-sa-message'), { timeout: 20_000 }).toBe(runout);
+    expect(await text(page, 'error-runout')).toBe(runout);
+    const seen = await page.evaluate(() => {
+      const w = window as unknown as { seen: string[]; sampling: boolean };
+      w.sampling = false;
+      return w.seen;
+    });
+    // The earlier answer's pair is never shown for the newer inputs: dashes only.
+    expect(seen.length).toBeGreaterThan(0);
+    expect(seen).not.toContain(pairShown);
+    expect(new Set(seen)).toEqual(new Set(['\u2014']));
+    expect(errors).toEqual([]);
   });
 });

@@ -22,6 +22,11 @@ const CASES: ReadonlyArray<readonly [string, string]> = [
     '?R=3&Rcr=1&rho=5&surfaceRadius=-40&ra=0.002&target=ra&unit=mm',
     'R 3 mm, Rcr 1 mm, lead 5°, tilt 0°, one-way, concave cylinder Rs 40 mm, Ra 0.002 mm',
   ],
+  // A target Sa: the card names it (not the h it does not use).
+  [
+    '?R=3&Rcr=1&rho=5&target=sa&sa=0.0008&z=4&unit=mm',
+    'R 3 mm, Rcr 1 mm, lead 5°, tilt 0°, one-way, plane, Sa 0.0008 mm',
+  ],
   ['?R=3&Rcr=1&rho=5&mode=inverse&L=2.5&unit=mm', 'R 3 mm, Rcr 1 mm, lead 5°, tilt 0°, one-way, plane, L 2.5 mm'],
 ];
 

@@ -252,7 +252,7 @@ export const FIELDS = {
     embed: 'ra',
     page: 'ra',
   },
-  /** The surface the teeth leave (issue 29): the best (L, fz) pair for a target Sa (command line). */
+  /** The surface the teeth leave (issue 29): the best (L, fz) pair for a target Sa (command line, page's `target=sa`). */
   targetSa: {
     short: 'Sa',
     core: 'targetSaMm',
@@ -260,11 +260,11 @@ export const FIELDS = {
     group: 'quantity',
     label: 'Target Sa',
     range: { min: 1e-9, max: null, minIncluded: true, maxIncluded: false, rule: '1e-9 mm <= Sa < the largest Ra' },
-    url: null,
+    url: 'sa',
     cli: 'target-sa',
     csv: null,
-    embed: null,
-    page: null,
+    embed: 'sa',
+    page: 'sa',
   },
   /** The best (L, fz) pair whose scallop h and feed marks hf are both at most a target Rz (command line). */
   targetRz: {
@@ -527,7 +527,7 @@ export const FIELDS = {
   /** The machine: five-axis (lead and tilt given) or three-axis (the tool upright, the slope sets them; issue 20). */
   machine: pageSetting('machine', 'Machine', ['5axis', '3axis'] as const),
   mode: pageSetting('mode', 'Mode', ['forward', 'inverse'] as const),
-  target: pageSetting('target', 'Given in forward mode', ['h', 'ra'] as const),
+  target: pageSetting('target', 'Given in forward mode', ['h', 'ra', 'sa'] as const),
   /**
    * A teaching view shown alone (with `embed`), or `result`: an embed's compact card (the inputs in a
    * line, the answer and Copy; src/ui/embedCard.ts), no teaching view.

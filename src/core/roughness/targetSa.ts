@@ -28,12 +28,11 @@ import { balancedFeed } from '../finish/feedMarks';
 import type { FinishInput } from '../finish/finishInput';
 import { maxFeedPerToothMm } from '../finish/finishInput';
 import { toothModel } from '../finish/toothModel';
-import type { AnyInputError, Validation } from '../input/inputErrors';
-import { forwardInput, inverseInput, type RawToolInput } from '../input/validate';
+import { forwardInput, inverseInput } from '../input/validate';
 import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
 import { exactForward, exactInverse } from '../surfaces/solve';
 import { forwardOfRaTarget } from './raTarget';
-import { exactRoughnessAtInterval, validateTargetRa } from './roughness';
+import { exactRoughnessAtInterval } from './roughness';
 
 /** One pair of the curve: step-over, feed per tooth and the Sa they leave (mm). */
 export interface SaPair {
@@ -261,32 +260,8 @@ export function targetSaPairs(pass: PassInput, teeth: TeethInput, targetSaMm: nu
   return targetSaCurve(pass, teeth, targetSaMm, L0, raAt);
 }
 
-/** Raw values of a target Sa (mm and degrees): the tool, pattern, surface and the target. */
-export interface RawTargetSaInput extends RawToolInput {
-  readonly sa: unknown;
-}
-
-/** A validated target Sa: the pass and the Sa (mm) its pairs must leave. */
-export interface TargetSaInput extends PassInput {
-  /** Target Sa in mm: at least 1e-9 mm, below the largest Ra of the pass (Sa -> Ra as fz -> 0). */
-  readonly targetSaMm: number;
-}
-
-/**
- * Validates a target Sa: the tool rules and the bound of a target Ra (validateTargetRa: the same
- * limit, since Sa tends to the cross-feed Ra as fz -> 0 and the pairs need L0), each error naming
- * the target Sa field. The one validation of a target Sa, for the command line and the page.
- * @param maxRa the largest Ra of a valid pass (the page passes a cached one).
- */
-export function validateTargetSa(
-  raw: RawTargetSaInput,
-  maxRa?: (pass: PassInput) => number,
-): Validation<TargetSaInput, AnyInputError> {
-  const v = validateTargetRa({ ...raw, ra: raw.sa }, maxRa);
-  if (!v.ok) return { ok: false, errors: v.errors.map((e) => (e.field === 'ra' ? { ...e, field: 'targetSa' } : e)) };
-  const { targetRaMm, ...pass } = v.value;
-  return { ok: true, value: { ...pass, targetSaMm: targetRaMm } };
-}
+// The validation (no solver: the page's first script takes it) lives in targetSaInput.ts.
+export { type RawTargetSaInput, type TargetSaInput, validateTargetSa } from './targetSaInput';
 
 /** The pair for a target Rz: across the feed the scallop h, along it the feed marks hf, both at most Rz. */
 export interface TargetRzAnswer {

@@ -88,7 +88,8 @@ export type StaticKey =
   | 'legendCusp'
   | 'legendAxes'
   | 'legendTrace'
-  | 'legendExaggeration';
+  | 'legendExaggeration'
+  | 'givenSa';
 
 /** The words of the question named beside an answer (questionWords.ts), and its list separator ", ". */
 export type QuestionWord =
@@ -160,7 +161,19 @@ export type FinishPhrase =
   | 'Computing the areal parameters...'
   | 'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).'
   | 'Along the CC path (y = 0), two feed periods'
-  | 'Across the feed, one period of the passes, where the feed marks stand highest:';
+  | 'Across the feed, one period of the passes, where the feed marks stand highest:'
+  | 'not used with a target Sa: fz is its answer'
+  | 'Target Sa: the best step-over and feed per tooth'
+  | 'Step-over L'
+  | 'Feed per tooth fz'
+  | 'use this pair'
+  | 'L * fz (area per tooth)'
+  | 'Sa it leaves'
+  | 'Scallop h at this L'
+  | 'L0 (fz -> 0: Ra = Sa)'
+  | 'Computing the pairs of step-over and feed per tooth that leave this Sa (a few seconds)...'
+  | 'The pair with the largest L * fz (the area machined per tooth: the fastest finish at a given spindle speed) among those whose areal Sa is the target (plane, straight teeth, no runout). "use this pair" solves for the scallop height at that L with that fz, both rounded down.'
+  | 'Every pair that leaves this Sa: the dot is the best, the curve ends at L0 where fz -> 0';
 
 /** A field's label (with the paper's symbol kept) and the hint under it. */
 export interface FieldWords {
@@ -182,7 +195,12 @@ export interface Catalogue {
   /** A field's slider, named after its field: `${label}${slider}` (English: " slider"). */
   readonly slider: string;
   /** The headline's labels. */
-  readonly headline: { readonly stepOver: string; readonly scallopHeight: string };
+  readonly headline: {
+    readonly stepOver: string;
+    readonly scallopHeight: string;
+    /** A target Sa's: the step-over at the curve's end, fz -> 0 (results.ts ZERO_FEED_LABEL). */
+    readonly zeroFeed: string;
+  };
   /** The results' status lines and the Copy buttons' words. */
   readonly phrases: Readonly<Record<Phrase, string>>;
   /** The finish box's words. */

@@ -94,6 +94,7 @@ export const catalogue: Catalogue = {
     legendTrace: 'Schritt für Schritt: geprüfter Schnitt, Kandidaten P_hp[i], gefundener Punkt',
     legendExaggeration:
       'Höhen nahe der Fläche N-fach überhöht, wenn der Kamm zu niedrig zum Sehen ist (Hinweis in der Szene; Zahlen unverändert)',
+    givenSa: 'Ziel-Sa (flächenhaft, mit den Schneiden)',
   },
   fields: {
     R: { label: 'Werkzeugradius R', hint: 'halber Werkzeugdurchmesser' },
@@ -132,6 +133,10 @@ export const catalogue: Catalogue = {
     passPhase: { label: 'Bahnphase q', hint: 'Versatz der Bahnen als Anteil der Vorschubperiode' },
     F: { label: 'Vorschubgeschwindigkeit F', hint: 'mit n: fz = F / (n z); aus, solange fz eingetragen ist' },
     n: { label: 'Drehzahl n', hint: 'Spindeldrehzahl; mit F ergibt sie fz' },
+    sa: {
+      label: 'Ziel-Sa',
+      hint: 'flächenhafte Rauheit, die die Schneiden hinterlassen (Ebene, kein Rundlauffehler); mit der Zähnezahl z: bester Bahnabstand und fz',
+    },
   },
   diameter: {
     label: 'Werkzeugdurchmesser D',
@@ -140,7 +145,7 @@ export const catalogue: Catalogue = {
   },
   degrees: 'Grad',
   slider: ' Schieberegler',
-  headline: { stepOver: 'Bahnabstand L', scallopHeight: 'Rautiefe h' },
+  headline: { stepOver: 'Bahnabstand L', scallopHeight: 'Rautiefe h', zeroFeed: 'Bahnabstand L0 (fz → 0: Ra = Sa)' },
   phrases: {
     'Typing: the results follow when you pause or press Enter.':
       'Eingabe: die Ergebnisse folgen, sobald Sie innehalten oder die Eingabetaste drücken.',
@@ -182,6 +187,21 @@ export const catalogue: Catalogue = {
     'Along the CC path (y = 0), two feed periods': 'Entlang der CC-Bahn (y = 0), zwei Vorschubperioden',
     'Across the feed, one period of the passes, where the feed marks stand highest:':
       'Quer zum Vorschub, eine Periode der Bahnen, wo die Vorschubmarken am höchsten stehen:',
+    'not used with a target Sa: fz is its answer': 'nicht verwendet bei Ziel-Sa: fz ist die Antwort',
+    'Target Sa: the best step-over and feed per tooth': 'Ziel-Sa: der beste Bahnabstand und Zahnvorschub',
+    'Step-over L': 'Bahnabstand L',
+    'Feed per tooth fz': 'Zahnvorschub fz',
+    'use this pair': 'dieses Paar verwenden',
+    'L * fz (area per tooth)': 'L · fz (Fläche je Zahn)',
+    'Sa it leaves': 'Sa, das entsteht',
+    'Scallop h at this L': 'Kammhöhe h bei diesem L',
+    'L0 (fz -> 0: Ra = Sa)': 'L0 (fz → 0: Ra = Sa)',
+    'Computing the pairs of step-over and feed per tooth that leave this Sa (a few seconds)...':
+      'Die Paare aus Bahnabstand und Zahnvorschub für dieses Sa werden berechnet (einige Sekunden)…',
+    'The pair with the largest L * fz (the area machined per tooth: the fastest finish at a given spindle speed) among those whose areal Sa is the target (plane, straight teeth, no runout). "use this pair" solves for the scallop height at that L with that fz, both rounded down.':
+      'Das Paar mit dem größten L · fz (die je Zahn bearbeitete Fläche: das schnellste Schlichten bei gegebener Drehzahl) unter denen, deren flächenhaftes Sa das Ziel ist (Ebene, gerade Schneiden, kein Rundlauffehler). „dieses Paar verwenden“ berechnet die Kammhöhe bei diesem L mit diesem fz, beide abgerundet.',
+    'Every pair that leaves this Sa: the dot is the best, the curve ends at L0 where fz -> 0':
+      'Alle Paare, die dieses Sa ergeben: der Punkt ist das beste, die Kurve endet bei L0, wo fz → 0',
   },
   tabs: {
     'Cross-feed profile': 'Profil quer zum Vorschub',

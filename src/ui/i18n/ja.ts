@@ -91,6 +91,7 @@ export const catalogue: Catalogue = {
     legendAxes: '接触点の X（送り）、Y、Z（3軸では機械上の姿勢で工具軸が垂直、Lxy または dz は CAM で指定する値）',
     legendTrace: '段階表示：試した断面、候補 P_hp[i]、求めた点',
     legendExaggeration: 'スカラップが低くて見えないときは面の近くで高さを N 倍に拡大（表示にバッジ、数値は不変）',
+    givenSa: '目標 Sa（面、刃を考慮）',
   },
   fields: {
     R: { label: '工具半径 R', hint: '工具直径の半分' },
@@ -114,6 +115,10 @@ export const catalogue: Catalogue = {
     passPhase: { label: 'パスの位相 q', hint: 'パスのずれ（送り周期に対する割合）' },
     F: { label: '送り速度 F', hint: 'テーブル送り。n と合わせて fz = F / (n z)。fz を入力中は使わない' },
     n: { label: '主軸回転数 n', hint: '毎分回転数。F と合わせて fz を与える' },
+    sa: {
+      label: '目標 Sa',
+      hint: '刃が残す面の目標粗さ（平面、振れなし）。刃数 z と合わせて最適なピックフィードと fz を求める',
+    },
   },
   diameter: {
     label: '工具直径 D',
@@ -122,7 +127,11 @@ export const catalogue: Catalogue = {
   },
   degrees: '度',
   slider: 'のスライダー',
-  headline: { stepOver: 'ピックフィード L', scallopHeight: 'カスプ高さ h' },
+  headline: {
+    stepOver: 'ピックフィード L',
+    scallopHeight: 'カスプ高さ h',
+    zeroFeed: 'ピックフィード L0（fz → 0 の端：Ra = Sa）',
+  },
   phrases: {
     'Typing: the results follow when you pause or press Enter.':
       '入力中：手を止めるか Enter を押すと結果が更新されます。',
@@ -162,6 +171,21 @@ export const catalogue: Catalogue = {
     'Along the CC path (y = 0), two feed periods': '切削点の経路に沿って（y = 0）、送り 2 周期',
     'Across the feed, one period of the passes, where the feed marks stand highest:':
       '送りと直角に、パス 1 周期、送りマークが最も高い位置で：',
+    'not used with a target Sa: fz is its answer': '使わない：目標 Sa では fz が答え',
+    'Target Sa: the best step-over and feed per tooth': '目標 Sa：最適なピックフィードと一刃送り',
+    'Step-over L': 'ピックフィード L',
+    'Feed per tooth fz': '一刃送り fz',
+    'use this pair': 'この組を使う',
+    'L * fz (area per tooth)': 'L × fz（一刃あたりの加工面積）',
+    'Sa it leaves': '残る Sa',
+    'Scallop h at this L': 'この L でのカスプ高さ h',
+    'L0 (fz -> 0: Ra = Sa)': 'L0（fz → 0 の端：Ra = Sa）',
+    'Computing the pairs of step-over and feed per tooth that leave this Sa (a few seconds)...':
+      'この Sa を残すピックフィードと一刃送りの組を計算中（数秒）…',
+    'The pair with the largest L * fz (the area machined per tooth: the fastest finish at a given spindle speed) among those whose areal Sa is the target (plane, straight teeth, no runout). "use this pair" solves for the scallop height at that L with that fz, both rounded down.':
+      '面の Sa が目標と等しくなる組のうち L × fz（一刃あたりの加工面積：同じ主軸回転数で最も速い仕上げ）が最大の組です（平面、直刃、振れなし）。「この組を使う」はその L と fz（どちらも切り捨て）でカスプ高さを求めます。',
+    'Every pair that leaves this Sa: the dot is the best, the curve ends at L0 where fz -> 0':
+      'この Sa を残すすべての組：点が最適、曲線は fz → 0 となる L0 で終わる',
   },
   tabs: {
     'Cross-feed profile': '送り直交断面',

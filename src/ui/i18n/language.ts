@@ -6,6 +6,7 @@
  * A catalogue loads only when its language is chosen (ja.ts, de.ts); English is the page as
  * written, its words read from the page itself before any other language replaces them.
  */
+import { ZERO_FEED_LABEL } from '../results';
 import type { ToolStorage } from '../savedTools';
 import type { Catalogue, FinishPhrase, Lang, Phrase } from './catalogue';
 import { describeInputErrorIn, describeThreeAxisErrorIn } from './errorText';
@@ -83,7 +84,9 @@ export function localizeResults(results: object): void {
         ? words.headline.stepOver
         : english === 'Scallop height h'
           ? words.headline.scallopHeight
-          : words.phrases[english as Phrase];
+          : english === ZERO_FEED_LABEL
+            ? words.headline.zeroFeed
+            : words.phrases[english as Phrase];
     if (named !== undefined) label.textContent = named;
   }
   // A flat end lying flat on a plane: the sentence with its L = 2R.

@@ -44,7 +44,7 @@ function strings(c: Catalogue): Array<[string, string]> {
 
 /** Latin words a translation keeps: the paper's symbols (P_hp, P_base, CC, O, y0) and authors, names, units, file kinds and key names. */
 const KEPT = new Set(
-  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter hf Sa ISO M3 x3p F n x y P hp base CC O y0 N i'.split(
+  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter hf Sa ISO M3 x3p F n x y P hp base CC O y0 N i L0'.split(
     ' ',
   ),
 );

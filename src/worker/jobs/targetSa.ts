@@ -1,0 +1,47 @@
+/**
+ * The `targetSa` job (issue 29): the best pair (L, fz) for a target Sa and the curve of pairs (core
+ * roughness/targetSa.ts), of the plane the page answered, with the scallop h at the best step-over.
+ * The teeth are validated here by the core (finishInput.ts: whole teeth, runout up to R/10), each
+ * refusal one line on its field in the user's unit; runout is refused (the inverse does not take
+ * it). Takes seconds (the page shows a waiting line meanwhile); loaded on the first such question.
+ */
+import { describeFinishError, maxFeedPerToothMm, validateFinish } from '../../core/finish/finishInput';
+import { inverseInput } from '../../core/input/validate';
+import { targetSaPairs } from '../../core/roughness/targetSa';
+import { exactInverse } from '../../core/surfaces/solve';
+import type { TargetSaReply, TargetSaRequest } from '../targetSaProtocol';
+
+/** The one line that refuses runout (the inverse is computed with the teeth cutting equally). */
+export const TARGET_SA_RUNOUT_MESSAGE =
+  'Target Sa is computed without runout: set the runout e to 0 (or leave it empty) for the best pair.';
+
+/** Answers a target Sa; never throws for a bad value: each is a message on its field. */
+export function targetSa(request: TargetSaRequest): TargetSaReply {
+  const v = request.values;
+  const pass = request.pass;
+  // The feed is the answer: any accepted fz stands in for it while the teeth are validated.
+  const checked = validateFinish(
+    {
+      flutes: v.flutes,
+      fz: maxFeedPerToothMm(pass.toolRadiusMm),
+      runout: v.runout,
+      runoutPhase: v.runoutPhase,
+      passPhase: v.passPhase,
+    },
+    pass.toolRadiusMm,
+  );
+  if (!checked.ok) {
+    const errors = checked.errors.map((e) => {
+      const field = e.field as keyof TargetSaRequest['typed'];
+      const typed = (request.typed[field] ?? '').trim();
+      return { field: e.field, message: describeFinishError(typed === '' ? e : { ...e, got: typed }, request.unit) };
+    });
+    return { ok: false, request, errors };
+  }
+  const { feedPerToothMm: _feed, ...teeth } = checked.value;
+  if (teeth.runoutMm > 0)
+    return { ok: false, request, errors: [{ field: 'runout', message: TARGET_SA_RUNOUT_MESSAGE }] };
+  const answer = targetSaPairs(pass, teeth, request.targetSaMm);
+  const best = exactInverse(inverseInput(pass, pass.pattern, answer.best.intervalMm, pass.surface));
+  return { ok: true, request, answer, bestScallopMm: best.cuspHeightMm };
+}
