@@ -60,6 +60,10 @@ export interface TeethSurface {
   /** The surface's exact lowest height (mean - Sv) and Sz (highest peak to deepest valley), mm. */
   readonly lowestMm: number;
   readonly szMm: number;
+  /** The question drawn: teeth z, feed per tooth fz and step-over L (mm). */
+  readonly flutes: number;
+  readonly feedPerToothMm: number;
+  readonly intervalMm: number;
 }
 
 /**
@@ -83,5 +87,8 @@ export function teethSurface(m: ToothModel, a: ArealParameters): TeethSurface {
     crossPeriods: g.crossPeriods,
     lowestMm: a.meanMm - a.svMm,
     szMm: a.szMm,
+    flutes: m.input.finish.flutes,
+    feedPerToothMm: m.input.finish.feedPerToothMm,
+    intervalMm: m.input.intervalMm,
   };
 }

@@ -127,7 +127,9 @@ export type FinishPhrase =
   | 'Computing the areal parameters...'
   | 'Areal parameters over one period cell (ISO 25178-2, no filter, the design plane as reference); straight teeth, M3. The x3p file holds that cell, 256 x 256 heights (ISO 25178-72).'
   | 'Along the CC path (y = 0), two feed periods'
-  | 'Across the feed, one period of the passes, where the feed marks stand highest:';
+  | 'Across the feed, one period of the passes, where the feed marks stand highest:'
+  | "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):"
+  | 'Continuous passes: the tool sweeps without teeth.';
 
 /** A field's label (with the paper's symbol kept) and the hint under it. */
 export interface FieldWords {

@@ -140,6 +140,10 @@ export const catalogue: Catalogue = {
     'Along the CC path (y = 0), two feed periods': 'Entlang der CC-Bahn (y = 0), zwei Vorschubperioden',
     'Across the feed, one period of the passes, where the feed marks stand highest:':
       'Quer zum Vorschub, eine Periode der Bahnen, wo die Vorschubmarken am höchsten stehen:',
+    "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):":
+      'Die Oberfläche der Schneiden (z Schneiden, fz pro Zahn, Bahnabstand L; gezeigt Vorschubperioden × Bahnperioden):',
+    'Continuous passes: the tool sweeps without teeth.':
+      'Durchgehende Bahnen: das Werkzeug als Rotationskörper, ohne einzelne Schneiden.',
   },
   tabs: {
     'Cross-feed profile': 'Profil quer zum Vorschub',

@@ -123,6 +123,9 @@ export const catalogue: Catalogue = {
     'Along the CC path (y = 0), two feed periods': '切削点の経路に沿って（y = 0）、送り 2 周期',
     'Across the feed, one period of the passes, where the feed marks stand highest:':
       '送りと直角に、パス 1 周期、送りマークが最も高い位置で：',
+    "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):":
+      '刃が残す面（刃数 z、1 刃送り fz、パス間隔 L。表示は送り周期 × パス周期）：',
+    'Continuous passes: the tool sweeps without teeth.': '連続したパス：刃を考えず、工具の回転体が連続して掃引した面。',
   },
   tabs: {
     'Cross-feed profile': '送り直交断面',
