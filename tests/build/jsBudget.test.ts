@@ -36,8 +36,8 @@
  * one live region and its feed lengths in the unit on screen (on first use): 252.88; a link's fz with
  * F or rpm said in a notice (+0.04 kB): 59.68 and 252.92; the balanced feed set as a feed rate at the
  * spindle speed given (on first use): 59.69 and 253.04; the teeth's surface in 3D in the Machined
- * surface view (on first use, +1.6 kB: the view +0.65, the finish worker's map of several cells +0.38,
- * the shared seam +0.17, its ja and de words +0.3): 59.69 and 254.65.
+ * surface view (on first use, +1.75 kB: the view +0.8, the finish worker's map of several cells +0.38,
+ * the shared seam +0.17, its ja and de words +0.35): 59.69 and 254.79.
  * kB here are 1024 bytes, as bench:web prints them.
  */
 import { readFileSync } from 'node:fs';
@@ -64,7 +64,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 254.7 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(254.7);
+  it('all of it, every .js file, is at most 254.8 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(254.8);
   });
 });

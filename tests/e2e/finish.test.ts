@@ -116,12 +116,14 @@ describe('the finish box', () => {
     const cells = teethSurfaceGrid(0.1, core.L, false);
     await page.locator('#tab-surface').click();
     const view = page.getByTestId('surface-view');
-    await expect
-      .poll(() => text(page, 'surface-shown'), { timeout: 20_000 })
-      .toBe(
-        "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown): " +
-          `z = 4, fz = ${feedLength(0.1, 'mm')}, L = ${feedLength(core.L, 'mm')}; ${cells.feedPeriods} x ${cells.crossPeriods}.`,
-      );
+    // Which surface, its question and cells, and how much longer the feed's lengths are drawn.
+    const caption =
+      "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown): " +
+      `z = 4, fz = ${feedLength(0.1, 'mm')}, L = ${feedLength(core.L, 'mm')}; ${cells.feedPeriods} x ${cells.crossPeriods}.`;
+    await expect.poll(() => text(page, 'surface-shown'), { timeout: 20_000 }).toMatch(/^The teeth's surface/);
+    const shown = await text(page, 'surface-shown');
+    expect(shown.slice(0, caption.length)).toBe(caption);
+    expect(shown.slice(caption.length)).toMatch(/^ Along the feed, lengths drawn longer by x\d+\.$/);
     // The scale bar spans the finish's Sz, as the finish box says it; the exaggeration is stated.
     const Sz = formatRoughness(core.report.areal.Sz, 'mm');
     await expect.poll(() => text(page, 'finish-areal-Sz')).toBe(Sz);

@@ -129,7 +129,8 @@ export type FinishPhrase =
   | 'Along the CC path (y = 0), two feed periods'
   | 'Across the feed, one period of the passes, where the feed marks stand highest:'
   | "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):"
-  | 'Continuous passes: the tool sweeps without teeth.';
+  | 'Continuous passes: the tool sweeps without teeth.'
+  | 'Along the feed, lengths drawn longer by';
 
 /** A field's label (with the paper's symbol kept) and the hint under it. */
 export interface FieldWords {

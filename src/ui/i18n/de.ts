@@ -144,6 +144,7 @@ export const catalogue: Catalogue = {
       'Die Oberfläche der Schneiden (z Schneiden, fz pro Zahn, Bahnabstand L; gezeigt Vorschubperioden × Bahnperioden):',
     'Continuous passes: the tool sweeps without teeth.':
       'Durchgehende Bahnen: das Werkzeug als Rotationskörper, ohne einzelne Schneiden.',
+    'Along the feed, lengths drawn longer by': 'In Vorschubrichtung Längen gestreckt um',
   },
   tabs: {
     'Cross-feed profile': 'Profil quer zum Vorschub',

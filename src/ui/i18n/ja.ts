@@ -126,6 +126,7 @@ export const catalogue: Catalogue = {
     "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):":
       '刃が残す面（刃数 z、1 刃送り fz、パス間隔 L。表示は送り周期 × パス周期）：',
     'Continuous passes: the tool sweeps without teeth.': '連続したパス：刃を考えず、工具の回転体が連続して掃引した面。',
+    'Along the feed, lengths drawn longer by': '送り方向の長さの拡大倍率',
   },
   tabs: {
     'Cross-feed profile': '送り直交断面',

@@ -152,23 +152,32 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     }
   }
 
-  /** Says which surface is shown: the teeth's, with its question, or the continuous passes. */
-  private caption(teeth: TeethShown | null): void {
+  /**
+   * Says which surface is shown: the teeth's, with its question (and how much longer lengths along
+   * the feed are drawn, `stretch`), or the continuous passes.
+   */
+  private caption(teeth: TeethShown | null, stretch = 1): void {
     this.element.classList.toggle('teeth', teeth !== null);
-    const phrase = html('span', {}, '');
-    let rest = '';
-    if (teeth === null) phrase.dataset.phrase = 'Continuous passes: the tool sweeps without teeth.';
+    const phrase = (english: string) => {
+      const span = html('span', {}, english);
+      span.dataset.phrase = english;
+      return span;
+    };
+    const parts: (HTMLElement | string)[] = [];
+    if (teeth === null) parts.push(phrase('Continuous passes: the tool sweeps without teeth.'));
     else {
       const t = teeth.surface;
-      phrase.dataset.phrase =
-        "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):";
-      rest = ` z = ${t.flutes}, fz = ${feedLength(t.feedPerToothMm, teeth.unit)}, L = ${feedLength(t.intervalMm, teeth.unit)}; ${t.feedPeriods} x ${t.crossPeriods}.`;
+      const u = teeth.unit;
+      parts.push(
+        phrase("The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):"),
+        ` z = ${t.flutes}, fz = ${feedLength(t.feedPerToothMm, u)}, L = ${feedLength(t.intervalMm, u)}; ${t.feedPeriods} x ${t.crossPeriods}.`,
+      );
+      if (stretch > 1) parts.push(' ', phrase('Along the feed, lengths drawn longer by'), ` x${stretch}.`);
     }
-    phrase.textContent = phrase.dataset.phrase ?? '';
-    const key = `${phrase.textContent}${rest}`;
+    const key = parts.map((p) => (typeof p === 'string' ? p : p.textContent)).join('');
     if (this.shownCaption.dataset.english === key) return;
     this.shownCaption.dataset.english = key;
-    this.shownCaption.replaceChildren(phrase, rest);
+    this.shownCaption.replaceChildren(...parts);
     localize(this.shownCaption);
     // Inside the views (English, lang="en"), the caption speaks the language in force.
     const lang = catalogue()?.lang;
@@ -176,22 +185,27 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     else this.shownCaption.lang = lang;
   }
 
-  /** Draws the teeth's surface: the ramp from its exact lowest point over its Sz, the legend 0 to Sz. */
+  /**
+   * Draws the teeth's surface: the ramp from its exact lowest point over its Sz, the legend 0 to Sz;
+   * lengths along the feed drawn longer (a 1-2-5 factor, stated) so that the marks of a small fz show.
+   */
   private drawTeeth(teeth: TeethShown): void {
     const t = teeth.surface;
-    this.caption(teeth);
+    const across = t.acrossToMm - t.acrossFromMm;
+    const stretch = autoExaggeration(across, t.alongLengthMm, 1);
+    const drawn = { ...t, alongLengthMm: stretch * t.alongLengthMm };
+    this.caption(teeth, stretch);
     this.element.classList.remove('stale');
     this.element.setAttribute('aria-busy', 'false');
     this.status.textContent = '';
     this.status.hidden = true;
     this.comparison.textContent = '';
-    const size = Math.max(t.alongLengthMm, t.acrossToMm - t.acrossFromMm);
-    const k = autoExaggeration(size, t.szMm, 0.12);
+    const k = autoExaggeration(Math.max(drawn.alongLengthMm, across), t.szMm, 0.12);
     const colour = `colour: height above the lowest point (${roughnessUnit(teeth.unit).symbol}).`;
     this.exaggerationNote.textContent =
       k === 1 ? `Heights at true scale; ${colour}` : `Heights exaggerated x${k} (vertical exaggeration); ${colour}`;
     if (this.scene && !this.element.closest('[hidden]'))
-      this.scene.update(t, k, { maxRows: t.cellsAlong, range: { lowMm: t.lowestMm, spanMm: t.szMm } });
+      this.scene.update(drawn, k, { maxRows: t.cellsAlong, range: { lowMm: t.lowestMm, spanMm: t.szMm } });
     this.drawLegend(t.szMm, teeth.unit);
   }
 
