@@ -78,6 +78,8 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
   private drawn: { reply: SimulateOk; unit: Unit } | null = null;
   /** The teeth's surface current for the inputs on screen (drawn instead of the passes), or null. */
   private teeth: TeethShown | null = null;
+  /** The view is open (its simulation runs only then, and only while no teeth's surface is shown). */
+  private visible = false;
   /** The simulation's last state told (drawn again when the teeth's surface goes). */
   private told: { shown: Shown<SimulateReply>; unit: Unit; progress: number | null } | null = null;
 
@@ -94,6 +96,7 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     source.attach(this);
     onTeethSurface((teeth) => {
       this.teeth = teeth;
+      this.source.setOpen(this.visible && teeth === null);
       if (teeth !== null) this.drawTeeth(teeth);
       else if (this.told !== null) {
         this.drawn = null;
@@ -114,7 +117,9 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
       scene.applyTheme();
       onThemeChange(() => scene.applyTheme());
     }
-    this.source.setOpen(visible);
+    this.visible = visible;
+    // The passes are simulated only while they are what the open view shows.
+    this.source.setOpen(visible && this.teeth === null);
     if (visible && this.teeth !== null) this.drawTeeth(this.teeth);
     else if (visible && this.drawn) this.drawReply(this.drawn.reply, this.drawn.unit, true);
   }
