@@ -40,13 +40,21 @@ export interface SurfaceGrid {
   readonly maxMm: number;
 }
 
+/** How a height field is drawn: rows kept along the feed, and the heights the ramp spans. */
+export interface SurfaceGridOptions {
+  /** At most this many rows along the feed (the rows of a plane simulation repeat along it). */
+  readonly maxRows?: number;
+  /** The ramp's lowest height and its span (mm; default the field's own lowest and highest). */
+  readonly range?: { readonly lowMm: number; readonly spanMm: number };
+}
+
 /**
  * The mesh of a height field: every column across the feed, at most `maxRows` rows along it
- * (the rows of a plane simulation repeat along the feed), heights times `exaggeration`.
+ * (48 unless given), heights times `exaggeration` above the ramp's lowest height.
  */
-export function surfaceGrid(field: HeightField, exaggeration: number, maxRows = 48): SurfaceGrid {
+export function surfaceGrid(field: HeightField, exaggeration: number, options: SurfaceGridOptions = {}): SurfaceGrid {
   const nx = field.cellsAcross;
-  const rows = Math.max(2, Math.min(field.cellsAlong, maxRows));
+  const rows = Math.max(2, Math.min(field.cellsAlong, options.maxRows ?? 48));
   let lo = Number.POSITIVE_INFINITY;
   let hi = Number.NEGATIVE_INFINITY;
   for (const z of field.heightsMm) {
@@ -54,7 +62,9 @@ export function surfaceGrid(field: HeightField, exaggeration: number, maxRows = 
     if (z > hi) hi = z;
   }
   if (!Number.isFinite(lo) || !Number.isFinite(hi)) lo = hi = 0;
-  const span = hi - lo;
+  const range = options.range;
+  const base = range !== undefined && Number.isFinite(range.lowMm) ? range.lowMm : lo;
+  const span = range !== undefined && range.spanMm > 0 ? range.spanMm : hi - lo;
   const positions = new Float32Array(rows * nx * 3);
   const colours = new Float32Array(rows * nx * 3);
   const dy = nx > 1 ? (field.acrossToMm - field.acrossFromMm) / (nx - 1) : 0;
@@ -66,8 +76,8 @@ export function surfaceGrid(field: HeightField, exaggeration: number, maxRows = 
       const k = 3 * (r * nx + j);
       positions[k] = x;
       positions[k + 1] = field.acrossFromMm + j * dy;
-      positions[k + 2] = (z - lo) * exaggeration;
-      const [cr, cg, cb] = rampColour(span > 0 ? (z - lo) / span : 0);
+      positions[k + 2] = (z - base) * exaggeration;
+      const [cr, cg, cb] = rampColour(span > 0 ? (z - base) / span : 0);
       colours[k] = cr;
       colours[k + 1] = cg;
       colours[k + 2] = cb;

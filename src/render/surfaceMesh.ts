@@ -7,7 +7,7 @@
  * without any input.
  */
 import { BufferAttribute, BufferGeometry, DoubleSide, Mesh, MeshLambertMaterial } from 'three';
-import { type HeightField, type SurfaceGrid, surfaceGrid } from './surfaceGrid';
+import { type HeightField, type SurfaceGrid, type SurfaceGridOptions, surfaceGrid } from './surfaceGrid';
 import { ViewedScene } from './view3d';
 
 const SURFACE_BACKGROUND = 0xf4f6f9;
@@ -31,12 +31,19 @@ export class SurfaceScene extends ViewedScene {
     this.view.scene.add(this.mesh);
   }
 
-  /** Shows a height field, heights times `exaggeration`. */
-  update(field: HeightField, exaggeration: number): SurfaceGrid {
-    const g = surfaceGrid(field, exaggeration);
-    this.geometry.setAttribute('position', new BufferAttribute(g.positions, 3));
-    this.geometry.setAttribute('color', new BufferAttribute(g.colours, 3));
-    this.geometry.setIndex(new BufferAttribute(g.indices, 1));
+  /**
+   * Shows a height field, heights times `exaggeration` (`options`: rows kept, the ramp's range);
+   * a field of the same size is written into the buffers in place.
+   */
+  update(field: HeightField, exaggeration: number, options: SurfaceGridOptions = {}): SurfaceGrid {
+    const g = surfaceGrid(field, exaggeration, options);
+    this.write('position', g.positions);
+    this.write('color', g.colours);
+    const index = this.geometry.getIndex();
+    if (index !== null && index.array.length === g.indices.length) {
+      index.array.set(g.indices);
+      index.needsUpdate = true;
+    } else this.geometry.setIndex(new BufferAttribute(g.indices, 1));
     this.geometry.computeVertexNormals();
     this.geometry.computeBoundingSphere();
     if (this.geometry.boundingSphere) this.view.drawnSphere.copy(this.geometry.boundingSphere);
@@ -49,6 +56,15 @@ export class SurfaceScene extends ViewedScene {
     controls.update();
     this.view.requestRender();
     return g;
+  }
+
+  /** Writes xyz or rgb triples into the geometry's attribute `name`, in place when it has their size. */
+  private write(name: 'position' | 'color', values: Float32Array): void {
+    const attribute = this.geometry.getAttribute(name);
+    if (attribute instanceof BufferAttribute && attribute.array.length === values.length) {
+      attribute.array.set(values);
+      attribute.needsUpdate = true;
+    } else this.geometry.setAttribute(name, new BufferAttribute(values, 3));
   }
 
   /** Frees the view and the surface's GPU resources. */

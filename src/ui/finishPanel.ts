@@ -25,6 +25,7 @@ import { type FinishInputs, finishAsk, x3pFileName } from './finishRequest';
 import { formatRoughness } from './format';
 import { localize } from './i18n/words';
 import { balancedFeedFields } from './shopFeed';
+import { publishTeethSurface } from './teethMap';
 
 /** Points along each side of the x3p download's one cell (the 256 x 256). */
 export const X3P_SIZE = 256;
@@ -302,6 +303,9 @@ export class FinishPanel {
     }
     const pending = this.wanted !== null && (m === undefined || s === undefined);
     this.paint(this.answer('areal'));
+    // The Machined surface view draws the teeth's surface while it answers the inputs on screen.
+    const surface = this.refusal === null ? this.answer('areal')?.surface : undefined;
+    publishTeethSurface(surface === undefined || surface === null ? null : { surface, unit: this.unit });
     this.profiles.show(this.refusal === null ? (this.answer('areal')?.profiles ?? null) : null, this.unit);
     const waiting = pending
       ? (this.note ??

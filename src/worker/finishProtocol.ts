@@ -9,6 +9,7 @@ import type { FinishReport } from '../core/finish/index';
 import type { FinishProfiles } from '../core/finish/profiles';
 import type { LengthUnit } from '../core/input/units';
 import type { PassPattern, ToolInput } from '../core/input/validate';
+import type { TeethSurface } from './teethSurface';
 
 /** A finish field's value: a number in mm (lengths) or degrees, its text when it is not one, undefined when empty. */
 export type FinishValue = number | string | undefined;
@@ -66,6 +67,8 @@ export type FinishReply =
        * feed (one cross period, at the x of the highest feed mark), PROFILE_POINTS each (core profiles.ts).
        */
       readonly profiles?: FinishProfiles | null;
+      /** With the areal parameters: the surface over several cells the Machined surface view draws in 3D. */
+      readonly surface?: TeethSurface | null;
     }
   | { readonly ok: false; readonly request: FinishRequest; readonly errors: readonly FinishFieldMessage[] };
 

@@ -18,6 +18,7 @@ import { exactForward } from '../../src/core/surfaces/solve';
 import { feedLength } from '../../src/ui/finishLength';
 import { formatLenUnit, formatRoughness } from '../../src/ui/format';
 import { solve } from '../../src/worker/jobs/solve';
+import { teethSurfaceGrid } from '../../src/worker/teethSurface';
 import { typeInto, useSite } from './harness';
 
 const site = useSite('finish');
@@ -120,6 +121,36 @@ describe('the finish box', () => {
     // The link carries the teeth and the feed.
     await expect.poll(() => new URL(page.url()).searchParams.get('fz')).toBe('0.1');
     expect(new URL(page.url()).searchParams.get('z')).toBe('4');
+  });
+
+  it("the Machined surface view shows the teeth's surface (legend 0 to Sz); without fz, the continuous passes", async () => {
+    const before = await page.locator('[role="tab"][aria-selected="true"]').getAttribute('id');
+    const cells = teethSurfaceGrid(0.1, core.L, false);
+    await page.locator('#tab-surface').click();
+    const view = page.getByTestId('surface-view');
+    // Which surface, its question and cells, and how much longer the feed's lengths are drawn.
+    const caption =
+      "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown): " +
+      `z = 4, fz = ${feedLength(0.1, 'mm')}, L = ${feedLength(core.L, 'mm')}; ${cells.feedPeriods} x ${cells.crossPeriods}.`;
+    await expect.poll(() => text(page, 'surface-shown'), { timeout: 20_000 }).toMatch(/^The teeth's surface/);
+    const shown = await text(page, 'surface-shown');
+    expect(shown.slice(0, caption.length)).toBe(caption);
+    expect(shown.slice(caption.length)).toMatch(/^ Along the feed, lengths drawn longer by x\d+\.$/);
+    // The scale bar spans the finish's Sz, as the finish box says it; the exaggeration is stated.
+    const Sz = formatRoughness(core.report.areal.Sz, 'mm');
+    await expect.poll(() => text(page, 'finish-areal-Sz')).toBe(Sz);
+    expect(await view.locator('[data-testid="surface-legend"] text').last().textContent()).toBe(Sz);
+    expect(await text(page, 'surface-exaggeration')).toMatch(/^Heights exaggerated x\d+ \(vertical exaggeration\)/);
+    expect(await view.getByTestId('surface-trace').isVisible()).toBe(false);
+    await expect.poll(() => view.getByTestId('surface-canvas').isVisible()).toBe(true);
+    // fz cleared: the finish no longer answers, and the view shows the continuous passes again.
+    await commit(page, 'input-fz', '');
+    await expect.poll(() => text(page, 'surface-shown')).toBe('Continuous passes: the tool sweeps without teeth.');
+    await expect.poll(() => text(page, 'surface-comparison'), { timeout: 20_000 }).toMatch(/^Simulated cusp/);
+    expect(await view.getByTestId('surface-trace').isVisible()).toBe(true);
+    await commit(page, 'input-fz', '0.1');
+    await expect.poll(() => text(page, 'surface-shown'), { timeout: 20_000 }).toMatch(/^The teeth's surface/);
+    if (before !== null) await page.locator(`#${before}`).click();
   });
 
   it('"use the balanced feed" sets fz to fz*: hf then reads as the scallop h', async () => {

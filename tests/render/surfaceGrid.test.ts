@@ -35,11 +35,22 @@ describe('surface mesh', () => {
     const g = surfaceGrid(
       { cellsAcross: 16, cellsAlong: 100, acrossFromMm: 0, acrossToMm: 1, alongLengthMm: 1, heightsMm },
       1,
-      10,
+      { maxRows: 10 },
     );
     expect(g.positions.length).toBe(3 * 16 * 10);
     expect(rampColour(-1)).toEqual([...(HEIGHT_RAMP[0] as readonly number[])]);
     expect(rampColour(Number.NaN)).toEqual([...(HEIGHT_RAMP[0] as readonly number[])]);
     expect(rampColour(2)).toEqual([...(HEIGHT_RAMP[HEIGHT_RAMP.length - 1] as readonly number[])]);
+  });
+
+  it("a given range: heights from its lowest, the ramp's top at lowest + span (the teeth's exact Sz)", () => {
+    const heightsMm = Float32Array.from([0.2, 0.3, 0.2, 0.3]);
+    const g = surfaceGrid(
+      { cellsAcross: 2, cellsAlong: 2, acrossFromMm: 0, acrossToMm: 1, alongLengthMm: 1, heightsMm },
+      10,
+      { range: { lowMm: 0.1, spanMm: 0.4 } },
+    );
+    expect(Math.fround(g.positions[2] as number)).toBe(Math.fround((Math.fround(0.2) - 0.1) * 10));
+    expect([...g.colours.slice(3, 6)]).toEqual(rampColour((Math.fround(0.3) - 0.1) / 0.4).map((c) => Math.fround(c)));
   });
 });

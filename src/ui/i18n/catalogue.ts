@@ -173,7 +173,10 @@ export type FinishPhrase =
   | 'L0 (fz -> 0: Ra = Sa)'
   | 'Computing the pairs of step-over and feed per tooth that leave this Sa (a few seconds)...'
   | 'The pair with the largest L * fz (the area machined per tooth: the fastest finish at a given spindle speed) among those whose areal Sa is the target (plane, straight teeth, no runout). "use this pair" solves for the scallop height at that L with that fz, both rounded down.'
-  | 'Every pair that leaves this Sa: the dot is the best, the curve ends at L0 where fz -> 0';
+  | 'Every pair that leaves this Sa: the dot is the best, the curve ends at L0 where fz -> 0'
+  | "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):"
+  | 'Continuous passes: the tool sweeps without teeth.'
+  | 'Along the feed, lengths drawn longer by';
 
 /** A field's label (with the paper's symbol kept) and the hint under it. */
 export interface FieldWords {

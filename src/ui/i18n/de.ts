@@ -202,6 +202,11 @@ export const catalogue: Catalogue = {
       'Das Paar mit dem größten L · fz (die je Zahn bearbeitete Fläche: das schnellste Schlichten bei gegebener Drehzahl) unter denen, deren flächenhaftes Sa das Ziel ist (Ebene, gerade Schneiden, kein Rundlauffehler). „dieses Paar verwenden“ berechnet die Kammhöhe bei diesem L mit diesem fz, beide abgerundet.',
     'Every pair that leaves this Sa: the dot is the best, the curve ends at L0 where fz -> 0':
       'Alle Paare, die dieses Sa ergeben: der Punkt ist das beste, die Kurve endet bei L0, wo fz → 0',
+    "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):":
+      'Die Oberfläche der Schneiden (z Schneiden, fz pro Zahn, Bahnabstand L; gezeigt Vorschubperioden × Bahnperioden):',
+    'Continuous passes: the tool sweeps without teeth.':
+      'Durchgehende Bahnen: das Werkzeug als Rotationskörper, ohne einzelne Schneiden.',
+    'Along the feed, lengths drawn longer by': 'In Vorschubrichtung Längen gestreckt um',
   },
   tabs: {
     'Cross-feed profile': 'Profil quer zum Vorschub',

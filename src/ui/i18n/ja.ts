@@ -186,6 +186,10 @@ export const catalogue: Catalogue = {
       '面の Sa が目標と等しくなる組のうち L × fz（一刃あたりの加工面積：同じ主軸回転数で最も速い仕上げ）が最大の組です（平面、直刃、振れなし）。「この組を使う」はその L と fz（どちらも切り捨て）でカスプ高さを求めます。',
     'Every pair that leaves this Sa: the dot is the best, the curve ends at L0 where fz -> 0':
       'この Sa を残すすべての組：点が最適、曲線は fz → 0 となる L0 で終わる',
+    "The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):":
+      '刃が残す面（刃数 z、1 刃送り fz、パス間隔 L。表示は送り周期 × パス周期）：',
+    'Continuous passes: the tool sweeps without teeth.': '連続したパス：刃を考えず、工具の回転体が連続して掃引した面。',
+    'Along the feed, lengths drawn longer by': '送り方向の長さの拡大倍率',
   },
   tabs: {
     'Cross-feed profile': '送り直交断面',

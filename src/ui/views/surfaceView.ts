@@ -1,5 +1,8 @@
 /**
- * Machined surface: the passes simulated on a height field (worker job `simulate`), shown in 3D
+ * Machined surface: the passes simulated on a height field (worker job `simulate`), or, while the
+ * finish box answers the inputs on screen (flutes and fz given, on a plane), the surface the teeth
+ * leave over several period cells (the finish job's areal answer, teethMap.ts), a caption
+ * saying which; shown in 3D
  * coloured by height with a legend in µm (µin in inch) and the vertical exaggeration stated, a profilometer
  * trace across the passes with Rz, Ra, Rq marked, and one line comparing the simulated cusp with
  * the exact one and the simulation's stated resolution bound. It draws only a reply to the inputs
@@ -14,10 +17,13 @@ import type { ProcedureKey } from '../../core/procedures/procedures';
 import { HEIGHT_RAMP } from '../../render/surfaceGrid';
 import { SurfaceScene } from '../../render/surfaceMesh';
 import type { SimulateReply } from '../../worker/simulate';
+import { feedLength } from '../finishLength';
 import { formatLenUnit, formatRoughness } from '../format';
 import type { Shown } from '../freshness';
+import { catalogue, localize } from '../i18n/words';
 import type { SurfaceDisplay } from '../simulation';
 import type { Unit } from '../state';
+import { onTeethSurface, type TeethShown } from '../teethMap';
 import { onThemeChange } from '../theme';
 import { html, svg, type TeachingView } from './common';
 import './surface.css';
@@ -51,6 +57,8 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
   readonly title = 'Machined surface';
   readonly element = html('div', { class: 'surface-view', 'data-testid': 'surface-view' });
   private readonly status = html('p', { class: 'view-note', 'data-testid': 'surface-status', role: 'status' });
+  /** Which surface is shown: the teeth's (with its question) or the continuous passes. */
+  private readonly shownCaption = html('p', { class: 'view-note surface-shown', 'data-testid': 'surface-shown' });
   private readonly sceneBox = html('div', { class: 'surface-3d' });
   private readonly exaggerationNote = html('p', { class: 'view-note', 'data-testid': 'surface-exaggeration' });
   private readonly legend = svg('svg', {
@@ -68,10 +76,33 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
   private readonly comparison = html('p', { class: 'view-note', 'data-testid': 'surface-comparison' });
   private scene: SurfaceScene | null = null;
   private drawn: { reply: SimulateOk; unit: Unit } | null = null;
+  /** The teeth's surface current for the inputs on screen (drawn instead of the passes), or null. */
+  private teeth: TeethShown | null = null;
+  /** The view is open (its simulation runs only then, and only while no teeth's surface is shown). */
+  private visible = false;
+  /** The simulation's last state told (drawn again when the teeth's surface goes). */
+  private told: { shown: Shown<SimulateReply>; unit: Unit; progress: number | null } | null = null;
 
   constructor(private readonly source: SurfaceSource) {
-    this.element.append(this.status, this.sceneBox, this.exaggerationNote, this.legend, this.trace, this.comparison);
+    this.element.append(
+      this.shownCaption,
+      this.status,
+      this.sceneBox,
+      this.exaggerationNote,
+      this.legend,
+      this.trace,
+      this.comparison,
+    );
     source.attach(this);
+    onTeethSurface((teeth) => {
+      this.teeth = teeth;
+      this.source.setOpen(this.visible && teeth === null);
+      if (teeth !== null) this.drawTeeth(teeth);
+      else if (this.told !== null) {
+        this.drawn = null;
+        this.show(this.told.shown, this.told.unit, this.told.progress);
+      } else this.caption(null);
+    });
   }
 
   /** The teaching data is not used: the view follows the simulation's own replies. */
@@ -86,8 +117,11 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
       scene.applyTheme();
       onThemeChange(() => scene.applyTheme());
     }
-    this.source.setOpen(visible);
-    if (visible && this.drawn) this.drawReply(this.drawn.reply, this.drawn.unit, true);
+    this.visible = visible;
+    // The passes are simulated only while they are what the open view shows.
+    this.source.setOpen(visible && this.teeth === null);
+    if (visible && this.teeth !== null) this.drawTeeth(this.teeth);
+    else if (visible && this.drawn) this.drawReply(this.drawn.reply, this.drawn.unit, true);
   }
 
   /** Frames the 3D view drew (tests). */
@@ -96,6 +130,10 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
   }
 
   show(shown: Shown<SimulateReply>, unit: Unit, progress: number | null): void {
+    this.told = { shown, unit, progress };
+    // The teeth's surface answers the inputs on screen: the simulation's words wait behind it.
+    if (this.teeth !== null) return;
+    this.caption(null);
     const current = shown.kind === 'current' ? shown.reply : null;
     this.element.classList.toggle('stale', current === null || !current.ok);
     this.element.setAttribute('aria-busy', String(shown.kind === 'pending'));
@@ -117,6 +155,63 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
       // Never a number that does not answer the inputs on screen.
       this.comparison.textContent = '';
     }
+  }
+
+  /**
+   * Says which surface is shown: the teeth's, with its question (and how much longer lengths along
+   * the feed are drawn, `stretch`), or the continuous passes.
+   */
+  private caption(teeth: TeethShown | null, stretch = 1): void {
+    this.element.classList.toggle('teeth', teeth !== null);
+    const phrase = (english: string) => {
+      const span = html('span', {}, english);
+      span.dataset.phrase = english;
+      return span;
+    };
+    const parts: (HTMLElement | string)[] = [];
+    if (teeth === null) parts.push(phrase('Continuous passes: the tool sweeps without teeth.'));
+    else {
+      const t = teeth.surface;
+      const u = teeth.unit;
+      parts.push(
+        phrase("The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):"),
+        ` z = ${t.flutes}, fz = ${feedLength(t.feedPerToothMm, u)}, L = ${feedLength(t.intervalMm, u)}; ${t.feedPeriods} x ${t.crossPeriods}.`,
+      );
+      if (stretch > 1) parts.push(' ', phrase('Along the feed, lengths drawn longer by'), ` x${stretch}.`);
+    }
+    const key = parts.map((p) => (typeof p === 'string' ? p : p.textContent)).join('');
+    if (this.shownCaption.dataset.english === key) return;
+    this.shownCaption.dataset.english = key;
+    this.shownCaption.replaceChildren(...parts);
+    localize(this.shownCaption);
+    // Inside the views (English, lang="en"), the caption speaks the language in force.
+    const lang = catalogue()?.lang;
+    if (lang === undefined) this.shownCaption.removeAttribute('lang');
+    else this.shownCaption.lang = lang;
+  }
+
+  /**
+   * Draws the teeth's surface: the ramp from its exact lowest point over its Sz, the legend 0 to Sz;
+   * lengths along the feed drawn longer (a 1-2-5 factor, stated) so that the marks of a small fz show.
+   */
+  private drawTeeth(teeth: TeethShown): void {
+    const t = teeth.surface;
+    const across = t.acrossToMm - t.acrossFromMm;
+    const stretch = autoExaggeration(across, t.alongLengthMm, 1);
+    const drawn = { ...t, alongLengthMm: stretch * t.alongLengthMm };
+    this.caption(teeth, stretch);
+    this.element.classList.remove('stale');
+    this.element.setAttribute('aria-busy', 'false');
+    this.status.textContent = '';
+    this.status.hidden = true;
+    this.comparison.textContent = '';
+    const k = autoExaggeration(Math.max(drawn.alongLengthMm, across), t.szMm, 0.12);
+    const colour = `colour: height above the lowest point (${roughnessUnit(teeth.unit).symbol}).`;
+    this.exaggerationNote.textContent =
+      k === 1 ? `Heights at true scale; ${colour}` : `Heights exaggerated x${k} (vertical exaggeration); ${colour}`;
+    if (this.scene && !this.element.closest('[hidden]'))
+      this.scene.update(drawn, k, { maxRows: t.cellsAlong, range: { lowMm: t.lowestMm, spanMm: t.szMm } });
+    this.drawLegend(t.szMm, teeth.unit);
   }
 
   private drawReply(reply: SimulateOk, unit: Unit, force: boolean): void {

@@ -19,6 +19,7 @@ import {
 import { finishProfiles } from '../../core/finish/profiles';
 import { x3pBytes } from '../../core/output/x3p';
 import { type FinishReply, type FinishRequest, MAP_SIZE, PROFILE_POINTS } from '../finishProtocol';
+import { teethSurface } from '../teethSurface';
 
 /**
  * Answers a finish question, the part asked (the feed marks as core finishReport gives them, or
@@ -78,7 +79,9 @@ function answer(request: FinishRequest): FinishReply {
     const map = Float32Array.from(arealMap(m, MAP_SIZE, MAP_SIZE, 1, 1).heightsMm);
     // The profiles: along the CC path, and across it where the feed marks stand highest.
     const profiles = finishProfiles(m, PROFILE_POINTS, feedMarks(m).crestXMm);
-    return { ok: true, request, feedMarks: null, areal, x3p: null, map, profiles };
+    // The surface over several cells, drawn in 3D by the Machined surface view.
+    const surface = teethSurface(m, a);
+    return { ok: true, request, feedMarks: null, areal, x3p: null, map, profiles, surface };
   }
   const marks = feedMarks(model());
   const balanced = balancedFeed(request.tool, request.pattern, request.intervalMm, checked.value);
