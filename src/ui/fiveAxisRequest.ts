@@ -5,17 +5,11 @@
  * in mm, or the input errors. One of the per-mode builders behind the page's one builder
  * (questionRequest.ts). Pure (no DOM).
  */
-  if (state.mode === 'forward' && state.target === 'sa') {
-    // The results answer the curve's end at fz -> 0 (Ra = Sa: L0); the pair is the target-Sa box's
-    // (targetSaLazy.ts). The fields only, as a target Ra (the same bound, checked by the worker),
-    // each error naming the target Sa field.
-    const v = targetRaValidation(targetRaFields(passFieldsAnd({ ...tool, ra: mm('targetSa') }, 'ra')));
-    return v.ok
-      ? { ok: true, request: { mode: 'ra', input: v.value } }
-      : { ok: false, errors: (v.errors as InputError[]).map((e) => (e.field === 'ra' ? { ...e, field: 'targetSa' } : e)) };
-  }
-
-  // The fields only, likewise: gouging and the height or step-over limits are the worker's.
+import { FIELDS, type FieldName, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
+import { passFieldsAnd, validateForwardFields, validateInverseFields } from '../core/input/passFields';
+import { rawFields } from '../core/input/raw';
+import { type InputError, inputError } from '../core/input/validate';
+import { targetRaFields, targetRaValidation } from '../core/roughness/targetRaFields';
 import { buildCurvedRequest, cylinderState, renameRadius } from './curvedRequest';
 import { fieldMessages } from './fieldMessages';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
@@ -90,6 +84,18 @@ function validated(state: CalculatorState): BuiltRequest {
     return v.ok
       ? { ok: true, request: { mode: 'ra', input: v.value } }
       : { ok: false, errors: v.errors as InputError[] };
+  }
+  if (state.mode === 'forward' && state.target === 'sa') {
+    // The results answer the curve's end at fz -> 0 (Ra = Sa: L0); the pair is the target-Sa box's
+    // (targetSaLazy.ts). The fields only, as a target Ra (the same bound, checked by the worker),
+    // each error naming the target Sa field.
+    const v = targetRaValidation(targetRaFields(passFieldsAnd({ ...tool, ra: mm('targetSa') }, 'ra')));
+    return v.ok
+      ? { ok: true, request: { mode: 'ra', input: v.value } }
+      : {
+          ok: false,
+          errors: (v.errors as InputError[]).map((e) => (e.field === 'ra' ? { ...e, field: 'targetSa' } : e)),
+        };
   }
   // The fields only, likewise: gouging and the height or step-over limits are the worker's.
   if (state.mode === 'forward') {

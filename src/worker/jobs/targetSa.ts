@@ -7,7 +7,7 @@
  */
 import { describeFinishError, maxFeedPerToothMm, validateFinish } from '../../core/finish/finishInput';
 import { inverseInput } from '../../core/input/validate';
-import { targetSaPairs } from '../../core/roughness/targetSa';
+import { TargetSaTooLongError, targetSaPairs } from '../../core/roughness/targetSa';
 import { exactInverse } from '../../core/surfaces/solve';
 import type { TargetSaReply, TargetSaRequest } from '../targetSaProtocol';
 
@@ -41,7 +41,14 @@ export function targetSa(request: TargetSaRequest): TargetSaReply {
   const { feedPerToothMm: _feed, ...teeth } = checked.value;
   if (teeth.runoutMm > 0)
     return { ok: false, request, errors: [{ field: 'runout', message: TARGET_SA_RUNOUT_MESSAGE }] };
-  const answer = targetSaPairs(pass, teeth, request.targetSaMm);
+  let answer: ReturnType<typeof targetSaPairs>;
+  try {
+    answer = targetSaPairs(pass, teeth, request.targetSaMm);
+  } catch (e) {
+    // A search past its budget: said on the target field, never a number.
+    if (!(e instanceof TargetSaTooLongError)) throw e;
+    return { ok: false, request, errors: [{ field: 'flutes', message: e.message }] };
+  }
   const best = exactInverse(inverseInput(pass, pass.pattern, answer.best.intervalMm, pass.surface));
   return { ok: true, request, answer, bestScallopMm: best.cuspHeightMm };
 }
