@@ -77,15 +77,15 @@ export type BalancedFeed =
 /**
  * The feed per tooth fz* (mm) at which the feed marks along the CC path are as tall as the scallop
  * of the step-over `intervalMm` (planeInverse's cusp height h): the root of `sqrt(hf(fz)) - sqrt(h)`
- * (nearly linear in fz, as hf grows like fz^2) by the shared bracketed root finder, from the arc's
- * estimate `sqrt(8 r h)` (r the corner radius, or R for a flat end). No answer when the step-over leaves no scallop, or when the marks stay
+ * (nearly linear in fz, as hf grows like fz^2) by the shared bracketed root finder, from the ball's
+ * shop estimate `sqrt(8 R h)`. No answer when the step-over leaves no scallop, or when the marks stay
  * below h for every fz up to its limit R (a ball end at lead 0 drags its tip along the CC path:
  * hf = 0 there at any feed).
  * With runout the definition is the same, hf(fz*) = h at the given e and phi_e (the marks over a turn,
  * z fz); as fz -> 0 the tooth that reaches lowest cuts alone and hf tends to 0 as (z fz)^2 / (8 r), so
  * fz* is at most about that of e = 0. hf(fz) need not be monotone then (teeth start and stop to cut
  * as fz grows): fz* is the root the same bracketing finds, the first sign change of hf - h in the
- * geometric scan from the arc's estimate.
+ * geometric scan from the ball's estimate.
  * @param finish the finish inputs; its fz is ignored.
  */
 export function balancedFeed(
@@ -102,18 +102,13 @@ export function balancedFeed(
       feedMarks(toothModel({ tool, pattern, intervalMm, finish: { ...finish, feedPerToothMm: fz } })).heightMm,
     ) - root;
   const fzMax = maxFeedPerToothMm(tool.toolRadiusMm);
-  // The arc's estimate sqrt(8 r h): at a lead the corner (r = Rcr) cuts the marks and the scallop
-  // alike, so fz* is close to it (a ball's is exact while the marks come from the arc); a bracket
-  // of +-20 % around it then holds the root in most cases, and the loops widen it where not.
-  const r = tool.cornerRadiusMm > 0 ? tool.cornerRadiusMm : tool.toolRadiusMm;
-  const guess = Math.min(fzMax, Math.sqrt(8 * r * h));
-  let lo = guess / 1.2;
+  let lo = Math.min(fzMax, Math.sqrt(8 * tool.toolRadiusMm * h)) / 2;
   let gLo = g(lo);
   while (gLo > 0 && lo > 1e-6) {
     lo /= 4;
     gLo = g(lo);
   }
-  let hi = Math.min(fzMax, Math.max(lo * 1.44, guess * 1.2));
+  let hi = Math.min(fzMax, lo * 4);
   let gHi = g(hi);
   while (gHi < 0 && hi < fzMax) {
     lo = hi;
