@@ -85,7 +85,7 @@
    * the compact card.
    */
   const VIEW_SIZES = {
-    '': { aspect: 0.7, min: 1240, max: 1240, wide: 870 },
+    '': { aspect: 0.7, min: 1280, max: 1280, wide: 900 },
     profile: { aspect: 2.15, min: 450, max: 560 },
     chart: { aspect: 0.74, min: 1440, max: 1600 },
     tables: { aspect: 1, min: 680, max: 680 },

@@ -274,6 +274,8 @@ const SOLVING_ON_THE_PAGE_STILL = [
   'ui/registryQuestionRequest.ts -> core/surfaces/question.ts',
   'ui/shopSheet.ts -> core/output/shopSheet.ts',
   'ui/shopSheetText.ts -> core/output/shopSheet.ts',
+  // Its marks' constants (W, G, X) for their words in each language; the sheet's own chunk.
+  'ui/shopSheetWords.ts -> core/output/shopSheet.ts',
 ];
 
 /**

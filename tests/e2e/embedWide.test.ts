@@ -1,7 +1,7 @@
 /**
  * A wide embed of the whole calculator (issue 28 point 9's leftover): from 1000 px wide its columns
  * stand side by side, so the element reserves that layout's height before its frame loads (not the
- * one column's 1240 px), and the page it loads then fits it: the frame's content no taller than the
+ * one column's 1280 px), and the page it loads then fits it: the frame's content no taller than the
  * reserve (nothing scrolls inside it) and the reserve within 8 % of the content (no band of empty
  * space under it). At 1280 and 1920 px; one host page, the element's width set.
  */

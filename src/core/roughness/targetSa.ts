@@ -85,7 +85,7 @@ export class TargetSaTooLongError extends Error {
 export type TeethInput = Omit<FinishInput, 'feedPerToothMm'>;
 
 /** Points of the scan of L * fz over (L0 / 4, L0), and so of the curve. */
-const CURVE_POINTS = 12;
+const CURVE_POINTS = 10;
 /**
  * Where the scan starts, in L0. The best pair lies near 0.7 to 0.85 L0 (where the cross-feed Ra and
  * the feed marks share the target: measured on the paper's tools, and so in the models Sa ~ Ra + Sf
@@ -96,7 +96,7 @@ const CURVE_POINTS = 12;
  */
 const SCAN_FROM = 0.25;
 /** Relative tolerance, in L0, of the best pair's step-over (L * fz is flat there: its square matters). */
-const BEST_L_TOL = 4e-3;
+const BEST_L_TOL = 1e-2;
 /** Relative bracket on fz^2 of the quick curve's roots. */
 const QUICK_TOL = 1e-3;
 /** Relative bracket on fz^2 of the best pair's root (Sa within about 1e-9 relative of the target). */
