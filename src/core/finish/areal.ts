@@ -435,6 +435,28 @@ function meanLines(m: ToothModel, ends: readonly number[], mean: number): number
 }
 
 /**
+ * The cell's integral mean height and the integrals about it that `keys` watch (see lineIntegrals),
+ * over one period cell, with the cell's area: the mean by `integral` graded towards the cusps, then
+ * the moments graded towards the cusps and the lines where the continuous surface crosses the mean.
+ */
+function cellMoments(
+  m: ToothModel,
+  keys: readonly number[],
+  integral: typeof integrateY,
+  lines: Map<number, Line>,
+): { readonly area: number; readonly mean: number; readonly sums: number[] } {
+  const height = m.crossPeriodMm;
+  const area = m.feedPeriodMm * height;
+  const cusps = cuspLines(m);
+  const mean = (integral(m, 0, height, Number.NaN, [0], cusps, lines)[0] as number) / area;
+  const ends = [0, ...cusps.filter((c) => c > 0 && c < height), height];
+  if (m.input.pattern === 'zigzag') ends.push(m.input.intervalMm);
+  ends.sort((p, q) => p - q);
+  const sums = integral(m, 0, height, mean, keys, [...cusps, ...meanLines(m, ends, mean)], lines);
+  return { area, mean, sums };
+}
+
+/**
  * Sa alone (and the mean it is taken about) over one period cell of a prepared model, mm: as
  * {@link arealParameters} (within 1e-6 relative), or `quick` (one panel between the cusps and the
  * mean's lines: about 1e-3 relative, a tenth of the work) for searches that refine after; with
@@ -446,32 +468,16 @@ export function arealSa(
   quick = false,
   budgetPieces = Number.POSITIVE_INFINITY,
 ): { readonly saMm: number; readonly meanMm: number; readonly pieces: number } {
-  const area = m.feedPeriodMm * m.crossPeriodMm;
-  const height = m.crossPeriodMm;
-  const cusps = cuspLines(m);
   const lines = new BudgetedLines(budgetPieces);
-  const integral = quick ? quickIntegrateY : integrateY;
-  const mean = (integral(m, 0, height, Number.NaN, [0], cusps, lines)[0] as number) / area;
+  const { area, mean, sums } = cellMoments(m, [1], quick ? quickIntegrateY : integrateY, lines);
   if (!Number.isFinite(mean)) throw new Error(NOT_SWEPT);
-  const ends = [0, ...cusps.filter((c) => c > 0 && c < height), height];
-  if (m.input.pattern === 'zigzag') ends.push(m.input.intervalMm);
-  ends.sort((p, q) => p - q);
-  const sums = integral(m, 0, height, mean, [1], [...cusps, ...meanLines(m, ends, mean)], lines);
   return { saMm: (sums[1] as number) / area, meanMm: mean, pieces: lines.pieces };
 }
 
 /** The areal parameters of a prepared model over one period cell (see the module comment). */
 export function arealParameters(m: ToothModel): ArealParameters {
-  const width = m.feedPeriodMm;
   const height = m.crossPeriodMm;
-  const area = width * height;
-  const cusps = cuspLines(m);
-  const lines = new Map<number, Line>();
-  const mean = (integrateY(m, 0, height, Number.NaN, [0], cusps, lines)[0] as number) / area;
-  const ends = [0, ...cusps.filter((c) => c > 0 && c < height), height];
-  if (m.input.pattern === 'zigzag') ends.push(m.input.intervalMm);
-  ends.sort((p, q) => p - q);
-  const sums = integrateY(m, 0, height, mean, [1, 2], [...cusps, ...meanLines(m, ends, mean)], lines);
+  const { area, mean, sums } = cellMoments(m, [1, 2], integrateY, new Map<number, Line>());
   const sa = (sums[1] as number) / area;
   const sq = Math.sqrt(Math.max(0, (sums[2] as number) / area));
   const low = m.input.finish.runoutMm > 0 ? runoutLowestMm(m) : new RowEnvelope(m, 0).floorMm;
