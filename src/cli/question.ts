@@ -162,7 +162,7 @@ function doublyCurved(values: QuestionValues, quantity: Quantity, half: boolean)
  * The raw pass fields of the values (blank ones absent) and the quantity's `value` under `key`, in
  * one object built key by key (a spread copy is slow to make and to read in V8).
  */
-function rawPass<K extends 'h' | 'ra' | 'interval'>(
+export function rawPass<K extends string>(
   values: QuestionValues,
   key: K,
   value: unknown,

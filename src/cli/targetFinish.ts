@@ -10,9 +10,7 @@ import { feedMarks } from '../core/finish/feedMarks';
 import type { FinishError } from '../core/finish/finishInput';
 import { maxFeedPerToothMm, validateFinish } from '../core/finish/finishInput';
 import { toothModel } from '../core/finish/toothModel';
-import { FIELDS, PASS_FIELDS } from '../core/input/fields';
 import type { AnyInputError } from '../core/input/inputErrors';
-import { rawFields } from '../core/input/raw';
 import { fromMm, type LengthUnit } from '../core/input/units';
 import { inverseInput } from '../core/input/validate';
 import {
@@ -26,6 +24,7 @@ import {
 import { planeInverse } from '../core/surfaces/exact';
 import { validateForward } from '../core/surfaces/validate';
 import type { ValueOption } from './args';
+import { rawPass } from './question';
 import type { JsonValue } from './reportJson';
 import { type Lengths, length, lengthsIn } from './table';
 
@@ -46,14 +45,6 @@ export type TargetRun =
 /** The refusal of runout with a target Sa (a sentence of its own, named by --runout). */
 export const TARGET_SA_RUNOUT =
   'Runout e is not taken with a target Sa yet: with runout the Sa of one pair costs seconds, and the search needs about a hundred (give --runout 0 or leave it out, or ask --fz at a step-over).';
-
-/** The tool and pass (as raw values, mm) of the options. */
-function rawPass(values: Values): Record<string, unknown> {
-  return rawFields(PASS_FIELDS, (name) => {
-    const v = values[FIELDS[name].cli as ValueOption];
-    return v === undefined || v.trim() === '' ? undefined : v;
-  }) as Record<string, unknown>;
-}
 
 /** The teeth of the options (fz checked at R, then dropped: it is the answer). */
 function teethOf(
@@ -96,16 +87,15 @@ function pairHeights(pass: PassInput, teeth: TeethInput, L: number, fz: number):
 export function targetFinish(values: Values, target: FinishTarget, unit: LengthUnit): TargetRun {
   const L = lengthsIn(unit);
   const value = values[target === 'sa' ? 'target-sa' : 'target-rz'];
-  const raw = rawPass(values);
   let pass: PassInput;
   let targetMm: number;
   if (target === 'sa') {
-    const v = validateTargetSa({ ...raw, sa: value } as Parameters<typeof validateTargetSa>[0]);
+    const v = validateTargetSa(rawPass(values, 'sa', value));
     if (!v.ok) return { ok: false, inputErrors: v.errors, finishErrors: [] };
     pass = v.value;
     targetMm = v.value.targetSaMm;
   } else {
-    const v = validateForward({ ...raw, h: value } as Parameters<typeof validateForward>[0]);
+    const v = validateForward(rawPass(values, 'h', value));
     if (!v.ok)
       return {
         ok: false,
