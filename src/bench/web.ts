@@ -170,7 +170,7 @@ if (prebuilt === undefined) {
 const js = jsSizes(siteFiles(`${root}dist`), readFileSync(`${root}dist/index.html`, 'utf8'), gzip9);
 
 const site = await serveStatic(`${root}${instrumented}`, 'bench/path-interval');
-const browser = await launchChromium();
+const browser = await launchChromium({ gpuCompositing: true });
 try {
   const coldLoads: number[] = [];
   for (let i = 0; i < (quick ? 2 : 7); i++) {
