@@ -85,6 +85,24 @@ const sheetWords = (page: Page): Promise<string> =>
     return [...texts, ...names].join(' ');
   });
 
+/** The Machined surface view's English words (views/surfaceWords.ts, the teeth's caption), to find any left over. */
+const SURFACE_ENGLISH =
+  /\b(teeth|tooth|passes|apart|shown|continuous|sweeps|along|drawn|longer|heights?|true|scale|exaggerated|vertical|colour|above|lowest|point|simulated|cusp|against|exact|differ|within|beyond|stated|resolution|bound|cells|trace|mean|line|profilometer|marked|view|machined|coloured|simulating|the|of|by|and)\b/gi;
+
+/** The surface view's Latin words a Japanese translation keeps: the symbols, the units, the roughness' names. */
+const SURFACE_KEPT = new Set([...SHEET_KEPT, 'z', 'fz', 'x', 'Rz', 'Ra', 'Rq', '3D']);
+
+/** Every word the open Machined surface view shows or names (its texts, its elements' names), its lang and its legend's numbers. */
+const surfaceWords = (page: Page): Promise<{ lang: string; words: string; legend: string[] }> =>
+  page.getByTestId('surface-view').evaluate((v) => {
+    const texts: string[] = [];
+    const walker = document.createTreeWalker(v, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node !== null; node = walker.nextNode()) texts.push(node.nodeValue ?? '');
+    const names = [...v.querySelectorAll('[aria-label]')].map((e) => e.getAttribute('aria-label') ?? '');
+    const legend = [...v.querySelectorAll('[data-testid="surface-legend"] text')].map((t) => t.textContent ?? '');
+    return { lang: (v as HTMLElement).lang, words: [...texts, ...names].join(' '), legend };
+  });
+
 describe('the language switch (phone)', { timeout: 90_000 }, () => {
   let page: Page;
 
@@ -137,6 +155,38 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(() => text(page, '.finish-title'), POLL).toBe('Oberfläche: die Vorschubmarken der Schneiden');
     await expect.poll(() => text(page, '[data-testid="finish-hf"]'), POLL).toMatch(/^\d+,\d+ µm$/);
     expect(await text(page, '[data-testid="use-balanced-feed"]')).toBe('ausgewogenen Vorschub übernehmen');
+    // The cell map's caption and name, and the areal rows' titles, in German with decimal commas.
+    await expect
+      .poll(() => text(page, '[data-testid="finish-map-scale"]'), POLL)
+      .toMatch(/^Eine Periodenzelle, 0,10* mm in Vorschubrichtung .* Sz = \d+,\d+ µm dazwischen\./);
+    expect(await page.getByTestId('finish-map-image').getAttribute('aria-label')).toMatch(/^Höhen einer Periodenzelle/);
+    expect(await page.getByTestId('finish-areal').locator('div[title]').first().getAttribute('title')).toBe(
+      'quadratischer Mittelwert der Höhe',
+    );
+    // A refusal of the finish worker, worded on the page from its data: the bound in mm, what was typed.
+    await typeInto(page, 'input-fz', '5');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="finish-message"]'), POLL)
+      .toBe('Vorschub pro Zahn fz darf höchstens den Werkzeugradius R = 3 mm betragen (eingegeben: 5).');
+    expect(await page.getByTestId('finish-message').evaluate((e) => e.closest('[lang]')?.getAttribute('lang'))).toBe(
+      'de',
+    );
+    await typeInto(page, 'input-fz', '0,1');
+    await page.keyboard.press('Enter');
+    // The machined surface (the teeth's): its caption, scale line, legend and names in German, numbers with a comma.
+    await page.locator('#tab-surface').click();
+    await expect
+      .poll(() => text(page, '[data-testid="surface-shown"]'), POLL)
+      .toMatch(/^Die Oberfläche der Schneiden .* z = 4, fz = 0,10* mm, L = \d+,\d+ mm; /);
+    await expect
+      .poll(() => text(page, '[data-testid="surface-exaggeration"]'), POLL)
+      .toMatch(/über dem tiefsten Punkt \(µm\)\.$/);
+    const surface = await surfaceWords(page);
+    expect(surface.lang).toBe('de');
+    expect(surface.words.match(SURFACE_ENGLISH), surface.words).toBeNull();
+    expect(surface.legend.some((t) => /\d,\d/.test(t)) && !surface.legend.some((t) => /\d\.\d/.test(t))).toBe(true);
+    await page.locator('#tab-profile').click();
     // axe on the page at rest (a view marked out of date while it redraws is greyed on purpose).
     await expect.poll(() => page.locator('.teaching').getAttribute('class'), POLL).not.toMatch(/\bstale\b/);
     await pageSettled(page);
@@ -317,6 +367,27 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(() => caption.textContent(), POLL).toMatch(/^前傾角 rho \[°\] に対する L \[mm\]/);
     await tap(page, 'de');
     await expect.poll(() => caption.textContent(), POLL).toMatch(/^L \[mm\] über dem Anstellwinkel/);
+    // The machined surface simulated (no teeth given): the comparison, the trace, the scale line in German.
+    await page.locator('#tab-surface').click();
+    await expect
+      .poll(() => text(page, '[data-testid="surface-comparison"]'), { timeout: 30_000 })
+      .toMatch(/^Simulierte Kammhöhe \d+,\d+ µm gegenüber exakt \d+,\d+ µm: /);
+    const simulated = await surfaceWords(page);
+    expect(simulated.lang).toBe('de');
+    expect(simulated.words).toMatch(/Simulierter Tastschnitt, \d+ Bahnen\. Exakt: Rz \d+,\d+ µm/);
+    expect(simulated.words.match(SURFACE_ENGLISH), simulated.words).toBeNull();
+    // A switch while it is on screen words it anew.
+    await tap(page, 'ja');
+    await expect
+      .poll(() => text(page, '[data-testid="surface-comparison"]'), POLL)
+      .toMatch(/^シミュレーションのカスプ高さ /);
+    const japanese = await surfaceWords(page);
+    expect(
+      latinWords(japanese.words.replace(/µ(m|in)\b/g, '')).filter((w) => !SURFACE_KEPT.has(w)),
+      japanese.words,
+    ).toEqual([]);
+    await tap(page, 'de');
+    await expect.poll(() => text(page, '[data-testid="surface-comparison"]'), POLL).toMatch(/^Simulierte Kammhöhe /);
     await page.locator('#tab-profile').click();
     await page.locator('[data-testid="machine-switch"] input[value="3axis"]').check();
     await typeInto(page, 'input-slope', '20,5');

@@ -6,9 +6,11 @@
 import type { Catalogue } from './catalogue';
 import { DE_CHART } from './deChart';
 import { DE_ERRORS } from './deErrors';
+import { DE_FINISH } from './deFinish';
 import { DE_RADIUS } from './deRadius';
 import { DE_SHEET } from './deSheet';
 import { DE_SLOPE } from './deSlope';
+import { DE_SURFACE } from './deSurface';
 import { DE_THREE_AXIS } from './deThreeAxis';
 
 export const catalogue: Catalogue = {
@@ -264,6 +266,8 @@ export const catalogue: Catalogue = {
   chart: DE_CHART,
   slope: DE_SLOPE,
   radius: DE_RADIUS,
+  finishText: DE_FINISH,
+  surface: DE_SURFACE,
   viewNotes: {
     curved: {
       tables: 'Die Tabellen der Studie gelten für deren eigene Bedingungen, auf einer Ebene',

@@ -6,9 +6,11 @@
 import type { Catalogue } from './catalogue';
 import { JA_CHART } from './jaChart';
 import { JA_ERRORS } from './jaErrors';
+import { JA_FINISH } from './jaFinish';
 import { JA_RADIUS } from './jaRadius';
 import { JA_SHEET } from './jaSheet';
 import { JA_SLOPE } from './jaSlope';
+import { JA_SURFACE } from './jaSurface';
 import { JA_THREE_AXIS } from './jaThreeAxis';
 
 export const catalogue: Catalogue = {
@@ -247,6 +249,8 @@ export const catalogue: Catalogue = {
   chart: JA_CHART,
   slope: JA_SLOPE,
   radius: JA_RADIUS,
+  finishText: JA_FINISH,
+  surface: JA_SURFACE,
   viewNotes: {
     curved: {
       tables: '論文の表は論文自身の条件（平面）のものです',
