@@ -68,6 +68,9 @@
  * on first use only: the first result unchanged): each language's catalogue +1.3 kB, the finish box
  * +0.78 (its English sentences and the wording of the worker's data), the views +0.45, the worker's
  * data +0.09: 277.93 in all. The ratchet is raised to 278.0.
+ * Then the 3D scene's labels and name in each language (its own words moved to render/sceneWords.ts,
+ * the page's labels put into the language by the catalogue: the first result +0.04 kB, 60.64; the
+ * scene +0.26, each catalogue +0.14, the language pass +0.06): 278.77 in all, the ratchet 278.8.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -93,7 +96,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 278.0 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(278.0);
+  it('all of it, every .js file, is at most 278.8 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(278.8);
   });
 });

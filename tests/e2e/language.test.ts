@@ -103,6 +103,21 @@ const surfaceWords = (page: Page): Promise<{ lang: string; words: string; legend
     return { lang: (v as HTMLElement).lang, words: [...texts, ...names].join(' '), legend };
   });
 
+/** The 3D scene's own English words (render/drawables/parts.ts SCENE_WORDS, the arc, its name). */
+const SCENE_ENGLISH =
+  /\b(design|pseudo|plane|surface|cusp|converged|best|single|contact|arc|feed|view|tool|posture|neighbouring|passes|sections)\b/gi;
+
+/** The 3D scene's label texts and its canvas's accessible name. */
+const sceneWords = (page: Page): Promise<string> =>
+  page
+    .getByTestId('scene')
+    .evaluate((scene) =>
+      [
+        ...[...scene.querySelectorAll('.scene-labels .scene-label')].map((l) => l.textContent ?? ''),
+        scene.querySelector('canvas')?.getAttribute('aria-label') ?? '',
+      ].join(' '),
+    );
+
 describe('the language switch (phone)', { timeout: 90_000 }, () => {
   let page: Page;
 
@@ -118,6 +133,12 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect
       .poll(() => text(page, '[data-testid="result-exact-interval"]'))
       .toBe(`${stepOver(0.05).replace('.', ',')} mm`);
+    // The scene's dimensions with a decimal comma, its own words and its name in German.
+    await expect
+      .poll(() => page.locator('.scene-labels .label-dim').first().textContent(), POLL)
+      .toBe(`L = ${stepOver(0.05).replace('.', ',')} mm`);
+    await expect.poll(() => sceneWords(page), POLL).toContain('Sollebene');
+    expect((await sceneWords(page)).match(SCENE_ENGLISH)).toBeNull();
     // The result bar mirrors the headline, in German too; the question named in German; Copy in German.
     expect(await text(page, '[data-role="bar-label"]')).toBe('Bahnabstand L');
     await expect
@@ -217,6 +238,14 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       legend,
     ).toEqual([]);
     expect(await page.getByTestId('scene-legend').getAttribute('lang')).toBeNull();
+    // The scene's own labels and its name in Japanese: the surfaces' names, the symbols kept.
+    await expect.poll(() => sceneWords(page), POLL).toContain('設計平面');
+    const scene = await sceneWords(page);
+    expect(
+      latinWords(scene).filter((w) => !LEGEND_KEPT.has(w)),
+      scene,
+    ).toEqual([]);
+    expect(await page.getByTestId('scene').getAttribute('lang')).toBeNull();
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
     expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
     await pageSettled(page);
@@ -476,6 +505,11 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     expect(await page.getByTestId('chart-radius-summary').textContent()).toMatch(
       /^Bei Rf konvex 80 mm, Rc konvex 40 mm: L = \d+,\d{4} mm/,
     );
+    // The scene on a doubly curved point: the step-over measured along an arc, said in German.
+    await expect
+      .poll(() => page.locator('.scene-labels .label-dim').first().textContent(), POLL)
+      .toMatch(/^L = \d+,\d{4} mm \(Bogenlänge\)$/);
+    expect((await sceneWords(page)).match(SCENE_ENGLISH), await sceneWords(page)).toBeNull();
     await page.locator('#tab-profile').click();
     await page.locator('input[name="surface"][value="plane"]').check();
     // Back to five axes: a flat end without lead or tilt lies flat, said in German with its L = 2R.

@@ -9,6 +9,7 @@ import type { FinishErrorCode, FinishField } from '../../core/finish/finishInput
 import type { PageFieldKey } from '../../core/input/fields';
 import type { AnyInputError, InputErrorCode } from '../../core/input/validate';
 import type { ThreeAxisInputError } from '../../core/threeAxis/validate';
+import type { SceneLabelTexts } from '../sceneLabels';
 
 /** The languages of the page: English (the page as written), Japanese, German. */
 export type Lang = 'en' | 'ja' | 'de';
@@ -233,6 +234,13 @@ export interface Catalogue {
   readonly finishText: FinishWords;
   /** The Machined surface view's words (views/surfaceView.ts; English in views/surfaceWords.ts). */
   readonly surface: SurfaceWords;
+  /** The 3D scene's dimension labels and accessible name (sceneLabels.ts; made by sceneText.ts). */
+  readonly scene: SceneWords;
+}
+
+/** The 3D scene's words: its labels put into the language (the word "arc", the decimal sign) and its name. */
+export interface SceneWords {
+  readonly labels: (english: SceneLabelTexts) => SceneLabelTexts;
 }
 
 /** What a finish field's refusal is made of (the core's FinishError data), in the language and unit on screen. */

@@ -12,6 +12,7 @@ import { DE_SHEET } from './deSheet';
 import { DE_SLOPE } from './deSlope';
 import { DE_SURFACE } from './deSurface';
 import { DE_THREE_AXIS } from './deThreeAxis';
+import { sceneWordsIn } from './sceneText';
 
 export const catalogue: Catalogue = {
   lang: 'de',
@@ -268,6 +269,22 @@ export const catalogue: Catalogue = {
   radius: DE_RADIUS,
   finishText: DE_FINISH,
   surface: DE_SURFACE,
+  scene: sceneWordsIn(
+    'de',
+    ' (Bogenlänge)',
+    '3D-Ansicht des Werkzeugs in seiner Anstellung, der benachbarten Bahnen und der Kammschnitte',
+    {
+      designPlane: 'Sollebene',
+      designSurface: 'Sollfläche',
+      hPlane: 'h-Pseudoebene',
+      hSurface: 'h-Pseudofläche',
+      cusp: 'Kamm',
+      converged: 'P_hp (konvergiert)',
+      best: 'bestes P_hp[i]',
+      single: 'einziger Kontakt',
+      xAxis: 'X (Vorschub)',
+    },
+  ),
   viewNotes: {
     curved: {
       tables: 'Die Tabellen der Studie gelten für deren eigene Bedingungen, auf einer Ebene',

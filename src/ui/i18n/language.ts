@@ -22,7 +22,7 @@ export function loadCatalogue(lang: Lang): Promise<Catalogue | null> {
 }
 
 /** The parts of the page that stay in English in another language (their `lang` says so). */
-const ENGLISH_PARTS = '.teaching, .table-notes, .procedures thead, .notices, .meaning, .scene';
+const ENGLISH_PARTS = '.teaching, .table-notes, .procedures thead, .notices, .meaning';
 
 /** The page's English words of its `data-i18n` elements, read once before any language replaces them. */
 const ENGLISH = new WeakMap<Element, string>();
