@@ -71,6 +71,8 @@
  * Then the 3D scene's labels and name in each language (its own words moved to render/sceneWords.ts,
  * the page's labels put into the language by the catalogue: the first result +0.04 kB, 60.64; the
  * scene +0.26, each catalogue +0.14, the language pass +0.06): 278.77 in all, the ratchet 278.8.
+ * Then the cross-feed profile's words in each language (on first use: each catalogue +0.75 kB, the
+ * views +0.42; the first result 60.64): 280.67 in all, the ratchet 280.7.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -96,7 +98,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 278.8 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(278.8);
+  it('all of it, every .js file, is at most 280.7 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(280.7);
   });
 });

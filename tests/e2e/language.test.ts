@@ -118,6 +118,25 @@ const sceneWords = (page: Page): Promise<string> =>
       ].join(' '),
     );
 
+/** The cross-feed profile's English words (views/profileWords.ts), to find any left over. */
+const PROFILE_ENGLISH =
+  /\b(cross|feed|adjacent|passes|vertical|scale|true|auto|zoom|reset|view|cusp|approximations|drawn|exact|compare|shapes|results|table|ring|ellipse|next|pass|cylinder|ignored|heights|exaggerated|high|arc|along|across|doubly|curved|point|section|circle|flanks|marks|radially|surface|the|of|at|on)\b/gi;
+
+/**
+ * Every word of the profile view but the procedures' names (marked English): its texts, its
+ * elements' names, its options; its lang; and its dimension labels.
+ */
+const profileWords = (page: Page): Promise<{ lang: string; words: string; dims: string[] }> =>
+  page.getByTestId('profile-view').evaluate((v) => {
+    const texts: string[] = [];
+    const walker = document.createTreeWalker(v, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node !== null; node = walker.nextNode())
+      if (node.parentElement?.closest('[lang]')?.getAttribute('lang') !== 'en') texts.push(node.nodeValue ?? '');
+    const names = [...v.querySelectorAll('[aria-label]')].map((e) => e.getAttribute('aria-label') ?? '');
+    const dims = [...v.querySelectorAll('text.dim-text')].map((t) => t.textContent ?? '');
+    return { lang: (v as HTMLElement).lang, words: [...texts, ...names].join(' '), dims };
+  });
+
 describe('the language switch (phone)', { timeout: 90_000 }, () => {
   let page: Page;
 
@@ -208,6 +227,14 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     expect(surface.words.match(SURFACE_ENGLISH), surface.words).toBeNull();
     expect(surface.legend.some((t) => /\d,\d/.test(t)) && !surface.legend.some((t) => /\d\.\d/.test(t))).toBe(true);
     await page.locator('#tab-profile').click();
+    // The cross-feed profile in German: its dimensions with a decimal comma, its words, names and lang.
+    await expect
+      .poll(async () => (await profileWords(page)).dims, POLL)
+      .toContain(`L = ${stepOver(0.08).replace('.', ',')} mm`);
+    const profile = await profileWords(page);
+    expect(profile.lang).toBe('de');
+    expect(profile.words.match(PROFILE_ENGLISH), profile.words).toBeNull();
+    expect(profile.dims.filter((t) => /\d\.\d/.test(t))).toEqual([]);
     // axe on the page at rest (a view marked out of date while it redraws is greyed on purpose).
     await expect.poll(() => page.locator('.teaching').getAttribute('class'), POLL).not.toMatch(/\bstale\b/);
     await pageSettled(page);
@@ -511,6 +538,16 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       .toMatch(/^L = \d+,\d{4} mm \(Bogenlänge\)$/);
     expect((await sceneWords(page)).match(SCENE_ENGLISH), await sceneWords(page)).toBeNull();
     await page.locator('#tab-profile').click();
+    // The profile at that point in German: its note, the arc, its words.
+    await expect
+      .poll(() => text(page, '[data-testid="profile-cylinder-note"]'), POLL)
+      .toMatch(/^An einem doppelt gekrümmten Punkt \(Rf konvex 80 mm in Vorschubrichtung/);
+    const curvedProfile = await profileWords(page);
+    expect(
+      curvedProfile.dims.some((t) => /^L = \d+,\d{4} mm \(Bogenlänge\)$/.test(t)),
+      curvedProfile.dims.join(' | '),
+    ).toBe(true);
+    expect(curvedProfile.words.match(PROFILE_ENGLISH), curvedProfile.words).toBeNull();
     await page.locator('input[name="surface"][value="plane"]').check();
     // Back to five axes: a flat end without lead or tilt lies flat, said in German with its L = 2R.
     await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();

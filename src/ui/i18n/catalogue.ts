@@ -236,6 +236,49 @@ export interface Catalogue {
   readonly surface: SurfaceWords;
   /** The 3D scene's dimension labels and accessible name (sceneLabels.ts; made by sceneText.ts). */
   readonly scene: SceneWords;
+  /** The cross-feed profile's words (views/profileView.ts, profileDrawing.ts; English in views/profileWords.ts). */
+  readonly profile: ProfileWords;
+}
+
+/**
+ * The cross-feed profile's words (views/profileView.ts, profileDrawing.ts, profileScaleBars.ts;
+ * English in views/profileWords.ts): lengths given as text with their unit, the procedures' names
+ * kept (marked English on the page).
+ */
+export interface ProfileWords {
+  /** The plot's accessible name: on a plane, on a cylinder (its side and axis), at a doubly curved point (each radius's side). */
+  readonly plotPlane: string;
+  readonly plotCylinder: (side: 'convex' | 'concave', axis: 'feed' | 'cross') => string;
+  readonly plotCurved: (rf: 'convex' | 'concave', rc: 'convex' | 'concave') => string;
+  /** The note over a cylinder's section (its side, its radius with unit) and a doubly curved point's (each radius in words). */
+  readonly noteCylinder: (side: 'convex' | 'concave', radius: string, axis: 'feed' | 'cross') => string;
+  readonly noteCurved: (rf: string, rc: string) => string;
+  /** What the exaggeration stretches on a plane and on a curved surface, and the curvature kept. */
+  readonly heightsPlane: string;
+  readonly heightsSurface: string;
+  readonly curvatureTrue: string;
+  /** The scale line: true scale, or `heights` exaggerated k times; chosen automatically; capped (the k wanted). */
+  readonly scale: (k: number, heights: string, auto: boolean, capped: number | null, curvature: string) => string;
+  /** The exaggeration's choice: its name, automatic, true scale, k times. */
+  readonly exaggeration: string;
+  readonly auto: string;
+  readonly trueScale: string;
+  readonly vertical: (k: number) => string;
+  /** The buttons. */
+  readonly zoomIn: string;
+  readonly zoomOut: string;
+  readonly reset: string;
+  readonly cusp: string;
+  /** The note under the plot on the approximations' profiles. */
+  readonly approximations: string;
+  /** The legend: the ring ellipse, a procedure's next pass (after its name), each cylinder's. */
+  readonly ring: string;
+  readonly nextPass: string;
+  readonly cylinderAlong: string;
+  readonly cylinderAcross: string;
+  /** After L measured along an arc (with its separator); the height bar's text (its length with unit, k). */
+  readonly arc: string;
+  readonly high: (length: string, k: number) => string;
 }
 
 /** The 3D scene's words: its labels put into the language (the word "arc", the decimal sign) and its name. */

@@ -7,6 +7,7 @@ import type { Catalogue } from './catalogue';
 import { DE_CHART } from './deChart';
 import { DE_ERRORS } from './deErrors';
 import { DE_FINISH } from './deFinish';
+import { DE_PROFILE } from './deProfile';
 import { DE_RADIUS } from './deRadius';
 import { DE_SHEET } from './deSheet';
 import { DE_SLOPE } from './deSlope';
@@ -269,6 +270,7 @@ export const catalogue: Catalogue = {
   radius: DE_RADIUS,
   finishText: DE_FINISH,
   surface: DE_SURFACE,
+  profile: DE_PROFILE,
   scene: sceneWordsIn(
     'de',
     ' (Bogenlänge)',

@@ -7,6 +7,7 @@ import type { Catalogue } from './catalogue';
 import { JA_CHART } from './jaChart';
 import { JA_ERRORS } from './jaErrors';
 import { JA_FINISH } from './jaFinish';
+import { JA_PROFILE } from './jaProfile';
 import { JA_RADIUS } from './jaRadius';
 import { JA_SHEET } from './jaSheet';
 import { JA_SLOPE } from './jaSlope';
@@ -252,6 +253,7 @@ export const catalogue: Catalogue = {
   radius: JA_RADIUS,
   finishText: JA_FINISH,
   surface: JA_SURFACE,
+  profile: JA_PROFILE,
   scene: sceneWordsIn('ja', '（円弧）', '工具の姿勢、隣り合うパスとカスプの断面の 3D 表示', {
     designPlane: '設計平面',
     designSurface: '設計曲面',
