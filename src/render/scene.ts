@@ -44,12 +44,16 @@ import { FatLine, setLineScreen } from './fatLines';
 import { gatherFramePoints } from './framePoints';
 import { drawnHeightMm, heightMapFor, sceneHeightExaggeration } from './heightExaggeration';
 import { LabelAnchor, LabelLayer } from './labelLayer';
+import { SCENE_WORDS } from './sceneWords';
 import { ViewedScene } from './view3d';
 
 export type { CameraPreset } from './cameraFit';
 export type { SceneLabels } from './drawables/parts';
 
 const BACKGROUND = 0xf7f8fa;
+
+/** The view's accessible name (English; the page gives another language's with the labels). */
+const SCENE_NAME = '3D view of the tool in its posture, its neighbouring passes and the cusp sections';
 
 /** The share of the view's half-size kept free around the whole scene (its labels' points at the edge). */
 const OVERVIEW_MARGIN = 0.14;
@@ -113,7 +117,12 @@ export class ToolScene extends ViewedScene {
   /** The height exaggeration, said on the scene (a badge in its bottom left corner). */
   private readonly scaleBadge = document.createElement('div');
   /** What the step-through draws with: the last state's sizes (a unit tool before any). */
-  private traceSizes: TraceSizes = { map: heightMapFor(1, 0), cornerRadiusMm: 1, toolRadiusMm: 1 };
+  private traceSizes: TraceSizes = {
+    map: heightMapFor(1, 0),
+    cornerRadiusMm: 1,
+    toolRadiusMm: 1,
+    words: SCENE_WORDS,
+  };
   /** The last state drawn (null before any): the tests' probe reads its tool. */
   private lastGeometry: SceneGeometry | null = null;
   /** Tool radius the camera was fitted to (0: not yet). */
@@ -132,7 +141,7 @@ export class ToolScene extends ViewedScene {
   constructor(private readonly container: HTMLElement) {
     super(container, {
       testId: 'scene-canvas',
-      ariaLabel: '3D view of the tool in its posture, its neighbouring passes and the cusp sections',
+      ariaLabel: SCENE_NAME,
       fovDeg: 40,
       initialFarMm: 1000,
       background: BACKGROUND,
@@ -191,6 +200,9 @@ export class ToolScene extends ViewedScene {
 
   /** Shows a solved state. Everything is updated in place. */
   update(g: SceneGeometry, labels: SceneLabels): void {
+    const canvas = this.view.renderer.domElement;
+    const name = labels.name ?? SCENE_NAME;
+    if (canvas.getAttribute('aria-label') !== name) canvas.setAttribute('aria-label', name);
     const R = g.toolRadiusMm;
     // Heights exaggerated near a plane when the scallop would be too low to see (the drawing only);
     // not in the machine frame, where the programmed step's dimension is drawn at true scale.
@@ -213,7 +225,7 @@ export class ToolScene extends ViewedScene {
     };
     for (const d of this.drawables) d.update(state);
     this.lastGeometry = g;
-    this.traceSizes = { map, cornerRadiusMm: g.cornerRadiusMm, toolRadiusMm: R };
+    this.traceSizes = { map, cornerRadiusMm: g.cornerRadiusMm, toolRadiusMm: R, words: labels.words ?? SCENE_WORDS };
     const badge = this.scaleBadge;
     badge.hidden = false;
     badge.textContent =

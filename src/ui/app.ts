@@ -363,6 +363,8 @@ export class CalculatorApp {
             // The request built anew (the page's own messages are worded as it is built), the fields'
             // messages worded anew (follow), the table drawn anew, then the results.
             this.built = this.build(this.state);
+            // The scene drawn anew too (its labels' words).
+            this.sceneDrawn = null;
             this.results.invalidate();
             this.follow();
             this.draw();

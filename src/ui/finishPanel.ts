@@ -7,6 +7,7 @@
  * number); a refusal (a bad value, a surface where feed marks are not computed) is one line.
  * Loaded with its first question (finishLazy.ts), not with the first result.
  */
+import type { FinishSurfaceKind } from '../core/finish/finishScope';
 import { type LengthUnit, NO_VALUE } from '../core/input/units';
 import type { RestartInfo } from '../worker/client';
 import {
@@ -22,26 +23,25 @@ import { detailsRow, html } from './dom';
 import { feedLength } from './finishLength';
 import { FinishProfileCharts } from './finishProfileCharts';
 import { type FinishInputs, finishAsk, x3pFileName } from './finishRequest';
+import { EN_FINISH } from './finishWords';
 import { formatRoughness } from './format';
-import { localize } from './i18n/words';
+import type { FinishWords } from './i18n/catalogue';
+import { finishMessageIn, finishScopeIn } from './i18n/finishText';
+import { localDecimal } from './i18n/langChoice';
+import { catalogue, localize } from './i18n/words';
 import { balancedFeedFields } from './shopFeed';
 import { publishTeethSurface } from './teethMap';
 
 /** Points along each side of the x3p download's one cell (the issue's 256 x 256). */
 export const X3P_SIZE = 256;
 
-/**
- * The areal parameters' rows after Sa (shown once, beside Ra above them): symbol and its words
- * (the row's title).
- */
-const AREAL = [
-  ['Sq', 'root mean square height'],
-  ['Sz', 'highest peak to deepest valley'],
-  ['Sp', 'highest peak'],
-  ['Sv', 'deepest valley'],
-  ['Ssk', 'skewness'],
-  ['Sku', 'kurtosis'],
-] as const;
+/** The areal parameters' rows after Sa (shown once, beside Ra above them); their titles' words in finishWords.ts. */
+const AREAL = ['Sq', 'Sz', 'Sp', 'Sv', 'Ssk', 'Sku'] as const;
+
+/** The box's own sentences in the language in force (English: finishWords.ts). */
+function words(): Pick<FinishWords, keyof typeof EN_FINISH> {
+  return catalogue()?.finishText ?? EN_FINISH;
+}
 
 /**
  * An output of the box, not a live region of its own (an <output> is one by default): the box's one
@@ -69,11 +69,11 @@ export class FinishPanel {
   private wanted: FinishRequest | null = null;
   /** The latest answer of each part (shown only while it answers the question on screen). */
   private readonly answers = new Map<FinishRequest['part'], Extract<FinishReply, { ok: true }>>();
-  private refusal: string | null = null;
+  /** The surface where feed marks are not computed, and the core's English line. */
+  private refusal: { readonly surface: FinishSurfaceKind; readonly english: string } | null = null;
   /** The worker's refusal of a question (a bad value), with the question. */
   private failed: {
     readonly request: FinishRequest;
-    readonly message: string;
     readonly errors: readonly FinishFieldMessage[];
   } | null = null;
   /** The field messages last told to the page (JSON), so that it is told only of a change. */
@@ -99,9 +99,18 @@ export class FinishPanel {
   private painted: Extract<FinishReply, { ok: true }> | null = null;
   /** The part each client computes now (until its reply). */
   private readonly busy = new Map<ReturnType<typeof finishClient>, FinishRequest>();
-  /** A worker's restart or give-up, said while the question on screen waits. */
-  private note: string | null = null;
+  /** A worker's restart or give-up (the worker's reason), said while the question on screen waits. */
+  private note: { readonly gaveUp: boolean; readonly reason: string } | null = null;
+  /** The x3p line: computing, none (the worker's refusals, or null), gave up, saved; or nothing yet. */
+  private x3pLine:
+    | { readonly kind: 'computing' }
+    | { readonly kind: 'none'; readonly errors: readonly FinishFieldMessage[] | null }
+    | { readonly kind: 'gaveUp'; readonly reason: string }
+    | { readonly kind: 'saved'; readonly fileName: string; readonly size: number }
+    | null = null;
   private x3pClient: ReturnType<typeof finishClient> | null = null;
+  /** The areal rows' list (their titles follow the language). */
+  private readonly arealList: HTMLElement;
 
   /** `clientOf`: workers.ts finishClient (the first script's, passed in). */
   constructor(
@@ -151,11 +160,12 @@ export class FinishPanel {
       if (fz !== undefined && fz !== null && this.inputs !== null) this.onFeed(balancedFeedFields(fz, this.inputs));
     });
     const areal = html('dl', { class: 'details finish-areal', 'data-testid': 'finish-areal' });
-    for (const [symbol, words] of AREAL) {
+    for (const symbol of AREAL) {
       const out = quietOutput(`finish-areal-${symbol}`);
       this.outputs.set(symbol, out);
-      detailsRow(areal, symbol, out, { title: words });
+      detailsRow(areal, symbol, out, { title: EN_FINISH.areal[symbol] });
     }
+    this.arealList = areal;
     this.message = html('p', { class: 'finish-message', 'data-testid': 'finish-message' });
     // The box's one live region: what it waits for, why it refuses, or its answer once complete.
     this.live = html('p', { class: 'sr-only', 'data-testid': 'finish-live', role: 'status' });
@@ -180,7 +190,7 @@ export class FinishPanel {
       height: String(MAP_SIZE),
       'data-testid': 'finish-map-image',
       role: 'img',
-      'aria-label': 'Heights of one period cell, coloured from the lowest (blue) to the highest (orange)',
+      'aria-label': EN_FINISH.mapLabel,
     });
     this.scale = html('figcaption', { 'data-testid': 'finish-map-scale' });
     this.figure.append(this.canvas, this.scale);
@@ -197,7 +207,7 @@ export class FinishPanel {
     this.inputs = inputs;
     this.box.hidden = !inputs.given;
     const ask = finishAsk(inputs, reply);
-    this.refusal = ask.kind === 'refused' ? ask.message : null;
+    this.refusal = ask.kind === 'refused' ? { surface: ask.surface, english: ask.message } : null;
     const request = ask.kind === 'ask' ? ask.request : null;
     this.raMm = ask.kind === 'ask' ? ask.raMm : null;
     if (!sameFinishRequest(request, this.wanted)) {
@@ -232,12 +242,7 @@ export class FinishPanel {
     if (reply.request.x3p !== undefined || !this.current(reply.request)) return;
     this.note = null;
     if (reply.ok) this.answers.set(reply.request.part, reply);
-    else
-      this.failed = {
-        request: reply.request,
-        message: reply.errors.map((e) => e.message).join(' '),
-        errors: reply.errors,
-      };
+    else this.failed = { request: reply.request, errors: reply.errors };
     this.draw();
   }
 
@@ -249,9 +254,7 @@ export class FinishPanel {
 
   private restarted(info: RestartInfo<FinishRequest>): void {
     if (info.request === null || !this.current(info.request)) return;
-    this.note = info.gaveUp
-      ? `No finish: its worker gave up (${info.reason}).`
-      : `The finish's worker was restarted (${info.reason}); computing again...`;
+    this.note = { gaveUp: info.gaveUp, reason: info.reason };
     this.draw();
   }
 
@@ -280,7 +283,7 @@ export class FinishPanel {
           ? 'none: hf stays below h at every fz up to R'
           : feedLength(m.balancedFz, u),
     );
-    for (const [symbol] of AREAL)
+    for (const symbol of AREAL)
       this.set(
         symbol,
         s === undefined ? NO_VALUE : symbol === 'Ssk' || symbol === 'Sku' ? plain(s[symbol]) : height(s[symbol]),
@@ -293,9 +296,14 @@ export class FinishPanel {
     else if (balanced !== undefined) delete balanced.dataset.phrase;
     for (const part of this.answerParts) part.hidden = this.refusal !== null;
     this.download.disabled = marks === null || this.x3pAsked !== null;
-    const failed = this.failed !== null && this.current(this.failed.request) ? this.failed.message : null;
+    // The worker's refusals worded in the language in force (finishText.ts), on their fields too.
+    const c = catalogue();
+    const errors = this.failed !== null && this.current(this.failed.request) ? this.failed.errors : null;
+    const worded = (errors ?? []).map((e) => ({ ...e, message: finishMessageIn(c, e, u) }));
+    const failed = errors === null ? null : worded.map((e) => e.message).join(' ');
+    const refusal = this.refusal === null ? null : finishScopeIn(c, this.refusal.surface, this.refusal.english);
     // The same messages on their fields (a bad fz is named where it was typed), only while current.
-    const fieldErrors = failed !== null && this.failed !== null ? this.failed.errors : [];
+    const fieldErrors = worded;
     const told = JSON.stringify(fieldErrors);
     if (told !== this.toldFields) {
       this.toldFields = told;
@@ -307,20 +315,22 @@ export class FinishPanel {
     const surface = this.refusal === null ? this.answer('areal')?.surface : undefined;
     publishTeethSurface(surface === undefined || surface === null ? null : { surface, unit: this.unit });
     this.profiles.show(this.refusal === null ? (this.answer('areal')?.profiles ?? null) : null, this.unit);
+    const note = this.note === null ? null : words().worker(this.note.gaveUp, this.note.reason);
     const waiting = pending
-      ? (this.note ??
+      ? (note ??
         (m === undefined
           ? 'Computing the feed marks and the areal parameters...'
           : 'Computing the areal parameters...'))
       : '';
-    const text = this.refusal ?? failed ?? waiting;
+    const text = refusal ?? failed ?? waiting;
     if (this.message.textContent !== text) this.message.textContent = text;
     // The waiting lines are the box's own words (put into the language in force); a refusal is the worker's.
     if (text === waiting && text !== '' && this.note === null) this.message.dataset.phrase = text;
     else delete this.message.dataset.phrase;
-    const gaveUp = pending && this.note?.startsWith('No finish') === true;
+    const gaveUp = pending && this.note?.gaveUp === true;
     this.message.classList.toggle('error', this.refusal !== null || failed !== null || gaveUp);
     localize(this.box);
+    this.wordOwn();
     // Said once complete: the message while there is one, else the answer's main rows (as localized).
     const said = text !== '' || this.wanted === null ? text : this.summary();
     if (this.live.textContent !== said) this.live.textContent = said;
@@ -349,10 +359,14 @@ export class FinishPanel {
     const u = this.unit;
     const period = this.answer('marks')?.feedMarks?.period ?? null;
     const across = r.intervalMm * (r.pattern === 'zigzag' ? 2 : 1);
-    const text =
-      `One period cell, ${feedLength(period, u)} along the feed (right) by ${feedLength(across, u)} across (down); ` +
-      `blue the lowest, orange the highest: Sz = ${formatRoughness(areal.areal === null ? null : areal.areal.Sz, u)} apart. ` +
-      'Drawn square, not to scale.';
+    const text = localDecimal(
+      words().mapScale(
+        feedLength(period, u),
+        feedLength(across, u),
+        formatRoughness(areal.areal === null ? null : areal.areal.Sz, u),
+      ),
+      catalogue(),
+    );
     if (this.scale.textContent !== text) this.scale.textContent = text;
     if (this.painted === areal) return;
     this.painted = areal;
@@ -383,14 +397,16 @@ export class FinishPanel {
     const request: FinishRequest = { ...r, x3p: { size: X3P_SIZE, fileName, comment: fileName.replace(/\.x3p$/, '') } };
     this.x3pAsked = request;
     this.download.disabled = true;
-    this.x3pStatus.textContent = 'Computing the surface in the worker...';
+    this.x3pLine = { kind: 'computing' };
+    this.wordOwn();
     this.x3pClient ??= this.clientOf(
       {
         onReply: (reply) => this.savedX3p(reply),
         onRestart: (info) => {
           if (!info.gaveUp) return;
           this.x3pAsked = null;
-          this.x3pStatus.textContent = `No x3p: its worker gave up (${info.reason}).`;
+          this.x3pLine = { kind: 'gaveUp', reason: info.reason };
+          this.wordOwn();
         },
       },
       sameFinishRequest,
@@ -404,7 +420,8 @@ export class FinishPanel {
     this.download.disabled = this.answer('marks') === null;
     const file = reply.request.x3p;
     if (!reply.ok || reply.x3p === null || file === undefined) {
-      this.x3pStatus.textContent = reply.ok ? 'No x3p.' : `No x3p: ${reply.errors.map((e) => e.message).join(' ')}`;
+      this.x3pLine = { kind: 'none', errors: reply.ok ? null : reply.errors };
+      this.wordOwn();
       return;
     }
     const url = URL.createObjectURL(new Blob([reply.x3p as BlobPart], { type: 'application/zip' }));
@@ -415,6 +432,36 @@ export class FinishPanel {
     link.click();
     link.remove();
     setTimeout(() => URL.revokeObjectURL(url), 10_000);
-    this.x3pStatus.textContent = `Saved ${file.fileName}: ${file.size} x ${file.size} heights over one period cell.`;
+    this.x3pLine = { kind: 'saved', fileName: file.fileName, size: file.size };
+    this.wordOwn();
+  }
+
+  /**
+   * The box's own words that are not a `data-phrase` (finish words of the catalogue): the areal
+   * rows' titles, the map's name, the x3p line; in the language in force.
+   */
+  private wordOwn(): void {
+    const w = words();
+    for (const dt of this.arealList.querySelectorAll<HTMLElement>('dt')) {
+      const title = w.areal[dt.textContent as (typeof AREAL)[number]];
+      const row = dt.parentElement;
+      if (title !== undefined && row !== null && row.title !== title) row.title = title;
+    }
+    if (this.canvas.getAttribute('aria-label') !== w.mapLabel) this.canvas.setAttribute('aria-label', w.mapLabel);
+    const line = this.x3pLine;
+    const c = catalogue();
+    const text =
+      line === null
+        ? (this.x3pStatus.textContent ?? '')
+        : line.kind === 'computing'
+          ? w.x3pComputing
+          : line.kind === 'gaveUp'
+            ? w.x3pGaveUp(line.reason)
+            : line.kind === 'saved'
+              ? w.x3pSaved(line.fileName, line.size)
+              : w.x3pNone(
+                  line.errors === null ? null : line.errors.map((e) => finishMessageIn(c, e, this.unit)).join(' '),
+                );
+    if (this.x3pStatus.textContent !== text) this.x3pStatus.textContent = text;
   }
 }

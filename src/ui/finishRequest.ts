@@ -7,7 +7,7 @@
  */
 
 import type { FinishField } from '../core/finish/finishInput';
-import { finishScopeError } from '../core/finish/finishScope';
+import { type FinishSurfaceKind, finishScopeError } from '../core/finish/finishScope';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../core/input/units';
 import type { ToolInput } from '../core/input/validate';
 import { equivalentPlaneRequest } from '../worker/equivalentPlane';
@@ -26,7 +26,7 @@ export interface FinishInputs {
 /** What the finish box answers: nothing asked, a refusal in one line, or a question for the worker. */
 export type FinishAsk =
   | { readonly kind: 'none' }
-  | { readonly kind: 'refused'; readonly message: string }
+  | { readonly kind: 'refused'; readonly message: string; readonly surface: FinishSurfaceKind }
   | { readonly kind: 'ask'; readonly request: FinishRequest; readonly raMm: number | null };
 
 /** The tool and posture of a validated input (its other fields left out of the finish question). */
@@ -87,7 +87,7 @@ export function finishAsk(inputs: FinishInputs, reply: PageReply | null): Finish
   if (!inputs.given || reply === null) return { kind: 'none' };
   const plane = planeOf(reply);
   if (plane === null) return { kind: 'none' };
-  if (typeof plane === 'string') return { kind: 'refused', message: finishScopeError(plane) ?? '' };
+  if (typeof plane === 'string') return { kind: 'refused', message: finishScopeError(plane) ?? '', surface: plane };
   if (!(plane.intervalMm > 0 && Number.isFinite(plane.intervalMm))) return { kind: 'none' };
   const raMm = 'roughness' in reply && reply.ok && reply.roughness !== null ? reply.roughness.raMm : null;
   const { values, typed, unit } = inputs;

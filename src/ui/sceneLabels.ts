@@ -6,16 +6,22 @@
  * where the answer has no scene (a three-axis case without a scallop).
  */
 import type { LengthUnit } from '../core/input/units';
+import type { SceneWordTexts } from '../render/sceneWords';
 import { isSolveReply, type PageReply } from '../worker/pageProtocol';
 import type { SceneGeometry } from '../worker/protocol';
 import { formatLenUnit, formatSignedLenUnit } from './format';
+import { catalogue } from './i18n/words';
 
-/** Texts of the scene's labels (render/drawables/parts.ts SceneLabels). */
+/** Texts of the scene's labels (render/drawables/parts.ts SceneLabels), and its accessible name in another language. */
 export interface SceneLabelTexts {
   readonly interval: string;
   readonly halfInterval: string;
   readonly contactOffset: string | null;
   readonly programmedStep?: string;
+  readonly name?: string;
+  readonly words?: SceneWordTexts;
+  /** The step-over is measured along an arc (the scene adds its word after L and L/2). */
+  readonly arc?: boolean;
 }
 
 /** The scene of an answer: its geometry, labels, and whether the curved surfaces' legend applies. */
@@ -26,8 +32,14 @@ export interface SceneOfReply {
   readonly curvedLegend: boolean;
 }
 
-/** The scene an answer shows, or null (an error, or nothing to draw). */
+/** The scene an answer shows, or null (an error, or nothing to draw); its labels in the language in force. */
 export function sceneOfReply(reply: PageReply, unit: LengthUnit): SceneOfReply | null {
+  const scene = englishScene(reply, unit);
+  const words = catalogue();
+  return words && scene ? { ...scene, labels: words.scene.labels(scene.labels) } : scene;
+}
+
+function englishScene(reply: PageReply, unit: LengthUnit): SceneOfReply | null {
   if (!reply.ok) return null;
   const geometry = reply.scene;
   if (geometry === null) return null;
@@ -36,19 +48,17 @@ export function sceneOfReply(reply: PageReply, unit: LengthUnit): SceneOfReply |
   // The step-over is an arc where it is measured around a circle across the feed.
   const arc =
     (surface.kind === 'cylinder' && surface.axis === 'feed') ||
-    ((surface.kind === 'torus' || surface.kind === 'revolution') && Number.isFinite(surface.crossRadiusMm))
-      ? ' (arc)'
-      : '';
+    ((surface.kind === 'torus' || surface.kind === 'revolution') && Number.isFinite(surface.crossRadiusMm));
   const curvedLegend = surface.kind !== 'plane';
-  const interval = `L = ${formatLenUnit(L, unit)}${arc}`;
+  const interval = `L = ${formatLenUnit(L, unit)}`;
   const half = isSolveReply(reply) ? reply.exact.halfIntervalMm : L / 2;
-  const halfInterval = `L/2 = ${formatLenUnit(half, unit)}${arc}`;
+  const halfInterval = `L/2 = ${formatLenUnit(half, unit)}`;
   if (isSolveReply(reply) || !('answer' in reply)) {
     const y0 = reply.exact.contactOffsetMm;
     return {
       geometry,
       curvedLegend,
-      labels: { interval, halfInterval, contactOffset: y0 === 0 ? null : `y0 = ${formatSignedLenUnit(y0, unit)}` },
+      labels: { interval, halfInterval, arc, contactOffset: y0 === 0 ? null : `y0 = ${formatSignedLenUnit(y0, unit)}` },
     };
   }
   const a = reply.answer;
@@ -56,5 +66,5 @@ export function sceneOfReply(reply: PageReply, unit: LengthUnit): SceneOfReply |
     a.passes === 'waterline' && a.stepDownMm !== null
       ? `dz = ${formatLenUnit(a.stepDownMm, unit)}`
       : `Lxy = ${formatLenUnit(a.horizontalStepMm, unit)}`;
-  return { geometry, curvedLegend, labels: { interval, halfInterval, contactOffset: null, programmedStep } };
+  return { geometry, curvedLegend, labels: { interval, halfInterval, arc, contactOffset: null, programmedStep } };
 }

@@ -4,7 +4,7 @@
  * (structured-clone safe). Every reply echoes its request, and the page shows a reply only while
  * its request is the one the inputs on screen ask (sameFinishRequest). Lengths mm, angles degrees.
  */
-import type { FinishField } from '../core/finish/finishInput';
+import type { FinishError, FinishField } from '../core/finish/finishInput';
 import type { FinishReport } from '../core/finish/index';
 import type { FinishProfiles } from '../core/finish/profiles';
 import type { LengthUnit } from '../core/input/units';
@@ -50,6 +50,10 @@ export const PROFILE_POINTS = 193;
 export interface FinishFieldMessage {
   readonly field: FinishField;
   readonly message: string;
+  /** What the message says, as data, for a page to word in its language: the field's refusal (`got` as typed)... */
+  readonly error?: Omit<FinishError, 'message'>;
+  /** ...or why the part could not be computed (core envelope.ts finishFailureKind), of which part. */
+  readonly failure?: { readonly kind: 'not-converged' | 'not-swept'; readonly part: 'marks' | 'areal' };
 }
 
 /** The part of the finish asked (the other null), or with `x3p` asked only the file's bytes; or why not. */

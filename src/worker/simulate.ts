@@ -54,6 +54,8 @@ export type SimulateReply =
       readonly errors: readonly InputError[];
       /** A valid request with nothing to simulate, said in words; null otherwise. */
       readonly reason: string | null;
+      /** That reason as a code (a page words it in its language): not a plane, or no scallop; absent else. */
+      readonly reasonCode?: 'planes-only' | 'no-scallop';
       /** Stopped because a newer request came. */
       readonly cancelled: boolean;
     };
@@ -105,13 +107,10 @@ function exactOf(
  */
 export async function simulate(request: SolveRequest, options: SimulateOptions = {}): Promise<SimulateReply> {
   const t0 = performance.now();
-  const fail = (errors: readonly InputError[], reason: string | null, cancelled = false): SimulateReply => ({
-    ok: false,
-    request,
-    errors,
-    reason,
-    cancelled,
-  });
+  const fail = (errors: readonly InputError[], reason: string | null, cancelled = false): SimulateReply => {
+    const reasonCode = reason === PLANES_ONLY ? 'planes-only' : reason === NO_SCALLOP ? 'no-scallop' : undefined;
+    return { ok: false, request, errors, reason, ...(reasonCode === undefined ? {} : { reasonCode }), cancelled };
+  };
   const errors = revalidate(request);
   if (errors !== null) return fail(errors, null);
   if (request.input.surface.kind !== 'plane') return fail([], PLANES_ONLY);

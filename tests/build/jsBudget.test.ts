@@ -63,6 +63,16 @@
  * over its 60 kB target again (each branch fitted alone; together the page's target-Sa choice, the
  * three-axis refusals' hook and the worker's slider limits add up): the ratchet is raised to hold
  * the line, and the target is said not met.
+ *
+ * The Machined surface view and the finish box's worker messages in Japanese and German (issue 30,
+ * on first use only: the first result unchanged): each language's catalogue +1.3 kB, the finish box
+ * +0.78 (its English sentences and the wording of the worker's data), the views +0.45, the worker's
+ * data +0.09: 277.93 in all. The ratchet is raised to 278.0.
+ * Then the 3D scene's labels and name in each language (its own words moved to render/sceneWords.ts,
+ * the page's labels put into the language by the catalogue: the first result +0.04 kB, 60.64; the
+ * scene +0.26, each catalogue +0.14, the language pass +0.06): 278.77 in all, the ratchet 278.8.
+ * Then the cross-feed profile's words in each language (on first use: each catalogue +0.75 kB, the
+ * views +0.42; the first result 60.64): 280.67 in all, the ratchet 280.7.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -88,7 +98,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 274.1 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(274.1);
+  it('all of it, every .js file, is at most 280.7 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(280.7);
   });
 });

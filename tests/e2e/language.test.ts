@@ -85,6 +85,58 @@ const sheetWords = (page: Page): Promise<string> =>
     return [...texts, ...names].join(' ');
   });
 
+/** The Machined surface view's English words (views/surfaceWords.ts, the teeth's caption), to find any left over. */
+const SURFACE_ENGLISH =
+  /\b(teeth|tooth|passes|apart|shown|continuous|sweeps|along|drawn|longer|heights?|true|scale|exaggerated|vertical|colour|above|lowest|point|simulated|cusp|against|exact|differ|within|beyond|stated|resolution|bound|cells|trace|mean|line|profilometer|marked|view|machined|coloured|simulating|the|of|by|and)\b/gi;
+
+/** The surface view's Latin words a Japanese translation keeps: the symbols, the units, the roughness' names. */
+const SURFACE_KEPT = new Set([...SHEET_KEPT, 'z', 'fz', 'x', 'Rz', 'Ra', 'Rq', '3D']);
+
+/** Every word the open Machined surface view shows or names (its texts, its elements' names), its lang and its legend's numbers. */
+const surfaceWords = (page: Page): Promise<{ lang: string; words: string; legend: string[] }> =>
+  page.getByTestId('surface-view').evaluate((v) => {
+    const texts: string[] = [];
+    const walker = document.createTreeWalker(v, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node !== null; node = walker.nextNode()) texts.push(node.nodeValue ?? '');
+    const names = [...v.querySelectorAll('[aria-label]')].map((e) => e.getAttribute('aria-label') ?? '');
+    const legend = [...v.querySelectorAll('[data-testid="surface-legend"] text')].map((t) => t.textContent ?? '');
+    return { lang: (v as HTMLElement).lang, words: [...texts, ...names].join(' '), legend };
+  });
+
+/** The 3D scene's own English words (render/drawables/parts.ts SCENE_WORDS, the arc, its name). */
+const SCENE_ENGLISH =
+  /\b(design|pseudo|plane|surface|cusp|converged|best|single|contact|arc|feed|view|tool|posture|neighbouring|passes|sections)\b/gi;
+
+/** The 3D scene's label texts and its canvas's accessible name. */
+const sceneWords = (page: Page): Promise<string> =>
+  page
+    .getByTestId('scene')
+    .evaluate((scene) =>
+      [
+        ...[...scene.querySelectorAll('.scene-labels .scene-label')].map((l) => l.textContent ?? ''),
+        scene.querySelector('canvas')?.getAttribute('aria-label') ?? '',
+      ].join(' '),
+    );
+
+/** The cross-feed profile's English words (views/profileWords.ts), to find any left over. */
+const PROFILE_ENGLISH =
+  /\b(cross|feed|adjacent|passes|vertical|scale|true|auto|zoom|reset|view|cusp|approximations|drawn|exact|compare|shapes|results|table|ring|ellipse|next|pass|cylinder|ignored|heights|exaggerated|high|arc|along|across|doubly|curved|point|section|circle|flanks|marks|radially|surface|the|of|at|on)\b/gi;
+
+/**
+ * Every word of the profile view but the procedures' names (marked English): its texts, its
+ * elements' names, its options; its lang; and its dimension labels.
+ */
+const profileWords = (page: Page): Promise<{ lang: string; words: string; dims: string[] }> =>
+  page.getByTestId('profile-view').evaluate((v) => {
+    const texts: string[] = [];
+    const walker = document.createTreeWalker(v, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node !== null; node = walker.nextNode())
+      if (node.parentElement?.closest('[lang]')?.getAttribute('lang') !== 'en') texts.push(node.nodeValue ?? '');
+    const names = [...v.querySelectorAll('[aria-label]')].map((e) => e.getAttribute('aria-label') ?? '');
+    const dims = [...v.querySelectorAll('text.dim-text')].map((t) => t.textContent ?? '');
+    return { lang: (v as HTMLElement).lang, words: [...texts, ...names].join(' '), dims };
+  });
+
 describe('the language switch (phone)', { timeout: 90_000 }, () => {
   let page: Page;
 
@@ -100,6 +152,12 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect
       .poll(() => text(page, '[data-testid="result-exact-interval"]'))
       .toBe(`${stepOver(0.05).replace('.', ',')} mm`);
+    // The scene's dimensions with a decimal comma, its own words and its name in German.
+    await expect
+      .poll(() => page.locator('.scene-labels .label-dim').first().textContent(), POLL)
+      .toBe(`L = ${stepOver(0.05).replace('.', ',')} mm`);
+    await expect.poll(() => sceneWords(page), POLL).toContain('Sollebene');
+    expect((await sceneWords(page)).match(SCENE_ENGLISH)).toBeNull();
     // The result bar mirrors the headline, in German too; the question named in German; Copy in German.
     expect(await text(page, '[data-role="bar-label"]')).toBe('Bahnabstand L');
     await expect
@@ -137,6 +195,46 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(() => text(page, '.finish-title'), POLL).toBe('Oberfläche: die Vorschubmarken der Schneiden');
     await expect.poll(() => text(page, '[data-testid="finish-hf"]'), POLL).toMatch(/^\d+,\d+ µm$/);
     expect(await text(page, '[data-testid="use-balanced-feed"]')).toBe('ausgewogenen Vorschub übernehmen');
+    // The cell map's caption and name, and the areal rows' titles, in German with decimal commas.
+    await expect
+      .poll(() => text(page, '[data-testid="finish-map-scale"]'), POLL)
+      .toMatch(/^Eine Periodenzelle, 0,10* mm in Vorschubrichtung .* Sz = \d+,\d+ µm dazwischen\./);
+    expect(await page.getByTestId('finish-map-image').getAttribute('aria-label')).toMatch(/^Höhen einer Periodenzelle/);
+    expect(await page.getByTestId('finish-areal').locator('div[title]').first().getAttribute('title')).toBe(
+      'quadratischer Mittelwert der Höhe',
+    );
+    // A refusal of the finish worker, worded on the page from its data: the bound in mm, what was typed.
+    await typeInto(page, 'input-fz', '5');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="finish-message"]'), POLL)
+      .toBe('Vorschub pro Zahn fz darf höchstens den Werkzeugradius R = 3 mm betragen (eingegeben: 5).');
+    expect(await page.getByTestId('finish-message').evaluate((e) => e.closest('[lang]')?.getAttribute('lang'))).toBe(
+      'de',
+    );
+    await typeInto(page, 'input-fz', '0,1');
+    await page.keyboard.press('Enter');
+    // The machined surface (the teeth's): its caption, scale line, legend and names in German, numbers with a comma.
+    await page.locator('#tab-surface').click();
+    await expect
+      .poll(() => text(page, '[data-testid="surface-shown"]'), POLL)
+      .toMatch(/^Die Oberfläche der Schneiden .* z = 4, fz = 0,10* mm, L = \d+,\d+ mm; /);
+    await expect
+      .poll(() => text(page, '[data-testid="surface-exaggeration"]'), POLL)
+      .toMatch(/über dem tiefsten Punkt \(µm\)\.$/);
+    const surface = await surfaceWords(page);
+    expect(surface.lang).toBe('de');
+    expect(surface.words.match(SURFACE_ENGLISH), surface.words).toBeNull();
+    expect(surface.legend.some((t) => /\d,\d/.test(t)) && !surface.legend.some((t) => /\d\.\d/.test(t))).toBe(true);
+    await page.locator('#tab-profile').click();
+    // The cross-feed profile in German: its dimensions with a decimal comma, its words, names and lang.
+    await expect
+      .poll(async () => (await profileWords(page)).dims, POLL)
+      .toContain(`L = ${stepOver(0.08).replace('.', ',')} mm`);
+    const profile = await profileWords(page);
+    expect(profile.lang).toBe('de');
+    expect(profile.words.match(PROFILE_ENGLISH), profile.words).toBeNull();
+    expect(profile.dims.filter((t) => /\d\.\d/.test(t))).toEqual([]);
     // axe on the page at rest (a view marked out of date while it redraws is greyed on purpose).
     await expect.poll(() => page.locator('.teaching').getAttribute('class'), POLL).not.toMatch(/\bstale\b/);
     await pageSettled(page);
@@ -167,6 +265,14 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       legend,
     ).toEqual([]);
     expect(await page.getByTestId('scene-legend').getAttribute('lang')).toBeNull();
+    // The scene's own labels and its name in Japanese: the surfaces' names, the symbols kept.
+    await expect.poll(() => sceneWords(page), POLL).toContain('設計平面');
+    const scene = await sceneWords(page);
+    expect(
+      latinWords(scene).filter((w) => !LEGEND_KEPT.has(w)),
+      scene,
+    ).toEqual([]);
+    expect(await page.getByTestId('scene').getAttribute('lang')).toBeNull();
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
     expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
     await pageSettled(page);
@@ -317,6 +423,27 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(() => caption.textContent(), POLL).toMatch(/^前傾角 rho \[°\] に対する L \[mm\]/);
     await tap(page, 'de');
     await expect.poll(() => caption.textContent(), POLL).toMatch(/^L \[mm\] über dem Anstellwinkel/);
+    // The machined surface simulated (no teeth given): the comparison, the trace, the scale line in German.
+    await page.locator('#tab-surface').click();
+    await expect
+      .poll(() => text(page, '[data-testid="surface-comparison"]'), { timeout: 30_000 })
+      .toMatch(/^Simulierte Kammhöhe \d+,\d+ µm gegenüber exakt \d+,\d+ µm: /);
+    const simulated = await surfaceWords(page);
+    expect(simulated.lang).toBe('de');
+    expect(simulated.words).toMatch(/Simulierter Tastschnitt, \d+ Bahnen\. Exakt: Rz \d+,\d+ µm/);
+    expect(simulated.words.match(SURFACE_ENGLISH), simulated.words).toBeNull();
+    // A switch while it is on screen words it anew.
+    await tap(page, 'ja');
+    await expect
+      .poll(() => text(page, '[data-testid="surface-comparison"]'), POLL)
+      .toMatch(/^シミュレーションのカスプ高さ /);
+    const japanese = await surfaceWords(page);
+    expect(
+      latinWords(japanese.words.replace(/µ(m|in)\b/g, '')).filter((w) => !SURFACE_KEPT.has(w)),
+      japanese.words,
+    ).toEqual([]);
+    await tap(page, 'de');
+    await expect.poll(() => text(page, '[data-testid="surface-comparison"]'), POLL).toMatch(/^Simulierte Kammhöhe /);
     await page.locator('#tab-profile').click();
     await page.locator('[data-testid="machine-switch"] input[value="3axis"]').check();
     await typeInto(page, 'input-slope', '20,5');
@@ -405,7 +532,22 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     expect(await page.getByTestId('chart-radius-summary').textContent()).toMatch(
       /^Bei Rf konvex 80 mm, Rc konvex 40 mm: L = \d+,\d{4} mm/,
     );
+    // The scene on a doubly curved point: the step-over measured along an arc, said in German.
+    await expect
+      .poll(() => page.locator('.scene-labels .label-dim').first().textContent(), POLL)
+      .toMatch(/^L = \d+,\d{4} mm \(Bogenlänge\)$/);
+    expect((await sceneWords(page)).match(SCENE_ENGLISH), await sceneWords(page)).toBeNull();
     await page.locator('#tab-profile').click();
+    // The profile at that point in German: its note, the arc, its words.
+    await expect
+      .poll(() => text(page, '[data-testid="profile-cylinder-note"]'), POLL)
+      .toMatch(/^An einem doppelt gekrümmten Punkt \(Rf konvex 80 mm in Vorschubrichtung/);
+    const curvedProfile = await profileWords(page);
+    expect(
+      curvedProfile.dims.some((t) => /^L = \d+,\d{4} mm \(Bogenlänge\)$/.test(t)),
+      curvedProfile.dims.join(' | '),
+    ).toBe(true);
+    expect(curvedProfile.words.match(PROFILE_ENGLISH), curvedProfile.words).toBeNull();
     await page.locator('input[name="surface"][value="plane"]').check();
     // Back to five axes: a flat end without lead or tilt lies flat, said in German with its L = 2R.
     await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();

@@ -27,6 +27,7 @@ describe('the scene of an answer', () => {
     const s = sceneOfReply(reply, 'mm');
     expect(s?.curvedLegend).toBe(false);
     expect(s?.labels.interval).toMatch(/^L = \d+\.\d+ mm$/);
+    expect(s?.labels.arc).toBe(false);
     expect(s?.labels.contactOffset).toMatch(/^y0 = /);
     expect(s?.labels.programmedStep).toBeUndefined();
   });
@@ -46,7 +47,9 @@ describe('the scene of an answer', () => {
     });
     const s = sceneOfReply(reply, 'mm');
     expect(s?.curvedLegend).toBe(true);
-    expect(s?.labels.interval).toMatch(/^L = \d+\.\d+ mm \(arc\)$/);
+    // Measured along an arc: the scene says so after L and L/2 (render/sceneWords.ts, in the reader's language).
+    expect(s?.labels.interval).toMatch(/^L = \d+\.\d+ mm$/);
+    expect(s?.labels.arc).toBe(true);
   });
 
   it('three-axis: Lxy for raster, dz for waterline, in inches when asked', () => {

@@ -90,6 +90,8 @@ describe('the finish job', () => {
         message: expect.stringMatching(
           /^Feed per tooth fz must be at most the tool radius R = 0\.11811 in \(got 5\)\.$/,
         ),
+        // The same as data (a page words it in its language): the bound in mm, what was typed.
+        error: { field: 'fz', code: 'too-large', got: '5', limit: 3 },
       },
     ]);
     const fractional = finish(asked(inputs({ flutes: 2.5, fz: 0.1 })));
@@ -141,6 +143,7 @@ describe("the page's finish question", () => {
     expect(finishAsk(inputs({ flutes: 4, fz: 0.1 }), cylinder)).toEqual({
       kind: 'refused',
       message: expect.stringMatching(/^Feed marks are not computed on cylinders yet: only on a plane/),
+      surface: 'cylinder',
     });
   });
 });
@@ -180,11 +183,13 @@ describe("the page's finish question beyond the five-axis plane", () => {
     expect(finishAsk(teeth, threeAxis('revolution'))).toEqual({
       kind: 'refused',
       message: expect.stringMatching(/^Feed marks are not computed on waterline passes on surfaces of revolution yet/),
+      surface: 'waterlineRevolution',
     });
     const curved = { ok: true, request: { mode: 'curved-forward' } } as unknown as PageReply;
     expect(finishAsk(teeth, curved)).toEqual({
       kind: 'refused',
       message: expect.stringMatching(/^Feed marks are not computed on doubly curved points yet/),
+      surface: 'doublyCurved',
     });
   });
 
@@ -201,6 +206,7 @@ describe("the page's finish question beyond the five-axis plane", () => {
         field: 'fz',
         message:
           'The areal parameters are not defined here: thin slivers between the passes are cut by no tooth (the bottom edges miss them); try a smaller step-over.',
+        failure: { kind: 'not-swept', part: 'areal' },
       },
     ]);
   });

@@ -141,6 +141,12 @@ describe('worker simulate job', () => {
     expect(c.ok === false && c.reason).toMatch(/planes only/);
     const flat = await simulate(fwd(0.05, { toolRadiusMm: 3, cornerRadiusMm: 0, leadAngleDeg: 0, tiltAngleDeg: 0 }));
     expect(flat.ok === false && flat.reason).toMatch(/No scallop/);
+    // Each reason also as a code, for the page to word in its language (none with input errors).
+    expect([bad, c, flat].map((r) => (r.ok ? 'ok' : (r.reasonCode ?? null)))).toEqual([
+      null,
+      'planes-only',
+      'no-scallop',
+    ]);
     for (const r of [bad, c, flat]) expect(r.ok === false && r.cancelled).toBe(false);
   });
 });

@@ -41,13 +41,19 @@ export const NOT_SWEPT = 'Some points of the period cell are cut by no tooth: th
  * any other error (which is a bug, thrown on).
  */
 export function finishFailureWords(e: unknown, part: 'areal' | 'marks'): string | null {
-  if (!(e instanceof Error)) return null;
+  const kind = finishFailureKind(e);
   const what = part === 'areal' ? 'The areal parameters' : 'The feed marks';
-  if (e.message === NOT_CONVERGED)
+  if (kind === 'not-converged')
     return `${what} could not be computed for this feed: the event search did not converge; try a smaller fz.`;
-  if (e.message === NOT_SWEPT)
+  if (kind === 'not-swept')
     return `${what} are not defined here: thin slivers between the passes are cut by no tooth (the bottom edges miss them); try a smaller step-over.`;
   return null;
+}
+
+/** Which failure of a finish part an error is (a page words it in its language), or null for any other. */
+export function finishFailureKind(e: unknown): 'not-converged' | 'not-swept' | null {
+  if (!(e instanceof Error)) return null;
+  return e.message === NOT_CONVERGED ? 'not-converged' : e.message === NOT_SWEPT ? 'not-swept' : null;
 }
 /**
  * Most steps of one walk from the contact: a few tens are usual; where Phi turns just short of a level

@@ -2,6 +2,7 @@
 import { Group, type Object3D, Vector3 } from 'three';
 import { FatLine, FatLineMaterial } from '../fatLines';
 import { LabelAnchor, legend } from '../labelLayer';
+import { SCENE_WORDS } from '../sceneWords';
 import { COLOURS, type Drawable, type DrawState, disposeObjects, MARK_LINE_PX } from './parts';
 
 /** Two unit vectors perpendicular to the unit vector `d` and to each other. */
@@ -13,10 +14,12 @@ function perpendiculars(d: Vector3): [Vector3, Vector3] {
 export class AxesDrawable implements Drawable {
   private readonly axes = legend(new Group(), 'axes');
   readonly objects: readonly Object3D[] = [this.axes];
+  /** The axes' labels, X first (its word for the feed in the reader's language). */
+  private readonly tags: LabelAnchor[] = [];
 
   constructor() {
     const specs: Array<[Vector3, number, string]> = [
-      [new Vector3(1, 0, 0), COLOURS.x, 'X (feed)'],
+      [new Vector3(1, 0, 0), COLOURS.x, SCENE_WORDS.xAxis],
       [new Vector3(0, 1, 0), COLOURS.y, 'Y'],
       [new Vector3(0, 0, 1), COLOURS.z, 'Z'],
     ];
@@ -37,11 +40,13 @@ export class AxesDrawable implements Drawable {
       tag.position.copy(dir).multiplyScalar(1.08);
       arrow.add(tag);
       this.axes.add(arrow);
+      this.tags.push(tag);
     }
   }
 
   update(s: DrawState): void {
     this.axes.scale.setScalar(1.6 * s.toolRadiusMm);
+    this.tags[0]?.setText((s.labels.words ?? SCENE_WORDS).xAxis);
   }
 
   dispose(): void {

@@ -9,6 +9,7 @@ import { type CuspGeometry, LOOP_MAX_POINTS } from '../../worker/protocol';
 import { framed } from '../framePoints';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
+import { SCENE_WORDS } from '../sceneWords';
 import {
   COLOURS,
   type Drawable,
@@ -74,20 +75,31 @@ export class CuspsDrawable implements Drawable {
   private readonly left = new CuspMarks(this.dot, 'P_hp L', 'label-php label-php-left', [-1, -0.8]);
   /** On a cylinder: the cusp points on the h pseudo surface, right and left. */
   private readonly points: readonly [Mesh, Mesh];
+  /** Their labels (the word "cusp" in the reader's language). */
+  private readonly pointLabels: LabelAnchor[] = [];
 
   constructor() {
     const point = (text: string, className: string, side: readonly [number, number]) => {
       const m = framed(markerOf(this.dot, COLOURS.pHp, 'cusp'), 'origin');
-      m.add(new LabelAnchor(text, className, side, 8));
+      const label = new LabelAnchor(text, className, side, 8);
+      this.pointLabels.push(label);
+      m.add(label);
       m.visible = false;
       return m;
     };
-    this.points = [point('cusp R', 'label-php', [1, -0.8]), point('cusp L', 'label-php label-php-left', [-1, -0.8])];
+    this.points = [
+      point(`${SCENE_WORDS.cusp} R`, 'label-php', [1, -0.8]),
+      point(`${SCENE_WORDS.cusp} L`, 'label-php label-php-left', [-1, -0.8]),
+    ];
     this.objects = [...this.points, ...this.right.objects(), ...this.left.objects()];
   }
 
   update(s: DrawState): void {
     const g = s.geometry;
+    const cusp = (s.labels.words ?? SCENE_WORDS).cusp;
+    this.pointLabels.forEach((label, i) => {
+      label.setText(`${cusp} ${i === 0 ? 'R' : 'L'}`);
+    });
     this.right.show(g.right, s);
     this.left.show(g.left, s);
     this.points.forEach((m, i) => {

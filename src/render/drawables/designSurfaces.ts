@@ -17,6 +17,7 @@ import { FatLine, FatLineMaterial } from '../fatLines';
 import { drawHeightsInPlace, drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import { PATCH_CROSS, PATCH_FEED, patchLineIndices } from '../outlineIndices';
+import { SCENE_WORDS } from '../sceneWords';
 import { COLOURS, type Drawable, type DrawState, disposeObjects, THIN_LINE_PX } from './parts';
 
 function patchMesh(color: number, opacity: number, shaded: boolean): Mesh {
@@ -78,8 +79,8 @@ export class DesignSurfacesDrawable implements Drawable {
   /** A curved patch: coloured by its shape, more opaque so that the colours read. */
   private readonly curved = legend(patchMesh(0xffffff, 0.85, true), 'design');
   private readonly hSurface = legend(patchMesh(COLOURS.hPlane, 0.14, false), 'hplane');
-  private readonly designName = new LabelAnchor('design plane', 'label-surface', [1, 1], 3);
-  private readonly hName = new LabelAnchor('h pseudo plane', 'label-hsurface', [1, -1], 3);
+  private readonly designName = new LabelAnchor(SCENE_WORDS.designPlane, 'label-surface', [1, 1], 3);
+  private readonly hName = new LabelAnchor(SCENE_WORDS.hPlane, 'label-hsurface', [1, -1], 3);
   readonly objects: readonly Object3D[] = [this.design, this.curved, this.hSurface];
 
   constructor() {
@@ -105,8 +106,9 @@ export class DesignSurfacesDrawable implements Drawable {
     };
     at(this.designName, -0.6 * L, 0);
     at(this.hName, 0.6 * L, s.geometry.scallopHeightMm);
-    this.designName.setText(curved ? 'design surface' : 'design plane');
-    this.hName.setText(curved ? 'h pseudo surface' : 'h pseudo plane');
+    const words = s.labels.words ?? SCENE_WORDS;
+    this.designName.setText(curved ? words.designSurface : words.designPlane);
+    this.hName.setText(curved ? words.hSurface : words.hPlane);
     // The curved patch carries the design surface's name while it is shown.
     const parent = curved ? this.curved : this.design;
     if (this.designName.parent !== parent) parent.add(this.designName);

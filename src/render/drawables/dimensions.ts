@@ -12,6 +12,7 @@ import { nearerEndFirst } from '../cameraFit';
 import type { FatLine } from '../fatLines';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
+import { SCENE_WORDS } from '../sceneWords';
 import {
   COLOURS,
   type Drawable,
@@ -63,8 +64,10 @@ export class DimensionsDrawable implements Drawable {
     dimension(this.half, farMm, L / 2);
     this.intervalLabel.position.fromArray(surfacePoint(surface, nearMm, L / 2, 0));
     this.halfLabel.position.fromArray(surfacePoint(surface, farMm, L / 4, tick));
-    this.intervalLabel.setText(s.labels.interval);
-    this.halfLabel.setText(s.labels.halfInterval);
+    // Measured along an arc (around a circle across the feed): said after both.
+    const arc = s.labels.arc === true ? (s.labels.words ?? SCENE_WORDS).arc : '';
+    this.intervalLabel.setText(s.labels.interval + arc);
+    this.halfLabel.setText(s.labels.halfInterval + arc);
     // y0: from the foot of O's drop to the contact, across the feed.
     const [ox, oy, oz] = g.toolCentre;
     this.offset.visible = s.labels.contactOffset !== null;

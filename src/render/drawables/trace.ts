@@ -9,6 +9,7 @@ import type { TraceFrame } from '../../worker/protocol';
 import { framed } from '../framePoints';
 import { drawnHeightMm, type HeightMap } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
+import type { SceneWordTexts } from '../sceneWords';
 import { COLOURS, disposeObjects, finishLine, lineOf, markerOf, positionsOf, SECTION_POINTS } from './parts';
 
 /** The most candidate points a frame shows. */
@@ -19,6 +20,8 @@ export interface TraceSizes {
   readonly map: HeightMap;
   readonly cornerRadiusMm: number;
   readonly toolRadiusMm: number;
+  /** The scene's words (the point's label). */
+  readonly words: SceneWordTexts;
 }
 
 export class TraceDrawable {
@@ -88,7 +91,11 @@ export class TraceDrawable {
       this.marker.position.set(px, py, drawnHeightMm(map, pz));
       this.marker.scale.setScalar(0.03 * sizes.toolRadiusMm);
       this.label.setText(
-        frame.phase === 'converged' ? 'P_hp (converged)' : frame.phase === 'search' ? 'best P_hp[i]' : 'single contact',
+        frame.phase === 'converged'
+          ? sizes.words.converged
+          : frame.phase === 'search'
+            ? sizes.words.best
+            : sizes.words.single,
       );
     }
     return true;

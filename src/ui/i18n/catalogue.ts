@@ -5,9 +5,11 @@
  * and German are typed by this shape, so a missing or an extra key fails the type check, and each
  * loads only when chosen (language.ts). Types only: no code.
  */
+import type { FinishErrorCode, FinishField } from '../../core/finish/finishInput';
 import type { PageFieldKey } from '../../core/input/fields';
 import type { AnyInputError, InputErrorCode } from '../../core/input/validate';
 import type { ThreeAxisInputError } from '../../core/threeAxis/validate';
+import type { SceneLabelTexts } from '../sceneLabels';
 
 /** The languages of the page: English (the page as written), Japanese, German. */
 export type Lang = 'en' | 'ja' | 'de';
@@ -228,6 +230,135 @@ export interface Catalogue {
   readonly radius: RadiusWords;
   /** The line over a view that does not draw a page question itself (views/curvedViewText.ts, threeAxisViewText.ts). */
   readonly viewNotes: ViewNoteWords;
+  /** The finish box's sentences the page words around the worker's answer (finishPanel.ts, finishText.ts). */
+  readonly finishText: FinishWords;
+  /** The Machined surface view's words (views/surfaceView.ts; English in views/surfaceWords.ts). */
+  readonly surface: SurfaceWords;
+  /** The 3D scene's dimension labels and accessible name (sceneLabels.ts; made by sceneText.ts). */
+  readonly scene: SceneWords;
+  /** The cross-feed profile's words (views/profileView.ts, profileDrawing.ts; English in views/profileWords.ts). */
+  readonly profile: ProfileWords;
+}
+
+/**
+ * The cross-feed profile's words (views/profileView.ts, profileDrawing.ts, profileScaleBars.ts;
+ * English in views/profileWords.ts): lengths given as text with their unit, the procedures' names
+ * kept (marked English on the page).
+ */
+export interface ProfileWords {
+  /** The plot's accessible name: on a plane, on a cylinder (its side and axis), at a doubly curved point (each radius's side). */
+  readonly plotPlane: string;
+  readonly plotCylinder: (side: 'convex' | 'concave', axis: 'feed' | 'cross') => string;
+  readonly plotCurved: (rf: 'convex' | 'concave', rc: 'convex' | 'concave') => string;
+  /** The note over a cylinder's section (its side, its radius with unit) and a doubly curved point's (each radius in words). */
+  readonly noteCylinder: (side: 'convex' | 'concave', radius: string, axis: 'feed' | 'cross') => string;
+  readonly noteCurved: (rf: string, rc: string) => string;
+  /** What the exaggeration stretches on a plane and on a curved surface, and the curvature kept. */
+  readonly heightsPlane: string;
+  readonly heightsSurface: string;
+  readonly curvatureTrue: string;
+  /** The scale line: true scale, or `heights` exaggerated k times; chosen automatically; capped (the k wanted). */
+  readonly scale: (k: number, heights: string, auto: boolean, capped: number | null, curvature: string) => string;
+  /** The exaggeration's choice: its name, automatic, true scale, k times. */
+  readonly exaggeration: string;
+  readonly auto: string;
+  readonly trueScale: string;
+  readonly vertical: (k: number) => string;
+  /** The buttons. */
+  readonly zoomIn: string;
+  readonly zoomOut: string;
+  readonly reset: string;
+  readonly cusp: string;
+  /** The note under the plot on the approximations' profiles. */
+  readonly approximations: string;
+  /** The legend: the ring ellipse, a procedure's next pass (after its name), each cylinder's. */
+  readonly ring: string;
+  readonly nextPass: string;
+  readonly cylinderAlong: string;
+  readonly cylinderAcross: string;
+  /** After L measured along an arc (with its separator); the height bar's text (its length with unit, k). */
+  readonly arc: string;
+  readonly high: (length: string, k: number) => string;
+}
+
+/** The 3D scene's words: its labels put into the language (the word "arc", the decimal sign) and its name. */
+export interface SceneWords {
+  readonly labels: (english: SceneLabelTexts) => SceneLabelTexts;
+}
+
+/** What a finish field's refusal is made of (the core's FinishError data), in the language and unit on screen. */
+export interface FinishErrorText {
+  readonly field: FinishField;
+  /** The field's name in the language. */
+  readonly label: string;
+  /** What was typed, shortened to 24 characters. */
+  readonly got: string;
+  /** The bound it broke with its unit (the locale's decimal sign), or ''. */
+  readonly limit: string;
+  /** The field's unit symbol: mm or in for fz and e, mm/min or in/min for F, rpm for n, '' else. */
+  readonly unit: string;
+  /** With rate-too-small and rate-too-large: the fz that F / (n z) gives, with its unit. */
+  readonly rateFz: string;
+  /** The most teeth accepted. */
+  readonly maxFlutes: number;
+}
+
+/**
+ * The finish box's sentences around the worker's answer (finishPanel.ts; English: the core's and
+ * the panel's own), worded on the page from the worker's data: a field's refusal by its code, why
+ * the marks could not be computed, where feed marks are not computed, a worker restarted, the
+ * areal rows' titles, the cell map's name and scale, the x3p download's lines. The worker's own
+ * reason for a restart stays English.
+ */
+export interface FinishWords {
+  readonly errors: Readonly<Record<FinishErrorCode, (t: FinishErrorText) => string>>;
+  /** The search did not converge, or thin slivers are cut by no tooth: of the feed marks or the areal parameters. */
+  readonly failure: (kind: 'not-converged' | 'not-swept', part: 'marks' | 'areal') => string;
+  /** Feed marks are not computed on this kind of surface. */
+  readonly scope: (kind: 'cylinder' | 'doublyCurved' | 'waterlineRevolution' | 'other') => string;
+  /** The finish's worker gave up or was restarted (its reason kept English). */
+  readonly worker: (gaveUp: boolean, reason: string) => string;
+  /** The areal rows' titles after Sa. */
+  readonly areal: Readonly<Record<'Sq' | 'Sz' | 'Sp' | 'Sv' | 'Ssk' | 'Sku', string>>;
+  /** The cell map's accessible name, and its caption: the period and the pass width (with units), Sz. */
+  readonly mapLabel: string;
+  readonly mapScale: (period: string, across: string, sz: string) => string;
+  /** The x3p download: computing, no file (the worker's reason, or null), the worker gave up, saved. */
+  readonly x3pComputing: string;
+  readonly x3pNone: (reason: string | null) => string;
+  readonly x3pGaveUp: (reason: string) => string;
+  readonly x3pSaved: (fileName: string, size: number) => string;
+}
+
+/**
+ * The Machined surface view's words (views/surfaceView.ts; English in views/surfaceWords.ts):
+ * lengths and heights given as text with their units, counts as numbers.
+ */
+export interface SurfaceWords {
+  /** The simulation's state: the inputs invalid, its solver gave up, running (percent done or null). */
+  readonly invalid: string;
+  readonly failed: string;
+  readonly pending: (percent: number | null) => string;
+  /** Why the worker did not simulate: not a plane, no scallop, or no reason given (another stays the worker's). */
+  readonly reasons: Readonly<Record<'planes-only' | 'no-scallop' | 'none', string>>;
+  /** The heights' scale (k null: true scale) and the colour's unit. */
+  readonly exaggeration: (k: number | null, unit: string) => string;
+  /** The simulated cusp against the exact one, their difference within or beyond the bound, the grid and passes. */
+  readonly comparison: (
+    simulated: string,
+    exact: string,
+    diff: string,
+    within: boolean,
+    bound: string,
+    cells: string,
+    passes: number,
+  ) => string;
+  /** The profilometer trace's accessible name, its caption (passes, the exact Rz, Ra, Rq) and its mean line. */
+  readonly traceLabel: string;
+  readonly traceCaption: (passes: number, rz: string, ra: string, rq: string) => string;
+  readonly meanLine: string;
+  /** The 3D view's accessible name. */
+  readonly sceneLabel: string;
 }
 
 /**

@@ -6,10 +6,14 @@
 import type { Catalogue } from './catalogue';
 import { DE_CHART } from './deChart';
 import { DE_ERRORS } from './deErrors';
+import { DE_FINISH } from './deFinish';
+import { DE_PROFILE } from './deProfile';
 import { DE_RADIUS } from './deRadius';
 import { DE_SHEET } from './deSheet';
 import { DE_SLOPE } from './deSlope';
+import { DE_SURFACE } from './deSurface';
 import { DE_THREE_AXIS } from './deThreeAxis';
+import { sceneWordsIn } from './sceneText';
 
 export const catalogue: Catalogue = {
   lang: 'de',
@@ -264,6 +268,25 @@ export const catalogue: Catalogue = {
   chart: DE_CHART,
   slope: DE_SLOPE,
   radius: DE_RADIUS,
+  finishText: DE_FINISH,
+  surface: DE_SURFACE,
+  profile: DE_PROFILE,
+  scene: sceneWordsIn(
+    'de',
+    ' (Bogenlänge)',
+    '3D-Ansicht des Werkzeugs in seiner Anstellung, der benachbarten Bahnen und der Kammschnitte',
+    {
+      designPlane: 'Sollebene',
+      designSurface: 'Sollfläche',
+      hPlane: 'h-Pseudoebene',
+      hSurface: 'h-Pseudofläche',
+      cusp: 'Kamm',
+      converged: 'P_hp (konvergiert)',
+      best: 'bestes P_hp[i]',
+      single: 'einziger Kontakt',
+      xAxis: 'X (Vorschub)',
+    },
+  ),
   viewNotes: {
     curved: {
       tables: 'Die Tabellen der Studie gelten für deren eigene Bedingungen, auf einer Ebene',

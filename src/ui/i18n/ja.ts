@@ -6,10 +6,14 @@
 import type { Catalogue } from './catalogue';
 import { JA_CHART } from './jaChart';
 import { JA_ERRORS } from './jaErrors';
+import { JA_FINISH } from './jaFinish';
+import { JA_PROFILE } from './jaProfile';
 import { JA_RADIUS } from './jaRadius';
 import { JA_SHEET } from './jaSheet';
 import { JA_SLOPE } from './jaSlope';
+import { JA_SURFACE } from './jaSurface';
 import { JA_THREE_AXIS } from './jaThreeAxis';
+import { sceneWordsIn } from './sceneText';
 
 export const catalogue: Catalogue = {
   lang: 'ja',
@@ -247,6 +251,20 @@ export const catalogue: Catalogue = {
   chart: JA_CHART,
   slope: JA_SLOPE,
   radius: JA_RADIUS,
+  finishText: JA_FINISH,
+  surface: JA_SURFACE,
+  profile: JA_PROFILE,
+  scene: sceneWordsIn('ja', '（円弧）', '工具の姿勢、隣り合うパスとカスプの断面の 3D 表示', {
+    designPlane: '設計平面',
+    designSurface: '設計曲面',
+    hPlane: 'h 擬似平面',
+    hSurface: 'h 擬似曲面',
+    cusp: 'カスプ',
+    converged: 'P_hp（収束）',
+    best: '最良の P_hp[i]',
+    single: '単一接触',
+    xAxis: 'X（送り）',
+  }),
   viewNotes: {
     curved: {
       tables: '論文の表は論文自身の条件（平面）のものです',

@@ -54,7 +54,7 @@ export function chooseLang(
  * keeps stays (no rounding, no grouping separator: the number may be pasted into CAM). Copy and
  * the link keep the point (copy.ts's data-copy, state.ts).
  */
-export function localDecimal(text: string, catalogue: Catalogue | null): string {
+export function localDecimal(text: string, catalogue: Pick<Catalogue, 'lang'> | null): string {
   const sign =
     catalogue === null
       ? '.'

@@ -21,9 +21,12 @@ export function loadCatalogue(lang: Lang): Promise<Catalogue | null> {
   return Promise.resolve(null);
 }
 
-/** The parts of the page that stay in English in another language (their `lang` says so). */
+/**
+ * The parts of the page that stay in English in another language (their `lang` says so): the
+ * teaching views (the translated ones carry their own lang), the target-Sa box's worker messages.
+ */
 const ENGLISH_PARTS =
-  '.teaching, .table-notes, .procedures thead, .notices, .finish-message, .finish-map figcaption, .meaning, .scene';
+  '.teaching, .table-notes, .procedures thead, .notices, [data-testid="target-sa-message"], .meaning';
 
 /** The page's English words of its `data-i18n` elements, read once before any language replaces them. */
 const ENGLISH = new WeakMap<Element, string>();

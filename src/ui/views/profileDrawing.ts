@@ -26,6 +26,7 @@ import { svg, type TeachOk } from './common';
 import { addLabel } from './profileLabels';
 import { type Box, homeBox, type ProfileLayout } from './profileLayout';
 import { SCALE_ROOM } from './profileScaleBars';
+import { profileWords } from './profileWords';
 
 /** What is drawn: one pass's profile on a surface (the worker's data, in surface coordinates). */
 export interface ProfileSection {
@@ -356,7 +357,7 @@ function drawDimensions(
     dimension(0, right.yMm, widthsLine, widthsText, 'widths', `wR = ${f(right.yMm)}`);
     dimension(left.yMm, 0, widthsLine, widthsText, 'widths', `wL = ${f(-left.yMm)}`);
   }
-  const arc = Number.isFinite(sectionRadiusMm(section.surface)) ? ' (arc)' : '';
+  const arc = Number.isFinite(sectionRadiusMm(section.surface)) ? profileWords().arc : '';
   dimension(0, L, intervalLine, intervalText, 'interval', `L = ${f(L)}${arc}`);
   let topY = Number.POSITIVE_INFINITY;
   if (y0 !== 0) {

@@ -6,6 +6,8 @@
  * inside the box and draws their halos. The drawing places the rows themselves, below the surface,
  * where no curve runs (profileDrawing.ts).
  */
+import { localDecimal } from '../i18n/langChoice';
+import { catalogue } from '../i18n/words';
 import { svg } from './common';
 import type { Box } from './profileLayout';
 
@@ -39,7 +41,8 @@ export function addLabel(
   text.dataset.anchorX = String(x);
   text.dataset.align = options.align ?? 'middle';
   if (options.row) text.dataset.row = options.row;
-  text.textContent = label;
+  // Its numbers with the decimal sign of the language in force (every digit kept).
+  text.textContent = localDecimal(label, catalogue());
   group.append(halo, text);
   parent.append(group);
   return text as SVGTextElement;

@@ -8,6 +8,7 @@ import type { Unit } from '../state';
 import { svg } from './common';
 import { addLabel } from './profileLabels';
 import type { Box } from './profileLayout';
+import { profileWords } from './profileWords';
 
 /**
  * Draws the bars into `group` (emptied first) for the box `b` shown in a plot of height over width
@@ -58,7 +59,7 @@ export function drawScaleBars(
       class: 'scale-line',
     }),
   );
-  addLabel(group, x + tick, yBase - 0.1 * fontSize, `${up.text} high (drawn x${k})`, {
+  addLabel(group, x + tick, yBase - 0.1 * fontSize, profileWords().high(up.text, k), {
     align: 'start',
     cls: 'dim-text scale-text',
     testId: 'profile-scale-bar-z',

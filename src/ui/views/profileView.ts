@@ -27,6 +27,8 @@ import {
 import type { Surface } from '../../core/surfaces/cylinder';
 import type { ExactSummary, ProfileCurveSet } from '../../worker/protocol';
 import { formatLenUnit } from '../format';
+import { localDecimal } from '../i18n/langChoice';
+import { catalogue } from '../i18n/words';
 import type { Unit } from '../state';
 import {
   html,
@@ -42,6 +44,7 @@ import { curvedProfileSection, drawProfile, LABELS_DEPTH, type ProfileSection, p
 import { placeLabels } from './profileLabels';
 import { type Box, grownHeightPx, type PlotRoom, profileLayout } from './profileLayout';
 import { PanZoom } from './profilePanZoom';
+import { profileWords } from './profileWords';
 import './profile.css';
 import { drawScaleBars } from './profileScaleBars';
 
@@ -58,24 +61,21 @@ interface SurfaceWords {
   readonly trueScale: string;
 }
 
+/** A text with the language in force's decimal sign. */
+function local(text: string): string {
+  return localDecimal(text, catalogue());
+}
+
 function surfaceWords(surface: Surface, unit: Unit): SurfaceWords {
-  if (surface.kind === 'plane')
-    return {
-      ariaLabel: 'Cross-feed profile of three adjacent passes',
-      note: null,
-      heights: 'vertical scale',
-      trueScale: '',
-    };
-  const feed = surface.axis === 'feed';
-  const abs = Math.abs(surface.radiusMm);
+  const w = profileWords();
+  if (surface.kind === 'plane') return { ariaLabel: w.plotPlane, note: null, heights: w.heightsPlane, trueScale: '' };
+  const axis = surface.axis;
   const side = surface.radiusMm > 0 ? 'convex' : 'concave';
   return {
-    ariaLabel: `Cross-feed profile of three adjacent passes on a ${side} cylinder, axis ${feed ? 'along' : 'across'} the feed`,
-    note: feed
-      ? `On a ${side} cylinder of radius ${formatLenUnit(abs, unit)}, axis along the feed: each pass leaves the plane profile, the next one turned about the cylinder's axis by L/|Rs|; L is measured along the arc. Heights radially, from the surface.`
-      : `On a ${side} cylinder of radius ${formatLenUnit(abs, unit)}, axis across the feed: this section through the cylinder's axis shows the surface straight; each pass is the tool revolved about the axis (its profile is not the plane's), the next one stepped L along the axis. Heights radially, from the surface.`,
-    heights: 'heights above the surface',
-    trueScale: "; the surface's curvature at true scale",
+    ariaLabel: w.plotCylinder(side, axis),
+    note: local(w.noteCylinder(side, formatLenUnit(Math.abs(surface.radiusMm), unit), axis)),
+    heights: w.heightsSurface,
+    trueScale: w.curvatureTrue,
   };
 }
 
@@ -103,13 +103,14 @@ const NO_APPROXIMATIONS: ProfileCurveSet['approximations'] = {
 
 /** How the view words a doubly curved point's section. */
 function curvedWords(feedRadiusMm: number, crossRadiusMm: number, unit: Unit): SurfaceWords {
+  const w = profileWords();
   const side = (r: number) => (r > 0 ? 'convex' : 'concave');
-  const words = (r: number) => radiusWords(r, unit);
+  const words = (r: number) => radiusWords(r, unit, catalogue()?.radius);
   return {
-    ariaLabel: `Cross-feed profile of three adjacent passes at a doubly curved point (Rf ${side(feedRadiusMm)}, Rc ${side(crossRadiusMm)})`,
-    note: `At a doubly curved point (Rf ${words(feedRadiusMm)} along the feed, Rc ${words(crossRadiusMm)} across it): the section across the feed is the circle of radius |Rc|; each pass leaves the section its two flanks make seen from the main axis, the next one turned about it by L/|Rc|; L is measured along the arc. The marks show where the plane's answer, each cylinder's and the corrected procedures put the next pass. Heights radially, from the surface.`,
-    heights: 'heights above the surface',
-    trueScale: "; the surface's curvature at true scale",
+    ariaLabel: w.plotCurved(side(feedRadiusMm), side(crossRadiusMm)),
+    note: local(w.noteCurved(words(feedRadiusMm), words(crossRadiusMm))),
+    heights: w.heightsSurface,
+    trueScale: w.curvatureTrue,
   };
 }
 
@@ -143,17 +144,20 @@ export class ProfileView implements TeachingView {
   private pageCtx: PageViewContext | null = null;
   readonly pageKinds: readonly PageKind[] = ['curved'];
 
+  /** The buttons, the note on the approximations and the legend's words (worded by speak). */
+  private readonly zoomIn = html('button', { type: 'button' }, '+');
+  private readonly zoomOut = html('button', { type: 'button' }, '\u2212');
+  private readonly reset = html('button', { type: 'button', 'data-testid': 'profile-reset' });
+  private readonly cusp = html('button', { type: 'button', 'data-testid': 'profile-cusp' });
+  private readonly approxNote = html('p', { class: 'view-note plane-model', 'data-testid': 'profile-approx-note' });
+
   constructor() {
-    this.exaggeration.append(html('option', { value: 'auto' }, 'vertical: auto'));
-    for (const k of [1, 5, 20, 100])
-      this.exaggeration.append(html('option', { value: String(k) }, k === 1 ? 'true scale' : `vertical x${k}`));
+    this.exaggeration.append(html('option', { value: 'auto' }));
+    for (const k of [1, 5, 20, 100]) this.exaggeration.append(html('option', { value: String(k) }));
     this.exaggeration.value = 'auto';
     this.exaggeration.addEventListener('change', () => this.redraw());
     const tools = html('div', { class: 'view-tools' });
-    const zoomIn = html('button', { type: 'button', 'aria-label': 'Zoom in' }, '+');
-    const zoomOut = html('button', { type: 'button', 'aria-label': 'Zoom out' }, '\u2212');
-    const reset = html('button', { type: 'button', 'data-testid': 'profile-reset' }, 'Reset view');
-    const cusp = html('button', { type: 'button', 'data-testid': 'profile-cusp' }, 'Zoom to cusp');
+    const { zoomIn, zoomOut, reset, cusp } = this;
     zoomIn.addEventListener('click', () => this.panZoom.zoom(0.5));
     zoomOut.addEventListener('click', () => this.panZoom.zoom(2));
     reset.addEventListener('click', () => this.panZoom.show(this.panZoom.home));
@@ -161,13 +165,35 @@ export class ProfileView implements TeachingView {
     tools.append(this.exaggeration, zoomIn, zoomOut, cusp, reset, this.scaleNote);
     this.plot.append(this.layer, this.bars);
     this.surfaceNote.hidden = true;
-    const approxNote = html(
-      'p',
-      { class: 'view-note plane-model', 'data-testid': 'profile-approx-note' },
-      "The approximations' profiles are drawn at the exact step-over L (at each pass the exact answer puts), to compare their shapes with the exact profile; the step-over each of them gives is in the results table.",
-    );
-    this.element.append(tools, this.surfaceNote, this.plot, this.legend(), approxNote);
+    this.element.append(tools, this.surfaceNote, this.plot, this.legend(), this.approxNote);
+    this.speak();
     this.plotObserver.observe(this.plot);
+  }
+
+  /**
+   * The view's fixed words in the language in force (the procedures' names stay English, marked
+   * so), and its `lang` (its part of the views, English otherwise).
+   */
+  private speak(): void {
+    const w = profileWords();
+    const text = (e: Element, t: string) => {
+      if (e.textContent !== t) e.textContent = t;
+    };
+    this.exaggeration.setAttribute('aria-label', w.exaggeration);
+    for (const option of this.exaggeration.options) {
+      const k = Number(option.value);
+      text(option, option.value === 'auto' ? w.auto : k === 1 ? w.trueScale : local(w.vertical(k)));
+    }
+    this.zoomIn.setAttribute('aria-label', w.zoomIn);
+    this.zoomOut.setAttribute('aria-label', w.zoomOut);
+    text(this.reset, w.reset);
+    text(this.cusp, w.cusp);
+    text(this.approxNote, w.approximations);
+    for (const e of this.element.querySelectorAll<HTMLElement>('[data-word]'))
+      text(e, w[e.dataset.word as 'ring' | 'nextPass' | 'cylinderAlong' | 'cylinderAcross']);
+    const lang = catalogue()?.lang;
+    if (lang === undefined) this.element.removeAttribute('lang');
+    else this.element.lang = lang;
   }
 
   /** The plot's width as last laid out (px; 0 before it is), and its height as the stylesheet sets it. */
@@ -226,28 +252,28 @@ export class ProfileView implements TeachingView {
         class: key === 'exact' ? 'legend-item' : 'legend-item plane-model',
         'data-procedure': key,
       });
-      item.append(html('span', { class: 'swatch' }), document.createTextNode(PROCEDURES[key].shortLabel));
+      item.append(html('span', { class: 'swatch' }), html('span', { lang: 'en' }, PROCEDURES[key].shortLabel));
       legend.append(item);
     }
+    // The words (data-word: ProfileWords' keys) are written by speak().
+    const word = (key: string) => html('span', { 'data-word': key });
     const ring = html('span', { class: 'legend-item plane-model' });
-    ring.append(html('span', { class: 'swatch swatch-faint' }), document.createTextNode('ring ellipse (a = Rb, b)'));
+    ring.append(html('span', { class: 'swatch swatch-faint' }), word('ring'));
     legend.append(ring);
     // On a cylinder: where the plane's answer and the corrected procedures put the next pass.
     for (const key of CURVATURE_ROW_KEYS) {
       const item = html('span', { class: 'legend-item cylinder-only', 'data-curvature': key });
       item.append(
         html('span', { class: 'swatch' }),
-        document.createTextNode(`${CURVATURE_ROWS[key].shortLabel}: next pass`),
+        html('span', { lang: 'en' }, CURVATURE_ROWS[key].shortLabel),
+        word('nextPass'),
       );
       legend.append(item);
     }
     // At a doubly curved point: where each cylinder's answer puts the next pass.
-    for (const [key, label] of [
-      ['cylinderAlong', 'Cylinder along the feed (Rf ignored)'],
-      ['cylinderAcross', 'Cylinder across the feed (Rc ignored)'],
-    ] as const) {
+    for (const key of ['cylinderAlong', 'cylinderAcross'] as const) {
       const item = html('span', { class: 'legend-item cylinder-only', 'data-curvature': key });
-      item.append(html('span', { class: 'swatch' }), document.createTextNode(`${label}: next pass`));
+      item.append(html('span', { class: 'swatch' }), word(key), word('nextPass'));
       legend.append(item);
     }
     return legend;
@@ -293,6 +319,7 @@ export class ProfileView implements TeachingView {
 
   private draw(input: Drawable): void {
     const { section, words, unit } = input;
+    this.speak();
     const comparing = section.comparison.length > 0;
     const keys = new Set(section.comparison.map((c) => c.key));
     this.element.classList.toggle('on-cylinder', section.surface.kind !== 'plane');
@@ -361,10 +388,15 @@ export class ProfileView implements TeachingView {
     }
     this.panZoom.home = drawn.home;
     this.panZoom.show(drawn.home);
-    const auto = this.exaggeration.value === 'auto' ? ' (auto)' : '';
-    const capped = k < wanted ? ` (x${wanted} would fold the trough over)` : '';
-    this.scaleNote.textContent =
-      k === 1 ? `true scale${auto}${capped}` : `${words.heights} exaggerated x${k}${auto}${capped}${words.trueScale}`;
+    this.scaleNote.textContent = local(
+      profileWords().scale(
+        k,
+        words.heights,
+        this.exaggeration.value === 'auto',
+        k < wanted ? wanted : null,
+        words.trueScale,
+      ),
+    );
     this.highlight(this.highlighted);
   }
 

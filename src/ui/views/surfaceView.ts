@@ -20,12 +20,15 @@ import type { SimulateReply } from '../../worker/simulate';
 import { feedLength } from '../finishLength';
 import { formatLenUnit, formatRoughness } from '../format';
 import type { Shown } from '../freshness';
-import { catalogue, localize } from '../i18n/words';
+import type { SurfaceWords } from '../i18n/catalogue';
+import { localDecimal } from '../i18n/langChoice';
+import { catalogue, describeError, localize } from '../i18n/words';
 import type { SurfaceDisplay } from '../simulation';
 import type { Unit } from '../state';
 import { onTeethSurface, type TeethShown } from '../teethMap';
 import { onThemeChange } from '../theme';
 import { html, svg, type TeachingView } from './common';
+import { EN_SURFACE } from './surfaceWords';
 import './surface.css';
 
 type SimulateOk = Extract<SimulateReply, { ok: true }>;
@@ -44,12 +47,30 @@ const PAD = { left: 8, right: 150, top: 14, bottom: 18 };
  * The comparison line: simulated against exact cusp, and the stated bound, each a length with its
  * unit as the results give lengths (format.ts: µm or thou when small, never exponent notation).
  */
-export function comparisonText(reply: SimulateOk, unit: Unit): string {
+export function comparisonText(reply: SimulateOk, unit: Unit, words: SurfaceWords = EN_SURFACE): string {
   const s = reply.simulation;
   const fine = (mm: number) => formatLenUnit(mm, unit, 'fine');
   const diff = Math.abs(s.cuspHeightMm - reply.exact.cuspHeightMm);
   const within = diff <= s.resolutionBoundMm;
-  return `Simulated cusp ${fine(s.cuspHeightMm)} against exact ${fine(reply.exact.cuspHeightMm)}: they differ by ${fine(diff)}, ${within ? 'within' : 'beyond'} the stated resolution bound ${fine(s.resolutionBoundMm)} (${s.cellsAcross} x ${s.cellsAlong} cells, ${s.passes} passes).`;
+  return words.comparison(
+    fine(s.cuspHeightMm),
+    fine(reply.exact.cuspHeightMm),
+    fine(diff),
+    within,
+    fine(s.resolutionBoundMm),
+    `${s.cellsAcross} x ${s.cellsAlong}`,
+    s.passes,
+  );
+}
+
+/** The view's words in the language in force (English: surfaceWords.ts). */
+function words(): SurfaceWords {
+  return catalogue()?.surface ?? EN_SURFACE;
+}
+
+/** A text with the language in force's decimal sign. */
+function local(text: string): string {
+  return localDecimal(text, catalogue());
 }
 
 export class SurfaceView implements TeachingView, SurfaceDisplay {
@@ -71,7 +92,7 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     'data-testid': 'surface-trace',
     viewBox: `0 0 ${TRACE_W} ${TRACE_H}`,
     role: 'img',
-    'aria-label': 'Profilometer trace across the passes with Rz, Ra and Rq marked',
+    'aria-label': EN_SURFACE.traceLabel,
   });
   private readonly comparison = html('p', { class: 'view-note', 'data-testid': 'surface-comparison' });
   private scene: SurfaceScene | null = null;
@@ -82,6 +103,8 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
   private visible = false;
   /** The simulation's last state told (drawn again when the teeth's surface goes). */
   private told: { shown: Shown<SimulateReply>; unit: Unit; progress: number | null } | null = null;
+  /** The language the view's words were last written in ('en': English). */
+  private wordedIn = 'en';
 
   constructor(private readonly source: SurfaceSource) {
     this.element.append(
@@ -105,8 +128,32 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     });
   }
 
-  /** The teaching data is not used: the view follows the simulation's own replies. */
-  update(): void {}
+  /**
+   * The teaching data is not used: the view follows the simulation's own replies. Called again on a
+   * language switch (panel.ts relabel): the view's words are written anew in the language in force.
+   */
+  update(): void {
+    const lang = catalogue()?.lang ?? 'en';
+    if (lang === this.wordedIn) return;
+    this.wordedIn = lang;
+    this.speak();
+    if (this.teeth !== null) this.drawTeeth(this.teeth);
+    else if (this.told !== null) {
+      const { shown, unit, progress } = this.told;
+      if (this.drawn !== null) this.drawReply(this.drawn.reply, this.drawn.unit, true);
+      this.show(shown, unit, progress);
+    } else this.caption(null);
+  }
+
+  /** The view's fixed words (its names) in the language in force, and its `lang` (its part of the views). */
+  private speak(): void {
+    const w = words();
+    this.trace.setAttribute('aria-label', w.traceLabel);
+    this.sceneBox.querySelector('canvas')?.setAttribute('aria-label', w.sceneLabel);
+    const lang = catalogue()?.lang;
+    if (lang === undefined) this.element.removeAttribute('lang');
+    else this.element.lang = lang;
+  }
 
   highlight(_key: ProcedureKey | null): void {}
 
@@ -114,6 +161,7 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     if (visible && this.scene === null) {
       const scene = new SurfaceScene(this.sceneBox);
       this.scene = scene;
+      this.speak();
       scene.applyTheme();
       onThemeChange(() => scene.applyTheme());
     }
@@ -137,19 +185,22 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     const current = shown.kind === 'current' ? shown.reply : null;
     this.element.classList.toggle('stale', current === null || !current.ok);
     this.element.setAttribute('aria-busy', String(shown.kind === 'pending'));
+    const w = words();
     let text = '';
-    if (shown.kind === 'invalid') text = 'Out of date: the inputs are invalid, so there is nothing to simulate.';
-    else if (shown.kind === 'failed') text = 'No simulation: its solver gave up; change any input to try again.';
-    else if (shown.kind === 'pending')
-      text = `Simulating the passes${progress === null ? '' : `: ${Math.round(100 * progress)} %`}...`;
+    if (shown.kind === 'invalid') text = w.invalid;
+    else if (shown.kind === 'failed') text = w.failed;
+    else if (shown.kind === 'pending') text = w.pending(progress === null ? null : Math.round(100 * progress));
     else if (current && !current.ok)
       text =
-        current.reason ??
-        (current.errors.length > 0 ? current.errors.map((e) => e.message).join(' ') : 'No simulation.');
+        current.reason === null && current.errors.length > 0
+          ? current.errors.map((e) => describeError(e, unit)).join(' ')
+          : current.reasonCode !== undefined
+            ? w.reasons[current.reasonCode]
+            : (current.reason ?? w.reasons.none);
     if (this.status.textContent !== text) this.status.textContent = text;
     this.status.hidden = text === '';
     if (current?.ok) {
-      this.comparison.textContent = comparisonText(current, unit);
+      this.comparison.textContent = local(comparisonText(current, unit, w));
       this.drawReply(current, unit, false);
     } else {
       // Never a number that does not answer the inputs on screen.
@@ -175,11 +226,14 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
       const u = teeth.unit;
       parts.push(
         phrase("The teeth's surface (z teeth, fz per tooth, passes L apart; feed periods x pass periods shown):"),
-        ` z = ${t.flutes}, fz = ${feedLength(t.feedPerToothMm, u)}, L = ${feedLength(t.intervalMm, u)}; ${t.feedPeriods} x ${t.crossPeriods}.`,
+        local(
+          ` z = ${t.flutes}, fz = ${feedLength(t.feedPerToothMm, u)}, L = ${feedLength(t.intervalMm, u)}; ${t.feedPeriods} x ${t.crossPeriods}.`,
+        ),
       );
-      if (stretch > 1) parts.push(' ', phrase('Along the feed, lengths drawn longer by'), ` x${stretch}.`);
+      if (stretch > 1) parts.push(' ', phrase('Along the feed, lengths drawn longer by'), local(` x${stretch}.`));
     }
-    const key = parts.map((p) => (typeof p === 'string' ? p : p.textContent)).join('');
+    // Its words follow the language: the key holds the language in force too.
+    const key = `${catalogue()?.lang ?? 'en'} ${parts.map((p) => (typeof p === 'string' ? p : p.textContent)).join('')}`;
     if (this.shownCaption.dataset.english === key) return;
     this.shownCaption.dataset.english = key;
     this.shownCaption.replaceChildren(...parts);
@@ -206,9 +260,9 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     this.status.hidden = true;
     this.comparison.textContent = '';
     const k = autoExaggeration(Math.max(drawn.alongLengthMm, across), t.szMm, 0.12);
-    const colour = `colour: height above the lowest point (${roughnessUnit(teeth.unit).symbol}).`;
-    this.exaggerationNote.textContent =
-      k === 1 ? `Heights at true scale; ${colour}` : `Heights exaggerated x${k} (vertical exaggeration); ${colour}`;
+    this.exaggerationNote.textContent = local(
+      words().exaggeration(k === 1 ? null : k, roughnessUnit(teeth.unit).symbol),
+    );
     if (this.scene && !this.element.closest('[hidden]'))
       this.scene.update(drawn, k, { maxRows: t.cellsAlong, range: { lowMm: t.lowestMm, spanMm: t.szMm } });
     this.drawLegend(t.szMm, teeth.unit);
@@ -227,9 +281,7 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     }
     const span = Number.isFinite(hi - lo) ? hi - lo : 0;
     const k = autoExaggeration(size, span, 0.12);
-    const colour = `colour: height above the lowest point (${roughnessUnit(unit).symbol}).`;
-    this.exaggerationNote.textContent =
-      k === 1 ? `Heights at true scale; ${colour}` : `Heights exaggerated x${k} (vertical exaggeration); ${colour}`;
+    this.exaggerationNote.textContent = local(words().exaggeration(k === 1 ? null : k, roughnessUnit(unit).symbol));
     if (this.scene && !this.element.closest('[hidden]')) this.scene.update(s, k);
     this.drawLegend(span, unit);
     this.drawTrace(reply, unit);
@@ -253,9 +305,9 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     this.legend.replaceChildren(
       defs,
       bar,
-      label(10, 'start', formatRoughness(0, unit)),
-      label(180, 'middle', formatRoughness(spanMm / 2, unit)),
-      label(350, 'end', formatRoughness(spanMm, unit)),
+      label(10, 'start', local(formatRoughness(0, unit))),
+      label(180, 'middle', local(formatRoughness(spanMm / 2, unit))),
+      label(350, 'end', local(formatRoughness(spanMm, unit))),
     );
   }
 
@@ -289,7 +341,8 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     for (let j = 0; j < n; j++)
       points.push(`${X(t[2 * j] as number).toFixed(1)},${Z(t[2 * j + 1] as number).toFixed(1)}`);
     // Roughness as the results' rows give it (format.ts: µm in mm, µin in inch).
-    const fine = (mm: number) => formatRoughness(mm, unit);
+    const fine = (mm: number) => local(formatRoughness(mm, unit));
+    const said = words();
     const r = s.roughness;
     const e = reply.exact.roughness;
     const line = (z: number, cls: string) =>
@@ -301,7 +354,7 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
     };
     const m = r.meanMm;
     const caption = svg('text', { x: PAD.left, y: TRACE_H - 4, class: 'trace-caption' });
-    caption.textContent = `Simulated trace, ${s.passes} passes. Exact: Rz ${fine(e.rzMm)}, Ra ${fine(e.raMm)}, Rq ${fine(e.rqMm)}`;
+    caption.textContent = said.traceCaption(s.passes, fine(e.rzMm), fine(e.raMm), fine(e.rqMm));
     this.trace.replaceChildren(
       line(zHi, 'rz'),
       line(zLo, 'rz'),
@@ -314,7 +367,7 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
       text(zHi, 'rz', `Rz ${fine(r.rzMm)}`, 10),
       text(m + r.rqMm, 'rq', `Rq ${fine(r.rqMm)}`, -3),
       text(m + r.raMm, 'ra', `Ra ${fine(r.raMm)}`, 11),
-      text(m, 'mean', 'mean line'),
+      text(m, 'mean', said.meanLine),
       caption,
     );
   }

@@ -6,7 +6,7 @@
  * output/x3p.ts, the notes' grid). Loaded by the worker on the first finish question, so neither
  * the page's nor the worker's first script grows.
  */
-import { finishFailureWords } from '../../core/finish/envelope';
+import { finishFailureKind, finishFailureWords } from '../../core/finish/envelope';
 import { describeFinishError } from '../../core/finish/finishInput';
 import {
   arealMap,
@@ -30,9 +30,11 @@ export function finish(request: FinishRequest): FinishReply {
     return answer(request);
   } catch (e) {
     // A search that did not converge (or a surface left undefined): one line on the feed, not a crash.
-    const message = finishFailureWords(e, request.x3p === undefined && request.part !== 'areal' ? 'marks' : 'areal');
-    if (message === null) throw e;
-    return { ok: false, request, errors: [{ field: 'fz', message }] };
+    const part = request.x3p === undefined && request.part !== 'areal' ? 'marks' : 'areal';
+    const message = finishFailureWords(e, part);
+    const kind = finishFailureKind(e);
+    if (message === null || kind === null) throw e;
+    return { ok: false, request, errors: [{ field: 'fz', message, failure: { kind, part } }] };
   }
 }
 
@@ -53,7 +55,8 @@ function answer(request: FinishRequest): FinishReply {
   if (!checked.ok) {
     const errors = checked.errors.map((e) => {
       const typed = request.typed[e.field].trim();
-      return { field: e.field, message: describeFinishError(typed === '' ? e : { ...e, got: typed }, request.unit) };
+      const { message: _english, ...data } = typed === '' ? e : { ...e, got: typed };
+      return { field: e.field, message: describeFinishError(data, request.unit), error: data };
     });
     return { ok: false, request, errors };
   }

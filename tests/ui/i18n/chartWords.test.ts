@@ -7,7 +7,7 @@
  * every number given said.
  */
 import { describe, expect, it } from 'vitest';
-import type { ChartWords, RadiusWords, SlopeWords, ViewNoteWords } from '../../../src/ui/i18n/catalogue';
+import type { ChartWords, ProfileWords, RadiusWords, SlopeWords, ViewNoteWords } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
 
@@ -97,9 +97,43 @@ function noteTexts(n: ViewNoteWords): string[] {
   ];
 }
 
-const KEPT = new Set('L h R D Rcr rho beta alpha psi Lxy Lxy0 dz mm in CAM Z T V N S Rf Rc'.split(' '));
+/** The cross-feed profile's words (views/profileWords.ts), every variant. */
+function profileTexts(p: ProfileWords): string[] {
+  return [
+    p.plotPlane,
+    p.plotCylinder('convex', 'feed'),
+    p.plotCylinder('concave', 'cross'),
+    p.plotCurved('convex', 'concave'),
+    p.noteCylinder('convex', '30 mm', 'feed'),
+    p.noteCylinder('concave', '30 mm', 'cross'),
+    p.noteCurved('R1', 'R2'),
+    p.heightsPlane,
+    p.heightsSurface,
+    p.curvatureTrue,
+    p.scale(1, p.heightsPlane, true, 20, ''),
+    p.scale(5, p.heightsSurface, false, null, p.curvatureTrue),
+    p.scale(5, p.heightsPlane, true, 20, ''),
+    p.exaggeration,
+    p.auto,
+    p.trueScale,
+    p.vertical(20),
+    p.zoomIn,
+    p.zoomOut,
+    p.reset,
+    p.cusp,
+    p.approximations,
+    p.ring,
+    p.nextPass,
+    p.cylinderAlong,
+    p.cylinderAcross,
+    p.arc,
+    p.high('0.01 mm', 20),
+  ];
+}
+
+const KEPT = new Set('L h R D Rcr rho beta alpha psi Lxy Lxy0 dz mm in CAM Z T V N S Rf Rc Rs Rb a b R1 R2'.split(' '));
 const ENGLISH =
-  /\b(against|lead|tilt|fixed|dashed|dotted|current|error|axis|angle|signed|approximation|along|length|at|deg|slope|step|scallop|programmed|constant|leaves|raster|waterline|flat|floor|above|below|cross|larger|of|the|no|and|on|cylinder|answer|from|to|convex|concave|straight|held|log|gouging|limit|posture|paper|tables|plane|view|upright|frame|simulated|drawn|point|results)\b/i;
+  /\b(against|lead|tilt|fixed|dashed|dotted|current|error|axis|angle|signed|approximation|along|length|at|deg|slope|step|scallop|programmed|constant|leaves|raster|waterline|flat|floor|above|below|cross|larger|of|the|no|and|on|cylinder|answer|from|to|convex|concave|straight|held|log|gouging|limit|posture|paper|tables|plane|view|upright|frame|simulated|drawn|point|results|exaggerated|vertical|zoom|reset|ellipse|next|pass|ignored|scale|heights|radially|section|circle|flanks|true|auto|fold|trough|high|approximations|compare|shapes|turned|measured|revolved|stepped|marks|corrected|adjacent|passes|arc)\b/i;
 
 describe("the teaching charts' words", () => {
   for (const [name, c] of [
@@ -112,6 +146,7 @@ describe("the teaching charts' words", () => {
         ...slopeTexts(c.slope),
         ...radiusTexts(c.radius),
         ...noteTexts(c.viewNotes),
+        ...profileTexts(c.profile),
       ];
       for (const text of texts) {
         if (name === 'ja')
@@ -124,6 +159,13 @@ describe("the teaching charts' words", () => {
       expect(c.radius.gap('concave', 'Rc', '12.5 mm', '17.5 mm', 'Rf', '80 mm', 'limit')).toContain('17.5 mm');
       expect(c.radius.summary('80 mm', '-40 mm', '1.2345 mm', '1.5 mm', '1.1 mm')).toContain('1.2345 mm');
       expect(c.viewNotes.equivalent('Q', '12.5', '3.25', true)).toMatch(/12\.5°.*3\.25°/);
+      expect(c.profile.noteCylinder('convex', '30 mm', 'feed')).toContain('30 mm');
+      expect(c.profile.noteCurved('R1', 'R2')).toMatch(/R1.*R2/);
+      expect(c.profile.scale(5, 'H', true, 20, '')).toMatch(/H.*5.*20|H.*20.*5|5.*H.*20/);
+      expect(c.profile.high('0.01 mm', 20)).toMatch(/0\.01 mm.*20/);
+      expect(new Set([c.profile.plotCylinder('convex', 'feed'), c.profile.plotCylinder('convex', 'cross')]).size).toBe(
+        2,
+      );
       // Each refusal code has its own words (none falls back to the generic sentence).
       expect(new Set(CODES.map((code) => c.slope.refusal('L', '1°', null, code))).size).toBe(CODES.length);
     });
