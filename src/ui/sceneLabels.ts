@@ -6,23 +6,11 @@
  * where the answer has no scene (a three-axis case without a scallop).
  */
 import type { LengthUnit } from '../core/input/units';
-import type { SceneWordTexts } from '../render/sceneWords';
 import { isSolveReply, type PageReply } from '../worker/pageProtocol';
 import type { SceneGeometry } from '../worker/protocol';
 import { formatLenUnit, formatSignedLenUnit } from './format';
 import { catalogue } from './i18n/words';
-
-/** Texts of the scene's labels (render/drawables/parts.ts SceneLabels), and its accessible name in another language. */
-export interface SceneLabelTexts {
-  readonly interval: string;
-  readonly halfInterval: string;
-  readonly contactOffset: string | null;
-  readonly programmedStep?: string;
-  readonly name?: string;
-  readonly words?: SceneWordTexts;
-  /** The step-over is measured along an arc (the scene adds its word after L and L/2). */
-  readonly arc?: boolean;
-}
+import type { SceneLabelTexts } from './sceneLabelTexts';
 
 /** The scene of an answer: its geometry, labels, and whether the curved surfaces' legend applies. */
 export interface SceneOfReply {

@@ -9,7 +9,7 @@ import type { FinishErrorCode, FinishField } from '../../core/finish/finishInput
 import type { PageFieldKey } from '../../core/input/fields';
 import type { AnyInputError, InputErrorCode } from '../../core/input/validate';
 import type { ThreeAxisInputError } from '../../core/threeAxis/validate';
-import type { SceneLabelTexts } from '../sceneLabels';
+import type { SceneLabelTexts } from '../sceneLabelTexts';
 
 /** The languages of the page: English (the page as written), Japanese, German. */
 export type Lang = 'en' | 'ja' | 'de';

@@ -6,7 +6,7 @@
  * (L, L/2, y0, Lxy, dz) and units stay.
  */
 import type { SceneWordTexts } from '../../render/sceneWords';
-import type { SceneLabelTexts } from '../sceneLabels';
+import type { SceneLabelTexts } from '../sceneLabelTexts';
 import type { Catalogue, SceneWords } from './catalogue';
 import { localDecimal } from './langChoice';
 

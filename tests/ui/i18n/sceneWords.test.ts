@@ -8,7 +8,7 @@ import { describe, expect, it } from 'vitest';
 import { SCENE_WORDS } from '../../../src/render/sceneWords';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
-import type { SceneLabelTexts } from '../../../src/ui/sceneLabels';
+import type { SceneLabelTexts } from '../../../src/ui/sceneLabelTexts';
 
 const ENGLISH_LABELS: SceneLabelTexts = {
   interval: 'L = 2.8872 mm',
