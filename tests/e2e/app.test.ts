@@ -244,9 +244,9 @@ describe('calculator page in headless Chromium', () => {
   it('a burst of slider moves ends on the latest value (stale replies dropped)', async () => {
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     const halfAt = (h: number) =>
-      compareForward(
+      `${compareForward(
         forwardInput({ toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 }, 'one-way', h),
-      ).exact.halfIntervalMm.toFixed(4) + ' mm';
+      ).exact.halfIntervalMm.toFixed(4)} mm`;
     const final = halfAt(0.08);
     // Every number the page writes into L/2 from now on, in order, with the field's value and
     // whether the results were marked stale at that moment.
