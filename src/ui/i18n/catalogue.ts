@@ -8,6 +8,7 @@
 import type { FinishErrorCode, FinishField } from '../../core/finish/finishInput';
 import type { PageFieldKey } from '../../core/input/fields';
 import type { AnyInputError, InputErrorCode } from '../../core/input/validate';
+import type { CurvatureRowKey, ProcedureKey } from '../../core/procedures/procedures';
 import type { ThreeAxisInputError } from '../../core/threeAxis/validate';
 import type { SceneLabelTexts } from '../sceneLabels';
 
@@ -238,6 +239,28 @@ export interface Catalogue {
   readonly scene: SceneWords;
   /** The cross-feed profile's words (views/profileView.ts, profileDrawing.ts; English in views/profileWords.ts). */
   readonly profile: ProfileWords;
+  /** The procedures' names on the page (the registry, procedures.ts, keeps the English for the CLI, CSV, JSON). */
+  readonly procedures: ProcedureNames;
+}
+
+/** A procedure's names: in full with its equations (the results table), short (legends and charts). */
+export interface ProcedureName {
+  readonly label: string;
+  readonly shortLabel: string;
+}
+
+/**
+ * The procedures' names in a language, keyed by the registry's ids; the authors' names and the
+ * paper's equation numbers kept, the words around them translated.
+ */
+export interface ProcedureNames {
+  readonly names: Readonly<Record<ProcedureKey, ProcedureName>>;
+  /** A cylinder's rows: the plane's exact answer (the curvature ignored), each procedure corrected. */
+  readonly rows: Readonly<Record<CurvatureRowKey, ProcedureName>>;
+  /** After a lead-only procedure's name in the table when the tool is tilted (English ", lead only"). */
+  readonly leadOnly: string;
+  /** The results table's head (results.ts), by its English words; `L/2` and `h` are symbols. */
+  readonly head: Readonly<Record<'Procedure' | 'Model' | 'Deviation' | 'Deviation [%]' | 'Scallop it leaves', string>>;
 }
 
 /**

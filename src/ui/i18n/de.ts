@@ -7,6 +7,7 @@ import type { Catalogue } from './catalogue';
 import { DE_CHART } from './deChart';
 import { DE_ERRORS } from './deErrors';
 import { DE_FINISH } from './deFinish';
+import { DE_PROCEDURES } from './deProcedures';
 import { DE_PROFILE } from './deProfile';
 import { DE_RADIUS } from './deRadius';
 import { DE_SHEET } from './deSheet';
@@ -271,6 +272,7 @@ export const catalogue: Catalogue = {
   finishText: DE_FINISH,
   surface: DE_SURFACE,
   profile: DE_PROFILE,
+  procedures: DE_PROCEDURES,
   scene: sceneWordsIn(
     'de',
     ' (Bogenlänge)',

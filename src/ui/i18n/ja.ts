@@ -7,6 +7,7 @@ import type { Catalogue } from './catalogue';
 import { JA_CHART } from './jaChart';
 import { JA_ERRORS } from './jaErrors';
 import { JA_FINISH } from './jaFinish';
+import { JA_PROCEDURES } from './jaProcedures';
 import { JA_PROFILE } from './jaProfile';
 import { JA_RADIUS } from './jaRadius';
 import { JA_SHEET } from './jaSheet';
@@ -254,6 +255,7 @@ export const catalogue: Catalogue = {
   finishText: JA_FINISH,
   surface: JA_SURFACE,
   profile: JA_PROFILE,
+  procedures: JA_PROCEDURES,
   scene: sceneWordsIn('ja', '（円弧）', '工具の姿勢、隣り合うパスとカスプの断面の 3D 表示', {
     designPlane: '設計平面',
     designSurface: '設計曲面',
