@@ -76,6 +76,9 @@
  * Then the procedures' names on the page in each language (the table's head and rows put into the
  * language by language.ts, the charts' and the profile's legends by the views, all on first use;
  * each catalogue +0.35 kB; the first result 60.64): 281.61 in all, the ratchet 281.7.
+ * Then the target-Sa box's worker messages in each language (the worker names its refusals and sends
+ * the teeth's data; the box words them with the finish box's finishText.ts, on first use): 282.17 in
+ * all, the ratchet 282.2.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -101,7 +104,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 281.7 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(281.7);
+  it('all of it, every .js file, is at most 282.2 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(282.2);
   });
 });

@@ -237,6 +237,30 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     );
     await typeInto(page, 'input-fz', '0,1');
     await page.keyboard.press('Enter');
+    // The target-Sa box's refusal in German (the worker names it, the page words it): runout refused,
+    // in the box and on its field, no longer marked English.
+    await typeInto(page, 'input-runout', '0,01');
+    await page.locator('input[name="target"][value="sa"]').check();
+    await typeInto(page, 'input-sa', '0,0008');
+    await page.keyboard.press('Enter');
+    const runout =
+      'Ziel-Sa wird ohne Rundlauffehler berechnet: für das beste Paar den Rundlauffehler e auf 0 setzen (oder leer lassen).';
+    await expect.poll(() => text(page, '[data-testid="target-sa-message"]'), { timeout: 30_000 }).toBe(runout);
+    expect(await text(page, '[data-testid="error-runout"]')).toBe(runout);
+    // A switch words it anew, in the page's language (not marked English).
+    await tap(page, 'ja');
+    await expect
+      .poll(() => text(page, '[data-testid="target-sa-message"]'), POLL)
+      .toMatch(/^目標 Sa は振れなしで計算します/);
+    const saLang = () =>
+      page.getByTestId('target-sa-message').evaluate((e) => e.closest('[lang]')?.getAttribute('lang'));
+    expect(await saLang()).toBe('ja');
+    await tap(page, 'de');
+    await expect.poll(() => text(page, '[data-testid="target-sa-message"]'), POLL).toBe(runout);
+    expect(await saLang()).toBe('de');
+    await typeInto(page, 'input-runout', '');
+    await page.locator('input[name="target"][value="h"]').check();
+    await page.keyboard.press('Enter');
     // The machined surface (the teeth's): its caption, scale line, legend and names in German, numbers with a comma.
     await page.locator('#tab-surface').click();
     await expect

@@ -341,6 +341,15 @@ export interface FinishWords {
   readonly scope: (kind: 'cylinder' | 'doublyCurved' | 'waterlineRevolution' | 'other') => string;
   /** The finish's worker gave up or was restarted (its reason kept English). */
   readonly worker: (gaveUp: boolean, reason: string) => string;
+  /**
+   * The target-Sa box's own refusals (the worker's TargetSaMessage refusal; English its sentence in
+   * jobs/targetSa.ts and core roughness/targetSa.ts) and its worker's restart (English in targetSaPanel.ts).
+   */
+  readonly targetSa: {
+    readonly runout: string;
+    readonly tooLong: string;
+    readonly worker: (gaveUp: boolean, reason: string) => string;
+  };
   /** The areal rows' titles after Sa. */
   readonly areal: Readonly<Record<'Sq' | 'Sz' | 'Sp' | 'Sv' | 'Ssk' | 'Sku', string>>;
   /** The cell map's accessible name, and its caption: the period and the pass width (with units), Sz. */

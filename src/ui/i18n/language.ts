@@ -24,9 +24,9 @@ export function loadCatalogue(lang: Lang): Promise<Catalogue | null> {
 
 /**
  * The parts of the page that stay in English in another language (their `lang` says so): the
- * teaching views (the translated ones carry their own lang), the target-Sa box's worker messages.
+ * teaching views (the translated ones carry their own lang), the table's notes, the notices' details.
  */
-const ENGLISH_PARTS = '.teaching, .table-notes, .notices, [data-testid="target-sa-message"], .meaning';
+const ENGLISH_PARTS = '.teaching, .table-notes, .notices, .meaning';
 
 /** The page's English words of its `data-i18n` elements, read once before any language replaces them. */
 const ENGLISH = new WeakMap<Element, string>();
