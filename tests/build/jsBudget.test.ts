@@ -79,6 +79,9 @@
  * Then the target-Sa box's worker messages in each language (the worker names its refusals and sends
  * the teeth's data; the box words them with the finish box's finishText.ts, on first use): 282.17 in
  * all, the ratchet 282.2.
+ * Then a doubly curved point's refusals in each language (curvedText.ts and each catalogue's words,
+ * on first use; the page's hook in request.ts paid for by one return in curvedRequest.ts: the first
+ * result 60.64): 283.36 in all, the ratchet 283.4.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -104,7 +107,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 282.2 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(282.2);
+  it('all of it, every .js file, is at most 283.4 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(283.4);
   });
 });

@@ -613,6 +613,16 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       curvedProfile.dims.join(' | '),
     ).toBe(true);
     expect(curvedProfile.words.match(PROFILE_ENGLISH), curvedProfile.words).toBeNull();
+    // A refusal at that point worded on the page from the worker's data, in German: h above a flank's or the shank's limit.
+    const curvedH = await page.getByTestId('input-h').inputValue();
+    await typeInto(page, 'input-h', '5');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="error-h"]'), POLL)
+      .toMatch(/^Rautiefe h muss an diesem Punkt unter \d+,\d+ mm liegen \(eingegeben: 5\): darüber /);
+    await typeInto(page, 'input-h', curvedH);
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, '[data-testid="error-h"]'), POLL).toBe('');
     await page.locator('input[name="surface"][value="plane"]').check();
     // Back to five axes: a flat end without lead or tilt lies flat, said in German with its L = 2R.
     await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();

@@ -10,7 +10,10 @@ import type { PageFieldKey } from '../../core/input/fields';
 import type { AnyInputError, InputErrorCode } from '../../core/input/validate';
 import type { CurvatureRowKey, ProcedureKey } from '../../core/procedures/procedures';
 import type { ThreeAxisInputError } from '../../core/threeAxis/validate';
+import type { CurvedError } from '../../worker/pageProtocol';
+import type { PageFieldError } from '../requestTypes';
 import type { SceneLabelTexts } from '../sceneLabels';
+import type { CalculatorState } from '../state';
 
 /** The languages of the page: English (the page as written), Japanese, German. */
 export type Lang = 'en' | 'ja' | 'de';
@@ -241,6 +244,34 @@ export interface Catalogue {
   readonly profile: ProfileWords;
   /** The procedures' names on the page (the registry, procedures.ts, keeps the English for the CLI, CSV, JSON). */
   readonly procedures: ProcedureNames;
+  /** A doubly curved point's refusal on its field, worded from its data (curvedText.ts; English curvedRequest.ts). */
+  readonly curved: (e: CurvedError, state: CalculatorState) => PageFieldError;
+}
+
+/**
+ * A doubly curved point's refusals (the worker's data, worded by curvedText.ts; English in
+ * curvedRequest.ts describeCurvedError): labels as the page names the fields, lengths with their unit
+ * and the locale's decimal sign, `got` what was typed (shortened).
+ */
+export interface CurvedWords {
+  /** L past the widest step-over that leaves a scallop here. */
+  readonly beyondMax: (label: string, max: string, got: string) => string;
+  /** h above a flank's or the shank's limit (on the right or the left). */
+  readonly aboveLimit: (label: string, limit: string, got: string, shank: boolean, right: boolean) => string;
+  /** A radius outside the range accepted. */
+  readonly outOfRange: (label: string, from: string, to: string, got: string) => string;
+  /** The other radius held (its symbol; its signed length, or null when straight). */
+  readonly held: (other: string, radius: string | null) => string;
+  /** What the radius must be, the other held, for the tool not to gouge (`radius` the bound). */
+  readonly gouging: (
+    kind: 'concave-at-least' | 'convex-at-most' | 'not-concave' | 'other',
+    label: string,
+    radius: string,
+    held: string,
+    got: string,
+  ) => string;
+  /** The target Ra's bound says "on this surface" (errors); here it is "at this point": [from, to]. */
+  readonly atPoint: readonly [string, string];
 }
 
 /** A procedure's names: in full with its equations (the results table), short (legends and charts). */

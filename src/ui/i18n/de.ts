@@ -4,7 +4,9 @@
  * symbols kept. The README's glossary names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
+import { curvedMessageIn } from './curvedText';
 import { DE_CHART } from './deChart';
+import { DE_CURVED } from './deCurved';
 import { DE_ERRORS } from './deErrors';
 import { DE_FINISH } from './deFinish';
 import { DE_PROCEDURES } from './deProcedures';
@@ -273,6 +275,7 @@ export const catalogue: Catalogue = {
   surface: DE_SURFACE,
   profile: DE_PROFILE,
   procedures: DE_PROCEDURES,
+  curved: (e, state) => curvedMessageIn(catalogue, DE_CURVED, e, state),
   scene: sceneWordsIn(
     'de',
     ' (Bogenlänge)',
