@@ -81,7 +81,8 @@
  * all, the ratchet 282.2.
  * Then a doubly curved point's refusals in each language (curvedText.ts and each catalogue's words,
  * on first use; the page's hook in request.ts paid for by one return in curvedRequest.ts: the first
- * result 60.64): 283.36 in all, the ratchet 283.4.
+ * result 60.64): 283.36 in all, the ratchet 283.4. Then a doubly curved point's comparison rows'
+ * names in each language (language.ts, on first use): 283.64, the ratchet 283.7.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -107,7 +108,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 283.4 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(283.4);
+  it('all of it, every .js file, is at most 283.7 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(283.7);
   });
 });

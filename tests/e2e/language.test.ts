@@ -613,6 +613,14 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       curvedProfile.dims.join(' | '),
     ).toBe(true);
     expect(curvedProfile.words.match(PROFILE_ENGLISH), curvedProfile.words).toBeNull();
+    // The comparison rows at that point in German: the exact answers' names, a corrected procedure's.
+    const curvedRows = () =>
+      page
+        .getByTestId('procedures-table')
+        .evaluate((t) => [...t.querySelectorAll('tr[data-curved] > th')].map((th) => th.textContent ?? ''));
+    await expect.poll(curvedRows, POLL).toContain('Exakt (dieser doppelt gekrümmte Punkt)');
+    expect(await curvedRows()).toContain('Sekine et al., korrigiert (1/rho = 1/Reff + 1/Rc)');
+    expect(await curvedRows()).toContain('Zylinder quer zum Vorschub, exakt (Rc ignoriert)');
     // A refusal at that point worded on the page from the worker's data, in German: h above a flank's or the shank's limit.
     const curvedH = await page.getByTestId('input-h').inputValue();
     await typeInto(page, 'input-h', '5');

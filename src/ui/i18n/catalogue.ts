@@ -288,6 +288,20 @@ export interface ProcedureNames {
   readonly names: Readonly<Record<ProcedureKey, ProcedureName>>;
   /** A cylinder's rows: the plane's exact answer (the curvature ignored), each procedure corrected. */
   readonly rows: Readonly<Record<CurvatureRowKey, ProcedureName>>;
+  /**
+   * A doubly curved point's comparison rows (resultsOther.ts), by their English: the exact answer
+   * here, the plane's and each cylinder's exact answers; a corrected procedure is its row's short
+   * name with the formula.
+   */
+  readonly curved: Readonly<
+    Record<
+      | 'Exact (this doubly curved point)'
+      | 'Plane, exact (both curvatures ignored)'
+      | 'Cylinder along the feed, exact (Rf ignored)'
+      | 'Cylinder across the feed, exact (Rc ignored)',
+      string
+    >
+  >;
   /** After a lead-only procedure's name in the table when the tool is tilted (English ", lead only"). */
   readonly leadOnly: string;
   /** The results table's head (results.ts), by its English words; `L/2` and `h` are symbols. */

@@ -29,6 +29,12 @@ export const DE_PROCEDURES: ProcedureNames = {
     osculatingCorrected: corrected('osculating'),
     cornerBallCorrected: corrected('cornerBall'),
   },
+  curved: {
+    'Exact (this doubly curved point)': 'Exakt (dieser doppelt gekrümmte Punkt)',
+    'Plane, exact (both curvatures ignored)': 'Ebene, exakt (beide Krümmungen ignoriert)',
+    'Cylinder along the feed, exact (Rf ignored)': 'Zylinder in Vorschubrichtung, exakt (Rf ignoriert)',
+    'Cylinder across the feed, exact (Rc ignored)': 'Zylinder quer zum Vorschub, exakt (Rc ignoriert)',
+  },
   leadOnly: ', nur Anstellung',
   head: {
     Procedure: 'Verfahren',

@@ -29,6 +29,12 @@ export const JA_PROCEDURES: ProcedureNames = {
     osculatingCorrected: corrected('osculating'),
     cornerBallCorrected: corrected('cornerBall'),
   },
+  curved: {
+    'Exact (this doubly curved point)': '厳密解（この複曲面上の点）',
+    'Plane, exact (both curvatures ignored)': '平面の厳密解（両方の曲率を無視）',
+    'Cylinder along the feed, exact (Rf ignored)': '軸が送り方向の円筒の厳密解（Rf を無視）',
+    'Cylinder across the feed, exact (Rc ignored)': '軸が送りに直交する円筒の厳密解（Rc を無視）',
+  },
   leadOnly: '（前傾のみ）',
   head: {
     Procedure: '手法',

@@ -160,9 +160,22 @@ function procedureNames(root: ParentNode, words: Catalogue): void {
     const name = names.rows[key]?.label;
     if (row !== undefined && name !== undefined && th.textContent === row.label) th.textContent = name;
   }
+  // A doubly curved point's rows: the exact answers by their English, a corrected procedure by its key.
+  for (const th of root.querySelectorAll<HTMLElement>('.procedures tr[data-curved] > th')) {
+    const key = (th.parentElement as HTMLElement).dataset.curved as CurvatureRowKey;
+    const english = th.textContent ?? '';
+    const row = CURVATURE_ROWS[key];
+    const name =
+      names.curved[english as CurvedRowName] ??
+      (row !== undefined && english === `${row.shortLabel} (1/rho = 1/Reff + 1/Rc)`
+        ? `${names.rows[key].shortLabel} (1/rho = 1/Reff + 1/Rc)`
+        : undefined);
+    if (name !== undefined) th.textContent = name;
+  }
 }
 
 type ProcedureNamesHead = Catalogue['procedures']['head'];
+type CurvedRowName = keyof Catalogue['procedures']['curved'];
 
 /**
  * Copy's spoken confirmation (copy.ts writes it in English into its live region, then asks for

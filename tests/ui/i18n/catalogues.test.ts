@@ -46,6 +46,7 @@ function strings(c: Catalogue): Array<[string, string]> {
     ]),
     ...Object.entries(c.procedures.head).map(([k, v]) => [`procedures.head.${k}`, v] as [string, string]),
     ['procedures.leadOnly', c.procedures.leadOnly],
+    ...Object.entries(c.procedures.curved).map(([k, v]) => [`procedures.curved.${k}`, v] as [string, string]),
   ];
 }
 
