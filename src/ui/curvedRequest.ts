@@ -96,29 +96,20 @@ export function describeCurvedError(e: CurvedError, state: CalculatorState): Pag
       message: `${label} must be a radius from ${len(0.001, unit)} to ${len(1e6, unit)} ${typed}; choose straight for no curvature.`,
     };
   const h = held(key, e.otherMm, unit);
-  const r = e.limit.radiusMm;
-  switch (e.limit.kind) {
-    case 'concave-at-least':
-      return {
-        key,
-        message: `${label} must be at least ${len(r ?? 0, unit)} while concave, ${h} ${typed}: a tighter one is gouged (the tool reaches into the surface away from the contact).`,
-      };
-    case 'convex-at-most':
-      return {
-        key,
-        message: `${label} must be convex and at most ${len(r ?? 0, unit)}, ${h} ${typed}: a flatter one is gouged (the tool reaches into the surface away from the contact).`,
-      };
-    case 'not-concave':
-      return {
-        key,
-        message: `${label} must be convex or straight, ${h} ${typed}: any concave one is gouged.`,
-      };
-    default:
-      return {
-        key,
-        message: `${label}: the tool gouges at any radius, ${h} ${typed}; change the other radius, the tool or its posture.`,
-      };
-  }
+  const r = len(e.limit.radiusMm ?? 0, unit);
+  const gouged = 'gouged (the tool reaches into the surface away from the contact).';
+  const kind = e.limit.kind;
+  return {
+    key,
+    message:
+      kind === 'concave-at-least'
+        ? `${label} must be at least ${r} while concave, ${h} ${typed}: a tighter one is ${gouged}`
+        : kind === 'convex-at-most'
+          ? `${label} must be convex and at most ${r}, ${h} ${typed}: a flatter one is ${gouged}`
+          : kind === 'not-concave'
+            ? `${label} must be convex or straight, ${h} ${typed}: any concave one is gouged.`
+            : `${label}: the tool gouges at any radius, ${h} ${typed}; change the other radius, the tool or its posture.`,
+  };
 }
 
 /**

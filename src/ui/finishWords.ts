@@ -6,7 +6,7 @@
  */
 import type { FinishWords } from './i18n/catalogue';
 
-export const EN_FINISH: Omit<FinishWords, 'errors' | 'failure' | 'scope'> = {
+export const EN_FINISH: Omit<FinishWords, 'errors' | 'failure' | 'scope' | 'targetSa'> = {
   worker: (gaveUp, reason) =>
     gaveUp
       ? `No finish: its worker gave up (${reason}).`

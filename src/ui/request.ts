@@ -15,6 +15,7 @@ import {
 } from '../worker/pageProtocol';
 import { describeCurvedError } from './curvedRequest';
 import { fieldMessages, fieldOfError } from './fieldMessages';
+import { catalogue } from './i18n/words';
 import { buildPageRequest } from './questionRequest';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
 import type { CalculatorState, FieldKey } from './state';
@@ -44,7 +45,8 @@ export function replyErrors(state: CalculatorState, reply: PageReply): Array<Inp
   }
   if (isCurvedRequest(reply.request))
     return (reply as Extract<CurvedReply, { ok: false }>).errors.map((e) =>
-      'got' in e ? e : describeCurvedError(e, state),
+      // Worded in the language in force (its catalogue's, i18n/curvedText.ts; English here).
+      'got' in e ? e : (catalogue()?.curved ?? describeCurvedError)(e, state),
     );
   return threeAxisFieldErrors((reply as Extract<ThreeAxisReply, { ok: false }>).errors, state);
 }

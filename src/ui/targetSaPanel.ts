@@ -20,7 +20,8 @@ import { detailsRow, html } from './dom';
 import { feedLength } from './finishLength';
 import type { FinishInputs } from './finishRequest';
 import { formatLen, formatRoughness } from './format';
-import { localize } from './i18n/words';
+import { targetSaMessageIn } from './i18n/finishText';
+import { catalogue, localize } from './i18n/words';
 import { shopFeed } from './shopFeed';
 import { targetSaAsk } from './targetSaRequest';
 import { lineChart } from './views/lineChart';
@@ -33,6 +34,15 @@ const USE = 'use this pair';
 const NOTE =
   'The pair with the largest L * fz (the area machined per tooth: the fastest finish at a given spindle speed) among those whose areal Sa is the target (plane, straight teeth, no runout). "use this pair" solves for the scallop height at that L with that fz, both rounded down.';
 const CURVE = 'Every pair that leaves this Sa: the dot is the best, the curve ends at L0 where fz -> 0';
+
+/** The worker's restart in the language in force (English here; the reason is the worker's). */
+function restartWords(gaveUp: boolean, reason: string): string {
+  const words = catalogue()?.finishText.targetSa;
+  if (words !== undefined) return words.worker(gaveUp, reason);
+  return gaveUp
+    ? `No pair: its worker gave up (${reason}).`
+    : `The target Sa's worker was restarted (${reason}); computing again...`;
+}
 
 /** A reply that answers. */
 type Answered = Extract<TargetSaReply, { ok: true }>;
@@ -56,7 +66,8 @@ export class TargetSaPanel {
   private busy: TargetSaRequest | null = null;
   private answer: Answered | null = null;
   private failed: Extract<TargetSaReply, { ok: false }> | null = null;
-  private note: string | null = null;
+  /** The worker's restart (gave up, its reason), worded when drawn. */
+  private note: { readonly gaveUp: boolean; readonly reason: string } | null = null;
   private unit: LengthUnit = 'mm';
   /** The chart drawn (its answer and unit), so that it is drawn once. */
   private charted: { answer: Answered; unit: LengthUnit } | null = null;
@@ -147,9 +158,7 @@ export class TargetSaPanel {
 
   private restarted(info: RestartInfo<TargetSaRequest>): void {
     if (info.request === null || !sameTargetSaRequest(info.request, this.wanted)) return;
-    this.note = info.gaveUp
-      ? `No pair: its worker gave up (${info.reason}).`
-      : `The target Sa's worker was restarted (${info.reason}); computing again...`;
+    this.note = { gaveUp: info.gaveUp, reason: info.reason };
     this.draw();
   }
 
@@ -177,24 +186,27 @@ export class TargetSaPanel {
     this.set('target-sa-h', formatRoughness(a?.bestScallopMm ?? null, u));
     this.set('target-sa-l0', a === null ? NO_VALUE : feedLength(a.answer.zeroFeedIntervalMm, u));
     this.use.setAttribute('aria-disabled', String(a === null));
-    const failed =
+    // The worker's refusals worded in the language in force (finishText.ts), on their fields too.
+    const c = catalogue();
+    const errors =
       this.failed !== null && sameTargetSaRequest(this.failed.request, this.wanted)
-        ? this.failed.errors.map((e) => e.message).join(' ')
+        ? this.failed.errors.map((e) => ({ ...e, message: targetSaMessageIn(c, e, u) }))
         : null;
-    const errors = failed !== null && this.failed !== null ? this.failed.errors : [];
+    const failed = errors === null ? null : errors.map((e) => e.message).join(' ');
     const told = JSON.stringify(errors);
     if (told !== this.toldFields) {
       this.toldFields = told;
-      this.onFieldErrors(errors);
+      this.onFieldErrors(errors ?? []);
     }
     for (const part of this.answerParts) part.hidden = failed !== null;
     this.chart(failed === null ? a : null);
-    const waiting = this.wanted !== null && a === null && failed === null ? (this.note ?? WAITING) : '';
+    const note = this.note === null ? null : restartWords(this.note.gaveUp, this.note.reason);
+    const waiting = this.wanted !== null && a === null && failed === null ? (note ?? WAITING) : '';
     const text = failed ?? waiting;
     if (this.message.textContent !== text) this.message.textContent = text;
     if (text === WAITING) this.message.dataset.phrase = text;
     else delete this.message.dataset.phrase;
-    this.message.classList.toggle('error', failed !== null || this.note?.startsWith('No pair') === true);
+    this.message.classList.toggle('error', failed !== null || this.note?.gaveUp === true);
     this.box.setAttribute('aria-busy', String(waiting !== ''));
     localize(this.box);
     const said = text !== '' || a === null ? text : this.summary();

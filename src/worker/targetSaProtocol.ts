@@ -24,6 +24,15 @@ export interface TargetSaRequest {
   readonly unit: LengthUnit;
 }
 
+/**
+ * A message on a teeth field: a refusal of the teeth (its data beside its English sentence, as the
+ * finish's), or one of the target Sa's own, named for a page to word in its language: runout refused
+ * (the inverse takes none), the search stopped past its budget.
+ */
+export interface TargetSaMessage extends FinishFieldMessage {
+  readonly refusal?: 'runout' | 'tooLong';
+}
+
 /** The pairs and, at the best pair's step-over, the scallop h the passes leave; or why not. */
 export type TargetSaReply =
   | {
@@ -33,7 +42,7 @@ export type TargetSaReply =
       /** The scallop h across the feed at the best pair's step-over (mm). */
       readonly bestScallopMm: number;
     }
-  | { readonly ok: false; readonly request: TargetSaRequest; readonly errors: readonly FinishFieldMessage[] };
+  | { readonly ok: false; readonly request: TargetSaRequest; readonly errors: readonly TargetSaMessage[] };
 
 /** True when both ask the same question (plain data built in one order by the page: compared as JSON). */
 export function sameTargetSaRequest(a: TargetSaRequest | null, b: TargetSaRequest | null): boolean {

@@ -73,6 +73,16 @@
  * scene +0.26, each catalogue +0.14, the language pass +0.06): 278.77 in all, the ratchet 278.8.
  * Then the cross-feed profile's words in each language (on first use: each catalogue +0.75 kB, the
  * views +0.42; the first result 60.64): 280.67 in all, the ratchet 280.7.
+ * Then the procedures' names on the page in each language (the table's head and rows put into the
+ * language by language.ts, the charts' and the profile's legends by the views, all on first use;
+ * each catalogue +0.35 kB; the first result 60.64): 281.61 in all, the ratchet 281.7.
+ * Then the target-Sa box's worker messages in each language (the worker names its refusals and sends
+ * the teeth's data; the box words them with the finish box's finishText.ts, on first use): 282.17 in
+ * all, the ratchet 282.2.
+ * Then a doubly curved point's refusals in each language (curvedText.ts and each catalogue's words,
+ * on first use; the page's hook in request.ts paid for by one return in curvedRequest.ts: the first
+ * result 60.64): 283.36 in all, the ratchet 283.4. Then a doubly curved point's comparison rows'
+ * names in each language (language.ts, on first use): 283.64, the ratchet 283.7.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -98,7 +108,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 280.7 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(280.7);
+  it('all of it, every .js file, is at most 283.7 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(283.7);
   });
 });

@@ -118,12 +118,20 @@ const sceneWords = (page: Page): Promise<string> =>
       ].join(' '),
     );
 
+/** The procedures' table: its head, its procedures' names, and whether a part of it is marked English. */
+const procedureNames = (page: Page): Promise<{ head: string[]; rows: string[]; english: boolean }> =>
+  page.getByTestId('procedures-table').evaluate((t) => ({
+    head: [...t.querySelectorAll('thead th')].map((th) => th.textContent ?? ''),
+    rows: [...t.querySelectorAll('tr[data-procedure] > th')].map((th) => th.textContent ?? ''),
+    english: t.querySelector('[lang="en"]') !== null || t.closest('[lang]')?.getAttribute('lang') === 'en',
+  }));
+
 /** The cross-feed profile's English words (views/profileWords.ts), to find any left over. */
 const PROFILE_ENGLISH =
   /\b(cross|feed|adjacent|passes|vertical|scale|true|auto|zoom|reset|view|cusp|approximations|drawn|exact|compare|shapes|results|table|ring|ellipse|next|pass|cylinder|ignored|heights|exaggerated|high|arc|along|across|doubly|curved|point|section|circle|flanks|marks|radially|surface|the|of|at|on)\b/gi;
 
 /**
- * Every word of the profile view but the procedures' names (marked English): its texts, its
+ * Every word of the profile view but a part marked English: its texts, its
  * elements' names, its options; its lang; and its dimension labels.
  */
 const profileWords = (page: Page): Promise<{ lang: string; words: string; dims: string[] }> =>
@@ -186,6 +194,21 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await typeInto(page, 'input-Rcr', '1');
     await page.keyboard.press('Enter');
     await expect.poll(() => text(page, '[data-testid="error-Rcr"]'), POLL).toBe('');
+    // The procedures' table in German: its head and each procedure's name (equations kept), no part marked English.
+    await expect
+      .poll(() => procedureNames(page), POLL)
+      .toEqual({
+        head: ['Verfahren', 'L/2', 'Abweichung', 'Abweichung [%]', 'Verbleibende Rautiefe'],
+        rows: [
+          'Exakt (3D-Geometrie)',
+          'Sekine et al. (Gl. 4-8)',
+          'Redonnet et al. (Gl. 9, 8)',
+          'Bedi et al. (Gl. 10-11)',
+          'Schmiegkreis am Kontaktpunkt',
+          'Kugel mit dem Eckenradius',
+        ],
+        english: false,
+      });
     expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
     // The teeth and feed in German: fz typed with a decimal comma, the finish box in German.
     await page.getByTestId('finish-inputs').locator('summary').click();
@@ -214,6 +237,30 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     );
     await typeInto(page, 'input-fz', '0,1');
     await page.keyboard.press('Enter');
+    // The target-Sa box's refusal in German (the worker names it, the page words it): runout refused,
+    // in the box and on its field, no longer marked English.
+    await typeInto(page, 'input-runout', '0,01');
+    await page.locator('input[name="target"][value="sa"]').check();
+    await typeInto(page, 'input-sa', '0,0008');
+    await page.keyboard.press('Enter');
+    const runout =
+      'Ziel-Sa wird ohne Rundlauffehler berechnet: für das beste Paar den Rundlauffehler e auf 0 setzen (oder leer lassen).';
+    await expect.poll(() => text(page, '[data-testid="target-sa-message"]'), { timeout: 30_000 }).toBe(runout);
+    expect(await text(page, '[data-testid="error-runout"]')).toBe(runout);
+    // A switch words it anew, in the page's language (not marked English).
+    await tap(page, 'ja');
+    await expect
+      .poll(() => text(page, '[data-testid="target-sa-message"]'), POLL)
+      .toMatch(/^目標 Sa は振れなしで計算します/);
+    const saLang = () =>
+      page.getByTestId('target-sa-message').evaluate((e) => e.closest('[lang]')?.getAttribute('lang'));
+    expect(await saLang()).toBe('ja');
+    await tap(page, 'de');
+    await expect.poll(() => text(page, '[data-testid="target-sa-message"]'), POLL).toBe(runout);
+    expect(await saLang()).toBe('de');
+    await typeInto(page, 'input-runout', '');
+    await page.locator('input[name="target"][value="h"]').check();
+    await page.keyboard.press('Enter');
     // The machined surface (the teeth's): its caption, scale line, legend and names in German, numbers with a comma.
     await page.locator('#tab-surface').click();
     await expect
@@ -233,6 +280,9 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       .toContain(`L = ${stepOver(0.08).replace('.', ',')} mm`);
     const profile = await profileWords(page);
     expect(profile.lang).toBe('de');
+    // The legend's procedures in German too (no longer marked English).
+    expect(profile.words).toContain('Exakt (3D)');
+    expect(profile.words).toContain('Schmiegkreis');
     expect(profile.words.match(PROFILE_ENGLISH), profile.words).toBeNull();
     expect(profile.dims.filter((t) => /\d\.\d/.test(t))).toEqual([]);
     // axe on the page at rest (a view marked out of date while it redraws is greyed on purpose).
@@ -274,6 +324,11 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     ).toEqual([]);
     expect(await page.getByTestId('scene').getAttribute('lang')).toBeNull();
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
+    // The procedures' table in Japanese: the authors and the equation numbers kept, the words around them translated.
+    await expect
+      .poll(async () => (await procedureNames(page)).rows.slice(0, 2), POLL)
+      .toEqual(['厳密解（3次元形状）', 'Sekine らの式 (4)-(8)']);
+    expect((await procedureNames(page)).head[0]).toBe('手法');
     expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
     await pageSettled(page);
     await keepShot(page, 'language-ja-phone', { fullPage: true });
@@ -297,6 +352,7 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Step-over L');
     expect(await text(page, '.headline .big button.copy')).toBe('Copy');
     expect(await text(page, '#tab-profile')).toBe('Cross-feed profile');
+    expect((await procedureNames(page)).rows[0]).toBe('Exact (3D geometry)');
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
     await expect.poll(() => new URL(page.url()).searchParams.get('lang'), POLL).toBeNull();
     // German then English again, with a valid answer: the table's decimal sign follows both ways.
@@ -408,9 +464,18 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
         ticks: [...classic.querySelectorAll('text')]
           .map((t) => t.textContent ?? '')
           .filter((t) => /^[\d.,−-]+$/.test(t)),
+        names: [...classic.querySelectorAll('[data-testid="chart-lead"] .legend-name')].map((n) => n.textContent ?? ''),
       };
     });
     expect(charts.lang).toBe('de');
+    expect(charts.names).toEqual([
+      'Exakt (3D)',
+      'Sekine et al.',
+      'Redonnet et al.',
+      'Bedi et al.',
+      'Schmiegkreis',
+      'Eckenradius-Kugel',
+    ]);
     expect(
       charts.words.match(
         /\b(against|lead|tilt|fixed|dashed|current|error|axis|angle|signed|approximation|along|length|at|deg)\b/gi,
@@ -548,6 +613,24 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       curvedProfile.dims.join(' | '),
     ).toBe(true);
     expect(curvedProfile.words.match(PROFILE_ENGLISH), curvedProfile.words).toBeNull();
+    // The comparison rows at that point in German: the exact answers' names, a corrected procedure's.
+    const curvedRows = () =>
+      page
+        .getByTestId('procedures-table')
+        .evaluate((t) => [...t.querySelectorAll('tr[data-curved] > th')].map((th) => th.textContent ?? ''));
+    await expect.poll(curvedRows, POLL).toContain('Exakt (dieser doppelt gekrümmte Punkt)');
+    expect(await curvedRows()).toContain('Sekine et al., korrigiert (1/rho = 1/Reff + 1/Rc)');
+    expect(await curvedRows()).toContain('Zylinder quer zum Vorschub, exakt (Rc ignoriert)');
+    // A refusal at that point worded on the page from the worker's data, in German: h above a flank's or the shank's limit.
+    const curvedH = await page.getByTestId('input-h').inputValue();
+    await typeInto(page, 'input-h', '5');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="error-h"]'), POLL)
+      .toMatch(/^Rautiefe h muss an diesem Punkt unter \d+,\d+ mm liegen \(eingegeben: 5\): darüber /);
+    await typeInto(page, 'input-h', curvedH);
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, '[data-testid="error-h"]'), POLL).toBe('');
     await page.locator('input[name="surface"][value="plane"]').check();
     // Back to five axes: a flat end without lead or tilt lies flat, said in German with its L = 2R.
     await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();

@@ -1,7 +1,7 @@
 /**
  * The worker's `targetSa` job (src/worker/jobs/targetSa.ts) and the page's question
  * (src/ui/targetSaRequest.ts): the reply echoes its request; runout is refused in one line on its
- * field; a missing flutes field is named on it; the best pair's Sa is the target within 1e-6
+ * field, named as such; a missing flutes field is named on it, its data beside its English; the best pair's Sa is the target within 1e-6
  * relative, checked with the full areal parameters on a fresh tooth model at that pair; the scallop
  * h is the continuous inverse's at the best step-over; the page asks only of a target Ra's plane answer.
  */
@@ -48,13 +48,15 @@ describe('the targetSa job', () => {
     expect(r.ok).toBe(false);
     if (r.ok) return;
     expect(r.errors).toEqual([
-      { field: 'runout', message: expect.stringMatching(/^Target Sa is computed without runout/) },
+      { field: 'runout', message: expect.stringMatching(/^Target Sa is computed without runout/), refusal: 'runout' },
     ]);
     const none = targetSaAsk(finishInputsOf({ runoutPhase: 10 }), reply);
     if (none === null) throw new Error('not asked');
     const n = targetSa(none);
     expect(n.ok).toBe(false);
     if (!n.ok) expect(n.errors.map((e) => e.field)).toEqual(['flutes']);
+    // Each teeth refusal carries its data beside its English (a page words it in its language).
+    if (!n.ok) expect(n.errors[0]?.error).toEqual({ field: 'flutes', code: 'missing', got: '' });
   });
 
   it('the best pair leaves the target Sa within 1e-6 relative (full areal parameters, fresh model; z = 4)', () => {

@@ -8,8 +8,12 @@
 import type { FinishErrorCode, FinishField } from '../../core/finish/finishInput';
 import type { PageFieldKey } from '../../core/input/fields';
 import type { AnyInputError, InputErrorCode } from '../../core/input/validate';
+import type { CurvatureRowKey, ProcedureKey } from '../../core/procedures/procedures';
 import type { ThreeAxisInputError } from '../../core/threeAxis/validate';
+import type { CurvedError } from '../../worker/pageProtocol';
+import type { PageFieldError } from '../requestTypes';
 import type { SceneLabelTexts } from '../sceneLabelTexts';
+import type { CalculatorState } from '../state';
 
 /** The languages of the page: English (the page as written), Japanese, German. */
 export type Lang = 'en' | 'ja' | 'de';
@@ -238,6 +242,70 @@ export interface Catalogue {
   readonly scene: SceneWords;
   /** The cross-feed profile's words (views/profileView.ts, profileDrawing.ts; English in views/profileWords.ts). */
   readonly profile: ProfileWords;
+  /** The procedures' names on the page (the registry, procedures.ts, keeps the English for the CLI, CSV, JSON). */
+  readonly procedures: ProcedureNames;
+  /** A doubly curved point's refusal on its field, worded from its data (curvedText.ts; English curvedRequest.ts). */
+  readonly curved: (e: CurvedError, state: CalculatorState) => PageFieldError;
+}
+
+/**
+ * A doubly curved point's refusals (the worker's data, worded by curvedText.ts; English in
+ * curvedRequest.ts describeCurvedError): labels as the page names the fields, lengths with their unit
+ * and the locale's decimal sign, `got` what was typed (shortened).
+ */
+export interface CurvedWords {
+  /** L past the widest step-over that leaves a scallop here. */
+  readonly beyondMax: (label: string, max: string, got: string) => string;
+  /** h above a flank's or the shank's limit (on the right or the left). */
+  readonly aboveLimit: (label: string, limit: string, got: string, shank: boolean, right: boolean) => string;
+  /** A radius outside the range accepted. */
+  readonly outOfRange: (label: string, from: string, to: string, got: string) => string;
+  /** The other radius held (its symbol; its signed length, or null when straight). */
+  readonly held: (other: string, radius: string | null) => string;
+  /** What the radius must be, the other held, for the tool not to gouge (`radius` the bound). */
+  readonly gouging: (
+    kind: 'concave-at-least' | 'convex-at-most' | 'not-concave' | 'other',
+    label: string,
+    radius: string,
+    held: string,
+    got: string,
+  ) => string;
+  /** The target Ra's bound says "on this surface" (errors); here it is "at this point": [from, to]. */
+  readonly atPoint: readonly [string, string];
+}
+
+/** A procedure's names: in full with its equations (the results table), short (legends and charts). */
+export interface ProcedureName {
+  readonly label: string;
+  readonly shortLabel: string;
+}
+
+/**
+ * The procedures' names in a language, keyed by the registry's ids; the authors' names and the
+ * paper's equation numbers kept, the words around them translated.
+ */
+export interface ProcedureNames {
+  readonly names: Readonly<Record<ProcedureKey, ProcedureName>>;
+  /** A cylinder's rows: the plane's exact answer (the curvature ignored), each procedure corrected. */
+  readonly rows: Readonly<Record<CurvatureRowKey, ProcedureName>>;
+  /**
+   * A doubly curved point's comparison rows (resultsOther.ts), by their English: the exact answer
+   * here, the plane's and each cylinder's exact answers; a corrected procedure is its row's short
+   * name with the formula.
+   */
+  readonly curved: Readonly<
+    Record<
+      | 'Exact (this doubly curved point)'
+      | 'Plane, exact (both curvatures ignored)'
+      | 'Cylinder along the feed, exact (Rf ignored)'
+      | 'Cylinder across the feed, exact (Rc ignored)',
+      string
+    >
+  >;
+  /** After a lead-only procedure's name in the table when the tool is tilted (English ", lead only"). */
+  readonly leadOnly: string;
+  /** The results table's head (results.ts), by its English words; `L/2` and `h` are symbols. */
+  readonly head: Readonly<Record<'Procedure' | 'Model' | 'Deviation' | 'Deviation [%]' | 'Scallop it leaves', string>>;
 }
 
 /**
@@ -318,6 +386,15 @@ export interface FinishWords {
   readonly scope: (kind: 'cylinder' | 'doublyCurved' | 'waterlineRevolution' | 'other') => string;
   /** The finish's worker gave up or was restarted (its reason kept English). */
   readonly worker: (gaveUp: boolean, reason: string) => string;
+  /**
+   * The target-Sa box's own refusals (the worker's TargetSaMessage refusal; English its sentence in
+   * jobs/targetSa.ts and core roughness/targetSa.ts) and its worker's restart (English in targetSaPanel.ts).
+   */
+  readonly targetSa: {
+    readonly runout: string;
+    readonly tooLong: string;
+    readonly worker: (gaveUp: boolean, reason: string) => string;
+  };
   /** The areal rows' titles after Sa. */
   readonly areal: Readonly<Record<'Sq' | 'Sz' | 'Sp' | 'Sv' | 'Ssk' | 'Sku', string>>;
   /** The cell map's accessible name, and its caption: the period and the pass width (with units), Sz. */

@@ -4,9 +4,12 @@
  * symbols kept. The README's glossary names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
+import { curvedMessageIn } from './curvedText';
 import { DE_CHART } from './deChart';
+import { DE_CURVED } from './deCurved';
 import { DE_ERRORS } from './deErrors';
 import { DE_FINISH } from './deFinish';
+import { DE_PROCEDURES } from './deProcedures';
 import { DE_PROFILE } from './deProfile';
 import { DE_RADIUS } from './deRadius';
 import { DE_SHEET } from './deSheet';
@@ -271,6 +274,8 @@ export const catalogue: Catalogue = {
   finishText: DE_FINISH,
   surface: DE_SURFACE,
   profile: DE_PROFILE,
+  procedures: DE_PROCEDURES,
+  curved: (e, state) => curvedMessageIn(catalogue, DE_CURVED, e, state),
   scene: sceneWordsIn(
     'de',
     ' (Bogenlänge)',

@@ -53,6 +53,16 @@ export const DE_FINISH: Catalogue['finishText'] = {
     gaveUp
       ? `Keine Oberfläche: ihr Rechenprozess hat aufgegeben (${reason}).`
       : `Der Rechenprozess der Oberfläche wurde neu gestartet (${reason}); es wird erneut gerechnet …`,
+  targetSa: {
+    runout:
+      'Ziel-Sa wird ohne Rundlauffehler berechnet: für das beste Paar den Rundlauffehler e auf 0 setzen (oder leer lassen).',
+    tooLong:
+      'Die Suche für dieses Ziel-Sa wurde vor ihrem Ende abgebrochen (sie würde Minuten dauern): ihre Paare haben zu großen Vorschub oder zu viele Bahnen; stattdessen die Oberfläche zu einem Bahnabstand und Vorschub berechnen.',
+    worker: (gaveUp, reason) =>
+      gaveUp
+        ? `Kein Paar: sein Rechenprozess hat aufgegeben (${reason}).`
+        : `Der Rechenprozess für Ziel-Sa wurde neu gestartet (${reason}); es wird erneut gerechnet …`,
+  },
   areal: {
     Sq: 'quadratischer Mittelwert der Höhe',
     Sz: 'maximale Höhe: höchste Spitze bis tiefstes Tal',

@@ -12,6 +12,7 @@ import { quotedEntry } from '../../core/input/entryMessages';
 import type { PageFieldKey } from '../../core/input/fields';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../../core/input/units';
 import type { FinishFieldMessage } from '../../worker/finishProtocol';
+import type { TargetSaMessage } from '../../worker/targetSaProtocol';
 import type { Catalogue } from './catalogue';
 import { localDecimal } from './langChoice';
 
@@ -57,4 +58,10 @@ export function finishScopeIn(catalogue: Catalogue | null, kind: FinishSurfaceKi
   if (catalogue === null) return english;
   const known = SCOPES.find((k) => k === kind);
   return catalogue.finishText.scope(known ?? 'other');
+}
+
+/** A target-Sa box's message in `catalogue`'s language (null: English, the worker's own sentence). */
+export function targetSaMessageIn(catalogue: Catalogue | null, m: TargetSaMessage, unit: LengthUnit): string {
+  if (catalogue === null || m.refusal === undefined) return finishMessageIn(catalogue, m, unit);
+  return catalogue.finishText.targetSa[m.refusal];
 }

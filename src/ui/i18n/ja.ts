@@ -4,9 +4,12 @@
  * names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
+import { curvedMessageIn } from './curvedText';
 import { JA_CHART } from './jaChart';
+import { JA_CURVED } from './jaCurved';
 import { JA_ERRORS } from './jaErrors';
 import { JA_FINISH } from './jaFinish';
+import { JA_PROCEDURES } from './jaProcedures';
 import { JA_PROFILE } from './jaProfile';
 import { JA_RADIUS } from './jaRadius';
 import { JA_SHEET } from './jaSheet';
@@ -254,6 +257,8 @@ export const catalogue: Catalogue = {
   finishText: JA_FINISH,
   surface: JA_SURFACE,
   profile: JA_PROFILE,
+  procedures: JA_PROCEDURES,
+  curved: (e, state) => curvedMessageIn(catalogue, JA_CURVED, e, state),
   scene: sceneWordsIn('ja', '（円弧）', '工具の姿勢、隣り合うパスとカスプの断面の 3D 表示', {
     designPlane: '設計平面',
     designSurface: '設計曲面',

@@ -6,6 +6,7 @@
  * A catalogue loads only when its language is chosen (ja.ts, de.ts); English is the page as
  * written, its words read from the page itself before any other language replaces them.
  */
+import { CURVATURE_ROWS, type CurvatureRowKey, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import { ZERO_FEED_LABEL } from '../results';
 import type { ToolStorage } from '../savedTools';
 import type { Catalogue, FinishPhrase, Lang, Phrase } from './catalogue';
@@ -23,10 +24,9 @@ export function loadCatalogue(lang: Lang): Promise<Catalogue | null> {
 
 /**
  * The parts of the page that stay in English in another language (their `lang` says so): the
- * teaching views (the translated ones carry their own lang), the target-Sa box's worker messages.
+ * teaching views (the translated ones carry their own lang), the table's notes, the notices' details.
  */
-const ENGLISH_PARTS =
-  '.teaching, .table-notes, .procedures thead, .notices, [data-testid="target-sa-message"], .meaning';
+const ENGLISH_PARTS = '.teaching, .table-notes, .notices, .meaning';
 
 /** The page's English words of its `data-i18n` elements, read once before any language replaces them. */
 const ENGLISH = new WeakMap<Element, string>();
@@ -98,6 +98,7 @@ export function localizeResults(results: object): void {
     flat?.textContent ?? '',
   )?.[1];
   if (flat && diameter !== undefined) flat.textContent = words.said.noScallopPlane(localDecimal(diameter, words));
+  procedureNames(root, words);
   // The finish box's words (finishPanel.ts keeps each element's English in data-phrase).
   for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]')) {
     const text = words.finish[e.dataset.phrase as FinishPhrase];
@@ -134,6 +135,47 @@ export function localizeResults(results: object): void {
     }
   }
 }
+
+/**
+ * The procedures' table in the language (results.ts draws it in English, from the registry): its
+ * head, each procedure's name (with "lead only" when the tool is tilted) and the cylinder's rows.
+ */
+function procedureNames(root: ParentNode, words: Catalogue): void {
+  const names = words.procedures;
+  for (const th of root.querySelectorAll<HTMLElement>('.procedures thead th')) {
+    const head = names.head[th.textContent as keyof ProcedureNamesHead];
+    if (head !== undefined) th.textContent = head;
+  }
+  for (const th of root.querySelectorAll<HTMLElement>('.procedures tr[data-procedure] > th')) {
+    const key = (th.parentElement as HTMLElement).dataset.procedure as ProcedureKey;
+    const english = PROCEDURES[key]?.label;
+    const name = names.names[key]?.label;
+    if (english === undefined || name === undefined) continue;
+    if (th.textContent === english) th.textContent = name;
+    else if (th.textContent === `${english}, lead only`) th.textContent = `${name}${names.leadOnly}`;
+  }
+  for (const th of root.querySelectorAll<HTMLElement>('.procedures tr[data-curvature] > th')) {
+    const key = (th.parentElement as HTMLElement).dataset.curvature as CurvatureRowKey;
+    const row = CURVATURE_ROWS[key];
+    const name = names.rows[key]?.label;
+    if (row !== undefined && name !== undefined && th.textContent === row.label) th.textContent = name;
+  }
+  // A doubly curved point's rows: the exact answers by their English, a corrected procedure by its key.
+  for (const th of root.querySelectorAll<HTMLElement>('.procedures tr[data-curved] > th')) {
+    const key = (th.parentElement as HTMLElement).dataset.curved as CurvatureRowKey;
+    const english = th.textContent ?? '';
+    const row = CURVATURE_ROWS[key];
+    const name =
+      names.curved[english as CurvedRowName] ??
+      (row !== undefined && english === `${row.shortLabel} (1/rho = 1/Reff + 1/Rc)`
+        ? `${names.rows[key].shortLabel} (1/rho = 1/Reff + 1/Rc)`
+        : undefined);
+    if (name !== undefined) th.textContent = name;
+  }
+}
+
+type ProcedureNamesHead = Catalogue['procedures']['head'];
+type CurvedRowName = keyof Catalogue['procedures']['curved'];
 
 /**
  * Copy's spoken confirmation (copy.ts writes it in English into its live region, then asks for

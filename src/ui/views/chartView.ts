@@ -67,6 +67,11 @@ function cylinderSummary(ctx: ViewContext, words: ChartWords): string {
   return words.cylinder(s.radiusMm < 0, s.axis);
 }
 
+/** A procedure's short name in the language in force (English: the registry's). */
+function procedureShortName(key: ProcedureKey): string {
+  return catalogue()?.procedures.names[key].shortLabel ?? PROCEDURES[key].shortLabel;
+}
+
 /** The charts' words in the language in force (English: the charts as written). */
 function chartWords(): ChartWords {
   return catalogue()?.chart ?? EN_CHART;
@@ -248,7 +253,7 @@ export class ChartView implements TeachingView {
               formatDeg(beta),
               PROCEDURE_KEYS.map((key) => {
                 const v = tilt.values[key][at];
-                return `${PROCEDURES[key].shortLabel} ${v === null || v === undefined ? words.none : len(v)}`;
+                return `${procedureShortName(key)} ${v === null || v === undefined ? words.none : len(v)}`;
               }).join(', '),
             )}${cylinderSummary(ctx, words)}`,
           );
@@ -286,7 +291,7 @@ export class ChartView implements TeachingView {
       html('li', { class: 'chart-legend-head' }, local(words.legendHead(data.angleName, formatDeg(data.current)))),
       ...data.lines.map((line) => {
         const v = data.at < 0 ? null : (line.values[data.at] ?? null);
-        const name = `${PROCEDURES[line.key].shortLabel}${leadOnly && PROCEDURES[line.key].leadOnly ? words.leadOnly : ''}`;
+        const name = `${procedureShortName(line.key)}${leadOnly && PROCEDURES[line.key].leadOnly ? words.leadOnly : ''}`;
         const item = html('li', { class: 'legend-item', 'data-procedure': line.key });
         item.append(
           html('span', { class: 'swatch' }),
@@ -341,7 +346,7 @@ export function gapNotes(
     for (const gap of gaps[key]) {
       const id = `${gap.fromDeg}|${gap.toDeg}|${gap.reason}`;
       const g = groups.get(id) ?? { names: [], gap };
-      g.names.push(PROCEDURES[key].shortLabel);
+      g.names.push(procedureShortName(key));
       groups.set(id, g);
     }
   }

@@ -20,6 +20,7 @@ import { sectionRadiusMm } from '../../core/output/sectionProfile';
 import {
   CURVATURE_ROW_KEYS,
   CURVATURE_ROWS,
+  type CurvatureRowKey,
   PROCEDURE_KEYS,
   PROCEDURES,
   type ProcedureKey,
@@ -171,8 +172,8 @@ export class ProfileView implements TeachingView {
   }
 
   /**
-   * The view's fixed words in the language in force (the procedures' names stay English, marked
-   * so), and its `lang` (its part of the views, English otherwise).
+   * The view's fixed words and the procedures' names in the language in force, and its `lang` (its
+   * part of the views, English otherwise).
    */
   private speak(): void {
     const w = profileWords();
@@ -191,6 +192,16 @@ export class ProfileView implements TeachingView {
     text(this.approxNote, w.approximations);
     for (const e of this.element.querySelectorAll<HTMLElement>('[data-word]'))
       text(e, w[e.dataset.word as 'ring' | 'nextPass' | 'cylinderAlong' | 'cylinderAcross']);
+    // The legend's procedures (data-name: the registry's key, a procedure's or a cylinder's row's).
+    const names = catalogue()?.procedures;
+    for (const e of this.element.querySelectorAll<HTMLElement>('[data-name]')) {
+      const key = e.dataset.name ?? '';
+      const name =
+        key in PROCEDURES
+          ? (names?.names[key as ProcedureKey] ?? PROCEDURES[key as ProcedureKey])
+          : (names?.rows[key as CurvatureRowKey] ?? CURVATURE_ROWS[key as CurvatureRowKey]);
+      text(e, name.shortLabel);
+    }
     const lang = catalogue()?.lang;
     if (lang === undefined) this.element.removeAttribute('lang');
     else this.element.lang = lang;
@@ -252,7 +263,7 @@ export class ProfileView implements TeachingView {
         class: key === 'exact' ? 'legend-item' : 'legend-item plane-model',
         'data-procedure': key,
       });
-      item.append(html('span', { class: 'swatch' }), html('span', { lang: 'en' }, PROCEDURES[key].shortLabel));
+      item.append(html('span', { class: 'swatch' }), html('span', { 'data-name': key }));
       legend.append(item);
     }
     // The words (data-word: ProfileWords' keys) are written by speak().
@@ -263,11 +274,7 @@ export class ProfileView implements TeachingView {
     // On a cylinder: where the plane's answer and the corrected procedures put the next pass.
     for (const key of CURVATURE_ROW_KEYS) {
       const item = html('span', { class: 'legend-item cylinder-only', 'data-curvature': key });
-      item.append(
-        html('span', { class: 'swatch' }),
-        html('span', { lang: 'en' }, CURVATURE_ROWS[key].shortLabel),
-        word('nextPass'),
-      );
+      item.append(html('span', { class: 'swatch' }), html('span', { 'data-name': key }), word('nextPass'));
       legend.append(item);
     }
     // At a doubly curved point: where each cylinder's answer puts the next pass.

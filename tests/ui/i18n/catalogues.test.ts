@@ -10,6 +10,7 @@ import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { PAGE_FIELD_KEYS } from '../../../src/core/input/fields';
+import { PROCEDURE_KEYS, PROCEDURES } from '../../../src/core/procedures/procedures';
 import type { Catalogue } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
@@ -39,12 +40,19 @@ function strings(c: Catalogue): Array<[string, string]> {
     ...Object.entries(c.phrases).map(([k, v]) => [`phrases.${k}`, v] as [string, string]),
     ['headline.stepOver', c.headline.stepOver],
     ['headline.scallopHeight', c.headline.scallopHeight],
+    ...Object.entries({ ...c.procedures.names, ...c.procedures.rows }).flatMap(([k, n]) => [
+      [`procedures.${k}.label`, n.label] as [string, string],
+      [`procedures.${k}.shortLabel`, n.shortLabel] as [string, string],
+    ]),
+    ...Object.entries(c.procedures.head).map(([k, v]) => [`procedures.head.${k}`, v] as [string, string]),
+    ['procedures.leadOnly', c.procedures.leadOnly],
+    ...Object.entries(c.procedures.curved).map(([k, v]) => [`procedures.curved.${k}`, v] as [string, string]),
   ];
 }
 
 /** Latin words a translation keeps: the paper's symbols (P_hp, P_base, CC, O, y0) and authors, names, units, file kinds and key names. */
 const KEPT = new Set(
-  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter hf Sa ISO M3 x3p F n x y P hp base CC O y0 N i L0'.split(
+  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter hf Sa ISO M3 x3p F n x y P hp base CC O y0 N i L0 Reff'.split(
     ' ',
   ),
 );
@@ -70,6 +78,18 @@ describe('the catalogues', () => {
       for (const word of text.match(/[A-Za-z][A-Za-z0-9]*/g) ?? [])
         expect(KEPT.has(word), `${where}: "${word}"`).toBe(true);
     }
+  });
+
+  it("the procedures' names keep the registry's authors and the paper's equation numbers, for every procedure", () => {
+    for (const c of [ja, de])
+      for (const key of PROCEDURE_KEYS) {
+        const english = PROCEDURES[key];
+        const name = c.procedures.names[key];
+        expect(name.label.match(/\d+/g), `${c.lang} ${key}`).toEqual(english.label.match(/\d+/g));
+        const author = /^[A-Z][a-z]+(?= et al\.)/.exec(english.label)?.[0];
+        if (author !== undefined) expect(name.shortLabel.startsWith(author), `${c.lang} ${key}`).toBe(true);
+        expect(name.label, `${c.lang} ${key}`).not.toBe(english.label);
+      }
   });
 
   it('German: no entry is the English one, and none uses an English word of the page', () => {

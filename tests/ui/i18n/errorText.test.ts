@@ -7,10 +7,13 @@
  */
 import { describe, expect, it } from 'vitest';
 import { type AnyFieldName, type InputErrorCode, inputError } from '../../../src/core/input/validate';
+import { describeCurvedError } from '../../../src/ui/curvedRequest';
 import type { Catalogue } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { describeInputErrorIn } from '../../../src/ui/i18n/errorText';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
+import { type CalculatorState, defaultState } from '../../../src/ui/state';
+import type { CurvedError } from '../../../src/worker/pageProtocol';
 
 /** Each code with a field it is given on (the core's own use). */
 const CASES: ReadonlyArray<readonly [InputErrorCode, AnyFieldName]> = [
@@ -86,4 +89,86 @@ describe('input errors in Japanese and German', () => {
       'Werkzeugdurchmesser D muss größer als 0 mm sein (eingegeben: 0).',
     );
   });
+});
+
+/** A doubly curved point on screen: Rf 80 mm convex, Rc 40 mm concave, h, L and Ra as typed. */
+const CURVED_STATE: CalculatorState = {
+  ...defaultState('mm'),
+  surface: 'curved',
+  feedSide: 'convex',
+  crossSide: 'concave',
+  fields: { ...defaultState('mm').fields, Rf: '80', Rc: '40', h: '0,5', L: '9', ra: '1' },
+};
+
+/** One worker refusal per kind at a doubly curved point (pageProtocol.ts CurvedError). */
+const CURVED_ERRORS: readonly CurvedError[] = [
+  { field: 'feedRadius', code: 'out-of-range', gotMm: 2e6 },
+  {
+    field: 'crossRadius',
+    code: 'gouging',
+    limit: { minCurvaturePerMm: -0.02, kind: 'concave-at-least', radiusMm: 50.25 },
+    otherMm: 80,
+  },
+  {
+    field: 'feedRadius',
+    code: 'gouging',
+    limit: { minCurvaturePerMm: 0.08, kind: 'convex-at-most', radiusMm: 12.5 },
+    otherMm: Number.POSITIVE_INFINITY,
+  },
+  {
+    field: 'feedRadius',
+    code: 'gouging',
+    limit: { minCurvaturePerMm: 0, kind: 'not-concave', radiusMm: null },
+    otherMm: -40,
+  },
+  {
+    field: 'crossRadius',
+    code: 'gouging',
+    limit: { minCurvaturePerMm: 2000, kind: 'none', radiusMm: null },
+    otherMm: 80,
+  },
+  { field: 'h', code: 'above-limit', limitMm: 0.4, limitBy: 'right-flank' },
+  { field: 'h', code: 'above-limit', limitMm: 0.4, limitBy: 'shank-left' },
+  { field: 'interval', code: 'beyond-max', maxMm: 8.25 },
+  { field: 'ra', code: 'beyond-max-ra', maxMm: 0.0125 },
+];
+
+describe("a doubly curved point's refusals in Japanese and German (curvedText.ts)", () => {
+  it('English: the page words them itself (curvedRequest.ts), each bound in the unit', () => {
+    const english = CURVED_ERRORS.slice(1, 3).map((e) => describeCurvedError(e, CURVED_STATE).message);
+    expect(english).toEqual([
+      'Cross radius Rc must be at least 50.25 mm while concave, with Rf = 80 mm held (got 40, concave): a tighter one is gouged (the tool reaches into the surface away from the contact).',
+      'Feed radius Rf must be convex and at most 12.5 mm, with Rc straight (got 80, convex): a flatter one is gouged (the tool reaches into the surface away from the contact).',
+    ]);
+  });
+
+  for (const c of [ja, de])
+    it(`${c.lang}: on the English one's field, each its own line, the bounds with the locale's decimal sign, what was typed, no English word`, () => {
+      const worded = CURVED_ERRORS.map((e) => c.curved(e, CURVED_STATE));
+      expect(worded.map((m) => m.key)).toEqual(CURVED_ERRORS.map((e) => describeCurvedError(e, CURVED_STATE).key));
+      const messages = worded.map((m) => m.message);
+      expect(new Set(messages).size).toBe(CURVED_ERRORS.length);
+      const sign = c.lang === 'de' ? ',' : '.';
+      const [range, concave, convex, notConcave, none, flank, shank, wall, ra] = messages as string[];
+      expect(range).toContain(`0${sign}001 mm`);
+      expect(range).toContain(c.fields.Rf.label);
+      expect(concave).toContain(`50${sign}25 mm`);
+      expect(concave).toContain(`40, ${c.question.concave}`);
+      expect(concave).toContain(`Rf = 80 mm`);
+      expect(convex).toContain(`12${sign}5 mm`);
+      expect(notConcave).toContain('Rc = -40 mm');
+      expect(none).toContain(c.fields.Rc.label);
+      expect(flank).toContain(`0${sign}4 mm`);
+      expect(flank).toContain('0,5');
+      expect(shank).not.toBe(flank);
+      expect(wall).toContain(`8${sign}25 mm`);
+      expect(ra).toContain(`0${sign}0125 mm`);
+      for (const line of messages) {
+        expect(line, line).not.toMatch(/undefined|NaN|Infinity|null|\n/);
+        expect(ENGLISH.test(line), line).toBe(false);
+        if (c.lang === 'ja') expect(/[\u3000-\u30ff\u4e00-\u9fff]/.test(line), line).toBe(true);
+      }
+      // The target Ra's bound is said at this point, not on a surface.
+      expect(ra).toContain(c.lang === 'de' ? 'an diesem Punkt' : 'この点');
+    });
 });

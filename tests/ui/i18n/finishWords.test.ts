@@ -11,9 +11,10 @@ import { describe, expect, it } from 'vitest';
 import { type FinishErrorCode, finishError } from '../../../src/core/finish/finishInput';
 import type { FinishWords, SurfaceWords } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
-import { finishMessageIn, finishScopeIn } from '../../../src/ui/i18n/finishText';
+import { finishMessageIn, finishScopeIn, targetSaMessageIn } from '../../../src/ui/i18n/finishText';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
 import type { FinishFieldMessage } from '../../../src/worker/finishProtocol';
+import { TARGET_SA_RUNOUT_MESSAGE } from '../../../src/worker/jobs/targetSa';
 
 /** One worker refusal per code, as the worker sends it (its English and its data; lengths in mm). */
 const REFUSALS: ReadonlyArray<readonly [FinishFieldMessage['field'], FinishErrorCode, string, number?]> = [
@@ -58,6 +59,10 @@ function finishTexts(f: FinishWords): string[] {
     f.x3pNone('M'),
     f.x3pGaveUp('R'),
     f.x3pSaved('finish.x3p', 256),
+    f.targetSa.runout,
+    f.targetSa.tooLong,
+    f.targetSa.worker(true, 'R'),
+    f.targetSa.worker(false, 'R'),
   ];
 }
 
@@ -132,6 +137,20 @@ describe("the finish box's and the surface view's words", () => {
       expect(c.surface.pending(40)).toContain('40 %');
       expect(c.surface.exaggeration(20, 'µin')).toMatch(/20.*µin/);
     });
+
+  it("the target-Sa box's messages: its own refusals by name, the teeth's from their data, English the worker's", () => {
+    const runout = { field: 'runout', message: TARGET_SA_RUNOUT_MESSAGE, refusal: 'runout' } as const;
+    const tooLong = { field: 'flutes', message: 'T', refusal: 'tooLong' } as const;
+    const teeth = refusal('runout', 'too-large', '0.5', 0.3);
+    for (const c of [ja, de]) {
+      expect(targetSaMessageIn(c, runout, 'mm')).toBe(c.finishText.targetSa.runout);
+      expect(targetSaMessageIn(c, tooLong, 'mm')).toBe(c.finishText.targetSa.tooLong);
+      expect(targetSaMessageIn(c, teeth, 'in')).toBe(finishMessageIn(c, teeth, 'in'));
+      expect(c.finishText.targetSa.worker(true, 'out of memory')).toContain('out of memory');
+    }
+    expect(targetSaMessageIn(de, teeth, 'mm')).toContain('0,3 mm');
+    for (const m of [runout, tooLong, teeth]) expect(targetSaMessageIn(null, m, 'mm')).toBe(m.message);
+  });
 
   it("English: the worker's own sentences, unchanged", () => {
     const m = refusal('fz', 'too-large', '5', 3);
