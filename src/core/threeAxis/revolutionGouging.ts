@@ -65,6 +65,13 @@ function lowerZ(t: MeridianTool, ts: number, tz: number, s: number): number {
   return tz + (w * w) / (t.rcr + Math.sqrt((t.rcr - w) * (t.rcr + w)));
 }
 
+/** Distance (mm) in the meridian plane from (qs, qz) to (s, z), both mm. */
+function meridianDistanceMm(qs: number, qz: number, s: number, z: number): number {
+  const ds = s - qs;
+  const dz = z - qz;
+  return Math.sqrt(ds * ds + dz * dz);
+}
+
 /** Half-width (mm) of the tool's footprint at height `dzAboveTip` above its tip (the slice radius). */
 function sliceRadius(t: MeridianTool, dzAboveTip: number): number {
   if (dzAboveTip < 0) return -1;
@@ -94,9 +101,7 @@ function maxDistance(
   if (a > b) return Number.NEGATIVE_INFINITY;
   let best = Number.NEGATIVE_INFINITY;
   const take = (s: number, z: number) => {
-    const ds = s - qs;
-    const dz = z - qz;
-    const d = Math.sqrt(ds * ds + dz * dz);
+    const d = meridianDistanceMm(qs, qz, s, z);
     if (d > best) best = d;
   };
   take(a, Math.min(cap, lowerZ(t, ts, tz, a)));
@@ -156,9 +161,7 @@ function minDistance(
   if (qs >= a && qs <= b && qz >= lowerZ(t, ts, tz, qs)) return 0;
   let best = Number.POSITIVE_INFINITY;
   const take = (s: number, z: number) => {
-    const ds = s - qs;
-    const dz = z - qz;
-    const d = Math.sqrt(ds * ds + dz * dz);
+    const d = meridianDistanceMm(qs, qz, s, z);
     if (d < best) best = d;
   };
   // The clip edges (vertical rays up from the lower boundary).
