@@ -8,7 +8,7 @@ import { CORRECTED_KEYS } from '../../src/core/procedures/procedures';
 import { CROSS_AXIS_NOTE } from '../../src/ui/resultsText';
 import { useSite } from './harness';
 
-const { open } = useSite('docs/curvature-note');
+const { open } = useSite('docs/curvature-note', { scene: false });
 
 const BASE = '?R=3&Rcr=1&rho=5&tilt=3&h=0.05&unit=mm';
 

@@ -24,7 +24,7 @@ import { run } from '../cli/helpers';
 import { answeredRanges } from '../support/pageAnswer';
 import { keepShot, pageSettled, ROOT, urlWrites, useSite } from './harness';
 
-const site = useSite('docs/curved-three-axis');
+const site = useSite('docs/curved-three-axis', { scene: false });
 
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 const DESKTOP = { width: 1400, height: 900 };

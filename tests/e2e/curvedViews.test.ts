@@ -8,7 +8,7 @@
 import { describe, expect, it } from 'vitest';
 import { typeInto, useSite } from './harness';
 
-const site = useSite('docs/curved-views');
+const site = useSite('docs/curved-views', { scene: false });
 
 const DOME = '?R=3&Rcr=1&rho=5&h=0.05&feedRadius=8&crossRadius=12&unit=mm';
 

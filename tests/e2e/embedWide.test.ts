@@ -9,7 +9,7 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { useSite } from './harness';
 
-const site = useSite('docs/embed-wide');
+const site = useSite('docs/embed-wide', { scene: false });
 
 /** The reserved height (the iframe's, CSS px) and the page's content height inside it, once it has loaded. */
 async function reserveAndContent(host: Page): Promise<{ reserved: number; content: number }> {

@@ -21,7 +21,7 @@ import { solve } from '../../src/worker/jobs/solve';
 import { teethSurfaceGrid } from '../../src/worker/teethSurface';
 import { typeInto, useSite } from './harness';
 
-const site = useSite('finish');
+const site = useSite('finish', { scene: false });
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 const QUERY = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm';
 

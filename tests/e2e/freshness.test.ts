@@ -16,7 +16,7 @@ import { formatLenUnit } from '../../src/ui/format';
 import { keepShot, namedWorker, useSite } from './harness';
 import { heldAnswers, holdReplies, release } from './heldReplies';
 
-const site = useSite('docs/freshness');
+const site = useSite('docs/freshness', { scene: false });
 const TOOL: ToolInput = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 /** The headline the page must show for h (mm), from the core. */
 const headline = (h: number) => formatLenUnit(exactForward(forwardInput(TOOL, 'one-way', h)).intervalMm, 'mm');

@@ -21,6 +21,12 @@ export interface SiteOptions {
   readonly build?: 'e2e' | 'production';
   /** Headers sent with every response. */
   readonly headers?: Readonly<Record<string, string>>;
+  /**
+   * false: the shared page never gets the 3D scene's code (its request held, as while it loads; the
+   * page works without it, tests/e2e/lazyScene.test.ts), for files that look at no part of the scene:
+   * a scene drawn on SwiftShader costs most of the CPU of a test that never reads it.
+   */
+  readonly scene?: boolean;
 }
 
 /**
@@ -78,6 +84,11 @@ export async function forgetPreferences(target: Page | BrowserContext): Promise<
   }, PREFERENCES_KEY);
 }
 
+/** The 3D scene's code (its chunk and three.js's) requested by `page` is held: never answered. */
+export async function holdScene(page: Page): Promise<void> {
+  await page.route(/\/assets\/scene-[^/]*\.js$/, () => {});
+}
+
 /** Registers beforeAll/afterAll hooks for a test file. */
 export function useSite(subPath: string, options: SiteOptions = {}): Harness {
   let browser: Browser | null = null;
@@ -112,6 +123,7 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
     if (shared === null || shared.isClosed()) {
       const page = await need(browser, 'browser').newPage({ viewport, colorScheme });
       await forgetPreferences(page);
+      if (options.scene === false) await holdScene(page);
       page.on('pageerror', (e) => errors.push(e.message));
       page.on('console', (m) => {
         if (m.type() === 'error') errors.push(m.text());

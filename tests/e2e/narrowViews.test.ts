@@ -10,7 +10,7 @@ import { describe, expect, it } from 'vitest';
 import { axeViolations } from './axe';
 import { animationFrames, keepShot, PHONE, pageSettled, usePhonePage, useSite } from './harness';
 
-const site = useSite('docs/narrow-views');
+const site = useSite('docs/narrow-views', { scene: false });
 const openPhone = usePhonePage(site);
 const STATE = 'R=3&Rcr=1&rho=5&h=0.05&unit=mm';
 

@@ -13,7 +13,7 @@ import { describe, expect, it } from 'vitest';
 import { TYPING_PAUSE_MS } from '../../src/ui/typing';
 import { SOLVER, useSite, workerIdle } from './harness';
 
-const site = useSite('docs/onePass');
+const site = useSite('docs/onePass', { scene: false });
 
 type Counters = {
   __pathInterval: { requestsBuilt(): number; calls(worker: string): number; replies(w: string): number };

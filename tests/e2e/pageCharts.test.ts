@@ -10,7 +10,7 @@ import { doublyCurvedForward } from '../../src/core/surfaces/doublyCurved';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
 import { keepShot, useSite } from './harness';
 
-const { open } = useSite('docs/views');
+const { open } = useSite('docs/views', { scene: false });
 
 /** The x of the dashed current-slope line in the step chart (SVG user units). */
 const markerX = async (page: import('playwright-core').Page, chart: string) =>

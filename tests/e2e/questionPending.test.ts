@@ -10,7 +10,7 @@ import { formatLenUnit } from '../../src/ui/format';
 import { namedWorker, SOLVER, useSite } from './harness';
 import { heldAnswers, holdReplies, release } from './heldReplies';
 
-const site = useSite('docs/question-pending');
+const site = useSite('docs/question-pending', { scene: false });
 
 /** The headline for a lead angle (deg): the README's tool, h 0.05 mm, one-way on a plane. */
 const headline = (leadDeg: number) =>

@@ -13,7 +13,7 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { keepShot, pageSettled, ROOT, retype, usePhonePage, useSite } from './harness';
 
-const site = useSite('docs/result-bar');
+const site = useSite('docs/result-bar', { scene: false });
 const AXE = readFileSync(`${ROOT}node_modules/axe-core/axe.min.js`, 'utf8');
 
 const open = usePhonePage(site);

@@ -10,7 +10,7 @@ import { describe, expect, it } from 'vitest';
 import { axeViolations } from './axe';
 import { keepShot, pageSettled, useSite } from './harness';
 
-const site = useSite('docs/results-table');
+const site = useSite('docs/results-table', { scene: false });
 
 /** The table's box, the table and the scene's left edge (px), and the frame's cue. */
 const measure = (page: Page) =>

@@ -18,7 +18,7 @@ import { cellText } from '../../src/ui/shopSheetText';
 import { axeViolations } from './axe';
 import { keepShot, useSite, viewAs } from './harness';
 
-const site = useSite('shop/sheet');
+const site = useSite('shop/sheet', { scene: false });
 
 const PLAIN = '?R=3&Rcr=1&rho=5&h=0.05&unit=mm';
 const DESKTOP = { name: 'desktop', width: 1440, height: 900, touch: false } as const;

@@ -10,7 +10,7 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { keepShot, pageSettled, ROOT, typeInto, usePhonePage, useSite } from './harness';
 
-const site = useSite('docs/shop-tools');
+const site = useSite('docs/shop-tools', { scene: false });
 
 const open = usePhonePage(site);
 

@@ -14,7 +14,7 @@ import { groupSteps, sceneToleranceMm } from '../../src/ui/views/stepGroups';
 import { traceFrames } from '../../src/worker/api';
 import { keepShot, useSite } from './harness';
 
-const site = useSite('docs/teach');
+const site = useSite('docs/teach', { scene: false });
 const { open } = site;
 
 const TOOL1 = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };

@@ -8,7 +8,7 @@
 import { describe, expect, it } from 'vitest';
 import { useSite } from './harness';
 
-const site = useSite('docs/trust-four');
+const site = useSite('docs/trust-four', { scene: false });
 
 type Probe = { __pathInterval: { pending(worker?: string): number } };
 

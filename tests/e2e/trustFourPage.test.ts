@@ -10,7 +10,7 @@ import { afterAll, describe, expect, it } from 'vitest';
 import { exactIntervalMm, forwardInput } from '../../src/core/index';
 import { useSite } from './harness';
 
-const site = useSite('docs/trust-four-page');
+const site = useSite('docs/trust-four-page', { scene: false });
 
 const SAVED_TOOLS = 30_000;
 

@@ -14,7 +14,7 @@ import { describe, expect, it } from 'vitest';
 import { axeViolations } from './axe';
 import { keepShot, pageSettled, showView, typeInto, useSite } from './harness';
 
-const site = useSite('docs/units');
+const site = useSite('docs/units', { scene: false });
 const VIEWPORT = { width: 1440, height: 900 };
 
 /** A length unit right after a number (with or without a space). */

@@ -8,7 +8,7 @@ import { describe, expect, it } from 'vitest';
 import { FIELDS } from '../../src/core/input/fields';
 import { keepShot, PHONE, pageSettled, useSite } from './harness';
 
-const { open } = useSite('docs/view-link');
+const { open } = useSite('docs/view-link', { scene: false });
 
 const LAPTOP = { width: 1440, height: 900 };
 
