@@ -35,7 +35,7 @@ import { AxesDrawable } from './drawables/axes';
 import { CuspsDrawable } from './drawables/cusps';
 import { DesignSurfacesDrawable } from './drawables/designSurfaces';
 import { DimensionsDrawable } from './drawables/dimensions';
-import { type Drawable, type DrawState, type SceneLabels, THEMED_COLOURS } from './drawables/parts';
+import { type Drawable, type DrawState, THEMED_COLOURS } from './drawables/parts';
 import { PathsDrawable } from './drawables/paths';
 import { ToolDrawable } from './drawables/tool';
 import { ToolMarksDrawable } from './drawables/toolMarks';
@@ -44,11 +44,12 @@ import { FatLine, setLineScreen } from './fatLines';
 import { gatherFramePoints } from './framePoints';
 import { drawnHeightMm, heightMapFor, sceneHeightExaggeration } from './heightExaggeration';
 import { LabelAnchor, LabelLayer } from './labelLayer';
+import type { SceneLabels } from './sceneLabels';
 import { SCENE_WORDS } from './sceneWords';
 import { ViewedScene } from './view3d';
 
 export type { CameraPreset } from './cameraFit';
-export type { SceneLabels } from './drawables/parts';
+export type { SceneLabels } from './sceneLabels';
 
 const BACKGROUND = 0xf7f8fa;
 
