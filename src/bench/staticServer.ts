@@ -2,7 +2,7 @@
  * A minimal static server for the built site under a sub-path (as a docs host would serve
  * it), on loopback only. Anything outside the sub-path is 404, so absolute asset URLs fail.
  */
-import { createReadStream, existsSync, statSync } from 'node:fs';
+import { readFileSync, type Stats, statSync } from 'node:fs';
 import { createServer, type Server } from 'node:http';
 import { extname, join, normalize } from 'node:path';
 
@@ -36,6 +36,27 @@ export function serveStatic(
   }));
 }
 
+/** A file's stats, or null when there is none (nothing thrown). */
+function fileStats(file: string): Stats | null {
+  return statSync(file, { throwIfNoEntry: false }) ?? null;
+}
+
+/**
+ * Files served, kept in memory with the size and time of their last change: a page load asks for
+ * the same dozens of assets again and again (the browser tests load hundreds of pages), and
+ * reading each from disk with a stream cost the tests' own process more CPU than anything else it
+ * did there. A file written again (a test's host page) is read again.
+ */
+const served = new Map<string, { readonly mtimeMs: number; readonly size: number; readonly bytes: Buffer }>();
+
+function contents(file: string, stats: Stats): Buffer {
+  const kept = served.get(file);
+  if (kept && kept.mtimeMs === stats.mtimeMs && kept.size === stats.size) return kept.bytes;
+  const bytes = readFileSync(file);
+  served.set(file, { mtimeMs: stats.mtimeMs, size: stats.size, bytes });
+  return bytes;
+}
+
 export interface StaticMounts {
   /** The URL of each mount, in the order given. */
   readonly urls: readonly string[];
@@ -60,13 +81,17 @@ export function serveStaticMounts(
     }
     const rel = normalize(path.slice(mount.prefix.length) || 'index.html').replace(/^(\.\.[/\\])+/, '');
     let file = join(mount.root, rel);
-    if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
-    if (!existsSync(file)) {
+    let stats = fileStats(file);
+    if (stats?.isDirectory()) {
+      file = join(file, 'index.html');
+      stats = fileStats(file);
+    }
+    if (!stats?.isFile()) {
       res.writeHead(404).end('not found');
       return;
     }
     res.writeHead(200, { ...headers, 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
-    createReadStream(file).pipe(res);
+    res.end(contents(file, stats));
   });
   return new Promise((resolve) => {
     server.listen(0, '127.0.0.1', () => {

@@ -16,20 +16,11 @@ const site = useSite('docs/curved-scene');
 type Probe = { __pathInterval: { frames(): number } };
 
 /**
- * Opens the page in a tab of its own (the harness's `open` waits for L/2, which a three-axis answer
- * does not show) and waits for the step-over L; collects the console's errors.
+ * Opens the query in the file's shared tab (a fresh document at this size, light) and waits for the
+ * step-over L (a three-axis answer shows no L/2); the page's console errors come with it.
  */
-async function open(query: string, viewport: { width: number; height: number }) {
-  const page = await site.browser().newPage({ viewport });
-  const errors: string[] = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  page.on('console', (m) => {
-    if (m.type() === 'error') errors.push(m.text());
-  });
-  await page.goto(`${site.url()}?${query}`);
-  await page.getByTestId('result-exact-interval').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
-  return { page, errors };
-}
+const open = (query: string, viewport: { width: number; height: number }) =>
+  site.open(`?${query}`, viewport, 'light', { readyTestId: 'result-exact-interval' });
 
 /** The scene's labels on screen overlap none other and lie inside the scene (as teachScene.test.ts checks). */
 async function expectLabelsClear(page: Page, where: string): Promise<void> {
@@ -100,7 +91,6 @@ describe('the 3D scene of a doubly curved point at the limits of the tool radius
       // The axes' labels are placed (none behind the camera or beyond the far plane).
       expect(await page.locator('.scene-label.label-axis:visible').count()).toBe(3);
       expect(errors).toEqual([]);
-      await page.close();
     });
 });
 
@@ -148,7 +138,6 @@ describe('the 3D scene of doubly curved points and three-axis machining', () => 
           await expectLegible(page, `${device} ${name} dark`);
         }
         expect(errors).toEqual([]);
-        await page.close();
       });
 });
 
@@ -181,6 +170,5 @@ describe('the 3D scene switched between machines and after a lost WebGL context'
     await sceneIdle(page);
     expect(await paintedFraction(page)).toBeGreaterThan(0.1);
     expect(errors).toEqual([]);
-    await page.close();
   });
 });

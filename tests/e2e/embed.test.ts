@@ -361,10 +361,13 @@ afterAll(async () => {
   await hosts?.close();
 });
 let hostPages = 0;
+/** The tab the host pages load in, one after the other (a fresh document each). */
+let hostTab: Page | null = null;
 
 /**
  * A host page on another origin than the calculator's, in `scheme`: it loads embed.js from the
  * calculator's site and then has `body`; it counts the elements' resize events (`window.resized`).
+ * Loaded in the file's host tab (a fresh document; the tab kept for the next host page).
  */
 async function hostPage(scheme: 'light' | 'dark', body: string): Promise<Page> {
   if (hosts === null) throw new Error('the host server is not started');
@@ -375,9 +378,14 @@ async function hostPage(scheme: 'light' | 'dark', body: string): Promise<Page> {
       "<script>window.resized = 0; addEventListener('path-interval:resize', () => { window.resized += 1; }, true);</script>" +
       `<script src="${site.url()}embed.js"></script></head><body><main>${body}</main></body></html>`,
   );
-  const host = await site.browser().newPage({ viewport: { width: 900, height: 1000 }, colorScheme: scheme });
-  await host.goto(`${hosts.url}${name}`);
-  return host;
+  if (hostTab === null || hostTab.isClosed())
+    hostTab = await site.browser().newPage({ viewport: { width: 900, height: 1000 }, colorScheme: scheme });
+  else {
+    await hostTab.goto('about:blank');
+    await hostTab.emulateMedia({ colorScheme: scheme });
+  }
+  await hostTab.goto(`${hosts.url}${name}`);
+  return hostTab;
 }
 
 /** The frame of the element `#id` once its page has started (posted its height) and drawn `drawn`. */
@@ -448,7 +456,6 @@ describe('the theme of <path-interval-calculator>, changed without reloading the
       .poll(() => reloaded.getByTestId('notice').textContent())
       .toMatch(/theme="purple" is not light, dark or auto/);
     expect((await look(reloaded)).marker).toBeNull();
-    await host.close();
   });
 
   it('theme="auto" takes the host page\'s colour scheme and follows it as it changes, in place', async () => {
@@ -471,7 +478,6 @@ describe('the theme of <path-interval-calculator>, changed without reloading the
     expect(await iframe.getAttribute('src')).toBe(src);
     await keepShot(host, 'embed-theme-auto-light');
     expect(await axeViolations(frame), 'restyled light').toEqual([]);
-    await host.close();
   });
 
   it("the embedded page takes a theme message only from its host's window and origin, with a theme word", async () => {
@@ -526,7 +532,6 @@ describe('the theme of <path-interval-calculator>, changed without reloading the
       (f as HTMLIFrameElement).contentWindow?.postMessage({ type: 'path-interval:theme', theme: 'light' }, '*');
     });
     await expect.poll(async () => (await look(frame)).theme).toBe('light');
-    await host.close();
   });
 });
 
@@ -577,7 +582,6 @@ describe('hostile attribute values of <path-interval-calculator>', () => {
     const text = (await frame.locator('body').textContent()) ?? '';
     expect(text).not.toMatch(/NaN|Infinity|-0(?![.\d])/);
     await keepShot(host, 'embed-hostile-attributes', { fullPage: true });
-    await host.close();
   });
 });
 
@@ -708,6 +712,5 @@ describe('<path-interval-calculator> below the fold: its height reserved, no jum
         await keepShot(host.locator('#e-card'), 'embed-result-card');
       }
     }
-    await host.close();
   }, 120_000);
 });

@@ -39,6 +39,15 @@ export function siteDir(build: 'e2e' | 'production'): string {
   return build === 'production' ? `${ROOT}dist` : `${ROOT}${E2E_OUT_DIR}`;
 }
 
+/** What {@link Harness.open} waits for. */
+export interface OpenOptions {
+  /**
+   * The result whose digits mark the first answer (attached; it may be hidden): `result-exact-half`
+   * by default; `result-exact-interval` for a question that shows L only (a three-axis one).
+   */
+  readonly readyTestId?: string;
+}
+
 export interface Harness {
   readonly browser: () => Browser;
   readonly url: () => string;
@@ -54,6 +63,7 @@ export interface Harness {
     query: string,
     viewport?: { width: number; height: number },
     colorScheme?: 'light' | 'dark',
+    options?: OpenOptions,
   ): Promise<{ page: Page; errors: string[] }>;
   /**
    * As {@link open}, but keeps the shared page's document when it was opened with this query and
@@ -84,9 +94,9 @@ export async function forgetPreferences(target: Page | BrowserContext): Promise<
   }, PREFERENCES_KEY);
 }
 
-/** The 3D scene's code (its chunk and three.js's) requested by `page` is held: never answered. */
-export async function holdScene(page: Page): Promise<void> {
-  await page.route(/\/assets\/scene-[^/]*\.js$/, () => {});
+/** The 3D scene's code (its chunk and three.js's) requested by a page (or a context's pages) is held: never answered. */
+export async function holdScene(target: Page | BrowserContext): Promise<void> {
+  await target.route(/\/assets\/scene-[^/]*\.js$/, () => {});
 }
 
 /** Registers beforeAll/afterAll hooks for a test file. */
@@ -140,6 +150,7 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
     query: string,
     viewport = { width: 1400, height: 900 },
     colorScheme: 'light' | 'dark' = 'light',
+    { readyTestId = 'result-exact-half' }: OpenOptions = {},
   ) => {
     const page = await sharedPage(viewport, colorScheme);
     intact = null;
@@ -148,7 +159,7 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
     errors = [];
     const mine = errors;
     await page.goto(`${need(site, 'site').url}${query}`);
-    await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+    await page.getByTestId(readyTestId).filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
     intact = query;
     return { page, errors: mine };
   };

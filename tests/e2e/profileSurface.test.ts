@@ -47,7 +47,6 @@ describe('the profile over any surface', () => {
       expect(scallop.width / plot.width, 'the scallops span the plot').toBeGreaterThan(0.3);
       expect(scallop.height / plot.height, 'the scallops are tall enough to read').toBeGreaterThan(0.2);
       expect(errors).toEqual([]);
-      await page.close();
     });
   }
 });
@@ -161,7 +160,6 @@ describe("the profile's labels (issue 28 point 6)", () => {
     expect(await legendCut(page)).toEqual([]);
     await keepShot(page, 'profile-present-1280x720-plane');
     expect(errors).toEqual([]);
-    await page.close();
   }, 90_000);
 
   it('presenting a tilted pass on a convex cylinder at 1280 x 720: "L = ... (arc)", h, wR, wL and O whole and uncrossed; the legend in view', async () => {
@@ -180,7 +178,6 @@ describe("the profile's labels (issue 28 point 6)", () => {
     expect(await legendCut(page)).toEqual([]);
     await keepShot(page, 'profile-present-1280x720-cylinder');
     expect(errors).toEqual([]);
-    await page.close();
   }, 90_000);
 });
 
@@ -197,7 +194,6 @@ describe('a flat end lying flat (no scallop)', () => {
       points.slice(0, 80),
     ).toBe(true);
     expect(errors).toEqual([]);
-    await page.close();
   });
 });
 

@@ -16,7 +16,7 @@ import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
 import { formatLen } from '../../src/ui/format';
 import { cellText } from '../../src/ui/shopSheetText';
 import { axeViolations } from './axe';
-import { keepShot, useSite, viewAs } from './harness';
+import { forgetPreferences, holdScene, keepShot, useSite, viewAs } from './harness';
 
 const site = useSite('shop/sheet', { scene: false });
 
@@ -25,47 +25,62 @@ const DESKTOP = { name: 'desktop', width: 1440, height: 900, touch: false } as c
 const PHONE = { name: 'phone', width: 390, height: 844, touch: true } as const;
 type Viewport = typeof DESKTOP | typeof PHONE;
 
-const contexts: BrowserContext[] = [];
+/** Per viewport, one context (downloads accepted; touch on the phone) and its one tab, with the query it holds intact (null: changed or none). */
+const tabs = new Map<string, { context: BrowserContext; page: Page; errors: string[]; intact: string | null }>();
 afterAll(async () => {
-  for (const c of contexts) await c.close();
+  for (const { context } of tabs.values()) await context.close();
 });
 
-/** A fresh page in its own context (downloads accepted; touch on the phone), the first result shown. */
-async function open(vp: Viewport, theme: 'light' | 'dark', query: string): Promise<{ page: Page; errors: string[] }> {
+/** The viewport's tab, opened on first use; a first visit every load (nothing remembered). */
+async function tab(
+  vp: Viewport,
+): Promise<{ context: BrowserContext; page: Page; errors: string[]; intact: string | null }> {
+  const found = tabs.get(vp.name);
+  if (found !== undefined && !found.page.isClosed()) return found;
   const context = await site.browser().newContext({
     viewport: { width: vp.width, height: vp.height },
     hasTouch: vp.touch,
     isMobile: vp.touch,
-    colorScheme: theme,
     acceptDownloads: true,
   });
-  contexts.push(context);
+  await forgetPreferences(context);
+  await holdScene(context);
   const page = await context.newPage();
-  const errors: string[] = [];
-  page.on('pageerror', (e) => errors.push(e.message));
+  const made = { context, page, errors: [] as string[], intact: null as string | null };
+  page.on('pageerror', (e) => made.errors.push(e.message));
   page.on('console', (m) => {
-    if (m.type() === 'error') errors.push(m.text());
+    if (m.type() === 'error') made.errors.push(m.text());
   });
-  await page.goto(`${site.url()}${query}`);
-  await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
-  return { page, errors };
+  tabs.set(vp.name, made);
+  return made;
 }
 
-/** Per viewport, the page of the plain mm state that the light and dark tests share (the sheet closed after each). */
-const plainPages = new Map<string, { page: Page; errors: string[] }>();
+/** A fresh document of `query` in the viewport's tab, in `theme`, the first result shown; its console's errors. */
+async function open(vp: Viewport, theme: 'light' | 'dark', query: string): Promise<{ page: Page; errors: string[] }> {
+  const t = await tab(vp);
+  t.intact = null;
+  if (t.page.url() !== 'about:blank') await t.page.goto('about:blank');
+  await t.page.emulateMedia({ media: 'screen', colorScheme: theme });
+  t.errors = [];
+  const errors = t.errors;
+  await t.page.goto(`${site.url()}${query}`);
+  await t.page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
+  return { page: t.page, errors };
+}
 
 /**
- * The plain mm state in `vp`'s context, in `theme`: loaded once per viewport, the second theme by
- * the system's colour scheme on the same document.
+ * The plain mm state in `vp`'s tab, in `theme`: loaded once for the light and dark tests that share
+ * it (they change no input; the sheet closed after each), the second theme by the system's colour
+ * scheme on the same document.
  */
 async function openPlain(vp: Viewport, theme: 'light' | 'dark'): Promise<{ page: Page; errors: string[] }> {
-  let found = plainPages.get(vp.name);
-  if (found === undefined || found.page.isClosed()) {
-    found = await open(vp, theme, PLAIN);
-    plainPages.set(vp.name, found);
+  const t = await tab(vp);
+  if (t.intact !== PLAIN) {
+    await open(vp, theme, PLAIN);
+    t.intact = PLAIN;
   }
-  await viewAs(found.page, vp, theme);
-  return found;
+  await viewAs(t.page, vp, theme);
+  return { page: t.page, errors: t.errors };
 }
 
 /** Taps on the phone, clicks on the desktop. */
