@@ -22,7 +22,8 @@ interface PassOnLine {
  * convex function of y, least on its CC path: on either side of the line it rises with the distance
  * to the pass. So the passes are prepared nearest first on each side, and a side stops at the first
  * pass whose lowest point is at or above the crest of the line's lowest pass (the highest that pass
- * reaches): it and the passes beyond it stay above that pass everywhere and never shape the line.
+ * reaches): it and the passes beyond it stay above that pass everywhere and never shape the line
+ * (a side whose nearest pass is such adds no other).
  */
 export class RowEnvelope {
   readonly m: ToothModel;
@@ -50,14 +51,18 @@ export class RowEnvelope {
       return p;
     };
     let lowest: PassOnLine | undefined;
+    const nearest: Array<PassOnLine | undefined> = [];
     for (const side of sides) {
       const first = side[0];
-      if (first === undefined) continue;
-      const p = build(first);
-      if (p.row.reaches && (lowest === undefined || p.row.zStar < lowest.row.zStar)) lowest = p;
+      const p = first === undefined ? undefined : build(first);
+      nearest.push(p);
+      if (p?.row.reaches && (lowest === undefined || p.row.zStar < lowest.row.zStar)) lowest = p;
     }
     this.topMm = lowest === undefined ? Number.NaN : this.passHeightOf(lowest, this.crestOf(lowest));
-    for (const side of sides) {
+    for (const [s, side] of sides.entries()) {
+      // A side whose nearest pass already stands at or above the crest adds none beyond it.
+      const first = nearest[s];
+      if (first?.row.reaches && first.row.zStar >= this.topMm) continue;
       for (let k = 1; k < side.length; k++) {
         const p = build(side[k] as [number, 1 | -1, number]);
         if (p.row.zStar >= this.topMm) break;
