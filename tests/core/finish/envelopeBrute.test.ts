@@ -209,6 +209,28 @@ describe('envelope height against the tooth-sweep brute force', () => {
     }
   });
 
+  it("hf where one side's first event drops at the crest (a level first touching the section there) agrees with the brute force within 1e-9 mm", () => {
+    // Ball at lead 10.5, tilt -3.9, zigzag, 2 teeth, fz 0.56: the left side's first event drops from
+    // 0.074 to 0.023 mm where the right one has risen to 0.0419 mm, so the difference of the sides
+    // changes sign by that jump; the line's highest is 0.0419 mm, beside it.
+    const c: Case = {
+      label: 'ball R 2.09 lead 10.5 tilt -3.9 zigzag z 2 fz 0.56',
+      tool: {
+        toolRadiusMm: 2.090032368665561,
+        cornerRadiusMm: 2.090032368665561,
+        leadAngleDeg: 10.520723228342831,
+        tiltAngleDeg: -3.924421393312514,
+      },
+      pattern: 'zigzag',
+      intervalMm: 0.8543887246737099,
+      flutes: 2,
+      fzMm: 0.56,
+      passPhase: 0,
+    };
+    const brute = bruteFeedMarkHeightMm(bruteParams(c), 100);
+    expect(Math.abs(feedMarks(modelOf(c)).heightMm - brute.heightMm), c.label).toBeLessThan(1e-9);
+  });
+
   it("the areal map's grid (sample i at (i + 1/2) dx over the cell) agrees with the brute force's within 1e-9 mm, with and without runout", () => {
     for (const c of [fixed[0] as Case, withRunout[0] as Case]) checkMap(c);
   });
