@@ -12,16 +12,15 @@ import { maxFeedPerToothMm, validateFinish } from '../core/finish/finishInput';
 import { toothModel } from '../core/finish/toothModel';
 import type { AnyInputError } from '../core/input/inputErrors';
 import { fromMm, type LengthUnit } from '../core/input/units';
-import { inverseInput } from '../core/input/validate';
 import {
   type SaPair,
+  TARGET_SA_RUNOUT,
   TargetSaTooLongError,
   type TeethInput,
   targetRzPair,
   targetSaPairs,
   validateTargetSa,
 } from '../core/roughness/targetSa';
-import { planeInverse } from '../core/surfaces/exact';
 import { validateForward } from '../core/surfaces/validate';
 import type { ValueOption } from './args';
 import { rawPass } from './question';
@@ -41,10 +40,6 @@ export type TargetRun =
       readonly inputErrors: readonly AnyInputError[];
       readonly finishErrors: readonly FinishError[];
     };
-
-/** The refusal of runout with a target Sa (a sentence of its own, named by --runout). */
-export const TARGET_SA_RUNOUT =
-  'Runout e is not taken with a target Sa yet: with runout the Sa of one pair costs seconds, and the search needs about a hundred (give --runout 0 or leave it out, or ask --fz at a step-over).';
 
 /** The teeth of the options (fz checked at R, then dropped: it is the answer). */
 function teethOf(
@@ -71,13 +66,11 @@ function withUnit(L: Lengths, mm: number): string {
   return `${L.length(mm)} ${L.u}`;
 }
 
-/** The feed marks and scallop of a pair (mm). */
-function pairHeights(pass: PassInput, teeth: TeethInput, L: number, fz: number): { h: number; hf: number } {
-  const h = planeInverse(inverseInput(pass, pass.pattern, L)).cuspHeightMm;
-  const hf = feedMarks(
+/** The feed marks hf of a pair along the CC path (mm). */
+function pairFeedMarkMm(pass: PassInput, teeth: TeethInput, L: number, fz: number): number {
+  return feedMarks(
     toothModel({ tool: pass, pattern: pass.pattern, intervalMm: L, finish: { ...teeth, feedPerToothMm: fz } }),
   ).heightMm;
-  return { h, hf };
 }
 
 /**
@@ -118,7 +111,7 @@ export function targetFinish(values: Values, target: FinishTarget, unit: LengthU
   const area = (a: number, b: number) => `${length(fromMm(a, unit) * fromMm(b, unit))} ${L.u}^2`;
   if (target === 'rz') {
     const r = targetRzPair(pass, teeth, targetMm);
-    const { hf } = pairHeights(pass, teeth, r.intervalMm, r.feedPerToothMm);
+    const hf = pairFeedMarkMm(pass, teeth, r.intervalMm, r.feedPerToothMm);
     const table = [
       `Target Rz ${withUnit(L, targetMm)} across the feed (scallop h) and along it (feed marks hf):`,
       `  step-over L      ${withUnit(L, r.intervalMm)}   (h = the target)`,
@@ -152,7 +145,8 @@ export function targetFinish(values: Values, target: FinishTarget, unit: LengthU
     };
   }
   const b = a.best;
-  const { h, hf } = pairHeights(pass, teeth, b.intervalMm, b.feedPerToothMm);
+  const h = a.bestScallopHeightMm;
+  const hf = pairFeedMarkMm(pass, teeth, b.intervalMm, b.feedPerToothMm);
   const table = [
     `Target Sa ${withUnit(L, targetMm)}: the pair with the largest L x fz (area machined per tooth)`,
     `  step-over L      ${withUnit(L, b.intervalMm)}`,

@@ -183,7 +183,7 @@ export class TargetSaPanel {
     const areaText = area === null ? NO_VALUE : formatLen(area, 'mm', 'fine');
     this.set('target-sa-area', area === null ? NO_VALUE : `${areaText} ${unitSymbol(u)}²`);
     this.set('target-sa-sa', formatRoughness(best?.saMm ?? null, u));
-    this.set('target-sa-h', formatRoughness(a?.bestScallopMm ?? null, u));
+    this.set('target-sa-h', formatRoughness(a?.answer.bestScallopHeightMm ?? null, u));
     this.set('target-sa-l0', a === null ? NO_VALUE : feedLength(a.answer.zeroFeedIntervalMm, u));
     this.use.setAttribute('aria-disabled', String(a === null));
     // The worker's refusals worded in the language in force (finishText.ts), on their fields too.

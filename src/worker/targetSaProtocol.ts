@@ -39,8 +39,6 @@ export type TargetSaReply =
       readonly ok: true;
       readonly request: TargetSaRequest;
       readonly answer: TargetSaAnswer;
-      /** The scallop h across the feed at the best pair's step-over (mm). */
-      readonly bestScallopMm: number;
     }
   | { readonly ok: false; readonly request: TargetSaRequest; readonly errors: readonly TargetSaMessage[] };
 

@@ -8,7 +8,9 @@ import { describe, expect, it } from 'vitest';
 import { PLANE } from '../../src/core/domain/surface';
 import { arealParameters } from '../../src/core/finish/areal';
 import { toothModel } from '../../src/core/finish/toothModel';
+import { inverseInput } from '../../src/core/input/validate';
 import { targetRzPair } from '../../src/core/roughness/targetSa';
+import { planeInverse } from '../../src/core/surfaces/exact';
 import { runMain } from './helpers';
 
 const BASE = ['--R', '3', '--Rcr', '1', '--rho', '5'];
@@ -27,8 +29,16 @@ describe('--target-sa', () => {
     const r = await runMain([...BASE, '--target-sa', '0.0008', '--flutes', '2', '--json']);
     expect(r.code, r.stderr).toBe(0);
     const t = (JSON.parse(r.stdout) as { targetSa: Record<string, unknown> }).targetSa;
-    const best = t.best as { interval: number; feedPerTooth: number; Sa: number; feedLimited: boolean };
+    const best = t.best as {
+      interval: number;
+      feedPerTooth: number;
+      Sa: number;
+      feedLimited: boolean;
+      scallopHeight: number;
+    };
     expect(best.feedLimited).toBe(false);
+    // The scallop across the feed at the best pair's step-over: the plane's exact inverse there.
+    expect(best.scallopHeight).toBe(planeInverse(inverseInput(PASS, 'one-way', best.interval)).cuspHeightMm);
     const full = arealParameters(
       toothModel({
         tool: PASS,
@@ -65,7 +75,7 @@ describe('--target-sa', () => {
   it('refuses runout, a target beyond the largest Ra and a bad target in one line each, named by the option', async () => {
     const runout = await runMain([...BASE, '--target-sa', '0.0008', '--flutes', '2', '--runout', '0.01']);
     expect(runout.code).toBe(2);
-    expect(runout.stderr).toMatch(/^error: --runout: Runout e is not taken with a target Sa yet/);
+    expect(runout.stderr).toMatch(/^error: --runout: Target Sa is computed without runout/);
     const big = await runMain([...BASE, '--target-sa', '1', '--flutes', '2', '--json']);
     expect(big.code).toBe(2);
     expect(big.stderr).toMatch(/^error: --target-sa: Target Sa must be below 0\.15\d+ mm \(got 1\)/);

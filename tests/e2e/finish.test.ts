@@ -14,6 +14,7 @@ import { describe, expect, it } from 'vitest';
 import { feedMarks, finishReport, toothModel } from '../../src/core/finish/index';
 import { forwardInput } from '../../src/core/input/validate';
 import { forwardOfRaTarget, validateRaTarget } from '../../src/core/roughness/raTarget';
+import { TARGET_SA_RUNOUT } from '../../src/core/roughness/targetSa';
 import { exactForward } from '../../src/core/surfaces/solve';
 import { feedLength } from '../../src/ui/finishLength';
 import { formatLenUnit, formatRoughness } from '../../src/ui/format';
@@ -373,9 +374,8 @@ describe('the finish box', () => {
     if ((await teeth.getAttribute('open')) === null) await teeth.locator('summary').click();
     await commit(page, 'input-runout', '0.01');
     await page.locator('input[name="surface"][value="plane"]').check();
-    const runout = 'Target Sa is computed without runout: set the runout e to 0 (or leave it empty) for the best pair.';
-    await expect.poll(() => text(page, 'target-sa-message'), { timeout: 20_000 }).toBe(runout);
-    expect(await text(page, 'error-runout')).toBe(runout);
+    await expect.poll(() => text(page, 'target-sa-message'), { timeout: 20_000 }).toBe(TARGET_SA_RUNOUT);
+    expect(await text(page, 'error-runout')).toBe(TARGET_SA_RUNOUT);
     const seen = await page.evaluate(() => {
       const w = window as unknown as { seen: string[]; sampling: boolean };
       w.sampling = false;

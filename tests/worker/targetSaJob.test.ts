@@ -81,6 +81,6 @@ describe('the targetSa job', () => {
     const area = best.intervalMm * best.feedPerToothMm;
     for (const p of curve) expect(p.intervalMm * p.feedPerToothMm).toBeLessThan(area * 1.01);
     const h = exactInverse(inverseInput(request.pass, 'one-way', best.intervalMm, request.pass.surface)).cuspHeightMm;
-    expect(r.bestScallopMm).toBe(h);
+    expect(r.answer.bestScallopHeightMm).toBe(h);
   });
 });

@@ -4,10 +4,16 @@
  * search each. Also where each pass leaves its valleys along the line: an event at the section's
  * lowest point, where the bottom's level `(Phi_b + omega x) / pitch` is a whole number. Lengths mm.
  */
-import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
+import { bracketedRoot, MAX_ITERATIONS, maximise, newSearchEnd } from '../math/rootFinder';
 import { SectionPoint } from './bodySection';
 import { PassRow, passEventMinMm, passEventOrNaNMm, passesAt, passSideEventsMm } from './envelope';
 import type { ToothModel } from './toothModel';
+
+/**
+ * A difference of the two sides' first events (relative to R) above which the crest search's root is
+ * a jump of one side, not a crossing: a crossing leaves about 1e-15 of it at the final bracket's ends.
+ */
+const CREST_JUMP = 1e-12;
 
 /** One pass on the line: its row and how global x maps to its local x (`sign (x - shift)`). */
 interface PassOnLine {
@@ -22,7 +28,8 @@ interface PassOnLine {
  * convex function of y, least on its CC path: on either side of the line it rises with the distance
  * to the pass. So the passes are prepared nearest first on each side, and a side stops at the first
  * pass whose lowest point is at or above the crest of the line's lowest pass (the highest that pass
- * reaches): it and the passes beyond it stay above that pass everywhere and never shape the line.
+ * reaches): it and the passes beyond it stay above that pass everywhere and never shape the line
+ * (a side whose nearest pass is such adds no other).
  */
 export class RowEnvelope {
   readonly m: ToothModel;
@@ -50,14 +57,18 @@ export class RowEnvelope {
       return p;
     };
     let lowest: PassOnLine | undefined;
+    const nearest: Array<PassOnLine | undefined> = [];
     for (const side of sides) {
       const first = side[0];
-      if (first === undefined) continue;
-      const p = build(first);
-      if (p.row.reaches && (lowest === undefined || p.row.zStar < lowest.row.zStar)) lowest = p;
+      const p = first === undefined ? undefined : build(first);
+      nearest.push(p);
+      if (p?.row.reaches && (lowest === undefined || p.row.zStar < lowest.row.zStar)) lowest = p;
     }
     this.topMm = lowest === undefined ? Number.NaN : this.passHeightOf(lowest, this.crestOf(lowest));
-    for (const side of sides) {
+    for (const [s, side] of sides.entries()) {
+      // A side whose nearest pass already stands at or above the crest adds none beyond it.
+      const first = nearest[s];
+      if (first?.row.reaches && first.row.zStar >= this.topMm) continue;
       for (let k = 1; k < side.length; k++) {
         const p = build(side[k] as [number, 1 | -1, number]);
         if (p.row.zStar >= this.topMm) break;
@@ -163,10 +174,13 @@ export class RowEnvelope {
   private findCrestXMm(p: PassOnLine): number {
     const P = this.m.feedPeriodMm;
     const v = this.levelXMm(p, p.row.bottom);
+    const values = new Map<number, number>();
     const f = {
       value: (x: number) => {
         const [r, l] = passSideEventsMm(this.m, p.row, p.sign * (x - p.shiftMm));
-        return p.sign * (r - l);
+        const d = p.sign * (r - l);
+        values.set(x, d);
+        return d;
       },
     };
     const a = v + 1e-9 * P;
@@ -175,8 +189,17 @@ export class RowEnvelope {
     const fb = f.value(b);
     // Near a tip's track the right event can start the period above the left one: the crest is still
     // where they are equal (the lower one rises to it, the other falls to it).
-    if (fa < 0 !== fb < 0 && fa !== 0 && fb !== 0 && Number.isFinite(fa) && Number.isFinite(fb))
-      return bracketedRoot(f, a, b, fa, fb, 1e-15);
+    if (fa < 0 !== fb < 0 && fa !== 0 && fb !== 0 && Number.isFinite(fa) && Number.isFinite(fb)) {
+      const end = newSearchEnd();
+      const x = bracketedRoot(f, a, b, fa, fb, 1e-15, MAX_ITERATIONS, end);
+      // The difference changes sign through 0, or by a jump: where a level first touches the section
+      // on one side, that side's first event drops to the new touching point (the height is lowest
+      // there, at that one x). Then the highest of the line is the limit beside the jump on the side
+      // where the height is larger: the other end of the final bracket (within 1e-15 of x) may be it.
+      if (!(Math.abs(values.get(x) ?? 0) > CREST_JUMP * this.m.toolRadiusMm)) return x;
+      const other = x === end.lo ? end.hi : end.lo;
+      return this.passHeightOf(p, other) > this.passHeightOf(p, x) ? other : x;
+    }
     const end = newSearchEnd();
     maximise({ value: (x) => this.passHeightOf(p, x) }, v, v + P, 16, 1e-13 * P, end);
     return end.x;

@@ -19,7 +19,9 @@
  * on a quick Sa (areal.ts's integrals without grading or halving: about 1e-3 relative, 5e-3 at
  * worst measured); the best pair's `fz` is then solved again on the full Sa (1e-6 relative), so its
  * Sa is the target within 1e-6 relative (checked in the tests with the full areal parameters).
- * Runout is not taken here: its Sa costs seconds a point (the caller refuses it).
+ * Runout is not taken here: its Sa costs seconds a point (the caller refuses it, with
+ * {@link TARGET_SA_RUNOUT}). The answer carries the scallop h across the feed at the best pair's
+ * step-over (the continuous answer on the pass's surface), which the command line and the page show.
  */
 import type { PassInput } from '../domain/pass';
 import type { PassPattern, ToolInput } from '../domain/tool';
@@ -48,6 +50,8 @@ export interface TargetSaAnswer {
   readonly targetSaMm: number;
   /** The pair with the largest L * fz; its Sa is the target within 1e-6 relative (or below, feedLimited). */
   readonly best: SaPair;
+  /** The scallop h across the feed at the best pair's step-over (mm). */
+  readonly bestScallopHeightMm: number;
   /** Pairs across (L0 / 4, L0), L ascending, from the quick Sa (within about 1e-3 of the target). */
   readonly curve: readonly SaPair[];
   /** L0: the step-over whose passes leave Ra = the target, where the curve meets fz = 0 (mm). */
@@ -80,6 +84,13 @@ export class TargetSaTooLongError extends Error {
     this.name = 'TargetSaTooLongError';
   }
 }
+
+/**
+ * The one line that refuses runout with a target Sa (the command line's --runout, the page's runout
+ * field): the inverse is computed with the teeth cutting equally.
+ */
+export const TARGET_SA_RUNOUT =
+  'Target Sa is computed without runout: set the runout e to 0 (or leave it out) for the best pair; with runout the Sa of one pair takes seconds, and the search needs about a hundred.';
 
 /** The teeth of the inverse: everything of a finish but its feed (no runout). */
 export type TeethInput = Omit<FinishInput, 'feedPerToothMm'>;
@@ -164,6 +175,7 @@ function feedForSa(
  * @param targetSaMm the target Sa, mm, > 0 and below the largest Ra the passes can leave.
  * @param zeroFeedIntervalMm L0 (mm): the step-over of the target-Ra solve at Ra = targetSaMm.
  * @param raAt the continuous cross-feed profile's Ra at a step-over (mm): Sa at fz -> 0.
+ * @param scallopAt the continuous answer's scallop h at a step-over (mm), for the best pair.
  */
 export function targetSaCurve(
   pass: PassInput,
@@ -171,6 +183,7 @@ export function targetSaCurve(
   targetSaMm: number,
   zeroFeedIntervalMm: number,
   raAt: (intervalMm: number) => number,
+  scallopAt: (intervalMm: number) => number,
 ): TargetSaAnswer {
   if (teeth.runoutMm > 0) throw new Error('targetSaPairs: runout is not taken (see the module comment)');
   const tool: ToolInput = pass;
@@ -240,7 +253,7 @@ export function targetSaCurve(
     saMm: saOf(bestL, fine.fz, false),
     feedLimited: fine.feedLimited,
   };
-  return { targetSaMm, best, curve, zeroFeedIntervalMm: L0 };
+  return { targetSaMm, best, bestScallopHeightMm: scallopAt(bestL), curve, zeroFeedIntervalMm: L0 };
 }
 
 /**
@@ -250,14 +263,9 @@ export function targetSaCurve(
  */
 export function targetSaPairs(pass: PassInput, teeth: TeethInput, targetSaMm: number): TargetSaAnswer {
   const L0 = exactForward(forwardOfRaTarget({ ...pass, targetRaMm: targetSaMm })).intervalMm;
-  const raAt = (L: number) =>
-    exactRoughnessAtInterval(
-      pass,
-      pass.pattern,
-      exactInverse(inverseInput(pass, pass.pattern, L, pass.surface)),
-      pass.surface,
-    ).raMm;
-  return targetSaCurve(pass, teeth, targetSaMm, L0, raAt);
+  const inverseAt = (L: number) => exactInverse(inverseInput(pass, pass.pattern, L, pass.surface));
+  const raAt = (L: number) => exactRoughnessAtInterval(pass, pass.pattern, inverseAt(L), pass.surface).raMm;
+  return targetSaCurve(pass, teeth, targetSaMm, L0, raAt, (L) => inverseAt(L).cuspHeightMm);
 }
 
 // The validation (no solver: the page's first script takes it) lives in targetSaInput.ts.

@@ -6,14 +6,8 @@
  * language); runout is refused (the inverse does not take it), named as such. Takes seconds (the page shows a waiting line meanwhile); loaded on the first such question.
  */
 import { describeFinishError, maxFeedPerToothMm, validateFinish } from '../../core/finish/finishInput';
-import { inverseInput } from '../../core/input/validate';
-import { TargetSaTooLongError, targetSaPairs } from '../../core/roughness/targetSa';
-import { exactInverse } from '../../core/surfaces/solve';
+import { TARGET_SA_RUNOUT, TargetSaTooLongError, targetSaPairs } from '../../core/roughness/targetSa';
 import type { TargetSaReply, TargetSaRequest } from '../targetSaProtocol';
-
-/** The one line that refuses runout (the inverse is computed with the teeth cutting equally). */
-export const TARGET_SA_RUNOUT_MESSAGE =
-  'Target Sa is computed without runout: set the runout e to 0 (or leave it empty) for the best pair.';
 
 /** Answers a target Sa; never throws for a bad value: each is a message on its field. */
 export function targetSa(request: TargetSaRequest): TargetSaReply {
@@ -41,7 +35,7 @@ export function targetSa(request: TargetSaRequest): TargetSaReply {
   }
   const { feedPerToothMm: _feed, ...teeth } = checked.value;
   if (teeth.runoutMm > 0)
-    return { ok: false, request, errors: [{ field: 'runout', message: TARGET_SA_RUNOUT_MESSAGE, refusal: 'runout' }] };
+    return { ok: false, request, errors: [{ field: 'runout', message: TARGET_SA_RUNOUT, refusal: 'runout' }] };
   let answer: ReturnType<typeof targetSaPairs>;
   try {
     answer = targetSaPairs(pass, teeth, request.targetSaMm);
@@ -50,6 +44,5 @@ export function targetSa(request: TargetSaRequest): TargetSaReply {
     if (!(e instanceof TargetSaTooLongError)) throw e;
     return { ok: false, request, errors: [{ field: 'flutes', message: e.message, refusal: 'tooLong' }] };
   }
-  const best = exactInverse(inverseInput(pass, pass.pattern, answer.best.intervalMm, pass.surface));
-  return { ok: true, request, answer, bestScallopMm: best.cuspHeightMm };
+  return { ok: true, request, answer };
 }

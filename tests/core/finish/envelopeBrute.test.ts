@@ -202,11 +202,56 @@ describe('envelope height against the tooth-sweep brute force', () => {
     runoutPhaseDeg: i === 0 ? 75 : 250,
   }));
 
+  /** hf of a case against the brute force (density 100) within 1e-9 mm. */
+  const expectHfAsBrute = (c: Case) => {
+    const brute = bruteFeedMarkHeightMm(bruteParams(c), 100);
+    expect(Math.abs(feedMarks(modelOf(c)).heightMm - brute.heightMm), c.label).toBeLessThan(1e-9);
+  };
+
   it('hf along the CC path agrees with the brute force within 1e-9 mm, with and without runout', () => {
-    for (const c of [...fixed, ...withRunout]) {
-      const brute = bruteFeedMarkHeightMm(bruteParams(c), 100);
-      expect(Math.abs(feedMarks(modelOf(c)).heightMm - brute.heightMm), c.label).toBeLessThan(1e-9);
-    }
+    for (const c of [...fixed, ...withRunout]) expectHfAsBrute(c);
+  });
+
+  it("hf where one side's first event drops at the crest (a level first touching the section there) agrees with the brute force within 1e-9 mm", () => {
+    // Ball at lead 10.5, tilt -3.9, zigzag, 2 teeth, fz 0.56: the left side's first event drops from
+    // 0.074 to 0.023 mm where the right one has risen to 0.0419 mm, so the difference of the sides
+    // changes sign by that jump; the line's highest is 0.0419 mm, beside it.
+    const c: Case = {
+      label: 'ball R 2.09 lead 10.5 tilt -3.9 zigzag z 2 fz 0.56',
+      tool: {
+        toolRadiusMm: 2.090032368665561,
+        cornerRadiusMm: 2.090032368665561,
+        leadAngleDeg: 10.520723228342831,
+        tiltAngleDeg: -3.924421393312514,
+      },
+      pattern: 'zigzag',
+      intervalMm: 0.8543887246737099,
+      flutes: 2,
+      fzMm: 0.56,
+      passPhase: 0,
+    };
+    expectHfAsBrute(c);
+  });
+
+  it('hf where the tip holds a plateau above the crest (a ball at a small lead, the CC path near its tip) agrees with the brute force within 1e-9 mm', () => {
+    // Ball at lead 3.9, tilt -0.05, zigzag, 4 teeth, fz 0.611: the crest of the two sides stands at
+    // 0.003572 mm, but near the tip (psi turning fast) the left side's first event stays at 0.003732 mm
+    // for a range of x while the right one comes higher: the line's highest is that plateau.
+    const c: Case = {
+      label: 'ball R 1.61 lead 3.9 tilt -0.05 zigzag z 4 fz 0.611',
+      tool: {
+        toolRadiusMm: 1.6141434388700873,
+        cornerRadiusMm: 1.6141434388700873,
+        leadAngleDeg: 3.891118684783578,
+        tiltAngleDeg: -0.04917761776596308,
+      },
+      pattern: 'zigzag',
+      intervalMm: 0.613,
+      flutes: 4,
+      fzMm: 0.611,
+      passPhase: 0,
+    };
+    expectHfAsBrute(c);
   });
 
   it("the areal map's grid (sample i at (i + 1/2) dx over the cell) agrees with the brute force's within 1e-9 mm, with and without runout", () => {

@@ -14,21 +14,14 @@
  *   exact solver (planeInverse), within the sampling's bound.
  */
 import { describe, expect, it } from 'vitest';
-import { type FinishInput, feedMarks, toothModel } from '../../../src/core/finish/index';
+import { feedMarks, toothModel } from '../../../src/core/finish/index';
 import { finishProfiles } from '../../../src/core/finish/profiles';
 import type { PassPattern } from '../../../src/core/input/validate';
 import { inverseInput } from '../../../src/core/input/validate';
 import { seededRandom } from '../../../src/core/math/seededRandom';
 import { planeInverse } from '../../../src/core/surfaces/exact';
 import { randomBullNose } from '../../support/randomBullNose';
-
-const finish = (flutes: number, fz: number, runoutMm = 0, runoutPhaseDeg = 0): FinishInput => ({
-  flutes,
-  feedPerToothMm: fz,
-  runoutMm,
-  runoutPhaseDeg,
-  passPhase: 0,
-});
+import { teethFinish as finish } from '../../support/teethFinish';
 
 /** max - min of the heights, and the sampling's bound: steepest sampled slope x spacing, at both ends (x 1.5). */
 function spread(p: { atMm: Float64Array; heightsMm: Float64Array }): { range: number; bound: number } {

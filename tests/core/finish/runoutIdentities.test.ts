@@ -20,21 +20,13 @@ import { describe, expect, it } from 'vitest';
 import {
   arealParameters,
   envelopeHeightMm,
-  type FinishInput,
   feedMarks,
   runoutEnvelopeHeightMm,
   toothModel,
 } from '../../../src/core/finish/index';
 import { seededRandom } from '../../../src/core/math/seededRandom';
 import { randomBullNose } from '../../support/randomBullNose';
-
-const finish = (flutes: number, fz: number, e = 0, phiDeg = 0, passPhase = 0): FinishInput => ({
-  flutes,
-  feedPerToothMm: fz,
-  runoutMm: e,
-  runoutPhaseDeg: phiDeg,
-  passPhase,
-});
+import { teethFinish as finish } from '../../support/teethFinish';
 
 describe('runout: the limit e = 0 and the single tooth', () => {
   it('the runout search at e = 0 gives the e = 0 walk within 1e-12 mm (ball, flat, bull-nose; lead, tilt, zigzag; seed 2921)', () => {

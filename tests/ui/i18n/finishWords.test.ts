@@ -9,12 +9,12 @@
  */
 import { describe, expect, it } from 'vitest';
 import { type FinishErrorCode, finishError } from '../../../src/core/finish/finishInput';
+import { TARGET_SA_RUNOUT } from '../../../src/core/roughness/targetSa';
 import type { FinishWords, SurfaceWords } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { finishMessageIn, finishScopeIn, targetSaMessageIn } from '../../../src/ui/i18n/finishText';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
 import type { FinishFieldMessage } from '../../../src/worker/finishProtocol';
-import { TARGET_SA_RUNOUT_MESSAGE } from '../../../src/worker/jobs/targetSa';
 
 /** One worker refusal per code, as the worker sends it (its English and its data; lengths in mm). */
 const REFUSALS: ReadonlyArray<readonly [FinishFieldMessage['field'], FinishErrorCode, string, number?]> = [
@@ -139,7 +139,7 @@ describe("the finish box's and the surface view's words", () => {
     });
 
   it("the target-Sa box's messages: its own refusals by name, the teeth's from their data, English the worker's", () => {
-    const runout = { field: 'runout', message: TARGET_SA_RUNOUT_MESSAGE, refusal: 'runout' } as const;
+    const runout = { field: 'runout', message: TARGET_SA_RUNOUT, refusal: 'runout' } as const;
     const tooLong = { field: 'flutes', message: 'T', refusal: 'tooLong' } as const;
     const teeth = refusal('runout', 'too-large', '0.5', 0.3);
     for (const c of [ja, de]) {
