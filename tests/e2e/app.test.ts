@@ -159,6 +159,7 @@ describe('calculator page in headless Chromium', () => {
   });
 
   it('the URL holds the state: round trip, unit switch, and bad values fall back with a notice', async () => {
+    site.noScene();
     const { page } = await open('?R=6&Rcr=2&rho=10&h=0.1&unit=mm');
     expect(await text(page, 'result-exact-half')).toBe('2.1690 mm'); // notes' exact column: 2.168977
     const historyAtLoad = await page.evaluate(() => window.history.length);
@@ -188,6 +189,7 @@ describe('calculator page in headless Chromium', () => {
   });
 
   it('embed mode fits 480x360 without horizontal scrolling and links to the full calculator', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=20&h=0.3&unit=mm&embed=1', { width: 480, height: 360 });
     const size = await page.evaluate(() => [
       document.documentElement.scrollWidth,
@@ -204,6 +206,7 @@ describe('calculator page in headless Chromium', () => {
   });
 
   it('solve for scallop height: the inverse mode takes L and shows each procedure h', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     await page.locator('input[name="mode"][value="inverse"]').check();
     await page.getByTestId('input-L').fill('3');
@@ -226,6 +229,7 @@ describe('calculator page in headless Chromium', () => {
   });
 
   it('a worker that dies is restarted, the request repeated, and the page says so', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     // The test kills the solver's worker itself (the page has no hook for it): close() from inside.
     const solver = await namedWorker(page, SOLVER);
@@ -242,6 +246,7 @@ describe('calculator page in headless Chromium', () => {
   });
 
   it('a burst of slider moves ends on the latest value (stale replies dropped)', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     const halfAt = (h: number) =>
       `${compareForward(

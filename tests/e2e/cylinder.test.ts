@@ -76,6 +76,7 @@ const radio = (page: Page, group: string, value: string) =>
 
 describe('curved surfaces on the page', () => {
   it('a user picks convex, types a radius, switches the axis: L and the comparison rows are the core values', async () => {
+    site.noScene();
     const { page, violations, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     // A plane: no radius, no axis, none in the URL.
     expect(await page.getByTestId('input-surface-radius').isVisible()).toBe(false);
@@ -117,6 +118,7 @@ describe('curved surfaces on the page', () => {
   });
 
   it('a concave cylinder too tight: the gouging message with the limit on the radius field, dashes elsewhere', async () => {
+    site.noScene();
     const { page, violations } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&surfaceRadius=-30&surfaceAxis=feed');
     await expect.poll(() => text(page, 'result-exact-interval')).toMatch(/\d/);
     expect(await radio(page, 'surface-kind', 'concave').isChecked()).toBe(true);
@@ -155,6 +157,7 @@ describe('curved surfaces on the page', () => {
   });
 
   it('the lookup table of a concave cylinder that a flat bottom lying flat gouges: saved, named by its surface, cells on the cylinder', async () => {
+    site.noScene();
     const { page, violations, errors } = await open(
       '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&surfaceRadius=-30&surfaceAxis=cross',
     );
@@ -184,6 +187,7 @@ describe('curved surfaces on the page', () => {
   });
 
   it('the URL round-trips (and the embedded page links the full calculator with the same surface)', async () => {
+    site.noScene();
     const query = '?R=3&Rcr=1&rho=5&tilt=4&pattern=zigzag&surfaceRadius=-80&surfaceAxis=cross&h=0.03&unit=mm';
     const { page } = await open(query);
     const e = exactForward(forwardInput({ ...TOOL, tiltAngleDeg: 4 }, 'zigzag', 0.03, cyl(-80, 'cross')));
@@ -204,6 +208,7 @@ describe('curved surfaces on the page', () => {
   });
 
   it('inch mode: the radius in inches like the other lengths, and L in inches', async () => {
+    site.noScene();
     const { page, violations } = await open(
       '?R=0.11811&Rcr=0.03937&rho=5&h=0.002&unit=in&surfaceRadius=-2&surfaceAxis=feed',
     );
@@ -292,6 +297,7 @@ describe('curved surfaces on the page', () => {
   }, 120_000);
 
   it('a target Ra: solved on a cylinder along the feed and across it, the step-over of the core, within the watchdog', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&target=ra&ra=0.01&unit=mm&surfaceRadius=50&surfaceAxis=feed');
     await expect.poll(() => text(page, 'result-exact-interval')).toMatch(/\d mm$/);
     await radio(page, 'surface-axis', 'cross').check();

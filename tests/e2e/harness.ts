@@ -2,7 +2,7 @@
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import type { Browser, BrowserContext, Locator, Page, Worker } from 'playwright-core';
-import { afterAll, afterEach, beforeAll, expect } from 'vitest';
+import { afterAll, afterEach, beforeAll, beforeEach, expect } from 'vitest';
 import { launchChromium } from '../../src/bench/browser';
 import { type StaticSite, serveStatic } from '../../src/bench/staticServer';
 import { PREFERENCES_KEY } from '../../src/ui/preferences';
@@ -46,6 +46,11 @@ export interface OpenOptions {
    * by default; `result-exact-interval` for a question that shows L only (a three-axis one).
    */
   readonly readyTestId?: string;
+  /**
+   * false: this document never gets the 3D scene's code (as {@link SiteOptions.scene}, for one
+   * test of a file that keeps the scene for others); true: it does; default: the file's choice.
+   */
+  readonly scene?: boolean;
 }
 
 export interface Harness {
@@ -75,9 +80,15 @@ export interface Harness {
     query: string,
     viewport?: { width: number; height: number },
     colorScheme?: 'light' | 'dark',
+    options?: OpenOptions,
   ): Promise<{ page: Page; errors: string[] }>;
   /** Says that the shared page's state is no longer the one its query opened: the next reuse loads it. */
   changed(): void;
+  /**
+   * Says that the running test looks at no part of the 3D scene: the documents it opens (or reuses)
+   * do not get the scene's code, as with `useSite(path, { scene: false })` for a whole file.
+   */
+  noScene(): void;
 }
 
 /**
@@ -94,9 +105,17 @@ export async function forgetPreferences(target: Page | BrowserContext): Promise<
   }, PREFERENCES_KEY);
 }
 
-/** The 3D scene's code (its chunk and three.js's) requested by a page (or a context's pages) is held: never answered. */
+/** The request of the 3D scene's code (its chunk, which brings three.js's). */
+const SCENE_CODE = /\/assets\/scene-[^/]*\.js$/;
+
+/** The 3D scene's code requested by a page (or a context's pages) is held: never answered. */
 export async function holdScene(target: Page | BrowserContext): Promise<void> {
-  await target.route(/\/assets\/scene-[^/]*\.js$/, () => {});
+  await target.route(SCENE_CODE, () => {});
+}
+
+/** Undoes {@link holdScene}: the scene's code is served again. */
+export async function releaseScene(target: Page | BrowserContext): Promise<void> {
+  await target.unroute(SCENE_CODE);
 }
 
 /** Registers beforeAll/afterAll hooks for a test file. */
@@ -108,6 +127,14 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
   let errors: string[] = [];
   /** The query of the shared page's document while its state is still the one the query opened. */
   let intact: string | null = null;
+  /** Whether the shared page holds the scene's code (holdScene). */
+  let sceneHeld = false;
+  /** The running test's choice ({@link Harness.noScene}), or null: the file's. */
+  let sceneThisTest: boolean | null = null;
+  beforeEach(() => {
+    sceneThisTest = null;
+  });
+  const sceneWanted = (asked: boolean | undefined) => asked ?? sceneThisTest ?? options.scene !== false;
   beforeAll(async () => {
     mkdirSync(SHOTS, { recursive: true });
     site = await serveStatic(siteDir(options.build ?? 'e2e'), subPath, options.headers);
@@ -132,8 +159,8 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
   ): Promise<Page> => {
     if (shared === null || shared.isClosed()) {
       const page = await need(browser, 'browser').newPage({ viewport, colorScheme });
+      sceneHeld = false;
       await forgetPreferences(page);
-      if (options.scene === false) await holdScene(page);
       page.on('pageerror', (e) => errors.push(e.message));
       page.on('console', (m) => {
         if (m.type() === 'error') errors.push(m.text());
@@ -150,9 +177,14 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
     query: string,
     viewport = { width: 1400, height: 900 },
     colorScheme: 'light' | 'dark' = 'light',
-    { readyTestId = 'result-exact-half' }: OpenOptions = {},
+    { readyTestId = 'result-exact-half', scene: asked }: OpenOptions = {},
   ) => {
+    const scene = sceneWanted(asked);
     const page = await sharedPage(viewport, colorScheme);
+    if (sceneHeld !== !scene) {
+      await (scene ? releaseScene(page) : holdScene(page));
+      sceneHeld = !scene;
+    }
     intact = null;
     // Leave the previous document first, so that nothing it logs while closing is counted here.
     if (page.url() !== 'about:blank') await page.goto('about:blank');
@@ -167,13 +199,18 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
     browser: () => need(browser, 'browser'),
     url: () => need(site, 'site').url,
     open,
-    async reuse(query, viewport = { width: 1400, height: 900 }, colorScheme = 'light') {
-      if (intact !== query || shared === null || shared.isClosed()) return open(query, viewport, colorScheme);
+    async reuse(query, viewport = { width: 1400, height: 900 }, colorScheme = 'light', openOptions = {}) {
+      const held = !sceneWanted(openOptions.scene);
+      if (intact !== query || sceneHeld !== held || shared === null || shared.isClosed())
+        return open(query, viewport, colorScheme, openOptions);
       await viewAs(shared, viewport, colorScheme);
       return { page: shared, errors };
     },
     changed() {
       intact = null;
+    },
+    noScene() {
+      sceneThisTest = false;
     },
   };
 }

@@ -31,4 +31,19 @@ describe('the 3D scene loads after the first result', () => {
     await expect.poll(() => page.locator('.label-dim').first().textContent()).toContain(headline.trim().split(' ')[0]);
     await page.close();
   });
+
+  // The harness's per-test choice (site.noScene(), used by tests that look at no part of the scene):
+  // held for such a test's document, served again for the next test's.
+  it('the harness holds the scene for a test that says noScene(), and serves it to the next test', async () => {
+    site.noScene();
+    const { page } = await site.open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await expect.poll(() => page.getByTestId('result-exact-half').textContent()).toBe('1.4436 mm');
+    expect(await page.getByTestId('scene-canvas').count()).toBe(0);
+  });
+
+  it('(the next test: the same shared page draws the scene)', async () => {
+    const { page } = await site.open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
+    await page.getByTestId('scene-canvas').waitFor();
+    expect(await page.evaluate(() => document.querySelectorAll('[data-testid="scene-canvas"]').length)).toBe(1);
+  });
 });

@@ -38,6 +38,7 @@ const ZIGZAG10 = '?R=3&Rcr=1&rho=5&tilt=10&pattern=zigzag&h=0.05&unit=mm';
 
 describe('tool posture on the page', () => {
   it('defaults give the paper case: no tilt, one-way, nothing new in the URL, the same numbers', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     expect(await page.getByTestId('input-tilt').inputValue()).toBe('0');
     expect(await page.locator('[data-testid="pattern-switch"] input[value="one-way"]').isChecked()).toBe(true);
@@ -54,6 +55,7 @@ describe('tool posture on the page', () => {
   });
 
   it('the tilt field and slider: L, wR, wL and y0 of the exact solver; in the URL; arrow keys step 0.1 deg', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     await page.getByTestId('input-tilt').fill('5');
     const e = exact(5, 'one-way');
@@ -217,6 +219,7 @@ describe('tool posture on the page', () => {
   });
 
   it('the stepper runs the procedure on both flanks and ends on both widths', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&tilt=8&h=0.05&unit=mm&view=stepper');
     const caption = page.getByTestId('stepper-caption');
     await expect

@@ -118,6 +118,7 @@ async function neverANumber(page: Page, invalid: string): Promise<void> {
 
 describe('numbers answer the inputs on screen', () => {
   it('valid then invalid input in one task never shows a number afterwards (poll 2 s)', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     await workerIdle(page, SOLVER);
     const answered = await replies(page, SOLVER);
@@ -137,6 +138,7 @@ describe('numbers answer the inputs on screen', () => {
   });
 
   it('with a busy solver, the late reply to a valid input does not overwrite the dashes of the invalid one', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     await workerIdle(page, SOLVER);
     const answered = await replies(page, SOLVER);
@@ -342,6 +344,7 @@ describe('units and digits in every view', () => {
   });
 
   it('a micro tool shows significant digits, in the results and the views, never 0.0000', async () => {
+    site.noScene();
     const { page } = await open('?R=0.001&Rcr=0.001&rho=0&h=0.000001&unit=mm&view=profile');
     // L/2 = sqrt(2 Rcr h - h^2) = 4.4710e-5 mm.
     expect(await text(page, 'result-exact-half')).toBe('0.04471 \u00b5m');
@@ -385,6 +388,7 @@ describe('the shipped site', () => {
   });
 
   it('the tables view explains in the page why the printed 3D column is low, citing no repository file', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=tables');
     const why = page.getByTestId('paper-tables-why');
     await why.waitFor();

@@ -26,6 +26,7 @@ const tool = (rho: number, h: number) => ({
 
 describe('teaching views in headless Chromium', () => {
   it('profile: three passes with the scallops shaded, the approximations overlaid, dimensions, zoom and reset', async () => {
+    site.noScene();
     const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=profile');
     const view = page.getByTestId('profile-view');
     await view.locator('polygon.scallop').waitFor();
@@ -64,6 +65,7 @@ describe('teaching views in headless Chromium', () => {
   });
 
   it('chart: L against rho, the signed errors and L against tilt, with the values at the current posture from the solver', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=chart');
     const chart = page.getByTestId('comparison-chart');
     await chart.locator('svg.chart-svg').first().waitFor();
@@ -100,6 +102,7 @@ describe('teaching views in headless Chromium', () => {
   });
 
   it('tables: printed and recomputed values of Tables 2-5, the 3D deviations highlighted, a click loads a condition', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=tables');
     const tables = page.getByTestId('paper-tables');
     await tables.locator('table').first().waitFor();
@@ -182,6 +185,7 @@ describe('teaching views in headless Chromium', () => {
   });
 
   it('formulas in inverse mode give each procedure its L/2 at the solved h, not the height', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&L=3&mode=inverse&unit=mm&view=formulas');
     const sekine = page.getByTestId('formulas').locator('section[data-procedure="sekine"]');
     await sekine.locator('math').first().waitFor();
@@ -198,6 +202,7 @@ describe('teaching views in headless Chromium', () => {
   });
 
   it('?view=profile&embed=1 shows just that view, without horizontal scrolling at 480x360', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&embed=1&view=profile', { width: 480, height: 360 });
     await page.getByTestId('profile-view').locator('polygon.scallop').waitFor();
     expect(await page.getByTestId('profile-view').isVisible()).toBe(true);
