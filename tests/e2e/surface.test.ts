@@ -11,7 +11,8 @@ import { forwardOfRaTarget, validateRaTarget } from '../../src/core/roughness/ra
 import { exactRoughness, maxRaMm } from '../../src/core/roughness/roughness';
 import { animationFrames, keepShot, SOLVER, useSite, VIEWS_WORKER, workerIdle } from './harness';
 
-const { open } = useSite('docs/surface');
+const site = useSite('docs/surface');
+const { open } = site;
 
 const TOOL = { toolRadiusMm: 3, cornerRadiusMm: 1, leadAngleDeg: 5, tiltAngleDeg: 0 };
 const text = async (page: Page, id: string) => (await page.getByTestId(id).textContent()) ?? '';
@@ -39,6 +40,7 @@ function comparisonNumbers(line: string): { sim: number; exact: number; diff: nu
 
 describe('target Ra and roughness in headless Chromium', () => {
   it('switching the target to Ra and typing one: result-ra reads the typed Ra, L is the core answer', async () => {
+    site.noScene();
     const { page, errors } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     // The target h: Rz, Ra, Rq of the surface at the exact step-over, and the rule of thumb.
     // Roughness at the resolution of every height, 0.01 µm (issue 28 point 11): Rz as the table's 50.00 µm.
@@ -69,6 +71,7 @@ describe('target Ra and roughness in headless Chromium', () => {
   });
 
   it('an Ra above the maximum shows the message naming the limit (in the unit on screen) and dashes', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&target=ra&ra=0.01&unit=mm');
     await expect.poll(() => text(page, 'result-ra')).toBe('10.00 \u00b5m');
     await page.getByTestId('input-ra').fill('0.5');
@@ -127,6 +130,7 @@ describe('Machined surface view in headless Chromium', () => {
   });
 
   it('a burst of inputs ends on the latest; invalid input hides the numbers; zigzag and target Ra', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=surface');
     const line = page.getByTestId('surface-comparison');
     await line.filter({ hasText: /Simulated cusp/ }).waitFor({ timeout: 20_000 });
@@ -182,6 +186,7 @@ describe('Machined surface view in headless Chromium', () => {
   });
 
   it('?view=surface&embed=1 shows just that view, without horizontal scrolling at 480 px wide', async () => {
+    site.noScene();
     const { page } = await open('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&view=surface&embed=1', { width: 480, height: 360 });
     await page
       .getByTestId('surface-comparison')
