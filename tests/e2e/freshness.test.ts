@@ -13,7 +13,7 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { exactForward, forwardInput, type ToolInput } from '../../src/core/index';
 import { formatLenUnit } from '../../src/ui/format';
-import { keepShot, namedWorker, useSite } from './harness';
+import { holdScene, keepShot, namedWorker, useSite } from './harness';
 import { heldAnswers, holdReplies, release } from './heldReplies';
 
 const site = useSite('docs/freshness', { scene: false });
@@ -29,6 +29,7 @@ type Counted = { __answers: Record<string, number> };
  */
 async function open(query: string): Promise<Page> {
   const page = await site.browser().newPage({ viewport: { width: 1400, height: 900 } });
+  await holdScene(page); // the file looks at no part of the scene
   await page.addInitScript(() => {
     const counts: Record<string, number> = {};
     (window as unknown as Counted).__answers = counts;
@@ -120,6 +121,7 @@ describe('the page ends on the answer to the inputs on screen (issue 17)', () =>
 describe("notices follow the workers' state (issue 17, item 7)", () => {
   it("the teaching views' give-up notice goes once their worker answers again", async () => {
     const page = await site.browser().newPage({ viewport: { width: 1400, height: 900 } });
+    await holdScene(page); // the file looks at no part of the scene
     // While `broken`, every new worker's script throws as it loads (the worker fails at once).
     let broken = false;
     await page.route('**/solver.worker-*.js', (route) =>

@@ -89,6 +89,8 @@ export interface Harness {
    * do not get the scene's code, as with `useSite(path, { scene: false })` for a whole file.
    */
   noScene(): void;
+  /** Whether documents opened now go without the scene's code (the file's or the running test's choice). */
+  holdsScene(): boolean;
 }
 
 /**
@@ -212,6 +214,7 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
     noScene() {
       sceneThisTest = false;
     },
+    holdsScene: () => !sceneWanted(undefined),
   };
 }
 
@@ -326,11 +329,13 @@ export const PHONE = { width: 390, height: 844 };
 
 /**
  * A phone page shared by a file's tests (390x844, touch, clipboard allowed): `open(query)` loads
- * the query in it and waits for the first result (attached); the context closes after the file.
+ * the query in it and waits for the first result (attached), without the scene's code where the
+ * file or the test says so; the context closes after the file.
  */
 export function usePhonePage(site: Harness): (query: string) => Promise<Page> {
   let context: BrowserContext | null = null;
   let shared: Page | null = null;
+  let held = false;
   afterAll(async () => {
     await context?.close();
   });
@@ -341,6 +346,11 @@ export function usePhonePage(site: Harness): (query: string) => Promise<Page> {
       await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
     }
     shared ??= await context.newPage();
+    // Without the scene's code where the file or the test says so (useSite's scene: false, noScene()).
+    if (held !== site.holdsScene()) {
+      held = site.holdsScene();
+      await (held ? holdScene(context) : releaseScene(context));
+    }
     await shared.goto(`${site.url()}${query}`);
     await shared.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
     return shared;

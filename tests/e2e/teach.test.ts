@@ -12,7 +12,7 @@ import { forwardInput } from '../../src/core/input/validate';
 import { stepOverSweep } from '../../src/core/procedures/teaching';
 import { groupSteps, sceneToleranceMm } from '../../src/ui/views/stepGroups';
 import { traceFrames } from '../../src/worker/api';
-import { keepShot, useSite } from './harness';
+import { holdScene, keepShot, useSite } from './harness';
 
 const site = useSite('docs/teach', { scene: false });
 const { open } = site;
@@ -238,6 +238,7 @@ describe('teacher: the step-through', () => {
     // A page of its own, on Playwright's clock: time flows as usual, and `runFor` fires at once
     // every timer due within a stretch of time instead of the test waiting it out.
     const page = await site.browser().newPage({ viewport: { width: 1440, height: 900 } });
+    await holdScene(page); // the file looks at no part of the scene
     await page.clock.install();
     await page.goto(`${site.url()}${STEPPER}`);
     const counter = page.getByTestId('stepper-counter');

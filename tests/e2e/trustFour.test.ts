@@ -6,7 +6,7 @@
  * "bounding sphere radius is NaN"). One page load.
  */
 import { describe, expect, it } from 'vitest';
-import { useSite } from './harness';
+import { holdScene, useSite } from './harness';
 
 const site = useSite('docs/trust-four', { scene: false });
 
@@ -15,6 +15,7 @@ type Probe = { __pathInterval: { pending(worker?: string): number } };
 describe('trust, round four (issue 26): the page', () => {
   it('a gouging doubly curved point: the gouging message, nothing NaN, no console error, nothing pending', async () => {
     const page = await site.browser().newPage({ viewport: { width: 1400, height: 900 } });
+    await holdScene(page); // the file looks at no part of the scene
     const errors: string[] = [];
     page.on('pageerror', (e) => errors.push(e.message));
     page.on('console', (m) => {

@@ -8,7 +8,7 @@
 import type { Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
 import { exactIntervalMm, forwardInput } from '../../src/core/index';
-import { useSite } from './harness';
+import { holdScene, useSite } from './harness';
 
 const site = useSite('docs/trust-four-page', { scene: false });
 
@@ -24,6 +24,7 @@ const text = async (p: Page, id: string) => (await p.getByTestId(id).textContent
 describe('issue 26 on the page: repeated link keys and saved tools over the cap (one load)', () => {
   it('says which repeated values it ignored and that 29800 saved tools were over the 200 kept', async () => {
     page = await site.browser().newPage({ viewport: { width: 1400, height: 900 } });
+    await holdScene(page); // the file looks at no part of the scene
     const errors: string[] = [];
     page.on('pageerror', (e) => errors.push(e.message));
     page.on('console', (m) => {
