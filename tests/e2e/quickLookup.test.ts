@@ -14,7 +14,7 @@ import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
 import { headerInUnit } from '../../src/core/output/lookupUnits';
 import { exactForward } from '../../src/core/surfaces/solve';
 import { scallopHeightLimits } from '../../src/core/surfaces/validate';
-import { keepShot, ROOT, typeInto, useSite } from './harness';
+import { holdScene, keepShot, ROOT, releaseScene, typeInto, useSite } from './harness';
 
 const site = useSite('docs/quick-lookup');
 /** The profile view's state: the touch test reads it, then the Copy test uses the same document. */
@@ -30,7 +30,10 @@ type Viewport = (typeof VIEWPORTS)[number];
  * One context per viewport (touch on the phone; clipboard allowed) and its tab, shared by that
  * viewport's tests; `unchanged`: the query its document opened, while no test has changed its inputs.
  */
-const contexts = new Map<string, { context: BrowserContext; page: Page; unchanged: string | null }>();
+const contexts = new Map<
+  string,
+  { context: BrowserContext; page: Page; unchanged: string | null; sceneHeld: boolean }
+>();
 afterEach((context) => {
   // A failed test may have left its document anywhere.
   if (context.task.result?.state === 'fail') for (const entry of contexts.values()) entry.unchanged = null;
@@ -43,7 +46,8 @@ afterEach((context) => {
  */
 async function open(vp: Viewport, query: string, reuse = false): Promise<{ page: Page; context: BrowserContext }> {
   let entry = contexts.get(vp.name);
-  if (reuse && entry !== undefined && !entry.page.isClosed() && entry.unchanged === query) {
+  const held = site.holdsScene();
+  if (reuse && entry !== undefined && !entry.page.isClosed() && entry.unchanged === query && entry.sceneHeld === held) {
     entry.unchanged = null;
     return entry;
   }
@@ -55,10 +59,15 @@ async function open(vp: Viewport, query: string, reuse = false): Promise<{ page:
       acceptDownloads: true,
     });
     await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(site.url()).origin });
-    entry = { context, page: await context.newPage(), unchanged: null };
+    entry = { context, page: await context.newPage(), unchanged: null, sceneHeld: false };
     contexts.set(vp.name, entry);
   } else await entry.page.goto('about:blank');
   entry.unchanged = null;
+  // Without the scene's code for a test that looks at no part of it (site.noScene()).
+  if (entry.sceneHeld !== held) {
+    await (held ? holdScene(entry.context) : releaseScene(entry.context));
+    entry.sceneHeld = held;
+  }
   const { context, page } = entry;
   await page.goto(`${site.url()}${query}`);
   await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
@@ -158,6 +167,7 @@ async function typedState(page: Page, value: string): Promise<TypedState> {
 
 describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
   it('a catalogue diameter: the switch makes the field D, D10 answers as R 5, errors name D, presets say custom', async () => {
+    site.noScene(); // looks at no part of the 3D scene
     const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     expect(await page.getByTestId('preset').locator('option:checked').textContent()).toBe(
       'D6, corner R1 (paper Tool 1)',
@@ -231,6 +241,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
   });
 
   it('a flat end without lead leaves no scallop: the page says so and gives L = 2R, as the command line', async () => {
+    site.noScene(); // looks at no part of the 3D scene
     const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm');
     await typeInto(page, 'input-Rcr', '0');
     await typeInto(page, 'input-rho', '0');
@@ -248,6 +259,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
   });
 
   it('downloads the lookup table from the worker; its cells are the core exact step-over', async () => {
+    site.noScene(); // looks at no part of the 3D scene
     const { page } = await open(vp, '?R=3&Rcr=1&rho=5&h=0.05&unit=mm&pattern=zigzag');
     const button = page.getByTestId('download-table');
     await expect.poll(() => button.isEnabled()).toBe(true);
@@ -292,6 +304,7 @@ describe.each(VIEWPORTS)('quick lookup at $width x $height', (vp) => {
   });
 
   it('in inch mode the lookup table is in inches: _in in the file name and the header, the cells in inches', async () => {
+    site.noScene(); // looks at no part of the 3D scene
     const { page } = await open(vp, '?R=0.25&Rcr=0.0625&rho=5&h=0.0005&unit=in');
     const button = page.getByTestId('download-table');
     await expect.poll(() => button.isEnabled()).toBe(true);
