@@ -83,6 +83,12 @@
  * on first use; the page's hook in request.ts paid for by one return in curvedRequest.ts: the first
  * result 60.64): 283.36 in all, the ratchet 283.4. Then a doubly curved point's comparison rows'
  * names in each language (language.ts, on first use): 283.64, the ratchet 283.7.
+ * Then the step-through's steps, the formulas' words and the paper's tables in each language, and the
+ * procedures' table's name and rows' title (all on first use; the first result 60.63): the Japanese
+ * catalogue +2.9 kB and the German +2.7 (the assumptions of six procedures, the tables' two notes and
+ * the step captions are long text), the views +1.0 (their English as typed words objects, the tables
+ * built again in another language), language.ts +0.07: 290.29 in all, the ratchet raised to 290.3 by
+ * that cost.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -108,7 +114,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 283.7 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(283.7);
+  it('all of it, every .js file, is at most 290.3 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(290.3);
   });
 });

@@ -145,6 +145,32 @@ const profileWords = (page: Page): Promise<{ lang: string; words: string; dims: 
     return { lang: (v as HTMLElement).lang, words: [...texts, ...names].join(' '), dims };
   });
 
+/**
+ * Every word a teaching view (by its test id) shows or names, but its equations (MathML, the paper's
+ * symbols): its texts, its elements' accessible names and hover titles.
+ */
+const viewWords = (page: Page, testId: string): Promise<string> =>
+  page.getByTestId(testId).evaluate((v) => {
+    const texts: string[] = [];
+    const walker = document.createTreeWalker(v, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node !== null; node = walker.nextNode())
+      if (node.parentElement?.closest('math') === null) texts.push(node.nodeValue ?? '');
+    const names = [...v.querySelectorAll('[aria-label], [title]')].map(
+      (e) => `${e.getAttribute('aria-label') ?? ''} ${e.getAttribute('title') ?? ''}`,
+    );
+    return [...texts, ...names].join(' ');
+  });
+
+/** The Latin words the step-through, the formulas and the paper's tables keep in Japanese: the paper's symbols, authors, units. */
+const TEACH_KEPT = new Set([
+  ...LEGEND_KEPT,
+  ...'Rb Reff Rlong Rshort Ztc b d s gamma scp wR wL eta sin sqrt thou Sekine Redonnet Bedi 3D'.split(' '),
+]);
+
+/** The step-through's, the formulas' and the tables' English words (views/stepperWords.ts, formulaWords.ts, tableWords.ts). */
+const TEACH_ENGLISH =
+  /(?<!\p{L})(step|of|flank|box|boxes|section|sections|towards|touches|pseudo|single|search|contact|farthest|crossings|best|converged|exact|solver|scene|play|back|forward|first|last|reduced|motion|procedure|torus|shown|true|tool|moves|surface|projection|offset|tilt|posture|ball|approximation|ignores|curvature|lead|osculates|treats|equations|scrolls|sideways|lengths|angles|degrees|table|tables|printed|recomputed|condition|load|why|column|calculator|the|and|at|on|is)(?!\p{L})/giu;
+
 describe('the language switch (phone)', { timeout: 90_000 }, () => {
   let page: Page;
 
@@ -646,6 +672,84 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await tap(page, 'en');
     await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
     await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Step-over L');
+  });
+
+  it("the step-through's steps, the formulas and the paper's tables in Japanese and German: no English left, German decimal commas", async () => {
+    // The page is in English by now (R = 3, Rcr = 1, rho = 5, h = 0.05 on a plane, five axes).
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
+    for (const lang of ['ja', 'de'] as const) {
+      await tap(page, lang);
+      await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe(lang);
+      // Every step of the step-through, walked with its Forward button: captions, counter, gauge.
+      await page.locator('#tab-stepper').click();
+      await expect.poll(() => page.getByTestId('stepper').getAttribute('lang'), POLL).toBe(lang);
+      await page.getByTestId('stepper-first').click();
+      await expect.poll(() => text(page, '[data-testid="stepper-counter"]'), POLL).toMatch(/\d/);
+      const steps = await page.getByTestId('stepper').evaluate((v) => {
+        const read = (id: string) => v.querySelector(`[data-testid="${id}"]`)?.textContent ?? '';
+        const forward = v.querySelector('[data-testid="stepper-forward"]') as HTMLButtonElement;
+        const seen: string[] = [];
+        // A step's counter names the total: the walk stops at the last step (each click draws at once).
+        for (let i = 0; i < 100; i++) {
+          seen.push(`${read('stepper-counter')} ${read('stepper-caption')} ${read('stepper-ds-text')}`);
+          const counter = read('stepper-counter');
+          forward.click();
+          if (read('stepper-counter') === counter) break;
+        }
+        return seen;
+      });
+      expect(steps.length, steps.join('\n')).toBeGreaterThanOrEqual(20);
+      const stepper = [...steps, await viewWords(page, 'stepper')].join(' ');
+      // Formulas: their words (the equations' own symbols left out), their names, the decimal sign in the slots.
+      await page.locator('#tab-formulas').click();
+      await expect.poll(() => page.getByTestId('formulas').getAttribute('lang'), POLL).toBe(lang);
+      const formulas = await viewWords(page, 'formulas');
+      const slots = await page
+        .getByTestId('formulas')
+        .evaluate((v) => [...v.querySelectorAll('math [class^="slot-"]')].map((e) => e.textContent ?? '').join(' '));
+      // The paper's tables: notes, captions, head, names, rows' titles, the cells' decimal sign.
+      await page.locator('#tab-tables').click();
+      await expect.poll(() => page.getByTestId('paper-tables').getAttribute('lang'), POLL).toBe(lang);
+      const tables = await viewWords(page, 'paper-tables');
+      // The procedures' table's name and its rows' hover title.
+      const procedures = await page
+        .getByTestId('procedures-scroll')
+        .evaluate((box) =>
+          [
+            box.getAttribute('aria-label') ?? '',
+            ...[...box.querySelectorAll('tr[title]')].map((tr) => tr.getAttribute('title') ?? ''),
+          ].join(' '),
+        );
+      const all = `${stepper} ${formulas} ${tables} ${procedures}`;
+      if (lang === 'ja') {
+        const left = latinWords(all.replace(/µ(m|in)\b/g, '')).filter((w) => !TEACH_KEPT.has(w));
+        expect([...new Set(left)], all).toEqual([]);
+        expect(all).not.toMatch(/\d,\d/);
+      } else {
+        expect([...new Set(all.match(TEACH_ENGLISH) ?? [])], all).toEqual([]);
+        // German numbers with a decimal comma: the captions, the slots, the tables' cells; no point left.
+        expect(stepper).toMatch(/\d,\d/);
+        expect(slots).toMatch(/\d,\d/);
+        expect(tables).toMatch(/\d,\d{3}\s+\/\s+\d,\d{4}/);
+        expect(`${stepper} ${slots} ${tables}`).not.toMatch(/\d\.\d/);
+      }
+    }
+    expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
+    await pageSettled(page);
+    expect(await axeViolations(page)).toEqual([]);
+    // English comes back whole: the step-through's, the tables' words as written.
+    await tap(page, 'en');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
+    await expect
+      .poll(() => page.getByTestId('paper-table-half').locator('caption').textContent(), POLL)
+      .toBe('Tables 2-3: L/2 [mm] for h');
+    expect(await page.getByTestId('paper-tables').getAttribute('lang')).toBeNull();
+    expect(await page.getByTestId('procedures-scroll').getAttribute('aria-label')).toBe(
+      'Procedures table (scrolls sideways when wider than its column)',
+    );
+    await page.locator('#tab-stepper').click();
+    await expect.poll(() => text(page, '[data-testid="stepper-counter"]'), POLL).toMatch(/^step \d+ of \d+$/);
+    await page.locator('#tab-profile').click();
   });
 
   it("an embed takes its language from the link (the element's lang attribute), not the one remembered (English by now)", async () => {

@@ -14,6 +14,7 @@ import type { CurvedError } from '../../worker/pageProtocol';
 import type { PageFieldError } from '../requestTypes';
 import type { SceneLabelTexts } from '../sceneLabelTexts';
 import type { CalculatorState } from '../state';
+import type { FormulaWords, StepperWords, TableWords } from './teachWords';
 
 /** The languages of the page: English (the page as written), Japanese, German. */
 export type Lang = 'en' | 'ja' | 'de';
@@ -246,6 +247,12 @@ export interface Catalogue {
   readonly procedures: ProcedureNames;
   /** A doubly curved point's refusal on its field, worded from its data (curvedText.ts; English curvedRequest.ts). */
   readonly curved: (e: CurvedError, state: CalculatorState) => PageFieldError;
+  /** The step-through's words (views/stepperView.ts; English in views/stepperWords.ts). */
+  readonly stepper: StepperWords;
+  /** The formulas view's words (views/formulasView.ts; English in views/formulaWords.ts). */
+  readonly formulas: FormulaWords;
+  /** The paper's tables' words (views/tablesView.ts; English in views/tableWords.ts). */
+  readonly tables: TableWords;
 }
 
 /**
@@ -304,6 +311,9 @@ export interface ProcedureNames {
   >;
   /** After a lead-only procedure's name in the table when the tool is tilted (English ", lead only"). */
   readonly leadOnly: string;
+  /** The results table's box's accessible name (a scrolling region), and a procedure's row's hover title. */
+  readonly region: string;
+  readonly select: string;
   /** The results table's head (results.ts), by its English words; `L/2` and `h` are symbols. */
   readonly head: Readonly<Record<'Procedure' | 'Model' | 'Deviation' | 'Deviation [%]' | 'Scallop it leaves', string>>;
 }

@@ -9,12 +9,15 @@ import { DE_CHART } from './deChart';
 import { DE_CURVED } from './deCurved';
 import { DE_ERRORS } from './deErrors';
 import { DE_FINISH } from './deFinish';
+import { DE_FORMULAS } from './deFormulas';
 import { DE_PROCEDURES } from './deProcedures';
 import { DE_PROFILE } from './deProfile';
 import { DE_RADIUS } from './deRadius';
 import { DE_SHEET } from './deSheet';
 import { DE_SLOPE } from './deSlope';
+import { DE_STEPPER } from './deStepper';
 import { DE_SURFACE } from './deSurface';
+import { DE_TABLES } from './deTables';
 import { DE_THREE_AXIS } from './deThreeAxis';
 import { sceneWordsIn } from './sceneText';
 
@@ -275,6 +278,9 @@ export const catalogue: Catalogue = {
   surface: DE_SURFACE,
   profile: DE_PROFILE,
   procedures: DE_PROCEDURES,
+  stepper: DE_STEPPER,
+  formulas: DE_FORMULAS,
+  tables: DE_TABLES,
   curved: (e, state) => curvedMessageIn(catalogue, DE_CURVED, e, state),
   scene: sceneWordsIn(
     'de',

@@ -9,12 +9,15 @@ import { JA_CHART } from './jaChart';
 import { JA_CURVED } from './jaCurved';
 import { JA_ERRORS } from './jaErrors';
 import { JA_FINISH } from './jaFinish';
+import { JA_FORMULAS } from './jaFormulas';
 import { JA_PROCEDURES } from './jaProcedures';
 import { JA_PROFILE } from './jaProfile';
 import { JA_RADIUS } from './jaRadius';
 import { JA_SHEET } from './jaSheet';
 import { JA_SLOPE } from './jaSlope';
+import { JA_STEPPER } from './jaStepper';
 import { JA_SURFACE } from './jaSurface';
+import { JA_TABLES } from './jaTables';
 import { JA_THREE_AXIS } from './jaThreeAxis';
 import { sceneWordsIn } from './sceneText';
 
@@ -258,6 +261,9 @@ export const catalogue: Catalogue = {
   surface: JA_SURFACE,
   profile: JA_PROFILE,
   procedures: JA_PROCEDURES,
+  stepper: JA_STEPPER,
+  formulas: JA_FORMULAS,
+  tables: JA_TABLES,
   curved: (e, state) => curvedMessageIn(catalogue, JA_CURVED, e, state),
   scene: sceneWordsIn('ja', '（円弧）', '工具の姿勢、隣り合うパスとカスプの断面の 3D 表示', {
     designPlane: '設計平面',

@@ -48,6 +48,10 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
       button.textContent = 'Copy';
       if (button.dataset.ariaEnglish) button.setAttribute('aria-label', button.dataset.ariaEnglish);
     }
+  // The procedures table's box's name back in English (language.ts procedureNames put it into the language).
+  if (catalogue === null)
+    for (const e of root.querySelectorAll<HTMLElement>('[data-testid="procedures-scroll"][data-aria-english]'))
+      e.setAttribute('aria-label', e.dataset.ariaEnglish ?? '');
   // The finish box's words back in English.
   if (catalogue === null)
     for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]'))
@@ -142,6 +146,12 @@ export function localizeResults(results: object): void {
  */
 function procedureNames(root: ParentNode, words: Catalogue): void {
   const names = words.procedures;
+  // The table's box's name (results.ts sets the English once; kept to go back to) and its rows' hover title.
+  for (const scroll of root.querySelectorAll<HTMLElement>('[data-testid="procedures-scroll"]')) {
+    scroll.dataset.ariaEnglish ??= scroll.getAttribute('aria-label') ?? '';
+    scroll.setAttribute('aria-label', names.region);
+  }
+  for (const tr of root.querySelectorAll<HTMLElement>('.procedures tr[data-procedure][title]')) tr.title = names.select;
   for (const th of root.querySelectorAll<HTMLElement>('.procedures thead th')) {
     const head = names.head[th.textContent as keyof ProcedureNamesHead];
     if (head !== undefined) th.textContent = head;
