@@ -89,6 +89,12 @@
  * the step captions are long text), the views +1.0 (their English as typed words objects, the tables
  * built again in another language), language.ts +0.07: 290.29 in all, the ratchet raised to 290.3 by
  * that cost.
+ * Then a curved radius field's own messages, a worker's reason for a restart and the procedures'
+ * table's own name in each language (each catalogue +0.2 kB; workerReason.ts a chunk of its own,
+ * +0.28, shared by language.ts, the finish box and the target-Sa box, +0.15 in their chunks; all on
+ * first use); the radius field's
+ * hook in the first result (+0.04 kB) paid for by the procedures' table box's name, focus and role
+ * moved from results.ts into index.html: the first result 60.62, 291.17 in all, the ratchet 291.2.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -114,7 +120,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 290.3 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(290.3);
+  it('all of it, every .js file, is at most 291.2 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(291.2);
   });
 });

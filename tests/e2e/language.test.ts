@@ -647,6 +647,15 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(curvedRows, POLL).toContain('Exakt (dieser doppelt gekrümmte Punkt)');
     expect(await curvedRows()).toContain('Sekine et al., korrigiert (1/rho = 1/Reff + 1/Rc)');
     expect(await curvedRows()).toContain('Zylinder quer zum Vorschub, exakt (Rc ignoriert)');
+    // A radius field's own error in German (the page's, before any worker): not a number, what was typed quoted.
+    await typeInto(page, 'input-cross-radius', 'abc');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="error-cross-radius"]'), POLL)
+      .toBe('Radius quer Rc muss eine Zahl sein (eingegeben: "abc").');
+    await typeInto(page, 'input-cross-radius', '40');
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, '[data-testid="error-cross-radius"]'), POLL).toBe('');
     // A refusal at that point worded on the page from the worker's data, in German: h above a flank's or the shank's limit.
     const curvedH = await page.getByTestId('input-h').inputValue();
     await typeInto(page, 'input-h', '5');
@@ -711,12 +720,13 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       await page.locator('#tab-tables').click();
       await expect.poll(() => page.getByTestId('paper-tables').getAttribute('lang'), POLL).toBe(lang);
       const tables = await viewWords(page, 'paper-tables');
-      // The procedures' table's name and its rows' hover title.
+      // The procedures' table's name, its box's and its rows' hover title.
       const procedures = await page
         .getByTestId('procedures-scroll')
         .evaluate((box) =>
           [
             box.getAttribute('aria-label') ?? '',
+            box.querySelector('table')?.getAttribute('aria-label') ?? '',
             ...[...box.querySelectorAll('tr[title]')].map((tr) => tr.getAttribute('title') ?? ''),
           ].join(' '),
         );
@@ -746,6 +756,9 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     expect(await page.getByTestId('paper-tables').getAttribute('lang')).toBeNull();
     expect(await page.getByTestId('procedures-scroll').getAttribute('aria-label')).toBe(
       'Procedures table (scrolls sideways when wider than its column)',
+    );
+    expect(await page.getByTestId('procedures-table').getAttribute('aria-label')).toBe(
+      'Procedures (select a row to highlight it in every view)',
     );
     await page.locator('#tab-stepper').click();
     await expect.poll(() => text(page, '[data-testid="stepper-counter"]'), POLL).toMatch(/^step \d+ of \d+$/);

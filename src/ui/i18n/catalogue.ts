@@ -247,6 +247,8 @@ export interface Catalogue {
   readonly procedures: ProcedureNames;
   /** A doubly curved point's refusal on its field, worded from its data (curvedText.ts; English curvedRequest.ts). */
   readonly curved: (e: CurvedError, state: CalculatorState) => PageFieldError;
+  /** A radius field's own error (missing, not a number: `value` null, a sign typed), worded by curvedText.ts (English: curvedRequest.ts radiusMm). */
+  readonly radiusField: (key: 'Rf' | 'Rc', text: string, value: number | null) => PageFieldError;
   /** The step-through's words (views/stepperView.ts; English in views/stepperWords.ts). */
   readonly stepper: StepperWords;
   /** The formulas view's words (views/formulasView.ts; English in views/formulaWords.ts). */
@@ -277,6 +279,10 @@ export interface CurvedWords {
     held: string,
     got: string,
   ) => string;
+  /** A radius field's own errors: empty (enter one, or choose straight), not a number, a sign or 0 typed (the side is chosen beside it). */
+  readonly missing: (label: string) => string;
+  readonly notNumber: (label: string, got: string) => string;
+  readonly positive: (label: string, got: string) => string;
   /** The target Ra's bound says "on this surface" (errors); here it is "at this point": [from, to]. */
   readonly atPoint: readonly [string, string];
 }
@@ -311,7 +317,8 @@ export interface ProcedureNames {
   >;
   /** After a lead-only procedure's name in the table when the tool is tilted (English ", lead only"). */
   readonly leadOnly: string;
-  /** The results table's box's accessible name (a scrolling region), and a procedure's row's hover title. */
+  /** The results table's accessible name, its box's (a scrolling region), and a procedure's row's hover title. */
+  readonly table: string;
   readonly region: string;
   readonly select: string;
   /** The results table's head (results.ts), by its English words; `L/2` and `h` are symbols. */
@@ -394,7 +401,7 @@ export interface FinishWords {
   readonly failure: (kind: 'not-converged' | 'not-swept', part: 'marks' | 'areal') => string;
   /** Feed marks are not computed on this kind of surface. */
   readonly scope: (kind: 'cylinder' | 'doublyCurved' | 'waterlineRevolution' | 'other') => string;
-  /** The finish's worker gave up or was restarted (its reason kept English). */
+  /** The finish's worker gave up or was restarted (its reason worded by workerReason.ts, an exception's text kept). */
   readonly worker: (gaveUp: boolean, reason: string) => string;
   /**
    * The target-Sa box's own refusals (the worker's TargetSaMessage refusal; English its sentence in
@@ -606,7 +613,15 @@ export interface SaidWords {
   readonly restarted: (who: 'results' | 'views', restarts: string | null) => readonly [string, string];
   /** Before the link values replaced (each named in English, by the link's parameter names). */
   readonly linkReplaced: string;
+  /**
+   * A worker's reason for a restart (worker/client.ts, read back by workerReason.ts): the words
+   * before and after its detail (an exception's own text, kept as it is; none for 'load', 'stopped').
+   */
+  readonly reason: (kind: WorkerReason) => readonly [string, string];
 }
+
+/** The kinds of a worker's reason for a restart (worker/client.ts): it failed, threw, did not load, stopped answering. */
+export type WorkerReason = 'failed' | 'threw' | 'load' | 'stopped';
 
 /**
  * The surface of a shop sheet, for its title line: lengths given already in the user's unit with

@@ -4,7 +4,7 @@
  * symbols kept. The README's glossary names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
-import { curvedMessageIn } from './curvedText';
+import { curvedMessageIn, radiusFieldIn } from './curvedText';
 import { DE_CHART } from './deChart';
 import { DE_CURVED } from './deCurved';
 import { DE_ERRORS } from './deErrors';
@@ -269,6 +269,12 @@ export const catalogue: Catalogue = {
           ];
     },
     linkReplaced: 'Einige Werte des Links wurden ersetzt: ',
+    reason: (kind) =>
+      kind === 'failed'
+        ? ['der Löser ist fehlgeschlagen (', ')']
+        : kind === 'threw'
+          ? ['der Löser hat eine Ausnahme ausgelöst (', ')']
+          : [kind === 'load' ? 'der Löser wurde nicht geladen' : 'der Löser antwortet nicht mehr', ''],
   },
   threeAxis: DE_THREE_AXIS,
   chart: DE_CHART,
@@ -282,6 +288,7 @@ export const catalogue: Catalogue = {
   formulas: DE_FORMULAS,
   tables: DE_TABLES,
   curved: (e, state) => curvedMessageIn(catalogue, DE_CURVED, e, state),
+  radiusField: (key, text, value) => radiusFieldIn(catalogue, DE_CURVED, key, text, value),
   scene: sceneWordsIn(
     'de',
     ' (Bogenlänge)',

@@ -4,7 +4,7 @@
  * names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
-import { curvedMessageIn } from './curvedText';
+import { curvedMessageIn, radiusFieldIn } from './curvedText';
 import { JA_CHART } from './jaChart';
 import { JA_CURVED } from './jaCurved';
 import { JA_ERRORS } from './jaErrors';
@@ -252,6 +252,12 @@ export const catalogue: Catalogue = {
           ];
     },
     linkReplaced: 'リンクの値の一部を置き換えました：',
+    reason: (kind) =>
+      kind === 'failed'
+        ? ['ソルバーが失敗しました：', '']
+        : kind === 'threw'
+          ? ['ソルバーで例外が発生しました：', '']
+          : [kind === 'load' ? 'ソルバーを読み込めませんでした' : 'ソルバーが応答しなくなりました', ''],
   },
   threeAxis: JA_THREE_AXIS,
   chart: JA_CHART,
@@ -265,6 +271,7 @@ export const catalogue: Catalogue = {
   formulas: JA_FORMULAS,
   tables: JA_TABLES,
   curved: (e, state) => curvedMessageIn(catalogue, JA_CURVED, e, state),
+  radiusField: (key, text, value) => radiusFieldIn(catalogue, JA_CURVED, key, text, value),
   scene: sceneWordsIn('ja', '（円弧）', '工具の姿勢、隣り合うパスとカスプの断面の 3D 表示', {
     designPlane: '設計平面',
     designSurface: '設計曲面',

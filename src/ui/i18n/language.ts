@@ -48,9 +48,9 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
       button.textContent = 'Copy';
       if (button.dataset.ariaEnglish) button.setAttribute('aria-label', button.dataset.ariaEnglish);
     }
-  // The procedures table's box's name back in English (language.ts procedureNames put it into the language).
+  // The procedures table's and its box's names back in English (procedureNames put them into the language).
   if (catalogue === null)
-    for (const e of root.querySelectorAll<HTMLElement>('[data-testid="procedures-scroll"][data-aria-english]'))
+    for (const e of root.querySelectorAll<HTMLElement>('[data-aria-english]:not(button.copy)'))
       e.setAttribute('aria-label', e.dataset.ariaEnglish ?? '');
   // The finish box's words back in English.
   if (catalogue === null)
@@ -146,11 +146,15 @@ export function localizeResults(results: object): void {
  */
 function procedureNames(root: ParentNode, words: Catalogue): void {
   const names = words.procedures;
-  // The table's box's name (results.ts sets the English once; kept to go back to) and its rows' hover title.
-  for (const scroll of root.querySelectorAll<HTMLElement>('[data-testid="procedures-scroll"]')) {
-    scroll.dataset.ariaEnglish ??= scroll.getAttribute('aria-label') ?? '';
-    scroll.setAttribute('aria-label', names.region);
-  }
+  // The table's and its box's names (index.html's English kept to go back to) and its rows' hover title.
+  for (const [selector, name] of [
+    ['[data-testid="procedures-scroll"]', names.region],
+    ['[data-testid="procedures-table"]', names.table],
+  ] as const)
+    for (const e of root.querySelectorAll<HTMLElement>(selector)) {
+      e.dataset.ariaEnglish ??= e.getAttribute('aria-label') ?? '';
+      e.setAttribute('aria-label', name);
+    }
   for (const tr of root.querySelectorAll<HTMLElement>('.procedures tr[data-procedure][title]')) tr.title = names.select;
   for (const th of root.querySelectorAll<HTMLElement>('.procedures thead th')) {
     const head = names.head[th.textContent as keyof ProcedureNamesHead];

@@ -8,6 +8,7 @@ import { describe, expect, it } from 'vitest';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
 import { noticeParts } from '../../../src/ui/i18n/noticeWords';
+import { reasonIn } from '../../../src/ui/i18n/workerReason';
 import { linkNotice, restartMessage } from '../../../src/ui/messages';
 import { MAX_CONSECUTIVE_RESTARTS } from '../../../src/worker/client';
 
@@ -27,6 +28,18 @@ describe("the notices' words (language.ts noticeParts, from messages.ts's Englis
           expect(parts?.join('')).not.toMatch(/solver|restart|stale|input/i);
           if (gaveUp) expect(parts?.[0]).toContain(String(MAX_CONSECUTIVE_RESTARTS));
         }
+      // A reason client.ts writes is in the language, only an exception's own text kept English.
+      const threw = noticeParts(
+        restartMessage('views', {
+          reason: 'the solver threw (TypeError: x is undefined)',
+          gaveUp: false,
+          request: null,
+        }),
+        c,
+      );
+      expect(threw?.[1]).toBe('TypeError: x is undefined');
+      expect(threw?.join('')).toContain(reasonIn('the solver threw (TypeError: x is undefined)', c));
+      expect(threw?.join('')).not.toMatch(/solver|threw/);
       const link = linkNotice(['Rcr="abc" in the link is not a number; using the default 1.']);
       expect(noticeParts(link, c)?.[1]).toBe('Rcr="abc" in the link is not a number; using the default 1.');
       expect(noticeParts('Something else.', c)).toBeNull();
