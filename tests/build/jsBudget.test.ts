@@ -95,6 +95,9 @@
  * first use); the radius field's
  * hook in the first result (+0.04 kB) paid for by the procedures' table box's name, focus and role
  * moved from results.ts into index.html: the first result 60.62, 291.17 in all, the ratchet 291.2.
+ * Then a link notice's details in each language (linkNotices.ts reads the page's English back, in
+ * the language code's chunk, +0.66 kB; each catalogue +0.4; on first use; the first result 60.62):
+ * 292.64 in all, the ratchet 292.7.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -120,7 +123,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 291.2 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(291.2);
+  it('all of it, every .js file, is at most 292.7 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(292.7);
   });
 });

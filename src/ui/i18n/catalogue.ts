@@ -249,6 +249,8 @@ export interface Catalogue {
   readonly curved: (e: CurvedError, state: CalculatorState) => PageFieldError;
   /** A radius field's own error (missing, not a number: `value` null, a sign typed), worded by curvedText.ts (English: curvedRequest.ts radiusMm). */
   readonly radiusField: (key: 'Rf' | 'Rc', text: string, value: number | null) => PageFieldError;
+  /** A link notice's details (linkNotices.ts; English: the page's own, state.ts and others). */
+  readonly linkNotices: LinkNoticeWords;
   /** The step-through's words (views/stepperView.ts; English in views/stepperWords.ts). */
   readonly stepper: StepperWords;
   /** The formulas view's words (views/formulasView.ts; English in views/formulaWords.ts). */
@@ -618,6 +620,42 @@ export interface SaidWords {
    * before and after its detail (an exception's own text, kept as it is; none for 'load', 'stopped').
    */
   readonly reason: (kind: WorkerReason) => readonly [string, string];
+}
+
+/**
+ * A link notice's details (i18n/linkNotices.ts reads them back from the page's English): the
+ * parameters' names and the values quoted (`Rcr="abc"`) given as they are, kept.
+ */
+export interface LinkNoticeWords {
+  /** Between two details. */
+  readonly separator: string;
+  /** A number the link's others need is missing: its default used. */
+  readonly missing: (name: string, fallback: string) => string;
+  /** Not a number: left empty, its default used, a plane (a cylinder's radius's default), a straight line. */
+  readonly notNumber: (
+    quoted: string,
+    then: { readonly kind: 'empty' | 'straight' } | { readonly kind: 'default' | 'plane'; readonly value: string },
+  ) => string;
+  /** fz given: the feed rate and spindle speed given are not used. */
+  readonly notUsed: (given: string, unused: readonly [string, string]) => string;
+  /** R and D both given: R (quoted with its value) used. */
+  readonly both: (a: string, b: string, used: string) => string;
+  /** A cylinder's radius and a doubly curved point's radii both given: the radii used. */
+  readonly surfaceBoth: (radius: string, rf: string, rc: string) => string;
+  /** A parameter given `times` times: the first used, the others (quoted; `more` not quoted) ignored. */
+  readonly repeated: (name: string, times: number, first: string, ignored: readonly string[], more: number) => string;
+  /**
+   * A choice not among its values: the first used, the language shown, the system's colour scheme
+   * followed, presentation mode off; null: a view not one of the views (none used).
+   */
+  readonly notOneOf: (
+    quoted: string,
+    values: readonly string[],
+    then:
+      | { readonly kind: 'using' | 'showing'; readonly value: string }
+      | { readonly kind: 'system' | 'presentOff' }
+      | null,
+  ) => string;
 }
 
 /** The kinds of a worker's reason for a restart (worker/client.ts): it failed, threw, did not load, stopped answering. */

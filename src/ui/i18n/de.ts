@@ -10,6 +10,7 @@ import { DE_CURVED } from './deCurved';
 import { DE_ERRORS } from './deErrors';
 import { DE_FINISH } from './deFinish';
 import { DE_FORMULAS } from './deFormulas';
+import { DE_LINK_NOTICES } from './deLinkNotices';
 import { DE_PROCEDURES } from './deProcedures';
 import { DE_PROFILE } from './deProfile';
 import { DE_RADIUS } from './deRadius';
@@ -284,6 +285,7 @@ export const catalogue: Catalogue = {
   surface: DE_SURFACE,
   profile: DE_PROFILE,
   procedures: DE_PROCEDURES,
+  linkNotices: DE_LINK_NOTICES,
   stepper: DE_STEPPER,
   formulas: DE_FORMULAS,
   tables: DE_TABLES,

@@ -10,6 +10,7 @@ import { JA_CURVED } from './jaCurved';
 import { JA_ERRORS } from './jaErrors';
 import { JA_FINISH } from './jaFinish';
 import { JA_FORMULAS } from './jaFormulas';
+import { JA_LINK_NOTICES } from './jaLinkNotices';
 import { JA_PROCEDURES } from './jaProcedures';
 import { JA_PROFILE } from './jaProfile';
 import { JA_RADIUS } from './jaRadius';
@@ -267,6 +268,7 @@ export const catalogue: Catalogue = {
   surface: JA_SURFACE,
   profile: JA_PROFILE,
   procedures: JA_PROCEDURES,
+  linkNotices: JA_LINK_NOTICES,
   stepper: JA_STEPPER,
   formulas: JA_FORMULAS,
   tables: JA_TABLES,

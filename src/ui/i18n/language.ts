@@ -229,10 +229,12 @@ export function localizeNotice(box: HTMLElement): void {
   const parts = noticeParts(english, words);
   if (parts !== null) {
     const [before, kept, after] = parts;
+    // The part kept English (an exception's text, details not read back), marked so; none when all is worded.
     const part = document.createElement('span');
     part.lang = 'en';
     part.textContent = kept;
-    box.replaceChildren(before, part, after);
+    if (kept === '') box.replaceChildren(before, after);
+    else box.replaceChildren(before, part, after);
     box.lang = words.lang;
     box.dataset.english = english;
     box.dataset.worded = box.textContent ?? '';

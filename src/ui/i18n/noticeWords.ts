@@ -5,6 +5,7 @@
  * named by their parameters), and the words after, in a catalogue's language. Pure (no DOM): language.ts writes them.
  */
 import type { Catalogue } from './catalogue';
+import { linkDetailsIn } from './linkNotices';
 import { reasonParts } from './workerReason';
 
 /**
@@ -38,7 +39,14 @@ const NOTICES: ReadonlyArray<{
       return aroundReason(c.said.restarted(m[1] === 'The solver' ? 'results' : 'views', null), m[2] ?? '', c);
     },
   },
-  { english: /^Some link values were replaced: (.*)$/s, words: (m, c) => [c.said.linkReplaced, m[1] ?? '', ''] },
+  {
+    // The details in the language when each is read back (linkNotices.ts), else kept English whole.
+    english: /^Some link values were replaced: (.*)$/s,
+    words: (m, c) => {
+      const local = linkDetailsIn(m[1] ?? '', c);
+      return local === null ? [c.said.linkReplaced, m[1] ?? '', ''] : [`${c.said.linkReplaced}${local}`, '', ''];
+    },
+  },
 ];
 
 /** A notice's English (messages.ts) as the words before, the part kept in English, the words after; null: not one. */

@@ -1,8 +1,8 @@
 /**
  * The notices' words (issue 30, i18n/noticeWords.ts): each sentence the page writes into its notice
  * box in English (messages.ts, read from its own functions here, not copied) is found again, put
- * into Japanese and German, and its English part (the worker's reason, the link's values) kept
- * whole. Compiled with the page (DOM types: messages.ts's Notice).
+ * into Japanese and German, and its English part (an exception's text in the worker's reason; the
+ * link's details when not read back) kept whole. Compiled with the page (DOM types: messages.ts's Notice).
  */
 import { describe, expect, it } from 'vitest';
 import { catalogue as de } from '../../../src/ui/i18n/de';
@@ -41,7 +41,9 @@ describe("the notices' words (language.ts noticeParts, from messages.ts's Englis
       expect(threw?.join('')).toContain(reasonIn('the solver threw (TypeError: x is undefined)', c));
       expect(threw?.join('')).not.toMatch(/solver|threw/);
       const link = linkNotice(['Rcr="abc" in the link is not a number; using the default 1.']);
-      expect(noticeParts(link, c)?.[1]).toBe('Rcr="abc" in the link is not a number; using the default 1.');
+      // The link's details in the language (linkNotices.ts), its parameter and value kept; nothing left English.
+      expect(noticeParts(link, c)?.[1]).toBe('');
+      expect(noticeParts(link, c)?.[0]).toContain('Rcr="abc"');
       expect(noticeParts('Something else.', c)).toBeNull();
     });
 });
