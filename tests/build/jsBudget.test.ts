@@ -98,6 +98,10 @@
  * Then a link notice's details in each language (linkNotices.ts reads the page's English back, in
  * the language code's chunk, +0.66 kB; each catalogue +0.4; on first use; the first result 60.62):
  * 292.64 in all, the ratchet 292.7.
+ * Then a chart gap's reason and the simulation's reason for an exception in each language (the
+ * views read the core's English back, gapReasons.ts and surfaceWords.ts, +0.58 kB with the English
+ * sentences they read against; each catalogue +0.42; on first use; the first result 60.62): 294.06
+ * in all, the ratchet 294.1.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -123,7 +127,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 292.7 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(292.7);
+  it('all of it, every .js file, is at most 294.1 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(294.1);
   });
 });

@@ -513,6 +513,22 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       charts.words,
     ).toBeNull();
     expect(charts.ticks.some((t) => /\d,\d/.test(t)) && !charts.ticks.some((t) => /\d\.\d/.test(t))).toBe(true);
+    // The gaps' notes in German, their reasons too (the solver's, read back: nothing marked English).
+    const gaps = await page.getByTestId('comparison-chart').evaluate((e) =>
+      [...e.querySelectorAll('.chart-classic .chart-gaps li')].map((li) => ({
+        text: li.textContent ?? '',
+        english: li.querySelector('[lang="en"]') !== null,
+      })),
+    );
+    expect(gaps.length).toBeGreaterThan(0);
+    expect(gaps.filter((g) => g.english)).toEqual([]);
+    const gapText = gaps.map((g) => g.text).join(' ');
+    expect(
+      gapText.match(
+        /\b(is|the|at|no|from|above|widest|infinite|degenerates|flat|divides|overflows|sharp|edge|corner|ball)\b/gi,
+      ),
+      gapText,
+    ).toBeNull();
     // A switch while the charts are on screen draws them anew in its words.
     await tap(page, 'ja');
     await expect.poll(() => caption.textContent(), POLL).toMatch(/^前傾角 rho \[°\] に対する L \[mm\]/);

@@ -437,6 +437,8 @@ export interface SurfaceWords {
   readonly pending: (percent: number | null) => string;
   /** Why the worker did not simulate: not a plane, no scallop, or no reason given (another stays the worker's). */
   readonly reasons: Readonly<Record<'planes-only' | 'no-scallop' | 'none', string>>;
+  /** The simulation stopped on an exception (the worker's "No simulation: ..."): the exception's own text kept. */
+  readonly exception: (detail: string) => string;
   /** The heights' scale (k null: true scale) and the colour's unit. */
   readonly exaggeration: (k: number | null, unit: string) => string;
   /** The simulated cusp against the exact one, their difference within or beyond the bound, the grid and passes. */
@@ -573,7 +575,26 @@ export interface ChartWords {
   readonly cylinder: (concave: boolean, axis: 'feed' | 'cross') => string;
   /** A gap's note before its reason: the procedures, the angle, from (and to, or null at one sample). */
   readonly gap: (names: string, angle: 'rho' | 'beta', from: string, to: string | null) => string;
+  /**
+   * A gap's reason (the core's sentence, core/procedures/sweepGaps.ts noAnswerReason, read back by
+   * views/gapReasons.ts): each model's own, and h above the widest point of a circle or an ellipse
+   * (`symbol` its radius or height, a symbol kept).
+   */
+  readonly reasons: Readonly<Record<GapReason, string>>;
+  readonly widest: (shape: 'circle' | 'ellipse', symbol: string) => string;
 }
+
+/** The solvers' reasons for a gap in a chart (core/procedures/sweepGaps.ts, approximations.ts), by kind. */
+export type GapReason =
+  | 'exact'
+  | 'sekineRhoZero'
+  | 'sekineShort'
+  | 'redonnetRhoZero'
+  | 'bediRhoZero'
+  | 'overflow'
+  | 'flatBottom'
+  | 'sharpEdge'
+  | 'flatEnd';
 
 /** What a three-axis error's sentence is made of, in the language and unit on screen. */
 export interface ThreeAxisText {
