@@ -102,6 +102,10 @@
  * views read the core's English back, gapReasons.ts and surfaceWords.ts, +0.58 kB with the English
  * sentences they read against; each catalogue +0.42; on first use; the first result 60.62): 294.06
  * in all, the ratchet 294.1.
+ * Then the landmarks' names, the roughness's rule of thumb (and its note on a surface of revolution)
+ * and L's share of the tool diameter in each language (put in by language.ts from the page's
+ * English, on first use; the first result +0.01 kB for roughness.ts's note now exported, 60.63):
+ * 294.74 in all, the ratchet 294.8.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -127,7 +131,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 294.1 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(294.1);
+  it('all of it, every .js file, is at most 294.8 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(294.8);
   });
 });

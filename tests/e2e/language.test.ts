@@ -750,6 +750,19 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
             ...[...box.querySelectorAll('tr[title]')].map((tr) => tr.getAttribute('title') ?? ''),
           ].join(' '),
         );
+      // The roughness's rule of thumb and L's share of the tool diameter, with the locale's decimal sign.
+      expect(await text(page, '[data-testid="result-ra-rule"]')).toMatch(
+        lang === 'ja'
+          ? /^経験則 Ra ~ h\/4 = \d+\.\d+ µm：厳密な Ra に対して [+-]?\d+\.\d+ %。$/
+          : /^Faustregel Ra ~ h\/4 = \d+,\d+ µm: [+-]?\d+,\d+ % gegenüber dem exakten Ra\.$/,
+      );
+      expect(await text(page, '[data-testid="result-percent-diameter"]')).toMatch(
+        lang === 'ja' ? /^L = 工具直径の \d+\.\d %$/ : /^L = \d+,\d % des Werkzeugdurchmessers$/,
+      );
+      // The landmarks' names (index.html's data-i18n-label).
+      expect(await page.locator('section.controls').getAttribute('aria-label')).toBe(
+        lang === 'ja' ? '入力' : 'Eingaben',
+      );
       const all = `${stepper} ${formulas} ${tables} ${procedures}`;
       if (lang === 'ja') {
         const left = latinWords(all.replace(/µ(m|in)\b/g, '')).filter((w) => !TEACH_KEPT.has(w));
@@ -777,6 +790,8 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     expect(await page.getByTestId('procedures-scroll').getAttribute('aria-label')).toBe(
       'Procedures table (scrolls sideways when wider than its column)',
     );
+    expect(await page.locator('section.controls').getAttribute('aria-label')).toBe('Inputs');
+    expect(await text(page, '[data-testid="result-percent-diameter"]')).toMatch(/^L = \d+\.\d % of the tool diameter$/);
     expect(await page.getByTestId('procedures-table').getAttribute('aria-label')).toBe(
       'Procedures (select a row to highlight it in every view)',
     );

@@ -98,6 +98,9 @@ export type StaticKey =
   | 'legendExaggeration'
   | 'givenSa';
 
+/** The keys of index.html's landmarks named by `aria-label` with a `data-i18n-label` (their English the page's). */
+export type LabelKey = 'fullCalculator' | 'inputs' | 'results' | 'finish' | 'targetSa' | 'view3d' | 'currentAnswer';
+
 /** The words of the question named beside an answer (questionWords.ts), and its list separator ", ". */
 export type QuestionWord =
   | ', '
@@ -196,6 +199,8 @@ export interface Catalogue {
   readonly lang: Exclude<Lang, 'en'>;
   /** index.html's chrome, by its `data-i18n` keys. */
   readonly page: Readonly<Record<StaticKey, string>>;
+  /** index.html's landmarks' accessible names, by their `data-i18n-label` keys. */
+  readonly labels: Readonly<Record<LabelKey, string>>;
   /** Each field's label and hint (the paper's symbols kept: L, h, Rcr, rho...). */
   readonly fields: Readonly<Record<PageFieldKey, FieldWords>>;
   /** The tool size given as a diameter: its label and hint, and the corner radius's hint then. */
@@ -636,6 +641,12 @@ export interface SaidWords {
   readonly restarted: (who: 'results' | 'views', restarts: string | null) => readonly [string, string];
   /** Before the link values replaced (each named in English, by the link's parameter names). */
   readonly linkReplaced: string;
+  /** The roughness's rule of thumb (Ra ~ h/4 with its unit, its error in % against the exact Ra, signed). */
+  readonly ruleOfThumb: (ra: string, pct: string) => string;
+  /** L as a share of the tool diameter (%, a number). */
+  readonly diameterShare: (pct: string) => string;
+  /** No Rz, Ra, Rq for waterline passes on a surface of revolution (roughness.ts REVOLUTION_NOTE). */
+  readonly revolution: string;
   /**
    * A worker's reason for a restart (worker/client.ts, read back by workerReason.ts): the words
    * before and after its detail (an exception's own text, kept as it is; none for 'load', 'stopped').

@@ -107,6 +107,15 @@ export const catalogue: Catalogue = {
       'Höhen nahe der Fläche N-fach überhöht, wenn der Kamm zu niedrig zum Sehen ist (Hinweis in der Szene; Zahlen unverändert)',
     givenSa: 'Ziel-Sa (flächenhaft, mit den Schneiden)',
   },
+  labels: {
+    fullCalculator: 'Vollständiger Rechner',
+    inputs: 'Eingaben',
+    results: 'Ergebnisse',
+    finish: 'Oberfläche',
+    targetSa: 'Ziel-Sa',
+    view3d: '3D-Ansicht',
+    currentAnswer: 'Aktuelle Antwort',
+  },
   fields: {
     R: { label: 'Werkzeugradius R', hint: 'halber Werkzeugdurchmesser' },
     Rcr: { label: 'Eckenradius Rcr', hint: '0 = Schaftfräser, R = Kugelfräser' },
@@ -270,6 +279,10 @@ export const catalogue: Catalogue = {
           ];
     },
     linkReplaced: 'Einige Werte des Links wurden ersetzt: ',
+    ruleOfThumb: (ra, pct) => `Faustregel Ra ~ h/4 = ${ra}: ${pct} % gegenüber dem exakten Ra.`,
+    diameterShare: (pct) => `L = ${pct} % des Werkzeugdurchmessers`,
+    revolution:
+      'Rz, Ra und Rq werden hier nicht angegeben: Z-Ebenen auf einer Rotationsfläche ändern ihren Abstand von Ebene zu Ebene, daher hat das Profil keine Periode, über die sie zu messen wären; die Rautiefe h ist die Antwort.',
     reason: (kind) =>
       kind === 'failed'
         ? ['der Löser ist fehlgeschlagen (', ')']

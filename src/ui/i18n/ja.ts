@@ -104,6 +104,15 @@ export const catalogue: Catalogue = {
     legendExaggeration: 'スカラップが低くて見えないときは面の近くで高さを N 倍に拡大（表示にバッジ、数値は不変）',
     givenSa: '目標 Sa（面、刃を考慮）',
   },
+  labels: {
+    fullCalculator: 'すべての機能を備えた計算機',
+    inputs: '入力',
+    results: '結果',
+    finish: '仕上げ面',
+    targetSa: '目標 Sa',
+    view3d: '3D 表示',
+    currentAnswer: '現在の答え',
+  },
   fields: {
     R: { label: '工具半径 R', hint: '工具直径の半分' },
     Rcr: { label: 'コーナ半径 Rcr', hint: '0 でスクエア、R でボールエンドミル' },
@@ -253,6 +262,10 @@ export const catalogue: Catalogue = {
           ];
     },
     linkReplaced: 'リンクの値の一部を置き換えました：',
+    ruleOfThumb: (ra, pct) => `経験則 Ra ~ h/4 = ${ra}：厳密な Ra に対して ${pct} %。`,
+    diameterShare: (pct) => `L = 工具直径の ${pct} %`,
+    revolution:
+      'ここでは Rz、Ra、Rq を示しません。回転面上の等高線パスは段ごとに間隔が変わり、断面形状に測るための周期がないためです。答えはカスプ高さ h です。',
     reason: (kind) =>
       kind === 'failed'
         ? ['ソルバーが失敗しました：', '']

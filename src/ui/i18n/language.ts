@@ -8,8 +8,9 @@
  */
 import { CURVATURE_ROWS, type CurvatureRowKey, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import { ZERO_FEED_LABEL } from '../results';
+import { REVOLUTION_NOTE } from '../roughness';
 import type { ToolStorage } from '../savedTools';
-import type { Catalogue, FinishPhrase, Lang, Phrase } from './catalogue';
+import type { Catalogue, FinishPhrase, LabelKey, Lang, Phrase } from './catalogue';
 import { describeInputErrorIn, describeThreeAxisErrorIn } from './errorText';
 import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
 import { noticeParts } from './noticeWords';
@@ -48,6 +49,12 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
       button.textContent = 'Copy';
       if (button.dataset.ariaEnglish) button.setAttribute('aria-label', button.dataset.ariaEnglish);
     }
+  // The landmarks' names (index.html's English kept to go back to).
+  for (const e of root.querySelectorAll<HTMLElement>('[data-i18n-label]')) {
+    e.dataset.ariaEnglish ??= e.getAttribute('aria-label') ?? '';
+    const name = catalogue?.labels[e.dataset.i18nLabel as LabelKey];
+    if (name !== undefined) e.setAttribute('aria-label', name);
+  }
   // The procedures table's and its box's names back in English (procedureNames put them into the language).
   if (catalogue === null)
     for (const e of root.querySelectorAll<HTMLElement>('[data-aria-english]:not(button.copy)'))
@@ -102,6 +109,15 @@ export function localizeResults(results: object): void {
     flat?.textContent ?? '',
   )?.[1];
   if (flat && diameter !== undefined) flat.textContent = words.said.noScallopPlane(localDecimal(diameter, words));
+  // The roughness's rule of thumb (roughness.ts) and L's share of the tool diameter (results.ts), from their English.
+  const rule = root.querySelector<HTMLElement>('[data-testid="result-ra-rule"]');
+  const ruled = /^Rule of thumb Ra ~ h\/4 = (.+): (\S+) % against the exact Ra\.$/.exec(rule?.textContent ?? '');
+  if (rule && ruled)
+    rule.textContent = words.said.ruleOfThumb(localDecimal(ruled[1] ?? '', words), localDecimal(ruled[2] ?? '', words));
+  else if (rule && rule.textContent === REVOLUTION_NOTE) rule.textContent = words.said.revolution;
+  const share = root.querySelector<HTMLElement>('[data-testid="result-percent-diameter"]');
+  const shared = /^L = (\S+) % of the tool diameter$/.exec(share?.textContent ?? '');
+  if (share && shared) share.textContent = words.said.diameterShare(localDecimal(shared[1] ?? '', words));
   procedureNames(root, words);
   // The finish box's words (finishPanel.ts keeps each element's English in data-phrase).
   for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]')) {

@@ -130,7 +130,7 @@ export class StepperView implements TeachingView {
   private visible = false;
 
   constructor(private readonly display: TraceDisplay) {
-    this.name(EN_STEPPER);
+    this.name(words());
     this.first.addEventListener('click', () => this.go(0));
     this.back.addEventListener('click', () => this.go(this.index - 1));
     this.forward.addEventListener('click', () => this.go(this.index + 1));
