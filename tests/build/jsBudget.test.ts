@@ -104,7 +104,7 @@
  * in all, the ratchet 294.1.
  * Then the landmarks' names, the roughness's rule of thumb (and its note on a surface of revolution)
  * and L's share of the tool diameter in each language (put in by language.ts from the page's
- * English, on first use; the first result +0.01 kB for roughness.ts's note now exported, 60.63):
+ * English, on first use; the first result +0.01 kB: roughness.ts's note is read by the language chunk, 60.63):
  * 294.74 in all, the ratchet 294.8.
  */
 import { readFileSync } from 'node:fs';
