@@ -106,6 +106,9 @@
  * and L's share of the tool diameter in each language (put in by language.ts from the page's
  * English, on first use; the first result +0.01 kB: roughness.ts's note is read by the language chunk, 60.63):
  * 294.74 in all, the ratchet 294.8.
+ * Then the catalogue tools' names (the preset box, the chips' titles and legend) in each language
+ * (toolNames.ts and its pass in language.ts, each catalogue's words; on first use; the first result
+ * 60.62): 295.21 in all, the ratchet 295.3.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -131,7 +134,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 294.8 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(294.8);
+  it('all of it, every .js file, is at most 295.3 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(295.3);
   });
 });

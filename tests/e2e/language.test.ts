@@ -161,6 +161,14 @@ const viewWords = (page: Page, testId: string): Promise<string> =>
     return [...texts, ...names].join(' ');
   });
 
+/** The catalogue tools' names: the preset box's first option, the first chip's title, the chips' legend. */
+const toolNames = (page: Page): Promise<{ option: string; title: string; legend: string }> =>
+  page.evaluate(() => ({
+    option: document.querySelector('[data-testid="preset"] option[value="0"]')?.textContent ?? '',
+    title: document.querySelector('.tool-chip')?.getAttribute('title') ?? '',
+    legend: document.querySelector('[data-testid="tool-chips"] legend')?.textContent ?? '',
+  }));
+
 /** The Latin words the step-through, the formulas and the paper's tables keep in Japanese: the paper's symbols, authors, units. */
 const TEACH_KEPT = new Set([
   ...LEGEND_KEPT,
@@ -759,6 +767,22 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       expect(await text(page, '[data-testid="result-percent-diameter"]')).toMatch(
         lang === 'ja' ? /^L = 工具直径の \d+\.\d %$/ : /^L = \d+,\d % des Werkzeugdurchmessers$/,
       );
+      // The catalogue tools' names: the preset box's first option, a chip's title, the chips' legend.
+      await expect
+        .poll(() => toolNames(page), POLL)
+        .toEqual(
+          lang === 'ja'
+            ? {
+                option: 'D6、コーナ R1（論文の工具 1）',
+                title: 'D6、コーナ R1（論文の工具 1）',
+                legend: 'カタログの工具（mm）',
+              }
+            : {
+                option: 'D6, Eckenradius R1 (Werkzeug 1 der Studie)',
+                title: 'D6, Eckenradius R1 (Werkzeug 1 der Studie)',
+                legend: 'Katalogwerkzeuge (mm)',
+              },
+        );
       // The landmarks' names (index.html's data-i18n-label).
       expect(await page.locator('section.controls').getAttribute('aria-label')).toBe(
         lang === 'ja' ? '入力' : 'Eingaben',
@@ -791,6 +815,13 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       'Procedures table (scrolls sideways when wider than its column)',
     );
     expect(await page.locator('section.controls').getAttribute('aria-label')).toBe('Inputs');
+    await expect
+      .poll(() => toolNames(page), POLL)
+      .toEqual({
+        option: 'D6, corner R1 (paper Tool 1)',
+        title: 'D6, corner R1 (paper Tool 1)',
+        legend: 'Catalogue tools (mm)',
+      });
     expect(await text(page, '[data-testid="result-percent-diameter"]')).toMatch(/^L = \d+\.\d % of the tool diameter$/);
     expect(await page.getByTestId('procedures-table').getAttribute('aria-label')).toBe(
       'Procedures (select a row to highlight it in every view)',

@@ -647,6 +647,12 @@ export interface SaidWords {
   readonly diameterShare: (pct: string) => string;
   /** No Rz, Ra, Rq for waterline passes on a surface of revolution (roughness.ts REVOLUTION_NOTE). */
   readonly revolution: string;
+  /** A catalogue tool (toolPresets.ts): its diameter, its corner radius (null: a ball end), the paper's tool number (or null). */
+  readonly preset: (d: string, r: string | null, paperTool: string | null) => string;
+  /** The preset box's "custom" and its metric group; the chips' legend with its units. */
+  readonly custom: string;
+  readonly metric: string;
+  readonly catalogueTools: (units: string) => string;
   /**
    * A worker's reason for a restart (worker/client.ts, read back by workerReason.ts): the words
    * before and after its detail (an exception's own text, kept as it is; none for 'load', 'stopped').

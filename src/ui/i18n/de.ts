@@ -283,6 +283,11 @@ export const catalogue: Catalogue = {
     diameterShare: (pct) => `L = ${pct} % des Werkzeugdurchmessers`,
     revolution:
       'Rz, Ra und Rq werden hier nicht angegeben: Z-Ebenen auf einer Rotationsfläche ändern ihren Abstand von Ebene zu Ebene, daher hat das Profil keine Periode, über die sie zu messen wären; die Rautiefe h ist die Antwort.',
+    preset: (d, r, tool) =>
+      `D${d}, ${r === null ? 'Kugelfräser' : `Eckenradius R${r}`}${tool === null ? '' : ` (Werkzeug ${tool} der Studie)`}`,
+    custom: 'eigene Werte',
+    metric: 'metrisch (mm)',
+    catalogueTools: (units) => `Katalogwerkzeuge (${units})`,
     reason: (kind) =>
       kind === 'failed'
         ? ['der Löser ist fehlgeschlagen (', ')']

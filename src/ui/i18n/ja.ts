@@ -266,6 +266,11 @@ export const catalogue: Catalogue = {
     diameterShare: (pct) => `L = 工具直径の ${pct} %`,
     revolution:
       'ここでは Rz、Ra、Rq を示しません。回転面上の等高線パスは段ごとに間隔が変わり、断面形状に測るための周期がないためです。答えはカスプ高さ h です。',
+    preset: (d, r, tool) =>
+      `D${d}、${r === null ? 'ボールエンドミル' : `コーナ R${r}`}${tool === null ? '' : `（論文の工具 ${tool}）`}`,
+    custom: 'カスタム',
+    metric: 'メートル系（mm）',
+    catalogueTools: (units) => `カタログの工具（${units}）`,
     reason: (kind) =>
       kind === 'failed'
         ? ['ソルバーが失敗しました：', '']

@@ -14,6 +14,7 @@ import type { Catalogue, FinishPhrase, LabelKey, Lang, Phrase } from './catalogu
 import { describeInputErrorIn, describeThreeAxisErrorIn } from './errorText';
 import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
 import { noticeParts } from './noticeWords';
+import { toolNameIn } from './toolNames';
 import { setCatalogue, catalogue as wordsInForce } from './words';
 
 /** Loads a language's catalogue (null for English). */
@@ -71,9 +72,39 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
   for (const e of root.querySelectorAll<HTMLElement>('[data-i18n]'))
     if (catalogue !== null && e.parentElement?.closest(ENGLISH_PARTS)) e.lang = catalogue.lang;
     else e.removeAttribute('lang');
+  // The catalogue tools' names (toolNames.ts), and the chips' legend.
+  localizeToolNames(root, catalogue);
+  const legend = root.querySelector<HTMLElement>('[data-testid="tool-chips"] legend');
+  if (legend !== null) localizeToolLegend(legend, catalogue);
   document.documentElement.lang = catalogue?.lang ?? 'en';
   const title = root.querySelector('[data-i18n="title"]')?.textContent;
   if (title) document.title = title;
+}
+
+/**
+ * The preset box's options and groups and the chips' titles under `root` in `c`'s language (null:
+ * English, kept in data-english to go back to).
+ */
+function localizeToolNames(root: ParentNode, c: Catalogue | null): void {
+  for (const e of root.querySelectorAll<HTMLElement>(
+    '[data-testid="preset"] option, [data-testid="preset"] optgroup, .tool-chip[title]',
+  )) {
+    const attribute = e.tagName === 'OPTION' ? null : e.tagName === 'OPTGROUP' ? 'label' : 'title';
+    const shown = (attribute === null ? e.textContent : e.getAttribute(attribute)) ?? '';
+    e.dataset.english ??= shown;
+    const english = e.dataset.english;
+    const text = c === null ? english : (toolNameIn(english, c) ?? english);
+    if (text === shown) continue;
+    if (attribute === null) e.textContent = text;
+    else e.setAttribute(attribute, text);
+  }
+}
+
+/** The chips' legend (toolChips.ts writes it in English on each drawing) in `c`'s language. */
+function localizeToolLegend(legend: HTMLElement, c: Catalogue | null): void {
+  const text = legend.textContent ?? '';
+  const local = c === null ? null : toolNameIn(text, c);
+  if (local !== null && local !== text) legend.textContent = local;
 }
 
 /**
@@ -297,6 +328,14 @@ export class LanguageSwitch {
   ) {
     this.wanted = start;
     // The notice box follows the language whenever the page writes into it.
+    // The chips' legend follows the language whenever toolChips.ts writes it in English.
+    const legend = document.querySelector<HTMLElement>('[data-testid="tool-chips"] legend');
+    if (legend !== null)
+      new MutationObserver(() => localizeToolLegend(legend, wordsInForce())).observe(legend, {
+        childList: true,
+        characterData: true,
+        subtree: true,
+      });
     const box = document.querySelector<HTMLElement>('[data-testid="notice"]');
     if (box !== null)
       new MutationObserver(() => localizeNotice(box)).observe(box, {
