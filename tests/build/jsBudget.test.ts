@@ -109,6 +109,9 @@
  * Then the catalogue tools' names (the preset box, the chips' titles and legend) in each language
  * (toolNames.ts and its pass in language.ts, each catalogue's words; on first use; the first result
  * 60.62): 295.21 in all, the ratchet 295.3.
+ * Then the 3D scene's heights' scale badge and its title in each language (its English moved from
+ * scene.ts to render/sceneWords.ts, in the scene's chunk; the words in each catalogue; +0.27 kB in
+ * all, on first use; the first result 60.63): 295.48 in all, the ratchet 295.5.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -134,7 +137,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 295.3 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(295.3);
+  it('all of it, every .js file, is at most 295.5 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(295.5);
   });
 });

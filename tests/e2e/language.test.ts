@@ -783,6 +783,17 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
                 legend: 'Katalogwerkzeuge (mm)',
               },
         );
+      // The 3D scene's heights' scale badge and its title (the scene's own words).
+      await expect
+        .poll(
+          () => page.getByTestId('scene-exaggeration').evaluate((e) => `${e.textContent} | ${e.getAttribute('title')}`),
+          POLL,
+        )
+        .toMatch(
+          lang === 'ja'
+            ? /^高さを \d+ 倍で表示（平面から 2h まで） \| カスプが見えるように、/
+            : /^Höhen \d+-fach überhöht \(bis 2h über der Ebene\) \| Damit der Kamm sichtbar wird, /,
+        );
       // The landmarks' names (index.html's data-i18n-label).
       expect(await page.locator('section.controls').getAttribute('aria-label')).toBe(
         lang === 'ja' ? '入力' : 'Eingaben',

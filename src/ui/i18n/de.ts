@@ -323,6 +323,11 @@ export const catalogue: Catalogue = {
       best: 'bestes P_hp[i]',
       single: 'einziger Kontakt',
       xAxis: 'X (Vorschub)',
+      scale: (k) => (k === null ? 'Höhen maßstäblich' : `Höhen ${k}-fach überhöht (bis 2h über der Ebene)`),
+      scaleTitle: (k) =>
+        k === null
+          ? 'Alle Längen und Höhen sind maßstäblich gezeichnet.'
+          : `Damit der Kamm sichtbar wird, sind Höhen von der Ebene bis zur doppelten Rautiefe ${k}-fach überhöht gezeichnet, das Werkzeug darüber maßstäblich. Nur die Zeichnung: jede Zahl ist die des Lösers.`,
     },
   ),
   viewNotes: {

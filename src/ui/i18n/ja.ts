@@ -302,6 +302,11 @@ export const catalogue: Catalogue = {
     best: '最良の P_hp[i]',
     single: '単一接触',
     xAxis: 'X（送り）',
+    scale: (k) => (k === null ? '高さは実寸' : `高さを ${k} 倍で表示（平面から 2h まで）`),
+    scaleTitle: (k) =>
+      k === null
+        ? 'すべての長さと高さを実寸で描いています。'
+        : `カスプが見えるように、平面からカスプ高さの 2 倍までの高さを ${k} 倍に拡大して描き、その上の工具は実寸で描いています。拡大は描画だけで、数値はすべてソルバーの値です。`,
   }),
   viewNotes: {
     curved: {
