@@ -229,12 +229,11 @@ export class ToolScene extends ViewedScene {
     this.traceSizes = { map, cornerRadiusMm: g.cornerRadiusMm, toolRadiusMm: R, words: labels.words ?? SCENE_WORDS };
     const badge = this.scaleBadge;
     badge.hidden = false;
-    badge.textContent =
-      map.factor === 1 ? 'heights at true scale' : `heights drawn x${map.factor} (up to 2h above the plane)`;
-    badge.title =
-      map.factor === 1
-        ? 'Every length and height is drawn at true scale.'
-        : `So that the scallop can be seen, heights from the plane up to twice the scallop height are drawn ${map.factor} times taller, the tool above them at true scale. Only the drawing: every number is the solver's.`;
+    // In the reader's language (the page's words, sceneWords.ts in English).
+    const words = labels.words ?? SCENE_WORDS;
+    const k = map.factor === 1 ? null : map.factor;
+    badge.textContent = words.scale(k);
+    badge.title = words.scaleTitle(k);
     drawnBoundingSphere(this.view.scene, (o) => o instanceof LabelAnchor, this.view.drawnSphere);
     this.fit(R);
     // New results are drawn at once rather than on the next animation frame: the browser

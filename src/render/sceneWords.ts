@@ -20,6 +20,9 @@ export interface SceneWordTexts {
   readonly xAxis: string;
   /** After a dimension measured along an arc, with its separator. */
   readonly arc: string;
+  /** The heights' scale badge and its hover title: true scale (null) or heights drawn `k` times taller. */
+  readonly scale: (k: number | null) => string;
+  readonly scaleTitle: (k: number | null) => string;
 }
 
 /** The scene's words in English (the page gives another language's with the labels). */
@@ -34,4 +37,9 @@ export const SCENE_WORDS: SceneWordTexts = {
   single: 'single contact',
   xAxis: 'X (feed)',
   arc: ' (arc)',
+  scale: (k) => (k === null ? 'heights at true scale' : `heights drawn x${k} (up to 2h above the plane)`),
+  scaleTitle: (k) =>
+    k === null
+      ? 'Every length and height is drawn at true scale.'
+      : `So that the scallop can be seen, heights from the plane up to twice the scallop height are drawn ${k} times taller, the tool above them at true scale. Only the drawing: every number is the solver's.`,
 };

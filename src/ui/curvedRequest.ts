@@ -12,7 +12,7 @@ import { rawFields } from '../core/input/raw';
 import { formatInputNumber, fromMm, toMm, unitSymbol } from '../core/input/units';
 import { type InputError, inputError, MIN_LENGTH_MM } from '../core/input/validate';
 import type { CurvedError } from '../worker/pageProtocol';
-import { describeError } from './i18n/words';
+import { catalogue, describeError } from './i18n/words';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
 import { type CalculatorState, type FieldKey, fieldInMm, parseField, type Unit } from './state';
 import { type RadiusKey, sideOf } from './surfaceState';
@@ -35,20 +35,25 @@ function got(text: string): string {
 /**
  * A radius field's signed value in mm: Infinity when straight, else its magnitude with the side's
  * sign; or the field's own error (missing, not a number, a sign or 0 typed: the side is chosen
- * beside it).
+ * beside it), in the language in force (a catalogue's radiusField, i18n/curvedText.ts; English here).
  */
 export function radiusMm(state: CalculatorState, key: RadiusKey): number | PageFieldError {
   const side = sideOf(state, key);
   if (side === 'straight') return Number.POSITIVE_INFINITY;
   const text = state.fields[key].trim();
-  if (text === '') return { key, message: `${LABEL[key]} is missing: enter a radius, or choose straight.` };
   const v = parseField(text);
-  if (v === null) return { key, message: `${LABEL[key]} must be a number (got "${text.slice(0, 21)}").` };
-  if (!(v > 0) || /^[+-]/.test(text))
-    return {
-      key,
-      message: `${LABEL[key]} must be a positive number: convex or concave is chosen beside it ${got(text)}.`,
-    };
+  if (v === null || !(v > 0) || /^[+-]/.test(text))
+    return (
+      catalogue()?.radiusField(key, text, v) ?? {
+        key,
+        message:
+          text === ''
+            ? `${LABEL[key]} is missing: enter a radius, or choose straight.`
+            : v === null
+              ? `${LABEL[key]} must be a number (got "${text.slice(0, 21)}").`
+              : `${LABEL[key]} must be a positive number: convex or concave is chosen beside it ${got(text)}.`,
+      }
+    );
   const mm = toMm(v, state.unit);
   return side === 'concave' ? -mm : mm;
 }

@@ -29,6 +29,7 @@ import type { FinishWords } from './i18n/catalogue';
 import { finishMessageIn, finishScopeIn } from './i18n/finishText';
 import { localDecimal } from './i18n/langChoice';
 import { catalogue, localize } from './i18n/words';
+import { reasonIn } from './i18n/workerReason';
 import { balancedFeedFields } from './shopFeed';
 import { publishTeethSurface } from './teethMap';
 
@@ -315,7 +316,8 @@ export class FinishPanel {
     const surface = this.refusal === null ? this.answer('areal')?.surface : undefined;
     publishTeethSurface(surface === undefined || surface === null ? null : { surface, unit: this.unit });
     this.profiles.show(this.refusal === null ? (this.answer('areal')?.profiles ?? null) : null, this.unit);
-    const note = this.note === null ? null : words().worker(this.note.gaveUp, this.note.reason);
+    // The worker's reason in the language in force (an exception's own text kept).
+    const note = this.note === null ? null : words().worker(this.note.gaveUp, reasonIn(this.note.reason, catalogue()));
     const waiting = pending
       ? (note ??
         (m === undefined
@@ -456,7 +458,7 @@ export class FinishPanel {
         : line.kind === 'computing'
           ? w.x3pComputing
           : line.kind === 'gaveUp'
-            ? w.x3pGaveUp(line.reason)
+            ? w.x3pGaveUp(reasonIn(line.reason, c))
             : line.kind === 'saved'
               ? w.x3pSaved(line.fileName, line.size)
               : w.x3pNone(

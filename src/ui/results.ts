@@ -66,11 +66,8 @@ export class ResultsPanel {
     this.headline = must(root, '[data-role="headline"]');
     this.thead = must(root, '.procedures thead');
     this.tbody = must(root, '.procedures tbody');
+    // Focusable (keys scroll it) and named, as the paper tables' boxes (in the markup: no first-result code).
     const scroll = must<HTMLElement>(root, '[data-testid="procedures-scroll"]');
-    // Focusable (keys scroll it) and named, as the paper tables' boxes (set here: the markup stays plain).
-    scroll.tabIndex = 0;
-    scroll.setAttribute('role', 'group');
-    scroll.setAttribute('aria-label', 'Procedures table (scrolls sideways when wider than its column)');
     if (scroll.parentElement) this.cues.watch(scroll, scroll.parentElement);
     this.notes = must(root, '[data-testid="table-notes"]');
     this.cuspRow = must(root, '[data-role="cusps"]');

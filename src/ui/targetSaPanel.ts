@@ -22,6 +22,7 @@ import type { FinishInputs } from './finishRequest';
 import { formatLen, formatRoughness } from './format';
 import { targetSaMessageIn } from './i18n/finishText';
 import { catalogue, localize } from './i18n/words';
+import { reasonIn } from './i18n/workerReason';
 import { shopFeed } from './shopFeed';
 import { targetSaAsk } from './targetSaRequest';
 import { lineChart } from './views/lineChart';
@@ -35,10 +36,10 @@ const NOTE =
   'The pair with the largest L * fz (the area machined per tooth: the fastest finish at a given spindle speed) among those whose areal Sa is the target (plane, straight teeth, no runout). "use this pair" solves for the scallop height at that L with that fz, both rounded down.';
 const CURVE = 'Every pair that leaves this Sa: the dot is the best, the curve ends at L0 where fz -> 0';
 
-/** The worker's restart in the language in force (English here; the reason is the worker's). */
+/** The worker's restart in the language in force (English here; the worker's reason worded by workerReason.ts). */
 function restartWords(gaveUp: boolean, reason: string): string {
   const words = catalogue()?.finishText.targetSa;
-  if (words !== undefined) return words.worker(gaveUp, reason);
+  if (words !== undefined) return words.worker(gaveUp, reasonIn(reason, catalogue()));
   return gaveUp
     ? `No pair: its worker gave up (${reason}).`
     : `The target Sa's worker was restarted (${reason}); computing again...`;

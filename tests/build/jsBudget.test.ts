@@ -83,6 +83,35 @@
  * on first use; the page's hook in request.ts paid for by one return in curvedRequest.ts: the first
  * result 60.64): 283.36 in all, the ratchet 283.4. Then a doubly curved point's comparison rows'
  * names in each language (language.ts, on first use): 283.64, the ratchet 283.7.
+ * Then the step-through's steps, the formulas' words and the paper's tables in each language, and the
+ * procedures' table's name and rows' title (all on first use; the first result 60.63): the Japanese
+ * catalogue +2.9 kB and the German +2.7 (the assumptions of six procedures, the tables' two notes and
+ * the step captions are long text), the views +1.0 (their English as typed words objects, the tables
+ * built again in another language), language.ts +0.07: 290.29 in all, the ratchet raised to 290.3 by
+ * that cost.
+ * Then a curved radius field's own messages, a worker's reason for a restart and the procedures'
+ * table's own name in each language (each catalogue +0.2 kB; workerReason.ts a chunk of its own,
+ * +0.28, shared by language.ts, the finish box and the target-Sa box, +0.15 in their chunks; all on
+ * first use); the radius field's
+ * hook in the first result (+0.04 kB) paid for by the procedures' table box's name, focus and role
+ * moved from results.ts into index.html: the first result 60.62, 291.17 in all, the ratchet 291.2.
+ * Then a link notice's details in each language (linkNotices.ts reads the page's English back, in
+ * the language code's chunk, +0.66 kB; each catalogue +0.4; on first use; the first result 60.62):
+ * 292.64 in all, the ratchet 292.7.
+ * Then a chart gap's reason and the simulation's reason for an exception in each language (the
+ * views read the core's English back, gapReasons.ts and surfaceWords.ts, +0.58 kB with the English
+ * sentences they read against; each catalogue +0.42; on first use; the first result 60.62): 294.06
+ * in all, the ratchet 294.1.
+ * Then the landmarks' names, the roughness's rule of thumb (and its note on a surface of revolution)
+ * and L's share of the tool diameter in each language (put in by language.ts from the page's
+ * English, on first use; the first result +0.01 kB: roughness.ts's note is read by the language chunk, 60.63):
+ * 294.74 in all, the ratchet 294.8.
+ * Then the catalogue tools' names (the preset box, the chips' titles and legend) in each language
+ * (toolNames.ts and its pass in language.ts, each catalogue's words; on first use; the first result
+ * 60.62): 295.21 in all, the ratchet 295.3.
+ * Then the 3D scene's heights' scale badge and its title in each language (its English moved from
+ * scene.ts to render/sceneWords.ts, in the scene's chunk; the words in each catalogue; +0.27 kB in
+ * all, on first use; the first result 60.63): 295.48 in all, the ratchet 295.5.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -108,7 +137,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 283.7 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(283.7);
+  it('all of it, every .js file, is at most 295.5 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(295.5);
   });
 });

@@ -145,6 +145,40 @@ const profileWords = (page: Page): Promise<{ lang: string; words: string; dims: 
     return { lang: (v as HTMLElement).lang, words: [...texts, ...names].join(' '), dims };
   });
 
+/**
+ * Every word a teaching view (by its test id) shows or names, but its equations (MathML, the paper's
+ * symbols): its texts, its elements' accessible names and hover titles.
+ */
+const viewWords = (page: Page, testId: string): Promise<string> =>
+  page.getByTestId(testId).evaluate((v) => {
+    const texts: string[] = [];
+    const walker = document.createTreeWalker(v, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node !== null; node = walker.nextNode())
+      if (node.parentElement?.closest('math') === null) texts.push(node.nodeValue ?? '');
+    const names = [...v.querySelectorAll('[aria-label], [title]')].map(
+      (e) => `${e.getAttribute('aria-label') ?? ''} ${e.getAttribute('title') ?? ''}`,
+    );
+    return [...texts, ...names].join(' ');
+  });
+
+/** The catalogue tools' names: the preset box's first option, the first chip's title, the chips' legend. */
+const toolNames = (page: Page): Promise<{ option: string; title: string; legend: string }> =>
+  page.evaluate(() => ({
+    option: document.querySelector('[data-testid="preset"] option[value="0"]')?.textContent ?? '',
+    title: document.querySelector('.tool-chip')?.getAttribute('title') ?? '',
+    legend: document.querySelector('[data-testid="tool-chips"] legend')?.textContent ?? '',
+  }));
+
+/** The Latin words the step-through, the formulas and the paper's tables keep in Japanese: the paper's symbols, authors, units. */
+const TEACH_KEPT = new Set([
+  ...LEGEND_KEPT,
+  ...'Rb Reff Rlong Rshort Ztc b d s gamma scp wR wL eta sin sqrt thou Sekine Redonnet Bedi 3D'.split(' '),
+]);
+
+/** The step-through's, the formulas' and the tables' English words (views/stepperWords.ts, formulaWords.ts, tableWords.ts). */
+const TEACH_ENGLISH =
+  /(?<!\p{L})(step|of|flank|box|boxes|section|sections|towards|touches|pseudo|single|search|contact|farthest|crossings|best|converged|exact|solver|scene|play|back|forward|first|last|reduced|motion|procedure|torus|shown|true|tool|moves|surface|projection|offset|tilt|posture|ball|approximation|ignores|curvature|lead|osculates|treats|equations|scrolls|sideways|lengths|angles|degrees|table|tables|printed|recomputed|condition|load|why|column|calculator|the|and|at|on|is)(?!\p{L})/giu;
+
 describe('the language switch (phone)', { timeout: 90_000 }, () => {
   let page: Page;
 
@@ -424,17 +458,21 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
   });
 
   it('German words the page writes itself: the three-axis step, its question with a decimal comma, Copy said, an empty slider, a flat end lying flat', async () => {
-    // A link value replaced: the notice's sentence in the language, the link's own words kept in English.
+    // A link value replaced: the notice in the language, its details too (the parameter and its value kept, nothing marked English).
     await page.goto(new URL('?R=3&Rcr=abc&rho=5&h=0.05&unit=mm&lang=de', page.url()).href);
     await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('de');
     const notice = page.getByTestId('notice');
     await expect
       .poll(() => notice.textContent(), POLL)
-      .toMatch(/^Einige Werte des Links wurden ersetzt: \S*Rcr\S*="abc"/);
-    expect(await notice.locator('span[lang="en"]').textContent()).toMatch(/="abc" in the link is not a number/);
+      .toMatch(
+        /^Einige Werte des Links wurden ersetzt: Rcr="abc" im Link ist keine Zahl; der Standardwert \S+ wird verwendet\.$/,
+      );
+    expect(await notice.locator('[lang="en"]').count()).toBe(0);
     expect(await notice.getAttribute('lang')).toBe('de');
     await tap(page, 'ja');
-    await expect.poll(() => notice.textContent(), POLL).toMatch(/^リンクの値の一部を置き換えました：\S*Rcr\S*="abc"/);
+    await expect
+      .poll(() => notice.textContent(), POLL)
+      .toMatch(/^リンクの値の一部を置き換えました：リンクの Rcr="abc" は数値ではありません。既定値 \S+ を使います。$/);
     await tap(page, 'en');
     await expect.poll(() => notice.textContent(), POLL).toMatch(/^Some link values were replaced: \S*Rcr\S*="abc"/);
     expect(await notice.getAttribute('lang')).toBeNull();
@@ -483,6 +521,22 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       charts.words,
     ).toBeNull();
     expect(charts.ticks.some((t) => /\d,\d/.test(t)) && !charts.ticks.some((t) => /\d\.\d/.test(t))).toBe(true);
+    // The gaps' notes in German, their reasons too (the solver's, read back: nothing marked English).
+    const gaps = await page.getByTestId('comparison-chart').evaluate((e) =>
+      [...e.querySelectorAll('.chart-classic .chart-gaps li')].map((li) => ({
+        text: li.textContent ?? '',
+        english: li.querySelector('[lang="en"]') !== null,
+      })),
+    );
+    expect(gaps.length).toBeGreaterThan(0);
+    expect(gaps.filter((g) => g.english)).toEqual([]);
+    const gapText = gaps.map((g) => g.text).join(' ');
+    expect(
+      gapText.match(
+        /\b(is|the|at|no|from|above|widest|infinite|degenerates|flat|divides|overflows|sharp|edge|corner|ball)\b/gi,
+      ),
+      gapText,
+    ).toBeNull();
     // A switch while the charts are on screen draws them anew in its words.
     await tap(page, 'ja');
     await expect.poll(() => caption.textContent(), POLL).toMatch(/^前傾角 rho \[°\] に対する L \[mm\]/);
@@ -621,6 +675,15 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(curvedRows, POLL).toContain('Exakt (dieser doppelt gekrümmte Punkt)');
     expect(await curvedRows()).toContain('Sekine et al., korrigiert (1/rho = 1/Reff + 1/Rc)');
     expect(await curvedRows()).toContain('Zylinder quer zum Vorschub, exakt (Rc ignoriert)');
+    // A radius field's own error in German (the page's, before any worker): not a number, what was typed quoted.
+    await typeInto(page, 'input-cross-radius', 'abc');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => text(page, '[data-testid="error-cross-radius"]'), POLL)
+      .toBe('Radius quer Rc muss eine Zahl sein (eingegeben: "abc").');
+    await typeInto(page, 'input-cross-radius', '40');
+    await page.keyboard.press('Enter');
+    await expect.poll(() => text(page, '[data-testid="error-cross-radius"]'), POLL).toBe('');
     // A refusal at that point worded on the page from the worker's data, in German: h above a flank's or the shank's limit.
     const curvedH = await page.getByTestId('input-h').inputValue();
     await typeInto(page, 'input-h', '5');
@@ -646,6 +709,137 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await tap(page, 'en');
     await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
     await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Step-over L');
+  });
+
+  it("the step-through's steps, the formulas and the paper's tables in Japanese and German: no English left, German decimal commas", async () => {
+    // The page is in English by now (R = 3, Rcr = 1, rho = 5, h = 0.05 on a plane, five axes).
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
+    for (const lang of ['ja', 'de'] as const) {
+      await tap(page, lang);
+      await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe(lang);
+      // Every step of the step-through, walked with its Forward button: captions, counter, gauge.
+      await page.locator('#tab-stepper').click();
+      await expect.poll(() => page.getByTestId('stepper').getAttribute('lang'), POLL).toBe(lang);
+      await page.getByTestId('stepper-first').click();
+      await expect.poll(() => text(page, '[data-testid="stepper-counter"]'), POLL).toMatch(/\d/);
+      const steps = await page.getByTestId('stepper').evaluate((v) => {
+        const read = (id: string) => v.querySelector(`[data-testid="${id}"]`)?.textContent ?? '';
+        const forward = v.querySelector('[data-testid="stepper-forward"]') as HTMLButtonElement;
+        const seen: string[] = [];
+        // A step's counter names the total: the walk stops at the last step (each click draws at once).
+        for (let i = 0; i < 100; i++) {
+          seen.push(`${read('stepper-counter')} ${read('stepper-caption')} ${read('stepper-ds-text')}`);
+          const counter = read('stepper-counter');
+          forward.click();
+          if (read('stepper-counter') === counter) break;
+        }
+        return seen;
+      });
+      expect(steps.length, steps.join('\n')).toBeGreaterThanOrEqual(20);
+      const stepper = [...steps, await viewWords(page, 'stepper')].join(' ');
+      // Formulas: their words (the equations' own symbols left out), their names, the decimal sign in the slots.
+      await page.locator('#tab-formulas').click();
+      await expect.poll(() => page.getByTestId('formulas').getAttribute('lang'), POLL).toBe(lang);
+      const formulas = await viewWords(page, 'formulas');
+      const slots = await page
+        .getByTestId('formulas')
+        .evaluate((v) => [...v.querySelectorAll('math [class^="slot-"]')].map((e) => e.textContent ?? '').join(' '));
+      // The paper's tables: notes, captions, head, names, rows' titles, the cells' decimal sign.
+      await page.locator('#tab-tables').click();
+      await expect.poll(() => page.getByTestId('paper-tables').getAttribute('lang'), POLL).toBe(lang);
+      const tables = await viewWords(page, 'paper-tables');
+      // The procedures' table's name, its box's and its rows' hover title.
+      const procedures = await page
+        .getByTestId('procedures-scroll')
+        .evaluate((box) =>
+          [
+            box.getAttribute('aria-label') ?? '',
+            box.querySelector('table')?.getAttribute('aria-label') ?? '',
+            ...[...box.querySelectorAll('tr[title]')].map((tr) => tr.getAttribute('title') ?? ''),
+          ].join(' '),
+        );
+      // The roughness's rule of thumb and L's share of the tool diameter, with the locale's decimal sign.
+      expect(await text(page, '[data-testid="result-ra-rule"]')).toMatch(
+        lang === 'ja'
+          ? /^経験則 Ra ~ h\/4 = \d+\.\d+ µm：厳密な Ra に対して [+-]?\d+\.\d+ %。$/
+          : /^Faustregel Ra ~ h\/4 = \d+,\d+ µm: [+-]?\d+,\d+ % gegenüber dem exakten Ra\.$/,
+      );
+      expect(await text(page, '[data-testid="result-percent-diameter"]')).toMatch(
+        lang === 'ja' ? /^L = 工具直径の \d+\.\d %$/ : /^L = \d+,\d % des Werkzeugdurchmessers$/,
+      );
+      // The catalogue tools' names: the preset box's first option, a chip's title, the chips' legend.
+      await expect
+        .poll(() => toolNames(page), POLL)
+        .toEqual(
+          lang === 'ja'
+            ? {
+                option: 'D6、コーナ R1（論文の工具 1）',
+                title: 'D6、コーナ R1（論文の工具 1）',
+                legend: 'カタログの工具（mm）',
+              }
+            : {
+                option: 'D6, Eckenradius R1 (Werkzeug 1 der Studie)',
+                title: 'D6, Eckenradius R1 (Werkzeug 1 der Studie)',
+                legend: 'Katalogwerkzeuge (mm)',
+              },
+        );
+      // The 3D scene's heights' scale badge and its title (the scene's own words).
+      await expect
+        .poll(
+          () => page.getByTestId('scene-exaggeration').evaluate((e) => `${e.textContent} | ${e.getAttribute('title')}`),
+          POLL,
+        )
+        .toMatch(
+          lang === 'ja'
+            ? /^高さを \d+ 倍で表示（平面から 2h まで） \| カスプが見えるように、/
+            : /^Höhen \d+-fach überhöht \(bis 2h über der Ebene\) \| Damit der Kamm sichtbar wird, /,
+        );
+      // The landmarks' names (index.html's data-i18n-label).
+      expect(await page.locator('section.controls').getAttribute('aria-label')).toBe(
+        lang === 'ja' ? '入力' : 'Eingaben',
+      );
+      const all = `${stepper} ${formulas} ${tables} ${procedures}`;
+      if (lang === 'ja') {
+        const left = latinWords(all.replace(/µ(m|in)\b/g, '')).filter((w) => !TEACH_KEPT.has(w));
+        expect([...new Set(left)], all).toEqual([]);
+        expect(all).not.toMatch(/\d,\d/);
+      } else {
+        expect([...new Set(all.match(TEACH_ENGLISH) ?? [])], all).toEqual([]);
+        // German numbers with a decimal comma: the captions, the slots, the tables' cells; no point left.
+        expect(stepper).toMatch(/\d,\d/);
+        expect(slots).toMatch(/\d,\d/);
+        expect(tables).toMatch(/\d,\d{3}\s+\/\s+\d,\d{4}/);
+        expect(`${stepper} ${slots} ${tables}`).not.toMatch(/\d\.\d/);
+      }
+    }
+    expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(PHONE.width);
+    await pageSettled(page);
+    expect(await axeViolations(page)).toEqual([]);
+    // English comes back whole: the step-through's, the tables' words as written.
+    await tap(page, 'en');
+    await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
+    await expect
+      .poll(() => page.getByTestId('paper-table-half').locator('caption').textContent(), POLL)
+      .toBe('Tables 2-3: L/2 [mm] for h');
+    expect(await page.getByTestId('paper-tables').getAttribute('lang')).toBeNull();
+    expect(await page.getByTestId('procedures-scroll').getAttribute('aria-label')).toBe(
+      'Procedures table (scrolls sideways when wider than its column)',
+    );
+    expect(await page.locator('section.controls').getAttribute('aria-label')).toBe('Inputs');
+    await expect
+      .poll(() => toolNames(page), POLL)
+      .toEqual({
+        option: 'D6, corner R1 (paper Tool 1)',
+        title: 'D6, corner R1 (paper Tool 1)',
+        legend: 'Catalogue tools (mm)',
+      });
+    expect(await text(page, '[data-testid="result-percent-diameter"]')).toMatch(/^L = \d+\.\d % of the tool diameter$/);
+    expect(await page.getByTestId('procedures-table').getAttribute('aria-label')).toBe(
+      'Procedures (select a row to highlight it in every view)',
+    );
+    await page.locator('#tab-stepper').click();
+    await expect.poll(() => text(page, '[data-testid="stepper-counter"]'), POLL).toMatch(/^step \d+ of \d+$/);
+    await page.locator('#tab-profile').click();
   });
 
   it("an embed takes its language from the link (the element's lang attribute), not the one remembered (English by now)", async () => {

@@ -14,6 +14,7 @@ import type { CurvedError } from '../../worker/pageProtocol';
 import type { PageFieldError } from '../requestTypes';
 import type { SceneLabelTexts } from '../sceneLabelTexts';
 import type { CalculatorState } from '../state';
+import type { FormulaWords, StepperWords, TableWords } from './teachWords';
 
 /** The languages of the page: English (the page as written), Japanese, German. */
 export type Lang = 'en' | 'ja' | 'de';
@@ -96,6 +97,9 @@ export type StaticKey =
   | 'legendTrace'
   | 'legendExaggeration'
   | 'givenSa';
+
+/** The keys of index.html's landmarks named by `aria-label` with a `data-i18n-label` (their English the page's). */
+export type LabelKey = 'fullCalculator' | 'inputs' | 'results' | 'finish' | 'targetSa' | 'view3d' | 'currentAnswer';
 
 /** The words of the question named beside an answer (questionWords.ts), and its list separator ", ". */
 export type QuestionWord =
@@ -195,6 +199,8 @@ export interface Catalogue {
   readonly lang: Exclude<Lang, 'en'>;
   /** index.html's chrome, by its `data-i18n` keys. */
   readonly page: Readonly<Record<StaticKey, string>>;
+  /** index.html's landmarks' accessible names, by their `data-i18n-label` keys. */
+  readonly labels: Readonly<Record<LabelKey, string>>;
   /** Each field's label and hint (the paper's symbols kept: L, h, Rcr, rho...). */
   readonly fields: Readonly<Record<PageFieldKey, FieldWords>>;
   /** The tool size given as a diameter: its label and hint, and the corner radius's hint then. */
@@ -246,6 +252,16 @@ export interface Catalogue {
   readonly procedures: ProcedureNames;
   /** A doubly curved point's refusal on its field, worded from its data (curvedText.ts; English curvedRequest.ts). */
   readonly curved: (e: CurvedError, state: CalculatorState) => PageFieldError;
+  /** A radius field's own error (missing, not a number: `value` null, a sign typed), worded by curvedText.ts (English: curvedRequest.ts radiusMm). */
+  readonly radiusField: (key: 'Rf' | 'Rc', text: string, value: number | null) => PageFieldError;
+  /** A link notice's details (linkNotices.ts; English: the page's own, state.ts and others). */
+  readonly linkNotices: LinkNoticeWords;
+  /** The step-through's words (views/stepperView.ts; English in views/stepperWords.ts). */
+  readonly stepper: StepperWords;
+  /** The formulas view's words (views/formulasView.ts; English in views/formulaWords.ts). */
+  readonly formulas: FormulaWords;
+  /** The paper's tables' words (views/tablesView.ts; English in views/tableWords.ts). */
+  readonly tables: TableWords;
 }
 
 /**
@@ -270,6 +286,10 @@ export interface CurvedWords {
     held: string,
     got: string,
   ) => string;
+  /** A radius field's own errors: empty (enter one, or choose straight), not a number, a sign or 0 typed (the side is chosen beside it). */
+  readonly missing: (label: string) => string;
+  readonly notNumber: (label: string, got: string) => string;
+  readonly positive: (label: string, got: string) => string;
   /** The target Ra's bound says "on this surface" (errors); here it is "at this point": [from, to]. */
   readonly atPoint: readonly [string, string];
 }
@@ -304,6 +324,10 @@ export interface ProcedureNames {
   >;
   /** After a lead-only procedure's name in the table when the tool is tilted (English ", lead only"). */
   readonly leadOnly: string;
+  /** The results table's accessible name, its box's (a scrolling region), and a procedure's row's hover title. */
+  readonly table: string;
+  readonly region: string;
+  readonly select: string;
   /** The results table's head (results.ts), by its English words; `L/2` and `h` are symbols. */
   readonly head: Readonly<Record<'Procedure' | 'Model' | 'Deviation' | 'Deviation [%]' | 'Scallop it leaves', string>>;
 }
@@ -384,7 +408,7 @@ export interface FinishWords {
   readonly failure: (kind: 'not-converged' | 'not-swept', part: 'marks' | 'areal') => string;
   /** Feed marks are not computed on this kind of surface. */
   readonly scope: (kind: 'cylinder' | 'doublyCurved' | 'waterlineRevolution' | 'other') => string;
-  /** The finish's worker gave up or was restarted (its reason kept English). */
+  /** The finish's worker gave up or was restarted (its reason worded by workerReason.ts, an exception's text kept). */
   readonly worker: (gaveUp: boolean, reason: string) => string;
   /**
    * The target-Sa box's own refusals (the worker's TargetSaMessage refusal; English its sentence in
@@ -418,6 +442,8 @@ export interface SurfaceWords {
   readonly pending: (percent: number | null) => string;
   /** Why the worker did not simulate: not a plane, no scallop, or no reason given (another stays the worker's). */
   readonly reasons: Readonly<Record<'planes-only' | 'no-scallop' | 'none', string>>;
+  /** The simulation stopped on an exception (the worker's "No simulation: ..."): the exception's own text kept. */
+  readonly exception: (detail: string) => string;
   /** The heights' scale (k null: true scale) and the colour's unit. */
   readonly exaggeration: (k: number | null, unit: string) => string;
   /** The simulated cusp against the exact one, their difference within or beyond the bound, the grid and passes. */
@@ -554,7 +580,26 @@ export interface ChartWords {
   readonly cylinder: (concave: boolean, axis: 'feed' | 'cross') => string;
   /** A gap's note before its reason: the procedures, the angle, from (and to, or null at one sample). */
   readonly gap: (names: string, angle: 'rho' | 'beta', from: string, to: string | null) => string;
+  /**
+   * A gap's reason (the core's sentence, core/procedures/sweepGaps.ts noAnswerReason, read back by
+   * views/gapReasons.ts): each model's own, and h above the widest point of a circle or an ellipse
+   * (`symbol` its radius or height, a symbol kept).
+   */
+  readonly reasons: Readonly<Record<GapReason, string>>;
+  readonly widest: (shape: 'circle' | 'ellipse', symbol: string) => string;
 }
+
+/** The solvers' reasons for a gap in a chart (core/procedures/sweepGaps.ts, approximations.ts), by kind. */
+export type GapReason =
+  | 'exact'
+  | 'sekineRhoZero'
+  | 'sekineShort'
+  | 'redonnetRhoZero'
+  | 'bediRhoZero'
+  | 'overflow'
+  | 'flatBottom'
+  | 'sharpEdge'
+  | 'flatEnd';
 
 /** What a three-axis error's sentence is made of, in the language and unit on screen. */
 export interface ThreeAxisText {
@@ -596,7 +641,63 @@ export interface SaidWords {
   readonly restarted: (who: 'results' | 'views', restarts: string | null) => readonly [string, string];
   /** Before the link values replaced (each named in English, by the link's parameter names). */
   readonly linkReplaced: string;
+  /** The roughness's rule of thumb (Ra ~ h/4 with its unit, its error in % against the exact Ra, signed). */
+  readonly ruleOfThumb: (ra: string, pct: string) => string;
+  /** L as a share of the tool diameter (%, a number). */
+  readonly diameterShare: (pct: string) => string;
+  /** No Rz, Ra, Rq for waterline passes on a surface of revolution (roughness.ts REVOLUTION_NOTE). */
+  readonly revolution: string;
+  /** A catalogue tool (toolPresets.ts): its diameter, its corner radius (null: a ball end), the paper's tool number (or null). */
+  readonly preset: (d: string, r: string | null, paperTool: string | null) => string;
+  /** The preset box's "custom" and its metric group; the chips' legend with its units. */
+  readonly custom: string;
+  readonly metric: string;
+  readonly catalogueTools: (units: string) => string;
+  /**
+   * A worker's reason for a restart (worker/client.ts, read back by workerReason.ts): the words
+   * before and after its detail (an exception's own text, kept as it is; none for 'load', 'stopped').
+   */
+  readonly reason: (kind: WorkerReason) => readonly [string, string];
 }
+
+/**
+ * A link notice's details (i18n/linkNotices.ts reads them back from the page's English): the
+ * parameters' names and the values quoted (`Rcr="abc"`) given as they are, kept.
+ */
+export interface LinkNoticeWords {
+  /** Between two details. */
+  readonly separator: string;
+  /** A number the link's others need is missing: its default used. */
+  readonly missing: (name: string, fallback: string) => string;
+  /** Not a number: left empty, its default used, a plane (a cylinder's radius's default), a straight line. */
+  readonly notNumber: (
+    quoted: string,
+    then: { readonly kind: 'empty' | 'straight' } | { readonly kind: 'default' | 'plane'; readonly value: string },
+  ) => string;
+  /** fz given: the feed rate and spindle speed given are not used. */
+  readonly notUsed: (given: string, unused: readonly [string, string]) => string;
+  /** R and D both given: R (quoted with its value) used. */
+  readonly both: (a: string, b: string, used: string) => string;
+  /** A cylinder's radius and a doubly curved point's radii both given: the radii used. */
+  readonly surfaceBoth: (radius: string, rf: string, rc: string) => string;
+  /** A parameter given `times` times: the first used, the others (quoted; `more` not quoted) ignored. */
+  readonly repeated: (name: string, times: number, first: string, ignored: readonly string[], more: number) => string;
+  /**
+   * A choice not among its values: the first used, the language shown, the system's colour scheme
+   * followed, presentation mode off; null: a view not one of the views (none used).
+   */
+  readonly notOneOf: (
+    quoted: string,
+    values: readonly string[],
+    then:
+      | { readonly kind: 'using' | 'showing'; readonly value: string }
+      | { readonly kind: 'system' | 'presentOff' }
+      | null,
+  ) => string;
+}
+
+/** The kinds of a worker's reason for a restart (worker/client.ts): it failed, threw, did not load, stopped answering. */
+export type WorkerReason = 'failed' | 'threw' | 'load' | 'stopped';
 
 /**
  * The surface of a shop sheet, for its title line: lengths given already in the user's unit with

@@ -50,3 +50,24 @@ export function curvedMessageIn(c: Catalogue, w: CurvedWords, e: CurvedError, st
   const known = kind === 'concave-at-least' || kind === 'convex-at-most' || kind === 'not-concave' ? kind : 'other';
   return { key, message: w.gouging(known, label, len(e.limit.radiusMm ?? 0), held, got) };
 }
+
+/**
+ * A radius field's own error in `c`'s language (`w` its CurvedWords): empty, not a number (`value`
+ * null), a sign or 0 typed.
+ */
+export function radiusFieldIn(
+  c: Catalogue,
+  w: CurvedWords,
+  key: 'Rf' | 'Rc',
+  text: string,
+  value: number | null,
+): PageFieldError {
+  const label = c.fields[key].label;
+  const message =
+    text === ''
+      ? w.missing(label)
+      : value === null
+        ? w.notNumber(label, text.slice(0, 21))
+        : w.positive(label, typed(text));
+  return { key, message };
+}

@@ -4,17 +4,21 @@
  * symbols kept. The README's glossary names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
-import { curvedMessageIn } from './curvedText';
+import { curvedMessageIn, radiusFieldIn } from './curvedText';
 import { DE_CHART } from './deChart';
 import { DE_CURVED } from './deCurved';
 import { DE_ERRORS } from './deErrors';
 import { DE_FINISH } from './deFinish';
+import { DE_FORMULAS } from './deFormulas';
+import { DE_LINK_NOTICES } from './deLinkNotices';
 import { DE_PROCEDURES } from './deProcedures';
 import { DE_PROFILE } from './deProfile';
 import { DE_RADIUS } from './deRadius';
 import { DE_SHEET } from './deSheet';
 import { DE_SLOPE } from './deSlope';
+import { DE_STEPPER } from './deStepper';
 import { DE_SURFACE } from './deSurface';
+import { DE_TABLES } from './deTables';
 import { DE_THREE_AXIS } from './deThreeAxis';
 import { sceneWordsIn } from './sceneText';
 
@@ -102,6 +106,15 @@ export const catalogue: Catalogue = {
     legendExaggeration:
       'Höhen nahe der Fläche N-fach überhöht, wenn der Kamm zu niedrig zum Sehen ist (Hinweis in der Szene; Zahlen unverändert)',
     givenSa: 'Ziel-Sa (flächenhaft, mit den Schneiden)',
+  },
+  labels: {
+    fullCalculator: 'Vollständiger Rechner',
+    inputs: 'Eingaben',
+    results: 'Ergebnisse',
+    finish: 'Oberfläche',
+    targetSa: 'Ziel-Sa',
+    view3d: '3D-Ansicht',
+    currentAnswer: 'Aktuelle Antwort',
   },
   fields: {
     R: { label: 'Werkzeugradius R', hint: 'halber Werkzeugdurchmesser' },
@@ -266,6 +279,21 @@ export const catalogue: Catalogue = {
           ];
     },
     linkReplaced: 'Einige Werte des Links wurden ersetzt: ',
+    ruleOfThumb: (ra, pct) => `Faustregel Ra ~ h/4 = ${ra}: ${pct} % gegenüber dem exakten Ra.`,
+    diameterShare: (pct) => `L = ${pct} % des Werkzeugdurchmessers`,
+    revolution:
+      'Rz, Ra und Rq werden hier nicht angegeben: Z-Ebenen auf einer Rotationsfläche ändern ihren Abstand von Ebene zu Ebene, daher hat das Profil keine Periode, über die sie zu messen wären; die Rautiefe h ist die Antwort.',
+    preset: (d, r, tool) =>
+      `D${d}, ${r === null ? 'Kugelfräser' : `Eckenradius R${r}`}${tool === null ? '' : ` (Werkzeug ${tool} der Studie)`}`,
+    custom: 'eigene Werte',
+    metric: 'metrisch (mm)',
+    catalogueTools: (units) => `Katalogwerkzeuge (${units})`,
+    reason: (kind) =>
+      kind === 'failed'
+        ? ['der Löser ist fehlgeschlagen (', ')']
+        : kind === 'threw'
+          ? ['der Löser hat eine Ausnahme ausgelöst (', ')']
+          : [kind === 'load' ? 'der Löser wurde nicht geladen' : 'der Löser antwortet nicht mehr', ''],
   },
   threeAxis: DE_THREE_AXIS,
   chart: DE_CHART,
@@ -275,7 +303,12 @@ export const catalogue: Catalogue = {
   surface: DE_SURFACE,
   profile: DE_PROFILE,
   procedures: DE_PROCEDURES,
+  linkNotices: DE_LINK_NOTICES,
+  stepper: DE_STEPPER,
+  formulas: DE_FORMULAS,
+  tables: DE_TABLES,
   curved: (e, state) => curvedMessageIn(catalogue, DE_CURVED, e, state),
+  radiusField: (key, text, value) => radiusFieldIn(catalogue, DE_CURVED, key, text, value),
   scene: sceneWordsIn(
     'de',
     ' (Bogenlänge)',
@@ -290,6 +323,11 @@ export const catalogue: Catalogue = {
       best: 'bestes P_hp[i]',
       single: 'einziger Kontakt',
       xAxis: 'X (Vorschub)',
+      scale: (k) => (k === null ? 'Höhen maßstäblich' : `Höhen ${k}-fach überhöht (bis 2h über der Ebene)`),
+      scaleTitle: (k) =>
+        k === null
+          ? 'Alle Längen und Höhen sind maßstäblich gezeichnet.'
+          : `Damit der Kamm sichtbar wird, sind Höhen von der Ebene bis zur doppelten Rautiefe ${k}-fach überhöht gezeichnet, das Werkzeug darüber maßstäblich. Nur die Zeichnung: jede Zahl ist die des Lösers.`,
     },
   ),
   viewNotes: {

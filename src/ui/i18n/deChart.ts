@@ -28,4 +28,21 @@ export const DE_CHART: ChartWords = {
     ` Auf diesem ${concave ? 'konkaven' : 'konvexen'} Zylinder (Achse ${axis === 'feed' ? 'in Vorschubrichtung' : 'quer zum Vorschub'}) ist die exakte Kurve die des Zylinders (keine, wo die Anstellung die Fläche verletzen würde oder h über ihren Flanken liegt); die Näherungen sind wie auf einer Ebene, wie in der Tabelle.`,
   gap: (names, angle, from, to) =>
     `Keine Antwort von ${names} ${to === null ? `bei etwa ${angle} = ${from}°` : `für ${angle} von etwa ${from}° bis ${to}°`}: `,
+  reasons: {
+    exact:
+      'h liegt bei oder über der höchsten Rautiefe, die diese Stellung hinterlassen kann (darüber hinterlässt das Werkzeug eine Wand, keinen Kamm)',
+    sekineRhoZero:
+      'bei rho = 0 entartet die projizierte Ellipse zu einer Strecke (ihr großer Radius Rshort/sin(rho) ist unendlich)',
+    sekineShort: 'der kleine Radius der Ellipse ist 0',
+    redonnetRhoZero: 'bei rho = 0 ist der effektive Radius Rb/sin(rho) + Rcr unendlich',
+    bediRhoZero: 'bei rho = 0 ist ihre Ellipse (Halbachsen Rlong, Rlong sin(rho)) flach, und Gl. 11 teilt durch 0',
+    overflow:
+      'ihr effektiver Radius läuft über (rho liegt zu nahe an 0 für ihr 1/sin(rho)); das Modell hat hier keine Antwort',
+    flatBottom:
+      'der flache Boden liegt auf der Ebene (rho = 0 ohne Kippung, oder Anstell- und Kippwinkel zu klein, um zu zählen), daher ist der Krümmungsradius im Kontaktpunkt unendlich',
+    sharpEdge: 'der Kontakt ist eine scharfe Kante (Rcr = 0), ein Kreis mit dem Radius 0',
+    flatEnd: 'ein Schaftfräser (Rcr = 0) hat keine Eckenradius-Kugel',
+  },
+  widest: (shape, symbol) =>
+    `h liegt über dem breitesten Punkt ${shape === 'circle' ? 'ihres Kreises (sein Radius' : 'ihrer Ellipse (ihre Höhe'} ${symbol} ist kleiner als h)`,
 };

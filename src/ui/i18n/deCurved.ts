@@ -27,5 +27,8 @@ export const DE_CURVED: CurvedWords = {
         : kind === 'not-concave'
           ? `${l} muss konvex oder gerade sein, ${held} ${gotOf(g)}: bei jedem konkaven verletzt das Werkzeug die Fläche.`
           : `${l}: das Werkzeug verletzt die Fläche bei jedem Radius, ${held} ${gotOf(g)}; den anderen Radius, das Werkzeug oder seine Anstellung ändern.`,
+  missing: (l) => `${l} fehlt: einen Radius eingeben oder „gerade“ wählen.`,
+  notNumber: (l, g) => `${l} muss eine Zahl sein ${gotOf(`"${g}"`)}.`,
+  positive: (l, g) => `${l} muss eine positive Zahl sein: konvex oder konkav wird daneben gewählt ${gotOf(g)}.`,
   atPoint: ['auf dieser Fläche', 'an diesem Punkt'],
 };

@@ -36,6 +36,9 @@ export const DE_PROCEDURES: ProcedureNames = {
     'Cylinder across the feed, exact (Rc ignored)': 'Zylinder quer zum Vorschub, exakt (Rc ignoriert)',
   },
   leadOnly: ', nur Anstellung',
+  table: 'Verfahren (eine Zeile wählen, um sie in allen Ansichten hervorzuheben)',
+  region: 'Tabelle der Verfahren (seitlich scrollbar, wenn breiter als ihre Spalte)',
+  select: 'Klicken, um dieses Verfahren in allen Ansichten auszuwählen',
   head: {
     Procedure: 'Verfahren',
     Model: 'Modell',

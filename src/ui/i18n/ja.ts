@@ -4,17 +4,21 @@
  * names each term's source. Loaded only when chosen.
  */
 import type { Catalogue } from './catalogue';
-import { curvedMessageIn } from './curvedText';
+import { curvedMessageIn, radiusFieldIn } from './curvedText';
 import { JA_CHART } from './jaChart';
 import { JA_CURVED } from './jaCurved';
 import { JA_ERRORS } from './jaErrors';
 import { JA_FINISH } from './jaFinish';
+import { JA_FORMULAS } from './jaFormulas';
+import { JA_LINK_NOTICES } from './jaLinkNotices';
 import { JA_PROCEDURES } from './jaProcedures';
 import { JA_PROFILE } from './jaProfile';
 import { JA_RADIUS } from './jaRadius';
 import { JA_SHEET } from './jaSheet';
 import { JA_SLOPE } from './jaSlope';
+import { JA_STEPPER } from './jaStepper';
 import { JA_SURFACE } from './jaSurface';
+import { JA_TABLES } from './jaTables';
 import { JA_THREE_AXIS } from './jaThreeAxis';
 import { sceneWordsIn } from './sceneText';
 
@@ -99,6 +103,15 @@ export const catalogue: Catalogue = {
     legendTrace: '段階表示：試した断面、候補 P_hp[i]、求めた点',
     legendExaggeration: 'スカラップが低くて見えないときは面の近くで高さを N 倍に拡大（表示にバッジ、数値は不変）',
     givenSa: '目標 Sa（面、刃を考慮）',
+  },
+  labels: {
+    fullCalculator: 'すべての機能を備えた計算機',
+    inputs: '入力',
+    results: '結果',
+    finish: '仕上げ面',
+    targetSa: '目標 Sa',
+    view3d: '3D 表示',
+    currentAnswer: '現在の答え',
   },
   fields: {
     R: { label: '工具半径 R', hint: '工具直径の半分' },
@@ -249,6 +262,21 @@ export const catalogue: Catalogue = {
           ];
     },
     linkReplaced: 'リンクの値の一部を置き換えました：',
+    ruleOfThumb: (ra, pct) => `経験則 Ra ~ h/4 = ${ra}：厳密な Ra に対して ${pct} %。`,
+    diameterShare: (pct) => `L = 工具直径の ${pct} %`,
+    revolution:
+      'ここでは Rz、Ra、Rq を示しません。回転面上の等高線パスは段ごとに間隔が変わり、断面形状に測るための周期がないためです。答えはカスプ高さ h です。',
+    preset: (d, r, tool) =>
+      `D${d}、${r === null ? 'ボールエンドミル' : `コーナ R${r}`}${tool === null ? '' : `（論文の工具 ${tool}）`}`,
+    custom: 'カスタム',
+    metric: 'メートル系（mm）',
+    catalogueTools: (units) => `カタログの工具（${units}）`,
+    reason: (kind) =>
+      kind === 'failed'
+        ? ['ソルバーが失敗しました：', '']
+        : kind === 'threw'
+          ? ['ソルバーで例外が発生しました：', '']
+          : [kind === 'load' ? 'ソルバーを読み込めませんでした' : 'ソルバーが応答しなくなりました', ''],
   },
   threeAxis: JA_THREE_AXIS,
   chart: JA_CHART,
@@ -258,7 +286,12 @@ export const catalogue: Catalogue = {
   surface: JA_SURFACE,
   profile: JA_PROFILE,
   procedures: JA_PROCEDURES,
+  linkNotices: JA_LINK_NOTICES,
+  stepper: JA_STEPPER,
+  formulas: JA_FORMULAS,
+  tables: JA_TABLES,
   curved: (e, state) => curvedMessageIn(catalogue, JA_CURVED, e, state),
+  radiusField: (key, text, value) => radiusFieldIn(catalogue, JA_CURVED, key, text, value),
   scene: sceneWordsIn('ja', '（円弧）', '工具の姿勢、隣り合うパスとカスプの断面の 3D 表示', {
     designPlane: '設計平面',
     designSurface: '設計曲面',
@@ -269,6 +302,11 @@ export const catalogue: Catalogue = {
     best: '最良の P_hp[i]',
     single: '単一接触',
     xAxis: 'X（送り）',
+    scale: (k) => (k === null ? '高さは実寸' : `高さを ${k} 倍で表示（平面から 2h まで）`),
+    scaleTitle: (k) =>
+      k === null
+        ? 'すべての長さと高さを実寸で描いています。'
+        : `カスプが見えるように、平面からカスプ高さの 2 倍までの高さを ${k} 倍に拡大して描き、その上の工具は実寸で描いています。拡大は描画だけで、数値はすべてソルバーの値です。`,
   }),
   viewNotes: {
     curved: {

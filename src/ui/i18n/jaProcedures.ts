@@ -36,6 +36,9 @@ export const JA_PROCEDURES: ProcedureNames = {
     'Cylinder across the feed, exact (Rc ignored)': '軸が送りに直交する円筒の厳密解（Rc を無視）',
   },
   leadOnly: '（前傾のみ）',
+  table: '手法の表（行を選ぶと、すべてのビューでその手法が強調されます）',
+  region: '手法の表（列より広いときは横にスクロールします）',
+  select: 'クリックすると、すべてのビューでこの手法を選択します',
   head: {
     Procedure: '手法',
     Model: 'モデル',

@@ -8,11 +8,13 @@
  */
 import { CURVATURE_ROWS, type CurvatureRowKey, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import { ZERO_FEED_LABEL } from '../results';
+import { REVOLUTION_NOTE } from '../roughness';
 import type { ToolStorage } from '../savedTools';
-import type { Catalogue, FinishPhrase, Lang, Phrase } from './catalogue';
+import type { Catalogue, FinishPhrase, LabelKey, Lang, Phrase } from './catalogue';
 import { describeInputErrorIn, describeThreeAxisErrorIn } from './errorText';
 import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
 import { noticeParts } from './noticeWords';
+import { toolNameIn } from './toolNames';
 import { setCatalogue, catalogue as wordsInForce } from './words';
 
 /** Loads a language's catalogue (null for English). */
@@ -48,6 +50,16 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
       button.textContent = 'Copy';
       if (button.dataset.ariaEnglish) button.setAttribute('aria-label', button.dataset.ariaEnglish);
     }
+  // The landmarks' names (index.html's English kept to go back to).
+  for (const e of root.querySelectorAll<HTMLElement>('[data-i18n-label]')) {
+    e.dataset.ariaEnglish ??= e.getAttribute('aria-label') ?? '';
+    const name = catalogue?.labels[e.dataset.i18nLabel as LabelKey];
+    if (name !== undefined) e.setAttribute('aria-label', name);
+  }
+  // The procedures table's and its box's names back in English (procedureNames put them into the language).
+  if (catalogue === null)
+    for (const e of root.querySelectorAll<HTMLElement>('[data-aria-english]:not(button.copy)'))
+      e.setAttribute('aria-label', e.dataset.ariaEnglish ?? '');
   // The finish box's words back in English.
   if (catalogue === null)
     for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]'))
@@ -60,9 +72,39 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
   for (const e of root.querySelectorAll<HTMLElement>('[data-i18n]'))
     if (catalogue !== null && e.parentElement?.closest(ENGLISH_PARTS)) e.lang = catalogue.lang;
     else e.removeAttribute('lang');
+  // The catalogue tools' names (toolNames.ts), and the chips' legend.
+  localizeToolNames(root, catalogue);
+  const legend = root.querySelector<HTMLElement>('[data-testid="tool-chips"] legend');
+  if (legend !== null) localizeToolLegend(legend, catalogue);
   document.documentElement.lang = catalogue?.lang ?? 'en';
   const title = root.querySelector('[data-i18n="title"]')?.textContent;
   if (title) document.title = title;
+}
+
+/**
+ * The preset box's options and groups and the chips' titles under `root` in `c`'s language (null:
+ * English, kept in data-english to go back to).
+ */
+function localizeToolNames(root: ParentNode, c: Catalogue | null): void {
+  for (const e of root.querySelectorAll<HTMLElement>(
+    '[data-testid="preset"] option, [data-testid="preset"] optgroup, .tool-chip[title]',
+  )) {
+    const attribute = e.tagName === 'OPTION' ? null : e.tagName === 'OPTGROUP' ? 'label' : 'title';
+    const shown = (attribute === null ? e.textContent : e.getAttribute(attribute)) ?? '';
+    e.dataset.english ??= shown;
+    const english = e.dataset.english;
+    const text = c === null ? english : (toolNameIn(english, c) ?? english);
+    if (text === shown) continue;
+    if (attribute === null) e.textContent = text;
+    else e.setAttribute(attribute, text);
+  }
+}
+
+/** The chips' legend (toolChips.ts writes it in English on each drawing) in `c`'s language. */
+function localizeToolLegend(legend: HTMLElement, c: Catalogue | null): void {
+  const text = legend.textContent ?? '';
+  const local = c === null ? null : toolNameIn(text, c);
+  if (local !== null && local !== text) legend.textContent = local;
 }
 
 /**
@@ -98,6 +140,15 @@ export function localizeResults(results: object): void {
     flat?.textContent ?? '',
   )?.[1];
   if (flat && diameter !== undefined) flat.textContent = words.said.noScallopPlane(localDecimal(diameter, words));
+  // The roughness's rule of thumb (roughness.ts) and L's share of the tool diameter (results.ts), from their English.
+  const rule = root.querySelector<HTMLElement>('[data-testid="result-ra-rule"]');
+  const ruled = /^Rule of thumb Ra ~ h\/4 = (.+): (\S+) % against the exact Ra\.$/.exec(rule?.textContent ?? '');
+  if (rule && ruled)
+    rule.textContent = words.said.ruleOfThumb(localDecimal(ruled[1] ?? '', words), localDecimal(ruled[2] ?? '', words));
+  else if (rule && rule.textContent === REVOLUTION_NOTE) rule.textContent = words.said.revolution;
+  const share = root.querySelector<HTMLElement>('[data-testid="result-percent-diameter"]');
+  const shared = /^L = (\S+) % of the tool diameter$/.exec(share?.textContent ?? '');
+  if (share && shared) share.textContent = words.said.diameterShare(localDecimal(shared[1] ?? '', words));
   procedureNames(root, words);
   // The finish box's words (finishPanel.ts keeps each element's English in data-phrase).
   for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]')) {
@@ -142,6 +193,16 @@ export function localizeResults(results: object): void {
  */
 function procedureNames(root: ParentNode, words: Catalogue): void {
   const names = words.procedures;
+  // The table's and its box's names (index.html's English kept to go back to) and its rows' hover title.
+  for (const [selector, name] of [
+    ['[data-testid="procedures-scroll"]', names.region],
+    ['[data-testid="procedures-table"]', names.table],
+  ] as const)
+    for (const e of root.querySelectorAll<HTMLElement>(selector)) {
+      e.dataset.ariaEnglish ??= e.getAttribute('aria-label') ?? '';
+      e.setAttribute('aria-label', name);
+    }
+  for (const tr of root.querySelectorAll<HTMLElement>('.procedures tr[data-procedure][title]')) tr.title = names.select;
   for (const th of root.querySelectorAll<HTMLElement>('.procedures thead th')) {
     const head = names.head[th.textContent as keyof ProcedureNamesHead];
     if (head !== undefined) th.textContent = head;
@@ -215,10 +276,12 @@ export function localizeNotice(box: HTMLElement): void {
   const parts = noticeParts(english, words);
   if (parts !== null) {
     const [before, kept, after] = parts;
+    // The part kept English (an exception's text, details not read back), marked so; none when all is worded.
     const part = document.createElement('span');
     part.lang = 'en';
     part.textContent = kept;
-    box.replaceChildren(before, part, after);
+    if (kept === '') box.replaceChildren(before, after);
+    else box.replaceChildren(before, part, after);
     box.lang = words.lang;
     box.dataset.english = english;
     box.dataset.worded = box.textContent ?? '';
@@ -265,6 +328,14 @@ export class LanguageSwitch {
   ) {
     this.wanted = start;
     // The notice box follows the language whenever the page writes into it.
+    // The chips' legend follows the language whenever toolChips.ts writes it in English.
+    const legend = document.querySelector<HTMLElement>('[data-testid="tool-chips"] legend');
+    if (legend !== null)
+      new MutationObserver(() => localizeToolLegend(legend, wordsInForce())).observe(legend, {
+        childList: true,
+        characterData: true,
+        subtree: true,
+      });
     const box = document.querySelector<HTMLElement>('[data-testid="notice"]');
     if (box !== null)
       new MutationObserver(() => localizeNotice(box)).observe(box, {

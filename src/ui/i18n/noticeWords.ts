@@ -1,10 +1,25 @@
 /**
  * The notices' words (issue 30): the sentences the page writes into its notice box in English
  * (messages.ts: a worker restarted or stopped, link values replaced), each read back as the words
- * before, the part kept in English (the worker's reason, the link's values named by their
- * parameters), and the words after, in a catalogue's language. Pure (no DOM): language.ts writes them.
+ * before, the part kept in English (an exception's text in the worker's reason, the link's values
+ * named by their parameters), and the words after, in a catalogue's language. Pure (no DOM): language.ts writes them.
  */
 import type { Catalogue } from './catalogue';
+import { linkDetailsIn } from './linkNotices';
+import { reasonParts } from './workerReason';
+
+/**
+ * A restart's sentence around its reason: the reason in the language (workerReason.ts) with only its
+ * detail (an exception's text) kept English; a reason not known kept English whole.
+ */
+function aroundReason(
+  [before, after]: readonly [string, string],
+  reason: string,
+  c: Catalogue,
+): readonly [string, string, string] {
+  const parts = reasonParts(reason, c);
+  return parts === null ? [before, reason, after] : [`${before}${parts[0]}`, parts[1], `${parts[2]}${after}`];
+}
 
 /** The notice's sentences the page writes (messages.ts), the parts in between kept in English. */
 const NOTICES: ReadonlyArray<{
@@ -15,18 +30,23 @@ const NOTICES: ReadonlyArray<{
     english:
       /^(The solver|The teaching views' solver) stopped after (\d+) restarts in a row \((.*)\): (?:the numbers shown are|the views are) out of date, marked stale\. Change any input to try again\.$/s,
     words: (m, c) => {
-      const [before, after] = c.said.restarted(m[1] === 'The solver' ? 'results' : 'views', m[2] ?? '');
-      return [before, m[3] ?? '', after];
+      return aroundReason(c.said.restarted(m[1] === 'The solver' ? 'results' : 'views', m[2] ?? ''), m[3] ?? '', c);
     },
   },
   {
     english: /^(The solver|The teaching views' solver) was restarted: (.*)\. Your last request was sent again\.$/s,
     words: (m, c) => {
-      const [before, after] = c.said.restarted(m[1] === 'The solver' ? 'results' : 'views', null);
-      return [before, m[2] ?? '', after];
+      return aroundReason(c.said.restarted(m[1] === 'The solver' ? 'results' : 'views', null), m[2] ?? '', c);
     },
   },
-  { english: /^Some link values were replaced: (.*)$/s, words: (m, c) => [c.said.linkReplaced, m[1] ?? '', ''] },
+  {
+    // The details in the language when each is read back (linkNotices.ts), else kept English whole.
+    english: /^Some link values were replaced: (.*)$/s,
+    words: (m, c) => {
+      const local = linkDetailsIn(m[1] ?? '', c);
+      return local === null ? [c.said.linkReplaced, m[1] ?? '', ''] : [`${c.said.linkReplaced}${local}`, '', ''];
+    },
+  },
 ];
 
 /** A notice's English (messages.ts) as the words before, the part kept in English, the words after; null: not one. */

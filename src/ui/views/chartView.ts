@@ -15,6 +15,7 @@ import { localDecimal } from '../i18n/langChoice';
 import { catalogue } from '../i18n/words';
 import { EN_CHART } from './chartWords';
 import { html, type PageKind, type PageViewContext, type TeachingView, type ViewContext } from './common';
+import { gapReasonIn } from './gapReasons';
 import { type ChartGapBand, type ChartLine, lineChart } from './lineChart';
 import { RadiusCharts } from './radiusChart';
 import { SlopeChart } from './slopeChart';
@@ -305,11 +306,14 @@ export class ChartView implements TeachingView {
         return item;
       }),
     );
-    // A gap's reason is the solver's sentence, in English (said so by its lang).
+    // A gap's reason is the solver's sentence: in the language in force when the page knows it
+    // (gapReasons.ts), else in English (said so by its lang).
+    const translated = catalogue() !== null;
     c.notes.replaceChildren(
       ...gapNotes(keys, data.gaps, data.angleName, words).map(({ lead, reason }) => {
         const li = html('li', {}, local(lead));
-        li.append(html('span', { lang: 'en' }, reason), '.');
+        const worded = translated ? gapReasonIn(reason, words) : null;
+        li.append(worded === null ? html('span', { lang: 'en' }, reason) : local(worded), '.');
         return li;
       }),
     );

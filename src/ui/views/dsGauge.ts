@@ -18,21 +18,27 @@ export class DsGauge {
   });
   private readonly bar = svg('rect', { class: 'ds-bar', x: LEFT, y: 4, height: 12, width: 0 });
   private readonly text = html('span', { class: 'meter-text', 'data-testid': 'stepper-ds-text' });
+  private readonly name = html('span', { class: 'ds-label' });
   private max = 1;
 
   constructor() {
-    this.element.append(html('span', { class: 'ds-label' }, 'd_s / Rcr, linear from 0:'), this.picture, this.text);
+    this.element.append(this.name, this.picture, this.text);
   }
 
-  /** Draws the scale from 0 to `max` (a multiple of 0.25). */
-  setScale(max: number): void {
+  /** The gauge's label, in the language in force ("d_s / Rcr, linear from 0:"). */
+  label(text: string): void {
+    if (this.name.textContent !== text) this.name.textContent = text;
+  }
+
+  /** Draws the scale from 0 to `max` (a multiple of 0.25), its numbers written by `local` (the locale's decimal sign). */
+  setScale(max: number, local: (text: string) => string = (t) => t): void {
     this.max = max;
     const x = (r: number) => LEFT + (r / max) * TRACK;
     const parts: SVGElement[] = [svg('rect', { class: 'ds-track', x: LEFT, y: 4, width: TRACK, height: 12 }), this.bar];
     for (let k = 0; k * TICK <= max + 1e-9; k++) {
       const r = k * TICK;
       const label = svg('text', { class: 'ds-tick', x: x(r), y: 31, 'text-anchor': 'middle' });
-      label.textContent = r === 1 ? '1 = Rcr' : String(r);
+      label.textContent = r === 1 ? '1 = Rcr' : local(String(r));
       parts.push(svg('line', { class: r === 1 ? 'ds-mark' : 'ds-grid', x1: x(r), x2: x(r), y1: 2, y2: 20 }), label);
     }
     this.picture.replaceChildren(...parts);

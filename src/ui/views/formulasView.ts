@@ -7,11 +7,31 @@ import mathml from 'virtual:formula-mathml';
 import { unitSymbol } from '../../core/input/units';
 import { PROCEDURE_KEYS, PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import { formatSignedLenUnit } from '../format';
+import { localDecimal } from '../i18n/langChoice';
+import type { FormulaWords, PostureLabel } from '../i18n/teachWords';
+import { catalogue } from '../i18n/words';
 import { ScrollCues } from '../scrollCue';
 import { html, type PageViewContext, type TeachingView, untilted, type ViewContext } from './common';
 import { formulaSlotValues } from './formulaSlots';
 import { FORMULA_TEMPLATES, slotClass } from './formulaTemplates';
+import { EN_FORMULAS } from './formulaWords';
 import { postureFormulaLines } from './threeAxisViewText';
+
+/** The view's words in the language in force (English: formulaWords.ts). */
+function words(): FormulaWords {
+  return catalogue()?.formulas ?? EN_FORMULAS;
+}
+
+/** A text with the language in force's decimal sign. */
+function local(text: string): string {
+  return localDecimal(text, catalogue());
+}
+
+/** A procedure's name in the language in force (English: the registry's). */
+function procedureName(key: ProcedureKey, short: boolean): string {
+  const names = catalogue()?.procedures.names[key] ?? PROCEDURES[key];
+  return short ? names.shortLabel : names.label;
+}
 
 export class FormulasView implements TeachingView {
   readonly id = 'formulas';
@@ -36,6 +56,10 @@ export class FormulasView implements TeachingView {
     });
     this.cues.clear();
     this.element.replaceChildren();
+    const w = words();
+    const lang = catalogue()?.lang;
+    if (lang === undefined) this.element.removeAttribute('lang');
+    else this.element.lang = lang;
     const tilted = !untilted(ctx);
     const surface = forward.surface;
     if (surface.kind === 'cylinder') {
@@ -44,7 +68,7 @@ export class FormulasView implements TeachingView {
         html(
           'p',
           { class: 'view-note', 'data-testid': 'formulas-cylinder-note' },
-          `On a cylinder (Rs = ${formatSignedLenUnit(surface.radiusMm, ctx.unit)}, axis ${surface.axis === 'feed' ? 'along' : 'across'} the feed) the exact step-over is solved on the cylinder itself (the flanks' reach at the radial height h, ${surface.axis === 'feed' ? 'as angles about its axis' : 'of the tool revolved about its axis'}), not by the plane's formulas, so they are left out. The approximations below are as on a plane; the table's corrected rows put 1/rho = 1/Reff + 1/Rs into L = 2 sqrt(2 rho h - h^2).`,
+          local(w.cylinder(formatSignedLenUnit(surface.radiusMm, ctx.unit), surface.axis)),
         ),
       );
     }
@@ -60,7 +84,7 @@ export class FormulasView implements TeachingView {
         class: 'maths',
         tabindex: '0',
         role: 'group',
-        'aria-label': `${info.label}: equations (a wide one scrolls sideways)`,
+        'aria-label': w.maths(procedureName(key, false)),
       });
       maths.innerHTML = mathml[key]
         .filter((_, i) => {
@@ -69,15 +93,12 @@ export class FormulasView implements TeachingView {
         })
         .join('');
       for (const [name, text] of Object.entries(slots)) {
-        for (const el of maths.querySelectorAll(`.${slotClass(name)}`)) el.textContent = text;
+        for (const el of maths.querySelectorAll(`.${slotClass(name)}`)) el.textContent = local(text);
       }
-      const about =
-        tilted && info.leadOnly
-          ? `${info.assumes} Lead-only model: applied with the lead angle alone, the tilt ignored.`
-          : info.assumes;
+      const about = tilted && info.leadOnly ? `${w.assumes[key]} ${w.leadOnly}` : w.assumes[key];
       const frame = html('div', { class: 'maths-frame' });
       frame.append(maths);
-      box.append(html('h3', {}, info.label), html('p', {}, about), frame);
+      box.append(html('h3', {}, procedureName(key, false)), html('p', {}, local(about)), frame);
       this.cues.watch(maths, frame);
       this.element.append(box);
     }
@@ -87,16 +108,12 @@ export class FormulasView implements TeachingView {
         html(
           'p',
           { class: 'view-note' },
-          `${missing.map((k) => PROCEDURES[k].shortLabel).join(', ')}: not applicable here (see the notes under the results table).`,
+          w.notApplicable(missing.map((k) => procedureName(k, true)).join(catalogue()?.question[', '] ?? ', ')),
         ),
       );
     }
     this.element.append(
-      html(
-        'p',
-        { class: 'view-note' },
-        `Lengths in ${unitSymbol(ctx.unit)} (small ones in ${ctx.unit === 'mm' ? '\u00b5m' : 'thou'}), angles in degrees; each L/2 is at the h of the current state.`,
-      ),
+      html('p', { class: 'view-note' }, w.units(unitSymbol(ctx.unit), ctx.unit === 'mm' ? '\u00b5m' : 'thou')),
     );
   }
 
@@ -109,17 +126,15 @@ export class FormulasView implements TeachingView {
     if (page.kind !== 'three-axis') return;
     const box = html('section', { class: 'formula', 'data-testid': 'formulas-posture' });
     const list = html('ul', { class: 'posture-formulas' });
-    for (const line of postureFormulaLines(page.data))
-      list.append(html('li', {}, `${line.label}: ${line.formula}, so ${line.value}`));
-    box.append(
-      html('h3', {}, 'Posture from the slope (three-axis)'),
-      html(
-        'p',
-        {},
-        "The upright tool on the sloped plane is the tool at this lead and tilt on a plane; the formulas below are the plane's at that posture.",
-      ),
-      list,
-    );
+    const w = words();
+    for (const line of postureFormulaLines(page.data)) {
+      const label = w.postureLabels[line.label as PostureLabel] ?? line.label;
+      const formula = line.formula === EN_FORMULAS.anglesFormula ? w.anglesFormula : line.formula;
+      // An angle's unit: the English "deg" as °, in another language.
+      const value = catalogue() === null ? line.value : line.value.replace(/ deg$/, '°');
+      list.append(html('li', {}, local(w.postureLine(label, formula, value))));
+    }
+    box.append(html('h3', {}, w.postureTitle), html('p', {}, w.postureIntro), list);
     this.element.prepend(box);
   }
 

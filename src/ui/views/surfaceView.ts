@@ -28,7 +28,7 @@ import type { Unit } from '../state';
 import { onTeethSurface, type TeethShown } from '../teethMap';
 import { onThemeChange } from '../theme';
 import { html, svg, type TeachingView } from './common';
-import { EN_SURFACE } from './surfaceWords';
+import { EN_SURFACE, exceptionIn } from './surfaceWords';
 import './surface.css';
 
 type SimulateOk = Extract<SimulateReply, { ok: true }>;
@@ -196,7 +196,9 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
           ? current.errors.map((e) => describeError(e, unit)).join(' ')
           : current.reasonCode !== undefined
             ? w.reasons[current.reasonCode]
-            : (current.reason ?? w.reasons.none);
+            : current.reason === null
+              ? w.reasons.none
+              : exceptionIn(current.reason, w);
     if (this.status.textContent !== text) this.status.textContent = text;
     this.status.hidden = text === '';
     if (current?.ok) {

@@ -16,6 +16,8 @@ export const EN_SURFACE: SurfaceWords = {
       'No scallop: the flat bottom lying on the plane leaves a flat surface, so there is nothing to simulate.',
     none: 'No simulation.',
   },
+  // As the worker writes it (worker/simulate.ts), read back by surfaceView.ts.
+  exception: (detail) => `No simulation: ${detail}`,
   exaggeration: (k, unit) =>
     `${k === null ? 'Heights at true scale' : `Heights exaggerated x${k} (vertical exaggeration)`}; colour: height above the lowest point (${unit}).`,
   comparison: (simulated, exact, diff, within, bound, cells, passes) =>
@@ -25,3 +27,12 @@ export const EN_SURFACE: SurfaceWords = {
   meanLine: 'mean line',
   sceneLabel: '3D view of the simulated machined surface, coloured by height',
 };
+
+/**
+ * The worker's reason for no simulation in `w`'s language: an exception's (worker/simulate.ts's
+ * "No simulation: ...", read back with the English words) worded, its own text kept; else as it is.
+ */
+export function exceptionIn(reason: string, w: SurfaceWords): string {
+  const prefix = EN_SURFACE.exception('');
+  return w !== EN_SURFACE && reason.startsWith(prefix) ? w.exception(reason.slice(prefix.length)) : reason;
+}

@@ -5,8 +5,22 @@
 import { PROCEDURES, type ProcedureKey } from '../../core/procedures/procedures';
 import type { PaperTableRow } from '../../core/procedures/teaching';
 import { formatLen } from '../format';
+import { localDecimal } from '../i18n/langChoice';
+import type { TableWords } from '../i18n/teachWords';
+import { catalogue } from '../i18n/words';
 import { ScrollCues } from '../scrollCue';
 import { html, type TeachingView, type ViewContext } from './common';
+import { EN_TABLES } from './tableWords';
+
+/** The view's words in the language in force (English: tableWords.ts). */
+function words(): TableWords {
+  return catalogue()?.tables ?? EN_TABLES;
+}
+
+/** A text with the language in force's decimal sign. */
+function local(text: string): string {
+  return localDecimal(text, catalogue());
+}
 
 type Key = 'threeD' | 'sekine' | 'redonnet' | 'bedi';
 const KEYS: ReadonlyArray<[Key, ProcedureKey]> = [
@@ -21,25 +35,20 @@ export class TablesView implements TeachingView {
   readonly title = "The paper's tables";
   readonly element = html('div', { class: 'view-tables', 'data-testid': 'paper-tables' });
   private rows: readonly PaperTableRow[] = [];
+  private readonly note: HTMLElement;
   private readonly why: HTMLElement;
+  /** The two tables' boxes, and the language they were built in (null: English; undefined: not built). */
+  private frames: HTMLElement[] = [];
+  private builtLang: string | null | undefined;
+  /** The procedure emphasised (kept for a table built again). */
+  private highlighted: ProcedureKey | null = null;
   /** Each table's box, shaded at an edge with more of the table beyond it (a narrow phone). */
   private readonly cues = new ScrollCues();
 
   constructor(onLoad: (c: { R: number; Rcr: number; rho: number; h: number }) => void) {
-    const note = html(
-      'p',
-      { class: 'view-note' },
-      'Each cell: printed / recomputed, in mm as the paper prints them (in either unit). Highlighted: the recomputed value does not round to the printed digits. ' +
-        'Tables 4-5 evaluate Eqs. 12-13 at the printed 3D L/2, as the paper did. Click a condition to load it.',
-    );
-    const why = html(
-      'p',
-      { class: 'view-note', 'data-testid': 'paper-tables-why' },
-      "Why the printed 3D column is 0.0005-0.013 mm low: the paper's Figure 1 leaves two things open, whether eta of Eq. 2 is normalised and how far the search of steps 15-16 runs, " +
-        'and its search range can stop just before the true maximum. One plausible reading (Eq. 2 as printed, the range from the single-contact section to the angle of its P_hp) ' +
-        'returns the printed 1.879 mm for R = 3, Rcr = 1, rho = 5, h = 0.10, where the true maximum is 1.892 mm. ' +
-        "The exact values here agree with brute-force sampling of the torus surface and with the paper's own procedure run to convergence (the step-by-step view), so they are not tuned to the printed column.",
-    );
+    const note = html('p', { class: 'view-note' }, EN_TABLES.note);
+    const why = html('p', { class: 'view-note', 'data-testid': 'paper-tables-why' }, EN_TABLES.why);
+    this.note = note;
     this.why = why;
     this.element.append(note, why);
     this.element.addEventListener('click', (e) => {
@@ -49,19 +58,20 @@ export class TablesView implements TeachingView {
     });
   }
 
-  private table(caption: string, what: 'half' | 'height'): HTMLTableElement {
+  private table(caption: string, what: 'half' | 'height', w: TableWords): HTMLTableElement {
     // A grid of selectable rows: the row of the condition on screen is the selected one.
     const table = html('table', { class: 'paper-table', role: 'grid', 'data-testid': `paper-table-${what}` });
     table.append(html('caption', {}, caption));
     const head = html('tr');
+    const names = catalogue()?.procedures.names ?? PROCEDURES;
     for (const t of [
-      'Table',
+      w.table,
       // Each column names its unit: the paper's conditions in mm and degrees, whatever the page's unit.
       'R [mm]',
       'Rcr [mm]',
       'rho [\u00b0]',
-      what === 'half' ? 'h [mm]' : 'L/2 (3D) [mm]',
-      ...KEYS.map(([, p]) => PROCEDURES[p].shortLabel),
+      what === 'half' ? 'h [mm]' : w.printedHalf,
+      ...KEYS.map(([, p]) => names[p].shortLabel),
     ]) {
       head.append(html('th', { scope: 'col' }, t));
     }
@@ -73,17 +83,17 @@ export class TablesView implements TeachingView {
         'data-condition': String(i),
         tabindex: '0',
         'aria-selected': 'false',
-        title: 'Load this condition into the calculator',
+        title: w.load,
       });
       tr.addEventListener('keydown', (e) => {
         if (e.key === 'Enter') tr.click();
       });
       tr.append(
         html('td', {}, String(what === 'half' ? r.table : r.table + 2)),
-        html('td', {}, String(r.R)),
-        html('td', {}, String(r.Rcr)),
-        html('td', {}, String(r.rho)),
-        html('td', {}, String(what === 'half' ? r.h : r.printedHalf.threeD)),
+        html('td', {}, local(String(r.R))),
+        html('td', {}, local(String(r.Rcr))),
+        html('td', {}, local(String(r.rho))),
+        html('td', {}, local(String(what === 'half' ? r.h : r.printedHalf.threeD))),
       );
       for (const [key, proc] of KEYS) {
         const printed = what === 'half' ? r.printedHalf[key] : r.printedHeight[key];
@@ -95,9 +105,9 @@ export class TablesView implements TeachingView {
           'data-testid': `paper-${what}-${i}-${proc}`,
         });
         td.append(
-          html('span', { class: 'printed' }, printed.toFixed(3)),
+          html('span', { class: 'printed' }, local(printed.toFixed(3))),
           document.createTextNode(' / '),
-          html('span', { class: 'computed' }, formatLen(computed, 'mm')),
+          html('span', { class: 'computed' }, local(formatLen(computed, 'mm'))),
         );
         tr.append(td);
       }
@@ -111,12 +121,12 @@ export class TablesView implements TeachingView {
    * A table in a box that scrolls sideways when the screen is narrower than the table (360 px),
    * focusable so keys reach it, its edge with more beyond it shaded (scrollCue.ts).
    */
-  private scrolling(table: HTMLTableElement, name: string): HTMLElement {
+  private scrolling(table: HTMLTableElement, name: string, w: TableWords): HTMLElement {
     const box = html('div', {
       class: 'table-scroll',
       tabindex: '0',
       role: 'group',
-      'aria-label': `${name} (scrolls sideways when wider than the screen)`,
+      'aria-label': w.region(name),
     });
     box.append(table);
     const frame = html('div', { class: 'table-frame' });
@@ -125,14 +135,28 @@ export class TablesView implements TeachingView {
     return frame;
   }
 
-  /** The tables are recomputed in the worker; they are fixed conditions, so they are built once. */
+  /**
+   * The tables are recomputed in the worker; they are fixed conditions, so they are built once, and
+   * again in another language (its words, its decimal sign).
+   */
   update(ctx: ViewContext): void {
-    if (this.rows.length === 0) {
-      this.rows = ctx.data.tables;
-      this.why.after(
-        this.scrolling(this.table('Tables 2-3: L/2 [mm] for h', 'half'), 'Tables 2-3'),
-        this.scrolling(this.table('Tables 4-5: h [mm] at the printed 3D L/2', 'height'), 'Tables 4-5'),
-      );
+    const lang = catalogue()?.lang ?? null;
+    if (this.rows.length === 0) this.rows = ctx.data.tables;
+    if (this.builtLang !== lang) {
+      this.builtLang = lang;
+      const w = words();
+      this.note.textContent = local(w.note);
+      this.why.textContent = local(w.why);
+      for (const frame of this.frames) frame.remove();
+      this.cues.clear();
+      this.frames = [
+        this.scrolling(this.table(w.halfCaption, 'half', w), w.halfName, w),
+        this.scrolling(this.table(w.heightCaption, 'height', w), w.heightName, w),
+      ];
+      this.why.after(...this.frames);
+      if (lang === null) this.element.removeAttribute('lang');
+      else this.element.lang = lang;
+      this.highlight(this.highlighted);
     }
     this.markSelected(ctx);
   }
@@ -155,6 +179,7 @@ export class TablesView implements TeachingView {
   }
 
   highlight(key: ProcedureKey | null): void {
+    this.highlighted = key;
     for (const td of this.element.querySelectorAll<HTMLElement>('td[data-procedure]')) {
       td.classList.toggle('emph', key !== null && td.dataset.procedure === key);
     }

@@ -32,6 +32,7 @@ function strings(c: Catalogue): Array<[string, string]> {
     ['diameter.label', c.diameter.label],
     ['diameter.hint', c.diameter.hint],
     ['diameter.cornerHint', c.diameter.cornerHint],
+    ...Object.entries(c.labels).map(([k, v]) => [`labels.${k}`, v] as [string, string]),
     ['degrees', c.degrees],
     ['slider', c.slider],
     ...Object.entries(c.question).map(([k, v]) => [`question.${k}`, v] as [string, string]),
@@ -66,6 +67,15 @@ describe('the catalogues', () => {
     expect(keys.length).toBeGreaterThan(40);
     expect(Object.keys(ja.page).sort()).toEqual(keys);
     expect(Object.keys(de.page).sort()).toEqual(keys);
+  });
+
+  it("the page's data-i18n-label keys (its landmarks' names) are the catalogues' label keys, each worded", () => {
+    const labels = [...HTML.matchAll(/aria-label="([^"]+)" data-i18n-label="([^"]+)"/g)];
+    expect(labels.length).toBe(7);
+    for (const c of [ja, de]) {
+      expect(Object.keys(c.labels).sort()).toEqual(labels.map((m) => m[2]).sort());
+      for (const [, english, key] of labels) expect(c.labels[key as keyof Catalogue['labels']]).not.toBe(english);
+    }
   });
 
   it('every field the page shows has its words in each language', () => {

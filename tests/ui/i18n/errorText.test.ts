@@ -7,12 +7,13 @@
  */
 import { describe, expect, it } from 'vitest';
 import { type AnyFieldName, type InputErrorCode, inputError } from '../../../src/core/input/validate';
-import { describeCurvedError } from '../../../src/ui/curvedRequest';
+import { describeCurvedError, radiusMm } from '../../../src/ui/curvedRequest';
 import type { Catalogue } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { describeInputErrorIn } from '../../../src/ui/i18n/errorText';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
-import { type CalculatorState, defaultState } from '../../../src/ui/state';
+import type { PageFieldError } from '../../../src/ui/requestTypes';
+import { type CalculatorState, defaultState, parseField } from '../../../src/ui/state';
 import type { CurvedError } from '../../../src/worker/pageProtocol';
 
 /** Each code with a field it is given on (the core's own use). */
@@ -170,5 +171,37 @@ describe("a doubly curved point's refusals in Japanese and German (curvedText.ts
       }
       // The target Ra's bound is said at this point, not on a surface.
       expect(ra).toContain(c.lang === 'de' ? 'an diesem Punkt' : 'この点');
+    });
+});
+
+describe("a radius field's own errors in Japanese and German (curvedText.ts radiusFieldIn)", () => {
+  const TEXTS = ['', 'abc', '-40', '0'];
+
+  it('English: as the page words them (curvedRequest.ts radiusMm), in force with no catalogue', () => {
+    const own = (t: string) => radiusMm({ ...CURVED_STATE, fields: { ...CURVED_STATE.fields, Rf: t } }, 'Rf');
+    expect(TEXTS.map((t) => (own(t) as PageFieldError).message)).toEqual([
+      'Feed radius Rf is missing: enter a radius, or choose straight.',
+      'Feed radius Rf must be a number (got "abc").',
+      'Feed radius Rf must be a positive number: convex or concave is chosen beside it (got -40).',
+      'Feed radius Rf must be a positive number: convex or concave is chosen beside it (got 0).',
+    ]);
+    expect(own('80')).toBe(80);
+  });
+
+  for (const c of [ja, de])
+    it(`${c.lang}: each its own line on its field, naming the field, quoting what was typed, no English word`, () => {
+      const worded = TEXTS.map((t) => c.radiusField('Rc', t, parseField(t)));
+      expect(worded.map((m) => m.key)).toEqual(['Rc', 'Rc', 'Rc', 'Rc']);
+      const [missing, nan, sign, zero] = worded.map((m) => m.message) as string[];
+      expect(new Set([missing, nan, sign]).size).toBe(3);
+      for (const line of [missing, nan, sign, zero] as string[]) {
+        expect(line).toContain(c.fields.Rc.label);
+        expect(line, line).not.toMatch(/undefined|NaN|null/);
+        expect(ENGLISH.test(line), line).toBe(false);
+        if (c.lang === 'ja') expect(/[\u3000-\u30ff\u4e00-\u9fff]/.test(line), line).toBe(true);
+      }
+      expect(nan).toContain('"abc"');
+      expect(sign).toContain('-40');
+      expect(zero).toContain('0');
     });
 });

@@ -7,6 +7,8 @@
  * surface view: no English word left (Japanese: no Latin word but the symbols and units), every
  * number given said. English keeps the worker's own sentence.
  */
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { type FinishErrorCode, finishError } from '../../../src/core/finish/finishInput';
 import { TARGET_SA_RUNOUT } from '../../../src/core/roughness/targetSa';
@@ -14,7 +16,11 @@ import type { FinishWords, SurfaceWords } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { finishMessageIn, finishScopeIn, targetSaMessageIn } from '../../../src/ui/i18n/finishText';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
+import { EN_SURFACE, exceptionIn } from '../../../src/ui/views/surfaceWords';
 import type { FinishFieldMessage } from '../../../src/worker/finishProtocol';
+
+/** worker/simulate.ts's source: its reason for an exception, read back by surfaceWords.ts exceptionIn. */
+const SIMULATE = readFileSync(fileURLToPath(new URL('../../../src/worker/simulate.ts', import.meta.url)), 'utf8');
 
 /** One worker refusal per code, as the worker sends it (its English and its data; lengths in mm). */
 const REFUSALS: ReadonlyArray<readonly [FinishFieldMessage['field'], FinishErrorCode, string, number?]> = [
@@ -73,6 +79,7 @@ function surfaceTexts(s: SurfaceWords): string[] {
     s.pending(null),
     s.pending(40),
     ...Object.values(s.reasons),
+    s.exception('42'),
     s.exaggeration(null, 'µm'),
     s.exaggeration(20, 'µin'),
     s.comparison('1.2 µm', '1.25 µm', '0.05 µm', true, '0.1 µm', '120 x 120', 5),
@@ -135,6 +142,16 @@ describe("the finish box's and the surface view's words", () => {
       );
       expect(c.surface.traceCaption(5, '2 µm', '0.5 µm', '0.6 µm')).toMatch(/5.*2 µm.*0\.5 µm.*0\.6 µm/);
       expect(c.surface.pending(40)).toContain('40 %');
+      // An exception's own text kept whole; the worker's English read back (worker/simulate.ts writes it so).
+      expect(c.surface.exception('RangeError: Ra 2 > 1')).toContain('RangeError: Ra 2 > 1');
+      expect(c.surface.exception('X')).not.toBe(EN_SURFACE.exception('X'));
+      expect(exceptionIn('No simulation: RangeError: Ra 2 > 1', c.surface)).toBe(
+        c.surface.exception('RangeError: Ra 2 > 1'),
+      );
+      expect(exceptionIn('No simulation: RangeError: Ra 2 > 1', EN_SURFACE)).toBe(
+        'No simulation: RangeError: Ra 2 > 1',
+      );
+      expect(SIMULATE).toMatch(/`No simulation: \$\{String\(e\)\}`/);
       expect(c.surface.exaggeration(20, 'µin')).toMatch(/20.*µin/);
     });
 

@@ -20,7 +20,15 @@ const ENGLISH_LABELS: SceneLabelTexts = {
 
 const KEPT = new Set('L y0 Lxy dz mm in P hp base i h R X D'.split(' '));
 const ENGLISH = new RegExp(
-  `\\b(${[...Object.values(SCENE_WORDS), 'arc', 'view', 'tool', 'posture', 'passes', 'sections']
+  `\\b(${[
+    ...Object.values(SCENE_WORDS).flatMap((w) => (typeof w === 'string' ? [w] : [w(null), w(5)])),
+    'arc',
+    'view',
+    'tool',
+    'posture',
+    'passes',
+    'sections',
+  ]
     .flatMap((w) => w.match(/[a-z]{3,}/g) ?? [])
     .join('|')})\\b`,
   'i',
@@ -39,8 +47,11 @@ describe("the 3D scene's labels", () => {
       expect(l.contactOffset).toBe(`y0 = -0${sign}1234 mm`);
       expect(l.programmedStep).toBe(`Lxy = 0${sign}9100 mm`);
       expect(c.scene.labels({ ...ENGLISH_LABELS, contactOffset: null }).contactOffset).toBeNull();
-      const words = Object.values(l.words ?? {});
-      expect(words.length).toBe(Object.keys(SCENE_WORDS).length);
+      const words = Object.values(l.words ?? {}).flatMap((w) => (typeof w === 'string' ? [w] : [w(null), w(5)]));
+      expect(Object.keys(l.words ?? {}).length).toBe(Object.keys(SCENE_WORDS).length);
+      // The scale badge and its title say how many times the heights are drawn taller.
+      expect(l.words?.scale(5)).toContain('5');
+      expect(l.words?.scaleTitle(5)).toContain('5');
       const texts = [l.interval, l.halfInterval, l.name ?? '', ...words];
       for (const text of texts) {
         expect(text).not.toBe('');
