@@ -112,6 +112,8 @@
  * Then the 3D scene's heights' scale badge and its title in each language (its English moved from
  * scene.ts to render/sceneWords.ts, in the scene's chunk; the words in each catalogue; +0.27 kB in
  * all, on first use; the first result 60.63): 295.48 in all, the ratchet 295.5.
+ * Then the balanced feed's closed form and the feed marks' crest and tip searches (the finish
+ * worker's chunk, on first use, +0.56 kB): 296.04 in all, the ratchet 296.1.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -137,7 +139,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 295.5 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(295.5);
+  it('all of it, every .js file, is at most 296.1 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(296.1);
   });
 });

@@ -54,9 +54,13 @@ function checkTable(lines: readonly string[], lengthColumns: readonly number[]):
   const last = header.length - 1; // the note column
   for (const line of lines.slice(1)) {
     const row = cells(line);
-    expect(row.length === header.length || row.length === header.length - 1, `${line}\n${lines[0]}`).toBe(true);
+    if (row.length !== header.length && row.length !== header.length - 1)
+      expect.fail(`a row of ${row.length} cells under ${header.length} heads:\n${line}\n${lines[0]}`);
     expect(row[0]?.start).toBe(0);
-    for (let j = 1; j < last; j++) expect(row[j]?.end, `column ${j} of\n${lines.join('\n')}`).toBe(header[j]?.end);
+    // The table is written into the message only when a column is off (joined per cell, it cost more than the check).
+    for (let j = 1; j < last; j++)
+      if (row[j]?.end !== header[j]?.end)
+        expect(row[j]?.end, `column ${j} of\n${lines.join('\n')}`).toBe(header[j]?.end);
     if (row.length === header.length) expect(row[last]?.start).toBe(header[last]?.start);
     for (const j of lengthColumns) {
       const t = row[j]?.text as string;
