@@ -798,6 +798,12 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       expect(await page.locator('section.controls').getAttribute('aria-label')).toBe(
         lang === 'ja' ? '入力' : 'Eingaben',
       );
+      expect(await page.locator('section.notices').getAttribute('aria-label')).toBe(
+        lang === 'ja' ? 'お知らせ' : 'Hinweise',
+      );
+      const teachingName = lang === 'ja' ? '解説ビュー' : 'Lehransichten';
+      expect(await page.locator('section.teaching').getAttribute('aria-label')).toBe(teachingName);
+      expect(await page.locator('section.teaching > h2.sr-only').textContent()).toBe(teachingName);
       const all = `${stepper} ${formulas} ${tables} ${procedures}`;
       if (lang === 'ja') {
         const left = latinWords(all.replace(/µ(m|in)\b/g, '')).filter((w) => !TEACH_KEPT.has(w));

@@ -68,6 +68,7 @@ export type StaticKey =
   | 'cuspHeights'
   | 'openFull'
   | 'embedTitle'
+  | 'teachingViews'
   | 'alongSurface'
   | 'cuspNormal'
   | 'equivalentLead'
@@ -99,7 +100,16 @@ export type StaticKey =
   | 'givenSa';
 
 /** The keys of index.html's landmarks named by `aria-label` with a `data-i18n-label` (their English the page's). */
-export type LabelKey = 'fullCalculator' | 'inputs' | 'results' | 'finish' | 'targetSa' | 'view3d' | 'currentAnswer';
+export type LabelKey =
+  | 'fullCalculator'
+  | 'notices'
+  | 'inputs'
+  | 'results'
+  | 'finish'
+  | 'targetSa'
+  | 'teaching'
+  | 'view3d'
+  | 'currentAnswer';
 
 /** The words of the question named beside an answer (questionWords.ts), and its list separator ", ". */
 export type QuestionWord =

@@ -72,6 +72,7 @@ export const catalogue: Catalogue = {
     cuspHeights: 'Kammhöhen (Zickzack)',
     openFull: 'Vollständigen Rechner öffnen',
     embedTitle: 'Bahnabstandsrechner',
+    teachingViews: 'Lehransichten',
     alongSurface: 'L entlang der Fläche',
     cuspNormal: 'Kammhöhe h (normal zur Fläche)',
     equivalentLead: 'Äquivalenter Anstellwinkel ρ',
@@ -109,6 +110,8 @@ export const catalogue: Catalogue = {
   },
   labels: {
     fullCalculator: 'Vollständiger Rechner',
+    notices: 'Hinweise',
+    teaching: 'Lehransichten',
     inputs: 'Eingaben',
     results: 'Ergebnisse',
     finish: 'Oberfläche',

@@ -72,6 +72,7 @@ export const catalogue: Catalogue = {
     cuspHeights: 'カスプ高さ（往復）',
     openFull: 'フル版の計算機を開く',
     embedTitle: 'ピックフィード計算機',
+    teachingViews: '解説ビュー',
     alongSurface: '面に沿った L',
     cuspNormal: 'カスプ高さ h（法線方向）',
     equivalentLead: '等価前傾角 ρ',
@@ -106,6 +107,8 @@ export const catalogue: Catalogue = {
   },
   labels: {
     fullCalculator: 'すべての機能を備えた計算機',
+    notices: 'お知らせ',
+    teaching: '解説ビュー',
     inputs: '入力',
     results: '結果',
     finish: '仕上げ面',
