@@ -7,7 +7,8 @@ import { describe, expect, it } from 'vitest';
 import { compareForward, forwardInput } from '../../src/core/index';
 import { keepShot, useSite } from './harness';
 
-const site = useSite('shop/offline', { build: 'production' });
+// The service worker's cache is what these tests read: the browser's HTTP cache keeps out of it.
+const site = useSite('shop/offline', { build: 'production', cacheAssets: false });
 
 describe('offline after the first visit', () => {
   it('load once, go offline, reload: the calculator still computes', async () => {
