@@ -29,9 +29,8 @@ export function serveStatic(
   root: string,
   subPath: string,
   headers: Readonly<Record<string, string>> = {},
-  options: ServeOptions = {},
 ): Promise<StaticSite> {
-  return serveStaticMounts([{ root, subPath }], headers, options).then((site) => ({
+  return serveStaticMounts([{ root, subPath }], headers).then((site) => ({
     url: site.urls[0] as string,
     close: site.close,
   }));
@@ -58,20 +57,6 @@ function contents(file: string, stats: Stats): Buffer {
   return bytes;
 }
 
-/** How the server answers beyond the files and the headers. */
-export interface ServeOptions {
-  /**
-   * true: the build's hashed files (`assets/`) are sent as immutable for a year, as a host that
-   * serves a Vite build does, so a browser keeps them (and their compiled code) from one load of
-   * the page to the next; pages, the service worker and the rest are sent as before (no caching
-   * headers). The benchmark's cold load keeps false.
-   */
-  readonly immutableAssets?: boolean;
-}
-
-/** The header of a hashed build file under {@link ServeOptions.immutableAssets}. */
-const IMMUTABLE = { 'cache-control': 'public, max-age=31536000, immutable' } as const;
-
 export interface StaticMounts {
   /** The URL of each mount, in the order given. */
   readonly urls: readonly string[];
@@ -85,7 +70,6 @@ export interface StaticMounts {
 export function serveStaticMounts(
   mounts: ReadonlyArray<{ readonly root: string; readonly subPath: string }>,
   headers: Readonly<Record<string, string>> = {},
-  { immutableAssets = false }: ServeOptions = {},
 ): Promise<StaticMounts> {
   const prefixes = mounts.map((m) => ({ root: m.root, prefix: `/${m.subPath.replace(/^\/|\/$/g, '')}/` }));
   const server: Server = createServer((req, res) => {
@@ -106,8 +90,7 @@ export function serveStaticMounts(
       res.writeHead(404).end('not found');
       return;
     }
-    const cache = immutableAssets && /^assets[/\\]/.test(rel) ? IMMUTABLE : {};
-    res.writeHead(200, { ...headers, ...cache, 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
+    res.writeHead(200, { ...headers, 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
     res.end(contents(file, stats));
   });
   return new Promise((resolve) => {

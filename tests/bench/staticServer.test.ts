@@ -1,7 +1,7 @@
 /**
  * The browser tests' static server (src/bench/staticServer.ts): the sub-path only, a folder's
  * index.html, 404 for the rest, the headers asked for, and a file written again served anew
- * (it keeps what it served in memory); with immutableAssets the hashed build files are sent immutable.
+ * (it keeps what it served in memory).
  */
 import { mkdirSync, mkdtempSync, rmSync, utimesSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -58,20 +58,5 @@ describe('serveStatic', () => {
     expect((await get('a.js')).body).toBe('two');
     writeFileSync(join(dir, 'a.js'), 'three!');
     expect((await get('a.js')).body).toBe('three!');
-  });
-
-  it('immutableAssets: the hashed build files (assets/) are sent immutable, nothing else is', async () => {
-    mkdirSync(join(dir, 'assets'), { recursive: true });
-    writeFileSync(join(dir, 'assets', 'x-abc123.js'), 'x');
-    const cached = await serveStatic(dir, 'c', {}, { immutableAssets: true });
-    try {
-      const header = async (path: string) => (await fetch(new URL(path, cached.url))).headers.get('cache-control');
-      expect(await header('assets/x-abc123.js')).toBe('public, max-age=31536000, immutable');
-      expect(await header('')).toBeNull();
-      expect(await header('a.js')).toBeNull();
-    } finally {
-      await cached.close();
-    }
-    expect((await fetch(new URL('assets/x-abc123.js', site?.url))).headers.get('cache-control')).toBeNull();
   });
 });

@@ -27,12 +27,6 @@ export interface SiteOptions {
    * a scene drawn on SwiftShader costs most of the CPU of a test that never reads it.
    */
   readonly scene?: boolean;
-  /**
-   * false: the build's hashed files are sent without caching headers (every load fetches them). By
-   * default they are sent immutable, as a host serving a Vite build does: the browser keeps them
-   * and their compiled code between the file's loads (about 0.13 s of Chromium's CPU a load).
-   */
-  readonly cacheAssets?: boolean;
 }
 
 /**
@@ -145,9 +139,7 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
   const sceneWanted = (asked: boolean | undefined) => asked ?? sceneThisTest ?? options.scene !== false;
   beforeAll(async () => {
     mkdirSync(SHOTS, { recursive: true });
-    site = await serveStatic(siteDir(options.build ?? 'e2e'), subPath, options.headers, {
-      immutableAssets: options.cacheAssets !== false,
-    });
+    site = await serveStatic(siteDir(options.build ?? 'e2e'), subPath, options.headers);
     browser = await launchChromium();
     await countLoads(browser);
   });

@@ -7,8 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { compareForward, forwardInput } from '../../src/core/index';
 import { keepShot, useSite } from './harness';
 
-// The service worker's cache is what these tests read: the browser's HTTP cache keeps out of it.
-const site = useSite('shop/offline', { build: 'production', cacheAssets: false });
+const site = useSite('shop/offline', { build: 'production' });
 
 describe('offline after the first visit', () => {
   it('load once, go offline, reload: the calculator still computes', async () => {

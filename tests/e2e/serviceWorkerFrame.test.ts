@@ -11,8 +11,7 @@ import { describe, expect, it } from 'vitest';
 import { isGlDriverNote } from '../../src/bench/browser';
 import { useSite } from './harness';
 
-// The service worker's cache is what these tests read: the browser's HTTP cache keeps out of it.
-const site = useSite('docs/sw-frame', { build: 'production', cacheAssets: false });
+const site = useSite('docs/sw-frame', { build: 'production' });
 
 interface Counted {
   __registerCalls: number;
