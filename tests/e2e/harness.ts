@@ -46,11 +46,6 @@ export interface OpenOptions {
    * by default; `result-exact-interval` for a question that shows L only (a three-axis one).
    */
   readonly readyTestId?: string;
-  /**
-   * false: this document never gets the 3D scene's code (as {@link SiteOptions.scene}, for one
-   * test of a file that keeps the scene for others); true: it does; default: the file's choice.
-   */
-  readonly scene?: boolean;
 }
 
 export interface Harness {
@@ -115,9 +110,13 @@ export async function holdScene(target: Page | BrowserContext): Promise<void> {
   await target.route(SCENE_CODE, () => {});
 }
 
-/** Undoes {@link holdScene}: the scene's code is served again. */
-export async function releaseScene(target: Page | BrowserContext): Promise<void> {
-  await target.unroute(SCENE_CODE);
+/**
+ * Holds the scene's code for a page or a context's pages ({@link holdScene}) or serves it again,
+ * as `hold` says; `held` is whether it holds it now. Returns whether it holds it then.
+ */
+export async function holdSceneAs(target: Page | BrowserContext, held: boolean, hold: boolean): Promise<boolean> {
+  if (hold !== held) await (hold ? holdScene(target) : target.unroute(SCENE_CODE));
+  return hold;
 }
 
 /** Registers beforeAll/afterAll hooks for a test file. */
@@ -136,7 +135,8 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
   beforeEach(() => {
     sceneThisTest = null;
   });
-  const sceneWanted = (asked: boolean | undefined) => asked ?? sceneThisTest ?? options.scene !== false;
+  /** Whether documents opened now go without the scene's code: the running test's choice, or the file's. */
+  const sceneHeldNow = () => !(sceneThisTest ?? options.scene !== false);
   beforeAll(async () => {
     mkdirSync(SHOTS, { recursive: true });
     site = await serveStatic(siteDir(options.build ?? 'e2e'), subPath, options.headers);
@@ -179,14 +179,10 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
     query: string,
     viewport = { width: 1400, height: 900 },
     colorScheme: 'light' | 'dark' = 'light',
-    { readyTestId = 'result-exact-half', scene: asked }: OpenOptions = {},
+    { readyTestId = 'result-exact-half' }: OpenOptions = {},
   ) => {
-    const scene = sceneWanted(asked);
     const page = await sharedPage(viewport, colorScheme);
-    if (sceneHeld !== !scene) {
-      await (scene ? releaseScene(page) : holdScene(page));
-      sceneHeld = !scene;
-    }
+    sceneHeld = await holdSceneAs(page, sceneHeld, sceneHeldNow());
     intact = null;
     // Leave the previous document first, so that nothing it logs while closing is counted here.
     if (page.url() !== 'about:blank') await page.goto('about:blank');
@@ -202,8 +198,7 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
     url: () => need(site, 'site').url,
     open,
     async reuse(query, viewport = { width: 1400, height: 900 }, colorScheme = 'light', openOptions = {}) {
-      const held = !sceneWanted(openOptions.scene);
-      if (intact !== query || sceneHeld !== held || shared === null || shared.isClosed())
+      if (intact !== query || sceneHeld !== sceneHeldNow() || shared === null || shared.isClosed())
         return open(query, viewport, colorScheme, openOptions);
       await viewAs(shared, viewport, colorScheme);
       return { page: shared, errors };
@@ -214,7 +209,7 @@ export function useSite(subPath: string, options: SiteOptions = {}): Harness {
     noScene() {
       sceneThisTest = false;
     },
-    holdsScene: () => !sceneWanted(undefined),
+    holdsScene: sceneHeldNow,
   };
 }
 
@@ -347,10 +342,7 @@ export function usePhonePage(site: Harness): (query: string) => Promise<Page> {
     }
     shared ??= await context.newPage();
     // Without the scene's code where the file or the test says so (useSite's scene: false, noScene()).
-    if (held !== site.holdsScene()) {
-      held = site.holdsScene();
-      await (held ? holdScene(context) : releaseScene(context));
-    }
+    held = await holdSceneAs(context, held, site.holdsScene());
     await shared.goto(`${site.url()}${query}`);
     await shared.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
     return shared;

@@ -14,7 +14,7 @@ import { LOOKUP_HEADER } from '../../src/core/output/lookupTable';
 import { headerInUnit } from '../../src/core/output/lookupUnits';
 import { exactForward } from '../../src/core/surfaces/solve';
 import { scallopHeightLimits } from '../../src/core/surfaces/validate';
-import { holdScene, keepShot, ROOT, releaseScene, typeInto, useSite } from './harness';
+import { holdSceneAs, keepShot, ROOT, typeInto, useSite } from './harness';
 
 const site = useSite('docs/quick-lookup');
 /** The profile view's state: the touch test reads it, then the Copy test uses the same document. */
@@ -64,10 +64,7 @@ async function open(vp: Viewport, query: string, reuse = false): Promise<{ page:
   } else await entry.page.goto('about:blank');
   entry.unchanged = null;
   // Without the scene's code for a test that looks at no part of it (site.noScene()).
-  if (entry.sceneHeld !== held) {
-    await (held ? holdScene(entry.context) : releaseScene(entry.context));
-    entry.sceneHeld = held;
-  }
+  entry.sceneHeld = await holdSceneAs(entry.context, entry.sceneHeld, held);
   const { context, page } = entry;
   await page.goto(`${site.url()}${query}`);
   await page.getByTestId('result-exact-half').filter({ hasText: /\d/ }).waitFor({ state: 'attached' });
