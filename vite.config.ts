@@ -3,6 +3,7 @@ import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
 import { embedAttributesPlugin } from './src/build/embedAttributes.ts';
 import { formulaMathmlPlugin } from './src/build/formulaMathml.ts';
+import { preloadDeps } from './src/build/preloadDeps.ts';
 import { publicScriptsPlugin } from './src/build/publicScripts.ts';
 import { serviceWorkerPlugin } from './src/build/serviceWorker.ts';
 import { shaderWhitespacePlugin } from './src/build/shaderWhitespace.ts';
@@ -49,6 +50,7 @@ const WEB_APP_MANIFEST = {
  * 200 kB gzip budget than the many small shared chunks Rolldown would make; and `core`, the core
  * modules of the first result, one chunk that page and worker share (the core shipped once).
  */
+const PRELOAD_DEPS = preloadDeps();
 const SRC = fileURLToPath(new URL('./src/', import.meta.url));
 /** The sources the site's build takes in place of Node's (src/build/siteSources.ts: the doubly curved model on first use). */
 const SITE_SOURCES = siteSources(SRC);
@@ -163,6 +165,7 @@ export default defineConfig(({ mode, command }) =>
             src: SRC,
           }),
           publicScriptsPlugin(),
+          PRELOAD_DEPS.plugin,
           serviceWorkerPlugin({ manifest: WEB_APP_MANIFEST, disable: mode === 'e2e' }),
         ],
         // three.js is about 290 kB raw (77 kB gzip) in its chunk; the benchmark tracks the gzip
@@ -177,7 +180,7 @@ export default defineConfig(({ mode, command }) =>
           // preload links to (Vite's helper then touches no DOM), and the worker loads its jobs itself.
           modulePreload: {
             polyfill: false,
-            resolveDependencies: (_file, deps, { hostId }) => (/solver\.worker/.test(hostId) ? [] : deps),
+            resolveDependencies: PRELOAD_DEPS.resolveDependencies,
           },
           rolldownOptions: {
             output: {

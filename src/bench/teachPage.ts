@@ -12,7 +12,7 @@
  * `npm run bench` prints the same figures (keys teachSlopeChartMsMedian, teachCurvedMsMedian).
  */
 import { pathToFileURL } from 'node:url';
-import { buildPageRequest } from '../ui/questionRequest';
+import { buildRequest } from '../ui/request';
 import { parseUrl } from '../ui/state';
 import { teachCurved, teachThreeAxis } from '../worker/jobs/teachPage';
 import type { CurvedRequest, PageRequest, ThreeAxisRequest } from '../worker/pageProtocol';
@@ -25,7 +25,7 @@ export const TEACH_BENCH_LINKS = {
 
 /** The page's request for a link, from the page's one builder (it must be valid). */
 function requestOf(link: string): PageRequest {
-  const built = buildPageRequest(parseUrl(link).state);
+  const built = buildRequest(parseUrl(link).state);
   if (!built.ok) throw new Error(`the benchmark's link is invalid: ${link}`);
   return built.request;
 }

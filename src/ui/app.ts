@@ -34,11 +34,12 @@ import { LazyButton } from './lazyButton';
 import { LazyToolShelf } from './lazyToolShelf';
 import { plainLengths } from './lengthFields';
 import { linkNotice, Notice, restartMessage } from './messages';
+import { stateMessages } from './pageMessages';
 import { readPreferences, withPreferences, writePreferences } from './preferences';
 import { PresentMode, parsePresent } from './present';
-import { buildPageRequest } from './questionRequest';
+import { buildPageRequest, pageModeKind } from './questionRequest';
 import { questionWords } from './questionWords';
-import { type BuiltRequest, stateMessages } from './request';
+import type { BuiltRequest, PageFieldError } from './requestTypes';
 import { ResultBar } from './resultBar';
 import { type QuestionKind, ResultsPanel } from './results';
 import { RoughnessPanel } from './roughness';
@@ -71,6 +72,11 @@ import { UrlState } from './urlState';
 import type { ViewId } from './views/panel';
 
 /** The teaching views' ids, as the link's `view=` names them (the field registry's; here, so the views' code can load lazily). */
+/** A three-axis question's build while its builder loads (app.ts loadThreeAxis): no request yet, no message. */
+const NOT_LOADED = (): BuiltRequest => ({ ok: false, errors: [] });
+/** No three-axis wording while it loads (no three-axis reply can be on screen then). */
+const NONE = (): PageFieldError[] => [];
+
 const VIEW_IDS = FIELDS.view.values.filter((v): v is ViewId => v !== RESULT_VIEW);
 
 /** Observes the page from outside (the e2e build's probe); the page itself needs none. */
@@ -154,6 +160,13 @@ export class CalculatorApp {
   }
   /** The last committed state's request, or its errors (built once per change). */
   private built: BuiltRequest = { ok: false, errors: [] };
+  /**
+   * Three-axis machining's builder and wording (threeAxisRequest.ts), loaded with the first
+   * three-axis question rather than with the first result; null until then.
+   */
+  private threeAxis: typeof import('./threeAxisRequest') | null = null;
+  /** Whether that load is on its way. */
+  private threeAxisLoading = false;
   /** Where the machine and unit are remembered (preferences.ts); null in an embed or without storage. */
   private readonly storage: ToolStorage | null;
   /** The question's words of the number on screen (questionWords.ts), or null beside a dash. */
@@ -397,10 +410,33 @@ export class CalculatorApp {
     };
   }
 
-  /** The state's request, or its errors: the page's one builder (questionRequest.ts), once per input. */
+  /**
+   * The state's request, or its errors: the page's one builder (questionRequest.ts), once per input.
+   * A three-axis question asked before its builder has loaded is no request yet (no message, no
+   * number): the load is started, and the state on screen is built again when it is in.
+   */
   private build(state: CalculatorState): BuiltRequest {
     this.observer.built?.();
-    return buildPageRequest(plainLengths(state));
+    const plain = plainLengths(state);
+    if (this.threeAxis === null && pageModeKind(plain) === 'threeAxis') this.loadThreeAxis();
+    return buildPageRequest(plain, this.threeAxis?.buildThreeAxisRequest ?? NOT_LOADED);
+  }
+
+  /** Loads the three-axis builder, then builds the state on screen again (a failed load is tried again by the next change). */
+  private loadThreeAxis(): void {
+    if (this.threeAxisLoading) return;
+    this.threeAxisLoading = true;
+    import('./threeAxisRequest').then(
+      (loaded) => {
+        this.threeAxis = loaded;
+        // A text held back is asked at its pause with the request built now; else the state is asked.
+        if (this.typing.holding) this.held = this.build(this.state);
+        else this.change(this.state);
+      },
+      () => {
+        this.threeAxisLoading = false;
+      },
+    );
   }
 
   /**
@@ -468,7 +504,7 @@ export class CalculatorApp {
     const shown = this.fresh.shown;
     const reply = shown.kind === 'current' ? shown.reply : null;
     const request = this.built.ok && reply?.ok !== false ? this.built.request : null;
-    this.messages = stateMessages(plainLengths(state), this.built, reply);
+    this.messages = stateMessages(plainLengths(state), this.built, reply, this.threeAxis?.threeAxisFieldErrors ?? NONE);
     this.fields.render(state, this.fieldMessages());
     this.shelf.render(state.unit);
     // The simulation and the table answer a plane's or a cylinder's question (five-axis); the views

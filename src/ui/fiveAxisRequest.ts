@@ -78,7 +78,7 @@ function validated(state: CalculatorState): BuiltRequest {
   const tool = { ...rawFields(TOOL_FIELDS, mm), pattern: state.pattern, ...surfaceFields(state) };
   if (state.mode === 'forward' && state.target === 'ra') {
     // The fields only: gouging, a posture that leaves a wall only and an Ra beyond the largest are
-    // the worker's to find (they need a solve), in its reply (request.ts replyErrors).
+    // the worker's to find (they need a solve), in its reply (pageMessages.ts replyErrors).
     const v = targetRaValidation(targetRaFields(passFieldsAnd({ ...tool, ra: mm('ra') }, 'ra')));
     // Its errors name the tool, pass and Ra fields only (never a doubly curved point's radii).
     return v.ok

@@ -1,66 +1,35 @@
 /**
  * The edge between what the user typed and what the solver is asked: the state's text, in the
  * user's unit, becomes one validated request in mm (the page's one builder, questionRequest.ts), or
- * the input errors; and each field's message, from the build's errors or the worker's refusal.
- * Units are converted here and nowhere else on the way in. Pure (no DOM).
+ * the input errors; and each field's message, from the build's errors or the worker's refusal
+ * (pageMessages.ts). Units are converted here and nowhere else on the way in. This module hands
+ * the three-axis builder and wording in statically, for the Node side (the tests, the benches);
+ * the page (app.ts) hands them in once it has loaded them. Pure (no DOM).
  */
 
-import type { InputError } from '../core/input/validate';
-import {
-  type CurvedReply,
-  isCurvedRequest,
-  isSolveReply,
-  type PageReply,
-  type ThreeAxisReply,
-} from '../worker/pageProtocol';
-import { describeCurvedError } from './curvedRequest';
+import type { PageReply } from '../worker/pageProtocol';
 import { fieldMessages, fieldOfError } from './fieldMessages';
-import { catalogue } from './i18n/words';
+import { stateMessages as pageStateMessages } from './pageMessages';
 import { buildPageRequest } from './questionRequest';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
 import type { CalculatorState, FieldKey } from './state';
-import { threeAxisFieldErrors } from './threeAxisRequest';
+import { buildThreeAxisRequest, threeAxisFieldErrors } from './threeAxisRequest';
 
 export type { BuiltRequest, PageFieldError };
 
-/** The page's one builder (questionRequest.ts buildPageRequest), by its earlier name. */
-export const buildRequest = buildPageRequest;
+/** The page's one builder (questionRequest.ts buildPageRequest) with every mode's builder at hand. */
+export function buildRequest(state: CalculatorState): BuiltRequest {
+  return buildPageRequest(state, buildThreeAxisRequest);
+}
 
 /** Each field's message (fieldMessages.ts), re-exported for the callers. */
 export { fieldMessages, fieldOfError };
 
-/**
- * The errors of a refused reply (none for an answer) as the page shows them, on their fields in the
- * user's unit: a doubly curved point's own checks (describeCurvedError) and three-axis machining's
- * solver refusals (threeAxisFieldErrors), which only the worker finds; the tool's and posture's
- * validation errors as they are.
- */
-export function replyErrors(state: CalculatorState, reply: PageReply): Array<InputError | PageFieldError> {
-  if (reply.ok || isSolveReply(reply)) {
-    if (reply.ok) return [];
-    // A target Sa is asked as a target Ra (its L0): the worker's Ra bound is the Sa field's.
-    return state.mode === 'forward' && state.target === 'sa'
-      ? reply.errors.map((e) => (e.field === 'ra' ? { ...e, field: 'targetSa' } : e))
-      : [...reply.errors];
-  }
-  if (isCurvedRequest(reply.request))
-    return (reply as Extract<CurvedReply, { ok: false }>).errors.map((e) =>
-      // Worded in the language in force (its catalogue's, i18n/curvedText.ts; English here).
-      'got' in e ? e : (catalogue()?.curved ?? describeCurvedError)(e, state),
-    );
-  return threeAxisFieldErrors((reply as Extract<ThreeAxisReply, { ok: false }>).errors, state);
-}
-
-/**
- * Each field's message for a state: its own errors (buildRequest's), or, once the worker refused
- * the request it asks, that reply's (replyErrors); none while it is valid and not refused.
- * @param reply The reply to the state's request, or null while none came.
- */
+/** Each field's message for a state (pageMessages.ts stateMessages). */
 export function stateMessages(
   state: CalculatorState,
   built: BuiltRequest,
   reply: PageReply | null,
 ): Map<FieldKey, string> {
-  if (!built.ok) return fieldMessages(state, built.errors);
-  return reply === null || reply.ok ? new Map() : fieldMessages(state, replyErrors(state, reply));
+  return pageStateMessages(state, built, reply, threeAxisFieldErrors);
 }

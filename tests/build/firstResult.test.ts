@@ -14,7 +14,7 @@ const SRC = fileURLToPath(new URL('../../src/', import.meta.url));
 const page = staticClosure(`${SRC}main.ts`, SRC);
 const worker = staticClosure(`${SRC}worker/solver.worker.ts`, SRC);
 
-/** The three-axis solvers (validate.ts, errors.ts: validation only, the page's). */
+/** The three-axis solvers. */
 const THREE_AXIS_SOLVERS = [
   'core/threeAxis/solve.ts',
   'core/threeAxis/slopedPlane.ts',
@@ -24,6 +24,8 @@ const THREE_AXIS_SOLVERS = [
   'core/threeAxis/revolutionGouging.ts',
   'core/threeAxis/meridianCusp.ts',
 ];
+/** Three-axis machining's page builder and the core's validation it calls: loaded with the first three-axis question (app.ts loadThreeAxis). */
+const THREE_AXIS_BUILDER = ['ui/threeAxisRequest.ts', 'core/threeAxis/validate.ts'];
 /** The doubly curved point's job and checks beyond its solver (gouging by radius, the comparison, roughness). */
 const CURVED_JOB = [
   'worker/jobs/curved.ts',
@@ -53,9 +55,9 @@ describe('the static import graph of the first result', () => {
     expect(staticSpecifiers(source)).toEqual(['./a', './e', './g', './h', './side']);
   });
 
-  it('the page loads no three-axis or doubly curved solving, no teaching view, shop sheet, tool shelf or table grid', () => {
+  it('the page loads no three-axis builder or solving, no doubly curved solving, no teaching view, shop sheet, tool shelf or table grid', () => {
     expect(page.has('ui/app.ts')).toBe(true);
-    expect(loaded(page, [...THREE_AXIS_SOLVERS, ...CURVED_JOB])).toEqual([]);
+    expect(loaded(page, [...THREE_AXIS_SOLVERS, ...THREE_AXIS_BUILDER, ...CURVED_JOB])).toEqual([]);
     expect(
       loaded(page, [
         'ui/shopSheet.ts',

@@ -114,6 +114,12 @@
  * all, on first use; the first result 60.63): 295.48 in all, the ratchet 295.5.
  * Then the balanced feed's closed form and the feed marks' crest and tip searches (the finish
  * worker's chunk, on first use, +0.56 kB): 296.04 in all, the ratchet 296.1.
+ * Then three-axis machining's page builder and wording on first use (app.ts loads threeAxisRequest.ts
+ * with the first three-axis question; the core's three-axis validation goes with it, -1.1 kB, less
+ * the chunk Rolldown splits off for format.ts, which both then import), and a dynamic import no
+ * longer lists the chunks its importer loaded already (src/build/preloadDeps.ts, -0.04 kB): the
+ * first result 59.52 kB, within its 60 kB target again, the ratchet 59.55; 296.66 in all (the split
+ * chunk's own compression), the ratchet 296.7.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -127,10 +133,10 @@ const KB = 1024;
 describe('the JavaScript budget of the built site', () => {
   const sizes = jsSizes(siteFiles(DIST), readFileSync(`${DIST}/index.html`, 'utf8'), gzip9);
 
-  it('the first result (page and worker, their static imports) is at most 60.65 kB gzip (the ratchet; the target, 60, is not met)', () => {
+  it('the first result (page and worker, their static imports) is at most 59.55 kB gzip (the ratchet, under the 60 kB target)', () => {
     expect(sizes.firstResult.some((p) => p.startsWith('assets/index-'))).toBe(true);
     expect(sizes.firstResult.some((p) => p.startsWith('assets/solver.worker-'))).toBe(true);
-    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(60.65);
+    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.55);
   });
 
   it('counts every .js file the build emits: the chunks, the service worker and embed.js', () => {
@@ -139,7 +145,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 296.1 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(296.1);
+  it('all of it, every .js file, is at most 296.7 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(296.7);
   });
 });

@@ -5,8 +5,8 @@
  * probe's calls); a half-typed text held back until the pause is built at its key press only (its
  * commit asks nothing again), and typing back to the question on screen asks nothing; a typed text
  * only the worker refuses (a gouging radius) is asked once and its message waits for the typing
- * pause. Five-axis on a plane and a concave cylinder, three-axis on a sloped plane and a doubly
- * curved point.
+ * pause. Five-axis on a plane and a concave cylinder, three-axis on a sloped plane (its builder
+ * loaded by the machine switch, not with the first result) and a doubly curved point.
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
@@ -94,8 +94,17 @@ describe('one pass per keystroke', () => {
   });
 
   it('three-axis on a sloped plane, then a doubly curved point: one build and one ask per key press', async () => {
-    const { page, errors } = await site.open('?R=3&Rcr=1&machine=3axis&slope=30&h=0.05&unit=mm');
+    // Five-axis first: three-axis machining's builder loads with the first three-axis question, not
+    // with the first result (app.ts loadThreeAxis); the machine switch then asks it and it answers.
+    const { page, errors } = await site.open('?R=3&Rcr=1&slope=30&h=0.05&unit=mm');
+    const builderLoaded = () =>
+      page.evaluate(() =>
+        performance.getEntriesByType('resource').some((e) => /\/threeAxisRequest-[^/]*\.js$/.test(e.name)),
+      );
+    expect(await builderLoaded()).toBe(false);
+    await page.getByTestId('machine-switch').getByText('3-axis').click();
     await expect.poll(() => text(page, 'result-programmed-step')).toMatch(/\d/);
+    expect(await builderLoaded()).toBe(true);
     // The slope 30 -> 3 (Backspace).
     const step = await text(page, 'result-programmed-step');
     const slope = await keyPress(page, 'input-slope', 'Backspace', () =>
