@@ -114,6 +114,13 @@
  * all, on first use; the first result 60.63): 295.48 in all, the ratchet 295.5.
  * Then the balanced feed's closed form and the feed marks' crest and tip searches (the finish
  * worker's chunk, on first use, +0.56 kB): 296.04 in all, the ratchet 296.1.
+ * Then the last of the page's words in Japanese and German (issue 30): the procedures' table's notes
+ * (tableNotes.ts in the language chunk, which reads the models' reasons with the chart's
+ * gapReasons.ts, now a chunk of its own shared with the views, +0.53 kB), the rows' hover titles,
+ * n/a, the surface presets, the presentation mode's buttons, the tab list's name and the lookup
+ * table's restart line (the language chunk +1.72 kB, each catalogue +1.3); the presentation mode's
+ * buttons now hold both their words in index.html, shown by present.css, so present.ts writes none:
+ * the first result 60.63 -> 60.57 kB; 301.02 in all, the ratchet 301.1.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -139,7 +146,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 296.1 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(296.1);
+  it('all of it, every .js file, is at most 301.1 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(301.1);
   });
 });
