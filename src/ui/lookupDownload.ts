@@ -56,7 +56,7 @@ export class LookupDownload {
     if (this.current === null || this.asked !== null || this.loadingGrid) return;
     const current = this.current;
     this.button.disabled = true;
-    this.status.textContent = 'Computing the table in the worker...';
+    this.status.textContent = catalogue()?.said.tableComputing ?? 'Computing the table in the worker...';
     // The grid's code loads on the first click (not with the first result).
     this.loadingGrid = true;
     const [{ tableRequestOf }, file] = await Promise.all([import('./tableRequest'), import('./lookupFile')]);
@@ -104,6 +104,6 @@ export class LookupDownload {
     link.click();
     link.remove();
     setTimeout(() => URL.revokeObjectURL(url), 10_000);
-    this.status.textContent = this.file?.tableSummary(reply) ?? '';
+    this.status.textContent = this.file?.tableSummary(reply, catalogue()) ?? '';
   }
 }

@@ -120,7 +120,9 @@
  * n/a, the surface presets, the presentation mode's buttons, the tab list's name and the lookup
  * table's restart line (the language chunk +1.72 kB, each catalogue +1.3); the presentation mode's
  * buttons now hold both their words in index.html, shown by present.css, so present.ts writes none:
- * the first result 60.63 -> 60.57 kB; 301.02 in all, the ratchet 301.1.
+ * the first result 60.63 -> 60.57 kB; 301.02 in all. Then the lookup table's computing and saved
+ * lines in each language (lookupFile.ts words the summary, on first use; each catalogue +0.2 kB):
+ * 301.52 in all, the ratchet 301.6.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -146,7 +148,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 301.1 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(301.1);
+  it('all of it, every .js file, is at most 301.6 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(301.6);
   });
 });

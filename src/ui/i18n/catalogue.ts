@@ -739,6 +739,26 @@ export interface SaidWords {
   readonly rasterNote: string;
   /** The lookup table's status when its worker was restarted or gave up (lookupDownload.ts), its reason worded. */
   readonly tableWorker: (gaveUp: boolean, reason: string) => string;
+  /**
+   * The lookup table's status while it is computed, and once saved (lookupFile.ts tableSummary): the
+   * file, its rows, h's range and unit, the grid's other axes (degrees as numbers without their unit),
+   * the cells left empty. Numbers with the locale's decimal sign.
+   */
+  readonly tableComputing: string;
+  readonly tableSaved: (
+    file: string,
+    rows: number,
+    h: readonly [string, string],
+    unit: string,
+    axes:
+      | {
+          readonly kind: 'five-axis';
+          readonly lead: readonly [string, string];
+          readonly tilt: readonly [string, string];
+        }
+      | { readonly kind: 'three-axis'; readonly slope: readonly [string, string]; readonly step: 'Lxy' | 'dz' },
+    empty: number,
+  ) => string;
 }
 
 /** The surface box's presets' keys (surfaceState.ts), and its "custom radii". */

@@ -323,6 +323,13 @@ export const catalogue: Catalogue = {
       gaveUp
         ? `Keine Tabelle: ihr Rechenprozess hat aufgegeben (${reason}). Klicken, um es erneut zu versuchen.`
         : `Der Rechenprozess der Tabelle wurde neu gestartet (${reason}); sie wird erneut berechnet …`,
+    tableComputing: 'Die Tabelle wird im Rechenprozess berechnet …',
+    tableSaved: (file, rows, h, unit, axes, empty) =>
+      `${file} gespeichert: ${rows} Zeilen, h ${h[0]} bis ${h[1]} ${unit} × ${
+        axes.kind === 'five-axis'
+          ? `Anstellwinkel ${axes.lead[0]} bis ${axes.lead[1]}° × Kippwinkel ${axes.tilt[0]} bis ${axes.tilt[1]}°`
+          : `Flächenneigung ${axes.slope[0]} bis ${axes.slope[1]}°, der programmierte Abstand (${axes.step}) in jeder Zeile`
+      }; ${empty} Zellen außerhalb des gültigen Bereichs bleiben leer, der Grund steht in der Spalte error.`,
   },
   threeAxis: DE_THREE_AXIS,
   chart: DE_CHART,

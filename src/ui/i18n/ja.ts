@@ -305,6 +305,13 @@ export const catalogue: Catalogue = {
       gaveUp
         ? `表なし：表の計算用ワーカーが停止しました（${reason}）。クリックするともう一度試します。`
         : `表の計算用ワーカーを再起動しました（${reason}）。再計算中…`,
+    tableComputing: '計算用ワーカーで表を計算しています…',
+    tableSaved: (file, rows, h, unit, axes, empty) =>
+      `${file} を保存しました：${rows} 行、h ${h[0]}～${h[1]} ${unit} × ${
+        axes.kind === 'five-axis'
+          ? `前傾角 ${axes.lead[0]}～${axes.lead[1]}° × 傾斜角 ${axes.tilt[0]}～${axes.tilt[1]}°`
+          : `面の勾配 ${axes.slope[0]}～${axes.slope[1]}°、各行にプログラム上のピッチ（${axes.step}）`
+      }。有効範囲外の ${empty} 個のセルは空欄で、理由は error 列にあります。`,
   },
   threeAxis: JA_THREE_AXIS,
   chart: JA_CHART,

@@ -64,6 +64,29 @@ function strings(c: Catalogue): Array<[string, string]> {
     ...[true, false].map(
       (g) => [`said.tableWorker.${g}`, c.said.tableWorker(g, c.said.reason('threw'))] as [string, string],
     ),
+    ['said.tableComputing', c.said.tableComputing],
+    [
+      'said.tableSaved.five',
+      c.said.tableSaved(
+        'x.CSV',
+        120,
+        ['0.001', '0.05'],
+        'mm',
+        { kind: 'five-axis', lead: ['0', '45'], tilt: ['0', '10'] },
+        7,
+      ),
+    ],
+    [
+      'said.tableSaved.three',
+      c.said.tableSaved(
+        'x.CSV',
+        120,
+        ['0.001', '0.05'],
+        'mm',
+        { kind: 'three-axis', slope: ['0', '80'], step: 'Lxy' },
+        7,
+      ),
+    ],
   ];
 }
 
@@ -101,7 +124,7 @@ function noteStrings(c: Catalogue): Array<[string, string]> {
 
 /** Latin words a translation keeps: the paper's symbols (P_hp, P_base, CC, O, y0) and authors, names, units, file kinds and key names. */
 const KEPT = new Set(
-  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter hf Sa ISO M3 x3p F n x y P hp base CC O y0 N i L0 Reff Rlong sin sqrt Esc mm'.split(
+  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter hf Sa ISO M3 x3p F n x y P hp base CC O y0 N i L0 Reff Rlong sin sqrt Esc mm error'.split(
     ' ',
   ),
 );
