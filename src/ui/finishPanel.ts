@@ -29,7 +29,7 @@ import type { FinishWords } from './i18n/catalogue';
 import { finishMessageIn, finishScopeIn } from './i18n/finishText';
 import { localDecimal } from './i18n/langChoice';
 import { catalogue, localize } from './i18n/words';
-import { reasonIn } from './i18n/workerReason';
+import { reasonDetail, reasonIn, setDetail } from './i18n/workerReason';
 import { balancedFeedFields } from './shopFeed';
 import { publishTeethSurface } from './teethMap';
 
@@ -326,6 +326,8 @@ export class FinishPanel {
       : '';
     const text = refusal ?? failed ?? waiting;
     if (this.message.textContent !== text) this.message.textContent = text;
+    // An exception's own text, left out of the reason worded in the language, in the hover title.
+    setDetail(this.message, text === note && this.note !== null ? reasonDetail(this.note.reason, c) : '');
     // The waiting lines are the box's own words (put into the language in force); a refusal is the worker's.
     if (text === waiting && text !== '' && this.note === null) this.message.dataset.phrase = text;
     else delete this.message.dataset.phrase;
@@ -465,5 +467,6 @@ export class FinishPanel {
                   line.errors === null ? null : line.errors.map((e) => finishMessageIn(c, e, this.unit)).join(' '),
                 );
     if (this.x3pStatus.textContent !== text) this.x3pStatus.textContent = text;
+    setDetail(this.x3pStatus, line?.kind === 'gaveUp' ? reasonDetail(line.reason, c) : '');
   }
 }

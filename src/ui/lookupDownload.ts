@@ -15,6 +15,8 @@ import type { RestartInfo } from '../worker/client';
 import type { PageRequest } from '../worker/pageProtocol';
 import { sameTableRequest, type TableReply, type TableRequest } from '../worker/protocol';
 import { tableClient } from '../worker/workers';
+import { catalogue } from './i18n/words';
+import { reasonDetail, reasonIn, setDetail } from './i18n/workerReason';
 
 /** The download button and its status line (see the module comment). */
 export class LookupDownload {
@@ -54,7 +56,7 @@ export class LookupDownload {
     if (this.current === null || this.asked !== null || this.loadingGrid) return;
     const current = this.current;
     this.button.disabled = true;
-    this.status.textContent = 'Computing the table in the worker...';
+    this.status.textContent = catalogue()?.said.tableComputing ?? 'Computing the table in the worker...';
     // The grid's code loads on the first click (not with the first result).
     this.loadingGrid = true;
     const [{ tableRequestOf }, file] = await Promise.all([import('./tableRequest'), import('./lookupFile')]);
@@ -70,18 +72,25 @@ export class LookupDownload {
   }
 
   private restarted(info: RestartInfo): void {
-    if (!info.gaveUp) {
-      this.status.textContent = `The table's worker was restarted (${info.reason}); computing again...`;
-      return;
+    if (info.gaveUp) {
+      this.asked = null;
+      this.button.disabled = this.current === null;
     }
-    this.asked = null;
-    this.button.disabled = this.current === null;
-    this.status.textContent = `No table: the table's worker gave up (${info.reason}). Click to try again.`;
+    // In the language in force (the reason worded by workerReason.ts), an exception's text in the hover title.
+    const c = catalogue();
+    setDetail(this.status, reasonDetail(info.reason, c));
+    this.status.textContent =
+      c !== null
+        ? c.said.tableWorker(info.gaveUp, reasonIn(info.reason, c))
+        : info.gaveUp
+          ? `No table: the table's worker gave up (${info.reason}). Click to try again.`
+          : `The table's worker was restarted (${info.reason}); computing again...`;
   }
 
   private received(reply: TableReply): void {
     if (!sameTableRequest(reply.request, this.asked)) return;
     this.asked = null;
+    this.status.removeAttribute('title');
     this.button.disabled = this.current === null;
     if (!reply.ok) {
       this.status.textContent = `No table: ${reply.reason}`;
@@ -95,6 +104,6 @@ export class LookupDownload {
     link.click();
     link.remove();
     setTimeout(() => URL.revokeObjectURL(url), 10_000);
-    this.status.textContent = this.file?.tableSummary(reply) ?? '';
+    this.status.textContent = this.file?.tableSummary(reply, catalogue()) ?? '';
   }
 }

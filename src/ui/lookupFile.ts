@@ -4,6 +4,8 @@
  */
 import { formatInputNumber, fromMm, unitSymbol } from '../core/input/units';
 import type { TableReply, TableRequest } from '../worker/protocol';
+import type { Catalogue } from './i18n/catalogue';
+import { localDecimal } from './i18n/langChoice';
 
 /**
  * The file name of a table: its tool, pattern and surface, then its unit, lengths in that unit:
@@ -39,10 +41,25 @@ export function tableFileName(request: TableRequest): string {
   return `step-over-table_5-axis_R${n(t.toolRadiusMm)}_Rcr${n(t.cornerRadiusMm)}_${t.pattern}_${surface}_${unitSymbol(unit)}.csv`;
 }
 
-/** What the status line says about a table saved. */
-export function tableSummary(reply: Extract<TableReply, { ok: true }>): string {
+/** What the status line says about a table saved, in `c`'s language (null: English). */
+export function tableSummary(reply: Extract<TableReply, { ok: true }>, c: Catalogue | null = null): string {
   const g = reply.request.grid;
   const unit = reply.request.unit ?? 'mm';
+  if (c !== null) {
+    const ends = (v: readonly number[]) =>
+      [localDecimal(formatInputNumber(v[0] ?? 0), c), localDecimal(formatInputNumber(v.at(-1) ?? 0), c)] as const;
+    const x = reply.request.threeAxis;
+    return c.said.tableSaved(
+      tableFileName(reply.request),
+      reply.rows,
+      ends(g.scallopHeightsMm.map((mm) => fromMm(mm, unit))),
+      unitSymbol(unit),
+      x !== undefined
+        ? { kind: 'three-axis', slope: ends(x.slopesDeg), step: x.case.passes === 'raster' ? 'Lxy' : 'dz' }
+        : { kind: 'five-axis', lead: ends(g.leadAnglesDeg), tilt: ends(g.tiltAnglesDeg) },
+      reply.emptyCells,
+    );
+  }
   const range = (v: readonly number[]) => `${formatInputNumber(v[0] ?? 0)} to ${formatInputNumber(v.at(-1) ?? 0)}`;
   const h = g.scallopHeightsMm.map((mm) => fromMm(mm, unit));
   const axes =

@@ -5,7 +5,9 @@
  * (urlState.ts, as `view=` is kept). The inputs stay one click away: the Inputs button opens the
  * page's own inputs panel over the scene (the same fields, so nothing is duplicated); Escape then
  * closes that panel first, a second Escape leaves presentation mode. The layout itself is CSS
- * (present.css) keyed on the root element's `present` class.
+ * (present.css) keyed on the root element's `present` class, and so are the buttons' words: each
+ * holds both of its words in index.html (in the language in force, by their data-i18n), the CSS
+ * shows the one for the mode.
  *
  * A presenter's clicker (issue 28) sends ArrowRight / PageDown / Space (next), ArrowLeft / PageUp /
  * Shift+Space (back), and Home / End: in presentation mode they drive the teaching step-through
@@ -76,9 +78,6 @@ export interface PresentHost {
   changed(on: boolean): void;
 }
 
-const TOGGLE_TEXT = { on: 'Leave presentation (Esc)', off: 'Present' } as const;
-const INPUTS_TEXT = { open: 'Hide inputs', closed: 'Inputs' } as const;
-
 export class PresentMode {
   private on = false;
   private readonly html = document.documentElement;
@@ -146,9 +145,7 @@ export class PresentMode {
 
   private render(): void {
     this.html.classList.toggle('present', this.on);
-    this.toggle.textContent = this.on ? TOGGLE_TEXT.on : TOGGLE_TEXT.off;
     this.inputsButton.hidden = !this.on;
-    this.inputsButton.textContent = this.inputsOpen ? INPUTS_TEXT.open : INPUTS_TEXT.closed;
     this.inputsButton.setAttribute('aria-expanded', String(this.inputsOpen));
   }
 }

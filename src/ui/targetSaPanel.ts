@@ -22,7 +22,7 @@ import type { FinishInputs } from './finishRequest';
 import { formatLen, formatRoughness } from './format';
 import { targetSaMessageIn } from './i18n/finishText';
 import { catalogue, localize } from './i18n/words';
-import { reasonIn } from './i18n/workerReason';
+import { reasonDetail, reasonIn, setDetail } from './i18n/workerReason';
 import { shopFeed } from './shopFeed';
 import { targetSaAsk } from './targetSaRequest';
 import { lineChart } from './views/lineChart';
@@ -205,6 +205,8 @@ export class TargetSaPanel {
     const waiting = this.wanted !== null && a === null && failed === null ? (note ?? WAITING) : '';
     const text = failed ?? waiting;
     if (this.message.textContent !== text) this.message.textContent = text;
+    // An exception's own text, left out of the reason worded in the language, in the hover title.
+    setDetail(this.message, text === note && this.note !== null ? reasonDetail(this.note.reason, catalogue()) : '');
     if (text === WAITING) this.message.dataset.phrase = text;
     else delete this.message.dataset.phrase;
     this.message.classList.toggle('error', failed !== null || this.note?.gaveUp === true);

@@ -114,12 +114,22 @@
  * all, on first use; the first result 60.63): 295.48 in all, the ratchet 295.5.
  * Then the balanced feed's closed form and the feed marks' crest and tip searches (the finish
  * worker's chunk, on first use, +0.56 kB): 296.04 in all, the ratchet 296.1.
+ * Then the last of the page's words in Japanese and German (issue 30): the procedures' table's notes
+ * (tableNotes.ts in the language chunk, which reads the models' reasons with the chart's
+ * gapReasons.ts, now a chunk of its own shared with the views, +0.53 kB), the rows' hover titles,
+ * n/a, the surface presets, the presentation mode's buttons, the tab list's name and the lookup
+ * table's restart line (the language chunk +1.72 kB, each catalogue +1.3); the presentation mode's
+ * buttons now hold both their words in index.html, shown by present.css, so present.ts writes none:
+ * the first result 60.63 -> 60.57 kB; 301.02 in all. Then the lookup table's computing and saved
+ * lines in each language (lookupFile.ts words the summary, on first use; each catalogue +0.2 kB):
+ * 301.52 in all, the ratchet 301.6.
  * Then three-axis machining's page builder and wording on first use (app.ts loads threeAxisRequest.ts
  * with the first three-axis question; the core's three-axis validation goes with it, -1.1 kB, less
  * the chunk Rolldown splits off for format.ts, which both then import), and a dynamic import no
  * longer lists the chunks its importer loaded already (src/build/preloadDeps.ts, -0.04 kB): the
  * first result 59.52 kB, within its 60 kB target again, the ratchet 59.55; 296.66 in all (the split
- * chunk's own compression), the ratchet 296.7.
+ * chunk's own compression), the ratchet 296.7. Both together: the first result 59.41 kB, the ratchet
+ * 59.45; 301.98 in all, the ratchet 302.0.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -133,10 +143,10 @@ const KB = 1024;
 describe('the JavaScript budget of the built site', () => {
   const sizes = jsSizes(siteFiles(DIST), readFileSync(`${DIST}/index.html`, 'utf8'), gzip9);
 
-  it('the first result (page and worker, their static imports) is at most 59.55 kB gzip (the ratchet, under the 60 kB target)', () => {
+  it('the first result (page and worker, their static imports) is at most 59.45 kB gzip (the ratchet, under the 60 kB target)', () => {
     expect(sizes.firstResult.some((p) => p.startsWith('assets/index-'))).toBe(true);
     expect(sizes.firstResult.some((p) => p.startsWith('assets/solver.worker-'))).toBe(true);
-    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.55);
+    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.45);
   });
 
   it('counts every .js file the build emits: the chunks, the service worker and embed.js', () => {
@@ -145,7 +155,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 296.7 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(296.7);
+  it('all of it, every .js file, is at most 302.0 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(302);
   });
 });

@@ -175,6 +175,10 @@ const TEACH_KEPT = new Set([
   ...'Rb Reff Rlong Rshort Ztc b d s gamma scp wR wL eta sin sqrt thou Sekine Redonnet Bedi 3D'.split(' '),
 ]);
 
+/** English words of the procedures table's notes and titles and of the surface box's presets, none of which German keeps. */
+const TABLE_ENGLISH =
+  /\b(the|exact|answer|point|plane|cylinder|along|across|feed|dome|bowl|saddle|sphere|boss|custom|radii|correction|usual)\b/i;
+
 /** The step-through's, the formulas' and the tables' English words (views/stepperWords.ts, formulaWords.ts, tableWords.ts). */
 const TEACH_ENGLISH =
   /(?<!\p{L})(step|of|flank|box|boxes|section|sections|towards|touches|pseudo|single|search|contact|farthest|crossings|best|converged|exact|solver|scene|play|back|forward|first|last|reduced|motion|procedure|torus|shown|true|tool|moves|surface|projection|offset|tilt|posture|ball|approximation|ignores|curvature|lead|osculates|treats|equations|scrolls|sideways|lengths|angles|degrees|table|tables|printed|recomputed|condition|load|why|column|calculator|the|and|at|on|is)(?!\p{L})/giu;
@@ -208,6 +212,9 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     expect(await text(page, '.headline .big button.copy')).toBe('Kopieren');
     await expect.poll(() => text(page, '#tab-profile'), POLL).toBe('Profil quer zum Vorschub');
     expect(await text(page, '#tab-chart')).toBe('L über Anstell- und Kippwinkel');
+    // The tabs' list named in German; the presentation mode's button says its word (index.html holds both of its words).
+    expect(await page.locator('[role="tablist"]').getAttribute('aria-label')).toBe('Lehransichten');
+    expect(await page.getByTestId('present-toggle').locator('span:visible').textContent()).toBe('Präsentation');
     // Copy keeps the point (a CAM field's reader).
     expect(await page.getByTestId('result-exact-interval').getAttribute('data-copy')).toBe(stepOver(0.05));
     await expect.poll(() => new URL(page.url()).searchParams.get('lang'), POLL).toBe('de');
@@ -342,6 +349,8 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       .poll(() => text(page, '[data-testid="headline-question"]'))
       .toMatch(/^5軸、前傾 5°、傾斜 0°、片方向、平面$/);
     expect(await text(page, '.headline .big button.copy')).toBe('コピー');
+    expect(await page.getByTestId('present-toggle').locator('span:visible').textContent()).toBe('発表モード');
+    expect(await page.locator('[role="tablist"]').getAttribute('aria-label')).toBe('解説ビュー');
     // The 3D scene's legend in Japanese: no Latin word but the paper's symbols (and its lang the page's).
     const legend = await text(page, '[data-testid="scene-legend"]');
     expect(
@@ -386,6 +395,8 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Step-over L');
     expect(await text(page, '.headline .big button.copy')).toBe('Copy');
     expect(await text(page, '#tab-profile')).toBe('Cross-feed profile');
+    expect(await page.getByTestId('present-toggle').locator('span:visible').textContent()).toBe('Present');
+    expect(await page.locator('[role="tablist"]').getAttribute('aria-label')).toBe('Teaching views');
     expect((await procedureNames(page)).rows[0]).toBe('Exact (3D geometry)');
     expect(await text(page, '[data-testid="result-exact-interval"]')).toMatch(/^\d+\.\d{4} mm$/);
     await expect.poll(() => new URL(page.url()).searchParams.get('lang'), POLL).toBeNull();
@@ -675,6 +686,22 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(curvedRows, POLL).toContain('Exakt (dieser doppelt gekrümmte Punkt)');
     expect(await curvedRows()).toContain('Sekine et al., korrigiert (1/rho = 1/Reff + 1/Rc)');
     expect(await curvedRows()).toContain('Zylinder quer zum Vorschub, exakt (Rc ignoriert)');
+    // Their hover titles, the table's notes (nothing marked English) and the surface box's presets in German.
+    await expect
+      .poll(() => text(page, '[data-testid="table-notes"]'), POLL)
+      .toMatch(/^Jede Zeile neben der exakten Lösung: /);
+    const curvedTable = await page.evaluate(() => ({
+      titles: [...document.querySelectorAll<HTMLElement>('.procedures tr[data-curved]')].map((tr) => tr.title),
+      english: document.querySelectorAll('[data-testid="table-notes"] [lang="en"]').length,
+      presets: [...document.querySelectorAll('[data-testid="surface-preset"] option')].map((o) => o.textContent ?? ''),
+      presetLabel: document.querySelector('[data-i18n="surfacePreset"]')?.textContent ?? '',
+    }));
+    expect(curvedTable.titles).toContain('Der exakte Bahnabstand in diesem Punkt.');
+    expect(curvedTable.english).toBe(0);
+    expect(curvedTable.presets).toContain('Kuppel (in beiden Richtungen konvex)');
+    expect(curvedTable.presetLabel).toBe('Flächenvorgabe');
+    const curvedWords = [...curvedTable.titles, ...curvedTable.presets].join(' ');
+    expect(curvedWords.match(TABLE_ENGLISH), curvedWords).toBeNull();
     // A radius field's own error in German (the page's, before any worker): not a number, what was typed quoted.
     await typeInto(page, 'input-cross-radius', 'abc');
     await page.keyboard.press('Enter');
@@ -694,6 +721,15 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await typeInto(page, 'input-h', curvedH);
     await page.keyboard.press('Enter');
     await expect.poll(() => text(page, '[data-testid="error-h"]'), POLL).toBe('');
+    // A convex cylinder: the corrected rows' hover titles (what each assumes) and the table's notes in German.
+    await page.locator('input[name="surface"][value="convex"]').check();
+    await typeInto(page, 'input-surface-radius', '20');
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => page.locator('.procedures tr[data-curvature="sekineCorrected"]').getAttribute('title'), POLL)
+      .toMatch(/^Der Kreis mit Radius Reff von Sekine et al\. mit der üblichen Krümmungskorrektur /);
+    expect(await text(page, '[data-testid="table-notes"]')).toMatch(/^Auf einem Zylinder werden die Verfahren oben /);
+    expect(await page.locator('[data-testid="table-notes"] [lang="en"]').count()).toBe(0);
     await page.locator('input[name="surface"][value="plane"]').check();
     // Back to five axes: a flat end without lead or tilt lies flat, said in German with its L = 2R.
     await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();
@@ -703,6 +739,11 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect
       .poll(() => text(page, '[data-testid="no-scallop"]'), POLL)
       .toMatch(/^Kein Kamm: ein Schaftfräser ohne Anstell- und Kippwinkel .* also L = 2R = 6,0000 mm für jedes h\.$/);
+    // The table's notes say it too, and why the models without lead give no value (their cells' n/a), in German.
+    expect(await text(page, '[data-testid="table-notes"]')).toMatch(/^Kein Kamm: ein flach aufliegender Schaftfräser /);
+    expect(await text(page, '[data-testid="table-notes"]')).toContain('Sekine et al.: bei rho = 0 ');
+    expect(await page.locator('[data-testid="table-notes"] [lang="en"]').count()).toBe(0);
+    expect(await text(page, '[data-testid="result-sekine-half"]')).toBe('nicht berechenbar');
     await typeInto(page, 'input-Rcr', '1');
     await typeInto(page, 'input-rho', '5');
     await page.keyboard.press('Enter');

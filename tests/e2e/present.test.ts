@@ -87,7 +87,9 @@ async function expectPresenting(page: Page, label: string): Promise<void> {
   expect(await page.locator('.chrome').isVisible(), `${label}: header`).toBe(false);
   expect(await page.locator('.controls').isVisible(), `${label}: inputs`).toBe(false);
   expect(await page.getByTestId('result-exact-interval').isVisible(), `${label}: headline`).toBe(true);
-  expect(await page.getByTestId('present-toggle').textContent()).toBe('Leave presentation (Esc)');
+  expect(await page.getByTestId('present-toggle').locator('span:visible').textContent()).toBe(
+    'Leave presentation (Esc)',
+  );
   await expect.poll(async () => (await canvasFit(page)).bufferFollows, { message: label }).toBe(true);
   const { share } = await canvasFit(page);
   expect(share, `${label}: canvas share of the window`).toBeGreaterThan(0.5);
@@ -136,7 +138,7 @@ describe('presentation mode', () => {
       await pageSettled(page);
       const before = await layout(page);
       const toggle = page.getByTestId('present-toggle');
-      expect(await toggle.textContent()).toBe('Present');
+      expect(await toggle.locator('span:visible').textContent()).toBe('Present');
       expect(await page.locator('.chrome').isVisible()).toBe(true);
       expect((await canvasFit(page)).share).toBeLessThan(0.5);
 
@@ -149,7 +151,7 @@ describe('presentation mode', () => {
       await page.keyboard.press('Escape');
       await expect.poll(() => page.evaluate(() => document.documentElement.classList.contains('present'))).toBe(false);
       await expect.poll(() => new URL(page.url()).searchParams.has('present')).toBe(false);
-      expect(await toggle.textContent()).toBe('Present');
+      expect(await toggle.locator('span:visible').textContent()).toBe('Present');
       expect(await toggle.evaluate((e) => e === document.activeElement)).toBe(true);
       await sceneIdle(page);
       await pageSettled(page);

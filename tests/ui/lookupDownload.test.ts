@@ -2,7 +2,9 @@
 import { describe, expect, it } from 'vitest';
 import { lookupGrid } from '../../src/core/output/lookupTable';
 import { PLANE } from '../../src/core/surfaces/cylinder';
-import { tableFileName } from '../../src/ui/lookupFile';
+import { catalogue as de } from '../../src/ui/i18n/de';
+import { catalogue as ja } from '../../src/ui/i18n/ja';
+import { tableFileName, tableSummary } from '../../src/ui/lookupFile';
 import { buildRequest } from '../../src/ui/request';
 import { parseUrl } from '../../src/ui/state';
 import { tableRequestOf } from '../../src/ui/tableRequest';
@@ -53,5 +55,33 @@ describe('lookup table file name', () => {
     expect(name('?machine=3axis&R=0.25&Rcr=0.03&slope=30&rasterAngle=30&h=0.0004&unit=in')).toBe(
       'step-over-table_3-axis_R0.25_Rcr0.03_raster30_plane_in.csv',
     );
+  });
+
+  it("the status line's summary in Japanese and German: the file, the grid's ranges with the locale's decimal sign, no English word", () => {
+    const summary = (query: string, c: typeof de | null) => {
+      const state = parseUrl(query).state;
+      const built = buildRequest(state);
+      if (!built.ok) throw new Error('valid');
+      const request = tableRequestOf(built.request, state.unit);
+      return tableSummary({ ok: true, request, csv: '', rows: 120, emptyCells: 7 }, c);
+    };
+    for (const query of [
+      '?R=3&Rcr=1&rho=5&h=0.05&unit=mm',
+      '?machine=3axis&R=3&Rcr=1&slope=30&rasterAngle=30&h=0.01&unit=mm',
+    ]) {
+      const english = summary(query, null);
+      expect(english).toMatch(/^Saved step-over-table_.*: 120 rows, h 0\.\d+ to .* 7 cells outside the valid domain/);
+      for (const c of [ja, de]) {
+        const text = summary(query, c);
+        const file = /^Saved (\S+):/.exec(english)?.[1] ?? '';
+        expect(text, c.lang).toContain(file);
+        expect(text.replace(file, ''), c.lang).not.toMatch(
+          /\b(Saved|rows|to|lead|tilt|slope|deg|cells|outside|valid|domain|reason|column|programmed|step)\b/,
+        );
+        expect(text, c.lang).toMatch(/120.*7/);
+        if (c.lang === 'de') expect(text.replace(file, '')).toMatch(/h 0,\d+ bis /);
+      }
+    }
+    expect(ja.said.tableComputing).not.toBe('Computing the table in the worker...');
   });
 });

@@ -14,6 +14,7 @@ import type { CurvedError } from '../../worker/pageProtocol';
 import type { PageFieldError } from '../requestTypes';
 import type { SceneLabelTexts } from '../sceneLabelTexts';
 import type { CalculatorState } from '../state';
+import type { CurvedPreset, WaterlinePreset } from '../surfaceState';
 import type { FormulaWords, StepperWords, TableWords } from './teachWords';
 
 /** The languages of the page: English (the page as written), Japanese, German. */
@@ -97,7 +98,12 @@ export type StaticKey =
   | 'legendAxes'
   | 'legendTrace'
   | 'legendExaggeration'
-  | 'givenSa';
+  | 'givenSa'
+  | 'surfacePreset'
+  | 'present'
+  | 'leavePresent'
+  | 'presentInputs'
+  | 'hideInputs';
 
 /** The keys of index.html's landmarks named by `aria-label` with a `data-i18n-label` (their English the page's). */
 export type LabelKey =
@@ -340,6 +346,63 @@ export interface ProcedureNames {
   readonly select: string;
   /** The results table's head (results.ts), by its English words; `L/2` and `h` are symbols. */
   readonly head: Readonly<Record<'Procedure' | 'Model' | 'Deviation' | 'Deviation [%]' | 'Scallop it leaves', string>>;
+  /** A cylinder's rows' hover titles: what each assumes (English: the registry's CURVATURE_ROWS assumes). */
+  readonly assumes: Readonly<Record<CurvatureRowKey, string>>;
+  /** A doubly curved point's rows' hover titles (resultsOther.ts), by their English. */
+  readonly curvedTitles: Readonly<Record<CurvedRowTitle, string>>;
+  /** The table's notes (results.ts, resultsText.ts; read back by tableNotes.ts). */
+  readonly notes: TableNoteWords;
+}
+
+/** A doubly curved point's rows' hover titles (resultsOther.ts), in English. */
+export type CurvedRowTitle =
+  | 'The exact step-over at this point.'
+  | 'The exact answer on a plane at the same posture.'
+  | 'The exact answer on the cylinder of radius Rc with its axis along the feed.'
+  | 'The exact answer on the cylinder of radius Rf with its axis across the feed.'
+  | 'The usual correction: the effective radius combined with the radius across the feed.';
+
+/**
+ * The results table's notes, sentence by sentence (results.ts, resultsText.ts, the worker's reasons;
+ * i18n/tableNotes.ts reads each back): the procedures' names given in the language, lengths with
+ * their unit and the locale's decimal sign, the paper's symbols kept.
+ */
+export interface TableNoteWords {
+  /** A flat end lying flat on a plane: no scallop at any step-over up to its diameter. */
+  readonly noScallop: string;
+  /** With tilt: the lead-only models (their names, joined). */
+  readonly leadOnly: (names: string) => string;
+  /** On a cylinder: the procedures above as on a plane; the rows below. */
+  readonly cylinder: string;
+  /** On a cylinder across the feed: each corrected row equals its procedure's. */
+  readonly crossAxis: string;
+  /** A doubly curved point's comparison rows (forward); given for the forward problem only (inverse). */
+  readonly curved: string;
+  readonly curvedInverse: string;
+  /**
+   * A row's value beyond its model: its name, h or L/2 and its value, the model (its circle, its
+   * ellipse, the combined circle), the limit's name (Reff, the ellipse's height Rlong sin(rho) or
+   * half-width Rlong, the combined radius rho) and its value.
+   */
+  readonly beyond: (
+    name: string,
+    what: 'h' | 'L/2',
+    value: string,
+    model: 'circle' | 'ellipse' | 'combined',
+    limit: 'Reff' | 'height' | 'halfWidth' | 'rho',
+    limitValue: string,
+  ) => string;
+  /** A row's L past the widest step-over that leaves a scallop (on this cylinder, or a plane). */
+  readonly wall: (name: string, interval: string, max: string, cylinder: boolean) => string;
+  /** A row's own reason (a model's, worded as a chart gap's: chart.reasons), after its name. */
+  readonly reason: (name: string, reason: string) => string;
+  /** The plane's row: the step-over at or beyond the widest one on a plane. */
+  readonly planeBeyond: string;
+  /** A corrected row on a concave surface tighter than Reff (its effective radius with unit, or null when not given). */
+  readonly notPositive: (name: string, reff: string | null) => string;
+  /** A doubly curved point's row: h at or above the flank limit; h above the combined circle's widest point (its radius). */
+  readonly flankLimit: (name: string) => string;
+  readonly combinedWidest: (name: string, radius: string) => string;
 }
 
 /**
@@ -418,7 +481,7 @@ export interface FinishWords {
   readonly failure: (kind: 'not-converged' | 'not-swept', part: 'marks' | 'areal') => string;
   /** Feed marks are not computed on this kind of surface. */
   readonly scope: (kind: 'cylinder' | 'doublyCurved' | 'waterlineRevolution' | 'other') => string;
-  /** The finish's worker gave up or was restarted (its reason worded by workerReason.ts, an exception's text kept). */
+  /** The finish's worker gave up or was restarted (its reason worded by workerReason.ts, an exception's text left to the hover title). */
   readonly worker: (gaveUp: boolean, reason: string) => string;
   /**
    * The target-Sa box's own refusals (the worker's TargetSaMessage refusal; English its sentence in
@@ -452,7 +515,7 @@ export interface SurfaceWords {
   readonly pending: (percent: number | null) => string;
   /** Why the worker did not simulate: not a plane, no scallop, or no reason given (another stays the worker's). */
   readonly reasons: Readonly<Record<'planes-only' | 'no-scallop' | 'none', string>>;
-  /** The simulation stopped on an exception (the worker's "No simulation: ..."): the exception's own text kept. */
+  /** The simulation stopped on an exception (the worker's "No simulation: ..."): the English gives its own text; another language a sentence of its own (its text in the hover title). */
   readonly exception: (detail: string) => string;
   /** The heights' scale (k null: true scale) and the colour's unit. */
   readonly exaggeration: (k: number | null, unit: string) => string;
@@ -664,11 +727,42 @@ export interface SaidWords {
   readonly metric: string;
   readonly catalogueTools: (units: string) => string;
   /**
-   * A worker's reason for a restart (worker/client.ts, read back by workerReason.ts): the words
-   * before and after its detail (an exception's own text, kept as it is; none for 'load', 'stopped').
+   * A worker's reason for a restart (worker/client.ts, read back by workerReason.ts) as a sentence in
+   * the language; an exception's own text is not in it (the page shows it in a hover title).
    */
-  readonly reason: (kind: WorkerReason) => readonly [string, string];
+  readonly reason: (kind: WorkerReason) => string;
+  /** A value a formula or the table cannot give (English "n/a"). */
+  readonly notAvailable: string;
+  /** The surface box's presets (surfaceState.ts PRESET_LABELS) and its "custom radii", by their keys. */
+  readonly surfacePresets: Readonly<Record<SurfacePresetKey, string>>;
+  /** The line under the surface box for raster passes on a sloped plane (fields.ts). */
+  readonly rasterNote: string;
+  /** The lookup table's status when its worker was restarted or gave up (lookupDownload.ts), its reason worded. */
+  readonly tableWorker: (gaveUp: boolean, reason: string) => string;
+  /**
+   * The lookup table's status while it is computed, and once saved (lookupFile.ts tableSummary): the
+   * file, its rows, h's range and unit, the grid's other axes (degrees as numbers without their unit),
+   * the cells left empty. Numbers with the locale's decimal sign.
+   */
+  readonly tableComputing: string;
+  readonly tableSaved: (
+    file: string,
+    rows: number,
+    h: readonly [string, string],
+    unit: string,
+    axes:
+      | {
+          readonly kind: 'five-axis';
+          readonly lead: readonly [string, string];
+          readonly tilt: readonly [string, string];
+        }
+      | { readonly kind: 'three-axis'; readonly slope: readonly [string, string]; readonly step: 'Lxy' | 'dz' },
+    empty: number,
+  ) => string;
 }
+
+/** The surface box's presets' keys (surfaceState.ts), and its "custom radii". */
+export type SurfacePresetKey = CurvedPreset | WaterlinePreset | 'custom';
 
 /**
  * A link notice's details (i18n/linkNotices.ts reads them back from the page's English): the

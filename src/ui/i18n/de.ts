@@ -107,6 +107,11 @@ export const catalogue: Catalogue = {
     legendExaggeration:
       'Höhen nahe der Fläche N-fach überhöht, wenn der Kamm zu niedrig zum Sehen ist (Hinweis in der Szene; Zahlen unverändert)',
     givenSa: 'Ziel-Sa (flächenhaft, mit den Schneiden)',
+    surfacePreset: 'Flächenvorgabe',
+    present: 'Präsentation',
+    leavePresent: 'Präsentation beenden (Esc)',
+    presentInputs: 'Eingaben',
+    hideInputs: 'Eingaben ausblenden',
   },
   labels: {
     fullCalculator: 'Vollständiger Rechner',
@@ -293,10 +298,38 @@ export const catalogue: Catalogue = {
     catalogueTools: (units) => `Katalogwerkzeuge (${units})`,
     reason: (kind) =>
       kind === 'failed'
-        ? ['der Löser ist fehlgeschlagen (', ')']
+        ? 'der Löser ist fehlgeschlagen'
         : kind === 'threw'
-          ? ['der Löser hat eine Ausnahme ausgelöst (', ')']
-          : [kind === 'load' ? 'der Löser wurde nicht geladen' : 'der Löser antwortet nicht mehr', ''],
+          ? 'im Löser ist ein unerwarteter Fehler aufgetreten'
+          : kind === 'load'
+            ? 'der Löser wurde nicht geladen'
+            : 'der Löser antwortet nicht mehr',
+    notAvailable: 'nicht berechenbar',
+    surfacePresets: {
+      custom: 'eigene Radien',
+      dome: 'Kuppel (in beiden Richtungen konvex)',
+      bowl: 'Schale (in beiden Richtungen konkav)',
+      saddle: 'Sattel (längs konvex, quer konkav)',
+      sphere: 'Kugel (Rc = Rf, konvex)',
+      'cylinder-along': 'Zylinder, Achse in Vorschubrichtung (Rf gerade)',
+      'cylinder-across': 'Zylinder, Achse quer zum Vorschub (Rc gerade)',
+      plane: 'Ebene (in beiden Richtungen gerade)',
+      boss: 'Zapfen (rundum konvex, gerade Mantellinie)',
+      fillet: 'Taschenverrundung (konkav, Rc der kleinere)',
+    },
+    rasterNote:
+      'Zeilen auf einer geneigten Ebene: Flächenneigung und Zeilenwinkel bestimmen den Anstell- und den Kippwinkel des Werkzeugs im Kontaktpunkt.',
+    tableWorker: (gaveUp, reason) =>
+      gaveUp
+        ? `Keine Tabelle: ihr Rechenprozess hat aufgegeben (${reason}). Klicken, um es erneut zu versuchen.`
+        : `Der Rechenprozess der Tabelle wurde neu gestartet (${reason}); sie wird erneut berechnet …`,
+    tableComputing: 'Die Tabelle wird im Rechenprozess berechnet …',
+    tableSaved: (file, rows, h, unit, axes, empty) =>
+      `${file} gespeichert: ${rows} Zeilen, h ${h[0]} bis ${h[1]} ${unit} × ${
+        axes.kind === 'five-axis'
+          ? `Anstellwinkel ${axes.lead[0]} bis ${axes.lead[1]}° × Kippwinkel ${axes.tilt[0]} bis ${axes.tilt[1]}°`
+          : `Flächenneigung ${axes.slope[0]} bis ${axes.slope[1]}°, der programmierte Abstand (${axes.step}) in jeder Zeile`
+      }; ${empty} Zellen außerhalb des gültigen Bereichs bleiben leer, der Grund steht in der Spalte error.`,
   },
   threeAxis: DE_THREE_AXIS,
   chart: DE_CHART,

@@ -16,7 +16,7 @@ export const DE_SURFACE: Catalogue['surface'] = {
       'Kein Kamm: der ebene Boden liegt auf der Ebene und hinterlässt eine ebene Fläche, es gibt nichts zu simulieren.',
     none: 'Keine Simulation.',
   },
-  exception: (detail) => `Keine Simulation: bei der Rechnung trat eine Ausnahme auf (${detail}).`,
+  exception: () => 'Keine Simulation: bei der Rechnung ist ein unerwarteter Fehler aufgetreten.',
   exaggeration: (k, unit) =>
     `${k === null ? 'Höhen maßstäblich' : `Höhen ${k}-fach überhöht (vertikale Überhöhung)`}; Farbe: Höhe über dem tiefsten Punkt (${unit}).`,
   comparison: (simulated, exact, diff, within, bound, cells, passes) =>

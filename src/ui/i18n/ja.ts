@@ -104,6 +104,11 @@ export const catalogue: Catalogue = {
     legendTrace: '段階表示：試した断面、候補 P_hp[i]、求めた点',
     legendExaggeration: 'スカラップが低くて見えないときは面の近くで高さを N 倍に拡大（表示にバッジ、数値は不変）',
     givenSa: '目標 Sa（面、刃を考慮）',
+    surfacePreset: '面のプリセット',
+    present: '発表モード',
+    leavePresent: '発表モードを終了（Esc）',
+    presentInputs: '入力',
+    hideInputs: '入力を隠す',
   },
   labels: {
     fullCalculator: 'すべての機能を備えた計算機',
@@ -276,10 +281,37 @@ export const catalogue: Catalogue = {
     catalogueTools: (units) => `カタログの工具（${units}）`,
     reason: (kind) =>
       kind === 'failed'
-        ? ['ソルバーが失敗しました：', '']
+        ? 'ソルバーの計算が失敗しました'
         : kind === 'threw'
-          ? ['ソルバーで例外が発生しました：', '']
-          : [kind === 'load' ? 'ソルバーを読み込めませんでした' : 'ソルバーが応答しなくなりました', ''],
+          ? 'ソルバーで予期しないエラーが発生しました'
+          : kind === 'load'
+            ? 'ソルバーを読み込めませんでした'
+            : 'ソルバーが応答しなくなりました',
+    notAvailable: '算出不可',
+    surfacePresets: {
+      custom: '半径を指定',
+      dome: 'ドーム（両方向とも凸）',
+      bowl: 'ボウル（両方向とも凹）',
+      saddle: '鞍形（送り方向に凸、直交方向に凹）',
+      sphere: '球（Rc = Rf、凸）',
+      'cylinder-along': '円筒、軸が送り方向（Rf は直線）',
+      'cylinder-across': '円筒、軸が送りに直交（Rc は直線）',
+      plane: '平面（両方向とも直線）',
+      boss: 'ボス（周方向に凸、母線は直線）',
+      fillet: 'ポケットのすみ R（凹、Rc が小さい方）',
+    },
+    rasterNote: '傾斜した平面上の走査線パス：面の勾配と走査方向の角度が、接触点での工具の前傾角と傾斜角を決めます。',
+    tableWorker: (gaveUp, reason) =>
+      gaveUp
+        ? `表なし：表の計算用ワーカーが停止しました（${reason}）。クリックするともう一度試します。`
+        : `表の計算用ワーカーを再起動しました（${reason}）。再計算中…`,
+    tableComputing: '計算用ワーカーで表を計算しています…',
+    tableSaved: (file, rows, h, unit, axes, empty) =>
+      `${file} を保存しました：${rows} 行、h ${h[0]}～${h[1]} ${unit} × ${
+        axes.kind === 'five-axis'
+          ? `前傾角 ${axes.lead[0]}～${axes.lead[1]}° × 傾斜角 ${axes.tilt[0]}～${axes.tilt[1]}°`
+          : `面の勾配 ${axes.slope[0]}～${axes.slope[1]}°、各行にプログラム上のピッチ（${axes.step}）`
+      }。有効範囲外の ${empty} 個のセルは空欄で、理由は error 列にあります。`,
   },
   threeAxis: JA_THREE_AXIS,
   chart: JA_CHART,

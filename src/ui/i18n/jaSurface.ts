@@ -15,7 +15,7 @@ export const JA_SURFACE: Catalogue['surface'] = {
     'no-scallop': 'カスプなし：平らな底面が平面に密着して平らな面を残すため、シミュレーションするものがありません。',
     none: 'シミュレーションなし。',
   },
-  exception: (detail) => `シミュレーションなし：計算中に例外が発生しました（${detail}）。`,
+  exception: () => 'シミュレーションなし：計算中に予期しないエラーが発生しました。',
   exaggeration: (k, unit) =>
     `${k === null ? '高さは実寸' : `高さを ${k} 倍に拡大（高さ方向の誇張）`}。色：最も低い点からの高さ（${unit}）。`,
   comparison: (simulated, exact, diff, within, bound, cells, passes) =>

@@ -10,10 +10,11 @@ import { CURVATURE_ROWS, type CurvatureRowKey, PROCEDURES, type ProcedureKey } f
 import { ZERO_FEED_LABEL } from '../results';
 import { REVOLUTION_NOTE } from '../roughness';
 import type { ToolStorage } from '../savedTools';
-import type { Catalogue, FinishPhrase, LabelKey, Lang, Phrase } from './catalogue';
+import type { Catalogue, CurvedRowTitle, FinishPhrase, LabelKey, Lang, Phrase, SurfacePresetKey } from './catalogue';
 import { describeInputErrorIn, describeThreeAxisErrorIn } from './errorText';
 import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
 import { noticeParts } from './noticeWords';
+import { notesIn } from './tableNotes';
 import { toolNameIn } from './toolNames';
 import { setCatalogue, catalogue as wordsInForce } from './words';
 
@@ -26,9 +27,9 @@ export function loadCatalogue(lang: Lang): Promise<Catalogue | null> {
 
 /**
  * The parts of the page that stay in English in another language (their `lang` says so): the
- * teaching views (the translated ones carry their own lang), the table's notes, the notices' details.
+ * teaching views (the translated ones carry their own lang), the notices' details.
  */
-const ENGLISH_PARTS = '.teaching, .table-notes, .notices, .meaning';
+const ENGLISH_PARTS = '.teaching, .notices, .meaning';
 
 /** The page's English words of its `data-i18n` elements, read once before any language replaces them. */
 const ENGLISH = new WeakMap<Element, string>();
@@ -74,6 +75,7 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
     else e.removeAttribute('lang');
   // The catalogue tools' names (toolNames.ts), and the chips' legend.
   localizeToolNames(root, catalogue);
+  localizeSurfacePresets(root, catalogue);
   const legend = root.querySelector<HTMLElement>('[data-testid="tool-chips"] legend');
   if (legend !== null) localizeToolLegend(legend, catalogue);
   document.documentElement.lang = catalogue?.lang ?? 'en';
@@ -98,6 +100,23 @@ function localizeToolNames(root: ParentNode, c: Catalogue | null): void {
     if (attribute === null) e.textContent = text;
     else e.setAttribute(attribute, text);
   }
+}
+
+/**
+ * The surface box's presets (fields.ts writes them in English, from surfaceState.ts) and its raster
+ * line in `c`'s language; their English kept to go back to.
+ */
+function localizeSurfacePresets(root: ParentNode, c: Catalogue | null): void {
+  for (const option of root.querySelectorAll<HTMLOptionElement>('[data-testid="surface-preset"] option')) {
+    option.dataset.english ??= option.textContent ?? '';
+    const text = c?.said.surfacePresets[option.value as SurfacePresetKey] ?? option.dataset.english;
+    if (option.textContent !== text) option.textContent = text;
+  }
+  const note = root.querySelector<HTMLElement>('[data-testid="surface-note"]');
+  if (note === null || note.textContent === '') return;
+  note.dataset.english ??= note.textContent ?? '';
+  const text = c === null ? note.dataset.english : c.said.rasterNote;
+  if (note.textContent !== text) note.textContent = text;
 }
 
 /** The chips' legend (toolChips.ts writes it in English on each drawing) in `c`'s language. */
@@ -150,6 +169,8 @@ export function localizeResults(results: object): void {
   const shared = /^L = (\S+) % of the tool diameter$/.exec(share?.textContent ?? '');
   if (share && shared) share.textContent = words.said.diameterShare(localDecimal(shared[1] ?? '', words));
   procedureNames(root, words);
+  tableNotes(root, words);
+  localizeSurfacePresets(root, words);
   // The finish box's words (finishPanel.ts keeps each element's English in data-phrase).
   for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]')) {
     const text = words.finish[e.dataset.phrase as FinishPhrase];
@@ -202,7 +223,8 @@ function procedureNames(root: ParentNode, words: Catalogue): void {
       e.dataset.ariaEnglish ??= e.getAttribute('aria-label') ?? '';
       e.setAttribute('aria-label', name);
     }
-  for (const tr of root.querySelectorAll<HTMLElement>('.procedures tr[data-procedure][title]')) tr.title = names.select;
+  for (const tr of root.querySelectorAll<HTMLElement>('.procedures tr[data-procedure][title]'))
+    if (tr.title === 'Click to select this procedure in every view') tr.title = names.select;
   for (const th of root.querySelectorAll<HTMLElement>('.procedures thead th')) {
     const head = names.head[th.textContent as keyof ProcedureNamesHead];
     if (head !== undefined) th.textContent = head;
@@ -216,11 +238,23 @@ function procedureNames(root: ParentNode, words: Catalogue): void {
     else if (th.textContent === `${english}, lead only`) th.textContent = `${name}${names.leadOnly}`;
   }
   for (const th of root.querySelectorAll<HTMLElement>('.procedures tr[data-curvature] > th')) {
-    const key = (th.parentElement as HTMLElement).dataset.curvature as CurvatureRowKey;
+    const tr = th.parentElement as HTMLElement;
+    const key = tr.dataset.curvature as CurvatureRowKey;
     const row = CURVATURE_ROWS[key];
     const name = names.rows[key]?.label;
     if (row !== undefined && name !== undefined && th.textContent === row.label) th.textContent = name;
+    // Its hover title: what it assumes, or its note (read back by tableNotes.ts).
+    if (row !== undefined && tr.title === row.assumes) tr.title = names.assumes[key];
   }
+  // A row's note as its hover title, and a value a row cannot give ("n/a").
+  for (const tr of root.querySelectorAll<HTMLElement>('.procedures tr[title]')) {
+    const note = notesIn(tr.title, words);
+    if (note.length === 1 && note[0]?.[1] === false) tr.title = note[0][0];
+    const title = names.curvedTitles[tr.title as CurvedRowTitle];
+    if (title !== undefined) tr.title = title;
+  }
+  for (const output of root.querySelectorAll<HTMLElement>('.procedures td output'))
+    if (output.textContent === 'n/a') output.textContent = words.said.notAvailable;
   // A doubly curved point's rows: the exact answers by their English, a corrected procedure by its key.
   for (const th of root.querySelectorAll<HTMLElement>('.procedures tr[data-curved] > th')) {
     const key = (th.parentElement as HTMLElement).dataset.curved as CurvatureRowKey;
@@ -233,6 +267,26 @@ function procedureNames(root: ParentNode, words: Catalogue): void {
         : undefined);
     if (name !== undefined) th.textContent = name;
   }
+}
+
+/**
+ * The table's notes (results.ts writes them in English, sentences joined by spaces) in the language:
+ * each sentence worded by tableNotes.ts; one it does not know kept English, marked so.
+ */
+function tableNotes(root: ParentNode, words: Catalogue): void {
+  const notes = root.querySelector<HTMLElement>('[data-testid="table-notes"]');
+  const text = notes?.textContent ?? '';
+  if (notes === null || text === '' || notes.dataset.worded === text) return;
+  const parts = notesIn(text, words).flatMap(([sentence, english], i) => {
+    const part: Array<string | HTMLElement> = i === 0 ? [] : [words.lang === 'ja' ? '' : ' '];
+    if (!english) return [...part, sentence];
+    const span = document.createElement('span');
+    span.lang = 'en';
+    span.textContent = sentence;
+    return [...part, span];
+  });
+  notes.replaceChildren(...parts);
+  notes.dataset.worded = notes.textContent ?? '';
 }
 
 type ProcedureNamesHead = Catalogue['procedures']['head'];
@@ -258,8 +312,9 @@ function spoken(live: HTMLElement, words: Catalogue): void {
 
 /**
  * The notice box in the language in force: the page writes it in English (a worker restarted or
- * stopped, link values replaced); its sentence is put into the language, the worker's reason and
- * the link's values (named by their parameters) kept in English in a part that says so. The English
+ * stopped, link values replaced); its sentence is put into the language with the worker's reason
+ * (an exception's own text in the box's hover title), a reason not known and the link's values
+ * (named by their parameters) kept in English in a part that says so. The English
  * is kept to word it again in another language, or to put it back.
  */
 export function localizeNotice(box: HTMLElement): void {
@@ -271,12 +326,15 @@ export function localizeNotice(box: HTMLElement): void {
   delete box.dataset.worded;
   delete box.dataset.english;
   box.removeAttribute('lang');
+  box.removeAttribute('title');
   if (ours && words === null) box.textContent = english;
   if (words === null) return;
   const parts = noticeParts(english, words);
   if (parts !== null) {
-    const [before, kept, after] = parts;
-    // The part kept English (an exception's text, details not read back), marked so; none when all is worded.
+    const [before, kept, after, detail] = parts;
+    // An exception's own text: in the hover title, not in the sentence.
+    if (detail !== '') box.title = detail;
+    // The part kept English (a reason not known, details not read back), marked so; none when all is worded.
     const part = document.createElement('span');
     part.lang = 'en';
     part.textContent = kept;

@@ -1,30 +1,30 @@
 /**
  * The notices' words (issue 30): the sentences the page writes into its notice box in English
  * (messages.ts: a worker restarted or stopped, link values replaced), each read back as the words
- * before, the part kept in English (an exception's text in the worker's reason, the link's values
- * named by their parameters), and the words after, in a catalogue's language. Pure (no DOM): language.ts writes them.
+ * before, the part kept in English (a worker's reason not known, the link's values named by their
+ * parameters), the words after, in a catalogue's language, and an exception's text for the box's
+ * hover title. Pure (no DOM): language.ts writes them.
  */
 import type { Catalogue } from './catalogue';
 import { linkDetailsIn } from './linkNotices';
 import { reasonParts } from './workerReason';
 
 /**
- * A restart's sentence around its reason: the reason in the language (workerReason.ts) with only its
- * detail (an exception's text) kept English; a reason not known kept English whole.
+ * A restart's sentence around its reason: the reason in the language (workerReason.ts), its detail
+ * (an exception's text) for the hover title; a reason not known kept English whole.
  */
-function aroundReason(
-  [before, after]: readonly [string, string],
-  reason: string,
-  c: Catalogue,
-): readonly [string, string, string] {
+function aroundReason([before, after]: readonly [string, string], reason: string, c: Catalogue): NoticeParts {
   const parts = reasonParts(reason, c);
-  return parts === null ? [before, reason, after] : [`${before}${parts[0]}`, parts[1], `${parts[2]}${after}`];
+  return parts === null ? [before, reason, after, ''] : [`${before}${parts[0]}${after}`, '', '', parts[1]];
 }
+
+/** A notice in the language: the words before, the part kept English, the words after, and an exception's text for its hover title (or ''). */
+export type NoticeParts = readonly [string, string, string, string];
 
 /** The notice's sentences the page writes (messages.ts), the parts in between kept in English. */
 const NOTICES: ReadonlyArray<{
   readonly english: RegExp;
-  readonly words: (m: RegExpExecArray, c: Catalogue) => readonly [string, string, string];
+  readonly words: (m: RegExpExecArray, c: Catalogue) => NoticeParts;
 }> = [
   {
     english:
@@ -44,13 +44,15 @@ const NOTICES: ReadonlyArray<{
     english: /^Some link values were replaced: (.*)$/s,
     words: (m, c) => {
       const local = linkDetailsIn(m[1] ?? '', c);
-      return local === null ? [c.said.linkReplaced, m[1] ?? '', ''] : [`${c.said.linkReplaced}${local}`, '', ''];
+      return local === null
+        ? [c.said.linkReplaced, m[1] ?? '', '', '']
+        : [`${c.said.linkReplaced}${local}`, '', '', ''];
     },
   },
 ];
 
-/** A notice's English (messages.ts) as the words before, the part kept in English, the words after; null: not one. */
-export function noticeParts(english: string, words: Catalogue): readonly [string, string, string] | null {
+/** A notice's English (messages.ts) as NoticeParts; null: not one. */
+export function noticeParts(english: string, words: Catalogue): NoticeParts | null {
   for (const notice of NOTICES) {
     const m = notice.english.exec(english);
     if (m !== null) return notice.words(m, words);

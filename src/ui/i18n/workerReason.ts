@@ -1,8 +1,9 @@
 /**
  * A worker's reason for a restart (issue 30), as worker/client.ts writes it in English ("the solver
  * threw (TypeError: ...)", "the solver stopped answering"...), read back and worded in a catalogue's
- * language; an exception's own text (the detail in parentheses) is kept as it is. Pure (no DOM):
- * noticeWords.ts, finishPanel.ts and targetSaPanel.ts use it. Loaded with them, on first use.
+ * language as a sentence of its own: an exception's own text (the detail in parentheses) is not in
+ * it, the page shows it in a hover title (reasonDetail, setDetail). Pure (setDetail takes an element's title): noticeWords.ts,
+ * finishPanel.ts, targetSaPanel.ts and lookupDownload.ts use it. Loaded with them, on first use.
  */
 import type { Catalogue, WorkerReason } from './catalogue';
 
@@ -15,21 +16,30 @@ const REASONS: ReadonlyArray<readonly [RegExp, WorkerReason]> = [
 ];
 
 /**
- * A reason in `c`'s language as the words before its detail, the detail (an exception's text, kept
- * as it is; '' when none) and the words after; null when `english` is none of client.ts's reasons.
+ * A reason in `c`'s language and its detail (an exception's text, kept as it is for a hover title;
+ * '' when none); null when `english` is none of client.ts's reasons.
  */
-export function reasonParts(english: string, c: Pick<Catalogue, 'said'>): readonly [string, string, string] | null {
+export function reasonParts(english: string, c: Pick<Catalogue, 'said'>): readonly [string, string] | null {
   for (const [pattern, kind] of REASONS) {
     const m = pattern.exec(english);
-    if (m === null) continue;
-    const [before, after] = c.said.reason(kind);
-    return [before, m[1] ?? '', after];
+    if (m !== null) return [c.said.reason(kind), m[1] ?? ''];
   }
   return null;
 }
 
-/** A reason in `c`'s language (null: English, as written); one not known is kept as it is. */
+/** A reason in `c`'s language, without an exception's text (null: English, as written); one not known is kept as it is. */
 export function reasonIn(english: string, c: Pick<Catalogue, 'said'> | null): string {
   const parts = c === null ? null : reasonParts(english, c);
-  return parts === null ? english : parts.join('');
+  return parts === null ? english : parts[0];
+}
+
+/** The exception's text a reason worded in `c`'s language leaves out ('' in English, or none). */
+export function reasonDetail(english: string, c: Pick<Catalogue, 'said'> | null): string {
+  return (c === null ? null : reasonParts(english, c))?.[1] ?? '';
+}
+
+/** Puts an exception's text (`detail`, '' for none) in `e`'s hover title, or takes it away. */
+export function setDetail(e: { title: string; removeAttribute(name: string): void }, detail: string): void {
+  if (detail === '') e.removeAttribute('title');
+  else if (e.title !== detail) e.title = detail;
 }

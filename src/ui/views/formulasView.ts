@@ -12,7 +12,7 @@ import type { FormulaWords, PostureLabel } from '../i18n/teachWords';
 import { catalogue } from '../i18n/words';
 import { ScrollCues } from '../scrollCue';
 import { html, type PageViewContext, type TeachingView, untilted, type ViewContext } from './common';
-import { formulaSlotValues } from './formulaSlots';
+import { formulaNumber, formulaSlotValues } from './formulaSlots';
 import { FORMULA_TEMPLATES, slotClass } from './formulaTemplates';
 import { EN_FORMULAS } from './formulaWords';
 import { postureFormulaLines } from './threeAxisViewText';
@@ -93,7 +93,9 @@ export class FormulasView implements TeachingView {
         })
         .join('');
       for (const [name, text] of Object.entries(slots)) {
-        for (const el of maths.querySelectorAll(`.${slotClass(name)}`)) el.textContent = local(text);
+        // A value it cannot give ("n/a") in the language's words.
+        const shown = text === formulaNumber(null) ? (catalogue()?.said.notAvailable ?? text) : local(text);
+        for (const el of maths.querySelectorAll(`.${slotClass(name)}`)) el.textContent = shown;
       }
       const about = tilted && info.leadOnly ? `${w.assumes[key]} ${w.leadOnly}` : w.assumes[key];
       const frame = html('div', { class: 'maths-frame' });

@@ -22,6 +22,8 @@ export type { ViewId };
 export class TeachingPanel {
   private readonly views: TeachingView[];
   private readonly tabs = new Map<ViewId, HTMLButtonElement>();
+  /** The tabs' list (its accessible name follows the language in force, as the tabs' names). */
+  private readonly list: HTMLElement;
   private readonly ids: ViewId[];
   private readonly staleNote = html('p', { class: 'views-stale', 'data-testid': 'views-stale', role: 'status' });
   private readonly message = html('p', { class: 'view-note views-message', 'data-testid': 'views-message' });
@@ -55,6 +57,7 @@ export class TeachingPanel {
     this.ids = this.views.map((v) => v.id);
     this.active = initial;
     const list = html('div', { role: 'tablist', 'aria-label': 'Teaching views', class: 'tabs' });
+    this.list = list;
     const panels = html('div', { class: 'tab-panels' });
     for (const view of this.views) {
       const tab = html(
@@ -160,6 +163,8 @@ export class TeachingPanel {
    */
   nameTabs(): void {
     const words = catalogue();
+    const listName = words?.labels.teaching ?? 'Teaching views';
+    if (this.list.getAttribute('aria-label') !== listName) this.list.setAttribute('aria-label', listName);
     for (const view of this.views) {
       const tab = this.tabs.get(view.id);
       const english = view.id === 'chart' ? chartTitle(this.pageCtx?.kind ?? null) : view.title;

@@ -23,12 +23,13 @@ import type { Shown } from '../freshness';
 import type { SurfaceWords } from '../i18n/catalogue';
 import { localDecimal } from '../i18n/langChoice';
 import { catalogue, describeError, localize } from '../i18n/words';
+import { setDetail } from '../i18n/workerReason';
 import type { SurfaceDisplay } from '../simulation';
 import type { Unit } from '../state';
 import { onTeethSurface, type TeethShown } from '../teethMap';
 import { onThemeChange } from '../theme';
 import { html, svg, type TeachingView } from './common';
-import { EN_SURFACE, exceptionIn } from './surfaceWords';
+import { EN_SURFACE, exceptionDetail, exceptionIn } from './surfaceWords';
 import './surface.css';
 
 type SimulateOk = Extract<SimulateReply, { ok: true }>;
@@ -201,6 +202,8 @@ export class SurfaceView implements TeachingView, SurfaceDisplay {
               : exceptionIn(current.reason, w);
     if (this.status.textContent !== text) this.status.textContent = text;
     this.status.hidden = text === '';
+    // An exception's own text, left out of the sentence in the language, in the hover title.
+    setDetail(this.status, current && !current.ok && current.reason !== null ? exceptionDetail(current.reason, w) : '');
     if (current?.ok) {
       this.comparison.textContent = local(comparisonText(current, unit, w));
       this.drawReply(current, unit, false);

@@ -30,9 +30,16 @@ export const EN_SURFACE: SurfaceWords = {
 
 /**
  * The worker's reason for no simulation in `w`'s language: an exception's (worker/simulate.ts's
- * "No simulation: ...", read back with the English words) worded, its own text kept; else as it is.
+ * "No simulation: ...", read back with the English words) worded as a sentence of the language, its
+ * own text left out (exceptionDetail gives it, for a hover title); else as it is.
  */
 export function exceptionIn(reason: string, w: SurfaceWords): string {
   const prefix = EN_SURFACE.exception('');
   return w !== EN_SURFACE && reason.startsWith(prefix) ? w.exception(reason.slice(prefix.length)) : reason;
+}
+
+/** The exception's own text a reason worded in `w`'s language leaves out, for a hover title ('' in English, or none). */
+export function exceptionDetail(reason: string, w: SurfaceWords): string {
+  const prefix = EN_SURFACE.exception('');
+  return w !== EN_SURFACE && reason.startsWith(prefix) ? reason.slice(prefix.length) : '';
 }

@@ -14,6 +14,8 @@ import { PROCEDURE_KEYS, PROCEDURES } from '../../../src/core/procedures/procedu
 import type { Catalogue } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
+import { PRESET_LABELS } from '../../../src/ui/surfaceState';
+import { formulaNumber } from '../../../src/ui/views/formulaSlots';
 
 const HTML = readFileSync(fileURLToPath(new URL('../../../index.html', import.meta.url)), 'utf8');
 /** index.html's data-i18n keys and their English text (the page as written). */
@@ -48,12 +50,81 @@ function strings(c: Catalogue): Array<[string, string]> {
     ...Object.entries(c.procedures.head).map(([k, v]) => [`procedures.head.${k}`, v] as [string, string]),
     ['procedures.leadOnly', c.procedures.leadOnly],
     ...Object.entries(c.procedures.curved).map(([k, v]) => [`procedures.curved.${k}`, v] as [string, string]),
+    ...Object.entries(c.procedures.assumes).map(([k, v]) => [`procedures.assumes.${k}`, v] as [string, string]),
+    ...Object.entries(c.procedures.curvedTitles).map(
+      ([k, v]) => [`procedures.curvedTitles.${k}`, v] as [string, string],
+    ),
+    ...noteStrings(c),
+    ['said.notAvailable', c.said.notAvailable],
+    ...Object.entries(c.said.surfacePresets).map(([k, v]) => [`said.surfacePresets.${k}`, v] as [string, string]),
+    ['said.rasterNote', c.said.rasterNote],
+    ...(['failed', 'threw', 'load', 'stopped'] as const).map(
+      (k) => [`said.reason.${k}`, c.said.reason(k)] as [string, string],
+    ),
+    ...[true, false].map(
+      (g) => [`said.tableWorker.${g}`, c.said.tableWorker(g, c.said.reason('threw'))] as [string, string],
+    ),
+    ['said.tableComputing', c.said.tableComputing],
+    [
+      'said.tableSaved.five',
+      c.said.tableSaved(
+        'x.CSV',
+        120,
+        ['0.001', '0.05'],
+        'mm',
+        { kind: 'five-axis', lead: ['0', '45'], tilt: ['0', '10'] },
+        7,
+      ),
+    ],
+    [
+      'said.tableSaved.three',
+      c.said.tableSaved(
+        'x.CSV',
+        120,
+        ['0.001', '0.05'],
+        'mm',
+        { kind: 'three-axis', slope: ['0', '80'], step: 'Lxy' },
+        7,
+      ),
+    ],
   ];
+}
+
+/** The table notes' sentences (tableNotes.ts), each made with a procedure's name in the language and numbers. */
+function noteStrings(c: Catalogue): Array<[string, string]> {
+  const n = c.procedures.notes;
+  const name = c.procedures.names.sekine.shortLabel;
+  const said: Array<[string, string]> = [
+    ['noScallop', n.noScallop],
+    ['leadOnly', n.leadOnly(name)],
+    ['cylinder', n.cylinder],
+    ['crossAxis', n.crossAxis],
+    ['curved', n.curved],
+    ['curvedInverse', n.curvedInverse],
+    ['planeBeyond', n.planeBeyond],
+    ['reason', n.reason(name, c.chart.reasons.sekineShort)],
+    ['notPositive', n.notPositive(name, '3 mm')],
+    ['flankLimit', n.flankLimit(name)],
+    ['combinedWidest', n.combinedWidest(name, '3 mm')],
+    ...[true, false].map((cyl) => [`wall.${cyl}`, n.wall(name, '4 mm', '3 mm', cyl)] as [string, string]),
+    ...(['circle', 'ellipse', 'combined'] as const).flatMap((model) =>
+      (['Reff', 'height', 'halfWidth', 'rho'] as const).flatMap((limit) =>
+        (['h', 'L/2'] as const).map(
+          (what) =>
+            [`beyond.${model}.${limit}.${what}`, n.beyond(name, what, '1 mm', model, limit, '2 mm')] as [
+              string,
+              string,
+            ],
+        ),
+      ),
+    ),
+  ];
+  return said.map(([k, v]) => [`procedures.notes.${k}`, v]);
 }
 
 /** Latin words a translation keeps: the paper's symbols (P_hp, P_base, CC, O, y0) and authors, names, units, file kinds and key names. */
 const KEPT = new Set(
-  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter hf Sa ISO M3 x3p F n x y P hp base CC O y0 N i L0 Reff'.split(
+  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter hf Sa ISO M3 x3p F n x y P hp base CC O y0 N i L0 Reff Rlong sin sqrt Esc mm error'.split(
     ' ',
   ),
 );
@@ -100,6 +171,21 @@ describe('the catalogues', () => {
         if (author !== undefined) expect(name.shortLabel.startsWith(author), `${c.lang} ${key}`).toBe(true);
         expect(name.label, `${c.lang} ${key}`).not.toBe(english.label);
       }
+  });
+
+  it("the words the page's first code writes in English (surfaceState.ts, formulaSlots.ts, fields.ts) are other words in each language", () => {
+    const fields = readFileSync(fileURLToPath(new URL('../../../src/ui/fields.ts', import.meta.url)), 'utf8');
+    expect(fields).toContain("'custom radii'");
+    expect(formulaNumber(null)).toBe('n/a');
+    for (const c of [ja, de]) {
+      expect(Object.keys(c.said.surfacePresets).sort()).toEqual([...Object.keys(PRESET_LABELS), 'custom'].sort());
+      for (const [key, text] of Object.entries(c.said.surfacePresets))
+        expect(text, `${c.lang} ${key}`).not.toBe(
+          key === 'custom' ? 'custom radii' : PRESET_LABELS[key as keyof typeof PRESET_LABELS],
+        );
+      expect(c.said.notAvailable).not.toMatch(/^n\/?a$/i);
+      expect(fields).not.toContain(c.said.rasterNote);
+    }
   });
 
   it('German: no entry is the English one, and none uses an English word of the page', () => {

@@ -16,7 +16,7 @@ import type { FinishWords, SurfaceWords } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { finishMessageIn, finishScopeIn, targetSaMessageIn } from '../../../src/ui/i18n/finishText';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
-import { EN_SURFACE, exceptionIn } from '../../../src/ui/views/surfaceWords';
+import { EN_SURFACE, exceptionDetail, exceptionIn } from '../../../src/ui/views/surfaceWords';
 import type { FinishFieldMessage } from '../../../src/worker/finishProtocol';
 
 /** worker/simulate.ts's source: its reason for an exception, read back by surfaceWords.ts exceptionIn. */
@@ -142,12 +142,15 @@ describe("the finish box's and the surface view's words", () => {
       );
       expect(c.surface.traceCaption(5, '2 µm', '0.5 µm', '0.6 µm')).toMatch(/5.*2 µm.*0\.5 µm.*0\.6 µm/);
       expect(c.surface.pending(40)).toContain('40 %');
-      // An exception's own text kept whole; the worker's English read back (worker/simulate.ts writes it so).
-      expect(c.surface.exception('RangeError: Ra 2 > 1')).toContain('RangeError: Ra 2 > 1');
+      // An exception: a sentence of the language, its own text left out for the hover title (exceptionDetail);
+      // the worker's English read back (worker/simulate.ts writes it so).
+      expect(c.surface.exception('RangeError: Ra 2 > 1')).not.toMatch(/RangeError|Ra 2/);
       expect(c.surface.exception('X')).not.toBe(EN_SURFACE.exception('X'));
       expect(exceptionIn('No simulation: RangeError: Ra 2 > 1', c.surface)).toBe(
         c.surface.exception('RangeError: Ra 2 > 1'),
       );
+      expect(exceptionDetail('No simulation: RangeError: Ra 2 > 1', c.surface)).toBe('RangeError: Ra 2 > 1');
+      expect(exceptionDetail('No simulation: RangeError: Ra 2 > 1', EN_SURFACE)).toBe('');
       expect(exceptionIn('No simulation: RangeError: Ra 2 > 1', EN_SURFACE)).toBe(
         'No simulation: RangeError: Ra 2 > 1',
       );

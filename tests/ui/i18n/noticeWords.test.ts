@@ -1,8 +1,8 @@
 /**
  * The notices' words (issue 30, i18n/noticeWords.ts): each sentence the page writes into its notice
  * box in English (messages.ts, read from its own functions here, not copied) is found again, put
- * into Japanese and German, and its English part (an exception's text in the worker's reason; the
- * link's details when not read back) kept whole. Compiled with the page (DOM types: messages.ts's Notice).
+ * into Japanese and German, and its English part (a reason not known; the link's details when not
+ * read back) kept whole; an exception's own text goes to the hover title, out of the sentence. Compiled with the page (DOM types: messages.ts's Notice).
  */
 import { describe, expect, it } from 'vitest';
 import { catalogue as de } from '../../../src/ui/i18n/de';
@@ -25,10 +25,12 @@ describe("the notices' words (language.ts noticeParts, from messages.ts's Englis
           const parts = noticeParts(english, c);
           expect(parts, english).not.toBeNull();
           expect(parts?.[1]).toBe(reason);
+          expect(parts?.[3]).toBe('');
           expect(parts?.join('')).not.toMatch(/solver|restart|stale|input/i);
           if (gaveUp) expect(parts?.[0]).toContain(String(MAX_CONSECUTIVE_RESTARTS));
         }
-      // A reason client.ts writes is in the language, only an exception's own text kept English.
+      // A reason client.ts writes is in the language, nothing kept English: an exception's own text
+      // is the box's hover title (the fourth part), not in the sentence.
       const threw = noticeParts(
         restartMessage('views', {
           reason: 'the solver threw (TypeError: x is undefined)',
@@ -37,9 +39,11 @@ describe("the notices' words (language.ts noticeParts, from messages.ts's Englis
         }),
         c,
       );
-      expect(threw?.[1]).toBe('TypeError: x is undefined');
-      expect(threw?.join('')).toContain(reasonIn('the solver threw (TypeError: x is undefined)', c));
-      expect(threw?.join('')).not.toMatch(/solver|threw/);
+      expect(threw?.[1]).toBe('');
+      expect(threw?.[3]).toBe('TypeError: x is undefined');
+      const sentence = threw?.slice(0, 3).join('') ?? '';
+      expect(sentence).toContain(reasonIn('the solver threw (TypeError: x is undefined)', c));
+      expect(sentence).not.toMatch(/solver|threw|TypeError|undefined/);
       const link = linkNotice(['Rcr="abc" in the link is not a number; using the default 1.']);
       // The link's details in the language (linkNotices.ts), its parameter and value kept; nothing left English.
       expect(noticeParts(link, c)?.[1]).toBe('');
