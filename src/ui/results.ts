@@ -12,8 +12,8 @@ import { setCopyValue } from './copy';
 import { html, must } from './dom';
 import { formatLen, formatLenUnit, formatSignedLenUnit } from './format';
 import type { Shown } from './freshness';
-import { curvedMeaning, OtherResults } from './resultsOther';
-import { CROSS_AXIS_NOTE, curvatureNoteText, noteText, surfaceMeaning } from './resultsText';
+import { OtherResults } from './resultsOther';
+import { CROSS_AXIS_NOTE, curvatureNoteText, curvedMeaning, noteText, surfaceMeaning } from './resultsText';
 import { ScrollCues } from './scrollCue';
 import { setShownToolName } from './toolName';
 
@@ -274,7 +274,9 @@ export class ResultsPanel {
     this.set('no-scallop', '');
     must<HTMLElement>(this.root, '[data-testid="no-scallop"]').hidden = true;
     this.cuspsAndShare(e?.pattern === 'zigzag', e, value, reply?.request.input.toolRadiusMm);
-    this.setMeaning(reply === null ? '' : curvedMeaning(reply, unit));
+    this.setMeaning(
+      reply === null ? '' : curvedMeaning(reply.request.input.feedRadiusMm, reply.request.input.crossRadiusMm, unit),
+    );
     this.table(reply, unit, forward ? 'forward' : 'inverse', false);
   }
 

@@ -22,13 +22,6 @@ type ThreeAxisOk = Extract<ThreeAxisReply, { ok: true }>;
 const STEP_ID = 'result-programmed-step';
 const INTERVAL_ID = 'result-exact-interval';
 
-/** What a doubly curved point's L and heights mean, in words. */
-export function curvedMeaning(reply: CurvedOk, unit: LengthUnit): string {
-  const i = reply.request.input;
-  const r = (mm: number) => `${mm < 0 ? 'concave' : 'convex'} ${formatLenUnit(Math.abs(mm), unit)}`;
-  return `At this doubly curved point (Rf ${r(i.feedRadiusMm)} along the feed, Rc ${r(i.crossRadiusMm)} across it), L and the flank reaches are arc lengths along the surface across the feed between the CC paths, and every height is measured radially, in the cross-feed plane through the contact.`;
-}
-
 /** Draws the three-axis block and the doubly curved table; the classic panel calls these. */
 export class OtherResults {
   private readonly block: HTMLElement;

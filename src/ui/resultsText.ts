@@ -61,6 +61,12 @@ export function surfaceMeaning(surface: Surface, unit: LengthUnit): string {
     : `On this ${side} cylinder (radius ${r}, axis across the feed: the passes go around it and step along its axis), L and the flank widths are measured along the axis, and every height radially, from the cylinder.`;
 }
 
+/** What a doubly curved point's L and heights mean, in words (its radii, mm, signed: negative concave). */
+export function curvedMeaning(feedRadiusMm: number, crossRadiusMm: number, unit: LengthUnit): string {
+  const r = (mm: number) => `${mm < 0 ? 'concave' : 'convex'} ${formatLenUnit(Math.abs(mm), unit)}`;
+  return `At this doubly curved point (Rf ${r(feedRadiusMm)} along the feed, Rc ${r(crossRadiusMm)} across it), L and the flank reaches are arc lengths along the surface across the feed between the CC paths, and every height is measured radially, in the cross-feed plane through the contact.`;
+}
+
 /**
  * Why, on a cylinder whose axis runs across the feed, each corrected row equals its procedure's own
  * row: the correction combines the effective radius with the surface's radius in the section across

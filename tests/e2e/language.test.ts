@@ -702,6 +702,7 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     expect(curvedTable.presetLabel).toBe('Flächenvorgabe');
     const curvedWords = [...curvedTable.titles, ...curvedTable.presets].join(' ');
     expect(curvedWords.match(TABLE_ENGLISH), curvedWords).toBeNull();
+    expect(await text(page, '[data-testid="surface-meaning"]')).toMatch(/^An diesem doppelt gekrümmten Punkt \(Rf /);
     // A radius field's own error in German (the page's, before any worker): not a number, what was typed quoted.
     await typeInto(page, 'input-cross-radius', 'abc');
     await page.keyboard.press('Enter');
@@ -730,6 +731,14 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       .toMatch(/^Der Kreis mit Radius Reff von Sekine et al\. mit der üblichen Krümmungskorrektur /);
     expect(await text(page, '[data-testid="table-notes"]')).toMatch(/^Auf einem Zylinder werden die Verfahren oben /);
     expect(await page.locator('[data-testid="table-notes"] [lang="en"]').count()).toBe(0);
+    // What L and the heights mean on it, and what the step-over means, in German (no part marked English).
+    expect(await text(page, '[data-testid="surface-meaning"]')).toMatch(
+      /^Auf diesem konvexen Zylinder \(Radius 20,\d+ mm, Achse in Vorschubrichtung: /,
+    );
+    expect(await text(page, '[data-testid="step-over-meaning"]')).toMatch(
+      /^Der Bahnabstand L ist .* quer zum Vorschub verschieben um −y0 = -?\d+,\d+ mm Kopieren\.$/,
+    );
+    expect(await page.locator('.meaning[lang="en"], .meaning [lang="en"]').count()).toBe(0);
     await page.locator('input[name="surface"][value="plane"]').check();
     // Back to five axes: a flat end without lead or tilt lies flat, said in German with its L = 2R.
     await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();

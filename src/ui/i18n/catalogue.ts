@@ -24,6 +24,9 @@ export type Lang = 'en' | 'ja' | 'de';
 export type StaticKey =
   | 'title'
   | 'lede'
+  | 'stepOverMeaning'
+  | 'centreOffset'
+  | 'fullStop'
   | 'language'
   | 'machine'
   | 'machine5'
@@ -697,6 +700,9 @@ export interface ThreeAxisText {
   readonly minLength: string;
 }
 
+/** A surface's side at the contact. */
+export type Side = 'convex' | 'concave';
+
 /** Sentences the page words in English around numbers (results.ts, copy.ts, fields.ts), in a language. */
 export interface SaidWords {
   /** A flat end lying flat on a plane: no scallop; `diameter` is L = 2R with its unit. */
@@ -733,6 +739,13 @@ export interface SaidWords {
   readonly reason: (kind: WorkerReason) => string;
   /** A value a formula or the table cannot give (English "n/a"). */
   readonly notAvailable: string;
+  /**
+   * What L and the heights mean on a cylinder (resultsText.ts surfaceMeaning): its side, its radius
+   * with its unit, its axis along or across the feed.
+   */
+  readonly cylinderMeaning: (side: Side, radius: string, axis: 'feed' | 'cross') => string;
+  /** What they mean at a doubly curved point (resultsText.ts curvedMeaning): each radius's side and size with its unit. */
+  readonly curvedMeaning: (feed: readonly [Side, string], cross: readonly [Side, string]) => string;
   /** The surface box's presets (surfaceState.ts PRESET_LABELS) and its "custom radii", by their keys. */
   readonly surfacePresets: Readonly<Record<SurfacePresetKey, string>>;
   /** The line under the surface box for raster passes on a sloped plane (fields.ts). */

@@ -26,6 +26,11 @@ export const catalogue: Catalogue = {
   lang: 'de',
   page: {
     title: 'Bahnabstand eines Torusfräsers in jeder Anstellung',
+    stepOverMeaning:
+      'Der Bahnabstand L ist der Abstand benachbarter Kontaktpunktbahnen (CC-Bahnen), wie ein CAM-System den Zeilenabstand versteht.',
+    centreOffset:
+      'Um stattdessen den Werkzeugmittelpunkt O zu programmieren, jede CC-Bahn quer zum Vorschub verschieben um',
+    fullStop: '.',
     lede: 'Exakter Bahnabstand für eine gewählte Rautiefe, bei jedem Anstell- und Kippwinkel, in einer Richtung oder im Zickzack, neben den Näherungen von Sekine, Redonnet und Bedi (Sekine & Kameya 2022), dem Schmiegekreis und der Eckenkugel.',
     language: 'Sprache',
     machine: 'Maschine',
@@ -305,6 +310,12 @@ export const catalogue: Catalogue = {
             ? 'der Löser wurde nicht geladen'
             : 'der Löser antwortet nicht mehr',
     notAvailable: 'nicht berechenbar',
+    cylinderMeaning: (side, r, axis) =>
+      axis === 'feed'
+        ? `Auf diesem ${side === 'convex' ? 'konvexen' : 'konkaven'} Zylinder (Radius ${r}, Achse in Vorschubrichtung: die Bahnen laufen entlang der Achse) sind L und die Flankenbreiten Bogenlängen auf der Fläche zwischen den CC-Bahnen, und jede Höhe wird radial vom Zylinder aus gemessen.`
+        : `Auf diesem ${side === 'convex' ? 'konvexen' : 'konkaven'} Zylinder (Radius ${r}, Achse quer zum Vorschub: die Bahnen laufen um ihn herum und rücken entlang der Achse vor) werden L und die Flankenbreiten entlang der Achse gemessen, jede Höhe radial vom Zylinder aus.`,
+    curvedMeaning: ([fs, fr], [cs, cr]) =>
+      `An diesem doppelt gekrümmten Punkt (Rf ${fs === 'convex' ? 'konvex' : 'konkav'} ${fr} in Vorschubrichtung, Rc ${cs === 'convex' ? 'konvex' : 'konkav'} ${cr} quer dazu) sind L und die Flankenreichweiten Bogenlängen entlang der Fläche quer zum Vorschub zwischen den CC-Bahnen, und jede Höhe wird radial in der Querebene durch den Kontaktpunkt gemessen.`,
     surfacePresets: {
       custom: 'eigene Radien',
       dome: 'Kuppel (in beiden Richtungen konvex)',

@@ -26,6 +26,10 @@ export const catalogue: Catalogue = {
   lang: 'ja',
   page: {
     title: 'ラジアスエンドミルのピックフィード（任意の工具姿勢）',
+    stepOverMeaning:
+      'ピックフィード L は、隣り合う工具接触点（CC）経路の間隔です（CAM システムのピックフィードと同じ意味）。',
+    centreOffset: '工具中心点 O でプログラムする場合は、各 CC 経路を送りと直角方向に次だけずらします：',
+    fullStop: '。',
     lede: '指定したカスプ高さに対する厳密なピックフィードを、任意の前傾角・傾斜角、片方向・往復のパスについて求め、Sekine・Redonnet・Bedi の近似（Sekine & Kameya 2022）、接触点の曲率円、コーナ球と比較します。',
     language: '言語',
     machine: '機械',
@@ -288,6 +292,12 @@ export const catalogue: Catalogue = {
             ? 'ソルバーを読み込めませんでした'
             : 'ソルバーが応答しなくなりました',
     notAvailable: '算出不可',
+    cylinderMeaning: (side, r, axis) =>
+      axis === 'feed'
+        ? `この${side === 'convex' ? '凸' : '凹'}の円筒（半径 ${r}、軸は送り方向：パスは軸に沿って進む）では、L とフランク幅は CC 経路の間の面上の弧長で、高さはすべて円筒から半径方向に測ります。`
+        : `この${side === 'convex' ? '凸' : '凹'}の円筒（半径 ${r}、軸は送りと直交：パスは円筒を周回し、軸方向に送られる）では、L とフランク幅は軸方向に測り、高さはすべて円筒から半径方向に測ります。`,
+    curvedMeaning: ([fs, fr], [cs, cr]) =>
+      `この複曲面上の点（送り方向 Rf ${fs === 'convex' ? '凸' : '凹'} ${fr}、直交方向 Rc ${cs === 'convex' ? '凸' : '凹'} ${cr}）では、L とフランクの到達幅は送りと直交する方向に面に沿って測った CC 経路の間の弧長で、高さはすべて接触点を通る送り直交面内で半径方向に測ります。`,
     surfacePresets: {
       custom: '半径を指定',
       dome: 'ドーム（両方向とも凸）',

@@ -13,6 +13,7 @@ import type { ToolStorage } from '../savedTools';
 import type { Catalogue, CurvedRowTitle, FinishPhrase, LabelKey, Lang, Phrase, SurfacePresetKey } from './catalogue';
 import { describeInputErrorIn, describeThreeAxisErrorIn } from './errorText';
 import { chooseLang, LANGUAGE_KEY, langOf, localDecimal, storedLanguage } from './langChoice';
+import { meaningIn } from './meaningWords';
 import { noticeParts } from './noticeWords';
 import { notesIn } from './tableNotes';
 import { toolNameIn } from './toolNames';
@@ -29,7 +30,7 @@ export function loadCatalogue(lang: Lang): Promise<Catalogue | null> {
  * The parts of the page that stay in English in another language (their `lang` says so): the
  * teaching views (the translated ones carry their own lang), the notices' details.
  */
-const ENGLISH_PARTS = '.teaching, .notices, .meaning';
+const ENGLISH_PARTS = '.teaching, .notices';
 
 /** The page's English words of its `data-i18n` elements, read once before any language replaces them. */
 const ENGLISH = new WeakMap<Element, string>();
@@ -119,6 +120,24 @@ function localizeSurfacePresets(root: ParentNode, c: Catalogue | null): void {
   if (note.textContent !== text) note.textContent = text;
 }
 
+/**
+ * What L and the heights mean on the surface asked (results.ts writes it in English on each drawing
+ * that changes it) in the language; a sentence not known stays English, marked so.
+ */
+function surfaceMeaning(root: ParentNode, words: Catalogue): void {
+  const meaning = root.querySelector<HTMLElement>('[data-testid="surface-meaning"]');
+  const text = meaning?.textContent ?? '';
+  if (meaning === null || text === '' || text === meaning.dataset.local) return;
+  const local = meaningIn(text, words);
+  if (local === null) {
+    meaning.lang = 'en';
+    return;
+  }
+  meaning.removeAttribute('lang');
+  meaning.dataset.local = local;
+  meaning.textContent = local;
+}
+
 /** The chips' legend (toolChips.ts writes it in English on each drawing) in `c`'s language. */
 function localizeToolLegend(legend: HTMLElement, c: Catalogue | null): void {
   const text = legend.textContent ?? '';
@@ -170,6 +189,7 @@ export function localizeResults(results: object): void {
   if (share && shared) share.textContent = words.said.diameterShare(localDecimal(shared[1] ?? '', words));
   procedureNames(root, words);
   tableNotes(root, words);
+  surfaceMeaning(root, words);
   localizeSurfacePresets(root, words);
   // The finish box's words (finishPanel.ts keeps each element's English in data-phrase).
   for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]')) {

@@ -129,8 +129,8 @@ const KEPT = new Set(
   ),
 );
 
-/** Entries whose German is the English word too ("Radius R"). */
-const SAME_IN_GERMAN = new Set(['sizeR']);
+/** Entries whose German is the English word too ("Radius R", a sentence's full stop). */
+const SAME_IN_GERMAN = new Set(['sizeR', 'fullStop']);
 
 describe('the catalogues', () => {
   it("the page's data-i18n keys are the catalogues' page keys, both ways", () => {

@@ -21,6 +21,7 @@ import { catalogue as de } from '../../../src/ui/i18n/de';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
 import { noteIn, noteSentences, notesIn, WHOLE_NOTES } from '../../../src/ui/i18n/tableNotes';
 import { CROSS_AXIS_NOTE, curvatureNoteText, noteText } from '../../../src/ui/resultsText';
+import { expectWorded } from './wordedIn';
 
 const source = (path: string) => readFileSync(fileURLToPath(new URL(`../../../src/${path}`, import.meta.url)), 'utf8');
 /** The sources that write the notes' whole sentences. */
@@ -107,12 +108,7 @@ describe("the results table's notes (tableNotes.ts, from the page's English)", (
   for (const c of [ja, de])
     it(`${c.lang}: each sentence worded, no English word left, the names in the language, the decimal sign`, () => {
       const worded = NOTES.map((english) => {
-        const text = noteIn(english, c);
-        expect(text, english).not.toBeNull();
-        const t = text ?? '';
-        expect([...new Set(t.match(ENGLISH) ?? [])], t).toEqual([]);
-        if (c.lang === 'ja')
-          expect(t.match(/[A-Za-zµ][A-Za-z0-9]*/g)?.filter((w) => !KEPT.has(w)) ?? [], t).toEqual([]);
+        const t = expectWorded(noteIn(english, c), english, c, ENGLISH, KEPT);
         if (c.lang === 'de') expect(t, english).not.toMatch(/\d\.\d/);
         return t;
       });
