@@ -14,7 +14,7 @@ import type { LengthUnit } from '../core/input/units';
 import type { DoublyCurvedComparison, DoublyCurvedRow } from '../core/procedures/compareDoublyCurved';
 import type { DoublyCurvedInverse, DoublyCurvedPass } from '../core/surfaces/doublyCurved/index';
 import { curvatureLabel, type Extras, extrasJson, type JsonObject, roughnessLines } from './report';
-import { flankFacts, indent, KEY_VALUE, toolKind } from './reportExtras';
+import { exactBlock, flankFacts, givenHeight, toolKind } from './reportExtras';
 import { inverseExactJson } from './reportJson';
 import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
 
@@ -59,10 +59,6 @@ export function doublyCurvedForwardTable(
 ): string {
   const L = lengthsIn(unit);
   const e = c.exact;
-  const target =
-    extras.targetRaMm === undefined
-      ? `Scallop height h = ${L.echo(h)} ${L.u}`
-      : `Target roughness Ra = ${L.echo(extras.targetRaMm)} ${L.u}: scallop height h = ${L.length(h)} ${L.u}`;
   const facts: string[][] = [
     ['L', L.length(e.intervalMm), L.u, 'step-over: arc length along the surface between adjacent CC paths'],
     ['L/2', L.length(e.intervalMm / 2), L.u, 'half step-over'],
@@ -70,14 +66,7 @@ export function doublyCurvedForwardTable(
     ['h', L.length(e.cuspHeightMm), L.u, p.pattern === 'zigzag' ? 'highest cusp' : 'cusp height'],
   ];
   if (e.otherCuspHeightMm !== null) facts.push(['h2', L.length(e.otherCuspHeightMm), L.u, 'other cusp, zigzag']);
-  const out = [
-    caseLine(p, L),
-    target,
-    '',
-    `${PROCEDURES.exact.label}:`,
-    ...indent(renderTable(KEY_VALUE, facts, false)),
-    '',
-  ];
+  const out = [caseLine(p, L), givenHeight(h, extras, L), '', ...exactBlock(facts), ''];
   const columns: Column[] = [
     { header: 'shortcut', align: 'left' },
     { header: `L [${L.u}]`, align: 'right' },
@@ -130,8 +119,7 @@ export function doublyCurvedInverseTable(
     caseLine(p, L),
     `Step-over L = ${L.echo(e.intervalMm)} ${L.u} (L/2 = ${L.echo(e.intervalMm / 2)} ${L.u}) along the surface between CC paths`,
     '',
-    `${PROCEDURES.exact.label}:`,
-    ...indent(renderTable(KEY_VALUE, facts, false)),
+    ...exactBlock(facts),
     '',
     ...roughnessLines(roughness, e.cuspHeightMm, L),
   ].join('\n');

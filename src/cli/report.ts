@@ -20,7 +20,15 @@ import {
 } from '../core/index';
 import type { LengthUnit } from '../core/input/units';
 import { finishLines } from './finish';
-import { type Extras, flankFacts, indent, KEY_VALUE, roughnessLines, simulationLines, toolKind } from './reportExtras';
+import {
+  type Extras,
+  exactBlock,
+  flankFacts,
+  givenHeight,
+  roughnessLines,
+  simulationLines,
+  toolKind,
+} from './reportExtras';
 import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
 
 /** The table's lengths in mm. */
@@ -105,11 +113,7 @@ export function forwardTable(c: ForwardComparison, extras: Extras = {}, unit: Le
   const L = lengthsIn(unit);
   const { input, exact } = c;
   const zigzag = input.pattern === 'zigzag';
-  const target =
-    extras.targetRaMm === undefined
-      ? `Scallop height h = ${L.echo(input.scallopHeightMm)} ${L.u}`
-      : `Target roughness Ra = ${L.echo(extras.targetRaMm)} ${L.u}: scallop height h = ${L.length(input.scallopHeightMm)} ${L.u}`;
-  const out = [caseLine(input, L), target, ''];
+  const out = [caseLine(input, L), givenHeight(input.scallopHeightMm, extras, L), ''];
   const facts: string[][] = [
     ['L', L.length(exact.intervalMm), L.u, 'step-over: between adjacent cutter-contact (CC) paths'],
     ['L/2', L.length(exact.halfIntervalMm), L.u, 'half step-over'],
@@ -119,7 +123,7 @@ export function forwardTable(c: ForwardComparison, extras: Extras = {}, unit: Le
   if (exact.otherCuspHeightMm !== null) {
     facts.push(['h2', L.length(exact.otherCuspHeightMm), L.u, 'other cusp (between the wider flanks), zigzag']);
   }
-  out.push(`${PROCEDURES.exact.label}:`, ...indent(renderTable(KEY_VALUE, facts, false)));
+  out.push(...exactBlock(facts));
   if (exact.noScallop) {
     out.push(
       `  A flat end without lead or tilt leaves no scallop at any step-over up to its diameter: L = 2R for any h.`,
@@ -183,7 +187,7 @@ export function inverseTable(c: InverseComparison, extras: Extras = {}, unit: Le
     );
   }
   facts.push(...flankFacts(exact, L, 'its cusp'));
-  out.push(`${PROCEDURES.exact.label}:`, ...indent(renderTable(KEY_VALUE, facts, false)));
+  out.push(...exactBlock(facts));
   if (exact.cuspHeightMm === 0) {
     out.push('  No scallop: the flat bottom lying on the plane covers this step-over.');
   }

@@ -3,7 +3,7 @@
  * and the simulation block with its stated bounds. Lengths mm.
  */
 import type { FinishInput, FinishReport } from '../core/finish/index';
-import { type Roughness, raRuleOfThumbMm, type SimulationResult } from '../core/index';
+import { PROCEDURES, type Roughness, raRuleOfThumbMm, type SimulationResult } from '../core/index';
 import { type Column, type Lengths, lengthsIn, percent, renderTable } from './table';
 import type { X3pFacts } from './x3pOption';
 
@@ -112,6 +112,18 @@ export const KEY_VALUE: readonly Column[] = [
 /** The lines indented by two spaces (a block under its heading). */
 export function indent(lines: readonly string[]): string[] {
   return lines.map((l) => `  ${l}`);
+}
+
+/** The exact answer's facts as a block: its procedure's label, then their table indented. */
+export function exactBlock(facts: string[][]): string[] {
+  return [`${PROCEDURES.exact.label}:`, ...indent(renderTable(KEY_VALUE, facts, false))];
+}
+
+/** What a forward answer was given: the scallop height h, or the target Ra it was solved for and that h. */
+export function givenHeight(h: number, extras: Extras, L: Lengths): string {
+  return extras.targetRaMm === undefined
+    ? `Scallop height h = ${L.echo(h)} ${L.u}`
+    : `Target roughness Ra = ${L.echo(extras.targetRaMm)} ${L.u}: scallop height h = ${L.length(h)} ${L.u}`;
 }
 
 /** The tool's kind, by its corner radius: ball (Rcr = R), flat (Rcr = 0) or filleted. */

@@ -10,7 +10,7 @@
  * The bands are drawn from a strip of colours ({@link bandStripRgba}, read per pixel at its nearest
  * entry by bandMaterial.ts) at a coordinate interpolated across each triangle ({@link curvatureBandsInto}): their
  * edges follow the iso-height lines inside the triangles, not the grid's cells (a colour per vertex
- * drew them as stairs). {@link curvatureColoursInto} gives the same colour at the vertices.
+ * drew them as stairs).
  */
 
 /** The colour of a surface falling away from the tangent plane (convex) and rising from it (concave), 0-1 RGB. */
@@ -24,7 +24,7 @@ export const SHADING_BANDS = 5;
 export const BAND_TEXELS = 2 * SHADING_BANDS;
 
 /** A band's colour (0-1 RGB) into `out` at `at`: white mixed towards the hue by the band's level, every other band darker. */
-function bandColourInto(out: { [index: number]: number }, at: number, falling: boolean, band: number): void {
+export function bandColourInto(out: { [index: number]: number }, at: number, falling: boolean, band: number): void {
   const level = (band + 1) / SHADING_BANDS;
   const hue = falling ? FALLING_RGB : RISING_RGB;
   const dim = band % 2 === 1 ? 0.84 : 1;
@@ -104,31 +104,5 @@ export function curvatureBandsInto(
       const light = Math.abs(0.36 * nx - 0.48 * ny + 0.8 * nz) / len;
       shade[3 * i] = shade[3 * i + 1] = shade[3 * i + 2] = 0.75 + 0.25 * light;
     }
-  return most;
-}
-
-/**
- * The colour of each vertex (the band strip at its coordinate, times its shade), RGB into `out`
- * (at least as long as `positions`): what the patch shows at its vertices.
- * @returns the largest |height| on the patch (mm)
- */
-export function curvatureColoursInto(
-  out: { [index: number]: number },
-  positions: ArrayLike<number>,
-  rows: number,
-  columns: number,
-  flatMm: number,
-): number {
-  const n = rows * columns;
-  const uv = new Float32Array(2 * n);
-  const most = curvatureBandsInto(uv, out, positions, rows, columns, flatMm);
-  if (!(most > flatMm)) return most;
-  const rgb = new Float32Array(3);
-  for (let i = 0; i < n; i++) {
-    const texel = Math.min(BAND_TEXELS - 1, Math.floor((uv[2 * i] as number) * BAND_TEXELS));
-    const falling = texel < SHADING_BANDS;
-    bandColourInto(rgb, 0, falling, falling ? SHADING_BANDS - 1 - texel : texel - SHADING_BANDS);
-    for (let k = 0; k < 3; k++) out[3 * i + k] = (out[3 * i + k] as number) * (rgb[k] as number);
-  }
   return most;
 }

@@ -6,7 +6,33 @@
 import { describe, expect, it } from 'vitest';
 import type { DrawnSurface } from '../../src/core/output/surfaceGeometry';
 import { patchIndices, surfacePatch } from '../../src/core/output/surfaceGeometry';
-import { curvatureColoursInto, FALLING_RGB, RISING_RGB } from '../../src/render/curvatureShading';
+import {
+  BAND_TEXELS,
+  bandColourInto,
+  curvatureBandsInto,
+  FALLING_RGB,
+  RISING_RGB,
+  SHADING_BANDS,
+} from '../../src/render/curvatureShading';
+
+/**
+ * What the patch shows at its vertices, RGB: the band strip at each vertex's coordinate (as
+ * bandMaterial.ts reads it), times its shade.
+ */
+function coloursOf(positions: ArrayLike<number>, rows: number, columns: number, flatMm: number): Float32Array {
+  const n = rows * columns;
+  const out = new Float32Array(3 * n);
+  const uv = new Float32Array(2 * n);
+  if (!(curvatureBandsInto(uv, out, positions, rows, columns, flatMm) > flatMm)) return out;
+  const rgb = new Float32Array(3);
+  for (let i = 0; i < n; i++) {
+    const texel = Math.min(BAND_TEXELS - 1, Math.floor((uv[2 * i] as number) * BAND_TEXELS));
+    const falling = texel < SHADING_BANDS;
+    bandColourInto(rgb, 0, falling, falling ? SHADING_BANDS - 1 - texel : texel - SHADING_BANDS);
+    for (let k = 0; k < 3; k++) out[3 * i + k] = (out[3 * i + k] as number) * (rgb[k] as number);
+  }
+  return out;
+}
 
 const ROWS = 13;
 const COLUMNS = 17;
@@ -14,8 +40,7 @@ const COLUMNS = 17;
 /** Counts of bluish and orangish vertices of a patch 6 mm square around the CC point. */
 function hues(surface: DrawnSurface): { falling: number; rising: number; white: number } {
   const points = surfacePatch(surface, 0, 3, 3, ROWS - 1, COLUMNS - 1);
-  const colours = new Float32Array(points.length);
-  curvatureColoursInto(colours, points, ROWS, COLUMNS, 1e-9);
+  const colours = coloursOf(points, ROWS, COLUMNS, 1e-9);
   let falling = 0;
   let rising = 0;
   let white = 0;
@@ -44,7 +69,7 @@ describe('curvature shading', () => {
   });
 });
 
-describe('curvatureColoursInto on a cylinder', () => {
+describe('the colours at the vertices on a cylinder', () => {
   it('a convex cylinder (heights 0 along its tangent line, below it elsewhere): every colour finite, the tangent line pale', () => {
     const rows = 5;
     const columns = 7;
@@ -54,8 +79,7 @@ describe('curvatureColoursInto on a cylinder', () => {
         const y = c - 3;
         positions.push(r, y, -(y * y) / 10);
       }
-    const out = new Float32Array(positions.length);
-    curvatureColoursInto(out, positions, rows, columns, 0);
+    const out = coloursOf(positions, rows, columns, 0);
     expect(out.every(Number.isFinite)).toBe(true);
     // The tangent line (y = 0) in the palest band, lighter than the edges.
     expect(out[3 * 3]).toBeGreaterThan(out[0] as number);

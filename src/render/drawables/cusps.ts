@@ -12,9 +12,9 @@ import { LabelAnchor, legend } from '../labelLayer';
 import { SCENE_WORDS } from '../sceneWords';
 import {
   COLOURS,
+  Disposer,
   type Drawable,
   type DrawState,
-  disposeObjects,
   finishLine,
   lineOf,
   markerOf,
@@ -68,7 +68,7 @@ class CuspMarks {
   }
 }
 
-export class CuspsDrawable implements Drawable {
+export class CuspsDrawable extends Disposer implements Drawable {
   readonly objects: readonly Object3D[];
   private readonly dot = new SphereGeometry(1, 16, 12);
   private readonly right = new CuspMarks(this.dot, 'P_hp R', 'label-php', [1, -0.8]);
@@ -79,6 +79,7 @@ export class CuspsDrawable implements Drawable {
   private readonly pointLabels: LabelAnchor[] = [];
 
   constructor() {
+    super();
     const point = (text: string, className: string, side: readonly [number, number]) => {
       const m = framed(markerOf(this.dot, COLOURS.pHp, 'cusp'), 'origin');
       const label = new LabelAnchor(text, className, side, 8);
@@ -109,9 +110,5 @@ export class CuspsDrawable implements Drawable {
       m.position.set(p[0], p[1], p[2]);
       m.scale.setScalar(s.dotRadiusMm);
     });
-  }
-
-  dispose(): void {
-    disposeObjects(this.objects);
   }
 }

@@ -18,7 +18,7 @@ import { drawHeightsInPlace, drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import { PATCH_CROSS, PATCH_FEED, patchLineIndices } from '../outlineIndices';
 import { SCENE_WORDS } from '../sceneWords';
-import { COLOURS, type Drawable, type DrawState, disposeObjects, THIN_LINE_PX } from './parts';
+import { COLOURS, Disposer, type Drawable, type DrawState, THIN_LINE_PX } from './parts';
 
 function patchMesh(color: number, opacity: number, shaded: boolean): Mesh {
   const g = new BufferGeometry();
@@ -74,7 +74,7 @@ function fillPatch(mesh: Mesh, s: DrawState, heightMm: number): void {
 /** The h pseudo surface's grid: a line every this many rows and columns of its patch. */
 const H_GRID_EVERY = 8;
 
-export class DesignSurfacesDrawable implements Drawable {
+export class DesignSurfacesDrawable extends Disposer implements Drawable {
   private readonly design = legend(patchMesh(COLOURS.plane, 0.6, false), 'design');
   /** A curved patch: coloured by its shape, more opaque so that the colours read. */
   private readonly curved = legend(patchMesh(0xffffff, 0.85, true), 'design');
@@ -84,6 +84,7 @@ export class DesignSurfacesDrawable implements Drawable {
   readonly objects: readonly Object3D[] = [this.design, this.curved, this.hSurface];
 
   constructor() {
+    super();
     for (const patch of [this.design, this.curved]) legend(patchLines(patch, COLOURS.centre, 0.7, 0), 'design');
     legend(patchLines(this.hSurface, COLOURS.hPlane, 0.35, H_GRID_EVERY), 'hplane');
     this.design.add(this.designName);
@@ -112,9 +113,5 @@ export class DesignSurfacesDrawable implements Drawable {
     // The curved patch carries the design surface's name while it is shown.
     const parent = curved ? this.curved : this.design;
     if (this.designName.parent !== parent) parent.add(this.designName);
-  }
-
-  dispose(): void {
-    disposeObjects(this.objects);
   }
 }

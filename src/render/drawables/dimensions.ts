@@ -13,19 +13,10 @@ import type { FatLine } from '../fatLines';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import { SCENE_WORDS } from '../sceneWords';
-import {
-  COLOURS,
-  type Drawable,
-  type DrawState,
-  disposeObjects,
-  finishLine,
-  lineOf,
-  positionsOf,
-  writeLine,
-} from './parts';
+import { COLOURS, Disposer, type Drawable, type DrawState, finishLine, lineOf, positionsOf, writeLine } from './parts';
 import { PATH_SEGMENTS } from './paths';
 
-export class DimensionsDrawable implements Drawable {
+export class DimensionsDrawable extends Disposer implements Drawable {
   private readonly interval = legend(lineOf(dimensionPointCount(PATH_SEGMENTS), COLOURS.dimension), 'dimension');
   private readonly half = legend(lineOf(dimensionPointCount(PATH_SEGMENTS), COLOURS.dimension), 'dimension');
   private readonly offset = legend(lineOf(4, COLOURS.dimension), 'offset');
@@ -39,6 +30,7 @@ export class DimensionsDrawable implements Drawable {
   readonly objects: readonly Object3D[] = [this.interval, this.half, this.offset, this.step];
 
   constructor() {
+    super();
     this.step.add(this.stepLabel);
     this.interval.add(this.intervalLabel);
     this.half.add(this.halfLabel);
@@ -83,9 +75,5 @@ export class DimensionsDrawable implements Drawable {
       this.stepLabel.position.fromArray(machine.step.labelAt);
       this.stepLabel.setText(s.labels.programmedStep ?? '');
     }
-  }
-
-  dispose(): void {
-    disposeObjects(this.objects);
   }
 }

@@ -151,7 +151,7 @@ export function markerOf(dot: SphereGeometry, color: number, key: string): Mesh 
 }
 
 /** Frees the geometries, materials and textures of `objects` and of their descendants (each once). */
-export function disposeObjects(objects: readonly Object3D[]): void {
+function disposeObjects(objects: readonly Object3D[]): void {
   const geometries = new Set<BufferGeometry>();
   const materials = new Set<Material>();
   for (const root of objects)
@@ -166,5 +166,14 @@ export function disposeObjects(objects: readonly Object3D[]): void {
   for (const m of materials) {
     (m as Material & { map?: { dispose(): void } | null }).map?.dispose();
     m.dispose();
+  }
+}
+
+/** A part of the scene that frees what it made with it: {@link disposeObjects} of its objects. */
+export abstract class Disposer {
+  abstract readonly objects: readonly Object3D[];
+
+  dispose(): void {
+    disposeObjects(this.objects);
   }
 }

@@ -9,12 +9,12 @@ import { surfacePolylineInto } from '../../core/output/surfaceGeometry';
 import type { FatLine } from '../fatLines';
 import { framed } from '../framePoints';
 import { legend } from '../labelLayer';
-import { COLOURS, type Drawable, type DrawState, disposeObjects, finishLine, lineOf, positionsOf } from './parts';
+import { COLOURS, Disposer, type Drawable, type DrawState, finishLine, lineOf, positionsOf } from './parts';
 
 /** Segments of a path along the feed. */
 export const PATH_SEGMENTS = 48;
 
-export class PathsDrawable implements Drawable {
+export class PathsDrawable extends Disposer implements Drawable {
   private readonly paths: readonly FatLine[] = [0, 1, 2].map(() =>
     framed(legend(lineOf(PATH_SEGMENTS + 1, COLOURS.path), 'path'), 'points'),
   );
@@ -30,9 +30,5 @@ export class PathsDrawable implements Drawable {
       surfacePolylineInto(positionsOf(line), 0, surface, 0, s.fromMm, y, s.toMm, y, PATH_SEGMENTS);
       finishLine(line, PATH_SEGMENTS + 1);
     });
-  }
-
-  dispose(): void {
-    disposeObjects(this.objects);
   }
 }

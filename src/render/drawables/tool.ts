@@ -23,7 +23,7 @@ import { framed } from '../framePoints';
 import { drawHeightsInPlace } from '../heightExaggeration';
 import { legend } from '../labelLayer';
 import { toolOutlineIndices } from '../outlineIndices';
-import { COLOURS, type Drawable, type DrawState, disposeObjects, MARK_LINE_PX, THIN_LINE_PX } from './parts';
+import { COLOURS, Disposer, type Drawable, type DrawState, MARK_LINE_PX, THIN_LINE_PX } from './parts';
 
 /** The shank's top (where the holder starts) and the holder's top, above the tool centre O (x R). */
 export const SHANK_TOP_R = 1.5;
@@ -45,7 +45,7 @@ function holderIndices(): Uint32Array {
   return Uint32Array.from(out);
 }
 
-export class ToolDrawable implements Drawable {
+export class ToolDrawable extends Disposer implements Drawable {
   readonly objects: readonly Object3D[];
   /** One body, shared by the tool and its ghosts. */
   private readonly geometry = new BufferGeometry();
@@ -69,6 +69,7 @@ export class ToolDrawable implements Drawable {
   private readonly bodies: readonly MeshStandardMaterial[];
 
   constructor() {
+    super();
     this.geometry.setAttribute('position', new BufferAttribute(new Float32Array(0), 3));
     this.geometry.setIndex(new BufferAttribute(toolMeshIndices(TOOL_RADIAL_SEGMENTS), 1));
     const tool = new Mesh(
@@ -218,9 +219,5 @@ export class ToolDrawable implements Drawable {
     // The camera is fitted to its box about the tool axis (framePoints.ts), from these points.
     this.holder.computeBoundingSphere();
     this.holder.computeBoundingBox();
-  }
-
-  dispose(): void {
-    disposeObjects(this.objects);
   }
 }

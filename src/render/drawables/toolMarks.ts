@@ -7,18 +7,9 @@ import { axisFoot } from '../../core/output/surfaceGeometry';
 import { framed } from '../framePoints';
 import { drawnHeightMm } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
-import {
-  COLOURS,
-  type Drawable,
-  type DrawState,
-  disposeObjects,
-  finishLine,
-  lineOf,
-  markerOf,
-  positionsOf,
-} from './parts';
+import { COLOURS, Disposer, type Drawable, type DrawState, finishLine, lineOf, markerOf, positionsOf } from './parts';
 
-export class ToolMarksDrawable implements Drawable {
+export class ToolMarksDrawable extends Disposer implements Drawable {
   readonly objects: readonly Object3D[];
   /** Framed with the tool: its top, above the holder, stays in the view. */
   private readonly axis = framed(legend(lineOf(2, COLOURS.axis), 'axis'), 'points');
@@ -28,6 +19,7 @@ export class ToolMarksDrawable implements Drawable {
   private readonly foot = markerOf(this.dot, COLOURS.axis, 'axis');
 
   constructor() {
+    super();
     this.contact.add(new LabelAnchor('CC (P_base)', 'label-pbase', [0, 1], 9));
     this.centre.add(new LabelAnchor('O', 'label-centre', [1, -0.6], 7));
     this.objects = [this.axis, this.contact, this.centre, this.foot];
@@ -55,9 +47,5 @@ export class ToolMarksDrawable implements Drawable {
     this.centre.position.set(ox, oy, drawnHeightMm(map, oz));
     this.contact.scale.setScalar(s.dotRadiusMm);
     this.contact.position.set(0, 0, 0);
-  }
-
-  dispose(): void {
-    disposeObjects(this.objects);
   }
 }

@@ -10,7 +10,7 @@ import { framed } from '../framePoints';
 import { drawnHeightMm, type HeightMap } from '../heightExaggeration';
 import { LabelAnchor, legend } from '../labelLayer';
 import type { SceneWordTexts } from '../sceneWords';
-import { COLOURS, disposeObjects, finishLine, lineOf, markerOf, positionsOf, SECTION_POINTS } from './parts';
+import { COLOURS, Disposer, finishLine, lineOf, markerOf, positionsOf, SECTION_POINTS } from './parts';
 
 /** The most candidate points a frame shows. */
 const CANDIDATE_CAPACITY = 64;
@@ -24,7 +24,7 @@ export interface TraceSizes {
   readonly words: SceneWordTexts;
 }
 
-export class TraceDrawable {
+export class TraceDrawable extends Disposer {
   private readonly section = framed(legend(lineOf(SECTION_POINTS, COLOURS.trace, true), 'trace'), 'points', true);
   private readonly dot = new SphereGeometry(1, 16, 12);
   private readonly marker = framed(markerOf(this.dot, COLOURS.trace, 'trace'), 'origin', true);
@@ -33,6 +33,7 @@ export class TraceDrawable {
   readonly objects: readonly Object3D[];
 
   constructor() {
+    super();
     this.marker.renderOrder = 12;
     this.marker.add(this.label);
     const geometry = new BufferGeometry();
@@ -99,9 +100,5 @@ export class TraceDrawable {
       );
     }
     return true;
-  }
-
-  dispose(): void {
-    disposeObjects(this.objects);
   }
 }

@@ -12,18 +12,15 @@ import { evalSection, type Flank, flankSign, newSection, type PostureShape, type
  * evalSection sees a single shape.
  */
 export class ProfilePoint {
+  /** The section last evaluated (posture.ts's evalSection): its ring point, the ball's centre, is (dy, dz + Rcr). */
+  readonly section: Section = newSection();
   /** Width Y and height H of the profile point. */
   y = 0;
   h = 0;
-  /** The section's ring point (its ball's centre): ey, ez. */
-  ey = 0;
-  ez = 0;
   /** Norm of the profile's (unnormalised) normal, and the normal (sin theta, cos theta). */
   n = 0;
   st = 0;
   ct = 1;
-  /** The section last evaluated (posture.ts's evalSection). */
-  readonly section: Section = newSection();
 }
 
 /** A profile point to be filled by {@link profilePoint}. */
@@ -44,8 +41,6 @@ export function profilePoint(s: PostureShape, sign: number, delta: number, out: 
   const ct = n > 0 ? section.nCos / n : 1;
   out.y = section.dy + s.rcr * st;
   out.h = section.dz + (s.rcr * (st * st)) / (1 + ct);
-  out.ey = section.dy;
-  out.ez = section.dz + s.rcr;
   out.n = n;
   out.st = st;
   out.ct = ct;
@@ -178,8 +173,8 @@ export function feedHeightAtAngle(s: PostureShape, flank: Flank, rs: number, bet
   // The radius along the ray at beta through the section's ball: the entry (convex) or exit
   // (concave) distance, second-order insensitive to the section's error.
   const p = profilePoint(s, sign, root, at);
-  const qy = p.ey;
-  const qz = p.ez + rs;
+  const qy = p.section.dy;
+  const qz = p.section.dz + s.rcr + rs;
   // Ray direction from C: (sin beta, side cos beta).
   const te = qy * sb + side * qz * cb;
   const perp = qy * side * cb - qz * sb;
