@@ -130,6 +130,10 @@
  * first result 59.52 kB, within its 60 kB target again, the ratchet 59.55; 296.66 in all (the split
  * chunk's own compression), the ratchet 296.7. Both together: the first result 59.41 kB, the ratchet
  * 59.45; 301.98 in all, the ratchet 302.0.
+ * Then what the step-over means and what L and the heights mean on a cylinder or at a doubly
+ * curved point in each language (meaningWords.ts in the language chunk, each catalogue's words; on
+ * first use), less the scene drawables' one dispose (-0.04 kB): the first result 59.40, 302.83 in all,
+ * the ratchet 302.9.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -155,7 +159,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 302.0 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(302);
+  it('all of it, every .js file, is at most 302.9 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(302.9);
   });
 });
