@@ -9,7 +9,14 @@
  */
 import { describe, expect, it } from 'vitest';
 import { NOT_SWEPT } from '../../../src/core/finish/envelope';
-import { arealMap, arealParameters, envelopeHeightMm, feedMarks, toothModel } from '../../../src/core/finish/index';
+import {
+  arealLineMax,
+  arealMap,
+  arealParameters,
+  envelopeHeightMm,
+  feedMarks,
+  toothModel,
+} from '../../../src/core/finish/index';
 import { seededRandom } from '../../../src/core/math/seededRandom';
 import { planeIntervalMm } from '../../../src/core/surfaces/exact';
 import { scallopHeightLimits, validateForward } from '../../../src/core/surfaces/validate';
@@ -17,6 +24,8 @@ import {
   bruteEnvelopeGrid,
   bruteEnvelopeHeightMm,
   bruteFeedMarkHeightMm,
+  refineAt,
+  scatterSweep,
   type ToothSweepParams,
 } from '../../support/reference/toothSweepBruteForce';
 
@@ -276,6 +285,61 @@ describe('envelope height against the tooth-sweep brute force', () => {
       );
     }
   };
+
+  it("a line's highest point between its breaks (a ball at lead 2-3, tilt -5 to -7, fz 0.15-0.2 R): a plateau by the tip, or a jump where a level touches a turn of Phi, within 1e-9 mm of the brute force", () => {
+    // Found by a seeded search (seed 1: balls at leads under 3 degrees with tilt, fz 0.05 R to 0.65 R,
+    // every cell's highest point against a 96 x 96 map refined along its row): the highest of these
+    // lines was read at the breaks only (valleys, crests, crossings), 0.0205 and 0.0339 mm too low,
+    // and so the cell's Sp and Sz (0.13523 against 0.15564 mm, 0.11293 against 0.14721 mm).
+    const ball = (R: number, rho: number, beta: number) => ({
+      toolRadiusMm: R,
+      cornerRadiusMm: R,
+      leadAngleDeg: rho,
+      tiltAngleDeg: beta,
+    });
+    const witnesses: Array<[Case, number, number]> = [
+      [
+        {
+          label: 'ball R 5.41 lead 2.83 tilt -6.67 one-way z 6 fz 0.80',
+          tool: ball(5.406132654985413, 2.827682752609253, -6.674856464378536),
+          pattern: 'one-way',
+          intervalMm: 1.208903444358664,
+          flutes: 6,
+          fzMm: 0.7990679754795331,
+          passPhase: 0,
+        },
+        0.7384310906240958,
+        0.0818528373784512,
+      ],
+      [
+        {
+          label: 'ball R 4.60 lead 2.33 tilt -5.21 zigzag z 3 fz 0.92',
+          tool: ball(4.604738658759743, 2.331241473769769, -5.213333535939455),
+          pattern: 'zigzag',
+          intervalMm: 1.5970499619311405,
+          flutes: 3,
+          fzMm: 0.9187724319285596,
+          passPhase: 0,
+        },
+        0.22135021702824328,
+        0.31608280496553826,
+      ],
+    ];
+    for (const [c, x, y] of witnesses) {
+      const line = arealLineMax(modelOf(c), y);
+      // One sweep of the brute force for the witness and the highest point found.
+      const sc = scatterSweep(
+        bruteParams(c),
+        { x0: Math.min(x, line.x) - 0.01, x1: Math.max(x, line.x) + 0.01, y0: y - 0.01, y1: y + 0.01 },
+        80,
+      );
+      // Not below a point of the line the brute force gives (the witness), and itself a height of the
+      // line: at a jump the highest is the limit beside it, so the brute force's higher side of x.
+      expect(line.high, c.label).toBeGreaterThan(refineAt(sc, x, y).heightMm - 1e-9);
+      const near = Math.max(refineAt(sc, line.x - 1e-10, y).heightMm, refineAt(sc, line.x + 1e-10, y).heightMm);
+      expect(Math.abs(line.high - near), c.label).toBeLessThan(1e-9);
+    }
+  });
 
   it("with runout a pass reaches e beyond its flank's reach (flat end, tilt 8: it was left out, 7.5e-3 mm too high)", () => {
     const c: Case = {
