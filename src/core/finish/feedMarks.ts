@@ -140,9 +140,8 @@ export function balancedFeed(
   const probe = (fz: number) => {
     if (!noRunout) return g(fz);
     const m = model(fz);
-    const row = new RowEnvelope(m, 0);
-    const bound = feedMarkLowerBoundMm(row);
-    return bound - h > tolerance ? Math.sqrt(bound) - root : gOf(rowMarks(m, row).heightMm);
+    const bound = feedMarkLowerBoundMm(new RowEnvelope(m, 0, false));
+    return bound - h > tolerance ? Math.sqrt(bound) - root : gOf(rowMarks(m, new RowEnvelope(m, 0)).heightMm);
   };
   const fzMax = maxFeedPerToothMm(tool.toolRadiusMm);
   let lo = Math.min(fzMax, Math.sqrt(8 * tool.toolRadiusMm * h)) / 2;

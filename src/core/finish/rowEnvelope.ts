@@ -54,7 +54,12 @@ export class RowEnvelope {
   private readonly crests = new Map<PassOnLine, number>();
   private readonly peaks = new Map<PassOnLine, number>();
 
-  constructor(m: ToothModel, yMm: number) {
+  /**
+   * @param peaks bound the passes by the lowest pass's peak (its highest point: `peakXMm`), as every
+   * height of the line needs; false bounds them by its crest alone, cheaper where the tip is near
+   * (no search over the period), for a lower bound of the line's highest point that needs no more.
+   */
+  constructor(m: ToothModel, yMm: number, peaks = true) {
     this.m = m;
     this.yMm = yMm;
     const sides: Array<Array<[number, 1 | -1, number]>> = [[], []];
@@ -76,7 +81,8 @@ export class RowEnvelope {
       nearest.push(p);
       if (p?.row.reaches && (lowest === undefined || p.row.zStar < lowest.row.zStar)) lowest = p;
     }
-    this.topMm = lowest === undefined ? Number.NaN : this.passHeightOf(lowest, this.peakOf(lowest));
+    this.topMm =
+      lowest === undefined ? Number.NaN : this.passHeightOf(lowest, peaks ? this.peakOf(lowest) : this.crestOf(lowest));
     for (const [s, side] of sides.entries()) {
       // A side whose nearest pass already stands at or above the crest adds none beyond it.
       const first = nearest[s];
