@@ -25,7 +25,7 @@ import { NOT_SWEPT, PassRow, passesAt } from './envelope';
 import { gaussLegendre } from './gaussLegendre';
 import { RowEnvelope } from './rowEnvelope';
 import { RunoutRow } from './runout';
-import { runoutLineBreaks, runoutLineMax, runoutLowestMm } from './runoutLine';
+import { piecesMax, runoutLineBreaks, runoutLineMax, runoutLowestMm } from './runoutLine';
 import type { ToothModel } from './toothModel';
 
 /** The areal parameters (ISO 25178-2 names), mm except the dimensionless Ssk and Sku. */
@@ -103,9 +103,6 @@ function lowestPass(row: RowEnvelope, active: readonly number[], x: number): num
   return index;
 }
 
-/** Inner samples of each piece of a line searched for its highest point (arealLineMax). */
-const PIECE_SAMPLES = 7;
-
 /** The highest point of the line at y over one feed period: its height and x (mm). */
 export function arealLineMax(m: ToothModel, y: number): { high: number; x: number } {
   if (m.input.finish.runoutMm > 0) {
@@ -115,42 +112,10 @@ export function arealLineMax(m: ToothModel, y: number): { high: number; x: numbe
   const row = new RowEnvelope(m, y);
   const x0 = row.passes.length > 0 ? row.valleyXMm(0) : 0;
   const breaks = lineBreaks(m, row, x0);
-  const f = { value: (x: number) => row.heightAt(x) };
-  const P = m.feedPeriodMm;
-  const end = newSearchEnd();
-  let high = Number.NEGATIVE_INFINITY;
-  let at = x0;
   // Between breaks the line need not be monotone: near the tip a pass's first event can hold a
   // plateau, and where a level touches a turn of Phi (a leaning or tilted axis) one side's first
-  // event jumps, and the line with it. So each piece is sampled at PIECE_SAMPLES inner points, and
-  // where one stands above both ends the shared maximiser (Brent's method, whose golden steps close
-  // in on a jump's higher side) searches between its neighbours.
-  const heights = breaks.map((x) => row.heightAt(x));
-  const take = (h: number, x: number) => {
-    if (h > high) {
-      high = h;
-      at = x;
-    }
-  };
-  for (const [k, x] of breaks.entries()) take(heights[k] as number, x);
-  const n = PIECE_SAMPLES + 1;
-  for (let k = 0; k + 1 < breaks.length; k++) {
-    const a = breaks[k] as number;
-    const width = (breaks[k + 1] as number) - a;
-    if (!(width > 0)) continue;
-    let best = Math.max(heights[k] as number, heights[k + 1] as number);
-    let j = -1;
-    for (let i = 1; i < n; i++) {
-      const h = row.heightAt(a + (width * i) / n);
-      if (h > best) {
-        best = h;
-        j = i;
-      }
-    }
-    if (j > 0)
-      take(maximise(f, a + (width * (j - 1)) / n, a + (width * (j + 1)) / n, 2, 1e-13 * P + 1e-15, end), end.x);
-  }
-  return { high, x: at };
+  // event jumps, and the line with it: each piece is searched too (piecesMax).
+  return piecesMax((x) => row.heightAt(x), breaks, 1e-13 * m.feedPeriodMm + 1e-15, 0);
 }
 
 /** One smooth piece of a line: its ends, their heights, and the heights at the rule's nodes. */

@@ -17,7 +17,7 @@
  * The lowest point of a line is the least of its teeth's lowest points (every point of a tooth's
  * section is cut once a turn); the highest is at a change (a crest), taken on both sides of it.
  */
-import { maximise } from '../math/rootFinder';
+import { maximise, newSearchEnd } from '../math/rootFinder';
 import { NOT_CONVERGED } from './envelope';
 import { gaussLegendre } from './gaussLegendre';
 import { RunoutRow } from './runout';
@@ -114,21 +114,61 @@ export function runoutLineBreaks(m: ToothModel, row: RunoutRow, x0: number): num
   return done.sort((p, q) => p - q);
 }
 
-/** The highest point of a line over one feed period: the largest height at its breaks, either side. */
-export function runoutLineMax(m: ToothModel, row: RunoutRow, breaks: readonly number[]): { high: number; x: number } {
-  const P = m.feedPeriodMm;
+/** Inner samples of each piece of a line searched for its highest point (piecesMax). */
+const PIECE_SAMPLES = 7;
+
+/**
+ * The highest point of a line over its pieces between `breaks` (sorted): the heights at the breaks
+ * (and `beside` either side of each, for a step there), and inside each piece, which need not be
+ * monotone (a plateau by the tip, or where the event runs fast over a nearly level edge, as a flat
+ * bottom at a small lead: a peak inside a bite), PIECE_SAMPLES inner samples; where one stands
+ * above both ends the shared maximiser (Brent's method, whose golden steps close in on a jump's
+ * higher side) searches between its neighbours, to `tol` in x.
+ */
+export function piecesMax(
+  height: (x: number) => number,
+  breaks: readonly number[],
+  tol: number,
+  beside: number,
+): { high: number; x: number } {
   let high = Number.NEGATIVE_INFINITY;
   let at = breaks[0] as number;
-  for (const b of breaks) {
-    for (const x of [b - 1e-12 * P, b, b + 1e-12 * P]) {
-      const h = row.heightAt(x);
-      if (h > high) {
-        high = h;
-        at = x;
+  const take = (h: number, x: number) => {
+    if (h > high) {
+      high = h;
+      at = x;
+    }
+  };
+  const heights = breaks.map((b) => height(b));
+  for (const [k, b] of breaks.entries()) {
+    take(heights[k] as number, b);
+    if (beside > 0) for (const x of [b - beside, b + beside]) take(height(x), x);
+  }
+  const f = { value: height };
+  const end = newSearchEnd();
+  const n = PIECE_SAMPLES + 1;
+  for (let k = 0; k + 1 < breaks.length; k++) {
+    const a = breaks[k] as number;
+    const width = (breaks[k + 1] as number) - a;
+    if (!(width > 0)) continue;
+    let best = Math.max(heights[k] as number, heights[k + 1] as number);
+    let j = -1;
+    for (let i = 1; i < n; i++) {
+      const h = height(a + (width * i) / n);
+      if (h > best) {
+        best = h;
+        j = i;
       }
     }
+    if (j > 0) take(maximise(f, a + (width * (j - 1)) / n, a + (width * (j + 1)) / n, 2, tol, end), end.x);
   }
   return { high, x: at };
+}
+
+/** The highest point of a line over one feed period: at its breaks, either side, and inside its pieces. */
+export function runoutLineMax(m: ToothModel, row: RunoutRow, breaks: readonly number[]): { high: number; x: number } {
+  const P = m.feedPeriodMm;
+  return piecesMax((x) => row.heightAt(x), breaks, 1e-13 * P + 1e-15, 1e-12 * P);
 }
 
 /**

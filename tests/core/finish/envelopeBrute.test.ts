@@ -264,6 +264,28 @@ describe('envelope height against the tooth-sweep brute force', () => {
     expectHfAsBrute(c);
   });
 
+  it('hf with runout where the peak of a bite lies inside it (a flat end at lead 2.9: the event runs fast over its nearly level bottom) agrees with the brute force within 1e-9 mm', () => {
+    // Found by a seeded search (seed 1, runout up to 0.31 fz): read at the breaks only hf was 0.006917
+    // against 0.009148 mm (the line rises steeply for 0.0015 mm after a bite's start, then falls).
+    const c: Case = {
+      label: 'flat R 2.51 lead 2.88 tilt 3.85 z 1 fz 0.185 runout 0.00796',
+      tool: {
+        toolRadiusMm: 2.511864244239405,
+        cornerRadiusMm: 0,
+        leadAngleDeg: 2.8778943179454655,
+        tiltAngleDeg: 3.8548754900693893,
+      },
+      pattern: 'one-way',
+      intervalMm: 0.4084673837018037,
+      flutes: 1,
+      fzMm: 0.18504603379719597,
+      passPhase: 0,
+      runoutMm: 0.007955801471503618,
+      runoutPhaseDeg: 21.953056761994958,
+    };
+    expectHfAsBrute(c);
+  });
+
   it("the areal map's grid (sample i at (i + 1/2) dx over the cell) agrees with the brute force's within 1e-9 mm, with and without runout", () => {
     for (const c of [fixed[0] as Case, withRunout[0] as Case]) checkMap(c);
   });
