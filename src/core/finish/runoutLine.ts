@@ -95,7 +95,9 @@ export function runoutLineBreaks(m: ToothModel, row: RunoutRow, x0: number): num
         let halvings = 0;
         while (hi.x - lo.x > 1e-13 * P) {
           const mid = identAt(row, 0.5 * (lo.x + hi.x));
-          if (sameBite(m, lo, mid)) lo = mid;
+          // Across teeth the bracket follows the tooth (a fast motion of one tooth's event within it,
+          // seen as a change of bite, would lead it away from the change of tooth and close up).
+          if (lo.track !== hi.track ? mid.track === lo.track : sameBite(m, lo, mid)) lo = mid;
           else hi = mid;
           // A change of bite keeps its size as the bracket shrinks; a fast continuous motion shrinks
           // with it (a quarter after 4 halvings): then there is no change here.
