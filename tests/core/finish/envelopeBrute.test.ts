@@ -212,6 +212,23 @@ describe('envelope height against the tooth-sweep brute force', () => {
     runoutPhaseDeg: i === 0 ? 75 : 250,
   }));
 
+  /**
+   * The highest point of the line at y (arealLineMax) against the brute force (one sweep, density 80):
+   * not below the witness point (x, y), and itself a height of the line within 1e-9 mm (at a jump the
+   * highest is the limit beside it: the brute force's higher side of its x).
+   */
+  const expectLineHighAsBrute = (c: Case, x: number, y: number) => {
+    const line = arealLineMax(modelOf(c), y);
+    const sc = scatterSweep(
+      bruteParams(c),
+      { x0: Math.min(x, line.x) - 0.01, x1: Math.max(x, line.x) + 0.01, y0: y - 0.01, y1: y + 0.01 },
+      80,
+    );
+    expect(line.high, c.label).toBeGreaterThan(refineAt(sc, x, y).heightMm - 1e-9);
+    const near = Math.max(refineAt(sc, line.x - 1e-10, y).heightMm, refineAt(sc, line.x + 1e-10, y).heightMm);
+    expect(Math.abs(line.high - near), c.label).toBeLessThan(1e-9);
+  };
+
   /** hf of a case against the brute force (density 100) within 1e-9 mm. */
   const expectHfAsBrute = (c: Case) => {
     const brute = bruteFeedMarkHeightMm(bruteParams(c), 100);
@@ -306,17 +323,7 @@ describe('envelope height against the tooth-sweep brute force', () => {
       runoutMm: 0.04675655644665991,
       runoutPhaseDeg: 147.92813513427973,
     };
-    const y = 0.6401302284486489;
-    const x = 2.96;
-    const line = arealLineMax(modelOf(c), y);
-    const sc = scatterSweep(
-      bruteParams(c),
-      { x0: Math.min(x, line.x) - 0.01, x1: Math.max(x, line.x) + 0.01, y0: y - 0.01, y1: y + 0.01 },
-      80,
-    );
-    expect(line.high).toBeGreaterThan(refineAt(sc, x, y).heightMm - 1e-9);
-    const near = Math.max(refineAt(sc, line.x - 1e-10, y).heightMm, refineAt(sc, line.x + 1e-10, y).heightMm);
-    expect(Math.abs(line.high - near)).toBeLessThan(1e-9);
+    expectLineHighAsBrute(c, 2.96, 0.6401302284486489);
   });
 
   it("the areal map's grid (sample i at (i + 1/2) dx over the cell) agrees with the brute force's within 1e-9 mm, with and without runout", () => {
@@ -381,20 +388,7 @@ describe('envelope height against the tooth-sweep brute force', () => {
         0.31608280496553826,
       ],
     ];
-    for (const [c, x, y] of witnesses) {
-      const line = arealLineMax(modelOf(c), y);
-      // One sweep of the brute force for the witness and the highest point found.
-      const sc = scatterSweep(
-        bruteParams(c),
-        { x0: Math.min(x, line.x) - 0.01, x1: Math.max(x, line.x) + 0.01, y0: y - 0.01, y1: y + 0.01 },
-        80,
-      );
-      // Not below a point of the line the brute force gives (the witness), and itself a height of the
-      // line: at a jump the highest is the limit beside it, so the brute force's higher side of x.
-      expect(line.high, c.label).toBeGreaterThan(refineAt(sc, x, y).heightMm - 1e-9);
-      const near = Math.max(refineAt(sc, line.x - 1e-10, y).heightMm, refineAt(sc, line.x + 1e-10, y).heightMm);
-      expect(Math.abs(line.high - near), c.label).toBeLessThan(1e-9);
-    }
+    for (const [c, x, y] of witnesses) expectLineHighAsBrute(c, x, y);
   });
 
   it('with runout where a level touches the curve a tooth sweeps, the search drops the boxes beside it: a few thousand, within 1e-9 mm of the brute force (seed 5: it made 0.2 to 0.9 million a point and ran out of memory over a line)', () => {
