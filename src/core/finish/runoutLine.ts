@@ -132,6 +132,7 @@ export function piecesMax(
   breaks: readonly number[],
   tol: number,
   beside: number,
+  inner: (a: number, b: number) => number[] = uniformInner,
 ): { high: number; x: number } {
   let high = Number.NEGATIVE_INFINITY;
   let at = breaks[0] as number;
@@ -148,29 +149,46 @@ export function piecesMax(
   }
   const f = { value: height };
   const end = newSearchEnd();
-  const n = PIECE_SAMPLES + 1;
   for (let k = 0; k + 1 < breaks.length; k++) {
     const a = breaks[k] as number;
-    const width = (breaks[k + 1] as number) - a;
-    if (!(width > 0)) continue;
+    const b = breaks[k + 1] as number;
+    if (!(b > a)) continue;
+    const xs = [a, ...inner(a, b), b];
     let best = Math.max(heights[k] as number, heights[k + 1] as number);
     let j = -1;
-    for (let i = 1; i < n; i++) {
-      const h = height(a + (width * i) / n);
+    for (let i = 1; i + 1 < xs.length; i++) {
+      const h = height(xs[i] as number);
       if (h > best) {
         best = h;
         j = i;
       }
     }
-    if (j > 0) take(maximise(f, a + (width * (j - 1)) / n, a + (width * (j + 1)) / n, 2, tol, end), end.x);
+    if (j > 0) take(maximise(f, xs[j - 1] as number, xs[j + 1] as number, 2, tol, end), end.x);
   }
   return { high, x: at };
 }
 
-/** The highest point of a line over one feed period: at its breaks, either side, and inside its pieces. */
+/** PIECE_SAMPLES equally spaced inner points of [a, b], increasing. */
+function uniformInner(a: number, b: number): number[] {
+  const n = PIECE_SAMPLES + 1;
+  return Array.from({ length: PIECE_SAMPLES }, (_, i) => a + ((b - a) * (i + 1)) / n);
+}
+
+/** The rule's nodes in [a, b], increasing (those runoutLineBreaks checked, whose heights the row keeps). */
+function ruleInner(a: number, b: number): number[] {
+  const c = 0.5 * (a + b);
+  const r = 0.5 * (b - a);
+  const nn = RULE.nodes.length;
+  return Array.from({ length: nn }, (_, k) => c + r * (RULE.nodes[nn - 1 - k] as number));
+}
+
+/**
+ * The highest point of a line over one feed period: at its breaks, either side, and inside its pieces
+ * (sampled at the rule's nodes, whose heights the break search left in the row).
+ */
 export function runoutLineMax(m: ToothModel, row: RunoutRow, breaks: readonly number[]): { high: number; x: number } {
   const P = m.feedPeriodMm;
-  return piecesMax((x) => row.heightAt(x), breaks, 1e-13 * P + 1e-15, 1e-12 * P);
+  return piecesMax((x) => row.heightAt(x), breaks, 1e-13 * P + 1e-15, 1e-12 * P, ruleInner);
 }
 
 /**
