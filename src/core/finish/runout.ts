@@ -192,6 +192,28 @@ class Box {
   children: [Box, Box] | null = null;
 }
 
+/** The ranges over the box being built (RunoutTrack.box): t0, t1, p, q, r', h' (see partials). */
+const BOX_RANGES = new Float64Array(9);
+
+/** The partials of E . nu over the box of BOX_RANGES, nu given by its components along u1, u2 and a. */
+function along(n1: number, n2: number, an: number): [number, number] {
+  const r = BOX_RANGES;
+  return partials(
+    r[0] as number,
+    r[1] as number,
+    r[2] as number,
+    r[3] as number,
+    r[4] as number,
+    r[5] as number,
+    r[6] as number,
+    r[7] as number,
+    r[8] as number,
+    n1,
+    n2,
+    an,
+  );
+}
+
 /** Scratch for the interval evaluations. */
 const PR = new Float64Array(4);
 const PR0 = new Float64Array(4);
@@ -340,9 +362,7 @@ export class RunoutTrack {
     const u1 = m.u1;
     const u2 = m.u2;
     const a = m.axis;
-    // The partials of E . nu over the box, nu given by its components along u1, u2 and a.
-    const along = (n1: number, n2: number, an: number) =>
-      partials(t0, t1, pLo, pHi, q, drLo, drHi, dhLo, dhHi, n1, n2, an);
+    BOX_RANGES.set([t0, t1, pLo, pHi, q, drLo, drHi, dhLo, dhHi]);
     const [ktMag, ksMag] = along(u1[1], u2[1], a[1]);
     b.kRad = ktMag * b.dt + ksMag * b.ds;
     b.meets = Math.abs(b.k) <= b.kRad * (1 + 1e-12) + 1e-15 * this.scale;
