@@ -56,17 +56,28 @@ export function lineExtremes(m: ToothModel, row: RowEnvelope): { low: number; hi
   return { low, high, highX: end.x };
 }
 
-/** The feed marks of a prepared model along pass 0's CC path (y = 0). */
-export function feedMarks(m: ToothModel): FeedMarks {
+/**
+ * The feed marks of a prepared model along pass 0's CC path (y = 0).
+ * @param runoutLowMm with runout, the line's lowest height when known ({@link runoutLineLowMm}).
+ */
+export function feedMarks(m: ToothModel, runoutLowMm?: number): FeedMarks {
   if (m.input.finish.runoutMm > 0) {
     // With runout (runoutLine.ts): the least of the teeth's lowest points on the line, the highest at
     // its breaks over one turn.
     const row = new RunoutRow(m, 0);
-    const low = row.lowestMm();
+    const low = runoutLowMm ?? row.lowestMm();
     const { high, x } = runoutLineMax(m, row, runoutLineBreaks(m, row, 0));
     return { heightMm: Math.max(0, high - low), periodMm: m.feedPeriodMm, lowMm: low, highMm: high, crestXMm: x };
   }
   return rowMarks(m, new RowEnvelope(m, 0));
+}
+
+/**
+ * With runout, the lowest height along pass 0's CC path (mm): the least of the teeth's lowest points
+ * on the line, which fz does not move (the curves the teeth sweep over a line do not depend on it).
+ */
+export function runoutLineLowMm(m: ToothModel): number {
+  return new RunoutRow(m, 0).lowestMm();
 }
 
 /** The feed marks of a model without runout along a prepared line (pass 0's CC path, y = 0). */
@@ -134,8 +145,14 @@ export function balancedFeed(
   const tolerance = balancedFeedToleranceMm(h);
   const model = (fz: number) => toothModel({ tool, pattern, intervalMm, finish: { ...finish, feedPerToothMm: fz } });
   const gOf = (hf: number) => (Math.abs(hf - h) <= tolerance ? 0 : Math.sqrt(hf) - root);
-  const g = (fz: number) => gOf(feedMarks(model(fz)).heightMm);
   const noRunout = !(finish.runoutMm > 0);
+  // With runout the line's lowest height is the same at every fz: found once.
+  let low: number | undefined;
+  const g = (fz: number) => {
+    const m = model(fz);
+    if (!noRunout) low ??= runoutLineLowMm(m);
+    return gOf(feedMarks(m, low).heightMm);
+  };
   // A probe of the scan: its sign (a lower bound of hf above h is enough), and a value of that sign.
   const probe = (fz: number) => {
     if (!noRunout) return g(fz);
