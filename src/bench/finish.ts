@@ -7,7 +7,8 @@
  *
  * Keys (targets of issue 29): arealMapMs (the 256 x 256 map of one cell; target 200 ms),
  * feedMarkNsPerCall (hf along the CC path, model prepared each call; target 50,000 ns),
- * balancedFeedNsPerCall (fz*; target 1,000,000 ns). Each also as CPU time of this process
+ * balancedFeedNsPerCall (fz*; target 1,000,000 ns), balancedFeedRunoutNsPerCall (fz* of the same four
+ * cases with radial runout e 0.002-0.01 mm; target within 10 times balancedFeedNsPerCall). Each also as CPU time of this process
  * (`...CpuMs` / `...CpuNsPerCall`): the machine is shared, and wall time includes other load.
  * Inputs: the paper's tools R 3 Rcr 1 and R 6 Rcr 2, leads 5 and 15 degrees, tilt 0 and 10, both
  * patterns, 2 and 4 flutes, fz 0.05 to 0.2 mm, step-over 1 mm (seeded, the same every run).
@@ -78,6 +79,8 @@ export function finishBench(rounds: number): Record<string, number> {
   const marksCpu: number[] = [];
   const balanced: number[] = [];
   const balancedCpu: number[] = [];
+  const balancedRunout: number[] = [];
+  const balancedRunoutCpu: number[] = [];
   let sink = 0;
   for (let r = 0; r < rounds; r++) {
     const c = list[r % list.length] as Case;
@@ -100,6 +103,16 @@ export function finishBench(rounds: number): Record<string, number> {
     });
     balanced.push((w3 * 1e6) / few.length);
     balancedCpu.push((u3 * 1e6) / few.length);
+    // The same four with radial runout (e 0.002 to 0.01 mm, phases 0 to 270 degrees).
+    const [w4, u4] = timed(() => {
+      for (const [i, k] of few.entries()) {
+        const fin = { ...k.finish, runoutMm: 0.002 * (1 + ((i * 3) % 5)), runoutPhaseDeg: 90 * i };
+        const b = balancedFeed(k.tool, k.pattern, k.intervalMm, fin);
+        sink += b.ok ? b.feedPerToothMm : 0;
+      }
+    });
+    balancedRunout.push((w4 * 1e6) / few.length);
+    balancedRunoutCpu.push((u4 * 1e6) / few.length);
   }
   if (!Number.isFinite(sink)) throw new Error('non-finite result');
   return {
@@ -109,6 +122,8 @@ export function finishBench(rounds: number): Record<string, number> {
     feedMarkCpuNsPerCall: median(marksCpu),
     balancedFeedNsPerCall: median(balanced),
     balancedFeedCpuNsPerCall: median(balancedCpu),
+    balancedFeedRunoutNsPerCall: median(balancedRunout),
+    balancedFeedRunoutCpuNsPerCall: median(balancedRunoutCpu),
   };
 }
 

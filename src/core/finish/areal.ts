@@ -25,7 +25,7 @@ import { NOT_SWEPT, PassRow, passesAt } from './envelope';
 import { gaussLegendre } from './gaussLegendre';
 import { RowEnvelope } from './rowEnvelope';
 import { RunoutRow } from './runout';
-import { runoutLineBreaks, runoutLineMax, runoutLowestMm } from './runoutLine';
+import { piecesMax, runoutLineBreaks, runoutLineMax, runoutLowestMm } from './runoutLine';
 import type { ToothModel } from './toothModel';
 
 /** The areal parameters (ISO 25178-2 names), mm except the dimensionless Ssk and Sku. */
@@ -57,7 +57,7 @@ function lineBreaks(m: ToothModel, row: RowEnvelope, x0: number): number[] {
   const breaks = [x0, x0 + P];
   const active = row.activePasses();
   for (const i of active) {
-    breaks.push(into(row.valleyXMm(i)), into(row.crestXMm(i)));
+    breaks.push(into(row.valleyXMm(i)), into(row.crestXMm(i)), into(row.peakXMm(i)));
     for (const x of row.turnXsMm(i)) breaks.push(into(x));
   }
   breaks.sort((a, b) => a - b);
@@ -103,17 +103,19 @@ function lowestPass(row: RowEnvelope, active: readonly number[], x: number): num
   return index;
 }
 
-/** The highest point of the line at y over one feed period (mm). */
-function lineMax(m: ToothModel, y: number): number {
+/** The highest point of the line at y over one feed period: its height and x (mm). */
+export function arealLineMax(m: ToothModel, y: number): { high: number; x: number } {
   if (m.input.finish.runoutMm > 0) {
     const r = new RunoutRow(m, y);
-    return runoutLineMax(m, r, runoutLineBreaks(m, r, 0)).high;
+    return runoutLineMax(m, r, runoutLineBreaks(m, r, 0));
   }
   const row = new RowEnvelope(m, y);
   const x0 = row.passes.length > 0 ? row.valleyXMm(0) : 0;
-  let max = Number.NEGATIVE_INFINITY;
-  for (const x of lineBreaks(m, row, x0)) max = Math.max(max, row.heightAt(x));
-  return max;
+  const breaks = lineBreaks(m, row, x0);
+  // Between breaks the line need not be monotone: near the tip a pass's first event can hold a
+  // plateau, and where a level touches a turn of Phi (a leaning or tilted axis) one side's first
+  // event jumps, and the line with it: each piece is searched too (piecesMax).
+  return piecesMax((x) => row.heightAt(x), breaks, 1e-13 * m.feedPeriodMm + 1e-15, 0);
 }
 
 /** One smooth piece of a line: its ends, their heights, and the heights at the rule's nodes. */
@@ -474,15 +476,24 @@ export function arealSa(
   return { saMm: (sums[1] as number) / area, meanMm: mean, pieces: lines.pieces };
 }
 
+/**
+ * The highest point of the surface over one period cell (the largest line maximum over y: the shared
+ * maximiser, 24 lines then Brent's method to 1e-12 of the cross period): height and place, mm.
+ */
+export function arealPeak(m: ToothModel): { readonly highMm: number; readonly xMm: number; readonly yMm: number } {
+  const height = m.crossPeriodMm;
+  const end = newSearchEnd();
+  const highMm = maximise({ value: (y) => arealLineMax(m, y).high }, 0, height, 24, 1e-12 * height, end);
+  return { highMm, xMm: arealLineMax(m, end.x).x, yMm: end.x };
+}
+
 /** The areal parameters of a prepared model over one period cell (see the module comment). */
 export function arealParameters(m: ToothModel): ArealParameters {
-  const height = m.crossPeriodMm;
   const { area, mean, sums } = cellMoments(m, [1, 2], integrateY, new Map<number, Line>());
   const sa = (sums[1] as number) / area;
   const sq = Math.sqrt(Math.max(0, (sums[2] as number) / area));
   const low = m.input.finish.runoutMm > 0 ? runoutLowestMm(m) : new RowEnvelope(m, 0).floorMm;
-  const end = newSearchEnd();
-  const high = maximise({ value: (y) => lineMax(m, y) }, 0, height, 24, 1e-12 * height, end);
+  const high = arealPeak(m).highMm;
   // A point no tooth reaches has no height (+Infinity): the parameters are not defined.
   if (!Number.isFinite(mean) || !Number.isFinite(high)) throw new Error(NOT_SWEPT);
   const sp = high - mean;

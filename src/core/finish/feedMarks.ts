@@ -37,52 +37,47 @@ export interface FeedMarks {
   readonly crestXMm: number;
 }
 
-/**
- * Near the tool's axis (the tip, the centre of its flat bottom) the angle psi about the axis turns
- * fast along a section passing close to it, and one side's first event can stay there for a range of
- * x while the other side's comes higher: a plateau at about the tip's height, above the crest (a ball
- * at lead 3.9, tilt -0.05, zigzag, 4 teeth, fz 0.611: crest 0.003572, plateau 0.003732 mm). For arcs
- * about the lowest point the other side comes higher only while the tip is below about 4 times the
- * crest's height above the lowest point (the arc's width grows like the root of the height); within
- * this many times the line's highest is searched, not read at the crest.
- */
-const TIP_REACH = 8;
-
 /** The extremes of the surface along a line y = const over one feed period (mm). */
 export function lineExtremes(m: ToothModel, row: RowEnvelope): { low: number; high: number; highX: number } {
   const P = m.feedPeriodMm;
   if (row.passes.length === 0) return { low: Number.POSITIVE_INFINITY, high: Number.POSITIVE_INFINITY, highX: 0 };
   const x0 = row.valleyXMm(0);
   const low = Math.min(row.floorMm, row.heightAt(x0));
-  // One pass alone shapes the line (the others stay above its crest): its crest is the highest point,
-  // unless the tip is near enough above it to hold a plateau (TIP_REACH).
+  // One pass alone shapes the line (the others stay above its peak): its peak is the highest point
+  // (its crest, or a plateau near the tip: RowEnvelope.peakXMm).
   const active = row.activePasses();
-  let crest: number | undefined;
   if (active.length === 1) {
-    const i = active[0] as number;
-    const x = row.crestXMm(i);
-    const high = row.heightAt(x);
-    const tipZ = row.passes[i]?.row.tipZ ?? Number.NaN;
-    if (!(tipZ - low <= TIP_REACH * (high - low))) return { low, high, highX: x };
-    crest = x;
+    const x = row.peakXMm(active[0] as number);
+    return { low, high: row.heightAt(x), highX: x };
   }
   const f: Objective = { value: (x) => row.heightAt(x) };
   const end = newSearchEnd();
-  const high = maximise(f, x0, x0 + P, 48, 1e-13 * P + 1e-15, end, crest);
+  const high = maximise(f, x0, x0 + P, 48, 1e-13 * P + 1e-15, end);
   return { low, high, highX: end.x };
 }
 
-/** The feed marks of a prepared model along pass 0's CC path (y = 0). */
-export function feedMarks(m: ToothModel): FeedMarks {
+/**
+ * The feed marks of a prepared model along pass 0's CC path (y = 0).
+ * @param runoutLowMm with runout, the line's lowest height when known ({@link runoutLineLowMm}).
+ */
+export function feedMarks(m: ToothModel, runoutLowMm?: number): FeedMarks {
   if (m.input.finish.runoutMm > 0) {
     // With runout (runoutLine.ts): the least of the teeth's lowest points on the line, the highest at
     // its breaks over one turn.
     const row = new RunoutRow(m, 0);
-    const low = row.lowestMm();
+    const low = runoutLowMm ?? row.lowestMm();
     const { high, x } = runoutLineMax(m, row, runoutLineBreaks(m, row, 0));
     return { heightMm: Math.max(0, high - low), periodMm: m.feedPeriodMm, lowMm: low, highMm: high, crestXMm: x };
   }
   return rowMarks(m, new RowEnvelope(m, 0));
+}
+
+/**
+ * With runout, the lowest height along pass 0's CC path (mm): the least of the teeth's lowest points
+ * on the line, which fz does not move (the curves the teeth sweep over a line do not depend on it).
+ */
+export function runoutLineLowMm(m: ToothModel): number {
+  return new RunoutRow(m, 0).lowestMm();
 }
 
 /** The feed marks of a model without runout along a prepared line (pass 0's CC path, y = 0). */
@@ -150,15 +145,20 @@ export function balancedFeed(
   const tolerance = balancedFeedToleranceMm(h);
   const model = (fz: number) => toothModel({ tool, pattern, intervalMm, finish: { ...finish, feedPerToothMm: fz } });
   const gOf = (hf: number) => (Math.abs(hf - h) <= tolerance ? 0 : Math.sqrt(hf) - root);
-  const g = (fz: number) => gOf(feedMarks(model(fz)).heightMm);
   const noRunout = !(finish.runoutMm > 0);
+  // With runout the line's lowest height is the same at every fz: found once.
+  let low: number | undefined;
+  const g = (fz: number) => {
+    const m = model(fz);
+    if (!noRunout) low ??= runoutLineLowMm(m);
+    return gOf(feedMarks(m, low).heightMm);
+  };
   // A probe of the scan: its sign (a lower bound of hf above h is enough), and a value of that sign.
   const probe = (fz: number) => {
     if (!noRunout) return g(fz);
     const m = model(fz);
-    const row = new RowEnvelope(m, 0);
-    const bound = feedMarkLowerBoundMm(row);
-    return bound - h > tolerance ? Math.sqrt(bound) - root : gOf(rowMarks(m, row).heightMm);
+    const bound = feedMarkLowerBoundMm(new RowEnvelope(m, 0, false));
+    return bound - h > tolerance ? Math.sqrt(bound) - root : gOf(rowMarks(m, new RowEnvelope(m, 0)).heightMm);
   };
   const fzMax = maxFeedPerToothMm(tool.toolRadiusMm);
   let lo = Math.min(fzMax, Math.sqrt(8 * tool.toolRadiusMm * h)) / 2;

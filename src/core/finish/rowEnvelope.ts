@@ -15,6 +15,17 @@ import type { ToothModel } from './toothModel';
  */
 const CREST_JUMP = 1e-12;
 
+/**
+ * Near the tool's axis (the tip, the centre of its flat bottom) the angle psi about the axis turns
+ * fast along a section passing close to it, and one side's first event can stay there for a range of
+ * x while the other side's comes higher: a plateau at about the tip's height, above the crest (a ball
+ * at lead 3.9, tilt -0.05, zigzag, 4 teeth, fz 0.611: crest 0.003572, plateau 0.003732 mm). For arcs
+ * about the lowest point the other side comes higher only while the tip is below about 4 times the
+ * crest's height above the lowest point (the arc's width grows like the root of the height); within
+ * this many times a pass's highest point is searched, not read at the crest.
+ */
+export const TIP_REACH = 8;
+
 /** One pass on the line: its row and how global x maps to its local x (`sign (x - shift)`). */
 interface PassOnLine {
   readonly row: PassRow;
@@ -37,12 +48,18 @@ export class RowEnvelope {
   readonly passes: readonly PassOnLine[];
   /** Lowest point of the continuous surface on this line (the least of the passes' contacts), mm. */
   readonly floorMm: number;
-  /** The crest of the lowest pass (its highest point on the line), NaN when unknown, mm. */
+  /** The highest point of the lowest pass on the line (its peak), NaN when unknown, mm. */
   private readonly topMm: number;
-  /** The crests found so far, by pass. */
+  /** The crests and peaks found so far, by pass. */
   private readonly crests = new Map<PassOnLine, number>();
+  private readonly peaks = new Map<PassOnLine, number>();
 
-  constructor(m: ToothModel, yMm: number) {
+  /**
+   * @param peaks bound the passes by the lowest pass's peak (its highest point: `peakXMm`), as every
+   * height of the line needs; false bounds them by its crest alone, cheaper where the tip is near
+   * (no search over the period), for a lower bound of the line's highest point that needs no more.
+   */
+  constructor(m: ToothModel, yMm: number, peaks = true) {
     this.m = m;
     this.yMm = yMm;
     const sides: Array<Array<[number, 1 | -1, number]>> = [[], []];
@@ -64,7 +81,8 @@ export class RowEnvelope {
       nearest.push(p);
       if (p?.row.reaches && (lowest === undefined || p.row.zStar < lowest.row.zStar)) lowest = p;
     }
-    this.topMm = lowest === undefined ? Number.NaN : this.passHeightOf(lowest, this.crestOf(lowest));
+    this.topMm =
+      lowest === undefined ? Number.NaN : this.passHeightOf(lowest, peaks ? this.peakOf(lowest) : this.crestOf(lowest));
     for (const [s, side] of sides.entries()) {
       // A side whose nearest pass already stands at or above the crest adds none beyond it.
       const first = nearest[s];
@@ -167,6 +185,34 @@ export class RowEnvelope {
     if (x === undefined) {
       x = this.findCrestXMm(p);
       this.crests.set(p, x);
+    }
+    return x;
+  }
+
+  /**
+   * The global x of pass `index`'s highest point on this line over the period after its valley: its
+   * crest, unless the tool's tip is near enough above the crest to hold a plateau (see TIP_REACH):
+   * then the shared maximiser over the period (48 samples, the crest evaluated too).
+   */
+  peakXMm(index: number): number {
+    return this.peakOf(this.passes[index] as PassOnLine);
+  }
+
+  private peakOf(p: PassOnLine): number {
+    let x = this.peaks.get(p);
+    if (x === undefined) {
+      x = this.crestOf(p);
+      const high = this.passHeightOf(p, x);
+      const low = p.row.zStar;
+      if (p.row.tipZ - low <= TIP_REACH * (high - low)) {
+        const P = this.m.feedPeriodMm;
+        const v = this.levelXMm(p, p.row.bottom);
+        const end = newSearchEnd();
+        const f = { value: (t: number) => this.passHeightOf(p, t) };
+        const top = maximise(f, v, v + P, 48, 1e-13 * P + 1e-15, end, x);
+        if (top > high) x = end.x;
+      }
+      this.peaks.set(p, x);
     }
     return x;
   }

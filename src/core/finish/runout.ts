@@ -32,7 +32,7 @@
  * first, each pruned by the best so far. With e = 0 the same search gives the e = 0 surface (tested
  * against envelope.ts).
  */
-import { passesAt, envelopeHeightMm as walkHeightMm } from './envelope';
+import { PassRow, passesAt, envelopeHeightMm as walkHeightMm } from './envelope';
 import type { ToothModel } from './toothModel';
 
 const TWO_PI = 2 * Math.PI;
@@ -43,6 +43,10 @@ const TWO_PI = 2 * Math.PI;
  * below the 1e-9 mm asked.
  */
 const TINY_MM = 1e-10;
+/** Boxes of at most this size (rho dtheta + ds, mm) do not keep their children (RunoutTrack.split). */
+const CACHED_MM = 1e-6;
+/** Most boxes the tracks of one line keep between searches (RunoutRow.heightAt), about 50 MB. */
+export const MAX_KEPT = 250000;
 
 /** The profile of an edge by arc length s from the axis: flat bottom, corner, side (up to R above). */
 export interface EdgeProfile {
@@ -178,11 +182,36 @@ class Box {
   /** F = theta - omega E_x at the centre and the radius of its enclosure. */
   f = 0;
   fRad = 0;
+  /** G = F - mu K at the centre and the radius of its enclosure (F on the curve K = 0; see box). */
+  g = 0;
+  gRad = 0;
   /** Largest distance from the spindle axis of the box's edge points (theta moves them by rho dtheta). */
   rho = 0;
   /** Whether the Jacobian of (K, F) is provably regular over the box. */
   regular = false;
   children: [Box, Box] | null = null;
+}
+
+/** The ranges over the box being built (RunoutTrack.box): t0, t1, p, q, r', h' (see partials). */
+const BOX_RANGES = new Float64Array(9);
+
+/** The partials of E . nu over the box of BOX_RANGES, nu given by its components along u1, u2 and a. */
+function along(n1: number, n2: number, an: number): [number, number] {
+  const r = BOX_RANGES;
+  return partials(
+    r[0] as number,
+    r[1] as number,
+    r[2] as number,
+    r[3] as number,
+    r[4] as number,
+    r[5] as number,
+    r[6] as number,
+    r[7] as number,
+    r[8] as number,
+    n1,
+    n2,
+    an,
+  );
 }
 
 /** Scratch for the interval evaluations. */
@@ -205,6 +234,8 @@ export class RunoutTrack {
   /** Level offset of this tooth: 2 pi k / z. */
   readonly levelOffset: number;
   private readonly roots: Box[] = [];
+  /** Boxes the tracks of one line made and keep (shared), for the bound on the trees kept (RunoutRow). */
+  private readonly counter: { made: number; kept: number };
   /** Bound of the distance of any edge point from the axis. */
   private readonly rhoMax: number;
   private readonly scale: number;
@@ -217,8 +248,9 @@ export class RunoutTrack {
   eventTheta = Number.NaN;
   eventS = Number.NaN;
 
-  constructor(m: ToothModel, yLocalMm: number, tooth: number) {
+  constructor(m: ToothModel, yLocalMm: number, tooth: number, counter = { made: 0, kept: 0 }) {
     this.m = m;
+    this.counter = counter;
     this.prof = edgeProfile(m);
     this.yRel = yLocalMm - m.centreYMm;
     const f = m.input.finish;
@@ -255,6 +287,11 @@ export class RunoutTrack {
       }
     }
     this.floorBound = floor;
+  }
+
+  /** Lets go of the boxes its searches kept (their children), back to its roots. */
+  forget(): void {
+    for (const b of this.roots) b.children = null;
   }
 
   /** Distance from the spindle axis of the edge point at s: |r(s) + e e^(i phi_k)|, mm. */
@@ -302,6 +339,7 @@ export class RunoutTrack {
   /** A box over [t0, t1] x [s0, s1] with its enclosures. */
   private box(t0: number, t1: number, s0: number, s1: number): Box {
     const b = new Box();
+    this.counter.made++;
     const m = this.m;
     const tc = 0.5 * (t0 + t1);
     const sc = 0.5 * (s0 + s1);
@@ -324,7 +362,8 @@ export class RunoutTrack {
     const u1 = m.u1;
     const u2 = m.u2;
     const a = m.axis;
-    const [ktMag, ksMag] = partials(t0, t1, pLo, pHi, q, drLo, drHi, dhLo, dhHi, u1[1], u2[1], a[1]);
+    BOX_RANGES.set([t0, t1, pLo, pHi, q, drLo, drHi, dhLo, dhHi]);
+    const [ktMag, ksMag] = along(u1[1], u2[1], a[1]);
     b.kRad = ktMag * b.dt + ksMag * b.ds;
     b.meets = Math.abs(b.k) <= b.kRad * (1 + 1e-12) + 1e-15 * this.scale;
     if (!b.meets) return b;
@@ -336,22 +375,9 @@ export class RunoutTrack {
     const r2 = this.rhoMax * this.rhoMax;
     const den = b.kt * b.kt + r2 * b.ks * b.ks;
     const lambda = den > 0 ? (zt * b.kt + r2 * zs * b.ks) / den : 0;
-    const [ztMag, zsMag] = partials(
-      t0,
-      t1,
-      pLo,
-      pHi,
-      q,
-      drLo,
-      drHi,
-      dhLo,
-      dhHi,
-      u1[2] - lambda * u1[1],
-      u2[2] - lambda * u2[1],
-      a[2] - lambda * a[1],
-    );
+    const [ztMag, zsMag] = along(u1[2] - lambda * u1[1], u2[2] - lambda * u2[1], a[2] - lambda * a[1]);
     b.zLo = b.z - lambda * b.k - (ztMag * b.dt + zsMag * b.ds) * (1 + 1e-12) - 1e-15 * this.scale;
-    const wsMag = partials(t0, t1, pLo, pHi, q, drLo, drHi, dhLo, dhHi, u1[0], u2[0], a[0])[1];
+    const wsMag = along(u1[0], u2[0], a[0])[1];
     const wtLo = CS[4] as number;
     const wtHi = CS[5] as number;
     const wsLo = CS[6] as number;
@@ -368,6 +394,18 @@ export class RunoutTrack {
     const dLo = mulLo(ktLo, ktHi, fsLo, fsHi) - mulHi(ksLo, ksHi, ftLo, ftHi);
     const dHi = mulHi(ktLo, ktHi, fsLo, fsHi) - mulLo(ksLo, ksHi, ftLo, ftHi);
     b.regular = dLo > 0 || dHi < 0;
+    // F on the curve K = 0 is G = F - mu K for any mu; mu from the centre's gradients (metric rho^2)
+    // makes G stationary across the curve, so its enclosure's radius is about F's rate along the curve
+    // times the box: where a level touches the curve (F - level with a double root along it) boxes
+    // beside the touching point are dropped at about their distance from it, not at its square.
+    const gt = 1 - omega * b.wt;
+    const gs = -omega * b.ws;
+    const mu = den > 0 ? (gt * b.kt + r2 * gs * b.ks) / den : 0;
+    along(omega * u1[0] + mu * u1[1], omega * u2[0] + mu * u2[1], omega * a[0] + mu * a[1]);
+    const gtMag = Math.max(Math.abs(1 - (CS[4] as number)), Math.abs(1 - (CS[5] as number)));
+    const gsMag = Math.max(Math.abs(CS[6] as number), Math.abs(CS[7] as number));
+    b.g = b.f - mu * b.k;
+    b.gRad = (gtMag * b.dt + gsMag * b.ds) * (1 + 1e-12);
     return b;
   }
 
@@ -381,7 +419,14 @@ export class RunoutTrack {
       b.dt * b.rho > b.ds
         ? [this.box(t0, b.tc, s0, s1), this.box(b.tc, t1, s0, s1)]
         : [this.box(t0, t1, s0, b.sc), this.box(t0, t1, b.sc, s1)];
-    b.children = kids;
+    // Only boxes coarser than CACHED_MM keep their children for the line's other searches: where a
+    // level touches the curve K = 0 (F - level has a double root along it) a search splits a strip
+    // of boxes down to TINY_MM, about (size / TINY_MM)^(1/2) of them (0.1 to 0.9 million seen at a
+    // large fz with runout), which kept would grow without bound over a line's searches.
+    if (b.dt * b.rho + b.ds > CACHED_MM) {
+      b.children = kids;
+      this.counter.kept += 2;
+    }
     return kids;
   }
 
@@ -407,6 +452,10 @@ export class RunoutTrack {
       const n = Math.round((b.f - c0) / TWO_PI);
       const level = c0 + TWO_PI * n;
       if (Math.abs(b.f - level) > b.fRad) continue;
+      if (b.gRad < Math.PI) {
+        const gap = Math.abs(b.g - c0 - TWO_PI * Math.round((b.g - c0) / TWO_PI));
+        if (gap > b.gRad) continue;
+      }
       if (b.fRad < Math.PI && b.regular) {
         const z = this.solve(b, level);
         if (!Number.isNaN(z)) {
@@ -566,40 +615,99 @@ interface TrackOnLine {
   readonly track: RunoutTrack;
   readonly sign: 1 | -1;
   readonly shiftMm: number;
+  /** Its place in the order the line built its tracks (a stable name: `lastTrack`). */
+  readonly id: number;
 }
 
-/** Every tooth of every pass that reaches a line y = const (global), lowest first. */
+/** A pass that reaches a line, its teeth not yet prepared, with a lower bound of its heights there. */
+interface PendingPass {
+  readonly yLocal: number;
+  readonly sign: 1 | -1;
+  readonly shiftMm: number;
+  readonly boundMm: number;
+}
+
+/**
+ * A lower bound (mm) of every height a pass's teeth reach on the pass-local line y with runout e:
+ * every edge point is the e = 0 edge point (on the body of revolution) moved by a vector of length e,
+ * so it lies over some y' within e of y, at most e lower than the body's lowest point over y'
+ * (PassRow.zStar, a convex function of y' least on the CC path y' = 0, where it is 0).
+ */
+function passBoundMm(m: ToothModel, yLocal: number): number {
+  const e = m.input.finish.runoutMm;
+  if (Math.abs(yLocal) <= e) return -e;
+  return new PassRow(m, yLocal - Math.sign(yLocal) * e).zStar - e;
+}
+
+/**
+ * Every tooth of every pass that reaches a line y = const (global), lowest first. A pass's teeth are
+ * prepared (their boxes and floors: the costly part) only when a search needs them: when its lower
+ * bound (passBoundMm) lies below the best height found so far, nearest passes first.
+ */
 export class RunoutRow {
-  readonly tracks: readonly TrackOnLine[];
+  private readonly m: ToothModel;
+  /** The prepared teeth, by floor. */
+  private readonly list: TrackOnLine[] = [];
+  /** The prepared teeth, by id. */
+  private readonly byId: TrackOnLine[] = [];
+  /** The passes not yet prepared, by lower bound (highest first: the next is the last). */
+  private readonly pending: PendingPass[] = [];
+  /** Boxes its tracks made and keep (RunoutTrack.box, split), for the bound MAX_KEPT. */
+  private readonly counter = { made: 0, kept: 0 };
+
   constructor(m: ToothModel, yMm: number) {
-    const list: TrackOnLine[] = [];
+    this.m = m;
     passesAt(
       m,
       0,
       yMm,
       (_x, yLocal, sign, shiftMm) => {
-        for (let k = 0; k < m.input.finish.flutes; k++) {
-          const track = new RunoutTrack(m, yLocal, k);
-          if (Number.isFinite(track.floorBound)) list.push({ track, sign, shiftMm });
-        }
+        const boundMm = passBoundMm(m, yLocal);
+        if (boundMm < Number.POSITIVE_INFINITY) this.pending.push({ yLocal, sign, shiftMm, boundMm });
       },
       m.input.finish.runoutMm,
     );
-    // Each tooth's floor on this line, a rigorous lower bound to 1e-4 R: a tooth whose floor is at or
-    // above the best event so far cannot lower it.
-    for (const t of list) t.track.floor = t.track.lowestPoint(1e-4 * m.toolRadiusMm, true);
-    list.sort((p, q) => p.track.floor - q.track.floor);
-    this.tracks = list;
+    this.pending.sort((p, q) => q.boundMm - p.boundMm);
   }
 
-  /** Which track's event the last heightAt returned (-1: none) and where on its edge: theta, s. */
+  /** Boxes its tracks made, and those they keep between searches (at most MAX_KEPT past a search). */
+  boxes(): { readonly made: number; readonly kept: number } {
+    return { made: this.counter.made, kept: this.counter.kept };
+  }
+
+  /** The prepared teeth, lowest floor first (the passes prepared so far). */
+  get tracks(): readonly TrackOnLine[] {
+    return this.list;
+  }
+
+  /** Prepares the next pending pass's teeth when its bound lies below `best`; whether it did. */
+  private prepareBelow(best: number): boolean {
+    const next = this.pending[this.pending.length - 1];
+    if (next === undefined || !(next.boundMm < best)) return false;
+    this.pending.pop();
+    const m = this.m;
+    for (let k = 0; k < m.input.finish.flutes; k++) {
+      const track = new RunoutTrack(m, next.yLocal, k, this.counter);
+      if (!Number.isFinite(track.floorBound)) continue;
+      // Each tooth's floor on this line, a rigorous lower bound to 1e-4 R: a tooth whose floor is at
+      // or above the best event so far cannot lower it.
+      track.floor = track.lowestPoint(1e-4 * m.toolRadiusMm, true);
+      const t = { track, sign: next.sign, shiftMm: next.shiftMm, id: this.byId.length };
+      this.byId.push(t);
+      this.list.push(t);
+    }
+    this.list.sort((p, q) => p.track.floor - q.track.floor);
+    return true;
+  }
+
+  /** Which track's event the last heightAt returned (its id; -1: none) and where on its edge: theta, s. */
   lastTrack = -1;
   lastTheta = Number.NaN;
   lastS = Number.NaN;
 
   /** The distance from the spindle axis of the last event's edge point (heightAt), mm. */
   lastRho(): number {
-    const t = this.tracks[this.lastTrack];
+    const t = this.byId[this.lastTrack];
     return t === undefined ? 0 : t.track.radiusAt(this.lastS);
   }
 
@@ -615,19 +723,30 @@ export class RunoutRow {
       this.lastS = seen[3];
       return seen[0];
     }
+    // The boxes the line's tracks keep are bounded: past MAX_KEPT they start again from their roots.
+    if (this.counter.kept > MAX_KEPT) {
+      for (const t of this.list) t.track.forget();
+      this.counter.kept = 0;
+    }
     let best = Number.POSITIVE_INFINITY;
     this.lastTrack = -1;
-    for (let i = 0; i < this.tracks.length; i++) {
-      const t = this.tracks[i] as TrackOnLine;
-      if (t.track.floor >= best) break;
-      const h = t.track.lowestEvent(t.sign * (xMm - t.shiftMm), best);
-      if (h < best) {
-        best = h;
-        this.lastTrack = i;
-        this.lastTheta = t.track.eventTheta;
-        this.lastS = t.track.eventS;
+    // The prepared teeth (a sort may reorder them: each is searched once per round), then the next
+    // pass whose bound lies below the best, until none does.
+    const searched = new Set<number>();
+    do {
+      for (const t of this.list) {
+        if (t.track.floor >= best) break;
+        if (searched.has(t.id)) continue;
+        searched.add(t.id);
+        const h = t.track.lowestEvent(t.sign * (xMm - t.shiftMm), best);
+        if (h < best) {
+          best = h;
+          this.lastTrack = t.id;
+          this.lastTheta = t.track.eventTheta;
+          this.lastS = t.track.eventS;
+        }
       }
-    }
+    } while (this.prepareBelow(best));
     if (this.known.size < 20000) this.known.set(xMm, [best, this.lastTrack, this.lastTheta, this.lastS]);
     return best;
   }
@@ -635,7 +754,14 @@ export class RunoutRow {
   /** The lowest height of the line over all x: the least of its teeth's lowest points, mm. */
   lowestMm(): number {
     let best = Number.POSITIVE_INFINITY;
-    for (const t of this.tracks) if (t.track.floorBound < best) best = Math.min(best, t.track.lowestPoint());
+    const searched = new Set<number>();
+    do {
+      for (const t of this.list) {
+        if (searched.has(t.id)) continue;
+        searched.add(t.id);
+        if (t.track.floorBound < best) best = Math.min(best, t.track.lowestPoint());
+      }
+    } while (this.prepareBelow(best));
     return best;
   }
 }

@@ -17,7 +17,7 @@
  * The lowest point of a line is the least of its teeth's lowest points (every point of a tooth's
  * section is cut once a turn); the highest is at a change (a crest), taken on both sides of it.
  */
-import { maximise } from '../math/rootFinder';
+import { maximise, newSearchEnd } from '../math/rootFinder';
 import { NOT_CONVERGED } from './envelope';
 import { gaussLegendre } from './gaussLegendre';
 import { RunoutRow } from './runout';
@@ -95,7 +95,9 @@ export function runoutLineBreaks(m: ToothModel, row: RunoutRow, x0: number): num
         let halvings = 0;
         while (hi.x - lo.x > 1e-13 * P) {
           const mid = identAt(row, 0.5 * (lo.x + hi.x));
-          if (sameBite(m, lo, mid)) lo = mid;
+          // Across teeth the bracket follows the tooth (a fast motion of one tooth's event within it,
+          // seen as a change of bite, would lead it away from the change of tooth and close up).
+          if (lo.track !== hi.track ? mid.track === lo.track : sameBite(m, lo, mid)) lo = mid;
           else hi = mid;
           // A change of bite keeps its size as the bracket shrinks; a fast continuous motion shrinks
           // with it (a quarter after 4 halvings): then there is no change here.
@@ -114,21 +116,79 @@ export function runoutLineBreaks(m: ToothModel, row: RunoutRow, x0: number): num
   return done.sort((p, q) => p - q);
 }
 
-/** The highest point of a line over one feed period: the largest height at its breaks, either side. */
-export function runoutLineMax(m: ToothModel, row: RunoutRow, breaks: readonly number[]): { high: number; x: number } {
-  const P = m.feedPeriodMm;
+/** Inner samples of each piece of a line searched for its highest point (piecesMax). */
+const PIECE_SAMPLES = 7;
+
+/**
+ * The highest point of a line over its pieces between `breaks` (sorted): the heights at the breaks
+ * (and `beside` either side of each, for a step there), and inside each piece, which need not be
+ * monotone (a plateau by the tip, or where the event runs fast over a nearly level edge, as a flat
+ * bottom at a small lead: a peak inside a bite), PIECE_SAMPLES inner samples; where one stands
+ * above both ends the shared maximiser (Brent's method, whose golden steps close in on a jump's
+ * higher side) searches between its neighbours, to `tol` in x.
+ */
+export function piecesMax(
+  height: (x: number) => number,
+  breaks: readonly number[],
+  tol: number,
+  beside: number,
+  inner: (a: number, b: number) => number[] = uniformInner,
+): { high: number; x: number } {
   let high = Number.NEGATIVE_INFINITY;
   let at = breaks[0] as number;
-  for (const b of breaks) {
-    for (const x of [b - 1e-12 * P, b, b + 1e-12 * P]) {
-      const h = row.heightAt(x);
-      if (h > high) {
-        high = h;
-        at = x;
+  const take = (h: number, x: number) => {
+    if (h > high) {
+      high = h;
+      at = x;
+    }
+  };
+  const heights = breaks.map((b) => height(b));
+  for (const [k, b] of breaks.entries()) {
+    take(heights[k] as number, b);
+    if (beside > 0) for (const x of [b - beside, b + beside]) take(height(x), x);
+  }
+  const f = { value: height };
+  const end = newSearchEnd();
+  for (let k = 0; k + 1 < breaks.length; k++) {
+    const a = breaks[k] as number;
+    const b = breaks[k + 1] as number;
+    if (!(b > a)) continue;
+    const xs = [a, ...inner(a, b), b];
+    let best = Math.max(heights[k] as number, heights[k + 1] as number);
+    let j = -1;
+    for (let i = 1; i + 1 < xs.length; i++) {
+      const h = height(xs[i] as number);
+      if (h > best) {
+        best = h;
+        j = i;
       }
     }
+    if (j > 0) take(maximise(f, xs[j - 1] as number, xs[j + 1] as number, 2, tol, end), end.x);
   }
   return { high, x: at };
+}
+
+/** PIECE_SAMPLES equally spaced inner points of [a, b], increasing. */
+function uniformInner(a: number, b: number): number[] {
+  const n = PIECE_SAMPLES + 1;
+  return Array.from({ length: PIECE_SAMPLES }, (_, i) => a + ((b - a) * (i + 1)) / n);
+}
+
+/** The rule's nodes in [a, b], increasing (those runoutLineBreaks checked, whose heights the row keeps). */
+function ruleInner(a: number, b: number): number[] {
+  const c = 0.5 * (a + b);
+  const r = 0.5 * (b - a);
+  const nn = RULE.nodes.length;
+  return Array.from({ length: nn }, (_, k) => c + r * (RULE.nodes[nn - 1 - k] as number));
+}
+
+/**
+ * The highest point of a line over one feed period: at its breaks, either side, and inside its pieces
+ * (sampled at the rule's nodes, whose heights the break search left in the row).
+ */
+export function runoutLineMax(m: ToothModel, row: RunoutRow, breaks: readonly number[]): { high: number; x: number } {
+  const P = m.feedPeriodMm;
+  return piecesMax((x) => row.heightAt(x), breaks, 1e-13 * P + 1e-15, 1e-12 * P, ruleInner);
 }
 
 /**

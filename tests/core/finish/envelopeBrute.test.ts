@@ -9,7 +9,15 @@
  */
 import { describe, expect, it } from 'vitest';
 import { NOT_SWEPT } from '../../../src/core/finish/envelope';
-import { arealMap, arealParameters, envelopeHeightMm, feedMarks, toothModel } from '../../../src/core/finish/index';
+import {
+  arealLineMax,
+  arealMap,
+  arealParameters,
+  envelopeHeightMm,
+  feedMarks,
+  RunoutRow,
+  toothModel,
+} from '../../../src/core/finish/index';
 import { seededRandom } from '../../../src/core/math/seededRandom';
 import { planeIntervalMm } from '../../../src/core/surfaces/exact';
 import { scallopHeightLimits, validateForward } from '../../../src/core/surfaces/validate';
@@ -17,6 +25,8 @@ import {
   bruteEnvelopeGrid,
   bruteEnvelopeHeightMm,
   bruteFeedMarkHeightMm,
+  refineAt,
+  scatterSweep,
   type ToothSweepParams,
 } from '../../support/reference/toothSweepBruteForce';
 
@@ -202,6 +212,23 @@ describe('envelope height against the tooth-sweep brute force', () => {
     runoutPhaseDeg: i === 0 ? 75 : 250,
   }));
 
+  /**
+   * The highest point of the line at y (arealLineMax) against the brute force (one sweep, density 80):
+   * not below the witness point (x, y), and itself a height of the line within 1e-9 mm (at a jump the
+   * highest is the limit beside it: the brute force's higher side of its x).
+   */
+  const expectLineHighAsBrute = (c: Case, x: number, y: number) => {
+    const line = arealLineMax(modelOf(c), y);
+    const sc = scatterSweep(
+      bruteParams(c),
+      { x0: Math.min(x, line.x) - 0.01, x1: Math.max(x, line.x) + 0.01, y0: y - 0.01, y1: y + 0.01 },
+      80,
+    );
+    expect(line.high, c.label).toBeGreaterThan(refineAt(sc, x, y).heightMm - 1e-9);
+    const near = Math.max(refineAt(sc, line.x - 1e-10, y).heightMm, refineAt(sc, line.x + 1e-10, y).heightMm);
+    expect(Math.abs(line.high - near), c.label).toBeLessThan(1e-9);
+  };
+
   /** hf of a case against the brute force (density 100) within 1e-9 mm. */
   const expectHfAsBrute = (c: Case) => {
     const brute = bruteFeedMarkHeightMm(bruteParams(c), 100);
@@ -254,6 +281,51 @@ describe('envelope height against the tooth-sweep brute force', () => {
     expectHfAsBrute(c);
   });
 
+  it('hf with runout where the peak of a bite lies inside it (a flat end at lead 2.9: the event runs fast over its nearly level bottom) agrees with the brute force within 1e-9 mm', () => {
+    // Found by a seeded search (seed 1, runout up to 0.31 fz): read at the breaks only hf was 0.006917
+    // against 0.009148 mm (the line rises steeply for 0.0015 mm after a bite's start, then falls).
+    const c: Case = {
+      label: 'flat R 2.51 lead 2.88 tilt 3.85 z 1 fz 0.185 runout 0.00796',
+      tool: {
+        toolRadiusMm: 2.511864244239405,
+        cornerRadiusMm: 0,
+        leadAngleDeg: 2.8778943179454655,
+        tiltAngleDeg: 3.8548754900693893,
+      },
+      pattern: 'one-way',
+      intervalMm: 0.4084673837018037,
+      flutes: 1,
+      fzMm: 0.18504603379719597,
+      passPhase: 0,
+      runoutMm: 0.007955801471503618,
+      runoutPhaseDeg: 21.953056761994958,
+    };
+    expectHfAsBrute(c);
+  });
+
+  it("with runout a change of tooth behind a fast motion of one tooth's event is found (a flat end at lead 2.9): the line's highest within 1e-9 mm of the brute force", () => {
+    // Found by a seeded search (seed 3, runout up to 0.31 fz): bisecting on "the same bite" followed
+    // the event running fast over the nearly level bottom and closed up there, so 6 changes of tooth
+    // of this line were not breaks, and its highest was read 1.35e-3 mm low (0.077184 against 0.078636).
+    const c: Case = {
+      label: 'flat R 4.56 lead 2.88 tilt -0.22 z 3 fz 1.71 runout 0.0468',
+      tool: {
+        toolRadiusMm: 4.5630853835027665,
+        cornerRadiusMm: 0,
+        leadAngleDeg: 2.8778441557474435,
+        tiltAngleDeg: -0.22155530482996255,
+      },
+      pattern: 'one-way',
+      intervalMm: 2.5605209137945955,
+      flutes: 3,
+      fzMm: 1.7071293363690667,
+      passPhase: 0,
+      runoutMm: 0.04675655644665991,
+      runoutPhaseDeg: 147.92813513427973,
+    };
+    expectLineHighAsBrute(c, 2.96, 0.6401302284486489);
+  });
+
   it("the areal map's grid (sample i at (i + 1/2) dx over the cell) agrees with the brute force's within 1e-9 mm, with and without runout", () => {
     for (const c of [fixed[0] as Case, withRunout[0] as Case]) checkMap(c);
   });
@@ -276,6 +348,81 @@ describe('envelope height against the tooth-sweep brute force', () => {
       );
     }
   };
+
+  it("a line's highest point between its breaks (a ball at lead 2-3, tilt -5 to -7, fz 0.15-0.2 R): a plateau by the tip, or a jump where a level touches a turn of Phi, within 1e-9 mm of the brute force", () => {
+    // Found by a seeded search (seed 1: balls at leads under 3 degrees with tilt, fz 0.05 R to 0.65 R,
+    // every cell's highest point against a 96 x 96 map refined along its row): the highest of these
+    // lines was read at the breaks only (valleys, crests, crossings), 0.0205 and 0.0339 mm too low,
+    // and so the cell's Sp and Sz (0.13523 against 0.15564 mm, 0.11293 against 0.14721 mm).
+    const ball = (R: number, rho: number, beta: number) => ({
+      toolRadiusMm: R,
+      cornerRadiusMm: R,
+      leadAngleDeg: rho,
+      tiltAngleDeg: beta,
+    });
+    const witnesses: Array<[Case, number, number]> = [
+      [
+        {
+          label: 'ball R 5.41 lead 2.83 tilt -6.67 one-way z 6 fz 0.80',
+          tool: ball(5.406132654985413, 2.827682752609253, -6.674856464378536),
+          pattern: 'one-way',
+          intervalMm: 1.208903444358664,
+          flutes: 6,
+          fzMm: 0.7990679754795331,
+          passPhase: 0,
+        },
+        0.7384310906240958,
+        0.0818528373784512,
+      ],
+      [
+        {
+          label: 'ball R 4.60 lead 2.33 tilt -5.21 zigzag z 3 fz 0.92',
+          tool: ball(4.604738658759743, 2.331241473769769, -5.213333535939455),
+          pattern: 'zigzag',
+          intervalMm: 1.5970499619311405,
+          flutes: 3,
+          fzMm: 0.9187724319285596,
+          passPhase: 0,
+        },
+        0.22135021702824328,
+        0.31608280496553826,
+      ],
+    ];
+    for (const [c, x, y] of witnesses) expectLineHighAsBrute(c, x, y);
+  });
+
+  it('with runout where a level touches the curve a tooth sweeps, the search drops the boxes beside it: a few thousand, within 1e-9 mm of the brute force (seed 5: it made 0.2 to 0.9 million a point and ran out of memory over a line)', () => {
+    // Found by a seeded search (seed 5: 4 to 15 teeth, fz R/2 to R, e up to R/10): at these x the
+    // level F = theta - omega E_x touches the curve K = 0 of a tooth, and F's enclosure alone left a
+    // strip of boxes down to 1e-10 mm, about the root of the box size's inverse of them.
+    const c: Case = {
+      label: 'bull R 2.15 Rcr 1.72 lead 14.8 tilt 1.6 z 4 fz 1.57 runout 0.0645',
+      tool: {
+        toolRadiusMm: 2.1471448617521673,
+        cornerRadiusMm: 1.7217462368752425,
+        leadAngleDeg: 14.812256251461804,
+        tiltAngleDeg: 1.605600535403937,
+      },
+      pattern: 'one-way',
+      intervalMm: 2.1471448617521673 * 0.3,
+      flutes: 4,
+      fzMm: 1.5732145518277025,
+      passPhase: 0,
+      runoutMm: 0.0645120562953685,
+      runoutPhaseDeg: 322.75792186148465,
+    };
+    const y = 0.061862652980231504;
+    const row = new RunoutRow(modelOf(c), y);
+    // Density 160: at 80 the brute force was 1.6e-9 mm away at the first x (1.1e-11 at 160).
+    const sc = scatterSweep(bruteParams(c), { x0: 5.6015, x1: 5.6215, y0: y - 0.01, y1: y + 0.01 }, 160);
+    for (const x of [5.611564692127464, 5.611564689677551]) {
+      const before = row.boxes().made;
+      const h = row.heightAt(x);
+      // 208,164 and 422,914 boxes with F's enclosure alone (the mutant of the tests).
+      expect(row.boxes().made - before, `${x}`).toBeLessThan(20000);
+      expect(Math.abs(h - refineAt(sc, x, y).heightMm), `${x}`).toBeLessThan(1e-9);
+    }
+  });
 
   it("with runout a pass reaches e beyond its flank's reach (flat end, tilt 8: it was left out, 7.5e-3 mm too high)", () => {
     const c: Case = {
