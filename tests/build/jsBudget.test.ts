@@ -130,6 +130,12 @@
  * first result 59.52 kB, within its 60 kB target again, the ratchet 59.55; 296.66 in all (the split
  * chunk's own compression), the ratchet 296.7. Both together: the first result 59.41 kB, the ratchet
  * 59.45; 301.98 in all, the ratchet 302.0.
+ * Then the worker's doubly curved and three-axis jobs ask the registries (issue 27 point 3: the
+ * sloped plane's refusals apart from its solve, question.ts posturedModel, the page job's `ready`;
+ * +0.55 kB in the jobs' and the later chunk, on first use), and no preload list in a chunk the worker
+ * also runs (preloadDeps.ts: the core chunk's, whose helper touched the worker's missing document,
+ * -0.12 kB): the first result 59.40 -> 59.38 kB; 302.83 in all before it (measured on its parent:
+ * the merges since 301.98 had not raised this ratchet) -> 303.32, the ratchet 303.4.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -155,7 +161,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 302.0 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(302);
+  it('all of it, every .js file, is at most 303.4 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(303.4);
   });
 });

@@ -2,9 +2,9 @@
  * The worker's `solve` job for a doubly curved point (issue 19): the exact step-over and cusps, the
  * limits and the widest step-over from the surface registry's doubly curved model at the five-axis
  * mode's posture (core surfaces/question.ts posturedModel: issue 27 point 3, every surface through
- * its SurfaceModel, a machine mode a posture supplier), the model loaded on first use where this
- * job is (registry.ts loadSurfaceModel, awaited as the module loads); the views' parts beside it
- * from the point's solver: the sliders' limits, the roughness along the normal (a target Ra first
+ * its SurfaceModel, a machine mode a posture supplier), the model loaded on first use with this
+ * job (jobs/page.ts `ready`, which the worker awaits before its first answer); the views' parts
+ * beside it from the point's solver: the sliders' limits, the roughness along the normal (a target Ra first
  * comes to the scallop height that leaves it, doublyCurvedHeightForRaMm) and, forward, the
  * comparison rows (the plane, each cylinder, the usual correction). The request is validated again
  * (the tool and posture as validate.ts does, then this point's own checks): a bad request gets a
@@ -26,16 +26,11 @@ import { doublyCurvedSolver } from '../../core/surfaces/doublyCurved';
 import type { DoublyCurvedPass } from '../../core/surfaces/doublyCurved/types';
 import type { FiveAxisMode } from '../../core/surfaces/modes/fiveAxis';
 import { type PosturedModel, posturedModel } from '../../core/surfaces/question';
-import { loadSurfaceModel } from '../../core/surfaces/registry';
 import { validatePassAnd } from '../../core/surfaces/validate';
 import { curvedErrors, curvedSliderLimits } from '../data/curvedCheck';
 import { curvedSceneGeometry } from '../data/curvedScene';
 import { finiteLimits } from '../data/sliderLimits';
 import type { CurvedError, CurvedReply, CurvedRequest, CurvedSummary } from '../pageProtocol';
-
-// The doubly curved model loads on first use in the site (not in the first result): here, as this
-// job's module loads (itself on first use), so that the synchronous lookups below find it.
-await loadSurfaceModel('doublyCurved');
 
 /** The point's surface, its model (the registry's), and the tool at the five-axis posture (lead and tilt as given). */
 export function curvedModel(i: DoublyCurvedPass): PosturedModel & { readonly surface: DoublyCurvedSurface } {
