@@ -2,7 +2,9 @@
  * What a dynamic import preloads (Vite's build.modulePreload.resolveDependencies): the chunks the
  * imported module needs, less those its importer already imported statically (they are loaded
  * before the importer runs, so listing them in the importer only costs bytes in the first result),
- * and nothing in the solver worker (a worker has no document to add preload links to).
+ * and nothing in the solver worker or a chunk it runs (a worker has no document to add preload links
+ * to, and Vite's helper touches it when there is a link to add: the registry's load of the doubly
+ * curved model, in the core chunk that page and worker share, ran there from the worker's jobs).
  * The plugin records each chunk's static imports as the bundle is written, before Vite's own
  * preload step reads the resolver.
  */
@@ -43,8 +45,9 @@ export function preloadDeps(): {
       },
     },
     resolveDependencies: (_file, deps, { hostId, hostType }) => {
-      if (/solver\.worker/.test(hostId)) return [];
       if (hostType !== 'js') return deps;
+      const worker = [...imports.keys()].filter((f) => /solver\.worker/.test(f));
+      if (/solver\.worker/.test(hostId) || worker.some((w) => closure(w, imports).has(hostId))) return [];
       const loaded = closure(hostId, imports);
       return deps.filter((dep) => !loaded.has(dep));
     },

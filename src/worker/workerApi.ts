@@ -27,7 +27,7 @@ import type { PageTeachReply } from './teachProtocol';
 import { sceneTransferables, transferables } from './transferables';
 
 /** The jobs' modules beyond the first script, each imported on first use (the page's watchdog told: rpc.ts lazyModule). */
-const pageJob = lazyModule(() => import('./jobs/page'));
+const pageJob = lazyModule(() => import('./jobs/page').then((m) => m.ready));
 const teachJob = lazyModule(() => import('./jobs/teachPage'));
 const tableJob = lazyModule(() => import('./jobs/table'));
 const simulation = lazyModule(() => import('./simulate'));

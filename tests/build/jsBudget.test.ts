@@ -134,6 +134,13 @@
  * curved point in each language (meaningWords.ts in the language chunk, each catalogue's words; on
  * first use), less the scene drawables' one dispose (-0.04 kB): the first result 59.40, 302.83 in all,
  * the ratchet 302.9.
+ * Then the worker's doubly curved and three-axis jobs ask the registries (issue 27 point 3: the
+ * sloped plane's refusals apart from its solve, question.ts posturedModel, the page job's `ready`;
+ * +0.55 kB in the jobs' and the later chunk, on first use), and no preload list in a chunk the worker
+ * also runs (preloadDeps.ts: the core chunk's, whose helper touched the worker's missing document,
+ * -0.12 kB): the first result 59.40 -> 59.38 kB; 302.83 -> 303.32 in all. With the feed marks'
+ * searches inside each piece of a line and the bounded runout search (the finish worker's chunk, on
+ * first use, +0.9 kB): 304.23 in all, the ratchet 304.3.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -159,7 +166,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 302.9 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(302.9);
+  it('all of it, every .js file, is at most 304.3 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.3);
   });
 });

@@ -1,7 +1,7 @@
 /**
  * What a dynamic import preloads (src/build/preloadDeps.ts): the chunks the imported module needs
  * less those its importer loaded already through its static imports (transitively), everything for
- * the page's HTML, and nothing in the solver worker. Chunk graphs written out by hand (file -> its
+ * the page's HTML, and nothing in the solver worker or a chunk it runs. Chunk graphs written out by hand (file -> its
  * static imports), as Rolldown's bundle gives them to the plugin.
  */
 import type { OutputBundle } from 'rolldown';
@@ -46,5 +46,12 @@ describe('the chunks a dynamic import preloads', () => {
     expect(
       resolve('assets/view.js', ['assets/view.js'], { hostId: 'assets/solver.worker.js', hostType: 'js' }),
     ).toEqual([]);
+  });
+
+  it('nothing from a chunk the worker runs too (the core, shared with the page): its document is missing', () => {
+    // The registry's load of the doubly curved model is in the core chunk and runs in the worker.
+    const deps = ['assets/view.js', 'assets/three.js'];
+    expect(resolve('assets/view.js', deps, { hostId: 'assets/core.js', hostType: 'js' })).toEqual([]);
+    expect(resolve('assets/view.js', deps, { hostId: 'assets/math.js', hostType: 'js' })).toEqual([]);
   });
 });

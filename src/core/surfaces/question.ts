@@ -22,6 +22,7 @@ import {
 } from './mode';
 import { findMode, ownAnswerOn, postureOn } from './modes';
 import { findSurfaceModel } from './registry';
+import type { SurfaceModel } from './surface';
 
 /** A question: tool + mode + surface + pattern + target. */
 export interface Question<
@@ -170,6 +171,28 @@ export function validateQuestion<M extends ModeDescriptorBase, S extends Surface
   const target = targetErrors(q, tool, posture.pattern);
   if (target.length > 0) return { ok: false, errors: target };
   return { ok: true, value: { ...q, posture } };
+}
+
+/** A surface's model and the tool at a posture, with the pattern its passes make: what a model's answers take. */
+export interface PosturedModel {
+  readonly model: SurfaceModel<SurfaceDescriptorBase>;
+  readonly tool: ToolInput;
+  readonly posture: Posture;
+}
+
+/**
+ * The surface's model (registry.ts) and the tool at the posture the mode supplies (modes.ts), for
+ * a caller that has validated the question its own way (the worker's doubly curved and three-axis
+ * jobs, whose refusals are worded for their views). Throws for a mode or surface kind not
+ * registered, or a model that loads on first use and is not loaded yet: programming errors.
+ */
+export function posturedModel(q: Omit<Question, 'target'>): PosturedModel {
+  const mode = findMode(q.mode.kind);
+  if (mode === null) throw new Error(`no machine mode registered for kind "${q.mode.kind}"`);
+  const model = findSurfaceModel(q.surface.kind);
+  if (model === null) throw new Error(`no surface model registered for kind "${q.surface.kind}"`);
+  const posture = mode.posture(q.mode, q.pattern);
+  return { model, tool: posturedTool(q.tool, posture), posture };
 }
 
 /** Answers a validated question: the surface's model at the mode's posture (or the mode's own answer, found by the validation). */

@@ -154,20 +154,34 @@ export function slopedPlaneIntervalMm(c: SlopedPlaneCase, hMm: number): number {
 }
 
 /**
+ * The forward problem's refusals (see {@link slopedPlaneForward}) without solving it: empty when it
+ * is answered. For a caller that takes the answer from the plane's model at the slope's posture (the
+ * worker's three-axis job: surfaces/question.ts posturedModel).
+ */
+export function slopedPlaneForwardErrors(c: SlopedPlaneCase, hMm: number): ThreeAxisError[] {
+  const { errors, posture } = checkCase(c);
+  errors.push(...checkHeight(hMm));
+  if (errors.length > 0 || posture === null) return errors;
+  const s = shapeOf(c, posture);
+  if (flatOnFloor(s)) return [];
+  const limits = flankLimits(s);
+  const limitError = heightLimitError(limits.limitMm, limits.limitBy, hMm);
+  return limitError ? [limitError] : [];
+}
+
+/**
  * Forward: the steps that leave a scallop of height `hMm` (mm, along the plane's normal) on the
  * slope. Errors: tool, slope (0..90; 90 a vertical wall; 0 for waterline), raster angle (0..90),
  * h at least 1e-9 mm and below the shank or flank limit of the slope's posture. Exact to the
  * posture solver's 1e-9 mm.
  */
 export function slopedPlaneForward(c: SlopedPlaneCase, hMm: number): ThreeAxisResult<SlopedPlaneAnswer> {
-  const { errors, posture } = checkCase(c);
-  errors.push(...checkHeight(hMm));
-  if (errors.length > 0 || posture === null) return { ok: false, errors };
+  const errors = slopedPlaneForwardErrors(c, hMm);
+  if (errors.length > 0) return { ok: false, errors };
+  const posture = slopePosture(c.slopeDeg, effectiveRasterAngleDeg(c));
   const s = shapeOf(c, posture);
   const limits = flankLimits(s);
   if (flatOnFloor(s)) return { ok: true, value: answer(c, posture, 2 * s.a, 0, true, Number.POSITIVE_INFINITY) };
-  const limitError = heightLimitError(limits.limitMm, limits.limitBy, hMm);
-  if (limitError) return { ok: false, errors: [limitError] };
   const right = flankWidthMm(s, 'right', hMm);
   const L = posture.tiltRad === 0 ? 2 * right : right + flankWidthMm(s, 'left', hMm);
   return { ok: true, value: answer(c, posture, L, hMm, false, limits.limitMm) };
@@ -204,9 +218,7 @@ function answer(
   limit: number,
 ): SlopedPlaneAnswer {
   return {
-    intervalMm: L,
-    horizontalStepMm: L * p.horizontalStepPerInterval,
-    stepDownMm: c.passes === 'waterline' ? L * sinDeg(c.slopeDeg) : null,
+    ...programmedSteps(c, p, L),
     cuspHeightMm: cusp,
     leadDeg: p.leadDeg,
     tiltDeg: p.tiltDeg,
@@ -215,8 +227,21 @@ function answer(
   };
 }
 
+/** The step-over L along the plane and the steps programmed for it (mm): Lxy, and dz for waterline passes. */
+export function programmedSteps(
+  c: SlopedPlaneCase,
+  p: SlopePosture,
+  L: number,
+): Pick<SlopedPlaneAnswer, 'intervalMm' | 'horizontalStepMm' | 'stepDownMm'> {
+  return {
+    intervalMm: L,
+    horizontalStepMm: L * p.horizontalStepPerInterval,
+    stepDownMm: c.passes === 'waterline' ? L * sinDeg(c.slopeDeg) : null,
+  };
+}
+
 /** Converts a programmed step to L along the plane (mm). */
-function intervalOfStep(c: SlopedPlaneCase, p: SlopePosture, step: ProgrammedStep): number {
+export function intervalOfStep(c: SlopedPlaneCase, p: SlopePosture, step: ProgrammedStep): number {
   if (step.field === 'interval') return step.mm;
   if (step.field === 'stepDown') return step.mm / sinDeg(c.slopeDeg);
   return step.mm / p.horizontalStepPerInterval;
@@ -237,6 +262,21 @@ function stepOfInterval(c: SlopedPlaneCase, p: SlopePosture, field: ThreeAxisFie
  * still leaves a scallop (`beyond-step`), named in the step's own terms; `dz` only for waterline.
  */
 export function slopedPlaneInverse(c: SlopedPlaneCase, step: ProgrammedStep): ThreeAxisResult<SlopedPlaneAnswer> {
+  const errors = slopedPlaneInverseErrors(c, step);
+  if (errors.length > 0) return { ok: false, errors };
+  const posture = slopePosture(c.slopeDeg, effectiveRasterAngleDeg(c));
+  const s = shapeOf(c, posture);
+  const L = intervalOfStep(c, posture, step);
+  if (flatOnFloor(s)) return { ok: true, value: answer(c, posture, L, 0, true, Number.POSITIVE_INFINITY) };
+  const limitMm = flankLimits(s).limitMm;
+  return { ok: true, value: answer(c, posture, L, oneWayCuspHeightMm(s, L, limitMm), false, limitMm) };
+}
+
+/**
+ * The inverse problem's refusals (see {@link slopedPlaneInverse}) without solving it: empty when it
+ * is answered (as {@link slopedPlaneForwardErrors}).
+ */
+export function slopedPlaneInverseErrors(c: SlopedPlaneCase, step: ProgrammedStep): ThreeAxisError[] {
   const { errors, posture } = checkCase(c);
   errors.push(...checkStep(step.field, step.mm));
   if (step.field === 'stepDown' && c.passes !== 'waterline')
@@ -249,7 +289,7 @@ export function slopedPlaneInverse(c: SlopedPlaneCase, step: ProgrammedStep): Th
         'is the step of waterline passes: give raster passes a horizontal step Lxy.',
       ),
     );
-  if (errors.length > 0 || posture === null) return { ok: false, errors };
+  if (errors.length > 0 || posture === null) return errors;
   const s = shapeOf(c, posture);
   const L = intervalOfStep(c, posture, step);
   const limits = flankLimits(s);
@@ -260,31 +300,24 @@ export function slopedPlaneInverse(c: SlopedPlaneCase, step: ProgrammedStep): Th
       : 0;
   if (!(maxL > 0)) {
     const e = heightLimitError(limits.limitMm, limits.limitBy, 0);
-    return { ok: false, errors: e ? [{ ...e, field: step.field, got: step.mm }] : [] };
+    return e ? [{ ...e, field: step.field, got: step.mm }] : [];
   }
-  if (!(L < maxL) && !(flatOnFloor(s) && L <= maxL)) {
-    const limitStep = stepOfInterval(c, posture, step.field, maxL);
-    const why = flatOnFloor(s)
-      ? 'the tool diameter: beyond it adjacent passes leave a ridge of uncut floor'
-      : limits.limitBy.startsWith('shank')
-        ? 'the widest step at this slope whose cusp the corner still forms; beyond it the shank (the tool side, uphill) forms the cusp'
-        : `the widest step at this slope that still leaves a scallop; beyond it the ${sideWord(limits.limitBy)} flank leaves a wall`;
-    return {
-      ok: false,
-      errors: [
-        threeAxisError(
-          step.field,
-          !flatOnFloor(s) && limits.limitBy.startsWith('shank') ? 'shank-cuts' : 'beyond-step',
-          step.mm,
-          limitStep,
-          `must be below ${formatNumber(limitStep)} mm (got ${step.mm}), ${why}.`,
-        ),
-      ],
-    };
-  }
-  if (flatOnFloor(s)) return { ok: true, value: answer(c, posture, L, 0, true, Number.POSITIVE_INFINITY) };
-  const cusp = oneWayCuspHeightMm(s, L, limits.limitMm);
-  return { ok: true, value: answer(c, posture, L, cusp, false, limits.limitMm) };
+  if (L < maxL || (flatOnFloor(s) && L <= maxL)) return [];
+  const limitStep = stepOfInterval(c, posture, step.field, maxL);
+  const why = flatOnFloor(s)
+    ? 'the tool diameter: beyond it adjacent passes leave a ridge of uncut floor'
+    : limits.limitBy.startsWith('shank')
+      ? 'the widest step at this slope whose cusp the corner still forms; beyond it the shank (the tool side, uphill) forms the cusp'
+      : `the widest step at this slope that still leaves a scallop; beyond it the ${sideWord(limits.limitBy)} flank leaves a wall`;
+  return [
+    threeAxisError(
+      step.field,
+      !flatOnFloor(s) && limits.limitBy.startsWith('shank') ? 'shank-cuts' : 'beyond-step',
+      step.mm,
+      limitStep,
+      `must be below ${formatNumber(limitStep)} mm (got ${step.mm}), ${why}.`,
+    ),
+  ];
 }
 
 /**

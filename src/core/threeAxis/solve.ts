@@ -10,7 +10,7 @@ import type { ThreeAxisAnswer, ThreeAxisInputError, ThreeAxisProblem } from './v
 import { waterlineForward, waterlineInverse } from './waterlineRevolution';
 
 /** The solvers' errors as input errors (same fields, codes and messages). */
-function fromSolver(errors: readonly ThreeAxisError[]): ThreeAxisInputError[] {
+export function fromSolver(errors: readonly ThreeAxisError[]): ThreeAxisInputError[] {
   return errors.map((e) => ({ field: e.field, code: e.code, got: e.got, limit: e.limit, message: e.message }));
 }
 

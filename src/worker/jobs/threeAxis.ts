@@ -1,18 +1,35 @@
 /**
  * The worker's `solve` job for three-axis machining (issue 20): the programmed step (Lxy or dz), L
- * along the surface, the cusp and the equivalent lead and tilt (core solveThreeAxis); on a surface
- * of revolution the pair of passes in the meridian plane; and the slope sweep the chart draws. The
- * request is validated again from its numbers (core validateThreeAxis): a bad request gets a typed
- * error reply, never an exception.
+ * along the surface, the cusp and the equivalent lead and tilt; on a surface of revolution the pair
+ * of passes in the meridian plane; and the slope sweep the chart draws. On a sloped plane the step-
+ * over and the cusp are the surface registry's plane model's at the posture the three-axis mode
+ * supplies (core surfaces/question.ts posturedModel: issue 27 point 3, a machine mode a posture
+ * supplier), the refusals and the programmed steps the sloped plane's own (threeAxis/slopedPlane.ts);
+ * waterline passes on a surface of revolution are the waterline solver's (core solveThreeAxis, the
+ * mode's own answer's solver: their passes are not congruent, and dz is not a question's target).
+ * The request is validated again from its numbers (core validateThreeAxis): a bad request gets a
+ * typed error reply, never an exception.
  */
+
+import type { PlaneSurface } from '../../core/domain/surface';
 import { roughnessSummary } from '../../core/roughness/raTarget';
 import { slopedPlaneRoughness } from '../../core/roughness/slopedPlane';
-import { effectiveRasterAngleDeg } from '../../core/threeAxis/slopedPlane';
+import type { ThreeAxisMode } from '../../core/surfaces/modes/threeAxis';
+import { posturedModel } from '../../core/surfaces/question';
+import {
+  effectiveRasterAngleDeg,
+  intervalOfStep,
+  programmedSteps,
+  type SlopedPlaneCase,
+  slopedPlaneForwardErrors,
+  slopedPlaneInverseErrors,
+} from '../../core/threeAxis/slopedPlane';
 import { slopePosture } from '../../core/threeAxis/slopePosture';
 import { rasterWaterlineCrossingDeg, slopeSweep } from '../../core/threeAxis/slopeSweep';
-import { solveThreeAxis } from '../../core/threeAxis/solve';
+import { fromSolver, solveThreeAxis } from '../../core/threeAxis/solve';
 import {
   type RawThreeAxisInput,
+  type ThreeAxisAnswer,
   type ThreeAxisInputError,
   type ThreeAxisProblem,
   validateThreeAxis,
@@ -42,19 +59,66 @@ export function rawOfThreeAxis(p: ThreeAxisProblem): RawThreeAxisInput {
   };
 }
 
+const PLANE: PlaneSurface = { kind: 'plane' };
+
 /**
- * The problem validated again and solved, or its errors (the page validates its request and shows
- * these, the solver's refusals, from the reply on their fields).
+ * A sloped plane's answer: the plane's model (the surface registry's) at the posture the
+ * three-axis mode supplies (the mode registry's), one-way; the steps programmed for its L. Null
+ * when the sloped plane refuses the problem (slopedPlaneForwardErrors, slopedPlaneInverseErrors).
+ */
+export function slopedPlaneByModel(
+  c: SlopedPlaneCase,
+  quantity: ThreeAxisProblem['quantity'],
+  mm: number,
+): { ok: true; value: ThreeAxisAnswer } | { ok: false; errors: readonly ThreeAxisInputError[] } {
+  const step = quantity === 'h' ? null : { field: quantity, mm };
+  const errors = step === null ? slopedPlaneForwardErrors(c, mm) : slopedPlaneInverseErrors(c, step);
+  if (errors.length > 0) return { ok: false, errors: fromSolver(errors) };
+  const mode: ThreeAxisMode = {
+    kind: 'threeAxis',
+    slopeDeg: c.slopeDeg,
+    passes: c.passes,
+    rasterAngleDeg: c.rasterAngleDeg,
+  };
+  const { model, tool, posture } = posturedModel({ tool: c, mode, surface: PLANE, pattern: 'one-way' });
+  const pass = { ...tool, pattern: posture.pattern, surface: PLANE };
+  const slope = slopePosture(c.slopeDeg, effectiveRasterAngleDeg(c));
+  const noScallop = model.leavesNoScallop(tool, PLANE);
+  let L: number;
+  let cusp = 0;
+  if (step === null) {
+    const a = model.forward({ ...pass, scallopHeightMm: mm });
+    L = a.intervalMm;
+    cusp = a.cuspHeightMm;
+  } else {
+    L = intervalOfStep(c, slope, step);
+    if (!noScallop) cusp = model.inverse({ ...pass, intervalMm: L }).cuspHeightMm;
+  }
+  return {
+    ok: true,
+    value: {
+      passes: c.passes,
+      ...programmedSteps(c, slope, L),
+      cuspHeightMm: cusp,
+      leadDeg: posture.leadAngleDeg,
+      tiltDeg: posture.tiltAngleDeg,
+      noScallop,
+    },
+  };
+}
+
+/**
+ * The problem validated again and answered (a sloped plane by the plane's model at the mode's
+ * posture, a surface of revolution by its waterline solver), or its errors (the page validates its
+ * request and shows these, the solvers' refusals, from the reply on their fields).
  */
 export function checkThreeAxis(
   p: ThreeAxisProblem,
-):
-  | { ok: true; value: ReturnType<typeof solveThreeAxis> & { ok: true } }
-  | { ok: false; errors: readonly ThreeAxisInputError[] } {
+): { ok: true; value: ThreeAxisAnswer } | { ok: false; errors: readonly ThreeAxisInputError[] } {
   const v = validateThreeAxis(rawOfThreeAxis(p), p.quantity, p.mm);
   if (!v.ok) return v;
-  const r = solveThreeAxis(v.value);
-  return r.ok ? { ok: true, value: r } : r;
+  const q = v.value;
+  return q.surface === 'plane' ? slopedPlaneByModel(q.case, q.quantity, q.mm) : solveThreeAxis(q);
 }
 
 /** The pair of passes in the meridian plane (waterline on a surface of revolution), or null. */
@@ -98,7 +162,7 @@ export function solveThreeAxisRequest(request: ThreeAxisRequest): ThreeAxisReply
   const checked = checkThreeAxis(p);
   const limits = finiteLimits(() => threeAxisSliderLimits(p));
   if (!checked.ok) return { ok: false, request, errors: checked.errors, limits };
-  const answer = checked.value.value;
+  const answer = checked.value;
   const c = p.case;
   const hMm = answer.cuspHeightMm;
   const programmed = answer.passes === 'waterline' ? answer.stepDownMm : answer.horizontalStepMm;
