@@ -181,12 +181,7 @@ export class RowEnvelope {
   }
 
   private crestOf(p: PassOnLine): number {
-    let x = this.crests.get(p);
-    if (x === undefined) {
-      x = this.findCrestXMm(p);
-      this.crests.set(p, x);
-    }
-    return x;
+    return memo(this.crests, p, () => this.findCrestXMm(p));
   }
 
   /**
@@ -199,22 +194,20 @@ export class RowEnvelope {
   }
 
   private peakOf(p: PassOnLine): number {
-    let x = this.peaks.get(p);
-    if (x === undefined) {
-      x = this.crestOf(p);
-      const high = this.passHeightOf(p, x);
-      const low = p.row.zStar;
-      if (p.row.tipZ - low <= TIP_REACH * (high - low)) {
-        const P = this.m.feedPeriodMm;
-        const v = this.levelXMm(p, p.row.bottom);
-        const end = newSearchEnd();
-        const f = { value: (t: number) => this.passHeightOf(p, t) };
-        const top = maximise(f, v, v + P, 48, 1e-13 * P + 1e-15, end, x);
-        if (top > high) x = end.x;
-      }
-      this.peaks.set(p, x);
-    }
-    return x;
+    return memo(this.peaks, p, () => this.findPeakXMm(p));
+  }
+
+  private findPeakXMm(p: PassOnLine): number {
+    const x = this.crestOf(p);
+    const high = this.passHeightOf(p, x);
+    const low = p.row.zStar;
+    if (!(p.row.tipZ - low <= TIP_REACH * (high - low))) return x;
+    const P = this.m.feedPeriodMm;
+    const v = this.levelXMm(p, p.row.bottom);
+    const end = newSearchEnd();
+    const f = { value: (t: number) => this.passHeightOf(p, t) };
+    const top = maximise(f, v, v + P, 48, 1e-13 * P + 1e-15, end, x);
+    return top > high ? end.x : x;
   }
 
   private findCrestXMm(p: PassOnLine): number {
@@ -250,4 +243,14 @@ export class RowEnvelope {
     maximise({ value: (x) => this.passHeightOf(p, x) }, v, v + P, 16, 1e-13 * P, end);
     return end.x;
   }
+}
+
+/** The value of `key` in `found`, computed and kept on first asking. */
+function memo<K>(found: Map<K, number>, key: K, compute: () => number): number {
+  let x = found.get(key);
+  if (x === undefined) {
+    x = compute();
+    found.set(key, x);
+  }
+  return x;
 }
