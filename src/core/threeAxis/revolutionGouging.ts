@@ -80,20 +80,21 @@ function sliceRadius(t: MeridianTool, dzAboveTip: number): number {
   return t.rb + Math.sqrt((t.rcr - q) * (t.rcr + q));
 }
 
+/** The tool region with its tip at (ts, tz), clipped to `sLo <= s <= sHi` (mm). */
+interface ClippedTool {
+  readonly t: MeridianTool;
+  readonly ts: number;
+  readonly tz: number;
+  readonly sLo: number;
+  readonly sHi: number;
+}
+
 /**
- * Largest distance (mm) from (qs, qz) over the tool region with tip (ts, tz), clipped to
- * `sLo <= s <= sHi` and `z <= cap`; -Infinity when that part is empty.
+ * Largest distance (mm) from (qs, qz) over the clipped tool region at `z <= cap`; -Infinity when
+ * that part is empty.
  */
-function maxDistance(
-  t: MeridianTool,
-  ts: number,
-  tz: number,
-  qs: number,
-  qz: number,
-  sLo: number,
-  sHi: number,
-  cap: number,
-): number {
+function maxDistance(c: ClippedTool, qs: number, qz: number, cap: number): number {
+  const { t, ts, tz, sLo, sHi } = c;
   const half = sliceRadius(t, cap - tz);
   if (half < 0) return Number.NEGATIVE_INFINITY;
   const a = Math.max(sLo, ts - half);
@@ -145,16 +146,9 @@ function cornerExtremes(
   }
 }
 
-/** Smallest distance (mm) from (qs, qz) to the tool region with tip (ts, tz), clipped to `sLo <= s <= sHi`. */
-function minDistance(
-  t: MeridianTool,
-  ts: number,
-  tz: number,
-  qs: number,
-  qz: number,
-  sLo: number,
-  sHi: number,
-): number {
+/** Smallest distance (mm) from (qs, qz) to the clipped tool region. */
+function minDistance(c: ClippedTool, qs: number, qz: number): number {
+  const { t, ts, tz, sLo, sHi } = c;
   const a = Math.max(sLo, ts - t.R);
   const b = Math.min(sHi, ts + t.R);
   if (a > b) return Number.POSITIVE_INFINITY;
@@ -178,11 +172,9 @@ function minDistance(
   return best;
 }
 
-/**
- * Smallest value of `ds * s + dz * z` (dz > 0) over the tool region with tip (ts, tz), clipped to
- * `sLo <= s <= sHi`; +Infinity when empty.
- */
-function minLinear(t: MeridianTool, ts: number, tz: number, ds: number, dz: number, sLo: number, sHi: number): number {
+/** Smallest value of `ds * s + dz * z` (dz > 0) over the clipped tool region; +Infinity when empty. */
+function minLinear(c: ClippedTool, ds: number, dz: number): number {
+  const { t, ts, tz, sLo, sHi } = c;
   const a = Math.max(sLo, ts - t.R);
   const b = Math.min(sHi, ts + t.R);
   if (a > b) return Number.POSITIVE_INFINITY;
@@ -221,7 +213,8 @@ export function gougeDepthMm(t: MeridianTool, surf: RevolutionSurface, ts: numbe
   const ccLo = axis === null ? -inf : surf.side > 0 ? axis : -inf;
   const ccHi = axis === null ? inf : surf.side > 0 ? inf : axis;
   if (surf.k < 0) {
-    const far = maxDistance(t, ts, tz, surf.centreS, surf.centreZ, ccLo, ccHi, surf.centreZ) - surf.radius;
+    const far =
+      maxDistance({ t, ts, tz, sLo: ccLo, sHi: ccHi }, surf.centreS, surf.centreZ, surf.centreZ) - surf.radius;
     if (far > depth) depth = far;
   }
   if (axis !== null) {
@@ -229,15 +222,16 @@ export function gougeDepthMm(t: MeridianTool, surf: RevolutionSurface, ts: numbe
     const hi = surf.side > 0 ? axis : inf;
     // Mirrored centre (distances from the mirrored point are the mirrored region's distances).
     const ms = 2 * axis - surf.centreS;
+    const mirrored: ClippedTool = { t, ts, tz, sLo: lo, sHi: hi };
     if (surf.k > 0) {
-      const gap = surf.radius - minDistance(t, ts, tz, ms, surf.centreZ, lo, hi);
+      const gap = surf.radius - minDistance(mirrored, ms, surf.centreZ);
       if (gap > depth) depth = gap;
     } else if (surf.k < 0) {
-      const far = maxDistance(t, ts, tz, ms, surf.centreZ, lo, hi, surf.centreZ) - surf.radius;
+      const far = maxDistance(mirrored, ms, surf.centreZ, surf.centreZ) - surf.radius;
       if (far > depth) depth = far;
     } else {
       // Mirrored points Q' = (2 axis - s, z) must satisfy Q'.n0 >= 0: 2 axis n0s + (-n0s) s + n0z z >= 0.
-      const below = -(2 * axis * surf.n0s + minLinear(t, ts, tz, -surf.n0s, surf.n0z, lo, hi));
+      const below = -(2 * axis * surf.n0s + minLinear(mirrored, -surf.n0s, surf.n0z));
       if (below > depth) depth = below;
     }
   }
