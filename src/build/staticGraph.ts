@@ -12,7 +12,8 @@ export function staticSpecifiers(source: string): string[] {
   const code = source.replace(/\/\*[\s\S]*?\*\//g, '').replace(/^\s*\/\/.*$/gm, '');
   const out: string[] = [];
   // import x from '...'; import { a, type B } from '...'; import '...'; export { a } from '...'; export * from '...'
-  const re = /^\s*(import|export)\s+(type\s+)?([^'";]*?)\s*(?:from\s*)?['"]([^'"]+)['"]/gm;
+  // (A clause holds no parenthesis: an exported function's body may reach a dynamic import().)
+  const re = /^\s*(import|export)\s+(type\s+)?([^'";(]*?)\s*(?:from\s*)?['"]([^'"]+)['"]/gm;
   for (let m = re.exec(code); m !== null; m = re.exec(code)) {
     const [, , typeOnly, clause = '', spec = ''] = m;
     if (typeOnly) continue;

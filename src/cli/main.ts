@@ -72,7 +72,7 @@ import { targetFinish } from './targetFinish';
 import { slopeSweepJson, slopeSweepTable, threeAxisJson, threeAxisTable } from './threeAxisReport';
 import { jsonInUnit } from './unitJson';
 import { USAGE } from './usage';
-import { X3P_DEFAULT_SIZE, x3pOfFinish } from './x3pOption';
+import { loadX3pWriter, X3P_DEFAULT_SIZE, x3pOfFinish } from './x3pOption';
 
 /** The help text (usage.ts), re-exported for the callers. */
 export { USAGE };
@@ -405,6 +405,7 @@ function target(request: Extract<Request, { kind: 'target' }>, io: Io, out: Outp
 }
 
 async function run(request: Request, io: Io, out: Output): Promise<number> {
+  if (request.kind !== 'help' && request.kind !== 'usage' && request.values.x3p !== undefined) await loadX3pWriter();
   switch (request.kind) {
     case 'help':
       out.write(`${USAGE}\n`);

@@ -10,7 +10,17 @@ import type { PassPattern, ToolInput } from '../core/domain/tool';
 import { arealMap } from '../core/finish/arealMap';
 import type { FinishInput } from '../core/finish/finishInput';
 import { toothModel } from '../core/finish/toothModel';
-import { x3pBytes } from '../core/output/x3p';
+
+/** The x3p writer, loaded by {@link loadX3pWriter} (its zip library builds tables at load: ~8 ms). */
+let writer: typeof import('../core/output/x3p') | null = null;
+
+/**
+ * Loads the x3p writer before an `--x3p` question is answered, so that a command line without
+ * `--x3p` starts without the zip library (the compiled bundle initialises it only here).
+ */
+export async function loadX3pWriter(): Promise<void> {
+  writer ??= await import('../core/output/x3p');
+}
 
 /** The grid's default size, points along x (the feed) and y (across). */
 export const X3P_DEFAULT_SIZE = [1024, 1024] as const;
@@ -60,9 +70,10 @@ export function x3pOfFinish(
   cells: readonly [number, number],
   comment: string,
 ): { bytes: Uint8Array; facts: X3pFacts } {
+  if (writer === null) throw new Error('the x3p writer is not loaded (loadX3pWriter)');
   const m = toothModel({ tool, pattern, intervalMm, finish });
   const map = arealMap(m, size[0], size[1], cells[0], cells[1]);
-  const bytes = x3pBytes(
+  const bytes = writer.x3pBytes(
     {
       nx: map.nx,
       ny: map.ny,

@@ -50,6 +50,9 @@ describe('the static import graph of the first result', () => {
       "export * from './h';",
       "import './side';",
       "const later = () => import('./lazy');",
+      'export async function load() {',
+      "  loaded ??= await import('./later');",
+      '}',
       "// import { x } from './comment';",
     ].join('\n');
     expect(staticSpecifiers(source)).toEqual(['./a', './e', './g', './h', './side']);
