@@ -550,11 +550,13 @@ export class CalculatorApp {
     this.sceneBox.classList.toggle('typing', typing);
     // The finish (issue 29): the answer on screen's feed marks, loaded with the first teeth and feed.
     const answered = shown.kind === 'current' && !typing ? shown.reply : null;
-    this.finish.show(this.state, answered);
+    // Written lengths (`1/500`, `0.002"`, `5 um`) read as the plain numbers they mean, as every field's.
+    const plain = plainLengths(this.state);
+    this.finish.show(plain, answered);
     // A target Sa (issue 29): its best pair, asked of the answer on screen (the target Ra at Ra = Sa);
     // the box's code loads with the first target Sa (each show runs in order, once it has).
     const sa = this.state.mode === 'forward' && this.state.target === 'sa';
-    const inputs = finishInputs(this.state);
+    const inputs = finishInputs(plain);
     if (sa && this.targetSa === null)
       this.targetSa = import('./targetSaPanel').then(
         ({ TargetSaPanel }) =>

@@ -30,8 +30,10 @@ export function convertLength(value: number, from: Unit, to: Unit): string {
   const converted = fromMm(toMm(value, from), to);
   for (let digits = 1; digits < 17; digits++) {
     const text = fieldDigits(converted, digits);
-    // Compared as numbers: the text converted back, as a field writes it, is the very number given.
-    if (Number(formatField(fromMm(toMm(Number(text), to), from))) === value) return text;
+    // Compared as numbers: the text converted back, as a field writes it, is the very number given;
+    // or that very number before it is written (0.00467 in is the 0.00467 * 25.4 mm a page computed).
+    const back = fromMm(toMm(Number(text), to), from);
+    if (back === value || Number(formatField(back)) === value) return text;
   }
   return fieldDigits(converted, 17);
 }

@@ -6,10 +6,10 @@
  * the worker with the finish (jobs/finish.ts). Pure, small: it loads with the first result.
  */
 
-import { feedPerToothOfRate } from '../core/finish/feedRate';
+import { feedPerToothOfRate, MAX_FLUTES, MIN_FEED_PER_TOOTH_MM } from '../core/finish/feedRate';
 import { entryFaultMessage } from '../core/input/entryMessages';
 import { FIELDS, FINISH_FIELD_IDS, type FieldSpec, type PageFieldKey, urlParamOf } from '../core/input/fields';
-import { formatInputNumber } from '../core/input/units';
+import { formatInputNumber, toMm } from '../core/input/units';
 import { parseField } from './fieldText';
 import type { PageFieldError } from './requestTypes';
 import type { CalculatorState } from './stateTypes';
@@ -33,15 +33,17 @@ export function finishKeyOff(state: CalculatorState, key: PageFieldKey): boolean
 /**
  * The fz field's text while the feed rate or spindle speed holds text and fz does not: the fz they
  * give, F / (n z) in the user's unit (F in mm/min or in/min), or '' while F, n or z is not a
- * positive number (whole teeth); null otherwise (fz typed, or F and n empty: the field as typed).
+ * positive number (whole teeth, at most 64) or the fz is below 1 nm; null otherwise (fz typed, or F and n empty: the field as typed).
  */
 export function rateFzText(state: CalculatorState): string | null {
   const { fz, F, n, z } = state.fields;
   if (fz.trim() !== '' || F.trim() + n.trim() === '') return null;
   const [f, s, t] = [F, n, z].map(parseField) as [number | null, number | null, number | null];
-  return f !== null && s !== null && t !== null && f > 0 && s > 0 && Number.isInteger(t) && t >= 1
-    ? formatInputNumber(feedPerToothOfRate(f, s, t))
-    : '';
+  if (f === null || s === null || t === null || !(f > 0 && s > 0 && Number.isInteger(t) && t >= 1 && t <= MAX_FLUTES))
+    return '';
+  // Only a feed the finish accepts (at least 1 nm; not 0 from a spindle speed of 1e308).
+  const given = feedPerToothOfRate(f, s, t);
+  return toMm(given, state.unit) >= MIN_FEED_PER_TOOTH_MM ? formatInputNumber(given) : '';
 }
 
 /** True when any finish field holds text (then the page asks for the finish). */

@@ -6,8 +6,12 @@
 import { type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
 import { formatLen } from './format';
 
-/** `mm` in `unit` at the fine resolution (0.000001 mm, 0.0000001 in), with its symbol; a dash for none. */
+/**
+ * `mm` in `unit` at the fine resolution (0.000001 mm, 0.0000001 in), at least four significant
+ * digits in plain decimals, with its symbol; below a picometre (a position's rounding noise) 0; a
+ * dash for none.
+ */
 export function feedLength(mm: number | null, unit: LengthUnit): string {
-  const v = formatLen(mm, unit, 'fine');
+  const v = formatLen(mm !== null && Math.abs(mm) < 1e-9 ? 0 : mm, unit, 'fine', true);
   return v === NO_VALUE ? NO_VALUE : `${v} ${unitSymbol(unit)}`;
 }

@@ -214,6 +214,11 @@ export class FinishPanel {
     if (!sameFinishRequest(request, this.wanted)) {
       this.wanted = request;
       this.note = null;
+      // The line of a file saved (or refused) belongs to the question it answered: gone with it.
+      if (this.x3pAsked === null && this.x3pLine !== null) {
+        this.x3pLine = null;
+        this.x3pStatus.textContent = '';
+      }
       if (request !== null) {
         this.ask(this.client, request);
         this.ask(this.arealClient, { ...request, part: 'areal' });
@@ -296,7 +301,10 @@ export class FinishPanel {
       balanced.dataset.phrase = balanced.textContent ?? '';
     else if (balanced !== undefined) delete balanced.dataset.phrase;
     for (const part of this.answerParts) part.hidden = this.refusal !== null;
-    this.download.disabled = marks === null || this.x3pAsked !== null;
+    // No file where the areal surface is refused (a flat end lying flat leaves slivers no tooth cuts).
+    const arealRefused =
+      this.failed !== null && this.failed.request.part === 'areal' && this.current(this.failed.request);
+    this.download.disabled = marks === null || this.x3pAsked !== null || arealRefused;
     // The worker's refusals worded in the language in force (finishText.ts), on their fields too.
     const c = catalogue();
     const errors = this.failed !== null && this.current(this.failed.request) ? this.failed.errors : null;
@@ -421,7 +429,7 @@ export class FinishPanel {
   private savedX3p(reply: FinishReply): void {
     if (!sameFinishRequest(reply.request, this.x3pAsked)) return;
     this.x3pAsked = null;
-    this.download.disabled = this.answer('marks') === null;
+    this.draw();
     const file = reply.request.x3p;
     if (!reply.ok || reply.x3p === null || file === undefined) {
       this.x3pLine = { kind: 'none', errors: reply.ok ? null : reply.errors };

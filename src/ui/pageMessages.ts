@@ -15,6 +15,7 @@ import {
 } from '../worker/pageProtocol';
 import { describeCurvedError } from './curvedRequest';
 import { fieldMessages } from './fieldMessages';
+import { finishFieldErrors } from './finishFields';
 import { catalogue } from './i18n/words';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
 import type { CalculatorState, FieldKey } from './state';
@@ -59,6 +60,13 @@ export function stateMessages(
   reply: PageReply | null,
   threeAxis: ThreeAxisWording,
 ): Map<FieldKey, string> {
-  if (!built.ok) return fieldMessages(state, built.errors);
-  return reply === null || reply.ok ? new Map() : fieldMessages(state, replyErrors(state, reply, threeAxis));
+  const own = !built.ok
+    ? fieldMessages(state, built.errors)
+    : reply === null || reply.ok
+      ? new Map<FieldKey, string>()
+      : fieldMessages(state, replyErrors(state, reply, threeAxis));
+  // The teeth and their feed (issue 29, optional): a text that is not a number is named on its field,
+  // beside the step-over it does not change.
+  const finish = finishFieldErrors(state);
+  return finish.length === 0 ? own : new Map([...fieldMessages(state, finish), ...own]);
 }

@@ -11,7 +11,6 @@
  * through registryQuestionRequest.ts. Pure (no DOM).
  */
 import type { ModeDescriptor } from '../core/surfaces/modes';
-import { finishFieldErrors } from './finishFields';
 import { buildFiveAxisRequest } from './fiveAxisRequest';
 import type { BuiltRequest } from './requestTypes';
 import type { CalculatorState } from './state';
@@ -31,8 +30,7 @@ export function pageModeKind(state: CalculatorState): ModeDescriptor['kind'] {
  */
 export function buildPageRequest(state: CalculatorState, threeAxis: ModeBuilder): BuiltRequest {
   // Each product mode of the mode registry has its builder (tests/ui/requestBuilder.test.ts checks every one).
-  const built = pageModeKind(state) === 'threeAxis' ? threeAxis(state) : buildFiveAxisRequest(state);
-  // The teeth and their feed (issue 29, optional): a text that is not a number is named on its field.
-  const finish = finishFieldErrors(state);
-  return finish.length === 0 ? built : { ok: false, errors: [...(built.ok ? [] : built.errors), ...finish] };
+  // The teeth and their feed (issue 29) are not part of it: optional, their text is checked on their
+  // fields (pageMessages.ts stateMessages) and the step-over still answers.
+  return pageModeKind(state) === 'threeAxis' ? threeAxis(state) : buildFiveAxisRequest(state);
 }

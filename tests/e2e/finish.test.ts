@@ -176,6 +176,13 @@ describe('the finish box', () => {
     expect(await text(page, 'finish-hf')).toBe('\u2014');
     expect(await text(page, 'result-exact-interval')).toMatch(/\d/);
     expect(await page.getByTestId('input-flutes').inputValue()).toBe('4');
+    // Text in an optional field (the tester's "abc" in the flutes): named on it, the step-over stays.
+    const interval = await text(page, 'result-exact-interval');
+    await commit(page, 'input-flutes', 'abc');
+    await expect.poll(() => text(page, 'error-flutes')).toBe('Flutes z must be a number (got "abc").');
+    expect(await text(page, 'result-exact-interval')).toBe(interval);
+    await commit(page, 'input-flutes', '4');
+    await expect.poll(() => text(page, 'error-flutes')).toBe('');
   });
 
   it('on a cylinder the finish is refused in one line, no number', async () => {
@@ -214,13 +221,33 @@ describe('the finish box', () => {
   });
 
   it("a runout answers: hf of the teeth cutting unequally (the core's), the period z fz", async () => {
-    await commit(page, 'input-runout', '0.01');
+    // Written as a shop writes it (10 µm, still being typed), as every length field reads it; the
+    // saved file's line goes with the question it answered.
+    await typeInto(page, 'input-runout', '10 um');
+    await expect.poll(() => text(page, 'x3p-status')).toBe('');
     const finish = { flutes: 4, feedPerToothMm: 0.1, runoutMm: 0.01, runoutPhaseDeg: 0, passPhase: 0 };
     const marks = feedMarks(toothModel({ tool: TOOL, pattern: 'one-way', intervalMm: core.L, finish }));
     await expect.poll(() => text(page, 'finish-hf'), { timeout: 30_000 }).toBe(formatRoughness(marks.heightMm, 'mm'));
     expect(await text(page, 'finish-period')).toBe(feedLength(0.4, 'mm'));
     expect(await text(page, 'finish-message')).not.toMatch(/runout/i);
     await commit(page, 'input-runout', '');
+  });
+
+  it('a flat end lying flat: the areal surface refused, so no x3p of it; hf still answers', async () => {
+    await commit(page, 'input-Rcr', '0');
+    await commit(page, 'input-rho', '0');
+    await expect
+      .poll(() => text(page, 'finish-message'), { timeout: 20_000 })
+      .toMatch(/areal parameters are not defined here/);
+    expect(await page.getByTestId('download-x3p').isDisabled()).toBe(true);
+    expect(await text(page, 'finish-sa')).toBe('\u2014');
+    expect(await text(page, 'finish-hf')).toMatch(/\d/);
+    await commit(page, 'input-Rcr', '1');
+    await commit(page, 'input-rho', '5');
+    await expect
+      .poll(() => text(page, 'finish-hf'), { timeout: 20_000 })
+      .toBe(formatRoughness(core.report.feedMarks.height, 'mm'));
+    await expect.poll(() => page.getByTestId('download-x3p').isEnabled(), { timeout: 20_000 }).toBe(true);
   });
 
   it('feed rate and spindle speed give fz (read-only, F / (n z)); they are off while fz is typed', async () => {

@@ -22,6 +22,15 @@ describe('feed rate and spindle speed on the page', () => {
     expect(finishInputs(inch.state).typed.feedRate).toBe('40');
   });
 
+  it('shows no fz the finish would refuse: more than 64 teeth, or below 1 nm (65 teeth, n = 1e308)', () => {
+    const rate = parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&z=4&F=960&rpm=12000').state;
+    expect(rateFzText(withField(rate, 'z', '64'))).toBe('0.00125');
+    expect(rateFzText(withField(rate, 'z', '65'))).toBe('');
+    expect(rateFzText(withField(rate, 'n', '1e308'))).toBe('');
+    expect(rateFzText(withField(rate, 'F', '0.048'))).toBe('1e-6');
+    expect(rateFzText(withField(rate, 'F', '0.047'))).toBe('');
+  });
+
   it('fz typed wins: F and n are off, left out of the question and the link; cleared, they count again', () => {
     const rate = parseUrl('?R=3&Rcr=1&rho=5&h=0.05&unit=mm&z=4&F=960&rpm=12000').state;
     const typed = withField(rate, 'fz', '0.05');

@@ -14,6 +14,12 @@ describe('feedLength', () => {
     expect(feedLength(0.927413457, 'mm')).toBe('0.927413 mm');
   });
 
+  it("plain decimals for a tiny feed, 0 for a position's rounding noise (the tester's x = 2.151e-16 mm)", () => {
+    expect(feedLength(8.962e-7, 'mm')).toBe('0.0000008962 mm');
+    expect(feedLength(2.151e-16, 'mm')).toBe('0.000000 mm');
+    expect(feedLength(-2.151e-16, 'in')).toBe('0.0000000 in');
+  });
+
   it('a dash for no value, never NaN or -0', () => {
     expect(feedLength(null, 'mm')).toBe('\u2014');
     expect(feedLength(Number.NaN, 'in')).toBe('\u2014');

@@ -1,6 +1,6 @@
 /** The edge: what was typed, in the user's unit, becomes one validated request in mm. */
 import { describe, expect, it } from 'vitest';
-import { buildRequest, fieldMessages } from '../../src/ui/request';
+import { buildRequest, fieldMessages, stateMessages } from '../../src/ui/request';
 import { type CalculatorState, convertState, defaultState, parseUrl, withField } from '../../src/ui/state';
 import { answeredMessages } from '../support/pageAnswer';
 
@@ -53,6 +53,16 @@ describe('requests from the fields', () => {
     // L beyond the diameter: the worker's refusal (the widest step-over is a solve), worded as the page's own.
     const wide = state('?R=3&Rcr=1&rho=5&mode=inverse&L=7&unit=mm');
     expect(answeredMessages(wide).get('L')).toMatch(/Step-over L must be below the tool diameter 2R = 6 mm \(got 7\)/);
+  });
+
+  it('text in an optional teeth-and-feed field is named on it and the step-over is still asked', () => {
+    for (const key of ['z', 'fz', 'runout', 'F', 'n'] as const) {
+      const feed = key === 'F' || key === 'n' ? 'F=960&rpm=12000' : 'fz=0.05';
+      const s = withField(state(`?R=3&Rcr=1&rho=5&h=0.05&unit=mm&z=3&${feed}`), key, 'abc');
+      const built = buildRequest(s);
+      expect(built.ok, key).toBe(true);
+      expect(stateMessages(s, built, null).get(key), key).toMatch(/must be a number \(got "abc"\)/);
+    }
   });
 
   it('a unit switch keeps an edited question (to 1e-12) and the field texts free of float noise', () => {

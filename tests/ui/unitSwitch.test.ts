@@ -90,6 +90,8 @@ describe(`typed lengths switch mm -> in -> mm (and in -> mm -> in) back to what 
 
   it('exact conversions read short: 25.4 mm is 1 in, 12.7 mm 0.5 in, 0.762 mm 0.03 in', () => {
     expect(convertLength(25.4, 'mm', 'in')).toBe('1');
+    // A value the page computed in inch and set in mm ("use this pair": 0.00467 in), read back as it was.
+    expect(convertLength(0.00467 * 25.4, 'mm', 'in')).toBe('0.00467');
     expect(convertLength(12.7, 'mm', 'in')).toBe('0.5');
     expect(convertLength(0.762, 'mm', 'in')).toBe('0.03');
     expect(convertLength(0.03, 'in', 'mm')).toBe('0.762');

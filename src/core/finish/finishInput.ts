@@ -8,7 +8,7 @@
 import { entryFaultMessage, isEntryFault, quotedEntry } from '../input/entryMessages';
 import { formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../input/units';
 import { parseNumber } from '../input/validate';
-import { feedPerToothOfRate } from './feedRate';
+import { feedPerToothOfRate, MAX_FLUTES, MIN_FEED_PER_TOOTH_MM } from './feedRate';
 
 /** A validated finish input. */
 export interface FinishInput {
@@ -74,17 +74,7 @@ export interface FinishError {
   readonly message: string;
 }
 
-/**
- * Largest number of teeth accepted. Solid end mills have up to about 20 flutes; 64 leaves room for
- * indexable and special cutters while keeping the per-point work (one search per tooth) bounded.
- */
-export const MAX_FLUTES = 64;
-
-/**
- * Smallest feed per tooth accepted, mm (1 nm): the feed marks it leaves (about fz^2 / (8 R)) are far
- * below anything measurable, and the tooth angles `2 pi w / (z fz)` stay well inside double range.
- */
-export const MIN_FEED_PER_TOOTH_MM = 1e-6;
+export { MAX_FLUTES, MIN_FEED_PER_TOOTH_MM };
 
 /**
  * Largest feed per tooth accepted: the tool radius R. Beyond it one tooth's bite is wider than half
@@ -220,6 +210,9 @@ export function validateFinish(raw: RawFinishInput, toolRadiusMm: number): Finis
   const errors: FinishError[] = [];
   const num = (field: FinishField, value: unknown, optional: boolean): { v: number; shown: string } | null => {
     if (optional && empty(value)) return { v: 0, shown: '0' };
+    // A length beyond a double once in mm (1e308 in) is too large, said with its limit, not "not finite".
+    if (isLength(field) && (value === Number.POSITIVE_INFINITY || value === Number.NEGATIVE_INFINITY))
+      return { v: value, shown: String(value) };
     const p = parseNumber(value);
     if (!p.ok) {
       errors.push(

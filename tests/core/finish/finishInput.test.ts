@@ -58,7 +58,15 @@ describe('validateFinish', () => {
       'Feed per tooth fz must be at most the tool radius R = 3 mm (got 3.0001).',
     ]);
     expect(errorsOf({ flutes: 2, fz: 'Infinity' })[0]?.[1]).toBe('not-a-number');
-    expect(errorsOf({ flutes: 2, fz: Number.POSITIVE_INFINITY })[0]?.[1]).toBe('not-finite');
+    // A length past a double once in mm (the tester's 1e308 in): too large, with the limit in the user's unit.
+    expect(errorsOf({ flutes: 2, fz: Number.POSITIVE_INFINITY })[0]?.slice(0, 3)).toEqual(['fz', 'too-large', 3]);
+    expect(errorsOf({ flutes: 2, fz: 0.1, runout: Number.POSITIVE_INFINITY })[0]?.slice(0, 3)).toEqual([
+      'runout',
+      'too-large',
+      0.3,
+    ]);
+    expect(errorsOf({ flutes: 2, fz: Number.NEGATIVE_INFINITY })[0]?.[1]).toBe('not-positive');
+    expect(errorsOf({ flutes: Number.POSITIVE_INFINITY, fz: 0.1 })[0]?.[1]).toBe('not-finite');
   });
 
   it('refuses negative runout and runout above R/10; any finite phase; pass phase in [0, 1)', () => {
