@@ -4,7 +4,7 @@
  * typed and with each other (heights stay in µm or µin, format.ts formatRoughness). Pure.
  */
 import { type LengthUnit, NO_VALUE, unitSymbol } from '../core/input/units';
-import { formatLen } from './format';
+import { formatFineLen } from './format';
 
 /**
  * `mm` in `unit` at the fine resolution (0.000001 mm, 0.0000001 in), at least four significant
@@ -12,6 +12,6 @@ import { formatLen } from './format';
  * dash for none.
  */
 export function feedLength(mm: number | null, unit: LengthUnit): string {
-  const v = formatLen(mm !== null && Math.abs(mm) < 1e-9 ? 0 : mm, unit, 'fine', true);
+  const v = formatFineLen(mm !== null && Math.abs(mm) < 1e-9 ? 0 : mm, unit);
   return v === NO_VALUE ? NO_VALUE : `${v} ${unitSymbol(unit)}`;
 }

@@ -51,22 +51,18 @@ function digitsFor(value: number, decimals: number): number {
   return Math.max(4, decimals + Math.floor(Math.log10(rounded > 0 ? rounded : magnitude)) + 1);
 }
 
-/**
- * A length given in mm, in `unit` (no symbol); a dash for null or a non-finite value. `plain`: never
- * exponent notation (a feed of 1 nm reads 0.0000010000 mm).
- */
-export function formatLen(
-  mm: number | null,
-  unit: LengthUnit,
-  resolution: Resolution = 'length',
-  plain = false,
-): string {
+/** A length given in mm, in `unit` (no symbol); a dash for null or a non-finite value. */
+export function formatLen(mm: number | null, unit: LengthUnit, resolution: Resolution = 'length'): string {
   if (mm === null || !Number.isFinite(mm)) return NO_VALUE;
   const v = fromMm(mm, unit);
-  return formatSignificant(v, {
-    digits: digitsFor(v, DECIMALS[resolution][unit]),
-    ...(plain ? { exponentBelow: 0 } : {}),
-  });
+  return formatSignificant(v, { digits: digitsFor(v, DECIMALS[resolution][unit]) });
+}
+
+/** {@link formatLen} at the fine resolution in plain decimals, never exponent notation (1 nm: 0.0000010000 mm). */
+export function formatFineLen(mm: number | null, unit: LengthUnit): string {
+  if (mm === null || !Number.isFinite(mm)) return NO_VALUE;
+  const v = fromMm(mm, unit);
+  return formatSignificant(v, { digits: digitsFor(v, DECIMALS.fine[unit]), exponentBelow: 0 });
 }
 
 /** A signed length difference (`+` before positive values). */
