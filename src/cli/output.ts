@@ -4,6 +4,7 @@
  * reading, end quietly on a closed pipe (EPIPE) and name any other error in one line.
  */
 import type { Writable } from 'node:stream';
+import { escapeControls } from '../core/input/visibleText';
 
 /** Gathered text is written once it exceeds this many characters. */
 export const FLUSH_CHARS = 1 << 16;
@@ -66,30 +67,8 @@ export function describeSystemError(e: unknown): string {
   return String(e);
 }
 
-/** Escapes of the control characters that have a short one. */
-const SHORT_ESCAPES: Readonly<Record<string, string>> = { '\n': '\\n', '\r': '\\r', '\t': '\\t' };
-
-/**
- * Control characters: C0 (line breaks, tab, ESC...), DEL and C1, the Unicode line and paragraph
- * separators, and the bidirectional controls (which reorder what a terminal shows after them).
- */
-// biome-ignore lint/suspicious/noControlCharactersInRegex: matching control characters is the point
-const CONTROL = /[\u0000-\u001f\u007f-\u009f\u061c\u200e\u200f\u2028\u2029\u202a-\u202e\u2066-\u2069]/g;
-
-/**
- * Text that may hold what the user typed, shown on one line: every control character written as
- * an escape (`\n`, `\r`, `\t`, `\x1b`, `\u2028`), so a value holding a line break or a terminal
- * escape sequence can neither split an error in two nor reach the terminal. Other text, a
- * backslash included, is kept as it is.
- */
-export function escapeControls(text: string): string {
-  return text.replace(CONTROL, (c) => {
-    const short = SHORT_ESCAPES[c];
-    if (short !== undefined) return short;
-    const code = c.charCodeAt(0);
-    return code < 0x100 ? `\\x${code.toString(16).padStart(2, '0')}` : `\\u${code.toString(16).padStart(4, '0')}`;
-  });
-}
+/** Every control character written as an escape (core/input/visibleText.ts; here for the command line's writers). */
+export { escapeControls };
 
 /**
  * The one line on stderr of an error: `error: ` and the message, control characters escaped

@@ -144,7 +144,11 @@
  * memo and the sloped plane checked once, its answer built field by field (later chunks, +0.11 kB):
  * 304.33 in all, the ratchet 304.4. Then the surface of revolution's gouging check takes its clipped
  * tool as one object (a duplicates pair gone; the three-axis chunk, on first use, +0.08 kB): 304.41
- * in all, the ratchet 304.5.
+ * in all, the ratchet 304.5. Then the finish fields' text checked on its fields apart from the
+ * question (the first result 59.32), and every message's quote of an entry with its control and
+ * invisible characters escaped (core/input/visibleText.ts, the command line's escapes moved into the
+ * core: a "3" + BEL no longer reads as a valid "3"): the first result 59.49 kB, the ratchet 59.5, still
+ * under the 60 kB target; 304.57 in all, the ratchet 304.6.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -158,10 +162,10 @@ const KB = 1024;
 describe('the JavaScript budget of the built site', () => {
   const sizes = jsSizes(siteFiles(DIST), readFileSync(`${DIST}/index.html`, 'utf8'), gzip9);
 
-  it('the first result (page and worker, their static imports) is at most 59.45 kB gzip (the ratchet, under the 60 kB target)', () => {
+  it('the first result (page and worker, their static imports) is at most 59.5 kB gzip (the ratchet, under the 60 kB target)', () => {
     expect(sizes.firstResult.some((p) => p.startsWith('assets/index-'))).toBe(true);
     expect(sizes.firstResult.some((p) => p.startsWith('assets/solver.worker-'))).toBe(true);
-    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.45);
+    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.5);
   });
 
   it('counts every .js file the build emits: the chunks, the service worker and embed.js', () => {
@@ -170,7 +174,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 304.5 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.5);
+  it('all of it, every .js file, is at most 304.6 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.6);
   });
 });

@@ -4,9 +4,15 @@
  * place. Field-specific faults (ranges, gouging, the fz limit) stay with their fields.
  */
 
-/** What the user typed, as a message quotes it: at most 24 characters (21 and "..." beyond). */
+import { escapeControls } from './visibleText';
+
+/**
+ * What the user typed, as a message quotes it: at most 24 characters (21 and "..." beyond), each
+ * character a message would not show written as its escape (`3\x07`, `\u202e`: visibleText.ts),
+ * so that the quote never looks like a valid number.
+ */
 export function quotedEntry(typed: string): string {
-  return typed.length > 24 ? `${typed.slice(0, 21)}...` : typed;
+  return escapeControls(typed.length > 24 ? `${typed.slice(0, 21)}...` : typed);
 }
 
 /** The faults every number entry shares. */
