@@ -248,9 +248,16 @@ export class RunoutTrack {
   eventTheta = Number.NaN;
   eventS = Number.NaN;
 
-  constructor(m: ToothModel, yLocalMm: number, tooth: number, counter = { made: 0, kept: 0 }) {
+  /** Pass-local y of the line and the tooth's index. */
+  readonly yLocalMm: number;
+  readonly tooth: number;
+
+  /** With `boxes` false the track has no boxes (no search): it only follows events (followEvent). */
+  constructor(m: ToothModel, yLocalMm: number, tooth: number, counter = { made: 0, kept: 0 }, boxes = true) {
     this.m = m;
     this.counter = counter;
+    this.yLocalMm = yLocalMm;
+    this.tooth = tooth;
     this.prof = edgeProfile(m);
     this.yRel = yLocalMm - m.centreYMm;
     const f = m.input.finish;
@@ -267,7 +274,7 @@ export class RunoutTrack {
     cuts.push(p.sMax);
     const nt = 12;
     let floor = Number.POSITIVE_INFINITY;
-    for (let i = 0; i + 1 < cuts.length; i++) {
+    for (let i = 0; boxes && i + 1 < cuts.length; i++) {
       const a = cuts[i] as number;
       const b = cuts[i + 1] as number;
       const ns = 4;
@@ -362,7 +369,16 @@ export class RunoutTrack {
     const u1 = m.u1;
     const u2 = m.u2;
     const a = m.axis;
-    BOX_RANGES.set([t0, t1, pLo, pHi, q, drLo, drHi, dhLo, dhHi]);
+    const ranges = BOX_RANGES;
+    ranges[0] = t0;
+    ranges[1] = t1;
+    ranges[2] = pLo;
+    ranges[3] = pHi;
+    ranges[4] = q;
+    ranges[5] = drLo;
+    ranges[6] = drHi;
+    ranges[7] = dhLo;
+    ranges[8] = dhHi;
     const [ktMag, ksMag] = along(u1[1], u2[1], a[1]);
     b.kRad = ktMag * b.dt + ksMag * b.ds;
     b.meets = Math.abs(b.k) <= b.kRad * (1 + 1e-12) + 1e-15 * this.scale;
@@ -518,6 +534,44 @@ export class RunoutTrack {
         const tolS = b.ds * 1e-9 + 1e-15 * this.scale;
         if (Math.abs(t - b.tc) > b.dt + tolT || Math.abs(s - b.sc) > b.ds + tolS) return Number.NaN;
         if (s < 0 || s > this.prof.sMax) return Number.NaN;
+        return e.z;
+      }
+    }
+    return Number.NaN;
+  }
+
+  /**
+   * The event of this tooth at pass-local x followed from an edge point (theta, s) of a nearby x (the
+   * same bite: Newton on (K, F - level) from it, the level the nearest to F there): its height, with
+   * its place in eventTheta, eventS; NaN when Newton does not settle on the edge. It need not be the
+   * tooth's lowest event at x (lowestEvent), only one of its events: runoutLine.ts checks the bites it
+   * follows against the search.
+   */
+  followEvent(xLocalMm: number, theta: number, s: number): number {
+    const omega = this.m.omegaRadPerMm;
+    const c0 = this.levelOffset - ((((omega * xLocalMm) % TWO_PI) + TWO_PI) % TWO_PI);
+    const e = SOLVE;
+    let t = theta;
+    let u = s;
+    this.centre(e, t, u);
+    const level = c0 + TWO_PI * Math.round((t - omega * e.w - c0) / TWO_PI);
+    for (let it = 0; it < 30; it++) {
+      const k = e.k;
+      const f = t - omega * e.w - level;
+      const ft = 1 - omega * e.wt;
+      const fs = -omega * e.ws;
+      const det = e.kt * fs - e.ks * ft;
+      if (!(det !== 0)) return Number.NaN;
+      const dtStep = -(fs * k - e.ks * f) / det;
+      const dsStep = -(-ft * k + e.kt * f) / det;
+      t += dtStep;
+      u += dsStep;
+      if (!(Math.abs(dtStep) * this.rhoMax + Math.abs(dsStep) <= this.scale)) return Number.NaN;
+      this.centre(e, t, u);
+      if (Math.abs(dtStep) * this.rhoMax + Math.abs(dsStep) <= 1e-14 * this.scale) {
+        if (u < 0 || u > this.prof.sMax) return Number.NaN;
+        this.eventTheta = t;
+        this.eventS = u;
         return e.z;
       }
     }
@@ -749,6 +803,28 @@ export class RunoutRow {
     } while (this.prepareBelow(best));
     if (this.known.size < 20000) this.known.set(xMm, [best, this.lastTrack, this.lastTheta, this.lastS]);
     return best;
+  }
+
+  /** Track `id` without its boxes (it only follows events) and how global x maps to its local x. */
+  bareTrack(id: number): { readonly track: RunoutTrack; readonly sign: 1 | -1; readonly shiftMm: number } | undefined {
+    const t = this.byId[id];
+    if (t === undefined) return undefined;
+    const track = new RunoutTrack(this.m, t.track.yLocalMm, t.track.tooth, undefined, false);
+    return { track, sign: t.sign, shiftMm: t.shiftMm };
+  }
+
+  /**
+   * The height at x of the bite of track `id` through its edge point (theta, s) at a nearby x
+   * (RunoutTrack.followEvent), NaN where it cannot be followed; its place in lastTheta, lastS.
+   */
+  followBite(id: number, xMm: number, theta: number, s: number): number {
+    const t = this.byId[id];
+    if (t === undefined) return Number.NaN;
+    const h = t.track.followEvent(t.sign * (xMm - t.shiftMm), theta, s);
+    this.lastTrack = id;
+    this.lastTheta = t.track.eventTheta;
+    this.lastS = t.track.eventS;
+    return h;
   }
 
   /** The lowest height of the line over all x: the least of its teeth's lowest points, mm. */
