@@ -87,22 +87,18 @@ function profileAt(p: EdgeProfile, s: number, out: Float64Array, left = false): 
   out[3] = 1;
 }
 
-/** Lower and upper ends of cos over [a, b]. */
-function cosRange(a: number, b: number, out: Float64Array, at: number): void {
+/**
+ * Lower and upper ends of U cos over [a, b] given its values at the ends (`ya`, `yb`): -U or U where a
+ * minimum (pi + 2 pi n) or maximum (2 pi n) lies inside.
+ */
+function scaledCosRange(a: number, b: number, ya: number, yb: number, U: number, out: Float64Array, at: number): void {
   if (b - a >= TWO_PI) {
-    out[at] = -1;
-    out[at + 1] = 1;
+    out[at] = -U;
+    out[at + 1] = U;
     return;
   }
-  const ca = Math.cos(a);
-  const cb = Math.cos(b);
-  let lo = Math.min(ca, cb);
-  let hi = Math.max(ca, cb);
-  // A maximum (2 pi n) or minimum (pi + 2 pi n) inside.
-  if (Math.ceil(a / TWO_PI) * TWO_PI <= b) hi = 1;
-  if (Math.ceil((a - Math.PI) / TWO_PI) * TWO_PI + Math.PI <= b) lo = -1;
-  out[at] = lo;
-  out[at + 1] = hi;
+  out[at] = Math.ceil((a - Math.PI) / TWO_PI) * TWO_PI + Math.PI <= b ? -U : Math.min(ya, yb);
+  out[at + 1] = Math.ceil(a / TWO_PI) * TWO_PI <= b ? U : Math.max(ya, yb);
 }
 
 /** Lower and upper ends of [a0, a1] x [b0, b1]. */
@@ -138,12 +134,18 @@ function partials(
 ): [number, number] {
   const U = Math.hypot(n1, n2);
   const g = Math.atan2(n2, n1);
-  cosRange(t0 - g, t1 - g, CS, 0);
-  cosRange(t0 - g + Math.PI / 2, t1 - g + Math.PI / 2, CS, 2);
-  const cLo = U * (CS[0] as number);
-  const cHi = U * (CS[1] as number);
-  const sLo = U * (CS[2] as number);
-  const sHi = U * (CS[3] as number);
+  // C = U cos(theta - g) = n1 cos theta + n2 sin theta and S = -U sin(theta - g), from the cosines and
+  // sines of the box's ends (BOX_TRIG), with U or -U where a maximum or minimum lies inside.
+  const c0 = BOX_TRIG[0] as number;
+  const s0 = BOX_TRIG[1] as number;
+  const c1 = BOX_TRIG[2] as number;
+  const s1 = BOX_TRIG[3] as number;
+  scaledCosRange(t0 - g, t1 - g, n1 * c0 + n2 * s0, n1 * c1 + n2 * s1, U, CS, 0);
+  scaledCosRange(t0 - g + Math.PI / 2, t1 - g + Math.PI / 2, n2 * c0 - n1 * s0, n2 * c1 - n1 * s1, U, CS, 2);
+  const cLo = CS[0] as number;
+  const cHi = CS[1] as number;
+  const sLo = CS[2] as number;
+  const sHi = CS[3] as number;
   const ftLo = mulLo(pLo, pHi, sLo, sHi) - Math.max(q * cLo, q * cHi);
   const ftHi = mulHi(pLo, pHi, sLo, sHi) - Math.min(q * cLo, q * cHi);
   const fsLo = mulLo(drLo, drHi, cLo, cHi) + Math.min(dhLo * an, dhHi * an);
@@ -194,6 +196,8 @@ class Box {
 
 /** The ranges over the box being built (RunoutTrack.box): t0, t1, p, q, r', h' (see partials). */
 const BOX_RANGES = new Float64Array(9);
+/** cos t0, sin t0, cos t1, sin t1 of the box being built. */
+const BOX_TRIG = new Float64Array(4);
 
 /** The partials of E . nu over the box of BOX_RANGES, nu given by its components along u1, u2 and a. */
 function along(n1: number, n2: number, an: number): [number, number] {
@@ -294,6 +298,8 @@ export class RunoutTrack {
       }
     }
     this.floorBound = floor;
+    // Lowest bound first: a search takes the roots in this order, merged with its heap (lowestEvent).
+    this.roots.sort((a, b) => a.zLo - b.zLo);
   }
 
   /** Lets go of the boxes its searches kept (their children), back to its roots. */
@@ -379,6 +385,10 @@ export class RunoutTrack {
     ranges[6] = drHi;
     ranges[7] = dhLo;
     ranges[8] = dhHi;
+    BOX_TRIG[0] = Math.cos(t0);
+    BOX_TRIG[1] = Math.sin(t0);
+    BOX_TRIG[2] = Math.cos(t1);
+    BOX_TRIG[3] = Math.sin(t1);
     const [ktMag, ksMag] = along(u1[1], u2[1], a[1]);
     b.kRad = ktMag * b.dt + ksMag * b.ds;
     b.meets = Math.abs(b.k) <= b.kRad * (1 + 1e-12) + 1e-15 * this.scale;
@@ -460,10 +470,14 @@ export class RunoutTrack {
     const c0 = this.levelOffset - ((((omega * xLocalMm) % TWO_PI) + TWO_PI) % TWO_PI);
     const heap = HEAP;
     heap.clear();
-    for (const b of this.roots) heap.push(b);
+    // The roots (sorted by their bound) enter the search as it reaches them, not all at its start.
+    const roots = this.roots;
+    let next = 0;
     this.eventTheta = Number.NaN;
     for (;;) {
-      const b = heap.pop();
+      const root = roots[next];
+      const top = heap.peek();
+      const b = root !== undefined && (top === undefined || root.zLo <= top.zLo) ? roots[next++] : heap.pop();
       if (b === undefined || b.zLo >= best) break;
       const n = Math.round((b.f - c0) / TWO_PI);
       const level = c0 + TWO_PI * n;
@@ -641,6 +655,10 @@ class BoxHeap {
       i = p;
     }
     a[i] = b;
+  }
+  /** The box with the least bound, left in the heap. */
+  peek(): Box | undefined {
+    return this.a[0];
   }
   pop(): Box | undefined {
     const a = this.a;
