@@ -19,7 +19,8 @@
  * its nodes' edge points, no search). Checked in the tests against the continuous profile's Ra, Rq as
  * fz -> 0.
  * The lowest point is the continuous contact on the CC path (no runout); the highest is the largest
- * line maximum over y (the shared maximiser over the cell's width).
+ * line maximum over y (the shared maximiser over the cell's width; with runout, whose line maxima have
+ * narrow ridges in y, also searched again about the highest sample of the integral's lines).
  */
 import { inverseInput } from '../input/validate';
 import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
@@ -633,20 +634,59 @@ export function arealSa(
  * The highest point of the surface over one period cell (the largest line maximum over y: the shared
  * maximiser, 24 lines then Brent's method to 1e-12 of the cross period): height and place, mm.
  */
-export function arealPeak(m: ToothModel): { readonly highMm: number; readonly xMm: number; readonly yMm: number } {
+export function arealPeak(
+  m: ToothModel,
+  lines?: ReadonlyMap<number, Line>,
+): { readonly highMm: number; readonly xMm: number; readonly yMm: number } {
   const height = m.crossPeriodMm;
+  const tol = 1e-12 * height;
+  const lineMax = { value: (y: number) => arealLineMax(m, y).high };
   const end = newSearchEnd();
-  const highMm = maximise({ value: (y) => arealLineMax(m, y).high }, 0, height, 24, 1e-12 * height, end);
-  return { highMm, xMm: arealLineMax(m, end.x).x, yMm: end.x };
+  let highMm = maximise(lineMax, 0, height, 24, tol, end);
+  let yMm = end.x;
+  // With runout the line maxima over y are kinked, with close local maxima the scan can step over
+  // (3e-7 mm apart seen): the lines the integrals prepared (hundreds, graded where the surface turns)
+  // sample them densely; the best of their samples (breaks and nodes) is searched again between its
+  // neighbouring lines, and the higher of the two answers kept.
+  if (lines !== undefined && lines.size > 2) {
+    const ys = [...lines.keys()].sort((a, b) => a - b);
+    let best = Number.NEGATIVE_INFINITY;
+    let at = 0;
+    for (const [i, y] of ys.entries()) {
+      for (const p of (lines.get(y) as Line).pieces) {
+        const h = Math.max(p.ha, p.hb, ...p.nodes);
+        if (h > best) {
+          best = h;
+          at = i;
+        }
+      }
+    }
+    const again = newSearchEnd();
+    const h = maximise(
+      lineMax,
+      ys[Math.max(0, at - 1)] as number,
+      ys[Math.min(ys.length - 1, at + 1)] as number,
+      8,
+      tol,
+      again,
+    );
+    if (h > highMm) {
+      highMm = h;
+      yMm = again.x;
+    }
+  }
+  return { highMm, xMm: arealLineMax(m, yMm).x, yMm };
 }
 
 /** The areal parameters of a prepared model over one period cell (see the module comment). */
 export function arealParameters(m: ToothModel): ArealParameters {
-  const { area, mean, sums } = cellMoments(m, [1, 2], integrateY, new Map<number, Line>());
+  const lines = new Map<number, Line>();
+  const { area, mean, sums } = cellMoments(m, [1, 2], integrateY, lines);
   const sa = (sums[1] as number) / area;
   const sq = Math.sqrt(Math.max(0, (sums[2] as number) / area));
-  const low = m.input.finish.runoutMm > 0 ? runoutLowestMm(m) : new RowEnvelope(m, 0).floorMm;
-  const high = arealPeak(m).highMm;
+  const runout = m.input.finish.runoutMm > 0;
+  const low = runout ? runoutLowestMm(m) : new RowEnvelope(m, 0).floorMm;
+  const high = arealPeak(m, runout ? lines : undefined).highMm;
   // A point no tooth reaches has no height (+Infinity): the parameters are not defined.
   if (!Number.isFinite(mean) || !Number.isFinite(high)) throw new Error(NOT_SWEPT);
   const sp = high - mean;
