@@ -142,7 +142,10 @@
  * searches inside each piece of a line and the bounded runout search (the finish worker's chunk, on
  * first use, +0.9 kB): 304.23 in all, the ratchet 304.3. Then the pass's crest and peak kept by one
  * memo and the sloped plane checked once, its answer built field by field (later chunks, +0.11 kB):
- * 304.33 in all, the ratchet 304.4.
+ * 304.33 in all, the ratchet 304.4. Then the runout line's bites followed by Newton, the moments
+ * started from the mean's panels and the highest point searched again about the integral's lines
+ * (core/finish, in the later chunk the finish workers load, on first use, +1.41 kB): 305.74 in all,
+ * the ratchet 305.8.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -168,7 +171,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 304.4 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.4);
+  it('all of it, every .js file, is at most 305.8 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(305.8);
   });
 });
