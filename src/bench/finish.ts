@@ -8,13 +8,15 @@
  * Keys (targets of issue 29): arealMapMs (the 256 x 256 map of one cell; target 200 ms),
  * feedMarkNsPerCall (hf along the CC path, model prepared each call; target 50,000 ns),
  * balancedFeedNsPerCall (fz*; target 1,000,000 ns), balancedFeedRunoutNsPerCall (fz* of the same four
- * cases with radial runout e 0.002-0.01 mm; target within 10 times balancedFeedNsPerCall). Each also as CPU time of this process
+ * cases with radial runout e 0.002-0.01 mm; target within 10 times balancedFeedNsPerCall), arealRunoutMs (the
+ * areal parameters Sa ... Sku with runout, one of the same four cases a round, in turn). Each also as CPU time of this process
  * (`...CpuMs` / `...CpuNsPerCall`): the machine is shared, and wall time includes other load.
  * Inputs: the paper's tools R 3 Rcr 1 and R 6 Rcr 2, leads 5 and 15 degrees, tilt 0 and 10, both
  * patterns, 2 and 4 flutes, fz 0.05 to 0.2 mm, step-over 1 mm (seeded, the same every run).
  */
 import { pathToFileURL } from 'node:url';
 import type { PassPattern, ToolInput } from '../core/domain/tool';
+import { arealParameters } from '../core/finish/areal';
 import { arealMap } from '../core/finish/arealMap';
 import { balancedFeed, feedMarks } from '../core/finish/feedMarks';
 import type { FinishInput } from '../core/finish/finishInput';
@@ -81,6 +83,8 @@ export function finishBench(rounds: number): Record<string, number> {
   const balancedCpu: number[] = [];
   const balancedRunout: number[] = [];
   const balancedRunoutCpu: number[] = [];
+  const arealRunout: number[] = [];
+  const arealRunoutCpu: number[] = [];
   let sink = 0;
   for (let r = 0; r < rounds; r++) {
     const c = list[r % list.length] as Case;
@@ -104,15 +108,23 @@ export function finishBench(rounds: number): Record<string, number> {
     balanced.push((w3 * 1e6) / few.length);
     balancedCpu.push((u3 * 1e6) / few.length);
     // The same four with radial runout (e 0.002 to 0.01 mm, phases 0 to 270 degrees).
+    const withRunout = few.map((k, i) => ({
+      ...k,
+      finish: { ...k.finish, runoutMm: 0.002 * (1 + ((i * 3) % 5)), runoutPhaseDeg: 90 * i },
+    }));
     const [w4, u4] = timed(() => {
-      for (const [i, k] of few.entries()) {
-        const fin = { ...k.finish, runoutMm: 0.002 * (1 + ((i * 3) % 5)), runoutPhaseDeg: 90 * i };
-        const b = balancedFeed(k.tool, k.pattern, k.intervalMm, fin);
+      for (const k of withRunout) {
+        const b = balancedFeed(k.tool, k.pattern, k.intervalMm, k.finish);
         sink += b.ok ? b.feedPerToothMm : 0;
       }
     });
     balancedRunout.push((w4 * 1e6) / few.length);
     balancedRunoutCpu.push((u4 * 1e6) / few.length);
+    const [w5, u5] = timed(() => {
+      sink += arealParameters(toothModel(withRunout[r % withRunout.length] as Case)).saMm;
+    });
+    arealRunout.push(w5);
+    arealRunoutCpu.push(u5);
   }
   if (!Number.isFinite(sink)) throw new Error('non-finite result');
   return {
@@ -124,6 +136,8 @@ export function finishBench(rounds: number): Record<string, number> {
     balancedFeedCpuNsPerCall: median(balancedCpu),
     balancedFeedRunoutNsPerCall: median(balancedRunout),
     balancedFeedRunoutCpuNsPerCall: median(balancedRunoutCpu),
+    arealRunoutMs: median(arealRunout),
+    arealRunoutCpuMs: median(arealRunoutCpu),
   };
 }
 

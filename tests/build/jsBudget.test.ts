@@ -148,7 +148,10 @@
  * question (the first result 59.32), and every message's quote of an entry with its control and
  * invisible characters escaped (core/input/visibleText.ts, the command line's escapes moved into the
  * core: a "3" + BEL no longer reads as a valid "3"): the first result 59.49 kB, the ratchet 59.5, still
- * under the 60 kB target; 304.57 in all, the ratchet 304.6.
+ * under the 60 kB target; 304.57 in all, the ratchet 304.6. Then the runout line's bites followed by
+ * Newton, the moments started from the mean's panels and the highest point searched again about the
+ * integral's lines (core/finish, in the later chunk the finish workers load, on first use, +1.41
+ * kB): 306.00 in all, the ratchet 306.1.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -174,7 +177,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 304.6 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.6);
+  it('all of it, every .js file, is at most 306.1 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(306.1);
   });
 });

@@ -10,13 +10,17 @@
  * shared maximiser, the crossings by its bracketed root finder) and each smooth piece is integrated
  * by a 12-point Gauss-Legendre rule (20 points change no result by more than 1e-15 relative). The
  * line integrals are integrated over y by adaptive 10-point Gauss-Legendre panels, graded towards
- * the cusps between passes and (for the moments) towards the lines where the continuous surface
- * crosses the mean (where the integral of |s - m| turns like |y - y_m| as the marks shrink), halved
- * until the disagreements of panels with their halves add up to a relative 1e-7 of the whole, for
- * the mean, and for Sa and Sq^2 each. Each line is prepared once for both integrals (the mean, then
- * the moments). Checked in the tests against the continuous profile's Ra, Rq as fz -> 0.
+ * the cusps between passes, halved until the disagreements of panels with their halves add up to a
+ * relative 1e-7 of the whole, for the mean, and for Sa and Sq^2 each. The moments start from the
+ * panels the mean ended with (their lines already prepared), cut at the lines where the continuous
+ * surface crosses the mean (where the integral of |s - m| turns like |y - y_m| as the marks shrink:
+ * the kink then at a panel's end). Each line is prepared once for both integrals (the mean, then the
+ * moments); with runout a piece's cut at the mean and its parts follow the piece's bite (Newton from
+ * its nodes' edge points, no search). Checked in the tests against the continuous profile's Ra, Rq as
+ * fz -> 0.
  * The lowest point is the continuous contact on the CC path (no runout); the highest is the largest
- * line maximum over y (the shared maximiser over the cell's width).
+ * line maximum over y (the shared maximiser over the cell's width, and again about the highest sample
+ * of the integral's lines: the line maxima have narrow ridges in y that a scan can step over).
  */
 import { inverseInput } from '../input/validate';
 import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
@@ -24,7 +28,7 @@ import { planeInverse } from '../surfaces/exact';
 import { NOT_SWEPT, PassRow, passesAt } from './envelope';
 import { gaussLegendre } from './gaussLegendre';
 import { RowEnvelope } from './rowEnvelope';
-import { RunoutRow } from './runout';
+import { RunoutRow, type RunoutTrack } from './runout';
 import { piecesMax, runoutLineBreaks, runoutLineMax, runoutLowestMm } from './runoutLine';
 import type { ToothModel } from './toothModel';
 
@@ -125,6 +129,74 @@ interface Piece {
   readonly ha: number;
   readonly hb: number;
   readonly nodes: Float64Array;
+  /** With runout, the one bite whose events the nodes are (each node's edge point), when they are. */
+  readonly bite?: Bite;
+}
+
+/** A tooth's bite along a runout line: its track (no boxes) and the edge points of a piece's nodes. */
+interface Bite {
+  readonly track: RunoutTrack;
+  readonly sign: 1 | -1;
+  readonly shiftMm: number;
+  readonly thetas: Float64Array;
+  readonly ss: Float64Array;
+}
+
+/**
+ * The height at x (inside piece p) of the piece's bite, followed by Newton from the edge point of the
+ * node nearest x (RunoutTrack.followEvent): the same as the search's within the line's pieces (one bite
+ * each), without a search; NaN where it cannot be followed.
+ */
+function biteHeight(p: Piece, bite: Bite, x: number): number {
+  const c = 0.5 * (p.a + p.b);
+  const r = 0.5 * (p.b - p.a);
+  let k = 0;
+  for (let j = 1; j < ROW_RULE.nodes.length; j++)
+    if (Math.abs(c + r * (ROW_RULE.nodes[j] as number) - x) < Math.abs(c + r * (ROW_RULE.nodes[k] as number) - x))
+      k = j;
+  return bite.track.followEvent(bite.sign * (x - bite.shiftMm), bite.thetas[k] as number, bite.ss[k] as number);
+}
+
+/** The part [a, b] of piece p by its bite's heights (biteHeight), undefined where one cannot be followed. */
+function bitePiece(p: Piece, bite: Bite, a: number, b: number, ha: number, hb: number): Piece | undefined {
+  const c = 0.5 * (a + b);
+  const r = 0.5 * (b - a);
+  const nodes = new Float64Array(ROW_RULE.nodes.length);
+  for (let k = 0; k < nodes.length; k++) {
+    const h = biteHeight(p, bite, c + r * (ROW_RULE.nodes[k] as number));
+    if (Number.isNaN(h)) return undefined;
+    nodes[k] = h;
+  }
+  return { a, b, ha, hb, nodes };
+}
+
+/** A runout line's piece: its nodes by the search, with their bite when they are one track's. */
+function runoutPiece(
+  row: RunoutRow,
+  bares: Map<number, ReturnType<RunoutRow['bareTrack']>>,
+  a: number,
+  b: number,
+  ha: number,
+  hb: number,
+): Piece {
+  const c = 0.5 * (a + b);
+  const r = 0.5 * (b - a);
+  const n = ROW_RULE.nodes.length;
+  const nodes = new Float64Array(n);
+  const thetas = new Float64Array(n);
+  const ss = new Float64Array(n);
+  let track = Number.NaN;
+  for (let k = 0; k < n; k++) {
+    nodes[k] = row.heightAt(c + r * (ROW_RULE.nodes[k] as number));
+    thetas[k] = row.lastTheta;
+    ss[k] = row.lastS;
+    if (k === 0) track = row.lastTrack;
+    else if (row.lastTrack !== track) track = -1;
+  }
+  if (!(track >= 0)) return { a, b, ha, hb, nodes };
+  if (!bares.has(track)) bares.set(track, row.bareTrack(track));
+  const bare = bares.get(track);
+  return bare === undefined ? { a, b, ha, hb, nodes } : { a, b, ha, hb, nodes, bite: { ...bare, thetas, ss } };
 }
 
 /** A line's heights: the e = 0 row (rowEnvelope.ts) or the runout one (runout.ts). */
@@ -153,11 +225,10 @@ function prepareLine(m: ToothModel, y: number): Line {
   let breaks: number[];
   if (m.input.finish.runoutMm > 0) {
     const r = new RunoutRow(m, y);
-    breaks = runoutLineBreaks(m, r, 0);
-    const pieces = linePieces(r, breaks);
-    // The line's search boxes are let go (a line keeps only its pieces); the moments' few cuts at
-    // the mean prepare it anew.
-    let again: RunoutRow | undefined;
+    const pieces = runoutPieces(m, r);
+    // The line's search boxes are let go after its first integral (a line keeps only its pieces, whose
+    // bites follow the cuts at the mean); a cut whose bite cannot be followed prepares it anew.
+    let again: RunoutRow | undefined = r;
     row = {
       heightAt: (x: number) => {
         again ??= new RunoutRow(m, y);
@@ -176,8 +247,21 @@ function prepareLine(m: ToothModel, y: number): Line {
   return { row, pieces: linePieces(row, breaks) };
 }
 
-/** The pieces of a line between its breaks, with their heights. */
-function linePieces(row: HeightLine, breaks: readonly number[]): Piece[] {
+/**
+ * A runout line's pieces (runoutPiece) between its breaks. Its own function: the closures of the line
+ * (prepareLine) must not hold the row, whose search boxes it lets go.
+ */
+function runoutPieces(m: ToothModel, r: RunoutRow): Piece[] {
+  const bares = new Map<number, ReturnType<RunoutRow['bareTrack']>>();
+  return linePieces(r, runoutLineBreaks(m, r, 0), (a, b, ha, hb) => runoutPiece(r, bares, a, b, ha, hb));
+}
+
+/** The pieces of a line between its breaks, with their heights (each made by `make`). */
+function linePieces(
+  row: HeightLine,
+  breaks: readonly number[],
+  make: (a: number, b: number, ha: number, hb: number) => Piece = (a, b, ha, hb) => piece(row, a, b, ha, hb),
+): Piece[] {
   const pieces: Piece[] = [];
   let ha = row.heightAt(breaks[0] as number);
   for (let k = 0; k + 1 < breaks.length; k++) {
@@ -185,7 +269,7 @@ function linePieces(row: HeightLine, breaks: readonly number[]): Piece[] {
     const b = breaks[k + 1] as number;
     if (!(b > a)) continue;
     const hb = row.heightAt(b);
-    pieces.push(piece(row, a, b, ha, hb));
+    pieces.push(make(a, b, ha, hb));
     ha = hb;
   }
   return pieces;
@@ -250,22 +334,49 @@ function lineIntegrals(m: ToothModel, y: number, mean: number, lines: Map<number
     let prevX = p.a;
     let prevD = p.ha - mean;
     let cut = Number.NaN;
+    let lo = Number.NaN;
+    let hi = Number.NaN;
+    let dLo = Number.NaN;
+    let dHi = Number.NaN;
     const c = 0.5 * (p.a + p.b);
     const r = 0.5 * (p.b - p.a);
-    for (let k = 0; k <= p.nodes.length && Number.isNaN(cut); k++) {
+    for (let k = 0; k <= p.nodes.length && Number.isNaN(lo); k++) {
       const x = k < p.nodes.length ? c + r * (ROW_RULE.nodes[k] as number) : p.b;
       const d = (k < p.nodes.length ? (p.nodes[k] as number) : p.hb) - mean;
       if (d > 0 !== prevD > 0 && d !== 0 && prevD !== 0) {
-        const f = { value: (t: number) => row.heightAt(t) - mean };
-        cut = bracketedRoot(f, prevX, x, prevD, d, 1e-15);
+        lo = prevX;
+        hi = x;
+        dLo = prevD;
+        dHi = d;
       }
       prevX = x;
       prevD = d;
     }
-    if (Number.isNaN(cut)) {
+    if (Number.isNaN(lo)) {
       addPiece(p, mean, sums);
       continue;
     }
+    // With runout the piece's bite is followed (no search); where it cannot be, the line's search.
+    const bite = p.bite;
+    if (bite !== undefined) {
+      let failed = false;
+      const f = {
+        value: (t: number) => {
+          const h = biteHeight(p, bite, t);
+          if (Number.isNaN(h)) failed = true;
+          return h - mean;
+        },
+      };
+      cut = bracketedRoot(f, lo, hi, dLo, dHi, 1e-15);
+      const left = failed ? undefined : bitePiece(p, bite, p.a, cut, p.ha, mean);
+      const right = left === undefined ? undefined : bitePiece(p, bite, cut, p.b, mean, p.hb);
+      if (left !== undefined && right !== undefined) {
+        addPiece(left, mean, sums);
+        addPiece(right, mean, sums);
+        continue;
+      }
+    }
+    cut = bracketedRoot({ value: (t: number) => row.heightAt(t) - mean }, lo, hi, dLo, dHi, 1e-15);
     addPiece(piece(row, p.a, cut, p.ha, mean), mean, sums);
     addPiece(piece(row, cut, p.b, mean, p.hb), mean, sums);
   }
@@ -284,6 +395,40 @@ function integrateY(
   lines: Map<number, Line>,
   relTol: number = Y_TOL,
 ): number[] {
+  return adaptY(m, a, b, mean, keys, gradedEnds(a, b, cusps), lines, relTol).total;
+}
+
+/**
+ * The ends of the panels over y in [a, b] graded towards each cusp between passes: near it, where a
+ * neighbouring pass starts to cut below the line's crests, the line integral turns like a power 3/2,
+ * in a strip narrower than the feed marks' slope allows; graded panels put nodes there.
+ */
+function gradedEnds(a: number, b: number, cusps: readonly number[]): number[] {
+  const ends = [a, b];
+  for (const c of cusps) {
+    if (!(c > a && c < b)) continue;
+    ends.push(c);
+    for (let k = 1; k <= GRADING; k++) {
+      ends.push(c - (c - a) * 2 ** -k, c + (b - c) * 2 ** -k);
+    }
+  }
+  return ends.sort((p, q) => p - q);
+}
+
+/**
+ * The adaptive integral over y from the panels between `ends` (sorted, a and b the first and last),
+ * halved as the module comment says: the total and the ends of the panels it ended with.
+ */
+function adaptY(
+  m: ToothModel,
+  a: number,
+  b: number,
+  mean: number,
+  keys: readonly number[],
+  ends: readonly number[],
+  lines: Map<number, Line>,
+  relTol: number,
+): { readonly total: number[]; readonly ends: number[] } {
   const panel = (lo: number, hi: number) => {
     const c = 0.5 * (lo + hi);
     const r = 0.5 * (hi - lo);
@@ -318,18 +463,6 @@ function integrateY(
       diff: keys.map((k) => Math.abs((left[k] as number) + (right[k] as number) - (whole[k] as number))),
     };
   };
-  // Start from panels graded towards each cusp between passes: near it, where a neighbouring pass
-  // starts to cut below the line's crests, the line integral turns like a power 3/2, in a strip
-  // narrower than the feed marks' slope allows; graded panels put nodes there.
-  const ends = [a, b];
-  for (const c of cusps) {
-    if (!(c > a && c < b)) continue;
-    ends.push(c);
-    for (let k = 1; k <= GRADING; k++) {
-      ends.push(c - (c - a) * 2 ** -k, c + (b - c) * 2 ** -k);
-    }
-  }
-  ends.sort((p, q) => p - q);
   const panels: Panel[] = [];
   for (let i = 0; i + 1 < ends.length; i++) {
     const lo = ends[i] as number;
@@ -363,7 +496,7 @@ function integrateY(
   const total = [0, 0, 0, 0, 0];
   for (const p of panels)
     for (let i = 0; i < 5; i++) total[i] = (total[i] as number) + (p.left[i] as number) + (p.right[i] as number);
-  return total;
+  return { total, ends: [...panels.map((p) => p.lo), b] };
 }
 /**
  * The quick integral over y in [a, b] of the line integrals: one 10-point Gauss-Legendre panel
@@ -450,11 +583,32 @@ function cellMoments(
   const height = m.crossPeriodMm;
   const area = m.feedPeriodMm * height;
   const cusps = cuspLines(m);
-  const mean = (integral(m, 0, height, Number.NaN, [0], cusps, lines)[0] as number) / area;
+  // The full integral: the moments start from the panels the mean ended with (their lines prepared),
+  // each line where the continuous surface crosses the mean made a panel end (the kink at an end).
+  const first =
+    integral === integrateY
+      ? adaptY(m, 0, height, Number.NaN, [0], gradedEnds(0, height, cusps), lines, Y_TOL)
+      : undefined;
+  const mean = ((first?.total ?? integral(m, 0, height, Number.NaN, [0], cusps, lines))[0] as number) / area;
   const ends = [0, ...cusps.filter((c) => c > 0 && c < height), height];
   if (m.input.pattern === 'zigzag') ends.push(m.input.intervalMm);
   ends.sort((p, q) => p - q);
-  const sums = integral(m, 0, height, mean, keys, [...cusps, ...meanLines(m, ends, mean)], lines);
+  const crossings = meanLines(m, ends, mean);
+  if (first !== undefined) {
+    const start = [...first.ends, ...crossings.filter((y) => y > 0 && y < height && !first.ends.includes(y))];
+    const sums = adaptY(
+      m,
+      0,
+      height,
+      mean,
+      keys,
+      start.sort((p, q) => p - q),
+      lines,
+      Y_TOL,
+    ).total;
+    return { area, mean, sums };
+  }
+  const sums = integral(m, 0, height, mean, keys, [...cusps, ...crossings], lines);
   return { area, mean, sums };
 }
 
@@ -480,20 +634,58 @@ export function arealSa(
  * The highest point of the surface over one period cell (the largest line maximum over y: the shared
  * maximiser, 24 lines then Brent's method to 1e-12 of the cross period): height and place, mm.
  */
-export function arealPeak(m: ToothModel): { readonly highMm: number; readonly xMm: number; readonly yMm: number } {
+export function arealPeak(
+  m: ToothModel,
+  lines?: ReadonlyMap<number, Line>,
+): { readonly highMm: number; readonly xMm: number; readonly yMm: number } {
   const height = m.crossPeriodMm;
+  const tol = 1e-12 * height;
+  const lineMax = { value: (y: number) => arealLineMax(m, y).high };
   const end = newSearchEnd();
-  const highMm = maximise({ value: (y) => arealLineMax(m, y).high }, 0, height, 24, 1e-12 * height, end);
-  return { highMm, xMm: arealLineMax(m, end.x).x, yMm: end.x };
+  let highMm = maximise(lineMax, 0, height, 24, tol, end);
+  let yMm = end.x;
+  // The line maxima over y are kinked, with narrow ridges the scan can step over (Sz 1e-4 mm low seen
+  // with runout, 6e-5 mm without): the lines the integrals prepared (hundreds, graded towards the
+  // cusps) sample them densely; the best of their samples (breaks and nodes) is searched again between
+  // its neighbouring lines, and the higher of the two answers kept.
+  if (lines !== undefined && lines.size > 2) {
+    const ys = [...lines.keys()].sort((a, b) => a - b);
+    let best = Number.NEGATIVE_INFINITY;
+    let at = 0;
+    for (const [i, y] of ys.entries()) {
+      for (const p of (lines.get(y) as Line).pieces) {
+        const h = Math.max(p.ha, p.hb, ...p.nodes);
+        if (h > best) {
+          best = h;
+          at = i;
+        }
+      }
+    }
+    const again = newSearchEnd();
+    const h = maximise(
+      lineMax,
+      ys[Math.max(0, at - 1)] as number,
+      ys[Math.min(ys.length - 1, at + 1)] as number,
+      8,
+      tol,
+      again,
+    );
+    if (h > highMm) {
+      highMm = h;
+      yMm = again.x;
+    }
+  }
+  return { highMm, xMm: arealLineMax(m, yMm).x, yMm };
 }
 
 /** The areal parameters of a prepared model over one period cell (see the module comment). */
 export function arealParameters(m: ToothModel): ArealParameters {
-  const { area, mean, sums } = cellMoments(m, [1, 2], integrateY, new Map<number, Line>());
+  const lines = new Map<number, Line>();
+  const { area, mean, sums } = cellMoments(m, [1, 2], integrateY, lines);
   const sa = (sums[1] as number) / area;
   const sq = Math.sqrt(Math.max(0, (sums[2] as number) / area));
   const low = m.input.finish.runoutMm > 0 ? runoutLowestMm(m) : new RowEnvelope(m, 0).floorMm;
-  const high = arealPeak(m).highMm;
+  const high = arealPeak(m, lines).highMm;
   // A point no tooth reaches has no height (+Infinity): the parameters are not defined.
   if (!Number.isFinite(mean) || !Number.isFinite(high)) throw new Error(NOT_SWEPT);
   const sp = high - mean;

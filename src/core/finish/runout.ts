@@ -87,22 +87,18 @@ function profileAt(p: EdgeProfile, s: number, out: Float64Array, left = false): 
   out[3] = 1;
 }
 
-/** Lower and upper ends of cos over [a, b]. */
-function cosRange(a: number, b: number, out: Float64Array, at: number): void {
+/**
+ * Lower and upper ends of U cos over [a, b] given its values at the ends (`ya`, `yb`): -U or U where a
+ * minimum (pi + 2 pi n) or maximum (2 pi n) lies inside.
+ */
+function scaledCosRange(a: number, b: number, ya: number, yb: number, U: number, out: Float64Array, at: number): void {
   if (b - a >= TWO_PI) {
-    out[at] = -1;
-    out[at + 1] = 1;
+    out[at] = -U;
+    out[at + 1] = U;
     return;
   }
-  const ca = Math.cos(a);
-  const cb = Math.cos(b);
-  let lo = Math.min(ca, cb);
-  let hi = Math.max(ca, cb);
-  // A maximum (2 pi n) or minimum (pi + 2 pi n) inside.
-  if (Math.ceil(a / TWO_PI) * TWO_PI <= b) hi = 1;
-  if (Math.ceil((a - Math.PI) / TWO_PI) * TWO_PI + Math.PI <= b) lo = -1;
-  out[at] = lo;
-  out[at + 1] = hi;
+  out[at] = Math.ceil((a - Math.PI) / TWO_PI) * TWO_PI + Math.PI <= b ? -U : Math.min(ya, yb);
+  out[at + 1] = Math.ceil(a / TWO_PI) * TWO_PI <= b ? U : Math.max(ya, yb);
 }
 
 /** Lower and upper ends of [a0, a1] x [b0, b1]. */
@@ -138,12 +134,18 @@ function partials(
 ): [number, number] {
   const U = Math.hypot(n1, n2);
   const g = Math.atan2(n2, n1);
-  cosRange(t0 - g, t1 - g, CS, 0);
-  cosRange(t0 - g + Math.PI / 2, t1 - g + Math.PI / 2, CS, 2);
-  const cLo = U * (CS[0] as number);
-  const cHi = U * (CS[1] as number);
-  const sLo = U * (CS[2] as number);
-  const sHi = U * (CS[3] as number);
+  // C = U cos(theta - g) = n1 cos theta + n2 sin theta and S = -U sin(theta - g), from the cosines and
+  // sines of the box's ends (BOX_TRIG), with U or -U where a maximum or minimum lies inside.
+  const c0 = BOX_TRIG[0] as number;
+  const s0 = BOX_TRIG[1] as number;
+  const c1 = BOX_TRIG[2] as number;
+  const s1 = BOX_TRIG[3] as number;
+  scaledCosRange(t0 - g, t1 - g, n1 * c0 + n2 * s0, n1 * c1 + n2 * s1, U, CS, 0);
+  scaledCosRange(t0 - g + Math.PI / 2, t1 - g + Math.PI / 2, n2 * c0 - n1 * s0, n2 * c1 - n1 * s1, U, CS, 2);
+  const cLo = CS[0] as number;
+  const cHi = CS[1] as number;
+  const sLo = CS[2] as number;
+  const sHi = CS[3] as number;
   const ftLo = mulLo(pLo, pHi, sLo, sHi) - Math.max(q * cLo, q * cHi);
   const ftHi = mulHi(pLo, pHi, sLo, sHi) - Math.min(q * cLo, q * cHi);
   const fsLo = mulLo(drLo, drHi, cLo, cHi) + Math.min(dhLo * an, dhHi * an);
@@ -194,6 +196,8 @@ class Box {
 
 /** The ranges over the box being built (RunoutTrack.box): t0, t1, p, q, r', h' (see partials). */
 const BOX_RANGES = new Float64Array(9);
+/** cos t0, sin t0, cos t1, sin t1 of the box being built. */
+const BOX_TRIG = new Float64Array(4);
 
 /** The partials of E . nu over the box of BOX_RANGES, nu given by its components along u1, u2 and a. */
 function along(n1: number, n2: number, an: number): [number, number] {
@@ -248,9 +252,16 @@ export class RunoutTrack {
   eventTheta = Number.NaN;
   eventS = Number.NaN;
 
-  constructor(m: ToothModel, yLocalMm: number, tooth: number, counter = { made: 0, kept: 0 }) {
+  /** Pass-local y of the line and the tooth's index. */
+  readonly yLocalMm: number;
+  readonly tooth: number;
+
+  /** With `boxes` false the track has no boxes (no search): it only follows events (followEvent). */
+  constructor(m: ToothModel, yLocalMm: number, tooth: number, counter = { made: 0, kept: 0 }, boxes = true) {
     this.m = m;
     this.counter = counter;
+    this.yLocalMm = yLocalMm;
+    this.tooth = tooth;
     this.prof = edgeProfile(m);
     this.yRel = yLocalMm - m.centreYMm;
     const f = m.input.finish;
@@ -267,7 +278,7 @@ export class RunoutTrack {
     cuts.push(p.sMax);
     const nt = 12;
     let floor = Number.POSITIVE_INFINITY;
-    for (let i = 0; i + 1 < cuts.length; i++) {
+    for (let i = 0; boxes && i + 1 < cuts.length; i++) {
       const a = cuts[i] as number;
       const b = cuts[i + 1] as number;
       const ns = 4;
@@ -287,6 +298,8 @@ export class RunoutTrack {
       }
     }
     this.floorBound = floor;
+    // Lowest bound first: a search takes the roots in this order, merged with its heap (lowestEvent).
+    this.roots.sort((a, b) => a.zLo - b.zLo);
   }
 
   /** Lets go of the boxes its searches kept (their children), back to its roots. */
@@ -362,7 +375,20 @@ export class RunoutTrack {
     const u1 = m.u1;
     const u2 = m.u2;
     const a = m.axis;
-    BOX_RANGES.set([t0, t1, pLo, pHi, q, drLo, drHi, dhLo, dhHi]);
+    const ranges = BOX_RANGES;
+    ranges[0] = t0;
+    ranges[1] = t1;
+    ranges[2] = pLo;
+    ranges[3] = pHi;
+    ranges[4] = q;
+    ranges[5] = drLo;
+    ranges[6] = drHi;
+    ranges[7] = dhLo;
+    ranges[8] = dhHi;
+    BOX_TRIG[0] = Math.cos(t0);
+    BOX_TRIG[1] = Math.sin(t0);
+    BOX_TRIG[2] = Math.cos(t1);
+    BOX_TRIG[3] = Math.sin(t1);
     const [ktMag, ksMag] = along(u1[1], u2[1], a[1]);
     b.kRad = ktMag * b.dt + ksMag * b.ds;
     b.meets = Math.abs(b.k) <= b.kRad * (1 + 1e-12) + 1e-15 * this.scale;
@@ -444,10 +470,14 @@ export class RunoutTrack {
     const c0 = this.levelOffset - ((((omega * xLocalMm) % TWO_PI) + TWO_PI) % TWO_PI);
     const heap = HEAP;
     heap.clear();
-    for (const b of this.roots) heap.push(b);
+    // The roots (sorted by their bound) enter the search as it reaches them, not all at its start.
+    const roots = this.roots;
+    let next = 0;
     this.eventTheta = Number.NaN;
     for (;;) {
-      const b = heap.pop();
+      const root = roots[next];
+      const top = heap.peek();
+      const b = root !== undefined && (top === undefined || root.zLo <= top.zLo) ? roots[next++] : heap.pop();
       if (b === undefined || b.zLo >= best) break;
       const n = Math.round((b.f - c0) / TWO_PI);
       const level = c0 + TWO_PI * n;
@@ -525,6 +555,44 @@ export class RunoutTrack {
   }
 
   /**
+   * The event of this tooth at pass-local x followed from an edge point (theta, s) of a nearby x (the
+   * same bite: Newton on (K, F - level) from it, the level the nearest to F there): its height, with
+   * its place in eventTheta, eventS; NaN when Newton does not settle on the edge. It need not be the
+   * tooth's lowest event at x (lowestEvent), only one of its events: runoutLine.ts checks the bites it
+   * follows against the search.
+   */
+  followEvent(xLocalMm: number, theta: number, s: number): number {
+    const omega = this.m.omegaRadPerMm;
+    const c0 = this.levelOffset - ((((omega * xLocalMm) % TWO_PI) + TWO_PI) % TWO_PI);
+    const e = SOLVE;
+    let t = theta;
+    let u = s;
+    this.centre(e, t, u);
+    const level = c0 + TWO_PI * Math.round((t - omega * e.w - c0) / TWO_PI);
+    for (let it = 0; it < 30; it++) {
+      const k = e.k;
+      const f = t - omega * e.w - level;
+      const ft = 1 - omega * e.wt;
+      const fs = -omega * e.ws;
+      const det = e.kt * fs - e.ks * ft;
+      if (!(det !== 0)) return Number.NaN;
+      const dtStep = -(fs * k - e.ks * f) / det;
+      const dsStep = -(-ft * k + e.kt * f) / det;
+      t += dtStep;
+      u += dsStep;
+      if (!(Math.abs(dtStep) * this.rhoMax + Math.abs(dsStep) <= this.scale)) return Number.NaN;
+      this.centre(e, t, u);
+      if (Math.abs(dtStep) * this.rhoMax + Math.abs(dsStep) <= 1e-14 * this.scale) {
+        if (u < 0 || u > this.prof.sMax) return Number.NaN;
+        this.eventTheta = t;
+        this.eventS = u;
+        return e.z;
+      }
+    }
+    return Number.NaN;
+  }
+
+  /**
    * The lowest point of the curve K = 0 (the tooth's lowest height on this line, whatever x), mm, to
    * `tol` (mm): with `bound` the search's rigorous lower bound, else the height of a point on the
    * curve (within `tol` above the lowest).
@@ -587,6 +655,10 @@ class BoxHeap {
       i = p;
     }
     a[i] = b;
+  }
+  /** The box with the least bound, left in the heap. */
+  peek(): Box | undefined {
+    return this.a[0];
   }
   pop(): Box | undefined {
     const a = this.a;
@@ -749,6 +821,28 @@ export class RunoutRow {
     } while (this.prepareBelow(best));
     if (this.known.size < 20000) this.known.set(xMm, [best, this.lastTrack, this.lastTheta, this.lastS]);
     return best;
+  }
+
+  /** Track `id` without its boxes (it only follows events) and how global x maps to its local x. */
+  bareTrack(id: number): { readonly track: RunoutTrack; readonly sign: 1 | -1; readonly shiftMm: number } | undefined {
+    const t = this.byId[id];
+    if (t === undefined) return undefined;
+    const track = new RunoutTrack(this.m, t.track.yLocalMm, t.track.tooth, undefined, false);
+    return { track, sign: t.sign, shiftMm: t.shiftMm };
+  }
+
+  /**
+   * The height at x of the bite of track `id` through its edge point (theta, s) at a nearby x
+   * (RunoutTrack.followEvent), NaN where it cannot be followed; its place in lastTheta, lastS.
+   */
+  followBite(id: number, xMm: number, theta: number, s: number): number {
+    const t = this.byId[id];
+    if (t === undefined) return Number.NaN;
+    const h = t.track.followEvent(t.sign * (xMm - t.shiftMm), theta, s);
+    this.lastTrack = id;
+    this.lastTheta = t.track.eventTheta;
+    this.lastS = t.track.eventS;
+    return h;
   }
 
   /** The lowest height of the line over all x: the least of its teeth's lowest points, mm. */

@@ -8,8 +8,11 @@
  * bite (another turn) of the same tooth: the crests between bites, and where a bite ends. The line is
  * sampled 16 times per tooth pitch; where two neighbouring samples are not the same bite (another
  * track, or the event moved on the edge by more than 4 times the step in x plus a tolerance), the
- * change is located by bisection to 1e-13 of the period; a bracket whose events draw together as it
- * shrinks (to a quarter in 4 halvings) holds a fast continuous motion, not a change. Within a bite the event's motion per unit x
+ * change is located where the two bites' heights cross, each bite followed across the bracket by
+ * Newton from its sample (no search), and checked by the search either side; where that fails (a bite
+ * that ends, a third between them) by bisection on the search to 1e-13 of the period, where a bracket
+ * whose events draw together as it shrinks (to a quarter in 4 halvings) holds a fast continuous
+ * motion, not a change. Within a bite the event's motion per unit x
  * is 1 / |dX/dl| with X = E_x - theta / omega the position along the line a point of the edge cuts
  * (l the arc length on the section in the metric (rho theta, s)); it is about 1 near the bites'
  * valleys, where the section runs along the feed. A change the sampling misses (a bite narrower than
@@ -17,7 +20,7 @@
  * The lowest point of a line is the least of its teeth's lowest points (every point of a tooth's
  * section is cut once a turn); the highest is at a change (a crest), taken on both sides of it.
  */
-import { maximise, newSearchEnd } from '../math/rootFinder';
+import { bracketedRoot, maximise, newSearchEnd } from '../math/rootFinder';
 import { NOT_CONVERGED } from './envelope';
 import { gaussLegendre } from './gaussLegendre';
 import { RunoutRow } from './runout';
@@ -62,13 +65,88 @@ function sameBite(m: ToothModel, a: Ident, b: Ident): boolean {
   return eventDistance(a, b) <= 4 * Math.abs(a.x - b.x) + 1e-12 * m.toolRadiusMm;
 }
 
+/** The bite of `from` followed to x (RunoutRow.followBite), undefined where it cannot be. */
+function followAt(row: RunoutRow, from: Ident, x: number): Ident | undefined {
+  const h = row.followBite(from.track, x, from.theta, from.s);
+  if (Number.isNaN(h)) return undefined;
+  return { x, h, track: row.lastTrack, theta: row.lastTheta, s: row.lastS, rho: row.lastRho() };
+}
+
+/** locateChange's answer where the change between two samples lies at an end of the piece (none). */
+const NO_CHANGE = Number.NEGATIVE_INFINITY;
+
+/**
+ * Where the lowest event passes from the bite of `lo` to the bite of `hi` (neighbouring samples of the
+ * piece [a, b], not one bite) when both bites are smooth across the bracket: the root of their height
+ * difference, each bite followed by Newton from its sample (no search), closed by the shared bracketed
+ * root finder to adjacent doubles; then checked by the search on either side of it (each side the bite
+ * followed, within 1e-11 of the period). NO_CHANGE where the root lies at an end of the piece (the break
+ * already there); NaN where a bite cannot be followed across the bracket, the heights do not cross in
+ * it, or the search disagrees: the caller then bisects on the search (a bite that ends, a change of
+ * bite between them, a fast continuous motion).
+ */
+function locateChange(m: ToothModel, row: RunoutRow, lo: Ident, hi: Ident, a: number, b: number): number {
+  if (lo.track < 0 || hi.track < 0) return Number.NaN;
+  const P = m.feedPeriodMm;
+  const endTol = 1e-13 * P;
+  const lowAtHi = followAt(row, lo, hi.x);
+  const highAtLo = followAt(row, hi, lo.x);
+  if (lowAtHi === undefined || highAtLo === undefined) return Number.NaN;
+  // One bite after all (a fast motion): the bisection's own test decides.
+  if (lowAtHi.track === hi.track && eventDistance(lowAtHi, hi) <= 1e-12 * m.toolRadiusMm) return Number.NaN;
+  const fLo = lo.h - highAtLo.h;
+  const fHi = lowAtHi.h - hi.h;
+  const noise = 1e-12 * m.toolRadiusMm;
+  if (!(fLo < 0 && fHi > 0)) {
+    // The two bites meet at an end of the piece, within the heights' rounding: the break already there.
+    if (lo.x - a <= endTol && fLo >= 0 && fLo <= noise) return NO_CHANGE;
+    if (b - hi.x <= endTol && fHi <= 0 && fHi >= -noise) return NO_CHANGE;
+    return Number.NaN;
+  }
+  // Each bite followed from its latest event (the root finder closes in, so that is the nearest).
+  let left = lo;
+  let right = hi;
+  let failed = false;
+  const f = {
+    value: (x: number) => {
+      const l = followAt(row, left, x);
+      const r = l === undefined ? undefined : followAt(row, right, x);
+      if (l === undefined || r === undefined) {
+        failed = true;
+        return Number.NaN;
+      }
+      left = l;
+      right = r;
+      return l.h - r.h;
+    },
+  };
+  const root = bracketedRoot(f, lo.x, hi.x, fLo, fHi, 0);
+  if (failed) return Number.NaN;
+  if (root - a <= endTol || b - root <= endTol) return NO_CHANGE;
+  const l = followAt(row, left, root);
+  const r = followAt(row, right, root);
+  if (l === undefined || r === undefined) return Number.NaN;
+  // The search on either side finds the bites followed.
+  const d = 1e-11 * P;
+  const sideTol = 4 * d + 1e-12 * m.toolRadiusMm;
+  const x0 = Math.max(lo.x, root - d);
+  const x1 = Math.min(hi.x, root + d);
+  const sl = x0 === lo.x ? lo : identAt(row, x0);
+  const sr = x1 === hi.x ? hi : identAt(row, x1);
+  if (!(eventDistance(sl, l) <= sideTol + 4 * (root - x0) && eventDistance(sr, r) <= sideTol + 4 * (x1 - root)))
+    return Number.NaN;
+  return root;
+}
+
 /**
  * The breakpoints of a line over one feed period from x0 (x0 and x0 + P included), sorted: the period
  * cut into 4 pieces per tooth pitch, then every piece whose ends and 12-point Gauss-Legendre nodes
  * (those the areal integrals use) are not all one bite, cut where the first change between
- * neighbouring samples lies (bisection to 1e-13 of the period), until none is left.
+ * neighbouring samples lies, until none is left: where the two bites can be followed across the
+ * bracket, at the root of their difference (locateChange), else by bisection on the search to 1e-13 of
+ * the period (`follow` false: bisection always, the way the tests check the roots against).
  */
-export function runoutLineBreaks(m: ToothModel, row: RunoutRow, x0: number): number[] {
+export function runoutLineBreaks(m: ToothModel, row: RunoutRow, x0: number, follow = true): number[] {
   const P = m.feedPeriodMm;
   const n = PIECES_PER_TOOTH * m.input.finish.flutes;
   const done: number[] = [x0 + P];
@@ -89,6 +167,15 @@ export function runoutLineBreaks(m: ToothModel, row: RunoutRow, x0: number): num
       if (!sameBite(m, prev, cur)) {
         // Never a silent wrong integral: a line that keeps cutting is an error.
         if (++guard > MAX_CUTS) throw new Error(NOT_CONVERGED);
+        const located = follow ? locateChange(m, row, prev, cur, a, b) : Number.NaN;
+        if (located === NO_CHANGE) {
+          prev = cur;
+          continue;
+        }
+        if (!Number.isNaN(located)) {
+          cut = located;
+          break;
+        }
         let lo = prev;
         let hi = cur;
         const d0 = eventDistance(lo, hi);
