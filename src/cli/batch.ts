@@ -198,6 +198,8 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
   }
   // The finish's cells (none without finish columns; empty without teeth), or the row's error.
   let teeth = '';
+  /** The error column of a row whose finish is answered but for its areal parameters (finish.ts finishCells). */
+  let teethNote = '';
   if (layout.finish) {
     const cells =
       a.kind === 'pass-forward' || a.kind === 'pass-inverse'
@@ -213,20 +215,22 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
         : finishCells(values, null, 'one-way', 0, 'doublyCurved', layout.unit);
     if (!cells.ok) return errorRow(echo, layout, cells.message);
     teeth = cells.text;
+    teethNote = csvText(escapeControls(cells.note));
   }
-  if (a.kind === 'pass-inverse') return `${echo},${inverseResults(exactInverse(a.input), layout.unit)},${teeth},\n`;
+  if (a.kind === 'pass-inverse')
+    return `${echo},${inverseResults(exactInverse(a.input), layout.unit)},${teeth},${teethNote}\n`;
   if (a.kind === 'doubly-inverse') {
     const e = doublyCurvedInverse({ ...a.problem, intervalMm: a.problem.valueMm });
-    return `${echo},${inverseResults(e, layout.unit)},${teeth},\n`;
+    return `${echo},${inverseResults(e, layout.unit)},${teeth},${teethNote}\n`;
   }
   const hMm = a.kind === 'pass-forward' ? a.input.scallopHeightMm : a.scallopHeightMm;
   const length = lengthWriter(layout.unit);
   const h = a.targetRaMm === undefined ? '' : `${length(hMm)},`;
   if (a.kind === 'doubly-forward') {
     const notes = emptyCellNotes(forwardInput(a.problem, a.problem.pattern, a.scallopHeightMm)).join(' ');
-    return `${echo},${h}${doublyCurvedResults(a.problem, a.scallopHeightMm, layout.unit)},${csvText(notes)}${teeth},\n`;
+    return `${echo},${h}${doublyCurvedResults(a.problem, a.scallopHeightMm, layout.unit)},${csvText(notes)}${teeth},${teethNote}\n`;
   }
-  return `${echo},${h}${resultFields(a.input, length)}${teeth},\n`;
+  return `${echo},${h}${resultFields(a.input, length)}${teeth},${teethNote}\n`;
 }
 
 /** The step-over of a plane or cylinder row: the exact one for h (or Ra), the given one for L. */
@@ -300,6 +304,8 @@ function threeAxisRow(values: QuestionValues, fields: readonly string[], layout:
   }
   const a = r.answer;
   let teeth = '';
+  /** The error column of a row whose finish is answered but for its areal parameters (finish.ts finishCells). */
+  let teethNote = '';
   if (layout.finish) {
     // The sloped plane is a plane in the posture the slope gives; every pass fed the same way.
     const c = r.problem.case;
@@ -321,11 +327,12 @@ function threeAxisRow(values: QuestionValues, fields: readonly string[], layout:
     );
     if (!cells.ok) return errorRow(echo, layout, cells.message);
     teeth = cells.text;
+    teethNote = csvText(escapeControls(cells.note));
   }
   const note = a.noScallop ? 'no scallop: a flat end on a flat floor, L = 2R for any h' : '';
   const stepDown = a.stepDownMm === null ? '' : csvNumber(a.stepDownMm);
   const lengths = inUnit([csvNumber(a.intervalMm), csvNumber(a.horizontalStepMm), stepDown], layout.unit);
-  return `${echo},${lengths},${csvNumber(a.leadDeg)},${csvNumber(a.tiltDeg)},${csvText(note)}${teeth},\n`;
+  return `${echo},${lengths},${csvNumber(a.leadDeg)},${csvNumber(a.tiltDeg)},${csvText(note)}${teeth},${teethNote}\n`;
 }
 
 /**

@@ -124,7 +124,13 @@ export function finishLines(
     ['period', L.length(m.period), L.u, input.runoutMm > 0 ? 'one turn (z fz): runout makes the teeth unequal' : 'fz'],
     balanced,
   ];
+  const head = [
+    `Feed marks (${teeth}, fz ${L.echo(input.feedPerToothMm)} ${L.u}${runout}; straight teeth, M3):`,
+    ...indent(renderTable(KEY_VALUE, marks, false)),
+    '',
+  ];
   const a = r.areal;
+  if (a === null) return [...head, `Areal parameters: ${r.arealRefusal ?? ''}`];
   const areal: string[][] = [
     ['Sa', L.length(a.Sa), L.u, 'mean absolute height from the mean plane'],
     ['Sq', L.length(a.Sq), L.u, 'root mean square height'],
@@ -144,9 +150,7 @@ export function finishLines(
             `dx = ${L.length(x3p.facts.dxMm)} ${L.u}, dy = ${L.length(x3p.facts.dyMm)} ${L.u}; heights in metres, ISO 25178-72)`,
         ];
   return [
-    `Feed marks (${teeth}, fz ${L.echo(input.feedPerToothMm)} ${L.u}${runout}; straight teeth, M3):`,
-    ...indent(renderTable(KEY_VALUE, marks, false)),
-    '',
+    ...head,
     'Areal parameters over one period cell (ISO 25178-2, primary surface, no filter, design plane as reference):',
     ...indent(renderTable(KEY_VALUE, areal, false)),
     ...file,
@@ -159,7 +163,9 @@ export function finishJson(
   x3p?: { readonly file: string; readonly facts: X3pFacts },
 ): {
   feedMarks: { height: number; period: number; balancedFz?: number };
-  areal: { [symbol: string]: number };
+  /** Left out where the areal surface is not defined, `arealRefusal` saying why. */
+  areal?: { [symbol: string]: number };
+  arealRefusal?: string;
   x3p?: { [key: string]: string | number };
 } {
   const m = report.feedMarks;
@@ -169,7 +175,7 @@ export function finishJson(
       period: m.period,
       ...(m.balancedFz === null ? {} : { balancedFz: m.balancedFz }),
     },
-    areal: { ...report.areal },
+    ...(report.areal === null ? { arealRefusal: report.arealRefusal ?? '' } : { areal: { ...report.areal } }),
   };
   if (x3p !== undefined) {
     const f = x3p.facts;
@@ -194,8 +200,10 @@ export function finishCells(
   surfaceKind: string,
   unit: LengthUnit,
   typed: Values = values,
-): { readonly ok: true; readonly text: string } | { readonly ok: false; readonly message: string } {
-  if (!finishRequested(values)) return { ok: true, text: EMPTY_CELLS };
+):
+  | { readonly ok: true; readonly text: string; readonly note: string }
+  | { readonly ok: false; readonly message: string } {
+  if (!finishRequested(values)) return { ok: true, text: EMPTY_CELLS, note: '' };
   const run =
     tool === null
       ? ({ ok: false, errors: [finishScopeRefusal(surfaceKind)] } as const)
@@ -203,17 +211,11 @@ export function finishCells(
   if (!run.ok) return { ok: false, message: run.errors.map((e) => finishErrorWords(e, unit, typed)).join(' ') };
   const { feedMarks: m, areal: a } = run.report;
   const length = (mm: number) => csvNumber(fromMm(mm, unit));
-  const cells = [
-    length(m.height),
-    length(m.period),
-    m.balancedFz === null ? '' : length(m.balancedFz),
-    length(a.Sa),
-    length(a.Sq),
-    length(a.Sz),
-    length(a.Sp),
-    length(a.Sv),
-    csvNumber(a.Ssk),
-    csvNumber(a.Sku),
-  ];
-  return { ok: true, text: `,${cells.join(',')}` };
+  const marks = [length(m.height), length(m.period), m.balancedFz === null ? '' : length(m.balancedFz)];
+  // No areal surface (a flat end lying flat): its cells empty and the row's error column says why.
+  const areal =
+    a === null
+      ? ['', '', '', '', '', '', '']
+      : [length(a.Sa), length(a.Sq), length(a.Sz), length(a.Sp), length(a.Sv), csvNumber(a.Ssk), csvNumber(a.Sku)];
+  return { ok: true, text: `,${[...marks, ...areal].join(',')}`, note: run.report.arealRefusal ?? '' };
 }

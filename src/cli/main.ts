@@ -143,7 +143,8 @@ interface Wanted {
 
 /**
  * With --x3p: the areal surface of a computed finish written to the file (args.ts checked the grid
- * options); the finish with its file named, or 1 when the file cannot be written (said on stderr).
+ * options); the finish with its file named, or 1 when the file cannot be written, 2 where the areal
+ * surface is not defined (each said on stderr).
  */
 function withX3p(
   run: Extract<FinishRun, { ok: true }>,
@@ -155,6 +156,11 @@ function withX3p(
 ): NonNullable<Extras['finish']> | number {
   const file = values.x3p;
   if (file === undefined) return run;
+  if (run.report.areal === null) {
+    // No file of a surface that is not defined (a flat end lying flat): said on --x3p, exit 2.
+    io.stderr.write(errorLine(`--x3p: no file: ${run.report.arealRefusal ?? ''}`));
+    return 2;
+  }
   const pair = (text: string | undefined, fallback: readonly [number, number]) =>
     (text?.split(/[,x]/i).map(Number) as unknown as readonly [number, number] | undefined) ?? fallback;
   const f = run.input;

@@ -181,13 +181,25 @@ describe('refusals, one line each', () => {
     });
   }
 
-  it('a flat end upright at L = 2R: the areal parameters are refused in one plain line on --fz (slivers no tooth cuts)', async () => {
-    const r = await runMain(['--R', '3', '--Rcr', '0', '--rho', '0', '--h', '0.05', '--flutes', '4', '--fz', '0.1']);
-    expect(r.code).toBe(2);
-    expect(r.stderr.trim()).toBe(
-      'error: --fz: The areal parameters are not defined here: thin slivers between the passes are cut by no tooth (the bottom edges miss them); try a smaller step-over.',
-    );
-    expect(r.stdout).toBe('');
+  it('a flat end upright at L = 2R: the step-over and hf answer, the areal parameters alone refused in one line (slivers no tooth cuts)', async () => {
+    const flat = ['--R', '3', '--Rcr', '0', '--rho', '0', '--h', '0.05', '--flutes', '4', '--fz', '0.1'];
+    const SLIVERS =
+      'The areal parameters are not defined here: thin slivers between the passes are cut by no tooth (the bottom edges miss them); try a smaller step-over.';
+    const table = await runMain(flat);
+    expect([table.code, table.stderr]).toEqual([0, '']);
+    expect(table.stdout).toMatch(/^ {2}L +6\.000000 +mm/m);
+    expect(table.stdout).toMatch(/^ {2}hf +0\.000000 +mm/m);
+    expect(table.stdout).toContain(`Areal parameters: ${SLIVERS}`);
+    const json = JSON.parse((await runMain([...flat, '--json'])).stdout);
+    expect([json.exact.interval, json.feedMarks.height, json.areal, json.arealRefusal]).toEqual([
+      6,
+      0,
+      undefined,
+      SLIVERS,
+    ]);
+    // No file of a surface that is not defined.
+    const file = await runMain([...flat, '--x3p', join(dir, 'flat.x3p')]);
+    expect([file.code, file.stdout, file.stderr.trim()]).toEqual([2, '', `error: --x3p: no file: ${SLIVERS}`]);
   });
 
   it('in inches, a limit is in inches', async () => {
@@ -221,6 +233,7 @@ describe('--batch with the finish columns', () => {
       '5,1,5,0.01,2,,',
       '5,1,5,0.01,0,0.1,',
       '5,1,5,0.01,2,-1,',
+      '5,0,0,0.01,2,0.1,',
     ].join('\n');
     const r = await runMain(['--batch'], csv);
     expect(r.code).toBe(0);
@@ -251,6 +264,12 @@ describe('--batch with the finish columns', () => {
     expect(cell(rows[2], 'error')).toBe('Feed per tooth fz is missing: enter a number.');
     expect(cell(rows[3], 'error')).toMatch(/^Flutes z must be a whole number/);
     expect(cell(rows[4], 'error')).toMatch(/^Feed per tooth fz must be greater than 0/);
+    // A flat end lying flat: L and hf answered, the areal cells empty and the error column says why
+    // (the row's quoted notes hold commas: read from the line's end).
+    const flat = r.stdout.trim().split('\n')[6] ?? '';
+    expect(flat).toMatch(
+      /^5,0,0,0\.01,2,0\.1,,5,.*,0,0\.1,,,,,,,,,The areal parameters are not defined here: thin slivers/,
+    );
     // Its own output reads back (the finish results are ignored as input).
     const back = await runMain(['--batch'], r.stdout);
     expect(back.stdout).toBe(r.stdout);

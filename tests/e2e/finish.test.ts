@@ -39,8 +39,11 @@ function expected() {
   if (!reply.ok) throw new Error('plane');
   const finish = { flutes: 4, feedPerToothMm: 0.1, runoutMm: 0, runoutPhaseDeg: 0, passPhase: 0 };
   const m = toothModel({ tool: TOOL, pattern: 'one-way', intervalMm: reply.exact.intervalMm, finish });
+  const report = finishReport(TOOL, 'one-way', reply.exact.intervalMm, finish);
+  const areal = report.areal;
+  if (areal === null) throw new Error('areal');
   return {
-    report: finishReport(TOOL, 'one-way', reply.exact.intervalMm, finish),
+    report: { ...report, areal },
     L: reply.exact.intervalMm,
     crestXMm: feedMarks(m).crestXMm,
   };

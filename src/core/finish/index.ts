@@ -11,6 +11,7 @@
  */
 import type { PassPattern, ToolInput } from '../domain/tool';
 import { arealParameters } from './areal';
+import { finishFailureWords } from './envelope';
 import { balancedFeed, feedMarks } from './feedMarks';
 import type { FinishInput } from './finishInput';
 import { toothModel } from './toothModel';
@@ -34,6 +35,7 @@ export interface FinishReport {
     /** fz* (hf = h), or null where there is none (no scallop, or marks below it at every fz). */
     readonly balancedFz: number | null;
   };
+  /** The areal parameters, or null where the surface is not defined (see {@link arealRefusal}). */
   readonly areal: {
     readonly Sa: number;
     readonly Sq: number;
@@ -42,7 +44,12 @@ export interface FinishReport {
     readonly Sv: number;
     readonly Ssk: number;
     readonly Sku: number;
-  };
+  } | null;
+  /**
+   * Why there are no areal parameters (a flat end lying flat leaves slivers between the passes that
+   * no tooth cuts: envelope.ts finishFailureWords), one line; null when they are given.
+   */
+  readonly arealRefusal: string | null;
 }
 
 /**
@@ -58,13 +65,23 @@ export function finishReport(
   const m = toothModel({ tool, pattern, intervalMm, finish });
   const marks = feedMarks(m);
   const balanced = balancedFeed(tool, pattern, intervalMm, finish);
-  const a = arealParameters(m);
+  const feed = {
+    height: marks.heightMm,
+    period: marks.periodMm,
+    balancedFz: balanced.ok ? balanced.feedPerToothMm : null,
+  };
+  let a: ReturnType<typeof arealParameters>;
+  try {
+    a = arealParameters(m);
+  } catch (e) {
+    // The feed marks stand; only the areal surface is refused, in one line.
+    const refusal = finishFailureWords(e, 'areal');
+    if (refusal === null) throw e;
+    return { feedMarks: feed, areal: null, arealRefusal: refusal };
+  }
   return {
-    feedMarks: {
-      height: marks.heightMm,
-      period: marks.periodMm,
-      balancedFz: balanced.ok ? balanced.feedPerToothMm : null,
-    },
+    feedMarks: feed,
     areal: { Sa: a.saMm, Sq: a.sqMm, Sz: a.szMm, Sp: a.spMm, Sv: a.svMm, Ssk: a.ssk, Sku: a.sku },
+    arealRefusal: null,
   };
 }
