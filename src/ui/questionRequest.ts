@@ -13,6 +13,7 @@
 import type { ModeDescriptor } from '../core/surfaces/modes';
 import { finishFieldErrors } from './finishFields';
 import { buildFiveAxisRequest } from './fiveAxisRequest';
+import { describeError } from './i18n/words';
 import type { BuiltRequest } from './requestTypes';
 import type { CalculatorState } from './state';
 
@@ -33,6 +34,6 @@ export function buildPageRequest(state: CalculatorState, threeAxis: ModeBuilder)
   // Each product mode of the mode registry has its builder (tests/ui/requestBuilder.test.ts checks every one).
   const built = pageModeKind(state) === 'threeAxis' ? threeAxis(state) : buildFiveAxisRequest(state);
   // The teeth and their feed (issue 29, optional): a text that is not a number is named on its field.
-  const finish = finishFieldErrors(state);
+  const finish = finishFieldErrors(state, describeError);
   return finish.length === 0 ? built : { ok: false, errors: [...(built.ok ? [] : built.errors), ...finish] };
 }
