@@ -144,7 +144,9 @@
  * memo and the sloped plane checked once, its answer built field by field (later chunks, +0.11 kB):
  * 304.33 in all, the ratchet 304.4. Then the surface of revolution's gouging check takes its clipped
  * tool as one object (a duplicates pair gone; the three-axis chunk, on first use, +0.08 kB): 304.41
- * in all, the ratchet 304.5.
+ * in all, the ratchet 304.5. Then the audit's language leftovers in each language (a radius's side box,
+ * the link's text box, the cylinder rows' heading, "h for this Ra": each catalogue's words and
+ * language.ts's pass, on first use, +0.29 kB; the first result 59.37): 304.70 in all, the ratchet 304.7.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -170,7 +172,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 304.5 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.5);
+  it('all of it, every .js file, is at most 304.7 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.7);
   });
 });

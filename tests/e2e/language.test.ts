@@ -712,6 +712,21 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await typeInto(page, 'input-cross-radius', '40');
     await page.keyboard.press('Enter');
     await expect.poll(() => text(page, '[data-testid="error-cross-radius"]'), POLL).toBe('');
+    // The radius side boxes' names and choices, and the link's text box's name, in German.
+    const named = () =>
+      page.evaluate(() =>
+        ['side-feed-radius', 'side-cross-radius', 'link-text'].map((id) => {
+          const e = document.querySelector(`[data-testid="${id}"]`) as HTMLElement;
+          return [e.getAttribute('aria-label'), ...[...e.querySelectorAll('option')].map((o) => o.textContent)].join(
+            ' | ',
+          );
+        }),
+      );
+    expect(await named()).toEqual([
+      'Radius längs Rf: konvex, konkav oder gerade | konvex | konkav | gerade',
+      'Radius quer Rc: konvex, konkav oder gerade | konvex | konkav | gerade',
+      'Link zu diesem Zustand',
+    ]);
     // A refusal at that point worded on the page from the worker's data, in German: h above a flank's or the shank's limit.
     const curvedH = await page.getByTestId('input-h').inputValue();
     await typeInto(page, 'input-h', '5');
@@ -730,6 +745,9 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       .poll(() => page.locator('.procedures tr[data-curvature="sekineCorrected"]').getAttribute('title'), POLL)
       .toMatch(/^Der Kreis mit Radius Reff von Sekine et al\. mit der üblichen Krümmungskorrektur /);
     expect(await text(page, '[data-testid="table-notes"]')).toMatch(/^Auf einem Zylinder werden die Verfahren oben /);
+    expect(await text(page, '.procedures tr.curvature-head th')).toBe(
+      'Auf dem Zylinder: Krümmung ignoriert oder wie üblich korrigiert',
+    );
     expect(await page.locator('[data-testid="table-notes"] [lang="en"]').count()).toBe(0);
     // What L and the heights mean on it, and what the step-over means, in German (no part marked English).
     expect(await text(page, '[data-testid="surface-meaning"]')).toMatch(
@@ -756,9 +774,24 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await typeInto(page, 'input-Rcr', '1');
     await typeInto(page, 'input-rho', '5');
     await page.keyboard.press('Enter');
+    // Given Ra: the roughness rows' scallop height for it, named in German.
+    const raHeight = page
+      .getByTestId('roughness')
+      .locator('div', { has: page.getByTestId('result-ra-height') })
+      .locator('dt');
+    await page.locator('input[name="target"][value="ra"]').check();
+    await expect.poll(() => raHeight.textContent(), POLL).toBe('Rautiefe h für dieses Ra');
+    await page.locator('input[name="target"][value="h"]').check();
     await tap(page, 'en');
     await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
     await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Step-over L');
+    // Their English back.
+    expect(await raHeight.textContent()).toBe('h for this Ra');
+    expect(await named()).toEqual([
+      'Feed radius Rf: convex, concave or straight | convex | concave | straight',
+      'Cross radius Rc: convex, concave or straight | convex | concave | straight',
+      'Link to this state',
+    ]);
   });
 
   it("the step-through's steps, the formulas and the paper's tables in Japanese and German: no English left, German decimal commas", async () => {

@@ -227,6 +227,7 @@ export const catalogue: Catalogue = {
     'use this pair': 'dieses Paar verwenden',
     'L * fz (area per tooth)': 'L · fz (Fläche je Zahn)',
     'Sa it leaves': 'Sa, das entsteht',
+    'h for this Ra': 'Rautiefe h für dieses Ra',
     'Scallop h at this L': 'Kammhöhe h bei diesem L',
     'L0 (fz -> 0: Ra = Sa)': 'L0 (fz → 0: Ra = Sa)',
     'Computing the pairs of step-over and feed per tooth that leave this Sa (a few seconds)...':
@@ -316,6 +317,8 @@ export const catalogue: Catalogue = {
         : `Auf diesem ${side === 'convex' ? 'konvexen' : 'konkaven'} Zylinder (Radius ${r}, Achse quer zum Vorschub: die Bahnen laufen um ihn herum und rücken entlang der Achse vor) werden L und die Flankenbreiten entlang der Achse gemessen, jede Höhe radial vom Zylinder aus.`,
     curvedMeaning: ([fs, fr], [cs, cr]) =>
       `An diesem doppelt gekrümmten Punkt (Rf ${fs === 'convex' ? 'konvex' : 'konkav'} ${fr} in Vorschubrichtung, Rc ${cs === 'convex' ? 'konvex' : 'konkav'} ${cr} quer dazu) sind L und die Flankenreichweiten Bogenlängen entlang der Fläche quer zum Vorschub zwischen den CC-Bahnen, und jede Höhe wird radial in der Querebene durch den Kontaktpunkt gemessen.`,
+    sideBox: (label) => `${label}: konvex, konkav oder gerade`,
+    linkText: 'Link zu diesem Zustand',
     surfacePresets: {
       custom: 'eigene Radien',
       dome: 'Kuppel (in beiden Richtungen konvex)',

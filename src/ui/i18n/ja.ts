@@ -210,6 +210,7 @@ export const catalogue: Catalogue = {
     'use this pair': 'この組を使う',
     'L * fz (area per tooth)': 'L × fz（一刃あたりの加工面積）',
     'Sa it leaves': '残る Sa',
+    'h for this Ra': 'この Ra でのカスプ高さ h',
     'Scallop h at this L': 'この L でのカスプ高さ h',
     'L0 (fz -> 0: Ra = Sa)': 'L0（fz → 0 の端：Ra = Sa）',
     'Computing the pairs of step-over and feed per tooth that leave this Sa (a few seconds)...':
@@ -298,6 +299,8 @@ export const catalogue: Catalogue = {
         : `この${side === 'convex' ? '凸' : '凹'}の円筒（半径 ${r}、軸は送りと直交：パスは円筒を周回し、軸方向に送られる）では、L とフランク幅は軸方向に測り、高さはすべて円筒から半径方向に測ります。`,
     curvedMeaning: ([fs, fr], [cs, cr]) =>
       `この複曲面上の点（送り方向 Rf ${fs === 'convex' ? '凸' : '凹'} ${fr}、直交方向 Rc ${cs === 'convex' ? '凸' : '凹'} ${cr}）では、L とフランクの到達幅は送りと直交する方向に面に沿って測った CC 経路の間の弧長で、高さはすべて接触点を通る送り直交面内で半径方向に測ります。`,
+    sideBox: (label) => `${label}：凸・凹・直線`,
+    linkText: 'この状態へのリンク',
     surfacePresets: {
       custom: '半径を指定',
       dome: 'ドーム（両方向とも凸）',
