@@ -37,6 +37,19 @@ const SHEET_KEPT = new Set('L h R D Rcr rho Rs Rf Rc Lxy dz mm in W G X Z CSV CA
 /** The scene legend's Latin words a translation keeps: the sheet's, and the paper's P_hp, P_base, CC, O, y0, N, i. */
 const LEGEND_KEPT = new Set([...SHEET_KEPT, 'P', 'hp', 'base', 'CC', 'O', 'y0', 'N', 'i', 'X', 'Y', 'Z']);
 
+/** The tick labels of the chart `id`. */
+const ticksOf = (page: Page, id: string): Promise<string[]> =>
+  page.getByTestId(id).evaluate((e) => [...e.querySelectorAll('text.chart-tick')].map((t) => t.textContent ?? ''));
+
+/**
+ * Waits for the chart `id`'s ticks to be written with a decimal comma (some tick has a fraction: the
+ * chart spans less than its number of ticks), then checks that none has a point.
+ */
+async function expectCommaTicks(page: Page, id: string): Promise<void> {
+  await expect.poll(() => ticksOf(page, id), POLL).toEqual(expect.arrayContaining([expect.stringMatching(/\d,\d/)]));
+  expect((await ticksOf(page, id)).filter((t) => /\d\.\d/.test(t))).toEqual([]);
+}
+
 /** The Latin words of a text. */
 const latinWords = (t: string): string[] => t.match(/[A-Za-z][A-Za-z0-9]*/g) ?? [];
 
@@ -259,6 +272,10 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(() => text(page, '.finish-title'), POLL).toBe('Oberfläche: die Vorschubmarken der Schneiden');
     await expect.poll(() => text(page, '[data-testid="finish-hf"]'), POLL).toMatch(/^\d+,\d+ µm$/);
     expect(await text(page, '[data-testid="use-balanced-feed"]')).toBe('ausgewogenen Vorschub übernehmen');
+    // The finish profiles' charts: their ticks with a decimal comma, as the teaching charts' (views/lineChart.ts).
+    // (The across profile's ticks are whole numbers here: none with a point.)
+    await expectCommaTicks(page, 'finish-profile-along-chart');
+    expect((await ticksOf(page, 'finish-profile-across-chart')).filter((t) => /\d\.\d/.test(t))).toEqual([]);
     // The cell map's caption and name, and the areal rows' titles, in German with decimal commas.
     await expect
       .poll(() => text(page, '[data-testid="finish-map-scale"]'), POLL)
