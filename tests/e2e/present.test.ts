@@ -296,6 +296,38 @@ describe('presentation mode', () => {
     });
     expect(covered).toEqual([]);
     await keepShot(page, 'present-inputs-scrolled-1280');
+
+    // The chart view on that projector, in English and in German (its tabs the longest): the first
+    // chart whole in the window (its lead axis's ticks and title without scrolling), and no chart
+    // taller than the view's column (each can be scrolled into sight whole).
+    await page.keyboard.press('Escape');
+    await expect.poll(() => controls.isVisible()).toBe(false);
+    await page.locator('#tab-chart').click();
+    const charts = () =>
+      page.evaluate(() => {
+        const svgs = [...document.querySelectorAll('#panel-chart .chart-classic svg.chart-svg')].map((s) =>
+          s.getBoundingClientRect(),
+        );
+        const column = (document.querySelector('.teaching') as HTMLElement).clientHeight;
+        const first = svgs[0]?.bottom ?? Number.POSITIVE_INFINITY;
+        const tallest = Math.max(...svgs.map((r) => r.height));
+        return {
+          lang: document.documentElement.lang,
+          charts: svgs.length,
+          fits: first <= window.innerHeight && tallest <= column,
+          first: Math.round(first),
+          tallest: Math.round(tallest),
+          column,
+        };
+      });
+    const choose = (lang: string) =>
+      page.evaluate((l) => {
+        (document.querySelector(`[data-testid="lang-switch"] input[value="${l}"]`) as HTMLInputElement).click();
+      }, lang);
+    for (const lang of ['en', 'de', 'en']) {
+      await choose(lang);
+      await expect.poll(charts, { timeout: 15_000 }).toMatchObject({ lang, charts: 3, fits: true });
+    }
   });
 
   it('present= with another word: a notice naming it, and the normal page', async () => {
