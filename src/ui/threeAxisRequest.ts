@@ -88,7 +88,7 @@ export function buildThreeAxisRequest(state: CalculatorState): BuiltRequest {
   if (forward && state.target !== 'h')
     own.push({
       key: state.target,
-      message: `${FIELDS[fieldOfPageKey(state.target)].label} as a target is not offered for three-axis machining: give the scallop height h.`,
+      message: `A target ${FIELDS[fieldOfPageKey(state.target)].short} is not offered for three-axis machining: give the scallop height h.`,
     });
   const raw = threeAxisRaw(state, own);
   const stepKey = programmedStepKey(state.passes);

@@ -133,7 +133,13 @@ describe('bad three-axis input: one line on its field, in the user unit; other v
         'Lxy',
         /^Horizontal step Lxy must be below 6 mm \(got 20\)/,
       ],
-      [{ ...base, target: 'ra' }, 'ra', /^Roughness Ra as a target is not offered for three-axis machining/],
+      [{ ...base, target: 'ra' }, 'ra', /^A target Ra is not offered for three-axis machining: /],
+      // Not "Target Sa as a target": the quantity named once.
+      [
+        { ...base, target: 'sa' },
+        'sa',
+        /^A target Sa is not offered for three-axis machining: give the scallop height h\.$/,
+      ],
       [
         {
           ...base,
