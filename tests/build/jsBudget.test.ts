@@ -147,6 +147,9 @@
  * in all, the ratchet 304.5. Then the audit's language leftovers in each language (a radius's side box,
  * the link's text box, the cylinder rows' heading, "h for this Ra": each catalogue's words and
  * language.ts's pass, on first use, +0.29 kB; the first result 59.37): 304.70 in all, the ratchet 304.7.
+ * Then the copy-link and embed-code buttons' status in each language (four phrases in each catalogue
+ * and language.ts's pass, on first use; copyLink.ts hands it over, the first result +0.02 kB, 59.40),
+ * less the charts' decimal sign now set once in lineChart.ts (-0.02): 305.17 in all, the ratchet 305.2.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -172,7 +175,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 304.7 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.7);
+  it('all of it, every .js file, is at most 305.2 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(305.2);
   });
 });

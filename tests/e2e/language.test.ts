@@ -655,6 +655,11 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect
       .poll(() => page.evaluate(() => (window as unknown as { said: string[] }).said.filter((t) => t !== '')), POLL)
       .toEqual([expect.stringMatching(/^\d+\.\d+ \(mm\) kopiert: 3-Achs, Neigung 20,5°, .*\.$/)]);
+    // Copy link says so in German too.
+    await page.getByTestId('copy-link').click();
+    await expect
+      .poll(() => text(page, '[data-testid="copy-link-status"]'), POLL)
+      .toBe('Link kopiert: Er öffnet diesen Rechner mit diesen Eingaben.');
     // A doubly curved point's charts in German: caption, axis titles, legends, summary, ticks.
     await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();
     await page.locator('input[name="surface"][value="curved"]').check();

@@ -192,6 +192,14 @@ export const catalogue: Catalogue = {
     Copy: 'Kopieren',
     Copied: 'Kopiert',
     'Copy failed': 'Kopieren fehlgeschlagen',
+    'Link copied: it opens this calculator with these inputs.':
+      'Link kopiert: Er öffnet diesen Rechner mit diesen Eingaben.',
+    'Copying was refused by the browser: the link is selected below, copy it by hand.':
+      'Der Browser hat das Kopieren verweigert: Der Link ist unten markiert, bitte von Hand kopieren.',
+    'Embed code copied: an iframe and the <path-interval-calculator> element.':
+      'Einbettungscode kopiert: ein iframe und das Element <path-interval-calculator>.',
+    'Copying was refused by the browser: the embed code is selected below, copy it with Ctrl+C.':
+      'Der Browser hat das Kopieren verweigert: Der Einbettungscode ist unten markiert, mit Strg+C kopieren.',
     'Copy the headline value': 'Kopieren: den Hauptwert',
     'Copy L/2': 'Kopieren: L/2',
     'Copy the programmed step': 'Kopieren: den programmierten Abstand',

@@ -176,6 +176,13 @@ export const catalogue: Catalogue = {
     Copy: 'コピー',
     Copied: 'コピーしました',
     'Copy failed': 'コピーできません',
+    'Link copied: it opens this calculator with these inputs.': 'リンクをコピーしました：この入力で計算機を開きます。',
+    'Copying was refused by the browser: the link is selected below, copy it by hand.':
+      'ブラウザがコピーを拒否しました：下のリンクが選択されています。手動でコピーしてください。',
+    'Embed code copied: an iframe and the <path-interval-calculator> element.':
+      '埋め込みコードをコピーしました：iframe と <path-interval-calculator> 要素です。',
+    'Copying was refused by the browser: the embed code is selected below, copy it with Ctrl+C.':
+      'ブラウザがコピーを拒否しました：下の埋め込みコードが選択されています。Ctrl+C でコピーしてください。',
     'Copy the headline value': '見出しの値をコピー',
     'Copy L/2': 'L/2 をコピー',
     'Copy the programmed step': 'プログラム上のピッチをコピー',

@@ -174,6 +174,12 @@ export function localizeResults(results: object): void {
     spoken(results, words);
     return;
   }
+  // The copy-link and embed-code buttons' status (copyLink.ts, embedCode.ts: copied, or refused).
+  if (results instanceof HTMLElement && results.classList.contains('embed-status')) {
+    const said = words.phrases[results.textContent as Phrase];
+    if (said !== undefined) results.textContent = said;
+    return;
+  }
   const root = results as ParentNode;
   // The headline's label, and the three-axis step's (forward and inverse).
   for (const label of root.querySelectorAll<HTMLElement>('[data-role="headline-label"], [data-role="step-label"]')) {
