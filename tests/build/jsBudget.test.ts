@@ -150,6 +150,8 @@
  * Then the copy-link and embed-code buttons' status in each language (four phrases in each catalogue
  * and language.ts's pass, on first use; copyLink.ts hands it over, the first result +0.02 kB, 59.40),
  * less the charts' decimal sign now set once in lineChart.ts (-0.02): 305.17 in all, the ratchet 305.2.
+ * Then three-axis machining's "a target Ra or Sa is not offered" in each language (threeAxisRequest.ts
+ * and each catalogue, on first use, +0.1 kB): 305.27 in all, the ratchet 305.3.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -175,7 +177,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 305.2 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(305.2);
+  it('all of it, every .js file, is at most 305.3 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(305.3);
   });
 });

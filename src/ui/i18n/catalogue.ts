@@ -760,6 +760,8 @@ export interface SaidWords {
   readonly sideBox: (label: string) => string;
   /** The copy-link fallback text box's name (copyLink.ts: "Link to this state"). */
   readonly linkText: string;
+  /** A target Ra or Sa (its symbol) asked of three-axis machining (threeAxisRequest.ts: not offered, give h). */
+  readonly targetNotOffered: (symbol: string) => string;
   /** The surface box's presets (surfaceState.ts PRESET_LABELS) and its "custom radii", by their keys. */
   readonly surfacePresets: Readonly<Record<SurfacePresetKey, string>>;
   /** The line under the surface box for raster passes on a sloped plane (fields.ts). */

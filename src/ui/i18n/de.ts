@@ -327,6 +327,8 @@ export const catalogue: Catalogue = {
       `An diesem doppelt gekrümmten Punkt (Rf ${fs === 'convex' ? 'konvex' : 'konkav'} ${fr} in Vorschubrichtung, Rc ${cs === 'convex' ? 'konvex' : 'konkav'} ${cr} quer dazu) sind L und die Flankenreichweiten Bogenlängen entlang der Fläche quer zum Vorschub zwischen den CC-Bahnen, und jede Höhe wird radial in der Querebene durch den Kontaktpunkt gemessen.`,
     sideBox: (label) => `${label}: konvex, konkav oder gerade`,
     linkText: 'Link zu diesem Zustand',
+    targetNotOffered: (symbol) =>
+      `Ein Ziel-${symbol} wird bei der 3-Achs-Bearbeitung nicht angeboten: bitte die Rautiefe h angeben.`,
     surfacePresets: {
       custom: 'eigene Radien',
       dome: 'Kuppel (in beiden Richtungen konvex)',

@@ -308,6 +308,7 @@ export const catalogue: Catalogue = {
       `この複曲面上の点（送り方向 Rf ${fs === 'convex' ? '凸' : '凹'} ${fr}、直交方向 Rc ${cs === 'convex' ? '凸' : '凹'} ${cr}）では、L とフランクの到達幅は送りと直交する方向に面に沿って測った CC 経路の間の弧長で、高さはすべて接触点を通る送り直交面内で半径方向に測ります。`,
     sideBox: (label) => `${label}：凸・凹・直線`,
     linkText: 'この状態へのリンク',
+    targetNotOffered: (symbol) => `3軸加工では目標 ${symbol} は使えません。カスプ高さ h を入力してください。`,
     surfacePresets: {
       custom: '半径を指定',
       dome: 'ドーム（両方向とも凸）',
