@@ -133,7 +133,7 @@ const THREE_AXIS_INPUT_COLUMNS: readonly InputColumn[] = [
 ];
 
 /** What the header must be, as the messages say it. */
-export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN}, or the step-over ${L_COLUMN}, in place of ${H_COLUMN}) in any order, optionally with ${listed([...OPTIONAL_COLUMNS, ...RADIUS_COLUMNS])} (and the output columns, which are ignored); or, for three-axis machining, R,Rcr,h,${SLOPE_COLUMN} optionally with ${listed(CSV_THREE_AXIS_COLUMNS.filter((c) => c !== SLOPE_COLUMN))}`;
+export const HEADER_RULE = `the CSV header must be ${[...REQUIRED_COLUMNS, H_COLUMN].join(',')} (or ${RA_COLUMN}, or the step-over ${L_COLUMN}, in place of ${H_COLUMN}) in any order, optionally with ${listed([...OPTIONAL_COLUMNS, ...RADIUS_COLUMNS])} (and the output columns, which are ignored); or, for three-axis machining, R,Rcr,h,${SLOPE_COLUMN} optionally with ${listed(CSV_THREE_AXIS_COLUMNS.filter((c) => c !== SLOPE_COLUMN))}; either optionally with the teeth's ${listed(CSV_FINISH_COLUMNS)}`;
 
 /** Result columns a header may hold (an output read back): ignored, computed again. */
 const IGNORED_COLUMNS: readonly string[] = [...RESULT_COLUMNS, ...FINISH_RESULT_COLUMNS];

@@ -105,7 +105,9 @@ Three-axis machining (the tool upright, the surface sloped; then --rho and --til
                         with --unit inch the lengths of columns that name none are inches),
                         three-axis: a header with slope needs no rho; optional passes,
                         rasterAngle, feedRadius, crossRadius; output interval,horizontalStep,
-                        stepDown,lead,tilt,note,error),
+                        stepDown,lead,tilt,note,error); either with the optional teeth
+                        flutes, fz (or feedRate with rpm), runout, runoutPhase, passPhase
+                        (output feedMarkHeight,feedPeriod,balancedFz,Sa,Sq,Sz,Sp,Sv,Ssk,Sku),
                         write CSV: the input columns, h (with Ra), then
                         exact,sekine,redonnet,bedi (L/2 of each), interval,halfWidthRight,
                         halfWidthLeft,contactOffset,otherCuspHeight (exact), osculating,

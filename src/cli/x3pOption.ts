@@ -42,7 +42,11 @@ export function readPair(
   const b = m === null ? Number.NaN : Number(m[2]);
   if (!(a >= 1 && a <= max && b >= 1 && b <= max)) {
     const shown = text.length > 40 ? `${text.slice(0, 37)}...` : text;
-    return { ok: false, error: `--${option} must be two whole numbers from 1 to ${max}, as 512,256 (got "${shown}")` };
+    const example = option === 'x3p-cells' ? '2,2' : '512,256';
+    return {
+      ok: false,
+      error: `--${option} must be two whole numbers from 1 to ${max}, as ${example} (got "${shown}")`,
+    };
   }
   return { ok: true, value: [a, b] };
 }

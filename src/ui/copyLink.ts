@@ -4,6 +4,7 @@
  * the link is shown selected in a text box to copy by hand.
  */
 import { html } from './dom';
+import { localize } from './i18n/words';
 
 /** What a copy button says: on success, when the clipboard is refused, and for how long (null: until the next). */
 export interface CopyWords {
@@ -28,6 +29,8 @@ export function wireClipboardCopy(
   let timer: ReturnType<typeof setTimeout> | null = null;
   const say = (message: string): void => {
     status.textContent = message;
+    // In the language in force (language.ts reads the English back).
+    localize(status);
     if (words.clearAfterMs === null) return;
     if (timer !== null) clearTimeout(timer);
     timer = setTimeout(() => {

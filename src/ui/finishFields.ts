@@ -7,9 +7,9 @@
  */
 
 import { feedPerToothOfRate, MAX_FLUTES, MIN_FEED_PER_TOOTH_MM } from '../core/finish/feedRate';
-import { entryFaultMessage } from '../core/input/entryMessages';
 import { FIELDS, FINISH_FIELD_IDS, type FieldSpec, type PageFieldKey, urlParamOf } from '../core/input/fields';
-import { formatInputNumber, toMm } from '../core/input/units';
+import { formatInputNumber, type LengthUnit, toMm } from '../core/input/units';
+import type { AnyInputError } from '../core/input/validate';
 import { parseField } from './fieldText';
 import type { PageFieldError } from './requestTypes';
 import type { CalculatorState } from './stateTypes';
@@ -60,12 +60,21 @@ export function finishSearch(state: CalculatorState): Array<[string, string]> {
   });
 }
 
-/** A message on each finish field whose text is not a number (written lengths are plain by now). */
-export function finishFieldErrors(state: CalculatorState): PageFieldError[] {
+/**
+ * A message on each finish field whose text is not a number (written lengths are plain by now),
+ * worded by `describe`: the page's words.ts describeError, in the language in force as the tool's
+ * fields' are (handed in: words.ts reaches this module through its types and state.ts; the describers read
+ * only the field's label and kind from the registry, which a finish field has too).
+ */
+export function finishFieldErrors(
+  state: CalculatorState,
+  describe: (e: AnyInputError, unit: LengthUnit) => string,
+): PageFieldError[] {
   return FINISH_FIELD_IDS.flatMap((id, i) => {
     const key = FINISH_KEYS[i] as PageFieldKey;
     const text = state.fields[key].trim();
     if (text === '' || parseField(text) !== null || finishKeyOff(state, key)) return [];
-    return [{ key, message: entryFaultMessage(FIELDS[id].label, 'not-a-number', text, '') }];
+    const e = { field: id, code: 'not-a-number', got: text } as unknown as AnyInputError;
+    return [{ key, message: describe(e, state.unit) }];
   });
 }

@@ -16,7 +16,7 @@ import {
 import { describeCurvedError } from './curvedRequest';
 import { fieldMessages } from './fieldMessages';
 import { finishFieldErrors } from './finishFields';
-import { catalogue } from './i18n/words';
+import { catalogue, describeError } from './i18n/words';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
 import type { CalculatorState, FieldKey } from './state';
 
@@ -67,6 +67,6 @@ export function stateMessages(
       : fieldMessages(state, replyErrors(state, reply, threeAxis));
   // The teeth and their feed (issue 29, optional): a text that is not a number is named on its field,
   // beside the step-over it does not change.
-  const finish = finishFieldErrors(state);
+  const finish = finishFieldErrors(state, describeError);
   return finish.length === 0 ? own : new Map([...fieldMessages(state, finish), ...own]);
 }

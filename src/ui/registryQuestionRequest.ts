@@ -57,7 +57,7 @@ export function buildQuestionRequest(state: CalculatorState, kinds: QuestionKind
   if (forward && state.target !== 'h')
     own.push({
       key: state.target,
-      message: `${FIELDS[fieldOfPageKey(state.target)].label} as a target is not offered here: give the scallop height h.`,
+      message: `A target ${FIELDS[fieldOfPageKey(state.target)].short} is not offered here: give the scallop height h.`,
     });
   const values = read(state, [...parameters, { name: 'R', field: 'R' }, { name: 'Rcr', field: 'Rcr' }], own);
   const target = fieldInMm(state, targetKey);

@@ -37,9 +37,13 @@ const param = (id: FieldId): string => urlParamOf(id);
 /**
  * The URL parameters that give a number of the tool or the problem (R or D, Rcr, rho, tilt, h, ra,
  * L): one of them in a link makes the others it needs "missing" (the surface has its own defaults).
+ * A target Sa is not one: it asks of the teeth, as z and fz do, so `target=sa&sa=0.0008&z=4` leaves
+ * the tool at its defaults silently, as `z=4&fz=0.1` does.
  */
 const GIVEN_PARAMS: readonly string[] = Object.values(FIELDS).flatMap((f) =>
-  (f.group === 'tool' || f.group === 'quantity' || f.group === 'alias') && f.url !== null ? [f.url] : [],
+  (f.group === 'tool' || f.group === 'quantity' || f.group === 'alias') && f.url !== null && f !== FIELDS.targetSa
+    ? [f.url]
+    : [],
 );
 
 /** A field's value in mm (lengths) or degrees (angles), or its text when it is not a number. */

@@ -16,7 +16,7 @@ import {
   validateThreeAxis,
 } from '../core/threeAxis/validate';
 import { radiusMm } from './curvedRequest';
-import { describeThreeAxis } from './i18n/words';
+import { catalogue, describeThreeAxis } from './i18n/words';
 import { programmedStepKey } from './machineState';
 import type { BuiltRequest, PageFieldError } from './requestTypes';
 import { type CalculatorState, type FieldKey, fieldInMm } from './state';
@@ -85,11 +85,15 @@ export function buildThreeAxisRequest(state: CalculatorState): BuiltRequest {
   const own: PageFieldError[] = [];
   const forward = state.mode === 'forward';
   // A target Ra or Sa: its field names it.
-  if (forward && state.target !== 'h')
+  if (forward && state.target !== 'h') {
+    const symbol = FIELDS[fieldOfPageKey(state.target)].short;
     own.push({
       key: state.target,
-      message: `${FIELDS[fieldOfPageKey(state.target)].label} as a target is not offered for three-axis machining: give the scallop height h.`,
+      message:
+        catalogue()?.said.targetNotOffered(symbol) ??
+        `A target ${symbol} is not offered for three-axis machining: give the scallop height h.`,
     });
+  }
   const raw = threeAxisRaw(state, own);
   const stepKey = programmedStepKey(state.passes);
   const quantity: ThreeAxisQuantity = forward ? 'h' : state.passes === 'waterline' ? 'stepDown' : 'horizontalStep';

@@ -151,7 +151,14 @@
  * under the 60 kB target; 304.57 in all, the ratchet 304.6. Then the runout line's bites followed by
  * Newton, the moments started from the mean's panels and the highest point searched again about the
  * integral's lines (core/finish, in the later chunk the finish workers load, on first use, +1.41
- * kB): 306.00 in all, the ratchet 306.1.
+ * kB): 306.00 in all, the ratchet 306.1. Then the audit's language leftovers in each language (a
+ * radius's side box, the link's text box, the cylinder rows' heading, "h for this Ra": each
+ * catalogue's words and language.ts's pass, on first use, +0.29 kB); then the copy-link and embed-code buttons' status in each language (four phrases in each catalogue
+ * and language.ts's pass, on first use; copyLink.ts hands it over, the first result +0.02 kB, 59.40),
+ * less the charts' decimal sign now set once in lineChart.ts (-0.02); then three-axis machining's "a target Ra or Sa is not offered" in each language (threeAxisRequest.ts
+ * and each catalogue, on first use, +0.1 kB), with the finish fields' own message worded in the
+ * language in force (pageMessages.ts hands in describeError): the first result 59.51 kB, the ratchet
+ * 59.55 (under the 60 kB target); 306.87 in all, the ratchet 306.9.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -165,10 +172,10 @@ const KB = 1024;
 describe('the JavaScript budget of the built site', () => {
   const sizes = jsSizes(siteFiles(DIST), readFileSync(`${DIST}/index.html`, 'utf8'), gzip9);
 
-  it('the first result (page and worker, their static imports) is at most 59.5 kB gzip (the ratchet, under the 60 kB target)', () => {
+  it('the first result (page and worker, their static imports) is at most 59.55 kB gzip (the ratchet, under the 60 kB target)', () => {
     expect(sizes.firstResult.some((p) => p.startsWith('assets/index-'))).toBe(true);
     expect(sizes.firstResult.some((p) => p.startsWith('assets/solver.worker-'))).toBe(true);
-    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.5);
+    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.55);
   });
 
   it('counts every .js file the build emits: the chunks, the service worker and embed.js', () => {
@@ -177,7 +184,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 306.1 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(306.1);
+  it('all of it, every .js file, is at most 306.9 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(306.9);
   });
 });

@@ -157,12 +157,12 @@ describe('refusals, one line each', () => {
     [['--flutes', '2', '--fz', '0.1', '--x3p-size', '64,64'], /--x3p-size needs --x3p <file>/, 2],
     [
       ['--flutes', '2', '--fz', '0.1', '--x3p', 'a.x3p', '--x3p-size', '0,64'],
-      /--x3p-size must be two whole numbers from 1 to 8192/,
+      /--x3p-size must be two whole numbers from 1 to 8192, as 512,256 \(got "0,64"\)/,
       2,
     ],
     [
       ['--flutes', '2', '--fz', '0.1', '--x3p', 'a.x3p', '--x3p-cells', 'two'],
-      /--x3p-cells must be two whole numbers from 1 to 1000/,
+      /--x3p-cells must be two whole numbers from 1 to 1000, as 2,2 \(got "two"\)/,
       2,
     ],
     [

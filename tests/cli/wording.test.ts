@@ -8,7 +8,7 @@ import { describe, expect, it } from 'vitest';
 import { ECHO_MAX_CHARS } from '../../src/cli/args';
 import { parseCsv } from '../../src/cli/csv';
 import { main } from '../../src/cli/main';
-import { CSV_OPTIONAL_COLUMNS, CSV_THREE_AXIS_COLUMNS } from '../../src/core/input/fields';
+import { CSV_FINISH_COLUMNS, CSV_OPTIONAL_COLUMNS, CSV_THREE_AXIS_COLUMNS } from '../../src/core/input/fields';
 import { APPROXIMATION_KEYS, PROCEDURES } from '../../src/core/procedures/procedures';
 import { runMain } from './helpers';
 
@@ -58,11 +58,15 @@ describe('one message per kind of fault (issue 26 point 10)', () => {
     }
   });
 
-  it('"no CSV on stdin" names every optional column the registry has (doubly curved and three-axis too)', async () => {
+  it('"no CSV on stdin" and --help\'s --batch name every optional column the registry has (doubly curved, three-axis and the teeth too)', async () => {
     const r = await runMain(['--batch'], '');
     expect(r.code).toBe(2);
-    for (const column of [...CSV_OPTIONAL_COLUMNS, ...CSV_THREE_AXIS_COLUMNS])
+    const help = (await runMain(['--help'])).stdout;
+    const batch = help.slice(help.indexOf('\n  --batch'), help.indexOf('-h, --help'));
+    for (const column of [...CSV_OPTIONAL_COLUMNS, ...CSV_THREE_AXIS_COLUMNS, ...CSV_FINISH_COLUMNS]) {
       expect(r.stderr, column).toContain(column);
+      expect(batch, column).toMatch(new RegExp(`\\b${column}\\b`));
+    }
   });
 
   it('--batch < a directory is a read error (exit 1), not "no CSV"', async () => {

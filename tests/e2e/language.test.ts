@@ -37,6 +37,19 @@ const SHEET_KEPT = new Set('L h R D Rcr rho Rs Rf Rc Lxy dz mm in W G X Z CSV CA
 /** The scene legend's Latin words a translation keeps: the sheet's, and the paper's P_hp, P_base, CC, O, y0, N, i. */
 const LEGEND_KEPT = new Set([...SHEET_KEPT, 'P', 'hp', 'base', 'CC', 'O', 'y0', 'N', 'i', 'X', 'Y', 'Z']);
 
+/** The tick labels of the chart `id`. */
+const ticksOf = (page: Page, id: string): Promise<string[]> =>
+  page.getByTestId(id).evaluate((e) => [...e.querySelectorAll('text.chart-tick')].map((t) => t.textContent ?? ''));
+
+/**
+ * Waits for the chart `id`'s ticks to be written with a decimal comma (some tick has a fraction: the
+ * chart spans less than its number of ticks), then checks that none has a point.
+ */
+async function expectCommaTicks(page: Page, id: string): Promise<void> {
+  await expect.poll(() => ticksOf(page, id), POLL).toEqual(expect.arrayContaining([expect.stringMatching(/\d,\d/)]));
+  expect((await ticksOf(page, id)).filter((t) => /\d\.\d/.test(t))).toEqual([]);
+}
+
 /** The Latin words of a text. */
 const latinWords = (t: string): string[] => t.match(/[A-Za-z][A-Za-z0-9]*/g) ?? [];
 
@@ -259,6 +272,10 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect.poll(() => text(page, '.finish-title'), POLL).toBe('Oberfläche: die Vorschubmarken der Schneiden');
     await expect.poll(() => text(page, '[data-testid="finish-hf"]'), POLL).toMatch(/^\d+,\d+ µm$/);
     expect(await text(page, '[data-testid="use-balanced-feed"]')).toBe('ausgewogenen Vorschub übernehmen');
+    // The finish profiles' charts: their ticks with a decimal comma, as the teaching charts' (views/lineChart.ts).
+    // (The across profile's ticks are whole numbers here: none with a point.)
+    await expectCommaTicks(page, 'finish-profile-along-chart');
+    expect((await ticksOf(page, 'finish-profile-across-chart')).filter((t) => /\d\.\d/.test(t))).toEqual([]);
     // The cell map's caption and name, and the areal rows' titles, in German with decimal commas.
     await expect
       .poll(() => text(page, '[data-testid="finish-map-scale"]'), POLL)
@@ -638,6 +655,11 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await expect
       .poll(() => page.evaluate(() => (window as unknown as { said: string[] }).said.filter((t) => t !== '')), POLL)
       .toEqual([expect.stringMatching(/^\d+\.\d+ \(mm\) kopiert: 3-Achs, Neigung 20,5°, .*\.$/)]);
+    // Copy link says so in German too.
+    await page.getByTestId('copy-link').click();
+    await expect
+      .poll(() => text(page, '[data-testid="copy-link-status"]'), POLL)
+      .toBe('Link kopiert: Er öffnet diesen Rechner mit diesen Eingaben.');
     // A doubly curved point's charts in German: caption, axis titles, legends, summary, ticks.
     await page.locator('[data-testid="machine-switch"] input[value="5axis"]').check();
     await page.locator('input[name="surface"][value="curved"]').check();
@@ -712,6 +734,21 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await typeInto(page, 'input-cross-radius', '40');
     await page.keyboard.press('Enter');
     await expect.poll(() => text(page, '[data-testid="error-cross-radius"]'), POLL).toBe('');
+    // The radius side boxes' names and choices, and the link's text box's name, in German.
+    const named = () =>
+      page.evaluate(() =>
+        ['side-feed-radius', 'side-cross-radius', 'link-text'].map((id) => {
+          const e = document.querySelector(`[data-testid="${id}"]`) as HTMLElement;
+          return [e.getAttribute('aria-label'), ...[...e.querySelectorAll('option')].map((o) => o.textContent)].join(
+            ' | ',
+          );
+        }),
+      );
+    expect(await named()).toEqual([
+      'Radius längs Rf: konvex, konkav oder gerade | konvex | konkav | gerade',
+      'Radius quer Rc: konvex, konkav oder gerade | konvex | konkav | gerade',
+      'Link zu diesem Zustand',
+    ]);
     // A refusal at that point worded on the page from the worker's data, in German: h above a flank's or the shank's limit.
     const curvedH = await page.getByTestId('input-h').inputValue();
     await typeInto(page, 'input-h', '5');
@@ -730,6 +767,9 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
       .poll(() => page.locator('.procedures tr[data-curvature="sekineCorrected"]').getAttribute('title'), POLL)
       .toMatch(/^Der Kreis mit Radius Reff von Sekine et al\. mit der üblichen Krümmungskorrektur /);
     expect(await text(page, '[data-testid="table-notes"]')).toMatch(/^Auf einem Zylinder werden die Verfahren oben /);
+    expect(await text(page, '.procedures tr.curvature-head th')).toBe(
+      'Auf dem Zylinder: Krümmung ignoriert oder wie üblich korrigiert',
+    );
     expect(await page.locator('[data-testid="table-notes"] [lang="en"]').count()).toBe(0);
     // What L and the heights mean on it, and what the step-over means, in German (no part marked English).
     expect(await text(page, '[data-testid="surface-meaning"]')).toMatch(
@@ -756,9 +796,24 @@ describe('the language switch (phone)', { timeout: 90_000 }, () => {
     await typeInto(page, 'input-Rcr', '1');
     await typeInto(page, 'input-rho', '5');
     await page.keyboard.press('Enter');
+    // Given Ra: the roughness rows' scallop height for it, named in German.
+    const raHeight = page
+      .getByTestId('roughness')
+      .locator('div', { has: page.getByTestId('result-ra-height') })
+      .locator('dt');
+    await page.locator('input[name="target"][value="ra"]').check();
+    await expect.poll(() => raHeight.textContent(), POLL).toBe('Rautiefe h für dieses Ra');
+    await page.locator('input[name="target"][value="h"]').check();
     await tap(page, 'en');
     await expect.poll(() => page.evaluate(() => document.documentElement.lang), POLL).toBe('en');
     await expect.poll(() => text(page, '[data-role="headline-label"]'), POLL).toBe('Step-over L');
+    // Their English back.
+    expect(await raHeight.textContent()).toBe('h for this Ra');
+    expect(await named()).toEqual([
+      'Feed radius Rf: convex, concave or straight | convex | concave | straight',
+      'Cross radius Rc: convex, concave or straight | convex | concave | straight',
+      'Link to this state',
+    ]);
   });
 
   it("the step-through's steps, the formulas and the paper's tables in Japanese and German: no English left, German decimal commas", async () => {

@@ -296,6 +296,48 @@ describe('presentation mode', () => {
     });
     expect(covered).toEqual([]);
     await keepShot(page, 'present-inputs-scrolled-1280');
+
+    // The chart view on that projector, in English and in German (its tabs the longest): the first
+    // chart whole in the window (its lead axis's ticks and title without scrolling), and no chart
+    // taller than the view's column (each can be scrolled into sight whole).
+    await page.keyboard.press('Escape');
+    await expect.poll(() => controls.isVisible()).toBe(false);
+    await page.locator('#tab-chart').click();
+    const charts = (view = '.chart-classic') =>
+      page.evaluate((v) => {
+        const svgs = [...document.querySelectorAll(`#panel-chart ${v} svg.chart-svg`)].map((s) =>
+          s.getBoundingClientRect(),
+        );
+        const column = (document.querySelector('.teaching') as HTMLElement).clientHeight;
+        const first = svgs[0]?.bottom ?? Number.POSITIVE_INFINITY;
+        const tallest = Math.max(...svgs.map((r) => r.height));
+        return {
+          lang: document.documentElement.lang,
+          charts: svgs.length,
+          fits: first <= window.innerHeight && tallest <= column,
+          first: Math.round(first),
+          tallest: Math.round(tallest),
+          column,
+        };
+      }, view);
+    const choose = (lang: string) =>
+      page.evaluate((l) => {
+        (document.querySelector(`[data-testid="lang-switch"] input[value="${l}"]`) as HTMLInputElement).click();
+      }, lang);
+    for (const lang of ['en', 'de']) {
+      await choose(lang);
+      await expect.poll(() => charts(), { timeout: 15_000 }).toMatchObject({ lang, charts: 3, fits: true });
+    }
+    // Three-axis machining's chart view in German (its headline on two lines): its sentence below, the first chart whole.
+    await page.getByTestId('present-inputs').click();
+    await page.locator('[data-testid="machine-switch"] input[value="3axis"]').check();
+    await page.getByTestId('input-slope').fill('20');
+    await page.getByTestId('input-slope').press('Enter');
+    await page.keyboard.press('Escape');
+    await expect.poll(() => controls.isVisible()).toBe(false);
+    await expect.poll(() => charts('.slope-chart'), { timeout: 15_000 }).toMatchObject({ charts: 2, fits: true });
+    await choose('en');
+    await expect.poll(() => charts(), { timeout: 15_000 }).toMatchObject({ lang: 'en' });
   });
 
   it('present= with another word: a notice naming it, and the normal page', async () => {

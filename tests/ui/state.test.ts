@@ -115,4 +115,16 @@ describe('URL state of the teeth and the feed (optional fields)', () => {
     expect(good.notices).toEqual([]);
     expect([good.state.fields.z, good.state.fields.fz]).toEqual(['4', '0.1']);
   });
+
+  it("the teeth alone, or their target Sa alone (the README's target=sa&sa=0.0008&z=2), leave the tool at its defaults silently", () => {
+    expect(parseUrl('?z=2&fz=0.1').notices).toEqual([]);
+    const sa = parseUrl('?target=sa&sa=0.0008&z=2');
+    expect(sa.notices).toEqual([]);
+    expect([sa.state.target, sa.state.fields.sa, sa.state.fields.z]).toEqual(['sa', '0.0008', '2']);
+    expect(sa.state.fields.Rcr).toBe(defaultState('mm').fields.Rcr);
+    // With a number of the tool given, the target Sa it needs is missing, said so, as h or Ra would be.
+    expect(parseUrl('?R=3&Rcr=1&rho=5&target=sa&z=2').notices).toEqual([
+      `sa is missing from the link; using the default ${defaultState('mm').fields.sa}.`,
+    ]);
+  });
 });

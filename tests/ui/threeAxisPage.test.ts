@@ -8,6 +8,9 @@ import { describe, expect, it } from 'vitest';
 import { formatInputNumber, fromMm, toMm } from '../../src/core/input/units';
 import { slopedPlaneForward, slopedPlaneInverse } from '../../src/core/threeAxis/slopedPlane';
 import { waterlineForward, waterlineInverse } from '../../src/core/threeAxis/waterlineRevolution';
+import { catalogue as de } from '../../src/ui/i18n/de';
+import { catalogue as ja } from '../../src/ui/i18n/ja';
+import { setCatalogue } from '../../src/ui/i18n/words';
 import { buildRequest } from '../../src/ui/request';
 import { type CalculatorState, defaultState, parseUrl, toSearch, withField } from '../../src/ui/state';
 import { WATERLINE_PRESETS, waterlinePresetOf, withCurvedPreset } from '../../src/ui/surfaceState';
@@ -133,7 +136,13 @@ describe('bad three-axis input: one line on its field, in the user unit; other v
         'Lxy',
         /^Horizontal step Lxy must be below 6 mm \(got 20\)/,
       ],
-      [{ ...base, target: 'ra' }, 'ra', /^Roughness Ra as a target is not offered for three-axis machining/],
+      [{ ...base, target: 'ra' }, 'ra', /^A target Ra is not offered for three-axis machining: /],
+      // Not "Target Sa as a target": the quantity named once.
+      [
+        { ...base, target: 'sa' },
+        'sa',
+        /^A target Sa is not offered for three-axis machining: give the scallop height h\.$/,
+      ],
       [
         {
           ...base,
@@ -157,6 +166,21 @@ describe('bad three-axis input: one line on its field, in the user unit; other v
       expect([...m.values()].join(' ').replace(/\(got [^)]*\)/g, '')).not.toMatch(/NaN|Infinity|(^|[^\d.])-0(?![\d.])/);
       // The other fields keep their text.
       expect(state.fields.R).toBe('3');
+    }
+  });
+
+  it('a target Ra or Sa not offered: said in the language in force, the symbol once', () => {
+    try {
+      setCatalogue(de, null, null);
+      expect(messagesOf({ ...base, target: 'sa' }).get('sa')).toBe(
+        'Ein Ziel-Sa wird bei der 3-Achs-Bearbeitung nicht angeboten: bitte die Rautiefe h angeben.',
+      );
+      setCatalogue(ja, null, null);
+      expect(messagesOf({ ...base, target: 'ra' }).get('ra')).toBe(
+        '3軸加工では目標 Ra は使えません。カスプ高さ h を入力してください。',
+      );
+    } finally {
+      setCatalogue(null, null, null);
     }
   });
 

@@ -154,6 +154,10 @@ export type Phrase =
   | 'Copy'
   | 'Copied'
   | 'Copy failed'
+  | 'Link copied: it opens this calculator with these inputs.'
+  | 'Copying was refused by the browser: the link is selected below, copy it by hand.'
+  | 'Embed code copied: an iframe and the <path-interval-calculator> element.'
+  | 'Copying was refused by the browser: the embed code is selected below, copy it with Ctrl+C.'
   | 'Copy the headline value'
   | 'Copy L/2'
   | 'Copy the programmed step'
@@ -174,8 +178,12 @@ export type TabName =
   | 'Formulas'
   | 'Machined surface';
 
-/** The finish box's words, by their English (finishPanel.ts marks each element with `data-phrase`). */
+/**
+ * The finish box's words, by their English (finishPanel.ts marks each element with `data-phrase`),
+ * and the roughness rows' "h for this Ra" (roughness.ts; language.ts marks it).
+ */
 export type FinishPhrase =
+  | 'h for this Ra'
   | 'Finish: the feed marks the teeth leave'
   | 'Scallop h (across the feed)'
   | 'Feed marks hf (along the CC path)'
@@ -343,6 +351,8 @@ export interface ProcedureNames {
   >;
   /** After a lead-only procedure's name in the table when the tool is tilted (English ", lead only"). */
   readonly leadOnly: string;
+  /** The heading row above a cylinder's rows (results.ts: "On the cylinder: curvature ignored, or corrected the usual way"). */
+  readonly cylinderHead: string;
   /** The results table's accessible name, its box's (a scrolling region), and a procedure's row's hover title. */
   readonly table: string;
   readonly region: string;
@@ -746,6 +756,12 @@ export interface SaidWords {
   readonly cylinderMeaning: (side: Side, radius: string, axis: 'feed' | 'cross') => string;
   /** What they mean at a doubly curved point (resultsText.ts curvedMeaning): each radius's side and size with its unit. */
   readonly curvedMeaning: (feed: readonly [Side, string], cross: readonly [Side, string]) => string;
+  /** A radius's side box's name (fields.ts buildSide: "Feed radius Rf: convex, concave or straight"), from its field's label. */
+  readonly sideBox: (label: string) => string;
+  /** The copy-link fallback text box's name (copyLink.ts: "Link to this state"). */
+  readonly linkText: string;
+  /** A target Ra or Sa (its symbol) asked of three-axis machining (threeAxisRequest.ts: not offered, give h). */
+  readonly targetNotOffered: (symbol: string) => string;
   /** The surface box's presets (surfaceState.ts PRESET_LABELS) and its "custom radii", by their keys. */
   readonly surfacePresets: Readonly<Record<SurfacePresetKey, string>>;
   /** The line under the surface box for raster passes on a sloped plane (fields.ts). */

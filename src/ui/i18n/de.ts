@@ -192,6 +192,14 @@ export const catalogue: Catalogue = {
     Copy: 'Kopieren',
     Copied: 'Kopiert',
     'Copy failed': 'Kopieren fehlgeschlagen',
+    'Link copied: it opens this calculator with these inputs.':
+      'Link kopiert: Er öffnet diesen Rechner mit diesen Eingaben.',
+    'Copying was refused by the browser: the link is selected below, copy it by hand.':
+      'Der Browser hat das Kopieren verweigert: Der Link ist unten markiert, bitte von Hand kopieren.',
+    'Embed code copied: an iframe and the <path-interval-calculator> element.':
+      'Einbettungscode kopiert: ein iframe und das Element <path-interval-calculator>.',
+    'Copying was refused by the browser: the embed code is selected below, copy it with Ctrl+C.':
+      'Der Browser hat das Kopieren verweigert: Der Einbettungscode ist unten markiert, mit Strg+C kopieren.',
     'Copy the headline value': 'Kopieren: den Hauptwert',
     'Copy L/2': 'Kopieren: L/2',
     'Copy the programmed step': 'Kopieren: den programmierten Abstand',
@@ -227,6 +235,7 @@ export const catalogue: Catalogue = {
     'use this pair': 'dieses Paar verwenden',
     'L * fz (area per tooth)': 'L · fz (Fläche je Zahn)',
     'Sa it leaves': 'Sa, das entsteht',
+    'h for this Ra': 'Rautiefe h für dieses Ra',
     'Scallop h at this L': 'Kammhöhe h bei diesem L',
     'L0 (fz -> 0: Ra = Sa)': 'L0 (fz → 0: Ra = Sa)',
     'Computing the pairs of step-over and feed per tooth that leave this Sa (a few seconds)...':
@@ -316,6 +325,10 @@ export const catalogue: Catalogue = {
         : `Auf diesem ${side === 'convex' ? 'konvexen' : 'konkaven'} Zylinder (Radius ${r}, Achse quer zum Vorschub: die Bahnen laufen um ihn herum und rücken entlang der Achse vor) werden L und die Flankenbreiten entlang der Achse gemessen, jede Höhe radial vom Zylinder aus.`,
     curvedMeaning: ([fs, fr], [cs, cr]) =>
       `An diesem doppelt gekrümmten Punkt (Rf ${fs === 'convex' ? 'konvex' : 'konkav'} ${fr} in Vorschubrichtung, Rc ${cs === 'convex' ? 'konvex' : 'konkav'} ${cr} quer dazu) sind L und die Flankenreichweiten Bogenlängen entlang der Fläche quer zum Vorschub zwischen den CC-Bahnen, und jede Höhe wird radial in der Querebene durch den Kontaktpunkt gemessen.`,
+    sideBox: (label) => `${label}: konvex, konkav oder gerade`,
+    linkText: 'Link zu diesem Zustand',
+    targetNotOffered: (symbol) =>
+      `Ein Ziel-${symbol} wird bei der 3-Achs-Bearbeitung nicht angeboten: bitte die Rautiefe h angeben.`,
     surfacePresets: {
       custom: 'eigene Radien',
       dome: 'Kuppel (in beiden Richtungen konvex)',

@@ -40,6 +40,7 @@ export const DE_PROCEDURES: ProcedureNames = {
     'Cylinder across the feed, exact (Rc ignored)': 'Zylinder quer zum Vorschub, exakt (Rc ignoriert)',
   },
   leadOnly: ', nur Anstellung',
+  cylinderHead: 'Auf dem Zylinder: Krümmung ignoriert oder wie üblich korrigiert',
   table: 'Verfahren (eine Zeile wählen, um sie in allen Ansichten hervorzuheben)',
   region: 'Tabelle der Verfahren (seitlich scrollbar, wenn breiter als ihre Spalte)',
   select: 'Klicken, um dieses Verfahren in allen Ansichten auszuwählen',

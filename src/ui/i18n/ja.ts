@@ -176,6 +176,13 @@ export const catalogue: Catalogue = {
     Copy: 'コピー',
     Copied: 'コピーしました',
     'Copy failed': 'コピーできません',
+    'Link copied: it opens this calculator with these inputs.': 'リンクをコピーしました：この入力で計算機を開きます。',
+    'Copying was refused by the browser: the link is selected below, copy it by hand.':
+      'ブラウザがコピーを拒否しました：下のリンクが選択されています。手動でコピーしてください。',
+    'Embed code copied: an iframe and the <path-interval-calculator> element.':
+      '埋め込みコードをコピーしました：iframe と <path-interval-calculator> 要素です。',
+    'Copying was refused by the browser: the embed code is selected below, copy it with Ctrl+C.':
+      'ブラウザがコピーを拒否しました：下の埋め込みコードが選択されています。Ctrl+C でコピーしてください。',
     'Copy the headline value': '見出しの値をコピー',
     'Copy L/2': 'L/2 をコピー',
     'Copy the programmed step': 'プログラム上のピッチをコピー',
@@ -210,6 +217,7 @@ export const catalogue: Catalogue = {
     'use this pair': 'この組を使う',
     'L * fz (area per tooth)': 'L × fz（一刃あたりの加工面積）',
     'Sa it leaves': '残る Sa',
+    'h for this Ra': 'この Ra でのカスプ高さ h',
     'Scallop h at this L': 'この L でのカスプ高さ h',
     'L0 (fz -> 0: Ra = Sa)': 'L0（fz → 0 の端：Ra = Sa）',
     'Computing the pairs of step-over and feed per tooth that leave this Sa (a few seconds)...':
@@ -298,6 +306,9 @@ export const catalogue: Catalogue = {
         : `この${side === 'convex' ? '凸' : '凹'}の円筒（半径 ${r}、軸は送りと直交：パスは円筒を周回し、軸方向に送られる）では、L とフランク幅は軸方向に測り、高さはすべて円筒から半径方向に測ります。`,
     curvedMeaning: ([fs, fr], [cs, cr]) =>
       `この複曲面上の点（送り方向 Rf ${fs === 'convex' ? '凸' : '凹'} ${fr}、直交方向 Rc ${cs === 'convex' ? '凸' : '凹'} ${cr}）では、L とフランクの到達幅は送りと直交する方向に面に沿って測った CC 経路の間の弧長で、高さはすべて接触点を通る送り直交面内で半径方向に測ります。`,
+    sideBox: (label) => `${label}：凸・凹・直線`,
+    linkText: 'この状態へのリンク',
+    targetNotOffered: (symbol) => `3軸加工では目標 ${symbol} は使えません。カスプ高さ h を入力してください。`,
     surfacePresets: {
       custom: '半径を指定',
       dome: 'ドーム（両方向とも凸）',

@@ -40,6 +40,7 @@ export const JA_PROCEDURES: ProcedureNames = {
     'Cylinder across the feed, exact (Rc ignored)': '軸が送りに直交する円筒の厳密解（Rc を無視）',
   },
   leadOnly: '（前傾のみ）',
+  cylinderHead: '円筒上：曲率を無視、または通常の方法で補正',
   table: '手法の表（行を選ぶと、すべてのビューでその手法が強調されます）',
   region: '手法の表（列より広いときは横にスクロールします）',
   select: 'クリックすると、すべてのビューでこの手法を選択します',

@@ -58,6 +58,22 @@ export function applyCatalogue(root: ParentNode, catalogue: Catalogue | null): v
     const name = catalogue?.labels[e.dataset.i18nLabel as LabelKey];
     if (name !== undefined) e.setAttribute('aria-label', name);
   }
+  // A radius's side box (fields.ts: its name from its field's label, its options) and the link's text
+  // box (copyLink.ts), written in English once; their English kept to go back to.
+  for (const e of root.querySelectorAll<HTMLElement>('select[data-testid^="side-"], [data-testid="link-text"]')) {
+    e.dataset.ariaEnglish ??= e.getAttribute('aria-label') ?? '';
+    const key = e.closest<HTMLElement>('[data-field]')?.dataset.field as 'Rf' | 'Rc' | undefined;
+    if (catalogue !== null)
+      e.setAttribute(
+        'aria-label',
+        key === undefined ? catalogue.said.linkText : catalogue.said.sideBox(catalogue.fields[key].label),
+      );
+    for (const option of e.querySelectorAll<HTMLOptionElement>('option')) {
+      option.dataset.english ??= option.textContent ?? '';
+      const text = catalogue?.question[option.value as 'convex' | 'concave' | 'straight'] ?? option.dataset.english;
+      if (option.textContent !== text) option.textContent = text;
+    }
+  }
   // The procedures table's and its box's names back in English (procedureNames put them into the language).
   if (catalogue === null)
     for (const e of root.querySelectorAll<HTMLElement>('[data-aria-english]:not(button.copy)'))
@@ -158,6 +174,12 @@ export function localizeResults(results: object): void {
     spoken(results, words);
     return;
   }
+  // The copy-link and embed-code buttons' status (copyLink.ts, embedCode.ts: copied, or refused).
+  if (results instanceof HTMLElement && results.classList.contains('embed-status')) {
+    const said = words.phrases[results.textContent as Phrase];
+    if (said !== undefined) results.textContent = said;
+    return;
+  }
   const root = results as ParentNode;
   // The headline's label, and the three-axis step's (forward and inverse).
   for (const label of root.querySelectorAll<HTMLElement>('[data-role="headline-label"], [data-role="step-label"]')) {
@@ -191,6 +213,9 @@ export function localizeResults(results: object): void {
   tableNotes(root, words);
   surfaceMeaning(root, words);
   localizeSurfacePresets(root, words);
+  // The roughness rows' "h for this Ra" (roughness.ts), marked as the finish box's words are.
+  const raHeight = root.querySelector('[data-testid="result-ra-height"]')?.parentElement?.previousElementSibling;
+  if (raHeight instanceof HTMLElement) raHeight.dataset.phrase ??= 'h for this Ra';
   // The finish box's words (finishPanel.ts keeps each element's English in data-phrase).
   for (const e of root.querySelectorAll<HTMLElement>('[data-phrase]')) {
     const text = words.finish[e.dataset.phrase as FinishPhrase];
@@ -257,6 +282,8 @@ function procedureNames(root: ParentNode, words: Catalogue): void {
     if (th.textContent === english) th.textContent = name;
     else if (th.textContent === `${english}, lead only`) th.textContent = `${name}${names.leadOnly}`;
   }
+  for (const th of root.querySelectorAll<HTMLElement>('.procedures tr.curvature-head > th'))
+    th.textContent = names.cylinderHead;
   for (const th of root.querySelectorAll<HTMLElement>('.procedures tr[data-curvature] > th')) {
     const tr = th.parentElement as HTMLElement;
     const key = tr.dataset.curvature as CurvatureRowKey;

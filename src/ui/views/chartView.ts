@@ -280,12 +280,6 @@ export class ChartView implements TeachingView {
       yLabel: data.yLabel,
       description: words.description(data.title),
     });
-    // The ticks' numbers with the locale's decimal sign.
-    if (catalogue() !== null)
-      for (const t of picture.querySelectorAll('text')) {
-        const text = t.textContent ?? '';
-        if (local(text) !== text) t.textContent = local(text);
-      }
     c.picture.replaceChildren(picture);
     // The legend: each procedure's value at the current angle, without hovering.
     c.legend.replaceChildren(

@@ -5,6 +5,8 @@
  * `data-procedure` (theme custom properties), so the chart follows the theme and prints crisply.
  */
 import type { ProcedureKey } from '../../core/procedures/procedures';
+import { localDecimal } from '../i18n/langChoice';
+import { catalogue } from '../i18n/words';
 import { extent, linearScale, linePath, logScale, type Scale, tickLabel } from './chartScale';
 import { svg } from './common';
 
@@ -82,19 +84,21 @@ export function lineChart(spec: LineChartSpec): SVGSVGElement {
   }));
   const range = extent(lines.map((l) => l.values));
   const y = linearScale(range.min, range.max, bottom, top, 6, true);
+  // The ticks' numbers with the locale's decimal sign (every chart's: the views', the finish box's, the target Sa's).
+  const tick = (t: number, scale: Scale) => localDecimal(tickLabel(t, scale), catalogue());
   root.append(svg('rect', { class: 'chart-frame', x: left, y: top, width: right - left, height: bottom - top }));
   for (const t of x.ticks) {
     const px = x.toPixel(t);
     root.append(
       svg('line', { class: 'chart-grid', x1: px, x2: px, y1: top, y2: bottom }),
-      text('chart-tick', px, bottom + 14, 'middle', tickLabel(t, x)),
+      text('chart-tick', px, bottom + 14, 'middle', tick(t, x)),
     );
   }
   for (const t of y.ticks) {
     const py = y.toPixel(t);
     root.append(
       svg('line', { class: t === 0 ? 'chart-grid chart-zero' : 'chart-grid', x1: left, x2: right, y1: py, y2: py }),
-      text('chart-tick', left - 4, py + 4, 'end', tickLabel(t, y)),
+      text('chart-tick', left - 4, py + 4, 'end', tick(t, y)),
     );
   }
   root.append(text('chart-axis-label', (left + right) / 2, bottom + 32, 'middle', spec.xLabel));

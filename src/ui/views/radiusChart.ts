@@ -90,12 +90,6 @@ class RadiusFigure {
         description: w.description(this.title.textContent),
       }),
     );
-    // The ticks' numbers with the locale's decimal sign.
-    if (catalogue() !== null)
-      for (const t of this.picture.querySelectorAll('text')) {
-        const text = t.textContent ?? '';
-        if (local(text) !== text) t.textContent = local(text);
-      }
     const len = (v: number | null) => (v === null ? w.seeBelow : local(formatLenUnit(v, unit)));
     const item = (series: string, name: string, v: number | null) => {
       const li = html('li', { class: 'legend-item', 'data-series': series });

@@ -171,11 +171,5 @@ export class SlopeChart {
           ]
         : []),
     );
-    // The ticks' numbers with the locale's decimal sign.
-    if (catalogue() !== null)
-      for (const t of this.element.querySelectorAll('svg text')) {
-        const text = t.textContent ?? '';
-        if (local(text) !== text) t.textContent = local(text);
-      }
   }
 }

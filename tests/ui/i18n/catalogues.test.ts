@@ -122,9 +122,12 @@ function noteStrings(c: Catalogue): Array<[string, string]> {
   return said.map(([k, v]) => [`procedures.notes.${k}`, v]);
 }
 
-/** Latin words a translation keeps: the paper's symbols (P_hp, P_base, CC, O, y0) and authors, names, units, file kinds and key names. */
+/**
+ * Latin words a translation keeps: the paper's symbols (P_hp, P_base, CC, O, y0) and authors, names,
+ * units, file kinds, key names (Ctrl+C) and the embed code's HTML elements (iframe, path-interval-calculator).
+ */
 const KEPT = new Set(
-  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter hf Sa ISO M3 x3p F n x y P hp base CC O y0 N i L0 Reff Rlong sin sqrt Esc mm error'.split(
+  'L h R D Rcr rho beta alpha psi Rs Rf Rc Lxy dz Ra z fz e q X Y Z CSV CAM Fusion Sekine Redonnet Bedi Kameya Enter hf Sa ISO M3 x3p F n x y P hp base CC O y0 N i L0 Reff Rlong sin sqrt Esc mm error Ctrl C iframe path interval calculator'.split(
     ' ',
   ),
 );

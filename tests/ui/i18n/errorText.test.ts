@@ -8,10 +8,12 @@
 import { describe, expect, it } from 'vitest';
 import { type AnyFieldName, type InputErrorCode, inputError } from '../../../src/core/input/validate';
 import { describeCurvedError, radiusMm } from '../../../src/ui/curvedRequest';
+import { finishFieldErrors } from '../../../src/ui/finishFields';
 import type { Catalogue } from '../../../src/ui/i18n/catalogue';
 import { catalogue as de } from '../../../src/ui/i18n/de';
 import { describeInputErrorIn } from '../../../src/ui/i18n/errorText';
 import { catalogue as ja } from '../../../src/ui/i18n/ja';
+import { describeError, setCatalogue } from '../../../src/ui/i18n/words';
 import type { PageFieldError } from '../../../src/ui/requestTypes';
 import { type CalculatorState, defaultState, parseField } from '../../../src/ui/state';
 import type { CurvedError } from '../../../src/worker/pageProtocol';
@@ -89,6 +91,39 @@ describe('input errors in Japanese and German', () => {
     expect(describeInputErrorIn(de, e, 'mm', { typed: '0', toolSizeAsDiameter: true })).toBe(
       'Werkzeugdurchmesser D muss größer als 0 mm sein (eingegeben: 0).',
     );
+  });
+});
+
+describe("the teeth-and-feed fields' own message (finishFields.ts): in the language in force, as the tool fields'", () => {
+  /** Every finish field with a text that is not a number: fz typed (F and n off), then fz empty (F and n on). */
+  const BAD: CalculatorState = {
+    ...defaultState('mm'),
+    fields: { ...defaultState('mm').fields, z: 'abc', fz: 'abc', runout: 'x', runoutPhase: 'x', passPhase: 'x' },
+  };
+  const RATE: CalculatorState = { ...BAD, fields: { ...BAD.fields, fz: '', F: 'abc', n: 'x' } };
+  const messages = () => [
+    ...finishFieldErrors(BAD, describeError),
+    ...finishFieldErrors(RATE, describeError).filter((e) => e.key === 'F' || e.key === 'n'),
+  ];
+
+  it('English as before; German and Japanese name the field in the language, the text quoted, no English word', () => {
+    expect(finishFieldErrors(BAD, describeError).find((e) => e.key === 'fz')?.message).toBe(
+      'Feed per tooth fz must be a number (got "abc").',
+    );
+    try {
+      for (const c of [de, ja]) {
+        setCatalogue(c, null, (e, unit, options) => describeInputErrorIn(c, e, unit, options));
+        const shown = messages();
+        expect(shown.map((e) => e.key).sort()).toEqual(['F', 'fz', 'n', 'passPhase', 'runout', 'runoutPhase', 'z']);
+        for (const { key, message } of shown) {
+          expect(message.startsWith(c.fields[key].label), message).toBe(true);
+          expect(message).toContain(key === 'fz' || key === 'z' || key === 'F' ? 'abc' : 'x');
+          expect(ENGLISH.test(message), message).toBe(false);
+        }
+      }
+    } finally {
+      setCatalogue(null, null, null);
+    }
   });
 });
 
