@@ -55,6 +55,12 @@ describe('requests from the fields', () => {
     expect(answeredMessages(wide).get('L')).toMatch(/Step-over L must be below the tool diameter 2R = 6 mm \(got 7\)/);
   });
 
+  it('a length too large for a double once in mm (1e308 in) names its limit in inch', () => {
+    const s = withField(state('?R=0.125&Rcr=0.03&rho=5&h=0.002&unit=in'), 'R', '1e308');
+    const built = buildRequest(s);
+    expect(stateMessages(s, built, null).get('R')).toBe('Tool radius R must be at most 39.3701 in (got 1e308).');
+  });
+
   it('text in an optional teeth-and-feed field is named on it and the step-over is still asked', () => {
     for (const key of ['z', 'fz', 'runout', 'F', 'n'] as const) {
       const feed = key === 'F' || key === 'n' ? 'F=960&rpm=12000' : 'fz=0.05';

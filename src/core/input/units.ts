@@ -23,9 +23,14 @@ export function fromMm(lengthMm: number, unit: LengthUnit): number {
   return unit === 'mm' ? lengthMm : lengthMm / MM_PER_INCH;
 }
 
-/** A length given in `unit` expressed in mm. */
+/**
+ * A length given in `unit` expressed in mm. A finite length stays finite (1e308 in is the largest
+ * double in mm, not Infinity), so a range check says its limit rather than "not a finite number".
+ */
 export function toMm(length: number, unit: LengthUnit): number {
-  return unit === 'mm' ? length : length * MM_PER_INCH;
+  if (unit === 'mm') return length;
+  const mm = length * MM_PER_INCH;
+  return Number.isFinite(mm) || !Number.isFinite(length) ? mm : Math.sign(mm) * Number.MAX_VALUE;
 }
 
 /** Degrees to radians. */
