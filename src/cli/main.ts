@@ -21,7 +21,7 @@ import { cliFlag } from '../core/input/fields';
 import type { LengthUnit } from '../core/input/units';
 import { compareDoublyCurved } from '../core/procedures/compareDoublyCurved';
 import { doublyCurvedRoughness, doublyCurvedRoughnessAtInterval } from '../core/roughness/doublyCurved';
-import { doublyCurvedInverse, doublyCurvedSolver } from '../core/surfaces/doublyCurved/index';
+import { curvedInverse, curvedPointOf } from '../core/surfaces/doublyCurvedPoint';
 import type { ThreeAxisInputError, ThreeAxisQuantity } from '../core/threeAxis/validate';
 import { cut, parseArgs, type Request, type ValueOption } from './args';
 import { runBatch } from './batch';
@@ -283,8 +283,9 @@ function writeAnswer(
     case 'doubly-inverse': {
       if (finishRequested(values)) return reportFinishErrors(io, out, [doublyScope()], json, unit, wanted.typed);
       const p = a.problem;
-      const e = doublyCurvedInverse({ ...p, intervalMm: p.valueMm });
-      const r = doublyCurvedRoughnessAtInterval(doublyCurvedSolver(p, p), p.pattern, e);
+      const point = curvedPointOf(p);
+      const e = curvedInverse(point, p.valueMm);
+      const r = doublyCurvedRoughnessAtInterval(point, e);
       if (json) writeJson(out, doublyCurvedInverseJson(p, e, r), unit);
       else out.write(`${doublyCurvedInverseTable(p, e, r, unit)}\n`);
       return 0;
@@ -295,7 +296,7 @@ function writeAnswer(
       const h = a.scallopHeightMm;
       const c = compareDoublyCurved({ ...p, scallopHeightMm: h });
       const extras: Extras = {
-        roughness: doublyCurvedRoughness(doublyCurvedSolver(p, p), p.pattern, c.exact),
+        roughness: doublyCurvedRoughness(curvedPointOf(p), c.exact),
         ...(a.targetRaMm === undefined ? {} : { targetRaMm: a.targetRaMm }),
       };
       if (json) writeJson(out, doublyCurvedForwardJson(p, h, c, extras), unit);

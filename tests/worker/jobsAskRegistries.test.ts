@@ -53,8 +53,10 @@ describe("the doubly curved job answers by the registry's doubly curved model", 
     vi.spyOn(model, 'limits').mockImplementation((tool, surface) => ({ ...limits(tool, surface), limitMm: MARK }));
     const reply = curved({ mode: 'curved-forward', input: { ...SADDLE, scallopHeightMm: 0.01 } });
     expect([reply.exact.intervalMm, reply.exact.limits.limitMm]).toEqual([MARK, MARK]);
-    // The comparison rows (a view's part) keep their own exact step-over.
-    expect(reply.comparison?.plane.ok && reply.comparison.plane.deviationMm).not.toBe(0);
+    // The comparison rows measure their deviations from the registered forward too.
+    const row = reply.comparison?.corrected.redonnet;
+    if (row === undefined || !row.ok) throw new Error('a corrected row');
+    expect(row.deviationMm).toBe(row.intervalMm - MARK);
   });
 
   it('inverse: the cusps are the registered inverse, at the five-axis posture', () => {
@@ -64,7 +66,8 @@ describe("the doubly curved job answers by the registry's doubly curved model", 
     const posture = vi.spyOn(findMode('fiveAxis') as NonNullable<ReturnType<typeof findMode>>, 'posture');
     const reply = curved({ mode: 'curved-inverse', input: { ...SADDLE, intervalMm: 1 } });
     expect(reply.exact.cuspHeightMm).toBe(MARK);
-    expect(posture).toHaveBeenCalledOnce();
+    expect(posture).toHaveBeenCalled();
+    for (const [mode] of posture.mock.calls) expect(mode).toMatchObject({ leadAngleDeg: 10, tiltAngleDeg: 5 });
     expect(spy.mock.calls[0]?.[0]).toMatchObject({ leadAngleDeg: 10, tiltAngleDeg: 5, intervalMm: 1 });
   });
 });

@@ -21,7 +21,13 @@ import {
   shapeOfTool,
 } from '../../tool/posture';
 import { doublyCurvedGouges } from '../doublyCurved/gouging';
-import { doublyCurvedMaxIntervalMm, doublyCurvedSolver, forwardWith, inverseWith } from '../doublyCurved/solve';
+import {
+  doublyCurvedMaxIntervalMm,
+  doublyCurvedSolver,
+  forwardWith,
+  intervalWith,
+  inverseWith,
+} from '../doublyCurved/solve';
 import type { ExactForward, ExactInverse, SurfaceFit, SurfaceModel } from '../surface';
 import { cylinderModel } from './cylinder';
 import { planeModel } from './plane';
@@ -98,7 +104,7 @@ export const doublyCurvedModel: SurfaceModel<DoublyCurvedSurface> = {
   intervalMm: (input) => {
     const straight = straightSurface(input.surface);
     if (straight !== null) return straight.model.intervalMm({ ...input, surface: straight.surface });
-    return forward(input).intervalMm;
+    return intervalWith(doublyCurvedSolver(input, input.surface), input.pattern, input.scallopHeightMm);
   },
   forward,
   inverse,
