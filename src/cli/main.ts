@@ -285,9 +285,9 @@ function writeAnswer(
       const p = a.problem;
       const point = curvedPointOf(p);
       const e = curvedInverse(point, p.valueMm);
-      const r = doublyCurvedRoughnessAtInterval(point, e);
-      if (json) writeJson(out, doublyCurvedInverseJson(p, e, r), unit);
-      else out.write(`${doublyCurvedInverseTable(p, e, r, unit)}\n`);
+      const report = { pass: p, exact: e, roughness: doublyCurvedRoughnessAtInterval(point, e) };
+      if (json) writeJson(out, doublyCurvedInverseJson(report), unit);
+      else out.write(`${doublyCurvedInverseTable(report, unit)}\n`);
       return 0;
     }
     case 'doubly-forward': {
@@ -299,8 +299,9 @@ function writeAnswer(
         roughness: doublyCurvedRoughness(curvedPointOf(p), c.exact),
         ...(a.targetRaMm === undefined ? {} : { targetRaMm: a.targetRaMm }),
       };
-      if (json) writeJson(out, doublyCurvedForwardJson(p, h, c, extras), unit);
-      else out.write(`${doublyCurvedForwardTable(p, h, c, extras, unit)}\n`);
+      const report = { pass: p, h, comparison: c, extras };
+      if (json) writeJson(out, doublyCurvedForwardJson(report), unit);
+      else out.write(`${doublyCurvedForwardTable(report, unit)}\n`);
       return 0;
     }
   }
