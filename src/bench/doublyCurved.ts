@@ -1,9 +1,10 @@
 /**
- * Benchmark of the doubly curved point's exact answer (issue 19), as the product asks it (the
- * registry's model, models/doublyCurved.ts): median time per exact forward call at a doubly
+ * Benchmark of the doubly curved solver (issue 19): median time per exact forward call at a doubly
  * curved point, over repeated rounds of deterministic inputs (dome, bowl, saddle, sphere; ball,
  * flat and bull-nose ends; tilt from -40 to 40 degrees; both patterns), the same statistic as
- * src/bench/solvers.ts. Target: at most 30 us per call (issue 19, "Performance").
+ * src/bench/solvers.ts. Target: at most 30 us per call (issue 19, "Performance"). It times the
+ * point's own solver with both radii curved, where the registry's model (models/doublyCurved.ts,
+ * which the product asks) adds a check of the radii and a memo of the last point's solver.
  *
  *   npx tsx src/bench/doublyCurved.ts              readable lines
  *   npx tsx src/bench/doublyCurved.ts --json       and a last line holding one JSON object
@@ -13,15 +14,16 @@
  *                                                   |Rf|, |Rc| in {10, 50, 200} mm, dome, bowl, saddle)
  */
 import { pathToFileURL } from 'node:url';
-import type { ForwardInput } from '../core/domain/pass';
-import type { DoublyCurvedSurface } from '../core/domain/surface';
 import { seededRandom } from '../core/math/seededRandom';
 import { compareDoublyCurved, type DoublyCurvedRow } from '../core/procedures/compareDoublyCurved';
 import { doublyCurvedGouging } from '../core/surfaces/doublyCurved/gouging';
-import { doublyCurvedModel } from '../core/surfaces/models/doublyCurved';
-
-/** A forward question at a doubly curved point, as the registry's model takes it. */
-type DoublyCurvedForwardInput = ForwardInput<DoublyCurvedSurface>;
+import {
+  doublyCurvedForward,
+  doublyCurvedLimits,
+  doublyCurvedSolver,
+  intervalWith,
+} from '../core/surfaces/doublyCurved/solve';
+import type { DoublyCurvedForwardInput } from '../core/surfaces/doublyCurved/types';
 
 /** Deterministic inputs (mulberry32, seed 19): the radii 3 to 30 tool radii, both signs. */
 function inputs(count: number): DoublyCurvedForwardInput[] {
@@ -40,13 +42,13 @@ function inputs(count: number): DoublyCurvedForwardInput[] {
     // Convex radii anywhere; concave ones wide enough not to gouge.
     const rf = (rand() < 0.5 ? 1 : -1) * R * (10 + 20 * rand());
     const rc = rand() < 0.15 ? rf : (rand() < 0.5 ? 1 : -1) * R * (10 + 20 * rand());
-    const surface: DoublyCurvedSurface = { kind: 'doublyCurved', feedRadiusMm: rf, crossRadiusMm: rc };
-    const limit = doublyCurvedModel.limits(tool, surface).limitMm;
+    const limit = doublyCurvedLimits({ ...tool, feedRadiusMm: rf, crossRadiusMm: rc }).limitMm;
     if (!(limit > 0)) continue;
     out.push({
       ...tool,
       pattern: rand() < 0.5 ? 'zigzag' : 'one-way',
-      surface,
+      feedRadiusMm: rf,
+      crossRadiusMm: rc,
       scallopHeightMm: limit * (0.001 + 0.5 * rand()),
     });
   }
@@ -83,8 +85,13 @@ export function doublyCurvedBench(rounds: number): {
 } {
   const cases = inputs(400);
   return {
-    exactDoublyCurvedNsPerCall: measure((x) => doublyCurvedModel.forward(x).intervalMm, cases, 400, rounds),
-    exactDoublyCurvedIntervalNsPerCall: measure((x) => doublyCurvedModel.intervalMm(x), cases, 400, rounds),
+    exactDoublyCurvedNsPerCall: measure((x) => doublyCurvedForward(x).intervalMm, cases, 400, rounds),
+    exactDoublyCurvedIntervalNsPerCall: measure(
+      (x) => intervalWith(doublyCurvedSolver(x, x), x.pattern, x.scallopHeightMm),
+      cases,
+      400,
+      rounds,
+    ),
   };
 }
 
