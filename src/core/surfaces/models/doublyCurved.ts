@@ -89,11 +89,9 @@ function drawnPoints(input: ToolInput, rightMm: number, leftMm: number): () => D
   };
 }
 
-/** The last point's prepared solver and what it was prepared for (compared with Object.is). */
+/** The last point's prepared solver, and its tool, posture and radii (compared with Object.is). */
 let lastSolver: DoublyCurvedSolver | null = null;
-let lastTool: ToolInput | null = null;
-let lastFeedMm = Number.NaN;
-let lastCrossMm = Number.NaN;
+let lastKey: readonly number[] = [];
 
 /**
  * The point's solver, prepared once for a run of calls at one point: a reply asks the same point's
@@ -101,27 +99,18 @@ let lastCrossMm = Number.NaN;
  * turn, each through the model.
  */
 function solverOf(tool: ToolInput, surface: DoublyCurvedSurface): DoublyCurvedSolver {
-  const t = lastTool;
-  if (
-    lastSolver !== null &&
-    t !== null &&
-    Object.is(t.toolRadiusMm, tool.toolRadiusMm) &&
-    Object.is(t.cornerRadiusMm, tool.cornerRadiusMm) &&
-    Object.is(t.leadAngleDeg, tool.leadAngleDeg) &&
-    Object.is(t.tiltAngleDeg, tool.tiltAngleDeg) &&
-    Object.is(lastFeedMm, surface.feedRadiusMm) &&
-    Object.is(lastCrossMm, surface.crossRadiusMm)
-  )
-    return lastSolver;
-  lastSolver = doublyCurvedSolver(tool, surface);
-  lastTool = {
-    toolRadiusMm: tool.toolRadiusMm,
-    cornerRadiusMm: tool.cornerRadiusMm,
-    leadAngleDeg: tool.leadAngleDeg,
-    tiltAngleDeg: tool.tiltAngleDeg,
-  };
-  lastFeedMm = surface.feedRadiusMm;
-  lastCrossMm = surface.crossRadiusMm;
+  const key = [
+    tool.toolRadiusMm,
+    tool.cornerRadiusMm,
+    tool.leadAngleDeg,
+    tool.tiltAngleDeg,
+    surface.feedRadiusMm,
+    surface.crossRadiusMm,
+  ];
+  if (lastSolver === null || key.some((v, i) => !Object.is(v, lastKey[i]))) {
+    lastSolver = doublyCurvedSolver(tool, surface);
+    lastKey = key;
+  }
   return lastSolver;
 }
 
