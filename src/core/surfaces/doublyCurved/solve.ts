@@ -92,7 +92,7 @@ export function forwardWith(
   let other: number | null = null;
   if (pattern === 'zigzag') {
     const wider = wR > wL ? solver.right : solver.left;
-    other = wR === wL ? h : Math.min(h, wider.heightAtMm(L / 2));
+    other = wR === wL ? h : Math.min(h, wider.heightAtMm(L / 2, h));
   }
   return {
     intervalMm: L,
