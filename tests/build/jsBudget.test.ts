@@ -142,7 +142,9 @@
  * searches inside each piece of a line and the bounded runout search (the finish worker's chunk, on
  * first use, +0.9 kB): 304.23 in all, the ratchet 304.3. Then the pass's crest and peak kept by one
  * memo and the sloped plane checked once, its answer built field by field (later chunks, +0.11 kB):
- * 304.33 in all, the ratchet 304.4.
+ * 304.33 in all, the ratchet 304.4. The doubly curved point answered through its model everywhere
+ * and its flank's height read below the top (the doubly curved chunk, on first use, +0.12 kB): 304.45
+ * in all, the ratchet 304.5.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -168,7 +170,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 304.4 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.4);
+  it('all of it, every .js file, is at most 304.5 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(304.5);
   });
 });
