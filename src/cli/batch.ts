@@ -22,11 +22,7 @@ import { FIELDS, fieldOfCsvColumn } from '../core/input/fields';
 import { fromMm, type LengthUnit } from '../core/input/units';
 import { csvNumber, emptyCellNotes, type LengthText, RESULT_COLUMNS, resultFields } from '../core/output/csvWrite';
 import type { DoublyCurvedProblem } from '../core/roughness/doublyCurvedValidate';
-import {
-  type DoublyCurvedInverse,
-  doublyCurvedForward,
-  doublyCurvedInverse,
-} from '../core/surfaces/doublyCurved/index';
+import { curvedForward, curvedInverse, curvedPointOf } from '../core/surfaces/doublyCurvedPoint';
 import { exactForward, exactInverse } from '../core/surfaces/solve';
 import type { ValueOption } from './args';
 import {
@@ -220,7 +216,7 @@ export function batchRow(record: CsvRecord, layout: Layout): string {
   if (a.kind === 'pass-inverse')
     return `${echo},${inverseResults(exactInverse(a.input), layout.unit)},${teeth},${teethNote}\n`;
   if (a.kind === 'doubly-inverse') {
-    const e = doublyCurvedInverse({ ...a.problem, intervalMm: a.problem.valueMm });
+    const e = curvedInverse(curvedPointOf(a.problem), a.problem.valueMm);
     return `${echo},${inverseResults(e, layout.unit)},${teeth},${teethNote}\n`;
   }
   const hMm = a.kind === 'pass-forward' ? a.input.scallopHeightMm : a.scallopHeightMm;
@@ -249,7 +245,7 @@ function lengthWriter(unit: LengthUnit): LengthText {
 }
 
 /** The results of a row given the step-over (INVERSE_RESULT_COLUMNS before `note`), in the run's unit. */
-function inverseResults(e: ExactInverse | DoublyCurvedInverse, unit: LengthUnit): string {
+function inverseResults(e: ExactInverse, unit: LengthUnit): string {
   const numbers = [
     e.cuspHeightMm,
     e.rightCuspHeightMm,
@@ -271,7 +267,7 @@ function inverseResults(e: ExactInverse | DoublyCurvedInverse, unit: LengthUnit)
  * plane (as the cylinder rows give them: they ignore the curvature).
  */
 function doublyCurvedResults(p: DoublyCurvedProblem, h: number, unit: LengthUnit): string {
-  const e = doublyCurvedForward({ ...p, scallopHeightMm: h });
+  const e = curvedForward(curvedPointOf(p), h);
   const plane = forwardInput(p, p.pattern, h);
   const half = (key: ApproximationKey) => {
     const r = APPROXIMATIONS[key].halfInterval(plane);

@@ -12,11 +12,27 @@ import { TOOL_FIELDS } from '../core/input/fields';
 import { rawOf } from '../core/input/raw';
 import type { LengthUnit } from '../core/input/units';
 import type { DoublyCurvedComparison, DoublyCurvedRow } from '../core/procedures/compareDoublyCurved';
-import type { DoublyCurvedInverse, DoublyCurvedPass } from '../core/surfaces/doublyCurved/index';
+import type { DoublyCurvedPass } from '../core/surfaces/doublyCurved/index';
+import type { ExactInverse } from '../core/surfaces/surface';
 import { curvatureLabel, type Extras, extrasJson, type JsonObject, roughnessLines } from './report';
 import { exactBlock, flankFacts, givenHeight, toolKind } from './reportExtras';
 import { inverseExactJson } from './reportJson';
 import { type Column, echo, type Lengths, lengthsIn, NONE, percent, renderTable } from './table';
+
+/** A forward answer at a doubly curved point as the reports show it: the pass, h, the comparison (the exact answer first) and the extras. */
+export interface DoublyCurvedForwardReport {
+  readonly pass: DoublyCurvedPass;
+  readonly h: number;
+  readonly comparison: DoublyCurvedComparison;
+  readonly extras: Extras;
+}
+
+/** An inverse answer at a doubly curved point as the reports show it: the pass, the exact cusps and the roughness. */
+export interface DoublyCurvedInverseReport {
+  readonly pass: DoublyCurvedPass;
+  readonly exact: ExactInverse;
+  readonly roughness: Roughness;
+}
 
 /** The kind of point from the signs of its radii. */
 export function pointKind(rf: number, rc: number): string {
@@ -50,13 +66,8 @@ function rowsOf(c: DoublyCurvedComparison): Array<[string, string, DoublyCurvedR
 }
 
 /** The forward answer at a doubly curved point as a table. */
-export function doublyCurvedForwardTable(
-  p: DoublyCurvedPass,
-  h: number,
-  c: DoublyCurvedComparison,
-  extras: Extras,
-  unit: LengthUnit = 'mm',
-): string {
+export function doublyCurvedForwardTable(a: DoublyCurvedForwardReport, unit: LengthUnit = 'mm'): string {
+  const { pass: p, h, comparison: c, extras } = a;
   const L = lengthsIn(unit);
   const e = c.exact;
   const facts: string[][] = [
@@ -99,12 +110,8 @@ export function doublyCurvedForwardTable(
 }
 
 /** The inverse answer (step-over to cusp heights) at a doubly curved point as a table. */
-export function doublyCurvedInverseTable(
-  p: DoublyCurvedPass,
-  e: DoublyCurvedInverse,
-  roughness: Roughness,
-  unit: LengthUnit = 'mm',
-): string {
+export function doublyCurvedInverseTable(a: DoublyCurvedInverseReport, unit: LengthUnit = 'mm'): string {
+  const { pass: p, exact: e, roughness } = a;
   const L = lengthsIn(unit);
   const facts: string[][] = [['h', L.length(e.cuspHeightMm), L.u, 'scallop height (the highest cusp)']];
   if (e.otherCuspHeightMm !== null) {
@@ -149,12 +156,8 @@ function rowJson(r: DoublyCurvedRow & { readonly combinedRadiusMm?: number }): J
 }
 
 /** The forward answer at a doubly curved point as JSON (lengths mm, angles degrees). */
-export function doublyCurvedForwardJson(
-  p: DoublyCurvedPass,
-  h: number,
-  c: DoublyCurvedComparison,
-  extras: Extras,
-): JsonObject {
+export function doublyCurvedForwardJson(a: DoublyCurvedForwardReport): JsonObject {
+  const { pass: p, h, comparison: c, extras } = a;
   const e = c.exact;
   const exact: JsonObject = {
     interval: e.intervalMm,
@@ -179,7 +182,8 @@ export function doublyCurvedForwardJson(
 }
 
 /** The inverse answer at a doubly curved point as JSON. */
-export function doublyCurvedInverseJson(p: DoublyCurvedPass, e: DoublyCurvedInverse, roughness: Roughness): JsonObject {
+export function doublyCurvedInverseJson(a: DoublyCurvedInverseReport): JsonObject {
+  const { pass: p, exact: e, roughness } = a;
   const exact = inverseExactJson(e);
   return {
     unit: 'mm',

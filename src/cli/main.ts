@@ -21,7 +21,7 @@ import { cliFlag } from '../core/input/fields';
 import type { LengthUnit } from '../core/input/units';
 import { compareDoublyCurved } from '../core/procedures/compareDoublyCurved';
 import { doublyCurvedRoughness, doublyCurvedRoughnessAtInterval } from '../core/roughness/doublyCurved';
-import { doublyCurvedInverse, doublyCurvedSolver } from '../core/surfaces/doublyCurved/index';
+import { curvedInverse, curvedPointOf } from '../core/surfaces/doublyCurvedPoint';
 import type { ThreeAxisInputError, ThreeAxisQuantity } from '../core/threeAxis/validate';
 import { cut, parseArgs, type Request, type ValueOption } from './args';
 import { runBatch } from './batch';
@@ -289,10 +289,11 @@ function writeAnswer(
     case 'doubly-inverse': {
       if (finishRequested(values)) return reportFinishErrors(io, out, [doublyScope()], json, unit, wanted.typed);
       const p = a.problem;
-      const e = doublyCurvedInverse({ ...p, intervalMm: p.valueMm });
-      const r = doublyCurvedRoughnessAtInterval(doublyCurvedSolver(p, p), p.pattern, e);
-      if (json) writeJson(out, doublyCurvedInverseJson(p, e, r), unit);
-      else out.write(`${doublyCurvedInverseTable(p, e, r, unit)}\n`);
+      const point = curvedPointOf(p);
+      const e = curvedInverse(point, p.valueMm);
+      const report = { pass: p, exact: e, roughness: doublyCurvedRoughnessAtInterval(point, e) };
+      if (json) writeJson(out, doublyCurvedInverseJson(report), unit);
+      else out.write(`${doublyCurvedInverseTable(report, unit)}\n`);
       return 0;
     }
     case 'doubly-forward': {
@@ -301,11 +302,12 @@ function writeAnswer(
       const h = a.scallopHeightMm;
       const c = compareDoublyCurved({ ...p, scallopHeightMm: h });
       const extras: Extras = {
-        roughness: doublyCurvedRoughness(doublyCurvedSolver(p, p), p.pattern, c.exact),
+        roughness: doublyCurvedRoughness(curvedPointOf(p), c.exact),
         ...(a.targetRaMm === undefined ? {} : { targetRaMm: a.targetRaMm }),
       };
-      if (json) writeJson(out, doublyCurvedForwardJson(p, h, c, extras), unit);
-      else out.write(`${doublyCurvedForwardTable(p, h, c, extras, unit)}\n`);
+      const report = { pass: p, h, comparison: c, extras };
+      if (json) writeJson(out, doublyCurvedForwardJson(report), unit);
+      else out.write(`${doublyCurvedForwardTable(report, unit)}\n`);
       return 0;
     }
   }

@@ -26,6 +26,7 @@ import type { LengthUnit } from '../core/input/units';
 import { isNumberText } from '../core/output/csvWrite';
 import { doublyCurvedHeightForRaMm } from '../core/roughness/doublyCurved';
 import { type DoublyCurvedProblem, validateDoublyCurved } from '../core/roughness/doublyCurvedValidate';
+import { curvedPointOf } from '../core/surfaces/doublyCurvedPoint';
 import type { QuestionParameter } from '../core/surfaces/mode';
 import { findMode } from '../core/surfaces/modes';
 import {
@@ -154,7 +155,7 @@ function doublyCurved(values: QuestionValues, quantity: Quantity, half: boolean)
   const p = v.value;
   if (quantity === 'interval') return { ok: true, kind: 'doubly-inverse', problem: p };
   if (quantity === 'h') return { ok: true, kind: 'doubly-forward', problem: p, scallopHeightMm: p.valueMm };
-  const h = doublyCurvedHeightForRaMm(p, p.pattern, p, p.valueMm);
+  const h = doublyCurvedHeightForRaMm(curvedPointOf(p), p.valueMm);
   return { ok: true, kind: 'doubly-forward', problem: p, scallopHeightMm: h, targetRaMm: p.valueMm };
 }
 

@@ -8,6 +8,7 @@
  * each once; the module cache keeps them).
  */
 
+import { loadSurfaceModel } from '../core/surfaces/registry';
 import type { FinishReply, FinishRequest } from './finishProtocol';
 import { solve } from './jobs/solve';
 import {
@@ -26,10 +27,19 @@ import type { TargetSaReply, TargetSaRequest } from './targetSaProtocol';
 import type { PageTeachReply } from './teachProtocol';
 import { sceneTransferables, transferables } from './transferables';
 
+/**
+ * A job's module once the doubly curved point's model is loaded (on first use in the site): the
+ * teaching views' and the lookup table's doubly curved data ask the registry for it (core
+ * surfaces/doublyCurvedPoint.ts), as jobs/page.ts's `ready` does for the answer.
+ */
+function withCurvedModel<T>(module: T): Promise<T> {
+  return loadSurfaceModel('doublyCurved').then(() => module);
+}
+
 /** The jobs' modules beyond the first script, each imported on first use (the page's watchdog told: rpc.ts lazyModule). */
 const pageJob = lazyModule(() => import('./jobs/page').then((m) => m.ready));
-const teachJob = lazyModule(() => import('./jobs/teachPage'));
-const tableJob = lazyModule(() => import('./jobs/table'));
+const teachJob = lazyModule(() => import('./jobs/teachPage').then(withCurvedModel));
+const tableJob = lazyModule(() => import('./jobs/table').then(withCurvedModel));
 const simulation = lazyModule(() => import('./simulate'));
 const finishJob = lazyModule(() => import('./jobs/finish'));
 const targetSaJob = lazyModule(() => import('./jobs/targetSa'));

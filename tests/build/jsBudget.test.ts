@@ -158,7 +158,9 @@
  * less the charts' decimal sign now set once in lineChart.ts (-0.02); then three-axis machining's "a target Ra or Sa is not offered" in each language (threeAxisRequest.ts
  * and each catalogue, on first use, +0.1 kB), with the finish fields' own message worded in the
  * language in force (pageMessages.ts hands in describeError): the first result 59.51 kB, the ratchet
- * 59.55 (under the 60 kB target); 306.87 in all, the ratchet 306.9.
+ * 59.55 (under the 60 kB target); 306.87 in all. Then the doubly curved point answered through its model everywhere and its flank's
+ * height read below the top (the doubly curved chunk, on first use, +0.12 kB; the first result +0.05): the first result 59.57 kB,
+ * the ratchet 59.6 (under the 60 kB target); 307.01 in all, the ratchet 307.1.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -172,10 +174,10 @@ const KB = 1024;
 describe('the JavaScript budget of the built site', () => {
   const sizes = jsSizes(siteFiles(DIST), readFileSync(`${DIST}/index.html`, 'utf8'), gzip9);
 
-  it('the first result (page and worker, their static imports) is at most 59.55 kB gzip (the ratchet, under the 60 kB target)', () => {
+  it('the first result (page and worker, their static imports) is at most 59.6 kB gzip (the ratchet, under the 60 kB target)', () => {
     expect(sizes.firstResult.some((p) => p.startsWith('assets/index-'))).toBe(true);
     expect(sizes.firstResult.some((p) => p.startsWith('assets/solver.worker-'))).toBe(true);
-    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.55);
+    expect(sizes.firstResultGzip / KB, sizes.firstResult.join(', ')).toBeLessThanOrEqual(59.6);
   });
 
   it('counts every .js file the build emits: the chunks, the service worker and embed.js', () => {
@@ -184,7 +186,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 306.9 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(306.9);
+  it('all of it, every .js file, is at most 307.1 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(307.1);
   });
 });

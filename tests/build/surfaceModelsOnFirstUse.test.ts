@@ -70,4 +70,28 @@ describe('the doubly curved model on first use (the site)', () => {
     remove();
     expect(surfaceKinds()).toEqual(['plane', 'cylinder', 'doublyCurved']);
   });
+
+  it("the worker's teaching views and lookup table of a doubly curved point, asked first, load the model they ask", async () => {
+    // Fresh modules, as above: no other job has loaded the model in this worker.
+    vi.resetModules();
+    const { workerApi } = await import('../../src/worker/workerApi');
+    const input = {
+      ...TOOL,
+      pattern: 'one-way',
+      feedRadiusMm: 40,
+      crossRadiusMm: -200,
+      scallopHeightMm: 0.01,
+    } as const;
+    const taught = await workerApi.teach({ mode: 'curved-forward', input });
+    expect(taught.ok && 'section' in taught && taught.section.exact.cuspHeightMm).toBeGreaterThan(0);
+    vi.resetModules();
+    const fresh = await import('../../src/worker/workerApi');
+    const grid = { scallopHeightsMm: [0.01], leadAnglesDeg: [10], tiltAnglesDeg: [0] };
+    const table = await fresh.workerApi.table({
+      tool: { toolRadiusMm: 3, cornerRadiusMm: 1, pattern: 'one-way', surface: { kind: 'plane' } },
+      radii: { feedRadiusMm: 40, crossRadiusMm: -200 },
+      grid,
+    });
+    expect(table.ok && table.rows).toBe(1);
+  });
 });

@@ -13,7 +13,8 @@ import { formatInputNumber } from '../../src/core/input/units';
 import { compareDoublyCurved } from '../../src/core/procedures/compareDoublyCurved';
 import { doublyCurvedHeightForRaMm, doublyCurvedRoughness } from '../../src/core/roughness/doublyCurved';
 import { slopedPlaneRoughness } from '../../src/core/roughness/slopedPlane';
-import { doublyCurvedForward, doublyCurvedRadiusLimit, doublyCurvedSolver } from '../../src/core/surfaces/doublyCurved';
+import { doublyCurvedForward, doublyCurvedRadiusLimit } from '../../src/core/surfaces/doublyCurved';
+import { curvedPoint } from '../../src/core/surfaces/doublyCurvedPoint';
 import { slopedPlaneForward } from '../../src/core/threeAxis/slopedPlane';
 import { slopePosture } from '../../src/core/threeAxis/slopePosture';
 import { waterlineForward } from '../../src/core/threeAxis/waterlineRevolution';
@@ -180,7 +181,7 @@ describe('roughness, a target Ra and the sliders at a doubly curved point; three
     const e = curvedL(80, -40);
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(e, 'mm'));
     const c = compareDoublyCurved({ ...TOOL, pattern: 'one-way', ...radii, scallopHeightMm: 0.05 });
-    const r = doublyCurvedRoughness(doublyCurvedSolver(TOOL, radii), 'one-way', c.exact);
+    const r = doublyCurvedRoughness(curvedPoint(TOOL, radii, 'one-way'), c.exact);
     await expect.poll(() => text(page, 'result-ra')).toBe(formatRoughness(r.raMm, 'mm'));
     expect(await text(page, 'result-rz')).toBe(formatRoughness(r.rzMm, 'mm'));
     expect(await text(page, 'result-rq')).toBe(formatRoughness(r.rqMm, 'mm'));
@@ -192,7 +193,7 @@ describe('roughness, a target Ra and the sliders at a doubly curved point; three
     // A target Ra: the h that leaves it and its step-over, as the core gives them.
     await radio(page, 'target-switch', 'ra').check();
     await page.getByTestId('input-ra').fill('0.004');
-    const h = doublyCurvedHeightForRaMm(TOOL, 'one-way', radii, 0.004);
+    const h = doublyCurvedHeightForRaMm(curvedPoint(TOOL, radii, 'one-way'), 0.004);
     const L = compareDoublyCurved({ ...TOOL, pattern: 'one-way', ...radii, scallopHeightMm: h }).exact.intervalMm;
     await expect.poll(() => text(page, 'result-exact-interval')).toBe(formatLenUnit(L, 'mm'));
     expect(await text(page, 'result-ra-height')).toBe(formatLenUnit(h, 'mm', 'height'));

@@ -13,7 +13,7 @@ import {
   doublyCurvedRoughnessAtInterval,
 } from '../../src/core/roughness/doublyCurved';
 import { exactRoughness } from '../../src/core/roughness/roughness';
-import { doublyCurvedInverse, doublyCurvedSolver } from '../../src/core/surfaces/doublyCurved';
+import { curvedInverse, curvedPoint } from '../../src/core/surfaces/doublyCurvedPoint';
 import { buildRequest } from '../../src/ui/request';
 import { parseUrl, withField } from '../../src/ui/state';
 import { solvePage } from '../../src/worker/jobs/page';
@@ -33,7 +33,7 @@ describe('roughness at a doubly curved point, on the page', () => {
       if (!reply.ok || !('roughness' in reply) || reply.roughness === null || !('comparison' in reply))
         throw new Error('answered');
       const c = compareDoublyCurved({ ...TOOL, ...RADII, pattern, scallopHeightMm: 0.02 });
-      const r = doublyCurvedRoughness(doublyCurvedSolver(TOOL, RADII), pattern, c.exact);
+      const r = doublyCurvedRoughness(curvedPoint(TOOL, RADII, pattern), c.exact);
       expect(reply.roughness).toMatchObject({ rzMm: r.rzMm, raMm: r.raMm, rqMm: r.rqMm, scallopHeightMm: 0.02 });
       // Rz is the peak-to-valley of the profile: the highest cusp for one-way (all cusps equal).
       if (pattern === 'one-way') expect(reply.roughness.rzMm).toBeCloseTo(0.02, 12);
@@ -47,8 +47,8 @@ describe('roughness at a doubly curved point, on the page', () => {
     if (!built.ok || built.request.mode !== 'curved-inverse') throw new Error('valid');
     const reply = solvePage(built.request);
     if (!reply.ok || !('roughness' in reply) || reply.roughness === null) throw new Error('answered');
-    const e = doublyCurvedInverse({ ...TOOL, ...RADII, pattern: 'zigzag', intervalMm: 1.5 });
-    const r = doublyCurvedRoughnessAtInterval(doublyCurvedSolver(TOOL, RADII), 'zigzag', e);
+    const point = curvedPoint(TOOL, RADII, 'zigzag');
+    const r = doublyCurvedRoughnessAtInterval(point, curvedInverse(point, 1.5));
     expect(reply.roughness.raMm).toBe(r.raMm);
     expect(reply.roughness.rzMm).toBe(r.rzMm);
   });
@@ -60,7 +60,7 @@ describe('roughness at a doubly curved point, on the page', () => {
     const reply = solvePage(built.request);
     if (!reply.ok || !('roughness' in reply) || reply.roughness === null || !('comparison' in reply))
       throw new Error('answered');
-    const h = doublyCurvedHeightForRaMm(TOOL, 'one-way', RADII, 0.004);
+    const h = doublyCurvedHeightForRaMm(curvedPoint(TOOL, RADII, 'one-way'), 0.004);
     expect(reply.roughness.scallopHeightMm).toBe(h);
     expect(reply.exact.cuspHeightMm).toBe(h);
     expect(reply.exact.intervalMm).toBe(
@@ -89,7 +89,7 @@ describe('roughness at a doubly curved point, on the page', () => {
   });
 
   it('an Ra at or above the largest is said on the Ra field with that limit, in the user unit', () => {
-    const max = doublyCurvedMaxRaMm(TOOL, 'one-way', RADII);
+    const max = doublyCurvedMaxRaMm(curvedPoint(TOOL, RADII, 'one-way'));
     const state = parseUrl(`${URL}&target=ra&ra=1`).state;
     for (const typed of [String(max * 1.0001), '1']) {
       const s = withField(state, 'ra', typed);

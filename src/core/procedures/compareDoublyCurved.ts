@@ -9,14 +9,17 @@
  * (the exact inverse), or null where passes that far apart leave a wall. Lengths mm.
  */
 
+import type { DoublyCurvedForwardInput } from '../surfaces/doublyCurved/types';
 import {
-  type DoublyCurvedSolver,
-  doublyCurvedMaxIntervalMm,
-  doublyCurvedSolver,
-  forwardWith,
-  inverseWith,
-} from '../surfaces/doublyCurved/solve';
-import type { DoublyCurvedForward, DoublyCurvedForwardInput, DoublyCurvedPass } from '../surfaces/doublyCurved/types';
+  type CurvedPoint,
+  curvedForward,
+  curvedInverse,
+  curvedLimits,
+  curvedMaxIntervalMm,
+  curvedPoint,
+  curvedPointOf,
+} from '../surfaces/doublyCurvedPoint';
+import type { ExactForward } from '../surfaces/surface';
 import { combinedRadiusMm } from './approximations';
 import { APPROXIMATIONS, CORRECTED_KEYS, type CorrectedKey } from './procedures';
 
@@ -36,7 +39,7 @@ export type DoublyCurvedRow =
 
 /** The comparison rows of the forward problem at a doubly curved point. */
 export interface DoublyCurvedComparison {
-  readonly exact: DoublyCurvedForward;
+  readonly exact: ExactForward;
   /** The widest step-over that still leaves a scallop here (the reaches at the limit height), mm. */
   readonly maxIntervalMm: number;
   /** The plane's exact answer at the same posture. */
@@ -48,30 +51,28 @@ export interface DoublyCurvedComparison {
   readonly corrected: { readonly [K in CorrectedKey]: DoublyCurvedRow & { readonly combinedRadiusMm?: number } };
 }
 
-function row(
-  L: number,
-  exactL: number,
-  solver: DoublyCurvedSolver,
-  pattern: DoublyCurvedPass['pattern'],
-  maxMm: number,
-): DoublyCurvedRow & { ok: true } {
+function row(L: number, exactL: number, point: CurvedPoint, maxMm: number): DoublyCurvedRow & { ok: true } {
   const deviationMm = L - exactL;
-  const realScallopMm = L > 0 && L < maxMm ? inverseWith(solver, pattern, L).cuspHeightMm : null;
+  const realScallopMm = L > 0 && L < maxMm ? curvedInverse(point, L).cuspHeightMm : null;
   return { ok: true, intervalMm: L, deviationMm, deviationPercent: (100 * deviationMm) / exactL, realScallopMm };
 }
 
-/** The plane's, each cylinder's and the usual correction's step-overs beside the exact one. @param input validated, not gouging. */
+/**
+ * The plane's, each cylinder's and the usual correction's step-overs beside the exact one, every
+ * exact answer (the point's, the plane's and the cylinders' rows, the scallops their step-overs
+ * leave) the registry's model's (surfaces/doublyCurvedPoint.ts). @param input validated, not gouging.
+ */
 export function compareDoublyCurved(input: DoublyCurvedForwardInput): DoublyCurvedComparison {
   const I = Number.POSITIVE_INFINITY;
   const h = input.scallopHeightMm;
-  const solver = doublyCurvedSolver(input, input);
-  const exact = forwardWith(solver, input.pattern, h);
-  const maxMm = doublyCurvedMaxIntervalMm(solver, input.pattern);
+  const point = curvedPointOf(input);
+  const exact = curvedForward(point, h);
+  const maxMm = curvedMaxIntervalMm(point);
   const other = (rf: number, rc: number): DoublyCurvedRow => {
-    const s = doublyCurvedSolver(input, { feedRadiusMm: rf, crossRadiusMm: rc });
-    if (!(h < s.limits().limitMm))
+    const s = curvedPoint(input, { feedRadiusMm: rf, crossRadiusMm: rc }, input.pattern);
+    if (!(h < curvedLimits(s).limitMm))
       return { ok: false, notApplicable: 'h is at or above the flank limit of that surface.' };
-    return row(forwardWith(s, input.pattern, h).intervalMm, exact.intervalMm, solver, input.pattern, maxMm);
+    return row(curvedForward(s, h).intervalMm, exact.intervalMm, point, maxMm);
   };
   const rc = input.crossRadiusMm;
   const corrected = {} as { -readonly [K in CorrectedKey]: DoublyCurvedRow & { readonly combinedRadiusMm?: number } };
@@ -99,7 +100,7 @@ export function compareDoublyCurved(input: DoublyCurvedForwardInput): DoublyCurv
       continue;
     }
     const L = 2 * Math.sqrt(h) * Math.sqrt(2 * combined - h);
-    corrected[key] = { ...row(L, exact.intervalMm, solver, input.pattern, maxMm), combinedRadiusMm: combined };
+    corrected[key] = { ...row(L, exact.intervalMm, point, maxMm), combinedRadiusMm: combined };
   }
   return {
     exact,

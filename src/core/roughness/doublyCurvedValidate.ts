@@ -21,8 +21,8 @@ import {
   type Validation,
 } from '../input/validate';
 import { doublyCurvedGouges, doublyCurvedGouging, type RadiusLimit } from '../surfaces/doublyCurved/gouging';
-import { doublyCurvedMaxIntervalMm, doublyCurvedSolver } from '../surfaces/doublyCurved/solve';
 import type { DoublyCurvedPass, PrincipalRadii } from '../surfaces/doublyCurved/types';
+import { curvedLimits, curvedMaxIntervalMm, curvedPoint } from '../surfaces/doublyCurvedPoint';
 import { validatePassAnd } from '../surfaces/validate';
 import { doublyCurvedMaxRaMm } from './doublyCurved';
 
@@ -131,18 +131,18 @@ export function validateDoublyCurved(
   else if (x < (field === 'interval' ? 2 * MIN_LENGTH_MM : MIN_LENGTH_MM)) {
     errors.push(inputError(field, 'too-small', shown, field === 'interval' ? 2 * MIN_LENGTH_MM : MIN_LENGTH_MM));
   } else {
-    const solver = doublyCurvedSolver(tool, radii);
-    const lim = solver.limits();
+    const point = curvedPoint(tool, radii, pattern);
+    const lim = curvedLimits(point);
     if (!(lim.limitMm >= MIN_LENGTH_MM)) errors.push(inputError(field, 'wall-only', shown));
     else if (field === 'h' && !(x < lim.limitMm)) {
       const shank = lim.limitBy === 'shank-right' || lim.limitBy === 'shank-left';
       const side = lim.limitBy.endsWith('right') ? 'right' : 'left';
       errors.push(inputError('h', shank ? 'shank-cuts' : 'flank-wall', shown, lim.limitMm, side));
     } else if (field === 'interval') {
-      const max = doublyCurvedMaxIntervalMm(solver, pattern);
+      const max = curvedMaxIntervalMm(point);
       if (!(x < max)) errors.push(inputError('interval', 'beyond-interval', shown, max));
     } else if (field === 'ra') {
-      const max = doublyCurvedMaxRaMm(tool, pattern, radii);
+      const max = doublyCurvedMaxRaMm(point);
       if (!(x < max)) errors.push(inputError('ra', 'beyond-max-ra', shown, max));
     }
   }

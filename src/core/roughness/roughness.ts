@@ -232,11 +232,14 @@ function widthsOf(tool: ToolInput, surface: SurfaceDescriptor): WidthAt {
 }
 
 /**
- * Exact roughness (mm) of the surface that passes of a forward solution leave, on a plane or a
- * cylinder (measured radially, over arc length). For zigzag the other cusp's flank pair is
+ * Exact roughness (mm) of the surface that passes of a forward solution leave, on any registered
+ * surface (on a cylinder or a doubly curved point measured radially, over arc length). For zigzag the other cusp's flank pair is
  * included (two step-overs per period).
  */
-export function exactRoughness(input: ForwardInput, e: ExactForward = exactForward(input)): Roughness {
+export function exactRoughness(
+  input: ForwardInput<SurfaceDescriptor>,
+  e: ExactForward = exactForward(input),
+): Roughness {
   if (e.noScallop) return { rzMm: 0, raMm: 0, rqMm: 0, meanMm: 0 };
   const shape = widthsOf(input, input.surface);
   if (input.pattern === 'zigzag') {
@@ -259,7 +262,7 @@ export function exactRoughnessAtInterval(
   tool: ToolInput,
   pattern: PassPattern,
   e: ExactInverse,
-  surface: Surface = PLANE,
+  surface: SurfaceDescriptor = PLANE,
 ): Roughness {
   if (e.cuspHeightMm === 0) return { rzMm: 0, raMm: 0, rqMm: 0, meanMm: 0 };
   const shape = widthsOf(tool, surface);

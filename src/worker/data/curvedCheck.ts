@@ -3,8 +3,9 @@
  * posture): each radius in range (0.001 mm to 1e6 mm, or straight), no gouging (gouging.ts: on the
  * field of each radius whose change would help, with its limit, the other held), the scallop height
  * below the flank and shank limits, the step-over below the widest that leaves a scallop, a target
- * Ra below the largest that the passes leave while leaving a scallop. They need the point's solver,
- * so they run once, in the worker (jobs/curved.ts, which trusts no caller): the page validates the
+ * Ra below the largest that the passes leave while leaving a scallop: the limits, the widest
+ * step-over and the largest Ra from the registry's model (core surfaces/doublyCurvedPoint.ts), as
+ * the answer. They need the point's model, so they run once, in the worker (jobs/curved.ts, which trusts no caller): the page validates the
  * tool and posture only and words this reply's refusals (ui/curvedRequest.ts). Mm.
  */
 
@@ -12,14 +13,17 @@ import type { PassPattern, ToolInput } from '../../core/input/validate';
 import { doublyCurvedMaxRaMm } from '../../core/roughness/doublyCurved';
 import {
   curvedRadiusInRange,
-  type DoublyCurvedSolver,
   doublyCurvedGouges,
   doublyCurvedGouging,
-  doublyCurvedMaxIntervalMm,
-  doublyCurvedSolver,
   type PrincipalRadii,
   type RadiusLimit,
 } from '../../core/surfaces/doublyCurved';
+import {
+  type CurvedPoint,
+  curvedLimits,
+  curvedMaxIntervalMm,
+  curvedPoint,
+} from '../../core/surfaces/doublyCurvedPoint';
 import type { CurvedError } from '../pageProtocol';
 import type { SliderLimits } from '../protocol';
 
@@ -68,18 +72,18 @@ export function curvedErrors(
 ): CurvedError[] {
   const radiusErrors = curvedRadiusErrors(tool, radii);
   if (radiusErrors.length > 0) return radiusErrors;
-  const solver = doublyCurvedSolver(tool, radii);
-  const limits = solver.limits();
+  const point = curvedPoint(tool, radii, pattern);
+  const limits = curvedLimits(point);
   if ('h' in question) {
     if (!(question.h < limits.limitMm))
       return [{ field: 'h', code: 'above-limit', limitMm: Math.max(0, limits.limitMm), limitBy: limits.limitBy }];
     return [];
   }
   if ('ra' in question) {
-    const maxRaMm = limits.limitMm > 0 ? maxRaAt(tool, pattern, radii) : 0;
+    const maxRaMm = limits.limitMm > 0 ? maxRaAt(point) : 0;
     return question.ra < maxRaMm ? [] : [{ field: 'ra', code: 'beyond-max-ra', maxMm: maxRaMm }];
   }
-  const maxMm = doublyCurvedMaxIntervalMm(solver, pattern);
+  const maxMm = curvedMaxIntervalMm(point);
   return question.interval < maxMm ? [] : [{ field: 'interval', code: 'beyond-max', maxMm }];
 }
 
@@ -87,38 +91,33 @@ export function curvedErrors(
 let lastRa: { key: string; value: number } | null = null;
 
 /** doublyCurvedMaxRaMm, remembered for the last tool, pattern and radii. */
-function maxRaAt(tool: ToolInput, pattern: PassPattern, radii: PrincipalRadii): number {
+function maxRaAt(c: CurvedPoint): number {
+  const { tool, surface } = c;
   const key = JSON.stringify([
     tool.toolRadiusMm,
     tool.cornerRadiusMm,
     tool.leadAngleDeg,
     tool.tiltAngleDeg,
-    pattern,
-    radii.feedRadiusMm,
-    radii.crossRadiusMm,
+    c.pattern,
+    surface.feedRadiusMm,
+    surface.crossRadiusMm,
   ]);
-  if (lastRa?.key !== key) lastRa = { key, value: doublyCurvedMaxRaMm(tool, pattern, radii) };
+  if (lastRa?.key !== key) lastRa = { key, value: doublyCurvedMaxRaMm(c) };
   return lastRa.value;
 }
 
 /**
  * A doubly curved point's sliders' limits (protocol.ts SliderLimits) for a valid tool and posture
- * and radii that curvedRadiusErrors takes (in range, no gouging), through the point's prepared
- * `solver`: the scallop height below the flank and shank limits, the widest step-over that leaves a
- * scallop and, while Ra is the target, the largest Ra.
+ * and radii that curvedRadiusErrors takes (in range, no gouging), from the point's model: the
+ * scallop height below the flank and shank limits, the widest step-over that leaves a scallop and,
+ * while Ra is the target, the largest Ra.
  */
-export function curvedSliderLimits(
-  solver: DoublyCurvedSolver,
-  tool: ToolInput,
-  radii: PrincipalRadii,
-  pattern: PassPattern,
-  raTarget: boolean,
-): SliderLimits {
-  const hMm = solver.limits().limitMm;
+export function curvedSliderLimits(c: CurvedPoint, raTarget: boolean): SliderLimits {
+  const hMm = curvedLimits(c).limitMm;
   return {
     hMm,
-    intervalMm: doublyCurvedMaxIntervalMm(solver, pattern),
-    raMm: raTarget && hMm > 0 ? maxRaAt(tool, pattern, radii) : null,
+    intervalMm: curvedMaxIntervalMm(c),
+    raMm: raTarget && hMm > 0 ? maxRaAt(c) : null,
     concaveMinMm: 0,
   };
 }

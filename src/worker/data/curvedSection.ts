@@ -2,20 +2,22 @@
  * The cross-feed profile at a doubly curved point (issue 19): the section across the feed is the
  * circle of radius Rc (the drawing's surface is then the cylinder of radius Rc with its axis along
  * the feed: surfaceGeometry.ts maps arc length and radial height to the section), one pass's
- * profile in those coordinates from its two flanks seen from `m` (core equatorFlank: reach at each
- * radial height), the cusps the exact answer leaves, and where the plane's, each cylinder's and the
+ * profile in those coordinates from its two flanks seen from `m` (the registry's model's flank
+ * widths: reach at each radial height), the cusps the exact answer leaves (the model's inverse), and where the plane's, each cylinder's and the
  * corrected procedures' step-overs put the next pass (core compareDoublyCurved). Mm.
  */
 import type { PassPattern, ToolInput } from '../../core/input/validate';
 import { compareDoublyCurved, type DoublyCurvedRow } from '../../core/procedures/compareDoublyCurved';
 import { CORRECTED_KEYS, correctedRowKey } from '../../core/procedures/procedures';
+import type { PrincipalRadii } from '../../core/surfaces/doublyCurved';
 import {
-  type DoublyCurvedSolver,
-  doublyCurvedMaxIntervalMm,
-  doublyCurvedSolver,
-  inverseWith,
-  type PrincipalRadii,
-} from '../../core/surfaces/doublyCurved';
+  type CurvedPoint,
+  curvedFlankWidths,
+  curvedInverse,
+  curvedLimits,
+  curvedMaxIntervalMm,
+  curvedPoint,
+} from '../../core/surfaces/doublyCurvedPoint';
 import type { ExactSummary } from '../protocol';
 import type { CurvedMark, CurvedSectionData } from '../teachProtocol';
 
@@ -27,15 +29,16 @@ const FLANK_SAMPLES = 64;
  * contact, then the right flank up to its top; s the reach along the equator (arc length), h
  * radial. The top is each flank's widest point seen from `m`, a hair inside.
  */
-export function curvedPassProfile(solver: DoublyCurvedSolver): Float64Array {
-  const limits = solver.limits();
+export function curvedPassProfile(c: CurvedPoint): Float64Array {
+  const limits = curvedLimits(c);
+  const reach = curvedFlankWidths(c);
   const flank = (sign: 1 | -1): number[] => {
-    const f = sign > 0 ? solver.right : solver.left;
+    const f = sign > 0 ? 'right' : 'left';
     const top = (sign > 0 ? limits.topRightMm : limits.topLeftMm) * (1 - 1e-9);
     const pts: number[] = [];
     for (let i = 1; i <= FLANK_SAMPLES; i++) {
       const h = top * (i / FLANK_SAMPLES) ** 2;
-      const s = f.reachMm(h);
+      const s = reach(f, h);
       if (Number.isFinite(s)) pts.push(sign * s + 0, h);
     }
     return pts;
@@ -50,8 +53,9 @@ export function curvedPassProfile(solver: DoublyCurvedSolver): Float64Array {
 }
 
 /** The exact answer as the profile drawing reads it, from the step-over L (mm). */
-export function curvedExactSummary(solver: DoublyCurvedSolver, pattern: PassPattern, intervalMm: number): ExactSummary {
-  const e = inverseWith(solver, pattern, intervalMm);
+export function curvedExactSummary(c: CurvedPoint, intervalMm: number): ExactSummary {
+  const pattern = c.pattern;
+  const e = curvedInverse(c, intervalMm);
   const zig = pattern === 'zigzag';
   const right = { yMm: zig ? intervalMm / 2 : e.halfWidthRightMm, heightMm: e.rightCuspHeightMm };
   const left = { yMm: zig ? -intervalMm / 2 : -e.halfWidthLeftMm, heightMm: e.leftCuspHeightMm };
@@ -67,7 +71,7 @@ export function curvedExactSummary(solver: DoublyCurvedSolver, pattern: PassPatt
     right,
     left,
     noScallop: false,
-    maxIntervalMm: doublyCurvedMaxIntervalMm(solver, pattern),
+    maxIntervalMm: curvedMaxIntervalMm(c),
   };
 }
 
@@ -86,7 +90,7 @@ export function curvedSection(
   pattern: PassPattern,
   hMm: number,
 ): CurvedSectionData {
-  const solver = doublyCurvedSolver(tool, radii);
+  const point = curvedPoint(tool, radii, pattern);
   const c = compareDoublyCurved({ ...tool, ...radii, pattern, scallopHeightMm: hMm });
   const comparison: CurvedMark[] = [
     markOf('plane', c.plane),
@@ -98,8 +102,8 @@ export function curvedSection(
     toolRadiusMm: tool.toolRadiusMm,
     crossRadiusMm: radii.crossRadiusMm,
     feedRadiusMm: radii.feedRadiusMm,
-    passProfile: curvedPassProfile(solver),
-    exact: curvedExactSummary(solver, pattern, c.exact.intervalMm),
+    passProfile: curvedPassProfile(point),
+    exact: curvedExactSummary(point, c.exact.intervalMm),
     comparison,
     untilted: tool.tiltAngleDeg === 0,
   };

@@ -3,7 +3,8 @@
  * exact step-over of one tool, pass pattern and pair of principal radii over the grid of scallop
  * heights x lead angles x tilts, as CSV in the batch's layout with the surface given by its two
  * signed radii (`feedRadius`, `crossRadius`, mm) in place of `surfaceRadius` and `surfaceAxis`.
- * The result columns are the batch's: `exact` (L/2), `interval` (L, arc length across the feed),
+ * The exact answer is the registry's model's (core surfaces/doublyCurvedPoint.ts). The result
+ * columns are the batch's: `exact` (L/2), `interval` (L, arc length across the feed),
  * the flank reaches, the contact offset and zigzag's other cusp; the plane procedures' columns stay
  * empty (they ignore the curvature: the page's comparison rows say by how much). A cell whose
  * posture gouges the point, or whose h is at or above that posture's limit, keeps its inputs and
@@ -18,12 +19,11 @@ import type { LookupGrid, LookupTable } from '../../core/output/lookupTable';
 import {
   curvedRadiusInRange,
   doublyCurvedGouges,
-  doublyCurvedSolver,
-  forwardWith,
   MAX_PRINCIPAL_RADIUS_MM,
   MIN_PRINCIPAL_RADIUS_MM,
   type PrincipalRadii,
 } from '../../core/surfaces/doublyCurved';
+import { curvedForward, curvedLimits, curvedPoint } from '../../core/surfaces/doublyCurvedPoint';
 
 /** The input columns: R, Rcr, rho, h, tilt, pattern, then the two radii. */
 export const CURVED_INPUT_COLUMNS = [
@@ -64,25 +64,25 @@ export function curvedLookupTable(
     for (const rho of grid.leadAnglesDeg) {
       const posture = { ...tool, leadAngleDeg: rho, tiltAngleDeg: tilt };
       const gouges = doublyCurvedGouges(posture, radii);
-      const solver = gouges ? null : doublyCurvedSolver(posture, radii);
-      const limitMm = solver?.limits().limitMm ?? 0;
+      const point = gouges ? null : curvedPoint(posture, radii, pattern);
+      const limitMm = point === null ? 0 : curvedLimits(point).limitMm;
       for (const h of grid.scallopHeightsMm) {
         const echo = [tool.toolRadiusMm, tool.cornerRadiusMm, rho, h, tilt]
           .map(csvNumber)
           .concat([pattern, csvNumber(radii.feedRadiusMm), csvNumber(radii.crossRadiusMm)])
           .join(',');
         let reason: string | null = null;
-        if (solver === null)
+        if (point === null)
           reason =
             'The tool gouges this doubly curved point at this posture: the swept tool reaches inside the surface away from the contact.';
         else if (!(h < limitMm))
           reason = `Scallop height h must be below ${mm(fromMm(Math.max(0, limitMm), unit))} ${unitSymbol(unit)} at this point and posture (got ${csvNumber(Number(fromMm(h, unit).toPrecision(12)))}).`;
-        if (reason !== null || solver === null) {
+        if (reason !== null || point === null) {
           empty++;
           lines.push(`${echo},${emptyResults}${csvText(reason ?? '')}`);
           continue;
         }
-        const e = forwardWith(solver, pattern, h);
+        const e = curvedForward(point, h);
         const cells: Record<(typeof RESULT_COLUMNS)[number], string> = {
           exact: csvNumber(e.intervalMm / 2),
           sekine: '',

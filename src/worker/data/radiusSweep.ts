@@ -1,6 +1,6 @@
 /**
  * The chart of L against each principal radius at a doubly curved point (issue 19): with the other
- * radius held, L (core doublyCurvedForward through a prepared solver) at |radius| on a log grid,
+ * radius held, L (the registry's model: core surfaces/doublyCurvedPoint.ts) at |radius| on a log grid,
  * convex and concave, at the current posture and h. Where the tool gouges (the radius's limit with
  * the other held, core doublyCurvedRadiusLimit: admissible where 1/R >= its curvature limit) or h is
  * at or above the flank and shank limits, there is no L: those runs are the chart's gaps. Mm.
@@ -8,12 +8,11 @@
 import type { PassPattern, ToolInput } from '../../core/input/validate';
 import {
   doublyCurvedRadiusLimit,
-  doublyCurvedSolver,
-  forwardWith,
   MAX_PRINCIPAL_RADIUS_MM,
   MIN_PRINCIPAL_RADIUS_MM,
   type PrincipalRadii,
 } from '../../core/surfaces/doublyCurved';
+import { curvedForward, curvedLimits, curvedPoint } from '../../core/surfaces/doublyCurvedPoint';
 import type { RadiusGap, RadiusGapReason, RadiusSweepData } from '../teachProtocol';
 
 /** Samples per side (the current |radius| is added to them). */
@@ -45,9 +44,9 @@ function intervalAt(
   admissible: boolean,
 ): number | RadiusGapReason {
   if (!admissible) return 'gouging';
-  const solver = doublyCurvedSolver(tool, radii);
-  if (!(hMm < solver.limits().limitMm)) return 'above-limit';
-  const L = forwardWith(solver, pattern, hMm).intervalMm;
+  const point = curvedPoint(tool, radii, pattern);
+  if (!(hMm < curvedLimits(point).limitMm)) return 'above-limit';
+  const L = curvedForward(point, hMm).intervalMm;
   return Number.isFinite(L) && L > 0 ? L : 'above-limit';
 }
 

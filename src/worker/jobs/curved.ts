@@ -1,17 +1,17 @@
 /**
- * The worker's `solve` job for a doubly curved point (issue 19): the exact step-over and cusps, the
- * limits and the widest step-over from the surface registry's doubly curved model at the five-axis
- * mode's posture (core surfaces/question.ts posturedModel: issue 27 point 3, every surface through
- * its SurfaceModel, a machine mode a posture supplier), the model loaded on first use with this
- * job (jobs/page.ts `ready`, which the worker awaits before its first answer); the views' parts
- * beside it from the point's solver: the sliders' limits, the roughness along the normal (a target Ra first
- * comes to the scallop height that leaves it, doublyCurvedHeightForRaMm) and, forward, the
- * comparison rows (the plane, each cylinder, the usual correction). The request is validated again
- * (the tool and posture as validate.ts does, then this point's own checks): a bad request gets a
- * typed error reply, never an exception.
+ * The worker's `solve` job for a doubly curved point (issue 19): every number of the exact answer
+ * from the surface registry's doubly curved model at the five-axis mode's posture (core
+ * surfaces/doublyCurvedPoint.ts over question.ts posturedModel: issue 27 point 3, every surface
+ * through its SurfaceModel, a machine mode a posture supplier): the step-over and cusps, the
+ * limits, the widest step-over, the sliders' limits, the roughness along the normal (a target Ra
+ * first comes to the scallop height that leaves it, doublyCurvedHeightForRaMm) and, forward, the
+ * comparison rows (the plane, each cylinder, the usual correction). A straight radius is the
+ * cylinder's or the plane's answer (models/doublyCurved.ts). The model loads on first use with this
+ * job (jobs/page.ts `ready`, which the worker awaits before its first answer). The request is
+ * validated again (the tool and posture as validate.ts does, then this point's own checks): a bad
+ * request gets a typed error reply, never an exception.
  */
 
-import type { DoublyCurvedSurface } from '../../core/domain/surface';
 import { TOOL_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
 import { type InputError, inputError, MIN_LENGTH_MM } from '../../core/input/validate';
@@ -22,26 +22,12 @@ import {
   doublyCurvedRoughnessAtInterval,
 } from '../../core/roughness/doublyCurved';
 import { roughnessSummary } from '../../core/roughness/raTarget';
-import { doublyCurvedSolver } from '../../core/surfaces/doublyCurved';
-import type { DoublyCurvedPass } from '../../core/surfaces/doublyCurved/types';
-import type { FiveAxisMode } from '../../core/surfaces/modes/fiveAxis';
-import { type PosturedModel, posturedModel } from '../../core/surfaces/question';
+import { curvedInverse, curvedLimits, curvedPointOf } from '../../core/surfaces/doublyCurvedPoint';
 import { validatePassAnd } from '../../core/surfaces/validate';
 import { curvedErrors, curvedSliderLimits } from '../data/curvedCheck';
 import { curvedSceneGeometry } from '../data/curvedScene';
 import { finiteLimits } from '../data/sliderLimits';
 import type { CurvedError, CurvedReply, CurvedRequest, CurvedSummary } from '../pageProtocol';
-
-/** The point's surface, its model (the registry's), and the tool at the five-axis posture (lead and tilt as given). */
-export function curvedModel(i: DoublyCurvedPass): PosturedModel & { readonly surface: DoublyCurvedSurface } {
-  const surface: DoublyCurvedSurface = {
-    kind: 'doublyCurved',
-    feedRadiusMm: i.feedRadiusMm,
-    crossRadiusMm: i.crossRadiusMm,
-  };
-  const mode: FiveAxisMode = { kind: 'fiveAxis', leadAngleDeg: i.leadAngleDeg, tiltAngleDeg: i.tiltAngleDeg };
-  return { ...posturedModel({ tool: i, mode, surface, pattern: i.pattern }), surface };
-}
 
 /** The request's errors (the tool's, then the point's), or null when it is valid. */
 export function revalidateCurved(request: CurvedRequest): readonly (InputError | CurvedError)[] | null {
@@ -74,24 +60,21 @@ export function solveCurved(request: CurvedRequest): CurvedReply {
   const t0 = performance.now();
   const errors = revalidateCurved(request);
   const i = request.input;
-  // The point's solver, prepared once for the views' parts, the sliders' limits (beside a refusal of
-  // h, L or Ra too) and the roughness: unless the tool or the radii were refused (checked once, above).
-  const solver = (errors ?? []).some(noLimits) ? null : doublyCurvedSolver(i, i);
+  // The point through the registries, for the sliders' limits (beside a refusal of h, L or Ra too),
+  // the answer and the roughness: unless the tool or the radii were refused (checked once, above).
+  const point = (errors ?? []).some(noLimits) ? null : curvedPointOf(i);
   const sliderLimits =
-    solver === null
-      ? null
-      : finiteLimits(() => curvedSliderLimits(solver, i, i, i.pattern, request.mode === 'curved-ra'));
-  if (errors !== null || solver === null) return { ok: false, request, errors: errors ?? [], limits: sliderLimits };
-  const { model, tool, posture, surface } = curvedModel(i);
-  const pass = { ...tool, pattern: posture.pattern, surface };
-  const limits = model.limits(tool, surface);
-  const maxIntervalMm = sliderLimits?.intervalMm ?? model.maxIntervalMm(tool, pass.pattern, surface);
+    point === null ? null : finiteLimits(() => curvedSliderLimits(point, request.mode === 'curved-ra'));
+  if (errors !== null || point === null) return { ok: false, request, errors: errors ?? [], limits: sliderLimits };
+  const { model, tool, surface, pattern } = point;
+  const limits = curvedLimits(point);
+  const maxIntervalMm = sliderLimits?.intervalMm ?? model.maxIntervalMm(tool, pattern, surface);
   if (request.mode !== 'curved-inverse') {
     const hMm =
       request.mode === 'curved-forward'
         ? request.input.scallopHeightMm
-        : doublyCurvedHeightForRaMm(i, i.pattern, i, request.input.targetRaMm);
-    const f = model.forward({ ...pass, scallopHeightMm: hMm });
+        : doublyCurvedHeightForRaMm(point, request.input.targetRaMm);
+    const f = model.forward({ ...tool, pattern, surface, scallopHeightMm: hMm });
     const exact = {
       intervalMm: f.intervalMm,
       halfWidthRightMm: f.halfWidthRightMm,
@@ -102,19 +85,18 @@ export function solveCurved(request: CurvedRequest): CurvedReply {
     };
     const { exact: _exact, maxIntervalMm: _max, ...comparison } = compareDoublyCurved({ ...i, scallopHeightMm: hMm });
     const summary = { ...exact, pattern: i.pattern, maxIntervalMm, limits };
-    const roughness = doublyCurvedRoughness(solver, i.pattern, exact);
     return {
       ok: true,
       request,
       limits: sliderLimits,
       exact: summary,
       comparison,
-      roughness: roughnessSummary(roughness, exact.cuspHeightMm),
+      roughness: roughnessSummary(doublyCurvedRoughness(point, f), exact.cuspHeightMm),
       scene: curvedSceneGeometry(i, summary),
       solveMs: performance.now() - t0,
     };
   }
-  const e = model.inverse({ ...pass, intervalMm: request.input.intervalMm });
+  const e = curvedInverse(point, request.input.intervalMm);
   const exact: CurvedSummary = {
     pattern: i.pattern,
     intervalMm: e.intervalMm,
@@ -132,7 +114,7 @@ export function solveCurved(request: CurvedRequest): CurvedReply {
     limits: sliderLimits,
     exact,
     comparison: null,
-    roughness: roughnessSummary(doublyCurvedRoughnessAtInterval(solver, i.pattern, e), e.cuspHeightMm),
+    roughness: roughnessSummary(doublyCurvedRoughnessAtInterval(point, e), e.cuspHeightMm),
     scene: curvedSceneGeometry(i, exact),
     solveMs: performance.now() - t0,
   };

@@ -6,7 +6,7 @@
  */
 import { MIN_LENGTH_MM } from '../../core/input/validate';
 import { doublyCurvedHeightForRaMm } from '../../core/roughness/doublyCurved';
-import { doublyCurvedSolver, inverseWith } from '../../core/surfaces/doublyCurved';
+import { curvedInverse, curvedPointOf } from '../../core/surfaces/doublyCurvedPoint';
 import { curvedSection } from '../data/curvedSection';
 import { radiusSweep } from '../data/radiusSweep';
 import { slopeChart } from '../data/slopeChart';
@@ -30,7 +30,7 @@ export function teachThreeAxis(request: ThreeAxisRequest): ThreeAxisTeachReply {
   return { ok: true, request, slope, plane: taught?.ok ? taught : null };
 }
 
-/** The doubly curved point's chart and profile (in inverse mode at the solved h, for a target Ra at its h). */
+/** The doubly curved point's chart and profile (in inverse mode at the model's solved h, for a target Ra at its h). */
 export function teachCurved(request: CurvedRequest): CurvedTeachReply {
   if (revalidateCurved(request) !== null) return { ok: false, request, reason: null };
   const i = request.input;
@@ -38,8 +38,8 @@ export function teachCurved(request: CurvedRequest): CurvedTeachReply {
     request.mode === 'curved-forward'
       ? request.input.scallopHeightMm
       : request.mode === 'curved-ra'
-        ? doublyCurvedHeightForRaMm(i, i.pattern, i, request.input.targetRaMm)
-        : inverseWith(doublyCurvedSolver(i, i), i.pattern, request.input.intervalMm).cuspHeightMm;
+        ? doublyCurvedHeightForRaMm(curvedPointOf(i), request.input.targetRaMm)
+        : curvedInverse(curvedPointOf(i), request.input.intervalMm).cuspHeightMm;
   if (!(hMm >= MIN_LENGTH_MM)) return { ok: false, request, reason: NO_SCALLOP };
   return {
     ok: true,

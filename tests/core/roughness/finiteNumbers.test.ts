@@ -20,7 +20,7 @@ import {
   scallopHeightForRaMm,
 } from '../../../src/core/roughness/roughness';
 import { SimulationTooLargeError, simulatePasses } from '../../../src/core/simulation/simulation';
-import { doublyCurvedSolver, forwardWith, inverseWith } from '../../../src/core/surfaces/doublyCurved/solve';
+import { curvedForward, curvedInverse, curvedLimits, curvedPoint } from '../../../src/core/surfaces/doublyCurvedPoint';
 import { surfaceModel } from '../../../src/core/surfaces/registry';
 import { exactForward, exactInverse } from '../../../src/core/surfaces/solve';
 import { maxIntervalMm, scallopHeightLimits } from '../../../src/core/surfaces/validate';
@@ -41,9 +41,9 @@ describe('roughness and the simulation stay finite at tiny step-overs and target
       leadAngleDeg: 41.627362190769055,
       tiltAngleDeg: 0,
     };
-    const solver = doublyCurvedSolver(tool, { feedRadiusMm: 3413.9965998497723, crossRadiusMm: 0.1143 });
-    const e = inverseWith(solver, 'one-way', 0.000042261027907111694);
-    const r = doublyCurvedRoughnessAtInterval(solver, 'one-way', e);
+    const point = curvedPoint(tool, { feedRadiusMm: 3413.9965998497723, crossRadiusMm: 0.1143 }, 'one-way');
+    const e = curvedInverse(point, 0.000042261027907111694);
+    const r = doublyCurvedRoughnessAtInterval(point, e);
     expect(everyNumberFinite(r)).toBe(true);
     // A scallop a millionth of every radius is a parabola to a relative 1e-6 and better.
     expect(Math.abs(r.raMm / r.rzMm - PARABOLA_RA)).toBeLessThan(1e-6);
@@ -88,17 +88,17 @@ describe('roughness and the simulation stay finite at tiny step-overs and target
         const surface: DoublyCurvedSurface = { kind: 'doublyCurved', ...radii };
         const model = surfaceModel(surface);
         if (model.fit(tool, surface).gouges || model.leavesNoScallop(tool, surface)) continue;
-        const solver = doublyCurvedSolver(tool, radii);
-        const limit = solver.limits().limitMm;
+        const point = curvedPoint(tool, radii, pattern);
+        const limit = curvedLimits(point).limitMm;
         if (!(limit > 1e3 * MIN_LENGTH_MM)) continue;
-        const widest = forwardWith(solver, pattern, limit * (1 - 1e-9)).intervalMm;
+        const widest = curvedForward(point, limit * (1 - 1e-9)).intervalMm;
         const L = widest * logUniform(rand, 1e-8, 1e-3);
-        const r = doublyCurvedRoughnessAtInterval(solver, pattern, inverseWith(solver, pattern, L));
+        const r = doublyCurvedRoughnessAtInterval(point, curvedInverse(point, L));
         expect(everyNumberFinite(r), JSON.stringify({ tool, radii, pattern, L })).toBe(true);
-        const maxRa = doublyCurvedMaxRaMm(tool, pattern, radii);
+        const maxRa = doublyCurvedMaxRaMm(point);
         const target = Math.max(MIN_LENGTH_MM, maxRa * logUniform(rand, 1e-9, 1e-3));
         if (target < maxRa) {
-          const hRa = doublyCurvedHeightForRaMm(tool, pattern, radii, target);
+          const hRa = doublyCurvedHeightForRaMm(point, target);
           expect(Number.isFinite(hRa) && hRa > 0, JSON.stringify({ tool, radii, pattern, target })).toBe(true);
         }
       } else {

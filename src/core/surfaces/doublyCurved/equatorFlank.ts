@@ -24,7 +24,9 @@
  * - Height at a polar angle theta (the inverse): the ray from C at theta meets each disk it crosses
  *   (`|p| <= k`, p the disk centre's offset from the ray); the material boundary is the first entry
  *   (convex) or the last exit (concave), a minimum over those disks of
- *   `u sin theta + B cos theta -+ 2 |Rc| sin^2(theta / 2) - sqrt(k^2 - p^2)` (upper sign convex).
+ *   `u sin theta + B cos theta -+ 2 |Rc| sin^2(theta / 2) - sqrt(k^2 - p^2)` (upper sign convex);
+ *   where that reads a height above the top (the crossing disks not one run of u: the far side),
+ *   the height whose reach is theta's, by a bracketed root (the flank rises with its reach).
  * - Top: convex, the ray from C tangent to the section (the largest polar angle of any point);
  *   concave, the first point where the envelope's normal passes through C (the disk whose farthest
  *   point is nearest C) or, before that, the section's widest point; Rc infinite, the widest point.
@@ -40,8 +42,12 @@ import type { PassSection } from './passSection';
 export interface EquatorFlank {
   /** Reach (arc length along the equator, mm) of the flank at radial height `h` (0 < h below the top). */
   reachMm(heightMm: number): number;
-  /** Radial height (mm) of the flank at reach `reachMm` (arc length along the equator from the CC point). */
-  heightAtMm(reachMm: number): number;
+  /**
+   * Radial height (mm) of the flank at reach `reachMm` (arc length along the equator from the CC
+   * point). @param atMostMm a height below the top the caller knows the answer not to exceed (a
+   * zigzag's other cusp, below h): a reading within it needs no search for the top.
+   */
+  heightAtMm(reachMm: number, atMostMm?: number): number;
   /** Radial height (mm) of the flank's top (its widest point seen from m). */
   topMm(): number;
 }
@@ -93,6 +99,15 @@ class RayObjective implements Objective {
   }
 }
 
+/** reach(u^2) - w: a flank's reach at height u^2 (u in sqrt(mm)) beyond the reach asked. */
+class ReachMismatch implements Objective {
+  w = 0;
+  constructor(private readonly f: Flank) {}
+  value(u: number): number {
+    return this.f.reachMm(u * u) - this.w;
+  }
+}
+
 /** The top: convex, the largest polar angle of a disk; concave, minus the distance of its farthest point from C. */
 class TopObjective implements Objective {
   constructor(private readonly f: Flank) {}
@@ -112,6 +127,7 @@ class Flank implements EquatorFlank {
   private readonly bottomObj = new BottomObjective(this);
   private readonly offsetObj = new OffsetObjective(this);
   private readonly rayObj = new RayObjective(this);
+  private readonly reachMismatch = new ReachMismatch(this);
   private top: { heightMm: number; u: number } | null = null;
 
   constructor(
@@ -277,7 +293,32 @@ class Flank implements EquatorFlank {
     return this.mode < 0 ? this.findTop().u : this.end;
   }
 
-  heightAtMm(reachMm: number): number {
+  heightAtMm(reachMm: number, atMostMm = Number.NEGATIVE_INFINITY): number {
+    const h = this.rayHeightAtMm(reachMm);
+    if (h <= atMostMm) return h;
+    // The ray's first entry can be read past the flank's top, on its far side (a section whose disk
+    // centres rise steeply, as at a high lead over a convex Rc below the tool radius: the disks the
+    // ray crosses are then not one run of u). Below the top the flank rises with its reach, so the
+    // height there is the one whose reach is reachMm.
+    return h <= this.topMm() ? h : this.heightByReachMm(reachMm);
+  }
+
+  /** The height (mm) whose reach is reachMm, by a bracketed root of the reach in sqrt(h) up to the top. */
+  private heightByReachMm(reachMm: number): number {
+    const top = this.topMm();
+    const f = this.reachMismatch;
+    f.w = reachMm;
+    const hi = Math.sqrt(top);
+    const fHi = f.value(hi);
+    if (!(fHi > 0)) return top;
+    const at0 = f.value(0);
+    const fLo = Number.isFinite(at0) ? at0 : -reachMm;
+    if (fLo >= 0) return 0;
+    return bracketedRoot(f, 0, hi, fLo, fHi, 1e-16) ** 2;
+  }
+
+  /** The height (mm) where the ray from C at the reach's angle first enters (convex) or last leaves (concave) the section. */
+  private rayHeightAtMm(reachMm: number): number {
     const U = this.searchEnd();
     const theta = reachMm / this.scale();
     const k = this.k;

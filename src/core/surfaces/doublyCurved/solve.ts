@@ -62,21 +62,12 @@ export function doublyCurvedSolver(tool: ToolInput, radii: PrincipalRadii): Doub
     limits() {
       if (cached === null) {
         const shank = shankCutHeights(tool, radii);
-        cached = limitsOf(right.topMm(), left.topMm(), shank.rightMm, shank.leftMm);
+        // The shank first on a tie, as posture.ts.
+        cached = flankLimitsOf(right.topMm(), left.topMm(), shank.rightMm, shank.leftMm);
       }
       return cached;
     },
   };
-}
-
-/** Combines flank tops and shank heights into the binding limit (the shank first on a tie, as posture.ts). */
-export function limitsOf(
-  topRightMm: number,
-  topLeftMm: number,
-  shankRightMm: number | null,
-  shankLeftMm: number | null,
-): DoublyCurvedLimits {
-  return flankLimitsOf(topRightMm, topLeftMm, shankRightMm, shankLeftMm);
 }
 
 /**
@@ -101,7 +92,7 @@ export function forwardWith(
   let other: number | null = null;
   if (pattern === 'zigzag') {
     const wider = wR > wL ? solver.right : solver.left;
-    other = wR === wL ? h : Math.min(h, wider.heightAtMm(L / 2));
+    other = wR === wL ? h : Math.min(h, wider.heightAtMm(L / 2, h));
   }
   return {
     intervalMm: L,
@@ -114,15 +105,17 @@ export function forwardWith(
 }
 
 /**
- * Exact step-over alone (mm): the fast path of {@link doublyCurvedForward} (no zigzag inverse).
- * @param input validated; h below the flank limits.
+ * Exact step-over alone (mm) with a prepared solver: the fast path of {@link forwardWith} (no zigzag
+ * other cusp). @param heightMm below the flank limits.
  */
-export function doublyCurvedIntervalMm(input: DoublyCurvedForwardInput): number {
-  const solver = doublyCurvedSolver(input, input);
-  const h = input.scallopHeightMm;
-  const wR = solver.right.reachMm(h);
-  const wL = solver.symmetric ? wR : solver.left.reachMm(h);
-  return input.pattern === 'one-way' ? wR + wL : 2 * Math.min(wR, wL);
+export function intervalWith(
+  solver: DoublyCurvedSolver,
+  pattern: DoublyCurvedPass['pattern'],
+  heightMm: number,
+): number {
+  const wR = solver.right.reachMm(heightMm);
+  const wL = solver.symmetric ? wR : solver.left.reachMm(heightMm);
+  return pattern === 'one-way' ? wR + wL : 2 * Math.min(wR, wL);
 }
 
 /**

@@ -21,7 +21,14 @@ import {
   shapeOfTool,
 } from '../../tool/posture';
 import { doublyCurvedGouges } from '../doublyCurved/gouging';
-import { doublyCurvedMaxIntervalMm, doublyCurvedSolver, forwardWith, inverseWith } from '../doublyCurved/solve';
+import {
+  type DoublyCurvedSolver,
+  doublyCurvedMaxIntervalMm,
+  doublyCurvedSolver,
+  forwardWith,
+  intervalWith,
+  inverseWith,
+} from '../doublyCurved/solve';
 import type { ExactForward, ExactInverse, SurfaceFit, SurfaceModel } from '../surface';
 import { cylinderModel } from './cylinder';
 import { planeModel } from './plane';
@@ -52,17 +59,66 @@ export function straightSurface(surface: DoublyCurvedSurface): Straight | null {
   return null;
 }
 
-/** The plane profile's point at height h (clamped to the flank's top), for drawing only (as on a cylinder). */
-function drawnPoint(s: PostureShape, flank: Flank, heightMm: number): FlankPoint {
-  const top = flank === 'right' ? flankLimits(s).topRightMm : flankLimits(s).topLeftMm;
-  return flankAtHeight(s, flank, Math.max(0, Math.min(heightMm, top)));
+/** The plane profile's point at height h (clamped to the flank's top `topMm`), for drawing only (as on a cylinder). */
+function drawnPoint(s: PostureShape, flank: Flank, topMm: number, heightMm: number): FlankPoint {
+  return flankAtHeight(s, flank, Math.max(0, Math.min(heightMm, topMm)));
+}
+
+/** The plane profile's points drawn at the right and left cusps' heights. */
+interface Drawn {
+  readonly right: FlankPoint;
+  readonly left: FlankPoint;
+}
+
+/**
+ * The drawn points at the right and left cusps' heights, found when first read (the plane
+ * profile's limits and two points cost about as much as the answer, and only a drawing reads them).
+ */
+function drawnPoints(input: ToolInput, rightMm: number, leftMm: number): () => Drawn {
+  let drawn: Drawn | null = null;
+  return () => {
+    if (drawn === null) {
+      const s = shapeOfTool(input);
+      const tops = flankLimits(s);
+      drawn = {
+        right: drawnPoint(s, 'right', tops.topRightMm, rightMm),
+        left: drawnPoint(s, 'left', tops.topLeftMm, leftMm),
+      };
+    }
+    return drawn;
+  };
+}
+
+/** The last point's prepared solver, and its tool, posture and radii (compared with Object.is). */
+let lastSolver: DoublyCurvedSolver | null = null;
+let lastKey: readonly number[] = [];
+
+/**
+ * The point's solver, prepared once for a run of calls at one point: a reply asks the same point's
+ * limits (the shank's search, cached in the solver), widest step-over, answer and flank widths in
+ * turn, each through the model.
+ */
+function solverOf(tool: ToolInput, surface: DoublyCurvedSurface): DoublyCurvedSolver {
+  const key = [
+    tool.toolRadiusMm,
+    tool.cornerRadiusMm,
+    tool.leadAngleDeg,
+    tool.tiltAngleDeg,
+    surface.feedRadiusMm,
+    surface.crossRadiusMm,
+  ];
+  if (lastSolver === null || key.some((v, i) => !Object.is(v, lastKey[i]))) {
+    lastSolver = doublyCurvedSolver(tool, surface);
+    lastKey = key;
+  }
+  return lastSolver;
 }
 
 function forward(input: ForwardInput<DoublyCurvedSurface>): ExactForward {
   const straight = straightSurface(input.surface);
   if (straight !== null) return straight.model.forward({ ...input, surface: straight.surface });
-  const a = forwardWith(doublyCurvedSolver(input, input.surface), input.pattern, input.scallopHeightMm);
-  const s = shapeOfTool(input);
+  const a = forwardWith(solverOf(input, input.surface), input.pattern, input.scallopHeightMm);
+  const drawn = drawnPoints(input, a.cuspHeightMm, a.cuspHeightMm);
   return {
     intervalMm: a.intervalMm,
     halfIntervalMm: a.intervalMm / 2,
@@ -72,17 +128,29 @@ function forward(input: ForwardInput<DoublyCurvedSurface>): ExactForward {
     cuspHeightMm: a.cuspHeightMm,
     otherCuspHeightMm: a.otherCuspHeightMm,
     noScallop: false,
-    right: drawnPoint(s, 'right', a.cuspHeightMm),
-    left: drawnPoint(s, 'left', a.cuspHeightMm),
+    get right() {
+      return drawn().right;
+    },
+    get left() {
+      return drawn().left;
+    },
   };
 }
 
 function inverse(input: InverseInput<DoublyCurvedSurface>): ExactInverse {
   const straight = straightSurface(input.surface);
   if (straight !== null) return straight.model.inverse({ ...input, surface: straight.surface });
-  const a = inverseWith(doublyCurvedSolver(input, input.surface), input.pattern, input.intervalMm);
-  const s = shapeOfTool(input);
-  return { ...a, right: drawnPoint(s, 'right', a.rightCuspHeightMm), left: drawnPoint(s, 'left', a.leftCuspHeightMm) };
+  const a = inverseWith(solverOf(input, input.surface), input.pattern, input.intervalMm);
+  const drawn = drawnPoints(input, a.rightCuspHeightMm, a.leftCuspHeightMm);
+  return {
+    ...a,
+    get right() {
+      return drawn().right;
+    },
+    get left() {
+      return drawn().left;
+    },
+  };
 }
 
 /** Gouging: the doubly curved predicate (no single radius to name: each radius's limit depends on the other). */
@@ -98,25 +166,23 @@ export const doublyCurvedModel: SurfaceModel<DoublyCurvedSurface> = {
   intervalMm: (input) => {
     const straight = straightSurface(input.surface);
     if (straight !== null) return straight.model.intervalMm({ ...input, surface: straight.surface });
-    return forward(input).intervalMm;
+    return intervalWith(solverOf(input, input.surface), input.pattern, input.scallopHeightMm);
   },
   forward,
   inverse,
   limits: (tool, surface) => {
     const straight = straightSurface(surface);
-    return straight !== null
-      ? straight.model.limits(tool, straight.surface)
-      : doublyCurvedSolver(tool, surface).limits();
+    return straight !== null ? straight.model.limits(tool, straight.surface) : solverOf(tool, surface).limits();
   },
   maxIntervalMm: (tool: ToolInput, pattern: PassPattern, surface) => {
     const straight = straightSurface(surface);
     if (straight !== null) return straight.model.maxIntervalMm(tool, pattern, straight.surface);
-    return doublyCurvedMaxIntervalMm(doublyCurvedSolver(tool, surface), pattern);
+    return doublyCurvedMaxIntervalMm(solverOf(tool, surface), pattern);
   },
   flankWidths: (tool, surface) => {
     const straight = straightSurface(surface);
     if (straight !== null) return straight.model.flankWidths(tool, straight.surface);
-    const solver = doublyCurvedSolver(tool, surface);
+    const solver = solverOf(tool, surface);
     return (flank, h) => (flank === 'right' ? solver.right : solver.left).reachMm(h);
   },
   fit,

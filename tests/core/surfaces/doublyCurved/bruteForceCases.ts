@@ -1,5 +1,7 @@
 /**
- * Stratified cases for the brute-force checks of the doubly curved solver (issue 19): every family
+ * Stratified cases for the brute-force checks of the doubly curved point's exact answer (issue 19;
+ * the registry's model, surfaces/doublyCurvedPoint.ts, which answers a straight radius by the
+ * cylinder's or the plane's model): every family
  * of sign combinations (dome ++, bowl --, saddles +- and -+, convex and concave spheres, the two
  * cylinders both ways, the plane), ball, flat and bull-nose ends, with and without tilt, both
  * patterns, from a seed. Concave radii are drawn wide enough not to gouge (doublyCurvedGouges).
@@ -7,7 +9,7 @@
 
 import type { PassPattern, ToolInput } from '../../../../src/core/input/validate';
 import { doublyCurvedGouges } from '../../../../src/core/surfaces/doublyCurved/gouging';
-import { doublyCurvedForward, doublyCurvedLimits } from '../../../../src/core/surfaces/doublyCurved/solve';
+import { curvedForward, curvedLimits, curvedPoint } from '../../../../src/core/surfaces/doublyCurvedPoint';
 import { seededRandom } from '../../../support/bruteForce';
 import { bruteForceDoublyCurved } from '../../../support/reference/doublyCurvedBruteForce';
 import { polishDoublyCurvedCusp } from '../../../support/reference/doublyCurvedPolished';
@@ -120,7 +122,7 @@ function casesOf(seed: number, count: number, offset: number, stratum: (i: numbe
       };
       const [rf, rc] = radii(family, R, rand);
       if (doublyCurvedGouges(tool, { feedRadiusMm: rf, crossRadiusMm: rc })) continue;
-      const limit = doublyCurvedLimits({ ...tool, feedRadiusMm: rf, crossRadiusMm: rc }).limitMm;
+      const limit = curvedLimits(curvedPoint(tool, { feedRadiusMm: rf, crossRadiusMm: rc }, pattern)).limitMm;
       if (!(limit > 1e-3)) continue;
       const h = Math.min(0.1 * R, limit * (0.05 + 0.5 * rand()));
       const name = `${family}, ${kind}, ${tilted ? 'tilt' : 'no tilt'}, ${pattern} (seed ${seed} #${i}: R ${R.toFixed(4)} Rcr ${Rcr.toFixed(4)} rho ${tool.leadAngleDeg.toFixed(3)} tilt ${tool.tiltAngleDeg.toFixed(3)} Rf ${rf.toFixed(3)} Rc ${rc.toFixed(3)} h ${h.toFixed(5)})`;
@@ -165,13 +167,7 @@ export function compare(
   levels: number,
   polish = false,
 ): Array<{ exactMm: number; bruteMm: number; boundMm: number; polishedMm: number }> {
-  const f = doublyCurvedForward({
-    ...c.tool,
-    pattern: c.pattern,
-    feedRadiusMm: c.rf,
-    crossRadiusMm: c.rc,
-    scallopHeightMm: c.h,
-  });
+  const f = curvedForward(curvedPoint(c.tool, { feedRadiusMm: c.rf, crossRadiusMm: c.rc }, c.pattern), c.h);
   const other = f.otherCuspHeightMm as number;
   // Zigzag: the narrower flank's cusp is at h, the wider one's at the other (lower) height.
   const cusps: Array<[number, number]> =

@@ -8,11 +8,11 @@ import type { PassPattern, ToolInput } from '../../../../src/core/input/validate
 import { doublyCurvedGouges } from '../../../../src/core/surfaces/doublyCurved/gouging';
 import {
   doublyCurvedForward,
-  doublyCurvedIntervalMm,
   doublyCurvedInverse,
   doublyCurvedLimits,
 } from '../../../../src/core/surfaces/doublyCurved/solve';
 import type { DoublyCurvedForwardInput } from '../../../../src/core/surfaces/doublyCurved/types';
+import { doublyCurvedModel } from '../../../../src/core/surfaces/models/doublyCurved';
 import { seededRandom } from '../../../support/bruteForce';
 
 const I = Number.POSITIVE_INFINITY;
@@ -136,7 +136,12 @@ describe('doubly curved point: symmetry, ordering and round trips', () => {
           );
           const h = 0.3 * limit;
           const [convex, straight, concave] = all.map(({ rf, rc }) =>
-            doublyCurvedIntervalMm({ ...t, pattern, feedRadiusMm: rf, crossRadiusMm: rc, scallopHeightMm: h }),
+            doublyCurvedModel.intervalMm({
+              ...t,
+              pattern,
+              surface: { kind: 'doublyCurved', feedRadiusMm: rf, crossRadiusMm: rc },
+              scallopHeightMm: h,
+            }),
           ) as [number, number, number];
           const label = `${which} R ${R} Rcr ${t.cornerRadiusMm} rho ${t.leadAngleDeg} tilt ${t.tiltAngleDeg} |R| ${mag} other ${other}`;
           // A ball end ignores Rf (equal), otherwise strictly ordered.

@@ -13,6 +13,7 @@ import {
   doublyCurvedLimits,
   doublyCurvedSolver,
 } from '../../../../src/core/surfaces/doublyCurved/solve';
+import { curvedInverse, curvedPoint } from '../../../../src/core/surfaces/doublyCurvedPoint';
 import { exactForward, exactInverse } from '../../../../src/core/surfaces/solve';
 import { scallopHeightLimits } from '../../../../src/core/surfaces/validate';
 import { seededRandom } from '../../../support/bruteForce';
@@ -151,8 +152,9 @@ describe('doubly curved point: infinite radii give the existing plane and cylind
       const radii = { feedRadiusMm: 65.3173079543128, crossRadiusMm };
       const solver = doublyCurvedSolver(tool, radii);
       expect(Number.isFinite(solver.right.reachMm(0)), `Rc ${crossRadiusMm}`).toBe(true);
-      const e = doublyCurvedInverse({ ...tool, ...radii, pattern: 'one-way', intervalMm: 0.0046460868428474435 });
-      const r = doublyCurvedRoughnessAtInterval(solver, 'one-way', e);
+      const point = curvedPoint(tool, radii, 'one-way');
+      const e = curvedInverse(point, 0.0046460868428474435);
+      const r = doublyCurvedRoughnessAtInterval(point, e);
       expect([r.raMm, r.rqMm, r.rzMm].every(Number.isFinite), `Rc ${crossRadiusMm}`).toBe(true);
       // The flat bottom on a convex equator rises as y^2 / (2 Rc): the cusp at L/2 (parabola: Ra = 4 h / (9 sqrt 3)).
       if (Number.isFinite(crossRadiusMm)) {

@@ -15,7 +15,7 @@ import {
   doublyCurvedRoughnessAtInterval,
 } from '../../../../src/core/roughness/doublyCurved';
 import { exactRoughness, scallopHeightForRaMm } from '../../../../src/core/roughness/roughness';
-import { doublyCurvedSolver, forwardWith, inverseWith } from '../../../../src/core/surfaces/doublyCurved/solve';
+import { curvedForward, curvedInverse, curvedPoint } from '../../../../src/core/surfaces/doublyCurvedPoint';
 
 const I = Number.POSITIVE_INFINITY;
 
@@ -55,14 +55,14 @@ describe('roughness at a doubly curved point', () => {
     for (const rs of [40, -40, 8, -15]) {
       for (const pattern of ['one-way', 'zigzag'] as const) {
         const tool = { toolRadiusMm: 2, cornerRadiusMm: 2, leadAngleDeg: 20, tiltAngleDeg: 0 };
-        const solver = doublyCurvedSolver(tool, { feedRadiusMm: rs, crossRadiusMm: rs });
-        const e = forwardWith(solver, pattern, 0.03);
-        const r = doublyCurvedRoughness(solver, pattern, e);
+        const point = curvedPoint(tool, { feedRadiusMm: rs, crossRadiusMm: rs }, pattern);
+        const e = curvedForward(point, 0.03);
+        const r = doublyCurvedRoughness(point, e);
         const ref = ballOnSphereRoughness(2, rs, e.intervalMm);
         expect(Math.abs(r.raMm - ref.ra), `${rs} ${pattern}`).toBeLessThan(1e-9);
         expect(Math.abs(r.rqMm - ref.rq), `${rs} ${pattern}`).toBeLessThan(1e-9);
         expect(Math.abs(r.rzMm - ref.rz), `${rs} ${pattern}`).toBeLessThan(1e-9);
-        const back = doublyCurvedRoughnessAtInterval(solver, pattern, inverseWith(solver, pattern, e.intervalMm));
+        const back = doublyCurvedRoughnessAtInterval(point, curvedInverse(point, e.intervalMm));
         expect(Math.abs(back.raMm - ref.ra)).toBeLessThan(1e-9);
       }
     }
@@ -79,8 +79,8 @@ describe('roughness at a doubly curved point', () => {
     ] as const;
     for (const [rf, rc, surface] of cases) {
       for (const pattern of ['one-way', 'zigzag'] as const) {
-        const solver = doublyCurvedSolver(tool, { feedRadiusMm: rf, crossRadiusMm: rc });
-        const r = doublyCurvedRoughness(solver, pattern, forwardWith(solver, pattern, 0.04));
+        const point = curvedPoint(tool, { feedRadiusMm: rf, crossRadiusMm: rc }, pattern);
+        const r = doublyCurvedRoughness(point, curvedForward(point, 0.04));
         const c = exactRoughness(forwardInput(tool, pattern, 0.04, surface));
         expect(Math.abs(r.raMm - c.raMm), `${rf} ${rc} ${pattern}`).toBeLessThan(1e-12);
         expect(Math.abs(r.rqMm - c.rqMm), `${rf} ${rc} ${pattern}`).toBeLessThan(1e-12);
@@ -98,16 +98,16 @@ describe('roughness at a doubly curved point', () => {
         [35, -200],
       ]) {
         const radii = { feedRadiusMm: rf as number, crossRadiusMm: rc as number };
-        const max = doublyCurvedMaxRaMm(tool, pattern, radii);
+        const point = curvedPoint(tool, radii, pattern);
+        const max = doublyCurvedMaxRaMm(point);
         const target = 0.3 * max;
-        const h = doublyCurvedHeightForRaMm(tool, pattern, radii, target);
-        const solver = doublyCurvedSolver(tool, radii);
-        const ra = doublyCurvedRoughness(solver, pattern, forwardWith(solver, pattern, h)).raMm;
+        const h = doublyCurvedHeightForRaMm(point, target);
+        const ra = doublyCurvedRoughness(point, curvedForward(point, h)).raMm;
         expect(Math.abs(ra - target) / target, `${rf} ${rc} ${pattern}`).toBeLessThan(1e-12);
       }
       const cyl = { feedRadiusMm: I, crossRadiusMm: 45 };
-      const target = 0.2 * doublyCurvedMaxRaMm(tool, pattern, cyl);
-      const h = doublyCurvedHeightForRaMm(tool, pattern, cyl, target);
+      const target = 0.2 * doublyCurvedMaxRaMm(curvedPoint(tool, cyl, pattern));
+      const h = doublyCurvedHeightForRaMm(curvedPoint(tool, cyl, pattern), target);
       const hc = scallopHeightForRaMm(tool, pattern, target, { kind: 'cylinder', radiusMm: 45, axis: 'feed' });
       expect(Math.abs(h - hc) / hc).toBeLessThan(1e-10);
     }
