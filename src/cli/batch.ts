@@ -244,19 +244,24 @@ function lengthWriter(unit: LengthUnit): LengthText {
   return unit === 'mm' ? csvNumber : inchText;
 }
 
+/** The inverse answer's lengths in the order of INVERSE_RESULT_COLUMNS before `note`. */
+const INVERSE_LENGTHS = [
+  'cuspHeightMm',
+  'rightCuspHeightMm',
+  'leftCuspHeightMm',
+  'otherCuspHeightMm',
+  'halfWidthRightMm',
+  'halfWidthLeftMm',
+  'contactOffsetMm',
+] as const satisfies readonly (keyof ExactInverse)[];
+
 /** The results of a row given the step-over (INVERSE_RESULT_COLUMNS before `note`), in the run's unit. */
 function inverseResults(e: ExactInverse, unit: LengthUnit): string {
-  const numbers = [
-    e.cuspHeightMm,
-    e.rightCuspHeightMm,
-    e.leftCuspHeightMm,
-    e.otherCuspHeightMm,
-    e.halfWidthRightMm,
-    e.halfWidthLeftMm,
-    e.contactOffsetMm,
-  ];
   return inUnit(
-    numbers.map((x) => (x === null ? '' : csvNumber(x))),
+    INVERSE_LENGTHS.map((k) => {
+      const x = e[k];
+      return x === null ? '' : csvNumber(x);
+    }),
     unit,
   );
 }
