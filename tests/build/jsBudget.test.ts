@@ -160,7 +160,9 @@
  * language in force (pageMessages.ts hands in describeError): the first result 59.51 kB, the ratchet
  * 59.55 (under the 60 kB target); 306.87 in all. Then the doubly curved point answered through its model everywhere and its flank's
  * height read below the top (the doubly curved chunk, on first use, +0.12 kB; the first result +0.05): the first result 59.57 kB,
- * the ratchet 59.6 (under the 60 kB target); 307.01 in all, the ratchet 307.1.
+ * the ratchet 59.6 (under the 60 kB target); 307.01 in all. Then the flank's far-side height by its own
+ * bisection (the doubly curved chunk, on first use, +0.11 kB): the first result 59.59, 307.12 in all, the
+ * ratchet 307.2.
  */
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -186,7 +188,7 @@ describe('the JavaScript budget of the built site', () => {
     expect(sizes.files).toBe(emitted.length);
   });
 
-  it('all of it, every .js file, is at most 307.1 kB gzip (the ratchet; the target is 200)', () => {
-    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(307.1);
+  it('all of it, every .js file, is at most 307.2 kB gzip (the ratchet; the target is 200)', () => {
+    expect(sizes.totalGzip / KB).toBeLessThanOrEqual(307.2);
   });
 });
