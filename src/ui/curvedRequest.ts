@@ -6,6 +6,7 @@
  * (gouging, the flank and shank limits: worker/data/curvedCheck.ts) run once, in the worker, whose
  * refusal describeCurvedError words. Every message in the user's unit on its field. Pure.
  */
+import { quotedEntry } from '../core/input/entryMessages';
 import { FIELDS, pageKeyOf, TOOL_FIELDS } from '../core/input/fields';
 import { passFieldsAnd } from '../core/input/passFields';
 import { rawFields } from '../core/input/raw';
@@ -29,7 +30,7 @@ const SHORT: Readonly<Record<RadiusKey, string>> = { Rf: FIELDS.feedRadius.short
 /** `(got ...)` with the text as typed (shortened). */
 function got(text: string): string {
   const t = text.trim();
-  return `(got ${t.length > 24 ? `${t.slice(0, 21)}...` : t})`;
+  return `(got ${quotedEntry(t)})`;
 }
 
 /**
@@ -50,7 +51,7 @@ export function radiusMm(state: CalculatorState, key: RadiusKey): number | PageF
           text === ''
             ? `${LABEL[key]} is missing: enter a radius, or choose straight.`
             : v === null
-              ? `${LABEL[key]} must be a number (got "${text.slice(0, 21)}").`
+              ? `${LABEL[key]} must be a number (got "${quotedEntry(text)}").`
               : `${LABEL[key]} must be a positive number: convex or concave is chosen beside it ${got(text)}.`,
       }
     );

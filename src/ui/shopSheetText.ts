@@ -5,6 +5,7 @@
  * The numbers are the core's (core/output/shopSheet.ts); lengths are shown in the user's unit at
  * the page's resolution (format.ts), the CSV keeps full precision.
  */
+import { quotedEntry } from '../core/input/entryMessages';
 import { formatInputNumber, formatSignificant, fromMm, type LengthUnit, toMm, unitSymbol } from '../core/input/units';
 import { csvNumber } from '../core/output/csvWrite';
 import {
@@ -92,7 +93,7 @@ export function parseHeights(
   const values: number[] = [];
   for (const t of tokens) {
     const v = /^[+]?(\d+[.,]?\d*|[.,]\d+)([eE][+-]?\d+)?$/.test(t) ? Number(t.replace(',', '.')) : Number.NaN;
-    if (!(Number.isFinite(v) && v > 0)) return message(`"${t.length > 24 ? `${t.slice(0, 21)}...` : t}"`);
+    if (!(Number.isFinite(v) && v > 0)) return message(`"${quotedEntry(t)}"`);
     values.push(v);
   }
   const unique = [...new Set(values)].sort((a, b) => a - b);

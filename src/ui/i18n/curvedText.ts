@@ -5,6 +5,7 @@
  * user's unit with the locale's decimal sign, what was typed quoted; the target Ra's bound as the
  * input errors word it. English is curvedRequest.ts's describeCurvedError. Loaded with a catalogue.
  */
+import { quotedEntry } from '../../core/input/entryMessages';
 import { formatInputNumber, fromMm, unitSymbol } from '../../core/input/units';
 import type { InputError } from '../../core/input/validate';
 import type { CurvedError } from '../../worker/pageProtocol';
@@ -17,7 +18,7 @@ import { localDecimal } from './langChoice';
 /** What was typed, shortened as the English messages quote it. */
 const typed = (text: string) => {
   const t = text.trim();
-  return t.length > 24 ? `${t.slice(0, 21)}...` : t;
+  return quotedEntry(t);
 };
 
 /** One doubly curved refusal in `c`'s language (`w` its CurvedWords), on its field. */
@@ -67,7 +68,7 @@ export function radiusFieldIn(
     text === ''
       ? w.missing(label)
       : value === null
-        ? w.notNumber(label, text.slice(0, 21))
+        ? w.notNumber(label, quotedEntry(text))
         : w.positive(label, typed(text));
   return { key, message };
 }

@@ -5,6 +5,7 @@
  * locale's decimal sign, and the sentence from the catalogue's `errors`, one per error code (typed
  * as a Record: a code without words fails the type check). Loaded with language.ts.
  */
+import { quotedEntry } from '../../core/input/entryMessages';
 import { FIELDS, pageKeyOf } from '../../core/input/fields';
 import { formatAngleDeg, formatInputNumber, fromMm, type LengthUnit, unitSymbol } from '../../core/input/units';
 import type { AnyInputError, DescribeOptions } from '../../core/input/validate';
@@ -45,7 +46,7 @@ export function describeInputErrorIn(
         ? length(e.limit)
         : localDecimal(`${formatAngleDeg(e.limit)} ${catalogue.degrees}`, catalogue);
   const typed = options.typed ?? e.got;
-  const got = typed.length > 24 ? `${typed.slice(0, 21)}...` : typed;
+  const got = quotedEntry(typed);
   return catalogue.errors[e.code]({
     e,
     label,
@@ -110,7 +111,7 @@ export function describeThreeAxisErrorIn(
         : localDecimal(`${formatAngleDeg(e.limit)}°`, catalogue);
   const given =
     typed !== null && typed !== '' ? typed : isLength && typeof e.got === 'number' ? length(e.got) : String(e.got);
-  const got = given.length > 24 ? `${given.slice(0, 21)}...` : given;
+  const got = quotedEntry(given);
   const [toolLo, toolHi] = THREE_AXIS_TOOL_RADIUS_RANGE_MM;
   const [radiusLo, radiusHi] = THREE_AXIS_SURFACE_RADIUS_RANGE_MM;
   return catalogue.threeAxis[e.code]({

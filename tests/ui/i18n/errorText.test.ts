@@ -120,6 +120,10 @@ describe("the teeth-and-feed fields' own message (finishFields.ts): in the langu
           expect(message).toContain(key === 'fz' || key === 'z' || key === 'F' ? 'abc' : 'x');
           expect(ENGLISH.test(message), message).toBe(false);
         }
+        // A control character typed after a digit is quoted as its escape in every language.
+        const bell: CalculatorState = { ...BAD, fields: { ...BAD.fields, z: '3\u0007' } };
+        const z = finishFieldErrors(bell, describeError).find((e) => e.key === 'z')?.message ?? '';
+        expect(z, z).toContain('3\\x07');
       }
     } finally {
       setCatalogue(null, null, null);
