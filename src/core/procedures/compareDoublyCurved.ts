@@ -63,11 +63,23 @@ function row(L: number, exactL: number, point: CurvedPoint, maxMm: number): Doub
  * leave) the registry's model's (surfaces/doublyCurvedPoint.ts). @param input validated, not gouging.
  */
 export function compareDoublyCurved(input: DoublyCurvedForwardInput): DoublyCurvedComparison {
+  const point = curvedPointOf(input);
+  return compareAtPoint(input, point, curvedForward(point, input.scallopHeightMm), curvedMaxIntervalMm(point));
+}
+
+/**
+ * {@link compareDoublyCurved} at a point whose exact answer at h (`exact`) and widest step-over
+ * (`maxMm`, mm) the caller has already found (the worker's doubly curved job), so neither is solved
+ * again. @param point the point of `input` (curvedPointOf).
+ */
+export function compareAtPoint(
+  input: DoublyCurvedForwardInput,
+  point: CurvedPoint,
+  exact: ExactForward,
+  maxMm: number,
+): DoublyCurvedComparison {
   const I = Number.POSITIVE_INFINITY;
   const h = input.scallopHeightMm;
-  const point = curvedPointOf(input);
-  const exact = curvedForward(point, h);
-  const maxMm = curvedMaxIntervalMm(point);
   const other = (rf: number, rc: number): DoublyCurvedRow => {
     const s = curvedPoint(input, { feedRadiusMm: rf, crossRadiusMm: rc }, input.pattern);
     if (!(h < curvedLimits(s).limitMm))

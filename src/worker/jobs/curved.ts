@@ -15,7 +15,7 @@
 import { TOOL_FIELDS } from '../../core/input/fields';
 import { rawOf } from '../../core/input/raw';
 import { type InputError, inputError, MIN_LENGTH_MM } from '../../core/input/validate';
-import { compareDoublyCurved } from '../../core/procedures/compareDoublyCurved';
+import { compareAtPoint } from '../../core/procedures/compareDoublyCurved';
 import {
   doublyCurvedHeightForRaMm,
   doublyCurvedRoughness,
@@ -23,6 +23,7 @@ import {
 } from '../../core/roughness/doublyCurved';
 import { roughnessSummary } from '../../core/roughness/raTarget';
 import { curvedInverse, curvedLimits, curvedPointOf } from '../../core/surfaces/doublyCurvedPoint';
+import type { ExactForward, ExactInverse } from '../../core/surfaces/surface';
 import { validatePassAnd } from '../../core/surfaces/validate';
 import { curvedErrors, curvedSliderLimits } from '../data/curvedCheck';
 import { curvedSceneGeometry } from '../data/curvedScene';
@@ -55,6 +56,18 @@ function noLimits(e: InputError | CurvedError): boolean {
   return 'got' in e || e.field === 'feedRadius' || e.field === 'crossRadius';
 }
 
+/** The exact answer's numbers a reply carries, forward or inverse (mm). */
+function exactNumbers(e: ExactForward | ExactInverse) {
+  return {
+    intervalMm: e.intervalMm,
+    halfWidthRightMm: e.halfWidthRightMm,
+    halfWidthLeftMm: e.halfWidthLeftMm,
+    contactOffsetMm: e.contactOffsetMm,
+    cuspHeightMm: e.cuspHeightMm,
+    otherCuspHeightMm: e.otherCuspHeightMm,
+  };
+}
+
 /** Solves a doubly curved request. Never throws for any numeric input. */
 export function solveCurved(request: CurvedRequest): CurvedReply {
   const t0 = performance.now();
@@ -75,15 +88,13 @@ export function solveCurved(request: CurvedRequest): CurvedReply {
         ? request.input.scallopHeightMm
         : doublyCurvedHeightForRaMm(point, request.input.targetRaMm);
     const f = model.forward({ ...tool, pattern, surface, scallopHeightMm: hMm });
-    const exact = {
-      intervalMm: f.intervalMm,
-      halfWidthRightMm: f.halfWidthRightMm,
-      halfWidthLeftMm: f.halfWidthLeftMm,
-      contactOffsetMm: f.contactOffsetMm,
-      cuspHeightMm: f.cuspHeightMm,
-      otherCuspHeightMm: f.otherCuspHeightMm,
-    };
-    const { exact: _exact, maxIntervalMm: _max, ...comparison } = compareDoublyCurved({ ...i, scallopHeightMm: hMm });
+    const exact = exactNumbers(f);
+    // The rows beside it, from the answer and widest step-over just found (not solved again).
+    const {
+      exact: _exact,
+      maxIntervalMm: _max,
+      ...comparison
+    } = compareAtPoint({ ...i, scallopHeightMm: hMm }, point, f, maxIntervalMm);
     const summary = { ...exact, pattern: i.pattern, maxIntervalMm, limits };
     return {
       ok: true,
@@ -97,17 +108,7 @@ export function solveCurved(request: CurvedRequest): CurvedReply {
     };
   }
   const e = curvedInverse(point, request.input.intervalMm);
-  const exact: CurvedSummary = {
-    pattern: i.pattern,
-    intervalMm: e.intervalMm,
-    halfWidthRightMm: e.halfWidthRightMm,
-    halfWidthLeftMm: e.halfWidthLeftMm,
-    contactOffsetMm: e.contactOffsetMm,
-    cuspHeightMm: e.cuspHeightMm,
-    otherCuspHeightMm: e.otherCuspHeightMm,
-    maxIntervalMm,
-    limits,
-  };
+  const exact: CurvedSummary = { pattern: i.pattern, ...exactNumbers(e), maxIntervalMm, limits };
   return {
     ok: true,
     request,
