@@ -74,8 +74,9 @@ export function finishOf(
   try {
     return { ok: true, input: v.value, report: finishReport(tool, pattern, intervalMm, v.value) };
   } catch (e) {
-    // An event search that did not converge (or a surface left undefined): said, never a number.
-    const message = finishFailureWords(e, 'areal');
+    // The feed marks' event search that did not converge (or a surface left undefined): said, never a
+    // number. The areal parameters' own failure is finishReport's arealRefusal, beside the marks.
+    const message = finishFailureWords(e, 'marks');
     if (message === null) throw e;
     return { ok: false, errors: [{ field: 'fz', code: 'not-computed-here', got: '', message }] };
   }
